@@ -1,0 +1,131 @@
+#include "harness/cli/commands.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "harness/cli/run_context.h"
+#include "harness/measures/asset_catalog.h"
+#include "harness/measures/measure.h"
+#include "harness/measures/suite.h"
+#include "harness/mesh/input_error.h"
+#include "harness/report/markdown.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+#include "techniques/registry.h"
+
+namespace tb::cli {
+namespace {
+
+std::string knownIds(const std::vector<std::string>& ids) {
+  std::string text;
+  for (const auto& id : ids) text += (text.empty() ? "" : ", ") + id;
+  return text;
+}
+
+std::vector<const Technique*> selectTechniques(const std::vector<std::string>& ids) {
+  std::vector<const Technique*> selected;
+  std::vector<std::string> known;
+  for (const Technique* t : TechniqueRegistry::instance().all()) known.push_back(t->info().id);
+  for (const std::string& id : ids) {
+    const Technique* technique = TechniqueRegistry::instance().find(id);
+    if (technique == nullptr) {
+      throw InputError("--technique", id, "unknown technique (known: " + knownIds(known) + ")");
+    }
+    selected.push_back(technique);
+  }
+  return selected;
+}
+
+std::vector<const Measure*> selectMeasures(const std::vector<std::string>& ids) {
+  std::vector<const Measure*> selected;
+  std::vector<std::string> known;
+  for (const Measure* m : MeasureRegistry::instance().all()) known.push_back(m->info().id);
+  for (const std::string& id : ids) {
+    const Measure* measure = MeasureRegistry::instance().find(id);
+    if (measure == nullptr) {
+      throw InputError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
+    }
+    selected.push_back(measure);
+  }
+  return selected;
+}
+
+}  // namespace
+
+int runList(const ListArgs& args) {
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  if (args.what == "techniques") {
+    for (const Technique* t : TechniqueRegistry::instance().all()) {
+      const TechniqueInfo& info = t->info();
+      nlohmann::ordered_json variants = nlohmann::ordered_json::array();
+      for (const VariantInfo& v : t->variants()) variants.push_back(v.name);
+      items.push_back({{"id", info.id},
+                       {"family", toString(info.family)},
+                       {"title", info.title},
+                       {"citation", info.citation},
+                       {"input", info.input},
+                       {"variants", variants}});
+      if (!args.json) fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title, info.citation);
+    }
+  } else if (args.what == "assets") {
+    for (const AssetRef& asset : bundledAssets()) {
+      items.push_back({{"name", asset.name}, {"path", asset.path}});
+      if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.path);
+    }
+  } else if (args.what == "measures") {
+    for (const Measure* m : MeasureRegistry::instance().all()) {
+      const MeasureInfo& info = m->info();
+      items.push_back({{"id", info.id}, {"title", info.title}, {"description", info.description}});
+      if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
+    }
+  } else {
+    throw InputError("list", args.what, "expected techniques, assets or measures");
+  }
+  if (args.json) fmt::print("{}\n", items.dump(2));
+  return 0;
+}
+
+int runRun(const RunArgs& args, const std::string& command_line) {
+  SuiteSelection selection;
+  selection.techniques = selectTechniques(args.techniques);
+  selection.measures = selectMeasures(args.measures);
+  for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+
+  Results results;
+  const ProgressFn progress = [&](size_t done, size_t total, const std::string& label) {
+    if (args.quiet) return;
+    std::fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, total, label.c_str());
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+  runSuite(selection, progress, &results);
+
+  // The folder is made only after measuring, so a failed run leaves nothing behind.
+  std::string run_id;
+  const std::string folder = createRunFolder(args.out, args.run_id, &run_id);
+  results.context = probeRunContext(command_line);
+  results.context.date = utcTimestampIso8601();
+  results.context.run_id = run_id;
+  writeNewFile(folder + "/results.json", serializeResults(results));
+  writeNewFile(folder + "/report.md", renderMarkdown(results));
+  if (!args.quiet) {
+    fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md)\n",
+               results.records.size(), results.skipped.size(), folder);
+  } else {
+    fmt::print("{}\n", folder);
+  }
+  return 0;
+}
+
+int runReport(const ReportArgs& args) {
+  const Results results = readResultsFile(args.run_dir + "/results.json");
+  if (args.format != "md") {
+    throw InputError("--format", args.format, "unknown report format (known: md)");
+  }
+  fmt::print("{}", renderMarkdown(results));
+  return 0;
+}
+
+}  // namespace tb::cli

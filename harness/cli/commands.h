@@ -1,0 +1,32 @@
+// The `tessbench` subcommands other than tessellate. Each returns the exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tb::cli {
+
+struct ListArgs {
+  std::string what;  // techniques | assets | measures
+  bool json = false;
+};
+
+struct RunArgs {
+  std::vector<std::string> techniques;
+  std::vector<std::string> assets;
+  std::vector<std::string> measures;
+  std::string out = "results";
+  std::string run_id;
+  bool quiet = false;
+};
+
+struct ReportArgs {
+  std::string run_dir;
+  std::string format = "md";
+};
+
+int runList(const ListArgs& args);
+int runRun(const RunArgs& args, const std::string& command_line);
+int runReport(const ReportArgs& args);
+
+}  // namespace tb::cli

@@ -1,0 +1,58 @@
+// tessbench: benchmark and validation harness for real-time GPU surface techniques.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "harness/cli/commands.h"
+#include "techniques/registry.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tessbench: benchmark and validation harness for GPU surface techniques"};
+  app.require_subcommand(1);
+  std::vector<std::string> plugins;
+  app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
+
+  tb::cli::ListArgs list_args;
+  CLI::App* list = app.add_subcommand("list", "list techniques, assets or measures");
+  list->add_option("what", list_args.what, "techniques | assets | measures")
+      ->required()
+      ->check(CLI::IsMember({"techniques", "assets", "measures"}));
+  list->add_flag("--json", list_args.json, "print JSON");
+
+  tb::cli::RunArgs run_args;
+  CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
+  run->add_option("--technique", run_args.techniques, "technique id (repeatable; default all)");
+  run->add_option("--asset", run_args.assets, "bundled asset name or OBJ path (default all)");
+  run->add_option("--measure", run_args.measures, "measure id (repeatable; default all)");
+  run->add_option("--out", run_args.out, "results root; each run gets a new folder in it")
+      ->capture_default_str();
+  run->add_option("--run-id", run_args.run_id, "folder name (must not exist yet)");
+  run->add_flag("--quiet", run_args.quiet, "no progress output");
+
+  tb::cli::ReportArgs report_args;
+  CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");
+  report->add_option("run_dir", report_args.run_dir, "results/<run-id>")->required();
+  report->add_option("--format", report_args.format, "md")->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  }
+
+  std::string command_line = "tessbench";
+  for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
+  try {
+    for (const std::string& plugin : plugins) tb::loadPlugin(plugin);
+    if (*list) return tb::cli::runList(list_args);
+    if (*run) return tb::cli::runRun(run_args, command_line);
+    if (*report) return tb::cli::runReport(report_args);
+  } catch (const std::exception& error) {
+    std::fflush(stdout);
+    fmt::print(stderr, "tessbench: error: {}\n", error.what());
+    return 2;
+  }
+  return 0;
+}

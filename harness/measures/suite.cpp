@@ -1,0 +1,104 @@
+#include "harness/measures/suite.h"
+
+#include <cstdio>
+
+#include "harness/mesh/obj_loader.h"
+#include "techniques/registry.h"
+
+namespace tb {
+namespace {
+
+std::string describeFaceKinds(const Mesh& mesh) {
+  if (mesh.allFacesOfSize(3)) return "triangles";
+  if (mesh.allFacesOfSize(4)) return "quads";
+  return "mixed (max " + std::to_string(mesh.maxFaceSize()) + " vertices)";
+}
+
+struct LoadedAsset {
+  AssetRef ref;
+  Mesh mesh;
+};
+
+void formatParameters(const VariantInfo& variant, std::map<std::string, std::string>* out) {
+  for (const auto& [key, value] : variant.parameters) {
+    // Shortest text that round-trips, so the JSON stays byte-stable.
+    char text[32];
+    double parsed = 0;
+    for (int precision = 1; precision <= 17; ++precision) {
+      std::snprintf(text, sizeof(text), "%.*g", precision, value);
+      std::sscanf(text, "%lf", &parsed);
+      if (parsed == value) break;
+    }
+    (*out)[key] = text;
+  }
+}
+
+}  // namespace
+
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results) {
+  std::vector<const Technique*> techniques = selection.techniques;
+  if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
+  std::vector<const Measure*> measures = selection.measures;
+  if (measures.empty()) measures = MeasureRegistry::instance().all();
+  std::vector<AssetRef> refs = selection.assets;
+  if (refs.empty()) refs = bundledAssets();
+
+  std::vector<LoadedAsset> assets;
+  for (const AssetRef& ref : refs) {
+    Mesh mesh = loadObjFile(ref.path);
+    results->assets.push_back({ref.name, ref.path, mesh.faceCount(), mesh.positions.size(),
+                               describeFaceKinds(mesh), mesh.normals_computed});
+    assets.push_back({ref, std::move(mesh)});
+  }
+
+  size_t total = 0;
+  for (const Technique* technique : techniques) total += technique->variants().size() * assets.size();
+  size_t done = 0;
+  for (const Technique* technique : techniques) {
+    const std::vector<VariantInfo> variants = technique->variants();
+    for (size_t v = 0; v < variants.size(); ++v) {
+      const VariantInfo& variant = variants[v];
+      const bool is_default = v == 0;
+      for (const LoadedAsset& asset : assets) {
+        if (progress) {
+          progress(done, total, technique->info().id + "/" + variant.name + " " + asset.ref.name);
+        }
+        ++done;
+        std::vector<const Measure*> applicable;
+        for (const Measure* measure : measures) {
+          if (measure->appliesTo(*technique) && (is_default || measure->dependsOnVariant())) {
+            applicable.push_back(measure);
+          }
+        }
+        if (applicable.empty()) continue;
+        if (std::string reason = technique->checkSupport(asset.mesh); !reason.empty()) {
+          if (is_default) results->skipped.push_back({technique->info().id, asset.ref.name, reason});
+          continue;
+        }
+        std::unique_ptr<SurfacePatches> patches;
+        if (technique->info().family == TechniqueFamily::kSurface) {
+          try {
+            patches = technique->buildPatches(asset.mesh, variant);
+          } catch (const UnsupportedInput& unsupported) {
+            if (is_default) {
+              results->skipped.push_back({technique->info().id, asset.ref.name, unsupported.what()});
+            }
+            continue;
+          }
+        }
+        Record record;
+        record.technique = technique->info().id;
+        record.variant = variant.name;
+        record.asset = asset.ref.name;
+        formatParameters(variant, &record.parameters);
+        if (patches) record.warnings = patches->warnings();
+        const MeasureInput input{*technique, variant, asset.ref.name, asset.mesh, patches.get()};
+        for (const Measure* measure : applicable) record.measures.push_back(measure->run(input));
+        results->records.push_back(std::move(record));
+      }
+    }
+  }
+  if (progress) progress(total, total, "done");
+}
+
+}  // namespace tb

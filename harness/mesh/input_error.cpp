@@ -1,0 +1,20 @@
+#include "harness/mesh/input_error.h"
+
+namespace tb {
+namespace {
+std::string composeMessage(const std::string& file, const std::string& element,
+                           const std::string& rule) {
+  std::string message = file;
+  if (!element.empty()) message += (message.empty() ? "" : ": ") + element;
+  if (!rule.empty()) message += (message.empty() ? "" : ": ") + rule;
+  return message;
+}
+}  // namespace
+
+InputError::InputError(std::string file, std::string element, std::string rule)
+    : std::runtime_error(composeMessage(file, element, rule)),
+      file_(std::move(file)),
+      element_(std::move(element)),
+      rule_(std::move(rule)) {}
+
+}  // namespace tb

@@ -1,0 +1,34 @@
+#include "harness/mesh/triangulate.h"
+
+namespace tb {
+
+Triangulation fanTriangulate(const Mesh& mesh) {
+  Triangulation result;
+  Mesh& out = result.mesh;
+  out.source = mesh.source;
+  out.positions = mesh.positions;
+  out.normals = mesh.normals;
+  out.uvs = mesh.uvs;
+  out.tags = mesh.tags;
+  out.normals_computed = mesh.normals_computed;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const uint32_t begin = mesh.face_offsets[f];
+    const uint32_t n = mesh.faceSize(f);
+    if (n > 3) ++result.polygons_split;
+    for (uint32_t k = 1; k + 1 < n; ++k) {
+      const uint32_t corners[3] = {begin, begin + k, begin + k + 1};
+      uint32_t positions[3];
+      int32_t normals[3], uvs[3];
+      for (int i = 0; i < 3; ++i) {
+        positions[i] = mesh.corner_positions[corners[i]];
+        normals[i] = mesh.corner_normals[corners[i]];
+        uvs[i] = mesh.corner_uvs[corners[i]];
+      }
+      out.addFace(positions, normals, uvs, mesh.face_lines[f]);
+      result.source_face.push_back(uint32_t(f));
+    }
+  }
+  return result;
+}
+
+}  // namespace tb

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <vector>
+
+#include "harness/mesh/mesh.h"
+
+namespace tb {
+
+struct Triangulation {
+  Mesh mesh;                          // every face a triangle
+  std::vector<uint32_t> source_face;  // per triangle: the face of the input it came from
+  size_t polygons_split = 0;          // input faces with more than 3 corners
+};
+
+// Fan-triangulates every polygon from its first corner, keeping split normals and
+// UVs per corner. Triangles pass through unchanged.
+Triangulation fanTriangulate(const Mesh& mesh);
+
+}  // namespace tb

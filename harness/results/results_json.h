@@ -1,0 +1,21 @@
+// results.json reading and writing. Key order is fixed and floating-point values
+// are printed in their shortest round-trip form, so identical results give
+// byte-identical files.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "harness/results/results_model.h"
+
+namespace tb {
+
+nlohmann::ordered_json toJson(const Results& results);
+// Throws std::runtime_error naming the field when the document does not match
+// the schema (or has another schema_version).
+Results resultsFromJson(const nlohmann::ordered_json& document);
+
+std::string serializeResults(const Results& results);  // pretty, 2-space indent, final newline
+Results readResultsFile(const std::string& path);       // throws naming the file
+
+}  // namespace tb

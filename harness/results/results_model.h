@@ -1,0 +1,88 @@
+// The results model: what a run measured, independent of how it is shown.
+// results.json is this model serialised; every report renderer reads only this.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tb {
+
+// Bumped whenever a field changes meaning or is removed.
+constexpr int kResultsSchemaVersion = 1;
+
+struct Metric {
+  std::string name;   // snake_case, with the unit in the name where ambiguous
+  double value = 0;
+  std::string unit;   // "bytes", "ratio", "px", "ulp", "deg", ...
+};
+
+// One row of a measure: the parameters that vary inside the measure (e.g. the
+// tessellation level) as keys, and the figures for them.
+struct MetricRow {
+  std::map<std::string, std::string> keys;
+  std::vector<Metric> metrics;
+};
+
+enum class MeasureStatus { kOk, kSkipped, kFailed };
+
+struct MeasureResult {
+  std::string measure;               // measure id, e.g. "memory"
+  MeasureStatus status = MeasureStatus::kOk;
+  std::string reason;                // why it was skipped or failed; empty when ok
+  std::vector<MetricRow> rows;
+  std::vector<std::string> notes;    // definitions worth repeating in reports
+};
+
+// One (technique, variant, asset, parameters) combination.
+struct Record {
+  std::string technique;
+  std::string variant;
+  std::string asset;
+  std::map<std::string, std::string> parameters;
+  std::vector<std::string> warnings;
+  std::vector<MeasureResult> measures;
+};
+
+struct AssetSummary {
+  std::string name;        // e.g. "opensubdiv/catmark_cube"
+  std::string path;        // relative to the source tree when bundled
+  size_t faces = 0;
+  size_t vertices = 0;
+  std::string face_kinds;  // "triangles", "quads", "mixed (max 5)"
+  bool normals_computed = false;
+};
+
+// A technique × asset pair the run did not measure, and why.
+struct Skip {
+  std::string technique;
+  std::string asset;
+  std::string reason;
+};
+
+struct RunContext {
+  std::string date;                 // ISO 8601 UTC; excluded from determinism checks
+  std::string run_id;               // the folder name; excluded from determinism checks
+  std::string git_sha;
+  std::string host;
+  std::string cpu;
+  std::string compiler;
+  std::string build_type;
+  std::map<std::string, std::string> libraries;  // name -> version
+  std::string vulkan_device;        // empty when no device was opened
+  std::string command_line;
+};
+
+struct Results {
+  int schema_version = kResultsSchemaVersion;
+  RunContext context;
+  std::vector<AssetSummary> assets;
+  std::vector<Record> records;
+  std::vector<Skip> skipped;
+};
+
+const char* toString(MeasureStatus status);
+std::optional<MeasureStatus> parseMeasureStatus(const std::string& text);
+
+}  // namespace tb

@@ -1,0 +1,101 @@
+// The plug-in interface every technique implements, and the plain structs it
+// returns. A technique lives in techniques/<id>/, registers itself with
+// TB_REGISTER_TECHNIQUE, and is then found by the CLI and every measure; adding
+// one touches no harness code.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "harness/mesh/mesh.h"
+#include "harness/mesh/vec.h"
+
+namespace tb {
+
+enum class TechniqueFamily {
+  kSurface,     // turns a control mesh into patches evaluated by the tessellator
+  kSimulation,  // steps a simulation (wave particles, soft bodies)
+};
+
+enum class PatchDomain { kTriangle, kQuad };
+
+struct TechniqueInfo {
+  std::string id;          // "phong"; lower case, used on the command line and in results
+  TechniqueFamily family;
+  std::string title;       // "Phong tessellation"
+  std::string citation;    // "Boubekeur & Alexa, SIGGRAPH Asia 2008"
+  std::string input;       // what input it accepts, in words
+};
+
+struct VariantInfo {
+  std::string name;                           // "alpha0.75"; unique within the technique
+  std::string description;                    // one line for reports
+  std::map<std::string, double> parameters;   // numeric parameters, e.g. {"alpha": 0.75}
+};
+
+// Bytes a technique keeps resident to draw one asset, before tessellation.
+struct DataFootprint {
+  uint64_t control_mesh_bytes = 0;  // vertex attributes + index buffer of the control mesh
+  uint64_t patch_data_bytes = 0;    // per-patch control points, coefficients, flags
+  uint64_t stencil_bytes = 0;       // stencil tables and topology-combination classes
+  uint64_t total() const { return control_mesh_bytes + patch_data_bytes + stencil_bytes; }
+};
+
+struct SurfacePoint {
+  Vec3d position;
+  Vec3d normal;  // unit length, or zero where the surface is degenerate
+};
+
+// Domain coordinates as the TES receives gl_TessCoord: triangles use barycentric
+// (u, v, w) weighting corners 0, 1, 2; quads use (u, v, unused).
+using DomainCoord = std::array<double, 3>;
+
+// The patches a surface technique built for one asset and variant.
+class SurfacePatches {
+ public:
+  virtual ~SurfacePatches() = default;
+  virtual PatchDomain domain() const = 0;
+  virtual size_t patchCount() const = 0;
+  // The mesh the patches are built over: patch p covers face p of it (for
+  // `phong`, the fan-triangulated input). Measures read its render vertices.
+  virtual const Mesh& controlMesh() const = 0;
+  // Control-mesh positions at the patch corners, in domain order; shared edges
+  // between patches are found through these.
+  virtual std::array<uint32_t, 4> patchCorners(size_t patch) const = 0;
+  // The face of the input asset the patch came from (for parametric error).
+  virtual uint32_t sourceFace(size_t patch) const = 0;
+  virtual SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const = 0;
+  virtual DataFootprint footprint() const = 0;
+  // Non-fatal notes gathered while building ("3 quads fan-triangulated").
+  virtual const std::vector<std::string>& warnings() const = 0;
+};
+
+// Thrown by Technique::build when the asset breaks a rule the technique needs.
+// The message names the technique, the element and the rule, e.g.
+// "acc: face 17 has 3 vertices; ACC needs quads".
+class UnsupportedInput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  virtual const TechniqueInfo& info() const = 0;
+  // The first variant is the default.
+  virtual std::vector<VariantInfo> variants() const = 0;
+  // Empty string when the mesh is supported; otherwise the reason (one line).
+  virtual std::string checkSupport(const Mesh& mesh) const = 0;
+  // Surface techniques only; throws UnsupportedInput.
+  virtual std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
+                                                       const VariantInfo& variant) const = 0;
+};
+
+const char* toString(TechniqueFamily family);
+const char* toString(PatchDomain domain);
+
+}  // namespace tb
