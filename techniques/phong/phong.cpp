@@ -1,8 +1,5 @@
 #include "techniques/phong/phong.h"
 
-#include <algorithm>
-#include <numeric>
-
 #include "harness/mesh/triangulate.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/registry.h"
@@ -35,25 +32,15 @@ class PhongPatches final : public SurfacePatches {
 
   uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
 
-  // Corners are visited in ascending position index, so two triangles that share
-  // an edge (and its normals) sum the same terms in the same order whatever their
-  // orientation: DESIGN.md watertightness rule 1.
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
-    std::array<int, 3> order{0, 1, 2};
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      return mesh.corner_positions[first + a] < mesh.corner_positions[first + b];
-    });
     PhongTriangle<double> tri;
-    std::array<double, 3> weight;
     for (int i = 0; i < 3; ++i) {
-      const uint32_t corner = first + order[i];
-      tri.position[i] = mesh.positions[mesh.corner_positions[corner]];
-      tri.normal[i] = normalize(mesh.normals[mesh.corner_normals[corner]]);
-      weight[i] = coord[order[i]];
+      tri.position[i] = mesh.positions[mesh.corner_positions[first + i]];
+      tri.normal[i] = normalize(mesh.normals[mesh.corner_normals[first + i]]);
     }
-    const PhongPoint<double> point = evaluatePhong(tri, weight, alpha_);
+    const PhongPoint<double> point = evaluatePhong(tri, {coord[0], coord[1], coord[2]}, alpha_);
     return {point.position, point.normal};
   }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 
 #include "harness/mesh/vec.h"
 
@@ -26,10 +27,13 @@ struct PhongPoint {
 // tangent plane. Written as p - α Σ w_i ((p - p_i)·n_i) n_i, which is the same
 // surface with three fewer vector multiplies. α = 0 is the flat triangle; the
 // paper recommends α = 3/4.
-// Terms are summed in corner order 0, 1, 2: callers that need watertightness pass
-// corners in a canonical order (see PhongPatches).
+// Terms are summed in a canonical corner order (canonicalCornerOrder), so the
+// result is a function of the corners as a set: rotating or mirroring a face,
+// or meeting the same edge from the neighbouring face, sums the same terms in the
+// same order (DESIGN.md watertightness rule 1).
 template <class T>
-PhongPoint<T> evaluatePhong(const PhongTriangle<T>& tri, const std::array<T, 3>& weight, T alpha) {
+PhongPoint<T> evaluatePhongInOrder(const PhongTriangle<T>& tri, const std::array<T, 3>& weight,
+                                   T alpha) {
   const Vec3T<T> flat =
       tri.position[0] * weight[0] + tri.position[1] * weight[1] + tri.position[2] * weight[2];
   Vec3T<T> offset{};
@@ -42,6 +46,42 @@ PhongPoint<T> evaluatePhong(const PhongTriangle<T>& tri, const std::array<T, 3>&
   result.normal = normalize(tri.normal[0] * weight[0] + tri.normal[1] * weight[1] +
                             tri.normal[2] * weight[2]);
   return result;
+}
+
+// True when corner a sorts before corner b: lexicographic on position, then normal.
+template <class T>
+bool cornerPrecedes(const PhongTriangle<T>& tri, int a, int b) {
+  for (int k = 0; k < 3; ++k) {
+    if (tri.position[a][k] != tri.position[b][k]) return tri.position[a][k] < tri.position[b][k];
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (tri.normal[a][k] != tri.normal[b][k]) return tri.normal[a][k] < tri.normal[b][k];
+  }
+  return false;
+}
+
+// The corner order evaluatePhong sums in: sorted by position, which both faces
+// of a shared edge see identically, even where the mesh duplicates positions.
+template <class T>
+std::array<int, 3> canonicalCornerOrder(const PhongTriangle<T>& tri) {
+  std::array<int, 3> order{0, 1, 2};
+  if (cornerPrecedes(tri, order[1], order[0])) std::swap(order[0], order[1]);
+  if (cornerPrecedes(tri, order[2], order[1])) std::swap(order[1], order[2]);
+  if (cornerPrecedes(tri, order[1], order[0])) std::swap(order[0], order[1]);
+  return order;
+}
+
+template <class T>
+PhongPoint<T> evaluatePhong(const PhongTriangle<T>& tri, const std::array<T, 3>& weight, T alpha) {
+  const std::array<int, 3> order = canonicalCornerOrder(tri);
+  PhongTriangle<T> sorted;
+  std::array<T, 3> sorted_weight;
+  for (int i = 0; i < 3; ++i) {
+    sorted.position[i] = tri.position[order[i]];
+    sorted.normal[i] = tri.normal[order[i]];
+    sorted_weight[i] = weight[order[i]];
+  }
+  return evaluatePhongInOrder(sorted, sorted_weight, alpha);
 }
 
 }  // namespace tb::phong

@@ -1,0 +1,140 @@
+// End-to-end tests of the `tessbench` executable: exit codes, one-line errors,
+// JSON listings and byte-identical results for identical inputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult runTessbench(const std::string& arguments) {
+  const std::string command = std::string(TB_TESSBENCH_BIN) + " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+size_t lineCount(const std::string& text) {
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+TEST(Cli, ListTechniquesJsonHasTheRequiredFields) {
+  const CommandResult r = runTessbench("list techniques --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto json = nlohmann::json::parse(r.output);
+  ASSERT_TRUE(json.is_array());
+  ASSERT_FALSE(json.empty());
+  for (const auto& technique : json) {
+    for (const char* key : {"id", "family", "title", "citation"}) {
+      EXPECT_TRUE(technique.contains(key)) << key;
+    }
+  }
+  EXPECT_EQ(json[0]["id"], "phong");
+}
+
+TEST(Cli, MissingAssetIsOneLineNamingTheFile) {
+  const CommandResult r = runTessbench("run --quiet --asset does/not/exist.obj --out /tmp/tb_cli_x");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(lineCount(r.output), 1u) << r.output;
+  EXPECT_NE(r.output.find("does/not/exist.obj"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MalformedObjNamesTheLine) {
+  const auto dir = testing::scratchDirectory("cli_malformed");
+  const std::string path =
+      testing::writeTextFile(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  const CommandResult r = runTessbench("run --quiet --asset " + path + " --out " + (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(lineCount(r.output), 1u) << r.output;
+  EXPECT_NE(r.output.find(path + ": line 4"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "a failed run must leave no folder";
+}
+
+TEST(Cli, UnknownTechniqueAndMeasureAreRejected) {
+  CommandResult r = runTessbench("run --quiet --technique nope");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("unknown technique"), std::string::npos) << r.output;
+  r = runTessbench("run --quiet --measure nope");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("unknown measure"), std::string::npos) << r.output;
+}
+
+std::string readFile(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// Drops the fields that legitimately differ between runs.
+std::string withoutDateAndRunId(const std::string& text) {
+  auto json = nlohmann::ordered_json::parse(text);
+  json["context"].erase("date");
+  json["context"].erase("run_id");
+  return json.dump(2);
+}
+
+TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
+  const auto dir = testing::scratchDirectory("cli_determinism");
+  const std::string args = "run --quiet --out " + (dir / "runs").string();
+  const CommandResult first = runTessbench(args);
+  const CommandResult second = runTessbench(args);
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  std::vector<std::filesystem::path> runs;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "runs")) runs.push_back(entry.path());
+  ASSERT_EQ(runs.size(), 2u) << "each run gets its own folder";
+  const std::string a = readFile(runs[0] / "results.json");
+  const std::string b = readFile(runs[1] / "results.json");
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(withoutDateAndRunId(a), withoutDateAndRunId(b));
+  // Apart from those two fields the raw bytes agree too: only two lines differ.
+  size_t differing_lines = 0;
+  std::istringstream sa(a), sb(b);
+  std::string la, lb;
+  while (std::getline(sa, la) && std::getline(sb, lb)) differing_lines += la != lb;
+  EXPECT_LE(differing_lines, 2u);
+  EXPECT_TRUE(std::filesystem::exists(runs[0] / "report.md"));
+}
+
+TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {
+  const auto dir = testing::scratchDirectory("cli_default");
+  const CommandResult r = runTessbench("run --quiet --run-id only --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto json = nlohmann::json::parse(readFile(dir / "only" / "results.json"));
+  size_t phong_assets = 0;
+  for (const auto& record : json["records"]) {
+    if (record["technique"] != "phong") continue;
+    for (const auto& measure : record["measures"]) {
+      if (measure["measure"] == "memory") {
+        ++phong_assets;
+        EXPECT_EQ(measure["rows"].size(), 4u);
+      }
+    }
+  }
+  EXPECT_EQ(phong_assets, json["assets"].size());
+  const std::string report = readFile(dir / "only" / "report.md");
+  EXPECT_NE(report.find("## Measure: memory"), std::string::npos);
+  // The same run id again is refused, and the first results stay.
+  const CommandResult again = runTessbench("run --quiet --run-id only --out " + dir.string());
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
+}
+
+}  // namespace
+}  // namespace tb

@@ -1,0 +1,48 @@
+#include <gtest/gtest.h>
+
+#include "harness/report/markdown.h"
+
+namespace tb {
+namespace {
+
+TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
+  Results results;
+  results.context.run_id = "r";
+  Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {}, {"12 polygons split"}, {}};
+  MeasureResult memory;
+  memory.measure = "memory";
+  memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
+  memory.rows.push_back({{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
+  record.measures.push_back(memory);
+  results.records.push_back(record);
+  results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
+  const std::string md = renderMarkdown(results);
+  EXPECT_NE(md.find("## Measure: memory"), std::string::npos);
+  EXPECT_NE(md.find("| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| phong | alpha0.75 | opensubdiv/catmark_cube | 16 | ok | 8.00 KiB | 3 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("ACC needs quads"), std::string::npos);
+  EXPECT_NE(md.find("12 polygons split"), std::string::npos);
+}
+
+TEST(Markdown, SkippedMeasureShowsItsReason) {
+  Results results;
+  Record record{"phong", "alpha0.75", "a", {}, {}, {}};
+  record.measures.push_back({"gpu", MeasureStatus::kSkipped, "no Vulkan device", {}, {}});
+  results.records.push_back(record);
+  EXPECT_NE(renderMarkdown(results).find("skipped: no Vulkan device"), std::string::npos);
+}
+
+TEST(Markdown, FormatsBytesAndValues) {
+  EXPECT_EQ(formatBytes(812), "812 B");
+  EXPECT_EQ(formatBytes(1536), "1.50 KiB");
+  EXPECT_EQ(formatBytes(3.0 * 1024 * 1024), "3.00 MiB");
+  EXPECT_EQ(formatMetricValue({"n", 42, "count"}), "42");
+  EXPECT_EQ(formatMetricValue({"r", 0.123456, "ratio"}), "0.1235");
+}
+
+}  // namespace
+}  // namespace tb

@@ -1,0 +1,59 @@
+#include <gtest/gtest.h>
+
+#include "harness/results/results_json.h"
+
+namespace tb {
+namespace {
+
+Results sampleResults() {
+  Results results;
+  results.context.date = "2026-11-22T00:00:00Z";
+  results.context.run_id = "r1";
+  results.context.libraries = {{"OpenSubdiv", "v3_5_0"}};
+  results.assets.push_back({"opensubdiv/catmark_cube", "assets/x.obj", 6, 8, "quads", false});
+  Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {{"alpha", "0.75"}}, {"w"}, {}};
+  MeasureResult memory;
+  memory.measure = "memory";
+  memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 1234, "bytes"}, {"ratio", 0.1, "ratio"}}});
+  record.measures.push_back(memory);
+  MeasureResult skipped{"gpu", MeasureStatus::kSkipped, "no Vulkan device", {}, {}};
+  record.measures.push_back(skipped);
+  results.records.push_back(record);
+  results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
+  return results;
+}
+
+TEST(ResultsJson, RoundTripsEveryField) {
+  const Results original = sampleResults();
+  const std::string text = serializeResults(original);
+  const Results parsed = resultsFromJson(nlohmann::ordered_json::parse(text));
+  EXPECT_EQ(serializeResults(parsed), text);
+  EXPECT_EQ(parsed.records[0].measures[1].status, MeasureStatus::kSkipped);
+  EXPECT_EQ(parsed.records[0].measures[0].rows[0].metrics[1].value, 0.1);
+  EXPECT_EQ(parsed.skipped[0].reason, original.skipped[0].reason);
+}
+
+TEST(ResultsJson, SerialisationIsByteStable) {
+  EXPECT_EQ(serializeResults(sampleResults()), serializeResults(sampleResults()));
+  const auto json = toJson(sampleResults());
+  EXPECT_EQ(json.begin().key(), "schema_version");
+  EXPECT_EQ(json["schema_version"], kResultsSchemaVersion);
+}
+
+TEST(ResultsJson, RejectsAnotherSchemaVersionAndMissingFields) {
+  auto json = toJson(sampleResults());
+  json["schema_version"] = kResultsSchemaVersion + 1;
+  EXPECT_THROW(resultsFromJson(json), std::runtime_error);
+  auto broken = toJson(sampleResults());
+  broken["records"][0].erase("asset");
+  try {
+    resultsFromJson(broken);
+    FAIL();
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("records[0]: missing field 'asset'"), std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace tb
