@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# README command 2: build (Release) and run every test with ctest.
+# With the argument asan-ubsan, the same tests run under AddressSanitizer and
+# UndefinedBehaviorSanitizer instead.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+cmake --preset "$preset"
+cmake --build --preset "$preset"
+ctest --preset "$preset" -j2
