@@ -5,8 +5,11 @@ namespace {
 std::string composeMessage(const std::string& file, const std::string& element,
                            const std::string& rule) {
   std::string message = file;
-  if (!element.empty()) message += (message.empty() ? "" : ": ") + element;
-  if (!rule.empty()) message += (message.empty() ? "" : ": ") + rule;
+  for (const std::string* part : {&element, &rule}) {
+    if (part->empty()) continue;
+    if (!message.empty()) message.append(": ");
+    message.append(*part);
+  }
   return message;
 }
 }  // namespace
