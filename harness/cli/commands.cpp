@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -95,10 +97,16 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
 
   Results results;
+  // On a terminal the progress line rewrites itself; in a log, one line per step.
+  const bool terminal = isatty(fileno(stderr)) != 0;
   const ProgressFn progress = [&](size_t done, size_t total, const std::string& label) {
     if (args.quiet) return;
-    std::fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, total, label.c_str());
-    if (done == total) std::fprintf(stderr, "\n");
+    if (terminal) {
+      std::fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, total, label.c_str());
+      if (done == total) std::fprintf(stderr, "\n");
+    } else {
+      std::fprintf(stderr, "[%zu/%zu] %s\n", done, total, label.c_str());
+    }
   };
   runSuite(selection, progress, &results);
 
