@@ -8,6 +8,7 @@
 
 #include "harness/mesh/obj_loader.h"
 #include "techniques/phong/phong.h"
+#include "techniques/counting_scalar.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
@@ -145,6 +146,45 @@ TEST(PhongPatches, PolygonsAreFanTriangulatedWithAWarning) {
   ASSERT_FALSE(patches->warnings().empty());
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
   EXPECT_EQ(patches->sourceFace(11), 5u);
+}
+
+}  // namespace
+}  // namespace tb::phong
+
+namespace tb::phong {
+namespace {
+
+TEST(PhongEval, CountingScalarGivesTheSameResultAndExactOperationCounts) {
+  // Hand count of evaluatePhongInOrder (paper eq. 3-4 in the p - α Σ w_i h_i n_i form):
+  //   flat point: 3 vec3 scalings (9 mul) + 2 vec3 adds (6 add)
+  //   per corner: vec3 sub (3 add), dot (3 mul, 2 add), w_i*h (1 mul),
+  //               vec3 scale (3 mul), vec3 add (3 add)          -> ×3
+  //   offset*α (3 mul), flat - offset (3 add)
+  //   normal: 3 vec3 scalings (9 mul), 2 vec3 adds (6 add), normalize:
+  //           dot (3 mul, 2 add), sqrt, 1 compare, 1 div, vec3 scale (3 mul)
+  using C = CountingScalar<float>;
+  PhongTriangle<C> tri;
+  PhongTriangle<float> plain;
+  const float pos[3][3] = {{0, 0, 0}, {1, 0, 0.2f}, {0, 1, 0.1f}};
+  const float nrm[3][3] = {{0, 0, 1}, {0.3f, 0, 0.95f}, {0, 0.4f, 0.9f}};
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      tri.position[i][k] = pos[i][k];
+      tri.normal[i][k] = nrm[i][k];
+      plain.position[i][k] = pos[i][k];
+      plain.normal[i][k] = nrm[i][k];
+    }
+  }
+  resetOperationCounts();
+  const auto counted = evaluatePhongInOrder<C>(tri, {C(0.2f), C(0.3f), C(0.5f)}, C(0.75f));
+  const OperationCounts ops = operationCounts();
+  const auto reference = evaluatePhongInOrder<float>(plain, {0.2f, 0.3f, 0.5f}, 0.75f);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(counted.position[k].value(), reference.position[k]);
+  EXPECT_EQ(ops.mul, 9u + 3 * 7 + 3 + 9 + 3 + 3);
+  EXPECT_EQ(ops.add, 6u + 3 * 8 + 3 + 6 + 2);
+  EXPECT_EQ(ops.sqrt, 1u);
+  EXPECT_EQ(ops.div, 1u);
+  EXPECT_EQ(ops.compare, 1u);
 }
 
 }  // namespace
