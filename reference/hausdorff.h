@@ -1,0 +1,49 @@
+// Two-sided Hausdorff and RMS distance between triangle meshes, sampled inside the
+// triangles (DESIGN.md measure 6; Cignoni et al., "Metro", 1998, samples the same way).
+//
+// Sampling of each source triangle at lattice level m (deterministic):
+//  - the (m+1)(m+2)/2 points of the barycentric lattice i/m, corners and edges included;
+//  - the centroids of its m^2 congruent sub-triangles, which carry the RMS and mean as a
+//    midpoint rule (each weighs area / m^2).
+// The maximum is taken over both sets. Every sample's distance is exact (closest point
+// over all triangles of the target, in double).
+#pragma once
+
+#include <cstddef>
+
+#include "reference/triangle_distance_field.h"
+#include "reference/triangle_mesh_ref.h"
+
+namespace tb::ref {
+
+inline constexpr int kDefaultLatticeLevel = 4;  // 15 lattice points + 16 centroids
+inline constexpr int kMaxLatticeLevel = 256;
+
+struct DirectedDistance {
+  double max = 0;      // world units: largest sample distance from the source to the target
+  Vec3d max_at;        // the source sample where it occurs
+  double rms = 0;      // world units: area-weighted root mean square distance
+  double mean = 0;     // world units: area-weighted mean distance
+  double area = 0;     // world units^2: area of the source
+  size_t samples = 0;  // distance queries made
+};
+
+struct HausdorffResult {
+  DirectedDistance a_to_b;  // samples of a, distances to b
+  DirectedDistance b_to_a;
+  double hausdorff = 0;  // world units: max(a_to_b.max, b_to_a.max)
+  // World units: RMS over both surfaces' samples pooled by area,
+  // sqrt((area_a rms_ab^2 + area_b rms_ba^2) / (area_a + area_b)).
+  double rms = 0;
+};
+
+// Samples of `source` against a prepared target (reuse one field for many sources).
+// Throws InputError naming the option when lattice_level is outside [1, kMaxLatticeLevel].
+DirectedDistance directedDistance(const TriangleMeshRef& source,
+                                  const TriangleDistanceField& target,
+                                  int lattice_level = kDefaultLatticeLevel);
+
+HausdorffResult hausdorff(const TriangleMeshRef& a, const TriangleMeshRef& b,
+                          int lattice_level = kDefaultLatticeLevel);
+
+}  // namespace tb::ref

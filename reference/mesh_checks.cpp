@@ -1,0 +1,43 @@
+#include "reference/mesh_checks.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "harness/mesh/input_error.h"
+#include "reference/face_domain.h"
+
+namespace tb::ref {
+
+void checkFinitePositions(std::span<const Vec3d> positions, const std::string& source) {
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const Vec3d& p = positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      throw InputError(source, "vertex " + std::to_string(i), "coordinate is not finite");
+    }
+  }
+}
+
+void checkFaceIndex(const Mesh& mesh, size_t face) {
+  if (face >= mesh.faceCount()) {
+    throw InputError(mesh.source, "face " + std::to_string(face),
+                     "index out of range (" + std::to_string(mesh.faceCount()) + " faces)");
+  }
+}
+
+void checkInsideFaceDomain(const Mesh& mesh, size_t face, Scheme scheme, Vec2d uv) {
+  if (!insideFaceDomain(scheme, int(mesh.faceSize(face)), uv)) {
+    throw InputError(mesh.source, describeFace(mesh, face),
+                     "(u, v) = (" + std::to_string(uv.x) + ", " + std::to_string(uv.y) +
+                         ") is outside the face's parameter domain");
+  }
+}
+
+std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const Mesh& mesh) {
+  std::map<std::pair<uint32_t, uint32_t>, double> edges;
+  for (const Crease& crease : mesh.tags.creases) {
+    edges[std::minmax(crease.v0, crease.v1)] = crease.sharpness;
+  }
+  return edges;
+}
+
+}  // namespace tb::ref

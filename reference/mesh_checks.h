@@ -1,0 +1,32 @@
+// Internal: validation and tag helpers shared by the Bfr reference, the Embree
+// cross-check and the distance field, so each rule is written and worded once.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "harness/mesh/mesh.h"
+#include "reference/scheme.h"
+
+namespace tb::ref {
+
+// OpenSubdiv treats sharpness >= 10 as infinite (Sdc::Crease::SHARPNESS_INFINITE).
+inline constexpr double kInfiniteSharpness = 10.0;
+
+// Throws InputError(source, "vertex i", ...) for the first non-finite coordinate.
+void checkFinitePositions(std::span<const Vec3d> positions, const std::string& source);
+
+// Throws InputError(mesh.source, "face i", "index out of range ...").
+void checkFaceIndex(const Mesh& mesh, size_t face);
+
+// Throws InputError naming the face when (u,v) is outside its domain (face_domain.h).
+void checkInsideFaceDomain(const Mesh& mesh, size_t face, Scheme scheme, Vec2d uv);
+
+// Crease sharpness per unoriented edge (v0 < v1); a repeated tag keeps the last
+// value, as OpenSubdiv's Far does.
+std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const Mesh& mesh);
+
+}  // namespace tb::ref

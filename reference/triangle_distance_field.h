@@ -1,0 +1,48 @@
+// Unsigned distance from any point to a triangle mesh: an Embree BVH over the
+// triangles (float, only to cull) queried with rtcPointQuery, and an exact
+// closest-point-on-triangle callback in double (closest_point.h). Culling radii are
+// padded for the float rounding of the BVH, so the answer is the exact double
+// minimum over all triangles.
+//
+// Thread safety: closest() may be called from several threads at once.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "reference/triangle_mesh_ref.h"
+
+namespace tb::ref {
+
+inline constexpr uint32_t kNoTriangle = std::numeric_limits<uint32_t>::max();
+
+struct ClosestPoint {
+  double distance = std::numeric_limits<double>::infinity();  // world units; inf: no triangles
+  Vec3d point;                                                // closest point on the mesh
+  uint32_t triangle = kNoTriangle;  // its triangle (the lowest index on ties)
+  Vec3d barycentric;                // its weights of the triangle's corners 0, 1, 2
+};
+
+class TriangleDistanceField {
+ public:
+  // Copies the mesh. Throws InputError (naming `source`) for a corner index out of
+  // range or a non-finite coordinate.
+  TriangleDistanceField(std::span<const Vec3d> positions, std::span<const Triangle> triangles,
+                        const std::string& source = "triangle mesh");
+  explicit TriangleDistanceField(const TriangleMeshRef& mesh,
+                                 const std::string& source = "triangle mesh");
+  ~TriangleDistanceField();
+  TriangleDistanceField(TriangleDistanceField&&) noexcept;
+  TriangleDistanceField& operator=(TriangleDistanceField&&) noexcept;
+
+  size_t triangleCount() const;
+  ClosestPoint closest(const Vec3d& query) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tb::ref
