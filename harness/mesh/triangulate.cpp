@@ -1,5 +1,7 @@
 #include "harness/mesh/triangulate.h"
 
+#include <algorithm>
+
 namespace tb {
 
 Triangulation fanTriangulate(const Mesh& mesh) {
@@ -10,6 +12,7 @@ Triangulation fanTriangulate(const Mesh& mesh) {
   out.normals = mesh.normals;
   out.uvs = mesh.uvs;
   out.tags = mesh.tags;
+  out.tags.holes.clear();  // face ids change: re-added below for every triangle of a hole
   out.normals_computed = mesh.normals_computed;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const uint32_t begin = mesh.face_offsets[f];
@@ -23,6 +26,10 @@ Triangulation fanTriangulate(const Mesh& mesh) {
         positions[i] = mesh.corner_positions[corners[i]];
         normals[i] = mesh.corner_normals[corners[i]];
         uvs[i] = mesh.corner_uvs[corners[i]];
+      }
+      if (std::find(mesh.tags.holes.begin(), mesh.tags.holes.end(), uint32_t(f)) !=
+          mesh.tags.holes.end()) {
+        out.tags.holes.push_back(uint32_t(out.faceCount()));
       }
       out.addFace(positions, normals, uvs, mesh.face_lines[f]);
       result.source_face.push_back(uint32_t(f));

@@ -31,6 +31,11 @@ CommandResult runTessbench(const std::string& arguments) {
   return result;
 }
 
+std::string readFile(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
 size_t lineCount(const std::string& text) {
   return std::count(text.begin(), text.end(), '\n');
 }
@@ -67,6 +72,24 @@ TEST(Cli, MalformedObjNamesTheLine) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "a failed run must leave no folder";
 }
 
+TEST(Cli, ErrorMeasureReportsEveryTriangleAsset) {
+  const auto dir = testing::scratchDirectory("cli_error");
+  const CommandResult r = runTessbench(
+      "run --quiet --technique phong --measure error --asset loop_cube --asset tjunction "
+      "--run-id e --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto json = nlohmann::json::parse(readFile(dir / "e" / "results.json"));
+  size_t with_error = 0;
+  for (const auto& record : json["records"]) {
+    ASSERT_EQ(record["measures"].size(), 1u);
+    const auto& measure = record["measures"][0];
+    EXPECT_EQ(measure["status"], "ok") << measure["reason"];
+    with_error += measure["rows"].size() == 1;
+  }
+  EXPECT_EQ(with_error, 8u);  // 4 variants x 2 assets
+  EXPECT_NE(readFile(dir / "e" / "report.md").find("## Measure: error"), std::string::npos);
+}
+
 TEST(Cli, UnknownTechniqueAndMeasureAreRejected) {
   CommandResult r = runTessbench("run --quiet --technique nope");
   EXPECT_NE(r.exit_code, 0);
@@ -74,11 +97,6 @@ TEST(Cli, UnknownTechniqueAndMeasureAreRejected) {
   r = runTessbench("run --quiet --measure nope");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("unknown measure"), std::string::npos) << r.output;
-}
-
-std::string readFile(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
 // Drops the fields that legitimately differ between runs.
@@ -91,7 +109,9 @@ std::string withoutDateAndRunId(const std::string& text) {
 
 TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
   const auto dir = testing::scratchDirectory("cli_determinism");
-  const std::string args = "run --quiet --out " + (dir / "runs").string();
+  // Every measure, on a quad and a triangle asset (the whole suite is README command 1).
+  const std::string args = "run --quiet --asset catmark_cube --asset loop_icosahedron --out " +
+                           (dir / "runs").string();
   const CommandResult first = runTessbench(args);
   const CommandResult second = runTessbench(args);
   ASSERT_EQ(first.exit_code, 0) << first.output;
@@ -114,7 +134,8 @@ TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
 
 TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {
   const auto dir = testing::scratchDirectory("cli_default");
-  const CommandResult r = runTessbench("run --quiet --run-id only --out " + dir.string());
+  const CommandResult r =
+      runTessbench("run --quiet --measure memory --run-id only --out " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto json = nlohmann::json::parse(readFile(dir / "only" / "results.json"));
   size_t phong_assets = 0;
@@ -131,7 +152,8 @@ TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {
   const std::string report = readFile(dir / "only" / "report.md");
   EXPECT_NE(report.find("## Measure: memory"), std::string::npos);
   // The same run id again is refused, and the first results stay.
-  const CommandResult again = runTessbench("run --quiet --run-id only --out " + dir.string());
+  const CommandResult again =
+      runTessbench("run --quiet --measure memory --run-id only --out " + dir.string());
   EXPECT_NE(again.exit_code, 0);
   EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
 }

@@ -1,0 +1,209 @@
+#include "harness/measures/surface_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "harness/measures/measure.h"
+#include "harness/mesh/input_error.h"
+#include "harness/mesh/topology.h"
+#include "reference/hausdorff.h"
+#include "reference/limit_tessellation.h"
+#include "reference/scheme.h"
+#include "reference/triangle_mesh_ref.h"
+
+namespace tb {
+namespace {
+
+struct PatchSample {
+  DomainCoord coord;    // as the technique takes it
+  double u, v;          // the limit face's parameter at the same point
+  std::array<double, 4> corner_weight;  // weight of each patch corner
+};
+
+// Barycentric lattice (triangles) or grid (quads) of `level` segments per edge.
+std::vector<PatchSample> patchSamples(PatchDomain domain, int level) {
+  std::vector<PatchSample> samples;
+  for (int i = 0; i <= level; ++i) {
+    const int j_end = domain == PatchDomain::kQuad ? level : level - i;
+    for (int j = 0; j <= j_end; ++j) {
+      const double a = double(i) / level, b = double(j) / level;
+      if (domain == PatchDomain::kTriangle) {
+        // Bfr's triangle has corners (0,0), (1,0), (0,1): weights (1-u-v, u, v).
+        samples.push_back({{1 - a - b, a, b}, a, b, {1 - a - b, a, b, 0}});
+      } else {
+        samples.push_back(
+            {{a, b, 0}, a, b, {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b}});
+      }
+    }
+  }
+  return samples;
+}
+
+// Triangles over patchSamples' points, for the technique's side of the distance.
+std::vector<ref::Triangle> latticeTriangles(PatchDomain domain, int level, uint32_t base) {
+  std::vector<ref::Triangle> triangles;
+  if (domain == PatchDomain::kQuad) {
+    auto at = [&](int i, int j) { return base + uint32_t(i * (level + 1) + j); };
+    for (int i = 0; i < level; ++i) {
+      for (int j = 0; j < level; ++j) {
+        triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+    return triangles;
+  }
+  // Row i holds level - i + 1 points; index of (i, j) by the row offsets.
+  std::vector<uint32_t> row_start(level + 2, 0);
+  for (int i = 0; i <= level; ++i) row_start[i + 1] = row_start[i] + uint32_t(level - i + 1);
+  auto at = [&](int i, int j) { return base + row_start[i] + uint32_t(j); };
+  for (int i = 0; i < level; ++i) {
+    for (int j = 0; j < level - i; ++j) {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      if (j + 1 < level - i) triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return triangles;
+}
+
+double angleDegrees(const Vec3d& a, const Vec3d& b) {
+  const double la = length(a), lb = length(b);
+  if (!(la > 0) || !(lb > 0)) return 0;
+  return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
+                                        const ref::LimitSurface& limit) {
+  const Mesh& control = patches.controlMesh();
+  const Topology topology = buildTopology(control);
+  const uint32_t regular_valence = patches.domain() == PatchDomain::kQuad ? 4 : 6;
+  std::vector<uint8_t> extraordinary(control.positions.size(), 0);
+  for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
+
+  SurfaceErrorFigures figures;
+  figures.bbox_diagonal = ref::boundingBoxDiagonal(control.positions);
+  const std::vector<PatchSample> samples = patchSamples(patches.domain(), kErrorSampleLevel);
+  std::vector<Vec3d> technique_points;
+  std::vector<ref::Triangle> technique_triangles;
+  double squared_sum = 0, normal_sum = 0;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    if (!limit.hasLimitSurface(p)) {
+      ++figures.patches_without_limit;
+      continue;
+    }
+    const ref::LimitFace face = limit.face(p);
+    const auto corners = patches.patchCorners(p);
+    const auto lattice = latticeTriangles(patches.domain(), kErrorSampleLevel,
+                                          uint32_t(technique_points.size()));
+    technique_triangles.insert(technique_triangles.end(), lattice.begin(), lattice.end());
+    for (const PatchSample& sample : samples) {
+      const SurfacePoint point = patches.evaluate(p, sample.coord);
+      const ref::LimitPoint exact = face.evaluate(sample.u, sample.v);
+      technique_points.push_back(point.position);
+      const double error = length(point.position - exact.position);
+      bool near = false;
+      for (int c = 0; c < 4; ++c) {
+        near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
+                sample.corner_weight[c] >= kNearExtraordinary;
+      }
+      double& bucket = near ? figures.parametric_max_near_extraordinary
+                            : figures.parametric_max_elsewhere;
+      bucket = std::max(bucket, error);
+      figures.samples_near_extraordinary += near;
+      figures.parametric_max = std::max(figures.parametric_max, error);
+      squared_sum += error * error;
+      const double angle = angleDegrees(point.normal, exact.normal);
+      figures.normal_max_deg = std::max(figures.normal_max_deg, angle);
+      normal_sum += angle;
+      ++figures.samples;
+    }
+  }
+  if (figures.samples > 0) {
+    figures.parametric_rms = std::sqrt(squared_sum / double(figures.samples));
+    figures.normal_mean_deg = normal_sum / double(figures.samples);
+    const ref::LimitTessellation dense = ref::tessellateLimit(limit, kErrorReferenceRate);
+    const ref::HausdorffResult distance =
+        ref::hausdorff({technique_points, technique_triangles}, dense.view(), 2);
+    figures.hausdorff = distance.hausdorff;
+    figures.hausdorff_technique_to_limit = distance.a_to_b.max;
+    figures.hausdorff_limit_to_technique = distance.b_to_a.max;
+    figures.rms_distance = distance.rms;
+  }
+  // Relative to the bounding-box diagonal, as every error figure is reported.
+  const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
+  for (double* value : {&figures.parametric_max, &figures.parametric_rms,
+                        &figures.parametric_max_near_extraordinary,
+                        &figures.parametric_max_elsewhere, &figures.hausdorff,
+                        &figures.hausdorff_technique_to_limit,
+                        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
+    *value *= scale;
+  }
+  return figures;
+}
+
+namespace {
+
+class SurfaceErrorMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{
+        "error", "Error against the exact limit surface",
+        "parametric and two-sided Hausdorff distance (fraction of the bounding-box diagonal) "
+        "and normal deviation (degrees) against the OpenSubdiv Bfr limit"};
+    return kInfo;
+  }
+  bool appliesTo(const Technique& technique) const override {
+    return technique.info().family == TechniqueFamily::kSurface;
+  }
+  bool dependsOnVariant() const override { return true; }
+
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    // Triangle techniques are graded against the Loop limit of the same triangle
+    // mesh, quad techniques against the Catmull-Clark limit (DESIGN.md measure 6).
+    const bool triangles = input.patches->domain() == PatchDomain::kTriangle;
+    const ref::Scheme scheme = triangles ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;
+    result.notes = {
+        "distances are fractions of the bounding-box diagonal; normals in degrees",
+        "triangle techniques against the Loop limit of their triangle mesh, quad techniques "
+        "against the Catmull-Clark limit (OpenSubdiv Bfr, double, approximation level 10)",
+        "samples: a lattice of " + std::to_string(kErrorSampleLevel) +
+            " segments per patch edge; reference tessellated at rate " +
+            std::to_string(kErrorReferenceRate) + "; near extraordinary: corner weight >= 0.75"};
+    try {
+      const ref::LimitSurface limit(input.patches->controlMesh(), scheme);
+      const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit);
+      MetricRow row;
+      row.keys["reference"] = triangles ? "loop_limit" : "catmull_clark_limit";
+      row.metrics = {
+          {"parametric_max", f.parametric_max, "rel_diag"},
+          {"parametric_rms", f.parametric_rms, "rel_diag"},
+          {"parametric_max_near_xord", f.parametric_max_near_extraordinary, "rel_diag"},
+          {"parametric_max_elsewhere", f.parametric_max_elsewhere, "rel_diag"},
+          {"hausdorff", f.hausdorff, "rel_diag"},
+          {"hausdorff_tech_to_limit", f.hausdorff_technique_to_limit, "rel_diag"},
+          {"hausdorff_limit_to_tech", f.hausdorff_limit_to_technique, "rel_diag"},
+          {"rms_distance", f.rms_distance, "rel_diag"},
+          {"normal_max", f.normal_max_deg, "deg"},
+          {"normal_mean", f.normal_mean_deg, "deg"},
+          {"samples", double(f.samples), "count"},
+          {"samples_near_xord", double(f.samples_near_extraordinary), "count"},
+          {"patches_without_limit", double(f.patches_without_limit), "count"},
+          {"bbox_diagonal", f.bbox_diagonal, "world"},
+      };
+      result.rows.push_back(std::move(row));
+    } catch (const InputError& error) {
+      result.status = MeasureStatus::kSkipped;
+      result.reason = std::string("reference cannot represent the mesh: ") + error.what();
+    }
+    return result;
+  }
+};
+
+TB_REGISTER_MEASURE(SurfaceErrorMeasure);
+
+}  // namespace
+}  // namespace tb

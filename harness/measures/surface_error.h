@@ -1,0 +1,48 @@
+// Measure 6 (DESIGN.md): error of a surface technique against the exact limit
+// surface of its control mesh (OpenSubdiv Bfr, in double).
+#pragma once
+
+#include <cstddef>
+
+#include "reference/limit_surface.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+// Every distance is a fraction of the control mesh's bounding-box diagonal
+// (best case 0; a visible error on a 1000-pixel-wide object starts near 1e-3).
+struct SurfaceErrorFigures {
+  double bbox_diagonal = 0;               // world units
+  // |S(p, u, v) - limit(face(p), u, v)| at the same parameter.
+  double parametric_max = 0;
+  double parametric_rms = 0;
+  double parametric_max_near_extraordinary = 0;  // samples within kNearExtraordinary of one
+  double parametric_max_elsewhere = 0;
+  // Two-sided distance between the technique's tessellation and a dense
+  // tessellation of the limit, sampled inside triangles.
+  double hausdorff = 0;
+  double hausdorff_technique_to_limit = 0;
+  double hausdorff_limit_to_technique = 0;
+  double rms_distance = 0;
+  // Angle between the technique's shading normal and the limit normal at the same
+  // parameter, in degrees (best 0, worst 180).
+  double normal_max_deg = 0;
+  double normal_mean_deg = 0;
+  size_t samples = 0;                   // parametric samples taken
+  size_t samples_near_extraordinary = 0;
+  size_t patches_without_limit = 0;     // hole faces etc., left out
+};
+
+// Lattice level of the technique's sampling (per patch edge) and the rate of the
+// reference tessellation.
+constexpr int kErrorSampleLevel = 8;
+constexpr int kErrorReferenceRate = 16;
+// A sample is "near" an extraordinary vertex when its barycentric weight (or
+// bilinear weight, for quads) of that corner is at least this.
+constexpr double kNearExtraordinary = 0.75;
+
+// The limit surface must be built over patches.controlMesh(), whose face p is patch p.
+SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
+                                        const ref::LimitSurface& limit);
+
+}  // namespace tb

@@ -1,0 +1,88 @@
+// Oracle: the limit surface itself. Patches that return Bfr's limit have zero
+// parametric error; the same patches moved by a known offset have exactly that
+// error; and phong's figures on the Loop icosahedron are finite and non-zero.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "harness/measures/surface_error.h"
+#include "harness/mesh/obj_loader.h"
+#include "reference/limit_surface.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+// Test double of a technique: the exact Loop limit, optionally offset.
+class LimitPatches final : public SurfacePatches {
+ public:
+  LimitPatches(const Mesh& mesh, Vec3d offset)
+      : mesh_(mesh), limit_(mesh, ref::Scheme::kLoop), offset_(offset) {}
+  PatchDomain domain() const override { return PatchDomain::kTriangle; }
+  size_t patchCount() const override { return mesh_.faceCount(); }
+  const Mesh& controlMesh() const override { return mesh_; }
+  std::array<uint32_t, 4> patchCorners(size_t p) const override {
+    const auto f = mesh_.facePositions(p);
+    return {f[0], f[1], f[2], UINT32_MAX};
+  }
+  uint32_t sourceFace(size_t p) const override { return uint32_t(p); }
+  SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
+    const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
+    return {point.position + offset_, point.normal};
+  }
+  DataFootprint footprint() const override { return {}; }
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+ private:
+  const Mesh& mesh_;
+  ref::LimitSurface limit_;
+  Vec3d offset_;
+  std::vector<std::string> warnings_;
+};
+
+TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const LimitPatches patches(mesh, {0, 0, 0});
+  const ref::LimitSurface limit(mesh, ref::Scheme::kLoop);
+  const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
+  EXPECT_EQ(f.parametric_max, 0.0);
+  EXPECT_LT(f.normal_max_deg, 1e-6);
+  // Only the chords of the two tessellations separate them.
+  EXPECT_LT(f.hausdorff, 2e-3);
+  EXPECT_GT(f.samples, 0u);
+  EXPECT_GT(f.samples_near_extraordinary, 0u);  // the icosahedron's vertices have valence 5
+}
+
+TEST(SurfaceError, AKnownOffsetIsMeasuredExactly) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const ref::LimitSurface limit(mesh, ref::Scheme::kLoop);
+  const double offset = 0.01;
+  const LimitPatches patches(mesh, {offset, 0, 0});
+  const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
+  EXPECT_NEAR(f.parametric_max * f.bbox_diagonal, offset, 1e-12);
+  EXPECT_NEAR(f.parametric_rms * f.bbox_diagonal, offset, 1e-12);
+  // A shifted closed surface is at most `offset` away, and somewhere a good part of it.
+  EXPECT_LE(f.hausdorff * f.bbox_diagonal, offset + 2e-3 * f.bbox_diagonal);
+  EXPECT_GT(f.hausdorff * f.bbox_diagonal, 0.5 * offset);
+}
+
+TEST(SurfaceError, PhongOnTheIcosahedronIsCloserThanTheFlatTriangles) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  VariantInfo flat, curved;
+  for (const VariantInfo& v : phong->variants()) {
+    if (v.name == "alpha0") flat = v;
+    if (v.name == "alpha0.75") curved = v;
+  }
+  const auto flat_patches = phong->buildPatches(mesh, flat);
+  const auto curved_patches = phong->buildPatches(mesh, curved);
+  const ref::LimitSurface limit(flat_patches->controlMesh(), ref::Scheme::kLoop);
+  const SurfaceErrorFigures f0 = measureSurfaceError(*flat_patches, limit);
+  const SurfaceErrorFigures f75 = measureSurfaceError(*curved_patches, limit);
+  EXPECT_GT(f0.hausdorff, 0.0);
+  EXPECT_LT(f75.rms_distance, f0.rms_distance);
+}
+
+}  // namespace
+}  // namespace tb
