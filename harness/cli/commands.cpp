@@ -113,7 +113,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   // The folder is made only after measuring, so a failed run leaves nothing behind.
   std::string run_id;
   const std::string folder = createRunFolder(args.out, args.run_id, &run_id);
-  results.context = probeRunContext(command_line);
+  results.context = probeRunContext(command_line, args.device);
   results.context.date = utcTimestampIso8601();
   results.context.run_id = run_id;
   writeNewFile(folder + "/results.json", serializeResults(results));

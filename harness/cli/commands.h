@@ -18,6 +18,7 @@ struct RunArgs {
   std::string out = "results";
   std::string run_id;
   bool quiet = false;
+  std::string device;  // Vulkan device name substring; empty = best available
 };
 
 struct ReportArgs {

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--run-id", run_args.run_id, "folder name (must not exist yet)");
   run->add_flag("--quiet", run_args.quiet, "no progress output");
+  run->add_option("--device", run_args.device, "Vulkan device name substring (default: best)");
 
   tb::cli::ReportArgs report_args;
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");

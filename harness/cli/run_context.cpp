@@ -13,6 +13,7 @@
 
 #include <fstream>
 
+#include "harness/gpu/context.h"
 #include "tb_build_info.h"
 
 namespace tb::cli {
@@ -48,8 +49,19 @@ std::string vulkanLoaderVersion() {
 
 }  // namespace
 
-RunContext probeRunContext(const std::string& command_line) {
+std::string describeVulkanDevice(const std::string& device_name) {
+  gpu::ContextOptions options;
+  options.device_name = device_name;
+  options.required = {};  // describe whatever device there is; measures check features
+  auto created = gpu::Context::create(options);
+  if (!created) return "none: " + created.error();
+  const gpu::DeviceInfo& info = created.value()->info();
+  return info.device_name + " (" + info.driver_info + ", Vulkan " + info.api_version + ")";
+}
+
+RunContext probeRunContext(const std::string& command_line, const std::string& device_name) {
   RunContext context;
+  context.vulkan_device = describeVulkanDevice(device_name);
   context.git_sha = TB_GIT_SHA;
   context.host = hostName();
   context.cpu = cpuModel() + " (" + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores)";

@@ -7,6 +7,7 @@
 
 namespace tb::cli {
 
-RunContext probeRunContext(const std::string& command_line);
+// device_name: --device substring; empty picks the best device (lavapipe here).
+RunContext probeRunContext(const std::string& command_line, const std::string& device_name);
 
 }  // namespace tb::cli
