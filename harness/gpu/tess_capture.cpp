@@ -7,11 +7,8 @@
 #include "harness/gpu/buffer.h"
 #include "harness/gpu/tess_pipelines.h"
 #include "harness/gpu/tess_weld.h"
-#if __has_include("harness/tess/factor_helpers.h")
 #include "harness/gpu/vk_handle.h"
 #include "harness/tess/factor_helpers.h"
-#define TB_GPU_HAS_ROUND_POW2 1
-#endif
 
 namespace tb::gpu {
 namespace {
@@ -50,27 +47,6 @@ struct CaptureResources {
   Buffer counters;  // bytes written per draw, from vkCmdEndTransformFeedbackEXT
   VkQueryPoolOwner queries;
 };
-
-#ifdef TB_GPU_HAS_ROUND_POW2
-tess::Levels pow2Levels(tess::Domain domain, const tess::Levels& levels) {
-  return tess::roundPow2Levels(domain, levels);
-}
-#else
-// Stand-in until harness/tess/factor_helpers.h exists: each positive level clamped to
-// [1, 64] and rounded up to a power of two; NaN and <= 0 pass through so culling holds.
-tess::Levels pow2Levels(tess::Domain, const tess::Levels& levels) {
-  tess::Levels rounded = levels;
-  auto round = [](float& level) {
-    if (!(level > 0.0f)) return;
-    float pow2 = 1.0f;
-    while (pow2 < std::min(level, 64.0f)) pow2 *= 2.0f;
-    level = pow2;
-  };
-  for (float& level : rounded.outer) round(level);
-  for (float& level : rounded.inner) round(level);
-  return rounded;
-}
-#endif
 
 std::span<const float> relevantLevels(tess::Domain domain, const tess::Levels& levels,
                                       float (&scratch)[6]) {
@@ -192,7 +168,7 @@ GpuTessellationBatch tessellateOnGpuBatch(Context& context, tess::Domain domain,
       pipelines.get({domain, spacing, options.ccw, options.point_mode}, TessOutput::kCapture);
   std::vector<tess::Levels> device_levels(levels.begin(), levels.end());
   if (spacing == tess::Spacing::kPow2) {
-    for (tess::Levels& l : device_levels) l = pow2Levels(domain, l);
+    for (tess::Levels& l : device_levels) l = tess::roundPow2Levels(domain, l);
   }
   const uint32_t vertices_per_primitive = verticesPerPrimitive(domain, options);
 
@@ -247,7 +223,7 @@ TessThroughput measureTessThroughput(Context& context, tess::Domain domain, tess
   const VkPipeline pipeline =
       pipelines.get({domain, spacing, options.ccw, options.point_mode}, TessOutput::kPlain);
   const tess::Levels device_levels =
-      spacing == tess::Spacing::kPow2 ? pow2Levels(domain, levels) : levels;
+      spacing == tess::Spacing::kPow2 ? tess::roundPow2Levels(domain, levels) : levels;
   const VkQueryPool pool = resources.queries.get();
 
   TessThroughput result;

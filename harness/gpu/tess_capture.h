@@ -45,6 +45,9 @@ struct GpuTessellationBatch {
 };
 
 // Levels are written to gl_TessLevelOuter/Inner bit for bit (NaN and negatives too).
+// options.ccw has the CPU tessellator's meaning, counter-clockwise in (u, v) with v up:
+// the pipeline uses VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT (Vulkan's default upper-left
+// origin reverses every triangle; the coordinates are the same either way).
 // Spacing kPow2 tessellates the levels rounded by tess::roundPow2Levels with equal
 // spacing. `culled` is set when the device ran no TES invocation. Throws GpuError if the
 // context lacks tessCaptureFeatures() or a Vulkan call fails.

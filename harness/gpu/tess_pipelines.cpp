@@ -39,6 +39,13 @@ VkPipelineOwner createPipeline(VkDevice device, VkPipelineLayout layout, VkShade
   auto tessellation = vkStruct<VkPipelineTessellationStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
   tessellation.patchControlPoints = 1;
+  // Lower-left origin makes layout(ccw) counter-clockwise in (u, v) with v up, the
+  // convention of tess::Options::ccw (harness/tess/stitch.h, GL's). Vulkan's default
+  // upper-left origin would reverse every triangle; gl_TessCoord is the same either way.
+  auto origin = vkStruct<VkPipelineTessellationDomainOriginStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
+  origin.domainOrigin = VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT;
+  tessellation.pNext = &origin;
   // Zero attachments: under rasterizer discard nothing is written.
   const auto rendering =
       vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);

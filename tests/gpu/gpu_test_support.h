@@ -24,8 +24,9 @@ inline Context* sharedContext(std::string* reason) {
 }  // namespace tb::gpu::testing
 
 // Declares `Context& context` or skips the test with the reason no device is usable.
-#define TB_GPU_CONTEXT_OR_SKIP(context)                                                       \
-  std::string tb_skip_reason_;                                                                \
-  ::tb::gpu::Context* tb_context_ = ::tb::gpu::testing::sharedContext(&tb_skip_reason_);      \
-  if (tb_context_ == nullptr) GTEST_SKIP() << "no usable Vulkan device: " << tb_skip_reason_; \
-  ::tb::gpu::Context& context = *tb_context_
+#define TB_GPU_CONTEXT_OR_SKIP(context)                                                        \
+  std::string tb_gpu_skip_reason;                                                              \
+  ::tb::gpu::Context* tb_gpu_context = ::tb::gpu::testing::sharedContext(&tb_gpu_skip_reason); \
+  if (tb_gpu_context == nullptr)                                                               \
+    GTEST_SKIP() << "no usable Vulkan device: " << tb_gpu_skip_reason;                         \
+  ::tb::gpu::Context& context = *tb_gpu_context

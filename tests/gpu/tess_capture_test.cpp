@@ -129,6 +129,23 @@ TEST(TessCapture, ClockwiseReversesEveryTriangle) {
   EXPECT_NE(oriented(a, false), oriented(b, false));
 }
 
+// tess::Options::ccw means counter-clockwise in the (u, v) plane with v up (GL's and
+// Vulkan's lower-left domain origin; the CPU tessellator's convention).
+TEST(TessCapture, CcwIsCounterClockwiseInUvWithVUp) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (Domain domain : {Domain::kTriangle, Domain::kQuad}) {
+    const auto t = tessellateOnGpu(context, domain, Spacing::kInteger, uniform(2));
+    ASSERT_FALSE(t.triangles.empty());
+    for (const auto& tri : t.triangles) {
+      const auto& a = t.points[tri[0]];
+      const auto& b = t.points[tri[1]];
+      const auto& c = t.points[tri[2]];
+      const float twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+      EXPECT_GT(twice_area, 0.0f) << "domain " << static_cast<int>(domain);
+    }
+  }
+}
+
 TEST(TessCapture, ThroughputCountsEveryDraw) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const auto run = measureTessThroughput(context, Domain::kQuad, Spacing::kInteger, uniform(8), 10);
