@@ -7,7 +7,7 @@ packages=(
   build-essential cmake git pkg-config python3 python3-scipy
   libosd-dev libembree-dev libopenexr-dev
   glslang-tools glslang-dev spirv-tools
-  mesa-vulkan-drivers libvulkan-dev vulkan-tools
+  mesa-vulkan-drivers libvulkan-dev vulkan-tools vulkan-validationlayers
   libbenchmark-dev libbenchmark-tools libgtest-dev
   libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libmeshoptimizer-dev libtbb-dev

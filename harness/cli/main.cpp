@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "harness/cli/commands.h"
+#include "harness/cli/tessellate_run.h"
 #include "techniques/registry.h"
 
 int main(int argc, char** argv) {
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
   report->add_option("run_dir", report_args.run_dir, "results/<run-id>")->required();
   report->add_option("--format", report_args.format, "md")->capture_default_str();
 
+  tb::cli::TessellateArgs tessellate_args;
+  tb::cli::addTessellateCommand(app, tessellate_args);
+  CLI::App* tessellate = app.get_subcommand("tessellate");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -50,6 +55,7 @@ int main(int argc, char** argv) {
     if (*list) return tb::cli::runList(list_args);
     if (*run) return tb::cli::runRun(run_args, command_line);
     if (*report) return tb::cli::runReport(report_args);
+    if (*tessellate) return tb::cli::runTessellate(tessellate_args);
   } catch (const std::exception& error) {
     std::fflush(stdout);
     fmt::print(stderr, "tessbench: error: {}\n", error.what());

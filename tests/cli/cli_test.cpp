@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +89,50 @@ TEST(Cli, ErrorMeasureReportsEveryTriangleAsset) {
   }
   EXPECT_EQ(with_error, 8u);  // 4 variants x 2 assets
   EXPECT_NE(readFile(dir / "e" / "report.md").find("## Measure: error"), std::string::npos);
+}
+
+// Oracle: lavapipe's own tessellator. Both backends must give the same points and the
+// same triangles (as coordinate triples), whatever order each emits them in.
+TEST(Cli, TessellateCpuAndGpuBackendsAgree) {
+  const std::string args =
+      "tessellate --domain tri --spacing fractional_odd --outer 3.3,5.1,7.9 --inner 4.4 --json";
+  const CommandResult cpu = runTessbench(args + " --backend cpu");
+  ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+  const CommandResult gpu = runTessbench(args + " --backend gpu");
+  if (gpu.exit_code != 0 && gpu.output.find("Vulkan") != std::string::npos) {
+    GTEST_SKIP() << "no Vulkan device: " << gpu.output;
+  }
+  ASSERT_EQ(gpu.exit_code, 0) << gpu.output;
+  using Point = std::vector<double>;
+  auto canonical = [](const std::string& text) {
+    const auto json = nlohmann::json::parse(text);
+    std::vector<Point> points;
+    for (const auto& p : json["points"]) points.push_back(p.get<Point>());
+    std::vector<std::vector<Point>> primitives;
+    for (const auto& prim : json["primitives"]) {
+      std::vector<Point> corners;
+      for (const auto& i : prim) corners.push_back(points.at(i.get<size_t>()));
+      std::sort(corners.begin(), corners.end());
+      primitives.push_back(corners);
+    }
+    std::sort(points.begin(), points.end());
+    std::sort(primitives.begin(), primitives.end());
+    return std::make_pair(points, primitives);
+  };
+  const auto a = canonical(cpu.output), b = canonical(gpu.output);
+  EXPECT_GT(a.first.size(), 10u);
+  EXPECT_EQ(a.first, b.first);
+  EXPECT_EQ(a.second, b.second);
+}
+
+TEST(Cli, TessellateRejectsBadLevelsInOneLine) {
+  for (const char* args : {"--domain quad --spacing integer --outer 1,2,3 --inner 1,1",
+                           "--domain tri --spacing integer --outer 1,x,3 --inner 1",
+                           "--domain tri --spacing sideways --outer 1,2,3 --inner 1"}) {
+    const CommandResult r = runTessbench(std::string("tessellate ") + args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_EQ(lineCount(r.output), 1u) << r.output;
+  }
 }
 
 TEST(Cli, UnknownTechniqueAndMeasureAreRejected) {

@@ -1,0 +1,58 @@
+#include "harness/cli/tessellate_run.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "harness/gpu/context.h"
+#include "harness/gpu/tess_capture.h"
+
+namespace tb::cli {
+namespace {
+
+tess::Tessellation tessellateWithGpu(const TessellateArgs& args, const TessellateRequest& request) {
+  gpu::ContextOptions options;
+  options.device_name = args.device;
+  auto context = gpu::Context::create(options);
+  if (!context) throw std::runtime_error("--backend gpu: " + context.error());
+  return gpu::tessellateOnGpu(*context.value(), request.domain, request.spacing, request.levels,
+                              request.options);
+}
+
+// One point per line, then one primitive per line: readable, and diffable.
+void printText(tess::Domain domain, const tess::Tessellation& result) {
+  if (result.culled) {
+    fmt::print("culled\n");
+    return;
+  }
+  fmt::print("{} points\n", result.points.size());
+  for (const auto& p : result.points) {
+    if (domain == tess::Domain::kTriangle) fmt::print("{} {} {}\n", p[0], p[1], p[2]);
+    else fmt::print("{} {}\n", p[0], p[1]);
+  }
+  if (domain == tess::Domain::kIsoline) {
+    fmt::print("{} lines\n", result.lines.size());
+    for (const auto& l : result.lines) fmt::print("{} {}\n", l[0], l[1]);
+  } else {
+    fmt::print("{} triangles\n", result.triangles.size());
+    for (const auto& t : result.triangles) fmt::print("{} {} {}\n", t[0], t[1], t[2]);
+  }
+}
+
+}  // namespace
+
+int runTessellate(const TessellateArgs& args) {
+  const TessellateRequest request = parseTessellateArgs(args);
+  const tess::Tessellation result =
+      args.backend == "gpu" ? tessellateWithGpu(args, request)
+                            : tess::tessellate(request.domain, request.spacing, request.levels,
+                                               request.options);
+  if (args.json) {
+    fmt::print("{}\n", tessellationToJson(request.domain, result));
+  } else {
+    printText(request.domain, result);
+  }
+  return 0;
+}
+
+}  // namespace tb::cli
