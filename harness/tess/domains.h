@@ -48,8 +48,7 @@ inline std::vector<uint32_t> reversedRow(const std::vector<uint32_t>& row) {
   return {row.rbegin(), row.rend()};
 }
 
-void tessellateTriangleDomain(const TrianglePlan& plan, const Options& options,
-                              Tessellation* out);
+void tessellateTriangleDomain(const TrianglePlan& plan, const Options& options, Tessellation* out);
 void tessellateQuadDomain(const QuadPlan& plan, const Options& options, Tessellation* out);
 
 }  // namespace tb::tess

@@ -34,9 +34,8 @@ EdgeSpacing makeEdgeSpacing(Fixed level, Parity parity) {
   if (ceil_half == floor_half) {
     s.split_point = s.half_points + 1;  // no fraction: never split
   } else if (odd) {
-    s.split_point = floor_half == fxp::kOne
-                        ? 0
-                        : (fxp::removeHighestBit(fxp::toInt(floor_half) - 1) << 1) + 1;
+    s.split_point =
+        floor_half == fxp::kOne ? 0 : (fxp::removeHighestBit(fxp::toInt(floor_half) - 1) << 1) + 1;
   } else {
     s.split_point = (fxp::removeHighestBit(fxp::toInt(floor_half)) << 1) + 1;
   }

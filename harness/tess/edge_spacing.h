@@ -20,10 +20,10 @@ enum class Parity { kEven, kOdd };
 // out of existing ones in a fixed order as the level rises.
 struct EdgeSpacing {
   Parity parity = Parity::kOdd;
-  int point_count = 2;    // points on the edge, both ends included
-  int half_points = 1;    // points on one half before the middle (odd: includes one
-                          // middle-segment end; even: excludes the middle point)
-  int split_point = 2;    // index past which the floor layout lags one point behind
+  int point_count = 2;                // points on the edge, both ends included
+  int half_points = 1;                // points on one half before the middle (odd: includes one
+                                      // middle-segment end; even: excludes the middle point)
+  int split_point = 2;                // index past which the floor layout lags one point behind
   fxp::Fixed half_fraction = 0;       // fractional part of the half-level
   fxp::Fixed inv_floor_segments = 0;  // 1 / segments of the floor layout
   fxp::Fixed inv_ceil_segments = 0;   // 1 / segments of the ceil layout

@@ -175,18 +175,15 @@ ProcessedFactors processQuadTessFactorsMin(Spacing spacing, const std::array<flo
   return processQuad(spacing, raw_edges, {inside_scale, 0}, Reduction::kMin, false);
 }
 
-ProcessedFactors process2DQuadTessFactorsAvg(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsAvg(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale) {
   return processQuad(spacing, raw_edges, inside_scale, Reduction::kAverage, true);
 }
-ProcessedFactors process2DQuadTessFactorsMax(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsMax(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale) {
   return processQuad(spacing, raw_edges, inside_scale, Reduction::kMax, true);
 }
-ProcessedFactors process2DQuadTessFactorsMin(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsMin(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale) {
   return processQuad(spacing, raw_edges, inside_scale, Reduction::kMin, true);
 }

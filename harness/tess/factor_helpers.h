@@ -43,14 +43,11 @@ ProcessedFactors processQuadTessFactorsMin(Spacing spacing, const std::array<flo
 
 // Quad, each inside axis from the two edges parallel to it (inside u from v = 0 and
 // v = 1; inside v from u = 0 and u = 1), each with its own scale.
-ProcessedFactors process2DQuadTessFactorsAvg(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsAvg(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale);
-ProcessedFactors process2DQuadTessFactorsMax(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsMax(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale);
-ProcessedFactors process2DQuadTessFactorsMin(Spacing spacing,
-                                             const std::array<float, 4>& raw_edges,
+ProcessedFactors process2DQuadTessFactorsMin(Spacing spacing, const std::array<float, 4>& raw_edges,
                                              const std::array<float, 2>& inside_scale);
 
 // Isoline: the detail factor is clamped and rounded per spacing (pow2 included); the

@@ -48,8 +48,6 @@ bool valueOf(const std::array<std::pair<Enum, std::string_view>, kCount>& names,
 std::string_view toString(Domain d) { return nameOf(kDomainNames, d); }
 std::string_view toString(Spacing s) { return nameOf(kSpacingNames, s); }
 bool parseDomain(std::string_view name, Domain* out) { return valueOf(kDomainNames, name, out); }
-bool parseSpacing(std::string_view name, Spacing* out) {
-  return valueOf(kSpacingNames, name, out);
-}
+bool parseSpacing(std::string_view name, Spacing* out) { return valueOf(kSpacingNames, name, out); }
 
 }  // namespace tb::tess

@@ -27,7 +27,7 @@ struct QuadPlan {
 
 struct IsolinePlan {
   bool culled = false;
-  int line_count = 0;  // lines at v = 0 .. < 1 (the line at v = 1 is never drawn)
+  int line_count = 0;     // lines at v = 0 .. < 1 (the line at v = 1 is never drawn)
   EdgeSpacing density{};  // places the lines along v; always integer spacing
   EdgeSpacing detail{};   // places the points along each line
 };

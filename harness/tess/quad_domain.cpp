@@ -35,7 +35,8 @@ RingRows boundaryRing(const QuadPlan& plan, PointWriter& points) {
     for (int p = 0; p < last; ++p) {
       const Fixed t = placePoint(spacing, runsForward(e) ? p : last - p);
       const bool along_v = alongAxis(e) == kV;
-      ring[e].push_back(along_v ? points.add(fixed_coordinate, t) : points.add(t, fixed_coordinate));
+      ring[e].push_back(along_v ? points.add(fixed_coordinate, t)
+                                : points.add(t, fixed_coordinate));
     }
   }
   closeRing(&ring, kEdges);
@@ -68,11 +69,13 @@ RingRows middleLine(const QuadPlan& plan, int start, PointWriter& points, bool r
   std::vector<uint32_t> line;
   if (row) {
     const int last = plan.inner[kU].point_count - 1 - start;
-    for (int p = start; p <= last; ++p) line.push_back(points.add(placePoint(plan.inner[kU], p), fxp::kHalf));
+    for (int p = start; p <= last; ++p)
+      line.push_back(points.add(placePoint(plan.inner[kU], p), fxp::kHalf));
     return RingRows{{{line.front()}, line, {line.back()}, reversedRow(line)}};
   }
   const int last = plan.inner[kV].point_count - 1 - start;
-  for (int p = last; p >= start; --p) line.push_back(points.add(fxp::kHalf, placePoint(plan.inner[kV], p)));
+  for (int p = last; p >= start; --p)
+    line.push_back(points.add(fxp::kHalf, placePoint(plan.inner[kV], p)));
   return RingRows{{line, {line.back()}, reversedRow(line), {line.front()}}};
 }
 

@@ -34,9 +34,9 @@ class TriangleSink {
 
 // Where quad diagonals point when both rows advance together.
 enum class Diagonals {
-  kInsideToOutside,             // every diagonal from inside[i] to outside[i + 1]
-  kInsideToOutsideExceptMiddle, // same, but the middle quad flips (odd strips)
-  kMirrored,                    // first half flipped, second half not: symmetric strip
+  kInsideToOutside,              // every diagonal from inside[i] to outside[i + 1]
+  kInsideToOutsideExceptMiddle,  // same, but the middle quad flips (odd strips)
+  kMirrored,                     // first half flipped, second half not: symmetric strip
 };
 
 // Two rows whose point counts differ by 0 (trapezoid = false) or 2 (trapezoid = true:

@@ -61,8 +61,7 @@ RingRows innerRing(const EdgeSpacing& inner, int r, PointWriter& points) {
 
 }  // namespace
 
-void tessellateTriangleDomain(const TrianglePlan& plan, const Options& options,
-                              Tessellation* out) {
+void tessellateTriangleDomain(const TrianglePlan& plan, const Options& options, Tessellation* out) {
   PointWriter points(out, /*barycentric=*/true);
   TriangleSink sink(&out->triangles, options.ccw);
   if (plan.minimal) {

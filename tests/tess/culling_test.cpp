@@ -20,7 +20,11 @@ size_t outerUsed(Domain domain) {
 }
 
 TEST(TessCulling, AnyUsedOuterLevelZeroNegativeOrNaNCulls) {
-  const float kBad[] = {0.0f, -0.0f, -1.0f, -70.0f, std::numeric_limits<float>::quiet_NaN(),
+  const float kBad[] = {0.0f,
+                        -0.0f,
+                        -1.0f,
+                        -70.0f,
+                        std::numeric_limits<float>::quiet_NaN(),
                         -std::numeric_limits<float>::infinity()};
   for (Domain domain : testing::kDomains) {
     for (Spacing spacing : kSpacings) {
@@ -76,8 +80,8 @@ TEST(TessMinimal, AllOnesIsOneTriangleOrTwo) {
     EXPECT_EQ(quad.points[2], (DomainPoint{1, 1, 0}));
   }
   // fractional_even has no level 1: it clamps to 2 (7 points, 6 triangles).
-  const Tessellation even = tessellate(Domain::kTriangle, Spacing::kFractionalEven,
-                                       uniformLevels(1.0f));
+  const Tessellation even =
+      tessellate(Domain::kTriangle, Spacing::kFractionalEven, uniformLevels(1.0f));
   EXPECT_EQ(even.points.size(), 7u);
   EXPECT_EQ(even.triangles.size(), 6u);
   // Levels that convert to exactly 1.0 in 16.16 are still the minimal case; 1 + 2^-18
@@ -121,9 +125,9 @@ TEST(TessFixups, FractionalOddInsideIsHeldAboveOne) {
   EXPECT_EQ(distinct.size(), 9u);
 
   // The same inside level with every outer level 1 stays the minimal case.
-  EXPECT_EQ(tessellate(Domain::kTriangle, Spacing::kFractionalOdd, uniformLevels(1.0f))
-                .points.size(),
-            3u);
+  EXPECT_EQ(
+      tessellate(Domain::kTriangle, Spacing::kFractionalOdd, uniformLevels(1.0f)).points.size(),
+      3u);
   // For quads the raw inside levels count too: inside 1.5 alone forces the frame.
   Levels quad = uniformLevels(1.0f);
   quad.inner = {1.5f, 1.0f};

@@ -85,11 +85,11 @@ TEST(TessEdges, PatchesSharingAnEdgeAgree) {
 
 TEST(TessFixedPoint, ConversionRoundsHalfToEvenAndSaturates) {
   EXPECT_EQ(fxp::fromFloat(1.0f), 0x10000u);
-  EXPECT_EQ(fxp::fromFloat(1.0f + 0x1p-17f), 0x10000u);        // tie, even stays
-  EXPECT_EQ(fxp::fromFloat(1.0f + 3 * 0x1p-17f), 0x10002u);    // tie, odd rounds up
+  EXPECT_EQ(fxp::fromFloat(1.0f + 0x1p-17f), 0x10000u);      // tie, even stays
+  EXPECT_EQ(fxp::fromFloat(1.0f + 3 * 0x1p-17f), 0x10002u);  // tie, odd rounds up
   EXPECT_EQ(fxp::fromFloat(1.0f + 0x1p-18f), 0x10000u);
-  EXPECT_EQ(fxp::fromFloat(63.9f), 0x3fe666u);                 // 63.9f = 0x1.ff3334p+5
-  EXPECT_EQ(fxp::fromFloat(0x1p-17f), 0u);                     // tie at zero
+  EXPECT_EQ(fxp::fromFloat(63.9f), 0x3fe666u);  // 63.9f = 0x1.ff3334p+5
+  EXPECT_EQ(fxp::fromFloat(0x1p-17f), 0u);      // tie at zero
   EXPECT_EQ(fxp::fromFloat(-2.0f), 0u);
   EXPECT_EQ(fxp::fromFloat(std::numeric_limits<float>::quiet_NaN()), 0u);
   EXPECT_EQ(fxp::fromFloat(40000.0f), 0xffffffffu);

@@ -13,11 +13,9 @@
 
 namespace tb::tess::testing {
 
-inline constexpr std::array<Domain, 3> kDomains{Domain::kTriangle, Domain::kQuad,
-                                                Domain::kIsoline};
-inline constexpr std::array<Spacing, 4> kSpacings{Spacing::kInteger, Spacing::kPow2,
-                                                  Spacing::kFractionalOdd,
-                                                  Spacing::kFractionalEven};
+inline constexpr std::array<Domain, 3> kDomains{Domain::kTriangle, Domain::kQuad, Domain::kIsoline};
+inline constexpr std::array<Spacing, 4> kSpacings{
+    Spacing::kInteger, Spacing::kPow2, Spacing::kFractionalOdd, Spacing::kFractionalEven};
 
 inline Levels uniformLevels(float level) {
   Levels l;
@@ -58,8 +56,7 @@ inline std::vector<double> doubleAreas(const Tessellation& t) {
 
 // The parameters along one boundary edge, read from the points lying on it: `fixed` is
 // the coordinate held at `value` (0 = u, 1 = v, 2 = w), `along` the one that varies.
-inline std::vector<float> edgeParameters(const Tessellation& t, int fixed, float value,
-                                         int along) {
+inline std::vector<float> edgeParameters(const Tessellation& t, int fixed, float value, int along) {
   std::vector<float> params;
   for (const DomainPoint& p : t.points) {
     if (p[fixed] == value) params.push_back(p[along]);

@@ -33,7 +33,8 @@ void expectUsageError(const TessellateArgs& args, const std::string& fragment) {
 }
 
 TEST(TessellateCommand, RejectsBadArgumentsWithOneLine) {
-  expectUsageError(argsFor("tri", "integer", "1,2"), "--outer for domain tri needs 3 values, got 2");
+  expectUsageError(argsFor("tri", "integer", "1,2"),
+                   "--outer for domain tri needs 3 values, got 2");
   expectUsageError(argsFor("quad", "integer", "1,2,3"), "needs 4 values, got 3");
   expectUsageError(argsFor("isoline", "integer", "1,2,3"), "needs 2 values, got 3");
   expectUsageError(argsFor("quad", "integer", "1,2,x,4"), "--outer: 'x' is not a number");
@@ -92,14 +93,14 @@ TEST(TessellateCommand, JsonHasPointsPrimitivesAndCulled) {
   EXPECT_EQ(j["primitives"][0].get<std::vector<uint32_t>>(),
             (std::vector<uint32_t>(tri.triangles[0].begin(), tri.triangles[0].end())));
 
-  const tess::Tessellation line =
-      runCpuTessellate(argsFor("isoline", "integer", "2,3"), &domain);
+  const tess::Tessellation line = runCpuTessellate(argsFor("isoline", "integer", "2,3"), &domain);
   const nlohmann::json l = nlohmann::json::parse(tessellationToJson(domain, line));
   EXPECT_EQ(l["points"][0].size(), 2u);
   EXPECT_EQ(l["primitives"].size(), 6u);
   EXPECT_EQ(l["primitives"][0].size(), 2u);
 
-  const tess::Tessellation culled = runCpuTessellate(argsFor("quad", "integer", "1,0,1,1"), &domain);
+  const tess::Tessellation culled =
+      runCpuTessellate(argsFor("quad", "integer", "1,0,1,1"), &domain);
   const nlohmann::json c = nlohmann::json::parse(tessellationToJson(domain, culled));
   EXPECT_TRUE(c["culled"].get<bool>());
   EXPECT_TRUE(c["points"].empty());

@@ -34,8 +34,10 @@ TEST(TessWinding, CwIsCcwWithTwoVerticesSwapped) {
   for (Domain domain : {Domain::kTriangle, Domain::kQuad}) {
     for (Spacing spacing : testing::kSpacings) {
       const Levels levels = testing::randomLevels(rng, 1.0f, 64.0f);
-      const Tessellation ccw = tessellate(domain, spacing, levels, {.point_mode = false, .ccw = true});
-      const Tessellation cw = tessellate(domain, spacing, levels, {.point_mode = false, .ccw = false});
+      const Tessellation ccw =
+          tessellate(domain, spacing, levels, {.point_mode = false, .ccw = true});
+      const Tessellation cw =
+          tessellate(domain, spacing, levels, {.point_mode = false, .ccw = false});
       ASSERT_EQ(ccw.points, cw.points);
       ASSERT_EQ(ccw.triangles.size(), cw.triangles.size());
       for (size_t i = 0; i < ccw.triangles.size(); ++i) {
