@@ -8,11 +8,14 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "harness/gpu/patch_program_desc.h"
 #include "harness/mesh/mesh.h"
 #include "harness/mesh/vec.h"
+#include "harness/tess/tessellator.h"
 
 namespace tb {
 
@@ -50,6 +53,12 @@ struct SurfacePoint {
   Vec3d normal;  // unit length, or zero where the surface is degenerate
 };
 
+// The same in float: what the technique's shaders compute.
+struct SurfacePointF {
+  Vec3f position;
+  Vec3f normal;  // as the TES outputs it (normalised there when the shader normalises)
+};
+
 // Domain coordinates as the TES receives gl_TessCoord: triangles use barycentric
 // (u, v, w) weighting corners 0, 1, 2; quads use (u, v, unused).
 using DomainCoord = std::array<double, 3>;
@@ -69,6 +78,15 @@ class SurfacePatches {
   // The face of the input asset the patch came from (for parametric error).
   virtual uint32_t sourceFace(size_t patch) const = 0;
   virtual SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const = 0;
+  // The surface in float with the operation order of the technique's TES (and TCS set-up),
+  // at gl_TessCoord exactly as the tessellator emits it. The CPU side of every GPU
+  // comparison and of the crack measure: two patches that share an edge are watertight
+  // in float only if this gives bitwise-equal points there.
+  virtual SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const = 0;
+  // The GPU program that evaluates these patches (shaders/<id>/, run by
+  // harness/gpu/patch_program.h), or nullopt when the technique has no GPU path.
+  // Its patch p is this object's patch p.
+  virtual std::optional<gpu::GpuPatchProgram> gpuProgram() const { return std::nullopt; }
   virtual DataFootprint footprint() const = 0;
   // Non-fatal notes gathered while building ("3 quads fan-triangulated").
   virtual const std::vector<std::string>& warnings() const = 0;

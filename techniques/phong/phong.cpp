@@ -44,6 +44,19 @@ class PhongPatches final : public SurfacePatches {
     return {point.position, point.normal};
   }
 
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    const Mesh& mesh = tri_.mesh;
+    const uint32_t first = mesh.face_offsets[patch];
+    PhongTriangle<float> tri;
+    for (int i = 0; i < 3; ++i) {
+      tri.position[i] = vecCast<float>(mesh.positions[mesh.corner_positions[first + i]]);
+      tri.normal[i] = normalize(vecCast<float>(mesh.normals[mesh.corner_normals[first + i]]));
+    }
+    const PhongPoint<float> point =
+        evaluatePhong(tri, {coord[0], coord[1], coord[2]}, float(alpha_));
+    return {point.position, point.normal};
+  }
+
   DataFootprint footprint() const override {
     // Phong needs nothing beyond the vertex buffer and index buffer.
     return {triangleControlMeshBytes(tri_.mesh), 0, 0};

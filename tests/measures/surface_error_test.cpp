@@ -32,6 +32,10 @@ class LimitPatches final : public SurfacePatches {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position + offset_, point.normal};
   }
+  SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
+    const SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
+    return {vecCast<float>(point.position), vecCast<float>(point.normal)};
+  }
   DataFootprint footprint() const override { return {}; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
