@@ -16,6 +16,7 @@
 #include "harness/mesh/mesh.h"
 #include "harness/mesh/vec.h"
 #include "harness/tess/tessellator.h"
+#include "techniques/counting_scalar.h"
 
 namespace tb {
 
@@ -63,6 +64,14 @@ struct SurfacePointF {
 // (u, v, w) weighting corners 0, 1, 2; quads use (u, v, unused).
 using DomainCoord = std::array<double, 3>;
 
+// Exact scalar operation counts of one patch (DESIGN.md measure 1b), from the technique's
+// evaluators run with CountingScalar in the shader's operation order.
+struct OperationProfile {
+  OperationCounts per_patch_setup;  // control points etc., once per patch (TCS work)
+  OperationCounts per_vertex;       // one evaluated vertex: position + normal (TES work)
+  std::string note;                 // what was counted, e.g. "symmetric_fma order, tangent patches"
+};
+
 // The patches a surface technique built for one asset and variant.
 class SurfacePatches {
  public:
@@ -87,6 +96,12 @@ class SurfacePatches {
   // harness/gpu/patch_program.h), or nullopt when the technique has no GPU path.
   // Its patch p is this object's patch p.
   virtual std::optional<gpu::GpuPatchProgram> gpuProgram() const { return std::nullopt; }
+  // Operation counts for patch p at an interior domain point, or nullopt when the
+  // technique does not count. Counts may differ between regular and irregular patches.
+  virtual std::optional<OperationProfile> operationProfile(size_t patch) const {
+    (void)patch;
+    return std::nullopt;
+  }
   virtual DataFootprint footprint() const = 0;
   // Non-fatal notes gathered while building ("3 quads fan-triangulated").
   virtual const std::vector<std::string>& warnings() const = 0;

@@ -94,6 +94,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   SuiteSelection selection;
   selection.techniques = selectTechniques(args.techniques);
   selection.measures = selectMeasures(args.measures);
+  selection.device_name = args.device;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
 
   Results results;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "harness/gpu/context.h"
 #include "harness/mesh/mesh.h"
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
@@ -25,6 +26,10 @@ struct MeasureInput {
   const std::string& asset_name;
   const Mesh& mesh;                 // the asset as loaded
   const SurfacePatches* patches;    // built for this variant; null for simulation techniques
+  // The run's Vulkan device, or null when none is usable; then gpu_unavailable says why
+  // and GPU measures report themselves skipped with that reason.
+  gpu::Context* gpu = nullptr;
+  std::string gpu_unavailable;
 };
 
 class Measure {

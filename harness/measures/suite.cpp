@@ -43,6 +43,21 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   std::vector<AssetRef> refs = selection.assets;
   if (refs.empty()) refs = bundledAssets();
 
+  // One Vulkan device for the whole run (GPU measures share it); its absence is a reason
+  // each GPU measure reports, never an abort.
+  std::unique_ptr<gpu::Context> gpu_context;
+  std::string gpu_unavailable;
+  {
+    gpu::ContextOptions options;
+    options.device_name = selection.device_name;
+    auto created = gpu::Context::create(options);
+    if (created) {
+      gpu_context = std::move(created.value());
+    } else {
+      gpu_unavailable = created.error();
+    }
+  }
+
   std::vector<LoadedAsset> assets;
   for (const AssetRef& ref : refs) {
     Mesh mesh = loadObjFile(ref.path);
@@ -92,7 +107,9 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
         record.asset = asset.ref.name;
         formatParameters(variant, &record.parameters);
         if (patches) record.warnings = patches->warnings();
-        const MeasureInput input{*technique, variant, asset.ref.name, asset.mesh, patches.get()};
+        const MeasureInput input{*technique,     variant,           asset.ref.name,
+                                 asset.mesh,     patches.get(),     gpu_context.get(),
+                                 gpu_unavailable};
         for (const Measure* measure : applicable) record.measures.push_back(measure->run(input));
         results->records.push_back(std::move(record));
       }

@@ -16,6 +16,7 @@ struct SuiteSelection {
   std::vector<const Technique*> techniques;  // empty: every registered technique
   std::vector<AssetRef> assets;              // empty: every bundled asset
   std::vector<const Measure*> measures;      // empty: every registered measure
+  std::string device_name;                   // --device substring; empty: best device
 };
 
 // Called before each technique × variant × asset step: (done, total, label).
