@@ -167,7 +167,7 @@ BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatc
 
 class PairAccumulator {
  public:
-  explicit PairAccumulator(CrackFigures* figures) : f_(figures) {}
+  PairAccumulator(CrackFigures* figures, double scale_ulp) : f_(figures), scale_ulp_(scale_ulp) {}
 
   void add(const Vec3f& a, const Vec3f& b, const CrackLocation& where) {
     ++f_->points_compared;
@@ -175,23 +175,34 @@ class PairAccumulator {
     const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
     const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
     sum_ += gap;
-    f_->max_gap_world = std::max(f_->max_gap_world, gap);
-    const uint64_t ulp = maxUlp(a, b);
-    if (!f_->worst.found || ulp > f_->max_gap_ulp) {
-      f_->max_gap_ulp = ulp;
+    f_->max_gap_ulp = std::max(f_->max_gap_ulp, maxUlp(a, b));
+    const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
+    f_->max_gap_scale_ulp = std::max(f_->max_gap_scale_ulp, component / scale_ulp_);
+    if (!f_->worst.found || gap > f_->max_gap_world) {
+      f_->max_gap_world = gap;
       f_->worst = where;
       f_->worst.found = true;
     }
   }
   void finish() {
     f_->mean_gap_world = f_->points_compared ? sum_ / double(f_->points_compared) : 0;
-    if (f_->max_gap_ulp == 0) f_->worst = {};
+    if (f_->max_gap_world == 0) f_->worst = {};
   }
 
  private:
   CrackFigures* f_;
+  double scale_ulp_;
   double sum_ = 0;
 };
+
+// The spacing of floats at the control mesh's largest |coordinate|.
+double scaleUlp(const Mesh& mesh) {
+  float extent = 1e-30f;
+  for (const Vec3d& p : mesh.positions) {
+    extent = std::max({extent, std::fabs(float(p.x)), std::fabs(float(p.y)), std::fabs(float(p.z))});
+  }
+  return double(std::nextafter(extent, INFINITY)) - double(extent);
+}
 
 }  // namespace
 
@@ -283,7 +294,7 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
                          *context, &figures);
   figures.measured = true;
 
-  PairAccumulator pairs(&figures);
+  PairAccumulator pairs(&figures, scaleUlp(patches.controlMesh()));
   for (const SharedEdge& edge : shared.edges) {
     const PatchSide& a = edge.sides[0];
     for (size_t s = 1; s < edge.sides.size(); ++s) {

@@ -74,8 +74,13 @@ struct CrackFigures {
   uint64_t unpaired_points = 0;   // edge points with no mirror on the other side; 0 expected
   double max_gap_world = 0;       // Euclidean distance, world (asset) units
   double mean_gap_world = 0;      // over all compared pairs
-  uint64_t max_gap_ulp = 0;       // max over pairs and components of the float ulp distance
-  CrackLocation worst;            // pair with the largest ulp gap (first one on ties)
+  // Max over pairs and components of the float ulp distance. Near zero a tiny gap spans
+  // many ulps (1e-8 against 0 is ~8e8), hence the next figure.
+  uint64_t max_gap_ulp = 0;
+  // Max component gap in ulps of the asset's scale (the largest |coordinate| of the control
+  // mesh): 1 means one rounding step of the model's largest coordinate.
+  double max_gap_scale_ulp = 0;
+  CrackLocation worst;            // pair with the largest world gap (first one on ties)
 
   // GPU only: the captured position against evaluateFloat at the same gl_TessCoord, over
   // every captured vertex (agreement of the CPU float model with the device).

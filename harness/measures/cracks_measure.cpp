@@ -30,6 +30,7 @@ std::vector<Metric> crackMetrics(const CrackFigures& f) {
       {"max_gap_world", f.max_gap_world, "world"},
       {"mean_gap_world", f.mean_gap_world, "world"},
       {"max_gap_ulp", double(f.max_gap_ulp), "ulp"},
+      {"max_gap_scale_ulp", f.max_gap_scale_ulp, "ulp of scale"},
       {"worst_patch_a", w.found ? double(w.patch_a) : -1, "id"},
       {"worst_patch_b", w.found ? double(w.patch_b) : -1, "id"},
       {"worst_is_corner", w.found && w.corner ? 1.0 : 0.0, "bool"},
@@ -67,8 +68,10 @@ class CracksMeasure final : public Measure {
         "after the first is compared with the first at every tessellated point, paired by edge "
         "parameter t <-> 1 - t",
         "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
-        "components of the float ulp distance; worst_*: the pair with the largest ulp gap "
-        "(local edge k runs from corner k to k + 1; t from corner local_a), -1 when none",
+        "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
+        "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
+        "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
+        "runs from corner k to k + 1; t from corner local_a), -1 when none",
         "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
         "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; vs_cpu_float_*: "
         "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "

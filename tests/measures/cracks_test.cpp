@@ -164,6 +164,7 @@ TEST(Cracks, SymmetricEvaluationIsBitwiseWatertightOnTheCpuUnderEverySpacing) {
         EXPECT_EQ(f.unpaired_points, 0u);
         EXPECT_EQ(f.points_not_equal, 0u);
         EXPECT_EQ(f.max_gap_ulp, 0u);
+        EXPECT_EQ(f.max_gap_scale_ulp, 0.0);
         EXPECT_EQ(f.max_gap_world, 0.0);
         EXPECT_FALSE(f.worst.found);
       }
@@ -180,9 +181,11 @@ TEST(Cracks, NaiveEvaluationOpensGapsOfAFewUlps) {
     EXPECT_GT(f.points_not_equal, f.points_compared / 10);
     EXPECT_GE(f.max_gap_ulp, 1u);
     // Rounding, not a wrong formula: a few ulps of the largest coordinate (|x| < 2.5,
-    // ulp 2.4e-7). Ulps are counted per component, so near-zero ones show more.
+    // ulp 2.4e-7). Raw ulps are counted per component, so near-zero ones show more.
     EXPECT_GT(f.max_gap_world, 0.0);
     EXPECT_LT(f.max_gap_world, 8 * 2.4e-7);
+    EXPECT_GT(f.max_gap_scale_ulp, 0.0);
+    EXPECT_LE(f.max_gap_scale_ulp, 8.0);
     ASSERT_TRUE(f.worst.found);
     // The worst pair lies on an interior edge of the grid: t strictly inside (0, 1).
     EXPECT_FALSE(f.worst.corner);
