@@ -67,8 +67,9 @@ class MemoryMeasure final : public Measure {
         "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
         "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
         "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
-        "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so the same "
-        "asset gives about 56 / 2 = 28 at high levels"};
+        "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
+        "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
+        "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"};
     for (uint32_t level : kMemoryLevels) {
       const MemoryFigures m = measureMemory(*input.patches, level);
       MetricRow row;
