@@ -1,0 +1,327 @@
+#include "harness/measures/cracks.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+#include <unordered_map>
+
+#include "harness/gpu/patch_program.h"
+#include "harness/mesh/topology.h"
+
+namespace tb {
+namespace {
+
+constexpr int64_t kFixedOne = 1 << 16;  // the tessellator's 16.16 fixed point
+
+uint32_t cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
+
+// The domain points of one patch that lie on its boundary, in a fixed order: corners
+// first (index = corner), then each local edge's interior points by ascending t.
+struct BoundaryPoints {
+  std::vector<tess::DomainPoint> points;
+  // Per local edge: edge parameter in 16.16 -> index into `points`.
+  std::vector<std::map<int64_t, uint32_t>> edge_index;
+};
+
+// Edge parameter of `p` on local edge `edge` (from corner edge to edge + 1), or -1 when
+// `p` is not on that edge.
+int64_t edgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p) {
+  double t = -1;
+  if (domain == PatchDomain::kQuad) {
+    const float u = p[0], v = p[1];
+    switch (edge) {
+      case 0: if (v == 0) t = u; break;
+      case 1: if (u == 1) t = v; break;
+      case 2: if (v == 1) t = 1.0 - u; break;
+      default: if (u == 0) t = 1.0 - v; break;
+    }
+  } else if (p[(edge + 2) % 3] == 0) {
+    t = p[(edge + 1) % 3];
+  }
+  return t < 0 ? -1 : int64_t(std::llround(t * double(kFixedOne)));
+}
+
+bool isCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
+  if (domain == PatchDomain::kTriangle) return p[corner] == 1;
+  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
+}
+
+tess::Levels uniformLevels(float level) {
+  tess::Levels levels;
+  levels.outer = {level, level, level, level};
+  levels.inner = {level, level};
+  return levels;
+}
+
+tess::Domain tessDomain(PatchDomain domain) {
+  return domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+}
+
+BoundaryPoints boundaryPoints(PatchDomain domain, const tess::Tessellation& tessellation) {
+  const uint32_t corners = cornerCount(domain);
+  BoundaryPoints b;
+  b.points.resize(corners);
+  std::vector<bool> seen(corners, false);
+  b.edge_index.resize(corners);
+  std::vector<std::map<int64_t, tess::DomainPoint>> edge_points(corners);
+  for (const tess::DomainPoint& p : tessellation.points) {
+    for (uint32_t c = 0; c < corners; ++c) {
+      if (isCorner(domain, c, p)) {
+        b.points[c] = p;
+        seen[c] = true;
+      }
+    }
+    for (uint32_t e = 0; e < corners; ++e) {
+      const int64_t t = edgeParameter(domain, e, p);
+      if (t > 0 && t < kFixedOne) edge_points[e].emplace(t, p);
+    }
+  }
+  if (std::find(seen.begin(), seen.end(), false) != seen.end()) {
+    throw std::logic_error("cracks: the tessellation lacks a patch corner");
+  }
+  for (uint32_t e = 0; e < corners; ++e) {
+    for (const auto& [t, p] : edge_points[e]) {
+      b.edge_index[e].emplace(t, uint32_t(b.points.size()));
+      b.points.push_back(p);
+    }
+  }
+  return b;
+}
+
+using CoordBits = std::tuple<uint32_t, uint32_t, uint32_t>;
+CoordBits coordBits(const tess::DomainPoint& p) {
+  return {std::bit_cast<uint32_t>(p[0]), std::bit_cast<uint32_t>(p[1]),
+          std::bit_cast<uint32_t>(p[2])};
+}
+
+struct CoordBitsHash {
+  size_t operator()(const CoordBits& c) const {
+    return std::get<0>(c) * 0x9E3779B1u ^ std::get<1>(c) * 0x85EBCA77u ^ std::get<2>(c);
+  }
+};
+
+uint64_t maxUlp(const Vec3f& a, const Vec3f& b) {
+  return std::max({ulpDistance(a.x, b.x), ulpDistance(a.y, b.y), ulpDistance(a.z, b.z)});
+}
+
+// Positions at every boundary point of every patch: [patch * points + k].
+using BoundaryPositions = std::vector<Vec3f>;
+
+BoundaryPositions cpuPositions(const SurfacePatches& patches, const BoundaryPoints& boundary) {
+  const size_t n = boundary.points.size();
+  BoundaryPositions positions(patches.patchCount() * n);
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    for (size_t k = 0; k < n; ++k) {
+      positions[p * n + k] = patches.evaluateFloat(p, boundary.points[k]).position;
+    }
+  }
+  return positions;
+}
+
+BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
+                               const BoundaryPoints& boundary, tess::Spacing spacing, float level,
+                               size_t points_per_patch, gpu::Context& context,
+                               CrackFigures* figures) {
+  const size_t n = boundary.points.size();
+  std::unordered_map<CoordBits, uint32_t, CoordBitsHash> index;
+  for (size_t k = 0; k < n; ++k) index.emplace(coordBits(boundary.points[k]), uint32_t(k));
+  BoundaryPositions positions(patches.patchCount() * n);
+  std::vector<uint8_t> filled(positions.size(), 0);
+
+  // Chunks of about a million captured vertices bound the capture buffer; a few
+  // patches per draw keep lavapipe's single-threaded tessellator out of its
+  // super-linear regime (DESIGN.md, the GPU path).
+  const uint32_t patch_count = uint32_t(patches.patchCount());
+  const uint32_t chunk =
+      uint32_t(std::clamp<size_t>((1u << 20) / std::max<size_t>(points_per_patch, 1), 1, 4096));
+  gpu::PatchProgramOptions options;
+  options.spacing = spacing;
+  options.patches_per_draw = level >= 32 ? 2 : 8;
+  for (uint32_t first = 0; first < patch_count; first += chunk) {
+    options.first_patch = first;
+    options.patch_count = std::min(chunk, patch_count - first);
+    const gpu::PatchProgramCapture capture =
+        gpu::runPatchProgram(context, program, uniformLevels(level), options);
+    figures->draws += capture.draws;
+    for (const gpu::CapturedVertex& v : capture.vertices) {
+      const Vec3f cpu = patches.evaluateFloat(v.patch, v.coord).position;
+      ++figures->device_points;
+      if (!(cpu == v.position)) ++figures->device_points_differing;
+      figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlp(cpu, v.position));
+      const auto found = index.find(coordBits(v.coord));
+      if (found == index.end() || v.patch >= patch_count) continue;
+      positions[size_t(v.patch) * n + found->second] = v.position;
+      filled[size_t(v.patch) * n + found->second] = 1;
+    }
+  }
+  if (std::find(filled.begin(), filled.end(), 0) != filled.end()) {
+    throw std::runtime_error("cracks: the GPU capture lacks boundary points the CPU tessellator "
+                             "emits (" + program.evaluation_shader + ")");
+  }
+  return positions;
+}
+
+class PairAccumulator {
+ public:
+  PairAccumulator(CrackFigures* figures, double scale_ulp) : f_(figures), scale_ulp_(scale_ulp) {}
+
+  void add(const Vec3f& a, const Vec3f& b, const CrackLocation& where) {
+    ++f_->points_compared;
+    if (!(a == b)) ++f_->points_not_equal;
+    const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
+    const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
+    sum_ += gap;
+    f_->max_gap_ulp = std::max(f_->max_gap_ulp, maxUlp(a, b));
+    const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
+    f_->max_gap_scale_ulp = std::max(f_->max_gap_scale_ulp, component / scale_ulp_);
+    if (!f_->worst.found || gap > f_->max_gap_world) {
+      f_->max_gap_world = gap;
+      f_->worst = where;
+      f_->worst.found = true;
+    }
+  }
+  void finish() {
+    f_->mean_gap_world = f_->points_compared ? sum_ / double(f_->points_compared) : 0;
+    if (f_->max_gap_world == 0) f_->worst = {};
+  }
+
+ private:
+  CrackFigures* f_;
+  double scale_ulp_;
+  double sum_ = 0;
+};
+
+// The spacing of floats at the control mesh's largest |coordinate|.
+double scaleUlp(const Mesh& mesh) {
+  float extent = 1e-30f;
+  for (const Vec3d& p : mesh.positions) {
+    extent = std::max({extent, std::fabs(float(p.x)), std::fabs(float(p.y)), std::fabs(float(p.z))});
+  }
+  return double(std::nextafter(extent, INFINITY)) - double(extent);
+}
+
+}  // namespace
+
+const char* toString(CrackBackend backend) {
+  return backend == CrackBackend::kGpu ? "gpu" : "cpu_float";
+}
+
+uint64_t ulpDistance(float a, float b) {
+  auto ordered = [](float f) {
+    const uint32_t bits = std::bit_cast<uint32_t>(f);
+    return (bits & 0x80000000u) ? -int64_t(bits & 0x7fffffffu) : int64_t(bits);
+  };
+  const int64_t d = ordered(a) - ordered(b);
+  return uint64_t(d < 0 ? -d : d);
+}
+
+SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
+  const Welding welding = weldByPosition(patches.controlMesh());
+  const uint32_t corners = cornerCount(patches.domain());
+  struct EdgeSide {
+    PatchSide side;
+    uint32_t raw0, raw1;  // unwelded position indices, ascending
+  };
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<EdgeSide>> edges;
+  std::map<uint32_t, std::vector<PatchSide>> vertex_sides;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const std::array<uint32_t, 4> raw = patches.patchCorners(p);
+    for (uint32_t c = 0; c < corners; ++c) {
+      vertex_sides[welding.canonical.at(raw[c])].push_back({uint32_t(p), c, false});
+    }
+    for (uint32_t e = 0; e < corners; ++e) {
+      const uint32_t r0 = raw[e], r1 = raw[(e + 1) % corners];
+      const uint32_t a = welding.canonical.at(r0), b = welding.canonical.at(r1);
+      if (a == b) continue;  // degenerate edge: nothing to pair
+      edges[{std::min(a, b), std::max(a, b)}].push_back(
+          {{uint32_t(p), e, a > b}, std::min(r0, r1), std::max(r0, r1)});
+    }
+  }
+  SharedBoundaries shared;
+  for (const auto& [key, sides] : edges) {
+    if (sides.size() < 2) continue;
+    SharedEdge edge{key.first, key.second, false, {}};
+    for (const EdgeSide& s : sides) {
+      edge.sides.push_back(s.side);
+      edge.seam |= s.raw0 != sides[0].raw0 || s.raw1 != sides[0].raw1;
+    }
+    shared.edges.push_back(std::move(edge));
+  }
+  for (auto& [vertex, sides] : vertex_sides) {
+    if (sides.size() >= 2) shared.corners.push_back({vertex, std::move(sides)});
+  }
+  return shared;
+}
+
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
+                           CrackBackend backend, gpu::Context* context) {
+  CrackFigures figures;
+  figures.backend = backend;
+  const SharedBoundaries shared = findSharedBoundaries(patches);
+  figures.shared_edges = shared.edges.size();
+  figures.shared_corners = shared.corners.size();
+  for (const SharedEdge& e : shared.edges) figures.seam_edges += e.seam ? 1 : 0;
+
+  std::optional<gpu::GpuPatchProgram> program;
+  if (backend == CrackBackend::kGpu) {
+    program = patches.gpuProgram();
+    if (!program) {
+      figures.skipped_reason = "the technique has no GPU program";
+      return figures;
+    }
+    if (context == nullptr) {
+      figures.skipped_reason = "no Vulkan device";
+      return figures;
+    }
+  }
+
+  const tess::Tessellation tessellation =
+      tess::tessellate(tessDomain(patches.domain()), spacing, uniformLevels(level));
+  if (tessellation.culled) {
+    figures.skipped_reason = "the level culls every patch";
+    return figures;
+  }
+  const BoundaryPoints boundary = boundaryPoints(patches.domain(), tessellation);
+  const size_t n = boundary.points.size();
+  const BoundaryPositions positions =
+      backend == CrackBackend::kCpuFloat
+          ? cpuPositions(patches, boundary)
+          : gpuPositions(patches, *program, boundary, spacing, level, tessellation.points.size(),
+                         *context, &figures);
+  figures.measured = true;
+
+  PairAccumulator pairs(&figures, scaleUlp(patches.controlMesh()));
+  for (const SharedEdge& edge : shared.edges) {
+    const PatchSide& a = edge.sides[0];
+    for (size_t s = 1; s < edge.sides.size(); ++s) {
+      const PatchSide& b = edge.sides[s];
+      const auto& b_index = boundary.edge_index[b.local];
+      for (const auto& [t_a, k_a] : boundary.edge_index[a.local]) {
+        const int64_t t_b = a.reversed == b.reversed ? t_a : kFixedOne - t_a;
+        const auto k_b = b_index.find(t_b);
+        if (k_b == b_index.end()) {
+          ++figures.unpaired_points;
+          continue;
+        }
+        pairs.add(positions[a.patch * n + k_a], positions[b.patch * n + k_b->second],
+                  {true, false, a.patch, b.patch, a.local, b.local, double(t_a) / kFixedOne});
+      }
+    }
+  }
+  for (const SharedCorner& corner : shared.corners) {
+    const PatchSide& a = corner.sides[0];
+    for (size_t s = 1; s < corner.sides.size(); ++s) {
+      const PatchSide& b = corner.sides[s];
+      pairs.add(positions[a.patch * n + a.local], positions[b.patch * n + b.local],
+                {true, true, a.patch, b.patch, a.local, b.local, 0});
+    }
+  }
+  pairs.finish();
+  return figures;
+}
+
+}  // namespace tb

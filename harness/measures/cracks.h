@@ -1,0 +1,103 @@
+// Measure 5 (DESIGN.md): crack gaps between patches that share an edge or a corner.
+//
+// Two patches share an edge when its two end corners weld to the same positions
+// (control-mesh position indices from patchCorners(), merged by weldByPosition so that
+// triangle meshes whose positions are duplicated at attribute seams count too). Along a
+// shared edge the tessellator emits, on each side, the same domain points mirrored
+// (edge parameter t on one side is exactly 1 - t on the other, in 16.16 fixed point); the
+// measure pairs them by t and compares the positions each side computes there: in float
+// with the shader's operation order on the CPU (SurfacePatches::evaluateFloat), or as
+// captured from the technique's own TES on the Vulkan device.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "harness/gpu/context.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+enum class CrackBackend { kCpuFloat, kGpu };
+const char* toString(CrackBackend backend);
+
+// One side of a shared edge or corner. Local edge k runs from corner k to corner k + 1
+// (mod the corner count); corners follow technique.h (quad (0,0),(1,0),(1,1),(0,1);
+// triangle corner i where gl_TessCoord[i] = 1).
+struct PatchSide {
+  uint32_t patch = 0;
+  uint32_t local = 0;     // local edge or corner index
+  bool reversed = false;  // edges: the patch runs the edge from the higher welded vertex
+};
+
+struct SharedEdge {
+  uint32_t v0 = 0, v1 = 0;       // welded position indices, v0 < v1
+  bool seam = false;             // the sides use different (unwelded) position indices
+  std::vector<PatchSide> sides;  // two or more, in patch order
+};
+
+struct SharedCorner {
+  uint32_t vertex = 0;           // welded position index
+  std::vector<PatchSide> sides;  // two or more, in patch order
+};
+
+struct SharedBoundaries {
+  std::vector<SharedEdge> edges;      // sorted by (v0, v1)
+  std::vector<SharedCorner> corners;  // sorted by vertex
+};
+
+SharedBoundaries findSharedBoundaries(const SurfacePatches& patches);
+
+// Where the largest gap is. For an edge, `t` is the edge parameter on side a, from its
+// corner `local_a` (t = 0) towards the next corner (t = 1).
+struct CrackLocation {
+  bool found = false;
+  bool corner = false;
+  uint32_t patch_a = 0, patch_b = 0;
+  uint32_t local_a = 0, local_b = 0;
+  double t = 0;
+};
+
+struct CrackFigures {
+  CrackBackend backend = CrackBackend::kCpuFloat;
+  bool measured = false;
+  std::string skipped_reason;  // non-empty when !measured (no GPU program, no device)
+
+  uint64_t shared_edges = 0;     // edges with two or more patches
+  uint64_t seam_edges = 0;       // of those, shared only through welding
+  uint64_t shared_corners = 0;   // welded vertices at corners of two or more patches
+  // Pairs compared: each side of an edge (after the first) against the first side, at
+  // every tessellated point strictly inside the edge; likewise at corners.
+  uint64_t points_compared = 0;
+  uint64_t points_not_equal = 0;  // some component differs (+0 and -0 count as equal)
+  uint64_t unpaired_points = 0;   // edge points with no mirror on the other side; 0 expected
+  double max_gap_world = 0;       // Euclidean distance, world (asset) units
+  double mean_gap_world = 0;      // over all compared pairs
+  // Max over pairs and components of the float ulp distance. Near zero a tiny gap spans
+  // many ulps (1e-8 against 0 is ~8e8), hence the next figure.
+  uint64_t max_gap_ulp = 0;
+  // Max component gap in ulps of the asset's scale (the largest |coordinate| of the control
+  // mesh): 1 means one rounding step of the model's largest coordinate.
+  double max_gap_scale_ulp = 0;
+  CrackLocation worst;            // pair with the largest world gap (first one on ties)
+
+  // GPU only: the captured position against evaluateFloat at the same gl_TessCoord, over
+  // every captured vertex (agreement of the CPU float model with the device).
+  uint64_t device_points = 0;
+  uint64_t device_points_differing = 0;
+  uint64_t device_max_ulp = 0;
+  uint32_t draws = 0;
+};
+
+// Uniform levels (every outer and inner level = `level`) under `spacing`.
+// kGpu runs patches.gpuProgram() on `context`; without one of them the result is not
+// measured and says why. Throws gpu::GpuError when the device fails.
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
+                           CrackBackend backend, gpu::Context* context = nullptr);
+
+// Distance in units in the last place between two floats of the same sign class:
+// the count of representable floats between them (+0 and -0 are 0 apart).
+uint64_t ulpDistance(float a, float b);
+
+}  // namespace tb

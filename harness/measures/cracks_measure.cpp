@@ -1,0 +1,128 @@
+// The "cracks" measure: measureCracks over spacings × levels × backends.
+#include <exception>
+
+#include "harness/measures/cracks.h"
+#include "harness/measures/measure.h"
+
+namespace tb {
+namespace {
+
+struct LevelChoice {
+  float level;
+  const char* text;
+};
+constexpr LevelChoice kCrackLevels[] = {{1.0f, "1"}, {7.3f, "7.3"}, {16.0f, "16"}, {64.0f, "64"}};
+constexpr tess::Spacing kCrackSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
+                                            tess::Spacing::kFractionalEven, tess::Spacing::kPow2};
+// Level 64 on the device costs about (64+1)^2 captured vertices per patch; above this
+// many patches it is left to the CPU backend to keep the default suite short.
+constexpr size_t kGpuLevel64MaxPatches = 100;
+
+std::vector<Metric> crackMetrics(const CrackFigures& f) {
+  const CrackLocation& w = f.worst;
+  return {
+      {"shared_edges", double(f.shared_edges), "count"},
+      {"seam_edges", double(f.seam_edges), "count"},
+      {"shared_corners", double(f.shared_corners), "count"},
+      {"points_compared", double(f.points_compared), "count"},
+      {"points_not_equal", double(f.points_not_equal), "count"},
+      {"unpaired_points", double(f.unpaired_points), "count"},
+      {"max_gap_world", f.max_gap_world, "world"},
+      {"mean_gap_world", f.mean_gap_world, "world"},
+      {"max_gap_ulp", double(f.max_gap_ulp), "ulp"},
+      {"max_gap_scale_ulp", f.max_gap_scale_ulp, "ulp of scale"},
+      {"worst_patch_a", w.found ? double(w.patch_a) : -1, "id"},
+      {"worst_patch_b", w.found ? double(w.patch_b) : -1, "id"},
+      {"worst_is_corner", w.found && w.corner ? 1.0 : 0.0, "bool"},
+      {"worst_local_a", w.found ? double(w.local_a) : -1, "edge/corner"},
+      {"worst_local_b", w.found ? double(w.local_b) : -1, "edge/corner"},
+      {"worst_t", w.t, "edge parameter"},
+      {"vs_cpu_float_points", double(f.device_points), "count"},
+      {"vs_cpu_float_points_differing", double(f.device_points_differing), "count"},
+      {"vs_cpu_float_max_ulp", double(f.device_max_ulp), "ulp"},
+  };
+}
+
+class CracksMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{
+        "cracks", "Crack gaps between patches",
+        "gaps between the positions two patches compute at the same tessellated point of a "
+        "shared edge or corner, in world units and float ulps, on the CPU (float, shader order) "
+        "and on the device"};
+    return kInfo;
+  }
+  bool appliesTo(const Technique& technique) const override {
+    return technique.info().family == TechniqueFamily::kSurface;
+  }
+  // Evaluation order is what the variants change; the crack figures depend on it.
+  bool dependsOnVariant() const override { return true; }
+
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    result.notes = {
+        "uniform levels (every outer and inner level = level); shared edges and corners found "
+        "by welded control-mesh position (seam_edges: shared only after welding); each side "
+        "after the first is compared with the first at every tessellated point, paired by edge "
+        "parameter t <-> 1 - t",
+        "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
+        "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
+        "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
+        "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
+        "runs from corner k to k + 1; t from corner local_a), -1 when none",
+        "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
+        "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; vs_cpu_float_*: "
+        "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
+        "rows by definition)",
+        "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "
+        "than 100 patches (the CPU backend covers 64 everywhere)"};
+    const SurfacePatches& patches = *input.patches;
+    std::string gpu_reason;
+    if (!patches.gpuProgram()) {
+      gpu_reason = "skipped: the technique has no GPU program";
+    } else if (input.gpu == nullptr) {
+      gpu_reason = "skipped: no Vulkan device (" + input.gpu_unavailable + ")";
+    }
+    for (tess::Spacing spacing : kCrackSpacings) {
+      for (const LevelChoice& level : kCrackLevels) {
+        for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+          if (backend == CrackBackend::kGpu &&
+              (!gpu_reason.empty() ||
+               (level.level > 16 && patches.patchCount() >= kGpuLevel64MaxPatches))) {
+            continue;
+          }
+          MetricRow row;
+          row.keys["spacing"] = std::string(tess::toString(spacing));
+          row.keys["level"] = level.text;
+          row.keys["backend"] = toString(backend);
+          try {
+            const CrackFigures f = measureCracks(patches, spacing, level.level, backend, input.gpu);
+            if (!f.measured) {
+              row.keys["note"] = "skipped: " + f.skipped_reason;
+            } else {
+              row.metrics = crackMetrics(f);
+            }
+          } catch (const std::exception& error) {
+            if (backend == CrackBackend::kCpuFloat) throw;
+            row.keys["note"] = std::string("failed: ") + error.what();
+          }
+          result.rows.push_back(std::move(row));
+        }
+      }
+    }
+    if (!gpu_reason.empty()) {
+      MetricRow row;
+      row.keys["backend"] = toString(CrackBackend::kGpu);
+      row.keys["note"] = gpu_reason;
+      result.rows.push_back(std::move(row));
+    }
+    return result;
+  }
+};
+
+TB_REGISTER_MEASURE(CracksMeasure);
+
+}  // namespace
+}  // namespace tb
