@@ -1,0 +1,168 @@
+#include "techniques/pn_triangles/pn_triangles.h"
+
+#include "harness/mesh/render_vertices.h"
+#include "harness/mesh/triangulate.h"
+#include "techniques/pn_triangles/pn_build.h"
+#include "techniques/pn_triangles/pn_eval.h"
+#include "techniques/registry.h"
+
+namespace tb::pn_triangles {
+namespace {
+
+class PnPatches final : public SurfacePatches {
+ public:
+  PnPatches(Triangulation triangulation, const PnOptions& options)
+      : tri_(std::move(triangulation)),
+        options_(options),
+        build_(buildPnRecords(tri_.mesh, options_)) {
+    if (tri_.polygons_split > 0) {
+      warnings_.push_back(std::to_string(tri_.polygons_split) +
+                          " polygons with more than 3 vertices were fan-triangulated");
+    }
+    if (tri_.mesh.normals_computed) {
+      warnings_.push_back("the mesh has no normals: angle-weighted smooth normals were computed");
+    }
+  }
+
+  PatchDomain domain() const override { return PatchDomain::kTriangle; }
+  size_t patchCount() const override { return tri_.mesh.faceCount(); }
+  const Mesh& controlMesh() const override { return tri_.mesh; }
+
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    const auto face = tri_.mesh.facePositions(patch);
+    return {face[0], face[1], face[2], UINT32_MAX};
+  }
+
+  uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
+
+  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+    const PnControl<double> control =
+        computeControl(recordInputDouble(tri_.mesh, build_, options_, patch));
+    const auto& perm = build_.records[patch].perm;
+    const PnPoint<double> point =
+        evaluateControl(control, {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
+    return {point.position, point.normal};
+  }
+
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    const PnControl<float> control =
+        computeControl(recordInputFloat(tri_.mesh, build_, options_, patch));
+    const auto& perm = build_.records[patch].perm;
+    const PnPoint<float> point =
+        evaluateControl(control, {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
+    return {point.position, point.normal};
+  }
+
+  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+    gpu::GpuPatchProgram program;
+    program.control_shader = "pn_triangles/pn.tesc";
+    program.evaluation_shader = "pn_triangles/pn.tese";
+    program.domain = tess::Domain::kTriangle;
+    program.patch_count = uint32_t(patchCount());
+    program.input_vertices_per_patch = 1;
+    program.storage_buffers = pnStorageBuffers(tri_.mesh, build_);
+    program.specialization = {options_.aen ? 1u : 0u,
+                              (options_.boundary_flags || options_.rounding > 0) ? 1u : 0u};
+    return program;
+  }
+
+  std::optional<OperationProfile> operationProfile(size_t patch) const override {
+    using C = CountingScalar<float>;
+    OperationProfile profile;
+    resetOperationCounts();
+    const PnInput<C> input = recordInput<C>(tri_.mesh, build_, options_, patch, [](const Vec3d& v) {
+      return Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))};
+    });
+    const PnControl<C> control = computeControl(input);
+    profile.per_patch_setup = operationCounts();
+    resetOperationCounts();
+    const C third(1.0f / 3.0f);
+    (void)evaluateControl(control, {third, third, C(1.0f) - third - third});
+    profile.per_vertex = operationCounts();
+    // The evaluation's arguments above are not part of the TES work.
+    profile.per_vertex.add -= 2;
+    profile.note = "float, shader order: TCS normalises the normals it reads and builds 10 + 6 "
+                   "coefficients; TES evaluates the cubic and quadratic patches and normalises";
+    return profile;
+  }
+
+  DataFootprint footprint() const override {
+    // Geometry normals add one normal per position; the records are 24 words per patch.
+    return {triangleControlMeshBytes(tri_.mesh),
+            uint64_t(build_.geometry_normal_count) * 12 +
+                uint64_t(build_.records.size()) * kRecordWords * 4,
+            0};
+  }
+
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+ private:
+  Triangulation tri_;
+  PnOptions options_;
+  PnBuild build_;
+  std::vector<std::string> warnings_;
+};
+
+double parameter(const VariantInfo& variant, const std::string& name) {
+  const auto it = variant.parameters.find(name);
+  return it == variant.parameters.end() ? 0.0 : it->second;
+}
+
+}  // namespace
+
+const TechniqueInfo& PnTrianglesTechnique::info() const {
+  static const TechniqueInfo kInfo{
+      "pn_triangles", TechniqueFamily::kSurface, "Curved PN triangles",
+      "Vlachos, Peters, Boyd, Mitchell, Curved PN Triangles, I3D 2001; crack fixes from "
+      "Lost Planet 2 (seed 003); PN-AEN: McDonald & Kilgard, NVIDIA 2010",
+      "triangle meshes with vertex normals; polygons are fan-triangulated; missing normals are "
+      "computed"};
+  return kInfo;
+}
+
+std::vector<VariantInfo> PnTrianglesTechnique::variants() const {
+  return {
+      {"pn", "plain PN triangles (shading normals build the geometry)", {}},
+      {"geometry_normals",
+       "seed 003: a shared geometry normal per position on split edges (edge flags)",
+       {{"geometry_normals", 1}}},
+      {"boundary_flags",
+       "geometry_normals + seed 003's boundary flags: unshared edges stay straight",
+       {{"geometry_normals", 1}, {"boundary_flags", 1}}},
+      {"aen", "PN-AEN: edge points averaged with the adjacent face's normals",
+       {{"aen", 1}}},
+      {"rounding",
+       "geometry_normals + seed 003's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C / L), "
+       "C = 4 mean edge lengths",
+       {{"geometry_normals", 1}, {"rounding", kDefaultRounding}}},
+  };
+}
+
+std::string PnTrianglesTechnique::checkSupport(const Mesh& mesh) const {
+  if (mesh.faceCount() == 0) return "pn_triangles: " + mesh.source + " has no faces";
+  if (!mesh.hasNormals()) {
+    return "pn_triangles: " + mesh.source + " has no normals (load computes them)";
+  }
+  for (size_t c = 0; c < mesh.corner_normals.size(); ++c) {
+    if (mesh.corner_normals[c] < 0) {
+      return "pn_triangles: " + mesh.source + " face corner " + std::to_string(c) +
+             " has no normal; every corner needs one";
+    }
+  }
+  return {};
+}
+
+std::unique_ptr<SurfacePatches> PnTrianglesTechnique::buildPatches(
+    const Mesh& mesh, const VariantInfo& variant) const {
+  if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
+  PnOptions options;
+  options.geometry_normals = parameter(variant, "geometry_normals") != 0;
+  options.boundary_flags = parameter(variant, "boundary_flags") != 0;
+  options.aen = parameter(variant, "aen") != 0;
+  options.rounding = parameter(variant, "rounding");
+  return std::make_unique<PnPatches>(fanTriangulate(mesh), options);
+}
+
+TB_REGISTER_TECHNIQUE(PnTrianglesTechnique);
+
+}  // namespace tb::pn_triangles

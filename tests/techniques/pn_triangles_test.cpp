@@ -1,0 +1,233 @@
+// pn_triangles against its oracles: the definition of curved PN triangles (Vlachos et al.
+// 2001: corners and corner normals interpolate; a flat triangle with equal normals is the
+// plane), the canonical order (rotation gives bitwise-equal points), hand counts, and on
+// the GPU the CPU float model (evaluateFloat) at the captured gl_TessCoord.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "harness/mesh/obj_loader.h"
+#include "techniques/pn_triangles/pn_build.h"
+#include "techniques/pn_triangles/pn_eval.h"
+#include "techniques/registry.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/techniques/pn_gpu_support.h"
+
+namespace tb::pn_triangles {
+namespace {
+
+const Technique& pn() { return *TechniqueRegistry::instance().find("pn_triangles"); }
+
+VariantInfo variant(const std::string& name) {
+  for (const VariantInfo& v : pn().variants()) {
+    if (v.name == name) return v;
+  }
+  ADD_FAILURE() << "no variant " << name;
+  return {};
+}
+
+const char* kCurved =
+    "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 1//1 2//2 3//3\n";
+
+TEST(PnTriangles, VariantsInTheIssueOrder) {
+  std::vector<std::string> names;
+  for (const VariantInfo& v : pn().variants()) names.push_back(v.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"pn", "geometry_normals", "boundary_flags", "aen",
+                                             "rounding"}));
+}
+
+TEST(PnTriangles, InterpolatesCornersAndCornerNormalsExactly) {
+  // Oracle: paper §3, b300 = P1 and n200 = N1.
+  const Mesh mesh = loadObjText(kCurved, "curved.obj");
+  for (const VariantInfo& v : pn().variants()) {
+    const auto patches = pn().buildPatches(mesh, v);
+    for (int corner = 0; corner < 3; ++corner) {
+      DomainCoord coord{0, 0, 0};
+      coord[corner] = 1;
+      tess::DomainPoint coord_f{0, 0, 0};
+      coord_f[corner] = 1;
+      const SurfacePoint p = patches->evaluate(0, coord);
+      const SurfacePointF pf = patches->evaluateFloat(0, coord_f);
+      const Vec3d expected = mesh.positions[mesh.corner_positions[corner]];
+      const Vec3d normal = normalize(mesh.normals[mesh.corner_normals[corner]]);
+      EXPECT_EQ(p.position, expected) << v.name;
+      EXPECT_EQ(pf.position, vecCast<float>(expected)) << v.name;
+      EXPECT_LT(length(p.normal - normal), 1e-15) << v.name;
+      EXPECT_LT(length(vecCast<double>(pf.normal) - normal), 1e-6) << v.name;
+    }
+  }
+}
+
+TEST(PnTriangles, FlatTriangleWithEqualNormalsStaysFlat) {
+  // Oracle: w_ij = 0 when every normal is the plane's, so all control points lie in it
+  // (paper §3.1) and the patch is a reparametrisation of the flat triangle.
+  const Mesh mesh = loadObjText(
+      "v 0 0 0.5\nv 2 0 0.5\nv 0.25 1.75 0.5\nvn 0 0 1\nf 1//1 2//1 3//1\n", "flat.obj");
+  for (const VariantInfo& v : pn().variants()) {
+    const auto patches = pn().buildPatches(mesh, v);
+    for (int i = 0; i <= 8; ++i) {
+      for (int j = 0; i + j <= 8; ++j) {
+        const double u = i / 8.0, w = j / 8.0;
+        const SurfacePoint p = patches->evaluate(0, {u, w, 1 - u - w});
+        EXPECT_NEAR(p.position.z, 0.5, 1e-15) << v.name;
+        EXPECT_NEAR(length(p.normal - Vec3d{0, 0, 1}), 0, 1e-15) << v.name;
+        // Inside the triangle: barycentric coordinates of the point are all >= 0.
+        const double y = p.position.y, x = p.position.x;
+        EXPECT_GE(y, -1e-12);
+        EXPECT_GE(1.75 * (2 - x) - (2 - 0.25) * y, -1e-12) << v.name;
+        EXPECT_GE(1.75 * x - 0.25 * y, -1e-12) << v.name;
+      }
+    }
+  }
+}
+
+TEST(PnTriangles, CurvedEdgeBulgesByTheHandComputedControlPoints) {
+  // Oracle: the edge midpoint of a cubic Bézier is (b300 + 3 b210 + 3 b120 + b030) / 8, with
+  // b210 = (2 P1 + P2 - w12 N1) / 3 computed by hand: P1 = 0, P2 = (1,0,0), N1 = (0,0,1),
+  // N2 = (3, 0, 4) / 5 => w12 = 0, w21 = -3/5 => b120 = (2 P2 + P1 - w21 N2) / 3.
+  const Mesh mesh = loadObjText(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
+  const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
+  const Vec3d b210{1.0 / 3, 0, 0};
+  const Vec3d n2 = normalize(Vec3d{3, 0, 4});
+  const double w21 = dot(Vec3d{-1, 0, 0}, n2);
+  const Vec3d b120 = (Vec3d{2, 0, 0} - n2 * w21) * (1.0 / 3);
+  const Vec3d expected = (b210 * 3.0 + b120 * 3.0 + Vec3d{1, 0, 0}) * (1.0 / 8);
+  const SurfacePoint p = patches->evaluate(0, {0.5, 0.5, 0});
+  EXPECT_LT(length(p.position - expected), 1e-15);
+  EXPECT_GT(p.position.z, 0.01);
+}
+
+TEST(PnTriangles, RotatingTheFaceGivesBitwiseEqualFloatPoints) {
+  // Oracle: the canonical corner order makes the float result a function of the corner
+  // set; the same face written from another corner must give the same bits.
+  const char* kB =
+      "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
+  const auto a = pn().buildPatches(loadObjText(kCurved, "a.obj"), pn().variants()[0]);
+  const auto b = pn().buildPatches(loadObjText(kB, "b.obj"), pn().variants()[0]);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0, 1);
+  for (int trial = 0; trial < 500; ++trial) {
+    const float u = unit(rng), v = unit(rng) * (1 - u), w = 1 - u - v;
+    EXPECT_EQ(a->evaluateFloat(0, {u, v, w}).position, b->evaluateFloat(0, {v, w, u}).position);
+  }
+}
+
+TEST(PnTriangles, FloatFollowsDouble) {
+  // Oracle: the double evaluation of the same records; float differs by rounding only.
+  const auto patches = pn().buildPatches(loadObjText(kCurved, "c.obj"), variant("aen"));
+  for (int i = 0; i <= 10; ++i) {
+    const float u = i / 10.0f, v = (1 - u) / 2, w = 1 - u - v;
+    const SurfacePoint d = patches->evaluate(0, {u, v, w});
+    const SurfacePointF f = patches->evaluateFloat(0, {u, v, w});
+    EXPECT_LT(length(vecCast<double>(f.position) - d.position), 1e-6);
+    EXPECT_LT(length(vecCast<double>(f.normal) - d.normal), 1e-6);
+  }
+}
+
+TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
+  // Hand count: a cube has 12 hard edges (split normals) and 6 face diagonals (normals
+  // agree); every corner's geometry normal is (±1, ±1, ±1)/√3.
+  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
+  PnOptions options;
+  options.geometry_normals = true;
+  const PnBuild build = buildPnRecords(mesh, options);
+  EXPECT_EQ(build.split_edges, 12u);
+  EXPECT_EQ(build.boundary_edges, 0u);
+  EXPECT_EQ(build.geometry_normal_count, 8u);
+  for (size_t i = mesh.normals.size(); i < build.normals.size(); ++i) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
+  }
+  size_t flagged_edges = 0;
+  for (const PnRecord& r : build.records) {
+    for (int e = 0; e < 3; ++e) {
+      flagged_edges += ((r.flags[kEdgeEnds[e][0]] & r.flags[kEdgeEnds[e][1]]) >> e) & 1u;
+    }
+  }
+  EXPECT_EQ(flagged_edges, 24u);  // 12 edges, seen from both faces
+}
+
+TEST(PnTriangles, BoundaryFlagsStraightenUnsharedEdges) {
+  // Oracle: seed 003, an unshared edge with boundary flags is the straight segment.
+  const auto patches = pn().buildPatches(loadObjText(kCurved, "b.obj"), variant("boundary_flags"));
+  const auto plain = pn().buildPatches(loadObjText(kCurved, "b.obj"), variant("pn"));
+  const SurfacePoint p = patches->evaluate(0, {0.25, 0.75, 0});
+  const Mesh mesh = loadObjText(kCurved, "b.obj");
+  const Vec3d linear = mesh.positions[0] * 0.25 + mesh.positions[1] * 0.75;
+  EXPECT_LT(length(p.position - linear), 1e-15);
+  EXPECT_GT(length(plain->evaluate(0, {0.25, 0.75, 0}).position - linear), 1e-3);
+}
+
+TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
+  EXPECT_EQ(patches->patchCount(), 12u);
+  ASSERT_EQ(patches->warnings().size(), 1u);  // catmark_cube.obj has its own normals
+  EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
+  const auto torus = pn().buildPatches(
+      loadObjFile(testing::assetPath("tessbench/tri_torus.obj")), pn().variants()[0]);
+  ASSERT_EQ(torus->warnings().size(), 1u);
+  EXPECT_NE(torus->warnings()[0].find("normals were computed"), std::string::npos);
+}
+
+TEST(PnTriangles, MeshWithoutNormalsIsRejectedWithAReason) {
+  LoadOptions options;
+  options.compute_missing_normals = false;
+  const Mesh mesh = loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bare.obj", options);
+  EXPECT_THROW(pn().buildPatches(mesh, pn().variants()[0]), UnsupportedInput);
+}
+
+TEST(PnTriangles, OperationCountsMatchAHandCount) {
+  // Hand count of pn_eval.h evaluateControl (the TES).
+  const auto patches = pn().buildPatches(loadObjText(kCurved, "c.obj"), pn().variants()[0]);
+  const auto profile = patches->operationProfile(0);
+  ASSERT_TRUE(profile.has_value());
+  // Position: 6 (weights) + corners (3 + 9 mul, 6 add) + edges 3 × (6 + 1 + 3 mul, 6 add)
+  // + centre (2 + 3 mul, 3 add) => mul 6 + 12 + 30 + 5 = 53, add 6 + 18 + 3 = 27. Normal: 6 terms × 3 mul = 18 mul, 15 add; normalise: dot
+  // 3 mul 2 add, sqrt, 1 div, 3 mul, 1 compare.
+  EXPECT_EQ(profile->per_vertex.mul, 53u + 18u + 6u);
+  EXPECT_EQ(profile->per_vertex.add, 27u + 15u + 2u);
+  EXPECT_EQ(profile->per_vertex.div, 1u);
+  EXPECT_EQ(profile->per_vertex.sqrt, 1u);
+  EXPECT_EQ(profile->per_vertex.compare, 1u);
+  EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
+}
+
+struct GpuCase {
+  std::string asset;
+  std::string variant;
+};
+
+class PnGpu : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PnGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
+  // Oracle: evaluateFloat at the captured gl_TessCoord bits, and the CPU tessellator's
+  // point count.
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const std::string& asset : testing::triangleAssets()) {
+    const Mesh mesh = loadObjFile(testing::assetPath(asset));
+    const auto patches = pn().buildPatches(mesh, variant(GetParam()));
+    for (const auto& [spacing, level] :
+         {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
+          std::pair{tess::Spacing::kInteger, 16.0f}}) {
+      const testing::GpuAgreement a = testing::compareGpuWithFloat(context, *patches, spacing, level);
+      EXPECT_EQ(a.vertices, a.expected_vertices) << asset << " level " << level;
+      EXPECT_LE(a.max_position_ulp, 4u) << asset << " level " << level;
+      EXPECT_LE(a.max_normal_ulp, 4u) << asset << " level " << level;
+      std::printf("[pn gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal %llu, "
+                  "%zu positions not bitwise\n",
+                  GetParam().c_str(), asset.c_str(), level, a.vertices,
+                  (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
+                  a.positions_not_bitwise);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, PnGpu,
+                         ::testing::Values("pn", "geometry_normals", "boundary_flags", "aen",
+                                           "rounding"));
+
+}  // namespace
+}  // namespace tb::pn_triangles
