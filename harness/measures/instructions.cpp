@@ -152,7 +152,10 @@ std::vector<uint32_t> optimizeSpirv(std::span<const uint32_t> words,
     for (uint32_t i = 0; i < specialization.size(); ++i) values[i] = {specialization[i]};
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values));
   }
+  // Freezing turns OpSpecConstant into OpConstant but leaves the OpSpecConstantOp built on
+  // them (e.g. `kSwitch != 0u`); fold those too, so dead variant branches go away.
   optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
+  optimizer.RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
   optimizer.RegisterPerformancePasses();
   std::vector<uint32_t> out;
   if (!optimizer.Run(words.data(), words.size(), &out)) {

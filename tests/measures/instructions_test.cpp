@@ -79,6 +79,17 @@ TEST(Instructions, StaticCountOfTheBilinearTestShaderMatchesAHandCount) {
   EXPECT_GE(counts.scalar.total(), counts.vector.total());
 }
 
+TEST(Instructions, SpecialisationIsFrozenBeforeCounting) {
+  // shaders/gpu/test_spec_switch.tese: constant 0 guards one normalize(vec3) (one
+  // GLSL.std.450 call, float_other) and its branch; frozen to 0 the branch is dead code.
+  const StageInstructionCounts off = countEmbeddedShader("gpu/test_spec_switch.tese", {0});
+  const StageInstructionCounts on = countEmbeddedShader("gpu/test_spec_switch.tese", {1});
+  EXPECT_EQ(off.vector.float_other, 3u);  // three mix() calls
+  EXPECT_EQ(on.vector.float_other, 4u);   // and normalize
+  EXPECT_EQ(on.scalar.float_other - off.scalar.float_other, 3u);  // a vec3 result
+  EXPECT_EQ(off.vector.control_flow, on.vector.control_flow);      // the if folds away
+}
+
 TEST(Instructions, OptimisationRemovesWorkAndRejectsGarbage) {
   const auto words = gpu::embeddedShader("gpu/test_bilinear.tese");
   ASSERT_FALSE(words.empty());
