@@ -82,7 +82,9 @@ class InstructionsMeasure final : public Measure {
         "with CountingScalar in the shader's operation order; min and max over the asset's "
         "patches by per-vertex total (a regular and the worst irregular patch); they count "
         "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
-        "x86 instructions per TES invocation on lavapipe (callgrind) are not measured yet"};
+        "x86 instructions per TES invocation on lavapipe are not in this table (they need "
+        "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
+        "two levels, tessellator and TES JIT code together"};
     staticRows(input, &result);
     dynamicRows(*input.patches, &result);
     return result;
