@@ -5,7 +5,7 @@
 // Mirrors pn_eval.h computeControl operation for operation.
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"
-#include "pn_common.glsl"
+#include "float_order.glsl"
 
 layout(vertices = 1) out;
 layout(constant_id = 0) const uint kAen = 0u;       // PN-AEN: average own and neighbour points

@@ -4,7 +4,7 @@
 // (1,2), centre), so both faces of a shared edge sum the same terms identically.
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "pn_common.glsl"
+#include "float_order.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
 

@@ -1,17 +1,34 @@
 #include "techniques/phong/phong.h"
 
-#include "harness/mesh/triangulate.h"
-#include "techniques/phong/phong_eval.h"
-#include "techniques/registry.h"
+#include <bit>
+
 #include "harness/mesh/render_vertices.h"
+#include "harness/mesh/triangulate.h"
+#include "techniques/phong/phong_edge_eval.h"
+#include "techniques/phong/phong_eval.h"
+#include "techniques/pn_triangles/pn_build.h"
+#include "techniques/registry.h"
 
 namespace tb::phong {
 namespace {
 
+// GPU record: label -> corner (3), position (3), normal (3), edge-end normal (6) words.
+constexpr uint32_t kPhongRecordWords = 15;
+
+// The `edge` variant borrows pn_triangles' per-patch records: the canonical corner order
+// by position, seed 003's geometry normals and edge flags (a flagged, i.e. split, edge
+// uses the geometry normals at its ends; other edges the shading normals).
+pn_triangles::PnOptions edgeOptions() {
+  pn_triangles::PnOptions options;
+  options.geometry_normals = true;
+  return options;
+}
+
 class PhongPatches final : public SurfacePatches {
  public:
-  PhongPatches(Triangulation triangulation, double alpha)
-      : tri_(std::move(triangulation)), alpha_(alpha) {
+  PhongPatches(Triangulation triangulation, double alpha, bool edge)
+      : tri_(std::move(triangulation)), alpha_(alpha), edge_(edge) {
+    if (edge_) edge_build_ = pn_triangles::buildPnRecords(tri_.mesh, edgeOptions());
     if (tri_.polygons_split > 0) {
       warnings_.push_back(std::to_string(tri_.polygons_split) +
                           " polygons with more than 3 vertices were fan-triangulated");
@@ -33,6 +50,13 @@ class PhongPatches final : public SurfacePatches {
   uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+    if (edge_) {
+      const auto& perm = edge_build_.records[patch].perm;
+      const PhongPoint<double> point =
+          evaluatePhongEdge(edgeTriangle<double>(patch, [](const Vec3d& v) { return v; }),
+                            {coord[perm[0]], coord[perm[1]], coord[perm[2]]}, alpha_);
+      return {point.position, point.normal};
+    }
     const Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     PhongTriangle<double> tri;
@@ -45,6 +69,13 @@ class PhongPatches final : public SurfacePatches {
   }
 
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    if (edge_) {
+      const auto& perm = edge_build_.records[patch].perm;
+      const PhongPoint<float> point = evaluatePhongEdge(
+          edgeTriangle<float>(patch, [](const Vec3d& v) { return vecCast<float>(v); }),
+          {coord[perm[0]], coord[perm[1]], coord[perm[2]]}, float(alpha_));
+      return {point.position, point.normal};
+    }
     const Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     PhongTriangle<float> tri;
@@ -57,16 +88,138 @@ class PhongPatches final : public SurfacePatches {
     return {point.position, point.normal};
   }
 
+  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+    gpu::GpuPatchProgram program;
+    program.control_shader = "phong/phong.tesc";
+    program.evaluation_shader = "phong/phong.tese";
+    program.domain = tess::Domain::kTriangle;
+    program.patch_count = uint32_t(patchCount());
+    program.input_vertices_per_patch = 1;
+    const std::vector<Vec3d>& normals = edge_ ? edge_build_.normals : tri_.mesh.normals;
+    std::vector<uint32_t> records;
+    records.reserve(patchCount() * kPhongRecordWords);
+    for (size_t p = 0; p < patchCount(); ++p) {
+      const PatchRecord r = record(p);
+      records.insert(records.end(), r.begin(), r.end());
+    }
+    auto vec4s = [](const std::vector<Vec3d>& values) {
+      std::vector<uint32_t> words;
+      for (const Vec3d& v : values) {
+        for (float x : {float(v.x), float(v.y), float(v.z), 1.0f}) {
+          words.push_back(std::bit_cast<uint32_t>(x));
+        }
+      }
+      return words;
+    };
+    program.storage_buffers = {vec4s(tri_.mesh.positions), vec4s(normals), records};
+    program.specialization = {std::bit_cast<uint32_t>(float(alpha_)), edge_ ? 1u : 0u};
+    return program;
+  }
+
+  std::optional<OperationProfile> operationProfile(size_t patch) const override {
+    using C = CountingScalar<float>;
+    auto cast = [](const Vec3d& v) { return Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))}; };
+    const C third(1.0f / 3.0f);
+    const std::array<C, 3> weight{third, third, C(1.0f / 3.0f)};
+    OperationProfile profile;
+    resetOperationCounts();
+    if (edge_) {
+      const PhongEdgeTriangle<C> tri = edgeTriangle<C>(patch, cast);
+      profile.per_patch_setup = operationCounts();
+      resetOperationCounts();
+      (void)evaluatePhongEdge(tri, weight, C(float(alpha_)));
+      profile.note = "float, shader order: TCS normalises 3 + 6 normals; TES per-edge offsets";
+    } else {
+      const Mesh& mesh = tri_.mesh;
+      const uint32_t first = mesh.face_offsets[patch];
+      PhongTriangle<C> tri;
+      for (int i = 0; i < 3; ++i) {
+        tri.position[i] = cast(mesh.positions[mesh.corner_positions[first + i]]);
+        tri.normal[i] = normalize(cast(mesh.normals[mesh.corner_normals[first + i]]));
+      }
+      profile.per_patch_setup = operationCounts();
+      resetOperationCounts();
+      (void)evaluatePhongInOrder(tri, weight, C(float(alpha_)));
+      profile.note = "float, shader order: TCS normalises 3 normals (corner order sorted on the "
+                     "host); TES eq. 3-4";
+    }
+    profile.per_vertex = operationCounts();
+    return profile;
+  }
+
   DataFootprint footprint() const override {
-    // Phong needs nothing beyond the vertex buffer and index buffer.
-    return {triangleControlMeshBytes(tri_.mesh), 0, 0};
+    // Phong needs nothing beyond the vertex buffer and index buffer; the edge variant adds
+    // a geometry normal per position and 4 bytes of edge flags per vertex (seed 003).
+    if (!edge_) return {triangleControlMeshBytes(tri_.mesh), 0, 0};
+    return {triangleControlMeshBytes(tri_.mesh),
+            uint64_t(edge_build_.geometry_normal_count) * 12 + patchCount() * 3 * 4, 0};
   }
 
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
  private:
+  using PatchRecord = std::array<uint32_t, kPhongRecordWords>;
+
+  // The GPU record of patch p: canonical order (canonicalCornerOrder on the float corners,
+  // as evaluateFloat sorts them; pn_triangles' order for the edge variant) and indices.
+  PatchRecord record(size_t patch) const {
+    PatchRecord r{};
+    const Mesh& mesh = tri_.mesh;
+    const uint32_t first = mesh.face_offsets[patch];
+    if (edge_) {
+      const pn_triangles::PnRecord& pr = edge_build_.records[patch];
+      for (int i = 0; i < 3; ++i) {
+        r[i] = pr.perm[i];
+        r[3 + i] = pr.position[i];
+        r[6 + i] = pr.normal[i];
+      }
+      for (int e = 0; e < 3; ++e) {
+        for (int end = 0; end < 2; ++end) r[9 + 2 * e + end] = edgeNormalIndex(pr, e, end);
+      }
+      return r;
+    }
+    PhongTriangle<float> tri;
+    for (int i = 0; i < 3; ++i) {
+      tri.position[i] = vecCast<float>(mesh.positions[mesh.corner_positions[first + i]]);
+      tri.normal[i] = normalize(vecCast<float>(mesh.normals[mesh.corner_normals[first + i]]));
+    }
+    const std::array<int, 3> order = canonicalCornerOrder(tri);
+    for (int i = 0; i < 3; ++i) {
+      r[i] = uint32_t(order[i]);
+      r[3 + i] = mesh.corner_positions[first + order[i]];
+      r[6 + i] = uint32_t(mesh.corner_normals[first + order[i]]);
+    }
+    for (int k = 0; k < 6; ++k) r[9 + k] = r[6];  // unused without the edge variant
+    return r;
+  }
+
+  static uint32_t edgeNormalIndex(const pn_triangles::PnRecord& r, int e, int end) {
+    const int a = kPhongEdgeEnds[e][0], b = kPhongEdgeEnds[e][1];
+    const int label = kPhongEdgeEnds[e][end];
+    const bool flagged = ((r.flags[a] & r.flags[b]) & (1u << e)) != 0;
+    return flagged ? r.geometry_normal[label] : r.normal[label];
+  }
+
+  template <class T, class Cast>
+  PhongEdgeTriangle<T> edgeTriangle(size_t patch, Cast cast) const {
+    const pn_triangles::PnRecord& r = edge_build_.records[patch];
+    PhongEdgeTriangle<T> tri;
+    for (int i = 0; i < 3; ++i) {
+      tri.position[i] = cast(tri_.mesh.positions[r.position[i]]);
+      tri.normal[i] = normalize(cast(edge_build_.normals[r.normal[i]]));
+    }
+    for (int e = 0; e < 3; ++e) {
+      for (int end = 0; end < 2; ++end) {
+        tri.edge_normal[e][end] = normalize(cast(edge_build_.normals[edgeNormalIndex(r, e, end)]));
+      }
+    }
+    return tri;
+  }
+
   Triangulation tri_;
   double alpha_;
+  bool edge_;
+  pn_triangles::PnBuild edge_build_;
   std::vector<std::string> warnings_;
 };
 
@@ -88,6 +241,10 @@ std::vector<VariantInfo> PhongTechnique::variants() const {
       {"alpha0", "shape factor 0: the flat triangle", {{"alpha", 0.0}}},
       {"alpha0.5", "shape factor 0.5", {{"alpha", 0.5}}},
       {"alpha1", "shape factor 1: full projection", {{"alpha", 1.0}}},
+      {"edge",
+       "seed 003's per-edge extension (α = 0.75): edge curves from per-edge normals, "
+       "geometry normals on split edges",
+       {{"alpha", 0.75}, {"edge", 1.0}}},
   };
 }
 
@@ -101,8 +258,10 @@ std::unique_ptr<SurfacePatches> PhongTechnique::buildPatches(const Mesh& mesh,
                                                              const VariantInfo& variant) const {
   if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
   const auto alpha = variant.parameters.find("alpha");
+  const auto edge = variant.parameters.find("edge");
   return std::make_unique<PhongPatches>(
-      fanTriangulate(mesh), alpha == variant.parameters.end() ? kDefaultAlpha : alpha->second);
+      fanTriangulate(mesh), alpha == variant.parameters.end() ? kDefaultAlpha : alpha->second,
+      edge != variant.parameters.end() && edge->second != 0);
 }
 
 TB_REGISTER_TECHNIQUE(PhongTechnique);

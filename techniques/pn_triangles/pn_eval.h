@@ -45,13 +45,13 @@ struct PnPoint {
   Vec3T<T> normal;
 };
 
-// Left to right, as shaders/pn_triangles/pn_common.glsl's tbDot.
+// Left to right, as shaders/common/float_order.glsl tbDot.
 template <class T>
 T dotInOrder(const Vec3T<T>& a, const Vec3T<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-// v * (1 / |v|), zero stays zero (as vec.h normalize and the shaders' tbNormalize).
+// v * (1 / |v|), zero stays zero (as vec.h normalize and float_order.glsl tbNormalize).
 template <class T>
 Vec3T<T> normalizeInOrder(const Vec3T<T>& v) {
   using std::sqrt;

@@ -112,5 +112,28 @@ TEST(PnCracks, SmoothSharedNormalsAreWatertightInEveryVariant) {
   }
 }
 
+TEST(PhongCracks, EdgeVariantClosesTheCapGapsOfPlainPhong) {
+  // Oracle as above: plain Phong builds the cap rim from the cap's and the side's corner
+  // normals; seed 003's per-edge variant uses the shared geometry normals on split edges.
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const Level& l : kLevels) {
+    for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+      const CrackFigures plain = measure("phong", "alpha0.75", "tessbench/cylinder_seam.obj",
+                                         l.spacing, l.level, backend, &context);
+      ASSERT_TRUE(plain.measured) << plain.skipped_reason;
+      EXPECT_GT(plain.max_gap_world, 1e-3);
+      for (const char* asset : {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj",
+                                "tessbench/tri_torus.obj"}) {
+        const CrackFigures edge = measure("phong", "edge", asset, l.spacing, l.level, backend,
+                                          &context);
+        ASSERT_TRUE(edge.measured) << edge.skipped_reason;
+        EXPECT_GT(edge.points_compared, 0u);
+        EXPECT_EQ(edge.unpaired_points, 0u);
+        EXPECT_EQ(edge.points_not_equal, 0u) << asset << " " << toString(backend);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tb

@@ -31,7 +31,7 @@ struct GpuAgreement {
   size_t expected_vertices = 0;  // patches × CPU-tessellator points
   uint64_t max_position_ulp = 0;
   uint64_t max_normal_ulp = 0;
-  size_t positions_not_bitwise = 0;
+  size_t positions_not_bitwise = 0;  // +0 and -0 count as equal
 };
 
 inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatches& patches,
@@ -60,8 +60,7 @@ inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatc
           std::max(result.max_position_ulp, floatUlps(v.position[k], cpu.position[k]));
       result.max_normal_ulp =
           std::max(result.max_normal_ulp, floatUlps(v.normal[k], cpu.normal[k]));
-      equal = equal && std::bit_cast<uint32_t>(v.position[k]) ==
-                           std::bit_cast<uint32_t>(cpu.position[k]);
+      equal = equal && floatUlps(v.position[k], cpu.position[k]) == 0;
     }
     result.positions_not_bitwise += equal ? 0 : 1;
   }

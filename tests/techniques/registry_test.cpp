@@ -11,7 +11,7 @@ TEST(Registry, PhongRegistersItselfWithCompleteInfo) {
   EXPECT_EQ(phong->info().family, TechniqueFamily::kSurface);
   EXPECT_FALSE(phong->info().title.empty());
   EXPECT_NE(phong->info().citation.find("Boubekeur"), std::string::npos);
-  EXPECT_EQ(phong->variants().size(), 4u);
+  EXPECT_EQ(phong->variants().size(), 5u);  // four α values and `edge`
   EXPECT_EQ(TechniqueRegistry::instance().find("no_such_technique"), nullptr);
 }
 
