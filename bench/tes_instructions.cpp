@@ -1,8 +1,8 @@
 // x86 instructions per TES invocation on lavapipe (DESIGN.md measure 1c): lavapipe has
 // no pipeline-executable statistics and Mesa's debug dumps are compiled out, but
 // callgrind sees the JIT code. This program runs a technique's GPU program at each level
-// given, with callgrind counting only the timed run (a discarded dump before it resets the counters, a
-// dump after it); bench/callgrind_tes.sh runs it under valgrind and takes the slope
+// given, with callgrind counting only the timed run (a discarded dump before it resets the
+// counters, a dump after it); bench/callgrind_tes.sh runs it under valgrind and takes the slope
 // between two levels, which removes the per-draw and per-submission overhead.
 //   tes_instructions TECHNIQUE ASSET [VARIANT] [LEVEL...]
 #include <valgrind/callgrind.h>

@@ -135,8 +135,10 @@ BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatc
     }
   }
   if (std::find(filled.begin(), filled.end(), 0) != filled.end()) {
-    throw std::runtime_error("cracks: the GPU capture lacks boundary points the CPU tessellator "
-                             "emits (" + program.evaluation_shader + ")");
+    throw std::runtime_error(
+        "cracks: the GPU capture lacks boundary points the CPU tessellator "
+        "emits (" +
+        program.evaluation_shader + ")");
   }
   return positions;
 }
@@ -175,7 +177,8 @@ class PairAccumulator {
 double scaleUlp(const Mesh& mesh) {
   float extent = 1e-30f;
   for (const Vec3d& p : mesh.positions) {
-    extent = std::max({extent, std::fabs(float(p.x)), std::fabs(float(p.y)), std::fabs(float(p.z))});
+    extent =
+        std::max({extent, std::fabs(float(p.x)), std::fabs(float(p.y)), std::fabs(float(p.z))});
   }
   return double(std::nextafter(extent, INFINITY)) - double(extent);
 }
@@ -191,10 +194,18 @@ int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::Domai
   if (domain == PatchDomain::kQuad) {
     const float u = p[0], v = p[1];
     switch (edge) {
-      case 0: if (v == 0) t = u; break;
-      case 1: if (u == 1) t = v; break;
-      case 2: if (v == 1) t = 1.0 - u; break;
-      default: if (u == 0) t = 1.0 - v; break;
+      case 0:
+        if (v == 0) t = u;
+        break;
+      case 1:
+        if (u == 1) t = v;
+        break;
+      case 2:
+        if (v == 1) t = 1.0 - u;
+        break;
+      default:
+        if (u == 0) t = 1.0 - v;
+        break;
     }
   } else if (p[(edge + 2) % 3] == 0) {
     t = p[(edge + 1) % 3];

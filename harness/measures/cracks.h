@@ -64,9 +64,9 @@ struct CrackFigures {
   bool measured = false;
   std::string skipped_reason;  // non-empty when !measured (no GPU program, no device)
 
-  uint64_t shared_edges = 0;     // edges with two or more patches
-  uint64_t seam_edges = 0;       // of those, shared only through welding
-  uint64_t shared_corners = 0;   // welded vertices at corners of two or more patches
+  uint64_t shared_edges = 0;    // edges with two or more patches
+  uint64_t seam_edges = 0;      // of those, shared only through welding
+  uint64_t shared_corners = 0;  // welded vertices at corners of two or more patches
   // Pairs compared: each side of an edge (after the first) against the first side, at
   // every tessellated point strictly inside the edge; likewise at corners.
   uint64_t points_compared = 0;
@@ -80,7 +80,7 @@ struct CrackFigures {
   // Max component gap in ulps of the asset's scale (the largest |coordinate| of the control
   // mesh): 1 means one rounding step of the model's largest coordinate.
   double max_gap_scale_ulp = 0;
-  CrackLocation worst;            // pair with the largest world gap (first one on ties)
+  CrackLocation worst;  // pair with the largest world gap (first one on ties)
 
   // GPU only: the captured position against evaluateFloat at the same gl_TessCoord, over
   // every captured vertex (agreement of the CPU float model with the device).

@@ -73,7 +73,8 @@ class CracksMeasure final : public Measure {
         "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
         "runs from corner k to k + 1; t from corner local_a), -1 when none",
         "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
-        "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; vs_cpu_float_*: "
+        "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; "
+        "vs_cpu_float_*: "
         "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
         "rows by definition)",
         "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "

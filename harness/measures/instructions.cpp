@@ -1,7 +1,6 @@
 #include "harness/measures/instructions.h"
 
 #include <spirv-tools/optimizer.hpp>
-
 #include <stdexcept>
 #include <unordered_map>
 
@@ -9,6 +8,7 @@
 
 #define SPV_ENABLE_UTILITY_CODE
 #include <glslang/SPIRV/GLSL.std.450.h>
+
 #include <glslang/SPIRV/spirv.hpp>
 
 namespace tb {
@@ -32,9 +32,16 @@ uint32_t componentsOfValue(const ModuleTables& t, uint32_t value) {
 // Instructions that declare or annotate rather than execute.
 bool isNotExecuted(spv::Op op) {
   switch (op) {
-    case spv::OpFunction: case spv::OpFunctionParameter: case spv::OpFunctionEnd:
-    case spv::OpLabel: case spv::OpVariable: case spv::OpLine: case spv::OpNoLine:
-    case spv::OpNop: case spv::OpSelectionMerge: case spv::OpLoopMerge:
+    case spv::OpFunction:
+    case spv::OpFunctionParameter:
+    case spv::OpFunctionEnd:
+    case spv::OpLabel:
+    case spv::OpVariable:
+    case spv::OpLine:
+    case spv::OpNoLine:
+    case spv::OpNop:
+    case spv::OpSelectionMerge:
+    case spv::OpLoopMerge:
       return true;
     default:
       return false;
@@ -44,33 +51,63 @@ bool isNotExecuted(spv::Op op) {
 uint64_t* categoryOf(spv::Op op, const uint32_t* inst, const ModuleTables& t,
                      InstructionCounts* c) {
   switch (op) {
-    case spv::OpFAdd: case spv::OpFSub:
+    case spv::OpFAdd:
+    case spv::OpFSub:
       return &c->add;
-    case spv::OpFMul: case spv::OpVectorTimesScalar: case spv::OpMatrixTimesScalar:
-    case spv::OpVectorTimesMatrix: case spv::OpMatrixTimesVector:
-    case spv::OpMatrixTimesMatrix: case spv::OpOuterProduct:
+    case spv::OpFMul:
+    case spv::OpVectorTimesScalar:
+    case spv::OpMatrixTimesScalar:
+    case spv::OpVectorTimesMatrix:
+    case spv::OpMatrixTimesVector:
+    case spv::OpMatrixTimesMatrix:
+    case spv::OpOuterProduct:
       return &c->mul;
-    case spv::OpFDiv: case spv::OpFRem: case spv::OpFMod:
+    case spv::OpFDiv:
+    case spv::OpFRem:
+    case spv::OpFMod:
       return &c->div;
-    case spv::OpDot: case spv::OpFNegate:
+    case spv::OpDot:
+    case spv::OpFNegate:
       return &c->float_other;
-    case spv::OpLoad: case spv::OpStore: case spv::OpCopyMemory: case spv::OpAtomicLoad:
-    case spv::OpAtomicStore: case spv::OpAtomicExchange: case spv::OpAtomicCompareExchange:
-    case spv::OpAtomicIIncrement: case spv::OpAtomicIDecrement: case spv::OpAtomicIAdd:
-    case spv::OpAtomicISub: case spv::OpAtomicSMin: case spv::OpAtomicUMin:
-    case spv::OpAtomicSMax: case spv::OpAtomicUMax: case spv::OpAtomicAnd:
-    case spv::OpAtomicOr: case spv::OpAtomicXor:
+    case spv::OpLoad:
+    case spv::OpStore:
+    case spv::OpCopyMemory:
+    case spv::OpAtomicLoad:
+    case spv::OpAtomicStore:
+    case spv::OpAtomicExchange:
+    case spv::OpAtomicCompareExchange:
+    case spv::OpAtomicIIncrement:
+    case spv::OpAtomicIDecrement:
+    case spv::OpAtomicIAdd:
+    case spv::OpAtomicISub:
+    case spv::OpAtomicSMin:
+    case spv::OpAtomicUMin:
+    case spv::OpAtomicSMax:
+    case spv::OpAtomicUMax:
+    case spv::OpAtomicAnd:
+    case spv::OpAtomicOr:
+    case spv::OpAtomicXor:
       return &c->load_store;
-    case spv::OpBranch: case spv::OpBranchConditional: case spv::OpSwitch: case spv::OpReturn:
-    case spv::OpReturnValue: case spv::OpKill: case spv::OpTerminateInvocation:
-    case spv::OpUnreachable: case spv::OpFunctionCall:
+    case spv::OpBranch:
+    case spv::OpBranchConditional:
+    case spv::OpSwitch:
+    case spv::OpReturn:
+    case spv::OpReturnValue:
+    case spv::OpKill:
+    case spv::OpTerminateInvocation:
+    case spv::OpUnreachable:
+    case spv::OpFunctionCall:
       return &c->control_flow;
     case spv::OpExtInst:
       if (inst[3] == t.glsl_std_450) {
         switch (inst[4]) {
-          case GLSLstd450Fma: return &c->fma;
-          case GLSLstd450Sqrt: case GLSLstd450InverseSqrt: return &c->sqrt;
-          default: return &c->float_other;
+          case GLSLstd450Fma:
+            return &c->fma;
+          case GLSLstd450Sqrt:
+          case GLSLstd450InverseSqrt:
+            return &c->sqrt;
+          default:
+            return &c->float_other;
         }
       }
       return &c->other;
@@ -107,10 +144,13 @@ InstructionCounts countSpirvInstructions(std::span<const uint32_t> words, bool s
           t.glsl_std_450 = inst[1];
         }
         continue;
-      case spv::OpTypeBool: case spv::OpTypeInt: case spv::OpTypeFloat:
+      case spv::OpTypeBool:
+      case spv::OpTypeInt:
+      case spv::OpTypeFloat:
         t.type_components[inst[1]] = 1;
         continue;
-      case spv::OpTypeVector: case spv::OpTypeMatrix:
+      case spv::OpTypeVector:
+      case spv::OpTypeMatrix:
         t.type_components[inst[1]] = t.type_components[inst[2]] * inst[3];
         continue;
       case spv::OpFunction:

@@ -45,9 +45,9 @@ std::vector<uint32_t> optimizeSpirv(std::span<const uint32_t> words,
                                     const std::vector<uint32_t>& specialization);
 
 struct StageInstructionCounts {
-  std::string shader;            // embedded path, e.g. "phong/phong.tese"
-  InstructionCounts vector;      // one per SPIR-V instruction
-  InstructionCounts scalar;      // expanded to result components
+  std::string shader;        // embedded path, e.g. "phong/phong.tese"
+  InstructionCounts vector;  // one per SPIR-V instruction
+  InstructionCounts scalar;  // expanded to result components
 };
 
 // Optimises and counts one embedded shader (shaders/embedded_shaders.h). Throws

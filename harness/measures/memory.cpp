@@ -98,10 +98,9 @@ class MemoryMeasure final : public Measure {
         row.metrics.push_back(
             {"compressed_index_bytes", double(compressed.index_data.size()), "bytes"});
         row.metrics.push_back({"compressed_bytes", double(compressed.bytes()), "bytes"});
-        row.metrics.push_back({"compressed_over_technique",
-                               double(compressed.bytes()) /
-                                   double(m.technique_with_displacement_bytes),
-                               "ratio"});
+        row.metrics.push_back(
+            {"compressed_over_technique",
+             double(compressed.bytes()) / double(m.technique_with_displacement_bytes), "ratio"});
       }
       result.rows.push_back(std::move(row));
     }
@@ -123,9 +122,9 @@ MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
   m.level = level;
   m.plain_vertices = render.vertex_count + uint64_t(render.edge_count) * (level - 1) +
                      patch_count * interiorPointCount(domain, level);
-  m.plain_triangles = patch_count * (domain == PatchDomain::kQuad
-                                         ? tess::quadTriangleCount(level)
-                                         : tess::triangleTriangleCount(level));
+  m.plain_triangles =
+      patch_count * (domain == PatchDomain::kQuad ? tess::quadTriangleCount(level)
+                                                  : tess::triangleTriangleCount(level));
   m.plain_bytes = m.plain_vertices * kRenderVertexBytes + m.plain_triangles * 3 * kIndexBytes;
   m.technique = patches.footprint();
   m.displacement_bytes = patch_count * displacementTexels(domain, level) * kDisplacementTexelBytes;
@@ -224,9 +223,9 @@ CompressedMesh compressMesh(TessellatedMesh* mesh) {
   std::vector<uint32_t>& indices = mesh->indices;
   meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertex_count);
   std::vector<float> fetched(mesh->vertices.size());
-  const size_t used = meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
-                                                  mesh->vertices.data(), vertex_count,
-                                                  kRenderVertexBytes);
+  const size_t used =
+      meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
+                                  mesh->vertices.data(), vertex_count, kRenderVertexBytes);
   fetched.resize(used * kFloatsPerVertex);
   mesh->vertices = std::move(fetched);
 
@@ -245,7 +244,8 @@ bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {
   std::vector<float> vertices(like.vertices.size());
   std::vector<uint32_t> indices(like.indices.size());
   if (meshopt_decodeVertexBuffer(vertices.data(), like.vertexCount(), kRenderVertexBytes,
-                                 compressed.vertex_data.data(), compressed.vertex_data.size()) != 0 ||
+                                 compressed.vertex_data.data(),
+                                 compressed.vertex_data.size()) != 0 ||
       meshopt_decodeIndexBuffer(indices.data(), indices.size(), sizeof(uint32_t),
                                 compressed.index_data.data(), compressed.index_data.size()) != 0) {
     return false;

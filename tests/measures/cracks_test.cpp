@@ -3,12 +3,13 @@
 // symmetric in the edge parameter (must be bitwise watertight) or naive (must show
 // cracks); and on the device, the bilinear test shaders, whose captured positions must
 // equal the same formulas evaluated on the CPU.
+#include "harness/measures/cracks.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 
-#include "harness/measures/cracks.h"
 #include "harness/mesh/obj_loader.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
@@ -70,7 +71,8 @@ class FlatPatches final : public SurfacePatches {
   }
   uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
-    const SurfacePointF f = evaluateFloat(patch, {float(coord[0]), float(coord[1]), float(coord[2])});
+    const SurfacePointF f =
+        evaluateFloat(patch, {float(coord[0]), float(coord[1]), float(coord[2])});
     return {vecCast<double>(f.position), {0, 0, 1}};
   }
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
@@ -133,8 +135,8 @@ TEST(Cracks, UlpDistanceCountsRepresentableFloats) {
 TEST(Cracks, SharedEdgesAndCornersOfAQuadGridMatchAHandCount) {
   const FlatPatches patches(gridMesh(3, false), Order::kSymmetric);
   const SharedBoundaries shared = findSharedBoundaries(patches);
-  EXPECT_EQ(shared.edges.size(), 12u);   // 2 directions × 3 rows × 2 interior lines
-  EXPECT_EQ(shared.corners.size(), 12u); // 4 interior + 8 boundary non-corner vertices
+  EXPECT_EQ(shared.edges.size(), 12u);    // 2 directions × 3 rows × 2 interior lines
+  EXPECT_EQ(shared.corners.size(), 12u);  // 4 interior + 8 boundary non-corner vertices
   for (const SharedEdge& e : shared.edges) {
     ASSERT_EQ(e.sides.size(), 2u);
     // Consistently oriented faces run a shared edge in opposite directions.
@@ -200,7 +202,8 @@ TEST(Cracks, PositionsDuplicatedAtASeamAreWeldedIntoASharedEdge) {
   const Mesh mesh = loadObjText(
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nv 1 1 0\nf 1 2 3\nf 5 6 4\n", "seam.obj");
   const FlatPatches patches(mesh, Order::kSymmetric);
-  const CrackFigures f = measureCracks(patches, tess::Spacing::kInteger, 4, CrackBackend::kCpuFloat);
+  const CrackFigures f =
+      measureCracks(patches, tess::Spacing::kInteger, 4, CrackBackend::kCpuFloat);
   EXPECT_EQ(f.shared_edges, 1u);
   EXPECT_EQ(f.seam_edges, 1u);
   EXPECT_EQ(f.shared_corners, 2u);
@@ -230,7 +233,8 @@ TEST(Cracks, GpuCaptureMatchesTheCpuModelAndShowsTheSameCracks) {
         SCOPED_TRACE(std::string(order == Order::kNaive ? "naive " : "symmetric ") +
                      std::string(tess::toString(spacing)) + " level " + std::to_string(level));
         const CrackFigures cpu = measureCracks(patches, spacing, level, CrackBackend::kCpuFloat);
-        const CrackFigures gpu = measureCracks(patches, spacing, level, CrackBackend::kGpu, &context);
+        const CrackFigures gpu =
+            measureCracks(patches, spacing, level, CrackBackend::kGpu, &context);
         ASSERT_TRUE(gpu.measured) << gpu.skipped_reason;
         // Oracle: the CPU tessellator's point count, times the patches.
         const tess::Tessellation t = tess::tessellate(
@@ -279,8 +283,8 @@ TEST(Cracks, PhongOnTheDeviceAgreesWithItsCpuModel) {
     if (!patches->gpuProgram()) GTEST_SKIP() << "phong has no GPU program on this branch";
     const CrackFigures cpu =
         measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kCpuFloat);
-    const CrackFigures gpu = measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f,
-                                           CrackBackend::kGpu, &context);
+    const CrackFigures gpu =
+        measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kGpu, &context);
     SCOPED_TRACE(asset);
     ASSERT_TRUE(gpu.measured) << gpu.skipped_reason;
     EXPECT_GT(gpu.device_points, 0u);

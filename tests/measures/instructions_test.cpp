@@ -1,11 +1,12 @@
 // Instruction counts against hand counts: a bicubic Bézier patch evaluated with the
 // counting scalar, and the arithmetic of shaders/gpu/test_bilinear.tese after spirv-opt -O.
+#include "harness/measures/instructions.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <map>
 
-#include "harness/measures/instructions.h"
 #include "harness/measures/measure.h"
 #include "harness/mesh/obj_loader.h"
 #include "shaders/embedded_shaders.h"
@@ -19,7 +20,7 @@ namespace {
 // Bernstein form of a bicubic Bézier patch (Farin, Curves and Surfaces for CAGD, ch. 14).
 template <class S>
 Vec3T<S> bicubicBezier(const Vec3T<S> (&control)[4][4], S u, S v) {
-  auto basis = [](S t, S (&b)[4]) {
+  auto basis = [](S t, S(&b)[4]) {
     const S s = S(1) - t;
     b[0] = s * s * s;
     b[1] = S(3) * t * s * s;
@@ -84,10 +85,10 @@ TEST(Instructions, SpecialisationIsFrozenBeforeCounting) {
   // GLSL.std.450 call, float_other) and its branch; frozen to 0 the branch is dead code.
   const StageInstructionCounts off = countEmbeddedShader("gpu/test_spec_switch.tese", {0});
   const StageInstructionCounts on = countEmbeddedShader("gpu/test_spec_switch.tese", {1});
-  EXPECT_EQ(off.vector.float_other, 3u);  // three mix() calls
-  EXPECT_EQ(on.vector.float_other, 4u);   // and normalize
+  EXPECT_EQ(off.vector.float_other, 3u);                          // three mix() calls
+  EXPECT_EQ(on.vector.float_other, 4u);                           // and normalize
   EXPECT_EQ(on.scalar.float_other - off.scalar.float_other, 3u);  // a vec3 result
-  EXPECT_EQ(off.vector.control_flow, on.vector.control_flow);      // the if folds away
+  EXPECT_EQ(off.vector.control_flow, on.vector.control_flow);     // the if folds away
 }
 
 TEST(Instructions, OptimisationRemovesWorkAndRejectsGarbage) {
@@ -152,7 +153,8 @@ TEST(Instructions, MeasureReportsTheCheapestAndDearestPatchProfile) {
       measure->run({*phong, variant, "loop_icosahedron", mesh, &patches, nullptr, "none"});
   std::map<std::string, double> mul_per_vertex;
   for (const MetricRow& row : result.rows) {
-    if (row.keys.at("source") != "counting_scalar" || row.keys.at("stage") != "per_vertex") continue;
+    if (row.keys.at("source") != "counting_scalar" || row.keys.at("stage") != "per_vertex")
+      continue;
     mul_per_vertex[row.keys.at("patch")] = metricOf(row, "mul");
     EXPECT_EQ(metricOf(row, "total"), metricOf(row, "mul") + 4);
   }

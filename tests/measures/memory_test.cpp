@@ -2,14 +2,15 @@
 // after any subdivision), hand counts for a single triangle, the closed-form counts
 // against the mesh actually built, meshoptimizer's decoders for the compressed
 // baseline, and a second run for determinism.
+#include "harness/measures/memory.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "harness/measures/memory.h"
 #include "harness/measures/suite.h"
-#include "harness/results/results_json.h"
 #include "harness/mesh/obj_loader.h"
+#include "harness/results/results_json.h"
 #include "harness/tess/tessellator.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
@@ -78,8 +79,7 @@ TEST(Memory, BuiltMeshHasTheClosedFormCountsAndCompressesLosslessly) {
       EXPECT_EQ(built.indices.size(), 3 * m.plain_triangles);
       EXPECT_EQ(built.vertexCount() * kRenderVertexBytes + built.indices.size() * kIndexBytes,
                 m.plain_bytes);
-      EXPECT_LT(*std::max_element(built.indices.begin(), built.indices.end()),
-                built.vertexCount());
+      EXPECT_LT(*std::max_element(built.indices.begin(), built.indices.end()), built.vertexCount());
       const CompressedMesh compressed = compressMesh(&built);
       // Every vertex is referenced, so fetch optimisation keeps them all.
       EXPECT_EQ(built.vertexCount(), m.plain_vertices);
