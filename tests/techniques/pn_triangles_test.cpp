@@ -160,6 +160,48 @@ TEST(PnTriangles, BoundaryFlagsStraightenUnsharedEdges) {
   EXPECT_GT(length(plain->evaluate(0, {0.25, 0.75, 0}).position - linear), 1e-3);
 }
 
+TEST(PnTriangles, BoundaryFlagsPutTheTJunctionVertexOnTheLongEdge) {
+  // Seed 003's T-junction: vertex 5 = (1, 0.5, 0) sits on the middle of the left half's edge
+  // 2-3 but is a corner of the right half, which therefore passes through it exactly. With
+  // boundary flags the unshared edge 2-3 is straight, so its midpoint is vertex 5 (no
+  // crack); plain PN bulges it away from vertex 5 (a crack). Normals form a dome.
+  const char* kTJunction =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0.5 0\nv 2 0 0\nv 2 1 0\n"
+      "vn -1 -0.5 2\nvn 0 -0.5 2\nvn 0 0.5 2\nvn -1 0.5 2\nvn 0 0 1\nvn 1 -0.5 2\nvn 1 0.5 2\n"
+      "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\nf 2//2 6//6 5//5\nf 5//5 6//6 7//7\nf 5//5 7//7 3//3\n";
+  const Mesh mesh = loadObjText(kTJunction, "tjunction.obj");
+  const Vec3d t_vertex = mesh.positions[4];
+  const auto flagged = pn().buildPatches(mesh, variant("boundary_flags"));
+  const auto plain = pn().buildPatches(mesh, variant("pn"));
+  // Face 0 = (v1, v2, v3): edge 2-3 is corners 1-2.
+  EXPECT_LT(length(flagged->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 1e-15);
+  EXPECT_GT(length(plain->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 0.01);
+  // The right half's faces pass through the T vertex in both variants.
+  EXPECT_EQ(flagged->evaluate(2, {0, 0, 1}).position, t_vertex);
+}
+
+TEST(PnTriangles, RoundingOnlyFlattensEdges) {
+  // Seed 003's rounding scales w_ij by a factor in [0, 1]: every edge point moves toward
+  // the straight edge, none away, and the nearly flat edges of this triangle move.
+  const Mesh mesh = loadObjText(kCurved, "r.obj");
+  const auto rounded = pn().buildPatches(mesh, variant("rounding"));
+  const auto full = pn().buildPatches(mesh, variant("geometry_normals"));
+  double moved = 0;
+  for (int e = 0; e < 3; ++e) {
+    for (int i = 1; i < 8; ++i) {
+      DomainCoord c{0, 0, 0};
+      c[e] = i / 8.0;
+      c[(e + 1) % 3] = 1 - i / 8.0;
+      const Vec3d linear = mesh.positions[e] * c[e] + mesh.positions[(e + 1) % 3] * c[(e + 1) % 3];
+      const double d_rounded = length(rounded->evaluate(0, c).position - linear);
+      const double d_full = length(full->evaluate(0, c).position - linear);
+      EXPECT_LE(d_rounded, d_full + 1e-15);
+      moved = std::max(moved, d_full - d_rounded);
+    }
+  }
+  EXPECT_GT(moved, 1e-3);
+}
+
 TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
