@@ -104,15 +104,17 @@ TEST_P(PhongGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
-      const testing::GpuAgreement a = testing::compareGpuWithFloat(context, *patches, spacing, level);
+      const testing::GpuAgreement a =
+          testing::compareGpuWithFloat(context, *patches, spacing, level);
       EXPECT_EQ(a.vertices, a.expected_vertices) << asset << " level " << level;
       EXPECT_LE(a.max_position_ulp, 4u) << asset << " level " << level;
       EXPECT_LE(a.max_normal_ulp, 4u) << asset << " level " << level;
-      std::printf("[phong gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal "
-                  "%llu, %zu positions not bitwise\n",
-                  GetParam().c_str(), asset.c_str(), level, a.vertices,
-                  (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
-                  a.positions_not_bitwise);
+      std::printf(
+          "[phong gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal "
+          "%llu, %zu positions not bitwise\n",
+          GetParam().c_str(), asset.c_str(), level, a.vertices,
+          (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
+          a.positions_not_bitwise);
     }
   }
 }

@@ -87,8 +87,8 @@ TEST(PnTriangles, CurvedEdgeBulgesByTheHandComputedControlPoints) {
   // Oracle: the edge midpoint of a cubic Bézier is (b300 + 3 b210 + 3 b120 + b030) / 8, with
   // b210 = (2 P1 + P2 - w12 N1) / 3 computed by hand: P1 = 0, P2 = (1,0,0), N1 = (0,0,1),
   // N2 = (3, 0, 4) / 5 => w12 = 0, w21 = -3/5 => b120 = (2 P2 + P1 - w21 N2) / 3.
-  const Mesh mesh = loadObjText(
-      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
+  const Mesh mesh =
+      loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
   const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
   const Vec3d b210{1.0 / 3, 0, 0};
   const Vec3d n2 = normalize(Vec3d{3, 0, 4});
@@ -138,7 +138,8 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
   EXPECT_EQ(build.boundary_edges, 0u);
   EXPECT_EQ(build.geometry_normal_count, 8u);
   for (size_t i = mesh.normals.size(); i < build.normals.size(); ++i) {
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
   }
   size_t flagged_edges = 0;
   for (const PnRecord& r : build.records) {
@@ -208,8 +209,8 @@ TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
   EXPECT_EQ(patches->patchCount(), 12u);
   ASSERT_EQ(patches->warnings().size(), 1u);  // catmark_cube.obj has its own normals
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
-  const auto torus = pn().buildPatches(
-      loadObjFile(testing::assetPath("tessbench/tri_torus.obj")), pn().variants()[0]);
+  const auto torus = pn().buildPatches(loadObjFile(testing::assetPath("tessbench/tri_torus.obj")),
+                                       pn().variants()[0]);
   ASSERT_EQ(torus->warnings().size(), 1u);
   EXPECT_NE(torus->warnings()[0].find("normals were computed"), std::string::npos);
 }
@@ -227,8 +228,8 @@ TEST(PnTriangles, OperationCountsMatchAHandCount) {
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   // Position: 6 (weights) + corners (3 + 9 mul, 6 add) + edges 3 × (6 + 1 + 3 mul, 6 add)
-  // + centre (2 + 3 mul, 3 add) => mul 6 + 12 + 30 + 5 = 53, add 6 + 18 + 3 = 27. Normal: 6 terms × 3 mul = 18 mul, 15 add; normalise: dot
-  // 3 mul 2 add, sqrt, 1 div, 3 mul, 1 compare.
+  // + centre (2 + 3 mul, 3 add) => mul 6 + 12 + 30 + 5 = 53, add 6 + 18 + 3 = 27. Normal: 6 terms ×
+  // 3 mul = 18 mul, 15 add; normalise: dot 3 mul 2 add, sqrt, 1 div, 3 mul, 1 compare.
   EXPECT_EQ(profile->per_vertex.mul, 53u + 18u + 6u);
   EXPECT_EQ(profile->per_vertex.add, 27u + 15u + 2u);
   EXPECT_EQ(profile->per_vertex.div, 1u);
@@ -254,15 +255,17 @@ TEST_P(PnGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
-      const testing::GpuAgreement a = testing::compareGpuWithFloat(context, *patches, spacing, level);
+      const testing::GpuAgreement a =
+          testing::compareGpuWithFloat(context, *patches, spacing, level);
       EXPECT_EQ(a.vertices, a.expected_vertices) << asset << " level " << level;
       EXPECT_LE(a.max_position_ulp, 4u) << asset << " level " << level;
       EXPECT_LE(a.max_normal_ulp, 4u) << asset << " level " << level;
-      std::printf("[pn gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal %llu, "
-                  "%zu positions not bitwise\n",
-                  GetParam().c_str(), asset.c_str(), level, a.vertices,
-                  (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
-                  a.positions_not_bitwise);
+      std::printf(
+          "[pn gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal %llu, "
+          "%zu positions not bitwise\n",
+          GetParam().c_str(), asset.c_str(), level, a.vertices,
+          (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
+          a.positions_not_bitwise);
     }
   }
 }
