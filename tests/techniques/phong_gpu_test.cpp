@@ -139,5 +139,26 @@ TEST(PhongOperations, PlainPhongCountsMatchAHandCount) {
   EXPECT_EQ(profile->per_patch_setup.sqrt, 3u);
 }
 
+TEST(PhongOperations, EdgeVariantCostsMorePerVertexThanPlainPhong) {
+  // Oracle: seed 003 names the cost of the per-edge extension, more shader instructions;
+  // the counts are printed for the report.
+  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
+  const auto plain = phong().buildPatches(mesh, variant("alpha0.75"))->operationProfile(0);
+  const auto edge = phong().buildPatches(mesh, variant("edge"))->operationProfile(0);
+  ASSERT_TRUE(plain.has_value() && edge.has_value());
+  for (const auto& [name, p] : {std::pair{"alpha0.75", *plain}, std::pair{"edge", *edge}}) {
+    std::printf(
+        "[phong ops] %s: set-up total %llu (sqrt %llu); per vertex add %llu mul %llu div "
+        "%llu sqrt %llu cmp %llu (total %llu)\n",
+        name, (unsigned long long)p.per_patch_setup.total(),
+        (unsigned long long)p.per_patch_setup.sqrt, (unsigned long long)p.per_vertex.add,
+        (unsigned long long)p.per_vertex.mul, (unsigned long long)p.per_vertex.div,
+        (unsigned long long)p.per_vertex.sqrt, (unsigned long long)p.per_vertex.compare,
+        (unsigned long long)p.per_vertex.total());
+  }
+  EXPECT_GT(edge->per_vertex.total(), plain->per_vertex.total());
+  EXPECT_EQ(edge->per_patch_setup.sqrt, 9u);  // 3 corner + 6 edge-end normals
+}
+
 }  // namespace
 }  // namespace tb::phong

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 
 #include "harness/mesh/obj_loader.h"
@@ -236,6 +237,38 @@ TEST(PnTriangles, OperationCountsMatchAHandCount) {
   EXPECT_EQ(profile->per_vertex.sqrt, 1u);
   EXPECT_EQ(profile->per_vertex.compare, 1u);
   EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
+}
+
+TEST(PnTriangles, VariantsCostOnlyInTheSetUp) {
+  // Oracle: the variants change how the control points are built (TCS), never the patch
+  // evaluation (TES); PN-AEN builds every edge point twice, so its set-up costs more.
+  // flat_cube face 0 has two hard (flagged) edges out of three.
+  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
+  std::map<std::string, OperationProfile> profiles;
+  for (const VariantInfo& v : pn().variants()) {
+    const auto profile = pn().buildPatches(mesh, v)->operationProfile(0);
+    ASSERT_TRUE(profile.has_value());
+    profiles[v.name] = *profile;
+    std::printf(
+        "[pn ops] %s: set-up add %llu mul %llu div %llu sqrt %llu cmp %llu (total %llu); "
+        "per vertex add %llu mul %llu div %llu sqrt %llu (total %llu)\n",
+        v.name.c_str(), (unsigned long long)profile->per_patch_setup.add,
+        (unsigned long long)profile->per_patch_setup.mul,
+        (unsigned long long)profile->per_patch_setup.div,
+        (unsigned long long)profile->per_patch_setup.sqrt,
+        (unsigned long long)profile->per_patch_setup.compare,
+        (unsigned long long)profile->per_patch_setup.total(),
+        (unsigned long long)profile->per_vertex.add, (unsigned long long)profile->per_vertex.mul,
+        (unsigned long long)profile->per_vertex.div, (unsigned long long)profile->per_vertex.sqrt,
+        (unsigned long long)profile->per_vertex.total());
+  }
+  for (const auto& [name, profile] : profiles) {
+    EXPECT_EQ(profile.per_vertex.total(), profiles["pn"].per_vertex.total()) << name;
+  }
+  EXPECT_GT(profiles["aen"].per_patch_setup.total(), profiles["pn"].per_patch_setup.total());
+  // Two flagged edges: 4 geometry normals normalised (3 + 3 mul, 2 add, sqrt, div, compare).
+  EXPECT_EQ(profiles["geometry_normals"].per_patch_setup.sqrt,
+            profiles["pn"].per_patch_setup.sqrt + 4);
 }
 
 struct GpuCase {
