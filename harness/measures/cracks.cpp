@@ -26,30 +26,6 @@ struct BoundaryPoints {
   std::vector<std::map<int64_t, uint32_t>> edge_index;
 };
 
-// Edge parameter of `p` on local edge `edge` (from corner edge to edge + 1), or -1 when
-// `p` is not on that edge.
-int64_t edgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p) {
-  double t = -1;
-  if (domain == PatchDomain::kQuad) {
-    const float u = p[0], v = p[1];
-    switch (edge) {
-      case 0: if (v == 0) t = u; break;
-      case 1: if (u == 1) t = v; break;
-      case 2: if (v == 1) t = 1.0 - u; break;
-      default: if (u == 0) t = 1.0 - v; break;
-    }
-  } else if (p[(edge + 2) % 3] == 0) {
-    t = p[(edge + 1) % 3];
-  }
-  return t < 0 ? -1 : int64_t(std::llround(t * double(kFixedOne)));
-}
-
-bool isCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
-  if (domain == PatchDomain::kTriangle) return p[corner] == 1;
-  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
-}
-
 tess::Levels uniformLevels(float level) {
   tess::Levels levels;
   levels.outer = {level, level, level, level};
@@ -70,13 +46,13 @@ BoundaryPoints boundaryPoints(PatchDomain domain, const tess::Tessellation& tess
   std::vector<std::map<int64_t, tess::DomainPoint>> edge_points(corners);
   for (const tess::DomainPoint& p : tessellation.points) {
     for (uint32_t c = 0; c < corners; ++c) {
-      if (isCorner(domain, c, p)) {
+      if (isDomainCorner(domain, c, p)) {
         b.points[c] = p;
         seen[c] = true;
       }
     }
     for (uint32_t e = 0; e < corners; ++e) {
-      const int64_t t = edgeParameter(domain, e, p);
+      const int64_t t = domainEdgeParameter(domain, e, p);
       if (t > 0 && t < kFixedOne) edge_points[e].emplace(t, p);
     }
   }
@@ -208,6 +184,28 @@ double scaleUlp(const Mesh& mesh) {
 
 const char* toString(CrackBackend backend) {
   return backend == CrackBackend::kGpu ? "gpu" : "cpu_float";
+}
+
+int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p) {
+  double t = -1;
+  if (domain == PatchDomain::kQuad) {
+    const float u = p[0], v = p[1];
+    switch (edge) {
+      case 0: if (v == 0) t = u; break;
+      case 1: if (u == 1) t = v; break;
+      case 2: if (v == 1) t = 1.0 - u; break;
+      default: if (u == 0) t = 1.0 - v; break;
+    }
+  } else if (p[(edge + 2) % 3] == 0) {
+    t = p[(edge + 1) % 3];
+  }
+  return t < 0 ? -1 : int64_t(std::llround(t * double(kFixedOne)));
+}
+
+bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
+  if (domain == PatchDomain::kTriangle) return p[corner] == 1;
+  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
 }
 
 uint64_t ulpDistance(float a, float b) {

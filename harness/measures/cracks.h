@@ -96,6 +96,13 @@ struct CrackFigures {
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
                            CrackBackend backend, gpu::Context* context = nullptr);
 
+// Edge parameter of domain point `p` on local edge `edge` (from corner edge, t = 0, to
+// corner edge + 1, t = 1) in 16.16 fixed point (exact: tessellator coordinates are
+// multiples of 2^-16), or -1 when `p` is not on that edge.
+int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p);
+// True when `p` is corner `corner` of the domain.
+bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p);
+
 // Distance in units in the last place between two floats of the same sign class:
 // the count of representable floats between them (+0 and -0 are 0 apart).
 uint64_t ulpDistance(float a, float b);

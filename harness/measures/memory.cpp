@@ -1,5 +1,12 @@
 #include "harness/measures/memory.h"
 
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cstring>
+#include <unordered_map>
+
+#include "harness/measures/cracks.h"
 #include "harness/measures/measure.h"
 #include "harness/mesh/render_vertices.h"
 #include "harness/tess/tessellator.h"
@@ -7,7 +14,14 @@
 namespace tb {
 namespace {
 
-constexpr uint64_t kDisplacementTexelBytes = 2;  // 16-bit scalar
+constexpr uint64_t kDisplacementTexelBytes = 2;        // 16-bit scalar
+constexpr uint64_t kVectorDisplacementTexelBytes = 6;  // 3 × 16 bits
+constexpr int64_t kFixedOne = 1 << 16;                 // the tessellator's 16.16 fixed point
+constexpr size_t kFloatsPerVertex = kRenderVertexBytes / sizeof(float);
+// The compressed baseline builds, optimises and encodes the whole tessellated mesh;
+// above this many vertices (about 64 MiB of vertex data) it is left out to keep the
+// default suite short.
+constexpr uint64_t kCompressMaxVertices = 1u << 21;
 
 // Points strictly inside one patch at uniform integer level n (not on its edges).
 uint64_t interiorPointCount(PatchDomain domain, uint32_t n) {
@@ -40,7 +54,22 @@ class MemoryMeasure final : public Measure {
     result.notes = {
         "plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
         "32-bit indices, with the tessellator's point and triangle counts",
-        "displacement map: 16-bit, one texel per tessellated point of each patch"};
+        "displacement map: 16-bit, one texel per tessellated point of each patch; vector "
+        "displacement: 3 x 16 bits per texel",
+        "compressed: the plain mesh actually built (technique evaluated in float at the CPU "
+        "tessellator's points, welded like plain_vertices, uv interpolated from the patch "
+        "corners), vertex-cache and vertex-fetch optimised, then meshopt_encodeIndexBuffer + "
+        "meshopt_encodeVertexBuffer on the raw 32-byte float vertices (meshoptimizer " +
+            std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
+            std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "); left empty above " +
+            std::to_string(kCompressMaxVertices) + " vertices",
+        "seed 000's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
+        "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
+        "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
+        "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
+        "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
+        "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
+        "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"};
     for (uint32_t level : kMemoryLevels) {
       const MemoryFigures m = measureMemory(*input.patches, level);
       MetricRow row;
@@ -56,7 +85,24 @@ class MemoryMeasure final : public Measure {
           {"technique_with_displacement_bytes", double(m.technique_with_displacement_bytes),
            "bytes"},
           {"plain_over_technique", m.plain_over_technique, "ratio"},
+          {"vector_displacement_bytes", double(m.vector_displacement_bytes), "bytes"},
+          {"technique_with_vector_displacement_bytes",
+           double(m.technique_with_vector_displacement_bytes), "bytes"},
+          {"plain_over_technique_vector", m.plain_over_technique_vector, "ratio"},
       };
+      if (m.plain_vertices <= kCompressMaxVertices) {
+        TessellatedMesh mesh = buildTessellatedMesh(*input.patches, level);
+        const CompressedMesh compressed = compressMesh(&mesh);
+        row.metrics.push_back(
+            {"compressed_vertex_bytes", double(compressed.vertex_data.size()), "bytes"});
+        row.metrics.push_back(
+            {"compressed_index_bytes", double(compressed.index_data.size()), "bytes"});
+        row.metrics.push_back({"compressed_bytes", double(compressed.bytes()), "bytes"});
+        row.metrics.push_back({"compressed_over_technique",
+                               double(compressed.bytes()) /
+                                   double(m.technique_with_displacement_bytes),
+                               "ratio"});
+      }
       result.rows.push_back(std::move(row));
     }
     return result;
@@ -85,7 +131,137 @@ MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
   m.displacement_bytes = patch_count * displacementTexels(domain, level) * kDisplacementTexelBytes;
   m.technique_with_displacement_bytes = m.technique.total() + m.displacement_bytes;
   m.plain_over_technique = double(m.plain_bytes) / double(m.technique_with_displacement_bytes);
+  m.vector_displacement_bytes =
+      patch_count * displacementTexels(domain, level) * kVectorDisplacementTexelBytes;
+  m.technique_with_vector_displacement_bytes = m.technique.total() + m.vector_displacement_bytes;
+  m.plain_over_technique_vector =
+      double(m.plain_bytes) / double(m.technique_with_vector_displacement_bytes);
   return m;
+}
+
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
+  const Mesh& control = patches.controlMesh();
+  const RenderVertices render = buildRenderVertices(control);
+  const PatchDomain domain = patches.domain();
+  const uint32_t corners = domain == PatchDomain::kQuad ? 4 : 3;
+  const float n = float(level);
+  const tess::Tessellation t =
+      tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+                       tess::Spacing::kInteger, {{n, n, n, n}, {n, n}});
+
+  // Where each domain point sits: corner c, edge e at parameter t, or inside.
+  struct PointClass {
+    int corner = -1, edge = -1;
+    int64_t t = 0;
+  };
+  std::vector<PointClass> classes(t.points.size());
+  for (size_t i = 0; i < t.points.size(); ++i) {
+    for (uint32_t c = 0; c < corners; ++c) {
+      if (isDomainCorner(domain, c, t.points[i])) classes[i].corner = int(c);
+    }
+    for (uint32_t e = 0; e < corners && classes[i].corner < 0; ++e) {
+      const int64_t param = domainEdgeParameter(domain, e, t.points[i]);
+      if (param > 0 && param < kFixedOne) classes[i] = {-1, int(e), param};
+    }
+  }
+
+  TessellatedMesh mesh;
+  std::vector<uint32_t> corner_ids(render.vertex_count, UINT32_MAX);
+  std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
+  std::vector<uint32_t> local(t.points.size());
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const uint32_t first = control.face_offsets[p];
+    auto renderVertex = [&](uint32_t c) { return render.corner_vertex[first + c % corners]; };
+    for (size_t i = 0; i < t.points.size(); ++i) {
+      const PointClass& k = classes[i];
+      uint32_t* id = nullptr;
+      uint32_t fresh = UINT32_MAX;
+      if (k.corner >= 0) {
+        id = &corner_ids[renderVertex(uint32_t(k.corner))];
+      } else if (k.edge >= 0) {
+        const uint32_t a = renderVertex(uint32_t(k.edge)), b = renderVertex(uint32_t(k.edge) + 1);
+        // Unique below 2^64 for up to 16M render vertices.
+        const uint64_t key =
+            a < b ? (uint64_t(a) * render.vertex_count + b) * kFixedOne + uint64_t(k.t)
+                  : (uint64_t(b) * render.vertex_count + a) * kFixedOne + uint64_t(kFixedOne - k.t);
+        id = &edge_ids.try_emplace(key, UINT32_MAX).first->second;
+      } else {
+        id = &fresh;
+      }
+      if (*id == UINT32_MAX) {
+        *id = uint32_t(mesh.vertexCount());
+        const tess::DomainPoint& d = t.points[i];
+        const SurfacePointF s = patches.evaluateFloat(p, d);
+        // Corner weights of the uv interpolation, in the domain's corner order.
+        float w[4] = {d[0], d[1], d[2], 0};
+        if (domain == PatchDomain::kQuad) {
+          w[0] = (1 - d[0]) * (1 - d[1]), w[1] = d[0] * (1 - d[1]);
+          w[2] = d[0] * d[1], w[3] = (1 - d[0]) * d[1];
+        }
+        float uv[2] = {0, 0};
+        for (uint32_t c = 0; c < corners && control.hasUvs(); ++c) {
+          const int32_t uv_id = control.corner_uvs[first + c];
+          if (uv_id < 0) continue;
+          uv[0] += w[c] * float(control.uvs[uv_id].x);
+          uv[1] += w[c] * float(control.uvs[uv_id].y);
+        }
+        for (float x : {s.position.x, s.position.y, s.position.z, s.normal.x, s.normal.y,
+                        s.normal.z, uv[0], uv[1]}) {
+          mesh.vertices.push_back(x);
+        }
+      }
+      local[i] = *id;
+    }
+    for (const auto& tri : t.triangles) {
+      for (uint32_t v : tri) mesh.indices.push_back(local[v]);
+    }
+  }
+  return mesh;
+}
+
+CompressedMesh compressMesh(TessellatedMesh* mesh) {
+  const size_t vertex_count = mesh->vertexCount();
+  std::vector<uint32_t>& indices = mesh->indices;
+  meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertex_count);
+  std::vector<float> fetched(mesh->vertices.size());
+  const size_t used = meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
+                                                  mesh->vertices.data(), vertex_count,
+                                                  kRenderVertexBytes);
+  fetched.resize(used * kFloatsPerVertex);
+  mesh->vertices = std::move(fetched);
+
+  CompressedMesh out;
+  out.index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
+  out.index_data.resize(meshopt_encodeIndexBuffer(out.index_data.data(), out.index_data.size(),
+                                                  indices.data(), indices.size()));
+  out.vertex_data.resize(meshopt_encodeVertexBufferBound(used, kRenderVertexBytes));
+  out.vertex_data.resize(meshopt_encodeVertexBuffer(out.vertex_data.data(), out.vertex_data.size(),
+                                                    mesh->vertices.data(), used,
+                                                    kRenderVertexBytes));
+  return out;
+}
+
+bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {
+  std::vector<float> vertices(like.vertices.size());
+  std::vector<uint32_t> indices(like.indices.size());
+  if (meshopt_decodeVertexBuffer(vertices.data(), like.vertexCount(), kRenderVertexBytes,
+                                 compressed.vertex_data.data(), compressed.vertex_data.size()) != 0 ||
+      meshopt_decodeIndexBuffer(indices.data(), indices.size(), sizeof(uint32_t),
+                                compressed.index_data.data(), compressed.index_data.size()) != 0) {
+    return false;
+  }
+  // The index codec keeps triangle order and winding but may rotate a triangle's
+  // vertices; compare each triangle from its smallest index.
+  auto canonical = [](std::vector<uint32_t> list) {
+    for (size_t i = 0; i + 2 < list.size(); i += 3) {
+      while (list[i] > list[i + 1] || list[i] > list[i + 2]) {
+        std::rotate(list.begin() + i, list.begin() + i + 1, list.begin() + i + 3);
+      }
+    }
+    return list;
+  };
+  return canonical(indices) == canonical(like.indices) &&
+         std::memcmp(vertices.data(), like.vertices.data(), vertices.size() * sizeof(float)) == 0;
 }
 
 }  // namespace tb

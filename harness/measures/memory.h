@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "harness/mesh/render_vertices.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -30,8 +31,39 @@ struct MemoryFigures {
   // plain_bytes / technique_with_displacement_bytes: above 1 the technique is the
   // smaller one. Seed 000 reports about 8 (943 MB against 118 MB at level 64).
   double plain_over_technique = 0;
+  // The same with a vector-displacement map: 3 × 16 bits per texel.
+  uint64_t vector_displacement_bytes = 0;
+  uint64_t technique_with_vector_displacement_bytes = 0;
+  double plain_over_technique_vector = 0;
 };
 
 MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level);
+
+// The equivalent plain triangle mesh itself: the technique evaluated (evaluateFloat) at
+// the CPU tessellator's points of every patch at uniform integer level `level`, welded
+// as MemoryFigures::plain_vertices counts them (a point on an edge between two render
+// vertices is stored once; corners are the control mesh's render vertices). Vertices are
+// float3 position, float3 normal, float2 uv (interpolated from the patch corners; 0 when
+// the mesh has none), 32 B; triangles use the tessellator's winding.
+struct TessellatedMesh {
+  std::vector<float> vertices;    // kRenderVertexBytes / 4 floats per vertex
+  std::vector<uint32_t> indices;  // 3 per triangle
+  size_t vertexCount() const { return vertices.size() / 8; }
+};
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level);
+
+// meshoptimizer's codecs on a mesh (DESIGN.md measure 2, second baseline): vertex-cache
+// then vertex-fetch optimisation (the order a shipping pipeline uses; it reorders `mesh`
+// in place), then meshopt_encodeIndexBuffer and meshopt_encodeVertexBuffer.
+struct CompressedMesh {
+  std::vector<unsigned char> vertex_data;
+  std::vector<unsigned char> index_data;
+  uint64_t bytes() const { return vertex_data.size() + index_data.size(); }
+};
+CompressedMesh compressMesh(TessellatedMesh* mesh);
+
+// Decodes `compressed` into buffers the size of `like`; true when they equal it (each
+// triangle up to rotation, which the index codec may apply; winding is kept).
+bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like);
 
 }  // namespace tb

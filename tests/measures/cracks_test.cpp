@@ -267,5 +267,29 @@ TEST(Cracks, PhongOnTheCpuComparesEverySharedPointOfTheIcosahedron) {
   EXPECT_EQ(f.unpaired_points, 0u);
 }
 
+TEST(Cracks, PhongOnTheDeviceAgreesWithItsCpuModel) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  ASSERT_NE(phong, nullptr);
+  // catmark_cube, fan-triangulated, has a normal per face corner (the two sides of a cube
+  // edge project onto different planes); loop_icosahedron has shared normals.
+  for (const char* asset : {"opensubdiv/catmark_cube.obj", "opensubdiv/loop_icosahedron.obj"}) {
+    const Mesh mesh = loadObjFile(testing::assetPath(asset));
+    const auto patches = phong->buildPatches(mesh, phong->variants()[0]);
+    if (!patches->gpuProgram()) GTEST_SKIP() << "phong has no GPU program on this branch";
+    const CrackFigures cpu =
+        measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kCpuFloat);
+    const CrackFigures gpu = measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f,
+                                           CrackBackend::kGpu, &context);
+    SCOPED_TRACE(asset);
+    ASSERT_TRUE(gpu.measured) << gpu.skipped_reason;
+    EXPECT_GT(gpu.device_points, 0u);
+    EXPECT_EQ(gpu.device_points_differing, 0u);  // oracle: evaluateFloat, same gl_TessCoord
+    EXPECT_EQ(gpu.points_compared, cpu.points_compared);
+    EXPECT_EQ(gpu.points_not_equal, cpu.points_not_equal);
+    EXPECT_EQ(gpu.max_gap_world, cpu.max_gap_world);
+  }
+}
+
 }  // namespace
 }  // namespace tb

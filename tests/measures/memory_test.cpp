@@ -1,10 +1,14 @@
 // Oracles: Euler's formula (a closed, seamless triangle mesh has V = F/2 + 2
-// after any subdivision) and hand counts for a single triangle.
+// after any subdivision), hand counts for a single triangle, the closed-form counts
+// against the mesh actually built, meshoptimizer's decoders for the compressed
+// baseline, and a second run for determinism.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "harness/measures/memory.h"
+#include "harness/measures/suite.h"
+#include "harness/results/results_json.h"
 #include "harness/mesh/obj_loader.h"
 #include "harness/tess/tessellator.h"
 #include "techniques/registry.h"
@@ -54,6 +58,76 @@ TEST(Memory, SplitNormalsDuplicateEdgePoints) {
   // Plain bytes grow with the level; the technique's own data does not.
   EXPECT_GT(measureMemory(*patches, 64).plain_bytes, 15 * measureMemory(*patches, 16).plain_bytes);
   EXPECT_EQ(measureMemory(*patches, 64).technique.total(), m.technique.total());
+}
+
+TEST(Memory, BuiltMeshHasTheClosedFormCountsAndCompressesLosslessly) {
+  // catmark_cube: split normals duplicate the cube edges; loop_cube: no seams once
+  // its uvs are dropped; catmark_pyramid: a quad-and-triangle mesh, fan-triangulated.
+  Mesh seamless = loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
+  std::fill(seamless.corner_uvs.begin(), seamless.corner_uvs.end(), -1);
+  const std::vector<Mesh> meshes{loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj")),
+                                 seamless,
+                                 loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj"))};
+  for (const Mesh& mesh : meshes) {
+    const auto patches = phongPatches(mesh);
+    for (uint32_t level : {1u, 8u, 16u}) {
+      SCOPED_TRACE(mesh.source + " level " + std::to_string(level));
+      const MemoryFigures m = measureMemory(*patches, level);
+      TessellatedMesh built = buildTessellatedMesh(*patches, level);
+      EXPECT_EQ(built.vertexCount(), m.plain_vertices);
+      EXPECT_EQ(built.indices.size(), 3 * m.plain_triangles);
+      EXPECT_EQ(built.vertexCount() * kRenderVertexBytes + built.indices.size() * kIndexBytes,
+                m.plain_bytes);
+      EXPECT_LT(*std::max_element(built.indices.begin(), built.indices.end()),
+                built.vertexCount());
+      const CompressedMesh compressed = compressMesh(&built);
+      // Every vertex is referenced, so fetch optimisation keeps them all.
+      EXPECT_EQ(built.vertexCount(), m.plain_vertices);
+      EXPECT_TRUE(decodesTo(compressed, built));
+      EXPECT_LT(compressed.bytes(), m.plain_bytes);
+      EXPECT_GT(compressed.bytes(), 0u);
+    }
+  }
+}
+
+TEST(Memory, CorruptedCompressedDataDoesNotDecodeToTheMesh) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const auto patches = phongPatches(mesh);
+  TessellatedMesh built = buildTessellatedMesh(*patches, 4);
+  CompressedMesh compressed = compressMesh(&built);
+  ASSERT_TRUE(decodesTo(compressed, built));
+  compressed.vertex_data[compressed.vertex_data.size() / 2] ^= 0x5a;
+  EXPECT_FALSE(decodesTo(compressed, built));
+}
+
+TEST(Memory, VectorDisplacementIsThreeScalarMaps) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const auto patches = phongPatches(mesh);
+  for (uint32_t level : kMemoryLevels) {
+    const MemoryFigures m = measureMemory(*patches, level);
+    EXPECT_EQ(m.vector_displacement_bytes, 3 * m.displacement_bytes);
+    EXPECT_EQ(m.technique_with_vector_displacement_bytes,
+              m.technique.total() + m.vector_displacement_bytes);
+    EXPECT_LT(m.plain_over_technique_vector, m.plain_over_technique);
+  }
+}
+
+// Oracle: the run itself, repeated. The crack, instruction and memory figures hold no
+// timings, so two runs must serialise to the same bytes.
+TEST(MeasuresDeterminism, TwoRunsGiveIdenticalJson) {
+  SuiteSelection selection;
+  selection.techniques = {TechniqueRegistry::instance().find("phong")};
+  for (const char* id : {"cracks", "instructions", "memory"}) {
+    const Measure* measure = MeasureRegistry::instance().find(id);
+    ASSERT_NE(measure, nullptr) << id;
+    selection.measures.push_back(measure);
+  }
+  selection.assets = {resolveAsset("catmark_cube"), resolveAsset("tri_torus")};
+  Results first, second;
+  runSuite(selection, nullptr, &first);
+  runSuite(selection, nullptr, &second);
+  ASSERT_FALSE(first.records.empty());
+  EXPECT_EQ(serializeResults(first), serializeResults(second));
 }
 
 }  // namespace

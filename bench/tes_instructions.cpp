@@ -1,0 +1,63 @@
+// x86 instructions per TES invocation on lavapipe (DESIGN.md measure 1c): lavapipe has
+// no pipeline-executable statistics and Mesa's debug dumps are compiled out, but
+// callgrind sees the JIT code. This program runs a technique's GPU program at each level
+// given, with callgrind counting only the timed run (a discarded dump before it resets the counters, a
+// dump after it); bench/callgrind_tes.sh runs it under valgrind and takes the slope
+// between two levels, which removes the per-draw and per-submission overhead.
+//   tes_instructions TECHNIQUE ASSET [VARIANT] [LEVEL...]
+#include <valgrind/callgrind.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "harness/gpu/context.h"
+#include "harness/gpu/patch_program.h"
+#include "harness/measures/asset_catalog.h"
+#include "harness/mesh/obj_loader.h"
+#include "techniques/registry.h"
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s TECHNIQUE ASSET [VARIANT] [LEVEL...]\n", argv[0]);
+    return 2;
+  }
+  try {
+    const tb::Technique* technique = tb::TechniqueRegistry::instance().find(argv[1]);
+    if (technique == nullptr) throw std::runtime_error(std::string("unknown technique ") + argv[1]);
+    const tb::Mesh mesh = tb::loadObjFile(tb::resolveAsset(argv[2]).path);
+    tb::VariantInfo variant = technique->variants()[0];
+    for (const tb::VariantInfo& v : technique->variants()) {
+      if (argc > 3 && v.name == argv[3]) variant = v;
+    }
+    std::vector<float> levels;
+    for (int i = 4; i < argc; ++i) levels.push_back(std::stof(argv[i]));
+    if (levels.empty()) levels = {8, 16};
+    const auto patches = technique->buildPatches(mesh, variant);
+    const auto program = patches->gpuProgram();
+    if (!program) throw std::runtime_error(std::string(argv[1]) + " has no GPU program");
+    auto context = tb::gpu::Context::create();
+    if (!context) throw std::runtime_error("no usable Vulkan device: " + context.error());
+
+    tb::gpu::PatchProgramOptions options;
+    options.capture = false;
+    options.patch_count = 16;  // enough invocations for a slope; valgrind is ~50x slower
+    options.patches_per_draw = 4;
+    for (float level : levels) {
+      tb::tess::Levels uniform;
+      uniform.outer = {level, level, level, level};
+      uniform.inner = {level, level};
+      tb::gpu::runPatchProgram(*context.value(), *program, uniform, options);  // JIT warm-up
+      CALLGRIND_DUMP_STATS_AT("discard");  // a dump also resets the counters
+      const auto run = tb::gpu::runPatchProgram(*context.value(), *program, uniform, options);
+      const std::string label = "level " + std::to_string(level) + " tes_invocations " +
+                                std::to_string(run.stats.tes_invocations);
+      CALLGRIND_DUMP_STATS_AT(label.c_str());
+      std::printf("%s %s %s %s\n", argv[1], variant.name.c_str(), argv[2], label.c_str());
+    }
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "tes_instructions: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}
