@@ -26,19 +26,17 @@ inline constexpr int kPhongEdgeEnds[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 template <class T>
 struct PhongEdgeTriangle {
-  std::array<Vec3T<T>, 3> position;                      // canonical order
-  std::array<Vec3T<T>, 3> normal;                        // unit shading normals
-  std::array<std::array<Vec3T<T>, 2>, 3> edge_normal;    // unit normal of edge e at end k
+  std::array<Vec3T<T>, 3> position;                    // canonical order
+  std::array<Vec3T<T>, 3> normal;                      // unit shading normals
+  std::array<std::array<Vec3T<T>, 2>, 3> edge_normal;  // unit normal of edge e at end k
 };
 
 template <class T>
 PhongPoint<T> evaluatePhongEdge(const PhongEdgeTriangle<T>& tri, const std::array<T, 3>& w,
                                 T alpha) {
   PhongPoint<T> result;
-  const Vec3T<T> flat =
-      tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
-  result.normal =
-      normalize(tri.normal[0] * w[0] + tri.normal[1] * w[1] + tri.normal[2] * w[2]);
+  const Vec3T<T> flat = tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
+  result.normal = normalize(tri.normal[0] * w[0] + tri.normal[1] * w[1] + tri.normal[2] * w[2]);
   const T denominator = (w[0] * w[1] + w[0] * w[2]) + w[1] * w[2];
   result.position = flat;
   if (!(denominator > T(0))) return result;  // a corner: p* = p_k
@@ -51,8 +49,8 @@ PhongPoint<T> evaluatePhongEdge(const PhongEdgeTriangle<T>& tri, const std::arra
     const Vec3T<T> q = tri.position[i] * ti + tri.position[j] * tj;
     const Vec3T<T>& ni = tri.edge_normal[e][0];
     const Vec3T<T>& nj = tri.edge_normal[e][1];
-    const Vec3T<T> edge_offset = ni * (ti * dot(q - tri.position[i], ni)) +
-                                 nj * (tj * dot(q - tri.position[j], nj));
+    const Vec3T<T> edge_offset =
+        ni * (ti * dot(q - tri.position[i], ni)) + nj * (tj * dot(q - tri.position[j], nj));
     offset = offset + edge_offset * ((w[i] * w[j]) / denominator);
   }
   result.position = flat - offset * alpha;

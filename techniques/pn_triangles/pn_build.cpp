@@ -131,8 +131,8 @@ PnBuild buildPnRecords(const Mesh& mesh, const PnOptions& options) {
         if (uses.size() == 2) {
           const EdgeUse& other = uses[0].face == f ? uses[1] : uses[0];
           const uint32_t welded = end == 0 ? wa : wb;
-          const uint32_t corner = weldedAt(other.face, other.corner_a) == welded ? other.corner_a
-                                                                                  : other.corner_b;
+          const uint32_t corner =
+              weldedAt(other.face, other.corner_a) == welded ? other.corner_a : other.corner_b;
           r.other_normal[e][end] = normalAt(other.face, corner);
         }
       }
@@ -159,8 +159,8 @@ PnInput<float> recordInputFloat(const Mesh& mesh, const PnBuild& build, const Pn
                             [](const Vec3d& v) { return vecCast<float>(v); });
 }
 
-PnInput<double> recordInputDouble(const Mesh& mesh, const PnBuild& build,
-                                  const PnOptions& options, size_t patch) {
+PnInput<double> recordInputDouble(const Mesh& mesh, const PnBuild& build, const PnOptions& options,
+                                  size_t patch) {
   return recordInput<double>(mesh, build, options, patch, [](const Vec3d& v) { return v; });
 }
 

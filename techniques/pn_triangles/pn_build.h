@@ -38,7 +38,7 @@ struct PnRecord {
   // that uses geometry normals; bit 3 + e when edge e is an unshared boundary edge.
   std::array<uint32_t, 3> flags;
   std::array<std::array<uint32_t, 2>, 3> other_normal;  // AEN: neighbour's normal per edge end
-  std::array<double, 3> edge_scale;                      // 1, or 0 on flagged boundaries, or rounding
+  std::array<double, 3> edge_scale;  // 1, or 0 on flagged boundaries, or rounding
 };
 
 enum PnRecordWord : uint32_t {
@@ -79,13 +79,13 @@ PnInput<T> recordInput(const Mesh& mesh, const PnBuild& build, const PnOptions& 
     const bool flagged = ((r.flags[a] & r.flags[b]) & (1u << e)) != 0;
     for (int end = 0; end < 2; ++end) {
       const int label = kEdgeEnds[e][end];
-      in.edge_own[e][end] =
-          flagged ? normalizeInOrder(cast(build.normals[r.geometry_normal[label]]))
-                  : in.normal[label];
+      in.edge_own[e][end] = flagged
+                                ? normalizeInOrder(cast(build.normals[r.geometry_normal[label]]))
+                                : in.normal[label];
       // The shader reads the neighbour's normal only for PN-AEN.
-      in.edge_other[e][end] =
-          options.aen ? normalizeInOrder(cast(build.normals[r.other_normal[e][end]]))
-                      : in.edge_own[e][end];
+      in.edge_other[e][end] = options.aen
+                                  ? normalizeInOrder(cast(build.normals[r.other_normal[e][end]]))
+                                  : in.edge_own[e][end];
     }
     in.edge_scale[e] = T(r.edge_scale[e]);
   }
@@ -94,12 +94,11 @@ PnInput<T> recordInput(const Mesh& mesh, const PnBuild& build, const PnOptions& 
   return in;
 }
 
-
 // The evaluator input of patch p, with the float or double data of `build`.
 PnInput<float> recordInputFloat(const Mesh& mesh, const PnBuild& build, const PnOptions& options,
                                 size_t patch);
-PnInput<double> recordInputDouble(const Mesh& mesh, const PnBuild& build,
-                                  const PnOptions& options, size_t patch);
+PnInput<double> recordInputDouble(const Mesh& mesh, const PnBuild& build, const PnOptions& options,
+                                  size_t patch);
 
 // GPU storage buffers 1..3: positions (vec4), normals (vec4), records (24 words each).
 std::vector<std::vector<uint32_t>> pnStorageBuffers(const Mesh& mesh, const PnBuild& build);

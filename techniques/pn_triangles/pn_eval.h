@@ -26,17 +26,17 @@ struct PnInput {
   std::array<std::array<Vec3T<T>, 2>, 3> edge_own;
   std::array<std::array<Vec3T<T>, 2>, 3> edge_other;
   std::array<T, 3> edge_scale{T(1), T(1), T(1)};  // multiplies w_ij (0: straight edge)
-  bool aen = false;         // average own and other (McDonald & Kilgard 2010)
-  bool use_scale = false;   // apply edge_scale (boundary flags, rounding)
+  bool aen = false;                               // average own and other (McDonald & Kilgard 2010)
+  bool use_scale = false;                         // apply edge_scale (boundary flags, rounding)
 };
 
 template <class T>
 struct PnControl {
-  std::array<Vec3T<T>, 3> corner;                // b300, b030, b003 (canonical labels)
-  std::array<std::array<Vec3T<T>, 2>, 3> edge;   // edge e: point near its first, second end
-  Vec3T<T> center;                               // b111
-  std::array<Vec3T<T>, 3> corner_normal;         // n200, n020, n002
-  std::array<Vec3T<T>, 3> edge_normal;           // n110 of edge e
+  std::array<Vec3T<T>, 3> corner;               // b300, b030, b003 (canonical labels)
+  std::array<std::array<Vec3T<T>, 2>, 3> edge;  // edge e: point near its first, second end
+  Vec3T<T> center;                              // b111
+  std::array<Vec3T<T>, 3> corner_normal;        // n200, n020, n002
+  std::array<Vec3T<T>, 3> edge_normal;          // n110 of edge e
 };
 
 template <class T>
@@ -102,9 +102,9 @@ PnControl<T> computeControl(const PnInput<T>& in) {
     c.edge_normal[e] = normalizeInOrder(sum - d * v);
   }
   // Paper §3.1: b111 = E + (E - V) / 2, E the mean of the six edge points, V of the corners.
-  const Vec3T<T> e_sum = ((((c.edge[0][0] + c.edge[0][1]) + c.edge[1][0]) + c.edge[1][1]) +
-                          c.edge[2][0]) +
-                         c.edge[2][1];
+  const Vec3T<T> e_sum =
+      ((((c.edge[0][0] + c.edge[0][1]) + c.edge[1][0]) + c.edge[1][1]) + c.edge[2][0]) +
+      c.edge[2][1];
   const Vec3T<T> mean_edge = e_sum * T(1.0 / 6.0);
   const Vec3T<T> mean_corner = ((in.position[0] + in.position[1]) + in.position[2]) * T(1.0 / 3.0);
   c.center = mean_edge + (mean_edge - mean_corner) * T(0.5);

@@ -81,8 +81,9 @@ class PnPatches final : public SurfacePatches {
     profile.per_vertex = operationCounts();
     // The evaluation's arguments above are not part of the TES work.
     profile.per_vertex.add -= 2;
-    profile.note = "float, shader order: TCS normalises the normals it reads and builds 10 + 6 "
-                   "coefficients; TES evaluates the cubic and quadratic patches and normalises";
+    profile.note =
+        "float, shader order: TCS normalises the normals it reads and builds 10 + 6 "
+        "coefficients; TES evaluates the cubic and quadratic patches and normalises";
     return profile;
   }
 
@@ -129,8 +130,7 @@ std::vector<VariantInfo> PnTrianglesTechnique::variants() const {
       {"boundary_flags",
        "geometry_normals + seed 003's boundary flags: unshared edges stay straight",
        {{"geometry_normals", 1}, {"boundary_flags", 1}}},
-      {"aen", "PN-AEN: edge points averaged with the adjacent face's normals",
-       {{"aen", 1}}},
+      {"aen", "PN-AEN: edge points averaged with the adjacent face's normals", {{"aen", 1}}},
       {"rounding",
        "geometry_normals + seed 003's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C / L), "
        "C = 4 mean edge lengths",

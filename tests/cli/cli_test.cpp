@@ -87,7 +87,7 @@ TEST(Cli, ErrorMeasureReportsEveryTriangleAsset) {
     EXPECT_EQ(measure["status"], "ok") << measure["reason"];
     with_error += measure["rows"].size() == 1;
   }
-  EXPECT_EQ(with_error, 8u);  // 4 variants x 2 assets
+  EXPECT_EQ(with_error, 10u);  // 5 variants (4 α values and `edge`) x 2 assets
   EXPECT_NE(readFile(dir / "e" / "report.md").find("## Measure: error"), std::string::npos);
 }
 

@@ -31,15 +31,16 @@ CrackFigures measure(const std::string& technique_id, const std::string& variant
                      const std::string& asset, tess::Spacing spacing, float level,
                      CrackBackend backend, gpu::Context* context) {
   const Technique& technique = *TechniqueRegistry::instance().find(technique_id);
-  const auto patches = technique.buildPatches(loadObjFile(testing::assetPath(asset)),
-                                              variantOf(technique, variant));
+  const auto patches =
+      technique.buildPatches(loadObjFile(testing::assetPath(asset)), variantOf(technique, variant));
   const CrackFigures f = measureCracks(*patches, spacing, level, backend, context);
-  std::printf("[cracks] %s/%s %s level %.1f %s: shared edges %llu, points %llu, not bitwise "
-              "%llu, unpaired %llu, max gap %.3g world (%.3g scale ulp)\n",
-              technique_id.c_str(), variant.c_str(), asset.c_str(), level, toString(backend),
-              (unsigned long long)f.shared_edges, (unsigned long long)f.points_compared,
-              (unsigned long long)f.points_not_equal, (unsigned long long)f.unpaired_points,
-              f.max_gap_world, f.max_gap_scale_ulp);
+  std::printf(
+      "[cracks] %s/%s %s level %.1f %s: shared edges %llu, points %llu, not bitwise "
+      "%llu, unpaired %llu, max gap %.3g world (%.3g scale ulp)\n",
+      technique_id.c_str(), variant.c_str(), asset.c_str(), level, toString(backend),
+      (unsigned long long)f.shared_edges, (unsigned long long)f.points_compared,
+      (unsigned long long)f.points_not_equal, (unsigned long long)f.unpaired_points,
+      f.max_gap_world, f.max_gap_scale_ulp);
   return f;
 }
 
@@ -55,8 +56,8 @@ TEST(PnCracks, PlainPnOpensGapsAtTheCylindersHardCaps) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const Level& l : kLevels) {
     for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-      const CrackFigures f = measure("pn_triangles", "pn", "tessbench/cylinder_seam.obj",
-                                     l.spacing, l.level, backend, &context);
+      const CrackFigures f = measure("pn_triangles", "pn", "tessbench/cylinder_seam.obj", l.spacing,
+                                     l.level, backend, &context);
       ASSERT_TRUE(f.measured) << f.skipped_reason;
       EXPECT_EQ(f.unpaired_points, 0u);
       EXPECT_GT(f.max_gap_world, 1e-3);
@@ -79,22 +80,22 @@ TEST(PnCracks, FlatCubeIsWatertightAndFlatUnderPlainPn) {
 TEST(PnCracks, GeometryNormalsAndAenCloseThemBitwise) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const char* asset : {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj"}) {
-  for (const char* variant : {"geometry_normals", "aen", "boundary_flags", "rounding"}) {
-    for (const Level& l : kLevels) {
-      for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-        const CrackFigures f = measure("pn_triangles", variant, asset, l.spacing, l.level,
-                                       backend, &context);
-        ASSERT_TRUE(f.measured) << f.skipped_reason;
-        EXPECT_GT(f.points_compared, 0u);
-        EXPECT_EQ(f.unpaired_points, 0u);
-        EXPECT_EQ(f.points_not_equal, 0u) << variant << " " << toString(backend);
-        EXPECT_EQ(f.max_gap_world, 0.0) << variant << " " << toString(backend);
-        if (backend == CrackBackend::kGpu) {
-          EXPECT_EQ(f.device_points_differing, 0u);
+    for (const char* variant : {"geometry_normals", "aen", "boundary_flags", "rounding"}) {
+      for (const Level& l : kLevels) {
+        for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+          const CrackFigures f =
+              measure("pn_triangles", variant, asset, l.spacing, l.level, backend, &context);
+          ASSERT_TRUE(f.measured) << f.skipped_reason;
+          EXPECT_GT(f.points_compared, 0u);
+          EXPECT_EQ(f.unpaired_points, 0u);
+          EXPECT_EQ(f.points_not_equal, 0u) << variant << " " << toString(backend);
+          EXPECT_EQ(f.max_gap_world, 0.0) << variant << " " << toString(backend);
+          if (backend == CrackBackend::kGpu) {
+            EXPECT_EQ(f.device_points_differing, 0u);
+          }
         }
       }
     }
-  }
   }
 }
 
@@ -104,9 +105,9 @@ TEST(PnCracks, SmoothSharedNormalsAreWatertightInEveryVariant) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const Technique& pn = *TechniqueRegistry::instance().find("pn_triangles");
   for (const VariantInfo& v : pn.variants()) {
-    const CrackFigures f = measure("pn_triangles", v.name, "tessbench/tri_torus.obj",
-                                   tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kGpu,
-                                   &context);
+    const CrackFigures f =
+        measure("pn_triangles", v.name, "tessbench/tri_torus.obj", tess::Spacing::kFractionalOdd,
+                7.3f, CrackBackend::kGpu, &context);
     ASSERT_TRUE(f.measured) << f.skipped_reason;
     EXPECT_EQ(f.points_not_equal, 0u) << v.name;
   }
@@ -122,10 +123,10 @@ TEST(PhongCracks, EdgeVariantClosesTheCapGapsOfPlainPhong) {
                                          l.spacing, l.level, backend, &context);
       ASSERT_TRUE(plain.measured) << plain.skipped_reason;
       EXPECT_GT(plain.max_gap_world, 1e-3);
-      for (const char* asset : {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj",
-                                "tessbench/tri_torus.obj"}) {
-        const CrackFigures edge = measure("phong", "edge", asset, l.spacing, l.level, backend,
-                                          &context);
+      for (const char* asset :
+           {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj", "tessbench/tri_torus.obj"}) {
+        const CrackFigures edge =
+            measure("phong", "edge", asset, l.spacing, l.level, backend, &context);
         ASSERT_TRUE(edge.measured) << edge.skipped_reason;
         EXPECT_GT(edge.points_compared, 0u);
         EXPECT_EQ(edge.unpaired_points, 0u);

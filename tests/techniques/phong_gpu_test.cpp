@@ -104,15 +104,17 @@ TEST_P(PhongGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
-      const testing::GpuAgreement a = testing::compareGpuWithFloat(context, *patches, spacing, level);
+      const testing::GpuAgreement a =
+          testing::compareGpuWithFloat(context, *patches, spacing, level);
       EXPECT_EQ(a.vertices, a.expected_vertices) << asset << " level " << level;
       EXPECT_LE(a.max_position_ulp, 4u) << asset << " level " << level;
       EXPECT_LE(a.max_normal_ulp, 4u) << asset << " level " << level;
-      std::printf("[phong gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal "
-                  "%llu, %zu positions not bitwise\n",
-                  GetParam().c_str(), asset.c_str(), level, a.vertices,
-                  (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
-                  a.positions_not_bitwise);
+      std::printf(
+          "[phong gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal "
+          "%llu, %zu positions not bitwise\n",
+          GetParam().c_str(), asset.c_str(), level, a.vertices,
+          (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
+          a.positions_not_bitwise);
     }
   }
 }
@@ -135,6 +137,27 @@ TEST(PhongOperations, PlainPhongCountsMatchAHandCount) {
   // Set-up: 3 normalisations (3 + 3 mul, 2 add, sqrt, div, compare each).
   EXPECT_EQ(profile->per_patch_setup.mul, 18u);
   EXPECT_EQ(profile->per_patch_setup.sqrt, 3u);
+}
+
+TEST(PhongOperations, EdgeVariantCostsMorePerVertexThanPlainPhong) {
+  // Oracle: seed 003 names the cost of the per-edge extension, more shader instructions;
+  // the counts are printed for the report.
+  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
+  const auto plain = phong().buildPatches(mesh, variant("alpha0.75"))->operationProfile(0);
+  const auto edge = phong().buildPatches(mesh, variant("edge"))->operationProfile(0);
+  ASSERT_TRUE(plain.has_value() && edge.has_value());
+  for (const auto& [name, p] : {std::pair{"alpha0.75", *plain}, std::pair{"edge", *edge}}) {
+    std::printf(
+        "[phong ops] %s: set-up total %llu (sqrt %llu); per vertex add %llu mul %llu div "
+        "%llu sqrt %llu cmp %llu (total %llu)\n",
+        name, (unsigned long long)p.per_patch_setup.total(),
+        (unsigned long long)p.per_patch_setup.sqrt, (unsigned long long)p.per_vertex.add,
+        (unsigned long long)p.per_vertex.mul, (unsigned long long)p.per_vertex.div,
+        (unsigned long long)p.per_vertex.sqrt, (unsigned long long)p.per_vertex.compare,
+        (unsigned long long)p.per_vertex.total());
+  }
+  EXPECT_GT(edge->per_vertex.total(), plain->per_vertex.total());
+  EXPECT_EQ(edge->per_patch_setup.sqrt, 9u);  // 3 corner + 6 edge-end normals
 }
 
 }  // namespace

@@ -69,12 +69,18 @@ inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatc
 
 // Every bundled triangle-only asset the issue names.
 inline std::vector<std::string> triangleAssets() {
-  return {"tessbench/flat_cube.obj",        "tessbench/cylinder_seam.obj",
-          "tessbench/tjunction.obj",        "tessbench/tri_torus.obj",
-          "tessbench/tri_pawn.obj",         "opensubdiv/loop_cube.obj",
-          "opensubdiv/loop_cube_creases1.obj", "opensubdiv/loop_icos_semisharp.obj",
-          "opensubdiv/loop_icosahedron.obj", "opensubdiv/loop_toroidal_tet.obj",
-          "opensubdiv/loop_triangle_edgecorner.obj", "opensubdiv/loop_xord_interior.obj",
+  return {"tessbench/flat_cube.obj",
+          "tessbench/cylinder_seam.obj",
+          "tessbench/tjunction.obj",
+          "tessbench/tri_torus.obj",
+          "tessbench/tri_pawn.obj",
+          "opensubdiv/loop_cube.obj",
+          "opensubdiv/loop_cube_creases1.obj",
+          "opensubdiv/loop_icos_semisharp.obj",
+          "opensubdiv/loop_icosahedron.obj",
+          "opensubdiv/loop_toroidal_tet.obj",
+          "opensubdiv/loop_triangle_edgecorner.obj",
+          "opensubdiv/loop_xord_interior.obj",
           "opensubdiv/catmark_smoothtris0.obj"};
 }
 

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 
 #include "harness/mesh/obj_loader.h"
@@ -87,8 +88,8 @@ TEST(PnTriangles, CurvedEdgeBulgesByTheHandComputedControlPoints) {
   // Oracle: the edge midpoint of a cubic Bézier is (b300 + 3 b210 + 3 b120 + b030) / 8, with
   // b210 = (2 P1 + P2 - w12 N1) / 3 computed by hand: P1 = 0, P2 = (1,0,0), N1 = (0,0,1),
   // N2 = (3, 0, 4) / 5 => w12 = 0, w21 = -3/5 => b120 = (2 P2 + P1 - w21 N2) / 3.
-  const Mesh mesh = loadObjText(
-      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
+  const Mesh mesh =
+      loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
   const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
   const Vec3d b210{1.0 / 3, 0, 0};
   const Vec3d n2 = normalize(Vec3d{3, 0, 4});
@@ -138,7 +139,8 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
   EXPECT_EQ(build.boundary_edges, 0u);
   EXPECT_EQ(build.geometry_normal_count, 8u);
   for (size_t i = mesh.normals.size(); i < build.normals.size(); ++i) {
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
   }
   size_t flagged_edges = 0;
   for (const PnRecord& r : build.records) {
@@ -160,14 +162,56 @@ TEST(PnTriangles, BoundaryFlagsStraightenUnsharedEdges) {
   EXPECT_GT(length(plain->evaluate(0, {0.25, 0.75, 0}).position - linear), 1e-3);
 }
 
+TEST(PnTriangles, BoundaryFlagsPutTheTJunctionVertexOnTheLongEdge) {
+  // Seed 003's T-junction: vertex 5 = (1, 0.5, 0) sits on the middle of the left half's edge
+  // 2-3 but is a corner of the right half, which therefore passes through it exactly. With
+  // boundary flags the unshared edge 2-3 is straight, so its midpoint is vertex 5 (no
+  // crack); plain PN bulges it away from vertex 5 (a crack). Normals form a dome.
+  const char* kTJunction =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0.5 0\nv 2 0 0\nv 2 1 0\n"
+      "vn -1 -0.5 2\nvn 0 -0.5 2\nvn 0 0.5 2\nvn -1 0.5 2\nvn 0 0 1\nvn 1 -0.5 2\nvn 1 0.5 2\n"
+      "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\nf 2//2 6//6 5//5\nf 5//5 6//6 7//7\nf 5//5 7//7 3//3\n";
+  const Mesh mesh = loadObjText(kTJunction, "tjunction.obj");
+  const Vec3d t_vertex = mesh.positions[4];
+  const auto flagged = pn().buildPatches(mesh, variant("boundary_flags"));
+  const auto plain = pn().buildPatches(mesh, variant("pn"));
+  // Face 0 = (v1, v2, v3): edge 2-3 is corners 1-2.
+  EXPECT_LT(length(flagged->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 1e-15);
+  EXPECT_GT(length(plain->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 0.01);
+  // The right half's faces pass through the T vertex in both variants.
+  EXPECT_EQ(flagged->evaluate(2, {0, 0, 1}).position, t_vertex);
+}
+
+TEST(PnTriangles, RoundingOnlyFlattensEdges) {
+  // Seed 003's rounding scales w_ij by a factor in [0, 1]: every edge point moves toward
+  // the straight edge, none away, and the nearly flat edges of this triangle move.
+  const Mesh mesh = loadObjText(kCurved, "r.obj");
+  const auto rounded = pn().buildPatches(mesh, variant("rounding"));
+  const auto full = pn().buildPatches(mesh, variant("geometry_normals"));
+  double moved = 0;
+  for (int e = 0; e < 3; ++e) {
+    for (int i = 1; i < 8; ++i) {
+      DomainCoord c{0, 0, 0};
+      c[e] = i / 8.0;
+      c[(e + 1) % 3] = 1 - i / 8.0;
+      const Vec3d linear = mesh.positions[e] * c[e] + mesh.positions[(e + 1) % 3] * c[(e + 1) % 3];
+      const double d_rounded = length(rounded->evaluate(0, c).position - linear);
+      const double d_full = length(full->evaluate(0, c).position - linear);
+      EXPECT_LE(d_rounded, d_full + 1e-15);
+      moved = std::max(moved, d_full - d_rounded);
+    }
+  }
+  EXPECT_GT(moved, 1e-3);
+}
+
 TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
   EXPECT_EQ(patches->patchCount(), 12u);
   ASSERT_EQ(patches->warnings().size(), 1u);  // catmark_cube.obj has its own normals
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
-  const auto torus = pn().buildPatches(
-      loadObjFile(testing::assetPath("tessbench/tri_torus.obj")), pn().variants()[0]);
+  const auto torus = pn().buildPatches(loadObjFile(testing::assetPath("tessbench/tri_torus.obj")),
+                                       pn().variants()[0]);
   ASSERT_EQ(torus->warnings().size(), 1u);
   EXPECT_NE(torus->warnings()[0].find("normals were computed"), std::string::npos);
 }
@@ -185,14 +229,46 @@ TEST(PnTriangles, OperationCountsMatchAHandCount) {
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   // Position: 6 (weights) + corners (3 + 9 mul, 6 add) + edges 3 × (6 + 1 + 3 mul, 6 add)
-  // + centre (2 + 3 mul, 3 add) => mul 6 + 12 + 30 + 5 = 53, add 6 + 18 + 3 = 27. Normal: 6 terms × 3 mul = 18 mul, 15 add; normalise: dot
-  // 3 mul 2 add, sqrt, 1 div, 3 mul, 1 compare.
+  // + centre (2 + 3 mul, 3 add) => mul 6 + 12 + 30 + 5 = 53, add 6 + 18 + 3 = 27. Normal: 6 terms ×
+  // 3 mul = 18 mul, 15 add; normalise: dot 3 mul 2 add, sqrt, 1 div, 3 mul, 1 compare.
   EXPECT_EQ(profile->per_vertex.mul, 53u + 18u + 6u);
   EXPECT_EQ(profile->per_vertex.add, 27u + 15u + 2u);
   EXPECT_EQ(profile->per_vertex.div, 1u);
   EXPECT_EQ(profile->per_vertex.sqrt, 1u);
   EXPECT_EQ(profile->per_vertex.compare, 1u);
   EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
+}
+
+TEST(PnTriangles, VariantsCostOnlyInTheSetUp) {
+  // Oracle: the variants change how the control points are built (TCS), never the patch
+  // evaluation (TES); PN-AEN builds every edge point twice, so its set-up costs more.
+  // flat_cube face 0 has two hard (flagged) edges out of three.
+  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
+  std::map<std::string, OperationProfile> profiles;
+  for (const VariantInfo& v : pn().variants()) {
+    const auto profile = pn().buildPatches(mesh, v)->operationProfile(0);
+    ASSERT_TRUE(profile.has_value());
+    profiles[v.name] = *profile;
+    std::printf(
+        "[pn ops] %s: set-up add %llu mul %llu div %llu sqrt %llu cmp %llu (total %llu); "
+        "per vertex add %llu mul %llu div %llu sqrt %llu (total %llu)\n",
+        v.name.c_str(), (unsigned long long)profile->per_patch_setup.add,
+        (unsigned long long)profile->per_patch_setup.mul,
+        (unsigned long long)profile->per_patch_setup.div,
+        (unsigned long long)profile->per_patch_setup.sqrt,
+        (unsigned long long)profile->per_patch_setup.compare,
+        (unsigned long long)profile->per_patch_setup.total(),
+        (unsigned long long)profile->per_vertex.add, (unsigned long long)profile->per_vertex.mul,
+        (unsigned long long)profile->per_vertex.div, (unsigned long long)profile->per_vertex.sqrt,
+        (unsigned long long)profile->per_vertex.total());
+  }
+  for (const auto& [name, profile] : profiles) {
+    EXPECT_EQ(profile.per_vertex.total(), profiles["pn"].per_vertex.total()) << name;
+  }
+  EXPECT_GT(profiles["aen"].per_patch_setup.total(), profiles["pn"].per_patch_setup.total());
+  // Two flagged edges: 4 geometry normals normalised (3 + 3 mul, 2 add, sqrt, div, compare).
+  EXPECT_EQ(profiles["geometry_normals"].per_patch_setup.sqrt,
+            profiles["pn"].per_patch_setup.sqrt + 4);
 }
 
 struct GpuCase {
@@ -212,15 +288,17 @@ TEST_P(PnGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
-      const testing::GpuAgreement a = testing::compareGpuWithFloat(context, *patches, spacing, level);
+      const testing::GpuAgreement a =
+          testing::compareGpuWithFloat(context, *patches, spacing, level);
       EXPECT_EQ(a.vertices, a.expected_vertices) << asset << " level " << level;
       EXPECT_LE(a.max_position_ulp, 4u) << asset << " level " << level;
       EXPECT_LE(a.max_normal_ulp, 4u) << asset << " level " << level;
-      std::printf("[pn gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal %llu, "
-                  "%zu positions not bitwise\n",
-                  GetParam().c_str(), asset.c_str(), level, a.vertices,
-                  (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
-                  a.positions_not_bitwise);
+      std::printf(
+          "[pn gpu] %s %s level %.1f: %zu vertices, max ulp position %llu normal %llu, "
+          "%zu positions not bitwise\n",
+          GetParam().c_str(), asset.c_str(), level, a.vertices,
+          (unsigned long long)a.max_position_ulp, (unsigned long long)a.max_normal_ulp,
+          a.positions_not_bitwise);
     }
   }
 }
