@@ -1,0 +1,315 @@
+// gregory_acc on the CPU. Oracles: the OpenSubdiv Bfr limit surface (regular faces are
+// exactly the bicubic B-spline patch), the patch's own neighbour across each edge (C0),
+// and the rules' one-line messages.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "harness/mesh/obj_loader.h"
+#include "harness/tess/tessellator.h"
+#include "reference/limit_surface.h"
+#include "techniques/gregory_acc/gregory_acc.h"
+#include "techniques/gregory_acc/gregory_stencils.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb::gregory_acc {
+namespace {
+
+// The bundled assets gregory_acc supports (closed, untagged, all-quad).
+const char* const kSupported[] = {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_torus.obj",
+                                  "opensubdiv/catmark_toroidal_tet.obj"};
+
+Mesh load(const std::string& name) { return loadObjFile(testing::assetPath(name)); }
+
+double bboxDiagonal(const Mesh& mesh) {
+  Vec3d lo = mesh.positions[0], hi = lo;
+  for (const Vec3d& p : mesh.positions) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  return length(hi - lo);
+}
+
+std::vector<uint32_t> valences(const Mesh& mesh) {
+  std::vector<uint32_t> count(mesh.positions.size(), 0);
+  for (uint32_t p : mesh.corner_positions) ++count[p];
+  return count;
+}
+
+std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant = "") {
+  GregoryAccTechnique technique;
+  for (const VariantInfo& info : technique.variants()) {
+    if (variant.empty() || info.name == variant) return technique.buildPatches(mesh, info);
+  }
+  return nullptr;
+}
+
+tess::Tessellation quadPoints(float level, tess::Spacing spacing = tess::Spacing::kInteger) {
+  tess::Levels levels;
+  levels.outer = {level, level, level, level};
+  levels.inner = {level, level};
+  return tess::tessellate(tess::Domain::kQuad, spacing, levels);
+}
+
+TEST(GregoryAcc, IsRegistered) {
+  EXPECT_NE(TechniqueRegistry::instance().find("gregory_acc"), nullptr);
+}
+
+TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
+  const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
+  size_t regular_faces = 0;
+  for (const char* name : kSupported) {
+    const Mesh mesh = load(name);
+    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const auto patches = build(mesh);
+    const auto valence = valences(mesh);
+    const double diagonal = bboxDiagonal(mesh);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto fv = mesh.facePositions(f);
+      if (!std::all_of(fv.begin(), fv.end(), [&](uint32_t v) { return valence[v] == 4; })) {
+        continue;
+      }
+      // A face with four valence-4 corners in a closed quad mesh has a regular 1-ring
+      // only if its neighbours' corners are regular too; Bfr says which faces are.
+      if (!limit.isRegular(f)) continue;
+      ++regular_faces;
+      for (const tess::DomainPoint& d : domain.points) {
+        const Vec3d expected = limit.evaluate(f, d[0], d[1]).position;
+        const SurfacePoint got = patches->evaluate(f, {d[0], d[1], 0});
+        ASSERT_LE(length(got.position - expected), 1e-12 * diagonal)
+            << name << " face " << f << " at " << d[0] << "," << d[1];
+        const SurfacePointF got_f = patches->evaluateFloat(f, d);
+        ASSERT_LE(length(vecCast<double>(got_f.position) - expected), 1e-6 * diagonal)
+            << name << " face " << f;
+        EXPECT_LE(length(got.normal - limit.evaluate(f, d[0], d[1]).normal), 1e-9);
+      }
+    }
+  }
+  EXPECT_GE(regular_faces, 32u);  // every torus face is regular
+}
+
+// Position of patch p at the point of its corner-c..c+1 edge at parameter t from corner c.
+DomainCoord edgeCoord(int corner, double t) {
+  switch (corner) {
+    case 0: return {t, 0, 0};
+    case 1: return {1, t, 0};
+    case 2: return {1 - t, 1, 0};
+    default: return {0, 1 - t, 0};
+  }
+}
+
+TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
+  for (const char* name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "asymmetric");
+    const double diagonal = bboxDiagonal(mesh);
+    size_t edges = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto fv = mesh.facePositions(f);
+      for (int c = 0; c < 4; ++c) {
+        const uint32_t a = fv[c], b = fv[(c + 1) % 4];
+        for (size_t g = 0; g < mesh.faceCount(); ++g) {
+          const auto gv = mesh.facePositions(g);
+          for (int k = 0; k < 4; ++k) {
+            if (gv[k] != b || gv[(k + 1) % 4] != a) continue;
+            ++edges;
+            for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
+              const Vec3d p = patches->evaluate(f, edgeCoord(c, t)).position;
+              const Vec3d q = patches->evaluate(g, edgeCoord(k, 1 - t)).position;
+              ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << g;
+            }
+          }
+        }
+      }
+    }
+    EXPECT_EQ(edges, 4 * mesh.faceCount()) << name;  // every directed edge has its twin
+  }
+}
+
+TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
+  const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
+  std::vector<float> ts;
+  for (const tess::DomainPoint& d : domain.points) {
+    if (d[1] == 0.0f) ts.push_back(d[0]);
+  }
+  ASSERT_GT(ts.size(), 5u);
+  for (const char* name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "edge_symmetric");
+    auto coordF = [](int corner, float t) -> tess::DomainPoint {
+      switch (corner) {
+        case 0: return {t, 0, 0};
+        case 1: return {1, t, 0};
+        case 2: return {1 - t, 1, 0};
+        default: return {0, 1 - t, 0};
+      }
+    };
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto fv = mesh.facePositions(f);
+      for (int c = 0; c < 4; ++c) {
+        for (size_t g = 0; g < mesh.faceCount(); ++g) {
+          const auto gv = mesh.facePositions(g);
+          for (int k = 0; k < 4; ++k) {
+            if (gv[k] != fv[(c + 1) % 4] || gv[(k + 1) % 4] != fv[c]) continue;
+            for (float t : ts) {
+              const Vec3f p = patches->evaluateFloat(f, coordF(c, t)).position;
+              const Vec3f q = patches->evaluateFloat(g, coordF(k, 1 - t)).position;
+              ASSERT_TRUE(p == q) << name << " faces " << f << "," << g << " t " << t;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
+  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const auto patches = build(mesh);
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    for (int c = 0; c < 4; ++c) {
+      const DomainCoord d = edgeCoord(c, 0);
+      const Vec3d expected = limit.evaluate(f, d[0], d[1]).position;
+      EXPECT_LE(length(patches->evaluate(f, d).position - expected), 1e-12);
+      // The tangent plane at the corner is the limit's (Loop et al. 2009: G1 at vertices).
+      EXPECT_LE(length(patches->evaluate(f, d).normal - limit.evaluate(f, d[0], d[1]).normal),
+                1e-9);
+    }
+  }
+}
+
+std::string rejection(const std::string& obj) {
+  GregoryAccTechnique technique;
+  const Mesh mesh = loadObjText(obj, "test.obj");
+  const std::string reason = technique.checkSupport(mesh);
+  try {
+    technique.buildPatches(mesh, technique.variants().front());
+    ADD_FAILURE() << "expected UnsupportedInput for " << reason;
+  } catch (const UnsupportedInput& error) {
+    EXPECT_EQ(reason, error.what());
+  }
+  return reason;
+}
+
+const char kCube[] =
+    "v -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 -1\nv 1 -1 -1\n"
+    "f 1 2 4 3\nf 3 4 6 5\nf 5 6 8 7\nf 7 8 2 1\nf 2 8 6 4\nf 7 1 3 5\n";
+
+TEST(GregoryAccRejects, Triangles) {
+  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+            "gregory_acc: test.obj: face 0 (line 4) has 3 vertices; gregory_acc supports quads "
+            "only");
+}
+
+TEST(GregoryAccRejects, Boundaries) {
+  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"),
+            "gregory_acc: test.obj: boundary edge (0, 1); boundaries are not supported");
+}
+
+TEST(GregoryAccRejects, Creases) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t crease 2/1/0 0 1 2.5\n"),
+            "gregory_acc: test.obj: crease edge (0, 1) has sharpness 2.500000; creases are not "
+            "supported");
+}
+
+TEST(GregoryAccRejects, CornerTags) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t corner 1/1/0 3 4\n"),
+            "gregory_acc: test.obj: corner vertex 3 is tagged sharp; corner tags are not "
+            "supported");
+}
+
+TEST(GregoryAccRejects, Holes) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t hole 1/0/0 2\n"),
+            "gregory_acc: test.obj: face 2 is tagged as a hole; holes are not supported");
+}
+
+TEST(GregoryAccRejects, NonManifoldEdges) {
+  // Three quads on edge (0, 1).
+  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 -1 0\nv 0 -1 0\nv 0 0 1\nv 1 0 1\n"
+                      "f 1 2 3 4\nf 2 1 6 5\nf 1 2 8 7\n"),
+            "gregory_acc: test.obj: edge (0, 1) is non-manifold (3 faces)");
+}
+
+TEST(GregoryAccRejects, InconsistentOrientation) {
+  std::string cube(kCube);
+  cube.replace(cube.find("f 1 2 4 3"), 9, "f 3 4 2 1");
+  EXPECT_EQ(rejection(cube),
+            "gregory_acc: test.obj: edge (2, 3) is used twice in the same direction (face 1 "
+            "(line 10)); faces must be consistently oriented");
+}
+
+// A closed quad "bipyramid": poles N (vertex 0) and S, equator E_i, and M_i between
+// E_i and E_{i+1}; faces (N, E_i, M_i, E_{i+1}) and (S, E_{i+1}, M_i, E_i).
+std::string bipyramid(int n) {
+  std::string obj = "v 0 0 1\nv 0 0 -1\n";
+  for (int i = 0; i < 2 * n; ++i) {
+    const double a = M_PI * i / n;
+    obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  auto e = [n](int i) { return std::to_string(3 + 2 * (i % n)); };  // 1-based
+  auto m = [n](int i) { return std::to_string(4 + 2 * (i % n)); };
+  for (int i = 0; i < n; ++i) {
+    obj += "f 1 " + e(i) + " " + m(i) + " " + e(i + 1) + "\n";
+    obj += "f 2 " + e(i + 1) + " " + m(i) + " " + e(i) + "\n";
+  }
+  return obj;
+}
+
+TEST(GregoryAccRejects, ValenceAboveTheMaximum) {
+  EXPECT_EQ(rejection(bipyramid(33)),
+            "gregory_acc: test.obj: vertex 0 has valence 33; gregory_acc needs 3..32");
+}
+
+TEST(GregoryAccRejects, ValenceTwo) {
+  // With 32 the poles pass; the first M vertex (index 3) has valence 2.
+  EXPECT_EQ(rejection(bipyramid(32)),
+            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..32");
+}
+
+TEST(GregoryAccRejects, NoFaces) {
+  Mesh mesh;
+  mesh.source = "empty.obj";
+  mesh.positions.push_back({0, 0, 0});
+  GregoryAccTechnique technique;
+  EXPECT_EQ(technique.checkSupport(mesh), "gregory_acc: empty.obj: has no faces");
+  EXPECT_THROW(technique.buildPatches(mesh, technique.variants().front()), UnsupportedInput);
+}
+
+TEST(GregoryAcc, SupportsExactlyTheClosedUntaggedQuadAssets) {
+  GregoryAccTechnique technique;
+  for (const char* name : kSupported) EXPECT_EQ(technique.checkSupport(load(name)), "") << name;
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_pawn.obj")), "");
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_pyramid.obj")), "");
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_quadstrips.obj")), "");
+}
+
+TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
+  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const auto patches = build(mesh);
+  const DataFootprint footprint = patches->footprint();
+  EXPECT_EQ(footprint.control_mesh_bytes, 8u * 16u);
+  EXPECT_EQ(footprint.patch_data_bytes, 6u * 20u * 4u);
+  // 8 vertex stencils + 24 directed-edge stencils + 6 * 8 face stencils.
+  const GregoryStencils stencils = buildGregoryStencils(mesh);
+  EXPECT_EQ(stencils.stencilCount(), 8u + 24u + 48u);
+  EXPECT_EQ(stencils.sharedStencilCount, 32u);
+  EXPECT_EQ(footprint.stencil_bytes, (stencils.stencilCount() + 1) * 4 +
+                                         stencils.indices.size() * 8);
+  // Every stencil is affine (weights sum to 1): the patches move with the mesh.
+  for (size_t s = 0; s < stencils.stencilCount(); ++s) {
+    double sum = 0;
+    for (uint32_t k = stencils.offsets[s]; k < stencils.offsets[s + 1]; ++k) {
+      sum += stencils.weights[k];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12) << "stencil " << s;
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
