@@ -313,3 +313,31 @@ TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
 
 }  // namespace
 }  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// Oracle: central finite differences of the position (the normal includes the
+// derivative of the rational face-point blend, which regular faces do not exercise).
+TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
+  for (const char* name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "asymmetric");
+    const double h = 1e-6;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      for (double u : {0.1, 0.37, 0.5, 0.81}) {
+        for (double v : {0.05, 0.44, 0.9}) {
+          auto p = [&](double a, double b) { return patches->evaluate(f, {a, b, 0}).position; };
+          const Vec3d du = (p(u + h, v) - p(u - h, v)) * (0.5 / h);
+          const Vec3d dv = (p(u, v + h) - p(u, v - h)) * (0.5 / h);
+          const Vec3d expected = normalize(cross(du, dv));
+          EXPECT_LE(length(patches->evaluate(f, {u, v, 0}).normal - expected), 1e-6)
+              << name << " face " << f << " at " << u << "," << v;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
