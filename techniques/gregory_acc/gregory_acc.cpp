@@ -16,28 +16,36 @@ constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control p
 
 class GregoryPatches final : public SurfacePatches {
  public:
-  GregoryPatches(const Mesh& mesh, bool symmetric_edges)
-      : mesh_(mesh), stencils_(buildGregoryStencils(mesh)), symmetric_edges_(symmetric_edges) {
-    positions_f_.reserve(mesh_.positions.size());
-    for (const Vec3d& p : mesh_.positions) positions_f_.push_back(vecCast<float>(p));
+  GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask)
+      : positions_(mesh.positions),
+        build_(buildGregory(mesh, mask)),
+        stencils_(build_.stencils),
+        symmetric_edges_(symmetric_edges) {
+    if (build_.refined) {
+      warnings_.push_back("non-quad faces: the mesh was refined once (Catmull-Clark) and " +
+                          std::to_string(build_.control.faceCount()) +
+                          " quad Gregory patches built on the refined mesh");
+    }
+    positions_f_.reserve(positions_.size());
+    for (const Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
     weights_f_.reserve(stencils_.weights.size());
     for (double w : stencils_.weights) weights_f_.push_back(float(w));
   }
 
   PatchDomain domain() const override { return PatchDomain::kQuad; }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
+  size_t patchCount() const override { return build_.control.faceCount(); }
+  const Mesh& controlMesh() const override { return build_.control; }
 
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    const auto face = mesh_.facePositions(patch);
+    const auto face = build_.control.facePositions(patch);
     return {face[0], face[1], face[2], face[3]};
   }
 
-  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  uint32_t sourceFace(size_t patch) const override { return build_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const GregoryPoints<double> cp = controlPoints<double>(
-        patch, [this](uint32_t i) { return mesh_.positions[i]; },
+        patch, [this](uint32_t i) { return positions_[i]; },
         [this](uint32_t k) { return stencils_.weights[k]; });
     const GregoryPoint<double> point =
         evaluateGregory(cp, coord[0], coord[1], symmetric_edges_);
@@ -99,7 +107,7 @@ class GregoryPatches final : public SurfacePatches {
 
   DataFootprint footprint() const override {
     DataFootprint footprint;
-    footprint.control_mesh_bytes = mesh_.positions.size() * kGpuVertexBytes;
+    footprint.control_mesh_bytes = positions_.size() * kGpuVertexBytes;
     footprint.patch_data_bytes = stencils_.patch_points.size() * kPointsPerPatch * kPatchPointIdBytes;
     footprint.stencil_bytes = stencils_.offsets.size() * kStencilOffsetBytes +
                               stencils_.indices.size() * kStencilEntryBytes;
@@ -125,8 +133,9 @@ class GregoryPatches final : public SurfacePatches {
         [this](uint32_t k) { return weights_f_[k]; });
   }
 
-  Mesh mesh_;
-  GregoryStencils stencils_;
+  std::vector<Vec3d> positions_;  // the input control mesh's, which every stencil reads
+  GregoryBuild build_;
+  const GregoryStencils& stencils_;
   bool symmetric_edges_;
   std::vector<Vec3f> positions_f_;
   std::vector<float> weights_f_;
@@ -140,8 +149,8 @@ const TechniqueInfo& GregoryAccTechnique::info() const {
       "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad Gregory patches)",
       "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
       "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
-      "closed manifold all-quad Catmull-Clark meshes, valence 3..32, no crease/corner/hole "
-      "tags"};
+      "closed manifold Catmull-Clark meshes, valence and face size 3..32, no crease/corner/"
+      "hole/smoothtriangles tags; meshes with non-quad faces are refined once"};
   return kInfo;
 }
 
@@ -153,6 +162,10 @@ std::vector<VariantInfo> GregoryAccTechnique::variants() const {
        {{"symmetric_edges", 1.0}}},
       {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
        {{"symmetric_edges", 0.0}}},
+      {"far_tangents",
+       "edge_symmetric, edge points from OpenSubdiv Far's Gregory-basis tangent weights "
+       "instead of the exact limit tangents",
+       {{"symmetric_edges", 1.0}, {"far_tangents", 1.0}}},
   };
 }
 
@@ -164,7 +177,11 @@ std::unique_ptr<SurfacePatches> GregoryAccTechnique::buildPatches(
     const Mesh& mesh, const VariantInfo& variant) const {
   const auto symmetric = variant.parameters.find("symmetric_edges");
   const bool symmetric_edges = symmetric == variant.parameters.end() || symmetric->second != 0.0;
-  return std::make_unique<GregoryPatches>(mesh, symmetric_edges);
+  const auto far = variant.parameters.find("far_tangents");
+  const TangentMask mask = far != variant.parameters.end() && far->second != 0.0
+                               ? TangentMask::kFarCompatible
+                               : TangentMask::kExactLimit;
+  return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask);
 }
 
 TB_REGISTER_TECHNIQUE(GregoryAccTechnique);

@@ -6,12 +6,11 @@
 #include <unordered_map>
 
 #include "harness/mesh/topology.h"
+#include "techniques/gregory_acc/gregory_refine.h"
 #include "techniques/technique.h"
 
 namespace tb::gregory_acc {
 namespace {
-
-using Stencil = std::map<uint32_t, double>;  // vertex index -> weight, ascending index
 
 void add(Stencil& into, const Stencil& s, double scale) {
   for (const auto& [index, weight] : s) into[index] += weight * scale;
@@ -52,14 +51,13 @@ struct Ring {
 };
 
 // Per vertex: limit position P and the two tangent stencils e0, e1 such that the edge
-// point toward neighbour k is P + cos(2 pi k/n) e0 + sin(2 pi k/n) e1, i.e. P plus a third
-// of the limit tangent along that edge (Loop et al. 2009 §3; the Catmull-Clark limit
-// masks of Halstead et al. 1993, scaled so valence 4 gives the B-spline's Bézier points).
+// point toward neighbour k is P + cos(2 pi k/n) e0 + sin(2 pi k/n) e1 (Loop et al. 2009
+// §3), scaled so valence 4 gives the B-spline's Bézier edge points.
 struct VertexFrame {
   Stencil position, e0, e1;
 };
 
-VertexFrame vertexFrame(uint32_t v, const Ring& ring) {
+VertexFrame vertexFrame(uint32_t v, const Ring& ring, TangentMask mask) {
   const uint32_t n = ring.valence();
   const double dn = double(n);
   VertexFrame frame;
@@ -69,23 +67,23 @@ VertexFrame vertexFrame(uint32_t v, const Ring& ring) {
     add(frame.position, ring.neighbour[i], 4.0 / (dn * (dn + 5)));
     add(frame.position, ring.diagonal[i], 1.0 / (dn * (dn + 5)));
   }
-  // Tangent: sum over edges i of cos/sin(2 pi i/n) times the average of the two
-  // face-limit terms f_{i-1}, f_i, with f_i = (n v + 2 e_i + 2 e_{i+1} + d_i)/(n + 5);
-  // scaled by 16 / (n (c + 5 + sqrt((c + 9)(c + 1)))), c = cos(2 pi/n).
+  // Tangents: sum_i cos_i (a e_i) + (cos_i + cos_{i+1}) d_i (sin likewise), times
+  // 1 / (2 (n + 5) n lambda), lambda = (5 + c + sqrt((c + 9)(c + 1))) / 16 the subdominant
+  // eigenvalue, c = cos(2 pi/n). kExactLimit: a = 1 + c + sqrt((1 + c)(9 + c)), the
+  // Catmull-Clark limit tangent mask (Halstead et al. 1993), so the edge points span the
+  // limit tangent plane. kFarCompatible: a = 4 (1 + c), what averaging the ACC face
+  // points f_i = (n v + 2 e_i + 2 e_{i+1} + d_i)/(n + 5) gives (OpenSubdiv Far's Gregory
+  // basis); not the limit tangent plane for n != 4. Both are equal at n = 4.
   const double c = cosTurn(1, n);
-  const double scale = 16.0 / (dn * (c + 5 + std::sqrt((c + 9) * (c + 1))));
+  const double root = std::sqrt((c + 9) * (c + 1));
+  const double scale = 16.0 / (dn * (c + 5 + root)) / (2 * (dn + 5));
+  const double a = mask == TangentMask::kExactLimit ? 1 + c + root : 4 * (1 + c);
   for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t im = (i + n - 1) % n, ip = (i + 1) % n;
-    Stencil edge;  // (f_{i-1} + f_i) / 2
-    const double d = 2 * (dn + 5);
-    add(edge, v, 2 * dn / d);
-    add(edge, ring.neighbour[im], 2 / d);
-    add(edge, ring.neighbour[i], 4 / d);
-    add(edge, ring.neighbour[ip], 2 / d);
-    add(edge, ring.diagonal[im], 1 / d);
-    add(edge, ring.diagonal[i], 1 / d);
-    add(frame.e0, edge, scale * cosTurn(i, n));
-    add(frame.e1, edge, scale * sinTurn(i, n));
+    const uint32_t ip = (i + 1) % n;
+    add(frame.e0, ring.neighbour[i], scale * a * cosTurn(i, n));
+    add(frame.e1, ring.neighbour[i], scale * a * sinTurn(i, n));
+    add(frame.e0, ring.diagonal[i], scale * (cosTurn(i, n) + cosTurn(ip, n)));
+    add(frame.e1, ring.diagonal[i], scale * (sinTurn(i, n) + sinTurn(ip, n)));
   }
   return frame;
 }
@@ -119,8 +117,8 @@ Rings buildRings(const Mesh& mesh) {
   std::vector<uint32_t> face_count(mesh.positions.size(), 0);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
-    for (uint32_t k = 0; k < 4; ++k) {
-      const uint32_t a = fv[k], b = fv[(k + 1) % 4];
+    for (uint32_t k = 0; k < fv.size(); ++k) {
+      const uint32_t a = fv[k], b = fv[(k + 1) % fv.size()];
       if (!face_of_directed.emplace(directedKey(a, b), uint32_t(f)).second) {
         out.error = prefix(mesh) + "edge (" + std::to_string(a) + ", " + std::to_string(b) +
                     ") is used twice in the same direction (" + describeFace(mesh, f) +
@@ -137,11 +135,12 @@ Rings buildRings(const Mesh& mesh) {
     uint32_t f = first_face[v];
     for (uint32_t step = 0; step <= face_count[v]; ++step) {
       const auto fv = mesh.facePositions(f);
+      const size_t size = fv.size();
       uint32_t k = 0;
       while (fv[k] != v) ++k;
-      ring.neighbour.push_back(fv[(k + 1) % 4]);
-      ring.diagonal.push_back(fv[(k + 2) % 4]);
-      const auto next = face_of_directed.find(directedKey(v, fv[(k + 3) % 4]));
+      ring.neighbour.push_back(fv[(k + 1) % size]);
+      ring.diagonal.push_back(fv[(k + 2) % size]);  // meaningful on quads only
+      const auto next = face_of_directed.find(directedKey(v, fv[(k + size - 1) % size]));
       if (next == face_of_directed.end()) {
         out.error = prefix(mesh) + "vertex " + std::to_string(v) + " is on a boundary";
         return out;
@@ -185,14 +184,18 @@ std::string checkGregorySupport(const Mesh& mesh) {
     return prefix(mesh) + "face " + std::to_string(mesh.tags.holes.front()) +
            " is tagged as a hole; holes are not supported";
   }
+  if (mesh.tags.smooth_triangles) {
+    return prefix(mesh) + "`t smoothtriangles` is not supported (plain Catmull-Clark only)";
+  }
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    if (mesh.faceSize(f) != 4) {
-      return prefix(mesh) + describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
-             " vertices; gregory_acc supports quads only";
+    const uint32_t size = mesh.faceSize(f);
+    if (size < 3 || size > kMaxValence) {
+      return prefix(mesh) + describeFace(mesh, f) + " has " + std::to_string(size) +
+             " vertices; gregory_acc needs 3.." + std::to_string(kMaxValence);
     }
     const auto fv = mesh.facePositions(f);
-    for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b) {
+    for (uint32_t a = 0; a < size; ++a) {
+      for (uint32_t b = a + 1; b < size; ++b) {
         if (fv[a] == fv[b]) {
           return prefix(mesh) + describeFace(mesh, f) + " repeats vertex " +
                  std::to_string(fv[a]);
@@ -216,9 +219,12 @@ std::string checkGregorySupport(const Mesh& mesh) {
   return buildRings(mesh).error;
 }
 
-GregoryStencils buildGregoryStencils(const Mesh& mesh) {
+GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
     throw UnsupportedInput(reason);
+  }
+  if (!mesh.allFacesOfSize(4)) {
+    throw UnsupportedInput(prefix(mesh) + "buildGregoryStencils needs an all-quad mesh");
   }
   const std::vector<Ring> rings = buildRings(mesh).rings;
   GregoryStencils out;
@@ -237,7 +243,7 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh) {
   std::unordered_map<uint64_t, uint32_t> edge_id;
   for (uint32_t v = 0; v < rings.size(); ++v) {
     if (rings[v].valence() == 0) continue;
-    frames[v] = vertexFrame(v, rings[v]);
+    frames[v] = vertexFrame(v, rings[v], mask);
     position_id[v] = emit(frames[v].position);
   }
   auto edgePoint = [&](uint32_t v, uint32_t w) {
@@ -294,6 +300,42 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh) {
       points[c * 5 + kFp] = emit(fp);
       points[c * 5 + kFm] = emit(fm);
     }
+  }
+  return out;
+}
+
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask) {
+  if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
+    throw UnsupportedInput(reason);
+  }
+  GregoryBuild out;
+  if (mesh.allFacesOfSize(4)) {
+    out.control = mesh;
+    out.stencils = buildGregoryStencils(mesh, mask);
+    out.source_face.resize(mesh.faceCount());
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f) out.source_face[f] = f;
+    return out;
+  }
+  RefinedMesh refined = refineOnce(mesh);
+  const GregoryStencils level1 = buildGregoryStencils(refined.mesh, mask);
+  out.refined = true;
+  out.control = std::move(refined.mesh);
+  out.source_face = std::move(refined.source_face);
+  out.stencils.patch_points = level1.patch_points;
+  out.stencils.sharedStencilCount = level1.sharedStencilCount;
+  // Compose: each Gregory stencil over refined vertices becomes one over input vertices,
+  // still ascending by vertex index; stencils keep their ids, so sharing is unchanged.
+  for (size_t s = 0; s < level1.stencilCount(); ++s) {
+    Stencil composed;
+    for (uint32_t k = level1.offsets[s]; k < level1.offsets[s + 1]; ++k) {
+      add(composed, refined.stencils[level1.indices[k]], level1.weights[k]);
+    }
+    for (const auto& [index, weight] : composed) {
+      if (std::abs(weight) < 1e-14) continue;
+      out.stencils.indices.push_back(index);
+      out.stencils.weights.push_back(weight);
+    }
+    out.stencils.offsets.push_back(uint32_t(out.stencils.indices.size()));
   }
   return out;
 }

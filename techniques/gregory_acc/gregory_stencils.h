@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "harness/mesh/mesh.h"
+#include "techniques/gregory_acc/gregory_refine.h"
 
 namespace tb::gregory_acc {
 
@@ -45,7 +46,27 @@ struct GregoryStencils {
 // element and the rule ("gregory_acc: <file>: face 3 (line 12) has 3 vertices; ...").
 std::string checkGregorySupport(const Mesh& mesh);
 
+// Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
+enum class TangentMask {
+  kExactLimit,     // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
+  kFarCompatible,  // OpenSubdiv Far's Gregory basis (averaged ACC face points)
+};
+
+// Stencils over `mesh`'s own vertices; `mesh` must be all quads. Throws
+// tb::UnsupportedInput with checkGregorySupport's message.
+GregoryStencils buildGregoryStencils(const Mesh& mesh,
+                                     TangentMask mask = TangentMask::kExactLimit);
+
+struct GregoryBuild {
+  // The all-quad mesh the patches are built over: the input itself, or, when the input
+  // has any non-quad face, the input refined once (refineOnce; patch p = its face p).
+  Mesh control;
+  bool refined = false;
+  std::vector<uint32_t> source_face;  // input face of each patch
+  GregoryStencils stencils;           // over the INPUT mesh's positions
+};
+
 // Throws tb::UnsupportedInput with checkGregorySupport's message.
-GregoryStencils buildGregoryStencils(const Mesh& mesh);
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kExactLimit);
 
 }  // namespace tb::gregory_acc
