@@ -162,10 +162,10 @@ std::vector<VariantInfo> GregoryAccTechnique::variants() const {
        {{"symmetric_edges", 1.0}}},
       {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
        {{"symmetric_edges", 0.0}}},
-      {"far_tangents",
-       "edge_symmetric, edge points from OpenSubdiv Far's Gregory-basis tangent weights "
-       "instead of the exact limit tangents",
-       {{"symmetric_edges", 1.0}, {"far_tangents", 1.0}}},
+      {"exact_tangents",
+       "edge_symmetric, edge points from the exact Catmull-Clark limit tangent masks "
+       "(Halstead et al. 1993) instead of the paper's averaged face points",
+       {{"symmetric_edges", 1.0}, {"exact_tangents", 1.0}}},
   };
 }
 
@@ -177,10 +177,10 @@ std::unique_ptr<SurfacePatches> GregoryAccTechnique::buildPatches(
     const Mesh& mesh, const VariantInfo& variant) const {
   const auto symmetric = variant.parameters.find("symmetric_edges");
   const bool symmetric_edges = symmetric == variant.parameters.end() || symmetric->second != 0.0;
-  const auto far = variant.parameters.find("far_tangents");
-  const TangentMask mask = far != variant.parameters.end() && far->second != 0.0
-                               ? TangentMask::kFarCompatible
-                               : TangentMask::kExactLimit;
+  const auto exact = variant.parameters.find("exact_tangents");
+  const TangentMask mask = exact != variant.parameters.end() && exact->second != 0.0
+                               ? TangentMask::kExactLimit
+                               : TangentMask::kPaper;
   return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask);
 }
 

@@ -31,6 +31,8 @@ RefinedMesh refineOnce(const Mesh& mesh) {
   // Edge points (a + b + F_left + F_right) / 4; closed manifold: two faces per edge.
   std::unordered_map<uint64_t, uint32_t> edge_index;
   std::vector<Stencil> edge_point;
+  std::vector<std::array<uint32_t, 2>> edge_ends;
+  std::vector<uint32_t> edge_faces;
   std::vector<std::vector<uint32_t>> vertex_faces(vertex_count);
   std::vector<std::vector<uint32_t>> vertex_neighbours(vertex_count);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -40,6 +42,8 @@ RefinedMesh refineOnce(const Mesh& mesh) {
       vertex_faces[a].push_back(uint32_t(f));
       const auto [it, inserted] = edge_index.emplace(edgeKey(a, b), uint32_t(edge_point.size()));
       if (inserted) {
+        edge_ends.push_back({a, b});
+        edge_faces.push_back(0);
         edge_point.emplace_back();
         edge_point.back()[a] += 0.25;
         edge_point.back()[b] += 0.25;
@@ -47,7 +51,17 @@ RefinedMesh refineOnce(const Mesh& mesh) {
         vertex_neighbours[b].push_back(a);
       }
       add(edge_point[it->second], face_point[f], 0.25);
+      ++edge_faces[it->second];
     }
+  }
+  // Boundary edges (EDGE_AND_CORNER: infinitely sharp): the midpoint.
+  std::vector<std::vector<uint32_t>> boundary_neighbours(vertex_count);
+  for (size_t e = 0; e < edge_point.size(); ++e) {
+    if (edge_faces[e] != 1) continue;
+    const auto [a, b] = edge_ends[e];
+    edge_point[e] = Stencil{{a, 0.5}, {b, 0.5}};
+    boundary_neighbours[a].push_back(b);
+    boundary_neighbours[b].push_back(a);
   }
   // Vertex points (Q + 2R + (n - 3) v) / n: Q the mean face point, R the mean edge
   // midpoint, n the valence.
@@ -55,8 +69,14 @@ RefinedMesh refineOnce(const Mesh& mesh) {
   for (uint32_t v = 0; v < vertex_count; ++v) {
     const double n = double(vertex_faces[v].size());
     Stencil& s = out.stencils[v];
-    if (n == 0) {
-      s[v] = 1;  // unused position: kept so indices stay aligned
+    if (n == 0 || (boundary_neighbours[v].size() == 2 && n == 1)) {
+      s[v] = 1;  // unused position (kept so indices stay aligned), or a boundary corner
+      continue;
+    }
+    if (boundary_neighbours[v].size() == 2) {  // smooth boundary: the crease rule
+      s[v] += 6.0 / 8;
+      s[boundary_neighbours[v][0]] += 1.0 / 8;
+      s[boundary_neighbours[v][1]] += 1.0 / 8;
       continue;
     }
     s[v] += (n - 3) / n;

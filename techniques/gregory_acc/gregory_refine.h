@@ -1,4 +1,4 @@
-// One uniform Catmull-Clark refinement of a closed manifold polygon mesh, as stencils
+// One uniform Catmull-Clark refinement of a manifold polygon mesh, as stencils
 // over the input vertices. gregory_acc uses it for meshes with non-quad faces: every
 // face of the refined mesh is a quad, and the refined mesh has the same limit surface
 // (OpenSubdiv isolates non-quads the same way), so quad Gregory patches cover it and
@@ -24,7 +24,8 @@ struct RefinedMesh {
   std::vector<uint32_t> source_face;  // input face of each refined face
 };
 
-// Precondition: checkGregorySupport(mesh) is empty (closed, manifold, no tags).
+// Boundary edges are infinitely sharp and one-face boundary vertices are corners
+// (Sdc EDGE_AND_CORNER). Precondition: checkGregorySupport(mesh) is empty.
 RefinedMesh refineOnce(const Mesh& mesh);
 
 }  // namespace tb::gregory_acc

@@ -36,12 +36,19 @@ double sinTurn(uint32_t k, uint32_t n) {
 
 uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 
-// The 1-ring of an interior vertex of an all-quad mesh, counter-clockwise: face i is
-// (v, neighbour[i], diagonal[i], neighbour[i + 1]) in the face's own winding.
+// The 1-ring of a vertex of an all-quad mesh, counter-clockwise: face i is
+// (v, neighbour[i], diagonal[i], neighbour[i + 1]) in the face's own winding (indices
+// modulo the valence inside). On a boundary, neighbour[0] and neighbour[faces] are the
+// two boundary neighbours, and there is one more neighbour than faces.
 struct Ring {
   std::vector<uint32_t> neighbour;
-  std::vector<uint32_t> diagonal;
-  uint32_t valence() const { return uint32_t(neighbour.size()); }
+  std::vector<uint32_t> diagonal;  // one per face
+  bool boundary = false;
+  uint32_t valence() const { return uint32_t(neighbour.size()); }  // edges at the vertex
+  uint32_t faces() const { return uint32_t(diagonal.size()); }
+  // The valence used in the face-point weights cos(2 pi / n): a boundary vertex with k
+  // faces counts as 2k (Loop et al. 2009; a regular boundary vertex then counts as 4).
+  uint32_t effectiveValence() const { return boundary ? 2 * faces() : valence(); }
   uint32_t indexOf(uint32_t w) const {
     for (uint32_t i = 0; i < neighbour.size(); ++i) {
       if (neighbour[i] == w) return i;
@@ -71,7 +78,7 @@ VertexFrame vertexFrame(uint32_t v, const Ring& ring, TangentMask mask) {
   // 1 / (2 (n + 5) n lambda), lambda = (5 + c + sqrt((c + 9)(c + 1))) / 16 the subdominant
   // eigenvalue, c = cos(2 pi/n). kExactLimit: a = 1 + c + sqrt((1 + c)(9 + c)), the
   // Catmull-Clark limit tangent mask (Halstead et al. 1993), so the edge points span the
-  // limit tangent plane. kFarCompatible: a = 4 (1 + c), what averaging the ACC face
+  // limit tangent plane. kPaper: a = 4 (1 + c), what averaging the ACC face
   // points f_i = (n v + 2 e_i + 2 e_{i+1} + d_i)/(n + 5) gives (OpenSubdiv Far's Gregory
   // basis); not the limit tangent plane for n != 4. Both are equal at n = 4.
   const double c = cosTurn(1, n);
@@ -84,6 +91,41 @@ VertexFrame vertexFrame(uint32_t v, const Ring& ring, TangentMask mask) {
     add(frame.e1, ring.neighbour[i], scale * a * sinTurn(i, n));
     add(frame.e0, ring.diagonal[i], scale * (cosTurn(i, n) + cosTurn(ip, n)));
     add(frame.e1, ring.diagonal[i], scale * (sinTurn(i, n) + sinTurn(ip, n)));
+  }
+  return frame;
+}
+
+// Smooth boundary vertex with k >= 2 faces (Sdc EDGE_AND_CORNER: the boundary is an
+// infinitely sharp crease): P is the boundary B-spline's limit point, e0 its tangent
+// (exact: it involves only the two boundary neighbours, so both patches of a boundary
+// edge agree), e1 the cross-boundary tangent of Loop et al. 2009 (as in OpenSubdiv Far's
+// Gregory basis); the edge point toward neighbour j is P + cos(pi j/k) e0 + sin(pi j/k) e1.
+// A corner (k = 1) interpolates its vertex; its edge points are (2 v + w) / 3.
+VertexFrame boundaryFrame(uint32_t v, const Ring& ring) {
+  const uint32_t k = ring.faces();
+  const double dk = double(k);
+  const uint32_t b0 = ring.neighbour.front(), b1 = ring.neighbour.back();
+  VertexFrame frame;
+  if (k == 1) {  // corner: interpolated; edge points are formed in edgePoint
+    add(frame.position, v, 1.0);
+    return frame;
+  }
+  add(frame.position, v, 4.0 / 6);
+  add(frame.position, b0, 1.0 / 6);
+  add(frame.position, b1, 1.0 / 6);
+  add(frame.e0, b0, 1.0 / 6);
+  add(frame.e0, b1, -1.0 / 6);
+  const double c = std::cos(std::numbers::pi / dk), s = std::sin(std::numbers::pi / dk);
+  const double den = 3 * dk + c;
+  add(frame.e1, v, -4 * s / den / 3);
+  const double alpha_ends = -((1 + 2 * c) * std::sqrt(1 + c)) / (den * std::sqrt(1 - c));
+  add(frame.e1, b0, alpha_ends / 3);
+  add(frame.e1, b1, alpha_ends / 3);
+  for (uint32_t x = 0; x < k; ++x) {
+    const double sx = std::sin(std::numbers::pi * double(x) / dk);
+    const double sx1 = x + 1 == k ? 0.0 : std::sin(std::numbers::pi * double(x + 1) / dk);
+    if (x > 0) add(frame.e1, ring.neighbour[x], 4 * sx / den / 3);
+    add(frame.e1, ring.diagonal[x], (sx + sx1) / den / 3);
   }
   return frame;
 }
@@ -132,7 +174,21 @@ Rings buildRings(const Mesh& mesh) {
   for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
     if (first_face[v] == UINT32_MAX) continue;
     Ring& ring = out.rings[v];
-    uint32_t f = first_face[v];
+    // Start a boundary vertex's walk at the face after its boundary edge: the face
+    // whose edge (v, neighbour) has no face on the other side (no directed edge w -> v).
+    uint32_t start_face = first_face[v];
+    for (uint32_t f = first_face[v]; f < mesh.faceCount(); ++f) {
+      const auto fv = mesh.facePositions(f);
+      for (uint32_t k = 0; k < fv.size(); ++k) {
+        if (fv[k] == v && !face_of_directed.count(directedKey(fv[(k + 1) % fv.size()], v))) {
+          start_face = uint32_t(f);
+          ring.boundary = true;
+          break;
+        }
+      }
+      if (ring.boundary) break;
+    }
+    uint32_t f = start_face;
     for (uint32_t step = 0; step <= face_count[v]; ++step) {
       const auto fv = mesh.facePositions(f);
       const size_t size = fv.size();
@@ -140,22 +196,26 @@ Rings buildRings(const Mesh& mesh) {
       while (fv[k] != v) ++k;
       ring.neighbour.push_back(fv[(k + 1) % size]);
       ring.diagonal.push_back(fv[(k + 2) % size]);  // meaningful on quads only
-      const auto next = face_of_directed.find(directedKey(v, fv[(k + size - 1) % size]));
+      const uint32_t last = fv[(k + size - 1) % size];
+      const auto next = face_of_directed.find(directedKey(v, last));
       if (next == face_of_directed.end()) {
-        out.error = prefix(mesh) + "vertex " + std::to_string(v) + " is on a boundary";
-        return out;
+        ring.neighbour.push_back(last);  // the second boundary neighbour
+        break;
       }
       f = next->second;
-      if (f == first_face[v]) break;
+      if (f == start_face) break;
     }
-    if (ring.valence() != face_count[v]) {
+    if (ring.faces() != face_count[v]) {
       out.error = prefix(mesh) + "vertex " + std::to_string(v) +
                   " is non-manifold (its faces form more than one fan)";
       return out;
     }
-    if (ring.valence() < 3 || ring.valence() > kMaxValence) {
-      out.error = prefix(mesh) + "vertex " + std::to_string(v) + " has valence " +
-                  std::to_string(ring.valence()) + "; gregory_acc needs 3.." +
+    const uint32_t low = ring.boundary ? 1 : 3;
+    if (ring.faces() < low || ring.faces() > kMaxValence) {
+      out.error = prefix(mesh) + (ring.boundary ? "boundary vertex " : "vertex ") +
+                  std::to_string(v) + (ring.boundary ? " has " : " has valence ") +
+                  std::to_string(ring.faces()) + (ring.boundary ? " faces" : "") +
+                  "; gregory_acc needs " + std::to_string(low) + ".." +
                   std::to_string(kMaxValence);
       return out;
     }
@@ -210,10 +270,13 @@ std::string checkGregorySupport(const Mesh& mesh) {
              ") is non-manifold (" + std::to_string(edge.face_count) + " faces)";
     }
   }
-  for (const MeshEdge& edge : topology.edges) {
-    if (edge.face_count == 1) {
-      return prefix(mesh) + "boundary edge (" + std::to_string(edge.v0) + ", " +
-             std::to_string(edge.v1) + "); boundaries are not supported";
+  if (mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner) {
+    for (const MeshEdge& edge : topology.edges) {
+      if (edge.face_count == 1) {
+        return prefix(mesh) + "boundary edge (" + std::to_string(edge.v0) + ", " +
+               std::to_string(edge.v1) +
+               "); only edge-and-corner boundary interpolation is supported";
+      }
     }
   }
   return buildRings(mesh).error;
@@ -243,15 +306,23 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   std::unordered_map<uint64_t, uint32_t> edge_id;
   for (uint32_t v = 0; v < rings.size(); ++v) {
     if (rings[v].valence() == 0) continue;
-    frames[v] = vertexFrame(v, rings[v], mask);
+    frames[v] = rings[v].boundary ? boundaryFrame(v, rings[v]) : vertexFrame(v, rings[v], mask);
     position_id[v] = emit(frames[v].position);
   }
   auto edgePoint = [&](uint32_t v, uint32_t w) {
     const Ring& ring = rings[v];
-    const uint32_t k = ring.indexOf(w);
-    Stencil e = frames[v].position;
-    add(e, frames[v].e0, cosTurn(k, ring.valence()));
-    add(e, frames[v].e1, sinTurn(k, ring.valence()));
+    const uint32_t j = ring.indexOf(w);
+    Stencil e;
+    if (ring.boundary && ring.faces() == 1) {  // corner: the boundary curve's end
+      add(e, v, 2.0 / 3);
+      add(e, w, 1.0 / 3);
+      return e;
+    }
+    e = frames[v].position;
+    // Interior: angle 2 pi j / n; boundary with k faces: pi j / k = 2 pi j / (2k).
+    const uint32_t n = ring.effectiveValence();
+    add(e, frames[v].e0, cosTurn(j, n));
+    add(e, frames[v].e1, sinTurn(j, n));
     return e;
   };
   auto edgeId = [&](uint32_t v, uint32_t w) {
@@ -276,24 +347,52 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
     for (uint32_t c = 0; c < 4; ++c) {
       const uint32_t v = fv[c], ip = fv[(c + 1) % 4], im = fv[(c + 3) % 4];
       const Ring& ring = rings[v];
-      const uint32_t n = ring.valence(), np = rings[ip].valence(), nm = rings[im].valence();
-      const uint32_t start = ring.indexOf(ip);  // face f is ring face `start`
-      const uint32_t prev = (start + 1) % n;    // ring index of im
+      const uint32_t n = ring.effectiveValence(), np = rings[ip].effectiveValence(),
+                     nm = rings[im].effectiveValence();
+      const uint32_t start = ring.indexOf(ip);             // face f is ring face `start`
+      const uint32_t prev = (start + 1) % ring.valence();  // ring index of im
       // Face points, Loop et al. 2009 eq. for the interior Gregory points (as in
       // OpenSubdiv Far's Gregory basis): with c_n = cos(2 pi/n),
       //   Fp = (c_np P + (3 - 2 c_n - c_np) Ep + 2 c_n Em(ip) + r_start) / 3,
       //   Fm = (c_nm P + (3 - 2 c_n - c_nm) Em + 2 c_n Ep(im) - r_prev) / 3.
       const double cn = cosTurn(1, n), cnp = cosTurn(1, np), cnm = cosTurn(1, nm);
-      const Stencil ep = edgePoint(v, ip), em = edgePoint(v, im);
+      // On a boundary there is no continuity to keep across a boundary edge: the face
+      // point next to it takes the other one's value (as Far's Gregory basis does), and
+      // the twist across it (which has no face there) is never formed. A corner's face
+      // point is the bicubic B-spline's with mirrored phantom points.
+      const bool ip_edge_open = ring.boundary && start == 0;
+      const bool im_edge_open = ring.boundary && prev + 1 == ring.valence();
+      auto plusPoint = [&] {
+        Stencil fp;
+        add(fp, frames[v].position, cnp / 3);
+        add(fp, edgePoint(v, ip), (3 - 2 * cn - cnp) / 3);
+        add(fp, edgePoint(ip, v), 2 * cn / 3);
+        add(fp, twist(ring, start), 1.0 / 3);
+        return fp;
+      };
+      auto minusPoint = [&] {
+        Stencil fm;
+        add(fm, frames[v].position, cnm / 3);
+        add(fm, edgePoint(v, im), (3 - 2 * cn - cnm) / 3);
+        add(fm, edgePoint(im, v), 2 * cn / 3);
+        add(fm, twist(ring, prev), -1.0 / 3);
+        return fm;
+      };
       Stencil fp, fm;
-      add(fp, frames[v].position, cnp / 3);
-      add(fp, ep, (3 - 2 * cn - cnp) / 3);
-      add(fp, edgePoint(ip, v), 2 * cn / 3);
-      add(fp, twist(ring, start), 1.0 / 3);
-      add(fm, frames[v].position, cnm / 3);
-      add(fm, em, (3 - 2 * cn - cnm) / 3);
-      add(fm, edgePoint(im, v), 2 * cn / 3);
-      add(fm, twist(ring, prev), -1.0 / 3);
+      if (ip_edge_open && im_edge_open) {
+        add(fp, v, 4.0 / 9);
+        add(fp, ring.diagonal[0], 1.0 / 9);
+        add(fp, ip, 2.0 / 9);
+        add(fp, im, 2.0 / 9);
+        fm = fp;
+      } else if (ip_edge_open) {
+        fp = fm = minusPoint();
+      } else if (im_edge_open) {
+        fp = fm = plusPoint();
+      } else {
+        fp = plusPoint();
+        fm = minusPoint();
+      }
       points[c * 5 + kP] = position_id[v];
       points[c * 5 + kEp] = edgeId(v, ip);
       points[c * 5 + kEm] = edgeId(v, im);

@@ -48,14 +48,16 @@ std::string checkGregorySupport(const Mesh& mesh);
 
 // Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
 enum class TangentMask {
-  kExactLimit,     // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
-  kFarCompatible,  // OpenSubdiv Far's Gregory basis (averaged ACC face points)
+  kPaper,       // Loop et al. 2009 / OpenSubdiv Far's Gregory basis (averaged ACC face
+                // points); smaller parametric error than kExactLimit on every bundled
+                // asset measured
+  kExactLimit,  // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
 };
 
 // Stencils over `mesh`'s own vertices; `mesh` must be all quads. Throws
 // tb::UnsupportedInput with checkGregorySupport's message.
 GregoryStencils buildGregoryStencils(const Mesh& mesh,
-                                     TangentMask mask = TangentMask::kExactLimit);
+                                     TangentMask mask = TangentMask::kPaper);
 
 struct GregoryBuild {
   // The all-quad mesh the patches are built over: the input itself, or, when the input
@@ -67,6 +69,6 @@ struct GregoryBuild {
 };
 
 // Throws tb::UnsupportedInput with checkGregorySupport's message.
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kExactLimit);
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper);
 
 }  // namespace tb::gregory_acc

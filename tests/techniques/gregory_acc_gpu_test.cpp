@@ -19,7 +19,14 @@ namespace {
 
 const char* const kSupported[] = {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_torus.obj",
                                   "opensubdiv/catmark_toroidal_tet.obj",
-                                  "opensubdiv/catmark_pyramid.obj"};
+                                  "opensubdiv/catmark_pyramid.obj",
+                                  "opensubdiv/catmark_quadstrips.obj",
+                                  "opensubdiv/catmark_edgecorner.obj",
+                                  "opensubdiv/catmark_xord_interior.obj",
+                                  "opensubdiv/catmark_nonquads.obj",
+                                  "opensubdiv/catmark_gregory_test2.obj",
+                                  "opensubdiv/catmark_gregory_test5.obj",
+                                  "opensubdiv/loop_icosahedron.obj"};
 
 // Distance in units in the last place (0 for equal values, +0 and -0 included).
 int64_t ulpDistance(float a, float b) {
@@ -59,7 +66,7 @@ std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& varia
 
 TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  for (const char* variant : {"edge_symmetric", "asymmetric", "far_tangents"}) {
+  for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
     for (const char* name : kSupported) {
       const Mesh mesh = loadObjFile(testing::assetPath(name));
       const auto patches = build(mesh, variant);

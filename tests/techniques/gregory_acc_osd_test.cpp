@@ -37,7 +37,7 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
   size_t compared_patches = 0;
   for (const char* name : {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj"}) {
     const Mesh mesh = loadObjFile(testing::assetPath(name));
-    const GregoryStencils stencils = buildGregoryStencils(mesh, TangentMask::kFarCompatible);
+    const GregoryStencils stencils = buildGregoryStencils(mesh, TangentMask::kPaper);
     auto refiner = ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
     refiner->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(0));
     Far::PatchTableFactory::Options options(0);
