@@ -223,8 +223,8 @@ TEST(GregoryAccRejects, FacesAboveTheMaximumSize) {
   for (int i = 0; i < 33; ++i) {
     obj += "v " + std::to_string(std::cos(i * 0.19)) + " " + std::to_string(std::sin(i * 0.19)) +
            " 0\n";
-    front += " " + std::to_string(i + 1);
-    back += " " + std::to_string(33 - i);
+    front.append(" ").append(std::to_string(i + 1));
+    back.append(" ").append(std::to_string(33 - i));
   }
   EXPECT_EQ(rejection(obj + front + "\n" + back + "\n"),
             "gregory_acc: test.obj: face 0 (line 34) has 33 vertices; gregory_acc needs 3..32");
@@ -385,6 +385,45 @@ TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
         }
       }
     }
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// Oracle: a hand count of gregory_eval.h / gregory_acc.tese at an interior point.
+//   1 - u, 1 - v                                   2 add
+//   4 blends: a+b (1 add), a+b == 0 (1 cmp), 1/(a+b) (1 div),
+//     (fp a + fm b) inv (9 mul, 3 add), (fp - fm)(inv inv) (4 mul, 3 add),
+//     two derivatives (a_u b - b_u a) diff (5 mul, 1 add each)    x4: 36 add, 92 mul, 4 div, 4 cmp
+//   2 Bernstein bases: s (1 add), b (10 mul), d (10 mul, 2 add)  x2: 6 add, 40 mul
+//   4 rows x (4 x (row, row_u): 24 mul, 24 add; position, tangent_u, tangent_v: 9 mul, 9 add)
+//                                                  132 add, 132 mul
+//   4 interior derivative terms: w (1 mul), 2 x (3 mul, 3 add)      24 add, 28 mul
+//   normal: cross (6 mul, 3 add), dot (3 mul, 2 add), sqrt, len > 0, 1/len, scale (3 mul)
+//                                                  5 add, 12 mul, 1 sqrt, 1 cmp, 1 div
+//   edge_symmetric: v == 0, u == 1, v == 1, u == 0   4 cmp
+// Set-up: every stencil entry is one vec3 multiply-add: 3 mul + 3 add.
+TEST(GregoryAcc, OperationCountsMatchAHandCount) {
+  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  for (const char* variant : {"asymmetric", "edge_symmetric"}) {
+    const auto patches = build(mesh, variant);
+    const std::optional<OperationProfile> profile = patches->operationProfile(2);
+    ASSERT_TRUE(profile.has_value());
+    EXPECT_EQ(profile->per_vertex.add, 205u);
+    EXPECT_EQ(profile->per_vertex.mul, 304u);
+    EXPECT_EQ(profile->per_vertex.div, 5u);
+    EXPECT_EQ(profile->per_vertex.sqrt, 1u);
+    EXPECT_EQ(profile->per_vertex.compare, std::string(variant) == "asymmetric" ? 5u : 9u);
+    const GregoryStencils stencils = buildGregoryStencils(mesh);
+    uint64_t entries = 0;
+    for (uint32_t s : stencils.patch_points[2]) entries += stencils.offsets[s + 1] - stencils.offsets[s];
+    EXPECT_EQ(profile->per_patch_setup.mul, 3 * entries);
+    EXPECT_EQ(profile->per_patch_setup.add, 3 * entries);
+    EXPECT_EQ(profile->per_patch_setup.div + profile->per_patch_setup.compare, 0u);
   }
 }
 
