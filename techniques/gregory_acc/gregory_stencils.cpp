@@ -155,8 +155,7 @@ Rings buildRings(const Mesh& mesh) {
   Rings out;
   out.rings.resize(mesh.positions.size());
   std::unordered_map<uint64_t, uint32_t> face_of_directed;  // (a -> b) -> face
-  std::vector<uint32_t> first_face(mesh.positions.size(), UINT32_MAX);
-  std::vector<uint32_t> face_count(mesh.positions.size(), 0);
+  std::vector<std::vector<uint32_t>> vertex_faces(mesh.positions.size());
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
     for (uint32_t k = 0; k < fv.size(); ++k) {
@@ -167,21 +166,21 @@ Rings buildRings(const Mesh& mesh) {
                     "); faces must be consistently oriented";
         return out;
       }
-      if (first_face[a] == UINT32_MAX) first_face[a] = uint32_t(f);
-      ++face_count[a];
+      vertex_faces[a].push_back(uint32_t(f));
     }
   }
   for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
-    if (first_face[v] == UINT32_MAX) continue;
+    if (vertex_faces[v].empty()) continue;
+    const uint32_t face_count = uint32_t(vertex_faces[v].size());
     Ring& ring = out.rings[v];
     // Start a boundary vertex's walk at the face after its boundary edge: the face
     // whose edge (v, neighbour) has no face on the other side (no directed edge w -> v).
-    uint32_t start_face = first_face[v];
-    for (uint32_t f = first_face[v]; f < mesh.faceCount(); ++f) {
+    uint32_t start_face = vertex_faces[v].front();
+    for (uint32_t f : vertex_faces[v]) {
       const auto fv = mesh.facePositions(f);
       for (uint32_t k = 0; k < fv.size(); ++k) {
         if (fv[k] == v && !face_of_directed.count(directedKey(fv[(k + 1) % fv.size()], v))) {
-          start_face = uint32_t(f);
+          start_face = f;
           ring.boundary = true;
           break;
         }
@@ -189,7 +188,7 @@ Rings buildRings(const Mesh& mesh) {
       if (ring.boundary) break;
     }
     uint32_t f = start_face;
-    for (uint32_t step = 0; step <= face_count[v]; ++step) {
+    for (uint32_t step = 0; step <= face_count; ++step) {
       const auto fv = mesh.facePositions(f);
       const size_t size = fv.size();
       uint32_t k = 0;
@@ -205,7 +204,7 @@ Rings buildRings(const Mesh& mesh) {
       f = next->second;
       if (f == start_face) break;
     }
-    if (ring.faces() != face_count[v]) {
+    if (ring.faces() != face_count) {
       out.error = prefix(mesh) + "vertex " + std::to_string(v) +
                   " is non-manifold (its faces form more than one fan)";
       return out;

@@ -52,7 +52,9 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
     for (int v = 0; v < vertex_count; ++v) {
       for (int k = 0; k < 3; ++k) points[v].p[k] = mesh.positions[v][k];
     }
-    const Far::StencilTable* local = table->GetLocalPointStencilTable();
+    // The templated accessor: the untemplated one downcasts to StencilTable, which UBSan
+    // flags (the object is a StencilTableReal<float>).
+    const Far::StencilTableReal<float>* local = table->GetLocalPointStencilTable<float>();
     if (local == nullptr) continue;  // no irregular face (catmark_edgecorner)
     std::vector<Point3> local_points(local->GetNumStencils());
     local->UpdateValues(points.data(), local_points.data());
