@@ -30,6 +30,17 @@ class GregoryPatches final : public SurfacePatches {
     for (const Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
     weights_f_.reserve(stencils_.weights.size());
     for (double w : stencils_.weights) weights_f_.push_back(float(w));
+    // The control points of every patch, once (what the TCS computes per draw).
+    points_d_.reserve(patchCount());
+    points_f_.reserve(patchCount());
+    for (size_t p = 0; p < patchCount(); ++p) {
+      points_d_.push_back(controlPoints<double>(
+          p, [this](uint32_t i) { return positions_[i]; },
+          [this](uint32_t k) { return stencils_.weights[k]; }));
+      points_f_.push_back(controlPoints<float>(
+          p, [this](uint32_t i) { return positions_f_[i]; },
+          [this](uint32_t k) { return weights_f_[k]; }));
+    }
   }
 
   PatchDomain domain() const override { return PatchDomain::kQuad; }
@@ -44,17 +55,14 @@ class GregoryPatches final : public SurfacePatches {
   uint32_t sourceFace(size_t patch) const override { return build_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
-    const GregoryPoints<double> cp = controlPoints<double>(
-        patch, [this](uint32_t i) { return positions_[i]; },
-        [this](uint32_t k) { return stencils_.weights[k]; });
     const GregoryPoint<double> point =
-        evaluateGregory(cp, coord[0], coord[1], symmetric_edges_);
+        evaluateGregory(points_d_[patch], coord[0], coord[1], symmetric_edges_);
     return {point.position, point.normal};
   }
 
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
-    const GregoryPoint<float> point = evaluateGregory(
-        floatControlPoints(patch), coord[0], coord[1], symmetric_edges_);
+    const GregoryPoint<float> point =
+        evaluateGregory(points_f_[patch], coord[0], coord[1], symmetric_edges_);
     return {point.position, point.normal};
   }
 
@@ -127,18 +135,14 @@ class GregoryPatches final : public SurfacePatches {
     return cp;
   }
 
-  GregoryPoints<float> floatControlPoints(size_t patch) const {
-    return controlPoints<float>(
-        patch, [this](uint32_t i) { return positions_f_[i]; },
-        [this](uint32_t k) { return weights_f_[k]; });
-  }
-
   std::vector<Vec3d> positions_;  // the input control mesh's, which every stencil reads
   GregoryBuild build_;
   const GregoryStencils& stencils_;
   bool symmetric_edges_;
   std::vector<Vec3f> positions_f_;
   std::vector<float> weights_f_;
+  std::vector<GregoryPoints<double>> points_d_;
+  std::vector<GregoryPoints<float>> points_f_;
   std::vector<std::string> warnings_;
 };
 
