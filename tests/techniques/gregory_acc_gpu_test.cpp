@@ -12,21 +12,16 @@
 #include "harness/mesh/obj_loader.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/techniques/gregory_acc_test_support.h"
 #include "tests/test_support.h"
 
 namespace tb::gregory_acc {
 namespace {
 
-const char* const kSupported[] = {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_torus.obj",
-                                  "opensubdiv/catmark_toroidal_tet.obj",
-                                  "opensubdiv/catmark_pyramid.obj",
-                                  "opensubdiv/catmark_quadstrips.obj",
-                                  "opensubdiv/catmark_edgecorner.obj",
-                                  "opensubdiv/catmark_xord_interior.obj",
-                                  "opensubdiv/catmark_nonquads.obj",
-                                  "opensubdiv/catmark_gregory_test2.obj",
-                                  "opensubdiv/catmark_gregory_test5.obj",
-                                  "opensubdiv/loop_icosahedron.obj"};
+const std::vector<std::string>& supported() {
+  static const std::vector<std::string> kAssets = testing::supportedBundledAssets();
+  return kAssets;
+}
 
 // Distance in units in the last place (0 for equal values, +0 and -0 included).
 int64_t ulpDistance(float a, float b) {
@@ -67,8 +62,8 @@ std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& varia
 TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
-    for (const char* name : kSupported) {
-      const Mesh mesh = loadObjFile(testing::assetPath(name));
+    for (const std::string& name : supported()) {
+      const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
       const auto patches = build(mesh, variant);
       for (const Case& c : kCases) {
         const gpu::PatchProgramCapture capture = run(context, *patches, c);
@@ -96,10 +91,9 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
 
 TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  for (const char* name : kSupported) {
-    const Mesh mesh = loadObjFile(testing::assetPath(name));
+  for (const std::string& name : supported()) {
+    const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
     const auto patches = build(mesh, "edge_symmetric");
-    const Mesh& control = patches->controlMesh();
     const Case c = kCases[1];
     const gpu::PatchProgramCapture capture = run(context, *patches, c);
     using Key = std::tuple<uint32_t, uint32_t, uint32_t>;
@@ -116,9 +110,9 @@ TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
         default: return {0.0f, 1.0f - t};
       }
     };
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
     size_t compared = 0;
     for (const gpu::CapturedVertex& v : capture.vertices) {
-      const auto fv = control.facePositions(v.patch);
       for (int corner = 0; corner < 4; ++corner) {
         float t;
         const float x = v.coord[0], y = v.coord[1];
@@ -127,24 +121,19 @@ TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
         else if (corner == 2 && y == 1.0f) t = 1.0f - x;
         else if (corner == 3 && x == 0.0f) t = 1.0f - y;
         else continue;
-        const uint32_t a = fv[corner], b = fv[(corner + 1) % 4];
-        for (size_t g = 0; g < control.faceCount(); ++g) {
-          const auto gv = control.facePositions(g);
-          for (int k = 0; k < 4; ++k) {
-            if (gv[k] != b || gv[(k + 1) % 4] != a) continue;
-            const auto [gu, gw] = coordOnEdge(k, 1.0f - t);
-            const auto it = by_coord.find(
-                {uint32_t(g), std::bit_cast<uint32_t>(gu), std::bit_cast<uint32_t>(gw)});
-            ASSERT_NE(it, by_coord.end()) << name << " patch " << g << " lacks " << gu << ","
-                                          << gw;
-            ++compared;
-            EXPECT_TRUE(it->second == v.position)
-                << name << " patches " << v.patch << "/" << g << " t " << t;
-          }
-        }
+        const testing::EdgeTwin twin = twins[v.patch * 4 + corner];
+        if (twin.face < 0) continue;
+        const auto [gu, gw] = coordOnEdge(twin.corner, 1.0f - t);
+        const auto it = by_coord.find(
+            {uint32_t(twin.face), std::bit_cast<uint32_t>(gu), std::bit_cast<uint32_t>(gw)});
+        ASSERT_NE(it, by_coord.end()) << name << " patch " << twin.face << " lacks " << gu
+                                      << "," << gw;
+        ++compared;
+        EXPECT_TRUE(it->second == v.position)
+            << name << " patches " << v.patch << "/" << twin.face << " t " << t;
       }
     }
-    EXPECT_GT(compared, 8 * control.faceCount()) << name;
+    EXPECT_GT(compared, 8 * patches->patchCount()) << name;
   }
 }
 

@@ -14,25 +14,27 @@
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "techniques/registry.h"
+#include "tests/techniques/gregory_acc_test_support.h"
 #include "tests/test_support.h"
 
 namespace tb::gregory_acc {
 namespace {
 
-// Bundled assets gregory_acc supports: all-quad, mixed (refined once), with smooth
-// boundaries, and a triangle mesh (Catmull-Clark of triangles).
-const char* const kSupported[] = {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_torus.obj",
-                                  "opensubdiv/catmark_toroidal_tet.obj",
-                                  "opensubdiv/catmark_pyramid.obj",
-                                  "opensubdiv/catmark_quadstrips.obj",
-                                  "opensubdiv/catmark_edgecorner.obj",
-                                  "opensubdiv/catmark_xord_interior.obj",
-                                  "opensubdiv/catmark_nonquads.obj",
-                                  "opensubdiv/catmark_gregory_test2.obj",
-                                  "opensubdiv/catmark_gregory_test5.obj",
-                                  "opensubdiv/loop_icosahedron.obj"};
+// The bundled assets gregory_acc supports, pinned: all-quad, mixed (refined once), with
+// smooth boundaries, and triangle meshes (Catmull-Clark of triangles).
+const std::vector<std::string> kSupported = {
+    "opensubdiv/catmark_cube.obj",          "opensubdiv/catmark_edgecorner.obj",
+    "opensubdiv/catmark_gregory_test2.obj", "opensubdiv/catmark_gregory_test5.obj",
+    "opensubdiv/catmark_nonquads.obj",      "opensubdiv/catmark_pyramid.obj",
+    "opensubdiv/catmark_quadstrips.obj",    "opensubdiv/catmark_toroidal_tet.obj",
+    "opensubdiv/catmark_torus.obj",         "opensubdiv/catmark_xord_interior.obj",
+    "opensubdiv/loop_cube.obj",             "opensubdiv/loop_icosahedron.obj",
+    "opensubdiv/loop_toroidal_tet.obj",     "opensubdiv/loop_triangle_edgecorner.obj",
+    "opensubdiv/loop_xord_interior.obj",    "tessbench/cylinder_seam.obj",
+    "tessbench/flat_cube.obj",              "tessbench/tri_pawn.obj",
+    "tessbench/tri_torus.obj"};
 
-Mesh load(const std::string& name) { return loadObjFile(testing::assetPath(name)); }
+Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
 
 double bboxDiagonal(const Mesh& mesh) {
   Vec3d lo = mesh.positions[0], hi = lo;
@@ -67,7 +69,7 @@ TEST(GregoryAcc, IsRegistered) {
 TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
   const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
   size_t regular_faces = 0;
-  for (const char* name : kSupported) {
+  for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh);
     const Mesh& control = patches->controlMesh();
@@ -104,31 +106,26 @@ DomainCoord edgeCoord(int corner, double t) {
 }
 
 TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
-  for (const char* name : kSupported) {
+  for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "asymmetric");
     const Mesh& control = patches->controlMesh();
     const double diagonal = bboxDiagonal(mesh);
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     size_t edges = 0;
     for (size_t f = 0; f < control.faceCount(); ++f) {
-      const auto fv = control.facePositions(f);
       for (int c = 0; c < 4; ++c) {
-        const uint32_t a = fv[c], b = fv[(c + 1) % 4];
-        for (size_t g = 0; g < control.faceCount(); ++g) {
-          const auto gv = control.facePositions(g);
-          for (int k = 0; k < 4; ++k) {
-            if (gv[k] != b || gv[(k + 1) % 4] != a) continue;
-            ++edges;
-            for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
-              const Vec3d p = patches->evaluate(f, edgeCoord(c, t)).position;
-              const Vec3d q = patches->evaluate(g, edgeCoord(k, 1 - t)).position;
-              ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << g;
-            }
-          }
+        const testing::EdgeTwin twin = twins[f * 4 + c];
+        if (twin.face < 0) continue;
+        ++edges;
+        for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
+          const Vec3d p = patches->evaluate(f, edgeCoord(c, t)).position;
+          const Vec3d q = patches->evaluate(size_t(twin.face), edgeCoord(twin.corner, 1 - t)).position;
+          ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << twin.face;
         }
       }
     }
-    // Every directed edge but the boundary ones has its twin.
+    // Every directed edge but the boundary ones has its twin (oracle: the topology).
     EXPECT_EQ(edges, 4 * control.faceCount() - buildTopology(control).boundaryEdgeCount())
         << name;
   }
@@ -141,31 +138,26 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
     if (d[1] == 0.0f) ts.push_back(d[0]);
   }
   ASSERT_GT(ts.size(), 5u);
-  for (const char* name : kSupported) {
+  auto coordF = [](int corner, float t) -> tess::DomainPoint {
+    switch (corner) {
+      case 0: return {t, 0, 0};
+      case 1: return {1, t, 0};
+      case 2: return {1 - t, 1, 0};
+      default: return {0, 1 - t, 0};
+    }
+  };
+  for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "edge_symmetric");
-    const Mesh& control = patches->controlMesh();
-    auto coordF = [](int corner, float t) -> tess::DomainPoint {
-      switch (corner) {
-        case 0: return {t, 0, 0};
-        case 1: return {1, t, 0};
-        case 2: return {1 - t, 1, 0};
-        default: return {0, 1 - t, 0};
-      }
-    };
-    for (size_t f = 0; f < control.faceCount(); ++f) {
-      const auto fv = control.facePositions(f);
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       for (int c = 0; c < 4; ++c) {
-        for (size_t g = 0; g < control.faceCount(); ++g) {
-          const auto gv = control.facePositions(g);
-          for (int k = 0; k < 4; ++k) {
-            if (gv[k] != fv[(c + 1) % 4] || gv[(k + 1) % 4] != fv[c]) continue;
-            for (float t : ts) {
-              const Vec3f p = patches->evaluateFloat(f, coordF(c, t)).position;
-              const Vec3f q = patches->evaluateFloat(g, coordF(k, 1 - t)).position;
-              ASSERT_TRUE(p == q) << name << " faces " << f << "," << g << " t " << t;
-            }
-          }
+        const testing::EdgeTwin twin = twins[f * 4 + c];
+        if (twin.face < 0) continue;
+        for (float t : ts) {
+          const Vec3f p = patches->evaluateFloat(f, coordF(c, t)).position;
+          const Vec3f q = patches->evaluateFloat(size_t(twin.face), coordF(twin.corner, 1 - t)).position;
+          ASSERT_TRUE(p == q) << name << " faces " << f << "," << twin.face << " t " << t;
         }
       }
     }
@@ -173,7 +165,7 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
 }
 
 TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
-  for (const char* name : kSupported) {
+  for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "exact_tangents");
     const Mesh& control = patches->controlMesh();
@@ -330,7 +322,7 @@ TEST(GregoryAccRejects, NoFaces) {
 
 TEST(GregoryAcc, SupportsExactlyTheClosedUntaggedQuadAssets) {
   GregoryAccTechnique technique;
-  for (const char* name : kSupported) EXPECT_EQ(technique.checkSupport(load(name)), "") << name;
+  EXPECT_EQ(testing::supportedBundledAssets(), kSupported);
   EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_pawn.obj")), "");
   EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_smoothtris0.obj")), "");
   EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_gregory_test8.obj")), "");
@@ -368,7 +360,7 @@ namespace {
 // Oracle: central finite differences of the position (the normal includes the
 // derivative of the rational face-point blend, which regular faces do not exercise).
 TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
-  for (const char* name : kSupported) {
+  for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "asymmetric");
     const Mesh& control = patches->controlMesh();
