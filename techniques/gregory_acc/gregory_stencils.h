@@ -49,7 +49,7 @@ std::string checkGregorySupport(const Mesh& mesh);
 // Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
 enum class TangentMask {
   kPaper,       // Loop et al. 2009 / OpenSubdiv Far's Gregory basis (averaged ACC face
-                // points); smaller parametric error than kExactLimit on every bundled
+                // points); parametric error no larger than kExactLimit's on every bundled
                 // asset measured
   kExactLimit,  // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
 };
