@@ -1,0 +1,193 @@
+#include "techniques/gregory_acc/gregory_acc.h"
+
+#include <bit>
+
+#include "techniques/gregory_acc/gregory_eval.h"
+#include "techniques/gregory_acc/gregory_stencils.h"
+#include "techniques/registry.h"
+
+namespace tb::gregory_acc {
+namespace {
+
+constexpr uint64_t kGpuVertexBytes = 16;        // vec4 position (std430)
+constexpr uint64_t kStencilEntryBytes = 8;      // uvec2 (vertex index, float weight bits)
+constexpr uint64_t kStencilOffsetBytes = 4;     // uint per stencil + 1
+constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control point
+
+class GregoryPatches final : public SurfacePatches {
+ public:
+  GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask)
+      : positions_(mesh.positions),
+        build_(buildGregory(mesh, mask)),
+        stencils_(build_.stencils),
+        symmetric_edges_(symmetric_edges) {
+    if (build_.refined) {
+      warnings_.push_back("non-quad faces: the mesh was refined once (Catmull-Clark) and " +
+                          std::to_string(build_.control.faceCount()) +
+                          " quad Gregory patches built on the refined mesh");
+    }
+    positions_f_.reserve(positions_.size());
+    for (const Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
+    weights_f_.reserve(stencils_.weights.size());
+    for (double w : stencils_.weights) weights_f_.push_back(float(w));
+    // The control points of every patch, once (what the TCS computes per draw).
+    points_d_.reserve(patchCount());
+    points_f_.reserve(patchCount());
+    for (size_t p = 0; p < patchCount(); ++p) {
+      points_d_.push_back(controlPoints<double>(
+          p, [this](uint32_t i) { return positions_[i]; },
+          [this](uint32_t k) { return stencils_.weights[k]; }));
+      points_f_.push_back(controlPoints<float>(
+          p, [this](uint32_t i) { return positions_f_[i]; },
+          [this](uint32_t k) { return weights_f_[k]; }));
+    }
+  }
+
+  PatchDomain domain() const override { return PatchDomain::kQuad; }
+  size_t patchCount() const override { return build_.control.faceCount(); }
+  const Mesh& controlMesh() const override { return build_.control; }
+
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    const auto face = build_.control.facePositions(patch);
+    return {face[0], face[1], face[2], face[3]};
+  }
+
+  uint32_t sourceFace(size_t patch) const override { return build_.source_face[patch]; }
+
+  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+    const GregoryPoint<double> point =
+        evaluateGregory(points_d_[patch], coord[0], coord[1], symmetric_edges_);
+    return {point.position, point.normal};
+  }
+
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    const GregoryPoint<float> point =
+        evaluateGregory(points_f_[patch], coord[0], coord[1], symmetric_edges_);
+    return {point.position, point.normal};
+  }
+
+  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+    gpu::GpuPatchProgram program;
+    program.control_shader = "gregory_acc/gregory_acc.tesc";
+    program.evaluation_shader = "gregory_acc/gregory_acc.tese";
+    program.domain = tess::Domain::kQuad;
+    program.patch_count = uint32_t(patchCount());
+    std::vector<uint32_t> vertices;
+    for (const Vec3f& p : positions_f_) {
+      for (float x : {p.x, p.y, p.z, 1.0f}) vertices.push_back(std::bit_cast<uint32_t>(x));
+    }
+    std::vector<uint32_t> entries;
+    for (size_t k = 0; k < stencils_.indices.size(); ++k) {
+      entries.push_back(stencils_.indices[k]);
+      entries.push_back(std::bit_cast<uint32_t>(weights_f_[k]));
+    }
+    std::vector<uint32_t> patch_points;
+    for (const auto& points : stencils_.patch_points) {
+      patch_points.insert(patch_points.end(), points.begin(), points.end());
+    }
+    program.storage_buffers = {std::move(vertices), stencils_.offsets, std::move(entries),
+                               std::move(patch_points)};
+    program.specialization = {symmetric_edges_ ? 1u : 0u};
+    return program;
+  }
+
+  std::optional<OperationProfile> operationProfile(size_t patch) const override {
+    using C = CountingScalar<float>;
+    OperationProfile profile;
+    resetOperationCounts();
+    const GregoryPoints<C> cp = controlPoints<C>(
+        patch,
+        [this](uint32_t i) {
+          const Vec3f& p = positions_f_[i];
+          return Vec3T<C>{p.x, p.y, p.z};
+        },
+        [this](uint32_t k) { return C(weights_f_[k]); });
+    profile.per_patch_setup = operationCounts();
+    resetOperationCounts();
+    evaluateGregory(cp, C(0.3f), C(0.6f), symmetric_edges_);
+    profile.per_vertex = operationCounts();
+    resetOperationCounts();
+    profile.note = std::string("20 stencil sums per patch (TCS); interior point, ") +
+                   (symmetric_edges_ ? "edge_symmetric" : "asymmetric") +
+                   " order, position + analytic normal (TES)";
+    return profile;
+  }
+
+  DataFootprint footprint() const override {
+    DataFootprint footprint;
+    footprint.control_mesh_bytes = positions_.size() * kGpuVertexBytes;
+    footprint.patch_data_bytes = stencils_.patch_points.size() * kPointsPerPatch * kPatchPointIdBytes;
+    footprint.stencil_bytes = stencils_.offsets.size() * kStencilOffsetBytes +
+                              stencils_.indices.size() * kStencilEntryBytes;
+    return footprint;
+  }
+
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+ private:
+  template <class T, class PositionAt, class WeightAt>
+  GregoryPoints<T> controlPoints(size_t patch, const PositionAt& position,
+                                 const WeightAt& weight) const {
+    GregoryPoints<T> cp;
+    for (uint32_t i = 0; i < kPointsPerPatch; ++i) {
+      cp[i] = stencilPoint<T>(stencils_, stencils_.patch_points[patch][i], position, weight);
+    }
+    return cp;
+  }
+
+  std::vector<Vec3d> positions_;  // the input control mesh's, which every stencil reads
+  GregoryBuild build_;
+  const GregoryStencils& stencils_;
+  bool symmetric_edges_;
+  std::vector<Vec3f> positions_f_;
+  std::vector<float> weights_f_;
+  std::vector<GregoryPoints<double>> points_d_;
+  std::vector<GregoryPoints<float>> points_f_;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace
+
+const TechniqueInfo& GregoryAccTechnique::info() const {
+  static const TechniqueInfo kInfo{
+      "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad Gregory patches)",
+      "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
+      "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
+      "closed manifold Catmull-Clark meshes, valence and face size 3..32, no crease/corner/"
+      "hole/smoothtriangles tags; meshes with non-quad faces are refined once"};
+  return kInfo;
+}
+
+std::vector<VariantInfo> GregoryAccTechnique::variants() const {
+  return {
+      {"edge_symmetric",
+       "tensor-product Bernstein inside; domain-boundary points from the shared edge curve "
+       "evaluated symmetrically (watertight in float)",
+       {{"symmetric_edges", 1.0}}},
+      {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
+       {{"symmetric_edges", 0.0}}},
+      {"exact_tangents",
+       "edge_symmetric, edge points from the exact Catmull-Clark limit tangent masks "
+       "(Halstead et al. 1993) instead of the paper's averaged face points",
+       {{"symmetric_edges", 1.0}, {"exact_tangents", 1.0}}},
+  };
+}
+
+std::string GregoryAccTechnique::checkSupport(const Mesh& mesh) const {
+  return checkGregorySupport(mesh);
+}
+
+std::unique_ptr<SurfacePatches> GregoryAccTechnique::buildPatches(
+    const Mesh& mesh, const VariantInfo& variant) const {
+  const auto symmetric = variant.parameters.find("symmetric_edges");
+  const bool symmetric_edges = symmetric == variant.parameters.end() || symmetric->second != 0.0;
+  const auto exact = variant.parameters.find("exact_tangents");
+  const TangentMask mask = exact != variant.parameters.end() && exact->second != 0.0
+                               ? TangentMask::kExactLimit
+                               : TangentMask::kPaper;
+  return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask);
+}
+
+TB_REGISTER_TECHNIQUE(GregoryAccTechnique);
+
+}  // namespace tb::gregory_acc

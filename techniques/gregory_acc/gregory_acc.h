@@ -1,0 +1,20 @@
+// The `gregory_acc` technique: Catmull-Clark limit surfaces approximated by quad Gregory
+// patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC").
+// Closed, manifold, all-quad meshes without crease, corner or hole tags (see
+// checkGregorySupport for the exact rules and messages).
+#pragma once
+
+#include "techniques/technique.h"
+
+namespace tb::gregory_acc {
+
+class GregoryAccTechnique final : public Technique {
+ public:
+  const TechniqueInfo& info() const override;
+  std::vector<VariantInfo> variants() const override;
+  std::string checkSupport(const Mesh& mesh) const override;
+  std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
+                                               const VariantInfo& variant) const override;
+};
+
+}  // namespace tb::gregory_acc

@@ -1,0 +1,138 @@
+// Evaluation of a quad Gregory patch from its 20 control points, templated on the scalar
+// so one operation order runs in double, in float (the TES order, shaders/gregory_acc/
+// gregory_acc.tese) and with CountingScalar. Keep the two in step.
+#pragma once
+
+#include <array>
+
+#include "harness/mesh/vec.h"
+#include "techniques/gregory_acc/gregory_stencils.h"
+
+namespace tb::gregory_acc {
+
+template <class T>
+using GregoryPoints = std::array<Vec3T<T>, kPointsPerPatch>;  // corner * 5 + Slot
+
+template <class T>
+struct GregoryPoint {
+  Vec3T<T> position;
+  Vec3T<T> normal;
+};
+
+// One control point as its stencil's weighted sum, ascending vertex index, from zero
+// (the TCS loop).
+template <class T, class PositionAt>
+Vec3T<T> stencilPoint(const GregoryStencils& stencils, uint32_t s, const PositionAt& position,
+                      const auto& weight) {
+  Vec3T<T> sum{T(0), T(0), T(0)};
+  for (uint32_t k = stencils.offsets[s]; k < stencils.offsets[s + 1]; ++k) {
+    sum = sum + position(stencils.indices[k]) * weight(k);
+  }
+  return sum;
+}
+
+// Half of a cubic edge curve: p x^3 + e 3 x^2 y. The curve from A (t = 0) to B is
+// half(A, EA, s, t) + half(B, EB, t, s) with s = 1 - t: swapping the ends swaps the two
+// halves and float addition commutes, so both patches of an edge get the same bits
+// (seed 000's symmetric evaluation; DESIGN.md watertightness rule 2).
+template <class T>
+Vec3T<T> halfEdge(const Vec3T<T>& p, const Vec3T<T>& e, T x, T y) {
+  const T x2 = x * x;
+  return p * (x2 * x) + e * ((T(3) * x2) * y);
+}
+
+template <class T>
+Vec3T<T> symmetricEdge(const Vec3T<T>& a, const Vec3T<T>& ea, const Vec3T<T>& eb,
+                       const Vec3T<T>& b, T t) {
+  const T s = T(1) - t;
+  return halfEdge(a, ea, s, t) + halfEdge(b, eb, t, s);
+}
+
+// Cubic Bernstein basis and derivative at t.
+template <class T>
+void bernstein3(T t, std::array<T, 4>& b, std::array<T, 4>& d) {
+  const T s = T(1) - t;
+  b = {s * s * s, T(3) * s * s * t, T(3) * s * t * t, t * t * t};
+  d = {T(-3) * s * s, T(3) * s * (s - T(2) * t), T(3) * t * (T(2) * s - t), T(3) * t * t};
+}
+
+// Rationally blended face point (a Fp + b Fm) / (a + b) and its derivatives, given the
+// derivatives of a and b (Loop et al. 2009 eq. 2). At the patch corner a + b = 0: the
+// point's Bernstein weight and derivative weight are zero there, so the mean is used.
+template <class T>
+void blendFace(const Vec3T<T>& fp, const Vec3T<T>& fm, T a, T b, T a_u, T b_u, T a_v, T b_v,
+               Vec3T<T>& q, Vec3T<T>& q_u, Vec3T<T>& q_v) {
+  const T sum = a + b;
+  if (sum == T(0)) {
+    q = (fp + fm) * T(0.5);
+    q_u = q_v = Vec3T<T>{T(0), T(0), T(0)};
+    return;
+  }
+  const T inv = T(1) / sum;
+  q = (fp * a + fm * b) * inv;
+  const Vec3T<T> diff = (fp - fm) * (inv * inv);
+  q_u = diff * (a_u * b - b_u * a);
+  q_v = diff * (a_v * b - b_v * a);
+}
+
+// Position and unit normal at (u, v). `symmetric_edges`: points on the domain boundary
+// come from the shared edge curve alone, evaluated symmetrically.
+template <class T>
+GregoryPoint<T> evaluateGregory(const GregoryPoints<T>& cp, T u, T v, bool symmetric_edges) {
+  const T one(1), zero(0);
+  const T iu = one - u, iv = one - v;
+  // 4x4 Bézier net q[j][i] (row j along v, column i along u); the four interior points
+  // depend on (u, v). Corner c's interior point blends Fp (next to the edge to corner
+  // c + 1) and Fm (next to the edge to corner c - 1), each taking over on its own edge.
+  std::array<std::array<Vec3T<T>, 4>, 4> q;
+  std::array<std::array<Vec3T<T>, 4>, 4> q_u{}, q_v{};
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  q[0] = {at(0, kP), at(0, kEp), at(1, kEm), at(1, kP)};
+  q[3] = {at(3, kP), at(3, kEm), at(2, kEp), at(2, kP)};
+  q[1][0] = at(0, kEm);
+  q[1][3] = at(1, kEp);
+  q[2][0] = at(3, kEp);
+  q[2][3] = at(2, kEm);
+  blendFace(at(0, kFp), at(0, kFm), u, v, one, zero, zero, one, q[1][1], q_u[1][1], q_v[1][1]);
+  blendFace(at(1, kFp), at(1, kFm), v, iu, zero, -one, one, zero, q[1][2], q_u[1][2], q_v[1][2]);
+  blendFace(at(2, kFp), at(2, kFm), iu, iv, -one, zero, zero, -one, q[2][2], q_u[2][2],
+            q_v[2][2]);
+  blendFace(at(3, kFp), at(3, kFm), iv, u, zero, one, -one, zero, q[2][1], q_u[2][1], q_v[2][1]);
+
+  std::array<T, 4> bu, du, bv, dv;
+  bernstein3(u, bu, du);
+  bernstein3(v, bv, dv);
+  Vec3T<T> position{zero, zero, zero}, tangent_u = position, tangent_v = position;
+  for (int j = 0; j < 4; ++j) {
+    Vec3T<T> row{zero, zero, zero}, row_u = row;
+    for (int i = 0; i < 4; ++i) {
+      row = row + q[j][i] * bu[i];
+      row_u = row_u + q[j][i] * du[i];
+    }
+    position = position + row * bv[j];
+    tangent_u = tangent_u + row_u * bv[j];
+    tangent_v = tangent_v + row * dv[j];
+  }
+  // Derivatives of the blended interior points.
+  for (int j = 1; j < 3; ++j) {
+    for (int i = 1; i < 3; ++i) {
+      const T w = bu[i] * bv[j];
+      tangent_u = tangent_u + q_u[j][i] * w;
+      tangent_v = tangent_v + q_v[j][i] * w;
+    }
+  }
+  if (symmetric_edges) {
+    if (v == zero) {
+      position = symmetricEdge(at(0, kP), at(0, kEp), at(1, kEm), at(1, kP), u);
+    } else if (u == one) {
+      position = symmetricEdge(at(1, kP), at(1, kEp), at(2, kEm), at(2, kP), v);
+    } else if (v == one) {
+      position = symmetricEdge(at(3, kP), at(3, kEm), at(2, kEp), at(2, kP), u);
+    } else if (u == zero) {
+      position = symmetricEdge(at(0, kP), at(0, kEm), at(3, kEp), at(3, kP), v);
+    }
+  }
+  return {position, normalize(cross(tangent_u, tangent_v))};
+}
+
+}  // namespace tb::gregory_acc

@@ -1,0 +1,31 @@
+// One uniform Catmull-Clark refinement of a manifold polygon mesh, as stencils
+// over the input vertices. gregory_acc uses it for meshes with non-quad faces: every
+// face of the refined mesh is a quad, and the refined mesh has the same limit surface
+// (OpenSubdiv isolates non-quads the same way), so quad Gregory patches cover it and
+// SurfacePatches keeps a single (quad) domain.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "harness/mesh/mesh.h"
+
+namespace tb::gregory_acc {
+
+using Stencil = std::map<uint32_t, double>;  // input vertex index -> weight, ascending
+
+struct RefinedMesh {
+  // Positions: the input's vertex points first (same indices), then one edge point per
+  // edge, then one face point per face. Face k of face f of the input is the quad
+  // (vertex point k, edge point (k, k+1), face point, edge point (k-1, k)).
+  Mesh mesh;
+  std::vector<Stencil> stencils;      // per refined position, over input positions
+  std::vector<uint32_t> source_face;  // input face of each refined face
+};
+
+// Boundary edges are infinitely sharp and one-face boundary vertices are corners
+// (Sdc EDGE_AND_CORNER). Precondition: checkGregorySupport(mesh) is empty.
+RefinedMesh refineOnce(const Mesh& mesh);
+
+}  // namespace tb::gregory_acc

@@ -1,0 +1,441 @@
+#include "techniques/gregory_acc/gregory_stencils.h"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <unordered_map>
+
+#include "harness/mesh/topology.h"
+#include "techniques/gregory_acc/gregory_refine.h"
+#include "techniques/technique.h"
+
+namespace tb::gregory_acc {
+namespace {
+
+void add(Stencil& into, const Stencil& s, double scale) {
+  for (const auto& [index, weight] : s) into[index] += weight * scale;
+}
+void add(Stencil& into, uint32_t index, double weight) { into[index] += weight; }
+
+// cos and sin of 2 pi k / n, exact at quarter turns so regular vertices get no 1e-17
+// weights (which would cost operations and make the sums order-dependent for nothing).
+double cosTurn(uint32_t k, uint32_t n) {
+  if ((4 * k) % n == 0) {
+    const uint32_t q = (4 * k / n) % 4;
+    return q == 0 ? 1.0 : (q == 2 ? -1.0 : 0.0);
+  }
+  return std::cos(2.0 * std::numbers::pi * double(k) / double(n));
+}
+double sinTurn(uint32_t k, uint32_t n) {
+  if ((4 * k) % n == 0) {
+    const uint32_t q = (4 * k / n) % 4;
+    return q == 1 ? 1.0 : (q == 3 ? -1.0 : 0.0);
+  }
+  return std::sin(2.0 * std::numbers::pi * double(k) / double(n));
+}
+
+uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
+
+// The 1-ring of a vertex of an all-quad mesh, counter-clockwise: face i is
+// (v, neighbour[i], diagonal[i], neighbour[i + 1]) in the face's own winding (indices
+// modulo the valence inside). On a boundary, neighbour[0] and neighbour[faces] are the
+// two boundary neighbours, and there is one more neighbour than faces.
+struct Ring {
+  std::vector<uint32_t> neighbour;
+  std::vector<uint32_t> diagonal;  // one per face
+  bool boundary = false;
+  uint32_t valence() const { return uint32_t(neighbour.size()); }  // edges at the vertex
+  uint32_t faces() const { return uint32_t(diagonal.size()); }
+  // The valence used in the face-point weights cos(2 pi / n): a boundary vertex with k
+  // faces counts as 2k (Loop et al. 2009; a regular boundary vertex then counts as 4).
+  uint32_t effectiveValence() const { return boundary ? 2 * faces() : valence(); }
+  uint32_t indexOf(uint32_t w) const {
+    for (uint32_t i = 0; i < neighbour.size(); ++i) {
+      if (neighbour[i] == w) return i;
+    }
+    return UINT32_MAX;
+  }
+};
+
+// Per vertex: limit position P and the two tangent stencils e0, e1 such that the edge
+// point toward neighbour k is P + cos(2 pi k/n) e0 + sin(2 pi k/n) e1 (Loop et al. 2009
+// §3), scaled so valence 4 gives the B-spline's Bézier edge points.
+struct VertexFrame {
+  Stencil position, e0, e1;
+};
+
+VertexFrame vertexFrame(uint32_t v, const Ring& ring, TangentMask mask) {
+  const uint32_t n = ring.valence();
+  const double dn = double(n);
+  VertexFrame frame;
+  // Limit position: (n^2 v + 4 sum e_i + sum d_i) / (n (n + 5)).
+  add(frame.position, v, dn * dn / (dn * (dn + 5)));
+  for (uint32_t i = 0; i < n; ++i) {
+    add(frame.position, ring.neighbour[i], 4.0 / (dn * (dn + 5)));
+    add(frame.position, ring.diagonal[i], 1.0 / (dn * (dn + 5)));
+  }
+  // Tangents: sum_i cos_i (a e_i) + (cos_i + cos_{i+1}) d_i (sin likewise), times
+  // 1 / (2 (n + 5) n lambda), lambda = (5 + c + sqrt((c + 9)(c + 1))) / 16 the subdominant
+  // eigenvalue, c = cos(2 pi/n). kExactLimit: a = 1 + c + sqrt((1 + c)(9 + c)), the
+  // Catmull-Clark limit tangent mask (Halstead et al. 1993), so the edge points span the
+  // limit tangent plane. kPaper: a = 4 (1 + c), what averaging the ACC face
+  // points f_i = (n v + 2 e_i + 2 e_{i+1} + d_i)/(n + 5) gives (OpenSubdiv Far's Gregory
+  // basis); not the limit tangent plane for n != 4. Both are equal at n = 4.
+  const double c = cosTurn(1, n);
+  const double root = std::sqrt((c + 9) * (c + 1));
+  const double scale = 16.0 / (dn * (c + 5 + root)) / (2 * (dn + 5));
+  const double a = mask == TangentMask::kExactLimit ? 1 + c + root : 4 * (1 + c);
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t ip = (i + 1) % n;
+    add(frame.e0, ring.neighbour[i], scale * a * cosTurn(i, n));
+    add(frame.e1, ring.neighbour[i], scale * a * sinTurn(i, n));
+    add(frame.e0, ring.diagonal[i], scale * (cosTurn(i, n) + cosTurn(ip, n)));
+    add(frame.e1, ring.diagonal[i], scale * (sinTurn(i, n) + sinTurn(ip, n)));
+  }
+  return frame;
+}
+
+// Smooth boundary vertex with k >= 2 faces (Sdc EDGE_AND_CORNER: the boundary is an
+// infinitely sharp crease): P is the boundary B-spline's limit point, e0 its tangent
+// (exact: it involves only the two boundary neighbours, so both patches of a boundary
+// edge agree), e1 the cross-boundary tangent of Loop et al. 2009 (as in OpenSubdiv Far's
+// Gregory basis); the edge point toward neighbour j is P + cos(pi j/k) e0 + sin(pi j/k) e1.
+// A corner (k = 1) interpolates its vertex; its edge points are (2 v + w) / 3.
+VertexFrame boundaryFrame(uint32_t v, const Ring& ring) {
+  const uint32_t k = ring.faces();
+  const double dk = double(k);
+  const uint32_t b0 = ring.neighbour.front(), b1 = ring.neighbour.back();
+  VertexFrame frame;
+  if (k == 1) {  // corner: interpolated; edge points are formed in edgePoint
+    add(frame.position, v, 1.0);
+    return frame;
+  }
+  add(frame.position, v, 4.0 / 6);
+  add(frame.position, b0, 1.0 / 6);
+  add(frame.position, b1, 1.0 / 6);
+  add(frame.e0, b0, 1.0 / 6);
+  add(frame.e0, b1, -1.0 / 6);
+  const double c = std::cos(std::numbers::pi / dk), s = std::sin(std::numbers::pi / dk);
+  const double den = 3 * dk + c;
+  add(frame.e1, v, -4 * s / den / 3);
+  const double alpha_ends = -((1 + 2 * c) * std::sqrt(1 + c)) / (den * std::sqrt(1 - c));
+  add(frame.e1, b0, alpha_ends / 3);
+  add(frame.e1, b1, alpha_ends / 3);
+  for (uint32_t x = 0; x < k; ++x) {
+    const double sx = std::sin(std::numbers::pi * double(x) / dk);
+    const double sx1 = x + 1 == k ? 0.0 : std::sin(std::numbers::pi * double(x + 1) / dk);
+    if (x > 0) add(frame.e1, ring.neighbour[x], 4 * sx / den / 3);
+    add(frame.e1, ring.diagonal[x], (sx + sx1) / den / 3);
+  }
+  return frame;
+}
+
+// Twist term r_i of Loop et al. 2009 (the cross-boundary difference across edge i):
+// (e_{i+1} - e_{i-1})/3 + (d_i - d_{i-1})/6.
+Stencil twist(const Ring& ring, uint32_t i) {
+  const uint32_t n = ring.valence();
+  Stencil r;
+  add(r, ring.neighbour[(i + 1) % n], 1.0 / 3);
+  add(r, ring.neighbour[(i + n - 1) % n], -1.0 / 3);
+  add(r, ring.diagonal[i], 1.0 / 6);
+  add(r, ring.diagonal[(i + n - 1) % n], -1.0 / 6);
+  return r;
+}
+
+std::string prefix(const Mesh& mesh) { return "gregory_acc: " + mesh.source + ": "; }
+
+struct Rings {
+  std::vector<Ring> rings;  // per position; empty for unused positions
+  std::string error;
+};
+
+// Walks every vertex's faces counter-clockwise; reports a vertex whose faces do not form
+// one closed fan (non-manifold vertex) or whose valence is out of range.
+Rings buildRings(const Mesh& mesh) {
+  Rings out;
+  out.rings.resize(mesh.positions.size());
+  std::unordered_map<uint64_t, uint32_t> face_of_directed;  // (a -> b) -> face
+  std::vector<std::vector<uint32_t>> vertex_faces(mesh.positions.size());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto fv = mesh.facePositions(f);
+    for (uint32_t k = 0; k < fv.size(); ++k) {
+      const uint32_t a = fv[k], b = fv[(k + 1) % fv.size()];
+      if (!face_of_directed.emplace(directedKey(a, b), uint32_t(f)).second) {
+        out.error = prefix(mesh) + "edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                    ") is used twice in the same direction (" + describeFace(mesh, f) +
+                    "); faces must be consistently oriented";
+        return out;
+      }
+      vertex_faces[a].push_back(uint32_t(f));
+    }
+  }
+  for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
+    if (vertex_faces[v].empty()) continue;
+    const uint32_t face_count = uint32_t(vertex_faces[v].size());
+    Ring& ring = out.rings[v];
+    // Start a boundary vertex's walk at the face after its boundary edge: the face
+    // whose edge (v, neighbour) has no face on the other side (no directed edge w -> v).
+    uint32_t start_face = vertex_faces[v].front();
+    for (uint32_t f : vertex_faces[v]) {
+      const auto fv = mesh.facePositions(f);
+      for (uint32_t k = 0; k < fv.size(); ++k) {
+        if (fv[k] == v && !face_of_directed.count(directedKey(fv[(k + 1) % fv.size()], v))) {
+          start_face = f;
+          ring.boundary = true;
+          break;
+        }
+      }
+      if (ring.boundary) break;
+    }
+    uint32_t f = start_face;
+    for (uint32_t step = 0; step <= face_count; ++step) {
+      const auto fv = mesh.facePositions(f);
+      const size_t size = fv.size();
+      uint32_t k = 0;
+      while (fv[k] != v) ++k;
+      ring.neighbour.push_back(fv[(k + 1) % size]);
+      ring.diagonal.push_back(fv[(k + 2) % size]);  // meaningful on quads only
+      const uint32_t last = fv[(k + size - 1) % size];
+      const auto next = face_of_directed.find(directedKey(v, last));
+      if (next == face_of_directed.end()) {
+        ring.neighbour.push_back(last);  // the second boundary neighbour
+        break;
+      }
+      f = next->second;
+      if (f == start_face) break;
+    }
+    if (ring.faces() != face_count) {
+      out.error = prefix(mesh) + "vertex " + std::to_string(v) +
+                  " is non-manifold (its faces form more than one fan)";
+      return out;
+    }
+    const uint32_t low = ring.boundary ? 1 : 3;
+    if (ring.faces() < low || ring.faces() > kMaxValence) {
+      out.error = prefix(mesh) + (ring.boundary ? "boundary vertex " : "vertex ") +
+                  std::to_string(v) + (ring.boundary ? " has " : " has valence ") +
+                  std::to_string(ring.faces()) + (ring.boundary ? " faces" : "") +
+                  "; gregory_acc needs " + std::to_string(low) + ".." +
+                  std::to_string(kMaxValence);
+      return out;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string checkGregorySupport(const Mesh& mesh) {
+  if (mesh.faceCount() == 0) return prefix(mesh) + "has no faces";
+  for (const Crease& crease : mesh.tags.creases) {
+    if (crease.sharpness > 0) {
+      return prefix(mesh) + "crease edge (" + std::to_string(crease.v0) + ", " +
+             std::to_string(crease.v1) + ") has sharpness " + std::to_string(crease.sharpness) +
+             "; creases are not supported";
+    }
+  }
+  for (const Corner& corner : mesh.tags.corners) {
+    if (corner.sharpness > 0) {
+      return prefix(mesh) + "corner vertex " + std::to_string(corner.vertex) +
+             " is tagged sharp; corner tags are not supported";
+    }
+  }
+  if (!mesh.tags.holes.empty()) {
+    return prefix(mesh) + "face " + std::to_string(mesh.tags.holes.front()) +
+           " is tagged as a hole; holes are not supported";
+  }
+  if (mesh.tags.smooth_triangles) {
+    return prefix(mesh) + "`t smoothtriangles` is not supported (plain Catmull-Clark only)";
+  }
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const uint32_t size = mesh.faceSize(f);
+    if (size < 3 || size > kMaxValence) {
+      return prefix(mesh) + describeFace(mesh, f) + " has " + std::to_string(size) +
+             " vertices; gregory_acc needs 3.." + std::to_string(kMaxValence);
+    }
+    const auto fv = mesh.facePositions(f);
+    for (uint32_t a = 0; a < size; ++a) {
+      for (uint32_t b = a + 1; b < size; ++b) {
+        if (fv[a] == fv[b]) {
+          return prefix(mesh) + describeFace(mesh, f) + " repeats vertex " +
+                 std::to_string(fv[a]);
+        }
+      }
+    }
+  }
+  const Topology topology = buildTopology(mesh);
+  for (const MeshEdge& edge : topology.edges) {
+    if (edge.face_count > 2) {
+      return prefix(mesh) + "edge (" + std::to_string(edge.v0) + ", " + std::to_string(edge.v1) +
+             ") is non-manifold (" + std::to_string(edge.face_count) + " faces)";
+    }
+  }
+  if (mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner) {
+    for (const MeshEdge& edge : topology.edges) {
+      if (edge.face_count == 1) {
+        return prefix(mesh) + "boundary edge (" + std::to_string(edge.v0) + ", " +
+               std::to_string(edge.v1) +
+               "); only edge-and-corner boundary interpolation is supported";
+      }
+    }
+  }
+  return buildRings(mesh).error;
+}
+
+GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
+  if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
+    throw UnsupportedInput(reason);
+  }
+  if (!mesh.allFacesOfSize(4)) {
+    throw UnsupportedInput(prefix(mesh) + "buildGregoryStencils needs an all-quad mesh");
+  }
+  const std::vector<Ring> rings = buildRings(mesh).rings;
+  GregoryStencils out;
+  auto emit = [&out](const Stencil& s) {
+    for (const auto& [index, weight] : s) {
+      if (std::abs(weight) < 1e-14) continue;  // cancelled terms (e.g. r on a regular ring)
+      out.indices.push_back(index);
+      out.weights.push_back(weight);
+    }
+    out.offsets.push_back(uint32_t(out.indices.size()));
+    return uint32_t(out.offsets.size() - 2);
+  };
+
+  std::vector<VertexFrame> frames(rings.size());
+  std::vector<uint32_t> position_id(rings.size(), UINT32_MAX);
+  std::unordered_map<uint64_t, uint32_t> edge_id;
+  for (uint32_t v = 0; v < rings.size(); ++v) {
+    if (rings[v].valence() == 0) continue;
+    frames[v] = rings[v].boundary ? boundaryFrame(v, rings[v]) : vertexFrame(v, rings[v], mask);
+    position_id[v] = emit(frames[v].position);
+  }
+  auto edgePoint = [&](uint32_t v, uint32_t w) {
+    const Ring& ring = rings[v];
+    const uint32_t j = ring.indexOf(w);
+    Stencil e;
+    if (ring.boundary && ring.faces() == 1) {  // corner: the boundary curve's end
+      add(e, v, 2.0 / 3);
+      add(e, w, 1.0 / 3);
+      return e;
+    }
+    e = frames[v].position;
+    // Interior: angle 2 pi j / n; boundary with k faces: pi j / k = 2 pi j / (2k).
+    const uint32_t n = ring.effectiveValence();
+    add(e, frames[v].e0, cosTurn(j, n));
+    add(e, frames[v].e1, sinTurn(j, n));
+    return e;
+  };
+  auto edgeId = [&](uint32_t v, uint32_t w) {
+    const auto [it, inserted] = edge_id.emplace(directedKey(v, w), 0);
+    if (inserted) it->second = emit(edgePoint(v, w));
+    return it->second;
+  };
+  // Edge stencils first, in face order, so all shared stencils precede the face points.
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto fv = mesh.facePositions(f);
+    for (uint32_t c = 0; c < 4; ++c) {
+      edgeId(fv[c], fv[(c + 1) % 4]);
+      edgeId(fv[c], fv[(c + 3) % 4]);
+    }
+  }
+  out.sharedStencilCount = out.stencilCount();
+
+  out.patch_points.resize(mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto fv = mesh.facePositions(f);
+    auto& points = out.patch_points[f];
+    for (uint32_t c = 0; c < 4; ++c) {
+      const uint32_t v = fv[c], ip = fv[(c + 1) % 4], im = fv[(c + 3) % 4];
+      const Ring& ring = rings[v];
+      const uint32_t n = ring.effectiveValence(), np = rings[ip].effectiveValence(),
+                     nm = rings[im].effectiveValence();
+      const uint32_t start = ring.indexOf(ip);             // face f is ring face `start`
+      const uint32_t prev = (start + 1) % ring.valence();  // ring index of im
+      // Face points, Loop et al. 2009 eq. for the interior Gregory points (as in
+      // OpenSubdiv Far's Gregory basis): with c_n = cos(2 pi/n),
+      //   Fp = (c_np P + (3 - 2 c_n - c_np) Ep + 2 c_n Em(ip) + r_start) / 3,
+      //   Fm = (c_nm P + (3 - 2 c_n - c_nm) Em + 2 c_n Ep(im) - r_prev) / 3.
+      const double cn = cosTurn(1, n), cnp = cosTurn(1, np), cnm = cosTurn(1, nm);
+      // On a boundary there is no continuity to keep across a boundary edge: the face
+      // point next to it takes the other one's value (as Far's Gregory basis does), and
+      // the twist across it (which has no face there) is never formed. A corner's face
+      // point is the bicubic B-spline's with mirrored phantom points.
+      const bool ip_edge_open = ring.boundary && start == 0;
+      const bool im_edge_open = ring.boundary && prev + 1 == ring.valence();
+      auto plusPoint = [&] {
+        Stencil fp;
+        add(fp, frames[v].position, cnp / 3);
+        add(fp, edgePoint(v, ip), (3 - 2 * cn - cnp) / 3);
+        add(fp, edgePoint(ip, v), 2 * cn / 3);
+        add(fp, twist(ring, start), 1.0 / 3);
+        return fp;
+      };
+      auto minusPoint = [&] {
+        Stencil fm;
+        add(fm, frames[v].position, cnm / 3);
+        add(fm, edgePoint(v, im), (3 - 2 * cn - cnm) / 3);
+        add(fm, edgePoint(im, v), 2 * cn / 3);
+        add(fm, twist(ring, prev), -1.0 / 3);
+        return fm;
+      };
+      Stencil fp, fm;
+      if (ip_edge_open && im_edge_open) {
+        add(fp, v, 4.0 / 9);
+        add(fp, ring.diagonal[0], 1.0 / 9);
+        add(fp, ip, 2.0 / 9);
+        add(fp, im, 2.0 / 9);
+        fm = fp;
+      } else if (ip_edge_open) {
+        fp = fm = minusPoint();
+      } else if (im_edge_open) {
+        fp = fm = plusPoint();
+      } else {
+        fp = plusPoint();
+        fm = minusPoint();
+      }
+      points[c * 5 + kP] = position_id[v];
+      points[c * 5 + kEp] = edgeId(v, ip);
+      points[c * 5 + kEm] = edgeId(v, im);
+      points[c * 5 + kFp] = emit(fp);
+      points[c * 5 + kFm] = emit(fm);
+    }
+  }
+  return out;
+}
+
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask) {
+  if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
+    throw UnsupportedInput(reason);
+  }
+  GregoryBuild out;
+  if (mesh.allFacesOfSize(4)) {
+    out.control = mesh;
+    out.stencils = buildGregoryStencils(mesh, mask);
+    out.source_face.resize(mesh.faceCount());
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f) out.source_face[f] = f;
+    return out;
+  }
+  RefinedMesh refined = refineOnce(mesh);
+  const GregoryStencils level1 = buildGregoryStencils(refined.mesh, mask);
+  out.refined = true;
+  out.control = std::move(refined.mesh);
+  out.source_face = std::move(refined.source_face);
+  out.stencils.patch_points = level1.patch_points;
+  out.stencils.sharedStencilCount = level1.sharedStencilCount;
+  // Compose: each Gregory stencil over refined vertices becomes one over input vertices,
+  // still ascending by vertex index; stencils keep their ids, so sharing is unchanged.
+  for (size_t s = 0; s < level1.stencilCount(); ++s) {
+    Stencil composed;
+    for (uint32_t k = level1.offsets[s]; k < level1.offsets[s + 1]; ++k) {
+      add(composed, refined.stencils[level1.indices[k]], level1.weights[k]);
+    }
+    for (const auto& [index, weight] : composed) {
+      if (std::abs(weight) < 1e-14) continue;
+      out.stencils.indices.push_back(index);
+      out.stencils.weights.push_back(weight);
+    }
+    out.stencils.offsets.push_back(uint32_t(out.stencils.indices.size()));
+  }
+  return out;
+}
+
+}  // namespace tb::gregory_acc

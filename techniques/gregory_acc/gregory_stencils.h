@@ -1,0 +1,74 @@
+// Stencils of the 20 Gregory control points of every quad (Loop, Schaefer, Ni, Castaño,
+// "Approximating Subdivision Surfaces with Gregory Patches for Hardware Tessellation",
+// SIGGRAPH Asia 2009): each control point is a weighted sum of control-mesh vertices.
+// The CPU evaluators and the TCS both compute a point as the same sum, in the same
+// order (ascending global vertex index), so the CPU float path and the GPU agree.
+//
+// Sharing (DESIGN.md watertightness rule 1): a corner point P belongs to its vertex and
+// an edge point E(v->w) to its directed edge; each is ONE stencil referenced by every
+// patch that uses it, so both patches of an edge compute their shared points with the
+// same terms in the same order. The face points Fp/Fm are per patch corner.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "harness/mesh/mesh.h"
+#include "techniques/gregory_acc/gregory_refine.h"
+
+namespace tb::gregory_acc {
+
+// Highest vertex valence accepted. The construction itself has no limit; this bounds
+// stencil sizes (an Fp stencil touches two 1-rings: at most 4 + 4 * 32 vertices).
+constexpr uint32_t kMaxValence = 32;
+
+// Control point slots of one patch corner; patch point index = corner * 5 + slot.
+// Ep points along the edge to the next corner (corner + 1), Em to the previous one;
+// Fp is the face point next to Ep's edge, Fm next to Em's edge.
+enum Slot : uint32_t { kP = 0, kEp = 1, kEm = 2, kFp = 3, kFm = 4 };
+constexpr uint32_t kPointsPerPatch = 20;
+
+struct GregoryStencils {
+  // Stencil s has entries [offsets[s], offsets[s + 1]), sorted by vertex index.
+  std::vector<uint32_t> offsets{0};
+  std::vector<uint32_t> indices;  // control-mesh position index per entry
+  std::vector<double> weights;    // weight per entry (affine: each stencil sums to 1)
+  // Stencil id of every control point of every patch (patch p = face p).
+  std::vector<std::array<uint32_t, kPointsPerPatch>> patch_points;
+  size_t sharedStencilCount = 0;  // P and E stencils (shared between patches)
+
+  size_t stencilCount() const { return offsets.size() - 1; }
+};
+
+// Empty when the mesh is supported; otherwise one line naming the first offending
+// element and the rule ("gregory_acc: <file>: face 3 (line 12) has 3 vertices; ...").
+std::string checkGregorySupport(const Mesh& mesh);
+
+// Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
+enum class TangentMask {
+  kPaper,       // Loop et al. 2009 / OpenSubdiv Far's Gregory basis (averaged ACC face
+                // points); parametric error no larger than kExactLimit's on every bundled
+                // asset measured
+  kExactLimit,  // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
+};
+
+// Stencils over `mesh`'s own vertices; `mesh` must be all quads. Throws
+// tb::UnsupportedInput with checkGregorySupport's message.
+GregoryStencils buildGregoryStencils(const Mesh& mesh,
+                                     TangentMask mask = TangentMask::kPaper);
+
+struct GregoryBuild {
+  // The all-quad mesh the patches are built over: the input itself, or, when the input
+  // has any non-quad face, the input refined once (refineOnce; patch p = its face p).
+  Mesh control;
+  bool refined = false;
+  std::vector<uint32_t> source_face;  // input face of each patch
+  GregoryStencils stencils;           // over the INPUT mesh's positions
+};
+
+// Throws tb::UnsupportedInput with checkGregorySupport's message.
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper);
+
+}  // namespace tb::gregory_acc

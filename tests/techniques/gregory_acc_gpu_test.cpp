@@ -1,0 +1,141 @@
+// gregory_acc's TCS/TES on the Vulkan device (lavapipe). Oracles: the CPU float
+// evaluation (GregoryPatches::evaluateFloat, the shader's operation order) at the same
+// gl_TessCoord bits, and the neighbouring patch's capture across every shared edge.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdlib>
+#include <map>
+#include <tuple>
+
+#include "harness/gpu/patch_program.h"
+#include "harness/mesh/obj_loader.h"
+#include "techniques/gregory_acc/gregory_acc.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/techniques/gregory_acc_test_support.h"
+#include "tests/test_support.h"
+
+namespace tb::gregory_acc {
+namespace {
+
+const std::vector<std::string>& supported() {
+  static const std::vector<std::string> kAssets = testing::supportedBundledAssets();
+  return kAssets;
+}
+
+// Distance in units in the last place (0 for equal values, +0 and -0 included).
+int64_t ulpDistance(float a, float b) {
+  auto ordered = [](float x) {
+    const int32_t i = std::bit_cast<int32_t>(x);
+    return i < 0 ? int64_t(INT32_MIN) - i : int64_t(i);
+  };
+  return std::llabs(ordered(a) - ordered(b));
+}
+
+struct Case {
+  float level;
+  tess::Spacing spacing;
+};
+const Case kCases[] = {{1.0f, tess::Spacing::kInteger},
+                       {7.3f, tess::Spacing::kFractionalOdd},
+                       {16.0f, tess::Spacing::kInteger}};
+
+gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patches,
+                             const Case& c) {
+  tess::Levels levels;
+  levels.outer = {c.level, c.level, c.level, c.level};
+  levels.inner = {c.level, c.level};
+  gpu::PatchProgramOptions options;
+  options.spacing = c.spacing;
+  options.patches_per_draw = 8;
+  return gpu::runPatchProgram(context, *patches.gpuProgram(), levels, options);
+}
+
+std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant) {
+  GregoryAccTechnique technique;
+  for (const VariantInfo& info : technique.variants()) {
+    if (info.name == variant) return technique.buildPatches(mesh, info);
+  }
+  return nullptr;
+}
+
+TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
+    for (const std::string& name : supported()) {
+      const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
+      const auto patches = build(mesh, variant);
+      for (const Case& c : kCases) {
+        const gpu::PatchProgramCapture capture = run(context, *patches, c);
+        ASSERT_FALSE(capture.vertices.empty());
+        int64_t worst = 0;
+        double worst_normal = 0;
+        for (const gpu::CapturedVertex& vertex : capture.vertices) {
+          const SurfacePointF expected = patches->evaluateFloat(vertex.patch, vertex.coord);
+          for (int k = 0; k < 3; ++k) {
+            worst = std::max(worst, ulpDistance(vertex.position[k], expected.position[k]));
+          }
+          worst_normal = std::max(
+              worst_normal,
+              length(vecCast<double>(vertex.normal) - vecCast<double>(expected.normal)));
+        }
+        RecordProperty(std::string(variant) + "_" + name + "_" + std::to_string(c.level) +
+                           "_ulp_vertices",
+                       std::to_string(worst) + "_" + std::to_string(capture.vertices.size()));
+        EXPECT_LE(worst, 4) << variant << " " << name << " level " << c.level;
+        EXPECT_LE(worst_normal, 1e-5) << variant << " " << name << " level " << c.level;
+      }
+    }
+  }
+}
+
+TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const std::string& name : supported()) {
+    const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
+    const auto patches = build(mesh, "edge_symmetric");
+    const Case c = kCases[1];
+    const gpu::PatchProgramCapture capture = run(context, *patches, c);
+    using Key = std::tuple<uint32_t, uint32_t, uint32_t>;
+    std::map<Key, Vec3f> by_coord;
+    for (const gpu::CapturedVertex& v : capture.vertices) {
+      by_coord[{v.patch, std::bit_cast<uint32_t>(v.coord[0]),
+                std::bit_cast<uint32_t>(v.coord[1])}] = v.position;
+    }
+    auto coordOnEdge = [](int corner, float t) -> std::pair<float, float> {
+      switch (corner) {
+        case 0: return {t, 0.0f};
+        case 1: return {1.0f, t};
+        case 2: return {1.0f - t, 1.0f};
+        default: return {0.0f, 1.0f - t};
+      }
+    };
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
+    size_t compared = 0;
+    for (const gpu::CapturedVertex& v : capture.vertices) {
+      for (int corner = 0; corner < 4; ++corner) {
+        float t;
+        const float x = v.coord[0], y = v.coord[1];
+        if (corner == 0 && y == 0.0f) t = x;
+        else if (corner == 1 && x == 1.0f) t = y;
+        else if (corner == 2 && y == 1.0f) t = 1.0f - x;
+        else if (corner == 3 && x == 0.0f) t = 1.0f - y;
+        else continue;
+        const testing::EdgeTwin twin = twins[v.patch * 4 + corner];
+        if (twin.face < 0) continue;
+        const auto [gu, gw] = coordOnEdge(twin.corner, 1.0f - t);
+        const auto it = by_coord.find(
+            {uint32_t(twin.face), std::bit_cast<uint32_t>(gu), std::bit_cast<uint32_t>(gw)});
+        ASSERT_NE(it, by_coord.end()) << name << " patch " << twin.face << " lacks " << gu
+                                      << "," << gw;
+        ++compared;
+        EXPECT_TRUE(it->second == v.position)
+            << name << " patches " << v.patch << "/" << twin.face << " t " << t;
+      }
+    }
+    EXPECT_GT(compared, 8 * patches->patchCount()) << name;
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc

@@ -1,0 +1,423 @@
+// gregory_acc on the CPU. Oracles: the OpenSubdiv Bfr limit surface (regular faces are
+// exactly the bicubic B-spline patch), the patch's own neighbour across each edge (C0),
+// and the rules' one-line messages.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "harness/mesh/obj_loader.h"
+#include "harness/mesh/topology.h"
+#include "harness/tess/tessellator.h"
+#include "reference/limit_surface.h"
+#include "techniques/gregory_acc/gregory_acc.h"
+#include "techniques/gregory_acc/gregory_stencils.h"
+#include "techniques/registry.h"
+#include "tests/techniques/gregory_acc_test_support.h"
+#include "tests/test_support.h"
+
+namespace tb::gregory_acc {
+namespace {
+
+// The bundled assets gregory_acc supports, pinned: all-quad, mixed (refined once), with
+// smooth boundaries, and triangle meshes (Catmull-Clark of triangles).
+const std::vector<std::string> kSupported = {
+    "opensubdiv/catmark_cube.obj",          "opensubdiv/catmark_edgecorner.obj",
+    "opensubdiv/catmark_gregory_test2.obj", "opensubdiv/catmark_gregory_test5.obj",
+    "opensubdiv/catmark_nonquads.obj",      "opensubdiv/catmark_pyramid.obj",
+    "opensubdiv/catmark_quadstrips.obj",    "opensubdiv/catmark_toroidal_tet.obj",
+    "opensubdiv/catmark_torus.obj",         "opensubdiv/catmark_xord_interior.obj",
+    "opensubdiv/loop_cube.obj",             "opensubdiv/loop_icosahedron.obj",
+    "opensubdiv/loop_toroidal_tet.obj",     "opensubdiv/loop_triangle_edgecorner.obj",
+    "opensubdiv/loop_xord_interior.obj",    "tessbench/cylinder_seam.obj",
+    "tessbench/flat_cube.obj",              "tessbench/tri_pawn.obj",
+    "tessbench/tri_torus.obj"};
+
+Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
+
+double bboxDiagonal(const Mesh& mesh) {
+  Vec3d lo = mesh.positions[0], hi = lo;
+  for (const Vec3d& p : mesh.positions) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  return length(hi - lo);
+}
+
+std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant = "") {
+  GregoryAccTechnique technique;
+  for (const VariantInfo& info : technique.variants()) {
+    if (variant.empty() || info.name == variant) return technique.buildPatches(mesh, info);
+  }
+  return nullptr;
+}
+
+tess::Tessellation quadPoints(float level, tess::Spacing spacing = tess::Spacing::kInteger) {
+  tess::Levels levels;
+  levels.outer = {level, level, level, level};
+  levels.inner = {level, level};
+  return tess::tessellate(tess::Domain::kQuad, spacing, levels);
+}
+
+TEST(GregoryAcc, IsRegistered) {
+  EXPECT_NE(TechniqueRegistry::instance().find("gregory_acc"), nullptr);
+}
+
+TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
+  const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
+  size_t regular_faces = 0;
+  for (const std::string& name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh);
+    const Mesh& control = patches->controlMesh();
+    // The refined mesh of a mixed input has the same limit; Bfr parameterises its faces.
+    const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+    const double diagonal = bboxDiagonal(mesh);
+    for (size_t f = 0; f < control.faceCount(); ++f) {
+      // Bfr says which faces are one regular B-spline patch (interior or boundary).
+      if (!limit.hasLimitSurface(f) || !limit.isRegular(f)) continue;
+      ++regular_faces;
+      for (const tess::DomainPoint& d : domain.points) {
+        const Vec3d expected = limit.evaluate(f, d[0], d[1]).position;
+        const SurfacePoint got = patches->evaluate(f, {d[0], d[1], 0});
+        ASSERT_LE(length(got.position - expected), 1e-12 * diagonal)
+            << name << " face " << f << " at " << d[0] << "," << d[1];
+        const SurfacePointF got_f = patches->evaluateFloat(f, d);
+        ASSERT_LE(length(vecCast<double>(got_f.position) - expected), 1e-6 * diagonal)
+            << name << " face " << f;
+        EXPECT_LE(length(got.normal - limit.evaluate(f, d[0], d[1]).normal), 1e-9);
+      }
+    }
+  }
+  EXPECT_GE(regular_faces, 32u);  // every torus face is regular
+}
+
+// Position of patch p at the point of its corner-c..c+1 edge at parameter t from corner c.
+DomainCoord edgeCoord(int corner, double t) {
+  switch (corner) {
+    case 0: return {t, 0, 0};
+    case 1: return {1, t, 0};
+    case 2: return {1 - t, 1, 0};
+    default: return {0, 1 - t, 0};
+  }
+}
+
+TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
+  for (const std::string& name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "asymmetric");
+    const Mesh& control = patches->controlMesh();
+    const double diagonal = bboxDiagonal(mesh);
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
+    size_t edges = 0;
+    for (size_t f = 0; f < control.faceCount(); ++f) {
+      for (int c = 0; c < 4; ++c) {
+        const testing::EdgeTwin twin = twins[f * 4 + c];
+        if (twin.face < 0) continue;
+        ++edges;
+        for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
+          const Vec3d p = patches->evaluate(f, edgeCoord(c, t)).position;
+          const Vec3d q = patches->evaluate(size_t(twin.face), edgeCoord(twin.corner, 1 - t)).position;
+          ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << twin.face;
+        }
+      }
+    }
+    // Every directed edge but the boundary ones has its twin (oracle: the topology).
+    EXPECT_EQ(edges, 4 * control.faceCount() - buildTopology(control).boundaryEdgeCount())
+        << name;
+  }
+}
+
+TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
+  const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
+  std::vector<float> ts;
+  for (const tess::DomainPoint& d : domain.points) {
+    if (d[1] == 0.0f) ts.push_back(d[0]);
+  }
+  ASSERT_GT(ts.size(), 5u);
+  auto coordF = [](int corner, float t) -> tess::DomainPoint {
+    switch (corner) {
+      case 0: return {t, 0, 0};
+      case 1: return {1, t, 0};
+      case 2: return {1 - t, 1, 0};
+      default: return {0, 1 - t, 0};
+    }
+  };
+  for (const std::string& name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "edge_symmetric");
+    const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
+      for (int c = 0; c < 4; ++c) {
+        const testing::EdgeTwin twin = twins[f * 4 + c];
+        if (twin.face < 0) continue;
+        for (float t : ts) {
+          const Vec3f p = patches->evaluateFloat(f, coordF(c, t)).position;
+          const Vec3f q = patches->evaluateFloat(size_t(twin.face), coordF(twin.corner, 1 - t)).position;
+          ASSERT_TRUE(p == q) << name << " faces " << f << "," << twin.face << " t " << t;
+        }
+      }
+    }
+  }
+}
+
+TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
+  for (const std::string& name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "exact_tangents");
+    const Mesh& control = patches->controlMesh();
+    const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+    const std::vector<uint8_t> on_boundary = buildTopology(control).on_boundary;
+    const double diagonal = bboxDiagonal(mesh);
+    for (size_t f = 0; f < control.faceCount(); ++f) {
+      for (int c = 0; c < 4; ++c) {
+        const DomainCoord d = edgeCoord(c, 0);
+        const ref::LimitPoint exact = limit.evaluate(f, d[0], d[1]);
+        EXPECT_LE(length(patches->evaluate(f, d).position - exact.position), 1e-12 * diagonal)
+            << name << " face " << f;
+        // Interior corners: the tangent plane is the limit's (exact tangent masks; the
+        // boundary cross tangent is the paper's, not exact, so boundary corners are
+        // not checked). 1e-5: Bfr
+        // itself approximates irregular corners (Gregory patches after 10 levels), and the
+        // Far-compatible mask is off by 1e-2 here, so the bound still separates the two.
+        if (on_boundary[control.facePositions(f)[c]]) continue;
+        EXPECT_LE(length(patches->evaluate(f, d).normal - exact.normal), 1e-5)
+            << name << " face " << f << " corner " << c << " vertex "
+            << control.facePositions(f)[c];
+      }
+    }
+  }
+}
+
+std::string rejection(const std::string& obj) {
+  GregoryAccTechnique technique;
+  const Mesh mesh = loadObjText(obj, "test.obj");
+  const std::string reason = technique.checkSupport(mesh);
+  try {
+    technique.buildPatches(mesh, technique.variants().front());
+    ADD_FAILURE() << "expected UnsupportedInput for " << reason;
+  } catch (const UnsupportedInput& error) {
+    EXPECT_EQ(reason, error.what());
+  }
+  return reason;
+}
+
+const char kCube[] =
+    "v -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\nv -1 1 -1\nv 1 1 -1\nv -1 -1 -1\nv 1 -1 -1\n"
+    "f 1 2 4 3\nf 3 4 6 5\nf 5 6 8 7\nf 7 8 2 1\nf 2 8 6 4\nf 7 1 3 5\n";
+
+TEST(GregoryAccRejects, FacesAboveTheMaximumSize) {
+  // A closed two-sided 33-gon.
+  std::string obj, front = "f", back = "f";
+  for (int i = 0; i < 33; ++i) {
+    obj += "v " + std::to_string(std::cos(i * 0.19)) + " " + std::to_string(std::sin(i * 0.19)) +
+           " 0\n";
+    front.append(" ").append(std::to_string(i + 1));
+    back.append(" ").append(std::to_string(33 - i));
+  }
+  EXPECT_EQ(rejection(obj + front + "\n" + back + "\n"),
+            "gregory_acc: test.obj: face 0 (line 34) has 33 vertices; gregory_acc needs 3..32");
+}
+
+TEST(GregoryAccRejects, SmoothTriangles) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t smoothtriangles 0/0/1 catmark\n"),
+            "gregory_acc: test.obj: `t smoothtriangles` is not supported (plain Catmull-Clark "
+            "only)");
+}
+
+TEST(GregoryAccRejects, EdgeOnlyBoundaries) {
+  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"
+                      "t interpolateboundary 1/0/0 2\n"),
+            "gregory_acc: test.obj: boundary edge (0, 1); only edge-and-corner boundary "
+            "interpolation is supported");
+}
+
+TEST(GregoryAccRejects, Creases) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t crease 2/1/0 0 1 2.5\n"),
+            "gregory_acc: test.obj: crease edge (0, 1) has sharpness 2.500000; creases are not "
+            "supported");
+}
+
+TEST(GregoryAccRejects, CornerTags) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t corner 1/1/0 3 4\n"),
+            "gregory_acc: test.obj: corner vertex 3 is tagged sharp; corner tags are not "
+            "supported");
+}
+
+TEST(GregoryAccRejects, Holes) {
+  EXPECT_EQ(rejection(std::string(kCube) + "t hole 1/0/0 2\n"),
+            "gregory_acc: test.obj: face 2 is tagged as a hole; holes are not supported");
+}
+
+TEST(GregoryAccRejects, NonManifoldEdges) {
+  // Three quads on edge (0, 1).
+  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 -1 0\nv 0 -1 0\nv 0 0 1\nv 1 0 1\n"
+                      "f 1 2 3 4\nf 2 1 6 5\nf 1 2 8 7\n"),
+            "gregory_acc: test.obj: edge (0, 1) is non-manifold (3 faces)");
+}
+
+TEST(GregoryAccRejects, InconsistentOrientation) {
+  std::string cube(kCube);
+  cube.replace(cube.find("f 1 2 4 3"), 9, "f 3 4 2 1");
+  EXPECT_EQ(rejection(cube),
+            "gregory_acc: test.obj: edge (2, 3) is used twice in the same direction (face 1 "
+            "(line 10)); faces must be consistently oriented");
+}
+
+// A closed quad "bipyramid": poles N (vertex 0) and S, equator E_i, and M_i between
+// E_i and E_{i+1}; faces (N, E_i, M_i, E_{i+1}) and (S, E_{i+1}, M_i, E_i).
+std::string bipyramid(int n) {
+  std::string obj = "v 0 0 1\nv 0 0 -1\n";
+  for (int i = 0; i < 2 * n; ++i) {
+    const double a = M_PI * i / n;
+    obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  auto e = [n](int i) { return std::to_string(3 + 2 * (i % n)); };  // 1-based
+  auto m = [n](int i) { return std::to_string(4 + 2 * (i % n)); };
+  for (int i = 0; i < n; ++i) {
+    obj += "f 1 " + e(i) + " " + m(i) + " " + e(i + 1) + "\n";
+    obj += "f 2 " + e(i + 1) + " " + m(i) + " " + e(i) + "\n";
+  }
+  return obj;
+}
+
+TEST(GregoryAccRejects, ValenceAboveTheMaximum) {
+  EXPECT_EQ(rejection(bipyramid(33)),
+            "gregory_acc: test.obj: vertex 0 has valence 33; gregory_acc needs 3..32");
+}
+
+TEST(GregoryAccRejects, ValenceTwo) {
+  // With 32 the poles pass; the first M vertex (index 3) has valence 2.
+  EXPECT_EQ(rejection(bipyramid(32)),
+            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..32");
+}
+
+TEST(GregoryAccRejects, BoundaryVertexWithTooManyFaces) {
+  // An open fan of 33 quads (0, r_i, m_i, r_{i+1}) around vertex 0.
+  std::string obj = "v 0 0 0\n";
+  for (int i = 0; i <= 66; ++i) {
+    const double a = 3.0 * i / 66, radius = i % 2 == 0 ? 1.0 : 1.5;
+    obj += "v " + std::to_string(radius * std::cos(a)) + " " +
+           std::to_string(radius * std::sin(a)) + " 0\n";
+  }
+  for (int i = 0; i < 33; ++i) {
+    obj += "f 1 " + std::to_string(2 + 2 * i) + " " + std::to_string(3 + 2 * i) + " " +
+           std::to_string(4 + 2 * i) + "\n";
+  }
+  EXPECT_EQ(rejection(obj),
+            "gregory_acc: test.obj: boundary vertex 0 has 33 faces; gregory_acc needs 1..32");
+}
+
+TEST(GregoryAccRejects, NoFaces) {
+  Mesh mesh;
+  mesh.source = "empty.obj";
+  mesh.positions.push_back({0, 0, 0});
+  GregoryAccTechnique technique;
+  EXPECT_EQ(technique.checkSupport(mesh), "gregory_acc: empty.obj: has no faces");
+  EXPECT_THROW(technique.buildPatches(mesh, technique.variants().front()), UnsupportedInput);
+}
+
+TEST(GregoryAcc, SupportsExactlyTheClosedUntaggedQuadAssets) {
+  GregoryAccTechnique technique;
+  EXPECT_EQ(testing::supportedBundledAssets(), kSupported);
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_pawn.obj")), "");
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_smoothtris0.obj")), "");
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_gregory_test8.obj")), "");
+  EXPECT_NE(technique.checkSupport(load("tessbench/tjunction.obj")), "");
+}
+
+TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
+  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const auto patches = build(mesh);
+  const DataFootprint footprint = patches->footprint();
+  EXPECT_EQ(footprint.control_mesh_bytes, 8u * 16u);
+  EXPECT_EQ(footprint.patch_data_bytes, 6u * 20u * 4u);
+  // 8 vertex stencils + 24 directed-edge stencils + 6 * 8 face stencils.
+  const GregoryStencils stencils = buildGregoryStencils(mesh);
+  EXPECT_EQ(stencils.stencilCount(), 8u + 24u + 48u);
+  EXPECT_EQ(stencils.sharedStencilCount, 32u);
+  EXPECT_EQ(footprint.stencil_bytes, (stencils.stencilCount() + 1) * 4 +
+                                         stencils.indices.size() * 8);
+  // Every stencil is affine (weights sum to 1): the patches move with the mesh.
+  for (size_t s = 0; s < stencils.stencilCount(); ++s) {
+    double sum = 0;
+    for (uint32_t k = stencils.offsets[s]; k < stencils.offsets[s + 1]; ++k) {
+      sum += stencils.weights[k];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12) << "stencil " << s;
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// Oracle: central finite differences of the position (the normal includes the
+// derivative of the rational face-point blend, which regular faces do not exercise).
+TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
+  for (const std::string& name : kSupported) {
+    const Mesh mesh = load(name);
+    const auto patches = build(mesh, "asymmetric");
+    const Mesh& control = patches->controlMesh();
+    const double h = 1e-6;
+    for (size_t f = 0; f < control.faceCount(); ++f) {
+      for (double u : {0.1, 0.37, 0.5, 0.81}) {
+        for (double v : {0.05, 0.44, 0.9}) {
+          auto p = [&](double a, double b) { return patches->evaluate(f, {a, b, 0}).position; };
+          const Vec3d du = (p(u + h, v) - p(u - h, v)) * (0.5 / h);
+          const Vec3d dv = (p(u, v + h) - p(u, v - h)) * (0.5 / h);
+          const Vec3d expected = normalize(cross(du, dv));
+          EXPECT_LE(length(patches->evaluate(f, {u, v, 0}).normal - expected), 1e-6)
+              << name << " face " << f << " at " << u << "," << v;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// Oracle: a hand count of gregory_eval.h / gregory_acc.tese at an interior point.
+//   1 - u, 1 - v                                   2 add
+//   4 blends: a+b (1 add), a+b == 0 (1 cmp), 1/(a+b) (1 div),
+//     (fp a + fm b) inv (9 mul, 3 add), (fp - fm)(inv inv) (4 mul, 3 add),
+//     two derivatives (a_u b - b_u a) diff (5 mul, 1 add each)    x4: 36 add, 92 mul, 4 div, 4 cmp
+//   2 Bernstein bases: s (1 add), b (10 mul), d (10 mul, 2 add)  x2: 6 add, 40 mul
+//   4 rows x (4 x (row, row_u): 24 mul, 24 add; position, tangent_u, tangent_v: 9 mul, 9 add)
+//                                                  132 add, 132 mul
+//   4 interior derivative terms: w (1 mul), 2 x (3 mul, 3 add)      24 add, 28 mul
+//   normal: cross (6 mul, 3 add), dot (3 mul, 2 add), sqrt, len > 0, 1/len, scale (3 mul)
+//                                                  5 add, 12 mul, 1 sqrt, 1 cmp, 1 div
+//   edge_symmetric: v == 0, u == 1, v == 1, u == 0   4 cmp
+// Set-up: every stencil entry is one vec3 multiply-add: 3 mul + 3 add.
+TEST(GregoryAcc, OperationCountsMatchAHandCount) {
+  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  for (const char* variant : {"asymmetric", "edge_symmetric"}) {
+    const auto patches = build(mesh, variant);
+    const std::optional<OperationProfile> profile = patches->operationProfile(2);
+    ASSERT_TRUE(profile.has_value());
+    EXPECT_EQ(profile->per_vertex.add, 205u);
+    EXPECT_EQ(profile->per_vertex.mul, 304u);
+    EXPECT_EQ(profile->per_vertex.div, 5u);
+    EXPECT_EQ(profile->per_vertex.sqrt, 1u);
+    EXPECT_EQ(profile->per_vertex.compare, std::string(variant) == "asymmetric" ? 5u : 9u);
+    const GregoryStencils stencils = buildGregoryStencils(mesh);
+    uint64_t entries = 0;
+    for (uint32_t s : stencils.patch_points[2]) entries += stencils.offsets[s + 1] - stencils.offsets[s];
+    EXPECT_EQ(profile->per_patch_setup.mul, 3 * entries);
+    EXPECT_EQ(profile->per_patch_setup.add, 3 * entries);
+    EXPECT_EQ(profile->per_patch_setup.div + profile->per_patch_setup.compare, 0u);
+  }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
