@@ -26,9 +26,13 @@ namespace tb {
 
 enum class BezierOrder { kAsymmetric, kSymmetricNoFma, kSymmetricFma, kSymmetricEdges };
 
-// A fused multiply-add a * b + c: one rounding in float and double (GLSL fma() on
-// lavapipe is fused too); CountingScalar counts it as one mul and one add.
-inline float fusedMulAdd(float a, float b, float c) { return std::fma(a, b, c); }
+// The shader's fma(a, b, c) as the device executes it. Measured on lavapipe (Mesa
+// 22.3.6): GLSL fma() on `precise` values runs as a multiply and an add, each rounded
+// (0 ulp from the capture this way, up to 8 ulp with std::fma), so the float twin
+// rounds twice too. The build targets generic x86-64, which has no FMA for GCC to
+// contract this into; tests/techniques/acc_gpu_test.cpp would catch a change.
+// Double keeps one rounding. CountingScalar counts one mul and one add.
+inline float fusedMulAdd(float a, float b, float c) { return a * b + c; }
 inline double fusedMulAdd(double a, double b, double c) { return std::fma(a, b, c); }
 template <class T>
 CountingScalar<T> fusedMulAdd(CountingScalar<T> a, CountingScalar<T> b, CountingScalar<T> c) {
