@@ -8,7 +8,7 @@
 //                    (seed: 60 instructions); the result depends on the direction
 //                    the parameter runs, so a shared edge seen mirrored differs.
 //   kSymmetricNoFma  (B0 p0 + B1 p1) + (B3 p3 + B2 p2), plain mul/add (105).
-//   kSymmetricFma    fma(B1, p1, B0 p0) + fma(B2, p2, B3 p3) (75).
+//   kSymmetricFma    fma(B1, p1, B0 p0) + fma(B2, p2, B3 p3) (75; see fusedMulAdd).
 //   kSymmetricEdges  the symmetric FMA form for rows 0 and 3 and the column, the
 //                    chain for rows 1 and 2, which vanish on the v edges (69).
 // The symmetric forms give bitwise-equal points for t and 1 - t with mirrored

@@ -14,6 +14,7 @@
 #include "reference/limit_surface.h"
 #include "techniques/acc/acc.h"
 #include "techniques/common/bezier_eval.h"
+#include "techniques/common/quad_ring.h"
 #include "tests/techniques/acc_test_support.h"
 
 namespace tb::acc {
@@ -290,3 +291,31 @@ TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
 
 }  // namespace
 }  // namespace tb::acc
+
+namespace tb {
+namespace {
+
+// Oracle: the faces' own corner order, which defines e_i, f_i and e_{i+1} of every slot.
+TEST(QuadRings, EverySlotMatchesItsFacesCornerOrder) {
+  for (const auto& asset : acc::testing::supportedAssets()) {
+    const Mesh& mesh = asset.mesh;
+    const QuadRings rings = buildQuadRings(mesh, "acc", acc::kMaxValence);
+    const Topology topology = buildTopology(mesh);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto c = mesh.facePositions(f);
+      for (uint32_t k = 0; k < 4; ++k) {
+        const uint32_t v = c[k], slot = rings.face_slots[f][k];
+        EXPECT_EQ(rings.e(v, slot), c[(k + 1) % 4]) << asset.name << " face " << f;
+        EXPECT_EQ(rings.f(v, slot), c[(k + 2) % 4]) << asset.name << " face " << f;
+        EXPECT_EQ(rings.e(v, slot + 1), c[(k + 3) % 4]) << asset.name << " face " << f;
+      }
+    }
+    for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
+      EXPECT_EQ(rings.rings[v].valence, topology.valence[v]) << asset.name << " vertex " << v;
+      EXPECT_EQ(rings.rings[v].boundary, topology.on_boundary[v] != 0) << asset.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb
