@@ -319,3 +319,56 @@ TEST(QuadRings, EverySlotMatchesItsFacesCornerOrder) {
 
 }  // namespace
 }  // namespace tb
+
+namespace tb::acc {
+namespace {
+
+// Oracle: the neighbouring patch's normal at the same edge point. Tangent patches
+// (§3.2) make the cross tangents of both sides sum to a multiple of the shared edge
+// tangent, so the normals agree along every edge not touching an extraordinary
+// boundary vertex (where acc keeps the geometry tangents); the geometry's own
+// derivatives do not.
+TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
+  for (const char* variant : {"default", "no_tangent"}) {
+    double worst = 0;
+    size_t edges = 0;
+    for (const auto& asset : testing::supportedAssets()) {
+      const QuadRings rings = buildQuadRings(asset.mesh, "acc", kMaxValence);
+      const auto keeps_geometry = [&](uint32_t v) {
+        return rings.rings[v].boundary && rings.rings[v].valence != 3;
+      };
+      const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed(variant));
+      std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
+      for (size_t p = 0; p < patches->patchCount(); ++p) {
+        const auto c = patches->patchCorners(p);
+        for (int k = 0; k < 4; ++k) {
+          const uint32_t a = c[k], b = c[(k + 1) % 4];
+          const auto other = first_side.find({b, a});
+          if (other == first_side.end()) {
+            first_side[{a, b}] = {p, k};
+            continue;
+          }
+          if (keeps_geometry(a) || keeps_geometry(b)) continue;
+          ++edges;
+          for (int i = 1; i < 16; ++i) {
+            const auto ua = testing::edgeUv(k, i / 16.0);
+            const auto ub = testing::edgeUv(other->second.second, 1 - i / 16.0);
+            const Vec3d na = patches->evaluate(p, {ua[0], ua[1], 0}).normal;
+            const Vec3d nb = patches->evaluate(other->second.first, {ub[0], ub[1], 0}).normal;
+            worst = std::max(worst, length(na - nb));
+          }
+        }
+      }
+    }
+    std::printf("%-10s max normal jump across %zu edges: %.3e (|n_a - n_b|)\n", variant, edges,
+                worst);
+    if (std::string(variant) == "default") {
+      EXPECT_LT(worst, 1e-9);
+    } else {
+      EXPECT_GT(worst, 1e-3);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb::acc
