@@ -1,8 +1,9 @@
 #version 460
 // ACC control points (techniques/acc/acc_patch.h is the CPU twin; keep them in step).
 // One invocation per geometry control point reads its corner vertex's 1-ring from the
-// storage buffers, so any valence up to acc::kMaxValence works; invocation 0 then
-// builds the two tangent patches from the geometry points.
+// storage buffers, so any valence up to acc::kMaxValence works; the four corner-point
+// invocations also compute their corner's limit tangents, and invocation 0 then builds
+// the two tangent patches from the geometry points and those tangents.
 //   binding 1  positions, vec4 per control-mesh vertex
 //   binding 2  ring header per vertex: (offset, valence, boundary, tangent mask offset)
 //   binding 3  ring slots: (e_i, f_i)
@@ -22,8 +23,12 @@ layout(std430, set = 0, binding = 4) readonly buffer Patches { uint patch_words[
 layout(std430, set = 0, binding = 5) readonly buffer Stencils { float stencil[]; };
 
 layout(location = 0) out vec3 b_out[];
-layout(location = 1) patch out vec3 tu_out[12];
-layout(location = 13) patch out vec3 tv_out[12];
+// Limit tangents of the corner owning this point along its next and previous edge
+// (written by the four corner-point invocations only; read by invocation 0).
+layout(location = 1) out vec3 tangent_next_out[];
+layout(location = 2) out vec3 tangent_prev_out[];
+layout(location = 3) patch out vec3 tu_out[12];
+layout(location = 15) patch out vec3 tv_out[12];
 
 // Owner corner and role (0 corner, 1 edge to next corner, 2 edge to previous, 3 interior).
 const uint kOwnerCorner[16] = uint[](0u, 0u, 1u, 1u, 0u, 0u, 1u, 1u, 3u, 3u, 2u, 2u, 3u, 3u, 2u, 2u);
@@ -102,7 +107,12 @@ void crossTangents(float ca, float cb, vec3 a0, vec3 a1, vec3 a2, vec3 d1, vec3 
 
 void main() {
   const uint j = uint(gl_InvocationID);
-  b_out[gl_InvocationID] = controlPoint(loadCorner(kOwnerCorner[j]), kOwnerRole[j]);
+  const Corner owner = loadCorner(kOwnerCorner[j]);
+  b_out[gl_InvocationID] = controlPoint(owner, kOwnerRole[j]);
+  if (kTangentPatches != 0u && kOwnerRole[j] == 0u && !owner.boundary) {
+    tangent_next_out[gl_InvocationID] = cornerTangent(owner, owner.slot);
+    tangent_prev_out[gl_InvocationID] = cornerTangent(owner, owner.slot + 1u);
+  }
   barrier();
   if (j != 0u) return;
   tbWriteHarnessLevels();
@@ -119,11 +129,12 @@ void main() {
     Corner c[4] = Corner[](loadCorner(0u), loadCorner(1u), loadCorner(2u), loadCorner(3u));
     float cosine[4];
     for (uint k = 0u; k < 4u; ++k) cosine[k] = W(c[k], 12u);
-    // Limit tangents at interior corners (boundary corners keep the geometry's).
-    if (!c[0].boundary) { tu[0] = cornerTangent(c[0], c[0].slot); tv[0] = cornerTangent(c[0], c[0].slot + 1u); }
-    if (!c[1].boundary) { tu[2] = -cornerTangent(c[1], c[1].slot + 1u); tv[3] = cornerTangent(c[1], c[1].slot); }
-    if (!c[2].boundary) { tu[11] = -cornerTangent(c[2], c[2].slot); tv[11] = -cornerTangent(c[2], c[2].slot + 1u); }
-    if (!c[3].boundary) { tu[9] = cornerTangent(c[3], c[3].slot + 1u); tv[8] = -cornerTangent(c[3], c[3].slot); }
+    // Limit tangents at interior corners (boundary corners keep the geometry's); corner k's
+    // point is invocation 0, 3, 15, 12.
+    if (!c[0].boundary) { tu[0] = tangent_next_out[0]; tv[0] = tangent_prev_out[0]; }
+    if (!c[1].boundary) { tu[2] = -tangent_prev_out[3]; tv[3] = tangent_next_out[3]; }
+    if (!c[2].boundary) { tu[11] = -tangent_next_out[15]; tv[11] = -tangent_prev_out[15]; }
+    if (!c[3].boundary) { tu[9] = tangent_prev_out[12]; tv[8] = -tangent_next_out[12]; }
     vec3 x1, x2;
     crossTangents(cosine[0], cosine[1], tu[0], tu[1], tu[2], (b[5] - b[1]) * 3.0, (b[6] - b[2]) * 3.0, x1, x2);
     tv[1] = x1; tv[2] = x2;

@@ -11,8 +11,8 @@ layout(constant_id = 0) const uint kOrder = 2u;
 layout(constant_id = 1) const uint kTangentPatches = 1u;
 
 layout(location = 0) in vec3 b_in[];
-layout(location = 1) patch in vec3 tu_in[12];
-layout(location = 13) patch in vec3 tv_in[12];
+layout(location = 3) patch in vec3 tu_in[12];
+layout(location = 15) patch in vec3 tv_in[12];
 
 void main() {
   vec3 b[16];

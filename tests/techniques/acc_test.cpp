@@ -192,9 +192,22 @@ TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
   ASSERT_TRUE(profile.has_value());
   EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
   EXPECT_EQ(profile->per_vertex.sqrt, 1u);
-  std::printf("cube patch: set-up %llu ops, per vertex %llu ops (%s)\n",
-              (unsigned long long)profile->per_patch_setup.total(),
-              (unsigned long long)profile->per_vertex.total(), profile->note.c_str());
+  const Mesh torus = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const auto regular = AccTechnique().buildPatches(torus, variantNamed("default"))->operationProfile(0);
+  ASSERT_TRUE(regular.has_value());
+  // Valence 3 rings are smaller than valence 4 ones: the cube's set-up is cheaper.
+  EXPECT_LT(profile->per_patch_setup.total(), regular->per_patch_setup.total());
+  EXPECT_EQ(profile->per_vertex.total(), regular->per_vertex.total());
+  for (const auto* p : {&*profile, &*regular}) {
+    std::printf("set-up %llu ops (%llu mul, %llu add), per vertex %llu ops (%llu mul, %llu add, "
+                "%llu div, %llu sqrt): %s\n",
+                (unsigned long long)p->per_patch_setup.total(),
+                (unsigned long long)p->per_patch_setup.mul,
+                (unsigned long long)p->per_patch_setup.add,
+                (unsigned long long)p->per_vertex.total(), (unsigned long long)p->per_vertex.mul,
+                (unsigned long long)p->per_vertex.add, (unsigned long long)p->per_vertex.div,
+                (unsigned long long)p->per_vertex.sqrt, p->note.c_str());
+  }
 }
 
 // Oracle: hand count of corner (valence, boundary) tuples up to rotation.
