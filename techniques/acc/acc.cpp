@@ -1,0 +1,361 @@
+#include "techniques/acc/acc.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "harness/mesh/topology.h"
+#include "techniques/acc/acc_patch.h"
+#include "techniques/common/quad_ring.h"
+#include "techniques/registry.h"
+
+namespace tb::acc {
+
+CornerWeights cornerWeights(uint32_t valence, bool boundary) {
+  CornerWeights w;
+  const double n = boundary ? 4.0 : double(valence);  // boundary: the valence-4 masks
+  w.ev = 2 * n / (2 * n + 10);
+  w.ee = 4 / (2 * n + 10);
+  w.ea = 2 / (2 * n + 10);
+  w.ef = 1 / (2 * n + 10);
+  w.iv = n / (n + 5);
+  w.ie = 2 / (n + 5);
+  w.iff = 1 / (n + 5);
+  w.bv = 2.0 / 3.0;
+  w.be = 1.0 / 3.0;
+  if (boundary) {
+    // Boundary B-spline corner (e_0 + 4 v + e_{n-1}) / 6; a valence-2 corner interpolates.
+    w.cv = valence == 2 ? 1.0 : 4.0 / 6.0;
+    w.ce = valence == 2 ? 0.0 : 1.0 / 6.0;
+    w.cosine = 0;
+  } else {
+    w.cv = n / (n + 5);
+    w.ce = 4 / (n * (n + 5));
+    w.cf = 1 / (n * (n + 5));
+    // cos(2π/4) is exactly 0: regular corners then keep the B-spline tangents bit for bit.
+    w.cosine = valence == 4 ? 0.0 : std::cos(2 * std::numbers::pi / n);
+  }
+  return w;
+}
+
+std::vector<double> tangentMask(uint32_t valence) {
+  const double n = valence;
+  const double cp = std::cos(std::numbers::pi / n);
+  const double radical = std::sqrt(4 + cp * cp);
+  const double beta = 1 / (n * radical);
+  const double alpha = 1 / n + cp * beta;
+  std::vector<double> mask(2 * valence);
+  for (uint32_t j = 0; j < valence; ++j) {
+    mask[j] = alpha * std::cos(2 * std::numbers::pi * j / n);
+    mask[valence + j] = beta * std::cos((2 * j + 1) * std::numbers::pi / n);
+  }
+  return mask;
+}
+
+namespace {
+
+using KindKey = std::pair<uint32_t, bool>;  // (valence, boundary)
+using ClassKey = std::array<KindKey, 4>;
+
+// Checks everything except the rings; throws UnsupportedInput.
+void validate(const Mesh& mesh, const Topology& topology) {
+  const auto fail = [](const std::string& what) { throw UnsupportedInput("acc: " + what); };
+  if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (mesh.faceSize(f) != 4) {
+      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
+           " vertices; ACC needs quads");
+    }
+  }
+  for (const MeshEdge& edge : topology.edges) {
+    if (edge.face_count > 2) {
+      fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
+           std::to_string(edge.face_count) + " faces; ACC needs a manifold mesh");
+    }
+  }
+  if (!mesh.tags.holes.empty()) {
+    fail(describeFace(mesh, mesh.tags.holes[0]) + " is tagged as a hole; ACC has no holes");
+  }
+  for (const Crease& crease : mesh.tags.creases) {
+    if (crease.sharpness > 0) {
+      fail("edge " + std::to_string(crease.v0) + "-" + std::to_string(crease.v1) +
+           " has crease sharpness " + std::to_string(crease.sharpness) +
+           "; ACC handles smooth edges only");
+    }
+  }
+  for (const Corner& corner : mesh.tags.corners) {
+    if (corner.sharpness > 0) {
+      fail(describeVertex(mesh, corner.vertex) + " has corner sharpness " +
+           std::to_string(corner.sharpness) + "; ACC handles smooth vertices only");
+    }
+  }
+  if (topology.boundaryEdgeCount() > 0 &&
+      mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner) {
+    for (const MeshEdge& edge : topology.edges) {
+      if (edge.face_count == 1) {
+        fail("boundary edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) +
+             ": boundary interpolation " +
+             (mesh.tags.boundary == BoundaryInterpolation::kNone ? "none" : "edge-only") +
+             " is not supported; ACC honours edge-and-corner only");
+      }
+    }
+  }
+}
+
+class AccPatches final : public SurfacePatches {
+ public:
+  AccPatches(const Mesh& mesh, BezierOrder order, bool tangent_patches)
+      : mesh_(mesh), order_(order), tangent_(tangent_patches) {
+    const Topology topology = buildTopology(mesh_);
+    validate(mesh_, topology);
+    rings_ = buildQuadRings(mesh_, "acc", kMaxValence);
+    const size_t patches = mesh_.faceCount();
+    corners_.resize(patches);
+    class_of_.resize(patches);
+    rotation_of_.resize(patches);
+    std::map<ClassKey, uint32_t> class_index;
+    for (size_t p = 0; p < patches; ++p) {
+      const auto face = mesh_.facePositions(p);
+      ClassKey key;
+      for (int k = 0; k < 4; ++k) {
+        const VertexRing& ring = rings_.rings[face[k]];
+        const KindKey kind{ring.valence, ring.boundary};
+        key[k] = kind;
+        auto [it, inserted] = weights_.try_emplace(kind);
+        if (inserted) it->second = cornerWeights(ring.valence, ring.boundary);
+        const std::vector<double>* mask = nullptr;
+        if (!ring.boundary) {
+          auto [m, fresh] = masks_.try_emplace(ring.valence);
+          if (fresh) m->second = tangentMask(ring.valence);
+          mask = &m->second;
+        }
+        corners_[p][k] = {face[k], rings_.face_slots[p][k], &it->second, mask};
+      }
+      // Topology combination: the corner kinds up to rotation (smallest rotation).
+      ClassKey best = key;
+      uint32_t best_rotation = 0;
+      for (uint32_t r = 1; r < 4; ++r) {
+        ClassKey rotated;
+        for (int k = 0; k < 4; ++k) rotated[k] = key[(k + r) % 4];
+        if (rotated < best) best = rotated, best_rotation = r;
+      }
+      const auto [it, inserted] = class_index.try_emplace(best, uint32_t(classes_.size()));
+      if (inserted) classes_.push_back(best);
+      class_of_[p] = it->second;
+      rotation_of_[p] = best_rotation;  // patch corner k is class corner (k + 4 - r) % 4
+    }
+    const auto position_d = [this](uint32_t i) { return mesh_.positions[i]; };
+    const auto position_f = [this](uint32_t i) { return vecCast<float>(mesh_.positions[i]); };
+    points_d_.resize(patches);
+    points_f_.resize(patches);
+    for (size_t p = 0; p < patches; ++p) {
+      points_d_[p] = accControlPoints<double>(rings_, corners_[p], tangent_, position_d);
+      points_f_[p] = accControlPoints<float>(rings_, corners_[p], tangent_, position_f);
+    }
+    warnings_.push_back(std::to_string(patches) + " patches in " +
+                        std::to_string(classes_.size()) +
+                        " topology combinations (corner valence and boundary, up to rotation)");
+  }
+
+  PatchDomain domain() const override { return PatchDomain::kQuad; }
+  size_t patchCount() const override { return mesh_.faceCount(); }
+  const Mesh& controlMesh() const override { return mesh_; }
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    const auto face = mesh_.facePositions(patch);
+    return {face[0], face[1], face[2], face[3]};
+  }
+  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+
+  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+    const AccControlPoints<double>& p = points_d_[patch];
+    const double u = coord[0], v = coord[1];
+    const Vec3d tu = evaluateTangentU(p.tu, u, v), tv = evaluateTangentV(p.tv, u, v);
+    return {evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+  }
+
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    const AccControlPoints<float>& p = points_f_[patch];
+    const float u = coord[0], v = coord[1];
+    const Vec3f tu = evaluateTangentU(p.tu, u, v), tv = evaluateTangentV(p.tv, u, v);
+    return {evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+  }
+
+  std::optional<OperationProfile> operationProfile(size_t patch) const override {
+    using C = CountingScalar<float>;
+    const auto position = [&](uint32_t i) {
+      const Vec3d& q = mesh_.positions[i];
+      return Vec3T<C>{C(float(q.x)), C(float(q.y)), C(float(q.z))};
+    };
+    OperationProfile profile;
+    resetOperationCounts();
+    const AccControlPoints<C> p = accControlPoints<C>(rings_, corners_[patch], tangent_, position);
+    profile.per_patch_setup = operationCounts();
+    resetOperationCounts();
+    const C u(0.3f), v(0.6f);
+    const Vec3T<C> position_uv = evaluateBicubic(p.b, u, v, order_);
+    const Vec3T<C> normal = normalize(cross(evaluateTangentU(p.tu, u, v), evaluateTangentV(p.tv, u, v)));
+    (void)position_uv;
+    (void)normal;
+    profile.per_vertex = operationCounts();
+    bool regular = true;
+    for (const PatchCorner& c : corners_[patch]) {
+      const VertexRing& ring = rings_.rings[c.vertex];
+      regular = regular && !ring.boundary && ring.valence == 4;
+    }
+    profile.note = std::string(regular ? "regular" : "irregular") + " patch, " +
+                   (tangent_ ? "tangent patches" : "geometry derivatives") +
+                   ", fma counted as one mul and one add";
+    return profile;
+  }
+
+  std::optional<gpu::GpuPatchProgram> gpuProgram() const override;
+
+  DataFootprint footprint() const override {
+    DataFootprint f;
+    // GPU layout of gpuProgram(): vec4 positions; per vertex a 16-byte ring header
+    // and 8 bytes per ring slot; 48 bytes per patch; the stencil table.
+    f.control_mesh_bytes = 16ull * mesh_.positions.size();
+    f.patch_data_bytes = 16ull * rings_.rings.size() + 8ull * rings_.edge_neighbours.size() +
+                         48ull * patchCount();
+    f.stencil_bytes = 4ull * stencilFloatCount();
+    return f;
+  }
+
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+  size_t combinationCount() const { return classes_.size(); }
+
+ private:
+  size_t stencilFloatCount() const {
+    size_t masks = 0;
+    for (const auto& [valence, mask] : masks_) masks += mask.size();
+    return classes_.size() * 4 * kCornerWeightFloats + masks;
+  }
+
+  Mesh mesh_;
+  BezierOrder order_;
+  bool tangent_;
+  QuadRings rings_;
+  std::map<KindKey, CornerWeights> weights_;
+  std::map<uint32_t, std::vector<double>> masks_;
+  std::vector<std::array<PatchCorner, 4>> corners_;
+  std::vector<ClassKey> classes_;
+  std::vector<uint32_t> class_of_, rotation_of_;
+  std::vector<AccControlPoints<double>> points_d_;
+  std::vector<AccControlPoints<float>> points_f_;
+  std::vector<std::string> warnings_;
+};
+
+uint32_t floatBits(double value) { return std::bit_cast<uint32_t>(float(value)); }
+
+std::optional<gpu::GpuPatchProgram> AccPatches::gpuProgram() const {
+  gpu::GpuPatchProgram program;
+  program.control_shader = "acc/acc.tesc";
+  program.evaluation_shader = "acc/acc.tese";
+  program.domain = tess::Domain::kQuad;
+  program.patch_count = uint32_t(patchCount());
+  program.input_vertices_per_patch = 1;
+  std::vector<uint32_t> positions, headers, slots, patches, stencils;
+  for (const Vec3d& p : mesh_.positions) {
+    for (double x : {p.x, p.y, p.z, 0.0}) positions.push_back(floatBits(x));
+  }
+  // Stencil table: per class 4 corners x kCornerWeightFloats, then the tangent masks.
+  for (const ClassKey& key : classes_) {
+    for (const KindKey& kind : key) {
+      const CornerWeights& w = weights_.at(kind);
+      const double values[kCornerWeightFloats] = {w.cv, w.ce, w.cf, w.ev, w.ee, w.ea, w.ef, w.iv,
+                                                  w.ie, w.iff, w.bv, w.be, w.cosine, 0, 0, 0};
+      for (double x : values) stencils.push_back(floatBits(x));
+    }
+  }
+  std::map<uint32_t, uint32_t> mask_offset;
+  for (const auto& [valence, mask] : masks_) {
+    mask_offset[valence] = uint32_t(stencils.size());
+    for (double x : mask) stencils.push_back(floatBits(x));
+  }
+  for (const VertexRing& ring : rings_.rings) {
+    const auto m = mask_offset.find(ring.valence);
+    headers.insert(headers.end(), {ring.offset, ring.valence, ring.boundary ? 1u : 0u,
+                                   ring.boundary || m == mask_offset.end() ? 0u : m->second});
+  }
+  for (size_t i = 0; i < rings_.edge_neighbours.size(); ++i) {
+    slots.push_back(rings_.edge_neighbours[i]);
+    slots.push_back(rings_.diagonals[i]);
+  }
+  for (size_t p = 0; p < patchCount(); ++p) {
+    for (const PatchCorner& c : corners_[p]) patches.push_back(c.vertex);
+    for (const PatchCorner& c : corners_[p]) patches.push_back(c.slot);
+    patches.insert(patches.end(), {class_of_[p], rotation_of_[p], 0u, 0u});
+  }
+  if (slots.empty()) slots.push_back(0);
+  program.storage_buffers = {positions, headers, slots, patches, stencils};
+  program.specialization = {uint32_t(order_), tangent_ ? 1u : 0u};
+  return program;
+}
+
+}  // namespace
+
+const TechniqueInfo& AccTechnique::info() const {
+  static const TechniqueInfo kInfo{
+      "acc", TechniqueFamily::kSurface,
+      "Approximate Catmull-Clark (bicubic geometry + tangent patches)",
+      "Loop & Schaefer, Approximating Catmull-Clark Subdivision Surfaces with Bicubic Patches, "
+      "ACM TOG 27(1) 2008",
+      "manifold all-quad meshes, smooth (no creases, corners or holes), boundaries with "
+      "edge-and-corner interpolation, valence <= 32"};
+  return kInfo;
+}
+
+std::vector<VariantInfo> AccTechnique::variants() const {
+  const auto make = [](std::string name, std::string text, BezierOrder order, bool tangent) {
+    return VariantInfo{std::move(name), std::move(text),
+                       {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}}};
+  };
+  return {
+      make("default", "tangent patches; symmetric FMA Bézier order", BezierOrder::kSymmetricFma, true),
+      make("no_tangent", "normal from the geometry patch's derivatives; symmetric FMA order",
+           BezierOrder::kSymmetricFma, false),
+      make("asymmetric", "tangent patches; FMA chain along u then v (not watertight)",
+           BezierOrder::kAsymmetric, true),
+      make("symmetric_nofma", "tangent patches; symmetric order without FMA",
+           BezierOrder::kSymmetricNoFma, true),
+      make("symmetric_edges", "tangent patches; symmetric FMA order on the edge rows only",
+           BezierOrder::kSymmetricEdges, true),
+  };
+}
+
+BezierOrder variantOrder(const VariantInfo& variant) {
+  const auto it = variant.parameters.find("order");
+  return it == variant.parameters.end() ? BezierOrder::kSymmetricFma : BezierOrder(int(it->second));
+}
+
+bool variantTangentPatches(const VariantInfo& variant) {
+  const auto it = variant.parameters.find("tangent");
+  return it == variant.parameters.end() || it->second != 0;
+}
+
+std::string AccTechnique::checkSupport(const Mesh& mesh) const {
+  try {
+    const Topology topology = buildTopology(mesh);
+    validate(mesh, topology);
+    buildQuadRings(mesh, "acc", kMaxValence);
+  } catch (const UnsupportedInput& error) {
+    return error.what();
+  }
+  return {};
+}
+
+std::unique_ptr<SurfacePatches> AccTechnique::buildPatches(const Mesh& mesh,
+                                                           const VariantInfo& variant) const {
+  return std::make_unique<AccPatches>(mesh, variantOrder(variant), variantTangentPatches(variant));
+}
+
+size_t topologyCombinationCount(const SurfacePatches& patches) {
+  const auto* acc = dynamic_cast<const AccPatches*>(&patches);
+  return acc == nullptr ? 0 : acc->combinationCount();
+}
+
+TB_REGISTER_TECHNIQUE(AccTechnique);
+
+}  // namespace tb::acc

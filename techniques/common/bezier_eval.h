@@ -1,0 +1,145 @@
+// Bicubic Bézier evaluation in the operation orders of seed 000 ("ベジェパッチの計算"),
+// templated on the scalar so the same order runs in double, in float (as the TES
+// does; shaders/common/bezier.glsl is its twin) and with CountingScalar.
+//
+// Control points b[i + 4 j]: i along u, j along v. Rows (fixed j) are combined in u,
+// then the four row results in v.
+//   kAsymmetric      rows and the column as one FMA chain from index 0 to 3
+//                    (seed: 60 instructions); the result depends on the direction
+//                    the parameter runs, so a shared edge seen mirrored differs.
+//   kSymmetricNoFma  (B0 p0 + B1 p1) + (B3 p3 + B2 p2), plain mul/add (105).
+//   kSymmetricFma    fma(B1, p1, B0 p0) + fma(B2, p2, B3 p3) (75; see fusedMulAdd).
+//   kSymmetricEdges  the symmetric FMA form for rows 0 and 3 and the column, the
+//                    chain for rows 1 and 2, which vanish on the v edges (69).
+// The symmetric forms give bitwise-equal points for t and 1 - t with mirrored
+// control points (B0 <-> B3 and B1 <-> B2 are computed by mirrored formulas), which
+// is what makes shared edges watertight (DESIGN.md watertightness rule 2).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "harness/mesh/vec.h"
+#include "techniques/counting_scalar.h"
+
+namespace tb {
+
+enum class BezierOrder { kAsymmetric, kSymmetricNoFma, kSymmetricFma, kSymmetricEdges };
+
+// The shader's fma(a, b, c) as the device executes it. Measured on lavapipe (Mesa
+// 22.3.6): GLSL fma() on `precise` values runs as a multiply and an add, each rounded
+// (0 ulp from the capture this way, up to 8 ulp with std::fma), so the float twin
+// rounds twice too. The build targets generic x86-64, which has no FMA for GCC to
+// contract this into; tests/techniques/acc_gpu_test.cpp would catch a change.
+// Double keeps one rounding. CountingScalar counts one mul and one add.
+inline float fusedMulAdd(float a, float b, float c) { return a * b + c; }
+inline double fusedMulAdd(double a, double b, double c) { return std::fma(a, b, c); }
+template <class T>
+CountingScalar<T> fusedMulAdd(CountingScalar<T> a, CountingScalar<T> b, CountingScalar<T> c) {
+  return a * b + c;
+}
+
+template <class T>
+Vec3T<T> fusedMulAdd(const Vec3T<T>& p, T w, const Vec3T<T>& c) {
+  return {fusedMulAdd(p.x, w, c.x), fusedMulAdd(p.y, w, c.y), fusedMulAdd(p.z, w, c.z)};
+}
+
+// Cubic Bernstein basis at t with s = 1 - t; B1 and B2 (and B0 and B3) are mirrored
+// formulas, so basis(1 - t) is basis(t) reversed, bit for bit.
+template <class T>
+std::array<T, 4> cubicBasis(T t) {
+  const T s = T(1) - t;
+  return {s * s * s, T(3) * s * s * t, T(3) * t * t * s, t * t * t};
+}
+
+template <class T>
+std::array<T, 3> quadraticBasis(T t) {
+  const T s = T(1) - t;
+  return {s * s, T(2) * s * t, t * t};
+}
+
+enum class BezierSum { kChain, kSymmetricNoFma, kSymmetricFma };
+
+template <class T>
+Vec3T<T> bezierSum4(const Vec3T<T>& p0, const Vec3T<T>& p1, const Vec3T<T>& p2,
+                    const Vec3T<T>& p3, const std::array<T, 4>& b, BezierSum sum) {
+  switch (sum) {
+    case BezierSum::kChain:
+      return fusedMulAdd(p3, b[3], fusedMulAdd(p2, b[2], fusedMulAdd(p1, b[1], p0 * b[0])));
+    case BezierSum::kSymmetricNoFma:
+      return (p0 * b[0] + p1 * b[1]) + (p3 * b[3] + p2 * b[2]);
+    case BezierSum::kSymmetricFma:
+      break;
+  }
+  return fusedMulAdd(p1, b[1], p0 * b[0]) + fusedMulAdd(p2, b[2], p3 * b[3]);
+}
+
+template <class T>
+Vec3T<T> evaluateBicubic(const std::array<Vec3T<T>, 16>& b, T u, T v, BezierOrder order) {
+  const std::array<T, 4> bu = cubicBasis(u);
+  const std::array<T, 4> bv = cubicBasis(v);
+  BezierSum outer_rows = BezierSum::kSymmetricFma, inner_rows = BezierSum::kSymmetricFma;
+  BezierSum column = BezierSum::kSymmetricFma;
+  switch (order) {
+    case BezierOrder::kAsymmetric:
+      outer_rows = inner_rows = column = BezierSum::kChain;
+      break;
+    case BezierOrder::kSymmetricNoFma:
+      outer_rows = inner_rows = column = BezierSum::kSymmetricNoFma;
+      break;
+    case BezierOrder::kSymmetricFma:
+      break;
+    case BezierOrder::kSymmetricEdges:
+      inner_rows = BezierSum::kChain;
+      break;
+  }
+  std::array<Vec3T<T>, 4> w;
+  for (int j = 0; j < 4; ++j) {
+    w[j] = bezierSum4(b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3], bu,
+                      j == 0 || j == 3 ? outer_rows : inner_rows);
+  }
+  return bezierSum4(w[0], w[1], w[2], w[3], bv, column);
+}
+
+// A tensor-product Bézier patch of degree (3 in one parameter, 2 in the other) as
+// used for tangent fields: tu[i + 3 j] (degree 2 in u, 3 in v) and tv[i + 4 j]
+// (degree 3 in u, 2 in v). Plain sums: normals need no bitwise symmetry.
+template <class T>
+Vec3T<T> evaluateTangentU(const std::array<Vec3T<T>, 12>& tu, T u, T v) {
+  const std::array<T, 3> qu = quadraticBasis(u);
+  const std::array<T, 4> bv = cubicBasis(v);
+  Vec3T<T> result{};
+  for (int j = 0; j < 4; ++j) {
+    const Vec3T<T> row = tu[3 * j] * qu[0] + tu[3 * j + 1] * qu[1] + tu[3 * j + 2] * qu[2];
+    result = j == 0 ? row * bv[0] : result + row * bv[j];
+  }
+  return result;
+}
+
+template <class T>
+Vec3T<T> evaluateTangentV(const std::array<Vec3T<T>, 12>& tv, T u, T v) {
+  const std::array<T, 4> bu = cubicBasis(u);
+  const std::array<T, 3> qv = quadraticBasis(v);
+  Vec3T<T> result{};
+  for (int j = 0; j < 3; ++j) {
+    const Vec3T<T> row = tv[4 * j] * bu[0] + tv[4 * j + 1] * bu[1] + tv[4 * j + 2] * bu[2] +
+                         tv[4 * j + 3] * bu[3];
+    result = j == 0 ? row * qv[0] : result + row * qv[j];
+  }
+  return result;
+}
+
+// Derivative patches of a bicubic (the tangent fields of the geometry itself):
+// tu = 3 (b[i+1, j] - b[i, j]), tv = 3 (b[i, j+1] - b[i, j]).
+template <class T>
+void bicubicDerivativePatches(const std::array<Vec3T<T>, 16>& b, std::array<Vec3T<T>, 12>& tu,
+                              std::array<Vec3T<T>, 12>& tv) {
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 3; ++i) tu[3 * j + i] = (b[4 * j + i + 1] - b[4 * j + i]) * T(3);
+  }
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 4; ++i) tv[4 * j + i] = (b[4 * (j + 1) + i] - b[4 * j + i]) * T(3);
+  }
+}
+
+}  // namespace tb

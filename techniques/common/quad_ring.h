@@ -1,0 +1,55 @@
+// Ordered 1-rings of a manifold quad mesh, shared by the quad-patch techniques
+// (ACC, Gregory ACC). Around vertex v the ring alternates edge neighbours e_i and
+// face-diagonal vertices f_i: face f_i has corners v -> e_i -> f_i -> e_{i+1} in its
+// own (counter-clockwise) order, so the ring turns the way the faces are oriented.
+// A boundary vertex's ring starts at the boundary edge e_0 and ends at the boundary
+// edge e_{n-1}; it has n - 1 faces. An interior vertex has n faces, f_{n-1} between
+// e_{n-1} and e_0. The stored start of the ring is fixed per vertex, so every face
+// that sums over a ring sums in the same order (DESIGN.md watertightness rule 1).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "harness/mesh/mesh.h"
+
+namespace tb {
+
+struct VertexRing {
+  uint32_t offset = 0;      // into QuadRings::edge_neighbours / diagonals
+  uint32_t valence = 0;     // n: edges at the vertex
+  uint32_t face_count = 0;  // n on the interior, n - 1 on a boundary
+  bool boundary = false;
+};
+
+struct QuadRings {
+  std::vector<VertexRing> rings;           // per position; valence 0 when unused
+  std::vector<uint32_t> edge_neighbours;   // e_i, `valence` entries per vertex
+  std::vector<uint32_t> diagonals;         // f_i, `valence` entries (last unused on a boundary)
+  // Per face, per corner k: the ring slot i of the face at corner k's vertex, so that
+  // e_i is corner k+1, f_i is corner k+2 and e_{i+1} is corner k+3.
+  std::vector<std::array<uint32_t, 4>> face_slots;
+
+  uint32_t e(uint32_t v, uint32_t i) const {
+    const VertexRing& r = rings[v];
+    return edge_neighbours[r.offset + i % r.valence];
+  }
+  uint32_t f(uint32_t v, uint32_t i) const {
+    const VertexRing& r = rings[v];
+    return diagonals[r.offset + i % r.valence];
+  }
+};
+
+// Builds the rings of an all-quad, edge- and vertex-manifold, consistently oriented
+// mesh. Throws UnsupportedInput "<technique>: <element> <rule>" naming the first face
+// or vertex that breaks a rule: a non-quad face, a degenerate face, an edge used
+// twice in one direction (non-manifold or flipped), a vertex whose faces form more
+// than one fan, valence above max_valence.
+QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence);
+
+// "vertex 12 (0.5, 1, 0)" for error messages.
+std::string describeVertex(const Mesh& mesh, uint32_t vertex);
+
+}  // namespace tb

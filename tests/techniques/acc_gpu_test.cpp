@@ -1,0 +1,95 @@
+// acc's shaders (shaders/acc/) on the Vulkan device against their CPU twin: the
+// captured position at each gl_TessCoord equals evaluateFloat there within 4 ulp, and
+// with the symmetric orders the points two patches give on a shared edge are bitwise
+// equal in the capture (DESIGN.md watertightness rules 1 and 2).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <map>
+
+#include "harness/gpu/patch_program.h"
+#include "techniques/acc/acc.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/techniques/acc_test_support.h"
+
+namespace tb::acc {
+namespace {
+
+int64_t orderedBits(float x) {
+  const int32_t i = std::bit_cast<int32_t>(x);
+  return i < 0 ? int64_t(INT32_MIN) - i : int64_t(i);
+}
+
+int64_t ulpDistance(const Vec3f& a, const Vec3f& b) {
+  return std::max({std::llabs(orderedBits(a.x) - orderedBits(b.x)),
+                   std::llabs(orderedBits(a.y) - orderedBits(b.y)),
+                   std::llabs(orderedBits(a.z) - orderedBits(b.z))});
+}
+
+struct LevelCase {
+  float level;
+  tess::Spacing spacing;
+};
+
+TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const auto assets = testing::supportedAssets();
+  ASSERT_FALSE(assets.empty());
+  for (const VariantInfo& variant : AccTechnique().variants()) {
+    const bool symmetric = variant.name != "asymmetric";
+    int64_t worst_ulp = 0;
+    double worst_normal = 0;
+    size_t vertices = 0, shared = 0, differing = 0;
+    for (const auto& asset : assets) {
+      const auto patches = AccTechnique().buildPatches(asset.mesh, variant);
+      const auto program = patches->gpuProgram();
+      ASSERT_TRUE(program.has_value());
+      for (const LevelCase& lc : {LevelCase{1, tess::Spacing::kInteger},
+                                  LevelCase{7.3f, tess::Spacing::kFractionalOdd},
+                                  LevelCase{16, tess::Spacing::kInteger}}) {
+        tess::Levels levels;
+        levels.outer = {lc.level, lc.level, lc.level, lc.level};
+        levels.inner = {lc.level, lc.level};
+        gpu::PatchProgramOptions options;
+        options.spacing = lc.spacing;
+        options.patches_per_draw = 16;
+        const gpu::PatchProgramCapture capture =
+            gpu::runPatchProgram(context, *program, levels, options);
+        const size_t expected_points =
+            tess::tessellate(tess::Domain::kQuad, lc.spacing, levels).points.size();
+        ASSERT_EQ(capture.vertices.size(), expected_points * patches->patchCount())
+            << asset.name << " " << variant.name;
+        std::map<testing::EdgeKey, Vec3f> seen;
+        for (const gpu::CapturedVertex& v : capture.vertices) {
+          const SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
+          const int64_t ulp = ulpDistance(cpu.position, v.position);
+          worst_ulp = std::max(worst_ulp, ulp);
+          EXPECT_LE(ulp, 4) << asset.name << " " << variant.name << " patch " << v.patch << " at "
+                            << v.coord[0] << "," << v.coord[1];
+          worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
+          ++vertices;
+          for (const auto& key :
+               testing::edgeKeys(patches->patchCorners(v.patch), v.coord[0], v.coord[1])) {
+            const auto [it, inserted] = seen.emplace(key, v.position);
+            if (inserted) continue;
+            ++shared;
+            if (!(it->second == v.position)) ++differing;
+          }
+        }
+      }
+    }
+    std::printf("%-16s GPU: %zu vertices, max %lld ulp from evaluateFloat, max normal diff %.1e; "
+                "%zu of %zu shared edge points differ bitwise\n",
+                variant.name.c_str(), vertices, (long long)worst_ulp, worst_normal, differing,
+                shared);
+    EXPECT_LT(worst_normal, 1e-4) << variant.name;
+    EXPECT_GT(shared, 1000u);
+    if (symmetric) {
+      EXPECT_EQ(differing, 0u) << variant.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb::acc

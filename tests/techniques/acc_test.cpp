@@ -1,0 +1,387 @@
+// acc against its oracles: the OpenSubdiv Bfr limit surface (regular faces are exact
+// B-spline patches; tangent patches bring normals closer to the limit's), the other
+// patch of every shared edge (C0 in double, bitwise in float for symmetric orders), a
+// hand count of the Bézier evaluation, and the rejection rules.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <map>
+
+#include "harness/mesh/obj_loader.h"
+#include "harness/mesh/topology.h"
+#include "harness/tess/tessellator.h"
+#include "reference/limit_surface.h"
+#include "techniques/acc/acc.h"
+#include "techniques/common/bezier_eval.h"
+#include "techniques/common/quad_ring.h"
+#include "tests/techniques/acc_test_support.h"
+
+namespace tb::acc {
+namespace {
+
+using testing::supportedAssets;
+using testing::variantNamed;
+
+double diagonal(const Mesh& mesh) {
+  Vec3d lo = mesh.positions[0], hi = lo;
+  for (const Vec3d& p : mesh.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return length(hi - lo);
+}
+
+std::vector<tess::DomainPoint> domainPoints() {
+  tess::Levels levels;
+  levels.outer = {7.3f, 7.3f, 7.3f, 7.3f};
+  levels.inner = {7.3f, 7.3f};
+  return tess::tessellate(tess::Domain::kQuad, tess::Spacing::kFractionalOdd, levels).points;
+}
+
+TEST(Acc, SupportedAssetsAreListed) {
+  std::vector<std::string> rejected;
+  const auto assets = supportedAssets(&rejected);
+  for (const auto& a : assets) std::printf("acc supports %s\n", a.name.c_str());
+  for (const auto& r : rejected) std::printf("acc rejects %s\n", r.c_str());
+  EXPECT_GE(assets.size(), 3u);
+}
+
+// Oracle: Bfr limit (ApproxLevel 10) on faces Bfr itself represents by one B-spline.
+TEST(Acc, RegularFacesEqualTheBfrLimit) {
+  const auto points = domainPoints();
+  size_t checked_faces = 0;
+  for (const auto& asset : supportedAssets()) {
+    const ref::LimitSurface limit(asset.mesh, ref::Scheme::kCatmullClark);
+    const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed("default"));
+    const double diag = diagonal(asset.mesh);
+    double worst_d = 0, worst_f = 0;
+    size_t faces = 0;
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
+      if (!limit.isRegular(f)) continue;
+      ++faces;
+      const ref::LimitFace face = limit.face(f);
+      for (const tess::DomainPoint& d : points) {
+        const ref::LimitPoint exact = face.evaluate(d[0], d[1]);
+        const SurfacePoint p = patches->evaluate(f, {d[0], d[1], 0});
+        const SurfacePointF q = patches->evaluateFloat(f, d);
+        worst_d = std::max(worst_d, length(p.position - exact.position) / diag);
+        worst_f = std::max(worst_f, length(vecCast<double>(q.position) - exact.position) / diag);
+        EXPECT_LT(length(p.normal - exact.normal), 1e-9) << asset.name << " face " << f;
+      }
+    }
+    std::printf("%-28s %4zu regular faces: max |acc - limit| / diagonal double %.2e float %.2e\n",
+                asset.name.c_str(), faces, worst_d, worst_f);
+    EXPECT_LT(worst_d, 1e-12) << asset.name;
+    EXPECT_LT(worst_f, 1e-6) << asset.name;
+    checked_faces += faces;
+  }
+  EXPECT_GT(checked_faces, 50u);
+}
+
+double meanNormalAngleDeg(const Mesh& mesh, const std::string& variant) {
+  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const auto patches = AccTechnique().buildPatches(mesh, variantNamed(variant));
+  const auto points = domainPoints();
+  double sum = 0;
+  size_t count = 0;
+  for (size_t f = 0; f < patches->patchCount(); ++f) {
+    const ref::LimitFace face = limit.face(f);
+    for (const tess::DomainPoint& d : points) {
+      const Vec3d n = patches->evaluate(f, {d[0], d[1], 0}).normal;
+      const Vec3d m = face.evaluate(d[0], d[1]).normal;
+      sum += std::acos(std::clamp(dot(n, m), -1.0, 1.0)) * 180 / std::numbers::pi;
+      ++count;
+    }
+  }
+  return sum / double(count);
+}
+
+// Oracle: Bfr limit normals; §3.2's tangent patches exist to make normals smooth.
+TEST(Acc, TangentPatchesBringNormalsCloserToTheLimit) {
+  for (const char* name : {"catmark_cube.obj", "catmark_toroidal_tet.obj"}) {
+    const Mesh mesh = loadObjFile(tb::testing::assetPath(std::string("opensubdiv/") + name));
+    const double with = meanNormalAngleDeg(mesh, "default");
+    const double without = meanNormalAngleDeg(mesh, "no_tangent");
+    std::printf("%s mean normal deviation: tangent patches %.4f deg, geometry %.4f deg\n", name,
+                with, without);
+    EXPECT_LT(with, without) << name;
+  }
+}
+
+// Oracle: the neighbouring patch evaluated at the same edge point.
+TEST(Acc, SharedEdgesAreC0InDouble) {
+  for (const auto& asset : supportedAssets()) {
+    const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed("default"));
+    const double diag = diagonal(asset.mesh);
+    std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
+    double worst = 0;
+    size_t edges = 0;
+    for (size_t p = 0; p < patches->patchCount(); ++p) {
+      const auto c = patches->patchCorners(p);
+      for (int k = 0; k < 4; ++k) {
+        const auto key = std::make_pair(c[(k + 1) % 4], c[k]);  // the other side's direction
+        const auto other = first_side.find(key);
+        if (other == first_side.end()) {
+          first_side[{c[k], c[(k + 1) % 4]}] = {p, k};
+          continue;
+        }
+        ++edges;
+        for (int i = 0; i <= 16; ++i) {
+          const double s = i / 16.0;
+          const auto a = testing::edgeUv(k, s);
+          const auto b = testing::edgeUv(other->second.second, 1 - s);
+          const Vec3d pa = patches->evaluate(p, {a[0], a[1], 0}).position;
+          const Vec3d pb = patches->evaluate(other->second.first, {b[0], b[1], 0}).position;
+          worst = std::max(worst, length(pa - pb) / diag);
+        }
+      }
+    }
+    EXPECT_LT(worst, 1e-12) << asset.name;
+    EXPECT_GT(edges, 0u) << asset.name;
+  }
+}
+
+// Oracle: bitwise equality of the float points two patches give on their shared edge
+// (DESIGN.md watertightness rules 1 and 2); asymmetric is reported, not asserted.
+TEST(Acc, SymmetricOrdersAreBitwiseWatertightInFloat) {
+  const auto points = domainPoints();
+  for (const char* variant : {"default", "symmetric_nofma", "symmetric_edges", "asymmetric"}) {
+    size_t shared = 0, differing = 0;
+    for (const auto& asset : supportedAssets()) {
+      const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed(variant));
+      std::map<testing::EdgeKey, Vec3f> seen;
+      for (size_t p = 0; p < patches->patchCount(); ++p) {
+        for (const tess::DomainPoint& d : points) {
+          const auto keys = testing::edgeKeys(patches->patchCorners(p), d[0], d[1]);
+          if (keys.empty()) continue;
+          const Vec3f q = patches->evaluateFloat(p, d).position;
+          for (const auto& key : keys) {
+            const auto [it, inserted] = seen.emplace(key, q);
+            if (inserted) continue;
+            ++shared;
+            if (!(it->second == q)) ++differing;
+          }
+        }
+      }
+    }
+    std::printf("%-16s CPU float: %zu of %zu shared edge points differ\n", variant, differing,
+                shared);
+    EXPECT_GT(shared, 1000u);
+    if (std::string(variant) != "asymmetric") {
+      EXPECT_EQ(differing, 0u) << variant;
+    }
+  }
+}
+
+// Oracle: a hand count. Basis: 1 sub + 10 mul per parameter. Each of the 5 four-term
+// sums (4 rows, 1 column) is 4 mul + 3 add per component (fma = mul + add): 60 + 45.
+TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
+  using C = CountingScalar<float>;
+  std::array<Vec3T<C>, 16> b{};
+  for (BezierOrder order : {BezierOrder::kAsymmetric, BezierOrder::kSymmetricNoFma,
+                            BezierOrder::kSymmetricFma, BezierOrder::kSymmetricEdges}) {
+    resetOperationCounts();
+    (void)evaluateBicubic(b, C(0.25f), C(0.5f), order);
+    EXPECT_EQ(operationCounts().mul, 80u);
+    EXPECT_EQ(operationCounts().add, 47u);
+  }
+  const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const auto patches = AccTechnique().buildPatches(cube, variantNamed("default"));
+  const auto profile = patches->operationProfile(0);
+  ASSERT_TRUE(profile.has_value());
+  EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
+  EXPECT_EQ(profile->per_vertex.sqrt, 1u);
+  const Mesh torus = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const auto regular = AccTechnique().buildPatches(torus, variantNamed("default"))->operationProfile(0);
+  ASSERT_TRUE(regular.has_value());
+  // Valence 3 rings are smaller than valence 4 ones: the cube's set-up is cheaper.
+  EXPECT_LT(profile->per_patch_setup.total(), regular->per_patch_setup.total());
+  EXPECT_EQ(profile->per_vertex.total(), regular->per_vertex.total());
+  for (const auto* p : {&*profile, &*regular}) {
+    std::printf("set-up %llu ops (%llu mul, %llu add), per vertex %llu ops (%llu mul, %llu add, "
+                "%llu div, %llu sqrt): %s\n",
+                (unsigned long long)p->per_patch_setup.total(),
+                (unsigned long long)p->per_patch_setup.mul,
+                (unsigned long long)p->per_patch_setup.add,
+                (unsigned long long)p->per_vertex.total(), (unsigned long long)p->per_vertex.mul,
+                (unsigned long long)p->per_vertex.add, (unsigned long long)p->per_vertex.div,
+                (unsigned long long)p->per_vertex.sqrt, p->note.c_str());
+  }
+}
+
+// Oracle: hand count of corner (valence, boundary) tuples up to rotation.
+TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
+  const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
+  EXPECT_EQ(topologyCombinationCount(*AccTechnique().buildPatches(cube, {})), 1u);
+  // A 2x1 strip: both quads have corners (2 boundary, 3 boundary, 3 boundary, 2 boundary)
+  // in rotated order, so one combination.
+  const Mesh strip = loadObjText(
+      "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n", "strip");
+  const auto patches = AccTechnique().buildPatches(strip, {});
+  EXPECT_EQ(topologyCombinationCount(*patches), 1u);
+  EXPECT_GT(patches->footprint().stencil_bytes, 0u);
+  for (const auto& asset : supportedAssets()) {
+    const auto p = AccTechnique().buildPatches(asset.mesh, {});
+    std::printf("%-28s %5zu patches, %3zu topology combinations, stencil %llu bytes\n",
+                asset.name.c_str(), p->patchCount(), topologyCombinationCount(*p),
+                (unsigned long long)p->footprint().stencil_bytes);
+    EXPECT_LE(topologyCombinationCount(*p), p->patchCount());
+  }
+}
+
+std::string rejection(const std::string& obj) {
+  try {
+    AccTechnique().buildPatches(loadObjText(obj, "test.obj"), {});
+  } catch (const UnsupportedInput& error) {
+    EXPECT_EQ(std::string(error.what()), AccTechnique().checkSupport(loadObjText(obj, "test.obj")));
+    return error.what();
+  }
+  return "accepted";
+}
+
+constexpr const char* kGrid =
+    "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\n"
+    "f 1 2 5 4\nf 2 3 6 5\nf 4 5 8 7\nf 5 6 9 8\n";
+
+TEST(AccRejects, NonQuadFacesNamingTheFace) {
+  const std::string why = rejection(std::string(kGrid) + "f 3 9 6\n");
+  EXPECT_NE(why.find("acc: face 4 (line 14) has 3 vertices; ACC needs quads"), std::string::npos) << why;
+}
+
+TEST(AccRejects, NonManifoldEdgesNamingTheEdge) {
+  const std::string why =
+      rejection(std::string(kGrid) +
+                "v 1 0 1\nv 2 0 1\nv 1 0 -1\nv 2 0 -1\nf 2 3 11 10\nf 3 2 12 13\n");
+  EXPECT_NE(why.find("edge 1-2 is shared by 3 faces"), std::string::npos) << why;
+}
+
+TEST(AccRejects, HolesNamingTheFace) {
+  const std::string why = rejection(std::string(kGrid) + "t hole 1/0/0 2\n");
+  EXPECT_NE(why.find("face 2 (line 12) is tagged as a hole"), std::string::npos) << why;
+}
+
+TEST(AccRejects, CreasesNamingTheEdge) {
+  const std::string why = rejection(std::string(kGrid) + "t crease 2/1/0 3 4 2.5\n");
+  EXPECT_NE(why.find("edge 3-4 has crease sharpness"), std::string::npos) << why;
+}
+
+TEST(AccRejects, CornerTagsNamingTheVertex) {
+  const std::string why = rejection(std::string(kGrid) + "t corner 1/1/0 4 1.0\n");
+  EXPECT_NE(why.find("vertex 4 (1, 1, 0) has corner sharpness"), std::string::npos) << why;
+}
+
+TEST(AccRejects, EdgeOnlyBoundariesNamingAnEdge) {
+  const std::string why = rejection(std::string(kGrid) + "t interpolateboundary 1/0/0 2\n");
+  EXPECT_NE(why.find("boundary edge 0-1: boundary interpolation edge-only"), std::string::npos)
+      << why;
+}
+
+TEST(AccRejects, NonManifoldVerticesNamingTheVertex) {
+  // Two quads touching at one vertex only (a bow tie).
+  const std::string why = rejection(
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 1 0\nv 2 2 0\nv 1 2 0\nf 1 2 3 4\nf 3 5 6 7\n");
+  EXPECT_NE(why.find("vertex 2 (1, 1, 0) has faces in more than one fan"), std::string::npos) << why;
+}
+
+TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
+  // A fan of 33 quads around vertex 0 (closed disc): valence 33.
+  std::string obj = "v 0 0 0\n";
+  const int n = 33;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 0.5) / n;
+    obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    obj += "v " + std::to_string(1.5 * std::cos(b)) + " " + std::to_string(1.5 * std::sin(b)) + " 0\n";
+  }
+  for (int i = 0; i < n; ++i) {
+    const int e0 = 2 + 2 * i, f0 = 3 + 2 * i, e1 = 2 + 2 * ((i + 1) % n);
+    obj += "f 1 " + std::to_string(e0) + " " + std::to_string(f0) + " " + std::to_string(e1) + "\n";
+  }
+  const std::string why = rejection(obj);
+  EXPECT_NE(why.find("vertex 0 (0, 0, 0) has valence 33 above the maximum 32"), std::string::npos)
+      << why;
+}
+
+}  // namespace
+}  // namespace tb::acc
+
+namespace tb {
+namespace {
+
+// Oracle: the faces' own corner order, which defines e_i, f_i and e_{i+1} of every slot.
+TEST(QuadRings, EverySlotMatchesItsFacesCornerOrder) {
+  for (const auto& asset : acc::testing::supportedAssets()) {
+    const Mesh& mesh = asset.mesh;
+    const QuadRings rings = buildQuadRings(mesh, "acc", acc::kMaxValence);
+    const Topology topology = buildTopology(mesh);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const auto c = mesh.facePositions(f);
+      for (uint32_t k = 0; k < 4; ++k) {
+        const uint32_t v = c[k], slot = rings.face_slots[f][k];
+        EXPECT_EQ(rings.e(v, slot), c[(k + 1) % 4]) << asset.name << " face " << f;
+        EXPECT_EQ(rings.f(v, slot), c[(k + 2) % 4]) << asset.name << " face " << f;
+        EXPECT_EQ(rings.e(v, slot + 1), c[(k + 3) % 4]) << asset.name << " face " << f;
+      }
+    }
+    for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
+      EXPECT_EQ(rings.rings[v].valence, topology.valence[v]) << asset.name << " vertex " << v;
+      EXPECT_EQ(rings.rings[v].boundary, topology.on_boundary[v] != 0) << asset.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb
+
+namespace tb::acc {
+namespace {
+
+// Oracle: the neighbouring patch's normal at the same edge point. Tangent patches
+// (§3.2) make the cross tangents of both sides sum to a multiple of the shared edge
+// tangent, so the normals agree along every edge not touching an extraordinary
+// boundary vertex (where acc keeps the geometry tangents); the geometry's own
+// derivatives do not.
+TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
+  for (const char* variant : {"default", "no_tangent"}) {
+    double worst = 0;
+    size_t edges = 0;
+    for (const auto& asset : testing::supportedAssets()) {
+      const QuadRings rings = buildQuadRings(asset.mesh, "acc", kMaxValence);
+      const auto keeps_geometry = [&](uint32_t v) {
+        return rings.rings[v].boundary && rings.rings[v].valence != 3;
+      };
+      const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed(variant));
+      std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
+      for (size_t p = 0; p < patches->patchCount(); ++p) {
+        const auto c = patches->patchCorners(p);
+        for (int k = 0; k < 4; ++k) {
+          const uint32_t a = c[k], b = c[(k + 1) % 4];
+          const auto other = first_side.find({b, a});
+          if (other == first_side.end()) {
+            first_side[{a, b}] = {p, k};
+            continue;
+          }
+          if (keeps_geometry(a) || keeps_geometry(b)) continue;
+          ++edges;
+          for (int i = 1; i < 16; ++i) {
+            const auto ua = testing::edgeUv(k, i / 16.0);
+            const auto ub = testing::edgeUv(other->second.second, 1 - i / 16.0);
+            const Vec3d na = patches->evaluate(p, {ua[0], ua[1], 0}).normal;
+            const Vec3d nb = patches->evaluate(other->second.first, {ub[0], ub[1], 0}).normal;
+            worst = std::max(worst, length(na - nb));
+          }
+        }
+      }
+    }
+    std::printf("%-10s max normal jump across %zu edges: %.3e (|n_a - n_b|)\n", variant, edges,
+                worst);
+    if (std::string(variant) == "default") {
+      EXPECT_LT(worst, 1e-9);
+    } else {
+      EXPECT_GT(worst, 1e-3);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb::acc
