@@ -23,7 +23,7 @@ void main() {
     tv[i] = tv_in[i];
   }
   const vec2 uv = gl_TessCoord.xy;
-  const vec3 position = tbEvaluateBicubic(b, uv, kOrder);
+  const vec3 position = (kOrder == kTbBezierSymmetricNoFmaImprecise ? tbEvaluateBicubicImprecise(b, uv) : tbEvaluateBicubic(b, uv, kOrder));
   const vec3 normal = normalize(cross(tbEvaluateTangentU(tu, uv), tbEvaluateTangentV(tv, uv)));
   tbEmitVertex(position, normal);
 }

@@ -14,5 +14,5 @@ layout(location = 0) in vec3 b_in[];
 void main() {
   vec3 b[16];
   for (int i = 0; i < 16; ++i) b[i] = b_in[i];
-  gl_Position = vec4(tbEvaluateBicubic(b, gl_TessCoord.xy, kOrder), 1.0);
+  gl_Position = vec4((kOrder == kTbBezierSymmetricNoFmaImprecise ? tbEvaluateBicubicImprecise(b, gl_TessCoord.xy) : tbEvaluateBicubic(b, gl_TessCoord.xy, kOrder)), 1.0);
 }

@@ -7,6 +7,8 @@
 //   order 1  symmetric_nofma  (B0 p0 + B1 p1) + (B3 p3 + B2 p2)
 //   order 2  symmetric_fma    fma(B1, p1, B0 p0) + fma(B2, p2, B3 p3)
 //   order 3  symmetric_edges  symmetric FMA on rows 0, 3 and the column, chain on rows 1, 2
+//   order 4  symmetric_nofma written without `precise` (tbEvaluateBicubicImprecise): the
+//            compiler may reassociate it, so it shows what `precise` buys
 #ifndef TB_BEZIER_GLSL
 #define TB_BEZIER_GLSL
 
@@ -14,6 +16,7 @@ const uint kTbBezierAsymmetric = 0u;
 const uint kTbBezierSymmetricNoFma = 1u;
 const uint kTbBezierSymmetricFma = 2u;
 const uint kTbBezierSymmetricEdges = 3u;
+const uint kTbBezierSymmetricNoFmaImprecise = 4u;
 
 // B0..B3 at t, with s = 1 - t; basis(1 - t) is basis(t) reversed bit for bit.
 vec4 tbCubicBasis(float t) {
@@ -68,6 +71,24 @@ vec3 tbEvaluateBicubic(vec3 p[16], vec2 uv, uint order) {
   precise vec3 w2 = tbBezierSum4(p[8], p[9], p[10], p[11], bu, inner_rows);
   precise vec3 w3 = tbBezierSum4(p[12], p[13], p[14], p[15], bu, outer_rows);
   return tbBezierSum4(w0, w1, w2, w3, bv, column);
+}
+
+// Order 4: the symmetric sums of order 1 with no `precise` anywhere (basis included).
+vec3 tbImpreciseSum4(vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec4 b) {
+  return (p0 * b.x + p1 * b.y) + (p3 * b.w + p2 * b.z);
+}
+
+vec3 tbEvaluateBicubicImprecise(vec3 p[16], vec2 uv) {
+  const float su = 1.0 - uv.x, sv = 1.0 - uv.y;
+  const vec4 bu = vec4(su * su * su, 3.0 * su * su * uv.x, 3.0 * uv.x * uv.x * su,
+                       uv.x * uv.x * uv.x);
+  const vec4 bv = vec4(sv * sv * sv, 3.0 * sv * sv * uv.y, 3.0 * uv.y * uv.y * sv,
+                       uv.y * uv.y * uv.y);
+  const vec3 w0 = tbImpreciseSum4(p[0], p[1], p[2], p[3], bu);
+  const vec3 w1 = tbImpreciseSum4(p[4], p[5], p[6], p[7], bu);
+  const vec3 w2 = tbImpreciseSum4(p[8], p[9], p[10], p[11], bu);
+  const vec3 w3 = tbImpreciseSum4(p[12], p[13], p[14], p[15], bu);
+  return tbImpreciseSum4(w0, w1, w2, w3, bv);
 }
 
 // Tangent-field patches: tu[i + 3 j] degree 2 in u and 3 in v; tv[i + 4 j] 3 x 2.

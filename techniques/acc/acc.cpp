@@ -322,6 +322,10 @@ std::vector<VariantInfo> AccTechnique::variants() const {
            BezierOrder::kSymmetricNoFma, true),
       make("symmetric_edges", "tangent patches; symmetric FMA order on the edge rows only",
            BezierOrder::kSymmetricEdges, true),
+      make("symmetric_imprecise",
+           "symmetric order without FMA, written without `precise` (the compiler may "
+           "reassociate it)",
+           BezierOrder::kSymmetricNoFmaImprecise, true),
   };
 }
 

@@ -24,7 +24,16 @@
 
 namespace tb {
 
-enum class BezierOrder { kAsymmetric, kSymmetricNoFma, kSymmetricFma, kSymmetricEdges };
+// kSymmetricNoFmaImprecise is kSymmetricNoFma written without `precise` in the shader:
+// the same arithmetic on the CPU, but the GPU compiler may reassociate it (NIR folds
+// constants such as the 3 of B1/B2), which is what breaks bitwise symmetry there.
+enum class BezierOrder {
+  kAsymmetric,
+  kSymmetricNoFma,
+  kSymmetricFma,
+  kSymmetricEdges,
+  kSymmetricNoFmaImprecise,
+};
 
 // The shader's fma(a, b, c) as the device executes it. Measured on lavapipe (Mesa
 // 22.3.6): GLSL fma() on `precise` values runs as a multiply and an add, each rounded
@@ -85,6 +94,7 @@ Vec3T<T> evaluateBicubic(const std::array<Vec3T<T>, 16>& b, T u, T v, BezierOrde
       outer_rows = inner_rows = column = BezierSum::kChain;
       break;
     case BezierOrder::kSymmetricNoFma:
+    case BezierOrder::kSymmetricNoFmaImprecise:
       outer_rows = inner_rows = column = BezierSum::kSymmetricNoFma;
       break;
     case BezierOrder::kSymmetricFma:

@@ -37,6 +37,11 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
   const auto assets = testing::supportedAssets();
   ASSERT_FALSE(assets.empty());
   for (const VariantInfo& variant : AccTechnique().variants()) {
+    // symmetric_imprecise is the counter-example: symmetric as written, but without
+    // `precise` the driver may reassociate it, so neither bitwise symmetry nor agreement
+    // with the CPU twin is promised; tests/measures/watertight_variants_test.cpp pins
+    // what it does.
+    if (variant.name == "symmetric_imprecise") continue;
     const bool symmetric = variant.name != "asymmetric";
     int64_t worst_ulp = 0;
     double worst_normal = 0;
