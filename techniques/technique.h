@@ -46,6 +46,10 @@ struct DataFootprint {
   uint64_t control_mesh_bytes = 0;  // vertex attributes + index buffer of the control mesh
   uint64_t patch_data_bytes = 0;    // per-patch control points, coefficients, flags
   uint64_t stencil_bytes = 0;       // stencil tables and topology-combination classes
+  // Distinct stencil classes: patches whose control points share one weight table (seed
+  // 000: the tuple of corner valences and boundary flags, up to rotation; its example
+  // reduces 105 patches to 23). 0 when the technique has no such classes. Best case 1.
+  uint64_t topology_combinations = 0;
   uint64_t total() const { return control_mesh_bytes + patch_data_bytes + stencil_bytes; }
 };
 

@@ -81,6 +81,8 @@ class MemoryMeasure final : public Measure {
           {"control_mesh_bytes", double(m.technique.control_mesh_bytes), "bytes"},
           {"patch_data_bytes", double(m.technique.patch_data_bytes), "bytes"},
           {"stencil_bytes", double(m.technique.stencil_bytes), "bytes"},
+          {"topology_combinations", double(m.technique.topology_combinations), "count"},
+          {"patches", double(input.patches->patchCount()), "count"},
           {"displacement_bytes", double(m.displacement_bytes), "bytes"},
           {"technique_with_displacement_bytes", double(m.technique_with_displacement_bytes),
            "bytes"},

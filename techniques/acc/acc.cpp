@@ -220,6 +220,7 @@ class AccPatches final : public SurfacePatches {
     f.patch_data_bytes = 16ull * rings_.rings.size() + 8ull * rings_.edge_neighbours.size() +
                          48ull * patchCount();
     f.stencil_bytes = 4ull * stencilFloatCount();
+    f.topology_combinations = classes_.size();
     return f;
   }
 

@@ -227,6 +227,8 @@ TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
                 asset.name.c_str(), p->patchCount(), topologyCombinationCount(*p),
                 (unsigned long long)p->footprint().stencil_bytes);
     EXPECT_LE(topologyCombinationCount(*p), p->patchCount());
+    // The memory measure reads the count from the footprint (results.json).
+    EXPECT_EQ(p->footprint().topology_combinations, topologyCombinationCount(*p));
   }
 }
 
