@@ -20,9 +20,6 @@ constexpr float kLevels[] = {1.0f, 7.3f, 16.0f, 64.0f};
 constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kPow2,
                                        tess::Spacing::kFractionalOdd,
                                        tess::Spacing::kFractionalEven};
-// On the GPU, level 64 is measured on assets with at most this many patches, which keeps
-// the test under a minute on lavapipe (the suite's cracks measure uses the same rule).
-constexpr size_t kGpuLevel64MaxPatches = 100;
 
 struct Case {
   const char* technique;
@@ -83,7 +80,6 @@ TEST_P(SymmetricVariants, AreBitwiseWatertightInTheLavapipeCapture) {
   forSupportedAssets(GetParam(), [&](const std::string& asset, const SurfacePatches& patches) {
     for (tess::Spacing spacing : kSpacings) {
       for (float level : kLevels) {
-        if (level == 64.0f && patches.patchCount() > kGpuLevel64MaxPatches) continue;
         const CrackFigures f =
             measureCracks(patches, spacing, level, CrackBackend::kGpu, &context);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
