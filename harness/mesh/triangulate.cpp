@@ -38,4 +38,16 @@ Triangulation fanTriangulate(const Mesh& mesh) {
   return result;
 }
 
+std::vector<std::string> triangulationWarnings(const Triangulation& triangulation) {
+  std::vector<std::string> warnings;
+  if (triangulation.polygons_split > 0) {
+    warnings.push_back(std::to_string(triangulation.polygons_split) +
+                       " polygons with more than 3 vertices were fan-triangulated");
+  }
+  if (triangulation.mesh.normals_computed) {
+    warnings.push_back("the mesh has no normals: angle-weighted smooth normals were computed");
+  }
+  return warnings;
+}
+
 }  // namespace tb

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "harness/mesh/mesh.h"
@@ -15,5 +16,8 @@ struct Triangulation {
 // Fan-triangulates every polygon from its first corner, keeping split normals and
 // UVs per corner. Triangles pass through unchanged.
 Triangulation fanTriangulate(const Mesh& mesh);
+
+// The notes a triangle technique reports about its input: polygons split, normals computed.
+std::vector<std::string> triangulationWarnings(const Triangulation& triangulation);
 
 }  // namespace tb

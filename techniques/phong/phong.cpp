@@ -29,13 +29,7 @@ class PhongPatches final : public SurfacePatches {
   PhongPatches(Triangulation triangulation, double alpha, bool edge)
       : tri_(std::move(triangulation)), alpha_(alpha), edge_(edge) {
     if (edge_) edge_build_ = pn_triangles::buildPnRecords(tri_.mesh, edgeOptions());
-    if (tri_.polygons_split > 0) {
-      warnings_.push_back(std::to_string(tri_.polygons_split) +
-                          " polygons with more than 3 vertices were fan-triangulated");
-    }
-    if (tri_.mesh.normals_computed) {
-      warnings_.push_back("the mesh has no normals: angle-weighted smooth normals were computed");
-    }
+    warnings_ = triangulationWarnings(tri_);
   }
 
   PatchDomain domain() const override { return PatchDomain::kTriangle; }

@@ -15,13 +15,7 @@ class PnPatches final : public SurfacePatches {
       : tri_(std::move(triangulation)),
         options_(options),
         build_(buildPnRecords(tri_.mesh, options_)) {
-    if (tri_.polygons_split > 0) {
-      warnings_.push_back(std::to_string(tri_.polygons_split) +
-                          " polygons with more than 3 vertices were fan-triangulated");
-    }
-    if (tri_.mesh.normals_computed) {
-      warnings_.push_back("the mesh has no normals: angle-weighted smooth normals were computed");
-    }
+    warnings_ = triangulationWarnings(tri_);
   }
 
   PatchDomain domain() const override { return PatchDomain::kTriangle; }
