@@ -29,16 +29,8 @@ static_assert(sizeof(PushBlock) == 32);
 constexpr uint32_t kCaptureWords = 10;           // kTbCaptureWords
 constexpr VkDeviceSize kCaptureHeaderBytes = 16;  // count, capacity, 2 reserved
 constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 64ull << 20;
-constexpr uint32_t kMaxDrawsPerSubmit = 4096;
 constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-
-constexpr VkQueryPipelineStatisticFlags kStatisticFlags =
-    VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
 
 // One compiled program: its descriptor layout, pipeline and descriptor set.
 struct ProgramPipeline {
@@ -59,7 +51,7 @@ struct PatchProgramCache {
     auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
     info.queryCount = 1;
-    info.pipelineStatistics = kStatisticFlags;
+    info.pipelineStatistics = kTessStatisticFlags;
     VkQueryPool pool = VK_NULL_HANDLE;
     vkCheck(vkCreateQueryPool(context.device(), &info, nullptr, &pool), "vkCreateQueryPool");
     queries = VkQueryPoolOwner(context.device(), pool);
@@ -101,20 +93,9 @@ struct PatchProgramCache {
       shader_stages[1].pSpecializationInfo = &specialization;
       shader_stages[2].pSpecializationInfo = &specialization;
     }
-    auto tessellation = vkStruct<VkPipelineTessellationStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
-    tessellation.patchControlPoints = program.input_vertices_per_patch;
-    auto origin = vkStruct<VkPipelineTessellationDomainOriginStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
-    origin.domainOrigin = VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT;
-    tessellation.pNext = &origin;
-    const auto rendering =
-        vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    GraphicsPipelineBase base(shader_stages, VK_PRIMITIVE_TOPOLOGY_PATCH_LIST, p.layout.get(),
-                              &rendering);
-    base.raster.rasterizerDiscardEnable = VK_TRUE;
-    base.info.pTessellationState = &tessellation;
-    p.pipeline = base.create(device, "vkCreateGraphicsPipelines (patch program)");
+    p.pipeline = createDiscardTessPipeline(device, p.layout.get(), shader_stages,
+                                           program.input_vertices_per_patch,
+                                           "vkCreateGraphicsPipelines (patch program)");
     p.descriptors = StorageBufferSet(device, p.set_layout.get(), binding_count);
     return programs.emplace(std::move(key), std::move(p)).first->second;
   }
@@ -238,7 +219,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
         context.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, from, to, options.capture); });
     result.draws += (to - from + per_draw - 1) / per_draw;
 
-    uint64_t stats[5] = {};
+    uint64_t stats[kTessStatisticCount] = {};
     vkCheck(vkGetQueryPoolResults(device, cache.queries.get(), 0, 1, sizeof(stats), stats,
                                   sizeof(stats), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
             "vkGetQueryPoolResults");

@@ -20,15 +20,6 @@ constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 48ull << 20;
 constexpr uint32_t kMaxDrawsPerSubmit = 1024;
 constexpr uint32_t kCounterNotWritten = 0xffffffffu;
 
-// Reported in bit order: VS invocations, clipping invocations, clipping primitives,
-// TCS patches, TES invocations (Vulkan spec, "Pipeline Statistics Queries").
-constexpr VkQueryPipelineStatisticFlags kStatisticFlags =
-    VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
-constexpr uint32_t kStatisticCount = 5;
 
 // Per-device buffers and queries, reused by every call.
 struct CaptureResources {
@@ -36,7 +27,7 @@ struct CaptureResources {
     auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
     info.queryCount = kMaxDrawsPerSubmit;
-    info.pipelineStatistics = kStatisticFlags;
+    info.pipelineStatistics = kTessStatisticFlags;
     VkQueryPool pool = VK_NULL_HANDLE;
     vkCheck(vkCreateQueryPool(context.device(), &info, nullptr, &pool), "vkCreateQueryPool");
     queries = VkQueryPoolOwner(context.device(), pool);
@@ -100,9 +91,9 @@ void barrierCaptureToHost(VkCommandBuffer cmd) {
 }
 
 std::vector<uint64_t> readStatistics(Context& context, VkQueryPool pool, uint32_t count) {
-  std::vector<uint64_t> values(size_t{count} * kStatisticCount);
+  std::vector<uint64_t> values(size_t{count} * kTessStatisticCount);
   vkCheck(vkGetQueryPoolResults(context.device(), pool, 0, count, values.size() * sizeof(uint64_t),
-                                values.data(), kStatisticCount * sizeof(uint64_t),
+                                values.data(), kTessStatisticCount * sizeof(uint64_t),
                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
           "vkGetQueryPoolResults");
   return values;
@@ -196,7 +187,7 @@ GpuTessellationBatch tessellateOnGpuBatch(Context& context, tess::Domain domain,
     const std::vector<uint64_t> stats = readStatistics(context, resources.queries.get(), draws);
     for (uint32_t i = 0; i < draws; ++i) {
       GpuTessellation patch = readPatch(resources, submission, i, vertices_per_primitive, scratch);
-      patch.stats = toStatistics(&stats[size_t{i} * kStatisticCount]);
+      patch.stats = toStatistics(&stats[size_t{i} * kTessStatisticCount]);
       patch.culled = patch.stats.tes_invocations == 0;
       patch.submit_to_fence_s = seconds;
       batch.patches.push_back(std::move(patch));

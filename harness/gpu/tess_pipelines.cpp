@@ -36,23 +36,8 @@ VkPipelineOwner createPipeline(VkDevice device, VkPipelineLayout layout, VkShade
       shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, control),
       shaderStage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, evaluation),
   };
-  auto tessellation = vkStruct<VkPipelineTessellationStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
-  tessellation.patchControlPoints = 1;
-  // Lower-left origin makes layout(ccw) counter-clockwise in (u, v) with v up, the
-  // convention of tess::Options::ccw (harness/tess/stitch.h, GL's). Vulkan's default
-  // upper-left origin would reverse every triangle; gl_TessCoord is the same either way.
-  auto origin = vkStruct<VkPipelineTessellationDomainOriginStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
-  origin.domainOrigin = VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT;
-  tessellation.pNext = &origin;
-  // Zero attachments: under rasterizer discard nothing is written.
-  const auto rendering =
-      vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-  GraphicsPipelineBase base(stages, VK_PRIMITIVE_TOPOLOGY_PATCH_LIST, layout, &rendering);
-  base.raster.rasterizerDiscardEnable = VK_TRUE;
-  base.info.pTessellationState = &tessellation;
-  return base.create(device, "vkCreateGraphicsPipelines (tessellation)");
+  return createDiscardTessPipeline(device, layout, stages, 1,
+                                   "vkCreateGraphicsPipelines (tessellation)");
 }
 
 }  // namespace
@@ -114,6 +99,28 @@ void TessPipelines::pushLevels(VkCommandBuffer cmd, const tess::Levels& levels) 
   for (int i = 0; i < 2; ++i) bits[4 + i] = std::bit_cast<uint32_t>(levels.inner[i]);
   vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, 0,
                      kLevelPushBytes, bits);
+}
+
+VkPipelineOwner createDiscardTessPipeline(VkDevice device, VkPipelineLayout layout,
+                                          std::span<const VkPipelineShaderStageCreateInfo> stages,
+                                          uint32_t patch_control_points, const char* what) {
+  auto tessellation = vkStruct<VkPipelineTessellationStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
+  tessellation.patchControlPoints = patch_control_points;
+  // Lower-left origin makes layout(ccw) counter-clockwise in (u, v) with v up, the
+  // convention of tess::Options::ccw (harness/tess/stitch.h, GL's). Vulkan's default
+  // upper-left origin would reverse every triangle; gl_TessCoord is the same either way.
+  auto origin = vkStruct<VkPipelineTessellationDomainOriginStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
+  origin.domainOrigin = VK_TESSELLATION_DOMAIN_ORIGIN_LOWER_LEFT;
+  tessellation.pNext = &origin;
+  // Zero attachments: under rasterizer discard nothing is written.
+  const auto rendering =
+      vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+  GraphicsPipelineBase base(stages, VK_PRIMITIVE_TOPOLOGY_PATCH_LIST, layout, &rendering);
+  base.raster.rasterizerDiscardEnable = VK_TRUE;
+  base.info.pTessellationState = &tessellation;
+  return base.create(device, what);
 }
 
 void beginDiscardRendering(VkCommandBuffer cmd) {

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 
 #include "harness/gpu/buffer.h"
 #include "harness/gpu/spirv_patch.h"
@@ -52,5 +53,23 @@ class TessPipelines {
 
 // Starts a 1x1 render area with no attachments: enough for draws under rasterizer discard.
 void beginDiscardRendering(VkCommandBuffer cmd);
+
+// A VS -> TCS -> TES pipeline under rasterizer discard with zero attachments and the
+// lower-left domain origin (layout(ccw) is counter-clockwise in (u, v) with v up).
+// `stages` are the three shader stages; the tess capture and patch programs share it.
+VkPipelineOwner createDiscardTessPipeline(VkDevice device, VkPipelineLayout layout,
+                                          std::span<const VkPipelineShaderStageCreateInfo> stages,
+                                          uint32_t patch_control_points, const char* what);
+
+// Statistics every tessellation query collects, reported in this bit order: VS
+// invocations, clipping invocations, clipping primitives, TCS patches, TES invocations
+// (Vulkan spec, "Pipeline Statistics Queries").
+inline constexpr VkQueryPipelineStatisticFlags kTessStatisticFlags =
+    VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
+inline constexpr uint32_t kTessStatisticCount = 5;
 
 }  // namespace tb::gpu
