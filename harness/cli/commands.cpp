@@ -110,6 +110,12 @@ int runRun(const RunArgs& args, const std::string& command_line) {
     }
   };
   runSuite(selection, progress, &results);
+  // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
+  // empty run: one line with the first reason, non-zero exit, no run folder.
+  if (results.records.empty() && !results.skipped.empty()) {
+    const Skip& skip = results.skipped.front();
+    throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
+  }
 
   // The folder is made only after measuring, so a failed run leaves nothing behind.
   std::string run_id;

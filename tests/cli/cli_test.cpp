@@ -76,6 +76,19 @@ TEST(Cli, MalformedObjNamesTheLine) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "a failed run must leave no folder";
 }
 
+TEST(Cli, AnAssetNoSelectedTechniqueSupportsIsOneLineNamingTheFace) {
+  const auto dir = testing::scratchDirectory("cli_unsupported");
+  const std::string path =
+      testing::writeTextFile(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const CommandResult r = runTessbench("run --quiet --technique acc --measure error --asset " +
+                                       path + " --out " + (dir / "out").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(lineCount(r.output), 1u) << r.output;
+  EXPECT_NE(r.output.find(path), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("face 0"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out")) << "a failed run must leave no folder";
+}
+
 TEST(Cli, ErrorMeasureReportsEveryTriangleAsset) {
   const auto dir = testing::scratchDirectory("cli_error");
   const CommandResult r = runTessbench(
