@@ -80,10 +80,6 @@ struct CoordBitsHash {
   }
 };
 
-uint64_t maxUlp(const Vec3f& a, const Vec3f& b) {
-  return std::max({ulpDistance(a.x, b.x), ulpDistance(a.y, b.y), ulpDistance(a.z, b.z)});
-}
-
 // Positions at every boundary point of every patch: [patch * points + k].
 using BoundaryPositions = std::vector<Vec3f>;
 
@@ -127,7 +123,7 @@ BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatc
       const Vec3f cpu = patches.evaluateFloat(v.patch, v.coord).position;
       ++figures->device_points;
       if (!(cpu == v.position)) ++figures->device_points_differing;
-      figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlp(cpu, v.position));
+      figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlpDistance(cpu, v.position));
       const auto found = index.find(coordBits(v.coord));
       if (found == index.end() || v.patch >= patch_count) continue;
       positions[size_t(v.patch) * n + found->second] = v.position;
@@ -153,7 +149,7 @@ class PairAccumulator {
     const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
     const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
     sum_ += gap;
-    f_->max_gap_ulp = std::max(f_->max_gap_ulp, maxUlp(a, b));
+    f_->max_gap_ulp = std::max(f_->max_gap_ulp, maxUlpDistance(a, b));
     const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
     f_->max_gap_scale_ulp = std::max(f_->max_gap_scale_ulp, component / scale_ulp_);
     if (!f_->worst.found || gap > f_->max_gap_world) {
@@ -217,15 +213,6 @@ bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint
   if (domain == PatchDomain::kTriangle) return p[corner] == 1;
   static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
-}
-
-uint64_t ulpDistance(float a, float b) {
-  auto ordered = [](float f) {
-    const uint32_t bits = std::bit_cast<uint32_t>(f);
-    return (bits & 0x80000000u) ? -int64_t(bits & 0x7fffffffu) : int64_t(bits);
-  };
-  const int64_t d = ordered(a) - ordered(b);
-  return uint64_t(d < 0 ? -d : d);
 }
 
 SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "harness/gpu/context.h"
+#include "harness/mesh/float_ulp.h"  // ulpDistance, used with these figures
 #include "techniques/technique.h"
 
 namespace tb {
@@ -102,9 +103,5 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
 int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p);
 // True when `p` is corner `corner` of the domain.
 bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p);
-
-// Distance in units in the last place between two floats of the same sign class:
-// the count of representable floats between them (+0 and -0 are 0 apart).
-uint64_t ulpDistance(float a, float b);
 
 }  // namespace tb

@@ -9,23 +9,13 @@
 #include <map>
 
 #include "harness/gpu/patch_program.h"
+#include "harness/mesh/float_ulp.h"
 #include "techniques/acc/acc.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/techniques/acc_test_support.h"
 
 namespace tb::acc {
 namespace {
-
-int64_t orderedBits(float x) {
-  const int32_t i = std::bit_cast<int32_t>(x);
-  return i < 0 ? int64_t(INT32_MIN) - i : int64_t(i);
-}
-
-int64_t ulpDistance(const Vec3f& a, const Vec3f& b) {
-  return std::max({std::llabs(orderedBits(a.x) - orderedBits(b.x)),
-                   std::llabs(orderedBits(a.y) - orderedBits(b.y)),
-                   std::llabs(orderedBits(a.z) - orderedBits(b.z))});
-}
 
 struct LevelCase {
   float level;
@@ -43,7 +33,7 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
     // what it does.
     if (variant.name == "symmetric_imprecise") continue;
     const bool symmetric = variant.name != "asymmetric";
-    int64_t worst_ulp = 0;
+    uint64_t worst_ulp = 0;
     double worst_normal = 0;
     size_t vertices = 0, shared = 0, differing = 0;
     for (const auto& asset : assets) {
@@ -68,9 +58,9 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
         std::map<testing::EdgeKey, Vec3f> seen;
         for (const gpu::CapturedVertex& v : capture.vertices) {
           const SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
-          const int64_t ulp = ulpDistance(cpu.position, v.position);
+          const uint64_t ulp = maxUlpDistance(cpu.position, v.position);
           worst_ulp = std::max(worst_ulp, ulp);
-          EXPECT_LE(ulp, 4) << asset.name << " " << variant.name << " patch " << v.patch << " at "
+          EXPECT_LE(ulp, 4u) << asset.name << " " << variant.name << " patch " << v.patch << " at "
                             << v.coord[0] << "," << v.coord[1];
           worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
           ++vertices;

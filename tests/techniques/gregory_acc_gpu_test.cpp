@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "harness/gpu/patch_program.h"
+#include "harness/mesh/float_ulp.h"
 #include "harness/mesh/obj_loader.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "tests/gpu/gpu_test_support.h"
@@ -21,15 +22,6 @@ namespace {
 const std::vector<std::string>& supported() {
   static const std::vector<std::string> kAssets = testing::supportedBundledAssets();
   return kAssets;
-}
-
-// Distance in units in the last place (0 for equal values, +0 and -0 included).
-int64_t ulpDistance(float a, float b) {
-  auto ordered = [](float x) {
-    const int32_t i = std::bit_cast<int32_t>(x);
-    return i < 0 ? int64_t(INT32_MIN) - i : int64_t(i);
-  };
-  return std::llabs(ordered(a) - ordered(b));
 }
 
 struct Case {
@@ -68,7 +60,7 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
       for (const Case& c : kCases) {
         const gpu::PatchProgramCapture capture = run(context, *patches, c);
         ASSERT_FALSE(capture.vertices.empty());
-        int64_t worst = 0;
+        uint64_t worst = 0;
         double worst_normal = 0;
         for (const gpu::CapturedVertex& vertex : capture.vertices) {
           const SurfacePointF expected = patches->evaluateFloat(vertex.patch, vertex.coord);
@@ -82,7 +74,7 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
         RecordProperty(std::string(variant) + "_" + name + "_" + std::to_string(c.level) +
                            "_ulp_vertices",
                        std::to_string(worst) + "_" + std::to_string(capture.vertices.size()));
-        EXPECT_LE(worst, 4) << variant << " " << name << " level " << c.level;
+        EXPECT_LE(worst, 4u) << variant << " " << name << " level " << c.level;
         EXPECT_LE(worst_normal, 1e-5) << variant << " " << name << " level " << c.level;
       }
     }

@@ -10,21 +10,12 @@
 #include <string>
 
 #include "harness/gpu/patch_program.h"
+#include "harness/mesh/float_ulp.h"
 #include "harness/mesh/obj_loader.h"
 #include "techniques/technique.h"
 #include "tests/test_support.h"
 
 namespace tb::testing {
-
-// Count of floats between a and b (+0 and -0 are 0 apart).
-inline uint64_t floatUlps(float a, float b) {
-  auto ordered = [](float x) {
-    const int32_t i = std::bit_cast<int32_t>(x);
-    return i < 0 ? int64_t(INT32_MIN) - int64_t(i) : int64_t(i);
-  };
-  const int64_t d = ordered(a) - ordered(b);
-  return uint64_t(d < 0 ? -d : d);
-}
 
 struct GpuAgreement {
   size_t vertices = 0;           // captured vertices compared
@@ -57,10 +48,10 @@ inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatc
     bool equal = true;
     for (int k = 0; k < 3; ++k) {
       result.max_position_ulp =
-          std::max(result.max_position_ulp, floatUlps(v.position[k], cpu.position[k]));
+          std::max(result.max_position_ulp, ulpDistance(v.position[k], cpu.position[k]));
       result.max_normal_ulp =
-          std::max(result.max_normal_ulp, floatUlps(v.normal[k], cpu.normal[k]));
-      equal = equal && floatUlps(v.position[k], cpu.position[k]) == 0;
+          std::max(result.max_normal_ulp, ulpDistance(v.normal[k], cpu.normal[k]));
+      equal = equal && ulpDistance(v.position[k], cpu.position[k]) == 0;
     }
     result.positions_not_bitwise += equal ? 0 : 1;
   }
