@@ -4,6 +4,7 @@
 
 #include "harness/mesh/render_vertices.h"
 #include "harness/mesh/triangulate.h"
+#include "techniques/common/triangle_patches.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/pn_triangles/pn_build.h"
@@ -24,24 +25,12 @@ pn_triangles::PnOptions edgeOptions() {
   return options;
 }
 
-class PhongPatches final : public SurfacePatches {
+class PhongPatches final : public TrianglePatchesBase {
  public:
   PhongPatches(Triangulation triangulation, double alpha, bool edge)
-      : tri_(std::move(triangulation)), alpha_(alpha), edge_(edge) {
+      : TrianglePatchesBase(std::move(triangulation)), alpha_(alpha), edge_(edge) {
     if (edge_) edge_build_ = pn_triangles::buildPnRecords(tri_.mesh, edgeOptions());
-    warnings_ = triangulationWarnings(tri_);
   }
-
-  PatchDomain domain() const override { return PatchDomain::kTriangle; }
-  size_t patchCount() const override { return tri_.mesh.faceCount(); }
-  const Mesh& controlMesh() const override { return tri_.mesh; }
-
-  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    const auto face = tri_.mesh.facePositions(patch);
-    return {face[0], face[1], face[2], UINT32_MAX};
-  }
-
-  uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     if (edge_) {
@@ -149,8 +138,6 @@ class PhongPatches final : public SurfacePatches {
             uint64_t(edge_build_.geometry_normal_count) * 12 + patchCount() * 3 * 4, 0};
   }
 
-  const std::vector<std::string>& warnings() const override { return warnings_; }
-
  private:
   using PatchRecord = std::array<uint32_t, kPhongRecordWords>;
 
@@ -210,11 +197,9 @@ class PhongPatches final : public SurfacePatches {
     return tri;
   }
 
-  Triangulation tri_;
   double alpha_;
   bool edge_;
   pn_triangles::PnBuild edge_build_;
-  std::vector<std::string> warnings_;
 };
 
 }  // namespace

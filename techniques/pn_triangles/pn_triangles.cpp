@@ -2,6 +2,7 @@
 
 #include "harness/mesh/render_vertices.h"
 #include "harness/mesh/triangulate.h"
+#include "techniques/common/triangle_patches.h"
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/pn_triangles/pn_eval.h"
 #include "techniques/registry.h"
@@ -9,25 +10,12 @@
 namespace tb::pn_triangles {
 namespace {
 
-class PnPatches final : public SurfacePatches {
+class PnPatches final : public TrianglePatchesBase {
  public:
   PnPatches(Triangulation triangulation, const PnOptions& options)
-      : tri_(std::move(triangulation)),
+      : TrianglePatchesBase(std::move(triangulation)),
         options_(options),
-        build_(buildPnRecords(tri_.mesh, options_)) {
-    warnings_ = triangulationWarnings(tri_);
-  }
-
-  PatchDomain domain() const override { return PatchDomain::kTriangle; }
-  size_t patchCount() const override { return tri_.mesh.faceCount(); }
-  const Mesh& controlMesh() const override { return tri_.mesh; }
-
-  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    const auto face = tri_.mesh.facePositions(patch);
-    return {face[0], face[1], face[2], UINT32_MAX};
-  }
-
-  uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
+        build_(buildPnRecords(tri_.mesh, options_)) {}
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const PnControl<double> control =
@@ -89,13 +77,9 @@ class PnPatches final : public SurfacePatches {
             0};
   }
 
-  const std::vector<std::string>& warnings() const override { return warnings_; }
-
  private:
-  Triangulation tri_;
   PnOptions options_;
   PnBuild build_;
-  std::vector<std::string> warnings_;
 };
 
 double parameter(const VariantInfo& variant, const std::string& name) {
