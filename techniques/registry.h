@@ -34,7 +34,7 @@ void loadPlugin(const std::string& path);
 // Entry point a plug-in library exports. It receives the host's registry, adds
 // its techniques and returns kTessbenchPluginAbi; any other value rejects the
 // plug-in (built against another technique.h).
-inline constexpr int kTessbenchPluginAbi = 3;  // 3: DataFootprint::topology_combinations
+inline constexpr int kTessbenchPluginAbi = 4;  // 4: per-patch domains, gpuPrograms()
 extern "C" {
 typedef int (*TessbenchPluginEntry)(tb::TechniqueRegistry* registry);
 }

@@ -27,6 +27,10 @@ enum class TechniqueFamily {
 
 enum class PatchDomain { kTriangle, kQuad };
 
+// The subdivision surface a technique approximates; the error measure grades it
+// against that scheme's exact limit (OpenSubdiv Bfr) of controlMesh().
+enum class LimitScheme { kLoop, kCatmullClark };
+
 struct TechniqueInfo {
   std::string id;          // "phong"; lower case, used on the command line and in results
   TechniqueFamily family;
@@ -80,13 +84,24 @@ struct OperationProfile {
 class SurfacePatches {
  public:
   virtual ~SurfacePatches() = default;
+  // The domain of the technique's first kind of patch. A technique whose patches do not
+  // all share it (gregory_acc: quads and triangles) overrides patchDomain; measures read
+  // patchDomain(p) for every patch.
   virtual PatchDomain domain() const = 0;
+  virtual PatchDomain patchDomain(size_t patch) const {
+    (void)patch;
+    return domain();
+  }
+  // Default: quad patches approximate Catmull-Clark, triangle patches Loop.
+  virtual LimitScheme approximates() const {
+    return domain() == PatchDomain::kQuad ? LimitScheme::kCatmullClark : LimitScheme::kLoop;
+  }
   virtual size_t patchCount() const = 0;
   // The mesh the patches are built over: patch p covers face p of it (for
   // `phong`, the fan-triangulated input). Measures read its render vertices.
   virtual const Mesh& controlMesh() const = 0;
-  // Control-mesh positions at the patch corners, in domain order; shared edges
-  // between patches are found through these.
+  // Control-mesh positions at the patch corners, in domain order (3 for a triangle
+  // patch, the 4th then unused); shared edges between patches are found through these.
   virtual std::array<uint32_t, 4> patchCorners(size_t patch) const = 0;
   // The face of the input asset the patch came from (for parametric error).
   virtual uint32_t sourceFace(size_t patch) const = 0;
@@ -100,6 +115,14 @@ class SurfacePatches {
   // harness/gpu/patch_program.h), or nullopt when the technique has no GPU path.
   // Its patch p is this object's patch p.
   virtual std::optional<gpu::GpuPatchProgram> gpuProgram() const { return std::nullopt; }
+  // Every GPU program of these patches: one per patch domain for a technique with
+  // several (each with GpuPatchProgram::patch_ids), else gpuProgram() alone. Together
+  // they cover every patch once. Empty when there is no GPU path.
+  virtual std::vector<gpu::GpuPatchProgram> gpuPrograms() const {
+    std::vector<gpu::GpuPatchProgram> programs;
+    if (auto program = gpuProgram()) programs.push_back(std::move(*program));
+    return programs;
+  }
   // Operation counts for patch p at an interior domain point, or nullopt when the
   // technique does not count. Counts may differ between regular and irregular patches.
   virtual std::optional<OperationProfile> operationProfile(size_t patch) const {

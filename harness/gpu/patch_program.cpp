@@ -242,7 +242,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
       for (uint32_t i = 0; i < written; ++i) {
         const uint32_t* w = &words[size_t(i) * kCaptureWords];
         CapturedVertex v;
-        v.patch = w[0];
+        v.patch = program.patch_ids.empty() ? w[0] : program.patch_ids.at(w[0]);
         for (int k = 0; k < 3; ++k) v.coord[k] = std::bit_cast<float>(w[1 + k]);
         v.position = {std::bit_cast<float>(w[4]), std::bit_cast<float>(w[5]),
                       std::bit_cast<float>(w[6])};

@@ -28,7 +28,7 @@ namespace tb::gpu {
 
 
 struct CapturedVertex {
-  uint32_t patch = 0;
+  uint32_t patch = 0;  // SurfacePatches patch (GpuPatchProgram::patch_ids applied)
   tess::DomainPoint coord{};  // gl_TessCoord bit for bit
   Vec3f position;
   Vec3f normal;

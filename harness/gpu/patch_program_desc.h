@@ -16,6 +16,12 @@ struct GpuPatchProgram {
   std::string evaluation_shader;  // embedded path, e.g. "acc/acc.tese"
   tess::Domain domain = tess::Domain::kQuad;
   uint32_t patch_count = 0;
+  // The SurfacePatches patch of each of this program's patches, when a technique splits
+  // its patches over several programs (one per domain: gregory_acc's quads and
+  // triangles). Empty: program patch p is SurfacePatches patch p. The shaders still
+  // index their own buffers by program patch (tbPatchIndex()); runPatchProgram reports
+  // captured vertices under the SurfacePatches patch.
+  std::vector<uint32_t> patch_ids;
   // VS invocations per patch (the pipeline's patchControlPoints); the shared vertex
   // shader writes nothing, so the TCS reads its inputs from the storage buffers.
   uint32_t input_vertices_per_patch = 1;
