@@ -16,15 +16,24 @@ constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control p
 
 class GregoryPatches final : public SurfacePatches {
  public:
-  GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask)
+  GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask,
+                 NonQuadFaces non_quads)
       : positions_(mesh.positions),
-        build_(buildGregory(mesh, mask)),
+        build_(buildGregory(mesh, mask, non_quads)),
         stencils_(build_.stencils),
         symmetric_edges_(symmetric_edges) {
     if (build_.refined) {
-      warnings_.push_back("non-quad faces: the mesh was refined once (Catmull-Clark) and " +
-                          std::to_string(build_.control.faceCount()) +
-                          " quad Gregory patches built on the refined mesh");
+      warnings_.push_back(
+          std::string(non_quads == NonQuadFaces::kRefineOnce
+                          ? "non-quad faces"
+                          : "faces of 5 or more vertices") +
+          ": the mesh was refined once (Catmull-Clark) and " +
+          std::to_string(build_.control.faceCount()) +
+          " quad Gregory patches built on the refined mesh");
+    }
+    for (size_t p = 0; p < patchCount(); ++p) {
+      (patchDomain(p) == PatchDomain::kQuad ? quad_patches_ : triangle_patches_)
+          .push_back(uint32_t(p));
     }
     positions_f_.reserve(positions_.size());
     for (const Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
@@ -43,35 +52,69 @@ class GregoryPatches final : public SurfacePatches {
     }
   }
 
-  PatchDomain domain() const override { return PatchDomain::kQuad; }
+  // Quads, and (unless the mesh was refined) triangles: patch p is face p.
+  PatchDomain domain() const override { return patchDomain(0); }
+  PatchDomain patchDomain(size_t patch) const override {
+    return build_.control.faceSize(patch) == 3 ? PatchDomain::kTriangle : PatchDomain::kQuad;
+  }
+  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
   size_t patchCount() const override { return build_.control.faceCount(); }
   const Mesh& controlMesh() const override { return build_.control; }
 
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = build_.control.facePositions(patch);
-    return {face[0], face[1], face[2], face[3]};
+    return {face[0], face[1], face[2], face.size() == 4 ? face[3] : UINT32_MAX};
   }
 
   uint32_t sourceFace(size_t patch) const override { return build_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
-    const GregoryPoint<double> point =
-        evaluateGregory(points_d_[patch], coord[0], coord[1], symmetric_edges_);
+    const GregoryPoint<double> point = evaluatePatch(points_d_[patch], patch, coord);
     return {point.position, point.normal};
   }
 
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
-    const GregoryPoint<float> point =
-        evaluateGregory(points_f_[patch], coord[0], coord[1], symmetric_edges_);
+    const GregoryPoint<float> point = evaluatePatch(points_f_[patch], patch, coord);
     return {point.position, point.normal};
   }
 
+  // The first of gpuPrograms() (the quads', when there are quads).
   std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+    return gpuPrograms().front();
+  }
+
+  // One program per domain present: the quads' (20 control points per patch) and the
+  // triangles' (15); each reads the same vertex and stencil buffers. A single-domain
+  // mesh gets one program whose patch p is patch p.
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
+    std::vector<gpu::GpuPatchProgram> programs;
+    for (const std::vector<uint32_t>* ids : {&quad_patches_, &triangle_patches_}) {
+      if (ids->empty()) continue;
+      const bool quads = ids == &quad_patches_;
+      gpu::GpuPatchProgram program = sharedBuffersProgram();
+      program.control_shader = quads ? "gregory_acc/gregory_acc.tesc" : "gregory_acc/gregory_tri.tesc";
+      program.evaluation_shader =
+          quads ? "gregory_acc/gregory_acc.tese" : "gregory_acc/gregory_tri.tese";
+      program.domain = quads ? tess::Domain::kQuad : tess::Domain::kTriangle;
+      program.patch_count = uint32_t(ids->size());
+      if (ids->size() != patchCount()) program.patch_ids = *ids;
+      const uint32_t points = quads ? kPointsPerPatch : kPointsPerTriangle;
+      std::vector<uint32_t> patch_points;
+      for (uint32_t p : *ids) {
+        const auto& ids_of_patch = stencils_.patch_points[p];
+        patch_points.insert(patch_points.end(), ids_of_patch.begin(), ids_of_patch.begin() + points);
+      }
+      program.storage_buffers.push_back(std::move(patch_points));
+      programs.push_back(std::move(program));
+    }
+    return programs;
+  }
+
+ private:
+  // Buffers 1..3 of both programs: vertices, stencil offsets, stencil entries; the
+  // per-patch stencil ids (buffer 4) are added per program.
+  gpu::GpuPatchProgram sharedBuffersProgram() const {
     gpu::GpuPatchProgram program;
-    program.control_shader = "gregory_acc/gregory_acc.tesc";
-    program.evaluation_shader = "gregory_acc/gregory_acc.tese";
-    program.domain = tess::Domain::kQuad;
-    program.patch_count = uint32_t(patchCount());
     std::vector<uint32_t> vertices;
     for (const Vec3f& p : positions_f_) {
       for (float x : {p.x, p.y, p.z, 1.0f}) vertices.push_back(std::bit_cast<uint32_t>(x));
@@ -81,15 +124,22 @@ class GregoryPatches final : public SurfacePatches {
       entries.push_back(stencils_.indices[k]);
       entries.push_back(std::bit_cast<uint32_t>(weights_f_[k]));
     }
-    std::vector<uint32_t> patch_points;
-    for (const auto& points : stencils_.patch_points) {
-      patch_points.insert(patch_points.end(), points.begin(), points.end());
-    }
-    program.storage_buffers = {std::move(vertices), stencils_.offsets, std::move(entries),
-                               std::move(patch_points)};
+    program.storage_buffers = {std::move(vertices), stencils_.offsets, std::move(entries)};
     program.specialization = {symmetric_edges_ ? 1u : 0u};
     return program;
   }
+
+  template <class T>
+  GregoryPoint<T> evaluatePatch(const GregoryPoints<T>& cp, size_t patch,
+                                const auto& coord) const {
+    if (patchDomain(patch) == PatchDomain::kTriangle) {
+      return evaluateGregoryTriangle(cp, T(coord[0]), T(coord[1]), T(coord[2]),
+                                     symmetric_edges_);
+    }
+    return evaluateGregory(cp, T(coord[0]), T(coord[1]), symmetric_edges_);
+  }
+
+ public:
 
   std::optional<OperationProfile> operationProfile(size_t patch) const override {
     using C = CountingScalar<float>;
@@ -104,11 +154,17 @@ class GregoryPatches final : public SurfacePatches {
         [this](uint32_t k) { return C(weights_f_[k]); });
     profile.per_patch_setup = operationCounts();
     resetOperationCounts();
-    evaluateGregory(cp, C(0.3f), C(0.6f), symmetric_edges_);
+    const bool triangle = patchDomain(patch) == PatchDomain::kTriangle;
+    if (triangle) {
+      evaluateGregoryTriangle(cp, C(0.25f), C(0.375f), C(0.375f), symmetric_edges_);
+    } else {
+      evaluateGregory(cp, C(0.3f), C(0.6f), symmetric_edges_);
+    }
     profile.per_vertex = operationCounts();
     resetOperationCounts();
-    profile.note = std::string("20 stencil sums per patch (TCS); interior point, ") +
-                   (symmetric_edges_ ? "edge_symmetric" : "asymmetric") +
+    profile.note = std::string(triangle ? "15 stencil sums per triangle patch (TCS); "
+                                        : "20 stencil sums per quad patch (TCS); ") +
+                   "interior point, " + (symmetric_edges_ ? "edge_symmetric" : "asymmetric") +
                    " order, position + analytic normal (TES)";
     return profile;
   }
@@ -116,7 +172,9 @@ class GregoryPatches final : public SurfacePatches {
   DataFootprint footprint() const override {
     DataFootprint footprint;
     footprint.control_mesh_bytes = positions_.size() * kGpuVertexBytes;
-    footprint.patch_data_bytes = stencils_.patch_points.size() * kPointsPerPatch * kPatchPointIdBytes;
+    footprint.patch_data_bytes =
+        (quad_patches_.size() * kPointsPerPatch + triangle_patches_.size() * kPointsPerTriangle) *
+        kPatchPointIdBytes;
     footprint.stencil_bytes = stencils_.offsets.size() * kStencilOffsetBytes +
                               stencils_.indices.size() * kStencilEntryBytes;
     return footprint;
@@ -128,8 +186,10 @@ class GregoryPatches final : public SurfacePatches {
   template <class T, class PositionAt, class WeightAt>
   GregoryPoints<T> controlPoints(size_t patch, const PositionAt& position,
                                  const WeightAt& weight) const {
-    GregoryPoints<T> cp;
-    for (uint32_t i = 0; i < kPointsPerPatch; ++i) {
+    GregoryPoints<T> cp{};
+    const uint32_t points =
+        patchDomain(patch) == PatchDomain::kQuad ? kPointsPerPatch : kPointsPerTriangle;
+    for (uint32_t i = 0; i < points; ++i) {
       cp[i] = stencilPoint<T>(stencils_, stencils_.patch_points[patch][i], position, weight);
     }
     return cp;
@@ -143,6 +203,7 @@ class GregoryPatches final : public SurfacePatches {
   std::vector<float> weights_f_;
   std::vector<GregoryPoints<double>> points_d_;
   std::vector<GregoryPoints<float>> points_f_;
+  std::vector<uint32_t> quad_patches_, triangle_patches_;  // patch ids by domain
   std::vector<std::string> warnings_;
 };
 
@@ -150,11 +211,12 @@ class GregoryPatches final : public SurfacePatches {
 
 const TechniqueInfo& GregoryAccTechnique::info() const {
   static const TechniqueInfo kInfo{
-      "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad Gregory patches)",
+      "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad and triangle Gregory patches)",
       "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
       "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
-      "closed manifold Catmull-Clark meshes, valence and face size 3..32, no crease/corner/"
-      "hole/smoothtriangles tags; meshes with non-quad faces are refined once"};
+      "manifold Catmull-Clark meshes with smooth boundaries, valence and face size 3..32, no "
+      "crease/corner/hole/smoothtriangles tags; quads and triangles get patches of their own, "
+      "meshes with faces of 5+ vertices are refined once"};
   return kInfo;
 }
 
@@ -170,6 +232,10 @@ std::vector<VariantInfo> GregoryAccTechnique::variants() const {
        "edge_symmetric, edge points from the exact Catmull-Clark limit tangent masks "
        "(Halstead et al. 1993) instead of the paper's averaged face points",
        {{"symmetric_edges", 1.0}, {"exact_tangents", 1.0}}},
+      {"quads_only",
+       "edge_symmetric, but any non-quad face makes the whole mesh refined once (Catmull-Clark) "
+       "and patched with quads: no triangle patches, 3 or 4 quads per input face",
+       {{"symmetric_edges", 1.0}, {"quads_only", 1.0}}},
   };
 }
 
@@ -185,7 +251,12 @@ std::unique_ptr<SurfacePatches> GregoryAccTechnique::buildPatches(
   const TangentMask mask = exact != variant.parameters.end() && exact->second != 0.0
                                ? TangentMask::kExactLimit
                                : TangentMask::kPaper;
-  return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask);
+  const auto quads_only = variant.parameters.find("quads_only");
+  const NonQuadFaces non_quads =
+      quads_only != variant.parameters.end() && quads_only->second != 0.0
+          ? NonQuadFaces::kRefineOnce
+          : NonQuadFaces::kTrianglePatches;
+  return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask, non_quads);
 }
 
 TB_REGISTER_TECHNIQUE(GregoryAccTechnique);

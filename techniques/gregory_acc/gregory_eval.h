@@ -135,4 +135,111 @@ GregoryPoint<T> evaluateGregory(const GregoryPoints<T>& cp, T u, T v, bool symme
   return {position, normalize(cross(tangent_u, tangent_v))};
 }
 
+// The quartic triangle's control net, points b_ijk (i + j + k = 4, i the power of the
+// corner-0 coordinate u, j of v, k of w) in the fixed order of kQuarticNet, and the
+// cubic net (i + j + k = 3) its derivatives use.
+struct NetIndex {
+  int i, j, k;
+  int multinomial;  // 4! / (i! j! k!), or 3! / (i! j! k!) in the cubic net
+};
+inline constexpr std::array<NetIndex, 15> kQuarticNet{{
+    {4, 0, 0, 1}, {3, 1, 0, 4}, {3, 0, 1, 4}, {2, 2, 0, 6}, {2, 1, 1, 12},
+    {2, 0, 2, 6}, {1, 3, 0, 4}, {1, 2, 1, 12}, {1, 1, 2, 12}, {1, 0, 3, 4},
+    {0, 4, 0, 1}, {0, 3, 1, 4}, {0, 2, 2, 6}, {0, 1, 3, 4}, {0, 0, 4, 1},
+}};
+inline constexpr std::array<NetIndex, 10> kCubicNet{{
+    {3, 0, 0, 1}, {2, 1, 0, 3}, {2, 0, 1, 3}, {1, 2, 0, 3}, {1, 1, 1, 6},
+    {1, 0, 2, 3}, {0, 3, 0, 1}, {0, 2, 1, 3}, {0, 1, 2, 3}, {0, 0, 3, 1},
+}};
+// Position of b_ijk in kQuarticNet (rows of descending i, each by descending j).
+constexpr int quarticSlot(int i, int j, int k) {
+  (void)k;
+  return (4 - i) * (5 - i) / 2 + (4 - i - j);
+}
+static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
+              quarticSlot(1, 0, 3) == 9);
+
+// Triangle Gregory patch (Loop et al. 2009: cubic boundaries, quartic interior) at
+// barycentric (u, v, w) = gl_TessCoord, weights of corners 0, 1, 2; position and unit
+// normal of the derivatives toward corners 1 and 2, (S_v - S_u) x (S_w - S_u).
+//
+// Net: corners b400 = P0, ...; the cubic boundary P_c, Ep_c, Em_{c+1}, P_{c+1}
+// degree-raised to quartic, e.g. b310 = (P0 + 3 Ep0) / 4, b220 = (Ep0 + Em1) / 2; the
+// three interior points are rational blends of the corner's Fp and Fm (already the
+// quartic interior points, see gregory_stencils.h), each taking over on its own edge:
+//   b211 = (v Fp0 + w Fm0) / (v + w), b121 = (w Fp1 + u Fm1) / (w + u),
+//   b112 = (u Fp2 + v Fm2) / (u + v).
+// `symmetric_edges`: points on the domain boundary from the cubic edge curve alone,
+// evaluated by symmetricEdge with the same operations a quad patch uses, so an edge
+// shared with a quad or a triangle gives the same bits from both sides.
+template <class T>
+GregoryPoint<T> evaluateGregoryTriangle(const GregoryPoints<T>& cp, T u, T v, T w,
+                                        bool symmetric_edges) {
+  const T one(1), zero(0), quarter(0.25), half(0.5), three(3), four(4);
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  std::array<Vec3T<T>, 15> b;
+  auto set = [&b](int i, int j, int k, const Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
+  auto nearEnd = [&](const Vec3T<T>& p, const Vec3T<T>& e) { return (p + e * three) * quarter; };
+  set(4, 0, 0, at(0, kP));
+  set(0, 4, 0, at(1, kP));
+  set(0, 0, 4, at(2, kP));
+  set(3, 1, 0, nearEnd(at(0, kP), at(0, kEp)));  // edge 0: corner 0 -> 1 (w = 0)
+  set(2, 2, 0, (at(0, kEp) + at(1, kEm)) * half);
+  set(1, 3, 0, nearEnd(at(1, kP), at(1, kEm)));
+  set(0, 3, 1, nearEnd(at(1, kP), at(1, kEp)));  // edge 1: corner 1 -> 2 (u = 0)
+  set(0, 2, 2, (at(1, kEp) + at(2, kEm)) * half);
+  set(0, 1, 3, nearEnd(at(2, kP), at(2, kEm)));
+  set(1, 0, 3, nearEnd(at(2, kP), at(2, kEp)));  // edge 2: corner 2 -> 0 (v = 0)
+  set(2, 0, 2, (at(2, kEp) + at(0, kEm)) * half);
+  set(3, 0, 1, nearEnd(at(0, kP), at(0, kEm)));
+  // Interior blends with derivatives along a = d/dv - d/du and c = d/dw - d/du.
+  Vec3T<T> q_a[3], q_c[3];
+  Vec3T<T> q0, q1, q2;
+  blendFace(at(0, kFp), at(0, kFm), v, w, one, zero, zero, one, q0, q_a[0], q_c[0]);
+  blendFace(at(1, kFp), at(1, kFm), w, u, zero, -one, one, -one, q1, q_a[1], q_c[1]);
+  blendFace(at(2, kFp), at(2, kFm), u, v, -one, one, -one, zero, q2, q_a[2], q_c[2]);
+  set(2, 1, 1, q0);
+  set(1, 2, 1, q1);
+  set(1, 1, 2, q2);
+
+  const std::array<T, 5> up{one, u, u * u, u * u * u, u * u * u * u};
+  const std::array<T, 5> vp{one, v, v * v, v * v * v, v * v * v * v};
+  const std::array<T, 5> wp{one, w, w * w, w * w * w, w * w * w * w};
+  auto basis = [&](const NetIndex& n) {
+    return T(n.multinomial) * ((up[n.i] * vp[n.j]) * wp[n.k]);
+  };
+  Vec3T<T> position{zero, zero, zero};
+  for (const NetIndex& n : kQuarticNet) position = position + b[quarticSlot(n.i, n.j, n.k)] * basis(n);
+  // Tangents: 4 sum over the cubic net of B3_ijk (b_i,j+1,k - b_i+1,j,k) (toward corner 1)
+  // and (b_i,j,k+1 - b_i+1,j,k) (toward corner 2).
+  Vec3T<T> tangent_a{zero, zero, zero}, tangent_c = tangent_a;
+  for (const NetIndex& n : kCubicNet) {
+    const T weight = basis(n);
+    const Vec3T<T>& base = b[quarticSlot(n.i + 1, n.j, n.k)];
+    tangent_a = tangent_a + (b[quarticSlot(n.i, n.j + 1, n.k)] - base) * weight;
+    tangent_c = tangent_c + (b[quarticSlot(n.i, n.j, n.k + 1)] - base) * weight;
+  }
+  tangent_a = tangent_a * four;
+  tangent_c = tangent_c * four;
+  // Derivatives of the blended interior points, times their quartic Bernstein weight.
+  const NetIndex interior[3] = {kQuarticNet[quarticSlot(2, 1, 1)],
+                                kQuarticNet[quarticSlot(1, 2, 1)],
+                                kQuarticNet[quarticSlot(1, 1, 2)]};
+  for (int c = 0; c < 3; ++c) {
+    const T weight = basis(interior[c]);
+    tangent_a = tangent_a + q_a[c] * weight;
+    tangent_c = tangent_c + q_c[c] * weight;
+  }
+  if (symmetric_edges) {
+    if (w == zero) {
+      position = symmetricEdge(at(0, kP), at(0, kEp), at(1, kEm), at(1, kP), v);
+    } else if (u == zero) {
+      position = symmetricEdge(at(1, kP), at(1, kEp), at(2, kEm), at(2, kP), w);
+    } else if (v == zero) {
+      position = symmetricEdge(at(2, kP), at(2, kEp), at(0, kEm), at(0, kP), u);
+    }
+  }
+  return {position, normalize(cross(tangent_a, tangent_c))};
+}
+
 }  // namespace tb::gregory_acc

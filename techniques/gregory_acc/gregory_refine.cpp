@@ -95,6 +95,7 @@ RefinedMesh refineOnce(const Mesh& mesh) {
     for (const auto& [index, weight] : s) p = p + mesh.positions[index] * weight;
     out.mesh.positions.push_back(p);
   }
+  for (const auto& [key, index] : edge_index) out.edge_point.emplace(key, first_edge + index);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
     const size_t size = fv.size();

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <vector>
 
 #include "harness/mesh/mesh.h"
@@ -22,6 +23,11 @@ struct RefinedMesh {
   Mesh mesh;
   std::vector<Stencil> stencils;      // per refined position, over input positions
   std::vector<uint32_t> source_face;  // input face of each refined face
+  // Refined position of the edge point of input edge (a, b), either direction.
+  uint32_t edgePoint(uint32_t a, uint32_t b) const {
+    return edge_point.at(a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a);
+  }
+  std::unordered_map<uint64_t, uint32_t> edge_point;  // edgePoint's table
 };
 
 // Boundary edges are infinitely sharp and one-face boundary vertices are corners

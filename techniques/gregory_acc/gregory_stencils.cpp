@@ -1,8 +1,11 @@
 #include "techniques/gregory_acc/gregory_stencils.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <map>
 #include <numbers>
+#include <span>
 #include <unordered_map>
 
 #include "harness/mesh/topology.h"
@@ -36,14 +39,22 @@ double sinTurn(uint32_t k, uint32_t n) {
 
 uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 
-// The 1-ring of a vertex of an all-quad mesh, counter-clockwise: face i is
-// (v, neighbour[i], diagonal[i], neighbour[i + 1]) in the face's own winding (indices
-// modulo the valence inside). On a boundary, neighbour[0] and neighbour[faces] are the
-// two boundary neighbours, and there is one more neighbour than faces.
+// The 1-ring of a vertex, counter-clockwise: face i follows the edge to neighbour[i]
+// and precedes the edge to neighbour[i + 1] (indices modulo the valence inside). On a
+// boundary, neighbour[0] and neighbour[faces] are the two boundary neighbours, and there
+// is one more neighbour than faces.
+//
+// diagonal[i] is face i's "diagonal" as a stencil: on a quad (v, e_i, d_i, e_{i+1}) the
+// vertex d_i; on any other face 4 c_i - v - e_i - e_{i+1}, with c_i the face's
+// centroid (on a triangle: the centroid itself). Loop et al. 2009 write every mask in
+// terms of edge midpoints m_i and face centroids c_i, which is what makes them apply to
+// rings with triangles; substituting this diagonal into the quad masks gives exactly
+// those midpoint/centroid masks, and leaves all-quad rings bit-for-bit as before.
 struct Ring {
   std::vector<uint32_t> neighbour;
-  std::vector<uint32_t> diagonal;  // one per face
+  std::vector<Stencil> diagonal;  // one per face
   bool boundary = false;
+  bool quads_only = true;  // every face of the ring is a quad
   uint32_t valence() const { return uint32_t(neighbour.size()); }  // edges at the vertex
   uint32_t faces() const { return uint32_t(diagonal.size()); }
   // The valence used in the face-point weights cos(2 pi / n): a boundary vertex with k
@@ -144,6 +155,50 @@ Stencil twist(const Ring& ring, uint32_t i) {
 
 std::string prefix(const Mesh& mesh) { return "gregory_acc: " + mesh.source + ": "; }
 
+Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double scale) {
+  Stencil out;
+  for (const auto& [index, weight] : over_refined) add(out, refined.stencils[index], weight * scale);
+  return out;
+}
+
+// The frame of a vertex with a non-quad face in its ring, through one Catmull-Clark step:
+// the vertex's refined copy has an all-quad ring of the same valence and the same limit
+// point and tangent plane, so the quad masks there give the exact limit position (and,
+// with kExactLimit, the exact tangent plane). The refined tangents are in the refined
+// faces' half-size parameter; they are scaled back by 1/lambda, lambda the subdominant
+// eigenvalue (exact for an eigenvector mask; 2 on a boundary, where lambda = 1/2).
+// `refined_ring` must start at the edge point of the input ring's neighbour[0].
+VertexFrame refinedFrame(uint32_t v, const Ring& refined_ring, const RefinedMesh& refined,
+                         TangentMask mask) {
+  double scale = 2;
+  VertexFrame local;
+  if (refined_ring.boundary) {
+    local = boundaryFrame(v, refined_ring);
+  } else {
+    local = vertexFrame(v, refined_ring, mask);
+    const double c = cosTurn(1, refined_ring.valence());
+    scale = 16.0 / (5 + c + std::sqrt((c + 9) * (c + 1)));
+  }
+  return {composed(local.position, refined, 1.0), composed(local.e0, refined, scale),
+          composed(local.e1, refined, scale)};
+}
+
+// Ring::diagonal of the face `fv` seen from its corner k.
+Stencil faceDiagonal(std::span<const uint32_t> fv, uint32_t k) {
+  const size_t size = fv.size();
+  Stencil d;
+  if (size == 4) {
+    add(d, fv[(k + 2) % 4], 1.0);
+    return d;
+  }
+  // 4 c - v - e_i - e_{i+1}, c = the mean of the face's vertices.
+  for (uint32_t i = 0; i < size; ++i) add(d, fv[i], 4.0 / double(size));
+  for (uint32_t i : {k, uint32_t((k + 1) % size), uint32_t((k + size - 1) % size)}) {
+    add(d, fv[i], -1.0);
+  }
+  return d;
+}
+
 struct Rings {
   std::vector<Ring> rings;  // per position; empty for unused positions
   std::string error;
@@ -194,7 +249,8 @@ Rings buildRings(const Mesh& mesh) {
       uint32_t k = 0;
       while (fv[k] != v) ++k;
       ring.neighbour.push_back(fv[(k + 1) % size]);
-      ring.diagonal.push_back(fv[(k + 2) % size]);  // meaningful on quads only
+      ring.diagonal.push_back(faceDiagonal(fv, k));
+      ring.quads_only &= size == 4;
       const uint32_t last = fv[(k + size - 1) % size];
       const auto next = face_of_directed.find(directedKey(v, last));
       if (next == face_of_directed.end()) {
@@ -285,10 +341,34 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
     throw UnsupportedInput(reason);
   }
-  if (!mesh.allFacesOfSize(4)) {
-    throw UnsupportedInput(prefix(mesh) + "buildGregoryStencils needs an all-quad mesh");
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (mesh.faceSize(f) != 3 && mesh.faceSize(f) != 4) {
+      throw UnsupportedInput(prefix(mesh) + describeFace(mesh, f) +
+                             ": buildGregoryStencils needs quads and triangles only");
+    }
   }
   const std::vector<Ring> rings = buildRings(mesh).rings;
+  // Vertices with a non-quad face around them take their frame from the mesh refined
+  // once (refinedFrame); all-quad rings keep the direct masks.
+  std::optional<RefinedMesh> refined;
+  std::vector<Ring> refined_rings;
+  if (!mesh.allFacesOfSize(4)) {
+    refined = refineOnce(mesh);
+    refined_rings = buildRings(refined->mesh).rings;
+  }
+  auto frameOf = [&](uint32_t v) {
+    const Ring& ring = rings[v];
+    if (ring.quads_only || (ring.boundary && ring.faces() == 1)) {
+      return ring.boundary ? boundaryFrame(v, ring) : vertexFrame(v, ring, mask);
+    }
+    Ring local = refined_rings[v];
+    if (!local.boundary) {  // start where the input ring starts (boundary rings already do)
+      const uint32_t first = local.indexOf(refined->edgePoint(v, ring.neighbour[0]));
+      std::rotate(local.neighbour.begin(), local.neighbour.begin() + first, local.neighbour.end());
+      std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
+    }
+    return refinedFrame(v, local, *refined, mask);
+  };
   GregoryStencils out;
   auto emit = [&out](const Stencil& s) {
     for (const auto& [index, weight] : s) {
@@ -305,7 +385,7 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   std::unordered_map<uint64_t, uint32_t> edge_id;
   for (uint32_t v = 0; v < rings.size(); ++v) {
     if (rings[v].valence() == 0) continue;
-    frames[v] = rings[v].boundary ? boundaryFrame(v, rings[v]) : vertexFrame(v, rings[v], mask);
+    frames[v] = frameOf(v);
     position_id[v] = emit(frames[v].position);
   }
   auto edgePoint = [&](uint32_t v, uint32_t w) {
@@ -332,9 +412,10 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   // Edge stencils first, in face order, so all shared stencils precede the face points.
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
-    for (uint32_t c = 0; c < 4; ++c) {
-      edgeId(fv[c], fv[(c + 1) % 4]);
-      edgeId(fv[c], fv[(c + 3) % 4]);
+    const uint32_t size = uint32_t(fv.size());
+    for (uint32_t c = 0; c < size; ++c) {
+      edgeId(fv[c], fv[(c + 1) % size]);
+      edgeId(fv[c], fv[(c + size - 1) % size]);
     }
   }
   out.sharedStencilCount = out.stencilCount();
@@ -342,9 +423,11 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   out.patch_points.resize(mesh.faceCount());
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
+    const uint32_t size = uint32_t(fv.size());
     auto& points = out.patch_points[f];
-    for (uint32_t c = 0; c < 4; ++c) {
-      const uint32_t v = fv[c], ip = fv[(c + 1) % 4], im = fv[(c + 3) % 4];
+    points.fill(kNoStencil);
+    for (uint32_t c = 0; c < size; ++c) {
+      const uint32_t v = fv[c], ip = fv[(c + 1) % size], im = fv[(c + size - 1) % size];
       const Ring& ring = rings[v];
       const uint32_t n = ring.effectiveValence(), np = rings[ip].effectiveValence(),
                      nm = rings[im].effectiveValence();
@@ -392,6 +475,19 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
         fp = plusPoint();
         fm = minusPoint();
       }
+      if (size == 3) {
+        // Triangle: the quartic interior points. The patch's derivative along its edge
+        // toward the opposite corner equals that of a quad with these face points
+        // (DESIGN: the triangle "is a quad" to each of its neighbours), which holds when
+        // G = (E + 3 F) / 4 for the edge point E and face point F at the same corner.
+        Stencil gp, gm;
+        add(gp, edgePoint(v, ip), 0.25);
+        add(gp, fp, 0.75);
+        add(gm, edgePoint(v, im), 0.25);
+        add(gm, fm, 0.75);
+        fp = std::move(gp);
+        fm = std::move(gm);
+      }
       points[c * 5 + kP] = position_id[v];
       points[c * 5 + kEp] = edgeId(v, ip);
       points[c * 5 + kEm] = edgeId(v, im);
@@ -402,12 +498,17 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   return out;
 }
 
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask) {
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask, NonQuadFaces non_quads) {
   if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
     throw UnsupportedInput(reason);
   }
   GregoryBuild out;
-  if (mesh.allFacesOfSize(4)) {
+  bool native = true;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const uint32_t size = mesh.faceSize(f);
+    native &= size == 4 || (size == 3 && non_quads == NonQuadFaces::kTrianglePatches);
+  }
+  if (native) {
     out.control = mesh;
     out.stencils = buildGregoryStencils(mesh, mask);
     out.source_face.resize(mesh.faceCount());

@@ -27,15 +27,24 @@ constexpr uint32_t kMaxValence = 32;
 // Control point slots of one patch corner; patch point index = corner * 5 + slot.
 // Ep points along the edge to the next corner (corner + 1), Em to the previous one;
 // Fp is the face point next to Ep's edge, Fm next to Em's edge.
+//
+// A quad has 4 corners (20 points: the bicubic Gregory patch). A triangle has 3 (15
+// points): P, Ep, Em give the cubic boundary curves, shared with the neighbours; its
+// Fp/Fm slots hold the quartic patch's interior Gregory points (gregory_eval.h: the
+// quartic triangle's interior point next to corner c blends Fp and Fm of c). Slots
+// 15..19 of a triangle are kNoStencil.
 enum Slot : uint32_t { kP = 0, kEp = 1, kEm = 2, kFp = 3, kFm = 4 };
 constexpr uint32_t kPointsPerPatch = 20;
+constexpr uint32_t kPointsPerTriangle = 15;
+constexpr uint32_t kNoStencil = UINT32_MAX;
 
 struct GregoryStencils {
   // Stencil s has entries [offsets[s], offsets[s + 1]), sorted by vertex index.
   std::vector<uint32_t> offsets{0};
   std::vector<uint32_t> indices;  // control-mesh position index per entry
   std::vector<double> weights;    // weight per entry (affine: each stencil sums to 1)
-  // Stencil id of every control point of every patch (patch p = face p).
+  // Stencil id of every control point of every patch (patch p = face p; a triangle
+  // uses the first kPointsPerTriangle).
   std::vector<std::array<uint32_t, kPointsPerPatch>> patch_points;
   size_t sharedStencilCount = 0;  // P and E stencils (shared between patches)
 
@@ -54,14 +63,22 @@ enum class TangentMask {
   kExactLimit,  // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
 };
 
-// Stencils over `mesh`'s own vertices; `mesh` must be all quads. Throws
-// tb::UnsupportedInput with checkGregorySupport's message.
+// Stencils over `mesh`'s own vertices; `mesh` must have quads and triangles only.
+// Throws tb::UnsupportedInput with checkGregorySupport's message.
 GregoryStencils buildGregoryStencils(const Mesh& mesh,
                                      TangentMask mask = TangentMask::kPaper);
 
+// What becomes of faces that are not quads.
+enum class NonQuadFaces {
+  kTrianglePatches,  // triangles get triangle Gregory patches; a mesh with any face of
+                     // 5+ vertices is refined once (refineOnce) and patched with quads
+  kRefineOnce,       // any non-quad face: refine the whole mesh once, quads only
+};
+
 struct GregoryBuild {
-  // The all-quad mesh the patches are built over: the input itself, or, when the input
-  // has any non-quad face, the input refined once (refineOnce; patch p = its face p).
+  // The mesh the patches are built over (patch p = its face p): the input itself when
+  // all its faces are quads (or quads and triangles, with kTrianglePatches); otherwise
+  // the input refined once (refineOnce), all quads.
   Mesh control;
   bool refined = false;
   std::vector<uint32_t> source_face;  // input face of each patch
@@ -69,6 +86,7 @@ struct GregoryBuild {
 };
 
 // Throws tb::UnsupportedInput with checkGregorySupport's message.
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper);
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper,
+                          NonQuadFaces non_quads = NonQuadFaces::kTrianglePatches);
 
 }  // namespace tb::gregory_acc

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "harness/gpu/patch_program.h"
+#include "harness/measures/cracks.h"
 #include "harness/mesh/float_ulp.h"
 #include "harness/mesh/obj_loader.h"
 #include "techniques/gregory_acc/gregory_acc.h"
@@ -32,6 +33,7 @@ const Case kCases[] = {{1.0f, tess::Spacing::kInteger},
                        {7.3f, tess::Spacing::kFractionalOdd},
                        {16.0f, tess::Spacing::kInteger}};
 
+// Every program (quads, triangles) of the patches, captures merged.
 gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patches,
                              const Case& c) {
   tess::Levels levels;
@@ -40,7 +42,12 @@ gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patche
   gpu::PatchProgramOptions options;
   options.spacing = c.spacing;
   options.patches_per_draw = 8;
-  return gpu::runPatchProgram(context, *patches.gpuProgram(), levels, options);
+  gpu::PatchProgramCapture all;
+  for (const gpu::GpuPatchProgram& program : patches.gpuPrograms()) {
+    const gpu::PatchProgramCapture one = gpu::runPatchProgram(context, program, levels, options);
+    all.vertices.insert(all.vertices.end(), one.vertices.begin(), one.vertices.end());
+  }
+  return all;
 }
 
 std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant) {
@@ -88,42 +95,29 @@ TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
     const auto patches = build(mesh, "edge_symmetric");
     const Case c = kCases[1];
     const gpu::PatchProgramCapture capture = run(context, *patches, c);
-    using Key = std::tuple<uint32_t, uint32_t, uint32_t>;
-    std::map<Key, Vec3f> by_coord;
+    // Boundary points keyed by (patch, local edge, edge parameter in 16.16): the crack
+    // measure's pairing rule, so quad and triangle sides meet.
+    using Key = std::tuple<uint32_t, uint32_t, int64_t>;
+    std::map<Key, Vec3f> by_edge;
     for (const gpu::CapturedVertex& v : capture.vertices) {
-      by_coord[{v.patch, std::bit_cast<uint32_t>(v.coord[0]),
-                std::bit_cast<uint32_t>(v.coord[1])}] = v.position;
-    }
-    auto coordOnEdge = [](int corner, float t) -> std::pair<float, float> {
-      switch (corner) {
-        case 0: return {t, 0.0f};
-        case 1: return {1.0f, t};
-        case 2: return {1.0f - t, 1.0f};
-        default: return {0.0f, 1.0f - t};
+      const PatchDomain domain = patches->patchDomain(v.patch);
+      for (int corner = 0; corner < testing::cornerCount(domain); ++corner) {
+        const int64_t t = domainEdgeParameter(domain, uint32_t(corner), v.coord);
+        if (t >= 0) by_edge[{v.patch, uint32_t(corner), t}] = v.position;
       }
-    };
+    }
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
     size_t compared = 0;
-    for (const gpu::CapturedVertex& v : capture.vertices) {
-      for (int corner = 0; corner < 4; ++corner) {
-        float t;
-        const float x = v.coord[0], y = v.coord[1];
-        if (corner == 0 && y == 0.0f) t = x;
-        else if (corner == 1 && x == 1.0f) t = y;
-        else if (corner == 2 && y == 1.0f) t = 1.0f - x;
-        else if (corner == 3 && x == 0.0f) t = 1.0f - y;
-        else continue;
-        const testing::EdgeTwin twin = twins[v.patch * 4 + corner];
-        if (twin.face < 0) continue;
-        const auto [gu, gw] = coordOnEdge(twin.corner, 1.0f - t);
-        const auto it = by_coord.find(
-            {uint32_t(twin.face), std::bit_cast<uint32_t>(gu), std::bit_cast<uint32_t>(gw)});
-        ASSERT_NE(it, by_coord.end()) << name << " patch " << twin.face << " lacks " << gu
-                                      << "," << gw;
-        ++compared;
-        EXPECT_TRUE(it->second == v.position)
-            << name << " patches " << v.patch << "/" << twin.face << " t " << t;
-      }
+    for (const auto& [key, position] : by_edge) {
+      const auto [patch, corner, t] = key;
+      const testing::EdgeTwin twin = twins[patch * 4 + corner];
+      if (twin.face < 0) continue;
+      const auto it = by_edge.find({uint32_t(twin.face), uint32_t(twin.corner), 65536 - t});
+      ASSERT_NE(it, by_edge.end()) << name << " patch " << twin.face << " edge " << twin.corner
+                                   << " lacks t " << double(65536 - t) / 65536;
+      ++compared;
+      EXPECT_TRUE(it->second == position)
+          << name << " patches " << patch << "/" << twin.face << " t " << double(t) / 65536;
     }
     EXPECT_GT(compared, 8 * patches->patchCount()) << name;
   }

@@ -10,6 +10,7 @@
 #include "harness/mesh/obj_loader.h"
 #include "harness/mesh/topology.h"
 #include "harness/tess/tessellator.h"
+#include "reference/face_domain.h"
 #include "reference/limit_surface.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
@@ -95,15 +96,8 @@ TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
   EXPECT_GE(regular_faces, 32u);  // every torus face is regular
 }
 
-// Position of patch p at the point of its corner-c..c+1 edge at parameter t from corner c.
-DomainCoord edgeCoord(int corner, double t) {
-  switch (corner) {
-    case 0: return {t, 0, 0};
-    case 1: return {1, t, 0};
-    case 2: return {1 - t, 1, 0};
-    default: return {0, 1 - t, 0};
-  }
-}
+using testing::cornerCount;
+using testing::edgeCoord;
 
 TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
   for (const std::string& name : kSupported) {
@@ -113,21 +107,25 @@ TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
     const double diagonal = bboxDiagonal(mesh);
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     size_t edges = 0;
+    size_t directed_edges = 0;
     for (size_t f = 0; f < control.faceCount(); ++f) {
-      for (int c = 0; c < 4; ++c) {
+      const PatchDomain domain = patches->patchDomain(f);
+      directed_edges += size_t(cornerCount(domain));
+      for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];
         if (twin.face < 0) continue;
         ++edges;
+        const PatchDomain other = patches->patchDomain(size_t(twin.face));
         for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
-          const Vec3d p = patches->evaluate(f, edgeCoord(c, t)).position;
-          const Vec3d q = patches->evaluate(size_t(twin.face), edgeCoord(twin.corner, 1 - t)).position;
+          const Vec3d p = patches->evaluate(f, edgeCoord(domain, c, t)).position;
+          const Vec3d q =
+              patches->evaluate(size_t(twin.face), edgeCoord(other, twin.corner, 1 - t)).position;
           ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << twin.face;
         }
       }
     }
     // Every directed edge but the boundary ones has its twin (oracle: the topology).
-    EXPECT_EQ(edges, 4 * control.faceCount() - buildTopology(control).boundaryEdgeCount())
-        << name;
+    EXPECT_EQ(edges, directed_edges - buildTopology(control).boundaryEdgeCount()) << name;
   }
 }
 
@@ -138,25 +136,21 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
     if (d[1] == 0.0f) ts.push_back(d[0]);
   }
   ASSERT_GT(ts.size(), 5u);
-  auto coordF = [](int corner, float t) -> tess::DomainPoint {
-    switch (corner) {
-      case 0: return {t, 0, 0};
-      case 1: return {1, t, 0};
-      case 2: return {1 - t, 1, 0};
-      default: return {0, 1 - t, 0};
-    }
-  };
   for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "edge_symmetric");
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      for (int c = 0; c < 4; ++c) {
+      const PatchDomain domain = patches->patchDomain(f);
+      for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];
         if (twin.face < 0) continue;
+        const PatchDomain other = patches->patchDomain(size_t(twin.face));
         for (float t : ts) {
-          const Vec3f p = patches->evaluateFloat(f, coordF(c, t)).position;
-          const Vec3f q = patches->evaluateFloat(size_t(twin.face), coordF(twin.corner, 1 - t)).position;
+          const Vec3f p = patches->evaluateFloat(f, edgeCoord(domain, c, t)).position;
+          const Vec3f q =
+              patches->evaluateFloat(size_t(twin.face), edgeCoord(other, twin.corner, 1 - t))
+                  .position;
           ASSERT_TRUE(p == q) << name << " faces " << f << "," << twin.face << " t " << t;
         }
       }
@@ -173,9 +167,15 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
     const std::vector<uint8_t> on_boundary = buildTopology(control).on_boundary;
     const double diagonal = bboxDiagonal(mesh);
     for (size_t f = 0; f < control.faceCount(); ++f) {
-      for (int c = 0; c < 4; ++c) {
-        const DomainCoord d = edgeCoord(c, 0);
-        const ref::LimitPoint exact = limit.evaluate(f, d[0], d[1]);
+      const PatchDomain domain = patches->patchDomain(f);
+      for (int c = 0; c < cornerCount(domain); ++c) {
+        const DomainCoord d = edgeCoord(domain, c, 0.0);
+        // Bfr: a Catmull-Clark triangle is 3 quad sub-faces, corner c at (0,0) of sub-face c.
+        const Vec2d uv =
+            domain == PatchDomain::kQuad
+                ? Vec2d{d[0], d[1]}
+                : ref::subFaceToFaceUv(ref::Scheme::kCatmullClark, 3, c, {0.0, 0.0});
+        const ref::LimitPoint exact = limit.evaluate(f, uv.x, uv.y);
         EXPECT_LE(length(patches->evaluate(f, d).position - exact.position), 1e-12 * diagonal)
             << name << " face " << f;
         // Interior corners: the tangent plane is the limit's (exact tangent masks; the
@@ -366,6 +366,20 @@ TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
     const Mesh& control = patches->controlMesh();
     const double h = 1e-6;
     for (size_t f = 0; f < control.faceCount(); ++f) {
+      if (patches->patchDomain(f) == PatchDomain::kTriangle) {
+        // Barycentric: tangents toward corner 1 and corner 2, normal (S_1 - S_0) x (S_2 - S_0).
+        for (const DomainCoord& b : {DomainCoord{0.2, 0.3, 0.5}, DomainCoord{0.7, 0.1, 0.2},
+                                     DomainCoord{0.05, 0.9, 0.05}, DomainCoord{0.45, 0.1, 0.45}}) {
+          auto p = [&](double db, double dc) {
+            return patches->evaluate(f, {b[0] - db - dc, b[1] + db, b[2] + dc}).position;
+          };
+          const Vec3d da = (p(h, 0) - p(-h, 0)) * (0.5 / h);
+          const Vec3d dc = (p(0, h) - p(0, -h)) * (0.5 / h);
+          EXPECT_LE(length(patches->evaluate(f, b).normal - normalize(cross(da, dc))), 1e-6)
+              << name << " triangle " << f << " at " << b[0] << "," << b[1] << "," << b[2];
+        }
+        continue;
+      }
       for (double u : {0.1, 0.37, 0.5, 0.81}) {
         for (double v : {0.05, 0.44, 0.9}) {
           auto p = [&](double a, double b) { return patches->evaluate(f, {a, b, 0}).position; };

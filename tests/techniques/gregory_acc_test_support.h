@@ -39,24 +39,45 @@ struct EdgeTwin {
   int corner = 0;     // the twin is (corner, corner + 1) of `face`, running the other way
 };
 
-// twins[f * 4 + c]: the patch edge sharing edge (c, c + 1) of quad patch f.
-inline std::vector<EdgeTwin> edgeTwins(const Mesh& quads) {
+// twins[f * 4 + c]: the patch edge sharing edge (c, c + 1) of patch f (a quad or a
+// triangle: patch f is face f of the control mesh).
+inline std::vector<EdgeTwin> edgeTwins(const Mesh& mesh) {
   std::unordered_map<uint64_t, EdgeTwin> by_directed;
-  for (size_t f = 0; f < quads.faceCount(); ++f) {
-    const auto fv = quads.facePositions(f);
-    for (int c = 0; c < 4; ++c) {
-      by_directed[(uint64_t(fv[c]) << 32) | fv[(c + 1) % 4]] = {int64_t(f), c};
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto fv = mesh.facePositions(f);
+    for (size_t c = 0; c < fv.size(); ++c) {
+      by_directed[(uint64_t(fv[c]) << 32) | fv[(c + 1) % fv.size()]] = {int64_t(f), int(c)};
     }
   }
-  std::vector<EdgeTwin> twins(4 * quads.faceCount());
-  for (size_t f = 0; f < quads.faceCount(); ++f) {
-    const auto fv = quads.facePositions(f);
-    for (int c = 0; c < 4; ++c) {
-      const auto it = by_directed.find((uint64_t(fv[(c + 1) % 4]) << 32) | fv[c]);
+  std::vector<EdgeTwin> twins(4 * mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const auto fv = mesh.facePositions(f);
+    for (size_t c = 0; c < fv.size(); ++c) {
+      const auto it = by_directed.find((uint64_t(fv[(c + 1) % fv.size()]) << 32) | fv[c]);
       if (it != by_directed.end()) twins[f * 4 + c] = it->second;
     }
   }
   return twins;
+}
+
+inline int cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
+
+// The domain point of patch edge (corner, corner + 1) at parameter t from `corner`:
+// quads (u, v, 0) with corners (0,0), (1,0), (1,1), (0,1); triangles barycentric.
+template <class T>
+std::array<T, 3> edgeCoord(PatchDomain domain, int corner, T t) {
+  if (domain == PatchDomain::kTriangle) {
+    std::array<T, 3> p{T(0), T(0), T(0)};
+    p[corner] = T(1) - t;
+    p[(corner + 1) % 3] = t;
+    return p;
+  }
+  switch (corner) {
+    case 0: return {t, T(0), T(0)};
+    case 1: return {T(1), t, T(0)};
+    case 2: return {T(1) - t, T(1), T(0)};
+    default: return {T(0), T(1) - t, T(0)};
+  }
 }
 
 }  // namespace tb::gregory_acc::testing
