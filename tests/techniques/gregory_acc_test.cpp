@@ -21,7 +21,8 @@
 namespace tb::gregory_acc {
 namespace {
 
-// The bundled assets gregory_acc supports, pinned: all-quad, mixed (refined once), with
+// The bundled assets gregory_acc supports, pinned: all-quad, quad+triangle (triangle
+// patches), with n-gons (refined once), with
 // smooth boundaries, and triangle meshes (Catmull-Clark of triangles).
 const std::vector<std::string> kSupported = {
     "opensubdiv/catmark_cube.obj",          "opensubdiv/catmark_edgecorner.obj",
@@ -431,6 +432,46 @@ TEST(GregoryAcc, OperationCountsMatchAHandCount) {
     EXPECT_EQ(profile->per_patch_setup.add, 3 * entries);
     EXPECT_EQ(profile->per_patch_setup.div + profile->per_patch_setup.compare, 0u);
   }
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// Oracle: the OBJ's own face sizes (catmark_pyramid: 1 quad, 4 triangles).
+TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
+  const Mesh pyramid = load("opensubdiv/catmark_pyramid.obj");
+  const auto patches = build(pyramid, "edge_symmetric");
+  ASSERT_EQ(patches->patchCount(), pyramid.faceCount());
+  size_t triangles = 0;
+  for (size_t p = 0; p < patches->patchCount(); ++p) {
+    EXPECT_EQ(patches->patchDomain(p), pyramid.faceSize(p) == 3 ? PatchDomain::kTriangle
+                                                                : PatchDomain::kQuad);
+    EXPECT_EQ(patches->sourceFace(p), p);
+    triangles += patches->patchDomain(p) == PatchDomain::kTriangle;
+  }
+  EXPECT_EQ(triangles, 4u);
+  EXPECT_EQ(patches->approximates(), LimitScheme::kCatmullClark);
+  const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
+  ASSERT_EQ(programs.size(), 2u);
+  EXPECT_EQ(programs[0].domain, tess::Domain::kQuad);
+  EXPECT_EQ(programs[0].patch_ids, std::vector<uint32_t>({4}));
+  EXPECT_EQ(programs[1].domain, tess::Domain::kTriangle);
+  EXPECT_EQ(programs[1].patch_ids, std::vector<uint32_t>({0, 1, 2, 3}));
+  EXPECT_EQ(programs[1].storage_buffers.back().size(), 4u * kPointsPerTriangle);
+  // 20 ids per quad, 15 per triangle.
+  EXPECT_EQ(patches->footprint().patch_data_bytes, (20u + 4u * 15u) * 4u);
+  // quads_only: refined once, 4 + 4 * 3 quads.
+  const auto refined = build(pyramid, "quads_only");
+  EXPECT_EQ(refined->patchCount(), 16u);
+  EXPECT_EQ(refined->gpuPrograms().size(), 1u);
+  // Faces of 5+ vertices: refined once in every variant (catmark_nonquads: 7 triangles,
+  // 7 quads, 1 pentagon, 2 hexagons -> 21 + 28 + 5 + 12 quads).
+  const auto nonquads = build(load("opensubdiv/catmark_nonquads.obj"), "edge_symmetric");
+  EXPECT_EQ(nonquads->patchCount(), 66u);
+  EXPECT_EQ(nonquads->domain(), PatchDomain::kQuad);
 }
 
 }  // namespace
