@@ -131,9 +131,9 @@ TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
 }
 
 TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
-  const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
+  const tess::Tessellation quads = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
   std::vector<float> ts;
-  for (const tess::DomainPoint& d : domain.points) {
+  for (const tess::DomainPoint& d : quads.points) {
     if (d[1] == 0.0f) ts.push_back(d[0]);
   }
   ASSERT_GT(ts.size(), 5u);
