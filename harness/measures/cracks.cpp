@@ -98,8 +98,7 @@ struct PatchBoundaries {
   size_t at(size_t patch, size_t k) const { return offset[patch] + k; }
 };
 
-PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing,
-                                float level) {
+PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing, float level) {
   PatchBoundaries b;
   b.domain.resize(patches.patchCount());
   b.offset.assign(patches.patchCount() + 1, 0);
@@ -137,8 +136,8 @@ BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundar
 // Runs `program` over its patches and stores the captured boundary points in `positions`.
 void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
                   const PatchBoundaries& boundaries, tess::Spacing spacing, float level,
-                  gpu::Context& context, BoundaryPositions* positions,
-                  std::vector<uint8_t>* filled, CrackFigures* figures) {
+                  gpu::Context& context, BoundaryPositions* positions, std::vector<uint8_t>* filled,
+                  CrackFigures* figures) {
   const PatchDomain domain =
       program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
   const std::optional<BoundaryPoints>& boundary = boundaries.by_domain[domainSlot(domain)];
@@ -171,8 +170,7 @@ void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& pro
       if (!(cpu == v.position)) ++figures->device_points_differing;
       figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlpDistance(cpu, v.position));
       const auto found = index.find(coordBits(v.coord));
-      if (found == index.end() || v.patch >= patch_count ||
-          boundaries.domain[v.patch] != domain) {
+      if (found == index.end() || v.patch >= patch_count || boundaries.domain[v.patch] != domain) {
         continue;
       }
       (*positions)[boundaries.at(v.patch, found->second)] = v.position;

@@ -199,8 +199,8 @@ class InstructionsMeasure final : public Measure {
       return;
     }
     for (const auto& [domain, e] : by_domain) {
-      for (const auto& [which, profile, patch] : {std::tuple{"min", *e.least, e.least_patch},
-                                                  std::tuple{"max", *e.most, e.most_patch}}) {
+      for (const auto& [which, profile, patch] :
+           {std::tuple{"min", *e.least, e.least_patch}, std::tuple{"max", *e.most, e.most_patch}}) {
         for (bool per_vertex : {true, false}) {
           MetricRow row;
           row.keys["source"] = "counting_scalar";

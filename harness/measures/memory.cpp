@@ -167,7 +167,8 @@ struct ClassifiedTessellation {
 ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level) {
   const float n = float(level);
   ClassifiedTessellation c{
-      domain, domain == PatchDomain::kQuad ? 4u : 3u,
+      domain,
+      domain == PatchDomain::kQuad ? 4u : 3u,
       tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
                        tess::Spacing::kInteger, {{n, n, n, n}, {n, n}}),
       {}};

@@ -22,9 +22,9 @@ ref::Scheme limitScheme(LimitScheme scheme) {
 }
 
 struct PatchSample {
-  DomainCoord coord;    // as the technique takes it
-  int sub_face = -1;    // >= 0: (u, v) are the (s, t) of this Bfr sub-face
-  double u, v;          // the limit face's parameter at the same point
+  DomainCoord coord;                    // as the technique takes it
+  int sub_face = -1;                    // >= 0: (u, v) are the (s, t) of this Bfr sub-face
+  double u, v;                          // the limit face's parameter at the same point
   std::array<double, 4> corner_weight;  // weight of each patch corner
 };
 
@@ -97,7 +97,9 @@ PatchSampling subFaceSampling(int level) {
   for (int k = 0; k < 3; ++k) {
     Bary corner{0, 0, 0}, next{0, 0, 0}, previous{0, 0, 0};
     corner[k] = next[(k + 1) % 3] = previous[(k + 2) % 3] = 1;
-    const Bary quad[4] = {corner, mix(corner, next, 0.5, 0.5), {1.0 / 3, 1.0 / 3, 1.0 / 3},
+    const Bary quad[4] = {corner,
+                          mix(corner, next, 0.5, 0.5),
+                          {1.0 / 3, 1.0 / 3, 1.0 / 3},
                           mix(corner, previous, 0.5, 0.5)};
     appendGridTriangles(level, uint32_t(sampling.samples.size()), &sampling.triangles);
     for (int i = 0; i <= level; ++i) {
@@ -186,8 +188,8 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
         near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
                 sample.corner_weight[c] >= kNearExtraordinary;
       }
-      double& bucket = near ? figures.parametric_max_near_extraordinary
-                            : figures.parametric_max_elsewhere;
+      double& bucket =
+          near ? figures.parametric_max_near_extraordinary : figures.parametric_max_elsewhere;
       bucket = std::max(bucket, error);
       figures.samples_near_extraordinary += near;
       figures.parametric_max = std::max(figures.parametric_max, error);
@@ -211,11 +213,11 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   }
   // Relative to the bounding-box diagonal, as every error figure is reported.
   const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
-  for (double* value : {&figures.parametric_max, &figures.parametric_rms,
-                        &figures.parametric_max_near_extraordinary,
-                        &figures.parametric_max_elsewhere, &figures.hausdorff,
-                        &figures.hausdorff_technique_to_limit,
-                        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
+  for (double* value :
+       {&figures.parametric_max, &figures.parametric_rms,
+        &figures.parametric_max_near_extraordinary, &figures.parametric_max_elsewhere,
+        &figures.hausdorff, &figures.hausdorff_technique_to_limit,
+        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
     *value *= scale;
   }
   return figures;

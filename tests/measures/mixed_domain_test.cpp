@@ -181,8 +181,8 @@ TEST(MixedDomains, ClosedFormMatchesTheWeldedMeshAndEuler) {
       // Per-domain sums: 4 triangle patches and one quad patch.
       EXPECT_EQ(m.plain_triangles,
                 4 * tess::triangleTriangleCount(level) + tess::quadTriangleCount(level));
-      EXPECT_EQ(m.displacement_bytes,
-                2 * (4 * uint64_t(level + 1) * (level + 2) / 2 + uint64_t(level + 1) * (level + 1)));
+      EXPECT_EQ(m.displacement_bytes, 2 * (4 * uint64_t(level + 1) * (level + 2) / 2 +
+                                           uint64_t(level + 1) * (level + 1)));
       // A closed seamless triangle mesh of genus 0: V = F / 2 + 2.
       if (!uvs) {
         EXPECT_EQ(m.plain_vertices, m.plain_triangles / 2 + 2);
@@ -213,8 +213,7 @@ ref::SubFacePoint invertSubFaceMap(const DomainCoord& w) {
 class ExactLimitPatches final : public MixedPatches {
  public:
   ExactLimitPatches(Mesh mesh, Vec3d offset)
-      : MixedPatches(std::move(mesh)), limit_(mesh_, ref::Scheme::kCatmullClark),
-        offset_(offset) {}
+      : MixedPatches(std::move(mesh)), limit_(mesh_, ref::Scheme::kCatmullClark), offset_(offset) {}
   SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
     Vec2d uv{c[0], c[1]};
     if (patchDomain(patch) == PatchDomain::kTriangle) {
@@ -337,9 +336,10 @@ TEST(MixedDomains, InstructionRowsAreKeyedByProgramDomain) {
       }
     }
   }
-  const std::map<std::string, int> expected_static = {
-      {"quad gpu/test_bilinear.tesc", 2}, {"quad gpu/test_bilinear.tese", 2},
-      {"triangle gpu/tess_levels.tesc", 2}, {"triangle gpu/tess_capture.tese", 2}};
+  const std::map<std::string, int> expected_static = {{"quad gpu/test_bilinear.tesc", 2},
+                                                      {"quad gpu/test_bilinear.tese", 2},
+                                                      {"triangle gpu/tess_levels.tesc", 2},
+                                                      {"triangle gpu/tess_capture.tese", 2}};
   EXPECT_EQ(static_rows, expected_static);
   const std::map<std::string, double> expected_mul = {{"quad min (patch 4)", 100},
                                                       {"quad max (patch 4)", 100},
@@ -405,8 +405,8 @@ Mesh quadGrid(int cells) {
   auto id = [&](int i, int j) { return std::to_string(j * (cells + 1) + i + 1); };
   for (int j = 0; j < cells; ++j) {
     for (int i = 0; i < cells; ++i) {
-      obj += "f " + id(i, j) + " " + id(i + 1, j) + " " + id(i + 1, j + 1) + " " + id(i, j + 1) +
-             "\n";
+      obj +=
+          "f " + id(i, j) + " " + id(i + 1, j) + " " + id(i + 1, j + 1) + " " + id(i, j + 1) + "\n";
     }
   }
   return loadObjText(obj, "quad_grid.obj");
