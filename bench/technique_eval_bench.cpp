@@ -23,11 +23,12 @@ void evaluateAllPatches(benchmark::State& state, const tb::Technique* technique,
   int64_t points = 0;
   for (auto _ : state) {
     for (size_t p = 0; p < patches->patchCount(); ++p) {
+      const tb::PatchDomain domain = patches->patchDomain(p);
       for (int i = 0; i <= kGrid; ++i) {
-        const int j_end = patches->domain() == tb::PatchDomain::kQuad ? kGrid : kGrid - i;
+        const int j_end = domain == tb::PatchDomain::kQuad ? kGrid : kGrid - i;
         for (int j = 0; j <= j_end; ++j) {
           const double u = double(i) / kGrid, v = double(j) / kGrid;
-          const tb::DomainCoord coord = patches->domain() == tb::PatchDomain::kTriangle
+          const tb::DomainCoord coord = domain == tb::PatchDomain::kTriangle
                                             ? tb::DomainCoord{u, v, 1 - u - v}
                                             : tb::DomainCoord{u, v, 0};
           benchmark::DoNotOptimize(patches->evaluate(p, coord));

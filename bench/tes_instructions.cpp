@@ -34,8 +34,16 @@ int main(int argc, char** argv) {
     for (int i = 4; i < argc; ++i) levels.push_back(std::stof(argv[i]));
     if (levels.empty()) levels = {8, 16};
     const auto patches = technique->buildPatches(mesh, variant);
-    const auto program = patches->gpuProgram();
-    if (!program) throw std::runtime_error(std::string(argv[1]) + " has no GPU program");
+    // The first program only: callgrind_tes.sh takes the slope between exactly two dumps.
+    // Patches that mix domains have one program per domain; the others are not counted.
+    const auto programs = patches->gpuPrograms();
+    if (programs.empty()) throw std::runtime_error(std::string(argv[1]) + " has no GPU program");
+    const tb::gpu::GpuPatchProgram* program = &programs.front();
+    if (programs.size() > 1) {
+      std::fprintf(stderr, "tes_instructions: %zu programs; counting the %s one (%s) only\n",
+                   programs.size(), std::string(tb::tess::toString(program->domain)).c_str(),
+                   program->evaluation_shader.c_str());
+    }
     auto context = tb::gpu::Context::create();
     if (!context) throw std::runtime_error("no usable Vulkan device: " + context.error());
 

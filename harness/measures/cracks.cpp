@@ -1,9 +1,11 @@
 #include "harness/measures/cracks.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
@@ -80,29 +82,72 @@ struct CoordBitsHash {
   }
 };
 
-// Positions at every boundary point of every patch: [patch * points + k].
+size_t domainSlot(PatchDomain domain) { return domain == PatchDomain::kQuad ? 0 : 1; }
+
+// The boundary points of every patch, from one tessellation per domain that occurs
+// (patches may mix quads and triangles), and where each patch's points start in the
+// flat positions array.
+struct PatchBoundaries {
+  std::array<std::optional<BoundaryPoints>, 2> by_domain;  // quad, triangle
+  std::array<size_t, 2> tessellated_points{};              // all points of each domain
+  std::vector<PatchDomain> domain;                         // per patch
+  std::vector<size_t> offset;                              // per patch, then the total
+  bool culled = false;
+
+  const BoundaryPoints& of(size_t patch) const { return *by_domain[domainSlot(domain[patch])]; }
+  size_t at(size_t patch, size_t k) const { return offset[patch] + k; }
+};
+
+PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing, float level) {
+  PatchBoundaries b;
+  b.domain.resize(patches.patchCount());
+  b.offset.assign(patches.patchCount() + 1, 0);
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    b.domain[p] = domain;
+    std::optional<BoundaryPoints>& slot = b.by_domain[domainSlot(domain)];
+    if (!slot && !b.culled) {
+      const tess::Tessellation tessellation =
+          tess::tessellate(tessDomain(domain), spacing, uniformLevels(level));
+      b.culled = tessellation.culled;
+      if (b.culled) continue;
+      slot = boundaryPoints(domain, tessellation);
+      b.tessellated_points[domainSlot(domain)] = tessellation.points.size();
+    }
+    if (!b.culled) b.offset[p + 1] = b.offset[p] + slot->points.size();
+  }
+  return b;
+}
+
+// Positions at every boundary point of every patch: [boundaries.at(patch, k)].
 using BoundaryPositions = std::vector<Vec3f>;
 
-BoundaryPositions cpuPositions(const SurfacePatches& patches, const BoundaryPoints& boundary) {
-  const size_t n = boundary.points.size();
-  BoundaryPositions positions(patches.patchCount() * n);
+BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundaries& boundaries) {
+  BoundaryPositions positions(boundaries.offset.back());
   for (size_t p = 0; p < patches.patchCount(); ++p) {
-    for (size_t k = 0; k < n; ++k) {
-      positions[p * n + k] = patches.evaluateFloat(p, boundary.points[k]).position;
+    const std::vector<tess::DomainPoint>& points = boundaries.of(p).points;
+    for (size_t k = 0; k < points.size(); ++k) {
+      positions[boundaries.at(p, k)] = patches.evaluateFloat(p, points[k]).position;
     }
   }
   return positions;
 }
 
-BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
-                               const BoundaryPoints& boundary, tess::Spacing spacing, float level,
-                               size_t points_per_patch, gpu::Context& context,
-                               CrackFigures* figures) {
-  const size_t n = boundary.points.size();
+// Runs `program` over its patches and stores the captured boundary points in `positions`.
+void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
+                  const PatchBoundaries& boundaries, tess::Spacing spacing, float level,
+                  gpu::Context& context, BoundaryPositions* positions, std::vector<uint8_t>* filled,
+                  CrackFigures* figures) {
+  const PatchDomain domain =
+      program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
+  const std::optional<BoundaryPoints>& boundary = boundaries.by_domain[domainSlot(domain)];
   std::unordered_map<CoordBits, uint32_t, CoordBitsHash> index;
-  for (size_t k = 0; k < n; ++k) index.emplace(coordBits(boundary.points[k]), uint32_t(k));
-  BoundaryPositions positions(patches.patchCount() * n);
-  std::vector<uint8_t> filled(positions.size(), 0);
+  if (boundary) {
+    for (size_t k = 0; k < boundary->points.size(); ++k) {
+      index.emplace(coordBits(boundary->points[k]), uint32_t(k));
+    }
+  }
+  const size_t points_per_patch = boundaries.tessellated_points[domainSlot(domain)];
 
   // Chunks of about a million captured vertices bound the capture buffer; a few
   // patches per draw keep lavapipe's single-threaded tessellator out of its
@@ -113,9 +158,9 @@ BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatc
   gpu::PatchProgramOptions options;
   options.spacing = spacing;
   options.patches_per_draw = level >= 32 ? 2 : 8;
-  for (uint32_t first = 0; first < patch_count; first += chunk) {
+  for (uint32_t first = 0; first < program.patch_count; first += chunk) {
     options.first_patch = first;
-    options.patch_count = std::min(chunk, patch_count - first);
+    options.patch_count = std::min(chunk, program.patch_count - first);
     const gpu::PatchProgramCapture capture =
         gpu::runPatchProgram(context, program, uniformLevels(level), options);
     figures->draws += capture.draws;
@@ -125,16 +170,32 @@ BoundaryPositions gpuPositions(const SurfacePatches& patches, const gpu::GpuPatc
       if (!(cpu == v.position)) ++figures->device_points_differing;
       figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlpDistance(cpu, v.position));
       const auto found = index.find(coordBits(v.coord));
-      if (found == index.end() || v.patch >= patch_count) continue;
-      positions[size_t(v.patch) * n + found->second] = v.position;
-      filled[size_t(v.patch) * n + found->second] = 1;
+      if (found == index.end() || v.patch >= patch_count || boundaries.domain[v.patch] != domain) {
+        continue;
+      }
+      (*positions)[boundaries.at(v.patch, found->second)] = v.position;
+      (*filled)[boundaries.at(v.patch, found->second)] = 1;
     }
+  }
+}
+
+BoundaryPositions gpuPositions(const SurfacePatches& patches,
+                               const std::vector<gpu::GpuPatchProgram>& programs,
+                               const PatchBoundaries& boundaries, tess::Spacing spacing,
+                               float level, gpu::Context& context, CrackFigures* figures) {
+  BoundaryPositions positions(boundaries.offset.back());
+  std::vector<uint8_t> filled(positions.size(), 0);
+  std::string shaders;
+  for (const gpu::GpuPatchProgram& program : programs) {
+    gpuPositions(patches, program, boundaries, spacing, level, context, &positions, &filled,
+                 figures);
+    shaders += (shaders.empty() ? "" : ", ") + program.evaluation_shader;
   }
   if (std::find(filled.begin(), filled.end(), 0) != filled.end()) {
     throw std::runtime_error(
         "cracks: the GPU capture lacks boundary points the CPU tessellator "
         "emits (" +
-        program.evaluation_shader + ")");
+        shaders + ")");
   }
   return positions;
 }
@@ -217,7 +278,6 @@ bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint
 
 SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
   const Welding welding = weldByPosition(patches.controlMesh());
-  const uint32_t corners = cornerCount(patches.domain());
   struct EdgeSide {
     PatchSide side;
     uint32_t raw0, raw1;  // unwelded position indices, ascending
@@ -226,6 +286,7 @@ SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
   std::map<uint32_t, std::vector<PatchSide>> vertex_sides;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const std::array<uint32_t, 4> raw = patches.patchCorners(p);
+    const uint32_t corners = cornerCount(patches.patchDomain(p));
     for (uint32_t c = 0; c < corners; ++c) {
       vertex_sides[welding.canonical.at(raw[c])].push_back({uint32_t(p), c, false});
     }
@@ -262,10 +323,10 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
   figures.shared_corners = shared.corners.size();
   for (const SharedEdge& e : shared.edges) figures.seam_edges += e.seam ? 1 : 0;
 
-  std::optional<gpu::GpuPatchProgram> program;
+  std::vector<gpu::GpuPatchProgram> programs;
   if (backend == CrackBackend::kGpu) {
-    program = patches.gpuProgram();
-    if (!program) {
+    programs = patches.gpuPrograms();
+    if (programs.empty()) {
       figures.skipped_reason = "the technique has no GPU program";
       return figures;
     }
@@ -275,19 +336,15 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
     }
   }
 
-  const tess::Tessellation tessellation =
-      tess::tessellate(tessDomain(patches.domain()), spacing, uniformLevels(level));
-  if (tessellation.culled) {
+  const PatchBoundaries boundaries = patchBoundaries(patches, spacing, level);
+  if (boundaries.culled) {
     figures.skipped_reason = "the level culls every patch";
     return figures;
   }
-  const BoundaryPoints boundary = boundaryPoints(patches.domain(), tessellation);
-  const size_t n = boundary.points.size();
   const BoundaryPositions positions =
       backend == CrackBackend::kCpuFloat
-          ? cpuPositions(patches, boundary)
-          : gpuPositions(patches, *program, boundary, spacing, level, tessellation.points.size(),
-                         *context, &figures);
+          ? cpuPositions(patches, boundaries)
+          : gpuPositions(patches, programs, boundaries, spacing, level, *context, &figures);
   figures.measured = true;
 
   PairAccumulator pairs(&figures, scaleUlp(patches.controlMesh()));
@@ -295,15 +352,16 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
     const PatchSide& a = edge.sides[0];
     for (size_t s = 1; s < edge.sides.size(); ++s) {
       const PatchSide& b = edge.sides[s];
-      const auto& b_index = boundary.edge_index[b.local];
-      for (const auto& [t_a, k_a] : boundary.edge_index[a.local]) {
+      const auto& b_index = boundaries.of(b.patch).edge_index[b.local];
+      for (const auto& [t_a, k_a] : boundaries.of(a.patch).edge_index[a.local]) {
         const int64_t t_b = a.reversed == b.reversed ? t_a : kFixedOne - t_a;
         const auto k_b = b_index.find(t_b);
         if (k_b == b_index.end()) {
           ++figures.unpaired_points;
           continue;
         }
-        pairs.add(positions[a.patch * n + k_a], positions[b.patch * n + k_b->second],
+        pairs.add(positions[boundaries.at(a.patch, k_a)],
+                  positions[boundaries.at(b.patch, k_b->second)],
                   {true, false, a.patch, b.patch, a.local, b.local, double(t_a) / kFixedOne});
       }
     }
@@ -312,7 +370,8 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
     const PatchSide& a = corner.sides[0];
     for (size_t s = 1; s < corner.sides.size(); ++s) {
       const PatchSide& b = corner.sides[s];
-      pairs.add(positions[a.patch * n + a.local], positions[b.patch * n + b.local],
+      pairs.add(positions[boundaries.at(a.patch, a.local)],
+                positions[boundaries.at(b.patch, b.local)],
                 {true, true, a.patch, b.patch, a.local, b.local, 0});
     }
   }

@@ -91,9 +91,11 @@ struct CrackFigures {
   uint32_t draws = 0;
 };
 
-// Uniform levels (every outer and inner level = `level`) under `spacing`.
-// kGpu runs patches.gpuProgram() on `context`; without one of them the result is not
-// measured and says why. Throws gpu::GpuError when the device fails.
+// Uniform levels (every outer and inner level = `level`) under `spacing`. Each patch is
+// tessellated in its own patchDomain(p); a quad edge and a triangle edge that share an
+// edge pair by edge parameter like two edges of one domain.
+// kGpu runs every program of patches.gpuPrograms() on `context`; without a program or a
+// context the result is not measured and says why. Throws gpu::GpuError when the device fails.
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
                            CrackBackend backend, gpu::Context* context = nullptr);
 

@@ -81,7 +81,7 @@ class CracksMeasure final : public Measure {
         "than 100 patches (the CPU backend covers 64 everywhere)"};
     const SurfacePatches& patches = *input.patches;
     std::string gpu_reason;
-    if (!patches.gpuProgram()) {
+    if (patches.gpuPrograms().empty()) {
       gpu_reason = "skipped: the technique has no GPU program";
     } else if (input.gpu == nullptr) {
       gpu_reason = "skipped: no Vulkan device (" + input.gpu_unavailable + ")";

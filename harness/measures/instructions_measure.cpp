@@ -3,6 +3,10 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "harness/measures/instructions.h"
 #include "harness/measures/measure.h"
@@ -53,6 +57,13 @@ StageInstructionCounts cachedStageCounts(const std::string& shader,
   return found->second;
 }
 
+bool mixesDomains(const SurfacePatches& patches) {
+  for (size_t p = 1; p < patches.patchCount(); ++p) {
+    if (patches.patchDomain(p) != patches.patchDomain(0)) return true;
+  }
+  return false;
+}
+
 class InstructionsMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
@@ -85,84 +96,122 @@ class InstructionsMeasure final : public Measure {
         "x86 instructions per TES invocation on lavapipe are not in this table (they need "
         "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
         "two levels, tessellator and TES JIT code together"};
+    if (mixesDomains(*input.patches)) {
+      result.notes.push_back(
+          "program: the patch domain (quad or triangle) when the technique's patches mix them; "
+          "spirv_O rows then count each domain's GPU program, counting_scalar min and max are "
+          "taken per domain");
+    }
     staticRows(input, &result);
     dynamicRows(*input.patches, &result);
     return result;
   }
 
  private:
-  static void staticRows(const MeasureInput& input, MeasureResult* result) {
+  // One stage list per GPU program (its domain names it when there are several), or the
+  // technique's embedded shaders when it has no program.
+  struct ShaderSet {
+    std::string program;  // "quad" or "triangle"; empty for a single program
     std::vector<std::string> shaders;
     std::vector<uint32_t> specialization;
-    if (const auto program = input.patches->gpuProgram()) {
-      shaders = {program->control_shader, program->evaluation_shader};
-      specialization = program->specialization;
-    } else {
+  };
+
+  static std::vector<ShaderSet> shaderSets(const MeasureInput& input) {
+    const std::vector<gpu::GpuPatchProgram> programs = input.patches->gpuPrograms();
+    std::vector<ShaderSet> sets;
+    for (const gpu::GpuPatchProgram& program : programs) {
+      const PatchDomain domain =
+          program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
+      sets.push_back({programs.size() > 1 ? toString(domain) : "",
+                      {program.control_shader, program.evaluation_shader},
+                      program.specialization});
+    }
+    if (sets.empty()) {
+      ShaderSet set;
       const std::string prefix = input.technique.info().id + "/";
       for (std::string_view path : gpu::embeddedShaderPaths()) {
-        if (path.starts_with(prefix)) shaders.emplace_back(path);
+        if (path.starts_with(prefix)) set.shaders.emplace_back(path);
       }
+      if (!set.shaders.empty()) sets.push_back(std::move(set));
     }
-    if (shaders.empty()) {
+    return sets;
+  }
+
+  static void staticRows(const MeasureInput& input, MeasureResult* result) {
+    const std::vector<ShaderSet> sets = shaderSets(input);
+    if (sets.empty()) {
       MetricRow row;
       row.keys["source"] = "spirv_O";
       row.keys["note"] = "skipped: the technique has no shaders";
       result->rows.push_back(std::move(row));
       return;
     }
-    for (const std::string& shader : shaders) {
-      StageInstructionCounts counts;
-      try {
-        counts = cachedStageCounts(shader, specialization);
-      } catch (const std::exception& error) {
-        MetricRow row;
-        row.keys["source"] = "spirv_O";
-        row.keys["stage"] = shader;
-        row.keys["note"] = std::string("failed: ") + error.what();
-        result->rows.push_back(std::move(row));
-        continue;
-      }
-      for (bool scalar : {false, true}) {
-        MetricRow row;
-        row.keys["source"] = "spirv_O";
-        row.keys["stage"] = shader;
-        row.keys["expansion"] = scalar ? "scalar" : "vector";
-        row.metrics = countMetrics(scalar ? counts.scalar : counts.vector);
-        result->rows.push_back(std::move(row));
+    for (const ShaderSet& set : sets) {
+      for (const std::string& shader : set.shaders) {
+        StageInstructionCounts counts;
+        try {
+          counts = cachedStageCounts(shader, set.specialization);
+        } catch (const std::exception& error) {
+          MetricRow row;
+          row.keys["source"] = "spirv_O";
+          if (!set.program.empty()) row.keys["program"] = set.program;
+          row.keys["stage"] = shader;
+          row.keys["note"] = std::string("failed: ") + error.what();
+          result->rows.push_back(std::move(row));
+          continue;
+        }
+        for (bool scalar : {false, true}) {
+          MetricRow row;
+          row.keys["source"] = "spirv_O";
+          if (!set.program.empty()) row.keys["program"] = set.program;
+          row.keys["stage"] = shader;
+          row.keys["expansion"] = scalar ? "scalar" : "vector";
+          row.metrics = countMetrics(scalar ? counts.scalar : counts.vector);
+          result->rows.push_back(std::move(row));
+        }
       }
     }
   }
 
+  // The cheapest and the costliest patch by per-vertex total, per patch domain (keyed by
+  // the domain when the patches mix them).
   static void dynamicRows(const SurfacePatches& patches, MeasureResult* result) {
-    std::optional<OperationProfile> least, most;
-    size_t least_patch = 0, most_patch = 0;
+    struct Extremes {
+      std::optional<OperationProfile> least, most;
+      size_t least_patch = 0, most_patch = 0;
+    };
+    std::map<PatchDomain, Extremes> by_domain;
     auto cost = [](const OperationProfile& p) {
       return std::make_pair(p.per_vertex.total(), p.per_patch_setup.total());
     };
     for (size_t p = 0; p < patches.patchCount(); ++p) {
       std::optional<OperationProfile> profile = patches.operationProfile(p);
       if (!profile) break;
-      if (!least || cost(*profile) < cost(*least)) least = profile, least_patch = p;
-      if (!most || cost(*profile) > cost(*most)) most = profile, most_patch = p;
+      Extremes& e = by_domain[patches.patchDomain(p)];
+      if (!e.least || cost(*profile) < cost(*e.least)) e.least = profile, e.least_patch = p;
+      if (!e.most || cost(*profile) > cost(*e.most)) e.most = profile, e.most_patch = p;
     }
-    if (!least) {
+    if (by_domain.empty()) {
       MetricRow row;
       row.keys["source"] = "counting_scalar";
       row.keys["note"] = "skipped: the technique does not count operations";
       result->rows.push_back(std::move(row));
       return;
     }
-    for (const auto& [which, profile, patch] :
-         {std::tuple{"min", *least, least_patch}, std::tuple{"max", *most, most_patch}}) {
-      for (bool per_vertex : {true, false}) {
-        MetricRow row;
-        row.keys["source"] = "counting_scalar";
-        row.keys["stage"] = per_vertex ? "per_vertex" : "per_patch_setup";
-        row.keys["patch"] = std::string(which) + " (patch " + std::to_string(patch) + ")";
-        if (!profile.note.empty()) row.keys["note"] = profile.note;
-        row.metrics =
-            countMetrics(fromOperations(per_vertex ? profile.per_vertex : profile.per_patch_setup));
-        result->rows.push_back(std::move(row));
+    for (const auto& [domain, e] : by_domain) {
+      for (const auto& [which, profile, patch] :
+           {std::tuple{"min", *e.least, e.least_patch}, std::tuple{"max", *e.most, e.most_patch}}) {
+        for (bool per_vertex : {true, false}) {
+          MetricRow row;
+          row.keys["source"] = "counting_scalar";
+          if (by_domain.size() > 1) row.keys["program"] = toString(domain);
+          row.keys["stage"] = per_vertex ? "per_vertex" : "per_patch_setup";
+          row.keys["patch"] = std::string(which) + " (patch " + std::to_string(patch) + ")";
+          if (!profile.note.empty()) row.keys["note"] = profile.note;
+          row.metrics = countMetrics(
+              fromOperations(per_vertex ? profile.per_vertex : profile.per_patch_setup));
+          result->rows.push_back(std::move(row));
+        }
       }
     }
   }

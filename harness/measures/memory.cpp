@@ -3,7 +3,9 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
+#include <optional>
 #include <unordered_map>
 
 #include "harness/measures/cracks.h"
@@ -117,64 +119,94 @@ TB_REGISTER_MEASURE(MemoryMeasure);
 MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
   const Mesh& control = patches.controlMesh();
   const RenderVertices render = buildRenderVertices(control);
-  const PatchDomain domain = patches.domain();
-  const uint64_t patch_count = patches.patchCount();
+
+  // Points on edges are shared through the render mesh's edges; the rest is per patch,
+  // in the patch's own domain.
+  uint64_t interior_points = 0, triangles = 0, texels = 0;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    interior_points += interiorPointCount(domain, level);
+    triangles += domain == PatchDomain::kQuad ? tess::quadTriangleCount(level)
+                                              : tess::triangleTriangleCount(level);
+    texels += displacementTexels(domain, level);
+  }
 
   MemoryFigures m;
   m.level = level;
-  m.plain_vertices = render.vertex_count + uint64_t(render.edge_count) * (level - 1) +
-                     patch_count * interiorPointCount(domain, level);
-  m.plain_triangles =
-      patch_count * (domain == PatchDomain::kQuad ? tess::quadTriangleCount(level)
-                                                  : tess::triangleTriangleCount(level));
+  m.plain_vertices =
+      render.vertex_count + uint64_t(render.edge_count) * (level - 1) + interior_points;
+  m.plain_triangles = triangles;
   m.plain_bytes = m.plain_vertices * kRenderVertexBytes + m.plain_triangles * 3 * kIndexBytes;
   m.technique = patches.footprint();
-  m.displacement_bytes = patch_count * displacementTexels(domain, level) * kDisplacementTexelBytes;
+  m.displacement_bytes = texels * kDisplacementTexelBytes;
   m.technique_with_displacement_bytes = m.technique.total() + m.displacement_bytes;
   m.plain_over_technique = double(m.plain_bytes) / double(m.technique_with_displacement_bytes);
-  m.vector_displacement_bytes =
-      patch_count * displacementTexels(domain, level) * kVectorDisplacementTexelBytes;
+  m.vector_displacement_bytes = texels * kVectorDisplacementTexelBytes;
   m.technique_with_vector_displacement_bytes = m.technique.total() + m.vector_displacement_bytes;
   m.plain_over_technique_vector =
       double(m.plain_bytes) / double(m.technique_with_vector_displacement_bytes);
   return m;
 }
 
-TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
-  const Mesh& control = patches.controlMesh();
-  const RenderVertices render = buildRenderVertices(control);
-  const PatchDomain domain = patches.domain();
-  const uint32_t corners = domain == PatchDomain::kQuad ? 4 : 3;
-  const float n = float(level);
-  const tess::Tessellation t =
-      tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
-                       tess::Spacing::kInteger, {{n, n, n, n}, {n, n}});
+namespace {
 
-  // Where each domain point sits: corner c, edge e at parameter t, or inside.
+// The integer-level tessellation of one domain, each point classified as corner c, edge e
+// at parameter t (from corner e towards e + 1, as domainEdgeParameter gives it for both
+// domains, so a quad and a triangle that share an edge name its points alike), or inside.
+struct ClassifiedTessellation {
   struct PointClass {
     int corner = -1, edge = -1;
     int64_t t = 0;
   };
-  std::vector<PointClass> classes(t.points.size());
-  for (size_t i = 0; i < t.points.size(); ++i) {
-    for (uint32_t c = 0; c < corners; ++c) {
-      if (isDomainCorner(domain, c, t.points[i])) classes[i].corner = int(c);
+  PatchDomain domain;
+  uint32_t corners;
+  tess::Tessellation t;
+  std::vector<PointClass> classes;
+};
+
+ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level) {
+  const float n = float(level);
+  ClassifiedTessellation c{
+      domain,
+      domain == PatchDomain::kQuad ? 4u : 3u,
+      tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+                       tess::Spacing::kInteger, {{n, n, n, n}, {n, n}}),
+      {}};
+  c.classes.resize(c.t.points.size());
+  for (size_t i = 0; i < c.t.points.size(); ++i) {
+    for (uint32_t k = 0; k < c.corners; ++k) {
+      if (isDomainCorner(domain, k, c.t.points[i])) c.classes[i].corner = int(k);
     }
-    for (uint32_t e = 0; e < corners && classes[i].corner < 0; ++e) {
-      const int64_t param = domainEdgeParameter(domain, e, t.points[i]);
-      if (param > 0 && param < kFixedOne) classes[i] = {-1, int(e), param};
+    for (uint32_t e = 0; e < c.corners && c.classes[i].corner < 0; ++e) {
+      const int64_t param = domainEdgeParameter(domain, e, c.t.points[i]);
+      if (param > 0 && param < kFixedOne) c.classes[i] = {-1, int(e), param};
     }
   }
+  return c;
+}
+
+}  // namespace
+
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
+  const Mesh& control = patches.controlMesh();
+  const RenderVertices render = buildRenderVertices(control);
+  std::array<std::optional<ClassifiedTessellation>, 2> by_domain;  // quad, triangle
 
   TessellatedMesh mesh;
   std::vector<uint32_t> corner_ids(render.vertex_count, UINT32_MAX);
   std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
-  std::vector<uint32_t> local(t.points.size());
+  std::vector<uint32_t> local;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    std::optional<ClassifiedTessellation>& slot = by_domain[domain == PatchDomain::kQuad ? 0 : 1];
+    if (!slot) slot = classifiedTessellation(domain, level);
+    const ClassifiedTessellation& c = *slot;
+    const uint32_t corners = c.corners;
     const uint32_t first = control.face_offsets[p];
-    auto renderVertex = [&](uint32_t c) { return render.corner_vertex[first + c % corners]; };
-    for (size_t i = 0; i < t.points.size(); ++i) {
-      const PointClass& k = classes[i];
+    auto renderVertex = [&](uint32_t k) { return render.corner_vertex[first + k % corners]; };
+    local.resize(c.t.points.size());
+    for (size_t i = 0; i < c.t.points.size(); ++i) {
+      const ClassifiedTessellation::PointClass& k = c.classes[i];
       uint32_t* id = nullptr;
       uint32_t fresh = UINT32_MAX;
       if (k.corner >= 0) {
@@ -191,7 +223,7 @@ TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t lev
       }
       if (*id == UINT32_MAX) {
         *id = uint32_t(mesh.vertexCount());
-        const tess::DomainPoint& d = t.points[i];
+        const tess::DomainPoint& d = c.t.points[i];
         const SurfacePointF s = patches.evaluateFloat(p, d);
         // Corner weights of the uv interpolation, in the domain's corner order.
         float w[4] = {d[0], d[1], d[2], 0};
@@ -200,11 +232,11 @@ TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t lev
           w[2] = d[0] * d[1], w[3] = (1 - d[0]) * d[1];
         }
         float uv[2] = {0, 0};
-        for (uint32_t c = 0; c < corners && control.hasUvs(); ++c) {
-          const int32_t uv_id = control.corner_uvs[first + c];
+        for (uint32_t corner = 0; corner < corners && control.hasUvs(); ++corner) {
+          const int32_t uv_id = control.corner_uvs[first + corner];
           if (uv_id < 0) continue;
-          uv[0] += w[c] * float(control.uvs[uv_id].x);
-          uv[1] += w[c] * float(control.uvs[uv_id].y);
+          uv[0] += w[corner] * float(control.uvs[uv_id].x);
+          uv[1] += w[corner] * float(control.uvs[uv_id].y);
         }
         for (float x : {s.position.x, s.position.y, s.position.z, s.normal.x, s.normal.y,
                         s.normal.z, uv[0], uv[1]}) {
@@ -213,7 +245,7 @@ TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t lev
       }
       local[i] = *id;
     }
-    for (const auto& tri : t.triangles) {
+    for (const auto& tri : c.t.triangles) {
       for (uint32_t v : tri) mesh.indices.push_back(local[v]);
     }
   }

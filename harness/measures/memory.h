@@ -37,14 +37,17 @@ struct MemoryFigures {
   double plain_over_technique_vector = 0;
 };
 
+// Closed form from the tessellator's counts, summed over the patches in their own
+// patchDomain (quads and triangles may mix).
 MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level);
 
 // The equivalent plain triangle mesh itself: the technique evaluated (evaluateFloat) at
-// the CPU tessellator's points of every patch at uniform integer level `level`, welded
-// as MemoryFigures::plain_vertices counts them (a point on an edge between two render
-// vertices is stored once; corners are the control mesh's render vertices). Vertices are
-// float3 position, float3 normal, float2 uv (interpolated from the patch corners; 0 when
-// the mesh has none), 32 B; triangles use the tessellator's winding.
+// the CPU tessellator's points of every patch (in its own patchDomain) at uniform integer
+// level `level`, welded as MemoryFigures::plain_vertices counts them (a point on an edge
+// between two render vertices is stored once, also between a quad and a triangle patch;
+// corners are the control mesh's render vertices). Vertices are float3 position, float3
+// normal, float2 uv (interpolated from the patch corners; 0 when the mesh has none), 32 B;
+// triangles use the tessellator's winding.
 struct TessellatedMesh {
   std::vector<float> vertices;    // kRenderVertexBytes / 4 floats per vertex
   std::vector<uint32_t> indices;  // 3 per triangle

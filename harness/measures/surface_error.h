@@ -31,17 +31,29 @@ struct SurfaceErrorFigures {
   size_t samples = 0;                   // parametric samples taken
   size_t samples_near_extraordinary = 0;
   size_t patches_without_limit = 0;     // hole faces etc., left out
+  // Triangle patches over Catmull-Clark triangles, sampled through Bfr's quad sub-faces
+  // (kErrorSubFaceSampleLevel); 0 for single-scheme techniques.
+  size_t patches_through_sub_faces = 0;
 };
 
 // Lattice level of the technique's sampling (per patch edge) and the rate of the
 // reference tessellation.
 constexpr int kErrorSampleLevel = 8;
 constexpr int kErrorReferenceRate = 16;
+// Segments per sub-face edge for a triangle patch sampled through the three quad
+// sub-faces Bfr gives a Catmull-Clark triangle: 3 (4 + 1)^2 = 75 samples, against 45 on a
+// Loop triangle and 81 on a quad.
+constexpr int kErrorSubFaceSampleLevel = kErrorSampleLevel / 2;
 // A sample is "near" an extraordinary vertex when its barycentric weight (or
 // bilinear weight, for quads) of that corner is at least this.
 constexpr double kNearExtraordinary = 0.75;
 
-// The limit surface must be built over patches.controlMesh(), whose face p is patch p.
+// The limit surface must be built over patches.controlMesh(), whose face p is patch p,
+// under the scheme patches.approximates() names. Each patch is sampled in its own
+// patchDomain(p): quads on Catmull-Clark faces, triangles on Loop faces share the face's
+// parameterisation; triangles on Catmull-Clark triangles go through the sub-face map
+// (subFaceSampling in the .cpp). Throws std::logic_error for a scheme mismatch or any other
+// combination.
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                                         const ref::LimitSurface& limit);
 
