@@ -505,12 +505,12 @@ TEST(GregoryAcc, TrianglePatchesStayCloseToTheCatmullClarkLimit) {
 
 // Gregory patches meet their neighbours with G1 continuity along every shared edge (the
 // Chiyokura-Kimura condition the face points are built for), quad or triangle, so the
-// analytic normals from both sides agree inside each edge. (The corners are left out:
-// a triangle's corner normal at a vertex next to non-quads is exact only in the limit.)
+// analytic normals from both sides agree inside each edge. (The corners are left out: the
+// rational blends are 0/0 there, and the corner normals are tested against Bfr above.)
 TEST(GregoryAcc, NormalsAgreeAcrossSharedEdgesOfQuadsAndTriangles) {
-  for (const char* asset : {"opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_cube.obj",
-                            "opensubdiv/loop_cube.obj", "tessbench/tri_torus.obj",
-                            "opensubdiv/catmark_xord_interior.obj"}) {
+  for (const char* asset :
+       {"opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_cube.obj", "opensubdiv/loop_cube.obj",
+        "tessbench/tri_torus.obj", "opensubdiv/catmark_xord_interior.obj"}) {
     const Mesh mesh = load(asset);
     const auto patches = build(mesh, "edge_symmetric");
     const Mesh& control = patches->controlMesh();
