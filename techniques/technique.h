@@ -55,6 +55,7 @@ struct DataFootprint {
   // reduces 105 patches to 23). 0 when the technique has no such classes. Best case 1.
   uint64_t topology_combinations = 0;
   uint64_t total() const { return control_mesh_bytes + patch_data_bytes + stencil_bytes; }
+  bool operator==(const DataFootprint&) const = default;
 };
 
 struct SurfacePoint {

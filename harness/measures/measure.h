@@ -40,6 +40,10 @@ class Measure {
   // False when every variant gives the same figures (e.g. memory for phong's α):
   // the suite then measures the default variant only.
   virtual bool dependsOnVariant() const = 0;
+  // True when the figures follow the patch data alone (memory): the suite then also
+  // measures each other variant whose SurfacePatches::footprint() differs from the
+  // default variant's on the asset (gregory_acc/quads_only: 3 quads per triangle).
+  virtual bool dependsOnPatchData() const { return false; }
   virtual MeasureResult run(const MeasureInput& input) const = 0;
 };
 

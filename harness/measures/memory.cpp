@@ -49,6 +49,7 @@ class MemoryMeasure final : public Measure {
     return technique.info().family == TechniqueFamily::kSurface;
   }
   bool dependsOnVariant() const override { return false; }
+  bool dependsOnPatchData() const override { return true; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;

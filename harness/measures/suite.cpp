@@ -1,6 +1,7 @@
 #include "harness/measures/suite.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "harness/mesh/obj_loader.h"
 #include "techniques/registry.h"
@@ -71,21 +72,26 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   size_t done = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
+    // The default variant's patch data per asset, for dependsOnPatchData measures.
+    std::vector<std::optional<DataFootprint>> default_footprint(assets.size());
     for (size_t v = 0; v < variants.size(); ++v) {
       const VariantInfo& variant = variants[v];
       const bool is_default = v == 0;
-      for (const LoadedAsset& asset : assets) {
+      for (size_t a = 0; a < assets.size(); ++a) {
+        const LoadedAsset& asset = assets[a];
         if (progress) {
           progress(done, total, technique->info().id + "/" + variant.name + " " + asset.ref.name);
         }
         ++done;
-        std::vector<const Measure*> applicable;
+        // Measures that may apply: every one on the default variant; on the others the
+        // variant-dependent ones, and those following the patch data once known.
+        bool any_applies = false;
         for (const Measure* measure : measures) {
-          if (measure->appliesTo(*technique) && (is_default || measure->dependsOnVariant())) {
-            applicable.push_back(measure);
-          }
+          any_applies |= measure->appliesTo(*technique) &&
+                         (is_default || measure->dependsOnVariant() ||
+                          (measure->dependsOnPatchData() && default_footprint[a]));
         }
-        if (applicable.empty()) continue;
+        if (!any_applies) continue;
         if (std::string reason = technique->checkSupport(asset.mesh); !reason.empty()) {
           if (is_default) results->skipped.push_back({technique->info().id, asset.ref.name, reason});
           continue;
@@ -101,6 +107,18 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
             continue;
           }
         }
+        if (patches && is_default) default_footprint[a] = patches->footprint();
+        const bool own_patch_data = is_default || (patches && default_footprint[a] &&
+                                                   patches->footprint() != *default_footprint[a]);
+        std::vector<const Measure*> applicable;
+        for (const Measure* measure : measures) {
+          if (measure->appliesTo(*technique) &&
+              (is_default || measure->dependsOnVariant() ||
+               (measure->dependsOnPatchData() && own_patch_data))) {
+            applicable.push_back(measure);
+          }
+        }
+        if (applicable.empty()) continue;
         Record record;
         record.technique = technique->info().id;
         record.variant = variant.name;
