@@ -2,8 +2,7 @@
 // measure 8): points per second on a bundled asset, in double.
 #include <benchmark/benchmark.h>
 
-#include "harness/measures/asset_catalog.h"
-#include "harness/mesh/obj_loader.h"
+#include "bench/technique_bench_support.h"
 #include "techniques/registry.h"
 
 namespace {
@@ -11,14 +10,9 @@ namespace {
 // Evaluates a uniform 16x16 barycentric/parametric grid on every patch.
 void evaluateAllPatches(benchmark::State& state, const tb::Technique* technique,
                         const std::string& asset) {
-  const tb::Mesh mesh = tb::loadObjFile(tb::resolveAsset(asset).path);
-  std::unique_ptr<tb::SurfacePatches> patches;
-  try {
-    patches = technique->buildPatches(mesh, technique->variants()[0]);
-  } catch (const std::exception& error) {
-    state.SkipWithError(error.what());
-    return;
-  }
+  const std::unique_ptr<tb::SurfacePatches> patches =
+      tb::bench::defaultVariantPatches(state, *technique, asset);
+  if (!patches) return;
   constexpr int kGrid = 16;
   int64_t points = 0;
   for (auto _ : state) {
@@ -45,7 +39,11 @@ void evaluateAllPatches(benchmark::State& state, const tb::Technique* technique,
 void registerTechniqueBenchmarks() {
   for (const tb::Technique* technique : tb::TechniqueRegistry::instance().all()) {
     if (technique->info().family != tb::TechniqueFamily::kSurface) continue;
-    for (const char* asset : {"catmark_pawn", "loop_icosahedron"}) {
+    // catmark_pawn (creased: the triangle techniques), loop_icosahedron (triangles),
+    // catmark_xord_interior (smooth quads with extraordinary vertices: every quad
+    // technique, ACC included) and catmark_pyramid (quads and triangles in one mesh).
+    for (const char* asset :
+         {"catmark_pawn", "loop_icosahedron", "catmark_xord_interior", "catmark_pyramid"}) {
       benchmark::RegisterBenchmark(
           ("eval/" + technique->info().id + "/" + asset).c_str(),
           [technique, asset](benchmark::State& state) { evaluateAllPatches(state, technique, asset); });
@@ -56,10 +54,5 @@ void registerTechniqueBenchmarks() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  registerTechniqueBenchmarks();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return tb::bench::runAfterRegistering(argc, argv, registerTechniqueBenchmarks);
 }

@@ -1,0 +1,41 @@
+// Shared by the per-technique benchmark suites: the default variant's patches of a
+// bundled asset, and a main() that registers the cases at run time (from the technique
+// registry, after every static registration has run).
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "harness/measures/asset_catalog.h"
+#include "harness/mesh/obj_loader.h"
+#include "techniques/technique.h"
+
+namespace tb::bench {
+
+// Null, with the benchmark skipped and the technique's reason shown, when the technique
+// does not take the asset.
+inline std::unique_ptr<SurfacePatches> defaultVariantPatches(benchmark::State& state,
+                                                             const Technique& technique,
+                                                             const std::string& asset) {
+  try {
+    const Mesh mesh = loadObjFile(resolveAsset(asset).path);
+    return technique.buildPatches(mesh, technique.variants()[0]);
+  } catch (const std::exception& error) {
+    state.SkipWithError(error.what());
+    return nullptr;
+  }
+}
+
+inline int runAfterRegistering(int argc, char** argv, void (*register_benchmarks)()) {
+  register_benchmarks();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace tb::bench
