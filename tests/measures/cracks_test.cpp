@@ -13,6 +13,7 @@
 #include "harness/mesh/obj_loader.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/measures/face_patches.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -46,43 +47,26 @@ Mesh gridMesh(int cells, bool triangles) {
   return loadObjText(obj, triangles ? "tri_grid.obj" : "quad_grid.obj");
 }
 
-Vec3f cornerF(const Mesh& mesh, size_t face, int k) {
-  return vecCast<float>(mesh.positions[mesh.facePositions(face)[k]]);
-}
-
 // Patch p is face p of the mesh, flat: bilinear on quads, linear on triangles.
 // kSymmetric uses sums of products of the corners (the same terms in any edge
 // direction); kNaive a corner plus scaled differences (depends on the direction).
 enum class Order { kSymmetric, kNaive };
 
-class FlatPatches final : public SurfacePatches {
+class FlatPatches final : public testing::FacePatches {
  public:
-  FlatPatches(Mesh mesh, Order order) : mesh_(std::move(mesh)), order_(order) {}
-  PatchDomain domain() const override {
-    return mesh_.allFacesOfSize(4) ? PatchDomain::kQuad : PatchDomain::kTriangle;
-  }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
-  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    std::array<uint32_t, 4> corners{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
-    const auto face = mesh_.facePositions(patch);
-    std::copy(face.begin(), face.end(), corners.begin());
-    return corners;
-  }
-  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  FlatPatches(Mesh mesh, Order order) : FacePatches(std::move(mesh)), order_(order) {}
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const SurfacePointF f =
         evaluateFloat(patch, {float(coord[0]), float(coord[1]), float(coord[2])});
     return {vecCast<double>(f.position), {0, 0, 1}};
   }
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
-    const Vec3f p0 = cornerF(mesh_, patch, 0), p1 = cornerF(mesh_, patch, 1),
-                p2 = cornerF(mesh_, patch, 2);
+    const Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
     if (domain() == PatchDomain::kTriangle) {
       if (order_ == Order::kNaive) return {p0 + (p1 - p0) * c[1] + (p2 - p0) * c[2], {0, 0, 1}};
       return {p0 * c[0] + p1 * c[1] + p2 * c[2], {0, 0, 1}};
     }
-    const Vec3f p3 = cornerF(mesh_, patch, 3);
+    const Vec3f p3 = cornerF(patch, 3);
     const float u = c[0], v = c[1];
     if (order_ == Order::kNaive) {  // shaders/gpu/test_naive_bilinear.tese
       const Vec3f bottom = p0 + (p1 - p0) * u, top = p3 + (p2 - p3) * u;
@@ -103,7 +87,7 @@ class FlatPatches final : public SurfacePatches {
     std::vector<uint32_t> corners;
     for (size_t p = 0; p < patchCount(); ++p) {
       for (int k = 0; k < 4; ++k) {
-        const Vec3f c = cornerF(mesh_, p, k);
+        const Vec3f c = cornerF(p, uint32_t(k));
         for (float x : {c.x, c.y, c.z, 1.0f}) corners.push_back(std::bit_cast<uint32_t>(x));
       }
     }
@@ -111,13 +95,9 @@ class FlatPatches final : public SurfacePatches {
     if (order_ == Order::kSymmetric) program.specialization = {std::bit_cast<uint32_t>(1.0f)};
     return program;
   }
-  DataFootprint footprint() const override { return {}; }
-  const std::vector<std::string>& warnings() const override { return warnings_; }
 
  private:
-  Mesh mesh_;
   Order order_;
-  std::vector<std::string> warnings_;
 };
 
 constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,

@@ -12,6 +12,7 @@
 #include "shaders/embedded_shaders.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/registry.h"
+#include "tests/measures/face_patches.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -106,17 +107,9 @@ TEST(Instructions, OptimisationRemovesWorkAndRejectsGarbage) {
 
 // Patches whose operation counts differ per patch: patch p costs 10 + (p * 7) % 5
 // multiplications per vertex, so the measure's min and max rows are known.
-class ProfiledPatches final : public SurfacePatches {
+class ProfiledPatches final : public testing::FacePatches {
  public:
-  explicit ProfiledPatches(Mesh mesh) : mesh_(std::move(mesh)) {}
-  PatchDomain domain() const override { return PatchDomain::kTriangle; }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
-  std::array<uint32_t, 4> patchCorners(size_t p) const override {
-    const auto f = mesh_.facePositions(p);
-    return {f[0], f[1], f[2], UINT32_MAX};
-  }
-  uint32_t sourceFace(size_t p) const override { return uint32_t(p); }
+  using FacePatches::FacePatches;
   SurfacePoint evaluate(size_t, const DomainCoord&) const override { return {}; }
   SurfacePointF evaluateFloat(size_t, const tess::DomainPoint&) const override { return {}; }
   std::optional<OperationProfile> operationProfile(size_t p) const override {
@@ -126,12 +119,6 @@ class ProfiledPatches final : public SurfacePatches {
     profile.per_patch_setup.div = 1;
     return profile;
   }
-  DataFootprint footprint() const override { return {}; }
-  const std::vector<std::string>& warnings() const override { return warnings_; }
-
- private:
-  Mesh mesh_;
-  std::vector<std::string> warnings_;
 };
 
 double metricOf(const MetricRow& row, const std::string& name) {

@@ -21,6 +21,7 @@
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/measures/face_patches.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -28,36 +29,12 @@ namespace {
 
 Mesh pyramid() { return loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj")); }
 
-// Patch p is face p of a Catmull-Clark mesh, in the face's own domain (quad faces quads,
-// triangles triangles). Subclasses give the surface.
-class MixedPatches : public SurfacePatches {
+// Patch p is face p of a Catmull-Clark mesh, in the face's own domain. Subclasses give
+// the surface.
+class MixedPatches : public testing::FacePatches {
  public:
-  explicit MixedPatches(Mesh mesh) : mesh_(std::move(mesh)) {}
-  PatchDomain domain() const override { return patchDomain(0); }
-  PatchDomain patchDomain(size_t patch) const override {
-    return mesh_.faceSize(patch) == 4 ? PatchDomain::kQuad : PatchDomain::kTriangle;
-  }
+  using FacePatches::FacePatches;
   LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
-  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    std::array<uint32_t, 4> corners{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
-    const auto face = mesh_.facePositions(patch);
-    std::copy(face.begin(), face.end(), corners.begin());
-    return corners;
-  }
-  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
-  DataFootprint footprint() const override { return {}; }
-  const std::vector<std::string>& warnings() const override { return warnings_; }
-
- protected:
-  Vec3f cornerF(size_t patch, uint32_t k) const {
-    return vecCast<float>(mesh_.positions[mesh_.facePositions(patch)[k]]);
-  }
-  Mesh mesh_;
-
- private:
-  std::vector<std::string> warnings_;
 };
 
 Vec3f lerp(const Vec3f& a, const Vec3f& b, float t) { return a * (1 - t) + b * t; }

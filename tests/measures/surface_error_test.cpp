@@ -10,24 +10,17 @@
 #include "harness/mesh/obj_loader.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
+#include "tests/measures/face_patches.h"
 #include "tests/test_support.h"
 
 namespace tb {
 namespace {
 
 // Test double of a technique: the exact Loop limit, optionally offset.
-class LimitPatches final : public SurfacePatches {
+class LimitPatches final : public testing::FacePatches {
  public:
   LimitPatches(const Mesh& mesh, Vec3d offset)
-      : mesh_(mesh), limit_(mesh, ref::Scheme::kLoop), offset_(offset) {}
-  PatchDomain domain() const override { return PatchDomain::kTriangle; }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
-  std::array<uint32_t, 4> patchCorners(size_t p) const override {
-    const auto f = mesh_.facePositions(p);
-    return {f[0], f[1], f[2], UINT32_MAX};
-  }
-  uint32_t sourceFace(size_t p) const override { return uint32_t(p); }
+      : FacePatches(mesh), limit_(mesh, ref::Scheme::kLoop), offset_(offset) {}
   SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position + offset_, point.normal};
@@ -36,14 +29,10 @@ class LimitPatches final : public SurfacePatches {
     const SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
     return {vecCast<float>(point.position), vecCast<float>(point.normal)};
   }
-  DataFootprint footprint() const override { return {}; }
-  const std::vector<std::string>& warnings() const override { return warnings_; }
 
  private:
-  const Mesh& mesh_;
   ref::LimitSurface limit_;
   Vec3d offset_;
-  std::vector<std::string> warnings_;
 };
 
 TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
