@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/gpu/context.h"
-#include "harness/gpu/tess_capture.h"
+#include "core/gpu/context.h"
+#include "core/gpu/tess_capture.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "harness/measures/asset_catalog.h"
-#include "harness/mesh/obj_loader.h"
+#include "harness/suite/asset_catalog.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/embree_subdivision.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"

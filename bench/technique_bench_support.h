@@ -9,8 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "harness/measures/asset_catalog.h"
-#include "harness/mesh/obj_loader.h"
+#include "harness/suite/asset_catalog.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/technique.h"
 
 namespace tb::bench {

@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "bench/technique_bench_support.h"
-#include "harness/gpu/context.h"
-#include "harness/gpu/patch_program.h"
+#include "core/gpu/context.h"
+#include "core/gpu/patch_program.h"
 #include "techniques/registry.h"
 
 namespace {
 
 // Patches per draw: lavapipe's tessellator slows super-linearly with many per draw
-// (harness/gpu/patch_program.h); the cracks measure's batch below level 32.
+// (core/gpu/patch_program.h); the cracks measure's batch below level 32.
 constexpr uint32_t kPatchesPerDraw = 8;
 
 void drawAllPatches(benchmark::State& state, const tb::Technique* technique,

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "harness/gpu/context.h"
-#include "harness/gpu/patch_program.h"
-#include "harness/measures/asset_catalog.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/gpu/context.h"
+#include "core/gpu/patch_program.h"
+#include "harness/suite/asset_catalog.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
 
 int main(int argc, char** argv) {

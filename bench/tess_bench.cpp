@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Exact closest point on one triangle, in double.
 #pragma once
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 
 namespace tb::ref {
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/mesh/topology.h"
+#include "core/mesh/topology.h"
 #include "reference/mesh_checks.h"
 
 namespace tb::ref {

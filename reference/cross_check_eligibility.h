@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/scheme.h"
 
 namespace tb::ref {

@@ -1,6 +1,6 @@
 #include "reference/embree_device.h"
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 
 namespace tb::ref {
 namespace {

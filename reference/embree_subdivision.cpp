@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/embree_device.h"
 #include "reference/face_domain.h"
 #include "reference/mesh_checks.h"

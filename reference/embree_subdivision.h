@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/cross_check_eligibility.h"
 #include "reference/limit_point.h"
 

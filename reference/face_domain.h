@@ -15,7 +15,7 @@
 //    Derivatives in (u,v) are therefore twice those in (s,t).
 #pragma once
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "reference/scheme.h"
 
 namespace tb::ref {

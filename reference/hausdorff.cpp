@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 
 namespace tb::ref {
 namespace {

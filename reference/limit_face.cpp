@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface_impl.h"
 #include "reference/mesh_checks.h"

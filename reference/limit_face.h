@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "reference/limit_point.h"
 
 namespace tb::ref {

@@ -2,7 +2,7 @@
 // Embree cross-check so the two compare field by field.
 #pragma once
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 
 namespace tb::ref {
 

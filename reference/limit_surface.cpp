@@ -3,7 +3,7 @@
 #include <cassert>
 #include <string>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/limit_surface_impl.h"
 #include "reference/mesh_checks.h"
 #include "reference/topology_refiner_builder.h"

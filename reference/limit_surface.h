@@ -14,7 +14,7 @@
 #include <memory>
 #include <span>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/limit_face.h"
 #include "reference/limit_point.h"
 #include "reference/scheme.h"

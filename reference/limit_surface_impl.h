@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/limit_surface.h"
 
 namespace tb::ref {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/face_domain.h"
 
 namespace tb::ref {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_mesh_ref.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/face_domain.h"
 
 namespace tb::ref {

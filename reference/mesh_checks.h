@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/scheme.h"
 
 namespace tb::ref {

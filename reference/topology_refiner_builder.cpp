@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/far_error_capture.h"
 #include "reference/sdc_scheme.h"
 

@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "reference/scheme.h"
 
 namespace tb::ref {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/closest_point.h"
 #include "reference/embree_device.h"
 #include "reference/mesh_checks.h"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "harness/mesh/triangulate.h"
+#include "core/mesh/triangulate.h"
 
 namespace tb::ref {
 

@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
-#include "harness/mesh/vec.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/vec.h"
 
 namespace tb::ref {
 

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "harness/gpu/patch_program_desc.h"
-#include "harness/mesh/mesh.h"
-#include "harness/mesh/vec.h"
-#include "harness/tess/tessellator.h"
+#include "core/gpu/patch_program_desc.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/vec.h"
+#include "core/tess/tessellator.h"
 #include "techniques/counting_scalar.h"
 
 namespace tb {
@@ -113,7 +113,7 @@ class SurfacePatches {
   // in float only if this gives bitwise-equal points there.
   virtual SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const = 0;
   // The GPU program that evaluates these patches (shaders/<id>/, run by
-  // harness/gpu/patch_program.h), or nullopt when the technique has no GPU path.
+  // core/gpu/patch_program.h), or nullopt when the technique has no GPU path.
   // Its patch p is this object's patch p.
   virtual std::optional<gpu::GpuPatchProgram> gpuProgram() const { return std::nullopt; }
   // Every GPU program of these patches: one per patch domain for a technique with

@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "harness/cli/run_context.h"
-#include "harness/measures/asset_catalog.h"
+#include "harness/suite/asset_catalog.h"
 #include "harness/measures/measure.h"
-#include "harness/measures/suite.h"
-#include "harness/mesh/input_error.h"
+#include "harness/suite/suite.h"
+#include "core/mesh/input_error.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"

@@ -13,7 +13,7 @@
 
 #include <fstream>
 
-#include "harness/gpu/context.h"
+#include "core/gpu/context.h"
 #include "tb_build_info.h"
 
 namespace tb::cli {

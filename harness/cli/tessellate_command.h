@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 
 namespace CLI {
 class App;

@@ -4,8 +4,8 @@
 
 #include <stdexcept>
 
-#include "harness/gpu/context.h"
-#include "harness/gpu/tess_capture.h"
+#include "core/gpu/context.h"
+#include "core/gpu/tess_capture.h"
 
 namespace tb::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "harness/gpu/patch_program.h"
-#include "harness/mesh/topology.h"
+#include "core/gpu/patch_program.h"
+#include "core/mesh/topology.h"
 
 namespace tb {
 namespace {

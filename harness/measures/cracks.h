@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/gpu/context.h"
-#include "harness/mesh/float_ulp.h"  // ulpDistance, used with these figures
+#include "core/gpu/context.h"
+#include "core/mesh/float_ulp.h"  // ulpDistance, used with these figures
 #include "techniques/technique.h"
 
 namespace tb {

@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "harness/gpu/context.h"
-#include "harness/mesh/mesh.h"
+#include "core/gpu/context.h"
+#include "core/mesh/mesh.h"
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
 

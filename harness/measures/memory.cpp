@@ -10,8 +10,8 @@
 
 #include "harness/measures/cracks.h"
 #include "harness/measures/measure.h"
-#include "harness/mesh/render_vertices.h"
-#include "harness/tess/tessellator.h"
+#include "core/mesh/render_vertices.h"
+#include "core/tess/tessellator.h"
 
 namespace tb {
 namespace {

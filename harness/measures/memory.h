@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "harness/mesh/render_vertices.h"
+#include "core/mesh/render_vertices.h"
 #include "techniques/technique.h"
 
 namespace tb {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "harness/measures/measure.h"
-#include "harness/mesh/input_error.h"
-#include "harness/mesh/topology.h"
+#include "core/mesh/input_error.h"
+#include "core/mesh/topology.h"
 #include "reference/hausdorff.h"
 #include "reference/limit_tessellation.h"
 #include "reference/scheme.h"

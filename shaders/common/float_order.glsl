@@ -1,4 +1,4 @@
-// Vector helpers with a fixed float operation order, matching harness/mesh/vec.h (dot,
+// Vector helpers with a fixed float operation order, matching core/mesh/vec.h (dot,
 // normalize) so CPU float models reproduce shaders bit for bit. `precise` keeps NIR from
 // reassociating or contracting them (DESIGN.md watertightness rule 2).
 #ifndef TB_FLOAT_ORDER_GLSL

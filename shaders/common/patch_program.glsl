@@ -1,4 +1,4 @@
-// The contract between a technique's TCS/TES and harness/gpu/patch_program.h.
+// The contract between a technique's TCS/TES and core/gpu/patch_program.h.
 // Include it from both stages; then include patch_program_tcs.glsl in the TCS or
 // patch_program_tes.glsl in the TES for the stage helpers.
 //

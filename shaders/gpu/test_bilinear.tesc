@@ -1,5 +1,5 @@
 #version 460
-// Test program for harness/gpu/patch_program.h: copies the patch's four corners from
+// Test program for core/gpu/patch_program.h: copies the patch's four corners from
 // storage buffer 1 (4 vec4 per patch) to the TES.
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"

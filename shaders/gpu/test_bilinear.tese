@@ -1,5 +1,5 @@
 #version 460
-// Test program for harness/gpu/patch_program.h: bilinear interpolation of the corners,
+// Test program for core/gpu/patch_program.h: bilinear interpolation of the corners,
 // scaled by specialisation constant 0 (as float bits), so the variant switch is tested too.
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"

@@ -6,7 +6,7 @@
 #include <map>
 #include <numbers>
 
-#include "harness/mesh/topology.h"
+#include "core/mesh/topology.h"
 #include "techniques/acc/acc_patch.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/registry.h"

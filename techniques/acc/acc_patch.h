@@ -33,7 +33,7 @@
 #include <cmath>
 #include <vector>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "techniques/common/bezier_eval.h"
 #include "techniques/common/quad_ring.h"
 

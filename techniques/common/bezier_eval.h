@@ -19,7 +19,7 @@
 #include <array>
 #include <cmath>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "techniques/counting_scalar.h"
 
 namespace tb {

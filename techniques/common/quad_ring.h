@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 
 namespace tb {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/mesh/triangulate.h"
+#include "core/mesh/triangulate.h"
 #include "techniques/technique.h"
 
 namespace tb {

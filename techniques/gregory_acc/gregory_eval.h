@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 
 namespace tb::gregory_acc {

@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 
 namespace tb::gregory_acc {
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <unordered_map>
 
-#include "harness/mesh/topology.h"
+#include "core/mesh/topology.h"
 #include "techniques/gregory_acc/gregory_refine.h"
 #include "techniques/technique.h"
 

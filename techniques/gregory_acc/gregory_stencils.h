@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "techniques/gregory_acc/gregory_refine.h"
 
 namespace tb::gregory_acc {

@@ -2,8 +2,8 @@
 
 #include <bit>
 
-#include "harness/mesh/render_vertices.h"
-#include "harness/mesh/triangulate.h"
+#include "core/mesh/render_vertices.h"
+#include "core/mesh/triangulate.h"
 #include "techniques/common/triangle_patches.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"

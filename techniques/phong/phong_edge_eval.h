@@ -17,7 +17,7 @@
 
 #include <array>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 #include "techniques/phong/phong_eval.h"
 
 namespace tb::phong {

@@ -6,7 +6,7 @@
 #include <array>
 #include <utility>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 
 namespace tb::phong {
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "harness/mesh/topology.h"
+#include "core/mesh/topology.h"
 
 namespace tb::pn_triangles {
 namespace {

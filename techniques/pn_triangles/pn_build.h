@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "techniques/pn_triangles/pn_eval.h"
 
 namespace tb::pn_triangles {

@@ -9,7 +9,7 @@
 
 #include <array>
 
-#include "harness/mesh/vec.h"
+#include "core/mesh/vec.h"
 
 namespace tb::pn_triangles {
 

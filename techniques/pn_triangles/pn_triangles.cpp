@@ -1,7 +1,7 @@
 #include "techniques/pn_triangles/pn_triangles.h"
 
-#include "harness/mesh/render_vertices.h"
-#include "harness/mesh/triangulate.h"
+#include "core/mesh/render_vertices.h"
+#include "core/mesh/triangulate.h"
 #include "techniques/common/triangle_patches.h"
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/pn_triangles/pn_eval.h"

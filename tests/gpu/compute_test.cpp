@@ -1,12 +1,12 @@
 // The compute path end to end. Oracle: the same arithmetic on the host (x * 2 is exact).
-#include "harness/gpu/compute.h"
+#include "core/gpu/compute.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "harness/gpu/pipeline_util.h"
+#include "core/gpu/pipeline_util.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::gpu {

@@ -1,6 +1,6 @@
 // Device selection, feature report and shader embedding. Oracle: `vulkaninfo --summary`
 // on the Debian 12 test machine (lavapipe 22.3.6, DESIGN.md "Facts measured").
-#include "harness/gpu/context.h"
+#include "core/gpu/context.h"
 
 #include <gtest/gtest.h>
 

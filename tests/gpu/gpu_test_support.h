@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "harness/gpu/context.h"
+#include "core/gpu/context.h"
 
 namespace tb::gpu::testing {
 

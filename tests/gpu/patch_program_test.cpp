@@ -1,12 +1,12 @@
-// harness/gpu/patch_program.h against its oracles: the CPU tessellator for the domain
+// core/gpu/patch_program.h against its oracles: the CPU tessellator for the domain
 // points and their count, and the same bilinear formula in float on the CPU.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cstring>
 
-#include "harness/gpu/patch_program.h"
-#include "harness/tess/tessellator.h"
+#include "core/gpu/patch_program.h"
+#include "core/tess/tessellator.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::gpu {

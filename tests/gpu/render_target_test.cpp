@@ -1,6 +1,6 @@
 // The ID render target. Oracle: the Vulkan rasterization rules (a pixel is covered when
 // its centre is inside the triangle; top-left rule on edges), checked away from edges.
-#include "harness/gpu/render_target.h"
+#include "core/gpu/render_target.h"
 
 #include <gtest/gtest.h>
 

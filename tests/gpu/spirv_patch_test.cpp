@@ -1,14 +1,14 @@
 // SPIR-V execution-mode rewriting. Oracle: the SPIR-V 1.6 specification's enumerants
 // (Execution Mode: SpacingEqual 1, FractionalEven 2, FractionalOdd 3, VertexOrderCw 4,
 // VertexOrderCcw 5, PointMode 10, Triangles 22, Quads 24, Isolines 25).
-#include "harness/gpu/spirv_patch.h"
+#include "core/gpu/spirv_patch.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <vector>
 
-#include "harness/gpu/gpu_error.h"
+#include "core/gpu/gpu_error.h"
 #include "shaders/embedded_shaders.h"
 
 namespace tb::gpu {

@@ -2,7 +2,7 @@
 // ("quad 2n^2 triangles and (n+1)^2 points; triangle floor(3n^2/2) triangles", measured
 // on lavapipe) and the Vulkan specification's culling rule (an outer level <= 0 or NaN
 // discards the patch).
-#include "harness/gpu/tess_capture.h"
+#include "core/gpu/tess_capture.h"
 
 #include <gtest/gtest.h>
 

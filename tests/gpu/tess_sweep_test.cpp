@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/gpu/tess_capture.h"
-#include "harness/tess/tessellator.h"
+#include "core/gpu/tess_capture.h"
+#include "core/tess/tessellator.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::gpu {

@@ -6,9 +6,9 @@
 #include <memory>
 #include <vector>
 
-#include "harness/gpu/compute.h"
-#include "harness/gpu/render_target.h"
-#include "harness/gpu/tess_capture.h"
+#include "core/gpu/compute.h"
+#include "core/gpu/render_target.h"
+#include "core/gpu/tess_capture.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::gpu {

@@ -10,7 +10,7 @@
 #include <bit>
 #include <cmath>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/measures/face_patches.h"

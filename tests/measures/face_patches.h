@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/mesh/mesh.h"
+#include "core/mesh/mesh.h"
 #include "techniques/technique.h"
 
 namespace tb::testing {

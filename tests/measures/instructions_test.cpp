@@ -8,7 +8,7 @@
 #include <map>
 
 #include "harness/measures/measure.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "shaders/embedded_shaders.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/registry.h"

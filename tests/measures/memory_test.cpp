@@ -8,10 +8,10 @@
 
 #include <algorithm>
 
-#include "harness/measures/suite.h"
-#include "harness/mesh/obj_loader.h"
+#include "harness/suite/suite.h"
+#include "core/mesh/obj_loader.h"
 #include "harness/results/results_json.h"
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
 

@@ -16,7 +16,7 @@
 #include "harness/measures/measure.h"
 #include "harness/measures/memory.h"
 #include "harness/measures/surface_error.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"

@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "harness/measures/cracks.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"

@@ -7,7 +7,7 @@
 #include <map>
 
 #include "harness/measures/surface_error.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
 #include "tests/measures/face_patches.h"

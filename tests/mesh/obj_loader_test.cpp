@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "harness/mesh/input_error.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/input_error.h"
+#include "core/mesh/obj_loader.h"
 #include "tests/test_support.h"
 
 namespace tb {

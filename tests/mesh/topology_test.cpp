@@ -3,10 +3,10 @@
 
 #include <algorithm>
 
-#include "harness/mesh/obj_loader.h"
-#include "harness/mesh/render_vertices.h"
-#include "harness/mesh/topology.h"
-#include "harness/mesh/triangulate.h"
+#include "core/mesh/obj_loader.h"
+#include "core/mesh/render_vertices.h"
+#include "core/mesh/topology.h"
+#include "core/mesh/triangulate.h"
 #include "tests/test_support.h"
 
 namespace tb {

@@ -6,7 +6,7 @@
 #include <functional>
 #include <limits>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/embree_subdivision.h"
 #include "reference/hausdorff.h"
 #include "reference/limit_surface.h"

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <string>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_mesh_ref.h"
 

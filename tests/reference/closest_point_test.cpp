@@ -12,7 +12,7 @@
 #include <iostream>
 #include <random>
 
-#include "harness/mesh/input_error.h"
+#include "core/mesh/input_error.h"
 #include "reference/limit_surface.h"
 #include "reference/limit_tessellation.h"
 #include "reference/triangle_distance_field.h"

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "harness/mesh/topology.h"
+#include "core/mesh/topology.h"
 #include "reference/embree_subdivision.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_mesh_ref.h"

@@ -14,8 +14,8 @@
 #include <numbers>
 #include <set>
 
-#include "harness/mesh/obj_loader.h"
-#include "harness/mesh/topology.h"
+#include "core/mesh/obj_loader.h"
+#include "core/mesh/topology.h"
 #include "reference/triangle_mesh_ref.h"
 #include "tests/reference/reference_test_support.h"
 

@@ -11,8 +11,8 @@
 #include <map>
 #include <set>
 
-#include "harness/mesh/input_error.h"
-#include "harness/mesh/topology.h"
+#include "core/mesh/input_error.h"
+#include "core/mesh/topology.h"
 #include "tests/reference/reference_test_support.h"
 
 namespace tb::ref {

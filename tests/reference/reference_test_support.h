@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/face_domain.h"
 #include "tests/test_support.h"
 

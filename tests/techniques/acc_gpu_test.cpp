@@ -8,8 +8,8 @@
 #include <cmath>
 #include <map>
 
-#include "harness/gpu/patch_program.h"
-#include "harness/mesh/float_ulp.h"
+#include "core/gpu/patch_program.h"
+#include "core/mesh/float_ulp.h"
 #include "techniques/acc/acc.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/techniques/acc_test_support.h"

@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/acc/acc.h"
 #include "techniques/technique.h"
 #include "tests/test_support.h"

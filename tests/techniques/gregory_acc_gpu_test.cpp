@@ -8,10 +8,10 @@
 #include <map>
 #include <tuple>
 
-#include "harness/gpu/patch_program.h"
+#include "core/gpu/patch_program.h"
 #include "harness/measures/cracks.h"
-#include "harness/mesh/float_ulp.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/float_ulp.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/techniques/gregory_acc_test_support.h"

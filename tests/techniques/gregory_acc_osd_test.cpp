@@ -7,7 +7,7 @@
 #include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/stencilTable.h>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "reference/topology_refiner_builder.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "tests/test_support.h"

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "harness/measures/surface_error.h"
-#include "harness/mesh/obj_loader.h"
-#include "harness/mesh/topology.h"
-#include "harness/tess/tessellator.h"
+#include "core/mesh/obj_loader.h"
+#include "core/mesh/topology.h"
+#include "core/tess/tessellator.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"
 #include "techniques/gregory_acc/gregory_acc.h"

@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "tests/test_support.h"
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <random>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/registry.h"

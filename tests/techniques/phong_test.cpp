@@ -6,7 +6,7 @@
 #include <cstring>
 #include <random>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/phong/phong.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/phong/phong_eval.h"

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <string>
 
-#include "harness/gpu/patch_program.h"
-#include "harness/mesh/float_ulp.h"
-#include "harness/mesh/obj_loader.h"
+#include "core/gpu/patch_program.h"
+#include "core/mesh/float_ulp.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/technique.h"
 #include "tests/test_support.h"
 

@@ -9,7 +9,7 @@
 #include <map>
 #include <random>
 
-#include "harness/mesh/obj_loader.h"
+#include "core/mesh/obj_loader.h"
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/pn_triangles/pn_eval.h"
 #include "techniques/registry.h"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <set>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 #include "tests/tess/tess_test_support.h"
 
 namespace tb::tess {

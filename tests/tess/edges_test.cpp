@@ -7,9 +7,9 @@
 #include <limits>
 #include <random>
 
-#include "harness/tess/edge_spacing.h"
-#include "harness/tess/fixed_point.h"
-#include "harness/tess/tessellator.h"
+#include "core/tess/edge_spacing.h"
+#include "core/tess/fixed_point.h"
+#include "core/tess/tessellator.h"
 #include "tests/tess/tess_test_support.h"
 
 namespace tb::tess {

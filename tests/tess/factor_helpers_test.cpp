@@ -2,7 +2,7 @@
 // (oracle: the HLSL intrinsic reference pages' rules: edge rounding per partitioning,
 // inside = avg/max/min reduction times InsideScale, clamped then rounded, and the odd
 // "at least 3" picture-frame rule). Each expectation shows its arithmetic.
-#include "harness/tess/factor_helpers.h"
+#include "core/tess/factor_helpers.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 
 #include <limits>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 #include "tests/tess/tess_test_support.h"
 
 namespace tb::tess {

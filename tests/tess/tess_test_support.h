@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 
 namespace tb::tess::testing {
 

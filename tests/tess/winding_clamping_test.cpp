@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "harness/tess/tessellator.h"
+#include "core/tess/tessellator.h"
 #include "tests/tess/tess_test_support.h"
 
 namespace tb::tess {

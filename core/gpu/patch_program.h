@@ -1,0 +1,60 @@
+// Runs a technique's own tessellation shaders (TCS + TES) on the Vulkan device and
+// captures what its TES computes: position and normal at every domain point, with the
+// exact gl_TessCoord bits, so the CPU float evaluation can be compared at the same
+// points (ulps) and shared-edge points compared bitwise (crack measure).
+//
+// The technique describes its program as plain data (GpuPatchProgram); it never touches
+// Vulkan. The shader contract is in shaders/common/patch_program.glsl:
+//   set 0, binding 0      the capture buffer (written by tbCaptureVertex in the TES)
+//   set 0, bindings 1..N  GpuPatchProgram::storage_buffers, in order
+//   push constants        levels, first patch of the draw (tbPatchIndex()), flags
+//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages
+// Each draw covers a small batch of patches (lavapipe's single-threaded tessellator
+// slows down super-linearly with many patches per draw); capture is by SSBO with an
+// atomic counter (about 4x faster than transform feedback on lavapipe).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/gpu/patch_program_desc.h"
+#include "core/gpu/tess_capture.h"
+#include "core/mesh/vec.h"
+#include "core/tess/tessellator.h"
+
+namespace tb::gpu {
+
+
+struct CapturedVertex {
+  uint32_t patch = 0;  // SurfacePatches patch (GpuPatchProgram::patch_ids applied)
+  tess::DomainPoint coord{};  // gl_TessCoord bit for bit
+  Vec3f position;
+  Vec3f normal;
+};
+
+struct PatchProgramCapture {
+  // Sorted by (patch, coord bits), so the order does not depend on the device's
+  // invocation order; duplicates (same patch, same coord) are kept once.
+  std::vector<CapturedVertex> vertices;
+  PipelineStatistics stats;      // summed over all draws
+  double submit_to_fence_s = 0;  // host seconds over all submissions
+  uint32_t draws = 0;
+};
+
+struct PatchProgramOptions {
+  tess::Spacing spacing = tess::Spacing::kInteger;
+  uint32_t first_patch = 0;
+  uint32_t patch_count = UINT32_MAX;  // clamped to the program's
+  uint32_t patches_per_draw = 1;
+  bool capture = true;                // false: time the shaders alone (no SSBO writes)
+};
+
+// Uniform levels for every patch. Throws GpuError when the device lacks a needed
+// feature, a shader is not embedded, or the capture overflows.
+PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& program,
+                                    const tess::Levels& levels,
+                                    const PatchProgramOptions& options = {});
+
+}  // namespace tb::gpu

@@ -1,0 +1,222 @@
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/mesh/input_error.h"
+#include "core/mesh/obj_loader.h"
+
+namespace tb {
+namespace {
+
+std::vector<std::string_view> splitTokens(std::string_view line) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) tokens.push_back(line.substr(start, i - start));
+  }
+  return tokens;
+}
+
+bool parseDouble(std::string_view token, double* value) {
+  // strtod accepts "nan" and "inf", which we must see in order to reject them.
+  std::string copy(token);
+  char* end = nullptr;
+  *value = std::strtod(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size() && !copy.empty();
+}
+
+bool parseInt(std::string_view token, long* value) {
+  auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), *value);
+  return ec == std::errc() && ptr == token.data() + token.size();
+}
+
+// tinyobjloader stores corner counts in an unsigned char.
+constexpr size_t kMaxFaceCorners = 255;
+
+class ObjScanner {
+ public:
+  explicit ObjScanner(const std::string& source) : source_(source) {}
+
+  void scanLine(std::string_view line, uint32_t line_number) {
+    line_ = line_number;
+    const auto tokens = splitTokens(line);
+    if (tokens.empty() || tokens[0][0] == '#') return;
+    const std::string_view keyword = tokens[0];
+    if (keyword == "v") {
+      scanCoordinates(tokens, 3, "vertex position");
+      ++position_count_;
+    } else if (keyword == "vn") {
+      scanCoordinates(tokens, 3, "vertex normal");
+      ++normal_count_;
+    } else if (keyword == "vt") {
+      scanCoordinates(tokens, 2, "texture coordinate");
+      ++uv_count_;
+    } else if (keyword == "f") {
+      scanFace(tokens);
+    } else if (keyword == "t") {
+      tag_lines_.push_back({std::string(line), line_number});
+    }
+  }
+
+  std::vector<uint32_t> takeFaceLines() { return std::move(face_lines_); }
+
+  // Tags may name vertices and faces defined after them, so check them last.
+  void finish() {
+    line_ = 0;
+    if (face_count_ == 0) fail("", "has no faces (empty or not an OBJ mesh)");
+    for (const auto& [text, number] : tag_lines_) {
+      line_ = number;
+      scanTag(splitTokens(text));
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what, const std::string& rule) const {
+    const std::string element = line_ ? "line " + std::to_string(line_) : "";
+    throw InputError(source_, element, what.empty() ? rule : what + " " + rule);
+  }
+
+  void scanCoordinates(const std::vector<std::string_view>& tokens, size_t needed,
+                       const char* what) {
+    if (tokens.size() < needed + 1) {
+      fail(what, "needs " + std::to_string(needed) + " numbers, has " +
+                     std::to_string(tokens.size() - 1));
+    }
+    for (size_t i = 1; i <= needed; ++i) {
+      double value = 0;
+      if (!parseDouble(tokens[i], &value)) {
+        fail(what, "has a non-number '" + std::string(tokens[i]) + "'");
+      }
+      if (!std::isfinite(value)) {
+        fail(what, "is not finite ('" + std::string(tokens[i]) + "'): NaN and Inf are rejected");
+      }
+    }
+  }
+
+  // Resolves a 1-based or negative (relative) OBJ index; fails when out of range.
+  void checkIndex(std::string_view token, long count, const char* what) {
+    long index = 0;
+    if (!parseInt(token, &index)) {
+      fail("face", "has a malformed " + std::string(what) + " index '" + std::string(token) + "'");
+    }
+    const long resolved = index < 0 ? count + index : index - 1;
+    if (index == 0 || resolved < 0 || resolved >= count) {
+      fail("face", std::string(what) + " index " + std::to_string(index) +
+                       " is out of range (1.." + std::to_string(count) + " defined so far)");
+    }
+  }
+
+  void scanFace(const std::vector<std::string_view>& tokens) {
+    if (tokens.size() < 4) {
+      fail("face", "has " + std::to_string(tokens.size() - 1) +
+                       " vertices; a face needs at least 3 (degenerate face)");
+    }
+    if (tokens.size() - 1 > kMaxFaceCorners) {
+      fail("face", "has " + std::to_string(tokens.size() - 1) + " vertices; at most " +
+                       std::to_string(kMaxFaceCorners) + " are supported");
+    }
+    for (size_t i = 1; i < tokens.size(); ++i) {
+      std::string_view corner = tokens[i];
+      const size_t slash1 = corner.find('/');
+      checkIndex(corner.substr(0, slash1), position_count_, "vertex");
+      if (slash1 == std::string_view::npos) continue;
+      std::string_view rest = corner.substr(slash1 + 1);
+      const size_t slash2 = rest.find('/');
+      const std::string_view uv = rest.substr(0, slash2);
+      if (!uv.empty()) checkIndex(uv, uv_count_, "texture coordinate");
+      if (slash2 != std::string_view::npos) {
+        const std::string_view normal = rest.substr(slash2 + 1);
+        if (!normal.empty()) checkIndex(normal, normal_count_, "normal");
+      }
+    }
+    ++face_count_;
+    face_lines_.push_back(line_);
+  }
+
+  void scanTag(const std::vector<std::string_view>& tokens) {
+    if (tokens.size() < 3) fail("tag", "needs a name and an int/float/string count triple");
+    const std::string name(tokens[1]);
+    long counts[3] = {0, 0, 0};
+    std::string_view triple = tokens[2];
+    for (int k = 0; k < 3; ++k) {
+      const size_t slash = triple.find('/');
+      if (!parseInt(triple.substr(0, slash), &counts[k]) || counts[k] < 0) {
+        fail("tag '" + name + "'", "has an unreadable count triple '" + std::string(tokens[2]) + "'");
+      }
+      if (k < 2 && slash == std::string_view::npos) {
+        fail("tag '" + name + "'", "has an unreadable count triple '" + std::string(tokens[2]) + "'");
+      }
+      triple = slash == std::string_view::npos ? std::string_view() : triple.substr(slash + 1);
+    }
+    const size_t expected = 3 + counts[0] + counts[1] + counts[2];
+    if (tokens.size() != expected) {
+      fail("tag '" + name + "'", "declares " + std::to_string(expected - 3) + " values but has " +
+                                     std::to_string(tokens.size() - 3));
+    }
+    std::vector<long> ints(counts[0]);
+    for (long k = 0; k < counts[0]; ++k) {
+      if (!parseInt(tokens[3 + k], &ints[k])) {
+        fail("tag '" + name + "'", "has a non-integer '" + std::string(tokens[3 + k]) + "'");
+      }
+    }
+    for (long k = 0; k < counts[1]; ++k) {
+      double value = 0;
+      const auto token = tokens[3 + counts[0] + k];
+      if (!parseDouble(token, &value) || !std::isfinite(value)) {
+        fail("tag '" + name + "'", "has a non-number '" + std::string(token) + "'");
+      }
+    }
+    checkTagReferences(name, ints);
+  }
+
+  void checkTagReferences(const std::string& name, const std::vector<long>& ints) {
+    long limit = -1;
+    const char* what = "";
+    if (name == "crease" || name == "corner") {
+      limit = position_count_;
+      what = "vertex";
+    } else if (name == "hole") {
+      limit = face_count_;
+      what = "face";
+    }
+    if (name == "crease" && ints.size() % 2 != 0) {
+      fail("tag 'crease'", "needs vertex pairs, has " + std::to_string(ints.size()) + " ints");
+    }
+    for (long id : ints) {
+      if (limit >= 0 && (id < 0 || id >= limit)) {
+        fail("tag '" + name + "'", std::string(what) + " " + std::to_string(id) +
+                                       " is out of range (0.." + std::to_string(limit - 1) + ")");
+      }
+    }
+  }
+
+  const std::string& source_;
+  uint32_t line_ = 0;
+  long position_count_ = 0, normal_count_ = 0, uv_count_ = 0, face_count_ = 0;
+  std::vector<std::pair<std::string, uint32_t>> tag_lines_;
+  std::vector<uint32_t> face_lines_;
+};
+
+}  // namespace
+
+std::vector<uint32_t> validateObjText(std::string_view text, const std::string& source_name) {
+  ObjScanner scanner(source_name);
+  uint32_t line_number = 0;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    ++line_number;
+    scanner.scanLine(text.substr(start, end - start), line_number);
+    start = end + 1;
+  }
+  scanner.finish();
+  return scanner.takeFaceLines();
+}
+
+}  // namespace tb

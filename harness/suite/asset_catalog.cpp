@@ -1,0 +1,48 @@
+#include "harness/suite/asset_catalog.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/mesh/input_error.h"
+
+#ifndef TB_DEFAULT_ASSETS_DIR
+#error "TB_DEFAULT_ASSETS_DIR must be defined by the build"
+#endif
+
+namespace tb {
+
+namespace fs = std::filesystem;
+
+std::string assetsDirectory() {
+  if (const char* dir = std::getenv("TB_ASSETS_DIR"); dir != nullptr && *dir != '\0') return dir;
+  return TB_DEFAULT_ASSETS_DIR;
+}
+
+std::vector<AssetRef> bundledAssets() {
+  std::vector<AssetRef> assets;
+  const fs::path root = assetsDirectory();
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
+       it.increment(error)) {
+    if (!it->is_regular_file() || it->path().extension() != ".obj") continue;
+    fs::path relative = fs::relative(it->path(), root);
+    relative.replace_extension();
+    assets.push_back({relative.generic_string(), it->path().string()});
+  }
+  std::sort(assets.begin(), assets.end(),
+            [](const AssetRef& a, const AssetRef& b) { return a.name < b.name; });
+  return assets;
+}
+
+AssetRef resolveAsset(const std::string& name_or_path) {
+  for (const AssetRef& asset : bundledAssets()) {
+    const std::string stem = fs::path(asset.name).filename().string();
+    if (asset.name == name_or_path || stem == name_or_path) return asset;
+  }
+  if (fs::is_regular_file(name_or_path)) return {name_or_path, name_or_path};
+  throw InputError(name_or_path, "",
+                   "no such file, and not a bundled asset (see `tessbench list assets`)");
+}
+
+}  // namespace tb

@@ -1,0 +1,31 @@
+// Runs techniques × variants × assets × measures into the results model.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "harness/suite/asset_catalog.h"
+#include "harness/measures/measure.h"
+#include "harness/results/results_model.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+struct SuiteSelection {
+  std::vector<const Technique*> techniques;  // empty: every registered technique
+  std::vector<AssetRef> assets;              // empty: every bundled asset
+  std::vector<const Measure*> measures;      // empty: every registered measure
+  std::string device_name;                   // --device substring; empty: best device
+};
+
+// Called before each technique × variant × asset step: (done, total, label).
+using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
+
+// Fills assets, records and skipped of `results` (never the context). An asset
+// that fails to load aborts the run with InputError: a named asset must be
+// usable. A technique that cannot take an asset is recorded as skipped, with
+// its reason.
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results);
+
+}  // namespace tb

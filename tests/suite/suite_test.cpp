@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "harness/suite/suite.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+TEST(Suite, PhongMemoryOnOneAssetGivesOneRecordPerMeasuredVariant) {
+  SuiteSelection selection;
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.measures = {MeasureRegistry::instance().find("memory")};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  ASSERT_EQ(results.assets.size(), 1u);
+  EXPECT_EQ(results.assets[0].name, "opensubdiv/catmark_cube");
+  std::vector<std::string> phong_variants;
+  for (const Record& record : results.records) {
+    if (record.technique != "phong") continue;
+    phong_variants.push_back(record.variant);
+    ASSERT_EQ(record.measures.size(), 1u);
+    EXPECT_EQ(record.measures[0].rows.size(), 4u);
+    EXPECT_EQ(record.parameters.at("alpha"), "0.75");
+  }
+  // memory does not depend on α: the α variants share the default's patch data and are
+  // not measured again; `edge` adds per-edge normals, so it gets its own record.
+  EXPECT_EQ(phong_variants, (std::vector<std::string>{"alpha0.75", "edge"}));
+}
+
+// Memory follows the patch data: gregory_acc/quads_only refines the pyramid's triangles
+// into quads (16 patches instead of 4 triangles + 1 quad) and is measured; the evaluation
+// orders share the default's patch data and are not.
+TEST(Suite, VariantsWithTheirOwnPatchDataGetTheirOwnMemoryRecord) {
+  SuiteSelection selection;
+  selection.techniques = {TechniqueRegistry::instance().find("gregory_acc")};
+  selection.assets = {resolveAsset("catmark_pyramid")};
+  selection.measures = {MeasureRegistry::instance().find("memory")};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  std::map<std::string, double> patches_by_variant;
+  for (const Record& record : results.records) {
+    ASSERT_EQ(record.measures.size(), 1u);
+    ASSERT_FALSE(record.measures[0].rows.empty());
+    for (const Metric& m : record.measures[0].rows[0].metrics) {
+      if (m.name == "patches") patches_by_variant[record.variant] = m.value;
+    }
+  }
+  EXPECT_EQ(patches_by_variant,
+            (std::map<std::string, double>{{"edge_symmetric", 5}, {"quads_only", 16}}));
+}
+
+TEST(Suite, UnknownAssetIsAnInputError) {
+  EXPECT_THROW(resolveAsset("definitely_not_an_asset"), std::exception);
+  EXPECT_EQ(resolveAsset("opensubdiv/loop_cube").name, "opensubdiv/loop_cube");
+}
+
+TEST(Suite, BundledAssetsAreSortedAndComplete) {
+  const auto assets = bundledAssets();
+  EXPECT_GE(assets.size(), 27u);  // the 27 OpenSubdiv shapes, plus any added later
+  EXPECT_TRUE(std::any_of(assets.begin(), assets.end(),
+                          [](const AssetRef& a) { return a.name == "opensubdiv/catmark_cube"; }));
+  for (size_t i = 1; i < assets.size(); ++i) EXPECT_LT(assets[i - 1].name, assets[i].name);
+}
+
+}  // namespace
+}  // namespace tb
