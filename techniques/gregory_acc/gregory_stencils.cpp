@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <unordered_map>
 
@@ -157,7 +157,8 @@ std::string prefix(const Mesh& mesh) { return "gregory_acc: " + mesh.source + ":
 
 Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double scale) {
   Stencil out;
-  for (const auto& [index, weight] : over_refined) add(out, refined.stencils[index], weight * scale);
+  for (const auto& [index, weight] : over_refined)
+    add(out, refined.stencils[index], weight * scale);
   return out;
 }
 
@@ -270,8 +271,7 @@ Rings buildRings(const Mesh& mesh) {
       out.error = prefix(mesh) + (ring.boundary ? "boundary vertex " : "vertex ") +
                   std::to_string(v) + (ring.boundary ? " has " : " has valence ") +
                   std::to_string(ring.faces()) + (ring.boundary ? " faces" : "") +
-                  "; gregory_acc needs " + std::to_string(low) + ".." +
-                  std::to_string(kMaxValence);
+                  "; gregory_acc needs " + std::to_string(low) + ".." + std::to_string(kMaxValence);
       return out;
     }
   }
@@ -312,8 +312,7 @@ std::string checkGregorySupport(const Mesh& mesh) {
     for (uint32_t a = 0; a < size; ++a) {
       for (uint32_t b = a + 1; b < size; ++b) {
         if (fv[a] == fv[b]) {
-          return prefix(mesh) + describeFace(mesh, f) + " repeats vertex " +
-                 std::to_string(fv[a]);
+          return prefix(mesh) + describeFace(mesh, f) + " repeats vertex " + std::to_string(fv[a]);
         }
       }
     }
@@ -337,6 +336,191 @@ std::string checkGregorySupport(const Mesh& mesh) {
   return buildRings(mesh).error;
 }
 
+namespace {
+
+// Builds the stencil table of buildGregoryStencils. Stencils are emitted in a fixed order
+// (vertex positions, then edge points in face order, then face points per face and
+// corner) so that every shared point is one stencil computed once: both patches that
+// use it read the same weights (docs/ARCHITECTURE.md §5, rule 1).
+class StencilBuilder {
+ public:
+  StencilBuilder(const Mesh& mesh, TangentMask mask)
+      : mesh_(mesh), mask_(mask), rings_(buildRings(mesh).rings) {
+    // Vertices with a non-quad face around them take their frame from the mesh refined
+    // once (refinedFrame); all-quad rings keep the direct masks.
+    if (!mesh.allFacesOfSize(4)) {
+      refined_ = refineOnce(mesh);
+      refined_rings_ = buildRings(refined_->mesh).rings;
+    }
+  }
+
+  GregoryStencils build() {
+    frames_.resize(rings_.size());
+    position_id_.assign(rings_.size(), UINT32_MAX);
+    for (uint32_t v = 0; v < rings_.size(); ++v) {
+      if (rings_[v].valence() == 0) continue;
+      frames_[v] = frameOf(v);
+      position_id_[v] = emit(frames_[v].position);
+    }
+    // Edge stencils first, in face order, so all shared stencils precede the face points.
+    for (size_t f = 0; f < mesh_.faceCount(); ++f) {
+      const auto fv = mesh_.facePositions(f);
+      const uint32_t size = uint32_t(fv.size());
+      for (uint32_t c = 0; c < size; ++c) {
+        edgeId(fv[c], fv[(c + 1) % size]);
+        edgeId(fv[c], fv[(c + size - 1) % size]);
+      }
+    }
+    out_.sharedStencilCount = out_.stencilCount();
+    out_.patch_points.resize(mesh_.faceCount());
+    for (size_t f = 0; f < mesh_.faceCount(); ++f) emitFacePoints(f);
+    return std::move(out_);
+  }
+
+ private:
+  VertexFrame frameOf(uint32_t v) const {
+    const Ring& ring = rings_[v];
+    if (ring.quads_only || (ring.boundary && ring.faces() == 1)) {
+      return ring.boundary ? boundaryFrame(v, ring) : vertexFrame(v, ring, mask_);
+    }
+    Ring local = refined_rings_[v];
+    if (!local.boundary) {  // start where the input ring starts (boundary rings already do)
+      const uint32_t first = local.indexOf(refined_->edgePoint(v, ring.neighbour[0]));
+      std::rotate(local.neighbour.begin(), local.neighbour.begin() + first, local.neighbour.end());
+      std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
+    }
+    return refinedFrame(v, local, *refined_, mask_);
+  }
+
+  uint32_t emit(const Stencil& s) {
+    for (const auto& [index, weight] : s) {
+      if (std::abs(weight) < 1e-14) continue;  // cancelled terms (e.g. r on a regular ring)
+      out_.indices.push_back(index);
+      out_.weights.push_back(weight);
+    }
+    out_.offsets.push_back(uint32_t(out_.indices.size()));
+    return uint32_t(out_.offsets.size() - 2);
+  }
+
+  Stencil edgePoint(uint32_t v, uint32_t w) const {
+    const Ring& ring = rings_[v];
+    const uint32_t j = ring.indexOf(w);
+    Stencil e;
+    if (ring.boundary && ring.faces() == 1) {  // corner: the boundary curve's end
+      add(e, v, 2.0 / 3);
+      add(e, w, 1.0 / 3);
+      return e;
+    }
+    e = frames_[v].position;
+    // Interior: angle 2 pi j / n; boundary with k faces: pi j / k = 2 pi j / (2k).
+    const uint32_t n = ring.effectiveValence();
+    add(e, frames_[v].e0, cosTurn(j, n));
+    add(e, frames_[v].e1, sinTurn(j, n));
+    return e;
+  }
+
+  uint32_t edgeId(uint32_t v, uint32_t w) {
+    const auto [it, inserted] = edge_id_.emplace(directedKey(v, w), 0);
+    if (inserted) it->second = emit(edgePoint(v, w));
+    return it->second;
+  }
+
+  // Face points, Loop et al. 2009 eq. for the interior Gregory points (as in OpenSubdiv
+  // Far's Gregory basis): with c_n = cos(2 pi/n),
+  //   Fp = (c_np P + (3 - 2 c_n - c_np) Ep + 2 c_n Em(ip) + r_start) / 3,
+  //   Fm = (c_nm P + (3 - 2 c_n - c_nm) Em + 2 c_n Ep(im) - r_prev) / 3,
+  // for corner v of a face with next corner ip and previous corner im.
+  std::pair<Stencil, Stencil> facePoints(uint32_t v, uint32_t ip, uint32_t im) const {
+    const Ring& ring = rings_[v];
+    const uint32_t n = ring.effectiveValence(), np = rings_[ip].effectiveValence(),
+                   nm = rings_[im].effectiveValence();
+    const uint32_t start = ring.indexOf(ip);             // the face is ring face `start`
+    const uint32_t prev = (start + 1) % ring.valence();  // ring index of im
+    const double cn = cosTurn(1, n), cnp = cosTurn(1, np), cnm = cosTurn(1, nm);
+    // On a boundary there is no continuity to keep across a boundary edge: the face
+    // point next to it takes the other one's value (as Far's Gregory basis does), and
+    // the twist across it (which has no face there) is never formed. A corner's face
+    // point is the bicubic B-spline's with mirrored phantom points.
+    const bool ip_edge_open = ring.boundary && start == 0;
+    const bool im_edge_open = ring.boundary && prev + 1 == ring.valence();
+    auto plusPoint = [&] {
+      Stencil fp;
+      add(fp, frames_[v].position, cnp / 3);
+      add(fp, edgePoint(v, ip), (3 - 2 * cn - cnp) / 3);
+      add(fp, edgePoint(ip, v), 2 * cn / 3);
+      add(fp, twist(ring, start), 1.0 / 3);
+      return fp;
+    };
+    auto minusPoint = [&] {
+      Stencil fm;
+      add(fm, frames_[v].position, cnm / 3);
+      add(fm, edgePoint(v, im), (3 - 2 * cn - cnm) / 3);
+      add(fm, edgePoint(im, v), 2 * cn / 3);
+      add(fm, twist(ring, prev), -1.0 / 3);
+      return fm;
+    };
+    Stencil fp, fm;
+    if (ip_edge_open && im_edge_open) {
+      add(fp, v, 4.0 / 9);
+      add(fp, ring.diagonal[0], 1.0 / 9);
+      add(fp, ip, 2.0 / 9);
+      add(fp, im, 2.0 / 9);
+      fm = fp;
+    } else if (ip_edge_open) {
+      fp = fm = minusPoint();
+    } else if (im_edge_open) {
+      fp = fm = plusPoint();
+    } else {
+      fp = plusPoint();
+      fm = minusPoint();
+    }
+    return {std::move(fp), std::move(fm)};
+  }
+
+  // Triangle: the quartic interior points. The patch's derivative along its edge toward
+  // the opposite corner equals that of a quad with face points F (the triangle "is a
+  // quad" to each of its neighbours), which holds when G = (E + 3 F) / 4 for the edge
+  // point E and face point F at the same corner.
+  Stencil triangleInteriorPoint(const Stencil& edge_point, const Stencil& face_point) const {
+    Stencil g;
+    add(g, edge_point, 0.25);
+    add(g, face_point, 0.75);
+    return g;
+  }
+
+  void emitFacePoints(size_t f) {
+    const auto fv = mesh_.facePositions(f);
+    const uint32_t size = uint32_t(fv.size());
+    auto& points = out_.patch_points[f];
+    points.fill(kNoStencil);
+    for (uint32_t c = 0; c < size; ++c) {
+      const uint32_t v = fv[c], ip = fv[(c + 1) % size], im = fv[(c + size - 1) % size];
+      auto [fp, fm] = facePoints(v, ip, im);
+      if (size == 3) {
+        fp = triangleInteriorPoint(edgePoint(v, ip), fp);
+        fm = triangleInteriorPoint(edgePoint(v, im), fm);
+      }
+      points[c * 5 + kP] = position_id_[v];
+      points[c * 5 + kEp] = edgeId(v, ip);
+      points[c * 5 + kEm] = edgeId(v, im);
+      points[c * 5 + kFp] = emit(fp);
+      points[c * 5 + kFm] = emit(fm);
+    }
+  }
+
+  const Mesh& mesh_;
+  const TangentMask mask_;
+  const std::vector<Ring> rings_;
+  std::optional<RefinedMesh> refined_;
+  std::vector<Ring> refined_rings_;
+  std::vector<VertexFrame> frames_;
+  std::vector<uint32_t> position_id_;
+  std::unordered_map<uint64_t, uint32_t> edge_id_;
+  GregoryStencils out_;
+};
+
+}  // namespace
+
 GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
   if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
     throw UnsupportedInput(reason);
@@ -347,155 +531,7 @@ GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
                              ": buildGregoryStencils needs quads and triangles only");
     }
   }
-  const std::vector<Ring> rings = buildRings(mesh).rings;
-  // Vertices with a non-quad face around them take their frame from the mesh refined
-  // once (refinedFrame); all-quad rings keep the direct masks.
-  std::optional<RefinedMesh> refined;
-  std::vector<Ring> refined_rings;
-  if (!mesh.allFacesOfSize(4)) {
-    refined = refineOnce(mesh);
-    refined_rings = buildRings(refined->mesh).rings;
-  }
-  auto frameOf = [&](uint32_t v) {
-    const Ring& ring = rings[v];
-    if (ring.quads_only || (ring.boundary && ring.faces() == 1)) {
-      return ring.boundary ? boundaryFrame(v, ring) : vertexFrame(v, ring, mask);
-    }
-    Ring local = refined_rings[v];
-    if (!local.boundary) {  // start where the input ring starts (boundary rings already do)
-      const uint32_t first = local.indexOf(refined->edgePoint(v, ring.neighbour[0]));
-      std::rotate(local.neighbour.begin(), local.neighbour.begin() + first, local.neighbour.end());
-      std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
-    }
-    return refinedFrame(v, local, *refined, mask);
-  };
-  GregoryStencils out;
-  auto emit = [&out](const Stencil& s) {
-    for (const auto& [index, weight] : s) {
-      if (std::abs(weight) < 1e-14) continue;  // cancelled terms (e.g. r on a regular ring)
-      out.indices.push_back(index);
-      out.weights.push_back(weight);
-    }
-    out.offsets.push_back(uint32_t(out.indices.size()));
-    return uint32_t(out.offsets.size() - 2);
-  };
-
-  std::vector<VertexFrame> frames(rings.size());
-  std::vector<uint32_t> position_id(rings.size(), UINT32_MAX);
-  std::unordered_map<uint64_t, uint32_t> edge_id;
-  for (uint32_t v = 0; v < rings.size(); ++v) {
-    if (rings[v].valence() == 0) continue;
-    frames[v] = frameOf(v);
-    position_id[v] = emit(frames[v].position);
-  }
-  auto edgePoint = [&](uint32_t v, uint32_t w) {
-    const Ring& ring = rings[v];
-    const uint32_t j = ring.indexOf(w);
-    Stencil e;
-    if (ring.boundary && ring.faces() == 1) {  // corner: the boundary curve's end
-      add(e, v, 2.0 / 3);
-      add(e, w, 1.0 / 3);
-      return e;
-    }
-    e = frames[v].position;
-    // Interior: angle 2 pi j / n; boundary with k faces: pi j / k = 2 pi j / (2k).
-    const uint32_t n = ring.effectiveValence();
-    add(e, frames[v].e0, cosTurn(j, n));
-    add(e, frames[v].e1, sinTurn(j, n));
-    return e;
-  };
-  auto edgeId = [&](uint32_t v, uint32_t w) {
-    const auto [it, inserted] = edge_id.emplace(directedKey(v, w), 0);
-    if (inserted) it->second = emit(edgePoint(v, w));
-    return it->second;
-  };
-  // Edge stencils first, in face order, so all shared stencils precede the face points.
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    const auto fv = mesh.facePositions(f);
-    const uint32_t size = uint32_t(fv.size());
-    for (uint32_t c = 0; c < size; ++c) {
-      edgeId(fv[c], fv[(c + 1) % size]);
-      edgeId(fv[c], fv[(c + size - 1) % size]);
-    }
-  }
-  out.sharedStencilCount = out.stencilCount();
-
-  out.patch_points.resize(mesh.faceCount());
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    const auto fv = mesh.facePositions(f);
-    const uint32_t size = uint32_t(fv.size());
-    auto& points = out.patch_points[f];
-    points.fill(kNoStencil);
-    for (uint32_t c = 0; c < size; ++c) {
-      const uint32_t v = fv[c], ip = fv[(c + 1) % size], im = fv[(c + size - 1) % size];
-      const Ring& ring = rings[v];
-      const uint32_t n = ring.effectiveValence(), np = rings[ip].effectiveValence(),
-                     nm = rings[im].effectiveValence();
-      const uint32_t start = ring.indexOf(ip);             // face f is ring face `start`
-      const uint32_t prev = (start + 1) % ring.valence();  // ring index of im
-      // Face points, Loop et al. 2009 eq. for the interior Gregory points (as in
-      // OpenSubdiv Far's Gregory basis): with c_n = cos(2 pi/n),
-      //   Fp = (c_np P + (3 - 2 c_n - c_np) Ep + 2 c_n Em(ip) + r_start) / 3,
-      //   Fm = (c_nm P + (3 - 2 c_n - c_nm) Em + 2 c_n Ep(im) - r_prev) / 3.
-      const double cn = cosTurn(1, n), cnp = cosTurn(1, np), cnm = cosTurn(1, nm);
-      // On a boundary there is no continuity to keep across a boundary edge: the face
-      // point next to it takes the other one's value (as Far's Gregory basis does), and
-      // the twist across it (which has no face there) is never formed. A corner's face
-      // point is the bicubic B-spline's with mirrored phantom points.
-      const bool ip_edge_open = ring.boundary && start == 0;
-      const bool im_edge_open = ring.boundary && prev + 1 == ring.valence();
-      auto plusPoint = [&] {
-        Stencil fp;
-        add(fp, frames[v].position, cnp / 3);
-        add(fp, edgePoint(v, ip), (3 - 2 * cn - cnp) / 3);
-        add(fp, edgePoint(ip, v), 2 * cn / 3);
-        add(fp, twist(ring, start), 1.0 / 3);
-        return fp;
-      };
-      auto minusPoint = [&] {
-        Stencil fm;
-        add(fm, frames[v].position, cnm / 3);
-        add(fm, edgePoint(v, im), (3 - 2 * cn - cnm) / 3);
-        add(fm, edgePoint(im, v), 2 * cn / 3);
-        add(fm, twist(ring, prev), -1.0 / 3);
-        return fm;
-      };
-      Stencil fp, fm;
-      if (ip_edge_open && im_edge_open) {
-        add(fp, v, 4.0 / 9);
-        add(fp, ring.diagonal[0], 1.0 / 9);
-        add(fp, ip, 2.0 / 9);
-        add(fp, im, 2.0 / 9);
-        fm = fp;
-      } else if (ip_edge_open) {
-        fp = fm = minusPoint();
-      } else if (im_edge_open) {
-        fp = fm = plusPoint();
-      } else {
-        fp = plusPoint();
-        fm = minusPoint();
-      }
-      if (size == 3) {
-        // Triangle: the quartic interior points. The patch's derivative along its edge
-        // toward the opposite corner equals that of a quad with these face points
-        // (DESIGN: the triangle "is a quad" to each of its neighbours), which holds when
-        // G = (E + 3 F) / 4 for the edge point E and face point F at the same corner.
-        Stencil gp, gm;
-        add(gp, edgePoint(v, ip), 0.25);
-        add(gp, fp, 0.75);
-        add(gm, edgePoint(v, im), 0.25);
-        add(gm, fm, 0.75);
-        fp = std::move(gp);
-        fm = std::move(gm);
-      }
-      points[c * 5 + kP] = position_id[v];
-      points[c * 5 + kEp] = edgeId(v, ip);
-      points[c * 5 + kEm] = edgeId(v, im);
-      points[c * 5 + kFp] = emit(fp);
-      points[c * 5 + kFm] = emit(fm);
-    }
-  }
-  return out;
+  return StencilBuilder(mesh, mask).build();
 }
 
 GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask, NonQuadFaces non_quads) {
