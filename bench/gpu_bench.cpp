@@ -1,6 +1,6 @@
 // Tessellation throughput of the Vulkan device (lavapipe by default), in TES invocations
 // per second. Timed with the host clock from submit to fence (UseManualTime): timestamp
-// queries are meaningless for tessellation draws on lavapipe (DESIGN.md).
+// queries are meaningless for tessellation draws on lavapipe (docs/ARCHITECTURE.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Throughput of the reference layer (DESIGN.md measure 8): Bfr limit evaluations,
+// Throughput of the reference layer (docs/ARCHITECTURE.md §7): Bfr limit evaluations,
 // Embree rtcInterpolate evaluations (both position + first derivatives) and exact
 // closest-point queries, each as a rate.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// CPU evaluation throughput of every registered surface technique (DESIGN.md
+// CPU evaluation throughput of every registered surface technique (docs/ARCHITECTURE.md
 // measure 8): points per second on a bundled asset, in double.
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 // Where Embree's subdivision rules and OpenSubdiv's agree, so that Embree can serve
-// as an independent cross-check of the Bfr reference (DESIGN.md "Reference surfaces").
+// as an independent cross-check of the Bfr reference (docs/ARCHITECTURE.md §7).
 #pragma once
 
 #include <string>

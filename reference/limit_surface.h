@@ -1,5 +1,5 @@
 // The exact limit surface of a Catmull-Clark or Loop control mesh, evaluated in
-// double with OpenSubdiv 3.5 Bfr (DESIGN.md "Reference surfaces"). Creases, corners,
+// double with OpenSubdiv 3.5 Bfr (docs/ARCHITECTURE.md §7). Creases, corners,
 // holes and boundary interpolation come from the mesh's `t` tags.
 //
 // (u,v) follows Bfr's parameterisation of each face; face_domain.h says what it means

@@ -2,7 +2,7 @@
 """Writes the crack-test meshes in assets/tessbench/ (tessbench's own, CC0).
 
 Each mesh has one of the attribute splits that open cracks in PN triangles and
-Phong tessellation (seed 003; DESIGN.md watertightness rules 4 and 5):
+Phong tessellation (seed 003; docs/ARCHITECTURE.md §5 rule 4 and 5):
 
   flat_cube.obj        12 triangles, one normal per face: split normals on every edge
   cylinder_seam.obj    16-segment cylinder: smooth sides with a UV seam at u = 0/1,

@@ -73,7 +73,7 @@ struct SurfacePointF {
 // (u, v, w) weighting corners 0, 1, 2; quads use (u, v, unused).
 using DomainCoord = std::array<double, 3>;
 
-// Exact scalar operation counts of one patch (DESIGN.md measure 1b), from the technique's
+// Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
 // evaluators run with CountingScalar in the shader's operation order.
 struct OperationProfile {
   OperationCounts per_patch_setup;  // control points etc., once per patch (TCS work)

@@ -12,7 +12,7 @@
 namespace tb {
 
 struct LoadOptions {
-  // Meshes without normals get angle-weighted smooth normals (DESIGN.md); the
+  // Meshes without normals get angle-weighted smooth normals (docs/ARCHITECTURE.md); the
   // mesh then reports normals_computed.
   bool compute_missing_normals = true;
 };

@@ -151,7 +151,7 @@ void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& pro
 
   // Chunks of about a million captured vertices bound the capture buffer; a few
   // patches per draw keep lavapipe's single-threaded tessellator out of its
-  // super-linear regime (DESIGN.md, the GPU path).
+  // super-linear regime (docs/ARCHITECTURE.md §6).
   const uint32_t patch_count = uint32_t(patches.patchCount());
   const uint32_t chunk =
       uint32_t(std::clamp<size_t>((1u << 20) / std::max<size_t>(points_per_patch, 1), 1, 4096));

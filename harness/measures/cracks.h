@@ -1,4 +1,4 @@
-// Measure 5 (DESIGN.md): crack gaps between patches that share an edge or a corner.
+// Crack gaps (docs/ARCHITECTURE.md §3) between patches that share an edge or a corner.
 //
 // Two patches share an edge when its two end corners weld to the same positions
 // (control-mesh position indices from patchCorners(), merged by weldByPosition so that

@@ -1,4 +1,4 @@
-// Measure 1 (DESIGN.md): instruction counts.
+// Instruction counts (docs/ARCHITECTURE.md §3).
 //  (a) static: each shader stage after spirv-opt -O (SPIRV-Tools API), specialised for
 //      the variant first, counted per category, as vector instructions and expanded to
 //      the components of their result;

@@ -1,4 +1,4 @@
-// Measure 2 (DESIGN.md): memory footprint against plain triangle meshes.
+// Memory footprint against plain triangle meshes (docs/ARCHITECTURE.md §3).
 #pragma once
 
 #include <cstdint>
@@ -55,7 +55,7 @@ struct TessellatedMesh {
 };
 TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level);
 
-// meshoptimizer's codecs on a mesh (DESIGN.md measure 2, second baseline): vertex-cache
+// meshoptimizer's codecs on a mesh (docs/ARCHITECTURE.md §3, memory): vertex-cache
 // then vertex-fetch optimisation (the order a shipping pipeline uses; it reorders `mesh`
 // in place), then meshopt_encodeIndexBuffer and meshopt_encodeVertexBuffer.
 struct CompressedMesh {

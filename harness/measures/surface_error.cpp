@@ -244,7 +244,7 @@ class SurfaceErrorMeasure final : public Measure {
     result.measure = info().id;
     // Graded against the scheme the patches approximate (by default, triangle techniques
     // against the Loop limit of the same triangle mesh, quad techniques against the
-    // Catmull-Clark limit; DESIGN.md measure 6).
+    // Catmull-Clark limit; docs/ARCHITECTURE.md §3, error).
     const ref::Scheme scheme = limitScheme(input.patches->approximates());
     result.notes = {
         "distances are fractions of the bounding-box diagonal; normals in degrees",

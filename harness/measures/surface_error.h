@@ -1,4 +1,4 @@
-// Measure 6 (DESIGN.md): error of a surface technique against the exact limit
+// Error (docs/ARCHITECTURE.md §3) of a surface technique against the exact limit
 // surface of its control mesh (OpenSubdiv Bfr, in double).
 #pragma once
 

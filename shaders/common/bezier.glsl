@@ -1,6 +1,6 @@
 // Bicubic Bézier evaluation in the operation orders of techniques/common/bezier_eval.h
 // (its CPU twin; keep the two in step). Every order-sensitive value is `precise`, so
-// the compiler neither reassociates nor contracts it (DESIGN.md watertightness rule 2).
+// the compiler neither reassociates nor contracts it (docs/ARCHITECTURE.md §5 rule 2).
 // lavapipe (Mesa 22.3.6) runs fma() on precise values as a separately rounded multiply
 // and add; the CPU twin's fusedMulAdd(float) does the same (measured bit for bit).
 //   order 0  asymmetric       FMA chain along u then v

@@ -1,6 +1,6 @@
 // Vector helpers with a fixed float operation order, matching core/mesh/vec.h (dot,
 // normalize) so CPU float models reproduce shaders bit for bit. `precise` keeps NIR from
-// reassociating or contracting them (DESIGN.md watertightness rule 2).
+// reassociating or contracting them (docs/ARCHITECTURE.md §5 rule 2).
 #ifndef TB_FLOAT_ORDER_GLSL
 #define TB_FLOAT_ORDER_GLSL
 

@@ -26,7 +26,7 @@
 //
 // Sums run in the vertex's stored ring order and a fixed term order, so every patch
 // that shares a corner or edge control point computes it bit for bit the same way
-// (DESIGN.md watertightness rule 1).
+// (docs/ARCHITECTURE.md §5 rule 1).
 #pragma once
 
 #include <array>

@@ -13,7 +13,7 @@
 //                    chain for rows 1 and 2, which vanish on the v edges (69).
 // The symmetric forms give bitwise-equal points for t and 1 - t with mirrored
 // control points (B0 <-> B3 and B1 <-> B2 are computed by mirrored formulas), which
-// is what makes shared edges watertight (DESIGN.md watertightness rule 2).
+// is what makes shared edges watertight (docs/ARCHITECTURE.md §5 rule 2).
 #pragma once
 
 #include <array>

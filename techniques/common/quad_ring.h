@@ -5,7 +5,7 @@
 // A boundary vertex's ring starts at the boundary edge e_0 and ends at the boundary
 // edge e_{n-1}; it has n - 1 faces. An interior vertex has n faces, f_{n-1} between
 // e_{n-1} and e_0. The stored start of the ring is fixed per vertex, so every face
-// that sums over a ring sums in the same order (DESIGN.md watertightness rule 1).
+// that sums over a ring sums in the same order (docs/ARCHITECTURE.md §5 rule 1).
 #pragma once
 
 #include <array>

@@ -34,7 +34,7 @@ Vec3T<T> stencilPoint(const GregoryStencils& stencils, uint32_t s, const Positio
 // Half of a cubic edge curve: p x^3 + e 3 x^2 y. The curve from A (t = 0) to B is
 // half(A, EA, s, t) + half(B, EB, t, s) with s = 1 - t: swapping the ends swaps the two
 // halves and float addition commutes, so both patches of an edge get the same bits
-// (seed 000's symmetric evaluation; DESIGN.md watertightness rule 2).
+// (seed 000's symmetric evaluation; docs/ARCHITECTURE.md §5 rule 2).
 template <class T>
 Vec3T<T> halfEdge(const Vec3T<T>& p, const Vec3T<T>& e, T x, T y) {
   const T x2 = x * x;

@@ -4,7 +4,7 @@
 // The CPU evaluators and the TCS both compute a point as the same sum, in the same
 // order (ascending global vertex index), so the CPU float path and the GPU agree.
 //
-// Sharing (DESIGN.md watertightness rule 1): a corner point P belongs to its vertex and
+// Sharing (docs/ARCHITECTURE.md §5 rule 1): a corner point P belongs to its vertex and
 // an edge point E(v->w) to its directed edge; each is ONE stencil referenced by every
 // patch that uses it, so both patches of an edge compute their shared points with the
 // same terms in the same order. The face points Fp/Fm are per patch corner.

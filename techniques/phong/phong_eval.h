@@ -30,7 +30,7 @@ struct PhongPoint {
 // Terms are summed in a canonical corner order (canonicalCornerOrder), so the
 // result is a function of the corners as a set: rotating or mirroring a face,
 // or meeting the same edge from the neighbouring face, sums the same terms in the
-// same order (DESIGN.md watertightness rule 1).
+// same order (docs/ARCHITECTURE.md §5 rule 1).
 template <class T>
 PhongPoint<T> evaluatePhongInOrder(const PhongTriangle<T>& tri, const std::array<T, 3>& weight,
                                    T alpha) {

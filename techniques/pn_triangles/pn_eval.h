@@ -4,7 +4,7 @@
 //
 // Corners are given in a canonical order (labels 0 < 1 < 2, sorted by position; see
 // pn_build.h), so the terms of a shared edge are computed and summed identically from
-// both faces (DESIGN.md watertightness rules 1 and 2).
+// both faces (docs/ARCHITECTURE.md §5 rule 1 and 2).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // Device selection, feature report and shader embedding. Oracle: `vulkaninfo --summary`
-// on the Debian 12 test machine (lavapipe 22.3.6, DESIGN.md "Facts measured").
+// on the Debian 12 test machine (lavapipe 22.3.6, docs/ARCHITECTURE.md §6).
 #include "core/gpu/context.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Tessellation capture on the device. Oracles: the closed-form counts of DESIGN.md
+// Tessellation capture on the device. Oracles: the closed-form counts of docs/ARCHITECTURE.md
 // ("quad 2n^2 triangles and (n+1)^2 points; triangle floor(3n^2/2) triangles", measured
 // on lavapipe) and the Vulkan specification's culling rule (an outer level <= 0 or NaN
 // discards the patch).

@@ -111,7 +111,7 @@ TEST(AsymmetricVariant, OpensGapsSoTheMeasureCanFail) {
   EXPECT_GT(unequal, 0u);
 }
 
-// DESIGN.md: "NIR reassociates constants, so a symmetric evaluation is bitwise
+// docs/ARCHITECTURE.md §6: "NIR reassociates constants, so a symmetric evaluation is bitwise
 // watertight only when marked precise". Oracle: the crack measure on lavapipe's capture;
 // the same order on the CPU (evaluated as written) stays watertight.
 TEST(ImpreciseVariant, WithoutPreciseTheDriverBreaksSymmetry) {

@@ -1,5 +1,5 @@
 // Oracle: the OBJ files' own text (counts and tags read by eye from the bundled
-// OpenSubdiv shapes) and the error rules of DESIGN.md "Bad input".
+// OpenSubdiv shapes) and the error rules of docs/ARCHITECTURE.md §8.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Oracle: DESIGN.md "Bad input" — every rejection is an InputError naming the file,
+// Oracle: docs/ARCHITECTURE.md §8 — every rejection is an InputError naming the file,
 // the element (option, face, vertex) and the rule.
 #include <gtest/gtest.h>
 

@@ -22,7 +22,7 @@ using testing::clusteredSubFacePoints;
 using testing::loadShape;
 
 constexpr size_t kMinPointsPerShape = 1000;
-// Positions agree to 1e-5 of the bounding-box diagonal (DESIGN.md); float evaluation
+// Positions agree to 1e-5 of the bounding-box diagonal (docs/ARCHITECTURE.md); float evaluation
 // alone would allow ~1e-6.
 constexpr double kPositionTolerance = 1e-5;
 // Away from extraordinary points the derivatives agree to float precision amplified by

@@ -1,7 +1,7 @@
 // acc's shaders (shaders/acc/) on the Vulkan device against their CPU twin: the
 // captured position at each gl_TessCoord equals evaluateFloat there within 4 ulp, and
 // with the symmetric orders the points two patches give on a shared edge are bitwise
-// equal in the capture (DESIGN.md watertightness rules 1 and 2).
+// equal in the capture (docs/ARCHITECTURE.md §5 rule 1 and 2).
 #include <gtest/gtest.h>
 
 #include <bit>

@@ -143,7 +143,7 @@ TEST(Acc, SharedEdgesAreC0InDouble) {
 }
 
 // Oracle: bitwise equality of the float points two patches give on their shared edge
-// (DESIGN.md watertightness rules 1 and 2); asymmetric is reported, not asserted.
+// (docs/ARCHITECTURE.md §5 rule 1 and 2); asymmetric is reported, not asserted.
 TEST(Acc, SymmetricOrdersAreBitwiseWatertightInFloat) {
   const auto points = domainPoints();
   for (const char* variant : {"default", "symmetric_nofma", "symmetric_edges", "asymmetric"}) {

@@ -1,5 +1,5 @@
 // Point and primitive counts of tessellate() against closed forms (oracle: the counts in
-// core/tess/counts.cpp, which DESIGN.md records as matching lavapipe's pipeline
+// core/tess/counts.cpp, which docs/ARCHITECTURE.md records as matching lavapipe's pipeline
 // statistics: quad 2n^2 triangles and (n+1)^2 points, triangle floor(3n^2/2)).
 #include <gtest/gtest.h>
 
