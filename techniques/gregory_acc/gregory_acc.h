@@ -13,8 +13,8 @@ class GregoryAccTechnique final : public Technique {
   const TechniqueInfo& info() const override;
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
-                                               const VariantInfo& variant) const override;
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo& variant) const override;
 };
 
 }  // namespace tb::gregory_acc
