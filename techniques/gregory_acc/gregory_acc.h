@@ -1,7 +1,8 @@
 // The `gregory_acc` technique: Catmull-Clark limit surfaces approximated by quad Gregory
-// patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC").
-// Closed, manifold, all-quad meshes without crease, corner or hole tags (see
-// checkGregorySupport for the exact rules and messages).
+// patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC"), and
+// triangle Gregory patches for triangle faces (the `quads_only` variant refines non-quad
+// faces once instead). Closed, manifold polygon meshes without crease, corner or hole tags
+// (see checkGregorySupport for the exact rules and messages).
 #pragma once
 
 #include "techniques/technique.h"
