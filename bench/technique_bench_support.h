@@ -17,12 +17,11 @@ namespace tb::bench {
 
 // Null, with the benchmark skipped and the technique's reason shown, when the technique
 // does not take the asset.
-inline std::unique_ptr<SurfacePatches> defaultVariantPatches(benchmark::State& state,
-                                                             const Technique& technique,
-                                                             const std::string& asset) {
+inline BuiltSurface defaultVariantPatches(benchmark::State& state, const Technique& technique,
+                                          const std::string& asset) {
   try {
     const Mesh mesh = loadObjFile(resolveAsset(asset).path);
-    return technique.buildPatches(mesh, technique.variants()[0]);
+    return buildSurface(technique, mesh, technique.variants()[0]);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
     return nullptr;

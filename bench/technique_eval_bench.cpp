@@ -10,8 +10,7 @@ namespace {
 // Evaluates a uniform 16x16 barycentric/parametric grid on every patch.
 void evaluateAllPatches(benchmark::State& state, const tb::Technique* technique,
                         const std::string& asset) {
-  const std::unique_ptr<tb::SurfacePatches> patches =
-      tb::bench::defaultVariantPatches(state, *technique, asset);
+  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
   if (!patches) return;
   constexpr int kGrid = 16;
   int64_t points = 0;

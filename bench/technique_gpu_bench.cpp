@@ -28,8 +28,7 @@ void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
     state.SkipWithError(("no usable Vulkan device: " + context.error()).c_str());
     return;
   }
-  const std::unique_ptr<tb::SurfacePatches> patches =
-      tb::bench::defaultVariantPatches(state, *technique, asset);
+  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
   if (!patches) return;
   const std::vector<tb::gpu::GpuPatchProgram> programs = patches->gpuPrograms();
   if (programs.empty()) {

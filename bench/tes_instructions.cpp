@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     std::vector<float> levels;
     for (int i = 4; i < argc; ++i) levels.push_back(std::stof(argv[i]));
     if (levels.empty()) levels = {8, 16};
-    const auto patches = technique->buildPatches(mesh, variant);
+    const auto patches = buildSurface(*technique, mesh, variant);
     // The first program only: callgrind_tes.sh takes the slope between exactly two dumps.
     // Patches that mix domains have one program per domain; the others are not counted.
     const auto programs = patches->gpuPrograms();

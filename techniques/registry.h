@@ -34,7 +34,10 @@ void loadPlugin(const std::string& path);
 // Entry point a plug-in library exports. It receives the host's registry, adds
 // its techniques and returns kTessbenchPluginAbi; any other value rejects the
 // plug-in (built against another technique.h).
-inline constexpr int kTessbenchPluginAbi = 4;  // 4: per-patch domains, gpuPrograms()
+// 5: Technique::build returns a TechniqueInstance (surface() / simulation()) instead of
+// buildPatches; SurfacePatches lost domain() and gpuProgram() (patchDomain(p) and
+// gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
+inline constexpr int kTessbenchPluginAbi = 5;
 extern "C" {
 typedef int (*TessbenchPluginEntry)(tb::TechniqueRegistry* registry);
 }
@@ -43,6 +46,6 @@ typedef int (*TessbenchPluginEntry)(tb::TechniqueRegistry* registry);
 #define TB_REGISTER_TECHNIQUE_CONCAT2(a, b) a##b
 #define TB_REGISTER_TECHNIQUE_CONCAT(a, b) TB_REGISTER_TECHNIQUE_CONCAT2(a, b)
 // One line in a technique's .cpp: TB_REGISTER_TECHNIQUE(PhongTechnique);
-#define TB_REGISTER_TECHNIQUE(Class)                                                    \
+#define TB_REGISTER_TECHNIQUE(Class)                                                          \
   static const bool TB_REGISTER_TECHNIQUE_CONCAT(tb_registered_, __LINE__) [[maybe_unused]] = \
       ::tb::TechniqueRegistry::instance().add(std::make_unique<Class>())

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "core/mesh/vec.h"
 #include "core/tess/tessellator.h"
 #include "techniques/counting_scalar.h"
+#include "techniques/simulation.h"
 
 namespace tb {
 
@@ -32,17 +35,17 @@ enum class PatchDomain { kTriangle, kQuad };
 enum class LimitScheme { kLoop, kCatmullClark };
 
 struct TechniqueInfo {
-  std::string id;          // "phong"; lower case, used on the command line and in results
+  std::string id;  // "phong"; lower case, used on the command line and in results
   TechniqueFamily family;
-  std::string title;       // "Phong tessellation"
-  std::string citation;    // "Boubekeur & Alexa, SIGGRAPH Asia 2008"
-  std::string input;       // what input it accepts, in words
+  std::string title;     // "Phong tessellation"
+  std::string citation;  // "Boubekeur & Alexa, SIGGRAPH Asia 2008"
+  std::string input;     // what input it accepts, in words
 };
 
 struct VariantInfo {
-  std::string name;                           // "alpha0.75"; unique within the technique
-  std::string description;                    // one line for reports
-  std::map<std::string, double> parameters;   // numeric parameters, e.g. {"alpha": 0.75}
+  std::string name;                          // "alpha0.75"; unique within the technique
+  std::string description;                   // one line for reports
+  std::map<std::string, double> parameters;  // numeric parameters, e.g. {"alpha": 0.75}
 };
 
 // Bytes a technique keeps resident to draw one asset, before tessellation.
@@ -81,21 +84,17 @@ struct OperationProfile {
   std::string note;                 // what was counted, e.g. "symmetric_fma order, tangent patches"
 };
 
-// The patches a surface technique built for one asset and variant.
+// The patches a surface technique built for one asset and variant: the surface
+// capability of a TechniqueInstance.
 class SurfacePatches {
  public:
   virtual ~SurfacePatches() = default;
-  // The domain of the technique's first kind of patch. A technique whose patches do not
-  // all share it (gregory_acc: quads and triangles) overrides patchDomain; measures read
-  // patchDomain(p) for every patch.
-  virtual PatchDomain domain() const = 0;
-  virtual PatchDomain patchDomain(size_t patch) const {
-    (void)patch;
-    return domain();
-  }
+  // The domain of patch p; patches may mix domains (gregory_acc: quads and triangles).
+  virtual PatchDomain patchDomain(size_t patch) const = 0;
   // Default: quad patches approximate Catmull-Clark, triangle patches Loop.
   virtual LimitScheme approximates() const {
-    return domain() == PatchDomain::kQuad ? LimitScheme::kCatmullClark : LimitScheme::kLoop;
+    return patchCount() > 0 && patchDomain(0) == PatchDomain::kQuad ? LimitScheme::kCatmullClark
+                                                                    : LimitScheme::kLoop;
   }
   virtual size_t patchCount() const = 0;
   // The mesh the patches are built over: patch p covers face p of it (for
@@ -112,18 +111,11 @@ class SurfacePatches {
   // comparison and of the crack measure: two patches that share an edge are watertight
   // in float only if this gives bitwise-equal points there.
   virtual SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const = 0;
-  // The GPU program that evaluates these patches (shaders/<id>/, run by
-  // core/gpu/patch_program.h), or nullopt when the technique has no GPU path.
-  // Its patch p is this object's patch p.
-  virtual std::optional<gpu::GpuPatchProgram> gpuProgram() const { return std::nullopt; }
-  // Every GPU program of these patches: one per patch domain for a technique with
-  // several (each with GpuPatchProgram::patch_ids), else gpuProgram() alone. Together
-  // they cover every patch once. Empty when there is no GPU path.
-  virtual std::vector<gpu::GpuPatchProgram> gpuPrograms() const {
-    std::vector<gpu::GpuPatchProgram> programs;
-    if (auto program = gpuProgram()) programs.push_back(std::move(*program));
-    return programs;
-  }
+  // The GPU programs that evaluate these patches (shaders/<id>/, run by
+  // core/gpu/patch_program.h): one per patch domain for a technique with several (each
+  // with GpuPatchProgram::patch_ids), else one whose patch p is this object's patch p.
+  // Together they cover every patch once. Empty when there is no GPU path.
+  virtual std::vector<gpu::GpuPatchProgram> gpuPrograms() const { return {}; }
   // Operation counts for patch p at an interior domain point, or nullopt when the
   // technique does not count. Counts may differ between regular and irregular patches.
   virtual std::optional<OperationProfile> operationProfile(size_t patch) const {
@@ -143,6 +135,49 @@ class UnsupportedInput : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What a technique instance can do. Each capability is null when absent; a measure
+// declares which it needs (harness/measures/measure.h) and the suite never hands it an
+// instance without them. One instance may have both (a simulated skin that renders as
+// patches).
+class TechniqueInstance {
+ public:
+  virtual ~TechniqueInstance() = default;
+  virtual const SurfacePatches* surface() const { return nullptr; }
+  virtual Simulation* simulation() { return nullptr; }
+  const Simulation* simulation() const {
+    return const_cast<TechniqueInstance*>(this)->simulation();
+  }
+};
+
+// The instance of a surface technique: owns its patches and nothing else.
+class SurfaceInstance final : public TechniqueInstance {
+ public:
+  explicit SurfaceInstance(std::unique_ptr<SurfacePatches> patches)
+      : patches_(std::move(patches)) {}
+  const SurfacePatches* surface() const override { return patches_.get(); }
+
+ private:
+  std::unique_ptr<SurfacePatches> patches_;
+};
+
+// The instance of a simulation technique: owns its simulation and nothing else.
+class SimulationInstance final : public TechniqueInstance {
+ public:
+  explicit SimulationInstance(std::unique_ptr<Simulation> simulation)
+      : simulation_(std::move(simulation)) {}
+  Simulation* simulation() override { return simulation_.get(); }
+
+ private:
+  std::unique_ptr<Simulation> simulation_;
+};
+
+// What a technique builds from: the asset's mesh (surface techniques) and/or a scenario
+// (simulations). Absent parts are null; build throws UnsupportedInput when it needs one.
+struct TechniqueInput {
+  const Mesh* mesh = nullptr;
+  const Scenario* scenario = nullptr;
+};
+
 class Technique {
  public:
   virtual ~Technique() = default;
@@ -151,10 +186,38 @@ class Technique {
   virtual std::vector<VariantInfo> variants() const = 0;
   // Empty string when the mesh is supported; otherwise the reason (one line).
   virtual std::string checkSupport(const Mesh& mesh) const = 0;
-  // Surface techniques only; throws UnsupportedInput.
-  virtual std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
-                                                       const VariantInfo& variant) const = 0;
+  // Builds the instance for one input and variant; throws UnsupportedInput when the
+  // input breaks a rule of the technique (or lacks the mesh or scenario it needs).
+  virtual std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                                   const VariantInfo& variant) const = 0;
 };
+
+// The mesh of `input`, or UnsupportedInput naming the technique when there is none.
+const Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input);
+
+// A built instance whose surface is used directly: `*built` and `built->` are the
+// SurfacePatches, and the instance stays alive with it. For callers that need only the
+// surface (tests, benches, tools); the suite reads capabilities itself.
+class BuiltSurface {
+ public:
+  BuiltSurface() = default;  // empty, like a null pointer
+  BuiltSurface(std::nullptr_t) {}
+  explicit BuiltSurface(std::unique_ptr<TechniqueInstance> instance);
+  explicit operator bool() const { return surface_ != nullptr; }
+  bool operator==(std::nullptr_t) const { return surface_ == nullptr; }
+  const SurfacePatches& operator*() const { return *surface_; }
+  const SurfacePatches* operator->() const { return surface_; }
+  const SurfacePatches* get() const { return surface_; }
+  TechniqueInstance& instance() { return *instance_; }
+
+ private:
+  std::unique_ptr<TechniqueInstance> instance_;
+  const SurfacePatches* surface_ = nullptr;
+};
+
+// technique.build({&mesh}, variant) for a technique with a surface; throws
+// UnsupportedInput as build does, and std::logic_error when the instance has no surface.
+BuiltSurface buildSurface(const Technique& technique, const Mesh& mesh, const VariantInfo& variant);
 
 const char* toString(TechniqueFamily family);
 const char* toString(PatchDomain domain);

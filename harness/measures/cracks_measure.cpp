@@ -53,11 +53,10 @@ class CracksMeasure final : public Measure {
         "and on the device"};
     return kInfo;
   }
-  bool appliesTo(const Technique& technique) const override {
-    return technique.info().family == TechniqueFamily::kSurface;
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface, MeasureNeed::kGpu}, VariantPolicy::kEveryVariant, {}};
   }
   // Evaluation order is what the variants change; the crack figures depend on it.
-  bool dependsOnVariant() const override { return true; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;

@@ -73,10 +73,9 @@ class InstructionsMeasure final : public Measure {
         "scalar operations per vertex and per patch set-up (counting scalar)"};
     return kInfo;
   }
-  bool appliesTo(const Technique& technique) const override {
-    return technique.info().family == TechniqueFamily::kSurface;
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
   }
-  bool dependsOnVariant() const override { return true; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;

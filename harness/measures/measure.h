@@ -2,6 +2,9 @@
 // MeasureResult of the results model; it registers itself like a technique.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -9,6 +12,7 @@
 
 #include "core/gpu/context.h"
 #include "core/mesh/mesh.h"
+#include "core/view/view.h"
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
 
@@ -20,30 +24,65 @@ struct MeasureInfo {
   std::string description;  // one line: what is measured, in which units
 };
 
+// What a measure needs from a technique instance and the run. The suite runs a measure
+// only where every need is met (harness/suite/measure_rule.h), so a measure that needs a
+// surface always gets MeasureInput::patches non-null, and so on.
+enum class MeasureNeed : uint8_t {
+  kSurface,     // MeasureInput::patches (TechniqueInstance::surface())
+  kSimulation,  // MeasureInput::simulation (TechniqueInstance::simulation())
+  // MeasureInput::view: the suite runs the measure once per view of each camera path and
+  // adds the row keys "camera_path" and "view" (the view's index on the path) to its rows.
+  kView,
+  // MeasureInput::gpu: the run's Vulkan device. Never a reason not to run: without a
+  // device the measure reports its GPU parts skipped with gpu_unavailable, as it would.
+  kGpu,
+};
+
+// Which variants of a technique a measure runs on, on an asset it applies to.
+enum class VariantPolicy : uint8_t {
+  kDefaultOnly,   // the figures are the same for every variant (seed_figures)
+  kEveryVariant,  // the figures follow the variant (errors, cracks, instruction counts)
+  // The figures follow the patch data alone (memory): the default variant, and each other
+  // variant whose SurfacePatches::footprint() differs from the default's on the asset
+  // (gregory_acc/quads_only: 3 quads per triangle; phong/edge: per-edge normals).
+  kWhenPatchDataDiffers,
+};
+
+// A measure's whole declaration of where it runs.
+struct MeasureRequirements {
+  std::vector<MeasureNeed> needs;
+  VariantPolicy variants = VariantPolicy::kDefaultOnly;
+  // Narrows the techniques further when the needs alone do not say it (seed_figures needs
+  // the technique's own probe shader); empty: every technique whose instances meet the needs.
+  std::function<bool(const Technique&)> technique_filter;
+  bool has(MeasureNeed need) const {
+    return std::find(needs.begin(), needs.end(), need) != needs.end();
+  }
+};
+
 struct MeasureInput {
   const Technique& technique;
   const VariantInfo& variant;
-  const std::string& asset_name;
-  const Mesh& mesh;                 // the asset as loaded
-  const SurfacePatches* patches;    // built for this variant; null for simulation techniques
+  const std::string& asset_name;  // the asset's name, or the scenario's for a simulation
+  const Mesh& mesh;               // the asset as loaded (empty for a scenario)
+  // The surface capability, built for this variant; non-null when the measure needs kSurface.
+  const SurfacePatches* patches;
   // The run's Vulkan device, or null when none is usable; then gpu_unavailable says why
   // and GPU measures report themselves skipped with that reason.
   gpu::Context* gpu = nullptr;
   std::string gpu_unavailable;
+  // The simulation capability, freshly built for this measure (at time 0); non-null when
+  // the measure needs kSimulation. The measure may step it.
+  Simulation* simulation = nullptr;
+  // The camera view; non-null when the measure needs kView.
+  const View* view = nullptr;
 };
 
 class Measure {
  public:
   virtual ~Measure() = default;
   virtual const MeasureInfo& info() const = 0;
-  virtual bool appliesTo(const Technique& technique) const = 0;
-  // False when every variant gives the same figures (e.g. memory for phong's α):
-  // the suite then measures the default variant only.
-  virtual bool dependsOnVariant() const = 0;
-  // True when the figures follow the patch data alone (memory): the suite then also
-  // measures each other variant whose SurfacePatches::footprint() differs from the
-  // default variant's on the asset (gregory_acc/quads_only: 3 quads per triangle).
-  virtual bool dependsOnPatchData() const { return false; }
+  virtual MeasureRequirements requirements() const = 0;
   virtual MeasureResult run(const MeasureInput& input) const = 0;
 };
 
@@ -60,8 +99,8 @@ class MeasureRegistry {
 
 #define TB_REGISTER_MEASURE_CONCAT2(a, b) a##b
 #define TB_REGISTER_MEASURE_CONCAT(a, b) TB_REGISTER_MEASURE_CONCAT2(a, b)
-#define TB_REGISTER_MEASURE(Class)                                                        \
-  static const bool TB_REGISTER_MEASURE_CONCAT(tb_measure_registered_, __LINE__) [[maybe_unused]] = \
-      ::tb::MeasureRegistry::instance().add(std::make_unique<Class>())
+#define TB_REGISTER_MEASURE(Class)                                               \
+  static const bool TB_REGISTER_MEASURE_CONCAT(tb_measure_registered_, __LINE__) \
+      [[maybe_unused]] = ::tb::MeasureRegistry::instance().add(std::make_unique<Class>())
 
 }  // namespace tb

@@ -45,11 +45,9 @@ class MemoryMeasure final : public Measure {
         "welded triangle mesh at uniform levels 8, 16, 32, 64"};
     return kInfo;
   }
-  bool appliesTo(const Technique& technique) const override {
-    return technique.info().family == TechniqueFamily::kSurface;
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
   }
-  bool dependsOnVariant() const override { return false; }
-  bool dependsOnPatchData() const override { return true; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;

@@ -61,10 +61,12 @@ class SeedFiguresMeasure final : public Measure {
         "and of ACC's domain shader, beside seed 000's and seed 001's numbers"};
     return kInfo;
   }
-  bool appliesTo(const Technique& technique) const override {
-    return !gpu::embeddedShader(probePath(technique)).empty();
+  // Only techniques that ship the probe shader (acc); it reads their GPU program.
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface}, VariantPolicy::kDefaultOnly, [](const Technique& technique) {
+              return !gpu::embeddedShader(probePath(technique)).empty();
+            }};
   }
-  bool dependsOnVariant() const override { return false; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
@@ -96,7 +98,8 @@ class SeedFiguresMeasure final : public Measure {
         result.rows.push_back(std::move(row));
       }
       // The domain shader of the technique's program, default order (symmetric_fma).
-      if (const auto program = input.patches->gpuProgram()) {
+      const auto programs = input.patches->gpuPrograms();
+      if (const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front()) {
         const StageInstructionCounts tes =
             countEmbeddedShader(program->evaluation_shader, program->specialization);
         for (const auto& [what, seed_loads, seed_alu] :

@@ -234,10 +234,9 @@ class SurfaceErrorMeasure final : public Measure {
         "and normal deviation (degrees) against the OpenSubdiv Bfr limit"};
     return kInfo;
   }
-  bool appliesTo(const Technique& technique) const override {
-    return technique.info().family == TechniqueFamily::kSurface;
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
   }
-  bool dependsOnVariant() const override { return true; }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/mesh/obj_loader.h"
+#include "harness/suite/measure_rule.h"
 #include "techniques/registry.h"
 
 namespace tb {
@@ -14,11 +15,6 @@ std::string describeFaceKinds(const Mesh& mesh) {
   if (mesh.allFacesOfSize(4)) return "quads";
   return "mixed (max " + std::to_string(mesh.maxFaceSize()) + " vertices)";
 }
-
-struct LoadedAsset {
-  AssetRef ref;
-  Mesh mesh;
-};
 
 void formatParameters(const VariantInfo& variant, std::map<std::string, std::string>* out) {
   for (const auto& [key, value] : variant.parameters) {
@@ -34,102 +30,206 @@ void formatParameters(const VariantInfo& variant, std::map<std::string, std::str
   }
 }
 
+// What one technique runs on: a loaded asset (surface techniques) or a scenario
+// (simulations). `mesh` is empty for a scenario.
+struct SuiteInput {
+  std::string name;  // the record's asset column
+  const Mesh* mesh = nullptr;
+  const Scenario* scenario = nullptr;
+  bool is_asset() const { return scenario == nullptr; }
+};
+
+// Everything a technique × variant × input step shares with the others of the run.
+struct SuiteRun {
+  std::vector<const Measure*> measures;
+  std::vector<CameraPathFn> camera_paths;
+  std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
+  std::string gpu_unavailable;        // why, when gpu is null
+  Results* results = nullptr;
+};
+
+// One Vulkan device for the whole run (GPU measures share it); its absence is a reason
+// each GPU measure reports, never an abort.
+void openDevice(const std::string& device_name, SuiteRun* run) {
+  gpu::ContextOptions options;
+  options.device_name = device_name;
+  auto created = gpu::Context::create(options);
+  if (created) {
+    run->gpu = std::move(created.value());
+  } else {
+    run->gpu_unavailable = created.error();
+  }
+}
+
+// Loads every asset (InputError aborts the run) and lists it in results->assets.
+std::vector<Mesh> loadAssets(const std::vector<AssetRef>& refs, Results* results) {
+  std::vector<Mesh> meshes;
+  for (const AssetRef& ref : refs) {
+    Mesh mesh = loadObjFile(ref.path);
+    results->assets.push_back({ref.name, ref.path, mesh.faceCount(), mesh.positions.size(),
+                               describeFaceKinds(mesh), mesh.normals_computed});
+    meshes.push_back(std::move(mesh));
+  }
+  return meshes;
+}
+
+// Runs `measure` once per view of each camera path around the input, merging the rows
+// into one result with the keys "camera_path" and "view" (the index on the path) added,
+// so rows of different views never collide. The first run that is not ok gives the
+// merged status and reason.
+MeasureResult runOverViews(const SuiteRun& run, const Measure& measure, MeasureInput input) {
+  MeasureResult merged;
+  merged.measure = measure.info().id;
+  const Aabb bounds = boundsOf(input.mesh);
+  for (const CameraPathFn& make_path : run.camera_paths) {
+    const CameraPath path = make_path(bounds);
+    for (size_t v = 0; v < path.views.size(); ++v) {
+      input.view = &path.views[v];
+      MeasureResult one = measure.run(input);
+      for (MetricRow& row : one.rows) {
+        row.keys["camera_path"] = path.name;
+        row.keys["view"] = std::to_string(v);
+        merged.rows.push_back(std::move(row));
+      }
+      if (merged.status == MeasureStatus::kOk && one.status != MeasureStatus::kOk) {
+        merged.status = one.status;
+        merged.reason = one.reason;
+      }
+      if (merged.notes.empty()) merged.notes = one.notes;
+    }
+  }
+  return merged;
+}
+
+// Runs one measure on a built instance. A measure that needs a simulation gets a fresh
+// one (at time 0, built again) so that no measure sees another's steps.
+MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInput input,
+                         const TechniqueInput& technique_input, TechniqueInstance* instance) {
+  const MeasureRequirements requirements = measure.requirements();
+  std::unique_ptr<TechniqueInstance> fresh;
+  if (requirements.has(MeasureNeed::kSimulation)) {
+    fresh = input.technique.build(technique_input, input.variant);
+    instance = fresh.get();
+  }
+  input.simulation = instance->simulation();
+  if (requirements.has(MeasureNeed::kView)) return runOverViews(run, measure, input);
+  return measure.run(input);
+}
+
+// Records a technique that cannot take the input (on the default variant only, once).
+void recordSkip(const Technique& technique, const SuiteInput& input, bool is_default,
+                const std::string& reason, Results* results) {
+  if (is_default) results->skipped.push_back({technique.info().id, input.name, reason});
+}
+
+// Builds the technique on one input and variant, and runs every measure the rule admits
+// into one record. `default_footprint` is the default variant's patch data on this input:
+// set by the default variant's step, read by the others.
+void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo& variant,
+             bool is_default, const SuiteInput& input,
+             std::optional<DataFootprint>* default_footprint) {
+  // Measures that may run, before building: no instance is built that no measure would use.
+  const VariantStanding maybe{is_default, default_footprint->has_value()};
+  bool any_may_run = false;
+  for (const Measure* measure : run.measures) {
+    any_may_run |=
+        measureRuns(measure->requirements(), technique, expectedCapabilities(technique), maybe);
+  }
+  if (!any_may_run) return;
+  if (input.is_asset()) {
+    if (std::string reason = technique.checkSupport(*input.mesh); !reason.empty()) {
+      return recordSkip(technique, input, is_default, reason, run.results);
+    }
+  }
+  const TechniqueInput technique_input{input.is_asset() ? input.mesh : nullptr, input.scenario};
+  std::unique_ptr<TechniqueInstance> instance;
+  try {
+    instance = technique.build(technique_input, variant);
+  } catch (const UnsupportedInput& unsupported) {
+    return recordSkip(technique, input, is_default, unsupported.what(), run.results);
+  }
+  const SurfacePatches* patches = instance->surface();
+  if (patches && is_default) *default_footprint = patches->footprint();
+  const bool own_patch_data =
+      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint);
+  std::vector<const Measure*> runnable;
+  for (const Measure* measure : run.measures) {
+    if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
+                    {is_default, own_patch_data})) {
+      runnable.push_back(measure);
+    }
+  }
+  if (runnable.empty()) return;
+  Record record;
+  record.technique = technique.info().id;
+  record.variant = variant.name;
+  record.asset = input.name;
+  formatParameters(variant, &record.parameters);
+  if (patches) {
+    record.warnings = patches->warnings();
+  } else if (const Simulation* simulation = instance->simulation()) {
+    record.warnings = simulation->warnings();
+  }
+  const MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
+                                   patches,   run.gpu.get(), run.gpu_unavailable};
+  for (const Measure* measure : runnable) {
+    record.measures.push_back(
+        runMeasure(run, *measure, measure_input, technique_input, instance.get()));
+  }
+  run.results->records.push_back(std::move(record));
+}
+
+// The inputs a technique runs on: the assets for a surface technique, the scenarios for a
+// simulation.
+std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<AssetRef>& refs,
+                                  const std::vector<Mesh>& meshes,
+                                  const std::vector<Scenario>& scenarios) {
+  static const Mesh kNoMesh;
+  std::vector<SuiteInput> inputs;
+  if (technique.info().family == TechniqueFamily::kSimulation) {
+    for (const Scenario& scenario : scenarios)
+      inputs.push_back({scenario.name, &kNoMesh, &scenario});
+  } else {
+    for (size_t a = 0; a < refs.size(); ++a) inputs.push_back({refs[a].name, &meshes[a], nullptr});
+  }
+  return inputs;
+}
+
 }  // namespace
 
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results) {
   std::vector<const Technique*> techniques = selection.techniques;
   if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
-  std::vector<const Measure*> measures = selection.measures;
-  if (measures.empty()) measures = MeasureRegistry::instance().all();
+  SuiteRun run;
+  run.measures = selection.measures;
+  if (run.measures.empty()) run.measures = MeasureRegistry::instance().all();
+  run.camera_paths = selection.camera_paths;
+  if (run.camera_paths.empty()) run.camera_paths = {testOrbitPath};
+  run.results = results;
   std::vector<AssetRef> refs = selection.assets;
   if (refs.empty()) refs = bundledAssets();
-
-  // One Vulkan device for the whole run (GPU measures share it); its absence is a reason
-  // each GPU measure reports, never an abort.
-  std::unique_ptr<gpu::Context> gpu_context;
-  std::string gpu_unavailable;
-  {
-    gpu::ContextOptions options;
-    options.device_name = selection.device_name;
-    auto created = gpu::Context::create(options);
-    if (created) {
-      gpu_context = std::move(created.value());
-    } else {
-      gpu_unavailable = created.error();
-    }
-  }
-
-  std::vector<LoadedAsset> assets;
-  for (const AssetRef& ref : refs) {
-    Mesh mesh = loadObjFile(ref.path);
-    results->assets.push_back({ref.name, ref.path, mesh.faceCount(), mesh.positions.size(),
-                               describeFaceKinds(mesh), mesh.normals_computed});
-    assets.push_back({ref, std::move(mesh)});
-  }
+  openDevice(selection.device_name, &run);
+  const std::vector<Mesh> meshes = loadAssets(refs, results);
 
   size_t total = 0;
-  for (const Technique* technique : techniques) total += technique->variants().size() * assets.size();
+  for (const Technique* technique : techniques) {
+    total += technique->variants().size() *
+             inputsFor(*technique, refs, meshes, selection.scenarios).size();
+  }
   size_t done = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
-    // The default variant's patch data per asset, for dependsOnPatchData measures.
-    std::vector<std::optional<DataFootprint>> default_footprint(assets.size());
+    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios);
+    // The default variant's patch data per input, for kWhenPatchDataDiffers measures.
+    std::vector<std::optional<DataFootprint>> default_footprint(inputs.size());
     for (size_t v = 0; v < variants.size(); ++v) {
-      const VariantInfo& variant = variants[v];
-      const bool is_default = v == 0;
-      for (size_t a = 0; a < assets.size(); ++a) {
-        const LoadedAsset& asset = assets[a];
+      for (size_t i = 0; i < inputs.size(); ++i) {
         if (progress) {
-          progress(done, total, technique->info().id + "/" + variant.name + " " + asset.ref.name);
+          progress(done, total,
+                   technique->info().id + "/" + variants[v].name + " " + inputs[i].name);
         }
         ++done;
-        // Measures that may apply: every one on the default variant; on the others the
-        // variant-dependent ones, and those following the patch data once known.
-        bool any_applies = false;
-        for (const Measure* measure : measures) {
-          any_applies |= measure->appliesTo(*technique) &&
-                         (is_default || measure->dependsOnVariant() ||
-                          (measure->dependsOnPatchData() && default_footprint[a]));
-        }
-        if (!any_applies) continue;
-        if (std::string reason = technique->checkSupport(asset.mesh); !reason.empty()) {
-          if (is_default) results->skipped.push_back({technique->info().id, asset.ref.name, reason});
-          continue;
-        }
-        std::unique_ptr<SurfacePatches> patches;
-        if (technique->info().family == TechniqueFamily::kSurface) {
-          try {
-            patches = technique->buildPatches(asset.mesh, variant);
-          } catch (const UnsupportedInput& unsupported) {
-            if (is_default) {
-              results->skipped.push_back({technique->info().id, asset.ref.name, unsupported.what()});
-            }
-            continue;
-          }
-        }
-        if (patches && is_default) default_footprint[a] = patches->footprint();
-        const bool own_patch_data = is_default || (patches && default_footprint[a] &&
-                                                   patches->footprint() != *default_footprint[a]);
-        std::vector<const Measure*> applicable;
-        for (const Measure* measure : measures) {
-          if (measure->appliesTo(*technique) &&
-              (is_default || measure->dependsOnVariant() ||
-               (measure->dependsOnPatchData() && own_patch_data))) {
-            applicable.push_back(measure);
-          }
-        }
-        if (applicable.empty()) continue;
-        Record record;
-        record.technique = technique->info().id;
-        record.variant = variant.name;
-        record.asset = asset.ref.name;
-        formatParameters(variant, &record.parameters);
-        if (patches) record.warnings = patches->warnings();
-        const MeasureInput input{*technique,     variant,           asset.ref.name,
-                                 asset.mesh,     patches.get(),     gpu_context.get(),
-                                 gpu_unavailable};
-        for (const Measure* measure : applicable) record.measures.push_back(measure->run(input));
-        results->records.push_back(std::move(record));
+        runStep(run, *technique, variants[v], v == 0, inputs[i], &default_footprint[i]);
       }
     }
   }

@@ -10,6 +10,7 @@
 #include "techniques/acc/acc_patch.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/registry.h"
+#include "techniques/variant_param.h"
 
 namespace tb::acc {
 
@@ -159,7 +160,7 @@ class AccPatches final : public SurfacePatches {
                         " topology combinations (corner valence and boundary, up to rotation)");
   }
 
-  PatchDomain domain() const override { return PatchDomain::kQuad; }
+  PatchDomain patchDomain(size_t) const override { return PatchDomain::kQuad; }
   size_t patchCount() const override { return mesh_.faceCount(); }
   const Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
@@ -210,11 +211,11 @@ class AccPatches final : public SurfacePatches {
     return profile;
   }
 
-  std::optional<gpu::GpuPatchProgram> gpuProgram() const override;
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;
 
   DataFootprint footprint() const override {
     DataFootprint f;
-    // GPU layout of gpuProgram(): vec4 positions; per vertex a 16-byte ring header
+    // GPU layout of gpuPrograms(): vec4 positions; per vertex a 16-byte ring header
     // and 8 bytes per ring slot; 48 bytes per patch; the stencil table.
     f.control_mesh_bytes = 16ull * mesh_.positions.size();
     f.patch_data_bytes = 16ull * rings_.rings.size() + 8ull * rings_.edge_neighbours.size() +
@@ -250,7 +251,7 @@ class AccPatches final : public SurfacePatches {
 
 uint32_t floatBits(double value) { return std::bit_cast<uint32_t>(float(value)); }
 
-std::optional<gpu::GpuPatchProgram> AccPatches::gpuProgram() const {
+std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
   gpu::GpuPatchProgram program;
   program.control_shader = "acc/acc.tesc";
   program.evaluation_shader = "acc/acc.tese";
@@ -292,7 +293,7 @@ std::optional<gpu::GpuPatchProgram> AccPatches::gpuProgram() const {
   if (slots.empty()) slots.push_back(0);
   program.storage_buffers = {positions, headers, slots, patches, stencils};
   program.specialization = {uint32_t(order_), tangent_ ? 1u : 0u};
-  return program;
+  return {program};
 }
 
 }  // namespace
@@ -331,13 +332,11 @@ std::vector<VariantInfo> AccTechnique::variants() const {
 }
 
 BezierOrder variantOrder(const VariantInfo& variant) {
-  const auto it = variant.parameters.find("order");
-  return it == variant.parameters.end() ? BezierOrder::kSymmetricFma : BezierOrder(int(it->second));
+  return paramOr<BezierOrder>(AccTechnique().info(), variant, "order", BezierOrder::kSymmetricFma);
 }
 
 bool variantTangentPatches(const VariantInfo& variant) {
-  const auto it = variant.parameters.find("tangent");
-  return it == variant.parameters.end() || it->second != 0;
+  return paramOr<bool>(AccTechnique().info(), variant, "tangent", true);
 }
 
 std::string AccTechnique::checkSupport(const Mesh& mesh) const {
@@ -351,9 +350,10 @@ std::string AccTechnique::checkSupport(const Mesh& mesh) const {
   return {};
 }
 
-std::unique_ptr<SurfacePatches> AccTechnique::buildPatches(const Mesh& mesh,
-                                                           const VariantInfo& variant) const {
-  return std::make_unique<AccPatches>(mesh, variantOrder(variant), variantTangentPatches(variant));
+std::unique_ptr<TechniqueInstance> AccTechnique::build(const TechniqueInput& input,
+                                                       const VariantInfo& variant) const {
+  return std::make_unique<SurfaceInstance>(std::make_unique<AccPatches>(
+      requireMesh(info(), input), variantOrder(variant), variantTangentPatches(variant)));
 }
 
 size_t topologyCombinationCount(const SurfacePatches& patches) {

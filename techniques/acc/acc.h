@@ -19,8 +19,8 @@ class AccTechnique final : public Technique {
   // patches: "asymmetric", "symmetric_nofma", "symmetric_edges".
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
-                                               const VariantInfo& variant) const override;
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo& variant) const override;
 };
 
 // Parameters of a variant: "order" (BezierOrder as a number) and "tangent" (0/1).

@@ -19,7 +19,7 @@ class TrianglePatchesBase : public SurfacePatches {
   explicit TrianglePatchesBase(Triangulation triangulation)
       : tri_(std::move(triangulation)), warnings_(triangulationWarnings(tri_)) {}
 
-  PatchDomain domain() const override { return PatchDomain::kTriangle; }
+  PatchDomain patchDomain(size_t) const override { return PatchDomain::kTriangle; }
   size_t patchCount() const override { return tri_.mesh.faceCount(); }
   const Mesh& controlMesh() const override { return tri_.mesh; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {

@@ -5,6 +5,7 @@
 #include "techniques/gregory_acc/gregory_eval.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "techniques/registry.h"
+#include "techniques/variant_param.h"
 
 namespace tb::gregory_acc {
 namespace {
@@ -53,7 +54,6 @@ class GregoryPatches final : public SurfacePatches {
   }
 
   // Quads, and (unless the mesh was refined) triangles: patch p is face p.
-  PatchDomain domain() const override { return patchDomain(0); }
   PatchDomain patchDomain(size_t patch) const override {
     return build_.control.faceSize(patch) == 3 ? PatchDomain::kTriangle : PatchDomain::kQuad;
   }
@@ -76,11 +76,6 @@ class GregoryPatches final : public SurfacePatches {
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
     const GregoryPoint<float> point = evaluatePatch(points_f_[patch], patch, coord);
     return {point.position, point.normal};
-  }
-
-  // The first of gpuPrograms() (the quads', when there are quads).
-  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
-    return gpuPrograms().front();
   }
 
   // One program per domain present: the quads' (20 control points per patch) and the
@@ -243,20 +238,18 @@ std::string GregoryAccTechnique::checkSupport(const Mesh& mesh) const {
   return checkGregorySupport(mesh);
 }
 
-std::unique_ptr<SurfacePatches> GregoryAccTechnique::buildPatches(
-    const Mesh& mesh, const VariantInfo& variant) const {
-  const auto symmetric = variant.parameters.find("symmetric_edges");
-  const bool symmetric_edges = symmetric == variant.parameters.end() || symmetric->second != 0.0;
-  const auto exact = variant.parameters.find("exact_tangents");
-  const TangentMask mask = exact != variant.parameters.end() && exact->second != 0.0
+std::unique_ptr<TechniqueInstance> GregoryAccTechnique::build(const TechniqueInput& input,
+                                                              const VariantInfo& variant) const {
+  const Mesh& mesh = requireMesh(info(), input);
+  const bool symmetric_edges = paramOr<bool>(info(), variant, "symmetric_edges", true);
+  const TangentMask mask = paramOr<bool>(info(), variant, "exact_tangents", false)
                                ? TangentMask::kExactLimit
                                : TangentMask::kPaper;
-  const auto quads_only = variant.parameters.find("quads_only");
-  const NonQuadFaces non_quads =
-      quads_only != variant.parameters.end() && quads_only->second != 0.0
-          ? NonQuadFaces::kRefineOnce
-          : NonQuadFaces::kTrianglePatches;
-  return std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask, non_quads);
+  const NonQuadFaces non_quads = paramOr<bool>(info(), variant, "quads_only", false)
+                                     ? NonQuadFaces::kRefineOnce
+                                     : NonQuadFaces::kTrianglePatches;
+  return std::make_unique<SurfaceInstance>(
+      std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask, non_quads));
 }
 
 TB_REGISTER_TECHNIQUE(GregoryAccTechnique);

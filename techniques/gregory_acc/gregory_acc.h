@@ -1,7 +1,8 @@
 // The `gregory_acc` technique: Catmull-Clark limit surfaces approximated by quad Gregory
-// patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC").
-// Closed, manifold, all-quad meshes without crease, corner or hole tags (see
-// checkGregorySupport for the exact rules and messages).
+// patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC"), and
+// triangle Gregory patches for triangle faces (the `quads_only` variant refines non-quad
+// faces once instead). Closed, manifold polygon meshes without crease, corner or hole tags
+// (see checkGregorySupport for the exact rules and messages).
 #pragma once
 
 #include "techniques/technique.h"
@@ -13,8 +14,8 @@ class GregoryAccTechnique final : public Technique {
   const TechniqueInfo& info() const override;
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
-                                               const VariantInfo& variant) const override;
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo& variant) const override;
 };
 
 }  // namespace tb::gregory_acc

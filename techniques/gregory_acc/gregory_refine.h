@@ -1,8 +1,9 @@
 // One uniform Catmull-Clark refinement of a manifold polygon mesh, as stencils
-// over the input vertices. gregory_acc uses it for meshes with non-quad faces: every
-// face of the refined mesh is a quad, and the refined mesh has the same limit surface
-// (OpenSubdiv isolates non-quads the same way), so quad Gregory patches cover it and
-// SurfacePatches keeps a single (quad) domain.
+// over the input vertices. gregory_acc's `quads_only` variant uses it for meshes with
+// non-quad faces: every face of the refined mesh is a quad, and the refined mesh has the
+// same limit surface (OpenSubdiv isolates non-quads the same way), so quad Gregory patches
+// alone cover it. The default variant keeps triangle faces as triangle Gregory patches
+// instead (SurfacePatches::patchDomain per patch).
 #pragma once
 
 #include <cstdint>

@@ -9,6 +9,7 @@
 #include "techniques/phong/phong_eval.h"
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/registry.h"
+#include "techniques/variant_param.h"
 
 namespace tb::phong {
 namespace {
@@ -71,7 +72,7 @@ class PhongPatches final : public TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
-  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
     gpu::GpuPatchProgram program;
     program.control_shader = "phong/phong.tesc";
     program.evaluation_shader = "phong/phong.tese";
@@ -96,7 +97,7 @@ class PhongPatches final : public TrianglePatchesBase {
     };
     program.storage_buffers = {vec4s(tri_.mesh.positions), vec4s(normals), records};
     program.specialization = {std::bit_cast<uint32_t>(float(alpha_)), edge_ ? 1u : 0u};
-    return program;
+    return {program};
   }
 
   std::optional<OperationProfile> operationProfile(size_t patch) const override {
@@ -233,14 +234,13 @@ std::string PhongTechnique::checkSupport(const Mesh& mesh) const {
   return {};
 }
 
-std::unique_ptr<SurfacePatches> PhongTechnique::buildPatches(const Mesh& mesh,
-                                                             const VariantInfo& variant) const {
+std::unique_ptr<TechniqueInstance> PhongTechnique::build(const TechniqueInput& input,
+                                                         const VariantInfo& variant) const {
+  const Mesh& mesh = requireMesh(info(), input);
   if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
-  const auto alpha = variant.parameters.find("alpha");
-  const auto edge = variant.parameters.find("edge");
-  return std::make_unique<PhongPatches>(
-      fanTriangulate(mesh), alpha == variant.parameters.end() ? kDefaultAlpha : alpha->second,
-      edge != variant.parameters.end() && edge->second != 0);
+  return std::make_unique<SurfaceInstance>(std::make_unique<PhongPatches>(
+      fanTriangulate(mesh), paramOr<double>(info(), variant, "alpha", kDefaultAlpha),
+      paramOr<bool>(info(), variant, "edge", false)));
 }
 
 TB_REGISTER_TECHNIQUE(PhongTechnique);

@@ -6,6 +6,7 @@
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/pn_triangles/pn_eval.h"
 #include "techniques/registry.h"
+#include "techniques/variant_param.h"
 
 namespace tb::pn_triangles {
 namespace {
@@ -35,7 +36,7 @@ class PnPatches final : public TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
-  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
     gpu::GpuPatchProgram program;
     program.control_shader = "pn_triangles/pn.tesc";
     program.evaluation_shader = "pn_triangles/pn.tese";
@@ -45,7 +46,7 @@ class PnPatches final : public TrianglePatchesBase {
     program.storage_buffers = pnStorageBuffers(tri_.mesh, build_);
     program.specialization = {options_.aen ? 1u : 0u,
                               (options_.boundary_flags || options_.rounding > 0) ? 1u : 0u};
-    return program;
+    return {program};
   }
 
   std::optional<OperationProfile> operationProfile(size_t patch) const override {
@@ -81,11 +82,6 @@ class PnPatches final : public TrianglePatchesBase {
   PnOptions options_;
   PnBuild build_;
 };
-
-double parameter(const VariantInfo& variant, const std::string& name) {
-  const auto it = variant.parameters.find(name);
-  return it == variant.parameters.end() ? 0.0 : it->second;
-}
 
 }  // namespace
 
@@ -130,15 +126,18 @@ std::string PnTrianglesTechnique::checkSupport(const Mesh& mesh) const {
   return {};
 }
 
-std::unique_ptr<SurfacePatches> PnTrianglesTechnique::buildPatches(
-    const Mesh& mesh, const VariantInfo& variant) const {
+std::unique_ptr<TechniqueInstance> PnTrianglesTechnique::build(const TechniqueInput& input,
+                                                               const VariantInfo& variant) const {
+  const Mesh& mesh = requireMesh(info(), input);
   if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
+  // Every switch is off and rounding is 0 unless the variant sets it.
   PnOptions options;
-  options.geometry_normals = parameter(variant, "geometry_normals") != 0;
-  options.boundary_flags = parameter(variant, "boundary_flags") != 0;
-  options.aen = parameter(variant, "aen") != 0;
-  options.rounding = parameter(variant, "rounding");
-  return std::make_unique<PnPatches>(fanTriangulate(mesh), options);
+  options.geometry_normals = paramOr<bool>(info(), variant, "geometry_normals", false);
+  options.boundary_flags = paramOr<bool>(info(), variant, "boundary_flags", false);
+  options.aen = paramOr<bool>(info(), variant, "aen", false);
+  options.rounding = paramOr<double>(info(), variant, "rounding", 0.0);
+  return std::make_unique<SurfaceInstance>(
+      std::make_unique<PnPatches>(fanTriangulate(mesh), options));
 }
 
 TB_REGISTER_TECHNIQUE(PnTrianglesTechnique);

@@ -12,8 +12,8 @@ class PnTrianglesTechnique final : public Technique {
   const TechniqueInfo& info() const override;
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<SurfacePatches> buildPatches(const Mesh& mesh,
-                                               const VariantInfo& variant) const override;
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo& variant) const override;
 };
 
 }  // namespace tb::pn_triangles

@@ -62,7 +62,7 @@ class FlatPatches final : public testing::FacePatches {
   }
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
     const Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
-    if (domain() == PatchDomain::kTriangle) {
+    if (patchDomain(0) == PatchDomain::kTriangle) {
       if (order_ == Order::kNaive) return {p0 + (p1 - p0) * c[1] + (p2 - p0) * c[2], {0, 0, 1}};
       return {p0 * c[0] + p1 * c[1] + p2 * c[2], {0, 0, 1}};
     }
@@ -76,8 +76,8 @@ class FlatPatches final : public testing::FacePatches {
     const Vec3f bottom = p0 * (1 - u) + p1 * u, top = p3 * (1 - u) + p2 * u;
     return {(bottom * (1 - v) + top * v) * 1.0f, {0, 0, 1}};
   }
-  std::optional<gpu::GpuPatchProgram> gpuProgram() const override {
-    if (domain() != PatchDomain::kQuad) return std::nullopt;
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
+    if (patchDomain(0) != PatchDomain::kQuad) return {};
     gpu::GpuPatchProgram program;
     program.control_shader = "gpu/test_bilinear.tesc";
     program.evaluation_shader =
@@ -93,7 +93,7 @@ class FlatPatches final : public testing::FacePatches {
     }
     program.storage_buffers = {corners};
     if (order_ == Order::kSymmetric) program.specialization = {std::bit_cast<uint32_t>(1.0f)};
-    return program;
+    return {program};
   }
 
  private:
@@ -241,7 +241,7 @@ TEST(Cracks, PhongOnTheCpuComparesEverySharedPointOfTheIcosahedron) {
   const Technique* phong = TechniqueRegistry::instance().find("phong");
   ASSERT_NE(phong, nullptr);
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
-  const auto patches = phong->buildPatches(mesh, phong->variants()[0]);
+  const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
   const CrackFigures f =
       measureCracks(*patches, tess::Spacing::kInteger, 8, CrackBackend::kCpuFloat);
   // Closed icosahedron: 30 edges × 7 interior points; 12 vertices × 5 triangles.
@@ -259,8 +259,8 @@ TEST(Cracks, PhongOnTheDeviceAgreesWithItsCpuModel) {
   // edge project onto different planes); loop_icosahedron has shared normals.
   for (const char* asset : {"opensubdiv/catmark_cube.obj", "opensubdiv/loop_icosahedron.obj"}) {
     const Mesh mesh = loadObjFile(testing::assetPath(asset));
-    const auto patches = phong->buildPatches(mesh, phong->variants()[0]);
-    if (!patches->gpuProgram()) GTEST_SKIP() << "phong has no GPU program on this branch";
+    const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
+    if (patches->gpuPrograms().empty()) GTEST_SKIP() << "phong has no GPU program on this branch";
     const CrackFigures cpu =
         measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kCpuFloat);
     const CrackFigures gpu =

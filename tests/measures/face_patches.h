@@ -18,7 +18,6 @@ namespace tb::testing {
 class FacePatches : public SurfacePatches {
  public:
   explicit FacePatches(Mesh mesh) : mesh_(std::move(mesh)) {}
-  PatchDomain domain() const override { return patchDomain(0); }
   PatchDomain patchDomain(size_t patch) const override {
     return mesh_.faceSize(patch) == 4 ? PatchDomain::kQuad : PatchDomain::kTriangle;
   }

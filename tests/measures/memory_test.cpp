@@ -18,9 +18,9 @@
 namespace tb {
 namespace {
 
-std::unique_ptr<SurfacePatches> phongPatches(const Mesh& mesh) {
+BuiltSurface phongPatches(const Mesh& mesh) {
   const Technique* phong = TechniqueRegistry::instance().find("phong");
-  return phong->buildPatches(mesh, phong->variants()[0]);
+  return buildSurface(*phong, mesh, phong->variants()[0]);
 }
 
 TEST(Memory, ClosedSeamlessMeshObeysEuler) {

@@ -31,8 +31,8 @@ CrackFigures measure(const std::string& technique_id, const std::string& variant
                      const std::string& asset, tess::Spacing spacing, float level,
                      CrackBackend backend, gpu::Context* context) {
   const Technique& technique = *TechniqueRegistry::instance().find(technique_id);
-  const auto patches =
-      technique.buildPatches(loadObjFile(testing::assetPath(asset)), variantOf(technique, variant));
+  const auto patches = buildSurface(technique, loadObjFile(testing::assetPath(asset)),
+                                    variantOf(technique, variant));
   const CrackFigures f = measureCracks(*patches, spacing, level, backend, context);
   std::printf(
       "[cracks] %s/%s %s level %.1f %s: shared edges %llu, points %llu, not bitwise "

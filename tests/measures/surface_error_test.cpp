@@ -70,7 +70,7 @@ TEST(SurfaceError, PhongBulgesAwayFromTheShrunkenLoopLimitOfTheIcosahedron) {
   std::map<double, double> rms_by_alpha;
   for (const VariantInfo& variant : phong->variants()) {
     if (variant.parameters.count("edge") != 0) continue;  // same α as alpha0.75
-    const auto patches = phong->buildPatches(mesh, variant);
+    const auto patches = buildSurface(*phong, mesh, variant);
     const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kLoop);
     rms_by_alpha[variant.parameters.at("alpha")] = measureSurfaceError(*patches, limit).rms_distance;
   }

@@ -46,9 +46,9 @@ void forSupportedAssets(const Case& c, Fn fn) {
   for (const AssetRef& asset : bundledAssets()) {
     const Mesh mesh = loadObjFile(asset.path);
     if (!technique->checkSupport(mesh).empty()) continue;
-    std::unique_ptr<SurfacePatches> patches;
+    BuiltSurface patches;
     try {
-      patches = technique->buildPatches(mesh, variant);
+      patches = buildSurface(*technique, mesh, variant);
     } catch (const UnsupportedInput&) {
       continue;
     }

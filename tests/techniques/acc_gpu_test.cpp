@@ -37,9 +37,10 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
     double worst_normal = 0;
     size_t vertices = 0, shared = 0, differing = 0;
     for (const auto& asset : assets) {
-      const auto patches = AccTechnique().buildPatches(asset.mesh, variant);
-      const auto program = patches->gpuProgram();
-      ASSERT_TRUE(program.has_value());
+      const auto patches = buildSurface(AccTechnique(), asset.mesh, variant);
+      const auto programs = patches->gpuPrograms();
+      ASSERT_EQ(programs.size(), 1u);
+      const gpu::GpuPatchProgram* program = &programs.front();
       for (const LevelCase& lc : {LevelCase{1, tess::Spacing::kInteger},
                                   LevelCase{7.3f, tess::Spacing::kFractionalOdd},
                                   LevelCase{16, tess::Spacing::kInteger}}) {

@@ -53,7 +53,7 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
   size_t checked_faces = 0;
   for (const auto& asset : supportedAssets()) {
     const ref::LimitSurface limit(asset.mesh, ref::Scheme::kCatmullClark);
-    const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed("default"));
+    const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
     const double diag = diagonal(asset.mesh);
     double worst_d = 0, worst_f = 0;
     size_t faces = 0;
@@ -81,7 +81,7 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
 
 double meanNormalAngleDeg(const Mesh& mesh, const std::string& variant) {
   const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
-  const auto patches = AccTechnique().buildPatches(mesh, variantNamed(variant));
+  const auto patches = buildSurface(AccTechnique(), mesh, variantNamed(variant));
   const auto points = domainPoints();
   double sum = 0;
   size_t count = 0;
@@ -112,7 +112,7 @@ TEST(Acc, TangentPatchesBringNormalsCloserToTheLimit) {
 // Oracle: the neighbouring patch evaluated at the same edge point.
 TEST(Acc, SharedEdgesAreC0InDouble) {
   for (const auto& asset : supportedAssets()) {
-    const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed("default"));
+    const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
     const double diag = diagonal(asset.mesh);
     std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
     double worst = 0;
@@ -149,7 +149,7 @@ TEST(Acc, SymmetricOrdersAreBitwiseWatertightInFloat) {
   for (const char* variant : {"default", "symmetric_nofma", "symmetric_edges", "asymmetric"}) {
     size_t shared = 0, differing = 0;
     for (const auto& asset : supportedAssets()) {
-      const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed(variant));
+      const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
       std::map<testing::EdgeKey, Vec3f> seen;
       for (size_t p = 0; p < patches->patchCount(); ++p) {
         for (const tess::DomainPoint& d : points) {
@@ -187,13 +187,14 @@ TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
     EXPECT_EQ(operationCounts().add, 47u);
   }
   const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = AccTechnique().buildPatches(cube, variantNamed("default"));
+  const auto patches = buildSurface(AccTechnique(), cube, variantNamed("default"));
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
   EXPECT_EQ(profile->per_vertex.sqrt, 1u);
   const Mesh torus = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_torus.obj"));
-  const auto regular = AccTechnique().buildPatches(torus, variantNamed("default"))->operationProfile(0);
+  const auto regular =
+      buildSurface(AccTechnique(), torus, variantNamed("default"))->operationProfile(0);
   ASSERT_TRUE(regular.has_value());
   // Valence 3 rings are smaller than valence 4 ones: the cube's set-up is cheaper.
   EXPECT_LT(profile->per_patch_setup.total(), regular->per_patch_setup.total());
@@ -213,16 +214,16 @@ TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
 // Oracle: hand count of corner (valence, boundary) tuples up to rotation.
 TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
   const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
-  EXPECT_EQ(topologyCombinationCount(*AccTechnique().buildPatches(cube, {})), 1u);
+  EXPECT_EQ(topologyCombinationCount(*buildSurface(AccTechnique(), cube, {})), 1u);
   // A 2x1 strip: both quads have corners (2 boundary, 3 boundary, 3 boundary, 2 boundary)
   // in rotated order, so one combination.
   const Mesh strip = loadObjText(
       "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n", "strip");
-  const auto patches = AccTechnique().buildPatches(strip, {});
+  const auto patches = buildSurface(AccTechnique(), strip, {});
   EXPECT_EQ(topologyCombinationCount(*patches), 1u);
   EXPECT_GT(patches->footprint().stencil_bytes, 0u);
   for (const auto& asset : supportedAssets()) {
-    const auto p = AccTechnique().buildPatches(asset.mesh, {});
+    const auto p = buildSurface(AccTechnique(), asset.mesh, {});
     std::printf("%-28s %5zu patches, %3zu topology combinations, stencil %llu bytes\n",
                 asset.name.c_str(), p->patchCount(), topologyCombinationCount(*p),
                 (unsigned long long)p->footprint().stencil_bytes);
@@ -234,7 +235,7 @@ TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
 
 std::string rejection(const std::string& obj) {
   try {
-    AccTechnique().buildPatches(loadObjText(obj, "test.obj"), {});
+    buildSurface(AccTechnique(), loadObjText(obj, "test.obj"), {});
   } catch (const UnsupportedInput& error) {
     EXPECT_EQ(std::string(error.what()), AccTechnique().checkSupport(loadObjText(obj, "test.obj")));
     return error.what();
@@ -352,7 +353,7 @@ TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
       const auto keeps_geometry = [&](uint32_t v) {
         return rings.rings[v].boundary && rings.rings[v].valence != 3;
       };
-      const auto patches = AccTechnique().buildPatches(asset.mesh, variantNamed(variant));
+      const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
       std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
       for (size_t p = 0; p < patches->patchCount(); ++p) {
         const auto c = patches->patchCorners(p);

@@ -13,8 +13,8 @@ class FlatTechnique final : public tb::Technique {
   }
   std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
   std::string checkSupport(const tb::Mesh&) const override { return "example_flat: builds nothing"; }
-  std::unique_ptr<tb::SurfacePatches> buildPatches(const tb::Mesh&,
-                                                   const tb::VariantInfo&) const override {
+  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput&,
+                                               const tb::VariantInfo&) const override {
     throw tb::UnsupportedInput("example_flat: builds nothing");
   }
 };

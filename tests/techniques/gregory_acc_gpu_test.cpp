@@ -50,10 +50,10 @@ gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patche
   return all;
 }
 
-std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant) {
+BuiltSurface build(const Mesh& mesh, const std::string& variant) {
   GregoryAccTechnique technique;
   for (const VariantInfo& info : technique.variants()) {
-    if (info.name == variant) return technique.buildPatches(mesh, info);
+    if (info.name == variant) return buildSurface(technique, mesh, info);
   }
   return nullptr;
 }

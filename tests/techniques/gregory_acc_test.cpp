@@ -50,10 +50,10 @@ double bboxDiagonal(const Mesh& mesh) {
   return length(hi - lo);
 }
 
-std::unique_ptr<SurfacePatches> build(const Mesh& mesh, const std::string& variant = "") {
+BuiltSurface build(const Mesh& mesh, const std::string& variant = "") {
   GregoryAccTechnique technique;
   for (const VariantInfo& info : technique.variants()) {
-    if (variant.empty() || info.name == variant) return technique.buildPatches(mesh, info);
+    if (variant.empty() || info.name == variant) return buildSurface(technique, mesh, info);
   }
   return nullptr;
 }
@@ -199,7 +199,7 @@ std::string rejection(const std::string& obj) {
   const Mesh mesh = loadObjText(obj, "test.obj");
   const std::string reason = technique.checkSupport(mesh);
   try {
-    technique.buildPatches(mesh, technique.variants().front());
+    buildSurface(technique, mesh, technique.variants().front());
     ADD_FAILURE() << "expected UnsupportedInput for " << reason;
   } catch (const UnsupportedInput& error) {
     EXPECT_EQ(reason, error.what());
@@ -319,7 +319,7 @@ TEST(GregoryAccRejects, NoFaces) {
   mesh.positions.push_back({0, 0, 0});
   GregoryAccTechnique technique;
   EXPECT_EQ(technique.checkSupport(mesh), "gregory_acc: empty.obj: has no faces");
-  EXPECT_THROW(technique.buildPatches(mesh, technique.variants().front()), UnsupportedInput);
+  EXPECT_THROW(buildSurface(technique, mesh, technique.variants().front()), UnsupportedInput);
 }
 
 TEST(GregoryAcc, SupportsExactlyTheClosedUntaggedQuadAssets) {
@@ -472,7 +472,7 @@ TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
   // 7 quads, 1 pentagon, 2 hexagons -> 21 + 28 + 5 + 12 quads).
   const auto nonquads = build(load("opensubdiv/catmark_nonquads.obj"), "edge_symmetric");
   EXPECT_EQ(nonquads->patchCount(), 66u);
-  EXPECT_EQ(nonquads->domain(), PatchDomain::kQuad);
+  EXPECT_EQ(nonquads->patchDomain(0), PatchDomain::kQuad);
 }
 
 // Triangle patches on Catmull-Clark triangles, graded by the error measure against the

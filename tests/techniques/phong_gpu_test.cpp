@@ -84,7 +84,7 @@ TEST(PhongEdge, TechniqueVariantAlphaZeroMatchesLinearInterpolation) {
   const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
   VariantInfo flat = variant("edge");
   flat.parameters["alpha"] = 0.0;
-  const auto patches = phong().buildPatches(mesh, flat);
+  const auto patches = buildSurface(phong(), mesh, flat);
   for (size_t p = 0; p < patches->patchCount(); p += 7) {
     const auto corners = patches->patchCorners(p);
     const Vec3d expected = (mesh.positions[corners[0]] * 0.2 + mesh.positions[corners[1]] * 0.3) +
@@ -100,7 +100,7 @@ TEST_P(PhongGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const std::string& asset : testing::triangleAssets()) {
     const auto patches =
-        phong().buildPatches(loadObjFile(testing::assetPath(asset)), variant(GetParam()));
+        buildSurface(phong(), loadObjFile(testing::assetPath(asset)), variant(GetParam()));
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
@@ -126,8 +126,9 @@ TEST(PhongOperations, PlainPhongCountsMatchAHandCount) {
   // Hand count of evaluatePhongInOrder: flat point 9 mul 6 add; per corner: p - p_i 3 add,
   // dot 3 mul 2 add, w·h 1 mul, n·s 3 mul, offset += 3 add => 3 × (7 mul, 8 add); result
   // 3 mul 3 add; normal 9 mul 6 add + normalise (3 mul 2 add, sqrt, div, 3 mul, compare).
-  const auto patches = phong().buildPatches(
-      loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj")), variant("alpha0.75"));
+  const auto patches =
+      buildSurface(phong(), loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj")),
+                   variant("alpha0.75"));
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   EXPECT_EQ(profile->per_vertex.mul, 9u + 21u + 3u + 9u + 6u);
@@ -143,8 +144,8 @@ TEST(PhongOperations, EdgeVariantCostsMorePerVertexThanPlainPhong) {
   // Oracle: seed 003 names the cost of the per-edge extension, more shader instructions;
   // the counts are printed for the report.
   const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
-  const auto plain = phong().buildPatches(mesh, variant("alpha0.75"))->operationProfile(0);
-  const auto edge = phong().buildPatches(mesh, variant("edge"))->operationProfile(0);
+  const auto plain = buildSurface(phong(), mesh, variant("alpha0.75"))->operationProfile(0);
+  const auto edge = buildSurface(phong(), mesh, variant("edge"))->operationProfile(0);
   ASSERT_TRUE(plain.has_value() && edge.has_value());
   for (const auto& [name, p] : {std::pair{"alpha0.75", *plain}, std::pair{"edge", *edge}}) {
     std::printf(

@@ -108,8 +108,8 @@ TEST(PhongPatches, RotationOfTheFaceGivesBitwiseEqualPoints) {
   const char* kB = "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
   const Technique* phong = TechniqueRegistry::instance().find("phong");
   const VariantInfo variant = phong->variants()[0];
-  const auto a = phong->buildPatches(loadObjText(kA, "a.obj"), variant);
-  const auto b = phong->buildPatches(loadObjText(kB, "b.obj"), variant);
+  const auto a = buildSurface(*phong, loadObjText(kA, "a.obj"), variant);
+  const auto b = buildSurface(*phong, loadObjText(kB, "b.obj"), variant);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> unit(0, 1);
   for (int trial = 0; trial < 500; ++trial) {
@@ -126,7 +126,8 @@ TEST(PhongPatches, CurvesTowardTheSphereItApproximates) {
   const char* kOctant =
       "v 1 0 0\nv 0 1 0\nv 0 0 1\nvn 1 0 0\nvn 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//3\n";
   const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const auto patches = phong->buildPatches(loadObjText(kOctant, "octant.obj"), phong->variants()[0]);
+  const auto patches =
+      buildSurface(*phong, loadObjText(kOctant, "octant.obj"), phong->variants()[0]);
   for (int i = 1; i < 10; ++i) {
     for (int j = 1; i + j < 10; ++j) {
       const double u = i / 10.0, v = j / 10.0, w = 1 - u - v;
@@ -140,9 +141,9 @@ TEST(PhongPatches, CurvesTowardTheSphereItApproximates) {
 TEST(PhongPatches, PolygonsAreFanTriangulatedWithAWarning) {
   const Technique* phong = TechniqueRegistry::instance().find("phong");
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = phong->buildPatches(mesh, phong->variants()[0]);
+  const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
   EXPECT_EQ(patches->patchCount(), 12u);
-  EXPECT_EQ(patches->domain(), PatchDomain::kTriangle);
+  EXPECT_EQ(patches->patchDomain(0), PatchDomain::kTriangle);
   ASSERT_FALSE(patches->warnings().empty());
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
   EXPECT_EQ(patches->sourceFace(11), 5u);

@@ -27,7 +27,8 @@ struct GpuAgreement {
 
 inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatches& patches,
                                         tess::Spacing spacing, float level) {
-  const auto program = patches.gpuProgram();
+  const auto programs = patches.gpuPrograms();
+  const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front();
   GpuAgreement result;
   if (!program) return result;
   tess::Levels levels;

@@ -43,7 +43,7 @@ TEST(PnTriangles, InterpolatesCornersAndCornerNormalsExactly) {
   // Oracle: paper §3, b300 = P1 and n200 = N1.
   const Mesh mesh = loadObjText(kCurved, "curved.obj");
   for (const VariantInfo& v : pn().variants()) {
-    const auto patches = pn().buildPatches(mesh, v);
+    const auto patches = buildSurface(pn(), mesh, v);
     for (int corner = 0; corner < 3; ++corner) {
       DomainCoord coord{0, 0, 0};
       coord[corner] = 1;
@@ -67,7 +67,7 @@ TEST(PnTriangles, FlatTriangleWithEqualNormalsStaysFlat) {
   const Mesh mesh = loadObjText(
       "v 0 0 0.5\nv 2 0 0.5\nv 0.25 1.75 0.5\nvn 0 0 1\nf 1//1 2//1 3//1\n", "flat.obj");
   for (const VariantInfo& v : pn().variants()) {
-    const auto patches = pn().buildPatches(mesh, v);
+    const auto patches = buildSurface(pn(), mesh, v);
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; i + j <= 8; ++j) {
         const double u = i / 8.0, w = j / 8.0;
@@ -90,7 +90,7 @@ TEST(PnTriangles, CurvedEdgeBulgesByTheHandComputedControlPoints) {
   // N2 = (3, 0, 4) / 5 => w12 = 0, w21 = -3/5 => b120 = (2 P2 + P1 - w21 N2) / 3.
   const Mesh mesh =
       loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
-  const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
+  const auto patches = buildSurface(pn(), mesh, pn().variants()[0]);
   const Vec3d b210{1.0 / 3, 0, 0};
   const Vec3d n2 = normalize(Vec3d{3, 0, 4});
   const double w21 = dot(Vec3d{-1, 0, 0}, n2);
@@ -106,8 +106,8 @@ TEST(PnTriangles, RotatingTheFaceGivesBitwiseEqualFloatPoints) {
   // set; the same face written from another corner must give the same bits.
   const char* kB =
       "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
-  const auto a = pn().buildPatches(loadObjText(kCurved, "a.obj"), pn().variants()[0]);
-  const auto b = pn().buildPatches(loadObjText(kB, "b.obj"), pn().variants()[0]);
+  const auto a = buildSurface(pn(), loadObjText(kCurved, "a.obj"), pn().variants()[0]);
+  const auto b = buildSurface(pn(), loadObjText(kB, "b.obj"), pn().variants()[0]);
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(0, 1);
   for (int trial = 0; trial < 500; ++trial) {
@@ -118,7 +118,7 @@ TEST(PnTriangles, RotatingTheFaceGivesBitwiseEqualFloatPoints) {
 
 TEST(PnTriangles, FloatFollowsDouble) {
   // Oracle: the double evaluation of the same records; float differs by rounding only.
-  const auto patches = pn().buildPatches(loadObjText(kCurved, "c.obj"), variant("aen"));
+  const auto patches = buildSurface(pn(), loadObjText(kCurved, "c.obj"), variant("aen"));
   for (int i = 0; i <= 10; ++i) {
     const float u = i / 10.0f, v = (1 - u) / 2, w = 1 - u - v;
     const SurfacePoint d = patches->evaluate(0, {u, v, w});
@@ -153,8 +153,8 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
 
 TEST(PnTriangles, BoundaryFlagsStraightenUnsharedEdges) {
   // Oracle: seed 003, an unshared edge with boundary flags is the straight segment.
-  const auto patches = pn().buildPatches(loadObjText(kCurved, "b.obj"), variant("boundary_flags"));
-  const auto plain = pn().buildPatches(loadObjText(kCurved, "b.obj"), variant("pn"));
+  const auto patches = buildSurface(pn(), loadObjText(kCurved, "b.obj"), variant("boundary_flags"));
+  const auto plain = buildSurface(pn(), loadObjText(kCurved, "b.obj"), variant("pn"));
   const SurfacePoint p = patches->evaluate(0, {0.25, 0.75, 0});
   const Mesh mesh = loadObjText(kCurved, "b.obj");
   const Vec3d linear = mesh.positions[0] * 0.25 + mesh.positions[1] * 0.75;
@@ -173,8 +173,8 @@ TEST(PnTriangles, BoundaryFlagsPutTheTJunctionVertexOnTheLongEdge) {
       "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\nf 2//2 6//6 5//5\nf 5//5 6//6 7//7\nf 5//5 7//7 3//3\n";
   const Mesh mesh = loadObjText(kTJunction, "tjunction.obj");
   const Vec3d t_vertex = mesh.positions[4];
-  const auto flagged = pn().buildPatches(mesh, variant("boundary_flags"));
-  const auto plain = pn().buildPatches(mesh, variant("pn"));
+  const auto flagged = buildSurface(pn(), mesh, variant("boundary_flags"));
+  const auto plain = buildSurface(pn(), mesh, variant("pn"));
   // Face 0 = (v1, v2, v3): edge 2-3 is corners 1-2.
   EXPECT_LT(length(flagged->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 1e-15);
   EXPECT_GT(length(plain->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 0.01);
@@ -186,8 +186,8 @@ TEST(PnTriangles, RoundingOnlyFlattensEdges) {
   // Seed 003's rounding scales w_ij by a factor in [0, 1]: every edge point moves toward
   // the straight edge, none away, and the nearly flat edges of this triangle move.
   const Mesh mesh = loadObjText(kCurved, "r.obj");
-  const auto rounded = pn().buildPatches(mesh, variant("rounding"));
-  const auto full = pn().buildPatches(mesh, variant("geometry_normals"));
+  const auto rounded = buildSurface(pn(), mesh, variant("rounding"));
+  const auto full = buildSurface(pn(), mesh, variant("geometry_normals"));
   double moved = 0;
   for (int e = 0; e < 3; ++e) {
     for (int i = 1; i < 8; ++i) {
@@ -206,12 +206,12 @@ TEST(PnTriangles, RoundingOnlyFlattensEdges) {
 
 TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = pn().buildPatches(mesh, pn().variants()[0]);
+  const auto patches = buildSurface(pn(), mesh, pn().variants()[0]);
   EXPECT_EQ(patches->patchCount(), 12u);
   ASSERT_EQ(patches->warnings().size(), 1u);  // catmark_cube.obj has its own normals
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
-  const auto torus = pn().buildPatches(loadObjFile(testing::assetPath("tessbench/tri_torus.obj")),
-                                       pn().variants()[0]);
+  const auto torus = buildSurface(pn(), loadObjFile(testing::assetPath("tessbench/tri_torus.obj")),
+                                  pn().variants()[0]);
   ASSERT_EQ(torus->warnings().size(), 1u);
   EXPECT_NE(torus->warnings()[0].find("normals were computed"), std::string::npos);
 }
@@ -220,12 +220,12 @@ TEST(PnTriangles, MeshWithoutNormalsIsRejectedWithAReason) {
   LoadOptions options;
   options.compute_missing_normals = false;
   const Mesh mesh = loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bare.obj", options);
-  EXPECT_THROW(pn().buildPatches(mesh, pn().variants()[0]), UnsupportedInput);
+  EXPECT_THROW(buildSurface(pn(), mesh, pn().variants()[0]), UnsupportedInput);
 }
 
 TEST(PnTriangles, OperationCountsMatchAHandCount) {
   // Hand count of pn_eval.h evaluateControl (the TES).
-  const auto patches = pn().buildPatches(loadObjText(kCurved, "c.obj"), pn().variants()[0]);
+  const auto patches = buildSurface(pn(), loadObjText(kCurved, "c.obj"), pn().variants()[0]);
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   // Position: 6 (weights) + corners (3 + 9 mul, 6 add) + edges 3 × (6 + 1 + 3 mul, 6 add)
@@ -246,7 +246,7 @@ TEST(PnTriangles, VariantsCostOnlyInTheSetUp) {
   const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
   std::map<std::string, OperationProfile> profiles;
   for (const VariantInfo& v : pn().variants()) {
-    const auto profile = pn().buildPatches(mesh, v)->operationProfile(0);
+    const auto profile = buildSurface(pn(), mesh, v)->operationProfile(0);
     ASSERT_TRUE(profile.has_value());
     profiles[v.name] = *profile;
     std::printf(
@@ -284,7 +284,7 @@ TEST_P(PnGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const std::string& asset : testing::triangleAssets()) {
     const Mesh mesh = loadObjFile(testing::assetPath(asset));
-    const auto patches = pn().buildPatches(mesh, variant(GetParam()));
+    const auto patches = buildSurface(pn(), mesh, variant(GetParam()));
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {

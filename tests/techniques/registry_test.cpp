@@ -26,7 +26,8 @@ TEST(Registry, ListingIsSortedAndDuplicatesAreRefused) {
     }
     std::vector<VariantInfo> variants() const override { return {}; }
     std::string checkSupport(const Mesh&) const override { return {}; }
-    std::unique_ptr<SurfacePatches> buildPatches(const Mesh&, const VariantInfo&) const override {
+    std::unique_ptr<TechniqueInstance> build(const TechniqueInput&,
+                                             const VariantInfo&) const override {
       return nullptr;
     }
   };

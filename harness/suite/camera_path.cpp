@@ -1,0 +1,49 @@
+#include "harness/suite/camera_path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/view/camera.h"
+
+namespace tb {
+
+Aabb boundsOf(const Mesh& mesh) {
+  if (mesh.positions.empty()) return {{-1, -1, -1}, {1, 1, 1}};
+  Aabb box{mesh.positions[0], mesh.positions[0]};
+  for (const Vec3d& p : mesh.positions) {
+    for (int i = 0; i < 3; ++i) {
+      box.min[i] = std::min(box.min[i], p[i]);
+      box.max[i] = std::max(box.max[i], p[i]);
+    }
+  }
+  return box;
+}
+
+CameraPath testOrbitPath(const Aabb& bounds) {
+  constexpr uint32_t kWidthPx = 640, kHeightPx = 480;
+  constexpr double kDegree = std::numbers::pi / 180;
+  const Vec3d centre = 0.5 * (bounds.min + bounds.max);
+  // At least a small radius, so a flat or point-like asset still gets a valid camera.
+  const double radius = std::max(0.5 * length(bounds.max - bounds.min), 1e-3);
+  const double distance = 2.5 * radius;
+  CameraPath path{"test_orbit", {}};
+  for (double azimuth_deg : {0.0, 120.0, 240.0}) {
+    const double azimuth = azimuth_deg * kDegree, elevation = 20 * kDegree;
+    const Vec3d eye =
+        centre + distance * Vec3d{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                                  std::cos(elevation) * std::cos(azimuth)};
+    View view;
+    // Near and far planes just outside the bounding sphere (distance is 2.5 radii).
+    view.view_projection = perspective(60 * kDegree, double(kWidthPx) / kHeightPx,
+                                       distance - 1.01 * radius, distance + 1.01 * radius) *
+                           lookAt(eye, centre, {0, 1, 0});
+    view.viewport_width_px = kWidthPx;
+    view.viewport_height_px = kHeightPx;
+    view.target_pixels_per_edge = 8;
+    path.views.push_back(view);
+  }
+  return path;
+}
+
+}  // namespace tb

@@ -1,0 +1,36 @@
+#include "harness/suite/measure_rule.h"
+
+namespace tb {
+
+Capabilities expectedCapabilities(const Technique& technique) {
+  const bool surface = technique.info().family == TechniqueFamily::kSurface;
+  return {surface, !surface};
+}
+
+Capabilities capabilitiesOf(const TechniqueInstance& instance) {
+  return {instance.surface() != nullptr, instance.simulation() != nullptr};
+}
+
+namespace {
+bool policyAdmits(VariantPolicy policy, const VariantStanding& standing) {
+  switch (policy) {
+    case VariantPolicy::kDefaultOnly:
+      return standing.is_default;
+    case VariantPolicy::kEveryVariant:
+      return true;
+    case VariantPolicy::kWhenPatchDataDiffers:
+      return standing.is_default || standing.own_patch_data;
+  }
+  return false;
+}
+}  // namespace
+
+bool measureRuns(const MeasureRequirements& requirements, const Technique& technique,
+                 const Capabilities& capabilities, const VariantStanding& standing) {
+  if (requirements.has(MeasureNeed::kSurface) && !capabilities.surface) return false;
+  if (requirements.has(MeasureNeed::kSimulation) && !capabilities.simulation) return false;
+  if (requirements.technique_filter && !requirements.technique_filter(technique)) return false;
+  return policyAdmits(requirements.variants, standing);
+}
+
+}  // namespace tb

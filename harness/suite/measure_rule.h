@@ -1,0 +1,37 @@
+// The one rule that decides whether a measure runs on a technique instance × variant ×
+// asset, from the measure's MeasureRequirements (harness/measures/measure.h).
+#pragma once
+
+#include "harness/measures/measure.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+// Which capabilities an instance has (or, before it is built, will have).
+struct Capabilities {
+  bool surface = false;
+  bool simulation = false;
+};
+
+// Before building: what the technique's family promises (a surface technique builds
+// surfaces, a simulation technique simulations), to avoid building instances no measure
+// would use.
+Capabilities expectedCapabilities(const Technique& technique);
+Capabilities capabilitiesOf(const TechniqueInstance& instance);
+
+// Where the variant stands on the asset.
+struct VariantStanding {
+  bool is_default = false;  // the technique's first variant
+  // The variant's patch data differ from the default variant's on this asset. Before the
+  // instance is built: whether they may (the default's footprint is known).
+  bool own_patch_data = false;
+};
+
+// True when every need the suite decides on (surface, simulation) is met, the technique
+// passes the requirement's filter, and the variant policy admits the variant. kView and
+// kGpu never stop a measure: the suite supplies views, and a measure without a device
+// reports its GPU parts skipped.
+bool measureRuns(const MeasureRequirements& requirements, const Technique& technique,
+                 const Capabilities& capabilities, const VariantStanding& standing);
+
+}  // namespace tb

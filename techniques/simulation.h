@@ -1,0 +1,81 @@
+// The simulation capability of a technique instance (TechniqueInstance::simulation()):
+// what a simulation technique (wave particles, mass-spring) gives the harness. The
+// scenario is its input, step(dt) advances it on the CPU twin, state() reads it back in
+// named float channels, gpuPrograms() are its Vulkan compute passes as plain data, and
+// footprint() the bytes it keeps resident. See docs/ARCHITECTURE.md.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/gpu/compute_program_desc.h"
+
+namespace tb {
+
+// The input of a simulation, in place of (or beside) a mesh asset. Issue 18 reads it from
+// a scenario JSON file and adds its structured fields here (walls, sources, bones); a
+// technique reads only the fields it needs and throws UnsupportedInput naming the field
+// it misses.
+struct Scenario {
+  std::string name;        // "point_impulse"; the record's asset column in results
+  std::string path;        // the file it came from; empty for scenarios built in code
+  double time_step_s = 0;  // simulated seconds per step; > 0
+  double duration_s = 0;   // simulated seconds a run covers; >= time_step_s
+  // Scalar settings, each documented with its unit by the scenario format
+  // (e.g. {"domain_size_m": 10}); keys are snake_case with the unit as suffix.
+  std::map<std::string, double> parameters;
+  size_t stepCount() const { return time_step_s > 0 ? size_t(duration_s / time_step_s + 0.5) : 0; }
+};
+
+// One named array of the simulation state, element-major: element e's components are
+// values[e * components .. e * components + components - 1].
+struct StateChannel {
+  std::string name;           // "position", "velocity", "amplitude"
+  std::string unit;           // "m", "m/s", "1" (dimensionless)
+  uint32_t components = 1;    // 3 for a position in 3-D, 2 for a particle origin
+  std::vector<float> values;  // float: what the GPU holds, so CPU and GPU compare in ulp
+};
+
+// The state read back after a step: the same channels, in the same element order, from
+// the CPU twin and from the GPU (the comparison's two sides).
+struct SimulationState {
+  double time_s = 0;         // simulated seconds since the scenario start
+  size_t element_count = 0;  // particles alive, mass points; every channel has this many
+  std::vector<StateChannel> channels;
+  const StateChannel* find(const std::string& name) const {
+    for (const StateChannel& channel : channels) {
+      if (channel.name == name) return &channel;
+    }
+    return nullptr;
+  }
+};
+
+// Bytes a simulation keeps resident on the GPU for its scenario.
+struct SimulationFootprint {
+  uint64_t state_bytes = 0;      // the per-element state (both ping-pong copies when it has two)
+  uint64_t auxiliary_bytes = 0;  // topology, constraint batches, acceleration trees, counters
+  uint64_t total() const { return state_bytes + auxiliary_bytes; }
+  bool operator==(const SimulationFootprint&) const = default;
+};
+
+class Simulation {
+ public:
+  virtual ~Simulation() = default;
+  virtual const Scenario& scenario() const = 0;
+  // Advances the CPU twin by dt_s simulated seconds (> 0; usually scenario().time_step_s).
+  virtual void step(double dt_s) = 0;
+  virtual SimulationState state() const = 0;
+  // The Vulkan compute programs of one step, run by core/gpu; empty when there is no GPU
+  // path. They start from the state at time 0.
+  virtual std::vector<gpu::GpuComputeProgram> gpuPrograms() const { return {}; }
+  virtual SimulationFootprint footprint() const = 0;
+  // Non-fatal notes gathered while building; none by default.
+  virtual const std::vector<std::string>& warnings() const {
+    static const std::vector<std::string> kNone;
+    return kNone;
+  }
+};
+
+}  // namespace tb

@@ -1,0 +1,279 @@
+// The capabilities, the view axis and the measure rule through runSuite, with test doubles
+// (capability_doubles.h) and test-only measures; nothing here is registered.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "harness/suite/measure_rule.h"
+#include "harness/suite/suite.h"
+#include "tests/suite/capability_doubles.h"
+
+namespace tb {
+namespace {
+
+using testing::SimulationDoubleTechnique;
+using testing::SurfaceDoubleTechnique;
+
+// Needs a surface: one row with the patch count.
+class SurfaceCountMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{"test_surface_count", "patches", "patch count"};
+    return kInfo;
+  }
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
+  }
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    result.rows.push_back({{}, {{"patches", double(input.patches->patchCount()), "count"}}});
+    return result;
+  }
+};
+
+// Needs a simulation: steps it through the scenario and reads the state back.
+class SimulationStepMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{"test_simulation_steps", "steps", "state after the scenario"};
+    return kInfo;
+  }
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSimulation}, VariantPolicy::kDefaultOnly, {}};
+  }
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    Simulation& simulation = *input.simulation;
+    const double start_s = simulation.state().time_s;
+    const size_t steps = simulation.scenario().stepCount();
+    for (size_t i = 0; i < steps; ++i) simulation.step(simulation.scenario().time_step_s);
+    const SimulationState state = simulation.state();
+    const StateChannel* position = state.find("position");
+    result.rows.push_back({{},
+                           {{"start_time", start_s, "s"},
+                            {"time", state.time_s, "s"},
+                            {"elements", double(state.element_count), "count"},
+                            {"last_position", double(position->values.back()), "m"},
+                            {"state_bytes", double(simulation.footprint().state_bytes), "bytes"}}});
+    return result;
+  }
+};
+
+// Needs a surface and a view: the pixel the asset's first vertex projects to.
+class ViewMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{"test_view", "view", "projected first vertex"};
+    return kInfo;
+  }
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface, MeasureNeed::kView}, VariantPolicy::kDefaultOnly, {}};
+  }
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    const Vec3d p = input.patches->controlMesh().positions[0];
+    const ProjectedPoint px = projectToPixels(*input.view, p.x, p.y, p.z);
+    result.rows.push_back({{{"level", "1"}},
+                           {{"x", px.x_px, "px"},
+                            {"y", px.y_px, "px"},
+                            {"width", double(input.view->viewport_width_px), "px"}}});
+    return result;
+  }
+};
+
+const Metric& metric(const MetricRow& row, const std::string& name) {
+  for (const Metric& m : row.metrics) {
+    if (m.name == name) return m;
+  }
+  throw std::runtime_error("no metric " + name);
+}
+
+TEST(Capabilities, SurfaceAndSimulationDoublesRunThroughTheSuiteWithTheMeasuresThatNeedThem) {
+  const SurfaceDoubleTechnique surface;
+  const SimulationDoubleTechnique chain;
+  const SurfaceCountMeasure surface_measure;
+  const SimulationStepMeasure simulation_measure;
+  SuiteSelection selection;
+  selection.techniques = {&surface, &chain};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.scenarios = {testing::chainScenario()};
+  selection.measures = {&simulation_measure, &surface_measure};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  EXPECT_TRUE(results.skipped.empty());
+  ASSERT_EQ(results.records.size(), 3u);  // the surface's two variants, the chain's one
+  for (const Record& record : results.records) {
+    ASSERT_EQ(record.measures.size(), 1u) << record.technique;
+    ASSERT_EQ(record.measures[0].rows.size(), 1u);
+    const MetricRow& row = record.measures[0].rows[0];
+    if (record.technique == "test_flat_faces") {
+      EXPECT_EQ(record.asset, "opensubdiv/catmark_cube");
+      EXPECT_EQ(record.measures[0].measure, "test_surface_count");
+      EXPECT_EQ(metric(row, "patches").value, 6);
+    } else {
+      EXPECT_EQ(record.technique, "test_spring_chain");
+      EXPECT_EQ(record.asset, "test/chain");
+      EXPECT_EQ(record.measures[0].measure, "test_simulation_steps");
+      EXPECT_EQ(metric(row, "start_time").value, 0);
+      EXPECT_NEAR(metric(row, "time").value, 0.1, 1e-12);
+      EXPECT_EQ(metric(row, "elements").value, 4);
+      EXPECT_EQ(metric(row, "state_bytes").value, 32);
+      // Stretched springs pull the free end back from its start at 6 m.
+      EXPECT_LT(metric(row, "last_position").value, 6);
+    }
+  }
+}
+
+TEST(Capabilities, EachSimulationMeasureGetsAFreshSimulation) {
+  const SimulationDoubleTechnique chain;
+  const SimulationStepMeasure simulation_measure;
+  const ViewMeasure view_measure;  // needs a surface: never runs on the chain
+  SuiteSelection selection;
+  selection.techniques = {&chain};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.scenarios = {testing::chainScenario(), testing::chainScenario()};
+  selection.measures = {&simulation_measure, &view_measure};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  ASSERT_EQ(results.records.size(), 2u);
+  for (const Record& record : results.records) {
+    ASSERT_EQ(record.measures.size(), 1u);
+    EXPECT_EQ(metric(record.measures[0].rows[0], "start_time").value, 0);
+  }
+}
+
+TEST(Capabilities, RegisteredMeasuresNeedASurfaceAndSkipASimulation) {
+  const SimulationDoubleTechnique chain;
+  SuiteSelection selection;
+  selection.techniques = {&chain};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.scenarios = {testing::chainScenario()};
+  Results results;
+  runSuite(selection, nullptr, &results);  // every registered measure, seed_figures included
+  EXPECT_TRUE(results.records.empty());
+  EXPECT_TRUE(results.skipped.empty());
+}
+
+TEST(Capabilities, AViewMeasureRunsOncePerViewOfTheTestPathWithTheViewAsRowKeys) {
+  const SurfaceDoubleTechnique surface;
+  const ViewMeasure view_measure;
+  SuiteSelection selection;
+  selection.techniques = {&surface};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.measures = {&view_measure};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  ASSERT_EQ(results.records.size(), 1u);  // kDefaultOnly
+  const MeasureResult& result = results.records[0].measures.at(0);
+  EXPECT_EQ(result.status, MeasureStatus::kOk);
+  ASSERT_EQ(result.rows.size(), 3u);
+  for (size_t v = 0; v < 3; ++v) {
+    const std::map<std::string, std::string> keys{
+        {"camera_path", "test_orbit"}, {"level", "1"}, {"view", std::to_string(v)}};
+    EXPECT_EQ(result.rows[v].keys, keys);
+    EXPECT_EQ(metric(result.rows[v], "width").value, 640);
+    // The cube's corner is inside the viewport from every side.
+    EXPECT_GT(metric(result.rows[v], "x").value, 0);
+    EXPECT_LT(metric(result.rows[v], "x").value, 640);
+    EXPECT_GT(metric(result.rows[v], "y").value, 0);
+    EXPECT_LT(metric(result.rows[v], "y").value, 480);
+  }
+  // Three different views: the corner lands on different pixels.
+  EXPECT_NE(metric(result.rows[0], "x").value, metric(result.rows[1], "x").value);
+}
+
+TEST(Capabilities, EveryCameraPathOfTheSelectionIsWalked) {
+  const SurfaceDoubleTechnique surface;
+  const ViewMeasure view_measure;
+  SuiteSelection selection;
+  selection.techniques = {&surface};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.measures = {&view_measure};
+  selection.camera_paths = {testOrbitPath, [](const Aabb&) {
+                              return CameraPath{"two_identity_views", {View{}, View{}}};
+                            }};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  ASSERT_EQ(results.records.size(), 1u);
+  const std::vector<MetricRow>& rows = results.records[0].measures.at(0).rows;
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[3].keys.at("camera_path"), "two_identity_views");
+  EXPECT_EQ(rows[4].keys.at("view"), "1");
+}
+
+TEST(CameraPath, TestOrbitLooksAtTheBoxCentreInVulkanConventions) {
+  const Aabb box{{-1, -2, -3}, {3, 2, 1}};
+  const CameraPath path = testOrbitPath(box);
+  ASSERT_EQ(path.views.size(), 3u);
+  for (const View& view : path.views) {
+    const ProjectedPoint centre = projectToPixels(view, 1, 0, -1);
+    EXPECT_GT(centre.clip_w, 0);
+    EXPECT_NEAR(centre.x_px, 320, 1e-9);
+    EXPECT_NEAR(centre.y_px, 240, 1e-9);
+    // Vulkan clip space: y down, so a point above the centre has a smaller pixel y.
+    EXPECT_LT(projectToPixels(view, 1, 1, -1).y_px, 240);
+    // Depth in [0, 1] for the centre (between the near and far planes).
+    const auto clip = view.view_projection.transform({1, 0, -1, 1});
+    EXPECT_GT(clip[2] / clip[3], 0);
+    EXPECT_LT(clip[2] / clip[3], 1);
+  }
+}
+
+// The rule against the two booleans it replaces (dependsOnVariant, dependsOnPatchData):
+// default variant always; others when the measure follows the variant, or follows the
+// patch data and this variant's differ.
+TEST(MeasureRule, VariantPoliciesMatchTheFormerBooleans) {
+  const SurfaceDoubleTechnique surface;
+  const Capabilities caps{true, false};
+  struct Case {
+    VariantPolicy policy;
+    bool depends_on_variant, depends_on_patch_data;
+  };
+  for (const Case& c : {Case{VariantPolicy::kDefaultOnly, false, false},
+                        Case{VariantPolicy::kEveryVariant, true, false},
+                        Case{VariantPolicy::kWhenPatchDataDiffers, false, true}}) {
+    for (bool is_default : {false, true}) {
+      for (bool own : {false, true}) {
+        const bool former = is_default || c.depends_on_variant || (c.depends_on_patch_data && own);
+        EXPECT_EQ(
+            measureRuns({{MeasureNeed::kSurface}, c.policy, {}}, surface, caps, {is_default, own}),
+            former);
+      }
+    }
+  }
+  // Needs decide before the policy; kView and kGpu never stop a measure.
+  EXPECT_FALSE(measureRuns({{MeasureNeed::kSimulation}, VariantPolicy::kEveryVariant, {}}, surface,
+                           caps, {true, true}));
+  EXPECT_TRUE(measureRuns({{MeasureNeed::kSurface, MeasureNeed::kView, MeasureNeed::kGpu},
+                           VariantPolicy::kEveryVariant,
+                           {}},
+                          surface, caps, {true, true}));
+  EXPECT_FALSE(measureRuns({{MeasureNeed::kSurface},
+                            VariantPolicy::kEveryVariant,
+                            [](const Technique&) { return false; }},
+                           surface, caps, {true, true}));
+}
+
+TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
+  const auto requirements = [](const char* id) {
+    return MeasureRegistry::instance().find(id)->requirements();
+  };
+  EXPECT_EQ(requirements("memory").variants, VariantPolicy::kWhenPatchDataDiffers);
+  EXPECT_EQ(requirements("cracks").variants, VariantPolicy::kEveryVariant);
+  EXPECT_EQ(requirements("instructions").variants, VariantPolicy::kEveryVariant);
+  EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryVariant);
+  EXPECT_EQ(requirements("seed_figures").variants, VariantPolicy::kDefaultOnly);
+  for (const Measure* measure : MeasureRegistry::instance().all()) {
+    EXPECT_TRUE(measure->requirements().has(MeasureNeed::kSurface)) << measure->info().id;
+  }
+  // seed_figures: only the technique with the probe shader.
+  const SurfaceDoubleTechnique surface;
+  EXPECT_FALSE(requirements("seed_figures").technique_filter(surface));
+}
+
+}  // namespace
+}  // namespace tb

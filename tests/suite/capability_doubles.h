@@ -1,0 +1,142 @@
+// Test doubles of the two technique capabilities, registered nowhere (tests pass them to
+// runSuite through SuiteSelection): a surface technique whose patch p is face p of the
+// asset, flat, and a simulation technique, a 1-D chain of masses and springs. Neither is
+// a real technique.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "techniques/technique.h"
+
+namespace tb::testing {
+
+// Flat bilinear quads and flat triangles over the asset's faces.
+class FlatFacePatches final : public SurfacePatches {
+ public:
+  explicit FlatFacePatches(const Mesh& mesh) : mesh_(mesh) {}
+  PatchDomain patchDomain(size_t patch) const override {
+    return mesh_.faceSize(patch) == 4 ? PatchDomain::kQuad : PatchDomain::kTriangle;
+  }
+  size_t patchCount() const override { return mesh_.faceCount(); }
+  const Mesh& controlMesh() const override { return mesh_; }
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    std::array<uint32_t, 4> corners{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
+    const auto face = mesh_.facePositions(patch);
+    for (size_t k = 0; k < face.size() && k < 4; ++k) corners[k] = face[k];
+    return corners;
+  }
+  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
+    const auto face = mesh_.facePositions(patch);
+    const auto at = [&](size_t k) { return mesh_.positions[face[k]]; };
+    if (patchDomain(patch) == PatchDomain::kTriangle) {
+      return {c[0] * at(0) + c[1] * at(1) + c[2] * at(2), {0, 0, 0}};
+    }
+    const Vec3d bottom = (1 - c[0]) * at(0) + c[0] * at(1), top = (1 - c[0]) * at(3) + c[0] * at(2);
+    return {(1 - c[1]) * bottom + c[1] * top, {0, 0, 0}};
+  }
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
+    const SurfacePoint p = evaluate(patch, {c[0], c[1], c[2]});
+    return {vecCast<float>(p.position), {0, 0, 0}};
+  }
+  DataFootprint footprint() const override { return {}; }
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+ private:
+  Mesh mesh_;
+  std::vector<std::string> warnings_;
+};
+
+class SurfaceDoubleTechnique final : public Technique {
+ public:
+  const TechniqueInfo& info() const override {
+    static const TechniqueInfo kInfo{"test_flat_faces", TechniqueFamily::kSurface,
+                                     "Flat faces (test double)", "none", "any polygon mesh"};
+    return kInfo;
+  }
+  std::vector<VariantInfo> variants() const override {
+    return {{"default", "flat", {}}, {"other", "the same, another name", {{"unused", 1}}}};
+  }
+  std::string checkSupport(const Mesh&) const override { return {}; }
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo&) const override {
+    return std::make_unique<SurfaceInstance>(
+        std::make_unique<FlatFacePatches>(requireMesh(info(), input)));
+  }
+};
+
+// A chain of `masses` point masses of 1 kg on a line, joined by springs of rest length
+// 1 m and stiffness "stiffness_n_per_m"; mass 0 is fixed at x = 0, the others start
+// stretched to twice the rest length. Semi-implicit (symplectic) Euler.
+class SpringChain final : public Simulation {
+ public:
+  explicit SpringChain(const Scenario& scenario) : scenario_(scenario) {
+    const size_t masses = size_t(scenario.parameters.at("masses"));
+    stiffness_ = scenario.parameters.at("stiffness_n_per_m");
+    for (size_t i = 0; i < masses; ++i) x_.push_back(2.0 * double(i));
+    v_.assign(masses, 0.0);
+  }
+  const Scenario& scenario() const override { return scenario_; }
+  void step(double dt_s) override {
+    std::vector<double> force(x_.size(), 0.0);  // newtons
+    for (size_t i = 0; i + 1 < x_.size(); ++i) {
+      const double f = stiffness_ * ((x_[i + 1] - x_[i]) - kRestLengthM);
+      force[i] += f;
+      force[i + 1] -= f;
+    }
+    for (size_t i = 1; i < x_.size(); ++i) {  // mass 0 is fixed
+      v_[i] += dt_s * force[i] / kMassKg;
+      x_[i] += dt_s * v_[i];
+    }
+    time_s_ += dt_s;
+  }
+  SimulationState state() const override {
+    SimulationState s;
+    s.time_s = time_s_;
+    s.element_count = x_.size();
+    StateChannel position{"position", "m", 1, {}}, velocity{"velocity", "m/s", 1, {}};
+    for (size_t i = 0; i < x_.size(); ++i) {
+      position.values.push_back(float(x_[i]));
+      velocity.values.push_back(float(v_[i]));
+    }
+    s.channels = {position, velocity};
+    return s;
+  }
+  SimulationFootprint footprint() const override {
+    return {x_.size() * 2 * sizeof(float), 0};  // position + velocity per mass, in float
+  }
+
+ private:
+  static constexpr double kMassKg = 1, kRestLengthM = 1;
+  Scenario scenario_;
+  double stiffness_ = 0;
+  double time_s_ = 0;
+  std::vector<double> x_, v_;  // metres, metres per second
+};
+
+class SimulationDoubleTechnique final : public Technique {
+ public:
+  const TechniqueInfo& info() const override {
+    static const TechniqueInfo kInfo{"test_spring_chain", TechniqueFamily::kSimulation,
+                                     "1-D spring chain (test double)", "none",
+                                     "a scenario with masses and stiffness_n_per_m"};
+    return kInfo;
+  }
+  std::vector<VariantInfo> variants() const override { return {{"default", "Euler", {}}}; }
+  std::string checkSupport(const Mesh&) const override {
+    return "test_spring_chain: takes a scenario";
+  }
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo&) const override {
+    if (input.scenario == nullptr) throw UnsupportedInput("test_spring_chain: needs a scenario");
+    return std::make_unique<SimulationInstance>(std::make_unique<SpringChain>(*input.scenario));
+  }
+};
+
+inline Scenario chainScenario() {
+  return {"test/chain", "", 0.01, 0.1, {{"masses", 4}, {"stiffness_n_per_m", 10}}};
+}
+
+}  // namespace tb::testing
