@@ -13,7 +13,7 @@ layout(constant_id = 1) const uint kUseScale = 0u;  // per-edge scale of w_ij (b
 
 layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Normals { vec4 normals[]; };
-// 24 words per patch, see pn_build.h PnRecordWord.
+// 24 words per patch, see techniques/common/triangle_records.h TriangleRecordWord.
 layout(std430, set = 0, binding = 3) readonly buffer Records { uint records[]; };
 
 layout(location = 0) patch out vec3 tb_pn_b[10];  // corners 0..2, edge e end k at 3 + 2e + k, centre 9

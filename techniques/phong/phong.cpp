@@ -7,7 +7,7 @@
 #include "techniques/common/triangle_patches.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"
-#include "techniques/pn_triangles/pn_build.h"
+#include "techniques/common/triangle_records.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
 
@@ -20,8 +20,8 @@ constexpr uint32_t kPhongRecordWords = 15;
 // The `edge` variant borrows pn_triangles' per-patch records: the canonical corner order
 // by position, seed 003's geometry normals and edge flags (a flagged, i.e. split, edge
 // uses the geometry normals at its ends; other edges the shading normals).
-pn_triangles::PnOptions edgeOptions() {
-  pn_triangles::PnOptions options;
+TriangleRecordOptions edgeOptions() {
+  TriangleRecordOptions options;
   options.geometry_normals = true;
   return options;
 }
@@ -30,7 +30,7 @@ class PhongPatches final : public TrianglePatchesBase {
  public:
   PhongPatches(Triangulation triangulation, double alpha, bool edge)
       : TrianglePatchesBase(std::move(triangulation)), alpha_(alpha), edge_(edge) {
-    if (edge_) edge_build_ = pn_triangles::buildPnRecords(tri_.mesh, edgeOptions());
+    if (edge_) edge_build_ = buildTriangleRecords(tri_.mesh, edgeOptions());
   }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
@@ -149,7 +149,7 @@ class PhongPatches final : public TrianglePatchesBase {
     const Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     if (edge_) {
-      const pn_triangles::PnRecord& pr = edge_build_.records[patch];
+      const TriangleRecord& pr = edge_build_.records[patch];
       for (int i = 0; i < 3; ++i) {
         r[i] = pr.perm[i];
         r[3 + i] = pr.position[i];
@@ -175,7 +175,7 @@ class PhongPatches final : public TrianglePatchesBase {
     return r;
   }
 
-  static uint32_t edgeNormalIndex(const pn_triangles::PnRecord& r, int e, int end) {
+  static uint32_t edgeNormalIndex(const TriangleRecord& r, int e, int end) {
     const int a = kPhongEdgeEnds[e][0], b = kPhongEdgeEnds[e][1];
     const int label = kPhongEdgeEnds[e][end];
     const bool flagged = ((r.flags[a] & r.flags[b]) & (1u << e)) != 0;
@@ -184,7 +184,7 @@ class PhongPatches final : public TrianglePatchesBase {
 
   template <class T, class Cast>
   PhongEdgeTriangle<T> edgeTriangle(size_t patch, Cast cast) const {
-    const pn_triangles::PnRecord& r = edge_build_.records[patch];
+    const TriangleRecord& r = edge_build_.records[patch];
     PhongEdgeTriangle<T> tri;
     for (int i = 0; i < 3; ++i) {
       tri.position[i] = cast(tri_.mesh.positions[r.position[i]]);
@@ -200,7 +200,7 @@ class PhongPatches final : public TrianglePatchesBase {
 
   double alpha_;
   bool edge_;
-  pn_triangles::PnBuild edge_build_;
+  TriangleRecords edge_build_;
 };
 
 }  // namespace

@@ -10,11 +10,9 @@
 #include <array>
 
 #include "core/mesh/vec.h"
+#include "techniques/common/triangle_records.h"  // kEdgeEnds
 
 namespace tb::pn_triangles {
-
-// Edges in canonical order: edge e joins labels kEdgeEnds[e][0] < kEdgeEnds[e][1].
-inline constexpr int kEdgeEnds[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 template <class T>
 struct PnInput {

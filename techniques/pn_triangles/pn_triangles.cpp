@@ -13,10 +13,10 @@ namespace {
 
 class PnPatches final : public TrianglePatchesBase {
  public:
-  PnPatches(Triangulation triangulation, const PnOptions& options)
+  PnPatches(Triangulation triangulation, const TriangleRecordOptions& options)
       : TrianglePatchesBase(std::move(triangulation)),
         options_(options),
-        build_(buildPnRecords(tri_.mesh, options_)) {}
+        build_(buildTriangleRecords(tri_.mesh, options_)) {}
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const PnControl<double> control =
@@ -79,8 +79,8 @@ class PnPatches final : public TrianglePatchesBase {
   }
 
  private:
-  PnOptions options_;
-  PnBuild build_;
+  TriangleRecordOptions options_;
+  TriangleRecords build_;
 };
 
 }  // namespace
@@ -131,7 +131,7 @@ std::unique_ptr<TechniqueInstance> PnTrianglesTechnique::build(const TechniqueIn
   const Mesh& mesh = requireMesh(info(), input);
   if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
   // Every switch is off and rounding is 0 unless the variant sets it.
-  PnOptions options;
+  TriangleRecordOptions options;
   options.geometry_normals = paramOr<bool>(info(), variant, "geometry_normals", false);
   options.boundary_flags = paramOr<bool>(info(), variant, "boundary_flags", false);
   options.aen = paramOr<bool>(info(), variant, "aen", false);

@@ -132,9 +132,9 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
   // Hand count: a cube has 12 hard edges (split normals) and 6 face diagonals (normals
   // agree); every corner's geometry normal is (±1, ±1, ±1)/√3.
   const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
-  PnOptions options;
+  TriangleRecordOptions options;
   options.geometry_normals = true;
-  const PnBuild build = buildPnRecords(mesh, options);
+  const TriangleRecords build = buildTriangleRecords(mesh, options);
   EXPECT_EQ(build.split_edges, 12u);
   EXPECT_EQ(build.boundary_edges, 0u);
   EXPECT_EQ(build.geometry_normal_count, 8u);
@@ -143,7 +143,7 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
       EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
   }
   size_t flagged_edges = 0;
-  for (const PnRecord& r : build.records) {
+  for (const TriangleRecord& r : build.records) {
     for (int e = 0; e < 3; ++e) {
       flagged_edges += ((r.flags[kEdgeEnds[e][0]] & r.flags[kEdgeEnds[e][1]]) >> e) & 1u;
     }
