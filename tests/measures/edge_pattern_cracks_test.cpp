@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <set>
 #include <string>
 
@@ -186,6 +187,57 @@ TEST(EdgePatternCracks, CrackingVariantsStillOpenGapsInTheLavapipeCapture) {
     EXPECT_EQ(f.unpaired_points, 0u) << name(c, spacing);
     EXPECT_EQ(f.device_max_ulp, 0u) << name(c, spacing) << ": capture vs evaluateFloat";
   }
+}
+
+// The pattern's symmetry is what the pairing needs: give one side of a shared edge
+// another level and its points no longer pair (so a broken pattern would show).
+TEST(EdgePatternCracks, ALevelThatDiffersAcrossASharedEdgeLeavesUnpairedPoints) {
+  const auto patches = build({"acc", "default", "opensubdiv/catmark_cube.obj"});
+  std::vector<tess::Levels> levels = edgePatternLevels(*patches, tess::Spacing::kInteger, kBase);
+  const SharedBoundaries shared = findSharedBoundaries(*patches);
+  ASSERT_FALSE(shared.edges.empty());
+  const PatchSide& side = shared.edges[0].sides[0];
+  levels[side.patch].outer[outerIndex(PatchDomain::kQuad, side.local)] += 1;
+  const CrackFigures f =
+      measureCracks(*patches, tess::Spacing::kInteger, levels, CrackBackend::kCpuFloat);
+  EXPECT_GT(f.unpaired_points, 0u);
+}
+
+// The measure's pattern rows: keyed levels = edge_pattern (base level 7, every spacing, both
+// backends), apart from the uniform rows, which keep their keys (no levels key), and no
+// two rows share keys.
+TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
+  const Technique* acc = TechniqueRegistry::instance().find("acc");
+  const Measure* measure = MeasureRegistry::instance().find("cracks");
+  ASSERT_NE(acc, nullptr);
+  ASSERT_NE(measure, nullptr);
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const VariantInfo variant = acc->variants()[0];
+  const auto patches = acc->buildPatches(mesh, variant);
+  std::string reason;
+  gpu::Context* context = gpu::testing::sharedContext(&reason);
+  const MeasureResult result = measure->run(
+      {*acc, variant, "catmark_cube", mesh, patches.get(), context, context ? "" : reason});
+  std::set<std::map<std::string, std::string>> keys;
+  size_t pattern_rows = 0, uniform_rows = 0;
+  for (const MetricRow& row : result.rows) {
+    EXPECT_TRUE(keys.insert(row.keys).second) << "duplicate row keys";
+    if (!row.keys.contains("levels")) {
+      uniform_rows += row.keys.contains("level") ? 1 : 0;
+      continue;
+    }
+    ++pattern_rows;
+    EXPECT_EQ(row.keys.at("levels"), "edge_pattern");
+    EXPECT_EQ(row.keys.at("level"), "7");
+    EXPECT_FALSE(row.keys.contains("note")) << row.keys.at("note");
+    for (const Metric& metric : row.metrics) {
+      if (metric.name == "points_not_equal" || metric.name == "unpaired_points") {
+        EXPECT_EQ(metric.value, 0) << metric.name;
+      }
+    }
+  }
+  EXPECT_EQ(pattern_rows, context ? 8u : 4u);
+  EXPECT_EQ(uniform_rows, context ? 32u : 16u);
 }
 
 }  // namespace
