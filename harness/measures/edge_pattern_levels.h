@@ -1,7 +1,7 @@
 // A fixed, non-uniform set of per-patch tessellation levels for the crack measure: every
 // edge gets its own level, yet two patches that share an edge always give it the same
-// one, so a watertight technique must stay watertight under it (ARCHITECTURE.md, the
-// watertightness rules). It stands in for the adaptive factors of later measures.
+// one, so a watertight technique must stay watertight under it (docs/ARCHITECTURE.md,
+// the watertightness rules). It stands in for the adaptive factors of later measures.
 #pragma once
 
 #include <vector>
