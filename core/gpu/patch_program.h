@@ -7,7 +7,9 @@
 // Vulkan. The shader contract is in shaders/common/patch_program.glsl:
 //   set 0, binding 0      the capture buffer (written by tbCaptureVertex in the TES)
 //   set 0, bindings 1..N  GpuPatchProgram::storage_buffers, in order
-//   push constants        levels, first patch of the draw (tbPatchIndex()), flags
+//   set 1, binding 0      per-patch levels (outer[4], inner[2]), indexed by tbPatchIndex();
+//                         the TCS writes them with tbWriteHarnessLevels()
+//   push constants        first patch of the draw (tbPatchIndex()), capture flag
 //   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages
 // Each draw covers a small batch of patches (lavapipe's single-threaded tessellator
 // slows down super-linearly with many patches per draw); capture is by SSBO with an
@@ -26,9 +28,8 @@
 
 namespace tb::gpu {
 
-
 struct CapturedVertex {
-  uint32_t patch = 0;  // SurfacePatches patch (GpuPatchProgram::patch_ids applied)
+  uint32_t patch = 0;         // SurfacePatches patch (GpuPatchProgram::patch_ids applied)
   tess::DomainPoint coord{};  // gl_TessCoord bit for bit
   Vec3f position;
   Vec3f normal;
@@ -48,11 +49,19 @@ struct PatchProgramOptions {
   uint32_t first_patch = 0;
   uint32_t patch_count = UINT32_MAX;  // clamped to the program's
   uint32_t patches_per_draw = 1;
-  bool capture = true;                // false: time the shaders alone (no SSBO writes)
+  bool capture = true;  // false: time the shaders alone (no SSBO writes)
 };
 
-// Uniform levels for every patch. Throws GpuError when the device lacks a needed
-// feature, a shader is not embedded, or the capture overflows.
+// Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before
+// GpuPatchProgram::patch_ids is applied), one per program patch. The TCS writes them
+// bit for bit (pow2 spacing: after tess::roundPow2Levels, as the CPU tessellator does).
+// Throws GpuError when the device lacks a needed feature, a shader is not embedded,
+// the capture overflows, or patch_levels.size() != program.patch_count.
+PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& program,
+                                    std::span<const tess::Levels> patch_levels,
+                                    const PatchProgramOptions& options = {});
+
+// Uniform levels: the same `levels` for every patch.
 PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& program,
                                     const tess::Levels& levels,
                                     const PatchProgramOptions& options = {});

@@ -28,10 +28,19 @@ VkShaderModuleOwner createShaderModule(VkDevice device, std::span<const uint32_t
 VkPipelineLayoutOwner createPipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout,
                                            VkShaderStageFlags push_stages,
                                            uint32_t push_constant_bytes) {
+  return createPipelineLayout(
+      device, std::span<const VkDescriptorSetLayout>(&set_layout, set_layout != VK_NULL_HANDLE),
+      push_stages, push_constant_bytes);
+}
+
+VkPipelineLayoutOwner createPipelineLayout(VkDevice device,
+                                           std::span<const VkDescriptorSetLayout> set_layouts,
+                                           VkShaderStageFlags push_stages,
+                                           uint32_t push_constant_bytes) {
   VkPushConstantRange range{push_stages, 0, push_constant_bytes};
   auto info = vkStruct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-  info.setLayoutCount = set_layout != VK_NULL_HANDLE ? 1 : 0;
-  info.pSetLayouts = &set_layout;
+  info.setLayoutCount = uint32_t(set_layouts.size());
+  info.pSetLayouts = set_layouts.data();
   info.pushConstantRangeCount = push_constant_bytes > 0 ? 1 : 0;
   info.pPushConstantRanges = &range;
   VkPipelineLayout layout = VK_NULL_HANDLE;

@@ -20,6 +20,11 @@ VkShaderModuleOwner createShaderModule(VkDevice device, std::span<const uint32_t
 VkPipelineLayoutOwner createPipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout,
                                            VkShaderStageFlags push_stages,
                                            uint32_t push_constant_bytes);
+// Set i uses set_layouts[i].
+VkPipelineLayoutOwner createPipelineLayout(VkDevice device,
+                                           std::span<const VkDescriptorSetLayout> set_layouts,
+                                           VkShaderStageFlags push_stages,
+                                           uint32_t push_constant_bytes);
 
 // Binding i is a storage buffer visible to stages[i].
 VkDescriptorSetLayoutOwner createStorageBufferSetLayout(VkDevice device,

@@ -5,8 +5,9 @@
 #include <bit>
 #include <cmath>
 #include <map>
-#include <optional>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 
@@ -82,39 +83,54 @@ struct CoordBitsHash {
   }
 };
 
-size_t domainSlot(PatchDomain domain) { return domain == PatchDomain::kQuad ? 0 : 1; }
+// Levels as bits, so that equal levels share one tessellation and -0/NaN stay distinct.
+using LevelsBits = std::array<uint32_t, 6>;
+LevelsBits levelsBits(const tess::Levels& levels) {
+  LevelsBits bits{};
+  for (int i = 0; i < 4; ++i) bits[i] = std::bit_cast<uint32_t>(levels.outer[i]);
+  for (int i = 0; i < 2; ++i) bits[4 + i] = std::bit_cast<uint32_t>(levels.inner[i]);
+  return bits;
+}
 
-// The boundary points of every patch, from one tessellation per domain that occurs
-// (patches may mix quads and triangles), and where each patch's points start in the
-// flat positions array.
+// The boundary points of every patch, from one tessellation per distinct (domain, levels)
+// (patches may mix quads and triangles and carry their own levels), and where each
+// patch's points start in the flat positions array.
 struct PatchBoundaries {
-  std::array<std::optional<BoundaryPoints>, 2> by_domain;  // quad, triangle
-  std::array<size_t, 2> tessellated_points{};              // all points of each domain
-  std::vector<PatchDomain> domain;                         // per patch
-  std::vector<size_t> offset;                              // per patch, then the total
-  bool culled = false;
+  std::vector<BoundaryPoints> tessellations;  // one per distinct (domain, levels)
+  std::vector<size_t> tessellated_points;     // per tessellation: all its points
+  std::vector<uint32_t> tessellation;         // per patch: index into tessellations
+  std::vector<PatchDomain> domain;            // per patch
+  std::vector<size_t> offset;                 // per patch, then the total
+  size_t culled_patches = 0;                  // patches whose levels cull them
 
-  const BoundaryPoints& of(size_t patch) const { return *by_domain[domainSlot(domain[patch])]; }
+  const BoundaryPoints& of(size_t patch) const { return tessellations[tessellation[patch]]; }
   size_t at(size_t patch, size_t k) const { return offset[patch] + k; }
 };
 
-PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing, float level) {
+PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing,
+                                std::span<const tess::Levels> patch_levels) {
   PatchBoundaries b;
+  b.tessellation.resize(patches.patchCount());
   b.domain.resize(patches.patchCount());
   b.offset.assign(patches.patchCount() + 1, 0);
+  std::map<std::pair<PatchDomain, LevelsBits>, uint32_t> cache;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const PatchDomain domain = patches.patchDomain(p);
     b.domain[p] = domain;
-    std::optional<BoundaryPoints>& slot = b.by_domain[domainSlot(domain)];
-    if (!slot && !b.culled) {
+    const auto key = std::make_pair(domain, levelsBits(patch_levels[p]));
+    auto found = cache.find(key);
+    if (found == cache.end()) {
       const tess::Tessellation tessellation =
-          tess::tessellate(tessDomain(domain), spacing, uniformLevels(level));
-      b.culled = tessellation.culled;
-      if (b.culled) continue;
-      slot = boundaryPoints(domain, tessellation);
-      b.tessellated_points[domainSlot(domain)] = tessellation.points.size();
+          tess::tessellate(tessDomain(domain), spacing, patch_levels[p]);
+      // A culled tessellation has no points; an empty entry keeps the indices aligned.
+      b.tessellations.push_back(tessellation.culled ? BoundaryPoints{}
+                                                    : boundaryPoints(domain, tessellation));
+      b.tessellated_points.push_back(tessellation.points.size());
+      found = cache.emplace(key, uint32_t(b.tessellations.size() - 1)).first;
     }
-    if (!b.culled) b.offset[p + 1] = b.offset[p] + slot->points.size();
+    b.tessellation[p] = found->second;
+    if (b.tessellations[found->second].points.empty()) ++b.culled_patches;
+    b.offset[p + 1] = b.offset[p] + b.tessellations[found->second].points.size();
   }
   return b;
 }
@@ -133,21 +149,59 @@ BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundar
   return positions;
 }
 
+using CoordIndex = std::unordered_map<CoordBits, uint32_t, CoordBitsHash>;
+
+// Per tessellation of `domain`: domain point bits -> index into its boundary points.
+std::vector<CoordIndex> coordIndices(const PatchBoundaries& boundaries, PatchDomain domain) {
+  std::vector<CoordIndex> indices(boundaries.tessellations.size());
+  std::vector<uint8_t> used(boundaries.tessellations.size(), 0);
+  for (size_t p = 0; p < boundaries.domain.size(); ++p) {
+    if (boundaries.domain[p] == domain) used[boundaries.tessellation[p]] = 1;
+  }
+  for (size_t t = 0; t < indices.size(); ++t) {
+    if (!used[t]) continue;
+    const std::vector<tess::DomainPoint>& points = boundaries.tessellations[t].points;
+    for (size_t k = 0; k < points.size(); ++k)
+      indices[t].emplace(coordBits(points[k]), uint32_t(k));
+  }
+  return indices;
+}
+
+// The program's patches' levels, by program patch (GpuPatchProgram::patch_ids).
+std::vector<tess::Levels> programLevels(const gpu::GpuPatchProgram& program,
+                                        std::span<const tess::Levels> patch_levels) {
+  std::vector<tess::Levels> levels(program.patch_count);
+  for (uint32_t i = 0; i < program.patch_count; ++i) {
+    levels[i] = patch_levels[program.patch_ids.empty() ? i : program.patch_ids.at(i)];
+  }
+  return levels;
+}
+
+float maxLevel(std::span<const tess::Levels> levels) {
+  float max_level = 0;
+  for (const tess::Levels& l : levels) {
+    max_level = std::max(
+        {max_level, l.outer[0], l.outer[1], l.outer[2], l.outer[3], l.inner[0], l.inner[1]});
+  }
+  return max_level;
+}
+
 // Runs `program` over its patches and stores the captured boundary points in `positions`.
 void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
-                  const PatchBoundaries& boundaries, tess::Spacing spacing, float level,
-                  gpu::Context& context, BoundaryPositions* positions, std::vector<uint8_t>* filled,
+                  const PatchBoundaries& boundaries, tess::Spacing spacing,
+                  std::span<const tess::Levels> patch_levels, gpu::Context& context,
+                  BoundaryPositions* positions, std::vector<uint8_t>* filled,
                   CrackFigures* figures) {
   const PatchDomain domain =
       program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
-  const std::optional<BoundaryPoints>& boundary = boundaries.by_domain[domainSlot(domain)];
-  std::unordered_map<CoordBits, uint32_t, CoordBitsHash> index;
-  if (boundary) {
-    for (size_t k = 0; k < boundary->points.size(); ++k) {
-      index.emplace(coordBits(boundary->points[k]), uint32_t(k));
-    }
+  const std::vector<CoordIndex> indices = coordIndices(boundaries, domain);
+  size_t points_per_patch = 0;
+  for (size_t p = 0; p < boundaries.domain.size(); ++p) {
+    if (boundaries.domain[p] != domain) continue;
+    points_per_patch =
+        std::max(points_per_patch, boundaries.tessellated_points[boundaries.tessellation[p]]);
   }
-  const size_t points_per_patch = boundaries.tessellated_points[domainSlot(domain)];
+  const std::vector<tess::Levels> levels = programLevels(program, patch_levels);
 
   // Chunks of about a million captured vertices bound the capture buffer; a few
   // patches per draw keep lavapipe's single-threaded tessellator out of its
@@ -157,22 +211,22 @@ void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& pro
       uint32_t(std::clamp<size_t>((1u << 20) / std::max<size_t>(points_per_patch, 1), 1, 4096));
   gpu::PatchProgramOptions options;
   options.spacing = spacing;
-  options.patches_per_draw = level >= 32 ? 2 : 8;
+  options.patches_per_draw = maxLevel(levels) >= 32 ? 2 : 8;
   for (uint32_t first = 0; first < program.patch_count; first += chunk) {
     options.first_patch = first;
     options.patch_count = std::min(chunk, program.patch_count - first);
     const gpu::PatchProgramCapture capture =
-        gpu::runPatchProgram(context, program, uniformLevels(level), options);
+        gpu::runPatchProgram(context, program, levels, options);
     figures->draws += capture.draws;
     for (const gpu::CapturedVertex& v : capture.vertices) {
       const Vec3f cpu = patches.evaluateFloat(v.patch, v.coord).position;
       ++figures->device_points;
       if (!(cpu == v.position)) ++figures->device_points_differing;
       figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlpDistance(cpu, v.position));
+      if (v.patch >= patch_count || boundaries.domain[v.patch] != domain) continue;
+      const CoordIndex& index = indices[boundaries.tessellation[v.patch]];
       const auto found = index.find(coordBits(v.coord));
-      if (found == index.end() || v.patch >= patch_count || boundaries.domain[v.patch] != domain) {
-        continue;
-      }
+      if (found == index.end()) continue;
       (*positions)[boundaries.at(v.patch, found->second)] = v.position;
       (*filled)[boundaries.at(v.patch, found->second)] = 1;
     }
@@ -182,12 +236,13 @@ void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& pro
 BoundaryPositions gpuPositions(const SurfacePatches& patches,
                                const std::vector<gpu::GpuPatchProgram>& programs,
                                const PatchBoundaries& boundaries, tess::Spacing spacing,
-                               float level, gpu::Context& context, CrackFigures* figures) {
+                               std::span<const tess::Levels> patch_levels, gpu::Context& context,
+                               CrackFigures* figures) {
   BoundaryPositions positions(boundaries.offset.back());
   std::vector<uint8_t> filled(positions.size(), 0);
   std::string shaders;
   for (const gpu::GpuPatchProgram& program : programs) {
-    gpuPositions(patches, program, boundaries, spacing, level, context, &positions, &filled,
+    gpuPositions(patches, program, boundaries, spacing, patch_levels, context, &positions, &filled,
                  figures);
     shaders += (shaders.empty() ? "" : ", ") + program.evaluation_shader;
   }
@@ -316,6 +371,18 @@ SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
 
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
                            CrackBackend backend, gpu::Context* context) {
+  const std::vector<tess::Levels> patch_levels(patches.patchCount(), uniformLevels(level));
+  return measureCracks(patches, spacing, patch_levels, backend, context);
+}
+
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+                           std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                           gpu::Context* context) {
+  if (patch_levels.size() != patches.patchCount()) {
+    throw std::invalid_argument("cracks: " + std::to_string(patch_levels.size()) +
+                                " per-patch levels for " + std::to_string(patches.patchCount()) +
+                                " patches");
+  }
   CrackFigures figures;
   figures.backend = backend;
   const SharedBoundaries shared = findSharedBoundaries(patches);
@@ -336,15 +403,17 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
     }
   }
 
-  const PatchBoundaries boundaries = patchBoundaries(patches, spacing, level);
-  if (boundaries.culled) {
-    figures.skipped_reason = "the level culls every patch";
+  const PatchBoundaries boundaries = patchBoundaries(patches, spacing, patch_levels);
+  if (boundaries.culled_patches > 0) {
+    figures.skipped_reason = boundaries.culled_patches == patches.patchCount()
+                                 ? "the level culls every patch"
+                                 : "the levels cull some patches";
     return figures;
   }
   const BoundaryPositions positions =
       backend == CrackBackend::kCpuFloat
           ? cpuPositions(patches, boundaries)
-          : gpuPositions(patches, programs, boundaries, spacing, level, *context, &figures);
+          : gpuPositions(patches, programs, boundaries, spacing, patch_levels, *context, &figures);
   figures.measured = true;
 
   PairAccumulator pairs(&figures, scaleUlp(patches.controlMesh()));

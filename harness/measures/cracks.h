@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -91,11 +92,21 @@ struct CrackFigures {
   uint32_t draws = 0;
 };
 
-// Uniform levels (every outer and inner level = `level`) under `spacing`. Each patch is
-// tessellated in its own patchDomain(p); a quad edge and a triangle edge that share an
-// edge pair by edge parameter like two edges of one domain.
-// kGpu runs every program of patches.gpuPrograms() on `context`; without a program or a
-// context the result is not measured and says why. Throws gpu::GpuError when the device fails.
+// Per-patch levels: patch p is tessellated in its own patchDomain(p) with
+// patch_levels[p] (one per patch; tessellations are shared between patches with the same
+// domain and level bits) under `spacing`; a quad edge and a triangle edge that share an
+// edge pair by edge parameter like two edges of one domain. Two sides of a shared edge
+// pair point for point only when their levels for that edge agree (see
+// edge_pattern_levels.h); otherwise the extra points count as unpaired_points.
+// kGpu runs every program of patches.gpuPrograms() on `context` with the same per-patch
+// levels; without a program or a context the result is not measured and says why, as
+// when some level culls a patch. Throws gpu::GpuError when the device fails and
+// std::invalid_argument when patch_levels.size() != patches.patchCount().
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+                           std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                           gpu::Context* context = nullptr);
+
+// Uniform levels: every outer and inner level of every patch = `level`.
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
                            CrackBackend backend, gpu::Context* context = nullptr);
 

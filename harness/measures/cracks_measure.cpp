@@ -1,7 +1,10 @@
 // The "cracks" measure: measureCracks over spacings × levels × backends.
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "harness/measures/cracks.h"
+#include "harness/measures/edge_pattern_levels.h"
 #include "harness/measures/measure.h"
 
 namespace tb {
@@ -17,6 +20,10 @@ constexpr tess::Spacing kCrackSpacings[] = {tess::Spacing::kInteger, tess::Spaci
 // Level 64 on the device costs about (64+1)^2 captured vertices per patch; above this
 // many patches it is left to the CPU backend to keep the default suite short.
 constexpr size_t kGpuLevel64MaxPatches = 100;
+// Rows under per-edge levels (edge_pattern_levels.h), keyed levels = "edge_pattern" with
+// level = the pattern's base level; one base keeps the suite short.
+constexpr LevelChoice kEdgePatternBase = {7.0f, "7"};
+constexpr const char* kEdgePatternKey = "edge_pattern";
 
 std::vector<Metric> crackMetrics(const CrackFigures& f) {
   const CrackLocation& w = f.worst;
@@ -77,7 +84,11 @@ class CracksMeasure final : public Measure {
         "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
         "rows by definition)",
         "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "
-        "than 100 patches (the CPU backend covers 64 everywhere)"};
+        "than 100 patches (the CPU backend covers 64 everywhere)",
+        "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
+        "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
+        "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges); "
+        "rows without a levels key use uniform levels"};
     const SurfacePatches& patches = *input.patches;
     std::string gpu_reason;
     if (patches.gpuPrograms().empty()) {
@@ -93,22 +104,9 @@ class CracksMeasure final : public Measure {
                (level.level > 16 && patches.patchCount() >= kGpuLevel64MaxPatches))) {
             continue;
           }
-          MetricRow row;
-          row.keys["spacing"] = std::string(tess::toString(spacing));
-          row.keys["level"] = level.text;
-          row.keys["backend"] = toString(backend);
-          try {
-            const CrackFigures f = measureCracks(patches, spacing, level.level, backend, input.gpu);
-            if (!f.measured) {
-              row.keys["note"] = "skipped: " + f.skipped_reason;
-            } else {
-              row.metrics = crackMetrics(f);
-            }
-          } catch (const std::exception& error) {
-            if (backend == CrackBackend::kCpuFloat) throw;
-            row.keys["note"] = std::string("failed: ") + error.what();
-          }
-          result.rows.push_back(std::move(row));
+          result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, [&] {
+            return measureCracks(patches, spacing, level.level, backend, input.gpu);
+          }));
         }
       }
     }
@@ -118,7 +116,43 @@ class CracksMeasure final : public Measure {
       row.keys["note"] = gpu_reason;
       result.rows.push_back(std::move(row));
     }
+    // The per-edge pattern rows come last so the uniform rows keep their places.
+    for (tess::Spacing spacing : kCrackSpacings) {
+      const std::vector<tess::Levels> levels =
+          edgePatternLevels(patches, spacing, kEdgePatternBase.level);
+      for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+        if (backend == CrackBackend::kGpu && !gpu_reason.empty()) continue;
+        result.rows.push_back(
+            crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey,
+                     [&] { return measureCracks(patches, spacing, levels, backend, input.gpu); }));
+      }
+    }
     return result;
+  }
+
+ private:
+  // One row: keys spacing, level, backend (and levels when not uniform), then the
+  // figures, or a note saying why there are none. A GPU failure is a note; a CPU one throws.
+  template <class MeasureFn>
+  static MetricRow crackRow(tess::Spacing spacing, const char* level, CrackBackend backend,
+                            const char* levels_key, MeasureFn measure) {
+    MetricRow row;
+    row.keys["spacing"] = std::string(tess::toString(spacing));
+    row.keys["level"] = std::string(level);
+    row.keys["backend"] = toString(backend);
+    if (levels_key != nullptr) row.keys["levels"] = std::string(levels_key);
+    try {
+      const CrackFigures f = measure();
+      if (!f.measured) {
+        row.keys["note"] = "skipped: " + f.skipped_reason;
+      } else {
+        row.metrics = crackMetrics(f);
+      }
+    } catch (const std::exception& error) {
+      if (backend == CrackBackend::kCpuFloat) throw;
+      row.keys["note"] = std::string("failed: ") + error.what();
+    }
+    return row;
   }
 };
 

@@ -4,14 +4,14 @@
 //
 //   set 0, binding 0       capture buffer (tbCaptureVertex)
 //   set 0, bindings 1..N   the technique's storage buffers, in GpuPatchProgram order
+//   set 1, binding 0       the harness's per-patch tessellation levels (TCS only; see
+//                          patch_program_tcs.glsl), indexed by tbPatchIndex()
 //   push constants         this block
 //   constant_id 0..M-1     GpuPatchProgram::specialization (declare them in the shader)
 #ifndef TB_PATCH_PROGRAM_GLSL
 #define TB_PATCH_PROGRAM_GLSL
 
 layout(push_constant) uniform TbPatchProgramPush {
-  uvec4 outer_bits;      // gl_TessLevelOuter[0..3] as float bits
-  uvec2 inner_bits;      // gl_TessLevelInner[0..1] as float bits
   uint first_patch;      // patch index of gl_PrimitiveID 0 in this draw
   uint capture_enabled;  // 0: do not write the capture buffer (timing runs)
 } tb_push;
