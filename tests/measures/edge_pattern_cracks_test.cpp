@@ -33,12 +33,12 @@ struct Case {
   const char* asset;
 };
 
-std::unique_ptr<SurfacePatches> build(const Case& c) {
+BuiltSurface build(const Case& c) {
   const Technique* technique = TechniqueRegistry::instance().find(c.technique);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
   for (const VariantInfo& v : technique->variants()) {
     if (v.name == c.variant) {
-      return technique->buildPatches(loadObjFile(testing::assetPath(c.asset)), v);
+      return buildSurface(*technique, loadObjFile(testing::assetPath(c.asset)), v);
     }
   }
   throw std::runtime_error(std::string("no variant ") + c.variant);
@@ -213,7 +213,7 @@ TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
   ASSERT_NE(measure, nullptr);
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const VariantInfo variant = acc->variants()[0];
-  const auto patches = acc->buildPatches(mesh, variant);
+  const auto patches = buildSurface(*acc, mesh, variant);
   std::string reason;
   gpu::Context* context = gpu::testing::sharedContext(&reason);
   const MeasureResult result = measure->run(
