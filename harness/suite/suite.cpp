@@ -1,5 +1,6 @@
 #include "harness/suite/suite.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -41,6 +42,13 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
   std::vector<const Measure*> measures = selection.measures;
   if (measures.empty()) measures = MeasureRegistry::instance().all();
+  for (const Measure* measure : measures) {
+    results->measures.push_back(declarationOf(measure->info()));
+  }
+  std::sort(results->measures.begin(), results->measures.end(),
+            [](const MeasureDeclaration& a, const MeasureDeclaration& b) {
+              return a.measure < b.measure;
+            });
   std::vector<AssetRef> refs = selection.assets;
   if (refs.empty()) refs = bundledAssets();
 

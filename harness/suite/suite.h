@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "harness/suite/asset_catalog.h"
 #include "harness/measures/measure.h"
 #include "harness/results/results_model.h"
+#include "harness/suite/asset_catalog.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -22,7 +22,8 @@ struct SuiteSelection {
 // Called before each technique × variant × asset step: (done, total, label).
 using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 
-// Fills assets, records and skipped of `results` (never the context). An asset
+// Fills assets, records, skipped and the selected measures' declarations of `results`
+// (never the context). An asset
 // that fails to load aborts the run with InputError: a named asset must be
 // usable. A technique that cannot take an asset is recorded as skipped, with
 // its reason.
