@@ -75,7 +75,7 @@ class SeedFiguresMeasure final : public Measure {
         "static SPIR-V instruction counts (spirv-opt -O) of the four Bézier evaluation orders "
         "and of ACC's domain shader, beside seed 000's and seed 001's numbers",
         comparisonTable().specs(),
-        {"ours_alu_vector", "seed_alu"},
+        {"ours_alu_vector", "ours_alu_scalar"},
         {"ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
          "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
          "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "

@@ -129,9 +129,13 @@ void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) 
     }
     *out += "\n";
   }
+  // Units whose spelling does not already say it all ("count", "bytes", "ratio" do).
   std::vector<Unit> units;
   for (const MetricSpec& spec : declaration.metrics) {
-    if (std::find(units.begin(), units.end(), spec.unit) == units.end()) units.push_back(spec.unit);
+    if (toString(spec.unit) != describe(spec.unit) &&
+        std::find(units.begin(), units.end(), spec.unit) == units.end()) {
+      units.push_back(spec.unit);
+    }
   }
   if (!units.empty()) {
     *out += "- units: ";
