@@ -22,7 +22,8 @@ struct MeasureInfo {
   std::string description;  // one line: what is measured, in which units
   // Every metric a row may emit, in emission order (a MetricTable's specs()).
   std::vector<MetricSpec> metrics;
-  // Names from `metrics` that a summary shows first, most important first.
+  // Names from `metrics` that a summary shows first, most important first; each has a
+  // direction (a headline ranks techniques), so never a Direction::kNone context figure.
   std::vector<std::string> headline;
   // Notes true of every record (definitions, method), shown once under the measure;
   // a note about one record goes in its MeasureResult::notes.

@@ -79,7 +79,9 @@ MeasureResult measureFromJson(const Json& json, const std::string& where) {
   return measure;
 }
 
-Json declarationToJson(const MeasureDeclaration& declaration) {
+}  // namespace
+
+Json toJson(const MeasureDeclaration& declaration) {
   Json metrics = Json::array();
   for (const MetricSpec& spec : declaration.metrics) {
     metrics.push_back({{"name", spec.name},
@@ -93,6 +95,8 @@ Json declarationToJson(const MeasureDeclaration& declaration) {
           {"notes", declaration.notes},
           {"metrics", metrics}};
 }
+
+namespace {
 
 MeasureDeclaration declarationFromJson(const Json& json, const std::string& where) {
   MeasureDeclaration declaration;
@@ -181,7 +185,7 @@ Json toJson(const Results& results) {
   }
   Json measures = Json::array();
   for (const MeasureDeclaration& declaration : results.measures) {
-    measures.push_back(declarationToJson(declaration));
+    measures.push_back(toJson(declaration));
   }
   return {{"schema_version", results.schema_version},
           {"context", context},
