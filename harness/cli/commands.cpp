@@ -80,7 +80,11 @@ int runList(const ListArgs& args) {
   } else if (args.what == "measures") {
     for (const Measure* m : MeasureRegistry::instance().all()) {
       const MeasureInfo& info = m->info();
-      items.push_back({{"id", info.id}, {"title", info.title}, {"description", info.description}});
+      // The declaration: id, title, description, headline, fixed notes, metrics (unit, direction).
+      nlohmann::ordered_json item = toJson(declarationOf(info));
+      item.erase("measure");
+      items.push_back({{"id", info.id}});
+      items.back().update(item);
       if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
     }
   } else {

@@ -6,6 +6,7 @@
 #include "harness/measures/cracks.h"
 #include "harness/measures/edge_pattern_levels.h"
 #include "harness/measures/measure.h"
+#include "harness/measures/metric_table.h"
 
 namespace tb {
 namespace {
@@ -25,70 +26,81 @@ constexpr size_t kGpuLevel64MaxPatches = 100;
 constexpr LevelChoice kEdgePatternBase = {7.0f, "7"};
 constexpr const char* kEdgePatternKey = "edge_pattern";
 
-std::vector<Metric> crackMetrics(const CrackFigures& f) {
-  const CrackLocation& w = f.worst;
-  return {
-      {"shared_edges", double(f.shared_edges), "count"},
-      {"seam_edges", double(f.seam_edges), "count"},
-      {"shared_corners", double(f.shared_corners), "count"},
-      {"points_compared", double(f.points_compared), "count"},
-      {"points_not_equal", double(f.points_not_equal), "count"},
-      {"unpaired_points", double(f.unpaired_points), "count"},
-      {"max_gap_world", f.max_gap_world, "world"},
-      {"mean_gap_world", f.mean_gap_world, "world"},
-      {"max_gap_ulp", double(f.max_gap_ulp), "ulp"},
-      {"max_gap_scale_ulp", f.max_gap_scale_ulp, "ulp of scale"},
-      {"worst_patch_a", w.found ? double(w.patch_a) : -1, "id"},
-      {"worst_patch_b", w.found ? double(w.patch_b) : -1, "id"},
-      {"worst_is_corner", w.found && w.corner ? 1.0 : 0.0, "bool"},
-      {"worst_local_a", w.found ? double(w.local_a) : -1, "edge/corner"},
-      {"worst_local_b", w.found ? double(w.local_b) : -1, "edge/corner"},
-      {"worst_t", w.t, "edge parameter"},
-      {"vs_cpu_float_points", double(f.device_points), "count"},
-      {"vs_cpu_float_points_differing", double(f.device_points_differing), "count"},
-      {"vs_cpu_float_max_ulp", double(f.device_max_ulp), "ulp"},
+// Best case of every gap figure is 0 (watertight); worst_* locate the largest world gap
+// and are context. points_compared, shared_* and seam_edges describe the asset.
+const MetricTable<CrackFigures>& crackTable() {
+  using D = Direction;
+  using F = CrackFigures;
+  // The worst pair's location, -1 when no pair was compared.
+  auto where = [](uint32_t CrackLocation::*member) {
+    return [member](const F& f) { return f.worst.found ? double(f.worst.*member) : -1.0; };
   };
+  static const MetricTable<F> kTable{
+      {"shared_edges", Unit::kCount, D::kNone, &F::shared_edges},
+      {"seam_edges", Unit::kCount, D::kNone, &F::seam_edges},
+      {"shared_corners", Unit::kCount, D::kNone, &F::shared_corners},
+      {"points_compared", Unit::kCount, D::kNone, &F::points_compared},
+      {"points_not_equal", Unit::kCount, D::kLowerIsBetter, &F::points_not_equal},
+      {"unpaired_points", Unit::kCount, D::kLowerIsBetter, &F::unpaired_points},
+      {"max_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::max_gap_world},
+      {"mean_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::mean_gap_world},
+      {"max_gap_ulp", Unit::kUlp, D::kLowerIsBetter, &F::max_gap_ulp},
+      {"max_gap_scale_ulp", Unit::kScaleUlp, D::kLowerIsBetter, &F::max_gap_scale_ulp},
+      {"worst_patch_a", Unit::kId, D::kNone, where(&CrackLocation::patch_a)},
+      {"worst_patch_b", Unit::kId, D::kNone, where(&CrackLocation::patch_b)},
+      {"worst_is_corner", Unit::kFlag, D::kNone,
+       [](const F& f) { return f.worst.found && f.worst.corner ? 1.0 : 0.0; }},
+      {"worst_local_a", Unit::kId, D::kNone, where(&CrackLocation::local_a)},
+      {"worst_local_b", Unit::kId, D::kNone, where(&CrackLocation::local_b)},
+      {"worst_t", Unit::kEdgeParameter, D::kNone, [](const F& f) { return f.worst.t; }},
+      {"vs_cpu_float_points", Unit::kCount, D::kNone, &F::device_points},
+      {"vs_cpu_float_points_differing", Unit::kCount, D::kLowerIsBetter,
+       &F::device_points_differing},
+      {"vs_cpu_float_max_ulp", Unit::kUlp, D::kLowerIsBetter, &F::device_max_ulp},
+  };
+  return kTable;
 }
 
 class CracksMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "cracks", "Crack gaps between patches",
+        "cracks",
+        "Crack gaps between patches",
         "gaps between the positions two patches compute at the same tessellated point of a "
         "shared edge or corner, in world units and float ulps, on the CPU (float, shader order) "
-        "and on the device"};
+        "and on the device",
+        crackTable().specs(),
+        {"points_not_equal", "max_gap_world"},
+        {"rows without a levels key: uniform levels (every outer and inner level = level); "
+         "shared edges and corners found "
+         "by welded control-mesh position (seam_edges: shared only after welding); each side "
+         "after the first is compared with the first at every tessellated point, paired by edge "
+         "parameter t <-> 1 - t",
+         "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
+         "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
+         "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
+         "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
+         "runs from corner k to k + 1; t from corner local_a), -1 when none",
+         "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
+         "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; "
+         "vs_cpu_float_*: "
+         "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
+         "rows by definition)",
+         "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "
+         "than 100 patches (the CPU backend covers 64 everywhere)",
+         "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
+         "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
+         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
     return {{MeasureNeed::kSurface, MeasureNeed::kGpu}, VariantPolicy::kEveryVariant, {}};
   }
-  // Evaluation order is what the variants change; the crack figures depend on it.
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
-    result.notes = {
-        "uniform levels (every outer and inner level = level); shared edges and corners found "
-        "by welded control-mesh position (seam_edges: shared only after welding); each side "
-        "after the first is compared with the first at every tessellated point, paired by edge "
-        "parameter t <-> 1 - t",
-        "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
-        "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
-        "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
-        "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
-        "runs from corner k to k + 1; t from corner local_a), -1 when none",
-        "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
-        "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; "
-        "vs_cpu_float_*: "
-        "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
-        "rows by definition)",
-        "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "
-        "than 100 patches (the CPU backend covers 64 everywhere)",
-        "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
-        "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
-        "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges); "
-        "rows without a levels key use uniform levels"};
     const SurfacePatches& patches = *input.patches;
     std::string gpu_reason;
     if (patches.gpuPrograms().empty()) {
@@ -146,7 +158,7 @@ class CracksMeasure final : public Measure {
       if (!f.measured) {
         row.keys["note"] = "skipped: " + f.skipped_reason;
       } else {
-        row.metrics = crackMetrics(f);
+        row.metrics = crackTable().metrics(f);
       }
     } catch (const std::exception& error) {
       if (backend == CrackBackend::kCpuFloat) throw;

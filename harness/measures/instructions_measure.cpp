@@ -10,26 +10,31 @@
 
 #include "harness/measures/instructions.h"
 #include "harness/measures/measure.h"
+#include "harness/measures/metric_table.h"
 #include "shaders/embedded_shaders.h"
 
 namespace tb {
 namespace {
 
-std::vector<Metric> countMetrics(const InstructionCounts& c) {
-  return {
-      {"add", double(c.add), "count"},
-      {"mul", double(c.mul), "count"},
-      {"div", double(c.div), "count"},
-      {"sqrt", double(c.sqrt), "count"},
-      {"compare", double(c.compare), "count"},
-      {"float_other", double(c.float_other), "count"},
-      {"float_arith", double(c.floatArithmetic()), "count"},
-      {"fma", double(c.fma), "count"},
-      {"load_store", double(c.load_store), "count"},
-      {"control_flow", double(c.control_flow), "count"},
-      {"other", double(c.other), "count"},
-      {"total", double(c.total()), "count"},
+// Fewer instructions is better for every category; best case 0 (an empty stage).
+const MetricTable<InstructionCounts>& countTable() {
+  using C = InstructionCounts;
+  constexpr Direction kLower = Direction::kLowerIsBetter;
+  static const MetricTable<C> kTable{
+      {"add", Unit::kCount, kLower, &C::add},
+      {"mul", Unit::kCount, kLower, &C::mul},
+      {"div", Unit::kCount, kLower, &C::div},
+      {"sqrt", Unit::kCount, kLower, &C::sqrt},
+      {"compare", Unit::kCount, kLower, &C::compare},
+      {"float_other", Unit::kCount, kLower, &C::float_other},
+      {"float_arith", Unit::kCount, kLower, [](const C& c) { return double(c.floatArithmetic()); }},
+      {"fma", Unit::kCount, kLower, &C::fma},
+      {"load_store", Unit::kCount, kLower, &C::load_store},
+      {"control_flow", Unit::kCount, kLower, &C::control_flow},
+      {"other", Unit::kCount, kLower, &C::other},
+      {"total", Unit::kCount, kLower, [](const C& c) { return double(c.total()); }},
   };
+  return kTable;
 }
 
 InstructionCounts fromOperations(const OperationCounts& o) {
@@ -68,9 +73,26 @@ class InstructionsMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "instructions", "Instruction counts",
+        "instructions",
+        "Instruction counts",
         "SPIR-V instructions per stage after spirv-opt -O (vector and scalar-expanded), and exact "
-        "scalar operations per vertex and per patch set-up (counting scalar)"};
+        "scalar operations per vertex and per patch set-up (counting scalar)",
+        countTable().specs(),
+        {"total", "float_arith"},
+        {"spirv_O rows: each stage specialised for the variant (its specialisation constants set "
+         "and frozen), then spirv-opt -O (SPIRV-Tools performance passes, Vulkan 1.3); every "
+         "instruction of a function body counted once, so a loop body counts once whatever its "
+         "trip count; declarations, labels, variables and merge annotations are not counted",
+         "expansion scalar: an instruction counts the components of its result (vec3 add = 3, "
+         "a store the stored value's, dot of n-vectors 2n-1); float_other: dot, negate and "
+         "GLSL.std.450 functions other than sqrt, inversesqrt and fma",
+         "counting_scalar rows: SurfacePatches::operationProfile, the technique's evaluator run "
+         "with CountingScalar in the shader's operation order; min and max over the asset's "
+         "patches by per-vertex total (a regular and the worst irregular patch); they count "
+         "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
+         "x86 instructions per TES invocation on lavapipe are not in this table (they need "
+         "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
+         "two levels, tessellator and TES JIT code together"}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -80,22 +102,8 @@ class InstructionsMeasure final : public Measure {
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
-    result.notes = {
-        "spirv_O rows: each stage specialised for the variant (its specialisation constants set "
-        "and frozen), then spirv-opt -O (SPIRV-Tools performance passes, Vulkan 1.3); every "
-        "instruction of a function body counted once, so a loop body counts once whatever its "
-        "trip count; declarations, labels, variables and merge annotations are not counted",
-        "expansion scalar: an instruction counts the components of its result (vec3 add = 3, "
-        "a store the stored value's, dot of n-vectors 2n-1); float_other: dot, negate and "
-        "GLSL.std.450 functions other than sqrt, inversesqrt and fma",
-        "counting_scalar rows: SurfacePatches::operationProfile, the technique's evaluator run "
-        "with CountingScalar in the shader's operation order; min and max over the asset's "
-        "patches by per-vertex total (a regular and the worst irregular patch); they count "
-        "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
-        "x86 instructions per TES invocation on lavapipe are not in this table (they need "
-        "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
-        "two levels, tessellator and TES JIT code together"};
     if (mixesDomains(*input.patches)) {
+      // Only records whose patches mix quads and triangles have a program key.
       result.notes.push_back(
           "program: the patch domain (quad or triangle) when the technique's patches mix them; "
           "spirv_O rows then count each domain's GPU program, counting_scalar min and max are "
@@ -165,7 +173,7 @@ class InstructionsMeasure final : public Measure {
           if (!set.program.empty()) row.keys["program"] = set.program;
           row.keys["stage"] = shader;
           row.keys["expansion"] = scalar ? "scalar" : "vector";
-          row.metrics = countMetrics(scalar ? counts.scalar : counts.vector);
+          row.metrics = countTable().metrics(scalar ? counts.scalar : counts.vector);
           result->rows.push_back(std::move(row));
         }
       }
@@ -207,7 +215,7 @@ class InstructionsMeasure final : public Measure {
           row.keys["stage"] = per_vertex ? "per_vertex" : "per_patch_setup";
           row.keys["patch"] = std::string(which) + " (patch " + std::to_string(patch) + ")";
           if (!profile.note.empty()) row.keys["note"] = profile.note;
-          row.metrics = countMetrics(
+          row.metrics = countTable().metrics(
               fromOperations(per_vertex ? profile.per_vertex : profile.per_patch_setup));
           result->rows.push_back(std::move(row));
         }

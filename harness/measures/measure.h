@@ -18,10 +18,20 @@
 
 namespace tb {
 
+// What a measure is and what it emits, declared once: reports and compare read this
+// (through the MeasureDeclaration each run writes to results.json), never the measure's id.
 struct MeasureInfo {
   std::string id;           // "memory"
   std::string title;        // "Memory footprint against plain triangle meshes"
   std::string description;  // one line: what is measured, in which units
+  // Every metric a row may emit, in emission order (a MetricTable's specs()).
+  std::vector<MetricSpec> metrics;
+  // Names from `metrics` that a summary shows first, most important first; each has a
+  // direction (a headline ranks techniques), so never a Direction::kNone context figure.
+  std::vector<std::string> headline;
+  // Notes true of every record (definitions, method), shown once under the measure;
+  // a note about one record goes in its MeasureResult::notes.
+  std::vector<std::string> notes;
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure
@@ -59,6 +69,7 @@ struct MeasureRequirements {
     return std::find(needs.begin(), needs.end(), need) != needs.end();
   }
 };
+MeasureDeclaration declarationOf(const MeasureInfo& info);
 
 struct MeasureInput {
   const Technique& technique;

@@ -4,6 +4,10 @@
 
 namespace tb {
 
+MeasureDeclaration declarationOf(const MeasureInfo& info) {
+  return {info.id, info.title, info.description, info.metrics, info.headline, info.notes};
+}
+
 MeasureRegistry& MeasureRegistry::instance() {
   static MeasureRegistry registry;
   return registry;

@@ -8,10 +8,9 @@
 #include <optional>
 #include <unordered_map>
 
-#include "harness/measures/cracks.h"
-#include "harness/measures/measure.h"
 #include "core/mesh/render_vertices.h"
 #include "core/tess/tessellator.h"
+#include "harness/measures/cracks.h"
 
 namespace tb {
 namespace {
@@ -20,10 +19,6 @@ constexpr uint64_t kDisplacementTexelBytes = 2;        // 16-bit scalar
 constexpr uint64_t kVectorDisplacementTexelBytes = 6;  // 3 × 16 bits
 constexpr int64_t kFixedOne = 1 << 16;                 // the tessellator's 16.16 fixed point
 constexpr size_t kFloatsPerVertex = kRenderVertexBytes / sizeof(float);
-// The compressed baseline builds, optimises and encodes the whole tessellated mesh;
-// above this many vertices (about 64 MiB of vertex data) it is left out to keep the
-// default suite short.
-constexpr uint64_t kCompressMaxVertices = 1u << 21;
 
 // Points strictly inside one patch at uniform integer level n (not on its edges).
 uint64_t interiorPointCount(PatchDomain domain, uint32_t n) {
@@ -35,83 +30,6 @@ uint64_t displacementTexels(PatchDomain domain, uint32_t n) {
   if (domain == PatchDomain::kQuad) return uint64_t(n + 1) * (n + 1);
   return uint64_t(n + 1) * (n + 2) / 2;
 }
-
-class MemoryMeasure final : public Measure {
- public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{
-        "memory", "Memory footprint against plain triangle meshes",
-        "bytes of the technique's data (plus a 16-bit displacement map) against the equivalent "
-        "welded triangle mesh at uniform levels 8, 16, 32, 64"};
-    return kInfo;
-  }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
-  }
-
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
-    result.measure = info().id;
-    result.notes = {
-        "plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
-        "32-bit indices, with the tessellator's point and triangle counts",
-        "displacement map: 16-bit, one texel per tessellated point of each patch; vector "
-        "displacement: 3 x 16 bits per texel",
-        "compressed: the plain mesh actually built (technique evaluated in float at the CPU "
-        "tessellator's points, welded like plain_vertices, uv interpolated from the patch "
-        "corners), vertex-cache and vertex-fetch optimised, then meshopt_encodeIndexBuffer + "
-        "meshopt_encodeVertexBuffer on the raw 32-byte float vertices (meshoptimizer " +
-            std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
-            std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "); left empty above " +
-            std::to_string(kCompressMaxVertices) + " vertices",
-        "seed 000's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
-        "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
-        "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
-        "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
-        "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
-        "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
-        "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"};
-    for (uint32_t level : kMemoryLevels) {
-      const MemoryFigures m = measureMemory(*input.patches, level);
-      MetricRow row;
-      row.keys["level"] = std::to_string(level);
-      row.metrics = {
-          {"plain_vertices", double(m.plain_vertices), "count"},
-          {"plain_triangles", double(m.plain_triangles), "count"},
-          {"plain_bytes", double(m.plain_bytes), "bytes"},
-          {"control_mesh_bytes", double(m.technique.control_mesh_bytes), "bytes"},
-          {"patch_data_bytes", double(m.technique.patch_data_bytes), "bytes"},
-          {"stencil_bytes", double(m.technique.stencil_bytes), "bytes"},
-          {"topology_combinations", double(m.technique.topology_combinations), "count"},
-          {"patches", double(input.patches->patchCount()), "count"},
-          {"displacement_bytes", double(m.displacement_bytes), "bytes"},
-          {"technique_with_displacement_bytes", double(m.technique_with_displacement_bytes),
-           "bytes"},
-          {"plain_over_technique", m.plain_over_technique, "ratio"},
-          {"vector_displacement_bytes", double(m.vector_displacement_bytes), "bytes"},
-          {"technique_with_vector_displacement_bytes",
-           double(m.technique_with_vector_displacement_bytes), "bytes"},
-          {"plain_over_technique_vector", m.plain_over_technique_vector, "ratio"},
-      };
-      if (m.plain_vertices <= kCompressMaxVertices) {
-        TessellatedMesh mesh = buildTessellatedMesh(*input.patches, level);
-        const CompressedMesh compressed = compressMesh(&mesh);
-        row.metrics.push_back(
-            {"compressed_vertex_bytes", double(compressed.vertex_data.size()), "bytes"});
-        row.metrics.push_back(
-            {"compressed_index_bytes", double(compressed.index_data.size()), "bytes"});
-        row.metrics.push_back({"compressed_bytes", double(compressed.bytes()), "bytes"});
-        row.metrics.push_back(
-            {"compressed_over_technique",
-             double(compressed.bytes()) / double(m.technique_with_displacement_bytes), "ratio"});
-      }
-      result.rows.push_back(std::move(row));
-    }
-    return result;
-  }
-};
-
-TB_REGISTER_MEASURE(MemoryMeasure);
 
 }  // namespace
 

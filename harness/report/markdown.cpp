@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace tb {
@@ -12,16 +13,24 @@ namespace {
 std::string escapeCell(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += ' ';
-    else out += c;
+    if (c == '|')
+      out += "\\|";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
   }
   return out;
 }
 
 void appendRow(std::string* out, const std::vector<std::string>& cells) {
   *out += "|";
-  for (const auto& cell : cells) *out += " " + escapeCell(cell) + " |";
+  for (const auto& cell : cells) {
+    // Appended piece by piece: `" " + escapeCell(cell) + " |"` trips GCC 12's -Wrestrict.
+    *out += ' ';
+    *out += escapeCell(cell);
+    *out += " |";
+  }
   *out += "\n";
 }
 
@@ -58,36 +67,127 @@ void appendAssets(const Results& results, std::string* out) {
   *out += "\n";
 }
 
-// One table per measure: a line per record row, a column per metric.
-void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
-  std::vector<std::string> key_names, metric_headers;
-  std::vector<std::string> metric_names;
-  std::set<std::string> seen_keys;
-  std::vector<std::string> notes;
+// The measure's metric columns: the declared metrics some row emits, in declared order,
+// then any undeclared one (results written without declarations) in order of appearance.
+struct Column {
+  std::string name;
+  std::string header;  // "max_gap_world (world, lower better)"
+};
+
+std::string directionLabel(Direction direction) {
+  switch (direction) {
+    case Direction::kLowerIsBetter:
+      return ", lower better";
+    case Direction::kHigherIsBetter:
+      return ", higher better";
+    case Direction::kNone:
+      return "";
+  }
+  return "";
+}
+
+std::vector<Column> metricColumns(const Results& results, const std::string& measure_id,
+                                  const MeasureDeclaration* declaration) {
+  std::vector<std::string> seen;  // emitted names, in order of appearance
+  std::map<std::string, std::string> row_unit;
   for (const Record& record : results.records) {
     for (const MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
-      if (notes.empty()) notes = m.notes;
       for (const MetricRow& row : m.rows) {
-        for (const auto& [key, value] : row.keys) {
-          if (seen_keys.insert(key).second) key_names.push_back(key);
-        }
-        if (metric_names.empty()) {
-          for (const Metric& metric : row.metrics) {
-            metric_names.push_back(metric.name);
-            metric_headers.push_back(metric.name + " (" + metric.unit + ")");
-          }
+        for (const Metric& metric : row.metrics) {
+          if (row_unit.emplace(metric.name, metric.unit).second) seen.push_back(metric.name);
         }
       }
     }
   }
+  std::vector<Column> columns;
+  if (declaration != nullptr) {
+    for (const MetricSpec& spec : declaration->metrics) {
+      if (!row_unit.contains(spec.name)) continue;
+      columns.push_back({spec.name, spec.name + " (" + std::string(toString(spec.unit)) +
+                                        directionLabel(spec.direction) + ")"});
+    }
+  }
+  for (const std::string& name : seen) {
+    if (declaration != nullptr && declaration->find(name) != nullptr) continue;
+    columns.push_back({name, name + " (" + row_unit[name] + ")"});
+  }
+  return columns;
+}
+
+// What the declaration says once for the whole measure: its title, fixed notes, headline
+// metrics and the meaning of the units its columns use.
+void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) {
+  if (!declaration.title.empty()) *out += "**" + declaration.title + "**";
+  if (!declaration.description.empty()) *out += ": " + declaration.description;
+  if (!declaration.title.empty() || !declaration.description.empty()) *out += "\n\n";
+  for (const std::string& note : declaration.notes) *out += "- " + note + "\n";
+  if (!declaration.headline.empty()) {
+    *out += "- headline: ";
+    for (size_t i = 0; i < declaration.headline.size(); ++i) {
+      *out += (i > 0 ? ", " : "") + declaration.headline[i];
+    }
+    *out += "\n";
+  }
+  // Units whose spelling does not already say it all ("count", "bytes", "ratio" do).
+  std::vector<Unit> units;
+  for (const MetricSpec& spec : declaration.metrics) {
+    if (toString(spec.unit) != describe(spec.unit) &&
+        std::find(units.begin(), units.end(), spec.unit) == units.end()) {
+      units.push_back(spec.unit);
+    }
+  }
+  if (!units.empty()) {
+    *out += "- units: ";
+    for (size_t i = 0; i < units.size(); ++i) {
+      *out += std::string(i > 0 ? "; " : "") + std::string(toString(units[i])) + " = " +
+              std::string(describe(units[i]));
+    }
+    *out += "\n";
+  }
+  *out += "\n";
+}
+
+// The notes that belong to one record (e.g. how this asset's patches were sampled),
+// each naming its record.
+void appendRecordNotes(const Results& results, const std::string& measure_id, std::string* out) {
+  bool any = false;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const std::string& note : m.notes) {
+        if (!any) *out += "Notes per record:\n\n";
+        any = true;
+        *out += "- " + record.technique + "/" + record.variant + " on " + record.asset + ": " +
+                note + "\n";
+      }
+    }
+  }
+  if (any) *out += "\n";
+}
+
+// One table per measure: a line per record row, a column per metric.
+void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure_id);
+  std::vector<std::string> key_names;
+  std::set<std::string> seen_keys;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) {
+        for (const auto& [key, value] : row.keys) {
+          if (seen_keys.insert(key).second) key_names.push_back(key);
+        }
+      }
+    }
+  }
+  const std::vector<Column> columns = metricColumns(results, measure_id, declaration);
   *out += "## Measure: " + measure_id + "\n\n";
-  for (const std::string& note : notes) *out += "- " + note + "\n";
-  if (!notes.empty()) *out += "\n";
+  if (declaration != nullptr) appendDeclaration(*declaration, out);
   std::vector<std::string> header{"technique", "variant", "asset"};
   header.insert(header.end(), key_names.begin(), key_names.end());
   header.push_back("status");
-  header.insert(header.end(), metric_headers.begin(), metric_headers.end());
+  for (const Column& column : columns) header.push_back(column.header);
   appendHeader(out, header);
   for (const Record& record : results.records) {
     for (const MeasureResult& m : record.measures) {
@@ -107,10 +207,10 @@ void appendMeasure(const Results& results, const std::string& measure_id, std::s
           cells.push_back(it == row.keys.end() ? "" : it->second);
         }
         cells.push_back("ok");
-        for (const std::string& name : metric_names) {
+        for (const Column& column : columns) {
           std::string value;
           for (const Metric& metric : row.metrics) {
-            if (metric.name == name) value = formatMetricValue(metric);
+            if (metric.name == column.name) value = formatMetricValue(metric);
           }
           cells.push_back(value);
         }
@@ -119,6 +219,7 @@ void appendMeasure(const Results& results, const std::string& measure_id, std::s
     }
   }
   *out += "\n";
+  appendRecordNotes(results, measure_id, out);
 }
 
 }  // namespace
@@ -161,7 +262,8 @@ std::string renderMarkdown(const Results& results) {
   if (!results.skipped.empty()) {
     out += "## Not measured\n\n";
     appendHeader(&out, {"technique", "asset", "reason"});
-    for (const Skip& skip : results.skipped) appendRow(&out, {skip.technique, skip.asset, skip.reason});
+    for (const Skip& skip : results.skipped)
+      appendRow(&out, {skip.technique, skip.asset, skip.reason});
     out += "\n";
   }
   bool any_warning = false;

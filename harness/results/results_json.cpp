@@ -34,9 +34,8 @@ Json recordToJson(const Record& record) {
   for (const auto& [key, value] : record.parameters) parameters[key] = value;
   Json measures = Json::array();
   for (const MeasureResult& measure : record.measures) measures.push_back(measureToJson(measure));
-  return {{"technique", record.technique}, {"variant", record.variant},
-          {"asset", record.asset},         {"parameters", parameters},
-          {"warnings", record.warnings},   {"measures", measures}};
+  return {{"technique", record.technique}, {"variant", record.variant},   {"asset", record.asset},
+          {"parameters", parameters},      {"warnings", record.warnings}, {"measures", measures}};
 }
 
 // Reads a required field, naming the path to it when it is missing or mistyped.
@@ -80,6 +79,44 @@ MeasureResult measureFromJson(const Json& json, const std::string& where) {
   return measure;
 }
 
+}  // namespace
+
+Json toJson(const MeasureDeclaration& declaration) {
+  Json metrics = Json::array();
+  for (const MetricSpec& spec : declaration.metrics) {
+    metrics.push_back({{"name", spec.name},
+                       {"unit", toString(spec.unit)},
+                       {"direction", toString(spec.direction)}});
+  }
+  return {{"measure", declaration.measure},
+          {"title", declaration.title},
+          {"description", declaration.description},
+          {"headline", declaration.headline},
+          {"notes", declaration.notes},
+          {"metrics", metrics}};
+}
+
+namespace {
+
+MeasureDeclaration declarationFromJson(const Json& json, const std::string& where) {
+  MeasureDeclaration declaration;
+  declaration.measure = field<std::string>(json, "measure", where);
+  declaration.title = field<std::string>(json, "title", where);
+  declaration.description = field<std::string>(json, "description", where);
+  declaration.headline = field<std::vector<std::string>>(json, "headline", where);
+  declaration.notes = field<std::vector<std::string>>(json, "notes", where);
+  const Json metrics = field<Json>(json, "metrics", where);
+  for (size_t i = 0; i < metrics.size(); ++i) {
+    const std::string at = where + ".metrics[" + std::to_string(i) + "]";
+    const auto unit = parseUnit(field<std::string>(metrics[i], "unit", at));
+    if (!unit) throw std::runtime_error(at + ": unknown unit");
+    const auto direction = parseDirection(field<std::string>(metrics[i], "direction", at));
+    if (!direction) throw std::runtime_error(at + ": unknown direction");
+    declaration.metrics.push_back({field<std::string>(metrics[i], "name", at), *unit, *direction});
+  }
+  return declaration;
+}
+
 Record recordFromJson(const Json& json, const std::string& where) {
   Record record;
   record.technique = field<std::string>(json, "technique", where);
@@ -99,9 +136,12 @@ Record recordFromJson(const Json& json, const std::string& where) {
 
 const char* toString(MeasureStatus status) {
   switch (status) {
-    case MeasureStatus::kOk: return "ok";
-    case MeasureStatus::kSkipped: return "skipped";
-    case MeasureStatus::kFailed: return "failed";
+    case MeasureStatus::kOk:
+      return "ok";
+    case MeasureStatus::kSkipped:
+      return "skipped";
+    case MeasureStatus::kFailed:
+      return "failed";
   }
   return "unknown";
 }
@@ -117,11 +157,16 @@ Json toJson(const Results& results) {
   const RunContext& c = results.context;
   Json libraries = Json::object();
   for (const auto& [name, version] : c.libraries) libraries[name] = version;
-  Json context = {{"date", c.date},           {"run_id", c.run_id},
-                  {"git_sha", c.git_sha},     {"host", c.host},
-                  {"cpu", c.cpu},             {"compiler", c.compiler},
-                  {"build_type", c.build_type}, {"libraries", libraries},
-                  {"vulkan_device", c.vulkan_device}, {"command_line", c.command_line}};
+  Json context = {{"date", c.date},
+                  {"run_id", c.run_id},
+                  {"git_sha", c.git_sha},
+                  {"host", c.host},
+                  {"cpu", c.cpu},
+                  {"compiler", c.compiler},
+                  {"build_type", c.build_type},
+                  {"libraries", libraries},
+                  {"vulkan_device", c.vulkan_device},
+                  {"command_line", c.command_line}};
   Json assets = Json::array();
   for (const AssetSummary& a : results.assets) {
     assets.push_back({{"name", a.name},
@@ -135,13 +180,19 @@ Json toJson(const Results& results) {
   for (const Record& record : results.records) records.push_back(recordToJson(record));
   Json skipped = Json::array();
   for (const Skip& skip : results.skipped) {
-    skipped.push_back({{"technique", skip.technique}, {"asset", skip.asset}, {"reason", skip.reason}});
+    skipped.push_back(
+        {{"technique", skip.technique}, {"asset", skip.asset}, {"reason", skip.reason}});
+  }
+  Json measures = Json::array();
+  for (const MeasureDeclaration& declaration : results.measures) {
+    measures.push_back(toJson(declaration));
   }
   return {{"schema_version", results.schema_version},
           {"context", context},
           {"assets", assets},
           {"records", records},
-          {"skipped", skipped}};
+          {"skipped", skipped},
+          {"measures", measures}};
 }
 
 Results resultsFromJson(const Json& document) {
@@ -167,12 +218,11 @@ Results resultsFromJson(const Json& document) {
   const Json assets = field<Json>(document, "assets", "results");
   for (size_t i = 0; i < assets.size(); ++i) {
     const std::string at = "assets[" + std::to_string(i) + "]";
-    results.assets.push_back({field<std::string>(assets[i], "name", at),
-                              field<std::string>(assets[i], "path", at),
-                              field<size_t>(assets[i], "faces", at),
-                              field<size_t>(assets[i], "vertices", at),
-                              field<std::string>(assets[i], "face_kinds", at),
-                              field<bool>(assets[i], "normals_computed", at)});
+    results.assets.push_back(
+        {field<std::string>(assets[i], "name", at), field<std::string>(assets[i], "path", at),
+         field<size_t>(assets[i], "faces", at), field<size_t>(assets[i], "vertices", at),
+         field<std::string>(assets[i], "face_kinds", at),
+         field<bool>(assets[i], "normals_computed", at)});
   }
   const Json records = field<Json>(document, "records", "results");
   for (size_t i = 0; i < records.size(); ++i) {
@@ -185,7 +235,19 @@ Results resultsFromJson(const Json& document) {
                                field<std::string>(skipped[i], "asset", at),
                                field<std::string>(skipped[i], "reason", at)});
   }
+  const Json measures = field<Json>(document, "measures", "results");
+  for (size_t i = 0; i < measures.size(); ++i) {
+    results.measures.push_back(
+        declarationFromJson(measures[i], "measures[" + std::to_string(i) + "]"));
+  }
   return results;
+}
+
+const MeasureDeclaration* Results::findMeasure(const std::string& id) const {
+  for (const MeasureDeclaration& declaration : measures) {
+    if (declaration.measure == id) return &declaration;
+  }
+  return nullptr;
 }
 
 std::string serializeResults(const Results& results) { return toJson(results).dump(2) + "\n"; }

@@ -11,6 +11,9 @@
 namespace tb {
 
 nlohmann::ordered_json toJson(const Results& results);
+// One measure's declaration as results.json's "measures" array holds it (also what
+// `tessbench list measures --json` prints).
+nlohmann::ordered_json toJson(const MeasureDeclaration& declaration);
 // Throws std::runtime_error naming the field when the document does not match
 // the schema (or has another schema_version).
 Results resultsFromJson(const nlohmann::ordered_json& document);

@@ -7,15 +7,19 @@
 #include <string>
 #include <vector>
 
+#include "harness/results/metric_spec.h"
+
 namespace tb {
 
 // Bumped whenever a field changes meaning or is removed.
-constexpr int kResultsSchemaVersion = 1;
+// 2: measure declarations (metric units, directions, headline, fixed notes) at the top
+//    level; MeasureResult::notes hold only the notes about their own record.
+constexpr int kResultsSchemaVersion = 2;
 
 struct Metric {
-  std::string name;   // snake_case, with the unit in the name where ambiguous
+  std::string name;  // snake_case, declared by the measure (MeasureDeclaration::metrics)
   double value = 0;
-  std::string unit;   // "bytes", "ratio", "px", "ulp", "deg", ...
+  std::string unit;  // toString(Unit) of the declared unit: "bytes", "ratio", "ulp", ...
 };
 
 // One row of a measure: the parameters that vary inside the measure (e.g. the
@@ -28,11 +32,13 @@ struct MetricRow {
 enum class MeasureStatus { kOk, kSkipped, kFailed };
 
 struct MeasureResult {
-  std::string measure;               // measure id, e.g. "memory"
+  std::string measure;  // measure id, e.g. "memory"
   MeasureStatus status = MeasureStatus::kOk;
-  std::string reason;                // why it was skipped or failed; empty when ok
+  std::string reason;  // why it was skipped or failed; empty when ok
   std::vector<MetricRow> rows;
-  std::vector<std::string> notes;    // definitions worth repeating in reports
+  // Notes about this record alone (e.g. how this asset's patches were sampled); the notes
+  // that hold for every record are MeasureDeclaration::notes.
+  std::vector<std::string> notes;
 };
 
 // One (technique, variant, asset, parameters) combination.
@@ -46,8 +52,8 @@ struct Record {
 };
 
 struct AssetSummary {
-  std::string name;        // e.g. "opensubdiv/catmark_cube"
-  std::string path;        // relative to the source tree when bundled
+  std::string name;  // e.g. "opensubdiv/catmark_cube"
+  std::string path;  // relative to the source tree when bundled
   size_t faces = 0;
   size_t vertices = 0;
   std::string face_kinds;  // "triangles", "quads", "mixed (max 5)"
@@ -62,15 +68,15 @@ struct Skip {
 };
 
 struct RunContext {
-  std::string date;                 // ISO 8601 UTC; excluded from determinism checks
-  std::string run_id;               // the folder name; excluded from determinism checks
+  std::string date;    // ISO 8601 UTC; excluded from determinism checks
+  std::string run_id;  // the folder name; excluded from determinism checks
   std::string git_sha;
   std::string host;
   std::string cpu;
   std::string compiler;
   std::string build_type;
   std::map<std::string, std::string> libraries;  // name -> version
-  std::string vulkan_device;        // empty when no device was opened
+  std::string vulkan_device;                     // empty when no device was opened
   std::string command_line;
 };
 
@@ -80,6 +86,9 @@ struct Results {
   std::vector<AssetSummary> assets;
   std::vector<Record> records;
   std::vector<Skip> skipped;
+  // One per measure the run selected, sorted by id.
+  std::vector<MeasureDeclaration> measures;
+  const MeasureDeclaration* findMeasure(const std::string& id) const;
 };
 
 const char* toString(MeasureStatus status);

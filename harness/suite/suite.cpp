@@ -1,5 +1,6 @@
 #include "harness/suite/suite.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -206,6 +207,13 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   run.camera_paths = selection.camera_paths;
   if (run.camera_paths.empty()) run.camera_paths = {testOrbitPath};
   run.results = results;
+  for (const Measure* measure : run.measures) {
+    results->measures.push_back(declarationOf(measure->info()));
+  }
+  std::sort(results->measures.begin(), results->measures.end(),
+            [](const MeasureDeclaration& a, const MeasureDeclaration& b) {
+              return a.measure < b.measure;
+            });
   std::vector<AssetRef> refs = selection.assets;
   if (refs.empty()) refs = bundledAssets();
   openDevice(selection.device_name, &run);

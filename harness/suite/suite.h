@@ -29,7 +29,8 @@ struct SuiteSelection {
 // Called before each technique × variant × asset (or scenario) step: (done, total, label).
 using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 
-// Fills assets, records and skipped of `results` (never the context). An asset
+// Fills assets, records, skipped and the selected measures' declarations of `results`
+// (never the context). An asset
 // that fails to load aborts the run with InputError: a named asset must be
 // usable. A technique that cannot take an asset is recorded as skipped, with
 // its reason. Which measures run where is decided by measureRuns (measure_rule.h).

@@ -1,8 +1,8 @@
 #version 460
 // Counting probe, never drawn: the geometry patch's position alone, in the Bézier order
-// of specialisation constant 0, so harness/measures/seed_figures.cpp can set seed 000's
-// four evaluation orders (60 / 105 / 75 / 69 instructions there) beside ours with nothing
-// else in the stage. Same inputs and code as acc.tese.
+// of specialisation constant 0, so harness/measures/seed_figures_measure.cpp can set
+// seed 000's four evaluation orders (60 / 105 / 75 / 69 instructions there) beside ours
+// with nothing else in the stage. Same inputs and code as acc.tese.
 #extension GL_GOOGLE_include_directive : require
 #include "bezier.glsl"
 

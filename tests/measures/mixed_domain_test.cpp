@@ -15,7 +15,7 @@
 #include "harness/measures/cracks.h"
 #include "harness/measures/measure.h"
 #include "harness/measures/memory.h"
-#include "harness/measures/surface_error.h"
+#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"

@@ -36,6 +36,43 @@ TEST(Markdown, SkippedMeasureShowsItsReason) {
   EXPECT_NE(renderMarkdown(results).find("skipped: no Vulkan device"), std::string::npos);
 }
 
+// Fixed notes come from the declaration, once; a record's own notes follow the table,
+// each naming its record, whichever record has them (not only the first).
+TEST(Markdown, RendersFixedNotesOnceAndEachRecordsOwnNotes) {
+  Results results;
+  MeasureDeclaration error{"error",       "Error against the limit",
+                           "distances",   {},
+                           {"hausdorff"}, {"distances are fractions of the bounding-box diagonal"}};
+  error.metrics = {{"hausdorff", Unit::kDiagonal, Direction::kLowerIsBetter},
+                   {"samples", Unit::kCount, Direction::kNone}};
+  results.measures.push_back(error);
+  for (const char* asset : {"opensubdiv/catmark_cube", "opensubdiv/catmark_pyramid"}) {
+    Record record{"gregory_acc", "edge_symmetric", asset, {}, {}, {}};
+    MeasureResult m;
+    m.measure = "error";
+    m.rows.push_back({{}, {{"hausdorff", 0.25, "rel_diag"}, {"samples", 81, "count"}}});
+    if (std::string(asset).ends_with("pyramid")) {
+      m.notes = {"4 triangle patches compared through sub-faces"};
+    }
+    record.measures.push_back(m);
+    results.records.push_back(record);
+  }
+  const std::string md = renderMarkdown(results);
+  const std::string note = "distances are fractions of the bounding-box diagonal";
+  const size_t fixed = md.find("- " + note);
+  EXPECT_NE(fixed, std::string::npos) << md;
+  EXPECT_EQ(md.find(note, fixed + 3), std::string::npos) << "rendered once";
+  EXPECT_NE(md.find("| hausdorff (rel_diag, lower better) | samples (count) |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("- headline: hausdorff"), std::string::npos) << md;
+  EXPECT_NE(md.find("Notes per record"), std::string::npos) << md;
+  EXPECT_NE(md.find("- gregory_acc/edge_symmetric on opensubdiv/catmark_pyramid: 4 triangle "
+                    "patches compared through sub-faces"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("on opensubdiv/catmark_cube: "), std::string::npos) << "the cube has no note";
+}
+
 TEST(Markdown, FormatsBytesAndValues) {
   EXPECT_EQ(formatBytes(812), "812 B");
   EXPECT_EQ(formatBytes(1536), "1.50 KiB");

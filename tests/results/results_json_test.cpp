@@ -1,6 +1,9 @@
+#include "harness/results/results_json.h"
+
 #include <gtest/gtest.h>
 
-#include "harness/results/results_json.h"
+#include <set>
+#include <string_view>
 
 namespace tb {
 namespace {
@@ -20,6 +23,13 @@ Results sampleResults() {
   record.measures.push_back(skipped);
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
+  results.measures.push_back({"memory",
+                              "Memory",
+                              "bytes",
+                              {{"plain_bytes", Unit::kBytes, Direction::kNone},
+                               {"ratio", Unit::kRatio, Direction::kHigherIsBetter}},
+                              {"ratio"},
+                              {"a fixed note"}});
   return results;
 }
 
@@ -53,6 +63,36 @@ TEST(ResultsJson, RejectsAnotherSchemaVersionAndMissingFields) {
     EXPECT_NE(std::string(error.what()).find("records[0]: missing field 'asset'"), std::string::npos)
         << error.what();
   }
+}
+
+TEST(ResultsJson, RoundTripsMeasureDeclarationsAndRejectsUnknownUnits) {
+  const Results original = sampleResults();
+  const Results parsed = resultsFromJson(toJson(original));
+  ASSERT_EQ(parsed.measures.size(), 1u);
+  const MeasureDeclaration& memory = *parsed.findMeasure("memory");
+  EXPECT_EQ(memory.metrics, original.measures[0].metrics);
+  EXPECT_EQ(memory.headline, std::vector<std::string>{"ratio"});
+  EXPECT_EQ(memory.notes, std::vector<std::string>{"a fixed note"});
+  auto json = toJson(original);
+  EXPECT_EQ(json["measures"][0]["metrics"][1]["unit"], "ratio");
+  EXPECT_EQ(json["measures"][0]["metrics"][1]["direction"], "higher");
+  json["measures"][0]["metrics"][1]["unit"] = "furlongs";
+  EXPECT_THROW(resultsFromJson(json), std::runtime_error);
+}
+
+TEST(MetricSpec, EveryUnitAndDirectionHasOneSpelling) {
+  std::set<std::string_view> spellings;
+  for (Unit unit : allUnits()) {
+    EXPECT_TRUE(spellings.insert(toString(unit)).second) << toString(unit);
+    EXPECT_EQ(parseUnit(toString(unit)), unit);
+    EXPECT_FALSE(describe(unit).empty());
+  }
+  EXPECT_EQ(parseUnit("ulp of scale"), std::nullopt);
+  for (Direction direction :
+       {Direction::kLowerIsBetter, Direction::kHigherIsBetter, Direction::kNone}) {
+    EXPECT_EQ(parseDirection(toString(direction)), direction);
+  }
+  EXPECT_EQ(parseDirection("sideways"), std::nullopt);
 }
 
 }  // namespace

@@ -19,7 +19,12 @@ using testing::SurfaceDoubleTechnique;
 class SurfaceCountMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_surface_count", "patches", "patch count"};
+    static const MeasureInfo kInfo{"test_surface_count",
+                                   "patches",
+                                   "patch count",
+                                   {{"patches", Unit::kCount, Direction::kNone}},
+                                   {},
+                                   {}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -37,7 +42,16 @@ class SurfaceCountMeasure final : public Measure {
 class SimulationStepMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_simulation_steps", "steps", "state after the scenario"};
+    static const MeasureInfo kInfo{"test_simulation_steps",
+                                   "steps",
+                                   "state after the scenario",
+                                   {{"start_time", Unit::kSeconds, Direction::kNone},
+                                    {"time", Unit::kSeconds, Direction::kNone},
+                                    {"elements", Unit::kCount, Direction::kNone},
+                                    {"last_position", Unit::kWorld, Direction::kNone},
+                                    {"state_bytes", Unit::kBytes, Direction::kLowerIsBetter}},
+                                   {"state_bytes"},
+                                   {}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -56,7 +70,7 @@ class SimulationStepMeasure final : public Measure {
                            {{"start_time", start_s, "s"},
                             {"time", state.time_s, "s"},
                             {"elements", double(state.element_count), "count"},
-                            {"last_position", double(position->values.back()), "m"},
+                            {"last_position", double(position->values.back()), "world"},
                             {"state_bytes", double(simulation.footprint().state_bytes), "bytes"}}});
     return result;
   }
@@ -66,7 +80,14 @@ class SimulationStepMeasure final : public Measure {
 class ViewMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_view", "view", "projected first vertex"};
+    static const MeasureInfo kInfo{"test_view",
+                                   "view",
+                                   "projected first vertex",
+                                   {{"x", Unit::kPixels, Direction::kNone},
+                                    {"y", Unit::kPixels, Direction::kNone},
+                                    {"width", Unit::kPixels, Direction::kNone}},
+                                   {},
+                                   {}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -7,7 +7,7 @@
 #include <bit>
 #include <cmath>
 
-#include "harness/measures/surface_error.h"
+#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
 #include "core/mesh/topology.h"
 #include "core/tess/tessellator.h"

@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "reference/limit_surface.h"
+#include "reference/scheme.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -12,11 +13,11 @@ namespace tb {
 // Every distance is a fraction of the control mesh's bounding-box diagonal
 // (best case 0; a visible error on a 1000-pixel-wide object starts near 1e-3).
 struct SurfaceErrorFigures {
-  double bbox_diagonal = 0;               // world units
+  double bbox_diagonal = 0;  // world units
   // |S(p, u, v) - limit(face(p), u, v)| at the same parameter.
   double parametric_max = 0;
   double parametric_rms = 0;
-  double parametric_max_near_extraordinary = 0;  // samples within kNearExtraordinary of one
+  double parametric_max_near_xord = 0;  // samples near an extraordinary vertex (kNearExtraordinary)
   double parametric_max_elsewhere = 0;
   // Two-sided distance between the technique's tessellation and a dense
   // tessellation of the limit, sampled inside triangles.
@@ -28,9 +29,9 @@ struct SurfaceErrorFigures {
   // parameter, in degrees (best 0, worst 180).
   double normal_max_deg = 0;
   double normal_mean_deg = 0;
-  size_t samples = 0;                   // parametric samples taken
-  size_t samples_near_extraordinary = 0;
-  size_t patches_without_limit = 0;     // hole faces etc., left out
+  size_t samples = 0;  // parametric samples taken
+  size_t samples_near_xord = 0;
+  size_t patches_without_limit = 0;  // hole faces etc., left out
   // Triangle patches over Catmull-Clark triangles, sampled through Bfr's quad sub-faces
   // (kErrorSubFaceSampleLevel); 0 for single-scheme techniques.
   size_t patches_through_sub_faces = 0;
@@ -47,6 +48,9 @@ constexpr int kErrorSubFaceSampleLevel = kErrorSampleLevel / 2;
 // A sample is "near" an extraordinary vertex when its barycentric weight (or
 // bilinear weight, for quads) of that corner is at least this.
 constexpr double kNearExtraordinary = 0.75;
+
+// The scheme of the limit a technique is graded against: the one its patches approximate.
+ref::Scheme referenceScheme(LimitScheme scheme);
 
 // The limit surface must be built over patches.controlMesh(), whose face p is patch p,
 // under the scheme patches.approximates() names. Each patch is sampled in its own

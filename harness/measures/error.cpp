@@ -1,4 +1,4 @@
-#include "harness/measures/surface_error.h"
+#include "harness/measures/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "harness/measures/measure.h"
 #include "core/mesh/input_error.h"
 #include "core/mesh/topology.h"
 #include "reference/hausdorff.h"
@@ -16,10 +15,6 @@
 
 namespace tb {
 namespace {
-
-ref::Scheme limitScheme(LimitScheme scheme) {
-  return scheme == LimitScheme::kLoop ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;
-}
 
 struct PatchSample {
   DomainCoord coord;                    // as the technique takes it
@@ -140,9 +135,13 @@ double angleDegrees(const Vec3d& a, const Vec3d& b) {
 
 }  // namespace
 
+ref::Scheme referenceScheme(LimitScheme scheme) {
+  return scheme == LimitScheme::kLoop ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;
+}
+
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                                         const ref::LimitSurface& limit) {
-  const ref::Scheme scheme = limitScheme(patches.approximates());
+  const ref::Scheme scheme = referenceScheme(patches.approximates());
   if (limit.scheme() != scheme) {
     throw std::logic_error("error: the patches approximate " +
                            std::string(ref::schemeName(scheme)) + " but the limit surface is " +
@@ -188,10 +187,9 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
         near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
                 sample.corner_weight[c] >= kNearExtraordinary;
       }
-      double& bucket =
-          near ? figures.parametric_max_near_extraordinary : figures.parametric_max_elsewhere;
+      double& bucket = near ? figures.parametric_max_near_xord : figures.parametric_max_elsewhere;
       bucket = std::max(bucket, error);
-      figures.samples_near_extraordinary += near;
+      figures.samples_near_xord += near;
       figures.parametric_max = std::max(figures.parametric_max, error);
       squared_sum += error * error;
       const double angle = angleDegrees(point.normal, exact.normal);
@@ -213,90 +211,13 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   }
   // Relative to the bounding-box diagonal, as every error figure is reported.
   const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
-  for (double* value :
-       {&figures.parametric_max, &figures.parametric_rms,
-        &figures.parametric_max_near_extraordinary, &figures.parametric_max_elsewhere,
-        &figures.hausdorff, &figures.hausdorff_technique_to_limit,
-        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
+  for (double* value : {&figures.parametric_max, &figures.parametric_rms,
+                        &figures.parametric_max_near_xord, &figures.parametric_max_elsewhere,
+                        &figures.hausdorff, &figures.hausdorff_technique_to_limit,
+                        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
     *value *= scale;
   }
   return figures;
 }
 
-namespace {
-
-class SurfaceErrorMeasure final : public Measure {
- public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{
-        "error", "Error against the exact limit surface",
-        "parametric and two-sided Hausdorff distance (fraction of the bounding-box diagonal) "
-        "and normal deviation (degrees) against the OpenSubdiv Bfr limit"};
-    return kInfo;
-  }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
-  }
-
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
-    result.measure = info().id;
-    // Graded against the scheme the patches approximate (by default, triangle techniques
-    // against the Loop limit of the same triangle mesh, quad techniques against the
-    // Catmull-Clark limit; docs/ARCHITECTURE.md §3, error).
-    const ref::Scheme scheme = limitScheme(input.patches->approximates());
-    result.notes = {
-        "distances are fractions of the bounding-box diagonal; normals in degrees",
-        "triangle techniques against the Loop limit of their triangle mesh, quad techniques "
-        "against the Catmull-Clark limit (OpenSubdiv Bfr, double, approximation level 10)",
-        "samples: a lattice of " + std::to_string(kErrorSampleLevel) +
-            " segments per patch edge; reference tessellated at rate " +
-            std::to_string(kErrorReferenceRate) + "; near extraordinary: corner weight >= 0.75"};
-    try {
-      const ref::LimitSurface limit(input.patches->controlMesh(), scheme);
-      const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit);
-      if (f.patches_through_sub_faces > 0) {
-        result.notes[1] =
-            "every patch, quad or triangle, against the Catmull-Clark limit of the control mesh, "
-            "the scheme the technique approximates (OpenSubdiv Bfr, double, approximation level "
-            "10)";
-        result.notes.push_back(
-            "triangle patches of a Catmull-Clark mesh (" +
-            std::to_string(f.patches_through_sub_faces) +
-            " here) are compared through Bfr's three quad sub-faces of the triangle: a " +
-            std::to_string(kErrorSubFaceSampleLevel) +
-            "-segment (s,t) grid on each sub-face, mapped bilinearly through its corners (patch "
-            "corner, edge midpoints, centroid) to the patch's barycentric domain; their "
-            "parametric error therefore depends on that map, their Hausdorff distance does not");
-      }
-      MetricRow row;
-      row.keys["reference"] = scheme == ref::Scheme::kLoop ? "loop_limit" : "catmull_clark_limit";
-      row.metrics = {
-          {"parametric_max", f.parametric_max, "rel_diag"},
-          {"parametric_rms", f.parametric_rms, "rel_diag"},
-          {"parametric_max_near_xord", f.parametric_max_near_extraordinary, "rel_diag"},
-          {"parametric_max_elsewhere", f.parametric_max_elsewhere, "rel_diag"},
-          {"hausdorff", f.hausdorff, "rel_diag"},
-          {"hausdorff_tech_to_limit", f.hausdorff_technique_to_limit, "rel_diag"},
-          {"hausdorff_limit_to_tech", f.hausdorff_limit_to_technique, "rel_diag"},
-          {"rms_distance", f.rms_distance, "rel_diag"},
-          {"normal_max", f.normal_max_deg, "deg"},
-          {"normal_mean", f.normal_mean_deg, "deg"},
-          {"samples", double(f.samples), "count"},
-          {"samples_near_xord", double(f.samples_near_extraordinary), "count"},
-          {"patches_without_limit", double(f.patches_without_limit), "count"},
-          {"bbox_diagonal", f.bbox_diagonal, "world"},
-      };
-      result.rows.push_back(std::move(row));
-    } catch (const InputError& error) {
-      result.status = MeasureStatus::kSkipped;
-      result.reason = std::string("reference cannot represent the mesh: ") + error.what();
-    }
-    return result;
-  }
-};
-
-TB_REGISTER_MEASURE(SurfaceErrorMeasure);
-
-}  // namespace
 }  // namespace tb

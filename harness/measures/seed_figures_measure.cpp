@@ -16,6 +16,7 @@
 
 #include "harness/measures/instructions.h"
 #include "harness/measures/measure.h"
+#include "harness/measures/metric_table.h"
 #include "shaders/embedded_shaders.h"
 
 namespace tb {
@@ -23,7 +24,7 @@ namespace {
 
 struct SeedOrder {
   const char* name;
-  uint32_t order;       // specialisation constant 0 of shaders/common/bezier.glsl users
+  uint32_t order;  // specialisation constant 0 of shaders/common/bezier.glsl users
   double seed_instructions;
 };
 constexpr std::array<SeedOrder, 4> kSeed000Orders{{
@@ -37,15 +38,28 @@ constexpr std::array<SeedOrder, 4> kSeed000Orders{{
 // listing counts ALU (a float3 mad is one).
 double alu(const InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
 
-std::vector<Metric> comparisonMetrics(double seed_alu, double seed_loads,
-                                      const StageInstructionCounts& ours) {
-  return {
-      {"seed_alu", seed_alu, "count"},
-      {"seed_loads", seed_loads, "count"},
-      {"ours_alu_vector", alu(ours.vector), "count"},
-      {"ours_alu_scalar", alu(ours.scalar), "count"},
-      {"ours_loads", double(ours.vector.load_store), "count"},
+// One row: a published figure beside ours for the same stage.
+struct SeedComparison {
+  double seed_alu = 0;
+  double seed_loads = 0;  // 0: not published
+  StageInstructionCounts ours;
+};
+
+// The seed's figures are context; ours are instruction counts, better lower.
+const MetricTable<SeedComparison>& comparisonTable() {
+  using D = Direction;
+  using S = SeedComparison;
+  static const MetricTable<S> kTable{
+      {"seed_alu", Unit::kCount, D::kNone, &S::seed_alu},
+      {"seed_loads", Unit::kCount, D::kNone, &S::seed_loads},
+      {"ours_alu_vector", Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return alu(s.ours.vector); }},
+      {"ours_alu_scalar", Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return alu(s.ours.scalar); }},
+      {"ours_loads", Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return double(s.ours.vector.load_store); }},
   };
+  return kTable;
 }
 
 std::string probePath(const Technique& technique) {
@@ -56,9 +70,27 @@ class SeedFiguresMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "seed_figures", "Shader costs beside the seed talks' published figures",
+        "seed_figures",
+        "Shader costs beside the seed talks' published figures",
         "static SPIR-V instruction counts (spirv-opt -O) of the four Bézier evaluation orders "
-        "and of ACC's domain shader, beside seed 000's and seed 001's numbers"};
+        "and of ACC's domain shader, beside seed 000's and seed 001's numbers",
+        comparisonTable().specs(),
+        {"ours_alu_vector", "ours_alu_scalar"},
+        {"ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
+         "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
+         "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
+         "seed_loads 0: not published",
+         "seed 000 counts D3D11 domain-shader instructions of the position evaluation alone; "
+         "ours count shaders/<technique>/bezier_position.tese (the same evaluation, nothing "
+         "else). Compare increments over asymmetric: every order adds the same work to the "
+         "shared part (the B0..B3 bases of u and v and the first row products), so the "
+         "seed's increments (+45, +15, +9) are the test of the reproduction; the absolute "
+         "counts differ by the basis cost, which a D3D listing packs into float2 ops",
+         "seed 001 counts the SubD10 domain shader: 16 loads / ~73 ALU for a regular patch "
+         "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
+         "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
+         "(the no_tangent variant fills the tangent patches with the derivative patches), so "
+         "both rows are the same stage"}};
     return kInfo;
   }
   // Only techniques that ship the probe shader (acc); it reads their GPU program.
@@ -71,22 +103,6 @@ class SeedFiguresMeasure final : public Measure {
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
-    result.notes = {
-        "ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
-        "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
-        "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
-        "seed_loads 0: not published",
-        "seed 000 counts D3D11 domain-shader instructions of the position evaluation alone; "
-        "ours count shaders/" + probePath(input.technique) + " (the same evaluation, nothing "
-        "else). Compare increments over asymmetric: every order adds the same work to the "
-        "shared part (the B0..B3 bases of u and v and the first row products), so the "
-        "seed's increments (+45, +15, +9) are the test of the reproduction; the absolute "
-        "counts differ by the basis cost, which a D3D listing packs into float2 ops",
-        "seed 001 counts the SubD10 domain shader: 16 loads / ~73 ALU for a regular patch "
-        "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
-        "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
-        "(the no_tangent variant fills the tangent patches with the derivative patches), so "
-        "both rows are the same stage"};
     const std::string probe = probePath(input.technique);
     try {
       for (const SeedOrder& order : kSeed000Orders) {
@@ -94,7 +110,7 @@ class SeedFiguresMeasure final : public Measure {
         MetricRow row;
         row.keys["seed"] = "000";
         row.keys["what"] = std::string("bezier position, ") + order.name;
-        row.metrics = comparisonMetrics(order.seed_instructions, 0, counts);
+        row.metrics = comparisonTable().metrics({order.seed_instructions, 0, counts});
         result.rows.push_back(std::move(row));
       }
       // The domain shader of the technique's program, default order (symmetric_fma).
@@ -108,7 +124,7 @@ class SeedFiguresMeasure final : public Measure {
           MetricRow row;
           row.keys["seed"] = "001";
           row.keys["what"] = std::string(what) + ", " + program->evaluation_shader;
-          row.metrics = comparisonMetrics(seed_alu, seed_loads, tes);
+          row.metrics = comparisonTable().metrics({seed_alu, seed_loads, tes});
           result.rows.push_back(std::move(row));
         }
       }

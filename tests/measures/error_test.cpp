@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "harness/measures/surface_error.h"
+#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
@@ -45,7 +45,7 @@ TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
   // Only the chords of the two tessellations separate them.
   EXPECT_LT(f.hausdorff, 2e-3);
   EXPECT_GT(f.samples, 0u);
-  EXPECT_GT(f.samples_near_extraordinary, 0u);  // the icosahedron's vertices have valence 5
+  EXPECT_GT(f.samples_near_xord, 0u);  // the icosahedron's vertices have valence 5
 }
 
 TEST(SurfaceError, AKnownOffsetIsMeasuredExactly) {

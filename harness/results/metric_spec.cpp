@@ -1,0 +1,91 @@
+#include "harness/results/metric_spec.h"
+
+#include <array>
+
+namespace tb {
+namespace {
+
+struct UnitText {
+  Unit unit;
+  std::string_view spelling;
+  std::string_view description;
+};
+constexpr std::array<UnitText, 13> kUnits{{
+    {Unit::kCount, "count", "count"},
+    {Unit::kBytes, "bytes", "bytes"},
+    {Unit::kRatio, "ratio", "ratio"},
+    {Unit::kDiagonal, "rel_diag", "fraction of the bounding-box diagonal"},
+    {Unit::kDegrees, "deg", "degrees"},
+    {Unit::kUlp, "ulp", "float ulps"},
+    {Unit::kScaleUlp, "scale_ulp", "float ulps at the model's largest coordinate"},
+    {Unit::kWorld, "world", "world (asset) units"},
+    {Unit::kPixels, "px", "pixels"},
+    {Unit::kSeconds, "s", "seconds"},
+    {Unit::kId, "id", "index (-1: none)"},
+    {Unit::kFlag, "flag", "0 or 1"},
+    {Unit::kEdgeParameter, "edge_parameter", "edge parameter (0 to 1)"},
+}};
+
+struct DirectionText {
+  Direction direction;
+  std::string_view spelling;
+  std::string_view description;
+};
+constexpr std::array<DirectionText, 3> kDirections{{
+    {Direction::kLowerIsBetter, "lower", "lower is better"},
+    {Direction::kHigherIsBetter, "higher", "higher is better"},
+    {Direction::kNone, "none", "context (neither better)"},
+}};
+
+const UnitText& unitText(Unit unit) {
+  for (const UnitText& text : kUnits) {
+    if (text.unit == unit) return text;
+  }
+  return kUnits[0];  // unreachable for a valid enumerator
+}
+
+const DirectionText& directionText(Direction direction) {
+  for (const DirectionText& text : kDirections) {
+    if (text.direction == direction) return text;
+  }
+  return kDirections[2];
+}
+
+}  // namespace
+
+std::string_view toString(Unit unit) { return unitText(unit).spelling; }
+std::string_view describe(Unit unit) { return unitText(unit).description; }
+std::string_view toString(Direction direction) { return directionText(direction).spelling; }
+std::string_view describe(Direction direction) { return directionText(direction).description; }
+
+std::optional<Unit> parseUnit(std::string_view text) {
+  for (const UnitText& unit : kUnits) {
+    if (unit.spelling == text) return unit.unit;
+  }
+  return std::nullopt;
+}
+
+std::optional<Direction> parseDirection(std::string_view text) {
+  for (const DirectionText& direction : kDirections) {
+    if (direction.spelling == text) return direction.direction;
+  }
+  return std::nullopt;
+}
+
+const std::vector<Unit>& allUnits() {
+  static const std::vector<Unit> kAll = [] {
+    std::vector<Unit> units;
+    for (const UnitText& text : kUnits) units.push_back(text.unit);
+    return units;
+  }();
+  return kAll;
+}
+
+const MetricSpec* MeasureDeclaration::find(std::string_view name) const {
+  for (const MetricSpec& spec : metrics) {
+    if (spec.name == name) return &spec;
+  }
+  return nullptr;
+}
+
+}  // namespace tb
