@@ -44,11 +44,12 @@ TEST(Declarations, EveryRegisteredMeasureDeclaresEachMetricOnce) {
     }
     ASSERT_FALSE(info.headline.empty()) << "a measure names what a summary shows first";
     std::set<std::string> headline;
+    const MeasureDeclaration declaration = declarationOf(info);
     for (const std::string& name : info.headline) {
       EXPECT_TRUE(names.contains(name)) << name << " is a headline but not declared";
       EXPECT_TRUE(headline.insert(name).second) << name << " is a headline twice";
       // A summary's first figure has a direction: it ranks techniques.
-      const MetricSpec* spec = declarationOf(info).find(name);
+      const MetricSpec* spec = declaration.find(name);
       ASSERT_NE(spec, nullptr);
       EXPECT_NE(spec->direction, Direction::kNone) << name;
     }
