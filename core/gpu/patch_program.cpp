@@ -141,14 +141,6 @@ tess::Levels deviceLevels(tess::Domain domain, tess::Spacing spacing, const tess
   return spacing == tess::Spacing::kPow2 ? tess::roundPow2Levels(domain, levels) : levels;
 }
 
-using LevelsKey = std::array<uint32_t, 6>;
-LevelsKey levelsKey(const tess::Levels& levels) {
-  LevelsKey key{};
-  for (int i = 0; i < 4; ++i) key[i] = std::bit_cast<uint32_t>(levels.outer[i]);
-  for (int i = 0; i < 2; ++i) key[4 + i] = std::bit_cast<uint32_t>(levels.inner[i]);
-  return key;
-}
-
 // Upper bound of TES invocations of one patch: the CPU tessellator's distinct points,
 // doubled (fractional spacing may run the TES twice on one coordinate) plus slack.
 uint64_t invocationBound(tess::Domain domain, tess::Spacing spacing,
@@ -164,11 +156,11 @@ uint64_t invocationBound(tess::Domain domain, tess::Spacing spacing,
 std::vector<uint64_t> invocationBounds(tess::Domain domain, tess::Spacing spacing,
                                        std::span<const tess::Levels> device_levels, uint32_t first,
                                        uint32_t end) {
-  std::map<LevelsKey, uint64_t> by_levels;
+  std::map<tess::LevelsBits, uint64_t> by_levels;
   std::vector<uint64_t> bounds;
   bounds.reserve(end - first);
   for (uint32_t p = first; p < end; ++p) {
-    const LevelsKey key = levelsKey(device_levels[p]);
+    const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     auto it = by_levels.find(key);
     if (it == by_levels.end()) {
       it = by_levels.emplace(key, invocationBound(domain, spacing, device_levels[p])).first;
@@ -220,7 +212,7 @@ std::vector<Buffer> uploadStorageBuffers(Context& context, const GpuPatchProgram
 Buffer uploadPatchLevels(Context& context, std::span<const tess::Levels> device_levels) {
   std::vector<PatchLevelsBits> bits(std::max<size_t>(device_levels.size(), 1));
   for (size_t p = 0; p < device_levels.size(); ++p) {
-    const LevelsKey key = levelsKey(device_levels[p]);
+    const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     std::copy(key.begin(), key.begin() + 4, bits[p].outer_bits);
     std::copy(key.begin() + 4, key.end(), bits[p].inner_bits);
   }

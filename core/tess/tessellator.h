@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -27,13 +28,23 @@ struct Levels {
   std::array<float, 2> inner{1, 1};
 };
 
+// The levels as float bits (outer 0..3, inner 0..1): a key under which equal levels share
+// one tessellation, with -0 and each NaN kept distinct as the tessellator sees them.
+using LevelsBits = std::array<uint32_t, 6>;
+inline LevelsBits levelsBits(const Levels& levels) {
+  LevelsBits bits{};
+  for (int i = 0; i < 4; ++i) bits[i] = std::bit_cast<uint32_t>(levels.outer[i]);
+  for (int i = 0; i < 2; ++i) bits[4 + i] = std::bit_cast<uint32_t>(levels.inner[i]);
+  return bits;
+}
+
 // One domain point as the TES sees gl_TessCoord. Triangle: (u, v, w) barycentric;
 // quad and isoline: (u, v, 0). Every coordinate is a multiple of 2^-16.
 using DomainPoint = std::array<float, 3>;
 
 struct Tessellation {
-  bool culled = false;                          // any relevant outer level <= 0 or NaN
-  std::vector<DomainPoint> points;              // unique domain points (= TES invocations)
+  bool culled = false;                             // any relevant outer level <= 0 or NaN
+  std::vector<DomainPoint> points;                 // unique domain points (= TES invocations)
   std::vector<std::array<uint32_t, 3>> triangles;  // indices into points (tri/quad domains)
   std::vector<std::array<uint32_t, 2>> lines;      // indices into points (isoline domain)
 };
@@ -47,10 +58,10 @@ Tessellation tessellate(Domain domain, Spacing spacing, const Levels& levels,
                         const Options& options = {});
 
 // Closed-form counts for uniform integer level n >= 1 (tested against tessellate()).
-uint64_t quadPointCount(uint32_t n);        // (n+1)^2
-uint64_t quadTriangleCount(uint32_t n);     // 2 n^2
-uint64_t trianglePointCount(uint32_t n);    // odd n: 3((n+1)/2)^2; even n: 3(n/2)(n/2+1)+1
-uint64_t triangleTriangleCount(uint32_t n); // floor(3 n^2 / 2)
+uint64_t quadPointCount(uint32_t n);         // (n+1)^2
+uint64_t quadTriangleCount(uint32_t n);      // 2 n^2
+uint64_t trianglePointCount(uint32_t n);     // odd n: 3((n+1)/2)^2; even n: 3(n/2)(n/2+1)+1
+uint64_t triangleTriangleCount(uint32_t n);  // floor(3 n^2 / 2)
 
 std::string_view toString(Domain d);
 std::string_view toString(Spacing s);

@@ -83,15 +83,6 @@ struct CoordBitsHash {
   }
 };
 
-// Levels as bits, so that equal levels share one tessellation and -0/NaN stay distinct.
-using LevelsBits = std::array<uint32_t, 6>;
-LevelsBits levelsBits(const tess::Levels& levels) {
-  LevelsBits bits{};
-  for (int i = 0; i < 4; ++i) bits[i] = std::bit_cast<uint32_t>(levels.outer[i]);
-  for (int i = 0; i < 2; ++i) bits[4 + i] = std::bit_cast<uint32_t>(levels.inner[i]);
-  return bits;
-}
-
 // The boundary points of every patch, from one tessellation per distinct (domain, levels)
 // (patches may mix quads and triangles and carry their own levels), and where each
 // patch's points start in the flat positions array.
@@ -113,11 +104,11 @@ PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spa
   b.tessellation.resize(patches.patchCount());
   b.domain.resize(patches.patchCount());
   b.offset.assign(patches.patchCount() + 1, 0);
-  std::map<std::pair<PatchDomain, LevelsBits>, uint32_t> cache;
+  std::map<std::pair<PatchDomain, tess::LevelsBits>, uint32_t> cache;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const PatchDomain domain = patches.patchDomain(p);
     b.domain[p] = domain;
-    const auto key = std::make_pair(domain, levelsBits(patch_levels[p]));
+    const auto key = std::make_pair(domain, tess::levelsBits(patch_levels[p]));
     auto found = cache.find(key);
     if (found == cache.end()) {
       const tess::Tessellation tessellation =

@@ -9,25 +9,14 @@
 #include <vector>
 
 #include "techniques/technique.h"
+#include "tests/measures/face_patches.h"
 
 namespace tb::testing {
 
 // Flat bilinear quads and flat triangles over the asset's faces.
-class FlatFacePatches final : public SurfacePatches {
+class FlatFacePatches final : public FacePatches {
  public:
-  explicit FlatFacePatches(const Mesh& mesh) : mesh_(mesh) {}
-  PatchDomain patchDomain(size_t patch) const override {
-    return mesh_.faceSize(patch) == 4 ? PatchDomain::kQuad : PatchDomain::kTriangle;
-  }
-  size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
-  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
-    std::array<uint32_t, 4> corners{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
-    const auto face = mesh_.facePositions(patch);
-    for (size_t k = 0; k < face.size() && k < 4; ++k) corners[k] = face[k];
-    return corners;
-  }
-  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  explicit FlatFacePatches(const Mesh& mesh) : FacePatches(mesh) {}
   SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
     const auto face = mesh_.facePositions(patch);
     const auto at = [&](size_t k) { return mesh_.positions[face[k]]; };
@@ -41,12 +30,6 @@ class FlatFacePatches final : public SurfacePatches {
     const SurfacePoint p = evaluate(patch, {c[0], c[1], c[2]});
     return {vecCast<float>(p.position), {0, 0, 0}};
   }
-  DataFootprint footprint() const override { return {}; }
-  const std::vector<std::string>& warnings() const override { return warnings_; }
-
- private:
-  Mesh mesh_;
-  std::vector<std::string> warnings_;
 };
 
 class SurfaceDoubleTechnique final : public Technique {
