@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -55,6 +56,35 @@ std::vector<const Measure*> selectMeasures(const std::vector<std::string>& ids) 
   return selected;
 }
 
+// Wall seconds per record × measure, beside results.json: timings change run to run, the
+// results must not.
+std::string timingsJson(const SuiteTimings& timings) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const MeasureTiming& t : timings.measures) {
+    rows.push_back({{"technique", t.technique},
+                    {"variant", t.variant},
+                    {"asset", t.asset},
+                    {"measure", t.measure},
+                    {"seconds", t.seconds}});
+  }
+  nlohmann::ordered_json json{{"wall_seconds", timings.wall_seconds},
+                              {"threads", timings.threads},
+                              {"measures", rows}};
+  return json.dump(1) + "\n";
+}
+
+// Suite wall time and each measure's summed time, the figures the suite budget is kept by.
+void printTimingSummary(const SuiteTimings& timings) {
+  std::map<std::string, double> per_measure;
+  for (const MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
+  std::string parts;
+  for (const auto& [measure, seconds] : per_measure) {
+    parts += fmt::format("{}{} {:.1f} s", parts.empty() ? "" : ", ", measure, seconds);
+  }
+  fmt::print(stderr, "suite: {:.1f} s wall on {} threads; measure time: {}\n",
+             timings.wall_seconds, timings.threads, parts);
+}
+
 }  // namespace
 
 int runList(const ListArgs& args) {
@@ -99,6 +129,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.techniques = selectTechniques(args.techniques);
   selection.measures = selectMeasures(args.measures);
   selection.device_name = args.device;
+  selection.threads = args.threads;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
 
   Results results;
@@ -113,7 +144,8 @@ int runRun(const RunArgs& args, const std::string& command_line) {
       std::fprintf(stderr, "[%zu/%zu] %s\n", done, total, label.c_str());
     }
   };
-  runSuite(selection, progress, &results);
+  SuiteTimings timings;
+  runSuite(selection, progress, &results, &timings);
   // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
   // empty run: one line with the first reason, non-zero exit, no run folder.
   if (results.records.empty() && !results.skipped.empty()) {
@@ -129,7 +161,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.run_id = run_id;
   writeNewFile(folder + "/results.json", serializeResults(results));
   writeNewFile(folder + "/report.md", renderMarkdown(results));
+  writeNewFile(folder + "/timings.json", timingsJson(timings));
   if (!args.quiet) {
+    printTimingSummary(timings);
     fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md)\n",
                results.records.size(), results.skipped.size(), folder);
   } else {

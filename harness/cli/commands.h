@@ -19,6 +19,7 @@ struct RunArgs {
   std::string run_id;
   bool quiet = false;
   std::string device;  // Vulkan device name substring; empty = best available
+  int threads = 0;     // worker threads; 0 = every core
 };
 
 struct ReportArgs {

@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
   run->add_option("--run-id", run_args.run_id, "folder name (must not exist yet)");
   run->add_flag("--quiet", run_args.quiet, "no progress output");
   run->add_option("--device", run_args.device, "Vulkan device name substring (default: best)");
+  run->add_option("--threads", run_args.threads,
+                  "worker threads (default 0: every core); results do not depend on it")
+      ->check(CLI::NonNegativeNumber);
 
   tb::cli::ReportArgs report_args;
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");

@@ -1,7 +1,14 @@
 #include "harness/suite/suite.h"
 
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <optional>
 
 #include "core/mesh/obj_loader.h"
@@ -46,8 +53,22 @@ struct SuiteRun {
   std::vector<CameraPathFn> camera_paths;
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
-  Results* results = nullptr;
+  // Measures that use the device run one at a time: a gpu::Context's queue is not
+  // shared between threads.
+  mutable std::mutex gpu_mutex;
 };
+
+// What one technique × variant × input step produced; steps run in parallel and their
+// outcomes are put in the serial order afterwards.
+struct StepOutcome {
+  std::optional<Record> record;
+  std::optional<Skip> skip;
+  std::vector<MeasureTiming> timings;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // One Vulkan device for the whole run (GPU measures share it); its absence is a reason
 // each GPU measure reports, never an abort.
@@ -113,22 +134,25 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
     instance = fresh.get();
   }
   input.simulation = instance->simulation();
+  std::unique_lock<std::mutex> gpu_lock(run.gpu_mutex, std::defer_lock);
+  if (requirements.has(MeasureNeed::kGpu)) gpu_lock.lock();
   if (requirements.has(MeasureNeed::kView)) return runOverViews(run, measure, input);
   return measure.run(input);
 }
 
 // Records a technique that cannot take the input (on the default variant only, once).
 void recordSkip(const Technique& technique, const SuiteInput& input, bool is_default,
-                const std::string& reason, Results* results) {
-  if (is_default) results->skipped.push_back({technique.info().id, input.name, reason});
+                const std::string& reason, StepOutcome* outcome) {
+  if (is_default) outcome->skip = Skip{technique.info().id, input.name, reason};
 }
 
 // Builds the technique on one input and variant, and runs every measure the rule admits
 // into one record. `default_footprint` is the default variant's patch data on this input:
 // set by the default variant's step, read by the others.
-void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo& variant,
-             bool is_default, const SuiteInput& input,
-             std::optional<DataFootprint>* default_footprint) {
+StepOutcome runStep(const SuiteRun& run, const Technique& technique, const VariantInfo& variant,
+                    bool is_default, const SuiteInput& input,
+                    std::optional<DataFootprint>* default_footprint) {
+  StepOutcome outcome;
   // Measures that may run, before building: no instance is built that no measure would use.
   const VariantStanding maybe{is_default, default_footprint->has_value()};
   bool any_may_run = false;
@@ -136,10 +160,11 @@ void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo&
     any_may_run |=
         measureRuns(measure->requirements(), technique, expectedCapabilities(technique), maybe);
   }
-  if (!any_may_run) return;
+  if (!any_may_run) return outcome;
   if (input.is_asset()) {
     if (std::string reason = technique.checkSupport(*input.mesh); !reason.empty()) {
-      return recordSkip(technique, input, is_default, reason, run.results);
+      recordSkip(technique, input, is_default, reason, &outcome);
+      return outcome;
     }
   }
   const TechniqueInput technique_input{input.is_asset() ? input.mesh : nullptr, input.scenario};
@@ -147,7 +172,8 @@ void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo&
   try {
     instance = technique.build(technique_input, variant);
   } catch (const UnsupportedInput& unsupported) {
-    return recordSkip(technique, input, is_default, unsupported.what(), run.results);
+    recordSkip(technique, input, is_default, unsupported.what(), &outcome);
+    return outcome;
   }
   const SurfacePatches* patches = instance->surface();
   if (patches && is_default) *default_footprint = patches->footprint();
@@ -160,8 +186,8 @@ void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo&
       runnable.push_back(measure);
     }
   }
-  if (runnable.empty()) return;
-  Record record;
+  if (runnable.empty()) return outcome;
+  Record& record = outcome.record.emplace();
   record.technique = technique.info().id;
   record.variant = variant.name;
   record.asset = input.name;
@@ -174,10 +200,13 @@ void runStep(const SuiteRun& run, const Technique& technique, const VariantInfo&
   const MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
                                    patches,   run.gpu.get(), run.gpu_unavailable};
   for (const Measure* measure : runnable) {
+    const auto start = std::chrono::steady_clock::now();
     record.measures.push_back(
         runMeasure(run, *measure, measure_input, technique_input, instance.get()));
+    outcome.timings.push_back(
+        {record.technique, record.variant, record.asset, measure->info().id, secondsSince(start)});
   }
-  run.results->records.push_back(std::move(record));
+  return outcome;
 }
 
 // The inputs a technique runs on: the assets for a surface technique, the scenarios for a
@@ -198,7 +227,12 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
 
 }  // namespace
 
-void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results) {
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
+              SuiteTimings* timings) {
+  const auto run_start = std::chrono::steady_clock::now();
+  const int threads =
+      selection.threads > 0 ? selection.threads : tbb::info::default_concurrency();
+  tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   std::vector<const Technique*> techniques = selection.techniques;
   if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
   SuiteRun run;
@@ -206,7 +240,6 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (run.measures.empty()) run.measures = MeasureRegistry::instance().all();
   run.camera_paths = selection.camera_paths;
   if (run.camera_paths.empty()) run.camera_paths = {testOrbitPath};
-  run.results = results;
   for (const Measure* measure : run.measures) {
     results->measures.push_back(declarationOf(measure->info()));
   }
@@ -219,29 +252,55 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   openDevice(selection.device_name, &run);
   const std::vector<Mesh> meshes = loadAssets(refs, results);
 
+  // One group per technique × input: its variants run in order (default first), groups in
+  // parallel. Outcomes go to slots in the serial order technique, variant, input.
+  struct Group {
+    const Technique* technique;
+    std::vector<VariantInfo> variants;
+    SuiteInput input;
+    size_t input_index, input_count, first_slot;
+  };
+  std::vector<Group> groups;
   size_t total = 0;
-  for (const Technique* technique : techniques) {
-    total += technique->variants().size() *
-             inputsFor(*technique, refs, meshes, selection.scenarios).size();
-  }
-  size_t done = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
     const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios);
-    // The default variant's patch data per input, for kWhenPatchDataDiffers measures.
-    std::vector<std::optional<DataFootprint>> default_footprint(inputs.size());
-    for (size_t v = 0; v < variants.size(); ++v) {
-      for (size_t i = 0; i < inputs.size(); ++i) {
-        if (progress) {
-          progress(done, total,
-                   technique->info().id + "/" + variants[v].name + " " + inputs[i].name);
-        }
-        ++done;
-        runStep(run, *technique, variants[v], v == 0, inputs[i], &default_footprint[i]);
+    for (size_t i = 0; i < inputs.size(); ++i) {
+      groups.push_back({technique, variants, inputs[i], i, inputs.size(), total});
+    }
+    total += variants.size() * inputs.size();
+  }
+  std::vector<StepOutcome> outcomes(total);
+  std::mutex progress_mutex;
+  size_t started = 0;
+  tbb::parallel_for(size_t(0), groups.size(), [&](size_t g) {
+    const Group& group = groups[g];
+    // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
+    std::optional<DataFootprint> default_footprint;
+    for (size_t v = 0; v < group.variants.size(); ++v) {
+      if (progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(started++, total,
+                 group.technique->info().id + "/" + group.variants[v].name + " " +
+                     group.input.name);
       }
+      const size_t slot = group.first_slot + v * group.input_count + group.input_index;
+      outcomes[slot] = runStep(run, *group.technique, group.variants[v], v == 0, group.input,
+                               &default_footprint);
+    }
+  }, tbb::simple_partitioner());
+  for (StepOutcome& outcome : outcomes) {
+    if (outcome.skip) results->skipped.push_back(std::move(*outcome.skip));
+    if (outcome.record) results->records.push_back(std::move(*outcome.record));
+    if (timings) {
+      for (MeasureTiming& timing : outcome.timings) timings->measures.push_back(std::move(timing));
     }
   }
   if (progress) progress(total, total, "done");
+  if (timings) {
+    timings->threads = threads;
+    timings->wall_seconds = secondsSince(run_start);
+  }
 }
 
 }  // namespace tb

@@ -24,9 +24,26 @@ struct SuiteSelection {
   // The paths view-dependent measures run along, around each asset's bounding box;
   // empty: the fixed test orbit (testOrbitPath).
   std::vector<CameraPathFn> camera_paths;
+  // Worker threads for the run (TBB): 0 = every core. Results are byte-identical
+  // whatever the count: records are assembled in the serial order.
+  int threads = 0;
 };
 
-// Called before each technique × variant × asset (or scenario) step: (done, total, label).
+// Wall time of one measure on one record (seconds; best 0). Timings vary run to run, so
+// they never enter results.json (which is byte-stable); the CLI writes them beside it.
+struct MeasureTiming {
+  std::string technique, variant, asset, measure;
+  double seconds = 0;
+};
+
+struct SuiteTimings {
+  double wall_seconds = 0;  // the whole runSuite call, assets loading included
+  int threads = 0;          // worker threads the run had
+  std::vector<MeasureTiming> measures;  // in record order
+};
+
+// Called after each technique × variant × asset (or scenario) step starts: (done, total,
+// label). Steps run in parallel; calls are serialised, `done` counts up.
 using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 
 // Fills assets, records, skipped and the selected measures' declarations of `results`
@@ -34,6 +51,9 @@ using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 // that fails to load aborts the run with InputError: a named asset must be
 // usable. A technique that cannot take an asset is recorded as skipped, with
 // its reason. Which measures run where is decided by measureRuns (measure_rule.h).
-void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results);
+// Independent technique × input groups run in parallel (the variants of one group in
+// order, since a variant's measures may depend on the default variant's patch data).
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
+              SuiteTimings* timings = nullptr);
 
 }  // namespace tb
