@@ -24,14 +24,18 @@ Vec3d barycentricPoint(const Vec3d& a, const Vec3d& b, const Vec3d& c, double wb
   return a * (1 - wb - wc) + b * wb + c * wc;
 }
 
+// `hint`: the target triangle closest to the previous sample (speeds the search, never
+// changes an answer); updated to this triangle's last.
 TriangleSums sampleTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c,
-                            const TriangleDistanceField& target, int m) {
+                            const TriangleDistanceField& target, int m, uint32_t* hint) {
   TriangleSums sums;
   sums.area = 0.5 * length(cross(b - a, c - a));
   const double inv_m = 1.0 / m;
   bool first = true;
   auto consider = [&](const Vec3d& p) {
-    const double d = target.closest(p).distance;
+    const ClosestPoint closest = target.closest(p, *hint);
+    *hint = closest.triangle;
+    const double d = closest.distance;
     if (first || d > sums.max) {
       sums.max = d;
       sums.max_at = p;
@@ -73,11 +77,14 @@ DirectedDistance directedDistance(const TriangleMeshRef& source,
   std::vector<TriangleSums> per_triangle(source.triangles.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, per_triangle.size()),
                     [&](const tbb::blocked_range<size_t>& range) {
+                      // Neighbouring source triangles (in index order) are usually
+                      // close on the target too.
+                      uint32_t hint = kNoTriangle;
                       for (size_t t = range.begin(); t != range.end(); ++t) {
                         const Triangle& tri = source.triangles[t];
                         per_triangle[t] =
                             sampleTriangle(source.positions[tri[0]], source.positions[tri[1]],
-                                           source.positions[tri[2]], target, m);
+                                           source.positions[tri[2]], target, m, &hint);
                       }
                     });
   // Reduced serially in triangle order, so the result does not depend on scheduling.

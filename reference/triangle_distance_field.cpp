@@ -25,9 +25,26 @@ double maxAbsCoordinate(const Vec3d& p) {
 
 }  // namespace
 
+// A triangle's bounding box in double: the distance to it bounds the distance to the
+// triangle from below, and costs a fraction of the exact closest point.
+struct TriangleBox {
+  Vec3d lo, hi;
+};
+
+double squaredDistanceToBox(const Vec3d& p, const TriangleBox& box) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double below = box.lo[k] - p[k], above = p[k] - box.hi[k];
+    const double gap = std::max({below, above, 0.0});
+    sum += gap * gap;
+  }
+  return sum;
+}
+
 struct TriangleDistanceField::Impl {
   std::vector<Vec3d> positions;
   std::vector<Triangle> triangles;
+  std::vector<TriangleBox> boxes;  // per triangle
   double max_abs = 0;  // largest |coordinate| of the mesh
   RTCScene scene = nullptr;
 
@@ -41,6 +58,7 @@ namespace {
 struct QueryState {
   const std::vector<Vec3d>* positions;
   const std::vector<Triangle>* triangles;
+  const std::vector<TriangleBox>* boxes;
   Vec3d query;
   double pad;
   ClosestPoint best;
@@ -49,6 +67,12 @@ struct QueryState {
 bool visitTriangle(RTCPointQueryFunctionArguments* args) {
   auto* state = static_cast<QueryState*>(args->userPtr);
   const uint32_t id = args->primID;
+  // A box farther than the best answer holds no better (or tying) point, since the box
+  // contains the triangle; the slack of 1e-12 keeps rounding (a few ulps) from dropping a
+  // triangle that ties with the best.
+  const double box_squared = squaredDistanceToBox(state->query, (*state->boxes)[id]);
+  const double best_distance = state->best.distance;
+  if (box_squared > best_distance * best_distance * (1 + 1e-12)) return false;
   const Triangle& tri = (*state->triangles)[id];
   const std::vector<Vec3d>& p = *state->positions;
   const TrianglePoint hit = closestPointOnTriangle(state->query, p[tri[0]], p[tri[1]], p[tri[2]]);
@@ -83,6 +107,17 @@ TriangleDistanceField::TriangleDistanceField(std::span<const Vec3d> positions,
   }
   impl_->positions.assign(positions.begin(), positions.end());
   impl_->triangles.assign(triangles.begin(), triangles.end());
+  impl_->boxes.reserve(triangles.size());
+  for (const Triangle& tri : triangles) {
+    TriangleBox box{positions[tri[0]], positions[tri[0]]};
+    for (int c = 1; c < 3; ++c) {
+      for (int k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(box.lo[k], positions[tri[c]][k]);
+        box.hi[k] = std::max(box.hi[k], positions[tri[c]][k]);
+      }
+    }
+    impl_->boxes.push_back(box);
+  }
 
   const RTCDevice device = sharedEmbreeDevice();
   impl_->scene = rtcNewScene(device);
@@ -119,8 +154,13 @@ TriangleDistanceField& TriangleDistanceField::operator=(TriangleDistanceField&&)
 size_t TriangleDistanceField::triangleCount() const { return impl_->triangles.size(); }
 
 ClosestPoint TriangleDistanceField::closest(const Vec3d& query) const {
+  return closest(query, kNoTriangle);
+}
+
+ClosestPoint TriangleDistanceField::closest(const Vec3d& query, uint32_t hint) const {
   QueryState state{&impl_->positions,
                    &impl_->triangles,
+                   &impl_->boxes,
                    query,
                    kRadiusPad * (impl_->max_abs + maxAbsCoordinate(query)),
                    {}};
@@ -131,6 +171,17 @@ ClosestPoint TriangleDistanceField::closest(const Vec3d& query) const {
   point_query.z = float(query.z);
   point_query.time = 0;
   point_query.radius = std::numeric_limits<float>::infinity();
+  if (hint < impl_->triangles.size()) {
+    // The hint's distance bounds the minimum. It is not kept as the best: the traversal
+    // visits it again inside the padded radius, so the answer is found exactly as
+    // without a hint, only with fewer BVH nodes opened.
+    const Triangle& tri = impl_->triangles[hint];
+    const std::vector<Vec3d>& p = impl_->positions;
+    const double distance =
+        length(closestPointOnTriangle(query, p[tri[0]], p[tri[1]], p[tri[2]]).point - query);
+    point_query.radius =
+        std::nextafter(float(distance + state.pad), std::numeric_limits<float>::infinity());
+  }
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(impl_->scene, &point_query, &context, visitTriangle, &state);

@@ -39,6 +39,12 @@ class TriangleDistanceField {
 
   size_t triangleCount() const;
   ClosestPoint closest(const Vec3d& query) const;
+  // The same answer, bit for bit, found faster when `hint` is a triangle near the answer
+  // (e.g. the previous answer of a coherent run of queries): the search starts with the
+  // hint's distance as its radius instead of infinity. Any hint (kNoTriangle, or out of
+  // range, included) is valid: the minimum and its tie-break (lowest triangle index)
+  // do not depend on it.
+  ClosestPoint closest(const Vec3d& query, uint32_t hint) const;
 
  private:
   struct Impl;
