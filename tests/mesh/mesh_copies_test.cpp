@@ -1,0 +1,59 @@
+// Oracle: topology counted by buildTopology on the original mesh, times the copies, and
+// the copies' bounding boxes, which must not overlap.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/mesh/mesh_copies.h"
+#include "core/mesh/obj_loader.h"
+#include "core/mesh/topology.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+TEST(MeshCopies, TopologyAndTagsRepeatOncePerCopy) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_single_crease.obj"));
+  ASSERT_FALSE(mesh.tags.creases.empty());
+  const Topology one = buildTopology(mesh);
+  for (int copies : {1, 4, 7}) {
+    const Mesh many = translatedCopies(mesh, copies);
+    const Topology topology = buildTopology(many);
+    EXPECT_EQ(many.faceCount(), copies * mesh.faceCount());
+    EXPECT_EQ(topology.edges.size(), copies * one.edges.size());
+    EXPECT_EQ(topology.boundaryEdgeCount(), copies * one.boundaryEdgeCount());
+    EXPECT_EQ(topology.component_count, copies * one.component_count);
+    ASSERT_EQ(many.tags.creases.size(), copies * mesh.tags.creases.size());
+    // The last copy's creases sit on its own edges, with the original sharpness.
+    const Crease& last = many.tags.creases.back();
+    EXPECT_GE(topology.findEdge(last.v0, last.v1), 0);
+    EXPECT_EQ(last.sharpness, mesh.tags.creases.back().sharpness);
+  }
+}
+
+TEST(MeshCopies, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
+  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const int copies = 5;
+  const Mesh many = translatedCopies(mesh, copies);
+  const size_t n = mesh.positions.size();
+  for (size_t i = 0; i < n; ++i) EXPECT_EQ(many.positions[i].x, mesh.positions[i].x);
+  std::vector<Vec3d> lo(copies, Vec3d{1e300, 1e300, 1e300}), hi(copies, Vec3d{-1e300, -1e300, -1e300});
+  for (size_t i = 0; i < many.positions.size(); ++i) {
+    const size_t c = i / n;
+    for (int k = 0; k < 3; ++k) {
+      lo[c][k] = std::min(lo[c][k], many.positions[i][k]);
+      hi[c][k] = std::max(hi[c][k], many.positions[i][k]);
+    }
+  }
+  for (int a = 0; a < copies; ++a) {
+    for (int b = a + 1; b < copies; ++b) {
+      bool separated = false;
+      for (int k = 0; k < 3; ++k) separated |= hi[a][k] < lo[b][k] || hi[b][k] < lo[a][k];
+      EXPECT_TRUE(separated) << "copies " << a << " and " << b << " overlap";
+    }
+  }
+  EXPECT_THROW(translatedCopies(mesh, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tb
