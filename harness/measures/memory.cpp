@@ -1,6 +1,7 @@
 #include "harness/measures/memory.h"
 
 #include <meshoptimizer.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -105,15 +106,21 @@ ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level
 }  // namespace
 
 TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
+  return buildTessellatedMesh(patches, level, buildRenderVertices(patches.controlMesh()), 0,
+                              patches.patchCount());
+}
+
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level,
+                                     const RenderVertices& render, size_t first_patch,
+                                     size_t end_patch) {
   const Mesh& control = patches.controlMesh();
-  const RenderVertices render = buildRenderVertices(control);
   std::array<std::optional<ClassifiedTessellation>, 2> by_domain;  // quad, triangle
 
   TessellatedMesh mesh;
   std::vector<uint32_t> corner_ids(render.vertex_count, UINT32_MAX);
   std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
   std::vector<uint32_t> local;
-  for (size_t p = 0; p < patches.patchCount(); ++p) {
+  for (size_t p = first_patch; p < end_patch; ++p) {
     const PatchDomain domain = patches.patchDomain(p);
     std::optional<ClassifiedTessellation>& slot = by_domain[domain == PatchDomain::kQuad ? 0 : 1];
     if (!slot) slot = classifiedTessellation(domain, level);
@@ -189,6 +196,27 @@ CompressedMesh compressMesh(TessellatedMesh* mesh) {
                                                     mesh->vertices.data(), used,
                                                     kRenderVertexBytes));
   return out;
+}
+
+CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level) {
+  const RenderVertices render = buildRenderVertices(patches.controlMesh());
+  const size_t patch_count = patches.patchCount();
+  const size_t chunks = (patch_count + kCompressChunkPatches - 1) / kCompressChunkPatches;
+  std::vector<CompressedSize> per_chunk(chunks);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    const size_t first = c * kCompressChunkPatches;
+    TessellatedMesh mesh = buildTessellatedMesh(
+        patches, level, render, first, std::min(patch_count, first + kCompressChunkPatches));
+    const CompressedMesh compressed = compressMesh(&mesh);
+    per_chunk[c] = {compressed.vertex_data.size(), compressed.index_data.size(), 1};
+  });
+  CompressedSize total;
+  for (const CompressedSize& chunk : per_chunk) {
+    total.vertex_bytes += chunk.vertex_bytes;
+    total.index_bytes += chunk.index_bytes;
+    total.chunks += chunk.chunks;
+  }
+  return total;
 }
 
 bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {

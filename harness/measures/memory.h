@@ -54,6 +54,11 @@ struct TessellatedMesh {
   size_t vertexCount() const { return vertices.size() / 8; }
 };
 TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level);
+// The same over patches [first_patch, end_patch) only, welded among themselves; `render`
+// is buildRenderVertices(patches.controlMesh()), built once by the caller.
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level,
+                                     const RenderVertices& render, size_t first_patch,
+                                     size_t end_patch);
 
 // meshoptimizer's codecs on a mesh (docs/ARCHITECTURE.md §3, memory): vertex-cache
 // then vertex-fetch optimisation (the order a shipping pipeline uses; it reorders `mesh`
@@ -64,6 +69,24 @@ struct CompressedMesh {
   uint64_t bytes() const { return vertex_data.size() + index_data.size(); }
 };
 CompressedMesh compressMesh(TessellatedMesh* mesh);
+
+// Patches per chunk of the compressed baseline: about a million vertices at level 64, so
+// memory stays bounded and the cost grows linearly with the asset. A streaming engine
+// compresses per chunk (cluster, page) too.
+inline constexpr size_t kCompressChunkPatches = 256;
+
+// The compressed baseline of the whole asset at `level`: the plain mesh of each run of
+// kCompressChunkPatches patches (in patch order; the whole mesh when it has no more)
+// built, compressed with compressMesh, and the byte counts summed. Points on an edge
+// between two chunks are stored in both. Chunks are compressed in parallel; the sums do
+// not depend on the thread count.
+struct CompressedSize {
+  uint64_t vertex_bytes = 0;
+  uint64_t index_bytes = 0;
+  uint64_t chunks = 0;
+  uint64_t bytes() const { return vertex_bytes + index_bytes; }
+};
+CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level);
 
 // Decodes `compressed` into buffers the size of `like`; true when they equal it (each
 // triangle up to rotation, which the index codec may apply; winding is kept).

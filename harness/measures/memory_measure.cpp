@@ -12,16 +12,11 @@
 namespace tb {
 namespace {
 
-// The compressed baseline builds, optimises and encodes the whole tessellated mesh;
-// above this many vertices (about 64 MiB of vertex data) it is left out to keep the
-// default suite short.
-constexpr uint64_t kCompressMaxVertices = 1u << 21;
-
-// One row: the level's figures, the patch count, and the compressed baseline when built.
+// One row: the level's figures, the patch count, and the compressed baseline.
 struct MemoryRowFigures {
   MemoryFigures memory;
   uint64_t patches = 0;
-  std::optional<CompressedMesh> compressed;  // absent above kCompressMaxVertices
+  CompressedSize compressed;
 };
 
 // The plain and compressed meshes are the baselines (context); the technique's own bytes
@@ -35,12 +30,6 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   };
   auto footprint = [](uint64_t DataFootprint::*member) {
     return [member](const R& r) { return double(r.memory.technique.*member); };
-  };
-  auto compressed = [](auto bytes) {
-    return [bytes](const R& r) -> std::optional<double> {
-      if (!r.compressed) return std::nullopt;
-      return bytes(r);
-    };
   };
   static const MetricTable<R> kTable{
       {"plain_vertices", Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
@@ -67,14 +56,15 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
       {"plain_over_technique_vector", Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique_vector)},
       {"compressed_vertex_bytes", Unit::kBytes, D::kNone,
-       compressed([](const R& r) { return double(r.compressed->vertex_data.size()); })},
+       [](const R& r) { return double(r.compressed.vertex_bytes); }},
       {"compressed_index_bytes", Unit::kBytes, D::kNone,
-       compressed([](const R& r) { return double(r.compressed->index_data.size()); })},
+       [](const R& r) { return double(r.compressed.index_bytes); }},
       {"compressed_bytes", Unit::kBytes, D::kNone,
-       compressed([](const R& r) { return double(r.compressed->bytes()); })},
-      {"compressed_over_technique", Unit::kRatio, D::kHigherIsBetter, compressed([](const R& r) {
-         return double(r.compressed->bytes()) / double(r.memory.technique_with_displacement_bytes);
-       })},
+       [](const R& r) { return double(r.compressed.bytes()); }},
+      {"compressed_over_technique", Unit::kRatio, D::kHigherIsBetter,
+       [](const R& r) {
+         return double(r.compressed.bytes()) / double(r.memory.technique_with_displacement_bytes);
+       }},
   };
   return kTable;
 }
@@ -98,8 +88,10 @@ class MemoryMeasure final : public Measure {
          "corners), vertex-cache and vertex-fetch optimised, then meshopt_encodeIndexBuffer + "
          "meshopt_encodeVertexBuffer on the raw 32-byte float vertices (meshoptimizer " +
              std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
-             std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "); left empty above " +
-             std::to_string(kCompressMaxVertices) + " vertices",
+             std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "), per chunk of " +
+             std::to_string(kCompressChunkPatches) +
+             " patches in patch order (the whole mesh below that; points on an edge between "
+             "chunks stored in each), sizes summed",
          "seed 000's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
          "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
          "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
@@ -117,12 +109,9 @@ class MemoryMeasure final : public Measure {
     MeasureResult result;
     result.measure = info().id;
     for (uint32_t level : kMemoryLevels) {
-      MemoryRowFigures figures{measureMemory(*input.patches, level), input.patches->patchCount(),
-                               std::nullopt};
-      if (figures.memory.plain_vertices <= kCompressMaxVertices) {
-        TessellatedMesh mesh = buildTessellatedMesh(*input.patches, level);
-        figures.compressed = compressMesh(&mesh);
-      }
+      const MemoryRowFigures figures{measureMemory(*input.patches, level),
+                                     input.patches->patchCount(),
+                                     compressedSize(*input.patches, level)};
       MetricRow row;
       row.keys["level"] = std::to_string(level);
       row.metrics = memoryTable().metrics(figures);

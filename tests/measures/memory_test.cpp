@@ -6,7 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/global_control.h>
+
 #include <algorithm>
+
+#include "core/mesh/mesh_copies.h"
 
 #include "harness/suite/suite.h"
 #include "core/mesh/obj_loader.h"
@@ -87,6 +91,44 @@ TEST(Memory, BuiltMeshHasTheClosedFormCountsAndCompressesLosslessly) {
       EXPECT_LT(compressed.bytes(), m.plain_bytes);
       EXPECT_GT(compressed.bytes(), 0u);
     }
+  }
+}
+
+// Oracle: compressMesh on the whole mesh (one chunk), and on each chunk built by hand
+// (several); the chunks' meshes together hold every triangle once.
+TEST(Memory, CompressedSizeIsTheSumOverChunksOfPatches) {
+  const Mesh one = loadObjFile(testing::assetPath("opensubdiv/loop_xord_interior.obj"));
+  const auto small = phongPatches(one);
+  ASSERT_LE(small->patchCount(), kCompressChunkPatches);
+  TessellatedMesh whole = buildTessellatedMesh(*small, 8);
+  const CompressedMesh whole_compressed = compressMesh(&whole);
+  const CompressedSize small_size = compressedSize(*small, 8);
+  EXPECT_EQ(small_size.chunks, 1u);
+  EXPECT_EQ(small_size.vertex_bytes, whole_compressed.vertex_data.size());
+  EXPECT_EQ(small_size.index_bytes, whole_compressed.index_data.size());
+
+  const auto large = phongPatches(translatedCopies(one, 5));
+  ASSERT_GT(large->patchCount(), kCompressChunkPatches);
+  const RenderVertices render = buildRenderVertices(large->controlMesh());
+  CompressedSize by_hand;
+  uint64_t triangles = 0;
+  for (size_t first = 0; first < large->patchCount(); first += kCompressChunkPatches) {
+    TessellatedMesh chunk = buildTessellatedMesh(
+        *large, 8, render, first, std::min(large->patchCount(), first + kCompressChunkPatches));
+    triangles += chunk.indices.size() / 3;
+    const CompressedMesh compressed = compressMesh(&chunk);
+    EXPECT_TRUE(decodesTo(compressed, chunk));
+    by_hand.vertex_bytes += compressed.vertex_data.size();
+    by_hand.index_bytes += compressed.index_data.size();
+    ++by_hand.chunks;
+  }
+  EXPECT_EQ(triangles, measureMemory(*large, 8).plain_triangles);
+  for (int threads : {1, 2}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    const CompressedSize size = compressedSize(*large, 8);
+    EXPECT_EQ(size.chunks, by_hand.chunks);
+    EXPECT_EQ(size.vertex_bytes, by_hand.vertex_bytes) << threads << " threads";
+    EXPECT_EQ(size.index_bytes, by_hand.index_bytes) << threads << " threads";
   }
 }
 
