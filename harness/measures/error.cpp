@@ -1,5 +1,7 @@
 #include "harness/measures/error.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -114,14 +116,15 @@ PatchSampling subFaceSampling(int level) {
 
 // The sampling of patch p over its limit face; throws std::logic_error for a patch
 // domain the face's parameterisation cannot be mapped to.
-const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, const ref::LimitFace& face,
+const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, size_t face,
+                                 uint32_t face_size,
                                  const std::array<PatchSampling, 3>& samplings) {
   if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) return samplings[0];
   if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) return samplings[1];
-  if (domain == PatchDomain::kTriangle && face.faceSize() == 3) return samplings[2];
-  throw std::logic_error("error: patch over face " + std::to_string(face.index()) + " is a " +
+  if (domain == PatchDomain::kTriangle && face_size == 3) return samplings[2];
+  throw std::logic_error("error: patch over face " + std::to_string(face) + " is a " +
                          toString(domain) + " patch, but the face has " +
-                         std::to_string(face.faceSize()) + " corners under " +
+                         std::to_string(face_size) + " corners under " +
                          std::string(ref::schemeName(scheme)) +
                          "; the measure maps quad patches onto Catmull-Clark faces, and triangle "
                          "patches onto Loop faces or Catmull-Clark triangles");
@@ -159,44 +162,69 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
       patchSampling(PatchDomain::kQuad, kErrorSampleLevel),
       patchSampling(PatchDomain::kTriangle, kErrorSampleLevel),
       subFaceSampling(kErrorSubFaceSampleLevel)};
-  std::vector<Vec3d> technique_points;
-  std::vector<ref::Triangle> technique_triangles;
-  double squared_sum = 0, normal_sum = 0;
-  for (size_t p = 0; p < patches.patchCount(); ++p) {
-    if (!limit.hasLimitSurface(p)) {
+  // Where each patch's samples start (patches without a limit have none), so patches
+  // can be sampled in parallel into fixed slots; the figures are then reduced serially in
+  // sample order, so they do not depend on the thread count.
+  const size_t patch_count = patches.patchCount();
+  std::vector<const PatchSampling*> sampling_of(patch_count, nullptr);
+  std::vector<size_t> first_sample(patch_count + 1, 0);
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (limit.hasLimitSurface(p)) {
+      sampling_of[p] =
+          &samplingFor(patches.patchDomain(p), scheme, p, control.faceSize(p), samplings);
+      figures.patches_through_sub_faces += sampling_of[p] == &samplings[2];
+    } else {
       ++figures.patches_without_limit;
-      continue;
     }
+    first_sample[p + 1] =
+        first_sample[p] + (sampling_of[p] ? sampling_of[p]->samples.size() : 0);
+  }
+  const size_t sample_count = first_sample[patch_count];
+  std::vector<Vec3d> technique_points(sample_count);
+  std::vector<double> errors(sample_count), angles(sample_count);
+  std::vector<uint8_t> near_xord(sample_count);
+  tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
+    if (sampling_of[p] == nullptr) return;
     const ref::LimitFace face = limit.face(p);
     const auto corners = patches.patchCorners(p);
-    const PatchSampling& sampling = samplingFor(patches.patchDomain(p), scheme, face, samplings);
-    figures.patches_through_sub_faces += &sampling == &samplings[2];
-    const uint32_t base = uint32_t(technique_points.size());
-    for (const ref::Triangle& triangle : sampling.triangles) {
-      technique_triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
-    }
-    for (const PatchSample& sample : sampling.samples) {
+    size_t i = first_sample[p];
+    for (const PatchSample& sample : sampling_of[p]->samples) {
       const SurfacePoint point = patches.evaluate(p, sample.coord);
       const ref::LimitPoint exact = sample.sub_face < 0
                                         ? face.evaluate(sample.u, sample.v)
                                         : face.evaluateSubFace(sample.sub_face, sample.u, sample.v);
-      technique_points.push_back(point.position);
-      const double error = length(point.position - exact.position);
+      technique_points[i] = point.position;
+      errors[i] = length(point.position - exact.position);
       bool near = false;
       for (int c = 0; c < 4; ++c) {
         near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
                 sample.corner_weight[c] >= kNearExtraordinary;
       }
-      double& bucket = near ? figures.parametric_max_near_xord : figures.parametric_max_elsewhere;
-      bucket = std::max(bucket, error);
-      figures.samples_near_xord += near;
-      figures.parametric_max = std::max(figures.parametric_max, error);
-      squared_sum += error * error;
-      const double angle = angleDegrees(point.normal, exact.normal);
-      figures.normal_max_deg = std::max(figures.normal_max_deg, angle);
-      normal_sum += angle;
-      ++figures.samples;
+      near_xord[i] = near;
+      angles[i] = angleDegrees(point.normal, exact.normal);
+      ++i;
     }
+  });
+  std::vector<ref::Triangle> technique_triangles;
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (sampling_of[p] == nullptr) continue;
+    const uint32_t base = uint32_t(first_sample[p]);
+    for (const ref::Triangle& triangle : sampling_of[p]->triangles) {
+      technique_triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
+    }
+  }
+  double squared_sum = 0, normal_sum = 0;
+  for (size_t i = 0; i < sample_count; ++i) {
+    const double error = errors[i];
+    double& bucket =
+        near_xord[i] ? figures.parametric_max_near_xord : figures.parametric_max_elsewhere;
+    bucket = std::max(bucket, error);
+    figures.samples_near_xord += near_xord[i];
+    figures.parametric_max = std::max(figures.parametric_max, error);
+    squared_sum += error * error;
+    figures.normal_max_deg = std::max(figures.normal_max_deg, angles[i]);
+    normal_sum += angles[i];
+    ++figures.samples;
   }
   if (figures.samples > 0) {
     figures.parametric_rms = std::sqrt(squared_sum / double(figures.samples));

@@ -1,0 +1,54 @@
+// Oracle: the same run on one worker thread. Records run in parallel groups and the
+// heavy measures parallelise inside (error sampling, closest-point queries, chunked
+// compression, crack pairing); none of it may change a byte of the results.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "harness/results/results_json.h"
+#include "harness/suite/suite.h"
+#include "techniques/registry.h"
+
+namespace tb {
+namespace {
+
+std::string runWithThreads(int threads, SuiteTimings* timings) {
+  SuiteSelection selection;
+  // A quad-and-triangle mesh and a triangle mesh: every technique runs on one of them,
+  // and every measure on some technique.
+  selection.assets = {resolveAsset("catmark_pyramid"), resolveAsset("loop_icosahedron")};
+  selection.threads = threads;
+  Results results;
+  runSuite(selection, nullptr, &results, timings);
+  return serializeResults(results);
+}
+
+TEST(ThreadInvariance, ResultsAreByteIdenticalOnOneAndTwoThreads) {
+  SuiteTimings one_thread, two_threads;
+  const std::string serial = runWithThreads(1, &one_thread);
+  const std::string parallel = runWithThreads(2, &two_threads);
+  EXPECT_EQ(one_thread.threads, 1);
+  EXPECT_EQ(two_threads.threads, 2);
+  EXPECT_GT(one_thread.measures.size(), 40u);  // a real workload, not a trivial one
+  EXPECT_EQ(serial.size(), parallel.size());
+  EXPECT_TRUE(serial == parallel) << "the results depend on the thread count";
+}
+
+TEST(ThreadInvariance, TimingsCoverEveryMeasureOfEveryRecord) {
+  SuiteSelection selection;
+  selection.assets = {resolveAsset("loop_icosahedron")};
+  selection.threads = 2;
+  Results results;
+  SuiteTimings timings;
+  runSuite(selection, nullptr, &results, &timings);
+  size_t measured = 0;
+  for (const Record& record : results.records) measured += record.measures.size();
+  EXPECT_EQ(timings.measures.size(), measured);
+  double sum = 0;
+  for (const MeasureTiming& t : timings.measures) sum += t.seconds;
+  EXPECT_GT(timings.wall_seconds, 0);
+  EXPECT_GT(sum, 0);
+}
+
+}  // namespace
+}  // namespace tb
