@@ -131,6 +131,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.device_name = args.device;
   selection.threads = args.threads;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+  if (!args.shard.empty()) selection.shard = parseShard(args.shard);
 
   Results results;
   // On a terminal the progress line rewrites itself; in a log, one line per step.
@@ -147,8 +148,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   SuiteTimings timings;
   runSuite(selection, progress, &results, &timings);
   // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
-  // empty run: one line with the first reason, non-zero exit, no run folder.
-  if (results.records.empty() && !results.skipped.empty()) {
+  // empty run: one line with the first reason, non-zero exit, no run folder. A shard sees
+  // only its slice; `merge` makes this check on the whole.
+  if (!selection.shard.sharded() && results.records.empty() && !results.skipped.empty()) {
     const Skip& skip = results.skipped.front();
     throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
   }
@@ -159,6 +161,8 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context = probeRunContext(command_line, args.device);
   results.context.date = utcTimestampIso8601();
   results.context.run_id = run_id;
+  results.context.selection = describeSelection(selection, results);
+  if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
   writeNewFile(folder + "/results.json", serializeResults(results));
   writeNewFile(folder + "/report.md", renderMarkdown(results));
   writeNewFile(folder + "/timings.json", timingsJson(timings));

@@ -20,6 +20,7 @@ struct RunArgs {
   bool quiet = false;
   std::string device;  // Vulkan device name substring; empty = best available
   int threads = 0;     // worker threads; 0 = every core
+  std::string shard;   // "I/N": run shard I of N of the work list; empty = all of it
 };
 
 struct ReportArgs {

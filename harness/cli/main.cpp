@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "harness/cli/commands.h"
+#include "harness/cli/merge_command.h"
 #include "harness/cli/tessellate_run.h"
 #include "techniques/registry.h"
 
@@ -35,6 +36,18 @@ int main(int argc, char** argv) {
   run->add_option("--threads", run_args.threads,
                   "worker threads (default 0: every core); results do not depend on it")
       ->check(CLI::NonNegativeNumber);
+  run->add_option("--shard", run_args.shard,
+                  "I/N: run only shard I of N (numbered from 0) of the technique x variant x "
+                  "asset x measure work list; join the N run folders with `merge`");
+
+  tb::cli::MergeArgs merge_args;
+  CLI::App* merge = app.add_subcommand(
+      "merge", "join the run folders of shards 0..N-1 (run --shard I/N) into one new run folder");
+  merge->add_option("shards", merge_args.shards, "shard run folders (results/<run-id>), all N")
+      ->required();
+  merge->add_option("--out", merge_args.out, "the merged run's folder (must not exist yet)")
+      ->required();
+  merge->add_flag("--quiet", merge_args.quiet, "print only the merged folder");
 
   tb::cli::ReportArgs report_args;
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");
@@ -58,6 +71,7 @@ int main(int argc, char** argv) {
     if (*list) return tb::cli::runList(list_args);
     if (*run) return tb::cli::runRun(run_args, command_line);
     if (*report) return tb::cli::runReport(report_args);
+    if (*merge) return tb::cli::runMerge(merge_args, command_line);
     if (*tessellate) return tb::cli::runTessellate(tessellate_args);
   } catch (const std::exception& error) {
     std::fflush(stdout);

@@ -54,6 +54,16 @@ void appendContext(const Results& results, std::string* out) {
   appendRow(out, {"Vulkan device", c.vulkan_device.empty() ? "none opened" : c.vulkan_device});
   for (const auto& [name, version] : c.libraries) appendRow(out, {name, version});
   appendRow(out, {"command", "`" + c.command_line + "`"});
+  if (c.shard.count > 0) {
+    appendRow(out, {"shard", std::to_string(c.shard.index) + " of " +
+                                 std::to_string(c.shard.count) + " (numbered from 0)"});
+  }
+  for (const ShardSource& source : c.merged_from) {
+    appendRow(out, {"merged from shard " + std::to_string(source.shard.index) + "/" +
+                        std::to_string(source.shard.count),
+                    source.folder + " (run " + source.run_id + ", " + source.date + ", " +
+                        source.host + ")"});
+  }
   *out += "\n";
 }
 

@@ -132,6 +132,66 @@ Record recordFromJson(const Json& json, const std::string& where) {
   return record;
 }
 
+Json shardToJson(const ShardId& shard) { return {{"index", shard.index}, {"count", shard.count}}; }
+
+ShardId shardFromJson(const Json& json, const std::string& where) {
+  return {field<size_t>(json, "index", where), field<size_t>(json, "count", where)};
+}
+
+Json selectionToJson(const RunSelection& selection) {
+  Json techniques = Json::array();
+  for (const auto& technique : selection.techniques) {
+    techniques.push_back({{"technique", technique.technique}, {"variants", technique.variants}});
+  }
+  return {
+      {"techniques", techniques}, {"assets", selection.assets}, {"measures", selection.measures}};
+}
+
+RunSelection selectionFromJson(const Json& json) {
+  RunSelection selection;
+  const Json techniques = field<Json>(json, "techniques", "context.selection");
+  for (size_t i = 0; i < techniques.size(); ++i) {
+    const std::string at = "context.selection.techniques[" + std::to_string(i) + "]";
+    selection.techniques.push_back(
+        {field<std::string>(techniques[i], "technique", at),
+         field<std::vector<std::string>>(techniques[i], "variants", at)});
+  }
+  selection.assets = field<std::vector<std::string>>(json, "assets", "context.selection");
+  selection.measures = field<std::vector<std::string>>(json, "measures", "context.selection");
+  return selection;
+}
+
+// The shard fields of the context: optional, so results written before sharding read as
+// unsharded runs with an empty selection.
+void shardFieldsToJson(const RunContext& c, Json* context) {
+  (*context)["selection"] = selectionToJson(c.selection);
+  if (c.shard.count > 0) (*context)["shard"] = shardToJson(c.shard);
+  if (c.merged_from.empty()) return;
+  Json sources = Json::array();
+  for (const ShardSource& source : c.merged_from) {
+    sources.push_back({{"shard", shardToJson(source.shard)},
+                       {"run_id", source.run_id},
+                       {"date", source.date},
+                       {"host", source.host},
+                       {"folder", source.folder}});
+  }
+  (*context)["merged_from"] = sources;
+}
+
+void shardFieldsFromJson(const Json& context, RunContext* c) {
+  if (context.contains("selection")) c->selection = selectionFromJson(context.at("selection"));
+  if (context.contains("shard")) c->shard = shardFromJson(context.at("shard"), "context.shard");
+  if (!context.contains("merged_from")) return;
+  const Json sources = field<Json>(context, "merged_from", "context");
+  for (size_t i = 0; i < sources.size(); ++i) {
+    const std::string at = "context.merged_from[" + std::to_string(i) + "]";
+    c->merged_from.push_back(
+        {shardFromJson(field<Json>(sources[i], "shard", at), at + ".shard"),
+         field<std::string>(sources[i], "run_id", at), field<std::string>(sources[i], "date", at),
+         field<std::string>(sources[i], "host", at), field<std::string>(sources[i], "folder", at)});
+  }
+}
+
 }  // namespace
 
 const char* toString(MeasureStatus status) {
@@ -167,6 +227,7 @@ Json toJson(const Results& results) {
                   {"libraries", libraries},
                   {"vulkan_device", c.vulkan_device},
                   {"command_line", c.command_line}};
+  shardFieldsToJson(c, &context);
   Json assets = Json::array();
   for (const AssetSummary& a : results.assets) {
     assets.push_back({{"name", a.name},
@@ -214,6 +275,7 @@ Results resultsFromJson(const Json& document) {
   c.libraries = field<std::map<std::string, std::string>>(context, "libraries", "context");
   c.vulkan_device = field<std::string>(context, "vulkan_device", "context");
   c.command_line = field<std::string>(context, "command_line", "context");
+  shardFieldsFromJson(context, &c);
 
   const Json assets = field<Json>(document, "assets", "results");
   for (size_t i = 0; i < assets.size(); ++i) {

@@ -67,6 +67,39 @@ struct Skip {
   std::string reason;
 };
 
+// What a run selected, in run order: techniques (each with its variants, in the
+// technique's order), the inputs (assets, then scenarios) and the measures. Records are
+// written in this order (technique, variant, asset), a record's measures in measure order;
+// `tessbench merge` orders shard records by it and refuses shards whose selections differ.
+struct RunSelection {
+  struct TechniqueVariants {
+    std::string technique;
+    std::vector<std::string> variants;
+    bool operator==(const TechniqueVariants&) const = default;
+  };
+  std::vector<TechniqueVariants> techniques;
+  std::vector<std::string> assets;
+  std::vector<std::string> measures;
+  bool operator==(const RunSelection&) const = default;
+};
+
+// The slice of the work list a run measured (`tessbench run --shard I/N`, numbered from
+// 0); count 0: not a shard (the whole list, or a merge of shards).
+struct ShardId {
+  size_t index = 0;
+  size_t count = 0;
+  bool operator==(const ShardId&) const = default;
+};
+
+// One shard run a merged run was made from.
+struct ShardSource {
+  ShardId shard;
+  std::string run_id;
+  std::string date;
+  std::string host;
+  std::string folder;  // as given to `tessbench merge`
+};
+
 struct RunContext {
   std::string date;    // ISO 8601 UTC; excluded from determinism checks
   std::string run_id;  // the folder name; excluded from determinism checks
@@ -78,6 +111,9 @@ struct RunContext {
   std::map<std::string, std::string> libraries;  // name -> version
   std::string vulkan_device;                     // empty when no device was opened
   std::string command_line;
+  RunSelection selection;  // empty in results written before it was recorded
+  ShardId shard;
+  std::vector<ShardSource> merged_from;  // the shards of a merged run, by index
 };
 
 struct Results {

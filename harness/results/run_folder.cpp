@@ -60,6 +60,23 @@ std::string createRunFolder(const std::string& root, const std::string& run_id,
   throw std::runtime_error(root + ": too many runs with the same timestamp");
 }
 
+void createNewRunFolder(const std::string& path) {
+  std::filesystem::path folder = std::filesystem::path(path).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();  // "out/" is "out"
+  const std::filesystem::path parent = folder.parent_path();
+  std::error_code error;
+  if (!parent.empty()) std::filesystem::create_directories(parent, error);
+  if (error) {
+    throw std::runtime_error(parent.string() +
+                             ": cannot create results folder: " + error.message());
+  }
+  if (!makeDirectory(folder.string())) {
+    throw std::runtime_error(path +
+                             ": run folder already exists; choose another --out "
+                             "(earlier results are never overwritten)");
+  }
+}
+
 void writeNewFile(const std::string& path, const std::string& contents) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0) {

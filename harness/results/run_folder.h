@@ -12,6 +12,10 @@ namespace tb {
 std::string createRunFolder(const std::string& root, const std::string& run_id,
                             std::string* chosen_run_id);
 
+// Creates the run folder `path` itself (and any missing parents) for `tessbench merge
+// --out`. A folder that already exists is an error (std::runtime_error naming it).
+void createNewRunFolder(const std::string& path);
+
 // Writes a file that must not exist yet (O_EXCL); throws naming the path.
 void writeNewFile(const std::string& path, const std::string& contents);
 

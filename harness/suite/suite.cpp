@@ -56,6 +56,7 @@ struct SuiteRun {
   // Measures that use the device run one at a time: a gpu::Context's queue is not
   // shared between threads.
   mutable std::mutex gpu_mutex;
+  ShardSpec shard;
 };
 
 // What one technique × variant × input step produced; steps run in parallel and their
@@ -142,8 +143,10 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
 
 // Records a technique that cannot take the input (on the default variant only, once).
 void recordSkip(const Technique& technique, const SuiteInput& input, bool is_default,
-                const std::string& reason, StepOutcome* outcome) {
-  if (is_default) outcome->skip = Skip{technique.info().id, input.name, reason};
+                const std::string& reason, const ShardSpec& shard, StepOutcome* outcome) {
+  if (is_default && ownsSkip(shard, technique.info().id, input.name)) {
+    outcome->skip = Skip{technique.info().id, input.name, reason};
+  }
 }
 
 // Builds the technique on one input and variant, and runs every measure the rule admits
@@ -163,7 +166,7 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   if (!any_may_run) return outcome;
   if (input.is_asset()) {
     if (std::string reason = technique.checkSupport(*input.mesh); !reason.empty()) {
-      recordSkip(technique, input, is_default, reason, &outcome);
+      recordSkip(technique, input, is_default, reason, run.shard, &outcome);
       return outcome;
     }
   }
@@ -172,7 +175,7 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   try {
     instance = technique.build(technique_input, variant);
   } catch (const UnsupportedInput& unsupported) {
-    recordSkip(technique, input, is_default, unsupported.what(), &outcome);
+    recordSkip(technique, input, is_default, unsupported.what(), run.shard, &outcome);
     return outcome;
   }
   const SurfacePatches* patches = instance->surface();
@@ -182,7 +185,8 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   std::vector<const Measure*> runnable;
   for (const Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
-                    {is_default, own_patch_data})) {
+                    {is_default, own_patch_data}) &&
+        ownsMeasure(run.shard, technique.info().id, variant.name, input.name, measure->info().id)) {
       runnable.push_back(measure);
     }
   }
@@ -240,6 +244,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (run.measures.empty()) run.measures = MeasureRegistry::instance().all();
   run.camera_paths = selection.camera_paths;
   if (run.camera_paths.empty()) run.camera_paths = {testOrbitPath};
+  run.shard = selection.shard;
   for (const Measure* measure : run.measures) {
     results->measures.push_back(declarationOf(measure->info()));
   }

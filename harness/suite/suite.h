@@ -9,6 +9,7 @@
 #include "harness/results/results_model.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
+#include "harness/suite/shard.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -27,6 +28,7 @@ struct SuiteSelection {
   // Worker threads for the run (TBB): 0 = every core. Results are byte-identical
   // whatever the count: records are assembled in the serial order.
   int threads = 0;
+  ShardSpec shard;  // the slice of the work list to run (shard.h); default: all of it
 };
 
 // Wall time of one measure on one record (seconds; best 0). Timings vary run to run, so

@@ -1,0 +1,61 @@
+#include "harness/cli/merge_command.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/mesh/input_error.h"
+#include "harness/report/markdown.h"
+#include "harness/results/merge.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+
+namespace tb::cli {
+namespace {
+
+ShardRun readShard(const std::string& folder) {
+  const std::string path = folder + "/results.json";
+  if (!std::filesystem::is_regular_file(path)) {
+    throw std::runtime_error(folder + ": no results.json (not a tessbench run folder)");
+  }
+  return {folder, readResultsFile(path)};
+}
+
+std::string folderName(const std::string& path) {
+  std::filesystem::path folder = std::filesystem::path(path).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();
+  return folder.filename().string();
+}
+
+}  // namespace
+
+int runMerge(const MergeArgs& args, const std::string& command_line) {
+  std::vector<ShardRun> shards;
+  for (const std::string& folder : args.shards) shards.push_back(readShard(folder));
+  Results merged = mergeShards(shards);
+  // The check `run` makes on an unsharded run, which no single shard can make.
+  if (merged.records.empty() && !merged.skipped.empty()) {
+    const Skip& skip = merged.skipped.front();
+    throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
+  }
+  // The folder is made only after the shards are known to fit, so a refused merge leaves
+  // nothing behind.
+  createNewRunFolder(args.out);
+  merged.context.date = utcTimestampIso8601();
+  merged.context.run_id = folderName(args.out);
+  merged.context.command_line = command_line;
+  writeNewFile(args.out + "/results.json", serializeResults(merged));
+  writeNewFile(args.out + "/report.md", renderMarkdown(merged));
+  if (!args.quiet) {
+    fmt::print(
+        "{} records, {} skipped from {} shards: merged run written to {}/ "
+        "(results.json, report.md)\n",
+        merged.records.size(), merged.skipped.size(), shards.size(), args.out);
+  } else {
+    fmt::print("{}\n", args.out);
+  }
+  return 0;
+}
+
+}  // namespace tb::cli
