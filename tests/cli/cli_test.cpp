@@ -1,7 +1,6 @@
 // End-to-end tests of the `tessbench` executable: exit codes, one-line errors,
 // JSON listings and byte-identical results for identical inputs.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -10,37 +9,16 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/cli_support.h"
 #include "tests/test_support.h"
 
 namespace tb {
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult runTessbench(const std::string& arguments) {
-  const std::string command = std::string(TB_TESSBENCH_BIN) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string readFile(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-size_t lineCount(const std::string& text) {
-  return std::count(text.begin(), text.end(), '\n');
-}
+using testing::CommandResult;
+using testing::lineCount;
+using testing::readFile;
+using testing::runTessbench;
 
 TEST(Cli, ListTechniquesJsonHasTheRequiredFields) {
   const CommandResult r = runTessbench("list techniques --json");

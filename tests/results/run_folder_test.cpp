@@ -26,6 +26,15 @@ TEST(RunFolder, TimestampedRunsGetDistinctFolders) {
   EXPECT_NE(first, second);
 }
 
+TEST(RunFolder, NewRunFolderIsCreatedOnceWithItsParents) {
+  const auto root = testing::scratchDirectory("run_folder_new");
+  const std::string path = (root / "merged" / "all").string();
+  createNewRunFolder(path + "/");
+  EXPECT_TRUE(std::filesystem::is_directory(path));
+  EXPECT_THROW(createNewRunFolder(path), std::runtime_error);
+  EXPECT_THROW(createNewRunFolder(path + "/"), std::runtime_error);
+}
+
 TEST(RunFolder, WriteNewFileRefusesToOverwrite) {
   const auto root = testing::scratchDirectory("run_folder_write");
   const std::string path = (root / "results.json").string();

@@ -1,0 +1,167 @@
+// mergeShards on hand-made shard results. Oracle: the order the suite writes records in
+// (technique, variant, asset as context.selection lists them; measures in selection order),
+// written out by hand below.
+#include "harness/results/merge.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "harness/results/results_json.h"
+
+namespace tb {
+namespace {
+
+// Two techniques (not in id order), two assets, two measures (not in id order).
+RunSelection selection() {
+  return {{{"zeta", {"v0", "v1"}}, {"alpha", {"only"}}}, {"cube", "ball"}, {"memory", "error"}};
+}
+
+MeasureResult measure(const std::string& id, double value) {
+  MeasureResult result;
+  result.measure = id;
+  result.rows.push_back({{{"level", "8"}}, {{"x", value, "ratio"}}});
+  return result;
+}
+
+Record record(const std::string& technique, const std::string& variant, const std::string& asset,
+              std::vector<MeasureResult> measures) {
+  return {technique, variant, asset, {{"alpha", "0.5"}}, {"a warning"}, std::move(measures)};
+}
+
+ShardRun shard(size_t index, size_t count, std::vector<Record> records, std::vector<Skip> skips) {
+  ShardRun run;
+  run.folder = "results/s" + std::to_string(index);
+  Results& r = run.results;
+  r.context.run_id = "s" + std::to_string(index);
+  r.context.git_sha = "abc";
+  r.context.host = index == 0 ? "node-a" : "node-b";
+  r.context.vulkan_device = "llvmpipe";
+  r.context.selection = selection();
+  r.context.shard = {index, count};
+  r.assets = {{"cube", "cube.obj", 6, 8, "quads", false},
+              {"ball", "ball.obj", 20, 12, "triangles", true}};
+  r.measures = {{"error", "Error", "", {}, {}, {}}, {"memory", "Memory", "", {}, {}, {}}};
+  r.records = std::move(records);
+  r.skipped = std::move(skips);
+  return run;
+}
+
+// What the unsharded run would hold, in its order.
+std::vector<Record> unshardedRecords() {
+  return {record("zeta", "v0", "cube", {measure("memory", 1), measure("error", 2)}),
+          record("zeta", "v0", "ball", {measure("memory", 3)}),
+          record("zeta", "v1", "cube", {measure("error", 4)}),
+          record("alpha", "only", "cube", {measure("memory", 5), measure("error", 6)})};
+}
+
+std::vector<ShardRun> threeShards() {
+  return {shard(1, 3,
+                {record("zeta", "v1", "cube", {measure("error", 4)}),
+                 record("zeta", "v0", "cube", {measure("error", 2)})},
+                {{"alpha", "ball", "alpha: no triangles"}}),
+          shard(0, 3,
+                {record("zeta", "v0", "cube", {measure("memory", 1)}),
+                 record("alpha", "only", "cube", {measure("error", 6)})},
+                {}),
+          shard(2, 3,
+                {record("zeta", "v0", "ball", {measure("memory", 3)}),
+                 record("alpha", "only", "cube", {measure("memory", 5)})},
+                {})};
+}
+
+std::string recordsJson(const std::vector<Record>& records) {
+  Results results;
+  results.records = records;
+  return toJson(results)["records"].dump(2);
+}
+
+TEST(Merge, RecordsAndMeasuresComeBackInTheUnshardedOrder) {
+  const Results merged = mergeShards(threeShards());
+  EXPECT_EQ(recordsJson(merged.records), recordsJson(unshardedRecords()));
+  ASSERT_EQ(merged.skipped.size(), 1u);
+  EXPECT_EQ(merged.skipped[0].technique, "alpha");
+  EXPECT_EQ(merged.assets.size(), 2u);
+  EXPECT_EQ(merged.measures.size(), 2u);
+  EXPECT_EQ(merged.context.shard.count, 0u);
+  ASSERT_EQ(merged.context.merged_from.size(), 3u);
+  EXPECT_EQ(merged.context.merged_from[2].run_id, "s2");
+  EXPECT_EQ(merged.context.host, "node-a; node-b");
+  EXPECT_TRUE(merged.context.date.empty());
+}
+
+void expectRefusal(const std::vector<ShardRun>& shards, const std::string& rule) {
+  try {
+    mergeShards(shards);
+    FAIL() << "merged; expected a refusal: " << rule;
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(rule), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(Merge, RefusesShardsThatDoNotFitTogether) {
+  std::vector<ShardRun> shards = threeShards();
+  expectRefusal({shards[0], shards[1]}, "missing shard 2/3");
+  expectRefusal({shards[0], shards[1], shards[2], shards[1]}, "given twice");
+
+  std::vector<ShardRun> other_n = threeShards();
+  other_n[2].results.context.shard = {2, 4};
+  expectRefusal(other_n, "same N");
+
+  std::vector<ShardRun> other_build = threeShards();
+  other_build[1].results.context.git_sha = "def";
+  expectRefusal(other_build, "git sha");
+
+  std::vector<ShardRun> other_device = threeShards();
+  other_device[1].results.context.vulkan_device = "NVIDIA";
+  expectRefusal(other_device, "Vulkan device");
+
+  std::vector<ShardRun> other_selection = threeShards();
+  other_selection[1].results.context.selection.measures = {"error", "memory"};
+  expectRefusal(other_selection, "selection differs");
+
+  std::vector<ShardRun> other_assets = threeShards();
+  other_assets[1].results.assets[0].faces = 7;
+  expectRefusal(other_assets, "assets differ");
+
+  std::vector<ShardRun> unsharded = threeShards();
+  unsharded[0].results.context.shard = {};
+  expectRefusal(unsharded, "not a shard run");
+}
+
+TEST(Merge, RefusesRecordsThatDisagree) {
+  std::vector<ShardRun> twice = threeShards();
+  twice[1].results.records.push_back(record("zeta", "v1", "cube", {measure("error", 4)}));
+  expectRefusal(twice, "was also measured in results/s0");
+
+  std::vector<ShardRun> warnings = threeShards();
+  warnings[1].results.records[0].warnings.clear();
+  expectRefusal(warnings, "parameters or warnings");
+
+  std::vector<ShardRun> skipped_twice = threeShards();
+  skipped_twice[2].results.skipped.push_back({"alpha", "ball", "alpha: no triangles"});
+  expectRefusal(skipped_twice, "also recorded in");
+
+  std::vector<ShardRun> unknown = threeShards();
+  unknown[2].results.records.push_back(record("zeta", "v9", "cube", {measure("error", 4)}));
+  expectRefusal(unknown, "not in the run's selection");
+}
+
+TEST(Merge, ContextRoundTripsThroughResultsJson) {
+  const Results merged = mergeShards(threeShards());
+  const Results parsed = resultsFromJson(toJson(merged));
+  EXPECT_EQ(parsed.context.selection, selection());
+  ASSERT_EQ(parsed.context.merged_from.size(), 3u);
+  EXPECT_EQ(parsed.context.merged_from[1].shard, (ShardId{1, 3}));
+  EXPECT_EQ(serializeResults(parsed), serializeResults(merged));
+  // Results written before sharding (no selection, shard or merged_from) still read.
+  auto old = toJson(merged);
+  old["context"].erase("selection");
+  old["context"].erase("merged_from");
+  EXPECT_NO_THROW(resultsFromJson(old));
+}
+
+}  // namespace
+}  // namespace tb
