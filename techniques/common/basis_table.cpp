@@ -129,7 +129,10 @@ __attribute__((target("avx2,fma"))) void combineAvx2(const CombineArgs& a) {
   for (; b < a.blocks; ++b) combineBlocksAvx2<1>(a, b);
 }
 
-__attribute__((target("avx512f"))) void normalsAvx512(const std::array<AlignedDoubles, 3>& du,
+// The cross product rounds each product, as cross() does (fp-contract off: GCC would fuse
+// the product and the difference), so parallel tangents give exactly zero and the normal
+// stays zero there.
+__attribute__((target("avx512f"), optimize("fp-contract=off"))) void normalsAvx512(const std::array<AlignedDoubles, 3>& du,
                                                       const std::array<AlignedDoubles, 3>& dv,
                                                       std::array<AlignedDoubles, 3>& normal,
                                                       size_t blocks) {
@@ -139,9 +142,9 @@ __attribute__((target("avx512f"))) void normalsAvx512(const std::array<AlignedDo
                   uz = _mm512_load_pd(du[2].data() + at);
     const __m512d vx = _mm512_load_pd(dv[0].data() + at), vy = _mm512_load_pd(dv[1].data() + at),
                   vz = _mm512_load_pd(dv[2].data() + at);
-    const __m512d nx = _mm512_fmsub_pd(uy, vz, _mm512_mul_pd(uz, vy));
-    const __m512d ny = _mm512_fmsub_pd(uz, vx, _mm512_mul_pd(ux, vz));
-    const __m512d nz = _mm512_fmsub_pd(ux, vy, _mm512_mul_pd(uy, vx));
+    const __m512d nx = _mm512_sub_pd(_mm512_mul_pd(uy, vz), _mm512_mul_pd(uz, vy));
+    const __m512d ny = _mm512_sub_pd(_mm512_mul_pd(uz, vx), _mm512_mul_pd(ux, vz));
+    const __m512d nz = _mm512_sub_pd(_mm512_mul_pd(ux, vy), _mm512_mul_pd(uy, vx));
     // maskz_sqrt with every lane set is sqrt (GCC 12 warns about _mm512_sqrt_pd's
     // undefined pass-through operand).
     const __m512d length = _mm512_maskz_sqrt_pd(__mmask8(0xFF),
@@ -154,7 +157,7 @@ __attribute__((target("avx512f"))) void normalsAvx512(const std::array<AlignedDo
   }
 }
 
-__attribute__((target("avx2,fma"))) void normalsAvx2(const std::array<AlignedDoubles, 3>& du,
+__attribute__((target("avx2,fma"), optimize("fp-contract=off"))) void normalsAvx2(const std::array<AlignedDoubles, 3>& du,
                                                      const std::array<AlignedDoubles, 3>& dv,
                                                      std::array<AlignedDoubles, 3>& normal,
                                                      size_t blocks) {
@@ -164,9 +167,9 @@ __attribute__((target("avx2,fma"))) void normalsAvx2(const std::array<AlignedDou
                   uz = _mm256_load_pd(du[2].data() + at);
     const __m256d vx = _mm256_load_pd(dv[0].data() + at), vy = _mm256_load_pd(dv[1].data() + at),
                   vz = _mm256_load_pd(dv[2].data() + at);
-    const __m256d nx = _mm256_fmsub_pd(uy, vz, _mm256_mul_pd(uz, vy));
-    const __m256d ny = _mm256_fmsub_pd(uz, vx, _mm256_mul_pd(ux, vz));
-    const __m256d nz = _mm256_fmsub_pd(ux, vy, _mm256_mul_pd(uy, vx));
+    const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(uy, vz), _mm256_mul_pd(uz, vy));
+    const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(uz, vx), _mm256_mul_pd(ux, vz));
+    const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(ux, vy), _mm256_mul_pd(uy, vx));
     const __m256d length = _mm256_sqrt_pd(
         _mm256_fmadd_pd(nz, nz, _mm256_fmadd_pd(ny, ny, _mm256_mul_pd(nx, nx))));
     const __m256d nonzero = _mm256_cmp_pd(length, zero, _CMP_GT_OQ);
