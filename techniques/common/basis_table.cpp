@@ -59,21 +59,28 @@ void normalsPortable(const std::array<AlignedDoubles, 3>& du,
 
 #if TB_X86_KERNELS
 
-// `Blocks` blocks of 8 points starting at block `first`.
-template <int Blocks>
-__attribute__((target("avx512f"))) inline void combineBlocksAvx512(const CombineArgs& a,
-                                                                    size_t first) {
+// `Blocks` blocks of 8 points starting at block `first`. `kControlPoints` is the
+// table's control point count when known at compile time (0: read at run time): the
+// loop over them is then unrolled whole, with no loop exit to mispredict per block group.
+template <int Blocks, size_t kControlPoints>
+__attribute__((target("avx512f"), always_inline)) inline void combineBlocksAvx512(
+    const CombineArgs& a, size_t first) {
   constexpr size_t L = kBatchLanes;
-  const size_t stride = a.control_points * L;
+  const size_t control_points = kControlPoints != 0 ? kControlPoints : a.control_points;
+  const size_t stride = control_points * L;
   const double* w = a.weights + first * stride;
   __m512d x[Blocks], y[Blocks], z[Blocks];
   for (int i = 0; i < Blocks; ++i) x[i] = y[i] = z[i] = _mm512_setzero_pd();
-  for (size_t k = 0; k < a.control_points; ++k, w += L) {
+#pragma GCC unroll 20
+  for (size_t k = 0; k < control_points; ++k) {
     const __m512d cx = _mm512_set1_pd(a.control[k].x);
     const __m512d cy = _mm512_set1_pd(a.control[k].y);
     const __m512d cz = _mm512_set1_pd(a.control[k].z);
     for (int i = 0; i < Blocks; ++i) {
-      const __m512d wi = _mm512_load_pd(w + i * stride);
+      __m512d wi = _mm512_load_pd(w + i * stride + k * L);
+      // Keeps the weights in a register: GCC otherwise folds the load into each of the
+      // three FMAs, tripling the 512-bit loads (3 per FMA group instead of 1).
+      asm("" : "+v"(wi));
       x[i] = _mm512_fmadd_pd(wi, cx, x[i]);
       y[i] = _mm512_fmadd_pd(wi, cy, y[i]);
       z[i] = _mm512_fmadd_pd(wi, cz, z[i]);
@@ -87,10 +94,28 @@ __attribute__((target("avx512f"))) inline void combineBlocksAvx512(const Combine
   }
 }
 
+template <size_t kControlPoints>
 __attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
   size_t b = 0;
-  for (; b + 4 <= a.blocks; b += 4) combineBlocksAvx512<4>(a, b);
-  for (; b < a.blocks; ++b) combineBlocksAvx512<1>(a, b);
+  for (; b + 4 <= a.blocks; b += 4) combineBlocksAvx512<4, kControlPoints>(a, b);
+  switch (a.blocks - b) {
+    case 3: return combineBlocksAvx512<3, kControlPoints>(a, b);
+    case 2: return combineBlocksAvx512<2, kControlPoints>(a, b);
+    case 1: return combineBlocksAvx512<1, kControlPoints>(a, b);
+    default: return;
+  }
+}
+
+// The control point counts of the shipped kernels (acc 16 and 12, Gregory 20 and 15)
+// get their own unrolled copies.
+__attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
+  switch (a.control_points) {
+    case 12: return combineAvx512<12>(a);
+    case 15: return combineAvx512<15>(a);
+    case 16: return combineAvx512<16>(a);
+    case 20: return combineAvx512<20>(a);
+    default: return combineAvx512<0>(a);
+  }
 }
 
 // Two 4-lane halves per block; `Blocks` blocks at a time (2 blocks: 12 accumulators of
@@ -109,7 +134,8 @@ __attribute__((target("avx2,fma"))) inline void combineBlocksAvx2(const CombineA
     const __m256d cy = _mm256_broadcast_sd(&a.control[k].y);
     const __m256d cz = _mm256_broadcast_sd(&a.control[k].z);
     for (int i = 0; i < kHalves; ++i) {
-      const __m256d wi = _mm256_load_pd(w + (i / 2) * stride + (i % 2) * 4);
+      __m256d wi = _mm256_load_pd(w + (i / 2) * stride + (i % 2) * 4);
+      asm("" : "+x"(wi));  // one load per weight vector, as in the AVX-512 kernel
       x[i] = _mm256_fmadd_pd(wi, cx, x[i]);
       y[i] = _mm256_fmadd_pd(wi, cy, y[i]);
       z[i] = _mm256_fmadd_pd(wi, cz, z[i]);

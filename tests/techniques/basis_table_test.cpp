@@ -31,7 +31,7 @@ TEST(BasisTable, EveryKernelComputesTheDirectSum) {
   std::uniform_real_distribution<double> value(-2.0, 2.0);
   // Point counts that leave 0, 1, 3 and 4 blocks over the kernels' 4- and 2-block steps.
   for (size_t points : {1u, 8u, 29u, 40u, 289u}) {
-    for (size_t k_count : {1u, 12u, 20u}) {
+    for (size_t k_count : {1u, 12u, 15u, 16u, 20u, 23u}) {  // the unrolled counts and others
       BasisTable table(points, k_count);
       std::vector<Vec3d> control(k_count);
       for (Vec3d& c : control) c = {value(rng), value(rng), value(rng)};
