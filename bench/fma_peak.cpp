@@ -79,20 +79,21 @@ const char* fmaPeakKernel() {
   return fastestBatchKernel() == BatchKernel::kPortable ? "sse2" : toString(fastestBatchKernel());
 }
 
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 double fmaPeakPerSecond() {
   static const double kPeak = [] {
     double best = 0;
     // Thread CPU time, as Google Benchmark's rates use: on a shared machine the wall
     // clock also counts other processes' turns.
-    const auto seconds = [] {
-      timespec t{};
-      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-      return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-    };
     for (int run = 0; run < 10; ++run) {
-      const double start = seconds();
+      const double start = threadCpuSeconds();
       const int64_t fmas = runFmaPeakLoop(2'000'000);
-      best = std::max(best, double(fmas) / (seconds() - start));
+      best = std::max(best, double(fmas) / (threadCpuSeconds() - start));
     }
     return best;
   }();

@@ -19,4 +19,7 @@ double fmaPeakPerSecond();
 // "avx512", "avx2_fma" or "sse2": the registers the loop uses.
 const char* fmaPeakKernel();
 
+// CPU time of the calling thread in seconds: what Google Benchmark's rates divide by.
+double threadCpuSeconds();
+
 }  // namespace tb::bench
