@@ -6,6 +6,8 @@
 // technique whose patch is linear in its control points for a fixed (u, v) computes the
 // basis weights of those points once, in a BatchPattern, and then evaluates each patch as
 // a small dense product (weights x control points) over structure-of-arrays output.
+// A pattern is read-only once made and may be shared by threads; each thread fills its
+// own BatchPoints.
 #pragma once
 
 #include <algorithm>
