@@ -34,10 +34,11 @@ void loadPlugin(const std::string& path);
 // Entry point a plug-in library exports. It receives the host's registry, adds
 // its techniques and returns kTessbenchPluginAbi; any other value rejects the
 // plug-in (built against another technique.h).
-// 5: Technique::build returns a TechniqueInstance (surface() / simulation()) instead of
+// 6: SurfacePatches gained makeBatchPattern() and evaluateBatch() (batched evaluation,
+// techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() / simulation()) instead of
 // buildPatches; SurfacePatches lost domain() and gpuProgram() (patchDomain(p) and
 // gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 5;
+inline constexpr int kTessbenchPluginAbi = 6;
 extern "C" {
 typedef int (*TessbenchPluginEntry)(tb::TechniqueRegistry* registry);
 }

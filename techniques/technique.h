@@ -18,6 +18,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/vec.h"
 #include "core/tess/tessellator.h"
+#include "techniques/batch_eval.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/simulation.h"
 
@@ -27,8 +28,6 @@ enum class TechniqueFamily {
   kSurface,     // turns a control mesh into patches evaluated by the tessellator
   kSimulation,  // steps a simulation (wave particles, soft bodies)
 };
-
-enum class PatchDomain { kTriangle, kQuad };
 
 // The subdivision surface a technique approximates; the error measure grades it
 // against that scheme's exact limit (OpenSubdiv Bfr) of controlMesh().
@@ -71,10 +70,6 @@ struct SurfacePointF {
   Vec3f position;
   Vec3f normal;  // as the TES outputs it (normalised there when the shader normalises)
 };
-
-// Domain coordinates as the TES receives gl_TessCoord: triangles use barycentric
-// (u, v, w) weighting corners 0, 1, 2; quads use (u, v, unused).
-using DomainCoord = std::array<double, 3>;
 
 // Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
 // evaluators run with CountingScalar in the shader's operation order.
@@ -125,7 +120,42 @@ class SurfacePatches {
   virtual DataFootprint footprint() const = 0;
   // Non-fatal notes gathered while building ("3 quads fan-triangulated").
   virtual const std::vector<std::string>& warnings() const = 0;
+
+  // Batched evaluation (techniques/batch_eval.h): the points `coords` of one tessellation
+  // pattern on patches of `domain`, prepared once (a technique with a batched kernel
+  // computes their basis weights here). The default keeps only the points.
+  virtual std::unique_ptr<BatchPattern> makeBatchPattern(PatchDomain domain,
+                                                         std::vector<DomainCoord> coords,
+                                                         BatchOutput output) const {
+    return std::make_unique<BatchPattern>(domain, std::move(coords), output);
+  }
+  // Every point of `pattern` on patch `patch` into `out` (reset to the pattern's size).
+  // Equal to evaluate() point by point up to rounding (~1e-12 relative). The default is
+  // evaluateBatchPointByPoint; a technique overrides it with its kernel and falls back to
+  // the default for a pattern it did not make. Throws std::invalid_argument when the
+  // pattern's domain is not the patch's.
+  virtual void evaluateBatch(size_t patch, const BatchPattern& pattern, BatchPoints& out) const {
+    evaluateBatchPointByPoint(patch, pattern, out);
+  }
+  // evaluate() at every point: position and normal, no derivatives.
+  void evaluateBatchPointByPoint(size_t patch, const BatchPattern& pattern,
+                                 BatchPoints& out) const;
 };
+
+inline void SurfacePatches::evaluateBatchPointByPoint(size_t patch, const BatchPattern& pattern,
+                                                      BatchPoints& out) const {
+  if (pattern.domain() != patchDomain(patch)) {
+    throw std::invalid_argument("evaluateBatch: patch " + std::to_string(patch) +
+                                " and the batch pattern have different domains");
+  }
+  out.reset(pattern.pointCount());
+  for (size_t i = 0; i < pattern.pointCount(); ++i) {
+    const SurfacePoint point = evaluate(patch, pattern.coords()[i]);
+    BatchPoints::set(out.position, i, point.position);
+    BatchPoints::set(out.normal, i, point.normal);
+  }
+  out.has_normals = true;
+}
 
 // Thrown by Technique::build when the asset breaks a rule the technique needs.
 // The message names the technique, the element and the rule, e.g.

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/mesh/topology.h"
+#include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/registry.h"
@@ -174,6 +175,21 @@ class AccPatches final : public SurfacePatches {
     const double u = coord[0], v = coord[1];
     const Vec3d tu = evaluateTangentU(p.tu, u, v), tv = evaluateTangentV(p.tv, u, v);
     return {evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+  }
+
+  std::unique_ptr<BatchPattern> makeBatchPattern(PatchDomain domain,
+                                                 std::vector<DomainCoord> coords,
+                                                 BatchOutput output) const override {
+    if (domain != PatchDomain::kQuad) {  // fits no acc patch; evaluateBatch refuses it
+      return SurfacePatches::makeBatchPattern(domain, std::move(coords), output);
+    }
+    return std::make_unique<AccBatchPattern>(std::move(coords), output);
+  }
+
+  void evaluateBatch(size_t patch, const BatchPattern& pattern, BatchPoints& out) const override {
+    const auto* acc = dynamic_cast<const AccBatchPattern*>(&pattern);
+    if (acc == nullptr) return evaluateBatchPointByPoint(patch, pattern, out);
+    acc->evaluate(points_d_[patch], out);
   }
 
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {

@@ -2,6 +2,7 @@
 
 #include <bit>
 
+#include "techniques/gregory_acc/gregory_batch.h"
 #include "techniques/gregory_acc/gregory_eval.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "techniques/registry.h"
@@ -71,6 +72,24 @@ class GregoryPatches final : public SurfacePatches {
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const GregoryPoint<double> point = evaluatePatch(points_d_[patch], patch, coord);
     return {point.position, point.normal};
+  }
+
+  std::unique_ptr<BatchPattern> makeBatchPattern(PatchDomain domain,
+                                                 std::vector<DomainCoord> coords,
+                                                 BatchOutput output) const override {
+    return std::make_unique<GregoryBatchPattern>(domain, std::move(coords), output,
+                                                 symmetric_edges_);
+  }
+
+  // Patterns made by another gregory_acc surface are used as they are when their edge
+  // rule is this one's; anything else goes point by point.
+  void evaluateBatch(size_t patch, const BatchPattern& pattern, BatchPoints& out) const override {
+    const auto* gregory = dynamic_cast<const GregoryBatchPattern*>(&pattern);
+    if (gregory == nullptr || gregory->symmetricEdges() != symmetric_edges_ ||
+        gregory->domain() != patchDomain(patch)) {
+      return evaluateBatchPointByPoint(patch, pattern, out);
+    }
+    gregory->evaluate(points_d_[patch], out);
   }
 
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {

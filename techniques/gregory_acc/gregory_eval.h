@@ -19,6 +19,16 @@ struct GregoryPoint {
   Vec3T<T> normal;
 };
 
+// Position and the two tangents whose cross product is the normal: ∂/∂u and ∂/∂v on a
+// quad; on a triangle the derivatives towards corners 1 and 2 (see the triangle below).
+// Linear in the control points for a fixed domain point (gregory_batch.h relies on it).
+template <class T>
+struct GregoryFrame {
+  Vec3T<T> position;
+  Vec3T<T> tangent_u;
+  Vec3T<T> tangent_v;
+};
+
 // One control point as its stencil's weighted sum, ascending vertex index, from zero
 // (the TCS loop).
 template <class T, class PositionAt>
@@ -75,10 +85,10 @@ void blendFace(const Vec3T<T>& fp, const Vec3T<T>& fm, T a, T b, T a_u, T b_u, T
   q_v = diff * (a_v * b - b_v * a);
 }
 
-// Position and unit normal at (u, v). `symmetric_edges`: points on the domain boundary
+// Position and tangents at (u, v). `symmetric_edges`: points on the domain boundary
 // come from the shared edge curve alone, evaluated symmetrically.
 template <class T>
-GregoryPoint<T> evaluateGregory(const GregoryPoints<T>& cp, T u, T v, bool symmetric_edges) {
+GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool symmetric_edges) {
   const T one(1), zero(0);
   const T iu = one - u, iv = one - v;
   // 4x4 Bézier net q[j][i] (row j along v, column i along u); the four interior points
@@ -132,7 +142,14 @@ GregoryPoint<T> evaluateGregory(const GregoryPoints<T>& cp, T u, T v, bool symme
       position = symmetricEdge(at(0, kP), at(0, kEm), at(3, kEp), at(3, kP), v);
     }
   }
-  return {position, normalize(cross(tangent_u, tangent_v))};
+  return {position, tangent_u, tangent_v};
+}
+
+// Position and unit normal at (u, v).
+template <class T>
+GregoryPoint<T> evaluateGregory(const GregoryPoints<T>& cp, T u, T v, bool symmetric_edges) {
+  const GregoryFrame<T> frame = evaluateGregoryFrame(cp, u, v, symmetric_edges);
+  return {frame.position, normalize(cross(frame.tangent_u, frame.tangent_v))};
 }
 
 // The quartic triangle's control net, points b_ijk (i + j + k = 4, i the power of the
@@ -160,8 +177,9 @@ static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
               quarticSlot(1, 0, 3) == 9);
 
 // Triangle Gregory patch (Loop et al. 2009: cubic boundaries, quartic interior) at
-// barycentric (u, v, w) = gl_TessCoord, weights of corners 0, 1, 2; position and unit
-// normal of the derivatives toward corners 1 and 2, (S_v - S_u) x (S_w - S_u).
+// barycentric (u, v, w) = gl_TessCoord, weights of corners 0, 1, 2; position and the
+// derivatives toward corners 1 and 2, S_v - S_u and S_w - S_u (the frame's tangent_u and
+// tangent_v), whose cross product is the normal.
 //
 // Net: corners b400 = P0, ...; the cubic boundary P_c, Ep_c, Em_{c+1}, P_{c+1}
 // degree-raised to quartic, e.g. b310 = (P0 + 3 Ep0) / 4, b220 = (Ep0 + Em1) / 2; the
@@ -173,8 +191,8 @@ static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
 // evaluated by symmetricEdge with the same operations a quad patch uses, so an edge
 // shared with a quad or a triangle gives the same bits from both sides.
 template <class T>
-GregoryPoint<T> evaluateGregoryTriangle(const GregoryPoints<T>& cp, T u, T v, T w,
-                                        bool symmetric_edges) {
+GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T v, T w,
+                                             bool symmetric_edges) {
   const T one(1), zero(0), quarter(0.25), half(0.5), three(3), four(4);
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
   std::array<Vec3T<T>, 15> b;
@@ -239,7 +257,14 @@ GregoryPoint<T> evaluateGregoryTriangle(const GregoryPoints<T>& cp, T u, T v, T 
       position = symmetricEdge(at(2, kP), at(2, kEp), at(0, kEm), at(0, kP), u);
     }
   }
-  return {position, normalize(cross(tangent_a, tangent_c))};
+  return {position, tangent_a, tangent_c};
+}
+
+template <class T>
+GregoryPoint<T> evaluateGregoryTriangle(const GregoryPoints<T>& cp, T u, T v, T w,
+                                        bool symmetric_edges) {
+  const GregoryFrame<T> frame = evaluateGregoryTriangleFrame(cp, u, v, w, symmetric_edges);
+  return {frame.position, normalize(cross(frame.tangent_u, frame.tangent_v))};
 }
 
 }  // namespace tb::gregory_acc
