@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cstring>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <tuple>
 
 #include "core/gpu/buffer.h"
@@ -21,9 +24,17 @@ namespace {
 // TbPatchProgramPush in shaders/common/patch_program.glsl.
 struct PushBlock {
   uint32_t first_patch;
-  uint32_t capture_enabled;
+  uint32_t capture_mode;
 };
 static_assert(sizeof(PushBlock) == 8);
+
+// kTbCapture* in shaders/common/patch_program.glsl.
+enum CaptureMode : uint32_t {
+  kCaptureNone = 0,
+  kCaptureEvery = 1,
+  kCaptureQuadBoundary = 2,
+  kCaptureTriangleBoundary = 3,
+};
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
 struct PatchLevelsBits {
@@ -40,15 +51,22 @@ constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
 
 // One compiled program: its descriptor layouts (set 0: capture + the technique's
-// buffers; set 1: per-patch levels), pipeline and descriptor sets.
+// buffers; set 1: per-patch levels) and pipeline. Immutable once built (but for the
+// warm-up flag), so calls on several threads share it; each call allocates its own
+// descriptor sets.
 struct ProgramPipeline {
   VkDescriptorSetLayoutOwner set_layout;
   VkDescriptorSetLayoutOwner levels_set_layout;
   VkPipelineLayoutOwner layout;
   VkPipelineOwner pipeline;
-  StorageBufferSet descriptors;
-  StorageBufferSet levels_descriptors;
   uint32_t binding_count = 0;
+  std::atomic<bool> warmed{false};  // the compile-at-first-draw warm-up has been drawn
+};
+
+// What one call captures into and counts with; pooled so calls reuse the capture buffer.
+struct CallResources {
+  VkQueryPoolOwner queries;
+  Buffer capture;
 };
 
 using ProgramKey =
@@ -84,17 +102,12 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
 }
 
 // Per-device cache of program pipelines (lavapipe compiles at the first draw, so a
-// pipeline is worth keeping) and the query pool.
-struct PatchProgramCache {
+// pipeline is worth keeping) and a pool of per-call resources. `mutex` guards the map
+// and the pool; what they hand out is used without it.
+class PatchProgramCache {
+ public:
   explicit PatchProgramCache(Context& context) : context_(context) {
-    auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-    info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
-    info.queryCount = 1;
-    info.pipelineStatistics = kTessStatisticFlags;
-    VkQueryPool pool = VK_NULL_HANDLE;
-    vkCheck(vkCreateQueryPool(context.device(), &info, nullptr, &pool), "vkCreateQueryPool");
-    queries = VkQueryPoolOwner(context.device(), pool);
-    vertex = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
+    vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
   }
 
   ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing) {
@@ -103,28 +116,68 @@ struct PatchProgramCache {
                    program.specialization, int(program.domain),
                    int(spacing),           program.input_vertices_per_patch,
                    binding_count};
-    if (auto it = programs.find(key); it != programs.end()) return it->second;
+    const std::lock_guard lock(mutex_);
+    if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
     const VkDevice device = context_.device();
-    ProgramPipeline p;
-    p.binding_count = binding_count;
+    auto p = std::make_unique<ProgramPipeline>();
+    p->binding_count = binding_count;
     const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
-    p.set_layout = createStorageBufferSetLayout(device, stages);
+    p->set_layout = createStorageBufferSetLayout(device, stages);
     const VkShaderStageFlags levels_stage[] = {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT};
-    p.levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
-    const VkDescriptorSetLayout set_layouts[] = {p.set_layout.get(), p.levels_set_layout.get()};
-    p.layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-    p.pipeline = createProgramPipeline(device, program, spacing, vertex.get(), p.layout.get());
-    p.descriptors = StorageBufferSet(device, p.set_layout.get(), binding_count);
-    p.levels_descriptors = StorageBufferSet(device, p.levels_set_layout.get(), 1);
-    return programs.emplace(std::move(key), std::move(p)).first->second;
+    p->levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
+    const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
+    p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
+    p->pipeline = createProgramPipeline(device, program, spacing, vertex_.get(), p->layout.get());
+    return *programs_.emplace(std::move(key), std::move(p)).first->second;
   }
 
+  std::unique_ptr<CallResources> acquire() {
+    {
+      const std::lock_guard lock(mutex_);
+      if (!free_.empty()) {
+        std::unique_ptr<CallResources> resources = std::move(free_.back());
+        free_.pop_back();
+        return resources;
+      }
+    }
+    auto resources = std::make_unique<CallResources>();
+    auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+    info.queryCount = 1;
+    info.pipelineStatistics = kTessStatisticFlags;
+    VkQueryPool pool = VK_NULL_HANDLE;
+    vkCheck(vkCreateQueryPool(context_.device(), &info, nullptr, &pool), "vkCreateQueryPool");
+    resources->queries = VkQueryPoolOwner(context_.device(), pool);
+    return resources;
+  }
+
+  void release(std::unique_ptr<CallResources> resources) {
+    const std::lock_guard lock(mutex_);
+    free_.push_back(std::move(resources));
+  }
+
+ private:
   Context& context_;
-  VkShaderModuleOwner vertex;
-  VkQueryPoolOwner queries;
-  Buffer capture;
-  std::map<ProgramKey, ProgramPipeline> programs;
+  VkShaderModuleOwner vertex_;
+  std::mutex mutex_;
+  std::map<ProgramKey, std::unique_ptr<ProgramPipeline>> programs_;
+  std::vector<std::unique_ptr<CallResources>> free_;
+};
+
+// Per-call resources from the cache, given back when the call ends (or throws).
+class CallResourcesLease {
+ public:
+  explicit CallResourcesLease(PatchProgramCache& cache)
+      : cache_(cache), resources_(cache.acquire()) {}
+  ~CallResourcesLease() { cache_.release(std::move(resources_)); }
+  CallResourcesLease(const CallResourcesLease&) = delete;
+  CallResourcesLease& operator=(const CallResourcesLease&) = delete;
+  CallResources* operator->() const { return resources_.get(); }
+
+ private:
+  PatchProgramCache& cache_;
+  std::unique_ptr<CallResources> resources_;
 };
 
 void barrierShaderWritesToHost(VkCommandBuffer cmd) {
@@ -141,21 +194,31 @@ tess::Levels deviceLevels(tess::Domain domain, tess::Spacing spacing, const tess
   return spacing == tess::Spacing::kPow2 ? tess::roundPow2Levels(domain, levels) : levels;
 }
 
-// Upper bound of TES invocations of one patch: the CPU tessellator's distinct points,
-// doubled (fractional spacing may run the TES twice on one coordinate) plus slack.
-uint64_t invocationBound(tess::Domain domain, tess::Spacing spacing,
-                         const tess::Levels& device_levels) {
+bool onBoundary(tess::Domain domain, const tess::DomainPoint& p) {
+  if (domain == tess::Domain::kQuad) return p[0] == 0 || p[0] == 1 || p[1] == 0 || p[1] == 1;
+  return p[0] == 0 || p[1] == 0 || p[2] == 0;
+}
+
+// Upper bound of the vertices one patch captures: the CPU tessellator's distinct points
+// (on the boundary only, when that is all that is captured), doubled (fractional spacing
+// may run the TES twice on one coordinate) plus slack.
+uint64_t captureBound(tess::Domain domain, tess::Spacing spacing, const tess::Levels& device_levels,
+                      bool boundary_only) {
   const tess::Spacing device_spacing =
       spacing == tess::Spacing::kPow2 ? tess::Spacing::kInteger : spacing;
   const tess::Tessellation t =
       tess::tessellate(domain, device_spacing, device_levels, {.point_mode = true, .ccw = true});
-  return 2 * t.points.size() + 16;
+  const uint64_t points =
+      boundary_only ? uint64_t(std::count_if(t.points.begin(), t.points.end(),
+                                             [&](const auto& p) { return onBoundary(domain, p); }))
+                    : t.points.size();
+  return 2 * points + 16;
 }
 
-// invocationBound of patches [first, end), one tessellation per distinct level set.
-std::vector<uint64_t> invocationBounds(tess::Domain domain, tess::Spacing spacing,
-                                       std::span<const tess::Levels> device_levels, uint32_t first,
-                                       uint32_t end) {
+// captureBound of patches [first, end), one tessellation per distinct level set.
+std::vector<uint64_t> captureBounds(tess::Domain domain, tess::Spacing spacing,
+                                    std::span<const tess::Levels> device_levels, uint32_t first,
+                                    uint32_t end, bool boundary_only) {
   std::map<tess::LevelsBits, uint64_t> by_levels;
   std::vector<uint64_t> bounds;
   bounds.reserve(end - first);
@@ -163,7 +226,9 @@ std::vector<uint64_t> invocationBounds(tess::Domain domain, tess::Spacing spacin
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     auto it = by_levels.find(key);
     if (it == by_levels.end()) {
-      it = by_levels.emplace(key, invocationBound(domain, spacing, device_levels[p])).first;
+      it = by_levels
+               .emplace(key, captureBound(domain, spacing, device_levels[p], boundary_only))
+               .first;
     }
     bounds.push_back(it->second);
   }
@@ -223,31 +288,30 @@ Buffer uploadPatchLevels(Context& context, std::span<const tess::Levels> device_
 
 // Everything one call draws with.
 struct DrawSetup {
-  const PatchProgramCache& cache;
   const ProgramPipeline& pipeline;
+  VkQueryPool queries = VK_NULL_HANDLE;
+  VkDescriptorSet sets[2] = {};  // set 0 (capture + data), set 1 (levels)
   uint32_t input_vertices_per_patch = 1;
   uint32_t per_draw = 1;
 };
 
 // Draws patches [from, to), `per_draw` patches per draw, inside one statistics query.
 void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
-                 bool capture) {
-  const VkQueryPool queries = setup.cache.queries.get();
+                 CaptureMode mode) {
   const VkPipelineLayout layout = setup.pipeline.layout.get();
-  vkCmdResetQueryPool(cmd, queries, 0, 1);
+  vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
   beginDiscardRendering(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, setup.pipeline.pipeline.get());
-  const VkDescriptorSet sets[] = {setup.pipeline.descriptors.set,
-                                  setup.pipeline.levels_descriptors.set};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, sets, 0, nullptr);
-  vkCmdBeginQuery(cmd, queries, 0, 0);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, setup.sets, 0,
+                          nullptr);
+  vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
     const uint32_t count = std::min(setup.per_draw, to - p);
-    const PushBlock push{p, capture ? 1u : 0u};
+    const PushBlock push{p, mode};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
   }
-  vkCmdEndQuery(cmd, queries, 0);
+  vkCmdEndQuery(cmd, setup.queries, 0);
   vkCmdEndRendering(cmd);
   barrierShaderWritesToHost(cmd);
 }
@@ -304,6 +368,20 @@ void sortUnique(std::vector<CapturedVertex>* vertices) {
                   vertices->end());
 }
 
+CaptureMode captureMode(const GpuPatchProgram& program, const PatchProgramOptions& options) {
+  if (!options.capture) return kCaptureNone;
+  if (!options.boundary_only) return kCaptureEvery;
+  switch (program.domain) {
+    case tess::Domain::kQuad:
+      return kCaptureQuadBoundary;
+    case tess::Domain::kTriangle:
+      return kCaptureTriangleBoundary;
+    default:
+      throw GpuError("patch program " + program.evaluation_shader +
+                     ": an isoline patch has no boundary to capture");
+  }
+}
+
 void checkProgram(const Context& context, const GpuPatchProgram& program, size_t level_count) {
   if (program.input_vertices_per_patch == 0 ||
       program.input_vertices_per_patch > context.limits().maxTessellationPatchSize) {
@@ -324,8 +402,10 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                                     const PatchProgramOptions& options) {
   context.requireFeatures(tessCaptureFeatures(), "patch program");
   checkProgram(context, program, patch_levels.size());
+  const CaptureMode mode = captureMode(program, options);
   PatchProgramCache& cache = context.attachment<PatchProgramCache>();
   ProgramPipeline& pipeline = cache.get(program, options.spacing);
+  const CallResourcesLease resources(cache);
   const VkDevice device = context.device();
 
   std::vector<tess::Levels> device_levels;
@@ -335,46 +415,54 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   }
   const std::vector<Buffer> data = uploadStorageBuffers(context, program);
   const Buffer levels_buffer = uploadPatchLevels(context, device_levels);
+  const StorageBufferSet descriptors(device, pipeline.set_layout.get(), pipeline.binding_count);
+  const StorageBufferSet levels_descriptors(device, pipeline.levels_set_layout.get(), 1);
   const VkBuffer levels_handle = levels_buffer.handle();
-  pipeline.levels_descriptors.bind(device, std::span(&levels_handle, 1));
+  levels_descriptors.bind(device, std::span(&levels_handle, 1));
+  // Binds set 0 to the current capture buffer (replaced when it grows).
   auto bindBuffers = [&]() {
-    std::vector<VkBuffer> handles{cache.capture.handle()};
+    std::vector<VkBuffer> handles{resources->capture.handle()};
     for (const Buffer& buffer : data) handles.push_back(buffer.handle());
-    pipeline.descriptors.bind(device, handles);
+    descriptors.bind(device, handles);
   };
 
   const uint32_t first = std::min(options.first_patch, program.patch_count);
   const uint32_t end =
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
-  const DrawSetup setup{cache, pipeline, program.input_vertices_per_patch,
+  const DrawSetup setup{pipeline,
+                        resources->queries.get(),
+                        {descriptors.set, levels_descriptors.set},
+                        program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
 
-  // Warm-up (lavapipe compiles at the first draw), not captured and not counted.
-  ensureCapacity(context, cache.capture, kCaptureHeaderBytes + 64,
+  ensureCapacity(context, resources->capture, kCaptureHeaderBytes + 64,
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   bindBuffers();
-  if (first < end) {
+  // Warm-up, once per pipeline (lavapipe compiles at the first draw): not captured and
+  // not counted.
+  if (first < end && !pipeline.warmed.load()) {
     context.submitAndWait(
-        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, false); });
+        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, kCaptureNone); });
+    pipeline.warmed.store(true);
   }
 
   PatchProgramCapture result;
+  const bool boundary_only = mode == kCaptureQuadBoundary || mode == kCaptureTriangleBoundary;
   const std::vector<uint64_t> bounds =
-      invocationBounds(program.domain, options.spacing, device_levels, first, end);
+      captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
   for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
     const VkDeviceSize bytes = kCaptureHeaderBytes + range.capacity * kCaptureWords * 4;
-    if (cache.capture.sizeBytes() < bytes) {
-      ensureCapacity(context, cache.capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (resources->capture.sizeBytes() < bytes) {
+      ensureCapacity(context, resources->capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      bindBuffers();
     }
-    bindBuffers();
     const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
-    cache.capture.write(header, sizeof(header));
-    result.submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
-      recordDraws(cmd, setup, range.from, range.to, options.capture);
-    });
+    resources->capture.write(header, sizeof(header));
+    result.submit_to_fence_s += context.submitAndWait(
+        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, range.from, range.to, mode); });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
-    addStatistics(device, cache.queries.get(), &result.stats);
-    if (options.capture) readCapture(cache.capture, program, range.capacity, &result.vertices);
+    addStatistics(device, setup.queries, &result.stats);
+    if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
   sortUnique(&result.vertices);
   return result;
