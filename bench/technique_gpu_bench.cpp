@@ -4,8 +4,17 @@
 // meshes), without capture, so the time is the shaders' and the tessellator's. Host clock
 // from submit to fence (UseManualTime), as in gpu_bench. On lavapipe the figures rank
 // techniques against each other; they are not GPU figures.
+//
+// cracks_gpu/... rows run the crack measure's GPU half (captureBoundaryPositions, the
+// function measureCracks calls, on the same patches and levels) and, in the same
+// iterations, the shaders without capture, so the two rates come from one run. Their
+// time is the crack half's whole host wall clock (uploads, submissions, reading back and
+// storing the boundary points), stricter than the no-capture rows' submit-to-fence.
+// cracks_gpu_full_inner/... rows run it under the patches' own inner levels (every
+// interior point too): the capture's own cost against the same TES invocations.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +22,7 @@
 #include "bench/technique_bench_support.h"
 #include "core/gpu/context.h"
 #include "core/gpu/patch_program.h"
+#include "harness/measures/crack_capture.h"
 #include "techniques/registry.h"
 
 namespace {
@@ -21,13 +31,38 @@ namespace {
 // (core/gpu/patch_program.h); the cracks measure's batch below level 32.
 constexpr uint32_t kPatchesPerDraw = 8;
 
-void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
-                    const std::string& asset, float level) {
+tb::gpu::Context* benchContext(benchmark::State& state) {
   static auto context = tb::gpu::Context::create();
   if (!context) {
     state.SkipWithError(("no usable Vulkan device: " + context.error()).c_str());
-    return;
+    return nullptr;
   }
+  return context.value().get();
+}
+
+// Every program of `patches` without capture: TES invocations and submit-to-fence seconds.
+struct NoCaptureRun {
+  double invocations = 0, seconds = 0;
+};
+NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
+                               const std::vector<tb::gpu::GpuPatchProgram>& programs,
+                               const tb::tess::Levels& levels) {
+  tb::gpu::PatchProgramOptions options;
+  options.capture = false;
+  options.patches_per_draw = kPatchesPerDraw;
+  NoCaptureRun run;
+  for (const tb::gpu::GpuPatchProgram& program : programs) {
+    const tb::gpu::PatchProgramCapture r = tb::gpu::runPatchProgram(context, program, levels, options);
+    run.seconds += r.submit_to_fence_s;
+    run.invocations += double(r.stats.tes_invocations);
+  }
+  return run;
+}
+
+void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
+                    const std::string& asset, float level) {
+  tb::gpu::Context* context = benchContext(state);
+  if (context == nullptr) return;
   const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
   if (!patches) return;
   const std::vector<tb::gpu::GpuPatchProgram> programs = patches->gpuPrograms();
@@ -36,25 +71,69 @@ void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
     return;
   }
   const tb::tess::Levels levels{{level, level, level, level}, {level, level}};
-  tb::gpu::PatchProgramOptions options;
-  options.capture = false;
-  options.patches_per_draw = kPatchesPerDraw;
   double invocations = 0, seconds = 0;
   for (auto _ : state) {
-    double iteration_seconds = 0;
-    for (const tb::gpu::GpuPatchProgram& program : programs) {
-      const tb::gpu::PatchProgramCapture run =
-          tb::gpu::runPatchProgram(*context.value(), program, levels, options);
-      iteration_seconds += run.submit_to_fence_s;
-      invocations += double(run.stats.tes_invocations);
-    }
-    state.SetIterationTime(iteration_seconds);
-    seconds += iteration_seconds;
+    const NoCaptureRun run = runWithoutCapture(*context, programs, levels);
+    state.SetIterationTime(run.seconds);
+    invocations += run.invocations;
+    seconds += run.seconds;
   }
   // Best case: the device's bare TES rate (gpu_bench BM_TesThroughput); worst case 0.
   state.counters["TES_invocations_per_s"] = seconds > 0 ? invocations / seconds : 0;
   state.counters["patches"] = double(patches->patchCount());
   state.counters["programs"] = double(programs.size());
+}
+
+// The crack measure's GPU half against the same shaders without capture, in one run.
+void crackCapture(benchmark::State& state, const tb::Technique* technique,
+                  const std::string& asset, float level, bool lower_inner_levels) {
+  tb::gpu::Context* context = benchContext(state);
+  if (context == nullptr) return;
+  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
+  if (!patches) return;
+  const std::vector<tb::gpu::GpuPatchProgram> programs = patches->gpuPrograms();
+  if (programs.empty()) {
+    state.SkipWithError("the technique has no GPU program");
+    return;
+  }
+  const tb::tess::Levels uniform{{level, level, level, level}, {level, level}};
+  const std::vector<tb::tess::Levels> levels(patches->patchCount(), uniform);
+  const tb::tess::Spacing spacing = tb::tess::Spacing::kInteger;
+  const tb::PatchBoundaries boundaries = tb::patchBoundaries(*patches, spacing, levels);
+  tb::CrackCaptureOptions options;
+  options.lower_inner_levels = lower_inner_levels;
+  double crack_invocations = 0, crack_seconds = 0, crack_fence_seconds = 0;
+  NoCaptureRun bare;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const tb::BoundaryCapture capture =
+        tb::captureBoundaryPositions(*patches, boundaries, spacing, levels, *context, options);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(capture.positions.data());
+    state.SetIterationTime(wall);
+    crack_seconds += wall;
+    crack_fence_seconds += capture.submit_to_fence_s;
+    crack_invocations += double(capture.stats.tes_invocations);
+    const NoCaptureRun run = runWithoutCapture(*context, programs, uniform);
+    bare.invocations += run.invocations;
+    bare.seconds += run.seconds;
+  }
+  const double crack_rate = crack_seconds > 0 ? crack_invocations / crack_seconds : 0;
+  const double bare_rate = bare.seconds > 0 ? bare.invocations / bare.seconds : 0;
+  // TES invocations per second of the crack half (host wall clock), and of the shaders
+  // without capture at the patches' own levels (submit to fence); ratio: the first over
+  // the second, best case 1 or more.
+  state.counters["TES_invocations_per_s"] = crack_rate;
+  state.counters["no_capture_TES_invocations_per_s"] = bare_rate;
+  state.counters["ratio"] = bare_rate > 0 ? crack_rate / bare_rate : 0;
+  // The crack half's rate by submit to fence alone, as the no-capture rows are timed.
+  state.counters["fence_TES_invocations_per_s"] =
+      crack_fence_seconds > 0 ? crack_invocations / crack_fence_seconds : 0;
+  // Time without capture at the patches' own levels over the crack half's time: above 1
+  // when lowered inner levels save more than the capture costs.
+  state.counters["speedup"] = crack_seconds > 0 ? bare.seconds / crack_seconds : 0;
+  state.counters["patches"] = double(patches->patchCount());
 }
 
 // Registered from the technique registry in main, so a new technique is benchmarked
@@ -64,15 +143,24 @@ void registerTechniqueGpuBenchmarks() {
   for (const tb::Technique* technique : tb::TechniqueRegistry::instance().all()) {
     if (technique->info().family != tb::TechniqueFamily::kSurface) continue;
     for (const char* asset : {"catmark_xord_interior", "loop_icosahedron", "catmark_pyramid"}) {
-      for (float level : {4.0f, 16.0f}) {
-        benchmark::RegisterBenchmark(
-            ("gpu/" + technique->info().id + "/" + asset + "/level:" + std::to_string(int(level)))
-                .c_str(),
-            [technique, asset, level](benchmark::State& state) {
-              drawAllPatches(state, technique, asset, level);
-            })
+      for (float level : {4.0f, 16.0f, 64.0f}) {
+        const std::string suffix =
+            technique->info().id + "/" + asset + "/level:" + std::to_string(int(level));
+        benchmark::RegisterBenchmark(("gpu/" + suffix).c_str(),
+                                     [technique, asset, level](benchmark::State& state) {
+                                       drawAllPatches(state, technique, asset, level);
+                                     })
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
+        for (bool lower : {true, false}) {
+          benchmark::RegisterBenchmark(
+              ((lower ? "cracks_gpu/" : "cracks_gpu_full_inner/") + suffix).c_str(),
+              [technique, asset, level, lower](benchmark::State& state) {
+                crackCapture(state, technique, asset, level, lower);
+              })
+              ->UseManualTime()
+              ->Unit(benchmark::kMillisecond);
+        }
       }
     }
   }

@@ -63,10 +63,14 @@ struct ProgramPipeline {
   std::atomic<bool> warmed{false};  // the compile-at-first-draw warm-up has been drawn
 };
 
-// What one call captures into and counts with; pooled so calls reuse the capture buffer.
+// What one call uploads to, captures into and counts with; pooled so that calls reuse
+// the buffers (fresh device memory costs page faults on lavapipe). Buffers only grow;
+// each is bound with the range the call uses.
 struct CallResources {
   VkQueryPoolOwner queries;
   Buffer capture;
+  Buffer levels;
+  std::vector<Buffer> data;  // GpuPatchProgram::storage_buffers
 };
 
 using ProgramKey =
@@ -263,27 +267,39 @@ std::vector<SubmitRange> planSubmits(uint32_t first, std::span<const uint64_t> b
   return ranges;
 }
 
-std::vector<Buffer> uploadStorageBuffers(Context& context, const GpuPatchProgram& program) {
-  std::vector<Buffer> buffers;
-  for (const std::vector<uint32_t>& words : program.storage_buffers) {
-    Buffer buffer(context, std::max<VkDeviceSize>(words.size() * 4, 16),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    buffer.write(words.data(), words.size() * 4);
-    buffers.push_back(std::move(buffer));
+// Copies the program's storage buffers into `buffers` (grown as needed); returns the
+// bytes each binding covers (16 at least: a zero-sized range is invalid).
+std::vector<VkDeviceSize> uploadStorageBuffers(Context& context, const GpuPatchProgram& program,
+                                               std::vector<Buffer>* buffers) {
+  if (buffers->size() < program.storage_buffers.size()) {
+    buffers->resize(program.storage_buffers.size());
   }
-  return buffers;
+  std::vector<VkDeviceSize> ranges;
+  for (size_t i = 0; i < program.storage_buffers.size(); ++i) {
+    const std::vector<uint32_t>& words = program.storage_buffers[i];
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(words.size() * 4, 16);
+    ensureCapacity(context, (*buffers)[i], bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    (*buffers)[i].write(words.data(), words.size() * 4);
+    ranges.push_back(bytes);
+  }
+  return ranges;
 }
 
-Buffer uploadPatchLevels(Context& context, std::span<const tess::Levels> device_levels) {
-  std::vector<PatchLevelsBits> bits(std::max<size_t>(device_levels.size(), 1));
+// Writes the per-patch levels into `buffer` (grown as needed); returns the bytes written.
+VkDeviceSize uploadPatchLevels(Context& context, std::span<const tess::Levels> device_levels,
+                               Buffer* buffer) {
+  const size_t count = std::max<size_t>(device_levels.size(), 1);
+  const VkDeviceSize bytes = count * sizeof(PatchLevelsBits);
+  ensureCapacity(context, *buffer, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  PatchLevelsBits* bits = buffer->as<PatchLevelsBits>().data();
   for (size_t p = 0; p < device_levels.size(); ++p) {
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
-    std::copy(key.begin(), key.begin() + 4, bits[p].outer_bits);
-    std::copy(key.begin() + 4, key.end(), bits[p].inner_bits);
+    PatchLevelsBits entry{};
+    std::copy(key.begin(), key.begin() + 4, entry.outer_bits);
+    std::copy(key.begin() + 4, key.end(), entry.inner_bits);
+    bits[p] = entry;
   }
-  Buffer buffer(context, bits.size() * sizeof(PatchLevelsBits), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  buffer.write(bits.data(), bits.size() * sizeof(PatchLevelsBits));
-  return buffer;
+  return bytes;
 }
 
 // Everything one call draws with.
@@ -318,9 +334,17 @@ void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uin
 
 void addStatistics(VkDevice device, VkQueryPool queries, PipelineStatistics* stats) {
   uint64_t values[kTessStatisticCount] = {};
-  vkCheck(vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values, sizeof(values),
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-          "vkGetQueryPoolResults");
+  // The fence has signalled, so the results are available; lavapipe's WAIT path costs
+  // ~0.1 ms a call even then, so it is only the fallback.
+  const VkResult ready = vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values,
+                                               sizeof(values), VK_QUERY_RESULT_64_BIT);
+  if (ready == VK_NOT_READY) {
+    vkCheck(vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values, sizeof(values),
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+            "vkGetQueryPoolResults");
+  } else {
+    vkCheck(ready, "vkGetQueryPoolResults");
+  }
   stats->vs_invocations += values[0];
   stats->clipping_invocations += values[1];
   stats->clipping_primitives += values[2];
@@ -328,7 +352,8 @@ void addStatistics(VkDevice device, VkQueryPool queries, PipelineStatistics* sta
   stats->tes_invocations += values[4];
 }
 
-// Appends the vertices the last submission captured (room for `capacity`).
+// Appends the vertices the last submission captured (room for `capacity`), read in place
+// from the mapped buffer.
 void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t capacity,
                  std::vector<CapturedVertex>* vertices) {
   uint32_t written = 0;
@@ -338,8 +363,9 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
                    std::to_string(written) + " vertices, room for " + std::to_string(capacity) +
                    ")");
   }
-  std::vector<uint32_t> words(size_t(written) * kCaptureWords);
-  capture.read(words.data(), words.size() * 4, kCaptureHeaderBytes);
+  const std::span<const uint32_t> words =
+      capture.as<const uint32_t>().subspan(kCaptureHeaderBytes / 4, size_t(written) * kCaptureWords);
+  vertices->reserve(vertices->size() + written);
   for (uint32_t i = 0; i < written; ++i) {
     const uint32_t* w = &words[size_t(i) * kCaptureWords];
     CapturedVertex v;
@@ -352,20 +378,39 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
   }
 }
 
-// Sorts by (patch, coord bits) and keeps one of each.
+using CoordKey = std::array<uint32_t, 3>;
+CoordKey coordKey(const CapturedVertex& v) {
+  return {std::bit_cast<uint32_t>(v.coord[0]), std::bit_cast<uint32_t>(v.coord[1]),
+          std::bit_cast<uint32_t>(v.coord[2])};
+}
+
+// Sorts by (patch, coord bits) and keeps one of each: a counting sort by patch (a capture
+// holds a contiguous range of patches), then each patch's vertices by coordinate bits.
 void sortUnique(std::vector<CapturedVertex>* vertices) {
-  auto key = [](const CapturedVertex& v) {
-    return std::make_tuple(v.patch, std::bit_cast<uint32_t>(v.coord[0]),
-                           std::bit_cast<uint32_t>(v.coord[1]),
-                           std::bit_cast<uint32_t>(v.coord[2]));
+  if (vertices->empty()) return;
+  const auto [lo, hi] = std::minmax_element(
+      vertices->begin(), vertices->end(),
+      [](const CapturedVertex& a, const CapturedVertex& b) { return a.patch < b.patch; });
+  const uint32_t first = lo->patch;
+  const size_t range = size_t(hi->patch) - first + 1;
+  std::vector<size_t> start(range + 1, 0);
+  for (const CapturedVertex& v : *vertices) ++start[v.patch - first + 1];
+  for (size_t p = 0; p < range; ++p) start[p + 1] += start[p];
+  std::vector<CapturedVertex> sorted(vertices->size());
+  std::vector<size_t> next(start.begin(), start.end() - 1);
+  for (const CapturedVertex& v : *vertices) sorted[next[v.patch - first]++] = v;
+  auto by_coord = [](const CapturedVertex& a, const CapturedVertex& b) {
+    return coordKey(a) < coordKey(b);
   };
-  std::sort(vertices->begin(), vertices->end(),
-            [&](const CapturedVertex& a, const CapturedVertex& b) { return key(a) < key(b); });
-  vertices->erase(std::unique(vertices->begin(), vertices->end(),
-                              [&](const CapturedVertex& a, const CapturedVertex& b) {
-                                return key(a) == key(b);
-                              }),
-                  vertices->end());
+  for (size_t p = 0; p < range; ++p) {
+    std::sort(sorted.begin() + start[p], sorted.begin() + start[p + 1], by_coord);
+  }
+  sorted.erase(std::unique(sorted.begin(), sorted.end(),
+                           [](const CapturedVertex& a, const CapturedVertex& b) {
+                             return a.patch == b.patch && coordKey(a) == coordKey(b);
+                           }),
+               sorted.end());
+  *vertices = std::move(sorted);
 }
 
 CaptureMode captureMode(const GpuPatchProgram& program, const PatchProgramOptions& options) {
@@ -413,17 +458,22 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   for (const tess::Levels& levels : patch_levels) {
     device_levels.push_back(deviceLevels(program.domain, options.spacing, levels));
   }
-  const std::vector<Buffer> data = uploadStorageBuffers(context, program);
-  const Buffer levels_buffer = uploadPatchLevels(context, device_levels);
+  const std::vector<VkDeviceSize> data_ranges =
+      uploadStorageBuffers(context, program, &resources->data);
+  const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources->levels);
   const StorageBufferSet descriptors(device, pipeline.set_layout.get(), pipeline.binding_count);
   const StorageBufferSet levels_descriptors(device, pipeline.levels_set_layout.get(), 1);
-  const VkBuffer levels_handle = levels_buffer.handle();
-  levels_descriptors.bind(device, std::span(&levels_handle, 1));
+  const VkBuffer levels_handle = resources->levels.handle();
+  levels_descriptors.bind(device, std::span(&levels_handle, 1), std::span(&levels_range, 1));
   // Binds set 0 to the current capture buffer (replaced when it grows).
   auto bindBuffers = [&]() {
     std::vector<VkBuffer> handles{resources->capture.handle()};
-    for (const Buffer& buffer : data) handles.push_back(buffer.handle());
-    descriptors.bind(device, handles);
+    std::vector<VkDeviceSize> ranges{VK_WHOLE_SIZE};
+    for (size_t i = 0; i < data_ranges.size(); ++i) {
+      handles.push_back(resources->data[i].handle());
+      ranges.push_back(data_ranges[i]);
+    }
+    descriptors.bind(device, handles, ranges);
   };
 
   const uint32_t first = std::min(options.first_patch, program.patch_count);
