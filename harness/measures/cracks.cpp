@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <span>
 #include <stdexcept>
@@ -173,6 +174,43 @@ void compareWithCpu(const BoundaryPositions& device, const BoundaryPositions& cp
   }
 }
 
+// The pair figures (Pairing::run's fields) of `from`, into `to`.
+void copyPairFigures(const CrackFigures& from, CrackFigures* to) {
+  to->points_compared = from.points_compared;
+  to->points_not_equal = from.points_not_equal;
+  to->unpaired_points = from.unpaired_points;
+  to->max_gap_world = from.max_gap_world;
+  to->mean_gap_world = from.mean_gap_world;
+  to->max_gap_ulp = from.max_gap_ulp;
+  to->max_gap_scale_ulp = from.max_gap_scale_ulp;
+  to->worst = from.worst;
+}
+
+bool bitwiseEqual(const BoundaryPositions& a, const BoundaryPositions& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0;
+}
+
+// True when both hold the same boundary points for every patch, bit for bit and in the
+// same order (then positions and pair figures agree too).
+bool sameBoundaryPoints(const PatchBoundaries& a, const PatchBoundaries& b) {
+  if (a.offset != b.offset) return false;
+  std::map<std::pair<uint32_t, uint32_t>, bool> compared;  // distinct tessellation pairs
+  for (size_t p = 0; p < a.tessellation.size(); ++p) {
+    const auto key = std::make_pair(a.tessellation[p], b.tessellation[p]);
+    auto it = compared.find(key);
+    if (it == compared.end()) {
+      const BoundaryTessellation& ta = a.of(p);
+      const BoundaryTessellation& tb = b.of(p);
+      const bool same = &ta == &tb || (ta.edge_begin == tb.edge_begin &&
+                                       std::memcmp(ta.points.data(), tb.points.data(),
+                                                   ta.points.size() * sizeof(tess::DomainPoint)) == 0);
+      it = compared.emplace(key, same).first;
+    }
+    if (!it->second) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 const char* toString(CrackBackend backend) {
@@ -228,11 +266,29 @@ CrackSession::Evaluated& CrackSession::evaluated(tess::Spacing spacing,
                                                  std::span<const tess::Levels> patch_levels) {
   std::vector<tess::LevelsBits> bits(patch_levels.size());
   std::transform(patch_levels.begin(), patch_levels.end(), bits.begin(), tess::levelsBits);
-  if (!last_ || last_->spacing != spacing || last_->levels != bits) {
-    last_.emplace(Evaluated{spacing, std::move(bits),
-                            patchBoundaries(patches_, spacing, patch_levels), {}});
+  for (Evaluated& e : kept_) {
+    if (e.spacing == spacing && e.levels == bits) return e;
   }
-  return *last_;
+  Evaluated e{spacing, std::move(bits), patchBoundaries(patches_, spacing, patch_levels), {}};
+  for (const Evaluated& other : kept_) {
+    if (sameBoundaryPoints(e.boundaries, other.boundaries)) {
+      e.cpu = other.cpu;
+      break;
+    }
+  }
+  if (!e.cpu) e.cpu = std::make_shared<CpuSide>();
+  if (kept_.size() == kKeptEvaluations) kept_.erase(kept_.begin());
+  kept_.push_back(std::move(e));
+  return kept_.back();
+}
+
+const CrackFigures& CrackSession::cpuPairs(const Evaluated& e) {
+  if (!e.cpu->pairs) {
+    CrackFigures pairs;
+    Pairing(shared_, e.boundaries, e.cpu->positions, scale_ulp_).run(&pairs);
+    e.cpu->pairs = pairs;
+  }
+  return *e.cpu->pairs;
 }
 
 CrackFigures CrackSession::measure(tess::Spacing spacing, float level, CrackBackend backend,
@@ -265,27 +321,33 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
     }
   }
 
-  Evaluated& e = evaluated(spacing, patch_levels);
+  const Evaluated& e = evaluated(spacing, patch_levels);
   if (e.boundaries.culled_patches > 0) {
     figures.skipped_reason = e.boundaries.culled_patches == patches_.patchCount()
                                  ? "the level culls every patch"
                                  : "the levels cull some patches";
     return figures;
   }
-  if (e.cpu_positions.empty()) e.cpu_positions = cpuPositions(patches_, e.boundaries);
-  BoundaryPositions device;
-  if (backend == CrackBackend::kGpu) {
-    BoundaryCapture capture =
-        captureBoundaryPositions(patches_, e.boundaries, spacing, patch_levels, *context);
-    figures.draws = capture.draws;
-    figures.device_points = capture.points_captured;
-    compareWithCpu(capture.positions, e.cpu_positions, &figures);
-    device = std::move(capture.positions);
+  if (e.cpu->positions.size() != e.boundaries.size()) {
+    e.cpu->positions = cpuPositions(patches_, e.boundaries);
   }
   figures.measured = true;
-  const BoundaryPositions& positions =
-      backend == CrackBackend::kGpu ? device : e.cpu_positions;
-  Pairing(shared_, e.boundaries, positions, scale_ulp_).run(&figures);
+  if (backend == CrackBackend::kCpuFloat) {
+    copyPairFigures(cpuPairs(e), &figures);
+    return figures;
+  }
+  const BoundaryCapture capture =
+      captureBoundaryPositions(patches_, e.boundaries, spacing, patch_levels, *context);
+  figures.draws = capture.draws;
+  figures.device_points = capture.points_captured;
+  compareWithCpu(capture.positions, e.cpu->positions, &figures);
+  if (bitwiseEqual(capture.positions, e.cpu->positions)) {
+    copyPairFigures(cpuPairs(e), &figures);
+  } else {
+    CrackFigures pairs;
+    Pairing(shared_, e.boundaries, capture.positions, scale_ulp_).run(&pairs);
+    copyPairFigures(pairs, &figures);
+  }
   return figures;
 }
 

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -120,9 +121,11 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
                            CrackBackend backend, gpu::Context* context = nullptr);
 
 // measureCracks over one asset's patches, many times: the shared edges and corners are
-// found once, and the boundaries and CPU float positions of the last spacing and levels
-// are kept, so measuring both backends at one spacing and levels evaluates on the CPU
-// once. Same figures as measureCracks. One thread at a time (a record's).
+// found once, and the CPU float positions and pair figures are kept per set of boundary
+// points, so both backends at one spacing and levels evaluate on the CPU once, and so do
+// spacings whose boundary points coincide bit for bit (integer and pow2 at levels 1, 7.3
+// (8), 16 and 64). A device capture equal bit for bit to the CPU positions takes their
+// pair figures. Same figures as measureCracks. One thread at a time (a record's).
 class CrackSession {
  public:
   explicit CrackSession(const SurfacePatches& patches);
@@ -133,19 +136,27 @@ class CrackSession {
                        gpu::Context* context = nullptr);
 
  private:
+  // The CPU float side of one set of boundary points.
+  struct CpuSide {
+    std::vector<Vec3f> positions;       // per boundary point; empty until evaluated
+    std::optional<CrackFigures> pairs;  // pair figures of `positions`, once computed
+  };
   struct Evaluated {
     tess::Spacing spacing;
     std::vector<tess::LevelsBits> levels;
     PatchBoundaries boundaries;
-    std::vector<Vec3f> cpu_positions;  // empty until evaluated
+    std::shared_ptr<CpuSide> cpu;
   };
+  static constexpr size_t kKeptEvaluations = 8;  // a spacing's levels and the next's
+
   Evaluated& evaluated(tess::Spacing spacing, std::span<const tess::Levels> patch_levels);
+  const CrackFigures& cpuPairs(const Evaluated& e);
 
   const SurfacePatches& patches_;
   SharedBoundaries shared_;
   uint64_t seam_edges_ = 0;
   double scale_ulp_ = 0;
-  std::optional<Evaluated> last_;
+  std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
 };
 
 }  // namespace tb
