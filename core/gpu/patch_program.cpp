@@ -514,7 +514,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     addStatistics(device, setup.queries, &result.stats);
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
-  sortUnique(&result.vertices);
+  if (options.sort) sortUnique(&result.vertices);
   return result;
 }
 

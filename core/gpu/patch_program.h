@@ -42,7 +42,8 @@ struct CapturedVertex {
 
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's
-  // invocation order; duplicates (same patch, same coord) are kept once.
+  // invocation order; duplicates (same patch, same coord) are kept once. Unless
+  // PatchProgramOptions::sort is false: then in capture order, duplicates kept.
   std::vector<CapturedVertex> vertices;
   PipelineStatistics stats;      // summed over all draws
   double submit_to_fence_s = 0;  // host seconds over all submissions
@@ -59,6 +60,9 @@ struct PatchProgramOptions {
   // boundary (an edge or a corner of the quad or triangle; isolines have none). The
   // shaders run as without it; only the SSBO writes and the host's reading shrink.
   bool boundary_only = false;
+  // false: leave the vertices in capture order with duplicates, for callers that index
+  // them by (patch, coord) themselves (the crack measure) and need no sort.
+  bool sort = true;
 };
 
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before

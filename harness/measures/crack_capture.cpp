@@ -1,6 +1,7 @@
 #include "harness/measures/crack_capture.h"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +56,7 @@ class ProgramCapture {
     gpu::PatchProgramOptions run;
     run.spacing = spacing_;
     run.boundary_only = true;
+    run.sort = false;  // store() indexes each vertex; a duplicate rewrites its slot
     run.patches_per_draw =
         uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / max_points, 1, kMaxPatchesPerDraw));
     for (uint32_t first = 0; first < program.patch_count;) {
@@ -98,9 +100,16 @@ class ProgramCapture {
                                  " at a boundary point the CPU tessellator does not emit");
       }
       const size_t slot = boundaries_.at(v.patch, size_t(k));
-      capture_->positions[slot] = v.position;
-      (*filled_)[slot] = 1;
-      ++capture_->points_captured;
+      if ((*filled_)[slot] == 0) {
+        capture_->positions[slot] = v.position;
+        (*filled_)[slot] = 1;
+        ++capture_->points_captured;
+      } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(Vec3f)) != 0) {
+        // The TES ran twice at one gl_TessCoord (fractional spacing) and disagreed.
+        throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
+                                 std::to_string(v.patch) +
+                                 " twice at one boundary point with different positions");
+      }
     }
   }
 

@@ -30,10 +30,16 @@ tess::Levels uniformLevels(float level) {
 // Positions at every boundary point of every patch: [boundaries.at(patch, k)].
 using BoundaryPositions = std::vector<Vec3f>;
 
+// Boundary points per parallel task: below this, waking a worker costs more than it saves.
+constexpr size_t kPointsPerTask = 4096;
+
 // evaluateFloat at every boundary point, patches in parallel (each writes its own slots).
 BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundaries& boundaries) {
   BoundaryPositions positions(boundaries.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, patches.patchCount()),
+  const size_t count = patches.patchCount();
+  const size_t per_patch = std::max<size_t>(boundaries.size() / std::max<size_t>(count, 1), 1);
+  const size_t grain = std::max<size_t>(kPointsPerTask / per_patch, 1);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, grain),
                     [&](const tbb::blocked_range<size_t>& range) {
                       for (size_t p = range.begin(); p < range.end(); ++p) {
                         const auto& points = boundaries.of(p).points;
@@ -42,7 +48,8 @@ BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundar
                               patches.evaluateFloat(p, points[k]).position;
                         }
                       }
-                    });
+                    },
+                    tbb::simple_partitioner());
   return positions;
 }
 
@@ -83,6 +90,7 @@ class Pairing {
   void run(CrackFigures* f) const {
     const size_t items = shared_.edges.size() + shared_.corners.size();
     std::vector<PairBlock> blocks((items + kItemsPerBlock - 1) / kItemsPerBlock);
+    // Blocks are fixed by the items alone; how they are spread over threads is not.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks.size(), 1),
                       [&](const tbb::blocked_range<size_t>& range) {
                         for (size_t b = range.begin(); b < range.end(); ++b) {
