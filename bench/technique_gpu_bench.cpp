@@ -107,7 +107,8 @@ void crackCapture(benchmark::State& state, const tb::Technique* technique,
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     const tb::BoundaryCapture capture =
-        tb::captureBoundaryPositions(*patches, boundaries, spacing, levels, *context, options);
+        tb::captureBoundaryPositions(*patches, programs, boundaries, spacing, levels, *context,
+                                     options);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     benchmark::DoNotOptimize(capture.positions.data());

@@ -63,14 +63,19 @@ struct ProgramPipeline {
   std::atomic<bool> warmed{false};  // the compile-at-first-draw warm-up has been drawn
 };
 
-// What one call uploads to, captures into and counts with; pooled so that calls reuse
-// the buffers (fresh device memory costs page faults on lavapipe). Buffers only grow;
-// each is bound with the range the call uses.
+// What one call uploads to, captures into, binds and counts with; pooled so that calls
+// reuse the buffers (fresh device memory costs page faults on lavapipe) and descriptor
+// sets. Buffers only grow; each is bound with the range the call uses.
 struct CallResources {
+  struct PipelineSets {
+    StorageBufferSet data;    // set 0: capture + GpuPatchProgram::storage_buffers
+    StorageBufferSet levels;  // set 1: per-patch levels
+  };
   VkQueryPoolOwner queries;
   Buffer capture;
   Buffer levels;
   std::vector<Buffer> data;  // GpuPatchProgram::storage_buffers
+  std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
 using ProgramKey =
@@ -461,8 +466,13 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   const std::vector<VkDeviceSize> data_ranges =
       uploadStorageBuffers(context, program, &resources->data);
   const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources->levels);
-  const StorageBufferSet descriptors(device, pipeline.set_layout.get(), pipeline.binding_count);
-  const StorageBufferSet levels_descriptors(device, pipeline.levels_set_layout.get(), 1);
+  auto [sets, first_use] = resources->sets.try_emplace(&pipeline);
+  if (first_use) {
+    sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
+    sets->second.levels = StorageBufferSet(device, pipeline.levels_set_layout.get(), 1);
+  }
+  const StorageBufferSet& descriptors = sets->second.data;
+  const StorageBufferSet& levels_descriptors = sets->second.levels;
   const VkBuffer levels_handle = resources->levels.handle();
   levels_descriptors.bind(device, std::span(&levels_handle, 1), std::span(&levels_range, 1));
   // Binds set 0 to the current capture buffer (replaced when it grows).

@@ -125,6 +125,7 @@ class ProgramCapture {
 }  // namespace
 
 BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
+                                         std::span<const gpu::GpuPatchProgram> programs,
                                          const PatchBoundaries& boundaries, tess::Spacing spacing,
                                          std::span<const tess::Levels> patch_levels,
                                          gpu::Context& context,
@@ -137,7 +138,7 @@ BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
   std::vector<uint8_t> filled(boundaries.size(), 0);
   ProgramCapture run(patches, boundaries, spacing, patch_levels, options, &capture, &filled);
   std::string shaders;
-  for (const gpu::GpuPatchProgram& program : patches.gpuPrograms()) {
+  for (const gpu::GpuPatchProgram& program : programs) {
     run.run(program, context);
     shaders += (shaders.empty() ? "" : ", ") + program.evaluation_shader;
   }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/gpu/context.h"
+#include "core/gpu/patch_program_desc.h"
 #include "core/gpu/tess_capture.h"
 #include "core/mesh/vec.h"
 #include "harness/measures/crack_boundaries.h"
@@ -39,12 +40,13 @@ struct BoundaryCapture {
   uint32_t calls = 0;              // runPatchProgram calls (chunks)
 };
 
-// Runs every program of `patches` over its patches under `patch_levels` (one per
-// patch) and `spacing`, and stores each captured boundary position. `boundaries` must be
-// patchBoundaries(patches, spacing, patch_levels) with no culled patch. Throws
-// gpu::GpuError when the device fails, and std::runtime_error when the capture lacks a
-// boundary point the CPU tessellator emits or holds one it does not.
+// Runs `programs` (patches.gpuPrograms(), built once by the caller) over their patches
+// under `patch_levels` (one per patch) and `spacing`, and stores each captured boundary
+// position. `boundaries` must be patchBoundaries(patches, spacing, patch_levels) with no
+// culled patch. Throws gpu::GpuError when the device fails, and std::runtime_error when
+// the capture lacks a boundary point the CPU tessellator emits or holds one it does not.
 BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
+                                         std::span<const gpu::GpuPatchProgram> programs,
                                          const PatchBoundaries& boundaries, tess::Spacing spacing,
                                          std::span<const tess::Levels> patch_levels,
                                          gpu::Context& context,

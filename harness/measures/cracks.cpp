@@ -265,6 +265,7 @@ SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
 
 CrackSession::CrackSession(const SurfacePatches& patches)
     : patches_(patches),
+      programs_(patches.gpuPrograms()),
       shared_(findSharedBoundaries(patches)),
       scale_ulp_(scaleUlp(patches.controlMesh())) {
   for (const SharedEdge& e : shared_.edges) seam_edges_ += e.seam ? 1 : 0;
@@ -319,7 +320,7 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   figures.shared_corners = shared_.corners.size();
   figures.seam_edges = seam_edges_;
   if (backend == CrackBackend::kGpu) {
-    if (patches_.gpuPrograms().empty()) {
+    if (programs_.empty()) {
       figures.skipped_reason = "the technique has no GPU program";
       return figures;
     }
@@ -345,7 +346,7 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
     return figures;
   }
   const BoundaryCapture capture =
-      captureBoundaryPositions(patches_, e.boundaries, spacing, patch_levels, *context);
+      captureBoundaryPositions(patches_, programs_, e.boundaries, spacing, patch_levels, *context);
   figures.draws = capture.draws;
   figures.device_points = capture.points_captured;
   compareWithCpu(capture.positions, e.cpu->positions, &figures);

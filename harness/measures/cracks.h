@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/gpu/context.h"
+#include "core/gpu/patch_program_desc.h"
 #include "core/mesh/float_ulp.h"  // ulpDistance, used with these figures
 #include "harness/measures/crack_boundaries.h"
 #include "techniques/technique.h"
@@ -153,6 +154,7 @@ class CrackSession {
   const CrackFigures& cpuPairs(const Evaluated& e);
 
   const SurfacePatches& patches_;
+  std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
   SharedBoundaries shared_;
   uint64_t seam_edges_ = 0;
   double scale_ulp_ = 0;
