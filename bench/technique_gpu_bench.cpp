@@ -12,17 +12,21 @@
 // storing the boundary points), stricter than the no-capture rows' submit-to-fence.
 // cracks_gpu_full_inner/... rows run it under the patches' own inner levels (every
 // interior point too): the capture's own cost against the same TES invocations.
+// cracks_row_gpu/... rows time a whole GPU row of the measure (measureCracks, kGpu: shared
+// edges, the CPU twin at the boundary points, the capture, pairing).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/technique_bench_support.h"
 #include "core/gpu/context.h"
 #include "core/gpu/patch_program.h"
 #include "harness/measures/crack_capture.h"
+#include "harness/measures/cracks.h"
 #include "techniques/registry.h"
 
 namespace {
@@ -40,9 +44,10 @@ tb::gpu::Context* benchContext(benchmark::State& state) {
   return context.value().get();
 }
 
-// Every program of `patches` without capture: TES invocations and submit-to-fence seconds.
+// Every program of `patches` without capture: TES invocations, submit-to-fence seconds
+// and host wall-clock seconds (the whole calls).
 struct NoCaptureRun {
-  double invocations = 0, seconds = 0;
+  double invocations = 0, seconds = 0, wall_seconds = 0;
 };
 NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
                                const std::vector<tb::gpu::GpuPatchProgram>& programs,
@@ -51,11 +56,14 @@ NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
   options.capture = false;
   options.patches_per_draw = kPatchesPerDraw;
   NoCaptureRun run;
+  const auto start = std::chrono::steady_clock::now();
   for (const tb::gpu::GpuPatchProgram& program : programs) {
     const tb::gpu::PatchProgramCapture r = tb::gpu::runPatchProgram(context, program, levels, options);
     run.seconds += r.submit_to_fence_s;
     run.invocations += double(r.stats.tes_invocations);
   }
+  run.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 
@@ -84,9 +92,15 @@ void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
   state.counters["programs"] = double(programs.size());
 }
 
+enum class CrackPath {
+  kCapture,           // captureBoundaryPositions as the measure calls it (lowered inner levels)
+  kCaptureFullInner,  // the same under the patches' own inner levels
+  kWholeRow,          // measureCracks(kGpu): a whole GPU row (shared edges, CPU twin, pairing)
+};
+
 // The crack measure's GPU half against the same shaders without capture, in one run.
 void crackCapture(benchmark::State& state, const tb::Technique* technique,
-                  const std::string& asset, float level, bool lower_inner_levels) {
+                  const std::string& asset, float level, CrackPath path) {
   tb::gpu::Context* context = benchContext(state);
   if (context == nullptr) return;
   const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
@@ -101,40 +115,52 @@ void crackCapture(benchmark::State& state, const tb::Technique* technique,
   const tb::tess::Spacing spacing = tb::tess::Spacing::kInteger;
   const tb::PatchBoundaries boundaries = tb::patchBoundaries(*patches, spacing, levels);
   tb::CrackCaptureOptions options;
-  options.lower_inner_levels = lower_inner_levels;
+  options.lower_inner_levels = path != CrackPath::kCaptureFullInner;
   double crack_invocations = 0, crack_seconds = 0, crack_fence_seconds = 0;
   NoCaptureRun bare;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
-    const tb::BoundaryCapture capture =
-        tb::captureBoundaryPositions(*patches, programs, boundaries, spacing, levels, *context,
-                                     options);
+    if (path == CrackPath::kWholeRow) {
+      const tb::CrackFigures f =
+          tb::measureCracks(*patches, spacing, levels, tb::CrackBackend::kGpu, context);
+      if (!f.measured) state.SkipWithError(f.skipped_reason.c_str());
+    } else {
+      const tb::BoundaryCapture capture = tb::captureBoundaryPositions(
+          *patches, programs, boundaries, spacing, levels, *context, options);
+      benchmark::DoNotOptimize(capture.positions.data());
+      crack_fence_seconds += capture.submit_to_fence_s;
+      crack_invocations += double(capture.tes_invocations);
+    }
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    benchmark::DoNotOptimize(capture.positions.data());
     state.SetIterationTime(wall);
     crack_seconds += wall;
-    crack_fence_seconds += capture.submit_to_fence_s;
-    crack_invocations += double(capture.stats.tes_invocations);
     const NoCaptureRun run = runWithoutCapture(*context, programs, uniform);
     bare.invocations += run.invocations;
     bare.seconds += run.seconds;
+    bare.wall_seconds += run.wall_seconds;
   }
-  const double crack_rate = crack_seconds > 0 ? crack_invocations / crack_seconds : 0;
   const double bare_rate = bare.seconds > 0 ? bare.invocations / bare.seconds : 0;
-  // TES invocations per second of the crack half (host wall clock), and of the shaders
-  // without capture at the patches' own levels (submit to fence); ratio: the first over
-  // the second, best case 1 or more.
-  state.counters["TES_invocations_per_s"] = crack_rate;
+  // The shaders without capture at the patches' own levels (submit to fence).
   state.counters["no_capture_TES_invocations_per_s"] = bare_rate;
+  // Throughput over the same patches and levels: the no-capture time over this path's
+  // (host wall clock); 1 = as fast as the bare shaders.
+  state.counters["throughput_ratio"] = crack_seconds > 0 ? bare.seconds / crack_seconds : 0;
+  // The same with the no-capture calls also timed by host wall clock (like for like: both
+  // include uploads, recording and reading back; small workloads are dominated by them).
+  state.counters["throughput_ratio_wall"] =
+      crack_seconds > 0 ? bare.wall_seconds / crack_seconds : 0;
+  state.counters["patches"] = double(patches->patchCount());
+  if (path == CrackPath::kWholeRow) return;
+  const double crack_rate = crack_seconds > 0 ? crack_invocations / crack_seconds : 0;
+  // TES invocations the path ran per second (host wall clock) and that over the
+  // no-capture rate; with lowered inner levels each patch's TCS is spread over fewer
+  // invocations, so this ratio is below throughput_ratio.
+  state.counters["TES_invocations_per_s"] = crack_rate;
   state.counters["ratio"] = bare_rate > 0 ? crack_rate / bare_rate : 0;
-  // The crack half's rate by submit to fence alone, as the no-capture rows are timed.
+  // The path's rate by submit to fence alone, as the no-capture rows are timed.
   state.counters["fence_TES_invocations_per_s"] =
       crack_fence_seconds > 0 ? crack_invocations / crack_fence_seconds : 0;
-  // Time without capture at the patches' own levels over the crack half's time: above 1
-  // when lowered inner levels save more than the capture costs.
-  state.counters["speedup"] = crack_seconds > 0 ? bare.seconds / crack_seconds : 0;
-  state.counters["patches"] = double(patches->patchCount());
 }
 
 // Registered from the technique registry in main, so a new technique is benchmarked
@@ -153,11 +179,14 @@ void registerTechniqueGpuBenchmarks() {
                                      })
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
-        for (bool lower : {true, false}) {
+        for (const auto& [name, path] :
+             {std::pair{"cracks_gpu/", CrackPath::kCapture},
+              std::pair{"cracks_gpu_full_inner/", CrackPath::kCaptureFullInner},
+              std::pair{"cracks_row_gpu/", CrackPath::kWholeRow}}) {
           benchmark::RegisterBenchmark(
-              ((lower ? "cracks_gpu/" : "cracks_gpu_full_inner/") + suffix).c_str(),
-              [technique, asset, level, lower](benchmark::State& state) {
-                crackCapture(state, technique, asset, level, lower);
+              (name + suffix).c_str(),
+              [technique, asset, level, path](benchmark::State& state) {
+                crackCapture(state, technique, asset, level, path);
               })
               ->UseManualTime()
               ->Unit(benchmark::kMillisecond);

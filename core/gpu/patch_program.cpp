@@ -316,23 +316,25 @@ struct DrawSetup {
   uint32_t per_draw = 1;
 };
 
-// Draws patches [from, to), `per_draw` patches per draw, inside one statistics query.
+// Draws patches [from, to), `per_draw` patches per draw, inside one statistics query
+// (none when setup.queries is null).
 void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
                  CaptureMode mode) {
   const VkPipelineLayout layout = setup.pipeline.layout.get();
-  vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
+  const bool query = setup.queries != VK_NULL_HANDLE;
+  if (query) vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
   beginDiscardRendering(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, setup.pipeline.pipeline.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, setup.sets, 0,
                           nullptr);
-  vkCmdBeginQuery(cmd, setup.queries, 0, 0);
+  if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
     const uint32_t count = std::min(setup.per_draw, to - p);
     const PushBlock push{p, mode};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
   }
-  vkCmdEndQuery(cmd, setup.queries, 0);
+  if (query) vkCmdEndQuery(cmd, setup.queries, 0);
   vkCmdEndRendering(cmd);
   barrierShaderWritesToHost(cmd);
 }
@@ -490,7 +492,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   const uint32_t end =
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
   const DrawSetup setup{pipeline,
-                        resources->queries.get(),
+                        options.statistics ? resources->queries.get() : VK_NULL_HANDLE,
                         {descriptors.set, levels_descriptors.set},
                         program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
@@ -521,7 +523,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     result.submit_to_fence_s += context.submitAndWait(
         [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, range.from, range.to, mode); });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
-    addStatistics(device, setup.queries, &result.stats);
+    if (options.statistics) addStatistics(device, setup.queries, &result.stats);
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
   if (options.sort) sortUnique(&result.vertices);

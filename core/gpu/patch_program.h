@@ -63,6 +63,9 @@ struct PatchProgramOptions {
   // false: leave the vertices in capture order with duplicates, for callers that index
   // them by (patch, coord) themselves (the crack measure) and need no sort.
   bool sort = true;
+  // false: no pipeline-statistics query (stats stay 0). Reading one back costs lavapipe
+  // about 40 us a call (it synchronises with its queue), more than a small draw.
+  bool statistics = true;
 };
 
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before

@@ -50,13 +50,15 @@ class ProgramCapture {
       const BoundaryTessellation& t = boundaries_.of(patch);
       levels[i] = options_.lower_inner_levels ? t.capture_levels : patch_levels_[patch];
       boundary_points[i] = t.points.size();
-      max_points = std::max(max_points, options_.lower_inner_levels ? t.capture_points
-                                                                    : t.tessellated_points);
+      const uint64_t points = options_.lower_inner_levels ? t.capture_points : t.tessellated_points;
+      max_points = std::max(max_points, points);
+      capture_->tes_invocations += points;
     }
     gpu::PatchProgramOptions run;
     run.spacing = spacing_;
     run.boundary_only = true;
     run.sort = false;  // store() indexes each vertex; a duplicate rewrites its slot
+    run.statistics = false;
     run.patches_per_draw =
         uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / max_points, 1, kMaxPatchesPerDraw));
     for (uint32_t first = 0; first < program.patch_count;) {
@@ -84,11 +86,6 @@ class ProgramCapture {
 
   void store(const gpu::GpuPatchProgram& program, const gpu::PatchProgramCapture& run,
              PatchDomain domain) {
-    capture_->stats.vs_invocations += run.stats.vs_invocations;
-    capture_->stats.clipping_invocations += run.stats.clipping_invocations;
-    capture_->stats.clipping_primitives += run.stats.clipping_primitives;
-    capture_->stats.tcs_patches += run.stats.tcs_patches;
-    capture_->stats.tes_invocations += run.stats.tes_invocations;
     capture_->submit_to_fence_s += run.submit_to_fence_s;
     capture_->draws += run.draws;
     ++capture_->calls;

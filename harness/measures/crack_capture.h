@@ -15,7 +15,6 @@
 
 #include "core/gpu/context.h"
 #include "core/gpu/patch_program_desc.h"
-#include "core/gpu/tess_capture.h"
 #include "core/mesh/vec.h"
 #include "harness/measures/crack_boundaries.h"
 #include "techniques/technique.h"
@@ -34,7 +33,11 @@ struct CrackCaptureOptions {
 struct BoundaryCapture {
   std::vector<Vec3f> positions;    // per boundary point, [boundaries.at(patch, k)]
   uint64_t points_captured = 0;    // distinct (patch, gl_TessCoord) captured = boundaries.size()
-  gpu::PipelineStatistics stats;   // summed over programs and calls
+  // Domain points the device tessellated, summed over patches: the CPU tessellator's
+  // count under the levels the device ran, which lavapipe's TES invocation statistic
+  // matches (docs/ARCHITECTURE.md §6; the capture runs without a statistics query, whose
+  // read-back costs more than a small draw).
+  uint64_t tes_invocations = 0;
   double submit_to_fence_s = 0;    // host seconds from submit to fence, summed
   uint32_t draws = 0;
   uint32_t calls = 0;              // runPatchProgram calls (chunks)
