@@ -24,17 +24,13 @@ namespace {
 // TbPatchProgramPush in shaders/common/patch_program.glsl.
 struct PushBlock {
   uint32_t first_patch;
-  uint32_t capture_mode;
+  uint32_t capture_enabled;
 };
 static_assert(sizeof(PushBlock) == 8);
 
-// kTbCapture* in shaders/common/patch_program.glsl.
-enum CaptureMode : uint32_t {
-  kCaptureNone = 0,
-  kCaptureEvery = 1,
-  kCaptureQuadBoundary = 2,
-  kCaptureTriangleBoundary = 3,
-};
+// kTbCaptureBoundary in shaders/common/patch_program_tes.glsl: its constant_id and values.
+constexpr uint32_t kCaptureBoundaryConstantId = 200;
+constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
 struct PatchLevelsBits {
@@ -78,12 +74,14 @@ struct CallResources {
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
-using ProgramKey =
-    std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t, uint32_t>;
+using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int,
+                              uint32_t, uint32_t, uint32_t>;
 
+// `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
+// entry, ignored by the TCS, which does not declare it.
 VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
-                                      tess::Spacing spacing, VkShaderModule vertex,
-                                      VkPipelineLayout layout) {
+                                      tess::Spacing spacing, uint32_t boundary,
+                                      VkShaderModule vertex, VkPipelineLayout layout) {
   const VkShaderModuleOwner control =
       createShaderModule(device, requireEmbeddedShader(program.control_shader));
   const std::vector<uint32_t> tes_spirv = withTessModes(
@@ -91,12 +89,14 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
   const VkShaderModuleOwner evaluation = createShaderModule(device, tes_spirv);
 
   std::vector<VkSpecializationMapEntry> entries;
-  for (uint32_t i = 0; i < program.specialization.size(); ++i) {
-    entries.push_back({i, i * 4u, 4});
+  std::vector<uint32_t> values = program.specialization;
+  for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4u, 4});
+  if (boundary != kCaptureEvery) {
+    entries.push_back({kCaptureBoundaryConstantId, uint32_t(values.size()) * 4u, 4});
+    values.push_back(boundary);
   }
   VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                      program.specialization.size() * 4,
-                                      program.specialization.data()};
+                                      values.size() * 4, values.data()};
   VkPipelineShaderStageCreateInfo shader_stages[] = {
       shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
       shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, control.get()),
@@ -119,12 +119,16 @@ class PatchProgramCache {
     vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
   }
 
-  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing) {
+  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary) {
     const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
-    ProgramKey key{program.control_shader, program.evaluation_shader,
-                   program.specialization, int(program.domain),
-                   int(spacing),           program.input_vertices_per_patch,
-                   binding_count};
+    ProgramKey key{program.control_shader,
+                   program.evaluation_shader,
+                   program.specialization,
+                   int(program.domain),
+                   int(spacing),
+                   program.input_vertices_per_patch,
+                   binding_count,
+                   boundary};
     const std::lock_guard lock(mutex_);
     if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
@@ -137,7 +141,8 @@ class PatchProgramCache {
     p->levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
     const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
     p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-    p->pipeline = createProgramPipeline(device, program, spacing, vertex_.get(), p->layout.get());
+    p->pipeline =
+        createProgramPipeline(device, program, spacing, boundary, vertex_.get(), p->layout.get());
     return *programs_.emplace(std::move(key), std::move(p)).first->second;
   }
 
@@ -319,7 +324,7 @@ struct DrawSetup {
 // Draws patches [from, to), `per_draw` patches per draw, inside one statistics query
 // (none when setup.queries is null).
 void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
-                 CaptureMode mode) {
+                 bool capture) {
   const VkPipelineLayout layout = setup.pipeline.layout.get();
   const bool query = setup.queries != VK_NULL_HANDLE;
   if (query) vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
@@ -330,7 +335,7 @@ void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uin
   if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
     const uint32_t count = std::min(setup.per_draw, to - p);
-    const PushBlock push{p, mode};
+    const PushBlock push{p, capture ? 1u : 0u};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
   }
@@ -420,9 +425,9 @@ void sortUnique(std::vector<CapturedVertex>* vertices) {
   *vertices = std::move(sorted);
 }
 
-CaptureMode captureMode(const GpuPatchProgram& program, const PatchProgramOptions& options) {
-  if (!options.capture) return kCaptureNone;
-  if (!options.boundary_only) return kCaptureEvery;
+// kTbCaptureBoundary for these options.
+uint32_t captureBoundary(const GpuPatchProgram& program, const PatchProgramOptions& options) {
+  if (!options.capture || !options.boundary_only) return kCaptureEvery;
   switch (program.domain) {
     case tess::Domain::kQuad:
       return kCaptureQuadBoundary;
@@ -454,9 +459,9 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                                     const PatchProgramOptions& options) {
   context.requireFeatures(tessCaptureFeatures(), "patch program");
   checkProgram(context, program, patch_levels.size());
-  const CaptureMode mode = captureMode(program, options);
+  const uint32_t boundary = captureBoundary(program, options);
   PatchProgramCache& cache = context.attachment<PatchProgramCache>();
-  ProgramPipeline& pipeline = cache.get(program, options.spacing);
+  ProgramPipeline& pipeline = cache.get(program, options.spacing, boundary);
   const CallResourcesLease resources(cache);
   const VkDevice device = context.device();
 
@@ -504,12 +509,12 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   // not counted.
   if (first < end && !pipeline.warmed.load()) {
     context.submitAndWait(
-        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, kCaptureNone); });
+        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, false); });
     pipeline.warmed.store(true);
   }
 
   PatchProgramCapture result;
-  const bool boundary_only = mode == kCaptureQuadBoundary || mode == kCaptureTriangleBoundary;
+  const bool boundary_only = boundary != kCaptureEvery;
   const std::vector<uint64_t> bounds =
       captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
   for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
@@ -521,7 +526,9 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
     resources->capture.write(header, sizeof(header));
     result.submit_to_fence_s += context.submitAndWait(
-        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, range.from, range.to, mode); });
+        [&](VkCommandBuffer cmd) {
+          recordDraws(cmd, setup, range.from, range.to, options.capture);
+        });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
     if (options.statistics) addStatistics(device, setup.queries, &result.stats);
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);

@@ -10,7 +10,8 @@
 //   set 1, binding 0      per-patch levels (outer[4], inner[2]), indexed by tbPatchIndex();
 //                         the TCS writes them with tbWriteHarnessLevels()
 //   push constants        first patch of the draw (tbPatchIndex()), capture flag
-//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages
+//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages;
+//                         constant_id 200 is the harness's (boundary_only capture, TES)
 // Each draw covers a small batch of patches (lavapipe's single-threaded tessellator
 // slows down super-linearly with many patches per draw); capture is by SSBO with an
 // atomic counter (about 4x faster than transform feedback on lavapipe), of every TES

@@ -8,18 +8,13 @@
 //                          patch_program_tcs.glsl), indexed by tbPatchIndex()
 //   push constants         this block
 //   constant_id 0..M-1     GpuPatchProgram::specialization (declare them in the shader)
+//   constant_id 200        the harness's kTbCaptureBoundary (patch_program_tes.glsl)
 #ifndef TB_PATCH_PROGRAM_GLSL
 #define TB_PATCH_PROGRAM_GLSL
 
-// What the TES writes to the capture buffer (PatchProgramOptions in core/gpu/patch_program.h).
-const uint kTbCaptureNone = 0u;              // nothing (timing runs)
-const uint kTbCaptureEvery = 1u;             // every TES invocation
-const uint kTbCaptureQuadBoundary = 2u;      // only gl_TessCoord on the quad's edges
-const uint kTbCaptureTriangleBoundary = 3u;  // only gl_TessCoord on the triangle's edges
-
 layout(push_constant) uniform TbPatchProgramPush {
-  uint first_patch;   // patch index of gl_PrimitiveID 0 in this draw
-  uint capture_mode;  // kTbCapture*
+  uint first_patch;      // patch index of gl_PrimitiveID 0 in this draw
+  uint capture_enabled;  // 0: do not write the capture buffer (timing runs)
 } tb_push;
 
 // Index of the patch being processed, into the technique's per-patch data.
