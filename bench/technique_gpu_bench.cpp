@@ -58,7 +58,8 @@ NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
   NoCaptureRun run;
   const auto start = std::chrono::steady_clock::now();
   for (const tb::gpu::GpuPatchProgram& program : programs) {
-    const tb::gpu::PatchProgramCapture r = tb::gpu::runPatchProgram(context, program, levels, options);
+    const tb::gpu::PatchProgramCapture r =
+        tb::gpu::runPatchProgram(context, program, levels, options);
     run.seconds += r.submit_to_fence_s;
     run.invocations += double(r.stats.tes_invocations);
   }
@@ -99,8 +100,8 @@ enum class CrackPath {
 };
 
 // The crack measure's GPU half against the same shaders without capture, in one run.
-void crackCapture(benchmark::State& state, const tb::Technique* technique,
-                  const std::string& asset, float level, CrackPath path) {
+void crackCapture(benchmark::State& state, const tb::Technique* technique, const std::string& asset,
+                  float level, CrackPath path) {
   tb::gpu::Context* context = benchContext(state);
   if (context == nullptr) return;
   const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
@@ -183,11 +184,10 @@ void registerTechniqueGpuBenchmarks() {
              {std::pair{"cracks_gpu/", CrackPath::kCapture},
               std::pair{"cracks_gpu_full_inner/", CrackPath::kCaptureFullInner},
               std::pair{"cracks_row_gpu/", CrackPath::kWholeRow}}) {
-          benchmark::RegisterBenchmark(
-              (name + suffix).c_str(),
-              [technique, asset, level, path](benchmark::State& state) {
-                crackCapture(state, technique, asset, level, path);
-              })
+          benchmark::RegisterBenchmark((name + suffix).c_str(),
+                                       [technique, asset, level, path](benchmark::State& state) {
+                                         crackCapture(state, technique, asset, level, path);
+                                       })
               ->UseManualTime()
               ->Unit(benchmark::kMillisecond);
         }

@@ -70,12 +70,12 @@ struct CallResources {
   VkQueryPoolOwner queries;
   Buffer capture;
   Buffer levels;
-  std::vector<Buffer> data;  // GpuPatchProgram::storage_buffers
+  std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
-using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int,
-                              uint32_t, uint32_t, uint32_t>;
+using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
+                              uint32_t, uint32_t>;
 
 // `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
 // entry, ignored by the TCS, which does not declare it.
@@ -95,8 +95,8 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
     entries.push_back({kCaptureBoundaryConstantId, uint32_t(values.size()) * 4u, 4});
     values.push_back(boundary);
   }
-  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                      values.size() * 4, values.data()};
+  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
+                                      values.data()};
   VkPipelineShaderStageCreateInfo shader_stages[] = {
       shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
       shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, control.get()),
@@ -121,14 +121,10 @@ class PatchProgramCache {
 
   ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary) {
     const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
-    ProgramKey key{program.control_shader,
-                   program.evaluation_shader,
-                   program.specialization,
-                   int(program.domain),
-                   int(spacing),
-                   program.input_vertices_per_patch,
-                   binding_count,
-                   boundary};
+    ProgramKey key{program.control_shader, program.evaluation_shader,
+                   program.specialization, int(program.domain),
+                   int(spacing),           program.input_vertices_per_patch,
+                   binding_count,          boundary};
     const std::lock_guard lock(mutex_);
     if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
@@ -240,8 +236,7 @@ std::vector<uint64_t> captureBounds(tess::Domain domain, tess::Spacing spacing,
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     auto it = by_levels.find(key);
     if (it == by_levels.end()) {
-      it = by_levels
-               .emplace(key, captureBound(domain, spacing, device_levels[p], boundary_only))
+      it = by_levels.emplace(key, captureBound(domain, spacing, device_levels[p], boundary_only))
                .first;
     }
     bounds.push_back(it->second);
@@ -375,8 +370,8 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
                    std::to_string(written) + " vertices, room for " + std::to_string(capacity) +
                    ")");
   }
-  const std::span<const uint32_t> words =
-      capture.as<const uint32_t>().subspan(kCaptureHeaderBytes / 4, size_t(written) * kCaptureWords);
+  const std::span<const uint32_t> words = capture.as<const uint32_t>().subspan(
+      kCaptureHeaderBytes / 4, size_t(written) * kCaptureWords);
   vertices->reserve(vertices->size() + written);
   for (uint32_t i = 0; i < written; ++i) {
     const uint32_t* w = &words[size_t(i) * kCaptureWords];
@@ -525,10 +520,9 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     }
     const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
     resources->capture.write(header, sizeof(header));
-    result.submit_to_fence_s += context.submitAndWait(
-        [&](VkCommandBuffer cmd) {
-          recordDraws(cmd, setup, range.from, range.to, options.capture);
-        });
+    result.submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
+      recordDraws(cmd, setup, range.from, range.to, options.capture);
+    });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
     if (options.statistics) addStatistics(device, setup.queries, &result.stats);
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);

@@ -32,9 +32,10 @@ bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint
 struct BoundaryTessellation {
   bool culled = false;  // no points at all (some outer level culls the patch)
   std::vector<tess::DomainPoint> points;
-  // Edge e's interior points are points[edge_begin[e], edge_begin[e + 1]); corners() = edge_begin[0].
+  // Edge e's interior points are points[edge_begin[e], edge_begin[e + 1]); corners() =
+  // edge_begin[0].
   std::vector<uint32_t> edge_begin;
-  std::vector<int64_t> edge_t;  // per point: its edge parameter in 16.16 (0 for corners)
+  std::vector<int64_t> edge_t;      // per point: its edge parameter in 16.16 (0 for corners)
   uint64_t tessellated_points = 0;  // every domain point (the TES invocations at these levels)
   // Levels that give exactly the same boundary points (bit for bit, same order) with
   // fewer interior ones: each inner level lowered to at most 1 (integer, pow2), 2

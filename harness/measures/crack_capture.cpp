@@ -79,8 +79,7 @@ class ProgramCapture {
   void checkPatch(const gpu::GpuPatchProgram& program, uint32_t patch, PatchDomain domain) const {
     if (patch >= patches_.patchCount() || boundaries_.domain[patch] != domain) {
       throw std::runtime_error("cracks: " + program.evaluation_shader + " draws patch " +
-                               std::to_string(patch) +
-                               ", which is not a patch of its domain");
+                               std::to_string(patch) + ", which is not a patch of its domain");
     }
   }
 
@@ -128,7 +127,8 @@ BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
                                          gpu::Context& context,
                                          const CrackCaptureOptions& options) {
   if (patch_levels.size() != patches.patchCount() || boundaries.culled_patches > 0) {
-    throw std::invalid_argument("cracks: capture needs one level set per patch and no culled patch");
+    throw std::invalid_argument(
+        "cracks: capture needs one level set per patch and no culled patch");
   }
   BoundaryCapture capture;
   capture.positions.resize(boundaries.size());

@@ -31,16 +31,16 @@ struct CrackCaptureOptions {
 };
 
 struct BoundaryCapture {
-  std::vector<Vec3f> positions;    // per boundary point, [boundaries.at(patch, k)]
-  uint64_t points_captured = 0;    // distinct (patch, gl_TessCoord) captured = boundaries.size()
+  std::vector<Vec3f> positions;  // per boundary point, [boundaries.at(patch, k)]
+  uint64_t points_captured = 0;  // distinct (patch, gl_TessCoord) captured = boundaries.size()
   // Domain points the device tessellated, summed over patches: the CPU tessellator's
   // count under the levels the device ran, which lavapipe's TES invocation statistic
   // matches (docs/ARCHITECTURE.md §6; the capture runs without a statistics query, whose
   // read-back costs more than a small draw).
   uint64_t tes_invocations = 0;
-  double submit_to_fence_s = 0;    // host seconds from submit to fence, summed
+  double submit_to_fence_s = 0;  // host seconds from submit to fence, summed
   uint32_t draws = 0;
-  uint32_t calls = 0;              // runPatchProgram calls (chunks)
+  uint32_t calls = 0;  // runPatchProgram calls (chunks)
 };
 
 // Runs `programs` (patches.gpuPrograms(), built once by the caller) over their patches

@@ -39,17 +39,17 @@ BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundar
   const size_t count = patches.patchCount();
   const size_t per_patch = std::max<size_t>(boundaries.size() / std::max<size_t>(count, 1), 1);
   const size_t grain = std::max<size_t>(kPointsPerTask / per_patch, 1);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, grain),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t p = range.begin(); p < range.end(); ++p) {
-                        const auto& points = boundaries.of(p).points;
-                        for (size_t k = 0; k < points.size(); ++k) {
-                          positions[boundaries.at(p, k)] =
-                              patches.evaluateFloat(p, points[k]).position;
-                        }
-                      }
-                    },
-                    tbb::simple_partitioner());
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, count, grain),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t p = range.begin(); p < range.end(); ++p) {
+          const auto& points = boundaries.of(p).points;
+          for (size_t k = 0; k < points.size(); ++k) {
+            positions[boundaries.at(p, k)] = patches.evaluateFloat(p, points[k]).position;
+          }
+        }
+      },
+      tbb::simple_partitioner());
   return positions;
 }
 
@@ -118,9 +118,7 @@ class Pairing {
  private:
   static constexpr size_t kItemsPerBlock = 256;
 
-  const Vec3f& at(uint32_t patch, size_t k) const {
-    return positions_[boundaries_.at(patch, k)];
-  }
+  const Vec3f& at(uint32_t patch, size_t k) const { return positions_[boundaries_.at(patch, k)]; }
 
   void item(size_t i, PairBlock* block) const {
     if (i < shared_.edges.size()) {
@@ -150,9 +148,9 @@ class Pairing {
           ++block->unpaired;
           continue;
         }
-        block->add(at(a.patch, k_a), at(b.patch, size_t(k_b)), scale_ulp_,
-                   {true, false, a.patch, b.patch, a.local, b.local,
-                    double(t_a) / kEdgeParameterOne});
+        block->add(
+            at(a.patch, k_a), at(b.patch, size_t(k_b)), scale_ulp_,
+            {true, false, a.patch, b.patch, a.local, b.local, double(t_a) / kEdgeParameterOne});
       }
     }
   }
@@ -209,9 +207,10 @@ bool sameBoundaryPoints(const PatchBoundaries& a, const PatchBoundaries& b) {
     if (it == compared.end()) {
       const BoundaryTessellation& ta = a.of(p);
       const BoundaryTessellation& tb = b.of(p);
-      const bool same = &ta == &tb || (ta.edge_begin == tb.edge_begin &&
-                                       std::memcmp(ta.points.data(), tb.points.data(),
-                                                   ta.points.size() * sizeof(tess::DomainPoint)) == 0);
+      const bool same =
+          &ta == &tb || (ta.edge_begin == tb.edge_begin &&
+                         std::memcmp(ta.points.data(), tb.points.data(),
+                                     ta.points.size() * sizeof(tess::DomainPoint)) == 0);
       it = compared.emplace(key, same).first;
     }
     if (!it->second) return false;
@@ -307,8 +306,8 @@ CrackFigures CrackSession::measure(tess::Spacing spacing, float level, CrackBack
 }
 
 CrackFigures CrackSession::measure(tess::Spacing spacing,
-                                   std::span<const tess::Levels> patch_levels,
-                                   CrackBackend backend, gpu::Context* context) {
+                                   std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                                   gpu::Context* context) {
   if (patch_levels.size() != patches_.patchCount()) {
     throw std::invalid_argument("cracks: " + std::to_string(patch_levels.size()) +
                                 " per-patch levels for " + std::to_string(patches_.patchCount()) +

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <set>
 #include <thread>
@@ -200,10 +200,10 @@ TEST(PatchProgram, BoundaryOnlyCaptureKeepsExactlyTheEdgePoints) {
 
     std::vector<CapturedVertex> expected;
     for (const CapturedVertex& v : every.vertices) {
-      const bool on_edge = domain == tess::Domain::kQuad
-                               ? v.coord[0] == 0 || v.coord[0] == 1 || v.coord[1] == 0 ||
-                                     v.coord[1] == 1
-                               : v.coord[0] == 0 || v.coord[1] == 0 || v.coord[2] == 0;
+      const bool on_edge =
+          domain == tess::Domain::kQuad
+              ? v.coord[0] == 0 || v.coord[0] == 1 || v.coord[1] == 0 || v.coord[1] == 1
+              : v.coord[0] == 0 || v.coord[1] == 0 || v.coord[2] == 0;
       if (on_edge) expected.push_back(v);
     }
     ASSERT_EQ(boundary.vertices.size(), expected.size()) << tess::toString(domain);
@@ -220,9 +220,9 @@ TEST(PatchProgram, BoundaryOnlyCaptureKeepsExactlyTheEdgePoints) {
                               : d[0] == 0 || d[1] == 0 || d[2] == 0;
         on_edge += edge ? 1 : 0;
       }
-      const size_t captured = size_t(std::count_if(
-          boundary.vertices.begin(), boundary.vertices.end(),
-          [&](const CapturedVertex& v) { return v.patch == p; }));
+      const size_t captured =
+          size_t(std::count_if(boundary.vertices.begin(), boundary.vertices.end(),
+                               [&](const CapturedVertex& v) { return v.patch == p; }));
       EXPECT_EQ(captured, on_edge) << tess::toString(domain) << " patch " << p;
       EXPECT_GT(cpu.points.size(), on_edge);  // the interior is there and left out
     }

@@ -3,6 +3,8 @@
 // device's capture under the patches' own levels (lowered inner levels must capture the
 // same positions bit for bit); lavapipe's TES invocation statistic for the count the
 // capture reports without a query.
+#include "harness/measures/crack_capture.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +18,6 @@
 #include "core/gpu/patch_program.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/measures/crack_boundaries.h"
-#include "harness/measures/crack_capture.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"
@@ -50,8 +51,8 @@ tess::Levels levels(std::array<float, 4> outer, std::array<float, 2> inner) {
 
 TEST(CrackBoundaries, HoldExactlyTheTessellatorsBoundaryPointsInEdgeOrder) {
   for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
-    const tess::Domain d = domain == PatchDomain::kQuad ? tess::Domain::kQuad
-                                                        : tess::Domain::kTriangle;
+    const tess::Domain d =
+        domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
     for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
                                   tess::Spacing::kFractionalEven, tess::Spacing::kPow2}) {
       const tess::Levels l = levels({5.5f, 9, 2.25f, 13}, {7.5f, 3});
@@ -86,8 +87,8 @@ TEST(CrackBoundaries, CaptureLevelsKeepTheBoundaryWithFewerInteriorPoints) {
   for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
                                 tess::Spacing::kFractionalEven, tess::Spacing::kPow2}) {
     for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
-      const tess::Domain d = domain == PatchDomain::kQuad ? tess::Domain::kQuad
-                                                          : tess::Domain::kTriangle;
+      const tess::Domain d =
+          domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
       for (const tess::Levels& l : {l64, levels({7.3f, 12, 3, 40}, {20, 33.5f})}) {
         const auto b = boundaryTessellation(domain, spacing, l);
         EXPECT_EQ(boundarySet(d, spacing, b->capture_levels), boundarySet(d, spacing, l))
@@ -113,8 +114,7 @@ TEST(CrackBoundaries, CaptureLevelsKeepTheBoundaryWithFewerInteriorPoints) {
 BuiltSurface defaultPatches(const char* technique_id, const char* asset) {
   const Technique* technique = TechniqueRegistry::instance().find(technique_id);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + technique_id);
-  return buildSurface(*technique, loadObjFile(testing::assetPath(asset)),
-                      technique->variants()[0]);
+  return buildSurface(*technique, loadObjFile(testing::assetPath(asset)), technique->variants()[0]);
 }
 
 // Lowered inner levels capture every boundary point with the positions the patches' own
@@ -140,8 +140,8 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
         full_options.lower_inner_levels = false;
         const BoundaryCapture full = captureBoundaryPositions(
             *patches, programs, boundaries, spacing, patch_levels, context, full_options);
-        const BoundaryCapture lowered = captureBoundaryPositions(
-            *patches, programs, boundaries, spacing, patch_levels, context);
+        const BoundaryCapture lowered = captureBoundaryPositions(*patches, programs, boundaries,
+                                                                 spacing, patch_levels, context);
         EXPECT_EQ(full.points_captured, boundaries.size());
         EXPECT_EQ(lowered.points_captured, boundaries.size());
         ASSERT_EQ(lowered.positions.size(), full.positions.size());
@@ -163,8 +163,8 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
           gpu::PatchProgramOptions options;
           options.spacing = spacing;
           options.capture = false;
-          statistic += gpu::runPatchProgram(context, program, program_levels, options)
-                           .stats.tes_invocations;
+          statistic +=
+              gpu::runPatchProgram(context, program, program_levels, options).stats.tes_invocations;
         }
         EXPECT_EQ(lowered.tes_invocations, statistic);
       }

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
@@ -28,9 +28,15 @@ MeasureResult runCracks(const Technique& technique, const VariantInfo& variant,
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
   const Measure* measure = MeasureRegistry::instance().find("cracks");
   EXPECT_NE(measure, nullptr);
-  const MeasureInput input{technique, variant, asset, mesh, &patches, context,
-                          context == nullptr ? "no Vulkan device in this test" : "",
-                          nullptr, nullptr};
+  const MeasureInput input{technique,
+                           variant,
+                           asset,
+                           mesh,
+                           &patches,
+                           context,
+                           context == nullptr ? "no Vulkan device in this test" : "",
+                           nullptr,
+                           nullptr};
   return measure->run(input);
 }
 
@@ -56,8 +62,8 @@ TEST(CracksParallel, RowsDoNotDependOnTheThreadCount) {
   const std::string asset = "tessbench/tri_pawn.obj";
   const Mesh mesh = loadObjFile(testing::assetPath(asset));
   // gregory_acc's asymmetric variant opens gaps, so the sums and maxima are not all 0.
-  for (const auto& [id, variant_name] : {std::pair{"gregory_acc", "asymmetric"},
-                                          std::pair{"pn_triangles", "pn"}}) {
+  for (const auto& [id, variant_name] :
+       {std::pair{"gregory_acc", "asymmetric"}, std::pair{"pn_triangles", "pn"}}) {
     const Technique* technique = TechniqueRegistry::instance().find(id);
     ASSERT_NE(technique, nullptr);
     VariantInfo variant;
@@ -67,8 +73,7 @@ TEST(CracksParallel, RowsDoNotDependOnTheThreadCount) {
     ASSERT_EQ(variant.name, variant_name);
     const BuiltSurface patches = buildSurface(*technique, mesh, variant);
     ASSERT_GT(findSharedBoundaries(*patches).edges.size(), 256u);
-    const MeasureResult one =
-        runCracks(*technique, variant, asset, mesh, *patches, context, 1);
+    const MeasureResult one = runCracks(*technique, variant, asset, mesh, *patches, context, 1);
     ASSERT_FALSE(one.rows.empty());
     if (std::string(id) == "gregory_acc") {
       double max_gap = 0;

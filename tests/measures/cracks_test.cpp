@@ -221,8 +221,8 @@ TEST(Cracks, GpuCaptureMatchesTheCpuModelAndShowsTheSameCracks) {
         // captures), times the patches.
         const tess::Tessellation t = tess::tessellate(
             tess::Domain::kQuad, spacing, {{level, level, level, level}, {level, level}});
-        const size_t boundary_points = size_t(std::count_if(
-            t.points.begin(), t.points.end(), [](const tess::DomainPoint& d) {
+        const size_t boundary_points =
+            size_t(std::count_if(t.points.begin(), t.points.end(), [](const tess::DomainPoint& d) {
               return d[0] == 0 || d[0] == 1 || d[1] == 0 || d[1] == 1;
             }));
         EXPECT_EQ(gpu.device_points, boundary_points * patches.patchCount());
