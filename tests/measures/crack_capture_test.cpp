@@ -172,5 +172,31 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
   }
 }
 
+// A bound on the vertices held at once splits the patches into more runPatchProgram calls
+// and changes nothing else (oracle: the capture in one call).
+TEST(CrackCapture, ChunksOfPatchesCaptureWhatOneCallDoes) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const BuiltSurface patches = defaultPatches("gregory_acc", "opensubdiv/catmark_pyramid.obj");
+  const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
+  const tess::Spacing spacing = tess::Spacing::kFractionalOdd;
+  const std::vector<tess::Levels> patch_levels(patches->patchCount(),
+                                               levels({9.5f, 9.5f, 9.5f, 9.5f}, {9.5f, 9.5f}));
+  const PatchBoundaries boundaries = patchBoundaries(*patches, spacing, patch_levels);
+  const BoundaryCapture one =
+      captureBoundaryPositions(*patches, programs, boundaries, spacing, patch_levels, context);
+  CrackCaptureOptions small;
+  small.max_vertices_per_call = 1;  // one patch per call
+  const BoundaryCapture chunked = captureBoundaryPositions(*patches, programs, boundaries,
+                                                           spacing, patch_levels, context, small);
+  EXPECT_EQ(one.calls, uint32_t(programs.size()));
+  EXPECT_EQ(chunked.calls, uint32_t(patches->patchCount()));
+  EXPECT_EQ(chunked.points_captured, one.points_captured);
+  EXPECT_EQ(chunked.tes_invocations, one.tes_invocations);
+  ASSERT_EQ(chunked.positions.size(), one.positions.size());
+  EXPECT_EQ(std::memcmp(chunked.positions.data(), one.positions.data(),
+                        one.positions.size() * sizeof(Vec3f)),
+            0);
+}
+
 }  // namespace
 }  // namespace tb
