@@ -186,8 +186,8 @@ TEST(CrackCapture, ChunksOfPatchesCaptureWhatOneCallDoes) {
       captureBoundaryPositions(*patches, programs, boundaries, spacing, patch_levels, context);
   CrackCaptureOptions small;
   small.max_vertices_per_call = 1;  // one patch per call
-  const BoundaryCapture chunked = captureBoundaryPositions(*patches, programs, boundaries,
-                                                           spacing, patch_levels, context, small);
+  const BoundaryCapture chunked = captureBoundaryPositions(*patches, programs, boundaries, spacing,
+                                                           patch_levels, context, small);
   EXPECT_EQ(one.calls, uint32_t(programs.size()));
   EXPECT_EQ(chunked.calls, uint32_t(patches->patchCount()));
   EXPECT_EQ(chunked.points_captured, one.points_captured);
