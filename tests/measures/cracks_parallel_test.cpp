@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -24,8 +26,7 @@ namespace {
 
 MeasureResult runCracks(const Technique& technique, const VariantInfo& variant,
                         const std::string& asset, const Mesh& mesh, const SurfacePatches& patches,
-                        gpu::Context* context, size_t threads) {
-  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+                        gpu::Context* context) {
   const Measure* measure = MeasureRegistry::instance().find("cracks");
   EXPECT_NE(measure, nullptr);
   const MeasureInput input{technique,
@@ -38,6 +39,20 @@ MeasureResult runCracks(const Technique& technique, const VariantInfo& variant,
                            nullptr,
                            nullptr};
   return measure->run(input);
+}
+
+MeasureResult runCracks(const Technique& technique, const VariantInfo& variant,
+                        const std::string& asset, const Mesh& mesh, const SurfacePatches& patches,
+                        gpu::Context* context, size_t threads) {
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  return runCracks(technique, variant, asset, mesh, patches, context);
+}
+
+VariantInfo findVariant(const Technique& technique, const std::string& name) {
+  for (const VariantInfo& v : technique.variants()) {
+    if (v.name == name) return v;
+  }
+  throw std::runtime_error("no variant " + name);
 }
 
 void expectSameRows(const MeasureResult& a, const MeasureResult& b, const std::string& what) {
@@ -66,11 +81,7 @@ TEST(CracksParallel, RowsDoNotDependOnTheThreadCount) {
        {std::pair{"gregory_acc", "asymmetric"}, std::pair{"pn_triangles", "pn"}}) {
     const Technique* technique = TechniqueRegistry::instance().find(id);
     ASSERT_NE(technique, nullptr);
-    VariantInfo variant;
-    for (const VariantInfo& v : technique->variants()) {
-      if (v.name == variant_name) variant = v;
-    }
-    ASSERT_EQ(variant.name, variant_name);
+    const VariantInfo variant = findVariant(*technique, variant_name);
     const BuiltSurface patches = buildSurface(*technique, mesh, variant);
     ASSERT_GT(findSharedBoundaries(*patches).edges.size(), 256u);
     const MeasureResult one = runCracks(*technique, variant, asset, mesh, *patches, context, 1);
@@ -90,6 +101,33 @@ TEST(CracksParallel, RowsDoNotDependOnTheThreadCount) {
       expectSameRows(one, many, std::string(id) + " with " + std::to_string(threads) + " threads");
     }
   }
+}
+
+// Two records at once on one shared Context (as the suite runs them on two threads) give
+// the rows each gives alone.
+TEST(CracksParallel, TwoRecordsAtOnceOnOneContextMatchTheirSerialRuns) {
+  std::string reason;
+  gpu::Context* context = gpu::testing::sharedContext(&reason);
+  if (context == nullptr) GTEST_SKIP() << "no usable Vulkan device: " << reason;
+  const std::string asset = "tessbench/tri_pawn.obj";
+  const Mesh mesh = loadObjFile(testing::assetPath(asset));
+  const Technique* gregory = TechniqueRegistry::instance().find("gregory_acc");
+  const Technique* pn = TechniqueRegistry::instance().find("pn_triangles");
+  ASSERT_TRUE(gregory != nullptr && pn != nullptr);
+  const VariantInfo gregory_variant = findVariant(*gregory, "asymmetric");
+  const VariantInfo pn_variant = findVariant(*pn, "pn");
+  const BuiltSurface a = buildSurface(*gregory, mesh, gregory_variant);
+  const BuiltSurface b = buildSurface(*pn, mesh, pn_variant);
+  const MeasureResult serial_a = runCracks(*gregory, gregory_variant, asset, mesh, *a, context);
+  const MeasureResult serial_b = runCracks(*pn, pn_variant, asset, mesh, *b, context);
+  MeasureResult concurrent_a, concurrent_b;
+  std::thread first(
+      [&] { concurrent_a = runCracks(*gregory, gregory_variant, asset, mesh, *a, context); });
+  std::thread second([&] { concurrent_b = runCracks(*pn, pn_variant, asset, mesh, *b, context); });
+  first.join();
+  second.join();
+  expectSameRows(serial_a, concurrent_a, "gregory_acc beside pn_triangles");
+  expectSameRows(serial_b, concurrent_b, "pn_triangles beside gregory_acc");
 }
 
 }  // namespace
