@@ -57,7 +57,7 @@ class ProgramCapture {
     gpu::PatchProgramOptions run;
     run.spacing = spacing_;
     run.boundary_only = true;
-    run.sort = false;  // store() indexes each vertex; a duplicate rewrites its slot
+    run.sort = false;  // store() indexes each vertex and checks a duplicate against its slot
     run.statistics = false;
     run.patches_per_draw =
         uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / max_points, 1, kMaxPatchesPerDraw));
