@@ -200,6 +200,7 @@ uint32_t Context::memoryType(uint32_t type_bits, VkMemoryPropertyFlags required,
 }
 
 double Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  const std::lock_guard lock(submit_mutex_);
   vkCheck(vkResetCommandBuffer(command_buffer_, 0), "vkResetCommandBuffer");
   auto begin = vkStruct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -1,5 +1,11 @@
 // A headless Vulkan device: one graphics+compute queue, no surface. Prefers a
 // discrete, then an integrated GPU, and falls back to lavapipe (CPU).
+//
+// Threads: one Context may be shared by several threads (the suite runs records
+// concurrently). submitAndWait and attachment() are safe to call at once from several
+// threads; submissions run one at a time (one queue, one command buffer). What an
+// attachment holds is its own business: runPatchProgram is safe to call concurrently,
+// the tessellator captures (tess_capture.h) serialise whole calls.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -7,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <typeindex>
 #include <utility>
@@ -54,15 +61,18 @@ class Context {
   // Records `record` into a primary command buffer, submits it and waits for it.
   // Returns host seconds from vkQueueSubmit until the fence signals (the only honest
   // clock for tessellation draws on lavapipe). `record` must not call submit itself.
+  // Thread-safe: concurrent callers take turns, each from recording to the fence.
   double submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
   // Throws GpuError naming the feature unless `wanted` are all enabled.
   void requireFeatures(const DeviceFeatures& wanted, const char* user) const;
 
   // A per-device object (pipeline cache and the like) created as T(Context&) on first
-  // use and destroyed, latest first, before the device.
+  // use and destroyed, latest first, before the device. Thread-safe; T guards its own
+  // state when it is used from several threads.
   template <class T>
   T& attachment() {
+    const std::lock_guard lock(attachments_mutex_);
     for (auto& [type, object] : attachments_) {
       if (type == std::type_index(typeid(T))) return *static_cast<T*>(object.get());
     }
@@ -86,6 +96,8 @@ class Context {
   VkCommandPoolOwner command_pool_;
   VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
   VkFenceOwner fence_;
+  std::mutex submit_mutex_;  // guards command_buffer_, fence_ and queue_
+  std::mutex attachments_mutex_;
   std::vector<std::pair<std::type_index, std::shared_ptr<void>>> attachments_;
 };
 

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cstring>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <tuple>
 
 #include "core/gpu/buffer.h"
@@ -25,6 +28,10 @@ struct PushBlock {
 };
 static_assert(sizeof(PushBlock) == 8);
 
+// kTbCaptureBoundary in shaders/common/patch_program_tes.glsl: its constant_id and values.
+constexpr uint32_t kCaptureBoundaryConstantId = 200;
+constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
+
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
 struct PatchLevelsBits {
   uint32_t outer_bits[4];
@@ -40,23 +47,41 @@ constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
 
 // One compiled program: its descriptor layouts (set 0: capture + the technique's
-// buffers; set 1: per-patch levels), pipeline and descriptor sets.
+// buffers; set 1: per-patch levels) and pipeline. Immutable once built (but for the
+// warm-up flag), so calls on several threads share it; each call allocates its own
+// descriptor sets.
 struct ProgramPipeline {
   VkDescriptorSetLayoutOwner set_layout;
   VkDescriptorSetLayoutOwner levels_set_layout;
   VkPipelineLayoutOwner layout;
   VkPipelineOwner pipeline;
-  StorageBufferSet descriptors;
-  StorageBufferSet levels_descriptors;
   uint32_t binding_count = 0;
+  std::atomic<bool> warmed{false};  // the compile-at-first-draw warm-up has been drawn
 };
 
-using ProgramKey =
-    std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t, uint32_t>;
+// What one call uploads to, captures into, binds and counts with; pooled so that calls
+// reuse the buffers (fresh device memory costs page faults on lavapipe) and descriptor
+// sets. Buffers only grow; each is bound with the range the call uses.
+struct CallResources {
+  struct PipelineSets {
+    StorageBufferSet data;    // set 0: capture + GpuPatchProgram::storage_buffers
+    StorageBufferSet levels;  // set 1: per-patch levels
+  };
+  VkQueryPoolOwner queries;
+  Buffer capture;
+  Buffer levels;
+  std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
+  std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
+};
 
+using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
+                              uint32_t, uint32_t>;
+
+// `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
+// entry, ignored by the TCS, which does not declare it.
 VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
-                                      tess::Spacing spacing, VkShaderModule vertex,
-                                      VkPipelineLayout layout) {
+                                      tess::Spacing spacing, uint32_t boundary,
+                                      VkShaderModule vertex, VkPipelineLayout layout) {
   const VkShaderModuleOwner control =
       createShaderModule(device, requireEmbeddedShader(program.control_shader));
   const std::vector<uint32_t> tes_spirv = withTessModes(
@@ -64,12 +89,14 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
   const VkShaderModuleOwner evaluation = createShaderModule(device, tes_spirv);
 
   std::vector<VkSpecializationMapEntry> entries;
-  for (uint32_t i = 0; i < program.specialization.size(); ++i) {
-    entries.push_back({i, i * 4u, 4});
+  std::vector<uint32_t> values = program.specialization;
+  for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4u, 4});
+  if (boundary != kCaptureEvery) {
+    entries.push_back({kCaptureBoundaryConstantId, uint32_t(values.size()) * 4u, 4});
+    values.push_back(boundary);
   }
-  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                      program.specialization.size() * 4,
-                                      program.specialization.data()};
+  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
+                                      values.data()};
   VkPipelineShaderStageCreateInfo shader_stages[] = {
       shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
       shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, control.get()),
@@ -84,47 +111,83 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
 }
 
 // Per-device cache of program pipelines (lavapipe compiles at the first draw, so a
-// pipeline is worth keeping) and the query pool.
-struct PatchProgramCache {
+// pipeline is worth keeping) and a pool of per-call resources. `mutex` guards the map
+// and the pool; what they hand out is used without it.
+class PatchProgramCache {
+ public:
   explicit PatchProgramCache(Context& context) : context_(context) {
+    vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
+  }
+
+  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary) {
+    const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
+    ProgramKey key{program.control_shader, program.evaluation_shader,
+                   program.specialization, int(program.domain),
+                   int(spacing),           program.input_vertices_per_patch,
+                   binding_count,          boundary};
+    const std::lock_guard lock(mutex_);
+    if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
+
+    const VkDevice device = context_.device();
+    auto p = std::make_unique<ProgramPipeline>();
+    p->binding_count = binding_count;
+    const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
+    p->set_layout = createStorageBufferSetLayout(device, stages);
+    const VkShaderStageFlags levels_stage[] = {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT};
+    p->levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
+    const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
+    p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
+    p->pipeline =
+        createProgramPipeline(device, program, spacing, boundary, vertex_.get(), p->layout.get());
+    return *programs_.emplace(std::move(key), std::move(p)).first->second;
+  }
+
+  std::unique_ptr<CallResources> acquire() {
+    {
+      const std::lock_guard lock(mutex_);
+      if (!free_.empty()) {
+        std::unique_ptr<CallResources> resources = std::move(free_.back());
+        free_.pop_back();
+        return resources;
+      }
+    }
+    auto resources = std::make_unique<CallResources>();
     auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
     info.queryCount = 1;
     info.pipelineStatistics = kTessStatisticFlags;
     VkQueryPool pool = VK_NULL_HANDLE;
-    vkCheck(vkCreateQueryPool(context.device(), &info, nullptr, &pool), "vkCreateQueryPool");
-    queries = VkQueryPoolOwner(context.device(), pool);
-    vertex = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
+    vkCheck(vkCreateQueryPool(context_.device(), &info, nullptr, &pool), "vkCreateQueryPool");
+    resources->queries = VkQueryPoolOwner(context_.device(), pool);
+    return resources;
   }
 
-  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing) {
-    const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
-    ProgramKey key{program.control_shader, program.evaluation_shader,
-                   program.specialization, int(program.domain),
-                   int(spacing),           program.input_vertices_per_patch,
-                   binding_count};
-    if (auto it = programs.find(key); it != programs.end()) return it->second;
-
-    const VkDevice device = context_.device();
-    ProgramPipeline p;
-    p.binding_count = binding_count;
-    const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
-    p.set_layout = createStorageBufferSetLayout(device, stages);
-    const VkShaderStageFlags levels_stage[] = {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT};
-    p.levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
-    const VkDescriptorSetLayout set_layouts[] = {p.set_layout.get(), p.levels_set_layout.get()};
-    p.layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-    p.pipeline = createProgramPipeline(device, program, spacing, vertex.get(), p.layout.get());
-    p.descriptors = StorageBufferSet(device, p.set_layout.get(), binding_count);
-    p.levels_descriptors = StorageBufferSet(device, p.levels_set_layout.get(), 1);
-    return programs.emplace(std::move(key), std::move(p)).first->second;
+  void release(std::unique_ptr<CallResources> resources) {
+    const std::lock_guard lock(mutex_);
+    free_.push_back(std::move(resources));
   }
 
+ private:
   Context& context_;
-  VkShaderModuleOwner vertex;
-  VkQueryPoolOwner queries;
-  Buffer capture;
-  std::map<ProgramKey, ProgramPipeline> programs;
+  VkShaderModuleOwner vertex_;
+  std::mutex mutex_;
+  std::map<ProgramKey, std::unique_ptr<ProgramPipeline>> programs_;
+  std::vector<std::unique_ptr<CallResources>> free_;
+};
+
+// Per-call resources from the cache, given back when the call ends (or throws).
+class CallResourcesLease {
+ public:
+  explicit CallResourcesLease(PatchProgramCache& cache)
+      : cache_(cache), resources_(cache.acquire()) {}
+  ~CallResourcesLease() { cache_.release(std::move(resources_)); }
+  CallResourcesLease(const CallResourcesLease&) = delete;
+  CallResourcesLease& operator=(const CallResourcesLease&) = delete;
+  CallResources* operator->() const { return resources_.get(); }
+
+ private:
+  PatchProgramCache& cache_;
+  std::unique_ptr<CallResources> resources_;
 };
 
 void barrierShaderWritesToHost(VkCommandBuffer cmd) {
@@ -141,21 +204,31 @@ tess::Levels deviceLevels(tess::Domain domain, tess::Spacing spacing, const tess
   return spacing == tess::Spacing::kPow2 ? tess::roundPow2Levels(domain, levels) : levels;
 }
 
-// Upper bound of TES invocations of one patch: the CPU tessellator's distinct points,
-// doubled (fractional spacing may run the TES twice on one coordinate) plus slack.
-uint64_t invocationBound(tess::Domain domain, tess::Spacing spacing,
-                         const tess::Levels& device_levels) {
+bool onBoundary(tess::Domain domain, const tess::DomainPoint& p) {
+  if (domain == tess::Domain::kQuad) return p[0] == 0 || p[0] == 1 || p[1] == 0 || p[1] == 1;
+  return p[0] == 0 || p[1] == 0 || p[2] == 0;
+}
+
+// Upper bound of the vertices one patch captures: the CPU tessellator's distinct points
+// (on the boundary only, when that is all that is captured), doubled (fractional spacing
+// may run the TES twice on one coordinate) plus slack.
+uint64_t captureBound(tess::Domain domain, tess::Spacing spacing, const tess::Levels& device_levels,
+                      bool boundary_only) {
   const tess::Spacing device_spacing =
       spacing == tess::Spacing::kPow2 ? tess::Spacing::kInteger : spacing;
   const tess::Tessellation t =
       tess::tessellate(domain, device_spacing, device_levels, {.point_mode = true, .ccw = true});
-  return 2 * t.points.size() + 16;
+  const uint64_t points =
+      boundary_only ? uint64_t(std::count_if(t.points.begin(), t.points.end(),
+                                             [&](const auto& p) { return onBoundary(domain, p); }))
+                    : t.points.size();
+  return 2 * points + 16;
 }
 
-// invocationBound of patches [first, end), one tessellation per distinct level set.
-std::vector<uint64_t> invocationBounds(tess::Domain domain, tess::Spacing spacing,
-                                       std::span<const tess::Levels> device_levels, uint32_t first,
-                                       uint32_t end) {
+// captureBound of patches [first, end), one tessellation per distinct level set.
+std::vector<uint64_t> captureBounds(tess::Domain domain, tess::Spacing spacing,
+                                    std::span<const tess::Levels> device_levels, uint32_t first,
+                                    uint32_t end, bool boundary_only) {
   std::map<tess::LevelsBits, uint64_t> by_levels;
   std::vector<uint64_t> bounds;
   bounds.reserve(end - first);
@@ -163,7 +236,8 @@ std::vector<uint64_t> invocationBounds(tess::Domain domain, tess::Spacing spacin
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     auto it = by_levels.find(key);
     if (it == by_levels.end()) {
-      it = by_levels.emplace(key, invocationBound(domain, spacing, device_levels[p])).first;
+      it = by_levels.emplace(key, captureBound(domain, spacing, device_levels[p], boundary_only))
+               .first;
     }
     bounds.push_back(it->second);
   }
@@ -198,65 +272,86 @@ std::vector<SubmitRange> planSubmits(uint32_t first, std::span<const uint64_t> b
   return ranges;
 }
 
-std::vector<Buffer> uploadStorageBuffers(Context& context, const GpuPatchProgram& program) {
-  std::vector<Buffer> buffers;
-  for (const std::vector<uint32_t>& words : program.storage_buffers) {
-    Buffer buffer(context, std::max<VkDeviceSize>(words.size() * 4, 16),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    buffer.write(words.data(), words.size() * 4);
-    buffers.push_back(std::move(buffer));
+// Copies the program's storage buffers into `buffers` (grown as needed); returns the
+// bytes each binding covers (16 at least: a zero-sized range is invalid).
+std::vector<VkDeviceSize> uploadStorageBuffers(Context& context, const GpuPatchProgram& program,
+                                               std::vector<Buffer>* buffers) {
+  if (buffers->size() < program.storage_buffers.size()) {
+    buffers->resize(program.storage_buffers.size());
   }
-  return buffers;
+  std::vector<VkDeviceSize> ranges;
+  for (size_t i = 0; i < program.storage_buffers.size(); ++i) {
+    const std::vector<uint32_t>& words = program.storage_buffers[i];
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(words.size() * 4, 16);
+    ensureCapacity(context, (*buffers)[i], bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    (*buffers)[i].write(words.data(), words.size() * 4);
+    ranges.push_back(bytes);
+  }
+  return ranges;
 }
 
-Buffer uploadPatchLevels(Context& context, std::span<const tess::Levels> device_levels) {
-  std::vector<PatchLevelsBits> bits(std::max<size_t>(device_levels.size(), 1));
+// Writes the per-patch levels into `buffer` (grown as needed); returns the bytes written.
+VkDeviceSize uploadPatchLevels(Context& context, std::span<const tess::Levels> device_levels,
+                               Buffer* buffer) {
+  const size_t count = std::max<size_t>(device_levels.size(), 1);
+  const VkDeviceSize bytes = count * sizeof(PatchLevelsBits);
+  ensureCapacity(context, *buffer, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  PatchLevelsBits* bits = buffer->as<PatchLevelsBits>().data();
   for (size_t p = 0; p < device_levels.size(); ++p) {
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
-    std::copy(key.begin(), key.begin() + 4, bits[p].outer_bits);
-    std::copy(key.begin() + 4, key.end(), bits[p].inner_bits);
+    PatchLevelsBits entry{};
+    std::copy(key.begin(), key.begin() + 4, entry.outer_bits);
+    std::copy(key.begin() + 4, key.end(), entry.inner_bits);
+    bits[p] = entry;
   }
-  Buffer buffer(context, bits.size() * sizeof(PatchLevelsBits), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  buffer.write(bits.data(), bits.size() * sizeof(PatchLevelsBits));
-  return buffer;
+  return bytes;
 }
 
 // Everything one call draws with.
 struct DrawSetup {
-  const PatchProgramCache& cache;
   const ProgramPipeline& pipeline;
+  VkQueryPool queries = VK_NULL_HANDLE;
+  VkDescriptorSet sets[2] = {};  // set 0 (capture + data), set 1 (levels)
   uint32_t input_vertices_per_patch = 1;
   uint32_t per_draw = 1;
 };
 
-// Draws patches [from, to), `per_draw` patches per draw, inside one statistics query.
+// Draws patches [from, to), `per_draw` patches per draw, inside one statistics query
+// (none when setup.queries is null).
 void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
                  bool capture) {
-  const VkQueryPool queries = setup.cache.queries.get();
   const VkPipelineLayout layout = setup.pipeline.layout.get();
-  vkCmdResetQueryPool(cmd, queries, 0, 1);
+  const bool query = setup.queries != VK_NULL_HANDLE;
+  if (query) vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
   beginDiscardRendering(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, setup.pipeline.pipeline.get());
-  const VkDescriptorSet sets[] = {setup.pipeline.descriptors.set,
-                                  setup.pipeline.levels_descriptors.set};
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, sets, 0, nullptr);
-  vkCmdBeginQuery(cmd, queries, 0, 0);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, setup.sets, 0,
+                          nullptr);
+  if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
     const uint32_t count = std::min(setup.per_draw, to - p);
     const PushBlock push{p, capture ? 1u : 0u};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
   }
-  vkCmdEndQuery(cmd, queries, 0);
+  if (query) vkCmdEndQuery(cmd, setup.queries, 0);
   vkCmdEndRendering(cmd);
   barrierShaderWritesToHost(cmd);
 }
 
 void addStatistics(VkDevice device, VkQueryPool queries, PipelineStatistics* stats) {
   uint64_t values[kTessStatisticCount] = {};
-  vkCheck(vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values, sizeof(values),
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-          "vkGetQueryPoolResults");
+  // The fence has signalled, so the results are available; lavapipe's WAIT path costs
+  // ~0.1 ms a call even then, so it is only the fallback.
+  const VkResult ready = vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values,
+                                               sizeof(values), VK_QUERY_RESULT_64_BIT);
+  if (ready == VK_NOT_READY) {
+    vkCheck(vkGetQueryPoolResults(device, queries, 0, 1, sizeof(values), values, sizeof(values),
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+            "vkGetQueryPoolResults");
+  } else {
+    vkCheck(ready, "vkGetQueryPoolResults");
+  }
   stats->vs_invocations += values[0];
   stats->clipping_invocations += values[1];
   stats->clipping_primitives += values[2];
@@ -264,7 +359,8 @@ void addStatistics(VkDevice device, VkQueryPool queries, PipelineStatistics* sta
   stats->tes_invocations += values[4];
 }
 
-// Appends the vertices the last submission captured (room for `capacity`).
+// Appends the vertices the last submission captured (room for `capacity`), read in place
+// from the mapped buffer.
 void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t capacity,
                  std::vector<CapturedVertex>* vertices) {
   uint32_t written = 0;
@@ -274,8 +370,9 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
                    std::to_string(written) + " vertices, room for " + std::to_string(capacity) +
                    ")");
   }
-  std::vector<uint32_t> words(size_t(written) * kCaptureWords);
-  capture.read(words.data(), words.size() * 4, kCaptureHeaderBytes);
+  const std::span<const uint32_t> words = capture.as<const uint32_t>().subspan(
+      kCaptureHeaderBytes / 4, size_t(written) * kCaptureWords);
+  vertices->reserve(vertices->size() + written);
   for (uint32_t i = 0; i < written; ++i) {
     const uint32_t* w = &words[size_t(i) * kCaptureWords];
     CapturedVertex v;
@@ -288,20 +385,53 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
   }
 }
 
-// Sorts by (patch, coord bits) and keeps one of each.
+using CoordKey = std::array<uint32_t, 3>;
+CoordKey coordKey(const CapturedVertex& v) {
+  return {std::bit_cast<uint32_t>(v.coord[0]), std::bit_cast<uint32_t>(v.coord[1]),
+          std::bit_cast<uint32_t>(v.coord[2])};
+}
+
+// Sorts by (patch, coord bits) and keeps one of each: a counting sort by patch (a capture
+// holds a contiguous range of patches), then each patch's vertices by coordinate bits.
 void sortUnique(std::vector<CapturedVertex>* vertices) {
-  auto key = [](const CapturedVertex& v) {
-    return std::make_tuple(v.patch, std::bit_cast<uint32_t>(v.coord[0]),
-                           std::bit_cast<uint32_t>(v.coord[1]),
-                           std::bit_cast<uint32_t>(v.coord[2]));
+  if (vertices->empty()) return;
+  const auto [lo, hi] = std::minmax_element(
+      vertices->begin(), vertices->end(),
+      [](const CapturedVertex& a, const CapturedVertex& b) { return a.patch < b.patch; });
+  const uint32_t first = lo->patch;
+  const size_t range = size_t(hi->patch) - first + 1;
+  std::vector<size_t> start(range + 1, 0);
+  for (const CapturedVertex& v : *vertices) ++start[v.patch - first + 1];
+  for (size_t p = 0; p < range; ++p) start[p + 1] += start[p];
+  std::vector<CapturedVertex> sorted(vertices->size());
+  std::vector<size_t> next(start.begin(), start.end() - 1);
+  for (const CapturedVertex& v : *vertices) sorted[next[v.patch - first]++] = v;
+  auto by_coord = [](const CapturedVertex& a, const CapturedVertex& b) {
+    return coordKey(a) < coordKey(b);
   };
-  std::sort(vertices->begin(), vertices->end(),
-            [&](const CapturedVertex& a, const CapturedVertex& b) { return key(a) < key(b); });
-  vertices->erase(std::unique(vertices->begin(), vertices->end(),
-                              [&](const CapturedVertex& a, const CapturedVertex& b) {
-                                return key(a) == key(b);
-                              }),
-                  vertices->end());
+  for (size_t p = 0; p < range; ++p) {
+    std::sort(sorted.begin() + start[p], sorted.begin() + start[p + 1], by_coord);
+  }
+  sorted.erase(std::unique(sorted.begin(), sorted.end(),
+                           [](const CapturedVertex& a, const CapturedVertex& b) {
+                             return a.patch == b.patch && coordKey(a) == coordKey(b);
+                           }),
+               sorted.end());
+  *vertices = std::move(sorted);
+}
+
+// kTbCaptureBoundary for these options.
+uint32_t captureBoundary(const GpuPatchProgram& program, const PatchProgramOptions& options) {
+  if (!options.capture || !options.boundary_only) return kCaptureEvery;
+  switch (program.domain) {
+    case tess::Domain::kQuad:
+      return kCaptureQuadBoundary;
+    case tess::Domain::kTriangle:
+      return kCaptureTriangleBoundary;
+    default:
+      throw GpuError("patch program " + program.evaluation_shader +
+                     ": an isoline patch has no boundary to capture");
+  }
 }
 
 void checkProgram(const Context& context, const GpuPatchProgram& program, size_t level_count) {
@@ -324,8 +454,10 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                                     const PatchProgramOptions& options) {
   context.requireFeatures(tessCaptureFeatures(), "patch program");
   checkProgram(context, program, patch_levels.size());
+  const uint32_t boundary = captureBoundary(program, options);
   PatchProgramCache& cache = context.attachment<PatchProgramCache>();
-  ProgramPipeline& pipeline = cache.get(program, options.spacing);
+  ProgramPipeline& pipeline = cache.get(program, options.spacing, boundary);
+  const CallResourcesLease resources(cache);
   const VkDevice device = context.device();
 
   std::vector<tess::Levels> device_levels;
@@ -333,50 +465,69 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   for (const tess::Levels& levels : patch_levels) {
     device_levels.push_back(deviceLevels(program.domain, options.spacing, levels));
   }
-  const std::vector<Buffer> data = uploadStorageBuffers(context, program);
-  const Buffer levels_buffer = uploadPatchLevels(context, device_levels);
-  const VkBuffer levels_handle = levels_buffer.handle();
-  pipeline.levels_descriptors.bind(device, std::span(&levels_handle, 1));
+  const std::vector<VkDeviceSize> data_ranges =
+      uploadStorageBuffers(context, program, &resources->data);
+  const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources->levels);
+  auto [sets, first_use] = resources->sets.try_emplace(&pipeline);
+  if (first_use) {
+    sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
+    sets->second.levels = StorageBufferSet(device, pipeline.levels_set_layout.get(), 1);
+  }
+  const StorageBufferSet& descriptors = sets->second.data;
+  const StorageBufferSet& levels_descriptors = sets->second.levels;
+  const VkBuffer levels_handle = resources->levels.handle();
+  levels_descriptors.bind(device, std::span(&levels_handle, 1), std::span(&levels_range, 1));
+  // Binds set 0 to the current capture buffer (replaced when it grows).
   auto bindBuffers = [&]() {
-    std::vector<VkBuffer> handles{cache.capture.handle()};
-    for (const Buffer& buffer : data) handles.push_back(buffer.handle());
-    pipeline.descriptors.bind(device, handles);
+    std::vector<VkBuffer> handles{resources->capture.handle()};
+    std::vector<VkDeviceSize> ranges{VK_WHOLE_SIZE};
+    for (size_t i = 0; i < data_ranges.size(); ++i) {
+      handles.push_back(resources->data[i].handle());
+      ranges.push_back(data_ranges[i]);
+    }
+    descriptors.bind(device, handles, ranges);
   };
 
   const uint32_t first = std::min(options.first_patch, program.patch_count);
   const uint32_t end =
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
-  const DrawSetup setup{cache, pipeline, program.input_vertices_per_patch,
+  const DrawSetup setup{pipeline,
+                        options.statistics ? resources->queries.get() : VK_NULL_HANDLE,
+                        {descriptors.set, levels_descriptors.set},
+                        program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
 
-  // Warm-up (lavapipe compiles at the first draw), not captured and not counted.
-  ensureCapacity(context, cache.capture, kCaptureHeaderBytes + 64,
+  ensureCapacity(context, resources->capture, kCaptureHeaderBytes + 64,
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   bindBuffers();
-  if (first < end) {
+  // Warm-up, once per pipeline (lavapipe compiles at the first draw): not captured and
+  // not counted.
+  if (first < end && !pipeline.warmed.load()) {
     context.submitAndWait(
         [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, false); });
+    pipeline.warmed.store(true);
   }
 
   PatchProgramCapture result;
+  const bool boundary_only = boundary != kCaptureEvery;
   const std::vector<uint64_t> bounds =
-      invocationBounds(program.domain, options.spacing, device_levels, first, end);
+      captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
   for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
     const VkDeviceSize bytes = kCaptureHeaderBytes + range.capacity * kCaptureWords * 4;
-    if (cache.capture.sizeBytes() < bytes) {
-      ensureCapacity(context, cache.capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (resources->capture.sizeBytes() < bytes) {
+      ensureCapacity(context, resources->capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      bindBuffers();
     }
-    bindBuffers();
     const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
-    cache.capture.write(header, sizeof(header));
+    resources->capture.write(header, sizeof(header));
     result.submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
       recordDraws(cmd, setup, range.from, range.to, options.capture);
     });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
-    addStatistics(device, cache.queries.get(), &result.stats);
-    if (options.capture) readCapture(cache.capture, program, range.capacity, &result.vertices);
+    if (options.statistics) addStatistics(device, setup.queries, &result.stats);
+    if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
-  sortUnique(&result.vertices);
+  if (options.sort) sortUnique(&result.vertices);
   return result;
 }
 

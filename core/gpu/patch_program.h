@@ -10,10 +10,16 @@
 //   set 1, binding 0      per-patch levels (outer[4], inner[2]), indexed by tbPatchIndex();
 //                         the TCS writes them with tbWriteHarnessLevels()
 //   push constants        first patch of the draw (tbPatchIndex()), capture flag
-//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages
+//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages;
+//                         constant_id 200 is the harness's (boundary_only capture, TES)
 // Each draw covers a small batch of patches (lavapipe's single-threaded tessellator
 // slows down super-linearly with many patches per draw); capture is by SSBO with an
-// atomic counter (about 4x faster than transform feedback on lavapipe).
+// atomic counter (about 4x faster than transform feedback on lavapipe), of every TES
+// invocation or only of those on the patch boundary (what the crack measure pairs).
+//
+// Thread-safe: several threads may run programs on one Context at once. Each call has
+// its own capture buffer, query pool and descriptor sets; the compiled pipelines are
+// shared; submissions take turns on the Context's queue.
 #pragma once
 
 #include <cstdint>
@@ -37,7 +43,8 @@ struct CapturedVertex {
 
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's
-  // invocation order; duplicates (same patch, same coord) are kept once.
+  // invocation order; duplicates (same patch, same coord) are kept once. Unless
+  // PatchProgramOptions::sort is false: then in capture order, duplicates kept.
   std::vector<CapturedVertex> vertices;
   PipelineStatistics stats;      // summed over all draws
   double submit_to_fence_s = 0;  // host seconds over all submissions
@@ -50,13 +57,24 @@ struct PatchProgramOptions {
   uint32_t patch_count = UINT32_MAX;  // clamped to the program's
   uint32_t patches_per_draw = 1;
   bool capture = true;  // false: time the shaders alone (no SSBO writes)
+  // With capture: keep only the TES invocations whose gl_TessCoord lies on the patch
+  // boundary (an edge or a corner of the quad or triangle; isolines have none). The
+  // shaders run as without it; only the SSBO writes and the host's reading shrink.
+  bool boundary_only = false;
+  // false: leave the vertices in capture order with duplicates, for callers that index
+  // them by (patch, coord) themselves (the crack measure) and need no sort.
+  bool sort = true;
+  // false: no pipeline-statistics query (stats stay 0). Reading one back costs lavapipe
+  // about 40 us a call (it synchronises with its queue), more than a small draw.
+  bool statistics = true;
 };
 
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before
 // GpuPatchProgram::patch_ids is applied), one per program patch. The TCS writes them
 // bit for bit (pow2 spacing: after tess::roundPow2Levels, as the CPU tessellator does).
 // Throws GpuError when the device lacks a needed feature, a shader is not embedded,
-// the capture overflows, or patch_levels.size() != program.patch_count.
+// the capture overflows, patch_levels.size() != program.patch_count, or boundary_only is
+// asked of an isoline program.
 PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& program,
                                     std::span<const tess::Levels> patch_levels,
                                     const PatchProgramOptions& options = {});

@@ -84,8 +84,14 @@ StorageBufferSet::StorageBufferSet(VkDevice device, VkDescriptorSetLayout layout
 }
 
 void StorageBufferSet::bind(VkDevice device, std::span<const VkBuffer> buffers) const {
+  const std::vector<VkDeviceSize> whole(buffers.size(), VK_WHOLE_SIZE);
+  bind(device, buffers, whole);
+}
+
+void StorageBufferSet::bind(VkDevice device, std::span<const VkBuffer> buffers,
+                            std::span<const VkDeviceSize> ranges) const {
   std::vector<VkDescriptorBufferInfo> infos;
-  for (VkBuffer buffer : buffers) infos.push_back({buffer, 0, VK_WHOLE_SIZE});
+  for (size_t i = 0; i < buffers.size(); ++i) infos.push_back({buffers[i], 0, ranges[i]});
   std::vector<VkWriteDescriptorSet> writes;
   for (uint32_t i = 0; i < infos.size(); ++i) {
     auto write = vkStruct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);

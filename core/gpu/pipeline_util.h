@@ -36,6 +36,10 @@ struct StorageBufferSet {
   StorageBufferSet(VkDevice device, VkDescriptorSetLayout layout, uint32_t binding_count);
   // Points binding i at buffers[i] (whole range). Only while no submission uses the set.
   void bind(VkDevice device, std::span<const VkBuffer> buffers) const;
+  // Points binding i at the first ranges[i] bytes of buffers[i] (the shader's .length()
+  // sees that range). Only while no submission uses the set.
+  void bind(VkDevice device, std::span<const VkBuffer> buffers,
+            std::span<const VkDeviceSize> ranges) const;
 
   VkDescriptorPoolOwner pool;
   VkDescriptorSet set = VK_NULL_HANDLE;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/tess_pipelines.h"
@@ -21,7 +22,8 @@ constexpr uint32_t kMaxDrawsPerSubmit = 1024;
 constexpr uint32_t kCounterNotWritten = 0xffffffffu;
 
 
-// Per-device buffers and queries, reused by every call.
+// Per-device buffers and queries, reused by every call; `mutex` makes calls from several
+// threads take turns.
 struct CaptureResources {
   explicit CaptureResources(Context& context) {
     auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
@@ -34,6 +36,7 @@ struct CaptureResources {
     counters = Buffer(context, kMaxDrawsPerSubmit * sizeof(uint32_t),
                       VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_COUNTER_BUFFER_BIT_EXT);
   }
+  std::mutex mutex;  // held for a whole call
   Buffer capture;
   Buffer counters;  // bytes written per draw, from vkCmdEndTransformFeedbackEXT
   VkQueryPoolOwner queries;
@@ -153,8 +156,9 @@ GpuTessellationBatch tessellateOnGpuBatch(Context& context, tess::Domain domain,
                                           tess::Spacing spacing,
                                           std::span<const tess::Levels> levels,
                                           const tess::Options& options) {
-  TessPipelines& pipelines = context.attachment<TessPipelines>();
   CaptureResources& resources = context.attachment<CaptureResources>();
+  const std::lock_guard lock(resources.mutex);
+  TessPipelines& pipelines = context.attachment<TessPipelines>();
   const VkPipeline pipeline =
       pipelines.get({domain, spacing, options.ccw, options.point_mode}, TessOutput::kCapture);
   std::vector<tess::Levels> device_levels(levels.begin(), levels.end());
@@ -209,8 +213,9 @@ GpuTessellation tessellateOnGpu(Context& context, tess::Domain domain, tess::Spa
 TessThroughput measureTessThroughput(Context& context, tess::Domain domain, tess::Spacing spacing,
                                      const tess::Levels& levels, uint32_t draw_count,
                                      const tess::Options& options) {
-  TessPipelines& pipelines = context.attachment<TessPipelines>();
   CaptureResources& resources = context.attachment<CaptureResources>();
+  const std::lock_guard lock(resources.mutex);
+  TessPipelines& pipelines = context.attachment<TessPipelines>();
   const VkPipeline pipeline =
       pipelines.get({domain, spacing, options.ccw, options.point_mode}, TessOutput::kPlain);
   const tess::Levels device_levels =

@@ -1,33 +1,24 @@
 #include "harness/measures/cracks.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <tuple>
-#include <unordered_map>
 
-#include "core/gpu/patch_program.h"
 #include "core/mesh/topology.h"
+#include "harness/measures/crack_capture.h"
 
 namespace tb {
 namespace {
 
-constexpr int64_t kFixedOne = 1 << 16;  // the tessellator's 16.16 fixed point
-
 uint32_t cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
-
-// The domain points of one patch that lie on its boundary, in a fixed order: corners
-// first (index = corner), then each local edge's interior points by ascending t.
-struct BoundaryPoints {
-  std::vector<tess::DomainPoint> points;
-  // Per local edge: edge parameter in 16.16 -> index into `points`.
-  std::vector<std::map<int64_t, uint32_t>> edge_index;
-};
 
 tess::Levels uniformLevels(float level) {
   tess::Levels levels;
@@ -36,244 +27,138 @@ tess::Levels uniformLevels(float level) {
   return levels;
 }
 
-tess::Domain tessDomain(PatchDomain domain) {
-  return domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
-}
-
-BoundaryPoints boundaryPoints(PatchDomain domain, const tess::Tessellation& tessellation) {
-  const uint32_t corners = cornerCount(domain);
-  BoundaryPoints b;
-  b.points.resize(corners);
-  std::vector<bool> seen(corners, false);
-  b.edge_index.resize(corners);
-  std::vector<std::map<int64_t, tess::DomainPoint>> edge_points(corners);
-  for (const tess::DomainPoint& p : tessellation.points) {
-    for (uint32_t c = 0; c < corners; ++c) {
-      if (isDomainCorner(domain, c, p)) {
-        b.points[c] = p;
-        seen[c] = true;
-      }
-    }
-    for (uint32_t e = 0; e < corners; ++e) {
-      const int64_t t = domainEdgeParameter(domain, e, p);
-      if (t > 0 && t < kFixedOne) edge_points[e].emplace(t, p);
-    }
-  }
-  if (std::find(seen.begin(), seen.end(), false) != seen.end()) {
-    throw std::logic_error("cracks: the tessellation lacks a patch corner");
-  }
-  for (uint32_t e = 0; e < corners; ++e) {
-    for (const auto& [t, p] : edge_points[e]) {
-      b.edge_index[e].emplace(t, uint32_t(b.points.size()));
-      b.points.push_back(p);
-    }
-  }
-  return b;
-}
-
-using CoordBits = std::tuple<uint32_t, uint32_t, uint32_t>;
-CoordBits coordBits(const tess::DomainPoint& p) {
-  return {std::bit_cast<uint32_t>(p[0]), std::bit_cast<uint32_t>(p[1]),
-          std::bit_cast<uint32_t>(p[2])};
-}
-
-struct CoordBitsHash {
-  size_t operator()(const CoordBits& c) const {
-    return std::get<0>(c) * 0x9E3779B1u ^ std::get<1>(c) * 0x85EBCA77u ^ std::get<2>(c);
-  }
-};
-
-// The boundary points of every patch, from one tessellation per distinct (domain, levels)
-// (patches may mix quads and triangles and carry their own levels), and where each
-// patch's points start in the flat positions array.
-struct PatchBoundaries {
-  std::vector<BoundaryPoints> tessellations;  // one per distinct (domain, levels)
-  std::vector<size_t> tessellated_points;     // per tessellation: all its points
-  std::vector<uint32_t> tessellation;         // per patch: index into tessellations
-  std::vector<PatchDomain> domain;            // per patch
-  std::vector<size_t> offset;                 // per patch, then the total
-  size_t culled_patches = 0;                  // patches whose levels cull them
-
-  const BoundaryPoints& of(size_t patch) const { return tessellations[tessellation[patch]]; }
-  size_t at(size_t patch, size_t k) const { return offset[patch] + k; }
-};
-
-PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing,
-                                std::span<const tess::Levels> patch_levels) {
-  PatchBoundaries b;
-  b.tessellation.resize(patches.patchCount());
-  b.domain.resize(patches.patchCount());
-  b.offset.assign(patches.patchCount() + 1, 0);
-  std::map<std::pair<PatchDomain, tess::LevelsBits>, uint32_t> cache;
-  for (size_t p = 0; p < patches.patchCount(); ++p) {
-    const PatchDomain domain = patches.patchDomain(p);
-    b.domain[p] = domain;
-    const auto key = std::make_pair(domain, tess::levelsBits(patch_levels[p]));
-    auto found = cache.find(key);
-    if (found == cache.end()) {
-      const tess::Tessellation tessellation =
-          tess::tessellate(tessDomain(domain), spacing, patch_levels[p]);
-      // A culled tessellation has no points; an empty entry keeps the indices aligned.
-      b.tessellations.push_back(tessellation.culled ? BoundaryPoints{}
-                                                    : boundaryPoints(domain, tessellation));
-      b.tessellated_points.push_back(tessellation.points.size());
-      found = cache.emplace(key, uint32_t(b.tessellations.size() - 1)).first;
-    }
-    b.tessellation[p] = found->second;
-    if (b.tessellations[found->second].points.empty()) ++b.culled_patches;
-    b.offset[p + 1] = b.offset[p] + b.tessellations[found->second].points.size();
-  }
-  return b;
-}
-
 // Positions at every boundary point of every patch: [boundaries.at(patch, k)].
 using BoundaryPositions = std::vector<Vec3f>;
 
+// Boundary points per parallel task: below this, waking a worker costs more than it saves.
+constexpr size_t kPointsPerTask = 4096;
+
+// evaluateFloat at every boundary point, patches in parallel (each writes its own slots).
 BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundaries& boundaries) {
-  BoundaryPositions positions(boundaries.offset.back());
-  for (size_t p = 0; p < patches.patchCount(); ++p) {
-    const std::vector<tess::DomainPoint>& points = boundaries.of(p).points;
-    for (size_t k = 0; k < points.size(); ++k) {
-      positions[boundaries.at(p, k)] = patches.evaluateFloat(p, points[k]).position;
-    }
-  }
+  BoundaryPositions positions(boundaries.size());
+  const size_t count = patches.patchCount();
+  const size_t per_patch = std::max<size_t>(boundaries.size() / std::max<size_t>(count, 1), 1);
+  const size_t grain = std::max<size_t>(kPointsPerTask / per_patch, 1);
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, count, grain),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t p = range.begin(); p < range.end(); ++p) {
+          const auto& points = boundaries.of(p).points;
+          for (size_t k = 0; k < points.size(); ++k) {
+            positions[boundaries.at(p, k)] = patches.evaluateFloat(p, points[k]).position;
+          }
+        }
+      },
+      tbb::simple_partitioner());
   return positions;
 }
 
-using CoordIndex = std::unordered_map<CoordBits, uint32_t, CoordBitsHash>;
+// The pair figures of one block of shared edges and corners, in pair order.
+struct PairBlock {
+  uint64_t compared = 0, not_equal = 0, unpaired = 0, max_ulp = 0;
+  double max_scale_ulp = 0, max_gap = 0;
+  CrackLocation worst;       // first pair with the block's largest gap
+  std::vector<double> gaps;  // every pair's gap, in order (summed in order across blocks)
 
-// Per tessellation of `domain`: domain point bits -> index into its boundary points.
-std::vector<CoordIndex> coordIndices(const PatchBoundaries& boundaries, PatchDomain domain) {
-  std::vector<CoordIndex> indices(boundaries.tessellations.size());
-  std::vector<uint8_t> used(boundaries.tessellations.size(), 0);
-  for (size_t p = 0; p < boundaries.domain.size(); ++p) {
-    if (boundaries.domain[p] == domain) used[boundaries.tessellation[p]] = 1;
-  }
-  for (size_t t = 0; t < indices.size(); ++t) {
-    if (!used[t]) continue;
-    const std::vector<tess::DomainPoint>& points = boundaries.tessellations[t].points;
-    for (size_t k = 0; k < points.size(); ++k)
-      indices[t].emplace(coordBits(points[k]), uint32_t(k));
-  }
-  return indices;
-}
-
-// The program's patches' levels, by program patch (GpuPatchProgram::patch_ids).
-std::vector<tess::Levels> programLevels(const gpu::GpuPatchProgram& program,
-                                        std::span<const tess::Levels> patch_levels) {
-  std::vector<tess::Levels> levels(program.patch_count);
-  for (uint32_t i = 0; i < program.patch_count; ++i) {
-    levels[i] = patch_levels[program.patch_ids.empty() ? i : program.patch_ids.at(i)];
-  }
-  return levels;
-}
-
-float maxLevel(std::span<const tess::Levels> levels) {
-  float max_level = 0;
-  for (const tess::Levels& l : levels) {
-    max_level = std::max(
-        {max_level, l.outer[0], l.outer[1], l.outer[2], l.outer[3], l.inner[0], l.inner[1]});
-  }
-  return max_level;
-}
-
-// Runs `program` over its patches and stores the captured boundary points in `positions`.
-void gpuPositions(const SurfacePatches& patches, const gpu::GpuPatchProgram& program,
-                  const PatchBoundaries& boundaries, tess::Spacing spacing,
-                  std::span<const tess::Levels> patch_levels, gpu::Context& context,
-                  BoundaryPositions* positions, std::vector<uint8_t>* filled,
-                  CrackFigures* figures) {
-  const PatchDomain domain =
-      program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
-  const std::vector<CoordIndex> indices = coordIndices(boundaries, domain);
-  size_t points_per_patch = 0;
-  for (size_t p = 0; p < boundaries.domain.size(); ++p) {
-    if (boundaries.domain[p] != domain) continue;
-    points_per_patch =
-        std::max(points_per_patch, boundaries.tessellated_points[boundaries.tessellation[p]]);
-  }
-  const std::vector<tess::Levels> levels = programLevels(program, patch_levels);
-
-  // Chunks of about a million captured vertices bound the capture buffer; a few
-  // patches per draw keep lavapipe's single-threaded tessellator out of its
-  // super-linear regime (docs/ARCHITECTURE.md §6).
-  const uint32_t patch_count = uint32_t(patches.patchCount());
-  const uint32_t chunk =
-      uint32_t(std::clamp<size_t>((1u << 20) / std::max<size_t>(points_per_patch, 1), 1, 4096));
-  gpu::PatchProgramOptions options;
-  options.spacing = spacing;
-  options.patches_per_draw = maxLevel(levels) >= 32 ? 2 : 8;
-  for (uint32_t first = 0; first < program.patch_count; first += chunk) {
-    options.first_patch = first;
-    options.patch_count = std::min(chunk, program.patch_count - first);
-    const gpu::PatchProgramCapture capture =
-        gpu::runPatchProgram(context, program, levels, options);
-    figures->draws += capture.draws;
-    for (const gpu::CapturedVertex& v : capture.vertices) {
-      const Vec3f cpu = patches.evaluateFloat(v.patch, v.coord).position;
-      ++figures->device_points;
-      if (!(cpu == v.position)) ++figures->device_points_differing;
-      figures->device_max_ulp = std::max(figures->device_max_ulp, maxUlpDistance(cpu, v.position));
-      if (v.patch >= patch_count || boundaries.domain[v.patch] != domain) continue;
-      const CoordIndex& index = indices[boundaries.tessellation[v.patch]];
-      const auto found = index.find(coordBits(v.coord));
-      if (found == index.end()) continue;
-      (*positions)[boundaries.at(v.patch, found->second)] = v.position;
-      (*filled)[boundaries.at(v.patch, found->second)] = 1;
-    }
-  }
-}
-
-BoundaryPositions gpuPositions(const SurfacePatches& patches,
-                               const std::vector<gpu::GpuPatchProgram>& programs,
-                               const PatchBoundaries& boundaries, tess::Spacing spacing,
-                               std::span<const tess::Levels> patch_levels, gpu::Context& context,
-                               CrackFigures* figures) {
-  BoundaryPositions positions(boundaries.offset.back());
-  std::vector<uint8_t> filled(positions.size(), 0);
-  std::string shaders;
-  for (const gpu::GpuPatchProgram& program : programs) {
-    gpuPositions(patches, program, boundaries, spacing, patch_levels, context, &positions, &filled,
-                 figures);
-    shaders += (shaders.empty() ? "" : ", ") + program.evaluation_shader;
-  }
-  if (std::find(filled.begin(), filled.end(), 0) != filled.end()) {
-    throw std::runtime_error(
-        "cracks: the GPU capture lacks boundary points the CPU tessellator "
-        "emits (" +
-        shaders + ")");
-  }
-  return positions;
-}
-
-class PairAccumulator {
- public:
-  PairAccumulator(CrackFigures* figures, double scale_ulp) : f_(figures), scale_ulp_(scale_ulp) {}
-
-  void add(const Vec3f& a, const Vec3f& b, const CrackLocation& where) {
-    ++f_->points_compared;
-    if (!(a == b)) ++f_->points_not_equal;
+  void add(const Vec3f& a, const Vec3f& b, double scale_ulp, const CrackLocation& where) {
+    ++compared;
+    if (!(a == b)) ++not_equal;
     const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
     const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
-    sum_ += gap;
-    f_->max_gap_ulp = std::max(f_->max_gap_ulp, maxUlpDistance(a, b));
+    gaps.push_back(gap);
+    max_ulp = std::max(max_ulp, maxUlpDistance(a, b));
     const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
-    f_->max_gap_scale_ulp = std::max(f_->max_gap_scale_ulp, component / scale_ulp_);
-    if (!f_->worst.found || gap > f_->max_gap_world) {
-      f_->max_gap_world = gap;
-      f_->worst = where;
-      f_->worst.found = true;
+    max_scale_ulp = std::max(max_scale_ulp, component / scale_ulp);
+    if (!worst.found || gap > max_gap) {
+      max_gap = gap;
+      worst = where;
+      worst.found = true;
     }
   }
-  void finish() {
-    f_->mean_gap_world = f_->points_compared ? sum_ / double(f_->points_compared) : 0;
-    if (f_->max_gap_world == 0) f_->worst = {};
+};
+
+// Pairs every side of each shared edge and corner (after the first) with the first.
+// Items are the edges, then the corners, cut into fixed blocks that run in parallel and
+// are reduced in order, so every figure is the one a serial loop computes, bit for bit
+// (the mean's sum included), whatever the thread count.
+class Pairing {
+ public:
+  Pairing(const SharedBoundaries& shared, const PatchBoundaries& boundaries,
+          const BoundaryPositions& positions, double scale_ulp)
+      : shared_(shared), boundaries_(boundaries), positions_(positions), scale_ulp_(scale_ulp) {}
+
+  void run(CrackFigures* f) const {
+    const size_t items = shared_.edges.size() + shared_.corners.size();
+    std::vector<PairBlock> blocks((items + kItemsPerBlock - 1) / kItemsPerBlock);
+    // Blocks are fixed by the items alone; how they are spread over threads is not.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t b = range.begin(); b < range.end(); ++b) {
+                          const size_t end = std::min(items, (b + 1) * kItemsPerBlock);
+                          for (size_t i = b * kItemsPerBlock; i < end; ++i) item(i, &blocks[b]);
+                        }
+                      });
+    double sum = 0;
+    for (const PairBlock& block : blocks) {
+      f->points_compared += block.compared;
+      f->points_not_equal += block.not_equal;
+      f->unpaired_points += block.unpaired;
+      f->max_gap_ulp = std::max(f->max_gap_ulp, block.max_ulp);
+      f->max_gap_scale_ulp = std::max(f->max_gap_scale_ulp, block.max_scale_ulp);
+      for (double gap : block.gaps) sum += gap;
+      if (block.worst.found && (!f->worst.found || block.max_gap > f->max_gap_world)) {
+        f->max_gap_world = block.max_gap;
+        f->worst = block.worst;
+      }
+    }
+    f->mean_gap_world = f->points_compared ? sum / double(f->points_compared) : 0;
+    if (f->max_gap_world == 0) f->worst = {};
   }
 
  private:
-  CrackFigures* f_;
+  static constexpr size_t kItemsPerBlock = 256;
+
+  const Vec3f& at(uint32_t patch, size_t k) const { return positions_[boundaries_.at(patch, k)]; }
+
+  void item(size_t i, PairBlock* block) const {
+    if (i < shared_.edges.size()) {
+      edge(shared_.edges[i], block);
+      return;
+    }
+    const SharedCorner& corner = shared_.corners[i - shared_.edges.size()];
+    const PatchSide& a = corner.sides[0];
+    for (size_t s = 1; s < corner.sides.size(); ++s) {
+      const PatchSide& b = corner.sides[s];
+      block->add(at(a.patch, a.local), at(b.patch, b.local), scale_ulp_,
+                 {true, true, a.patch, b.patch, a.local, b.local, 0});
+    }
+  }
+
+  void edge(const SharedEdge& edge, PairBlock* block) const {
+    const PatchSide& a = edge.sides[0];
+    const BoundaryTessellation& ta = boundaries_.of(a.patch);
+    for (size_t s = 1; s < edge.sides.size(); ++s) {
+      const PatchSide& b = edge.sides[s];
+      const BoundaryTessellation& tb = boundaries_.of(b.patch);
+      for (uint32_t k_a = ta.edge_begin[a.local]; k_a < ta.edge_begin[a.local + 1]; ++k_a) {
+        const int64_t t_a = ta.edge_t[k_a];
+        const int64_t t_b = a.reversed == b.reversed ? t_a : kEdgeParameterOne - t_a;
+        const int64_t k_b = tb.edgePoint(b.local, t_b);
+        if (k_b < 0) {
+          ++block->unpaired;
+          continue;
+        }
+        block->add(
+            at(a.patch, k_a), at(b.patch, size_t(k_b)), scale_ulp_,
+            {true, false, a.patch, b.patch, a.local, b.local, double(t_a) / kEdgeParameterOne});
+      }
+    }
+  }
+
+  const SharedBoundaries& shared_;
+  const PatchBoundaries& boundaries_;
+  const BoundaryPositions& positions_;
   double scale_ulp_;
-  double sum_ = 0;
 };
 
 // The spacing of floats at the control mesh's largest |coordinate|.
@@ -286,40 +171,57 @@ double scaleUlp(const Mesh& mesh) {
   return double(std::nextafter(extent, INFINITY)) - double(extent);
 }
 
+// The device's positions against the CPU float model's at the same boundary points.
+void compareWithCpu(const BoundaryPositions& device, const BoundaryPositions& cpu,
+                    CrackFigures* f) {
+  for (size_t i = 0; i < device.size(); ++i) {
+    if (!(cpu[i] == device[i])) ++f->device_points_differing;
+    f->device_max_ulp = std::max(f->device_max_ulp, maxUlpDistance(cpu[i], device[i]));
+  }
+}
+
+// The pair figures (Pairing::run's fields) of `from`, into `to`.
+void copyPairFigures(const CrackFigures& from, CrackFigures* to) {
+  to->points_compared = from.points_compared;
+  to->points_not_equal = from.points_not_equal;
+  to->unpaired_points = from.unpaired_points;
+  to->max_gap_world = from.max_gap_world;
+  to->mean_gap_world = from.mean_gap_world;
+  to->max_gap_ulp = from.max_gap_ulp;
+  to->max_gap_scale_ulp = from.max_gap_scale_ulp;
+  to->worst = from.worst;
+}
+
+bool bitwiseEqual(const BoundaryPositions& a, const BoundaryPositions& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0;
+}
+
+// True when both hold the same boundary points for every patch, bit for bit and in the
+// same order (then positions and pair figures agree too).
+bool sameBoundaryPoints(const PatchBoundaries& a, const PatchBoundaries& b) {
+  if (a.offset != b.offset) return false;
+  std::map<std::pair<uint32_t, uint32_t>, bool> compared;  // distinct tessellation pairs
+  for (size_t p = 0; p < a.tessellation.size(); ++p) {
+    const auto key = std::make_pair(a.tessellation[p], b.tessellation[p]);
+    auto it = compared.find(key);
+    if (it == compared.end()) {
+      const BoundaryTessellation& ta = a.of(p);
+      const BoundaryTessellation& tb = b.of(p);
+      const bool same =
+          &ta == &tb || (ta.edge_begin == tb.edge_begin &&
+                         std::memcmp(ta.points.data(), tb.points.data(),
+                                     ta.points.size() * sizeof(tess::DomainPoint)) == 0);
+      it = compared.emplace(key, same).first;
+    }
+    if (!it->second) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 const char* toString(CrackBackend backend) {
   return backend == CrackBackend::kGpu ? "gpu" : "cpu_float";
-}
-
-int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p) {
-  double t = -1;
-  if (domain == PatchDomain::kQuad) {
-    const float u = p[0], v = p[1];
-    switch (edge) {
-      case 0:
-        if (v == 0) t = u;
-        break;
-      case 1:
-        if (u == 1) t = v;
-        break;
-      case 2:
-        if (v == 1) t = 1.0 - u;
-        break;
-      default:
-        if (u == 0) t = 1.0 - v;
-        break;
-    }
-  } else if (p[(edge + 2) % 3] == 0) {
-    t = p[(edge + 1) % 3];
-  }
-  return t < 0 ? -1 : int64_t(std::llround(t * double(kFixedOne)));
-}
-
-bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
-  if (domain == PatchDomain::kTriangle) return p[corner] == 1;
-  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
 }
 
 SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
@@ -360,31 +262,64 @@ SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
   return shared;
 }
 
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
-                           CrackBackend backend, gpu::Context* context) {
-  const std::vector<tess::Levels> patch_levels(patches.patchCount(), uniformLevels(level));
-  return measureCracks(patches, spacing, patch_levels, backend, context);
+CrackSession::CrackSession(const SurfacePatches& patches)
+    : patches_(patches),
+      programs_(patches.gpuPrograms()),
+      shared_(findSharedBoundaries(patches)),
+      scale_ulp_(scaleUlp(patches.controlMesh())) {
+  for (const SharedEdge& e : shared_.edges) seam_edges_ += e.seam ? 1 : 0;
 }
 
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
-                           std::span<const tess::Levels> patch_levels, CrackBackend backend,
-                           gpu::Context* context) {
-  if (patch_levels.size() != patches.patchCount()) {
+CrackSession::Evaluated& CrackSession::evaluated(tess::Spacing spacing,
+                                                 std::span<const tess::Levels> patch_levels) {
+  std::vector<tess::LevelsBits> bits(patch_levels.size());
+  std::transform(patch_levels.begin(), patch_levels.end(), bits.begin(), tess::levelsBits);
+  for (Evaluated& e : kept_) {
+    if (e.spacing == spacing && e.levels == bits) return e;
+  }
+  Evaluated e{spacing, std::move(bits), patchBoundaries(patches_, spacing, patch_levels), {}};
+  for (const Evaluated& other : kept_) {
+    if (sameBoundaryPoints(e.boundaries, other.boundaries)) {
+      e.cpu = other.cpu;
+      break;
+    }
+  }
+  if (!e.cpu) e.cpu = std::make_shared<CpuSide>();
+  if (kept_.size() == kKeptEvaluations) kept_.erase(kept_.begin());
+  kept_.push_back(std::move(e));
+  return kept_.back();
+}
+
+const CrackFigures& CrackSession::cpuPairs(const Evaluated& e) {
+  if (!e.cpu->pairs) {
+    CrackFigures pairs;
+    Pairing(shared_, e.boundaries, e.cpu->positions, scale_ulp_).run(&pairs);
+    e.cpu->pairs = pairs;
+  }
+  return *e.cpu->pairs;
+}
+
+CrackFigures CrackSession::measure(tess::Spacing spacing, float level, CrackBackend backend,
+                                   gpu::Context* context) {
+  const std::vector<tess::Levels> patch_levels(patches_.patchCount(), uniformLevels(level));
+  return measure(spacing, patch_levels, backend, context);
+}
+
+CrackFigures CrackSession::measure(tess::Spacing spacing,
+                                   std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                                   gpu::Context* context) {
+  if (patch_levels.size() != patches_.patchCount()) {
     throw std::invalid_argument("cracks: " + std::to_string(patch_levels.size()) +
-                                " per-patch levels for " + std::to_string(patches.patchCount()) +
+                                " per-patch levels for " + std::to_string(patches_.patchCount()) +
                                 " patches");
   }
   CrackFigures figures;
   figures.backend = backend;
-  const SharedBoundaries shared = findSharedBoundaries(patches);
-  figures.shared_edges = shared.edges.size();
-  figures.shared_corners = shared.corners.size();
-  for (const SharedEdge& e : shared.edges) figures.seam_edges += e.seam ? 1 : 0;
-
-  std::vector<gpu::GpuPatchProgram> programs;
+  figures.shared_edges = shared_.edges.size();
+  figures.shared_corners = shared_.corners.size();
+  figures.seam_edges = seam_edges_;
   if (backend == CrackBackend::kGpu) {
-    programs = patches.gpuPrograms();
-    if (programs.empty()) {
+    if (programs_.empty()) {
       figures.skipped_reason = "the technique has no GPU program";
       return figures;
     }
@@ -394,49 +329,45 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
     }
   }
 
-  const PatchBoundaries boundaries = patchBoundaries(patches, spacing, patch_levels);
-  if (boundaries.culled_patches > 0) {
-    figures.skipped_reason = boundaries.culled_patches == patches.patchCount()
+  const Evaluated& e = evaluated(spacing, patch_levels);
+  if (e.boundaries.culled_patches > 0) {
+    figures.skipped_reason = e.boundaries.culled_patches == patches_.patchCount()
                                  ? "the level culls every patch"
                                  : "the levels cull some patches";
     return figures;
   }
-  const BoundaryPositions positions =
-      backend == CrackBackend::kCpuFloat
-          ? cpuPositions(patches, boundaries)
-          : gpuPositions(patches, programs, boundaries, spacing, patch_levels, *context, &figures);
+  if (e.cpu->positions.size() != e.boundaries.size()) {
+    e.cpu->positions = cpuPositions(patches_, e.boundaries);
+  }
   figures.measured = true;
-
-  PairAccumulator pairs(&figures, scaleUlp(patches.controlMesh()));
-  for (const SharedEdge& edge : shared.edges) {
-    const PatchSide& a = edge.sides[0];
-    for (size_t s = 1; s < edge.sides.size(); ++s) {
-      const PatchSide& b = edge.sides[s];
-      const auto& b_index = boundaries.of(b.patch).edge_index[b.local];
-      for (const auto& [t_a, k_a] : boundaries.of(a.patch).edge_index[a.local]) {
-        const int64_t t_b = a.reversed == b.reversed ? t_a : kFixedOne - t_a;
-        const auto k_b = b_index.find(t_b);
-        if (k_b == b_index.end()) {
-          ++figures.unpaired_points;
-          continue;
-        }
-        pairs.add(positions[boundaries.at(a.patch, k_a)],
-                  positions[boundaries.at(b.patch, k_b->second)],
-                  {true, false, a.patch, b.patch, a.local, b.local, double(t_a) / kFixedOne});
-      }
-    }
+  if (backend == CrackBackend::kCpuFloat) {
+    copyPairFigures(cpuPairs(e), &figures);
+    return figures;
   }
-  for (const SharedCorner& corner : shared.corners) {
-    const PatchSide& a = corner.sides[0];
-    for (size_t s = 1; s < corner.sides.size(); ++s) {
-      const PatchSide& b = corner.sides[s];
-      pairs.add(positions[boundaries.at(a.patch, a.local)],
-                positions[boundaries.at(b.patch, b.local)],
-                {true, true, a.patch, b.patch, a.local, b.local, 0});
-    }
+  const BoundaryCapture capture =
+      captureBoundaryPositions(patches_, programs_, e.boundaries, spacing, patch_levels, *context);
+  figures.draws = capture.draws;
+  figures.device_points = capture.points_captured;
+  compareWithCpu(capture.positions, e.cpu->positions, &figures);
+  if (bitwiseEqual(capture.positions, e.cpu->positions)) {
+    copyPairFigures(cpuPairs(e), &figures);
+  } else {
+    CrackFigures pairs;
+    Pairing(shared_, e.boundaries, capture.positions, scale_ulp_).run(&pairs);
+    copyPairFigures(pairs, &figures);
   }
-  pairs.finish();
   return figures;
+}
+
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
+                           CrackBackend backend, gpu::Context* context) {
+  return CrackSession(patches).measure(spacing, level, backend, context);
+}
+
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+                           std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                           gpu::Context* context) {
+  return CrackSession(patches).measure(spacing, patch_levels, backend, context);
 }
 
 }  // namespace tb

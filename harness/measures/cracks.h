@@ -7,16 +7,25 @@
 // (edge parameter t on one side is exactly 1 - t on the other, in 16.16 fixed point); the
 // measure pairs them by t and compares the positions each side computes there: in float
 // with the shader's operation order on the CPU (SurfacePatches::evaluateFloat), or as
-// captured from the technique's own TES on the Vulkan device.
+// captured from the technique's own TES on the Vulkan device (crack_capture.h).
+//
+// Cost: tessellations are shared process-wide (crack_boundaries.h); a CrackSession finds
+// the shared edges once per asset and evaluates the CPU float positions once per
+// spacing and levels for both backends; evaluation and pairing run in parallel (TBB)
+// with results that do not depend on the thread count.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "core/gpu/context.h"
+#include "core/gpu/patch_program_desc.h"
 #include "core/mesh/float_ulp.h"  // ulpDistance, used with these figures
+#include "harness/measures/crack_boundaries.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -85,7 +94,8 @@ struct CrackFigures {
   CrackLocation worst;  // pair with the largest world gap (first one on ties)
 
   // GPU only: the captured position against evaluateFloat at the same gl_TessCoord, over
-  // every captured vertex (agreement of the CPU float model with the device).
+  // every captured vertex, i.e. every boundary point of every patch (agreement of the CPU
+  // float model with the device where the pairs are taken).
   uint64_t device_points = 0;
   uint64_t device_points_differing = 0;
   uint64_t device_max_ulp = 0;
@@ -99,9 +109,10 @@ struct CrackFigures {
 // pair point for point only when their levels for that edge agree (see
 // edge_pattern_levels.h); otherwise the extra points count as unpaired_points.
 // kGpu runs every program of patches.gpuPrograms() on `context` with the same per-patch
-// levels; without a program or a context the result is not measured and says why, as
-// when some level culls a patch. Throws gpu::GpuError when the device fails and
-// std::invalid_argument when patch_levels.size() != patches.patchCount().
+// outer levels, capturing the boundary points (captureBoundaryPositions); without a
+// program or a context the result is not measured and says why, as when some level
+// culls a patch. Throws gpu::GpuError when the device fails and std::invalid_argument
+// when patch_levels.size() != patches.patchCount().
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
                            std::span<const tess::Levels> patch_levels, CrackBackend backend,
                            gpu::Context* context = nullptr);
@@ -110,11 +121,44 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
 CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
                            CrackBackend backend, gpu::Context* context = nullptr);
 
-// Edge parameter of domain point `p` on local edge `edge` (from corner edge, t = 0, to
-// corner edge + 1, t = 1) in 16.16 fixed point (exact: tessellator coordinates are
-// multiples of 2^-16), or -1 when `p` is not on that edge.
-int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p);
-// True when `p` is corner `corner` of the domain.
-bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p);
+// measureCracks over one asset's patches, many times: the shared edges and corners are
+// found once, and the CPU float positions and pair figures are kept per set of boundary
+// points, so both backends at one spacing and levels evaluate on the CPU once, and so do
+// spacings whose boundary points coincide bit for bit (integer and pow2 at levels 1, 7.3
+// (8), 16 and 64). A device capture equal bit for bit to the CPU positions takes their
+// pair figures. Same figures as measureCracks. One thread at a time (a record's).
+class CrackSession {
+ public:
+  explicit CrackSession(const SurfacePatches& patches);
+
+  CrackFigures measure(tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
+                       CrackBackend backend, gpu::Context* context = nullptr);
+  CrackFigures measure(tess::Spacing spacing, float level, CrackBackend backend,
+                       gpu::Context* context = nullptr);
+
+ private:
+  // The CPU float side of one set of boundary points.
+  struct CpuSide {
+    std::vector<Vec3f> positions;       // per boundary point; empty until evaluated
+    std::optional<CrackFigures> pairs;  // pair figures of `positions`, once computed
+  };
+  struct Evaluated {
+    tess::Spacing spacing;
+    std::vector<tess::LevelsBits> levels;
+    PatchBoundaries boundaries;
+    std::shared_ptr<CpuSide> cpu;
+  };
+  static constexpr size_t kKeptEvaluations = 8;  // a spacing's levels and the next's
+
+  Evaluated& evaluated(tess::Spacing spacing, std::span<const tess::Levels> patch_levels);
+  const CrackFigures& cpuPairs(const Evaluated& e);
+
+  const SurfacePatches& patches_;
+  std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
+  SharedBoundaries shared_;
+  uint64_t seam_edges_ = 0;
+  double scale_ulp_ = 0;
+  std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
+};
 
 }  // namespace tb

@@ -18,9 +18,6 @@ struct LevelChoice {
 constexpr LevelChoice kCrackLevels[] = {{1.0f, "1"}, {7.3f, "7.3"}, {16.0f, "16"}, {64.0f, "64"}};
 constexpr tess::Spacing kCrackSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
                                             tess::Spacing::kFractionalEven, tess::Spacing::kPow2};
-// Level 64 on the device costs about (64+1)^2 captured vertices per patch; above this
-// many patches it is left to the CPU backend to keep the default suite short.
-constexpr size_t kGpuLevel64MaxPatches = 100;
 // Rows under per-edge levels (edge_pattern_levels.h), keyed levels = "edge_pattern" with
 // level = the pattern's base level; one base keeps the suite short.
 constexpr LevelChoice kEdgePatternBase = {7.0f, "7"};
@@ -85,10 +82,13 @@ class CracksMeasure final : public Measure {
          "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
          "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; "
          "vs_cpu_float_*: "
-         "every captured vertex against evaluateFloat at the same gl_TessCoord (0 on cpu_float "
-         "rows by definition)",
-         "gpu backend at levels 1, 7.3 and 16 on every asset, and at 64 only on assets with fewer "
-         "than 100 patches (the CPU backend covers 64 everywhere)",
+         "every captured vertex (every boundary point of every patch) against evaluateFloat at "
+         "the same gl_TessCoord (0 on cpu_float rows by definition)",
+         "gpu backend at every level on every asset; the device captures only the boundary "
+         "points (vs_cpu_float_* cover those) and tessellates each patch with its outer levels "
+         "and its inner levels lowered to at most 1 (integer, pow2), 2 (fractional_even) or 3 "
+         "(fractional_odd) wherever the CPU tessellator shows the boundary points unchanged "
+         "(the interior is never compared)",
          "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
          "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
          "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"}};
@@ -108,16 +108,15 @@ class CracksMeasure final : public Measure {
     } else if (input.gpu == nullptr) {
       gpu_reason = "skipped: no Vulkan device (" + input.gpu_unavailable + ")";
     }
+    // Both backends of one spacing and level in turn: the session evaluates on the CPU
+    // once for the two.
+    CrackSession session(patches);
     for (tess::Spacing spacing : kCrackSpacings) {
       for (const LevelChoice& level : kCrackLevels) {
         for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-          if (backend == CrackBackend::kGpu &&
-              (!gpu_reason.empty() ||
-               (level.level > 16 && patches.patchCount() >= kGpuLevel64MaxPatches))) {
-            continue;
-          }
+          if (backend == CrackBackend::kGpu && !gpu_reason.empty()) continue;
           result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, [&] {
-            return measureCracks(patches, spacing, level.level, backend, input.gpu);
+            return session.measure(spacing, level.level, backend, input.gpu);
           }));
         }
       }
@@ -136,7 +135,7 @@ class CracksMeasure final : public Measure {
         if (backend == CrackBackend::kGpu && !gpu_reason.empty()) continue;
         result.rows.push_back(
             crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey,
-                     [&] { return measureCracks(patches, spacing, levels, backend, input.gpu); }));
+                     [&] { return session.measure(spacing, levels, backend, input.gpu); }));
       }
     }
     return result;

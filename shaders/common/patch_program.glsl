@@ -8,6 +8,7 @@
 //                          patch_program_tcs.glsl), indexed by tbPatchIndex()
 //   push constants         this block
 //   constant_id 0..M-1     GpuPatchProgram::specialization (declare them in the shader)
+//   constant_id 200        the harness's kTbCaptureBoundary (patch_program_tes.glsl)
 #ifndef TB_PATCH_PROGRAM_GLSL
 #define TB_PATCH_PROGRAM_GLSL
 

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <set>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -170,6 +172,118 @@ TEST(PatchProgram, ALevelCountOtherThanThePatchCountIsAClearError) {
   const GpuPatchProgram program = bilinearProgram(3, 1.0f);
   const std::vector<tess::Levels> two(2);
   EXPECT_THROW(runPatchProgram(context, program, two), GpuError);
+}
+
+// Boundary-only capture keeps exactly the captured vertices whose gl_TessCoord lies on
+// the patch's edges. Oracles: the CPU tessellator's boundary points (coordinate bits) and
+// the full capture (same positions bit for bit). The quad test TES runs in both domains
+// (withTessModes rewrites the domain; the formula reads gl_TessCoord.xy).
+TEST(PatchProgram, BoundaryOnlyCaptureKeepsExactlyTheEdgePoints) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (tess::Domain domain : {tess::Domain::kQuad, tess::Domain::kTriangle}) {
+    GpuPatchProgram program = bilinearProgram(3, 1.0f);
+    program.domain = domain;
+    std::vector<tess::Levels> levels(3);
+    levels[0].outer = {3, 5.5f, 2, 7};
+    levels[0].inner = {4.25f, 3};
+    levels[1].outer = {9, 1, 6.5f, 4};
+    levels[1].inner = {2, 8};
+    levels[2].outer = {16, 16, 16, 16};
+    levels[2].inner = {16, 16};
+    PatchProgramOptions options;
+    options.spacing = tess::Spacing::kFractionalOdd;
+    options.patches_per_draw = 2;
+    const PatchProgramCapture every = runPatchProgram(context, program, levels, options);
+    options.boundary_only = true;
+    const PatchProgramCapture boundary = runPatchProgram(context, program, levels, options);
+    EXPECT_EQ(boundary.stats.tes_invocations, every.stats.tes_invocations);
+
+    std::vector<CapturedVertex> expected;
+    for (const CapturedVertex& v : every.vertices) {
+      const bool on_edge =
+          domain == tess::Domain::kQuad
+              ? v.coord[0] == 0 || v.coord[0] == 1 || v.coord[1] == 0 || v.coord[1] == 1
+              : v.coord[0] == 0 || v.coord[1] == 0 || v.coord[2] == 0;
+      if (on_edge) expected.push_back(v);
+    }
+    ASSERT_EQ(boundary.vertices.size(), expected.size()) << tess::toString(domain);
+    EXPECT_EQ(std::memcmp(boundary.vertices.data(), expected.data(),
+                          expected.size() * sizeof(CapturedVertex)),
+              0);
+    for (uint32_t p = 0; p < 3; ++p) {
+      const tess::Tessellation cpu =
+          tess::tessellate(domain, tess::Spacing::kFractionalOdd, levels[p]);
+      size_t on_edge = 0;
+      for (const tess::DomainPoint& d : cpu.points) {
+        const bool edge = domain == tess::Domain::kQuad
+                              ? d[0] == 0 || d[0] == 1 || d[1] == 0 || d[1] == 1
+                              : d[0] == 0 || d[1] == 0 || d[2] == 0;
+        on_edge += edge ? 1 : 0;
+      }
+      const size_t captured =
+          size_t(std::count_if(boundary.vertices.begin(), boundary.vertices.end(),
+                               [&](const CapturedVertex& v) { return v.patch == p; }));
+      EXPECT_EQ(captured, on_edge) << tess::toString(domain) << " patch " << p;
+      EXPECT_GT(cpu.points.size(), on_edge);  // the interior is there and left out
+    }
+  }
+}
+
+// Two threads running programs on one Context at once get what one thread gets running
+// them in turn (oracle: the serial captures, bit for bit, and their statistics).
+TEST(PatchProgram, ConcurrentCallsOnOneContextMatchSerialCalls) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  struct Job {
+    GpuPatchProgram program;
+    tess::Levels levels;
+    PatchProgramOptions options;
+  };
+  std::vector<Job> jobs;
+  for (uint32_t j = 0; j < 4; ++j) {
+    Job job{bilinearProgram(6 + j, 1.0f + float(j)), {}, {}};
+    const float level = 3.5f + 4.0f * float(j);
+    job.levels.outer = {level, level + 1, level, level + 2};
+    job.levels.inner = {level, level + 0.5f};
+    job.options.spacing = j % 2 ? tess::Spacing::kFractionalEven : tess::Spacing::kInteger;
+    job.options.patches_per_draw = 1 + j;
+    job.options.boundary_only = j == 3;
+    jobs.push_back(job);
+  }
+  // Thread 0 runs the jobs in order, thread 1 in reverse, so they overlap in every mix
+  // (pipeline creation included: the concurrent runs come first).
+  constexpr int kRepeats = 5;
+  auto job_of = [&](int thread, size_t k) {
+    const size_t j = k % jobs.size();
+    return thread == 0 ? j : jobs.size() - 1 - j;
+  };
+  std::vector<std::vector<PatchProgramCapture>> concurrent(2);
+  auto work = [&](int thread) {
+    for (size_t k = 0; k < kRepeats * jobs.size(); ++k) {
+      const Job& job = jobs[job_of(thread, k)];
+      concurrent[thread].push_back(runPatchProgram(context, job.program, job.levels, job.options));
+    }
+  };
+  std::thread a(work, 0), b(work, 1);
+  a.join();
+  b.join();
+  std::vector<PatchProgramCapture> serial;
+  for (const Job& job : jobs) {
+    serial.push_back(runPatchProgram(context, job.program, job.levels, job.options));
+  }
+  for (int thread = 0; thread < 2; ++thread) {
+    for (size_t k = 0; k < kRepeats * jobs.size(); ++k) {
+      const size_t j = job_of(thread, k);
+      const PatchProgramCapture& got = concurrent[thread][k];
+      SCOPED_TRACE("thread " + std::to_string(thread) + " job " + std::to_string(j));
+      ASSERT_EQ(got.vertices.size(), serial[j].vertices.size());
+      EXPECT_EQ(std::memcmp(got.vertices.data(), serial[j].vertices.data(),
+                            got.vertices.size() * sizeof(CapturedVertex)),
+                0);
+      EXPECT_EQ(got.stats.tes_invocations, serial[j].stats.tes_invocations);
+      EXPECT_EQ(got.stats.tcs_patches, serial[j].stats.tcs_patches);
+      EXPECT_EQ(got.draws, serial[j].draws);
+    }
+  }
 }
 
 }  // namespace
