@@ -21,13 +21,15 @@
 
 namespace {
 
-// A quad technique with extraordinary vertices and a triangle technique on a triangle
-// mesh with them: between them every measure has a technique it runs on.
+// Quad techniques on a quad mesh with extraordinary vertices and a triangle technique on
+// a triangle mesh with them: between them every measure has a technique it runs on (acc
+// for seed_figures, which needs the technique's probe shader).
 struct Case {
   const char* technique;
   const char* asset;
 };
-constexpr Case kCases[] = {{"gregory_acc", "catmark_xord_interior"},
+constexpr Case kCases[] = {{"acc", "catmark_xord_interior"},
+                           {"gregory_acc", "catmark_xord_interior"},
                            {"pn_triangles", "loop_xord_interior"}};
 
 void measureOnCopies(benchmark::State& state, const tb::Measure* measure,

@@ -1,6 +1,8 @@
 #include "harness/measures/instructions.h"
 
 #include <spirv-tools/optimizer.hpp>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -214,6 +216,22 @@ StageInstructionCounts countEmbeddedShader(std::string_view embedded_path,
   const std::vector<uint32_t> optimized = optimizeSpirv(words, specialization);
   return {std::string(embedded_path), countSpirvInstructions(optimized, false),
           countSpirvInstructions(optimized, true)};
+}
+
+StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_path,
+                                                  const std::vector<uint32_t>& specialization) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, std::vector<uint32_t>>, StageInstructionCounts> cache;
+  const auto key = std::make_pair(embedded_path, specialization);
+  {
+    const std::lock_guard lock(mutex);
+    if (auto found = cache.find(key); found != cache.end()) return found->second;
+  }
+  // Optimised outside the lock, so two threads count different shaders at once; a shader
+  // counted twice by a race gives the same counts.
+  StageInstructionCounts counts = countEmbeddedShader(embedded_path, specialization);
+  const std::lock_guard lock(mutex);
+  return cache.emplace(key, std::move(counts)).first->second;
 }
 
 }  // namespace tb

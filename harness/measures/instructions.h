@@ -55,4 +55,10 @@ struct StageInstructionCounts {
 StageInstructionCounts countEmbeddedShader(std::string_view embedded_path,
                                            const std::vector<uint32_t>& specialization);
 
+// The same, optimised once per (shader, specialisation) for the life of the process: the
+// counts depend on neither the asset nor the variant's patch data. Thread-safe; a shader
+// that throws is not cached (the next call throws again).
+StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_path,
+                                                  const std::vector<uint32_t>& specialization);
+
 }  // namespace tb

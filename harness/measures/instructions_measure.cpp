@@ -47,21 +47,6 @@ InstructionCounts fromOperations(const OperationCounts& o) {
   return c;
 }
 
-// Static counts depend only on the shader and its specialisation, not on the asset:
-// optimise each once per run.
-StageInstructionCounts cachedStageCounts(const std::string& shader,
-                                         const std::vector<uint32_t>& specialization) {
-  static std::mutex mutex;
-  static std::map<std::pair<std::string, std::vector<uint32_t>>, StageInstructionCounts> cache;
-  const std::lock_guard lock(mutex);
-  const auto key = std::make_pair(shader, specialization);
-  auto found = cache.find(key);
-  if (found == cache.end()) {
-    found = cache.emplace(key, countEmbeddedShader(shader, specialization)).first;
-  }
-  return found->second;
-}
-
 bool mixesDomains(const SurfacePatches& patches) {
   for (size_t p = 1; p < patches.patchCount(); ++p) {
     if (patches.patchDomain(p) != patches.patchDomain(0)) return true;
@@ -157,7 +142,7 @@ class InstructionsMeasure final : public Measure {
       for (const std::string& shader : set.shaders) {
         StageInstructionCounts counts;
         try {
-          counts = cachedStageCounts(shader, set.specialization);
+          counts = cachedEmbeddedShaderCounts(shader, set.specialization);
         } catch (const std::exception& error) {
           MetricRow row;
           row.keys["source"] = "spirv_O";

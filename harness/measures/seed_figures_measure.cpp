@@ -106,7 +106,7 @@ class SeedFiguresMeasure final : public Measure {
     const std::string probe = probePath(input.technique);
     try {
       for (const SeedOrder& order : kSeed000Orders) {
-        const StageInstructionCounts counts = countEmbeddedShader(probe, {order.order});
+        const StageInstructionCounts counts = cachedEmbeddedShaderCounts(probe, {order.order});
         MetricRow row;
         row.keys["seed"] = "000";
         row.keys["what"] = std::string("bezier position, ") + order.name;
@@ -117,7 +117,7 @@ class SeedFiguresMeasure final : public Measure {
       const auto programs = input.patches->gpuPrograms();
       if (const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front()) {
         const StageInstructionCounts tes =
-            countEmbeddedShader(program->evaluation_shader, program->specialization);
+            cachedEmbeddedShaderCounts(program->evaluation_shader, program->specialization);
         for (const auto& [what, seed_loads, seed_alu] :
              {std::tuple{"regular patch (seed 001)", 16.0, 73.0},
               std::tuple{"extraordinary patch (seed 001)", 24.0, 120.0}}) {
