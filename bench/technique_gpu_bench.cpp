@@ -44,6 +44,30 @@ tb::gpu::Context* benchContext(benchmark::State& state) {
   return context.value().get();
 }
 
+// The device, the default variant's patches of `asset` and their GPU programs; a null
+// context when the case is skipped (no device, the asset refused, no GPU program).
+struct GpuCase {
+  tb::gpu::Context* context = nullptr;
+  tb::BuiltSurface patches;
+  std::vector<tb::gpu::GpuPatchProgram> programs;
+};
+
+GpuCase prepareGpuCase(benchmark::State& state, const tb::Technique& technique,
+                       const std::string& asset) {
+  GpuCase gpu_case;
+  tb::gpu::Context* context = benchContext(state);
+  if (context == nullptr) return gpu_case;
+  gpu_case.patches = tb::bench::defaultVariantPatches(state, technique, asset);
+  if (!gpu_case.patches) return gpu_case;
+  gpu_case.programs = gpu_case.patches->gpuPrograms();
+  if (gpu_case.programs.empty()) {
+    state.SkipWithError("the technique has no GPU program");
+    return gpu_case;
+  }
+  gpu_case.context = context;
+  return gpu_case;
+}
+
 // Every program of `patches` without capture: TES invocations, submit-to-fence seconds
 // and host wall-clock seconds (the whole calls).
 struct NoCaptureRun {
@@ -70,15 +94,11 @@ NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
 
 void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
                     const std::string& asset, float level) {
-  tb::gpu::Context* context = benchContext(state);
-  if (context == nullptr) return;
-  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
-  if (!patches) return;
-  const std::vector<tb::gpu::GpuPatchProgram> programs = patches->gpuPrograms();
-  if (programs.empty()) {
-    state.SkipWithError("the technique has no GPU program");
-    return;
-  }
+  GpuCase gpu_case = prepareGpuCase(state, *technique, asset);
+  if (gpu_case.context == nullptr) return;
+  tb::gpu::Context* context = gpu_case.context;
+  const tb::BuiltSurface& patches = gpu_case.patches;
+  const std::vector<tb::gpu::GpuPatchProgram>& programs = gpu_case.programs;
   const tb::tess::Levels levels{{level, level, level, level}, {level, level}};
   double invocations = 0, seconds = 0;
   for (auto _ : state) {
@@ -102,15 +122,11 @@ enum class CrackPath {
 // The crack measure's GPU half against the same shaders without capture, in one run.
 void crackCapture(benchmark::State& state, const tb::Technique* technique, const std::string& asset,
                   float level, CrackPath path) {
-  tb::gpu::Context* context = benchContext(state);
-  if (context == nullptr) return;
-  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
-  if (!patches) return;
-  const std::vector<tb::gpu::GpuPatchProgram> programs = patches->gpuPrograms();
-  if (programs.empty()) {
-    state.SkipWithError("the technique has no GPU program");
-    return;
-  }
+  GpuCase gpu_case = prepareGpuCase(state, *technique, asset);
+  if (gpu_case.context == nullptr) return;
+  tb::gpu::Context* context = gpu_case.context;
+  const tb::BuiltSurface& patches = gpu_case.patches;
+  const std::vector<tb::gpu::GpuPatchProgram>& programs = gpu_case.programs;
   const tb::tess::Levels uniform{{level, level, level, level}, {level, level}};
   const std::vector<tb::tess::Levels> levels(patches->patchCount(), uniform);
   const tb::tess::Spacing spacing = tb::tess::Spacing::kInteger;
