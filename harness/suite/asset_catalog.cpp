@@ -27,8 +27,9 @@ std::vector<AssetRef> bundledAssets() {
        it.increment(error)) {
     if (!it->is_regular_file() || it->path().extension() != ".obj") continue;
     fs::path relative = fs::relative(it->path(), root);
+    const std::string label = "assets/" + relative.generic_string();
     relative.replace_extension();
-    assets.push_back({relative.generic_string(), it->path().string()});
+    assets.push_back({relative.generic_string(), it->path().string(), label});
   }
   std::sort(assets.begin(), assets.end(),
             [](const AssetRef& a, const AssetRef& b) { return a.name < b.name; });
@@ -40,7 +41,7 @@ AssetRef resolveAsset(const std::string& name_or_path) {
     const std::string stem = fs::path(asset.name).filename().string();
     if (asset.name == name_or_path || stem == name_or_path) return asset;
   }
-  if (fs::is_regular_file(name_or_path)) return {name_or_path, name_or_path};
+  if (fs::is_regular_file(name_or_path)) return {name_or_path, name_or_path, ""};
   throw InputError(name_or_path, "",
                    "no such file, and not a bundled asset (see `tessbench list assets`)");
 }

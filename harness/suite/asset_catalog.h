@@ -10,6 +10,11 @@ namespace tb {
 struct AssetRef {
   std::string name;  // "opensubdiv/catmark_cube" for bundled assets, the path otherwise
   std::string path;  // file to load
+  // How results and messages name the file: "assets/opensubdiv/catmark_cube.obj" for a
+  // bundled asset, whatever folder the checkout is in (so results do not depend on it);
+  // empty for a path given by the user, which is shown as given.
+  std::string label;
+  const std::string& shownPath() const { return label.empty() ? path : label; }
 };
 
 // The assets folder: $TB_ASSETS_DIR when set, else the source tree's assets/.

@@ -89,7 +89,8 @@ std::vector<Mesh> loadAssets(const std::vector<AssetRef>& refs, Results* results
   std::vector<Mesh> meshes;
   for (const AssetRef& ref : refs) {
     Mesh mesh = loadObjFile(ref.path);
-    results->assets.push_back({ref.name, ref.path, mesh.faceCount(), mesh.positions.size(),
+    mesh.source = ref.shownPath();  // what warnings and skip reasons name
+    results->assets.push_back({ref.name, ref.shownPath(), mesh.faceCount(), mesh.positions.size(),
                                describeFaceKinds(mesh), mesh.normals_computed});
     meshes.push_back(std::move(mesh));
   }

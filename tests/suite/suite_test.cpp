@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <cstdlib>
+#include <filesystem>
+
+#include "harness/results/results_json.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
@@ -66,6 +70,35 @@ TEST(Suite, BundledAssetsAreSortedAndComplete) {
   EXPECT_TRUE(std::any_of(assets.begin(), assets.end(),
                           [](const AssetRef& a) { return a.name == "opensubdiv/catmark_cube"; }));
   for (size_t i = 1; i < assets.size(); ++i) EXPECT_LT(assets[i - 1].name, assets[i].name);
+}
+
+// Oracle: the same run from a copy of the assets in another folder. Results name bundled
+// assets relative to the assets folder (skip reasons and warnings included), so two
+// checkouts, or two shards on two machines, give the same JSON.
+TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
+  const auto run = [] {
+    SuiteSelection selection;
+    // catmark_chaikin0 is skipped by acc and gregory_acc with reasons that name the file.
+    selection.assets = {resolveAsset("catmark_chaikin0"), resolveAsset("catmark_cube")};
+    selection.measures = {MeasureRegistry::instance().find("memory")};
+    Results results;
+    runSuite(selection, nullptr, &results);
+    return serializeResults(results);
+  };
+  const std::string here = run();
+  const std::filesystem::path copy = testing::scratchDirectory("assets_copy");
+  std::filesystem::create_directories(copy / "opensubdiv");
+  for (const char* name : {"catmark_chaikin0.obj", "catmark_cube.obj"}) {
+    std::filesystem::copy_file(testing::assetPath(std::string("opensubdiv/") + name),
+                               copy / "opensubdiv" / name);
+  }
+  ::setenv("TB_ASSETS_DIR", copy.c_str(), 1);
+  const std::string there = run();
+  ::unsetenv("TB_ASSETS_DIR");
+  std::filesystem::remove_all(copy);
+  EXPECT_NE(here.find("assets/opensubdiv/catmark_chaikin0.obj"), std::string::npos);
+  EXPECT_EQ(here.find(TB_SOURCE_DIR), std::string::npos);
+  EXPECT_TRUE(here == there) << "results depend on the assets folder's location";
 }
 
 }  // namespace
