@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   run->add_option("--device", run_args.device, "Vulkan device name substring (default: best)");
   run->add_option("--threads", run_args.threads,
                   "worker threads (default 0: every core); results do not depend on it")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 4096));
   run->add_option("--shard", run_args.shard,
                   "I/N: run only shard I of N (numbered from 0) of the technique x variant x "
                   "asset x measure work list; join the N run folders with `merge`");

@@ -130,6 +130,16 @@ TEST(Cli, TessellateRejectsBadLevelsInOneLine) {
   }
 }
 
+TEST(Cli, ThreadCountOutOfRangeIsRejected) {
+  for (const char* value : {"-1", "abc", "5000"}) {
+    const CommandResult r = runTessbench(std::string("run --quiet --threads ") + value);
+    EXPECT_NE(r.exit_code, 0) << value;
+    EXPECT_NE(r.output.find("--threads: Value " + std::string(value) + " not in range 0 to 4096"),
+              std::string::npos)
+        << r.output;
+  }
+}
+
 TEST(Cli, UnknownTechniqueAndMeasureAreRejected) {
   CommandResult r = runTessbench("run --quiet --technique nope");
   EXPECT_NE(r.exit_code, 0);
