@@ -5,7 +5,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <mutex>
@@ -53,9 +52,6 @@ struct SuiteRun {
   std::vector<CameraPathFn> camera_paths;
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
-  // Measures that use the device run one at a time: a gpu::Context's queue is not
-  // shared between threads.
-  mutable std::mutex gpu_mutex;
   ShardSpec shard;
 };
 
@@ -136,8 +132,6 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
     instance = fresh.get();
   }
   input.simulation = instance->simulation();
-  std::unique_lock<std::mutex> gpu_lock(run.gpu_mutex, std::defer_lock);
-  if (requirements.has(MeasureNeed::kGpu)) gpu_lock.lock();
   if (requirements.has(MeasureNeed::kView)) return runOverViews(run, measure, input);
   return measure.run(input);
 }
