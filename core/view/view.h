@@ -53,6 +53,13 @@ struct View {
   // The screen-space edge length an adaptive factor policy aims for, in pixels per
   // tessellated edge (smaller: finer tessellation). 8 is a common real-time choice.
   double target_pixels_per_edge = 8;
+  // The camera position in world units (distance-based factor policies).
+  std::array<double, 3> eye{0, 0, 0};
+  // |P[1][1]| of the projection alone: 1 / tan(vertical field of view / 2). A world
+  // length d at clip w spans d * projection_y_scale / w of NDC's height of 2.
+  double projection_y_scale = 1;
+  // The near plane's distance from the eye, world units (> 0).
+  double near_plane = 0.01;
 };
 
 // Pixel position of a world point under `view` ({x, y} in pixels, see the conventions

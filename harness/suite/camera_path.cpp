@@ -38,6 +38,9 @@ CameraPath testOrbitPath(const Aabb& bounds) {
     view.view_projection = perspective(60 * kDegree, double(kWidthPx) / kHeightPx,
                                        distance - 1.01 * radius, distance + 1.01 * radius) *
                            lookAt(eye, centre, {0, 1, 0});
+    view.eye = {eye[0], eye[1], eye[2]};
+    view.projection_y_scale = 1 / std::tan(30 * kDegree);
+    view.near_plane = distance - 1.01 * radius;
     view.viewport_width_px = kWidthPx;
     view.viewport_height_px = kHeightPx;
     view.target_pixels_per_edge = 8;
