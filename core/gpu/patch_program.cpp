@@ -31,6 +31,11 @@ static_assert(sizeof(PushBlock) == 8);
 // kTbCaptureBoundary in shaders/common/patch_program_tes.glsl: its constant_id and values.
 constexpr uint32_t kCaptureBoundaryConstantId = 200;
 constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
+// kTbFactorPolicy in shaders/common/patch_program_tcs.glsl.
+constexpr uint32_t kFactorPolicyConstantId = 201;
+// Set 1: the harness levels, then the factor policy's corners, parameters and output.
+constexpr uint32_t kLevelsSetBindings = 4;
+constexpr uint32_t kFactorCornerWordsPerPatch = 32;
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
 struct PatchLevelsBits {
@@ -70,18 +75,23 @@ struct CallResources {
   VkQueryPoolOwner queries;
   Buffer capture;
   Buffer levels;
+  Buffer factor_corners;  // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
+  Buffer factor_params;   // TcsFactorPolicy::param_words
+  Buffer factor_out;      // the levels the TCS wrote, 8 words per patch
   std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
 using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
-                              uint32_t, uint32_t>;
+                              uint32_t, uint32_t, uint32_t>;
 
 // `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
-// entry, ignored by the TCS, which does not declare it.
+// entry, ignored by the TCS, which does not declare it. `factor_policy`: kTbFactorPolicy,
+// likewise ignored by the TES.
 VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
                                       tess::Spacing spacing, uint32_t boundary,
-                                      VkShaderModule vertex, VkPipelineLayout layout) {
+                                      uint32_t factor_policy, VkShaderModule vertex,
+                                      VkPipelineLayout layout) {
   const VkShaderModuleOwner control =
       createShaderModule(device, requireEmbeddedShader(program.control_shader));
   const std::vector<uint32_t> tes_spirv = withTessModes(
@@ -94,6 +104,10 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
   if (boundary != kCaptureEvery) {
     entries.push_back({kCaptureBoundaryConstantId, uint32_t(values.size()) * 4u, 4});
     values.push_back(boundary);
+  }
+  if (factor_policy != 0) {
+    entries.push_back({kFactorPolicyConstantId, uint32_t(values.size()) * 4u, 4});
+    values.push_back(factor_policy);
   }
   VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
                                       values.data()};
@@ -119,12 +133,14 @@ class PatchProgramCache {
     vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
   }
 
-  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary) {
+  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary,
+                       uint32_t factor_policy) {
     const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
     ProgramKey key{program.control_shader, program.evaluation_shader,
                    program.specialization, int(program.domain),
                    int(spacing),           program.input_vertices_per_patch,
-                   binding_count,          boundary};
+                   binding_count,          boundary,
+                   factor_policy};
     const std::lock_guard lock(mutex_);
     if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
@@ -133,12 +149,13 @@ class PatchProgramCache {
     p->binding_count = binding_count;
     const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
     p->set_layout = createStorageBufferSetLayout(device, stages);
-    const VkShaderStageFlags levels_stage[] = {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT};
-    p->levels_set_layout = createStorageBufferSetLayout(device, levels_stage);
+    const std::vector<VkShaderStageFlags> levels_stages(kLevelsSetBindings,
+                                                        VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
+    p->levels_set_layout = createStorageBufferSetLayout(device, levels_stages);
     const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
     p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-    p->pipeline =
-        createProgramPipeline(device, program, spacing, boundary, vertex_.get(), p->layout.get());
+    p->pipeline = createProgramPipeline(device, program, spacing, boundary, factor_policy,
+                                        vertex_.get(), p->layout.get());
     return *programs_.emplace(std::move(key), std::move(p)).first->second;
   }
 
@@ -307,6 +324,14 @@ VkDeviceSize uploadPatchLevels(Context& context, std::span<const tess::Levels> d
   return bytes;
 }
 
+// Copies `words` into `buffer` (grown as needed; 16 bytes at least); returns the range.
+VkDeviceSize uploadWords(Context& context, std::span<const uint32_t> words, Buffer* buffer) {
+  const VkDeviceSize bytes = std::max<VkDeviceSize>(words.size() * 4, 16);
+  ensureCapacity(context, *buffer, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  if (!words.empty()) buffer->write(words.data(), words.size() * 4);
+  return bytes;
+}
+
 // Everything one call draws with.
 struct DrawSetup {
   const ProgramPipeline& pipeline;
@@ -434,12 +459,19 @@ uint32_t captureBoundary(const GpuPatchProgram& program, const PatchProgramOptio
   }
 }
 
-void checkProgram(const Context& context, const GpuPatchProgram& program, size_t level_count) {
+void checkProgram(const Context& context, const GpuPatchProgram& program, size_t level_count,
+                  const TcsFactorPolicy* policy) {
   if (program.input_vertices_per_patch == 0 ||
       program.input_vertices_per_patch > context.limits().maxTessellationPatchSize) {
     throw GpuError("patch program " + program.control_shader + ": " +
                    std::to_string(program.input_vertices_per_patch) +
                    " input vertices per patch is outside the device's patch size");
+  }
+  if (policy != nullptr &&
+      policy->corner_words.size() != size_t(program.patch_count) * kFactorCornerWordsPerPatch) {
+    throw GpuError("patch program " + program.control_shader + ": factor policy corners for " +
+                   std::to_string(policy->corner_words.size() / kFactorCornerWordsPerPatch) +
+                   " patches, the program has " + std::to_string(program.patch_count));
   }
   if (level_count != program.patch_count) {
     throw GpuError("patch program " + program.control_shader + ": " + std::to_string(level_count) +
@@ -453,10 +485,11 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                                     std::span<const tess::Levels> patch_levels,
                                     const PatchProgramOptions& options) {
   context.requireFeatures(tessCaptureFeatures(), "patch program");
-  checkProgram(context, program, patch_levels.size());
+  const TcsFactorPolicy* policy = options.factor_policy;
+  checkProgram(context, program, patch_levels.size(), policy);
   const uint32_t boundary = captureBoundary(program, options);
   PatchProgramCache& cache = context.attachment<PatchProgramCache>();
-  ProgramPipeline& pipeline = cache.get(program, options.spacing, boundary);
+  ProgramPipeline& pipeline = cache.get(program, options.spacing, boundary, policy ? 1u : 0u);
   const CallResourcesLease resources(cache);
   const VkDevice device = context.device();
 
@@ -468,15 +501,28 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   const std::vector<VkDeviceSize> data_ranges =
       uploadStorageBuffers(context, program, &resources->data);
   const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources->levels);
+  const std::span<const uint32_t> no_words;
+  const VkDeviceSize corners_range =
+      uploadWords(context, policy ? std::span(policy->corner_words) : no_words,
+                  &resources->factor_corners);
+  const VkDeviceSize params_range = uploadWords(
+      context, policy ? std::span(policy->param_words) : no_words, &resources->factor_params);
+  const std::vector<uint32_t> zero_out(policy ? size_t(program.patch_count) * 8 : 0, 0u);
+  const VkDeviceSize out_range = uploadWords(context, zero_out, &resources->factor_out);
   auto [sets, first_use] = resources->sets.try_emplace(&pipeline);
   if (first_use) {
     sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
-    sets->second.levels = StorageBufferSet(device, pipeline.levels_set_layout.get(), 1);
+    sets->second.levels =
+        StorageBufferSet(device, pipeline.levels_set_layout.get(), kLevelsSetBindings);
   }
   const StorageBufferSet& descriptors = sets->second.data;
   const StorageBufferSet& levels_descriptors = sets->second.levels;
-  const VkBuffer levels_handle = resources->levels.handle();
-  levels_descriptors.bind(device, std::span(&levels_handle, 1), std::span(&levels_range, 1));
+  const VkBuffer levels_handles[kLevelsSetBindings] = {
+      resources->levels.handle(), resources->factor_corners.handle(),
+      resources->factor_params.handle(), resources->factor_out.handle()};
+  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {levels_range, corners_range,
+                                                          params_range, out_range};
+  levels_descriptors.bind(device, levels_handles, levels_ranges);
   // Binds set 0 to the current capture buffer (replaced when it grows).
   auto bindBuffers = [&]() {
     std::vector<VkBuffer> handles{resources->capture.handle()};
@@ -528,6 +574,14 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
   if (options.sort) sortUnique(&result.vertices);
+  if (policy) {
+    std::vector<uint32_t> written(size_t(program.patch_count) * 8);
+    resources->factor_out.read(written.data(), written.size() * 4);
+    result.tcs_levels.resize(program.patch_count);
+    for (size_t p = 0; p < program.patch_count; ++p) {
+      std::copy_n(&written[p * 8], 6, result.tcs_levels[p].begin());
+    }
+  }
   return result;
 }
 

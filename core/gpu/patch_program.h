@@ -41,6 +41,16 @@ struct CapturedVertex {
   Vec3f normal;
 };
 
+// A view-dependent factor policy computed by the program's own TCS
+// (shaders/common/tess_factors.glsl) in place of the harness's levels. Plain words; the
+// CPU twin that packs them is harness/measures/factor_policy.h.
+struct TcsFactorPolicy {
+  // Per program patch, 4 corners of 8 words (position xyzw, normal xyzw; float bits):
+  // TbFactorCorners at set 1, binding 1.
+  std::vector<uint32_t> corner_words;
+  std::vector<uint32_t> param_words;  // TbFactorParamsBlock at set 1, binding 2
+};
+
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's
   // invocation order; duplicates (same patch, same coord) are kept once. Unless
@@ -49,6 +59,9 @@ struct PatchProgramCapture {
   PipelineStatistics stats;      // summed over all draws
   double submit_to_fence_s = 0;  // host seconds over all submissions
   uint32_t draws = 0;
+  // With PatchProgramOptions::factor_policy: the levels the TCS wrote, per program patch
+  // (patches outside the call's range stay 0), float bits outer[0..3], inner[0..1].
+  std::vector<tess::LevelsBits> tcs_levels;
 };
 
 struct PatchProgramOptions {
@@ -67,6 +80,11 @@ struct PatchProgramOptions {
   // false: no pipeline-statistics query (stats stay 0). Reading one back costs lavapipe
   // about 40 us a call (it synchronises with its queue), more than a small draw.
   bool statistics = true;
+  // Non-null: the TCS computes its own levels with this policy (kTbFactorPolicy = 1), and
+  // the call returns them (tcs_levels). patch_levels are then only the expected levels,
+  // which size the capture: pass the CPU twin's. Its corner_words must hold 32 words per
+  // program patch.
+  const TcsFactorPolicy* factor_policy = nullptr;
 };
 
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before

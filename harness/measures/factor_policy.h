@@ -1,0 +1,127 @@
+// View-dependent tessellation-factor policies: the CPU twin of
+// shaders/common/tess_factors.glsl (same float operations in the same order, so the
+// levels equal what every technique's TCS writes, bit for bit) and the packing of the
+// policy for the device (gpu::TcsFactorPolicy).
+//
+// Each policy gives one factor per patch edge, from the edge's two end corners (welded
+// control-mesh positions and the welded positions' normals), taken in lexicographic order
+// of the positions so both patches of a shared edge compute the same bits
+// (docs/ARCHITECTURE.md §5, rule 3). Inner levels come from the edges through the D3D11
+// helpers of core/tess/factor_helpers.h (ProcessTri/QuadTessFactors{Avg,Max,Min}, inside
+// scale 1).
+//
+// Policies and their parameter `target`:
+// - uniform: every edge = target (a tessellation level); the view is ignored.
+// - distance: target * diagonal / |eye - edge midpoint| (target: the level at one
+//   bounding-box diagonal from the eye; the SubD11 sample's and most tutorials' choice,
+//   size-blind: a long and a short edge at one distance get one factor).
+// - sphere_diameter: the edge's bounding sphere (centre the midpoint, diameter the edge
+//   length d) projected to clip space, |d * P[1][1] / w| of NDC's height 2, times
+//   H / (2 * target) with target in pixels per edge (Dudash, "Dynamic Hardware
+//   Tessellation Basics", NVIDIA 2012).
+// - lp2_edge: max(L R C / D0, L R C / D1), L the edge length, R the viewport height in
+//   pixels, C = target, D0, D1 the distances from the eye to the two ends (CAPCOM, "Lost
+//   Planet 2: DirectX 11 Features"). Its reductions: `_silhouette` scales by
+//   1 - (1 - s_min) |n . v| (n the normalised sum of the end normals, v towards the eye
+//   from the midpoint): full factor at the silhouette, s_min facing the camera;
+//   `_roundness` by s_min + (1 - s_min) min(1, (1 - n0 . n1) / (1 - cos a)): s_min where
+//   the end normals agree (a flat edge), full where they turn by a or more (PN and Phong
+//   only in the talk, whose surfaces bend with the vertex normals).
+// - the suffix `_order_dependent` on any policy takes the corners in patch order instead:
+//   deliberately not crack-safe (the midpoint a + (b - a) / 2 rounds differently when the
+//   two patches run the edge in opposite directions), so the measure can be seen to fail.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/gpu/patch_program.h"
+#include "core/mesh/vec.h"
+#include "core/tess/tessellator.h"
+#include "core/view/view.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+enum class FactorPolicyKind : uint32_t {  // TbFactorParams::policy
+  kUniform = 0,
+  kDistance = 1,
+  kSphereDiameter = 2,
+  kLp2Edge = 3,
+};
+
+enum class InnerReduction : uint32_t { kAverage = 0, kMax = 1, kMin = 2 };
+
+struct FactorPolicy {
+  FactorPolicyKind kind = FactorPolicyKind::kSphereDiameter;
+  bool silhouette = false;       // lp2_edge only
+  bool roundness = false;        // lp2_edge only
+  bool order_dependent = false;  // any policy; not crack-safe
+  double target = 8;             // see the header comment for its unit per policy
+  InnerReduction reduction = InnerReduction::kAverage;
+  double min_scale = 0.25;          // s_min of the reductions, (0, 1]
+  double roundness_angle_deg = 20;  // a: end normals turning this much get the full factor
+
+  // "sphere_diameter", "lp2_edge_silhouette", "distance_order_dependent", ...
+  std::string name() const;
+  // The unit of `target` for this policy ("level", "px/edge", "C").
+  const char* targetUnit() const;
+};
+
+// The policy named `name` (as name() writes it) with its default target; nullopt when no
+// policy has that name.
+std::optional<FactorPolicy> parseFactorPolicy(std::string_view name);
+
+// The default target of each kind: uniform 8 (a level), distance 16 (the level at one
+// diagonal), sphere_diameter 8 px per edge, lp2_edge 0.15 (about 8 px per edge at a
+// 45 degree field of view: C = P[1][1] / (2 * 8)).
+double defaultTarget(FactorPolicyKind kind);
+
+// One patch corner as the policy reads it.
+struct FactorCorner {
+  Vec3f position;  // welded control-mesh position, world units
+  Vec3f normal;    // the welded position's unit normal (area-weighted face normals)
+};
+
+// The corners of every patch (SurfacePatches order; a triangle's 4th is zero).
+struct FactorCorners {
+  std::vector<std::array<FactorCorner, 4>> patches;
+  std::vector<PatchDomain> domains;
+};
+FactorCorners factorCorners(const SurfacePatches& patches);
+
+// The policy and the view as the shader reads them (TbFactorParamsBlock), in float.
+struct FactorParams {
+  std::array<float, 16> view_projection{};  // column-major
+  Vec3f eye;
+  float viewport_height_px = 1;
+  float projection_y_scale = 1;
+  float target = 1;       // distance: already times the diagonal (world_scale)
+  float pixel_scale = 1;  // H / (2 target)
+  float min_scale = 1;
+  float roundness_span = 1;  // 1 - cos(roundness angle)
+  uint32_t policy = 0, flags = 0, reduction = 0, spacing = 0;
+};
+// world_scale: the asset's bounding-box diagonal (distance's unit).
+FactorParams factorParams(const FactorPolicy& policy, const View& view, tess::Spacing spacing,
+                          double world_scale);
+
+// The twin of tbEdgeFactor: the raw factor of the edge from corner a to corner b.
+float edgeFactor(const FactorParams& params, const FactorCorner& a, const FactorCorner& b);
+
+// The twin of tbWritePolicyLevels: one patch's levels (culled patches: all 0).
+tess::Levels policyLevels(const FactorParams& params, PatchDomain domain,
+                          const std::array<FactorCorner, 4>& corners);
+std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners);
+
+// The device's input for `program` (one of the patches' gpuPrograms()): corners in program
+// patch order (GpuPatchProgram::patch_ids) and the parameter words for its domain.
+gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCorners& corners,
+                                     const gpu::GpuPatchProgram& program);
+
+}  // namespace tb

@@ -1,0 +1,237 @@
+// View-dependent tessellation-factor policies, computed in every technique's TCS when the
+// harness turns them on (kTbFactorPolicy != 0, see patch_program_tcs.glsl). The CPU twin is
+// harness/measures/factor_policy.{h,cpp}: same operations in the same order, in float, so
+// the levels a TCS writes are bitwise the twin's (tests/measures/factor_policy_gpu_test.cpp).
+//
+//   set 1, binding 1   per patch, 4 corners: welded position and shared unit normal
+//   set 1, binding 2   the policy and the view (TbFactorParams)
+//   set 1, binding 3   the levels the TCS wrote, per patch (read back by the harness)
+//
+// One factor per patch edge, from the edge's two end corners only (docs/ARCHITECTURE.md §5,
+// rule 3): the corners are taken in an order both patches of a shared edge agree on (the
+// lexicographically smaller position first), so the factor is a function of the edge alone.
+// The `order_dependent` option skips that ordering (patch order): the midpoint a + (b - a)/2
+// then rounds differently on the two sides, which the adaptivity measure must catch.
+// Inner levels come from the edges with the D3D11 helpers (ProcessTri/QuadTessFactors
+// Avg/Max/Min, inside scale 1), ported from core/tess/factor_helpers.cpp.
+#ifndef TB_TESS_FACTORS_GLSL
+#define TB_TESS_FACTORS_GLSL
+
+#include "float_order.glsl"
+
+// TbFactorParams::policy
+const uint kTbPolicyUniform = 0u;         // every edge = target (a level)
+const uint kTbPolicyDistance = 1u;        // target / |eye - midpoint| (target: level x world units)
+const uint kTbPolicySphereDiameter = 2u;  // |d P11 / w| * H / (2 target px)
+const uint kTbPolicyLp2Edge = 3u;         // max(L R C / D0, L R C / D1), C = target
+// TbFactorParams::flags
+const uint kTbFactorOrderDependent = 1u;
+const uint kTbFactorSilhouette = 2u;  // scale by 1 - (1 - s_min) |n . v|
+const uint kTbFactorRoundness = 4u;   // scale by how far the end normals turn
+// TbFactorParams::reduction
+const uint kTbReduceAverage = 0u;
+const uint kTbReduceMax = 1u;
+const uint kTbReduceMin = 2u;
+// TbFactorParams::spacing (tess::Spacing)
+const uint kTbSpacingInteger = 0u;
+const uint kTbSpacingPow2 = 1u;
+const uint kTbSpacingFractionalOdd = 2u;
+const uint kTbSpacingFractionalEven = 3u;
+
+struct TbFactorCorner {
+  vec4 position;  // xyz: welded control-mesh position, world units
+  vec4 normal;    // xyz: the welded position's unit normal (the same on both sides of a seam)
+};
+
+layout(std430, set = 1, binding = 1) readonly buffer TbFactorCorners {
+  TbFactorCorner tb_factor_corners[];  // 4 per patch (triangles use 3)
+};
+
+layout(std430, set = 1, binding = 2) readonly buffer TbFactorParamsBlock {
+  mat4 view_projection;      // world -> Vulkan clip space, column-major
+  vec4 eye;                  // xyz: camera position, world units
+  float viewport_height_px;  // H, also lp2_edge's R
+  float projection_y_scale;  // |P[1][1]|
+  float target;              // the policy's parameter (see kTbPolicy*)
+  float pixel_scale;         // sphere_diameter: H / (2 target)
+  float min_scale;           // s_min of the silhouette and roundness reductions, (0, 1]
+  float roundness_span;      // roundness: 1 - cos(angle at which an edge counts as round)
+  uint policy;
+  uint flags;
+  uint reduction;
+  uint spacing;
+  uint domain;  // 0 triangle, 1 quad (tess::Domain)
+  uint pad0;
+} tb_factor;
+
+// The levels the TCS wrote (float bits, the TbPatchLevels layout), per patch.
+layout(std430, set = 1, binding = 3) writeonly buffer TbFactorOut {
+  uvec4 tb_factor_out[];  // 2 per patch: outer[0..3], inner[0..1]
+};
+
+// D3D11 IEEE-754R min/max: a NaN second operand yields the first.
+float tbD3dMin(float a, float b) { return isnan(b) ? a : (a < b ? a : b); }
+float tbD3dMax(float a, float b) { return isnan(b) ? a : (a >= b ? a : b); }
+float tbCleanupFactor(float x) { return (isnan(x) || x < 1.0) ? 1.0 : x; }
+
+float tbRoundUpFactor(float x, uint spacing) {
+  if (spacing == kTbSpacingPow2) {
+    const uint bits = floatBitsToUint(x);
+    if ((bits & 0x007fffffu) == 0u) return x;
+    return uintBitsToFloat((bits & 0x7f800000u) + 0x00800000u);
+  }
+  return spacing == kTbSpacingInteger ? ceil(x) : x;
+}
+
+float tbClampFactor(float x, uint spacing) {
+  const float low = spacing == kTbSpacingFractionalEven ? 2.0 : 1.0;
+  const float high = spacing == kTbSpacingFractionalOdd ? 63.0 : 64.0;
+  const float at_least_low = x > low ? x : low;
+  return high < at_least_low ? high : at_least_low;
+}
+
+bool tbHardwareInteger(uint spacing) {
+  return spacing == kTbSpacingInteger || spacing == kTbSpacingPow2;
+}
+
+// Left to right over e[0..n-1]; the average divides once at the end.
+float tbReduce(uint reduction, float e[4], uint n) {
+  precise float result = e[0];
+  for (uint i = 1u; i < n; ++i) {
+    if (reduction == kTbReduceAverage) {
+      result = result + e[i];
+    } else if (reduction == kTbReduceMax) {
+      result = tbD3dMax(result, e[i]);
+    } else {
+      result = tbD3dMin(result, e[i]);
+    }
+  }
+  if (reduction == kTbReduceAverage) result = result / float(n);
+  return result;
+}
+
+// The rounded inside factor (factor_helpers.cpp insideFactor, inside scale 1).
+float tbInsideFactor(uint reduction, float e[4], uint n, uint spacing) {
+  precise float scaled = tbReduce(reduction, e, n) * 1.0;
+  float rounded = tbClampFactor(scaled, spacing);
+  bool odd;
+  if (tbHardwareInteger(spacing)) {
+    rounded = tbRoundUpFactor(rounded, spacing);
+    odd = !(((int(rounded) & 1) == 0) || rounded == 1.0);
+  } else {
+    odd = spacing == kTbSpacingFractionalOdd;
+  }
+  if (odd && rounded < 3.0) {
+    const uint widen = reduction == kTbReduceMax ? kTbReduceMax : kTbReduceAverage;
+    rounded = tbClampFactor(tbD3dMin(3.0, tbReduce(widen, e, n)), spacing);
+    if (spacing == kTbSpacingInteger) rounded = ceil(rounded);
+  }
+  return rounded;
+}
+
+// (row 3 of M) . (p, 1), left to right: the clip w of p.
+float tbClipW(vec3 p) {
+  const mat4 m = tb_factor.view_projection;
+  precise float w = m[0][3] * p.x + m[1][3] * p.y + m[2][3] * p.z + m[3][3];
+  return w;
+}
+
+float tbLength(vec3 v) {
+  precise float len = sqrt(tbDot(v, v));
+  return len;
+}
+
+// a before b when a is lexicographically smaller (x, then y, then z).
+bool tbPositionLess(vec3 a, vec3 b) {
+  if (a.x != b.x) return a.x < b.x;
+  if (a.y != b.y) return a.y < b.y;
+  return a.z < b.z;
+}
+
+// The raw factor of the edge from corner a to corner b (unclamped; the helpers clamp).
+float tbEdgeFactor(vec3 a, vec3 b, vec3 na, vec3 nb) {
+  if ((tb_factor.flags & kTbFactorOrderDependent) == 0u && tbPositionLess(b, a)) {
+    const vec3 p = a;
+    a = b;
+    b = p;
+    const vec3 n = na;
+    na = nb;
+    nb = n;
+  }
+  const vec3 eye = tb_factor.eye.xyz;
+  precise vec3 edge = b - a;
+  precise vec3 mid = a + edge * 0.5;
+  precise float factor;
+  if (tb_factor.policy == kTbPolicyUniform) {
+    factor = tb_factor.target;
+  } else if (tb_factor.policy == kTbPolicyDistance) {
+    factor = tb_factor.target / tbLength(mid - eye);
+  } else if (tb_factor.policy == kTbPolicySphereDiameter) {
+    precise float ndc_height = abs(tbLength(edge) * tb_factor.projection_y_scale / tbClipW(mid));
+    factor = ndc_height * tb_factor.pixel_scale;
+  } else {
+    precise float lrc = tbLength(edge) * tb_factor.viewport_height_px * tb_factor.target;
+    factor = max(lrc / tbLength(a - eye), lrc / tbLength(b - eye));
+  }
+  if ((tb_factor.flags & kTbFactorSilhouette) != 0u) {
+    const vec3 n = tbNormalize(na + nb);
+    const vec3 v = tbNormalize(eye - mid);
+    precise float scale = 1.0 - (1.0 - tb_factor.min_scale) * abs(tbDot(n, v));
+    factor = factor * scale;
+  }
+  if ((tb_factor.flags & kTbFactorRoundness) != 0u) {
+    precise float turn = (1.0 - tbDot(na, nb)) / tb_factor.roundness_span;
+    precise float scale = tb_factor.min_scale + (1.0 - tb_factor.min_scale) * min(turn, 1.0);
+    factor = factor * scale;
+  }
+  return factor;
+}
+
+// Computes this patch's levels from the policy, writes them to gl_TessLevel* and to the
+// read-back buffer. Call from one invocation.
+void tbWritePolicyLevels(uint patch_index) {
+  const bool quad = tb_factor.domain == 1u;
+  const uint n = quad ? 4u : 3u;
+  vec3 p[4];
+  vec3 nrm[4];
+  for (uint c = 0u; c < 4u; ++c) {
+    p[c] = tb_factor_corners[patch_index * 4u + c].position.xyz;
+    nrm[c] = tb_factor_corners[patch_index * 4u + c].normal.xyz;
+  }
+  // gl_TessLevelOuter[j] is the edge between corners (start, end): quad (u = 0, v = 0,
+  // u = 1, v = 1) = (3,0), (0,1), (1,2), (2,3); triangle (u = 0, v = 0, w = 0) = (1,2),
+  // (2,0), (0,1).
+  float raw[4];
+  for (uint j = 0u; j < n; ++j) {
+    const uint start = quad ? (j + 3u) % 4u : (j + 1u) % 3u;
+    const uint end = quad ? j : (j + 2u) % 3u;
+    raw[j] = tbEdgeFactor(p[start], p[end], nrm[start], nrm[end]);
+  }
+  if (!quad) raw[3] = 0.0;
+  float outer[4] = float[4](0.0, 0.0, 0.0, 0.0);
+  float inner = 0.0;
+  bool culled = false;
+  for (uint j = 0u; j < n; ++j) culled = culled || !(raw[j] > 0.0);
+  if (!culled) {
+    float cleaned[4];
+    for (uint j = 0u; j < 4u; ++j) {
+      cleaned[j] = tbCleanupFactor(raw[j]);
+      if (j < n) outer[j] = tbClampFactor(tbRoundUpFactor(cleaned[j], tb_factor.spacing),
+                                          tb_factor.spacing);
+    }
+    // Quads reduce (v = 0, v = 1, u = 0, u = 1), as ProcessQuadTessFactors* does.
+    float e[4] = quad ? float[4](cleaned[1], cleaned[3], cleaned[0], cleaned[2]) : cleaned;
+    inner = tbInsideFactor(tb_factor.reduction, e, n, tb_factor.spacing);
+  }
+  gl_TessLevelOuter[0] = outer[0];
+  gl_TessLevelOuter[1] = outer[1];
+  gl_TessLevelOuter[2] = outer[2];
+  gl_TessLevelOuter[3] = outer[3];
+  gl_TessLevelInner[0] = inner;
+  gl_TessLevelInner[1] = quad ? inner : 0.0;
+  tb_factor_out[patch_index * 2u] = floatBitsToUint(vec4(outer[0], outer[1], outer[2], outer[3]));
+  tb_factor_out[patch_index * 2u + 1u] = uvec4(floatBitsToUint(inner),
+                                         floatBitsToUint(quad ? inner : 0.0), 0u, 0u);
+}
+
+#endif
