@@ -94,7 +94,17 @@ VkDevice createDevice(const Candidate& chosen) {
   }
   if (f.transform_feedback) {
     *next = &xfb;
+    next = &xfb.pNext;
     extensions.push_back(VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME);
+  }
+  auto pgq = vkStruct<VkPhysicalDevicePrimitivesGeneratedQueryFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PRIMITIVES_GENERATED_QUERY_FEATURES_EXT);
+  if (f.primitives_generated_query) {
+    pgq.primitivesGeneratedQuery = VK_TRUE;
+    pgq.primitivesGeneratedQueryWithRasterizerDiscard = VK_TRUE;
+    *next = &pgq;
+    next = &pgq.pNext;
+    extensions.push_back(VK_EXT_PRIMITIVES_GENERATED_QUERY_EXTENSION_NAME);
   }
 
   const float priority = 1.0f;

@@ -22,6 +22,7 @@ constexpr FeatureName kFeatureNames[] = {
     {"dynamicRendering", &DeviceFeatures::dynamic_rendering},
     {"maintenance4", &DeviceFeatures::maintenance4},
     {"timestamps", &DeviceFeatures::timestamps},
+    {"primitivesGeneratedQueryWithRasterizerDiscard", &DeviceFeatures::primitives_generated_query},
 };
 
 std::string_view deviceTypeName(VkPhysicalDeviceType type) {
@@ -104,7 +105,15 @@ DeviceFeatures queryDeviceFeatures(VkPhysicalDevice physical_device, uint32_t qu
     *next = &v13;
     next = &v13.pNext;
   }
-  if (has_xfb) *next = &xfb;
+  if (has_xfb) {
+    *next = &xfb;
+    next = &xfb.pNext;
+  }
+  const bool has_pgq =
+      hasDeviceExtension(physical_device, VK_EXT_PRIMITIVES_GENERATED_QUERY_EXTENSION_NAME);
+  auto pgq = vkStruct<VkPhysicalDevicePrimitivesGeneratedQueryFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PRIMITIVES_GENERATED_QUERY_FEATURES_EXT);
+  if (has_pgq) *next = &pgq;
   vkGetPhysicalDeviceFeatures2(physical_device, &features2);
 
   uint32_t family_count = 0;
@@ -122,6 +131,8 @@ DeviceFeatures queryDeviceFeatures(VkPhysicalDevice physical_device, uint32_t qu
   f.transform_feedback = has_xfb && xfb.transformFeedback;
   f.dynamic_rendering = is_13 && v13.dynamicRendering;
   f.maintenance4 = is_13 && v13.maintenance4;
+  f.primitives_generated_query = has_pgq && pgq.primitivesGeneratedQuery &&
+                                 pgq.primitivesGeneratedQueryWithRasterizerDiscard;
   f.timestamps = queue_family < family_count && families[queue_family].timestampValidBits > 0;
   return f;
 }

@@ -21,6 +21,9 @@ struct DeviceFeatures {
   bool dynamic_rendering = false;  // Vulkan 1.3
   bool maintenance4 = false;       // Vulkan 1.3; glslang's vulkan1.3 compute uses LocalSizeId
   bool timestamps = false;         // graphics+compute queue timestamps (timestampValidBits > 0)
+  // VK_EXT_primitives_generated_query with rasterizer discard: the triangles the
+  // tessellator emits, counted by the device (patch programs run with discard).
+  bool primitives_generated_query = false;
 };
 
 // Features the tessellation capture path (tess_capture.h) cannot do without.

@@ -73,6 +73,7 @@ struct CallResources {
     StorageBufferSet levels;  // set 1: per-patch levels
   };
   VkQueryPoolOwner queries;
+  VkQueryPoolOwner primitives;  // VK_QUERY_TYPE_PRIMITIVES_GENERATED_EXT, when supported
   Buffer capture;
   Buffer levels;
   Buffer factor_corners;  // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
@@ -176,6 +177,15 @@ class PatchProgramCache {
     VkQueryPool pool = VK_NULL_HANDLE;
     vkCheck(vkCreateQueryPool(context_.device(), &info, nullptr, &pool), "vkCreateQueryPool");
     resources->queries = VkQueryPoolOwner(context_.device(), pool);
+    if (context_.features().primitives_generated_query) {
+      auto primitives = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+      primitives.queryType = VK_QUERY_TYPE_PRIMITIVES_GENERATED_EXT;
+      primitives.queryCount = 1;
+      VkQueryPool primitives_pool = VK_NULL_HANDLE;
+      vkCheck(vkCreateQueryPool(context_.device(), &primitives, nullptr, &primitives_pool),
+              "vkCreateQueryPool (primitives generated)");
+      resources->primitives = VkQueryPoolOwner(context_.device(), primitives_pool);
+    }
     return resources;
   }
 
@@ -336,6 +346,7 @@ VkDeviceSize uploadWords(Context& context, std::span<const uint32_t> words, Buff
 struct DrawSetup {
   const ProgramPipeline& pipeline;
   VkQueryPool queries = VK_NULL_HANDLE;
+  VkQueryPool primitives = VK_NULL_HANDLE;  // with queries, when the device counts primitives
   VkDescriptorSet sets[2] = {};  // set 0 (capture + data), set 1 (levels)
   uint32_t input_vertices_per_patch = 1;
   uint32_t per_draw = 1;
@@ -347,24 +358,38 @@ void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uin
                  bool capture) {
   const VkPipelineLayout layout = setup.pipeline.layout.get();
   const bool query = setup.queries != VK_NULL_HANDLE;
+  const bool count_primitives = query && setup.primitives != VK_NULL_HANDLE;
   if (query) vkCmdResetQueryPool(cmd, setup.queries, 0, 1);
+  if (count_primitives) vkCmdResetQueryPool(cmd, setup.primitives, 0, 1);
   beginDiscardRendering(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, setup.pipeline.pipeline.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, setup.sets, 0,
                           nullptr);
   if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
+  if (count_primitives) vkCmdBeginQuery(cmd, setup.primitives, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
     const uint32_t count = std::min(setup.per_draw, to - p);
     const PushBlock push{p, capture ? 1u : 0u};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
   }
+  if (count_primitives) vkCmdEndQuery(cmd, setup.primitives, 0);
   if (query) vkCmdEndQuery(cmd, setup.queries, 0);
   vkCmdEndRendering(cmd);
   barrierShaderWritesToHost(cmd);
 }
 
-void addStatistics(VkDevice device, VkQueryPool queries, PipelineStatistics* stats) {
+void addStatistics(VkDevice device, VkQueryPool queries, VkQueryPool primitives,
+                   PipelineStatistics* stats) {
+  if (primitives != VK_NULL_HANDLE) {
+    uint64_t generated = 0;
+    vkCheck(vkGetQueryPoolResults(device, primitives, 0, 1, sizeof(generated), &generated,
+                                  sizeof(generated),
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+            "vkGetQueryPoolResults (primitives generated)");
+    stats->primitives_generated += generated;
+    stats->primitives_counted = true;
+  }
   uint64_t values[kTessStatisticCount] = {};
   // The fence has signalled, so the results are available; lavapipe's WAIT path costs
   // ~0.1 ms a call even then, so it is only the fallback.
@@ -539,6 +564,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
   const DrawSetup setup{pipeline,
                         options.statistics ? resources->queries.get() : VK_NULL_HANDLE,
+                        options.statistics ? resources->primitives.get() : VK_NULL_HANDLE,
                         {descriptors.set, levels_descriptors.set},
                         program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
@@ -570,7 +596,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
       recordDraws(cmd, setup, range.from, range.to, options.capture);
     });
     result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
-    if (options.statistics) addStatistics(device, setup.queries, &result.stats);
+    if (options.statistics) addStatistics(device, setup.queries, setup.primitives, &result.stats);
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
   if (options.sort) sortUnique(&result.vertices);

@@ -25,6 +25,10 @@ struct PipelineStatistics {
   uint64_t tes_invocations = 0;       // = tessellator vertices; 0 when culled. Usually the
                                       // distinct points, but more where fractional spacing
                                       // puts vertices on one 2^-16 coordinate (see below)
+  // Triangles the tessellator emitted (VK_EXT_primitives_generated_query), with
+  // primitives_counted; 0 and false where the device lacks the query.
+  uint64_t primitives_generated = 0;
+  bool primitives_counted = false;
 };
 
 // points are the distinct gl_TessCoord values (bitwise). Vertices the tessellator emits on

@@ -96,6 +96,36 @@ TEST(PatchProgram, TimingRunCapturesNothingButCountsInvocations) {
   EXPECT_EQ(capture.stats.tes_invocations, 3u * 81u);
 }
 
+// The device's triangle count (VK_EXT_primitives_generated_query, under rasterizer
+// discard) equals the CPU tessellator's, under per-patch fractional levels too.
+TEST(PatchProgram, PrimitivesGeneratedEqualTheTessellatorsTriangles) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  if (!context.features().primitives_generated_query) {
+    GTEST_SKIP() << "the device has no primitives-generated query with rasterizer discard";
+  }
+  const GpuPatchProgram program = bilinearProgram(4, 1.0f);
+  const std::vector<tess::Levels> levels = {{{3.5f, 7, 2.25f, 9}, {5.5f, 4}},
+                                            {{1, 1, 1, 1}, {1, 1}},
+                                            {{12.75f, 3, 3, 5}, {8.25f, 2.5f}},
+                                            {{0, 4, 4, 4}, {4, 4}}};  // culled
+  for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
+                                tess::Spacing::kFractionalEven}) {
+    uint64_t triangles = 0, points = 0;
+    for (const tess::Levels& l : levels) {
+      const tess::Tessellation t = tess::tessellate(tess::Domain::kQuad, spacing, l);
+      triangles += t.triangles.size();
+      points += t.points.size();
+    }
+    PatchProgramOptions options;
+    options.spacing = spacing;
+    options.capture = false;
+    const PatchProgramCapture capture = runPatchProgram(context, program, levels, options);
+    EXPECT_TRUE(capture.stats.primitives_counted);
+    EXPECT_EQ(capture.stats.primitives_generated, triangles) << tess::toString(spacing);
+    EXPECT_EQ(capture.stats.tes_invocations, points) << tess::toString(spacing);
+  }
+}
+
 TEST(PatchProgram, AMissingShaderIsAClearError) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   GpuPatchProgram program = bilinearProgram(1, 1.0f);
