@@ -96,14 +96,25 @@ std::string directionLabel(Direction direction) {
   return "";
 }
 
+// Rows that carry this key are a measure's summary (e.g. adaptivity's triangles at 1 px):
+// rendered first, in their own table, before the declaration and the detail rows.
+constexpr const char* kSummaryRowKey = "summary";
+
+bool isSummaryRow(const MetricRow& row) { return row.keys.contains(kSummaryRowKey); }
+
+using RowFilter = bool (*)(const MetricRow&);
+
+// The metric columns of the measure's rows that pass `filter`: declared metrics in
+// declaration order, then undeclared ones in order of appearance.
 std::vector<Column> metricColumns(const Results& results, const std::string& measure_id,
-                                  const MeasureDeclaration* declaration) {
+                                  const MeasureDeclaration* declaration, RowFilter filter) {
   std::vector<std::string> seen;  // emitted names, in order of appearance
   std::map<std::string, std::string> row_unit;
   for (const Record& record : results.records) {
     for (const MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
       for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
         for (const Metric& metric : row.metrics) {
           if (row_unit.emplace(metric.name, metric.unit).second) seen.push_back(metric.name);
         }
@@ -176,24 +187,25 @@ void appendRecordNotes(const Results& results, const std::string& measure_id, st
   if (any) *out += "\n";
 }
 
-// One table per measure: a line per record row, a column per metric.
-void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure_id);
+// One table of the measure's rows that pass `filter`: a line per row, a column per key and
+// metric. Records whose measure did not run are listed when `with_status_rows`.
+void appendTable(const Results& results, const std::string& measure_id,
+                 const MeasureDeclaration* declaration, RowFilter filter, bool with_status_rows,
+                 std::string* out) {
   std::vector<std::string> key_names;
   std::set<std::string> seen_keys;
   for (const Record& record : results.records) {
     for (const MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
       for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
         for (const auto& [key, value] : row.keys) {
           if (seen_keys.insert(key).second) key_names.push_back(key);
         }
       }
     }
   }
-  const std::vector<Column> columns = metricColumns(results, measure_id, declaration);
-  *out += "## Measure: " + measure_id + "\n\n";
-  if (declaration != nullptr) appendDeclaration(*declaration, out);
+  const std::vector<Column> columns = metricColumns(results, measure_id, declaration, filter);
   std::vector<std::string> header{"technique", "variant", "asset"};
   header.insert(header.end(), key_names.begin(), key_names.end());
   header.push_back("status");
@@ -203,6 +215,7 @@ void appendMeasure(const Results& results, const std::string& measure_id, std::s
     for (const MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
       if (m.status != MeasureStatus::kOk) {
+        if (!with_status_rows) continue;
         std::vector<std::string> cells{record.technique, record.variant, record.asset};
         cells.resize(cells.size() + key_names.size());
         cells.push_back(std::string(toString(m.status)) + ": " + m.reason);
@@ -211,6 +224,7 @@ void appendMeasure(const Results& results, const std::string& measure_id, std::s
         continue;
       }
       for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
         std::vector<std::string> cells{record.technique, record.variant, record.asset};
         for (const std::string& key : key_names) {
           auto it = row.keys.find(key);
@@ -229,6 +243,31 @@ void appendMeasure(const Results& results, const std::string& measure_id, std::s
     }
   }
   *out += "\n";
+}
+
+bool anyRow(const Results& results, const std::string& measure_id, RowFilter filter) {
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) {
+        if (filter(row)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+// One section per measure: its summary rows first (rows keyed `summary`), then the
+// declaration, then a table of the other rows.
+void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure_id);
+  *out += "## Measure: " + measure_id + "\n\n";
+  if (anyRow(results, measure_id, isSummaryRow)) {
+    appendTable(results, measure_id, declaration, isSummaryRow, false, out);
+  }
+  if (declaration != nullptr) appendDeclaration(*declaration, out);
+  appendTable(results, measure_id, declaration, [](const MetricRow& row) { return !isSummaryRow(row); },
+              true, out);
   appendRecordNotes(results, measure_id, out);
 }
 

@@ -28,6 +28,35 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
   EXPECT_NE(md.find("12 polygons split"), std::string::npos);
 }
 
+// Rows keyed `summary` open the measure's section in their own table, with only their
+// metrics; the other rows follow the declaration without the summary's columns.
+TEST(Markdown, SummaryRowsComeFirstInTheirOwnTable) {
+  Results results;
+  MeasureDeclaration adaptivity{"adaptivity", "Adaptivity", "d", {}, {"ratio"}, {"a fixed note"}};
+  adaptivity.metrics = {{"ratio", Unit::kRatio, Direction::kLowerIsBetter},
+                        {"triangles", Unit::kCount, Direction::kLowerIsBetter}};
+  results.measures.push_back(adaptivity);
+  Record record{"acc", "default", "opensubdiv/catmark_cube", {}, {}, {}};
+  MeasureResult m;
+  m.measure = "adaptivity";
+  m.rows.push_back({{{"frame", "0"}, {"policy", "p"}}, {{"triangles", 100, "count"}}});
+  m.rows.push_back({{{"policy", "p"}, {"summary", "max_error_1px"}}, {{"ratio", 0.25, "ratio"}}});
+  record.measures.push_back(m);
+  results.records.push_back(record);
+  const std::string md = renderMarkdown(results);
+  const size_t section = md.find("## Measure: adaptivity\n\n");
+  ASSERT_NE(section, std::string::npos);
+  const std::string summary_header =
+      "| technique | variant | asset | policy | summary | status | ratio (ratio, lower better) |";
+  EXPECT_EQ(md.find(summary_header), section + std::string("## Measure: adaptivity\n\n").size())
+      << md;
+  EXPECT_LT(md.find(summary_header), md.find("a fixed note"));
+  EXPECT_NE(md.find("| technique | variant | asset | frame | policy | status | triangles (count, "
+                    "lower better) |"),
+            std::string::npos)
+      << md;
+}
+
 TEST(Markdown, SkippedMeasureShowsItsReason) {
   Results results;
   Record record{"phong", "alpha0.75", "a", {}, {}, {}};
