@@ -44,12 +44,12 @@ struct CameraKeyframe {
 
 // A camera path file as read (loadCameraPath): every field validated.
 struct CameraPathSpec {
-  std::string name;        // the "name" field, else the file's stem
-  std::string shown_path;  // how messages and results name the file:
-                           // "assets/cameras/orbit.json" for a bundled path
+  std::string name;  // the "name" field, else the file's stem
+  // How messages and results name the file: "assets/cameras/orbit.json" for a bundled path.
+  std::string shown_path;
   uint32_t width_px = 1920, height_px = 1080;  // the viewport, pixels ("resolution")
-  double fov_y_deg = 45;  // vertical field of view, degrees, in (0, 180)
-  uint32_t frames = 1;    // views the path is sampled to (> 0)
+  double fov_y_deg = 45;                       // vertical field of view, degrees, in (0, 180)
+  uint32_t frames = 1;                         // views the path is sampled to (> 0)
   // true ("space": "bounds"): positions in bounding-box diagonals relative to the box's
   // centre, near and far planes in diagonals; false ("world"): world units.
   bool bounds_space = true;

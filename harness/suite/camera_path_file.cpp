@@ -69,8 +69,8 @@ class FieldReader {
       fail(field, std::to_string(n) + " is out of range (expected " + range + ")");
     }
     if (value.is_number_integer()) {  // negative
-      fail(field, std::to_string(value.get<int64_t>()) + " is out of range (expected " + range +
-                      ")");
+      fail(field,
+           std::to_string(value.get<int64_t>()) + " is out of range (expected " + range + ")");
     }
     fail(field, "expected " + range + ", got " + typeOf(value));
   }
@@ -78,7 +78,8 @@ class FieldReader {
   Vec3d vec3(const Json& value, const std::string& field) const {
     if (!value.is_array() || value.size() != 3) fail(field, "expected [x, y, z]");
     Vec3d v;
-    for (int i = 0; i < 3; ++i) v[i] = number(value[size_t(i)], field + "[" + std::to_string(i) + "]");
+    for (int i = 0; i < 3; ++i)
+      v[i] = number(value[size_t(i)], field + "[" + std::to_string(i) + "]");
     return v;
   }
 

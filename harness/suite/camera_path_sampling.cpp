@@ -45,6 +45,10 @@ void checkKeyframes(const CameraPathSpec& spec) {
       throw InputError(spec.shown_path, keyframeField(k, "eye"),
                        "equals the target (no view direction)");
     }
+    if (!std::isfinite(length(offset))) {
+      throw InputError(spec.shown_path, keyframeField(k, "eye"),
+                       "too far from the target (the distance overflows)");
+    }
     if (!(length(key.up) > 0)) {
       throw InputError(spec.shown_path, keyframeField(k, "up"), "zero-length vector");
     }
@@ -124,8 +128,8 @@ CameraPath sampleCameraPath(const CameraPathSpec& spec, const Aabb& bounds,
   }
   const double fov_y_rad = spec.fov_y_deg * kDegree;
   const double near_world = scale * spec.near_plane, far_world = scale * spec.far_plane;
-  const Mat4 projection = perspective(fov_y_rad, double(spec.width_px) / double(spec.height_px),
-                                     near_world, far_world);
+  const Mat4 projection =
+      perspective(fov_y_rad, double(spec.width_px) / double(spec.height_px), near_world, far_world);
   CameraPath path{spec.name, {}};
   path.views.reserve(frames);
   for (uint32_t i = 0; i < frames; ++i) {

@@ -63,7 +63,8 @@ TEST(CameraCli, TheSuiteAndTheCameraFilesAreRecordedAndShardsMustAgreeOnThem) {
   const std::string out = " --out " + dir.string();
   CommandResult r = runTessbench("run " + kCheap + " --run-id plain" + out);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  auto selection = nlohmann::json::parse(readFile(dir / "plain" / "results.json"))["context"]["selection"];
+  auto selection =
+      nlohmann::json::parse(readFile(dir / "plain" / "results.json"))["context"]["selection"];
   EXPECT_EQ(selection["suite"], "default");
   EXPECT_FALSE(selection.contains("camera_paths"));
 
@@ -71,7 +72,8 @@ TEST(CameraCli, TheSuiteAndTheCameraFilesAreRecordedAndShardsMustAgreeOnThem) {
   r = runTessbench("run " + kCheap + " --suite full --camera dolly --camera " + file +
                    " --run-id chosen" + out);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  selection = nlohmann::json::parse(readFile(dir / "chosen" / "results.json"))["context"]["selection"];
+  selection =
+      nlohmann::json::parse(readFile(dir / "chosen" / "results.json"))["context"]["selection"];
   EXPECT_EQ(selection["suite"], "full");
   EXPECT_EQ(selection["camera_paths"], nlohmann::json({"assets/cameras/dolly.json", file}));
 

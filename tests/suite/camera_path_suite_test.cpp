@@ -56,9 +56,12 @@ class WholePathMeasure final : public Measure {
 class OneViewMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{
-        "test_one_view", "one view", "viewport width", {{"width", Unit::kPixels, Direction::kNone}},
-        {},              {}};
+    static const MeasureInfo kInfo{"test_one_view",
+                                   "one view",
+                                   "viewport width",
+                                   {{"width", Unit::kPixels, Direction::kNone}},
+                                   {},
+                                   {}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -151,9 +154,8 @@ TEST(CameraPathSuite, SelectedPathsServeBothKindsAndViewMeasuresKeepTheTestOrbit
   const CameraPathFn two_views = [](const Aabb&) {
     return CameraPath{"two_views", {View{}, View{}}};
   };
-  const Results results =
-      runWith(whole, &one_view, SuiteMode::kFull,
-              {cameraPathFn(resolveCameraPath("flyby")), two_views});
+  const Results results = runWith(whole, &one_view, SuiteMode::kFull,
+                                  {cameraPathFn(resolveCameraPath("flyby")), two_views});
   EXPECT_EQ(whole.calls, 2);
   const std::vector<std::pair<std::string, size_t>> selected{{"flyby", 48}, {"two_views", 2}};
   EXPECT_EQ(rowsPerPath(resultOf(results, "test_whole_path")), selected);
@@ -163,10 +165,9 @@ TEST(CameraPathSuite, SelectedPathsServeBothKindsAndViewMeasuresKeepTheTestOrbit
 
 TEST(CameraPathSuite, ACameraPathNeedNeverStopsAMeasureAndTheSuiteModeIsRecorded) {
   const SurfaceDoubleTechnique surface;
-  EXPECT_TRUE(measureRuns({{MeasureNeed::kSurface, MeasureNeed::kCameraPath},
-                           VariantPolicy::kEveryVariant,
-                           {}},
-                          surface, {true, false}, {true, true}));
+  EXPECT_TRUE(measureRuns(
+      {{MeasureNeed::kSurface, MeasureNeed::kCameraPath}, VariantPolicy::kEveryVariant, {}},
+      surface, {true, false}, {true, true}));
   SuiteSelection selection;
   selection.techniques = {&surface};
   EXPECT_EQ(describeSelection(selection, {}).suite, "default");

@@ -2,6 +2,8 @@
 // Oracles: the paths' closed forms (a circle of radius 2 diagonals about the box centre, a
 // geometric series of distances), the projection of the target to the viewport centre,
 // and the near plane's depth 0 in Vulkan clip space.
+#include "harness/suite/camera_path.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "core/mesh/input_error.h"
-#include "harness/suite/camera_path.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -160,16 +161,15 @@ using Fields = std::vector<std::pair<std::string, std::string>>;
 
 // A valid file with fields replaced (or removed where the value is empty) or added.
 std::string pathWithAll(const Fields& changes) {
-  Fields fields = {
-      {"name", R"("test")"},
-      {"resolution", "[1920, 1080]"},
-      {"fov_y_deg", "45"},
-      {"frames", "5"},
-      {"space", R"("bounds")"},
-      {"near", "0.01"},
-      {"far", "100"},
-      {"target_pixels_per_edge", "8"},
-      {"keyframes", R"([{"eye": [2, 0.5, 0], "target": [0, 0, 0], "up": [0, 1, 0]},
+  Fields fields = {{"name", R"("test")"},
+                   {"resolution", "[1920, 1080]"},
+                   {"fov_y_deg", "45"},
+                   {"frames", "5"},
+                   {"space", R"("bounds")"},
+                   {"near", "0.01"},
+                   {"far", "100"},
+                   {"target_pixels_per_edge", "8"},
+                   {"keyframes", R"([{"eye": [2, 0.5, 0], "target": [0, 0, 0], "up": [0, 1, 0]},
                         {"eye": [0, 0.5, 2], "target": [0, 0, 0], "up": [0, 1, 0]}])"}};
   for (const auto& [field, value] : changes) {
     bool replaced = false;
