@@ -11,6 +11,7 @@
 
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
+#include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
 #include "core/mesh/input_error.h"
@@ -54,6 +55,25 @@ std::vector<const Measure*> selectMeasures(const std::vector<std::string>& ids) 
     selected.push_back(measure);
   }
   return selected;
+}
+
+SuiteMode parseSuiteMode(const std::string& text) {
+  if (text == toString(SuiteMode::kDefault)) return SuiteMode::kDefault;
+  if (text == toString(SuiteMode::kFull)) return SuiteMode::kFull;
+  throw InputError("--suite", text, "unknown suite (known: default, full)");
+}
+
+// Reads every --camera file before any work, so a bad one stops the run with nothing
+// written; `shown` gets the files as results name them.
+std::vector<CameraPathFn> selectCameraPaths(const std::vector<std::string>& names_or_paths,
+                                            std::vector<std::string>* shown) {
+  std::vector<CameraPathFn> paths;
+  for (const std::string& name_or_path : names_or_paths) {
+    CameraPathSpec spec = resolveCameraPath(name_or_path);
+    shown->push_back(spec.shown_path);
+    paths.push_back(cameraPathFn(std::move(spec)));
+  }
+  return paths;
 }
 
 // Wall seconds per record × measure, beside results.json: timings change run to run, the
@@ -132,6 +152,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.threads = args.threads;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
   if (!args.shard.empty()) selection.shard = parseShard(args.shard);
+  selection.suite = parseSuiteMode(args.suite);
+  std::vector<std::string> camera_files;
+  selection.camera_paths = selectCameraPaths(args.cameras, &camera_files);
 
   Results results;
   // On a terminal the progress line rewrites itself; in a log, one line per step.
@@ -162,6 +185,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.date = utcTimestampIso8601();
   results.context.run_id = run_id;
   results.context.selection = describeSelection(selection, results);
+  results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
   writeNewFile(folder + "/results.json", serializeResults(results));
   writeNewFile(folder + "/report.md", renderMarkdown(results));

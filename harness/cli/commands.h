@@ -21,6 +21,8 @@ struct RunArgs {
   std::string device;  // Vulkan device name substring; empty = best available
   int threads = 0;     // worker threads; 0 = every core
   std::string shard;   // "I/N": run shard I of N of the work list; empty = all of it
+  std::string suite = "default";     // "default" or "full": which grid measures run
+  std::vector<std::string> cameras;  // camera path names or .json files; empty = the suite's
 };
 
 struct ReportArgs {

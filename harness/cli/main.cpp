@@ -39,6 +39,13 @@ int main(int argc, char** argv) {
   run->add_option("--shard", run_args.shard,
                   "I/N: run only shard I of N (numbered from 0) of the technique x variant x "
                   "asset x measure work list; join the N run folders with `merge`");
+  run->add_option("--suite", run_args.suite,
+                  "default | full: the measures' default grid (within the time budget) or "
+                  "every level, camera path and policy they know")
+      ->capture_default_str();
+  run->add_option("--camera", run_args.cameras,
+                  "camera path: a bundled name (orbit, dolly, flyby) or a .json file "
+                  "(repeatable; default: the suite's paths)");
 
   tb::cli::MergeArgs merge_args;
   CLI::App* merge = app.add_subcommand(

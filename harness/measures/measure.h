@@ -12,6 +12,7 @@
 
 #include "core/gpu/context.h"
 #include "core/mesh/mesh.h"
+#include "core/view/camera_path_views.h"
 #include "core/view/view.h"
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
@@ -43,10 +44,25 @@ enum class MeasureNeed : uint8_t {
   // MeasureInput::view: the suite runs the measure once per view of each camera path and
   // adds the row keys "camera_path" and "view" (the view's index on the path) to its rows.
   kView,
+  // MeasureInput::camera_path: the suite runs the measure once per camera path, with the
+  // whole path, and adds the row key "camera_path" (the path's name) to its rows; the
+  // measure keys its rows by frame itself. A measure declares kView or kCameraPath, not
+  // both (kCameraPath wins).
+  kCameraPath,
   // MeasureInput::gpu: the run's Vulkan device. Never a reason not to run: without a
   // device the measure reports its GPU parts skipped with gpu_unavailable, as it would.
   kGpu,
 };
+
+// Which grid of parameters a measure runs (`tessbench run --suite`): the default suite
+// stays within the run-time budget (docs/ARCHITECTURE.md, section 3); the full suite is
+// every level, path and policy a measure knows.
+enum class SuiteMode : uint8_t { kDefault, kFull };
+
+// "default" or "full": the --suite value and results.json's context.selection.suite.
+inline const char* toString(SuiteMode mode) {
+  return mode == SuiteMode::kFull ? "full" : "default";
+}
 
 // Which variants of a technique a measure runs on, on an asset it applies to.
 enum class VariantPolicy : uint8_t {
@@ -87,6 +103,10 @@ struct MeasureInput {
   Simulation* simulation = nullptr;
   // The camera view; non-null when the measure needs kView.
   const View* view = nullptr;
+  // The whole camera path; non-null when the measure needs kCameraPath.
+  const CameraPath* camera_path = nullptr;
+  // The run's suite: a measure picks its default or full grid by it.
+  SuiteMode suite = SuiteMode::kDefault;
 };
 
 class Measure {

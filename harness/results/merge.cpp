@@ -79,7 +79,7 @@ void checkSameRun(const ShardRun& reference, const ShardRun& run) {
     refuse(run.folder, "results.json records no selection (written by an older tessbench)");
   }
   const std::string one_selection =
-      "shards must run one selection (--technique, --asset, --measure)";
+      "shards must run one selection (--technique, --asset, --measure, --suite, --camera)";
   if (!(b.selection == a.selection)) {
     refuse(run.folder, "selection differs from " + reference.folder + "'s; " + one_selection);
   }

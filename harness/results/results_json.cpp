@@ -143,8 +143,12 @@ Json selectionToJson(const RunSelection& selection) {
   for (const auto& technique : selection.techniques) {
     techniques.push_back({{"technique", technique.technique}, {"variants", technique.variants}});
   }
-  return {
-      {"techniques", techniques}, {"assets", selection.assets}, {"measures", selection.measures}};
+  Json json{{"techniques", techniques},
+            {"assets", selection.assets},
+            {"measures", selection.measures},
+            {"suite", selection.suite}};
+  if (!selection.camera_paths.empty()) json["camera_paths"] = selection.camera_paths;
+  return json;
 }
 
 RunSelection selectionFromJson(const Json& json) {
@@ -158,6 +162,14 @@ RunSelection selectionFromJson(const Json& json) {
   }
   selection.assets = field<std::vector<std::string>>(json, "assets", "context.selection");
   selection.measures = field<std::vector<std::string>>(json, "measures", "context.selection");
+  // Optional: absent in results written before `run --suite` and `run --camera`.
+  if (json.contains("suite")) {
+    selection.suite = field<std::string>(json, "suite", "context.selection");
+  }
+  if (json.contains("camera_paths")) {
+    selection.camera_paths =
+        field<std::vector<std::string>>(json, "camera_paths", "context.selection");
+  }
   return selection;
 }
 

@@ -80,6 +80,12 @@ struct RunSelection {
   std::vector<TechniqueVariants> techniques;
   std::vector<std::string> assets;
   std::vector<std::string> measures;
+  // The suite mode (`run --suite`): "default" or "full". Results written before it was
+  // recorded read as "default".
+  std::string suite = "default";
+  // The camera path files given with `run --camera`, as results name them
+  // ("assets/cameras/orbit.json" for a bundled path); empty: the suite's own paths.
+  std::vector<std::string> camera_paths{};
   bool operator==(const RunSelection&) const = default;
 };
 

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
+#include "core/mesh/input_error.h"
 #include "core/view/camera.h"
+#include "harness/suite/asset_catalog.h"
 
 namespace tb {
 
@@ -47,6 +50,42 @@ CameraPath testOrbitPath(const Aabb& bounds) {
     path.views.push_back(view);
   }
   return path;
+}
+
+namespace {
+namespace fs = std::filesystem;
+
+// The bundled paths' folder: assets/cameras (the asset catalogue reads only *.obj, so the
+// paths here are never taken for assets).
+fs::path camerasDirectory() { return fs::path(assetsDirectory()) / "cameras"; }
+}  // namespace
+
+std::vector<std::string> bundledCameraPaths() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (fs::directory_iterator it(camerasDirectory(), error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->is_regular_file() && it->path().extension() == ".json") {
+      names.push_back(it->path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+CameraPathSpec resolveCameraPath(const std::string& name_or_path) {
+  const std::vector<std::string> bundled = bundledCameraPaths();
+  if (std::find(bundled.begin(), bundled.end(), name_or_path) != bundled.end()) {
+    // Named relative to the assets folder, wherever the checkout is, so results and
+    // messages do not depend on it.
+    return loadCameraPath((camerasDirectory() / (name_or_path + ".json")).string(),
+                          "assets/cameras/" + name_or_path + ".json");
+  }
+  if (fs::is_regular_file(name_or_path)) return loadCameraPath(name_or_path, name_or_path);
+  std::string names;
+  for (const std::string& name : bundled) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(name_or_path, "",
+                   "no such file, and not a bundled camera path (bundled: " + names + ")");
 }
 
 }  // namespace tb

@@ -28,9 +28,9 @@ struct VariantStanding {
 };
 
 // True when every need the suite decides on (surface, simulation) is met, the technique
-// passes the requirement's filter, and the variant policy admits the variant. kView and
-// kGpu never stop a measure: the suite supplies views, and a measure without a device
-// reports its GPU parts skipped.
+// passes the requirement's filter, and the variant policy admits the variant. kView,
+// kCameraPath and kGpu never stop a measure: the suite supplies views and camera paths,
+// and a measure without a device reports its GPU parts skipped.
 bool measureRuns(const MeasureRequirements& requirements, const Technique& technique,
                  const Capabilities& capabilities, const VariantStanding& standing);
 

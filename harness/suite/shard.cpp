@@ -73,6 +73,7 @@ RunSelection describeSelection(const SuiteSelection& selection, const Results& r
   std::vector<const Measure*> measures = selection.measures;
   if (measures.empty()) measures = MeasureRegistry::instance().all();
   for (const Measure* measure : measures) described.measures.push_back(measure->info().id);
+  described.suite = toString(selection.suite);
   return described;
 }
 

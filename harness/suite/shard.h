@@ -44,7 +44,9 @@ struct SuiteSelection;
 
 // The selection `runSuite` ran, in its order (techniques and measures resolved from the
 // registries when the selection names none; assets as `results` lists them, then the
-// scenarios): what a run's context records so that `merge` can order shard records.
+// scenarios) and its suite mode: what a run's context records so that `merge` can order
+// shard records and refuse shards of different runs. The --camera files are the caller's
+// to add (SuiteSelection holds the paths as functions).
 RunSelection describeSelection(const SuiteSelection& selection, const Results& results);
 
 }  // namespace tb

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <mutex>
 #include <optional>
@@ -49,7 +50,9 @@ struct SuiteInput {
 // Everything a technique × variant × input step shares with the others of the run.
 struct SuiteRun {
   std::vector<const Measure*> measures;
-  std::vector<CameraPathFn> camera_paths;
+  std::vector<CameraPathFn> view_paths;   // walked view by view by kView measures
+  std::vector<CameraPathFn> whole_paths;  // given whole to kCameraPath measures
+  SuiteMode suite = SuiteMode::kDefault;
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
   ShardSpec shard;
@@ -93,30 +96,49 @@ std::vector<Mesh> loadAssets(const std::vector<AssetRef>& refs, Results* results
   return meshes;
 }
 
-// Runs `measure` once per view of each camera path around the input, merging the rows
-// into one result with the keys "camera_path" and "view" (the index on the path) added,
-// so rows of different views never collide. The first run that is not ok gives the
-// merged status and reason.
+// Adds one run of a measure to the merged result, with `keys` added to each of its rows so
+// rows of different runs never collide. The first run that is not ok gives the merged
+// status and reason; the first with notes, the notes.
+void mergeRun(MeasureResult one, const std::map<std::string, std::string>& keys,
+              MeasureResult* merged) {
+  for (MetricRow& row : one.rows) {
+    for (const auto& [key, value] : keys) row.keys[key] = value;
+    merged->rows.push_back(std::move(row));
+  }
+  if (merged->status == MeasureStatus::kOk && one.status != MeasureStatus::kOk) {
+    merged->status = one.status;
+    merged->reason = std::move(one.reason);
+  }
+  if (merged->notes.empty()) merged->notes = std::move(one.notes);
+}
+
+// Runs `measure` once per view of each camera path around the input, keyed "camera_path"
+// and "view" (the index on the path).
 MeasureResult runOverViews(const SuiteRun& run, const Measure& measure, MeasureInput input) {
   MeasureResult merged;
   merged.measure = measure.info().id;
   const Aabb bounds = boundsOf(input.mesh);
-  for (const CameraPathFn& make_path : run.camera_paths) {
+  for (const CameraPathFn& make_path : run.view_paths) {
     const CameraPath path = make_path(bounds);
     for (size_t v = 0; v < path.views.size(); ++v) {
       input.view = &path.views[v];
-      MeasureResult one = measure.run(input);
-      for (MetricRow& row : one.rows) {
-        row.keys["camera_path"] = path.name;
-        row.keys["view"] = std::to_string(v);
-        merged.rows.push_back(std::move(row));
-      }
-      if (merged.status == MeasureStatus::kOk && one.status != MeasureStatus::kOk) {
-        merged.status = one.status;
-        merged.reason = one.reason;
-      }
-      if (merged.notes.empty()) merged.notes = one.notes;
+      mergeRun(measure.run(input), {{"camera_path", path.name}, {"view", std::to_string(v)}},
+               &merged);
     }
+  }
+  return merged;
+}
+
+// Runs `measure` once per camera path around the input, with the whole path, keyed
+// "camera_path"; the measure keys its rows by frame itself.
+MeasureResult runOverPaths(const SuiteRun& run, const Measure& measure, MeasureInput input) {
+  MeasureResult merged;
+  merged.measure = measure.info().id;
+  const Aabb bounds = boundsOf(input.mesh);
+  for (const CameraPathFn& make_path : run.whole_paths) {
+    const CameraPath path = make_path(bounds);
+    input.camera_path = &path;
+    mergeRun(measure.run(input), {{"camera_path", path.name}}, &merged);
   }
   return merged;
 }
@@ -132,6 +154,7 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
     instance = fresh.get();
   }
   input.simulation = instance->simulation();
+  if (requirements.has(MeasureNeed::kCameraPath)) return runOverPaths(run, measure, input);
   if (requirements.has(MeasureNeed::kView)) return runOverViews(run, measure, input);
   return measure.run(input);
 }
@@ -196,8 +219,9 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   } else if (const Simulation* simulation = instance->simulation()) {
     record.warnings = simulation->warnings();
   }
-  const MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
-                                   patches,   run.gpu.get(), run.gpu_unavailable};
+  MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
+                             patches,   run.gpu.get(), run.gpu_unavailable};
+  measure_input.suite = run.suite;
   for (const Measure* measure : runnable) {
     const auto start = std::chrono::steady_clock::now();
     record.measures.push_back(
@@ -226,6 +250,21 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
 
 }  // namespace
 
+std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode) {
+  if (mode == SuiteMode::kDefault) {
+    const CameraPathSpec orbit = resolveCameraPath("orbit");
+    // Read at its own frame count; sampled once more at the suite's, so a path that has no
+    // camera there fails here, before any measure runs.
+    sampleCameraPath(orbit, Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, kDefaultSuiteOrbitFrames);
+    return {cameraPathFn(orbit, kDefaultSuiteOrbitFrames)};
+  }
+  std::vector<CameraPathFn> paths;
+  for (const char* name : {"orbit", "dolly", "flyby"}) {
+    paths.push_back(cameraPathFn(resolveCameraPath(name)));
+  }
+  return paths;
+}
+
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
               SuiteTimings* timings) {
   const auto run_start = std::chrono::steady_clock::now();
@@ -237,8 +276,18 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   SuiteRun run;
   run.measures = selection.measures;
   if (run.measures.empty()) run.measures = MeasureRegistry::instance().all();
-  run.camera_paths = selection.camera_paths;
-  if (run.camera_paths.empty()) run.camera_paths = {testOrbitPath};
+  run.suite = selection.suite;
+  run.view_paths = selection.camera_paths;
+  if (run.view_paths.empty()) run.view_paths = {testOrbitPath};
+  const bool whole_paths_needed =
+      std::any_of(run.measures.begin(), run.measures.end(), [](const Measure* measure) {
+        return measure->requirements().has(MeasureNeed::kCameraPath);
+      });
+  // Read only when a measure takes them, so a run without one never needs the files.
+  if (whole_paths_needed) {
+    run.whole_paths = selection.camera_paths;
+    if (run.whole_paths.empty()) run.whole_paths = suiteCameraPaths(selection.suite);
+  }
   run.shard = selection.shard;
   for (const Measure* measure : run.measures) {
     results->measures.push_back(declarationOf(measure->info()));

@@ -1,6 +1,7 @@
 // Runs techniques × variants × assets × measures into the results model.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -22,14 +23,29 @@ struct SuiteSelection {
   // The inputs of simulation techniques (one record per scenario, in place of the assets);
   // none bundled yet, so simulation techniques run on none by default.
   std::vector<Scenario> scenarios;
-  // The paths view-dependent measures run along, around each asset's bounding box;
-  // empty: the fixed test orbit (testOrbitPath).
+  // The paths view-dependent measures run along, around each asset's bounding box, for
+  // kView and kCameraPath measures alike (`run --camera`). Empty: kView measures get the
+  // fixed test orbit (testOrbitPath), kCameraPath measures suiteCameraPaths(suite).
   std::vector<CameraPathFn> camera_paths;
+  // Which grid measures run (`run --suite`), and which paths kCameraPath measures get when
+  // camera_paths is empty.
+  SuiteMode suite = SuiteMode::kDefault;
   // Worker threads for the run (TBB): 0 = every core. Results are byte-identical
   // whatever the count: records are assembled in the serial order.
   int threads = 0;
   ShardSpec shard;  // the slice of the work list to run (shard.h); default: all of it
 };
+
+// Frames the bundled orbit is sampled to for kCameraPath measures in the default suite
+// (its file has 24): enough to see factors change around the asset, within the suite's
+// time budget (docs/ARCHITECTURE.md, section 3).
+constexpr uint32_t kDefaultSuiteOrbitFrames = 4;
+
+// The paths kCameraPath measures run along when SuiteSelection::camera_paths is empty: the
+// default suite, the bundled "orbit" at kDefaultSuiteOrbitFrames frames; the full suite,
+// "orbit", "dolly" and "flyby" at their own frame counts. Throws InputError when a bundled
+// file is missing or bad.
+std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode);
 
 // Wall time of one measure on one record (seconds; best 0). Timings vary run to run, so
 // they never enter results.json (which is byte-stable); the CLI writes them beside it.

@@ -122,6 +122,14 @@ TEST(Merge, RefusesShardsThatDoNotFitTogether) {
   other_selection[1].results.context.selection.measures = {"error", "memory"};
   expectRefusal(other_selection, "selection differs");
 
+  std::vector<ShardRun> other_suite = threeShards();
+  other_suite[2].results.context.selection.suite = "full";
+  expectRefusal(other_suite, "selection differs");
+
+  std::vector<ShardRun> other_cameras = threeShards();
+  other_cameras[1].results.context.selection.camera_paths = {"assets/cameras/dolly.json"};
+  expectRefusal(other_cameras, "selection differs");
+
   std::vector<ShardRun> other_assets = threeShards();
   other_assets[1].results.assets[0].faces = 7;
   expectRefusal(other_assets, "assets differ");
@@ -156,6 +164,16 @@ TEST(Merge, ContextRoundTripsThroughResultsJson) {
   ASSERT_EQ(parsed.context.merged_from.size(), 3u);
   EXPECT_EQ(parsed.context.merged_from[1].shard, (ShardId{1, 3}));
   EXPECT_EQ(serializeResults(parsed), serializeResults(merged));
+  // The suite mode and --camera files round-trip; results written before them read as
+  // the default suite with the suite's own paths.
+  Results full = merged;
+  full.context.selection.suite = "full";
+  full.context.selection.camera_paths = {"assets/cameras/orbit.json", "my/path.json"};
+  EXPECT_EQ(resultsFromJson(toJson(full)).context.selection, full.context.selection);
+  auto before_suite = toJson(merged);
+  before_suite["context"]["selection"].erase("suite");
+  EXPECT_EQ(resultsFromJson(before_suite).context.selection.suite, "default");
+  EXPECT_FALSE(toJson(merged)["context"]["selection"].contains("camera_paths"));
   // Results written before sharding (no selection, shard or merged_from) still read.
   auto old = toJson(merged);
   old["context"].erase("selection");
