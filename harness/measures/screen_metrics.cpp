@@ -4,8 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -59,18 +61,19 @@ ProjectedPoint project(const View& view, const Vec3d& p) {
   return projectToPixels(view, p.x, p.y, p.z);
 }
 
-// The piecewise-linear surface at a blend of tessellation vertices.
-Vec3d blendPosition(const BatchPoints& vertices, const VertexBlend& blend) {
+// The piecewise-linear surface at a blend of tessellation vertices (points evaluated
+// with a ScreenPattern's batch pattern: the vertices first).
+Vec3d blendPosition(const BatchPoints& points, const VertexBlend& blend) {
   Vec3d r{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
-    r = r + blend.weight[k] * BatchPoints::at(vertices.position, blend.index[k]);
+    r = r + blend.weight[k] * BatchPoints::at(points.position, blend.index[k]);
   }
   return r;
 }
 
 // One thread's evaluation buffers, reused from patch to patch.
 struct Scratch {
-  BatchPoints vertices, samples, before;
+  BatchPoints points, before;
   std::vector<ProjectedPoint> projected;
 };
 
@@ -92,6 +95,7 @@ struct Chunk {
 template <class Fn>
 void forEachChunk(const SurfacePatches& patches, tess::Spacing spacing,
                   std::span<const std::span<const tess::Levels>> sets, Fn&& fn) {
+  assert(sets.size() <= std::tuple_size_v<decltype(Chunk::key_of)>);
   Chunk chunk;
   std::map<ScreenPatternKey, uint32_t> index;
   size_t points = 0;
@@ -136,21 +140,22 @@ void requireLevels(const SurfacePatches& patches, std::span<const tess::Levels> 
   }
 }
 
-void projectVertices(const View& view, const BatchPoints& vertices,
+void projectVertices(const View& view, size_t vertex_count, const BatchPoints& points,
                      std::vector<ProjectedPoint>* projected) {
-  projected->resize(vertices.count);
-  for (size_t i = 0; i < vertices.count; ++i) {
-    (*projected)[i] = project(view, BatchPoints::at(vertices.position, i));
+  projected->resize(vertex_count);
+  for (size_t i = 0; i < vertex_count; ++i) {
+    (*projected)[i] = project(view, BatchPoints::at(points.position, i));
   }
 }
 
 // FrameScreenFigures::tessellation_error of one patch.
-void addTessellationError(const ScreenPattern& pattern, const BatchPoints& vertices,
-                          const BatchPoints& samples, const View& view, ErrorSums* sums) {
+void addTessellationError(const ScreenPattern& pattern, const BatchPoints& points, const View& view,
+                          ErrorSums* sums) {
+  const size_t first = pattern.vertexCount();
   for (size_t i = 0; i < pattern.samples.size(); ++i) {
-    const ProjectedPoint surface = project(view, BatchPoints::at(samples.position, i));
+    const ProjectedPoint surface = project(view, BatchPoints::at(points.position, first + i));
     if (!visible(view, surface)) continue;
-    const ProjectedPoint linear = project(view, blendPosition(vertices, pattern.samples[i]));
+    const ProjectedPoint linear = project(view, blendPosition(points, pattern.samples[i]));
     if (!inFront(view, linear)) continue;
     sums->add(distancePx(surface, linear));
   }
@@ -173,13 +178,14 @@ size_t writeEdgeLengths(const ScreenPattern& pattern, std::span<const ProjectedP
 void addReferenceError(const ref::LimitSurface& limit, size_t p, ReferenceMap map,
                        const ScreenPattern& pattern, std::span<const ProjectedPoint> projected,
                        const View& view, ErrorSums* sums) {
-  const ref::LimitFace face = limit.face(p);
-  const std::vector<DomainCoord>& coords = pattern.vertices->coords();
+  std::optional<ref::LimitFace> face;  // prepared at the first visible vertex
+  const std::vector<DomainCoord>& coords = pattern.vertex_coords;
   for (size_t i = 0; i < coords.size(); ++i) {
     if (!visible(view, projected[i])) continue;
+    if (!face) face.emplace(limit.face(p));
     const DomainCoord& c = coords[i];
     const ref::LimitPoint exact =
-        map == kQuadUv ? face.evaluate(c[0], c[1]) : face.evaluate(c[1], c[2]);
+        map == kQuadUv ? face->evaluate(c[0], c[1]) : face->evaluate(c[1], c[2]);
     const ProjectedPoint reference = project(view, exact.position);
     if (!inFront(view, reference)) continue;
     sums->add(distancePx(projected[i], reference));
@@ -259,10 +265,9 @@ FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const t
       if (pattern.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *pattern.vertices, s.vertices);
-      patches_.evaluateBatch(p, *pattern.sample_points, s.samples);
-      projectVertices(view, s.vertices, &s.projected);
-      addTessellationError(pattern, s.vertices, s.samples, view, &slots[i].tessellation);
+      patches_.evaluateBatch(p, *pattern.points, s.points);
+      projectVertices(view, pattern.vertexCount(), s.points, &s.projected);
+      addTessellationError(pattern, s.points, view, &slots[i].tessellation);
       slots[i].edges =
           writeEdgeLengths(pattern, s.projected, view, chunk_lengths_px.data() + edge_start[i]);
       if (limit_ != nullptr && reference_map_[p] != kNoReference) {
@@ -308,9 +313,8 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
       if (pattern.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *pattern.vertices, s.vertices);
-      patches_.evaluateBatch(p, *pattern.sample_points, s.samples);
-      addTessellationError(pattern, s.vertices, s.samples, view, &slots[i]);
+      patches_.evaluateBatch(p, *pattern.points, s.points);
+      addTessellationError(pattern, s.points, view, &slots[i]);
     });
     for (size_t i = 0; i < count; ++i) {
       sums.merge(slots[i]);
@@ -338,14 +342,14 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
       if (was.culled || is.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *is.vertices, s.vertices);
-      const BatchPoints* was_points = &s.vertices;
+      patches_.evaluateBatch(p, *is.points, s.points);
+      const BatchPoints* was_points = &s.points;
       if (&was != &is) {
-        patches_.evaluateBatch(p, *was.vertices, s.before);
+        patches_.evaluateBatch(p, *was.points, s.before);
         was_points = &s.before;
       }
       for (size_t k = 0; k < is.lattice.size(); ++k) {
-        const ProjectedPoint now = project(view, blendPosition(s.vertices, is.lattice[k]));
+        const ProjectedPoint now = project(view, blendPosition(s.points, is.lattice[k]));
         if (!visible(view, now)) continue;
         const ProjectedPoint then = project(view, blendPosition(*was_points, was.lattice[k]));
         if (!inFront(view, then)) continue;

@@ -18,7 +18,7 @@ tess::Domain tessDomain(PatchDomain domain) {
   return domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
 }
 
-void tessellatePattern(const SurfacePatches& patches, ScreenPattern* pattern) {
+void tessellatePattern(ScreenPattern* pattern) {
   const ScreenPatternKey& key = pattern->key;
   tess::Levels levels;
   for (int i = 0; i < 4; ++i) levels.outer[i] = std::bit_cast<float>(key.levels[i]);
@@ -32,16 +32,14 @@ void tessellatePattern(const SurfacePatches& patches, ScreenPattern* pattern) {
   pattern->culled = t.culled || t.points.empty() || t.triangles.empty();
   if (pattern->culled) return;
   pattern->triangles = t.triangles;
-  std::vector<DomainCoord> coords;
-  coords.reserve(t.points.size());
+  pattern->vertex_coords.reserve(t.points.size());
   for (const tess::DomainPoint& p : t.points) {
     // gl_TessCoord as the technique takes it (batch_eval.h): quads (u, v, 0), triangles
     // the barycentric (u, v, w) of corners 0, 1, 2, as the crack measure passes it.
-    coords.push_back(key.domain == PatchDomain::kQuad ? DomainCoord{p[0], p[1], 0}
-                                                      : DomainCoord{p[0], p[1], p[2]});
+    pattern->vertex_coords.push_back(key.domain == PatchDomain::kQuad
+                                         ? DomainCoord{p[0], p[1], 0}
+                                         : DomainCoord{p[0], p[1], p[2]});
   }
-  pattern->vertices =
-      patches.makeBatchPattern(key.domain, std::move(coords), BatchOutput::kPositionAndDerivatives);
 }
 
 void buildEdges(ScreenPattern* pattern) {
@@ -68,21 +66,27 @@ DomainCoord blendCoord(const std::vector<DomainCoord>& vertices, const VertexBle
   return c;
 }
 
-void buildSamples(const SurfacePatches& patches, ScreenPattern* pattern) {
+void buildSamples(ScreenPattern* pattern) {
   pattern->samples.clear();
   pattern->samples.reserve(pattern->edges.size() + pattern->triangles.size());
-  for (const auto& e : pattern->edges)
+  for (const auto& e : pattern->edges) {
     pattern->samples.push_back({{e[0], e[1], e[0]}, {0.5, 0.5, 0}});
+  }
   for (const auto& t : pattern->triangles) {
     pattern->samples.push_back({{t[0], t[1], t[2]}, {1.0 / 3, 1.0 / 3, 1.0 / 3}});
   }
+}
+
+// The batch pattern of the vertices, followed by the samples when there are any.
+void buildPoints(const SurfacePatches& patches, ScreenPattern* pattern) {
   std::vector<DomainCoord> coords;
-  coords.reserve(pattern->samples.size());
+  coords.reserve(pattern->vertexCount() + pattern->samples.size());
+  coords.insert(coords.end(), pattern->vertex_coords.begin(), pattern->vertex_coords.end());
   for (const VertexBlend& s : pattern->samples) {
-    coords.push_back(blendCoord(pattern->vertices->coords(), s));
+    coords.push_back(blendCoord(pattern->vertex_coords, s));
   }
-  pattern->sample_points = patches.makeBatchPattern(pattern->key.domain, std::move(coords),
-                                                    BatchOutput::kPositionAndDerivatives);
+  pattern->points = patches.makeBatchPattern(pattern->key.domain, std::move(coords),
+                                             BatchOutput::kPositionAndDerivatives);
 }
 
 // Each lattice point in the first triangle that contains it (barycentric weights >= -1e-9;
@@ -97,7 +101,7 @@ void buildLattice(ScreenPattern* pattern) {
   for (int j = 0; j <= n; ++j) row_start[j + 1] = row_start[j] + (quad ? n + 1 : n - j + 1);
   std::vector<VertexBlend> located(lattice.size());
   std::vector<uint8_t> found(lattice.size(), 0);
-  const std::vector<DomainCoord>& v = pattern->vertices->coords();
+  const std::vector<DomainCoord>& v = pattern->vertex_coords;
   constexpr double kSlack = 1e-9;
   for (const auto& t : pattern->triangles) {
     const double u0 = v[t[0]][0], v0 = v[t[0]][1];
@@ -140,20 +144,18 @@ ScreenPatternKey screenPatternKey(PatchDomain domain, tess::Spacing spacing,
   return {domain, spacing, tess::levelsBits(levels)};
 }
 
-size_t ScreenPattern::patternPoints() const {
-  return vertexCount() + (sample_points ? sample_points->pointCount() : 0);
-}
-
 void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern) {
-  if (!pattern->tessellated) tessellatePattern(patches, pattern);
+  if (!pattern->tessellated) tessellatePattern(pattern);
   if (!pattern->culled) {
     const unsigned missing = parts & ~pattern->parts;
     if ((missing & (kPatternEdges | kPatternSamples)) && !(pattern->parts & kPatternEdges)) {
       buildEdges(pattern);
       pattern->parts |= kPatternEdges;
     }
-    if (missing & kPatternSamples) buildSamples(patches, pattern);
     if (missing & kPatternLattice) buildLattice(pattern);
+    if (missing & kPatternSamples) buildSamples(pattern);
+    // A pattern of the vertices alone is replaced by one with the samples appended.
+    if (!pattern->points || (missing & kPatternSamples)) buildPoints(patches, pattern);
   }
   pattern->parts |= parts;
 }

@@ -24,7 +24,7 @@ namespace tb {
 // 81 points on a quad patch, 45 on a triangle patch.
 inline constexpr int kPopSampleSegments = 8;
 
-// What a ScreenPattern holds beyond its tessellation and the vertices' batch pattern.
+// What a ScreenPattern holds beyond its tessellation and the batch pattern of its vertices.
 enum ScreenPatternPart : unsigned {
   kPatternEdges = 1,    // the unique edges of the tessellated triangles
   kPatternSamples = 2,  // the tessellation-error samples (implies the edges)
@@ -52,26 +52,29 @@ ScreenPatternKey screenPatternKey(PatchDomain domain, tess::Spacing spacing,
 struct ScreenPattern {
   ScreenPatternKey key;
   unsigned parts = 0;        // ScreenPatternPart bits built so far
-  bool tessellated = false;  // the fields below up to `vertices` are set
+  bool tessellated = false;  // culled, triangles and vertex_coords are set
   bool culled = false;       // the tessellator culls the patch: no points, no triangles
-  std::vector<std::array<uint32_t, 3>> triangles;  // indices into the vertices
+  std::vector<std::array<uint32_t, 3>> triangles;  // indices into vertex_coords
   // The tessellation's unique domain points as the technique takes them (DomainCoord:
-  // quads (u, v, 0), triangles barycentric (u, v, w) = gl_TessCoord); null when culled.
-  std::unique_ptr<BatchPattern> vertices;
+  // quads (u, v, 0), triangles barycentric (u, v, w) = gl_TessCoord).
+  std::vector<DomainCoord> vertex_coords;
   // kPatternEdges: each unique edge once, as (lower index, higher index), sorted.
   std::vector<std::array<uint32_t, 2>> edges;
   // kPatternSamples: the midpoint of every unique edge (in `edges` order), then the
-  // centroid of every triangle (in `triangles` order); and their batch pattern.
+  // centroid of every triangle (in `triangles` order).
   std::vector<VertexBlend> samples;
-  std::unique_ptr<BatchPattern> sample_points;
   // kPatternLattice: latticeCoords(domain, kPopSampleSegments) in its order, each as the
   // barycentric blend of the corners of the first triangle (in `triangles` order) that
   // contains it.
   std::vector<VertexBlend> lattice;
+  // One batch pattern for every point a patch evaluates (one allocation and one kernel call
+  // per patch): point i < vertexCount() is vertex i, and with kPatternSamples point
+  // vertexCount() + k is sample k. Null when culled.
+  std::unique_ptr<BatchPattern> points;
 
-  size_t vertexCount() const { return vertices ? vertices->pointCount() : 0; }
-  // Domain points held in batch patterns (what bounds the cache).
-  size_t patternPoints() const;
+  size_t vertexCount() const { return vertex_coords.size(); }
+  // Domain points held in the batch pattern (what bounds the cache).
+  size_t patternPoints() const { return points ? points->pointCount() : 0; }
 };
 
 // Builds whatever of `parts` (and the tessellation) `pattern` lacks. For Spacing::kPow2
