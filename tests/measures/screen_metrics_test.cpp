@@ -354,6 +354,26 @@ TEST(ScreenMetrics, FiguresDoNotDependOnTheThreadCount) {
   expectEqual(pop_1, pop_n);
 }
 
+TEST(ScreenMetrics, CachedPatternsDoNotChangeTheFigures) {
+  // A pattern first built for pop (vertices and lattice only) gains its samples later; the
+  // figures must equal those of a fresh object with an empty cache.
+  const Mesh mesh = smoothPawn();
+  const BuiltSurface patches = build("acc", mesh);
+  const View view = halfScreenView(mesh);
+  const std::vector<tess::Levels> before = mixedLevels(*patches, 0),
+                                  after = mixedLevels(*patches, 1);
+  ScreenMetrics used(*patches, nullptr), fresh(*patches, nullptr);
+  EXPECT_GT(used.pop(tess::Spacing::kFractionalOdd, before, after, view).samples, 0u);
+  const FrameScreenFigures a = used.frame(tess::Spacing::kFractionalOdd, after, view);
+  const FrameScreenFigures b = fresh.frame(tess::Spacing::kFractionalOdd, after, view);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.edges.edges, b.edges.edges);
+  EXPECT_EQ(a.edges.median_px, b.edges.median_px);
+  expectEqual(a.tessellation_error, b.tessellation_error);
+  expectEqual(used.pop(tess::Spacing::kFractionalOdd, before, after, view),
+              fresh.pop(tess::Spacing::kFractionalOdd, before, after, view));
+}
+
 TEST(ScreenMetrics, AccMatchesTheLimitOnARegularMeshOnly) {
   // On the all-valence-4 torus every acc patch is the bicubic B-spline patch that is the
   // Catmull-Clark limit (Bfr, the oracle): ~0 px. The cube's valence-3 corners are not.
