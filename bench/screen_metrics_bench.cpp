@@ -4,9 +4,10 @@
 // pawn with its crease tags removed (acc refuses creases); pn_triangles on tri_pawn.
 //
 // Levels: uniform 4, 8, 16 (one shared pattern: the cache is warm after the first call), and
-// "adaptive": each patch's outer levels from its corners' projected edge lengths / 8 px,
-// fractional_odd, so nearly every patch has its own levels (the cache helps little). The
-// `cold` cases build a fresh ScreenMetrics (empty cache) every iteration. Wall clock; the
+// "adaptive" (level argument 0): each patch's outer levels from its corners' projected edge
+// lengths / 8 px, fractional_odd, so nearly every patch has its own levels (the cache helps
+// little). The `cold` cases build a fresh ScreenMetrics (empty cache) every iteration; the
+// sweep cycles through 30 adaptive level sets, as a policy's parameter sweep does. Wall clock; the
 // second argument is the worker thread count (0: TBB's default).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
@@ -74,7 +75,7 @@ const Subject& subject(const std::string& technique) {
 
 // Outer level of each patch edge: its corners' distance on screen / target, in [1, 64];
 // inner levels the largest outer level.
-std::vector<tb::tess::Levels> adaptiveLevels(const Subject& s) {
+std::vector<tb::tess::Levels> adaptiveLevels(const Subject& s, double target_px = 8) {
   std::vector<tb::tess::Levels> levels;
   for (size_t p = 0; p < s.patches->patchCount(); ++p) {
     const auto corners = s.patches->patchCorners(p);
@@ -86,7 +87,7 @@ std::vector<tb::tess::Levels> adaptiveLevels(const Subject& s) {
       const tb::ProjectedPoint pa = tb::projectToPixels(s.view, a.x, a.y, a.z);
       const tb::ProjectedPoint pb = tb::projectToPixels(s.view, b.x, b.y, b.z);
       const double px = std::hypot(pa.x_px - pb.x_px, pa.y_px - pb.y_px);
-      l.outer[k] = float(std::clamp(px / s.view.target_pixels_per_edge, 1.0, 64.0));
+      l.outer[k] = float(std::clamp(px / target_px, 1.0, 64.0));
       largest = std::max(largest, l.outer[k]);
     }
     l.inner = {largest, largest};
@@ -135,6 +136,25 @@ void BM_TessellationError(benchmark::State& state, const std::string& technique,
   state.counters["max_px"] = figures.max_px;
 }
 
+// A parameter sweep as a factor-policy measure runs it: one ScreenMetrics, 30 calls with
+// adaptive levels for targets of 4, 5, ..., 33 px per edge; the time is per call.
+void BM_TessellationErrorSweep(benchmark::State& state, const std::string& technique) {
+  const Threads threads(int(state.range(1)));
+  const Subject& s = subject(technique);
+  std::vector<std::vector<tb::tess::Levels>> sweep;
+  for (int target_px = 4; target_px < 34; ++target_px)
+    sweep.push_back(adaptiveLevels(s, target_px));
+  tb::ScreenMetrics metrics(*s.patches, nullptr);
+  size_t call = 0;
+  uint64_t triangles = 0, total = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(metrics.tessellationError(
+        tb::tess::Spacing::kFractionalOdd, sweep[call++ % sweep.size()], s.view, &triangles));
+    total += triangles;
+  }
+  state.counters["triangles_per_call"] = double(total) / double(call);
+}
+
 void BM_Frame(benchmark::State& state, const std::string& technique) {
   const Threads threads(int(state.range(1)));
   const Subject& s = subject(technique);
@@ -180,6 +200,16 @@ BENCHMARK_CAPTURE(BM_TessellationError, pn_tri_pawn, std::string("pn_triangles")
     ->Apply(levelArgs);
 BENCHMARK_CAPTURE(BM_TessellationError, pn_tri_pawn_cold, std::string("pn_triangles"), true)
     ->Apply(levelArgs);
+BENCHMARK_CAPTURE(BM_TessellationErrorSweep, acc_pawn, std::string("acc"))
+    ->Args({0, 1})
+    ->Args({0, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_TessellationErrorSweep, pn_tri_pawn, std::string("pn_triangles"))
+    ->Args({0, 1})
+    ->Args({0, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_Frame, acc_pawn, std::string("acc"))->Apply(levelArgs);
 BENCHMARK_CAPTURE(BM_Frame, pn_tri_pawn, std::string("pn_triangles"))->Apply(levelArgs);
 BENCHMARK_CAPTURE(BM_Pop, acc_pawn, std::string("acc"))
