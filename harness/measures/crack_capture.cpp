@@ -95,16 +95,23 @@ class ProgramCapture {
                                  std::to_string(v.patch) +
                                  " at a boundary point the CPU tessellator does not emit");
       }
-      const size_t slot = boundaries_.at(v.patch, size_t(k));
-      if ((*filled_)[slot] == 0) {
-        capture_->positions[slot] = v.position;
-        (*filled_)[slot] = 1;
-        ++capture_->points_captured;
-      } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(Vec3f)) != 0) {
-        // The TES ran twice at one gl_TessCoord (fractional spacing) and disagreed.
-        throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
-                                 std::to_string(v.patch) +
-                                 " twice at one boundary point with different positions");
+      // The tessellator may emit two vertices on one 2^-16 coordinate (fractional spacing
+      // just above an integer level); the CPU list keeps both, next to each other, and
+      // one captured position fills them all.
+      const BoundaryTessellation& b = boundaries_.of(v.patch);
+      for (size_t j = size_t(k);
+           j < b.points.size() && std::memcmp(&b.points[j], &v.coord, sizeof(v.coord)) == 0; ++j) {
+        const size_t slot = boundaries_.at(v.patch, j);
+        if ((*filled_)[slot] == 0) {
+          capture_->positions[slot] = v.position;
+          (*filled_)[slot] = 1;
+          ++capture_->points_captured;
+        } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(Vec3f)) != 0) {
+          // The TES ran twice at one gl_TessCoord (fractional spacing) and disagreed.
+          throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
+                                   std::to_string(v.patch) +
+                                   " twice at one boundary point with different positions");
+        }
       }
     }
   }
