@@ -15,9 +15,6 @@ namespace {
 constexpr uint64_t kInvocationsPerDraw = 4096;
 constexpr uint32_t kMaxPatchesPerDraw = 256;
 
-// Bisection steps of the target search (log scale between the coarse and fine ends).
-constexpr int kSearchSteps = 7;
-
 // The target range a search covers, per policy kind: coarse (few triangles) to fine.
 struct TargetRange {
   double coarse, fine;
@@ -213,7 +210,7 @@ AdaptivityRun::PathError AdaptivityRun::pathError(const FactorPolicy& policy,
 
 AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spacing spacing,
                                            const std::vector<View>& views,
-                                           double error_target_px) {
+                                           double error_target_px, int search_steps) {
   AdaptivitySummary summary;
   summary.error_target_px = error_target_px;
 
@@ -229,33 +226,38 @@ AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spa
     ++summary.evaluations;
     return pathError(p, spacing, views);
   };
-  PathError best = errorAt(1.0);
-  double best_fineness = 1.0;
-  summary.reached = best.max_px <= error_target_px;
-  if (summary.reached) {
-    const PathError coarse = errorAt(0.0);
-    if (coarse.max_px <= error_target_px) {
-      best = coarse;
-      best_fineness = 0.0;
-    } else {
-      double fails = 0.0;
-      for (int step = 0; step < kSearchSteps; ++step) {
-        const double mid = 0.5 * (fails + best_fineness);
-        const PathError e = errorAt(mid);
-        if (e.max_px <= error_target_px) {
-          best = e;
-          best_fineness = mid;
-        } else {
-          fails = mid;
-        }
+  // Coarse to fine, so the cheap (coarse) end is tried first and the fine end, whose
+  // tessellations are the largest, only when nothing coarser reaches the target.
+  PathError best;
+  double best_fineness = -1;
+  const PathError coarse = errorAt(0.0);
+  if (coarse.max_px <= error_target_px) {
+    best = coarse;
+    best_fineness = 0.0;
+  } else {
+    double fails = 0.0, passes = 1.0;
+    for (int step = 0; step < search_steps; ++step) {
+      const double mid = 0.5 * (fails + passes);
+      const PathError e = errorAt(mid);
+      if (e.max_px <= error_target_px) {
+        best = e;
+        best_fineness = passes = mid;
+      } else {
+        fails = mid;
       }
     }
+    if (best_fineness < 0) {  // nothing passed: only the fine end is left to try
+      best = errorAt(1.0);
+      best_fineness = 1.0;
+    }
   }
+  summary.reached = best.max_px <= error_target_px;
   summary.target = targetAt(best_fineness);
   summary.triangles_per_frame = best.triangles_per_frame;
   summary.max_error_px = best.max_px;
 
-  // Uniform: the lowest integer level within the target (binary search over 1..max).
+  // Uniform: the lowest integer level within the target, by doubling from 1 and then
+  // bisecting between the last level that failed and the first that passed.
   FactorPolicy uniform;
   uniform.kind = FactorPolicyKind::kUniform;
   uniform.reduction = policy.reduction;
@@ -265,11 +267,15 @@ AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spa
     ++summary.evaluations;
     return pathError(uniform, spacing, views);
   };
-  PathError uniform_best = uniformAt(highest);
-  uint32_t uniform_level = highest;
+  uint32_t fails = 0, uniform_level = 1;
+  PathError uniform_best = uniformAt(uniform_level);
+  while (uniform_best.max_px > error_target_px && uniform_level < highest) {
+    fails = uniform_level;
+    uniform_level = std::min(2 * uniform_level, highest);
+    uniform_best = uniformAt(uniform_level);
+  }
   summary.uniform_reached = uniform_best.max_px <= error_target_px;
   if (summary.uniform_reached) {
-    uint32_t fails = 0;  // level 0: nothing (always fails)
     while (uniform_level - fails > 1) {
       const uint32_t mid = (fails + uniform_level) / 2;
       const PathError e = uniformAt(mid);

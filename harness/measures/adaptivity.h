@@ -96,8 +96,11 @@ class AdaptivityRun {
 
   // Searches the policy's target for the coarsest one whose tessellation error stays under
   // error_target_px on every frame, and the lowest uniform level that does.
+  // search_steps: bisection steps on the log-scale target range (7: targets within ~5%
+  // of the coarsest that passes for sphere_diameter's 0.25..128 px; 5: within ~20%).
   AdaptivitySummary summarise(const FactorPolicy& policy, tess::Spacing spacing,
-                              const std::vector<View>& views, double error_target_px);
+                              const std::vector<View>& views, double error_target_px,
+                              int search_steps = 7);
 
   // Why the device parts are absent; empty when they ran.
   const std::string& gpuSkipReason() const { return gpu_skip_; }

@@ -90,6 +90,14 @@ struct Chunk {
   std::array<std::vector<uint32_t>, 2> key_of;  // per level set: the key of patch begin + i
 };
 
+// True when the chunk's patches share their patterns enough (on average 4 patches a
+// pattern or more) for the technique's tabulated batch kernel to pay for building it;
+// adaptive frames give most patches their own levels, and then point-by-point evaluation
+// is cheaper. Either way the figures agree to rounding (~1e-12 relative).
+bool sharesPatterns(const Chunk& chunk) {
+  return 4 * chunk.keys.size() <= chunk.end - chunk.begin;
+}
+
 // Splits the patches into chunks whose distinct patterns need about kScreenPatternPoints
 // batch points at most (at least one patch each) and calls fn(chunk) in patch order.
 template <class Fn>
@@ -249,7 +257,7 @@ FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const t
   const std::span<const tess::Levels> sets[] = {levels};
   forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
     const std::vector<const ScreenPattern*> patterns =
-        cache_.acquire(chunk.keys, kPatternEdges | kPatternSamples);
+        cache_.acquire(chunk.keys, kPatternEdges | kPatternSamples, sharesPatterns(chunk));
     const size_t count = chunk.end - chunk.begin;
     auto pattern_of = [&](size_t i) -> const ScreenPattern& {
       return *patterns[chunk.key_of[0][i]];
@@ -305,7 +313,7 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
   tbb::enumerable_thread_specific<Scratch> scratch;
   const std::span<const tess::Levels> sets[] = {levels};
   forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
-    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternSamples);
+    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternSamples, sharesPatterns(chunk));
     const size_t count = chunk.end - chunk.begin;
     std::vector<ErrorSums> slots(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
@@ -333,7 +341,7 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
   tbb::enumerable_thread_specific<Scratch> scratch;
   const std::span<const tess::Levels> sets[] = {before, after};
   forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
-    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternLattice);
+    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternLattice, sharesPatterns(chunk));
     const size_t count = chunk.end - chunk.begin;
     std::vector<ErrorSums> slots(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {

@@ -78,12 +78,17 @@ void buildSamples(ScreenPattern* pattern) {
 }
 
 // The batch pattern of the vertices, followed by the samples when there are any.
-void buildPoints(const SurfacePatches& patches, ScreenPattern* pattern) {
+void buildPoints(const SurfacePatches& patches, ScreenPattern* pattern, bool technique_kernel) {
   std::vector<DomainCoord> coords;
   coords.reserve(pattern->vertexCount() + pattern->samples.size());
   coords.insert(coords.end(), pattern->vertex_coords.begin(), pattern->vertex_coords.end());
   for (const VertexBlend& s : pattern->samples) {
     coords.push_back(blendCoord(pattern->vertex_coords, s));
+  }
+  if (!technique_kernel) {
+    pattern->points = std::make_unique<BatchPattern>(pattern->key.domain, std::move(coords),
+                                                     BatchOutput::kPositionAndDerivatives);
+    return;
   }
   pattern->points = patches.makeBatchPattern(pattern->key.domain, std::move(coords),
                                              BatchOutput::kPositionAndDerivatives);
@@ -144,7 +149,8 @@ ScreenPatternKey screenPatternKey(PatchDomain domain, tess::Spacing spacing,
   return {domain, spacing, tess::levelsBits(levels)};
 }
 
-void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern) {
+void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern,
+                           bool technique_kernel) {
   if (!pattern->tessellated) tessellatePattern(pattern);
   if (!pattern->culled) {
     const unsigned missing = parts & ~pattern->parts;
@@ -155,7 +161,7 @@ void completeScreenPattern(const SurfacePatches& patches, unsigned parts, Screen
     if (missing & kPatternLattice) buildLattice(pattern);
     if (missing & kPatternSamples) buildSamples(pattern);
     // A pattern of the vertices alone is replaced by one with the samples appended.
-    if (!pattern->points || (missing & kPatternSamples)) buildPoints(patches, pattern);
+    if (!pattern->points || (missing & kPatternSamples)) buildPoints(patches, pattern, technique_kernel);
   }
   pattern->parts |= parts;
 }
@@ -178,7 +184,7 @@ ScreenPatternCache::ScreenPatternCache(const SurfacePatches& patches, size_t max
     : patches_(patches), max_points_(max_points) {}
 
 std::vector<const ScreenPattern*> ScreenPatternCache::acquire(
-    std::span<const ScreenPatternKey> keys, unsigned parts) {
+    std::span<const ScreenPatternKey> keys, unsigned parts, bool technique_kernels) {
   size_t held = 0;
   for (const auto& [key, pattern] : patterns_) held += pattern->patternPoints();
   if (held > max_points_) {
@@ -198,7 +204,9 @@ std::vector<const ScreenPattern*> ScreenPatternCache::acquire(
   }
   // Distinct keys, so each task completes its own pattern.
   tbb::parallel_for(size_t(0), to_build.size(),
-                    [&](size_t k) { completeScreenPattern(patches_, parts, found[to_build[k]]); });
+                    [&](size_t k) {
+    completeScreenPattern(patches_, parts, found[to_build[k]], technique_kernels);
+  });
   return {found.begin(), found.end()};
 }
 

@@ -80,7 +80,12 @@ struct ScreenPattern {
 // Builds whatever of `parts` (and the tessellation) `pattern` lacks. For Spacing::kPow2
 // the levels are rounded up to powers of two and tessellated with integer spacing, as the
 // GPU path does (core/gpu/patch_program.cpp).
-void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern);
+// technique_kernel: build the batch pattern with the technique's makeBatchPattern (its
+// tabulated kernel: worth it when many patches share the pattern); false: a plain pattern,
+// evaluated point by point (cheaper for a pattern one patch uses: gregory_acc tabulates
+// ~15 basis evaluations per point).
+void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern,
+                           bool technique_kernel = true);
 
 // Domain points a pattern for `levels` may hold with every part (an upper estimate from the
 // largest level, used to size chunks before tessellating).
@@ -95,7 +100,9 @@ class ScreenPatternCache {
   // The patterns of `keys` (distinct: no key twice), in their order, each with at least `parts`;
   // the missing ones are built in parallel. Entries not in `keys` may be dropped first to stay
   // within the bound. The pointers are valid until the next call.
-  std::vector<const ScreenPattern*> acquire(std::span<const ScreenPatternKey> keys, unsigned parts);
+  // technique_kernels: as completeScreenPattern's, for the patterns built by this call.
+  std::vector<const ScreenPattern*> acquire(std::span<const ScreenPatternKey> keys, unsigned parts,
+                                            bool technique_kernels = true);
   size_t size() const { return patterns_.size(); }
 
  private:

@@ -16,11 +16,16 @@ class PnPatches final : public TrianglePatchesBase {
   PnPatches(Triangulation triangulation, const TriangleRecordOptions& options)
       : TrianglePatchesBase(std::move(triangulation)),
         options_(options),
-        build_(buildTriangleRecords(tri_.mesh, options_)) {}
+        build_(buildTriangleRecords(tri_.mesh, options_)) {
+    // The double control nets, once per patch (what every evaluate() would recompute).
+    controls_.reserve(patchCount());
+    for (size_t p = 0; p < patchCount(); ++p) {
+      controls_.push_back(computeControl(recordInputDouble(tri_.mesh, build_, options_, p)));
+    }
+  }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
-    const PnControl<double> control =
-        computeControl(recordInputDouble(tri_.mesh, build_, options_, patch));
+    const PnControl<double>& control = controls_.at(patch);
     const auto& perm = build_.records[patch].perm;
     const PnPoint<double> point =
         evaluateControl(control, {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
@@ -81,6 +86,7 @@ class PnPatches final : public TrianglePatchesBase {
  private:
   TriangleRecordOptions options_;
   TriangleRecords build_;
+  std::vector<PnControl<double>> controls_;  // per patch, built once
 };
 
 }  // namespace
