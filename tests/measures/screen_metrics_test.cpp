@@ -275,7 +275,10 @@ TEST(ScreenMetrics, EachPatchAloneAddsUpToTheWholeSurface) {
     squares += f.rms_px * f.rms_px * double(f.samples);
   }
   EXPECT_EQ(whole.samples, samples);
-  EXPECT_EQ(whole.max_px, max_px);
+  // The whole surface (every patch its own levels) evaluates point by point, a patch alone
+  // (the rest culled: two patterns for every patch) with the technique's batch kernel;
+  // the two agree to rounding.
+  EXPECT_NEAR(whole.max_px, max_px, 1e-9 * max_px);
   EXPECT_NEAR(whole.rms_px, std::sqrt(squares / double(samples)), 1e-12 * whole.rms_px);
 }
 
