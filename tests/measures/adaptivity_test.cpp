@@ -108,6 +108,35 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"pn_triangles", "aen", "tessbench/cylinder_seam.obj"},
                       Case{"phong", "edge", "tessbench/cylinder_seam.obj"}));
 
+// Acceptance 1 along the bundled paths: on every frame of orbit, dolly and flyby at their
+// own frame counts, each technique's TCS writes exactly the twin's levels.
+TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const Case cases[] = {{"acc", "default", "opensubdiv/catmark_xord_interior.obj"},
+                        {"gregory_acc", "edge_symmetric", "opensubdiv/catmark_nonquads.obj"},
+                        {"pn_triangles", "pn", "tessbench/tri_torus.obj"},
+                        {"phong", "alpha0.75", "tessbench/cylinder_seam.obj"}};
+  for (const Case& c : cases) {
+    const BuiltSurface patches = build(c);
+    AdaptivityRun run(*patches, &context, "", nullptr);
+    size_t frames = 0;
+    for (const char* path : {"orbit", "dolly", "flyby"}) {
+      const std::vector<View> views = pathViews(path, *patches);
+      for (const char* name : {"sphere_diameter", "lp2_edge_silhouette"}) {
+        for (const AdaptivityFrame& f : run.frames(*parseFactorPolicy(name),
+                                                   tess::Spacing::kFractionalOdd, views,
+                                                   {.screen = false, .cracks = false})) {
+          ASSERT_TRUE(f.gpu_measured);
+          EXPECT_EQ(f.twin_level_mismatches, 0u) << c << " " << path << " frame " << f.frame;
+          EXPECT_EQ(f.gpu_tes_invocations, f.domain_points) << c << " " << path;
+          ++frames;
+        }
+      }
+    }
+    EXPECT_EQ(frames, 2u * (24 + 120 + 48)) << c;
+  }
+}
+
 // The control: endpoints in patch order make the two sides of some shared edges differ.
 TEST(Adaptivity, OrderDependentPolicyGivesSharedEdgesTwoFactors) {
   TB_GPU_CONTEXT_OR_SKIP(context);
