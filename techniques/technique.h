@@ -71,6 +71,22 @@ struct SurfacePointF {
   Vec3f normal;  // as the TES outputs it (normalised there when the shader normalises)
 };
 
+// What a conservative patch culler may assume about one patch (the culling measure,
+// harness/measures/cull_policy.h), in world units of controlMesh(). Computed once per
+// patch in double; the harness rounds it outward for the device.
+struct PatchCullBounds {
+  // Points whose convex hull contains the whole patch: its Bezier, Gregory or PN control
+  // net (a patch lies in the convex hull of its control points). Never empty.
+  std::vector<Vec3d> hull;
+  // Vectors whose non-negative combinations include the geometric normal dp/du x dp/dv of
+  // the position patch at every point of the domain (never a shading normal), oriented to
+  // the front: the side the control face's winding (counter-clockwise, OBJ order) faces,
+  // which is the side the technique's tessellated triangles face. For a polynomial patch,
+  // the control points of its normal patch (Sederberg & Meyers 1988; the cone of normals
+  // of Shirman & Abi-Ezzi 1993 is built from them). Empty: no bound, so no cone culling.
+  std::vector<Vec3d> normal_generators;
+};
+
 // Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
 // evaluators run with CountingScalar in the shader's operation order.
 struct OperationProfile {
@@ -114,6 +130,13 @@ class SurfacePatches {
   // Operation counts for patch p at an interior domain point, or nullopt when the
   // technique does not count. Counts may differ between regular and irregular patches.
   virtual std::optional<OperationProfile> operationProfile(size_t patch) const {
+    (void)patch;
+    return std::nullopt;
+  }
+  // Conservative bounds of patch p for culling (PatchCullBounds), or nullopt when the
+  // technique gives none: then only the culling policies that read corners alone
+  // (backface_lp2, frustum_lp2 with a global margin) can cull its patches.
+  virtual std::optional<PatchCullBounds> cullBounds(size_t patch) const {
     (void)patch;
     return std::nullopt;
   }
