@@ -33,8 +33,11 @@ constexpr uint32_t kCaptureBoundaryConstantId = 200;
 constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
 // kTbFactorPolicy in shaders/common/patch_program_tcs.glsl.
 constexpr uint32_t kFactorPolicyConstantId = 201;
-// Set 1: the harness levels, then the factor policy's corners, parameters and output.
-constexpr uint32_t kLevelsSetBindings = 4;
+// kTbCullPolicy in shaders/common/patch_program_tcs.glsl.
+constexpr uint32_t kCullPolicyConstantId = 202;
+// Set 1: the harness levels, then the factor policy's corners, parameters and output, then
+// the culling policy's parameters and per-patch bounds.
+constexpr uint32_t kLevelsSetBindings = 6;
 constexpr uint32_t kFactorCornerWordsPerPatch = 32;
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
@@ -79,20 +82,22 @@ struct CallResources {
   Buffer factor_corners;  // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
   Buffer factor_params;   // TcsFactorPolicy::param_words
   Buffer factor_out;      // the levels the TCS wrote, 8 words per patch
+  Buffer cull_params;     // TcsCullPolicy::param_words
+  Buffer cull_patches;    // TcsCullPolicy::patch_words
   std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
 using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
-                              uint32_t, uint32_t, uint32_t>;
+                              uint32_t, uint32_t, uint32_t, uint32_t>;
 
 // `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
 // entry, ignored by the TCS, which does not declare it. `factor_policy`: kTbFactorPolicy,
-// likewise ignored by the TES.
+// likewise ignored by the TES, and so is `cull_policy`: kTbCullPolicy.
 VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
                                       tess::Spacing spacing, uint32_t boundary,
-                                      uint32_t factor_policy, VkShaderModule vertex,
-                                      VkPipelineLayout layout) {
+                                      uint32_t factor_policy, uint32_t cull_policy,
+                                      VkShaderModule vertex, VkPipelineLayout layout) {
   const VkShaderModuleOwner control =
       createShaderModule(device, requireEmbeddedShader(program.control_shader));
   const std::vector<uint32_t> tes_spirv = withTessModes(
@@ -109,6 +114,10 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
   if (factor_policy != 0) {
     entries.push_back({kFactorPolicyConstantId, uint32_t(values.size()) * 4u, 4});
     values.push_back(factor_policy);
+  }
+  if (cull_policy != 0) {
+    entries.push_back({kCullPolicyConstantId, uint32_t(values.size()) * 4u, 4});
+    values.push_back(cull_policy);
   }
   VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
                                       values.data()};
@@ -135,13 +144,13 @@ class PatchProgramCache {
   }
 
   ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary,
-                       uint32_t factor_policy) {
+                       uint32_t factor_policy, uint32_t cull_policy) {
     const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
     ProgramKey key{program.control_shader, program.evaluation_shader,
                    program.specialization, int(program.domain),
                    int(spacing),           program.input_vertices_per_patch,
                    binding_count,          boundary,
-                   factor_policy};
+                   factor_policy,          cull_policy};
     const std::lock_guard lock(mutex_);
     if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
@@ -156,7 +165,7 @@ class PatchProgramCache {
     const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
     p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
     p->pipeline = createProgramPipeline(device, program, spacing, boundary, factor_policy,
-                                        vertex_.get(), p->layout.get());
+                                        cull_policy, vertex_.get(), p->layout.get());
     return *programs_.emplace(std::move(key), std::move(p)).first->second;
   }
 
@@ -485,7 +494,7 @@ uint32_t captureBoundary(const GpuPatchProgram& program, const PatchProgramOptio
 }
 
 void checkProgram(const Context& context, const GpuPatchProgram& program, size_t level_count,
-                  const TcsFactorPolicy* policy) {
+                  const TcsFactorPolicy* policy, const TcsCullPolicy* cull) {
   if (program.input_vertices_per_patch == 0 ||
       program.input_vertices_per_patch > context.limits().maxTessellationPatchSize) {
     throw GpuError("patch program " + program.control_shader + ": " +
@@ -496,6 +505,12 @@ void checkProgram(const Context& context, const GpuPatchProgram& program, size_t
       policy->corner_words.size() != size_t(program.patch_count) * kFactorCornerWordsPerPatch) {
     throw GpuError("patch program " + program.control_shader + ": factor policy corners for " +
                    std::to_string(policy->corner_words.size() / kFactorCornerWordsPerPatch) +
+                   " patches, the program has " + std::to_string(program.patch_count));
+  }
+  if (cull != nullptr &&
+      cull->patch_words.size() != size_t(program.patch_count) * kTcsCullPatchWords) {
+    throw GpuError("patch program " + program.control_shader + ": culling bounds for " +
+                   std::to_string(cull->patch_words.size() / kTcsCullPatchWords) +
                    " patches, the program has " + std::to_string(program.patch_count));
   }
   if (level_count != program.patch_count) {
@@ -511,10 +526,13 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                                     const PatchProgramOptions& options) {
   context.requireFeatures(tessCaptureFeatures(), "patch program");
   const TcsFactorPolicy* policy = options.factor_policy;
-  checkProgram(context, program, patch_levels.size(), policy);
+  const TcsCullPolicy* cull = options.cull_policy;
+  checkProgram(context, program, patch_levels.size(), policy, cull);
   const uint32_t boundary = captureBoundary(program, options);
   PatchProgramCache& cache = context.attachment<PatchProgramCache>();
-  ProgramPipeline& pipeline = cache.get(program, options.spacing, boundary, policy ? 1u : 0u);
+  ProgramPipeline& pipeline =
+      cache.get(program, options.spacing, boundary, policy ? 1u : 0u, cull ? 1u : 0u);
+  const bool read_levels = policy != nullptr || cull != nullptr;
   const CallResourcesLease resources(cache);
   const VkDevice device = context.device();
 
@@ -532,8 +550,12 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
                   &resources->factor_corners);
   const VkDeviceSize params_range = uploadWords(
       context, policy ? std::span(policy->param_words) : no_words, &resources->factor_params);
-  const std::vector<uint32_t> zero_out(policy ? size_t(program.patch_count) * 8 : 0, 0u);
+  const std::vector<uint32_t> zero_out(read_levels ? size_t(program.patch_count) * 8 : 0, 0u);
   const VkDeviceSize out_range = uploadWords(context, zero_out, &resources->factor_out);
+  const VkDeviceSize cull_params_range = uploadWords(
+      context, cull ? std::span(cull->param_words) : no_words, &resources->cull_params);
+  const VkDeviceSize cull_patches_range = uploadWords(
+      context, cull ? std::span(cull->patch_words) : no_words, &resources->cull_patches);
   auto [sets, first_use] = resources->sets.try_emplace(&pipeline);
   if (first_use) {
     sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
@@ -544,9 +566,10 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   const StorageBufferSet& levels_descriptors = sets->second.levels;
   const VkBuffer levels_handles[kLevelsSetBindings] = {
       resources->levels.handle(), resources->factor_corners.handle(),
-      resources->factor_params.handle(), resources->factor_out.handle()};
-  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {levels_range, corners_range,
-                                                          params_range, out_range};
+      resources->factor_params.handle(), resources->factor_out.handle(),
+      resources->cull_params.handle(),   resources->cull_patches.handle()};
+  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
+      levels_range, corners_range, params_range, out_range, cull_params_range, cull_patches_range};
   levels_descriptors.bind(device, levels_handles, levels_ranges);
   // Binds set 0 to the current capture buffer (replaced when it grows).
   auto bindBuffers = [&]() {
@@ -600,7 +623,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
     if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
   }
   if (options.sort) sortUnique(&result.vertices);
-  if (policy) {
+  if (read_levels) {
     std::vector<uint32_t> written(size_t(program.patch_count) * 8);
     resources->factor_out.read(written.data(), written.size() * 4);
     result.tcs_levels.resize(program.patch_count);

@@ -51,6 +51,16 @@ struct TcsFactorPolicy {
   std::vector<uint32_t> param_words;  // TbFactorParamsBlock at set 1, binding 2
 };
 
+// A culling policy run by the program's own TCS (shaders/common/cull.glsl): culled patches
+// get outer level 0. Plain words; the CPU twin that packs them is
+// harness/measures/cull_policy.h.
+struct TcsCullPolicy {
+  std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4 (32 words)
+  // Per program patch, kTcsCullPatchWords words: TbCullPatches at set 1, binding 5.
+  std::vector<uint32_t> patch_words;
+};
+inline constexpr size_t kTcsCullPatchWords = 120;  // sizeof(TbCullPatch) / 4
+
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's
   // invocation order; duplicates (same patch, same coord) are kept once. Unless
@@ -59,7 +69,7 @@ struct PatchProgramCapture {
   PipelineStatistics stats;      // summed over all draws
   double submit_to_fence_s = 0;  // host seconds over all submissions
   uint32_t draws = 0;
-  // With PatchProgramOptions::factor_policy: the levels the TCS wrote, per program patch
+  // With PatchProgramOptions::factor_policy or cull_policy: the levels the TCS wrote, per program patch
   // (patches outside the call's range stay 0), float bits outer[0..3], inner[0..1].
   std::vector<tess::LevelsBits> tcs_levels;
 };
@@ -85,6 +95,10 @@ struct PatchProgramOptions {
   // which size the capture: pass the CPU twin's. Its corner_words must hold 32 words per
   // program patch.
   const TcsFactorPolicy* factor_policy = nullptr;
+  // Non-null: the TCS culls with this policy (kTbCullPolicy = 1) and the call returns the
+  // levels it wrote (tcs_levels; a culled patch has outer levels 0). Its patch_words must
+  // hold kTcsCullPatchWords words per program patch.
+  const TcsCullPolicy* cull_policy = nullptr;
 };
 
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before

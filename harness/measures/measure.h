@@ -72,6 +72,9 @@ enum class VariantPolicy : uint8_t {
   // variant whose SurfacePatches::footprint() differs from the default's on the asset
   // (gregory_acc/quads_only: 3 quads per triangle; phong/edge: per-edge normals).
   kWhenPatchDataDiffers,
+  // The default variant in the default suite, every variant in --suite full (culling: the
+  // figures follow the variant, but a frame costs a render and a device run per policy).
+  kEveryVariantInFullSuite,
 };
 
 // A measure's whole declaration of where it runs.

@@ -20,6 +20,8 @@ bool policyAdmits(VariantPolicy policy, const VariantStanding& standing) {
       return true;
     case VariantPolicy::kWhenPatchDataDiffers:
       return standing.is_default || standing.own_patch_data;
+    case VariantPolicy::kEveryVariantInFullSuite:
+      return standing.is_default || standing.full_suite;
   }
   return false;
 }

@@ -25,6 +25,7 @@ struct VariantStanding {
   // The variant's patch data differ from the default variant's on this asset. Before the
   // instance is built: whether they may (the default's footprint is known).
   bool own_patch_data = false;
+  bool full_suite = false;  // the run is --suite full
 };
 
 // True when every need the suite decides on (surface, simulation) is met, the technique

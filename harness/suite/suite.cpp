@@ -175,7 +175,8 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
                     std::optional<DataFootprint>* default_footprint) {
   StepOutcome outcome;
   // Measures that may run, before building: no instance is built that no measure would use.
-  const VariantStanding maybe{is_default, default_footprint->has_value()};
+  const bool full = run.suite == SuiteMode::kFull;
+  const VariantStanding maybe{is_default, default_footprint->has_value(), full};
   bool any_may_run = false;
   for (const Measure* measure : run.measures) {
     any_may_run |=
@@ -203,7 +204,7 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   std::vector<const Measure*> runnable;
   for (const Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
-                    {is_default, own_patch_data}) &&
+                    {is_default, own_patch_data, full}) &&
         ownsMeasure(run.shard, technique.info().id, variant.name, input.name, measure->info().id)) {
       runnable.push_back(measure);
     }

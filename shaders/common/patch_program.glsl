@@ -8,10 +8,13 @@
 //                          patch_program_tcs.glsl), indexed by tbPatchIndex()
 //   set 1, bindings 1..3   the factor policy's corners, parameters and written levels
 //                          (TCS only; tess_factors.glsl)
+//   set 1, bindings 4..5   the culling policy's parameters and per-patch bounds (TCS only;
+//                          cull.glsl)
 //   push constants         this block
 //   constant_id 0..M-1     GpuPatchProgram::specialization (declare them in the shader)
 //   constant_id 200        the harness's kTbCaptureBoundary (patch_program_tes.glsl)
 //   constant_id 201        the harness's kTbFactorPolicy (patch_program_tcs.glsl)
+//   constant_id 202        the harness's kTbCullPolicy (patch_program_tcs.glsl)
 #ifndef TB_PATCH_PROGRAM_GLSL
 #define TB_PATCH_PROGRAM_GLSL
 

@@ -4,11 +4,15 @@
 
 #include "patch_program.glsl"
 #include "tess_factors.glsl"
+#include "cull.glsl"
 
 // Harness specialisation constant: 0, the levels come from the harness (set 1, binding 0);
 // 1, the TCS computes them with the factor policy of tess_factors.glsl (set 1, bindings
 // 1..3). Frozen at 0 where shaders are counted (the instructions measure).
 layout(constant_id = 201) const uint kTbFactorPolicy = 0u;
+// Harness specialisation constant: 1, the TCS culls with the policy of cull.glsl (set 1,
+// bindings 4 and 5) by writing outer level 0. Frozen at 0 where shaders are counted.
+layout(constant_id = 202) const uint kTbCullPolicy = 0u;
 
 // One patch's levels as float bits, written by the CPU (runPatchProgram's per-patch
 // levels; uniform levels are the same entry for every patch). 32 bytes per patch.
@@ -22,19 +26,29 @@ layout(std430, set = 1, binding = 0) readonly buffer TbLevels {
 };
 
 // Writes this patch's levels (tbPatchIndex()): the harness's, bit for bit, or with
-// kTbFactorPolicy those of the factor policy (tess_factors.glsl). Call from one invocation.
+// kTbFactorPolicy those of the factor policy (tess_factors.glsl); with kTbCullPolicy, outer
+// levels 0 when the culling policy (cull.glsl) culls the patch. With either, the levels
+// also go to the read-back buffer. Call from one invocation.
 void tbWriteHarnessLevels() {
+  const uint patch_index = tbPatchIndex();
+  float outer[4];
+  float inner[2];
   if (kTbFactorPolicy != 0u) {
-    tbWritePolicyLevels(tbPatchIndex());
-    return;
+    tbPolicyLevels(patch_index, outer, inner);
+  } else {
+    const TbPatchLevels levels = tb_patch_levels[patch_index];
+    outer = float[4](uintBitsToFloat(levels.outer_bits.x), uintBitsToFloat(levels.outer_bits.y),
+                     uintBitsToFloat(levels.outer_bits.z), uintBitsToFloat(levels.outer_bits.w));
+    inner = float[2](uintBitsToFloat(levels.inner_bits.x), uintBitsToFloat(levels.inner_bits.y));
   }
-  const TbPatchLevels levels = tb_patch_levels[tbPatchIndex()];
-  gl_TessLevelOuter[0] = uintBitsToFloat(levels.outer_bits.x);
-  gl_TessLevelOuter[1] = uintBitsToFloat(levels.outer_bits.y);
-  gl_TessLevelOuter[2] = uintBitsToFloat(levels.outer_bits.z);
-  gl_TessLevelOuter[3] = uintBitsToFloat(levels.outer_bits.w);
-  gl_TessLevelInner[0] = uintBitsToFloat(levels.inner_bits.x);
-  gl_TessLevelInner[1] = uintBitsToFloat(levels.inner_bits.y);
+  if (kTbCullPolicy != 0u && tbCullPatch(patch_index)) outer = float[4](0.0, 0.0, 0.0, 0.0);
+  gl_TessLevelOuter[0] = outer[0];
+  gl_TessLevelOuter[1] = outer[1];
+  gl_TessLevelOuter[2] = outer[2];
+  gl_TessLevelOuter[3] = outer[3];
+  gl_TessLevelInner[0] = inner[0];
+  gl_TessLevelInner[1] = inner[1];
+  if (kTbFactorPolicy != 0u || kTbCullPolicy != 0u) tbWriteBackLevels(patch_index, outer, inner);
 }
 
 #endif

@@ -187,9 +187,9 @@ float tbEdgeFactor(vec3 a, vec3 b, vec3 na, vec3 nb) {
   return factor;
 }
 
-// Computes this patch's levels from the policy, writes them to gl_TessLevel* and to the
-// read-back buffer. Call from one invocation.
-void tbWritePolicyLevels(uint patch_index) {
+// This patch's levels from the policy (outer[0..3], inner[0..1]; triangles leave outer[3]
+// and inner[1] at 0). Call from one invocation.
+void tbPolicyLevels(uint patch_index, out float outer[4], out float inner[2]) {
   const bool quad = tb_factor.domain == 1u;
   const uint n = quad ? 4u : 3u;
   vec3 p[4];
@@ -208,8 +208,8 @@ void tbWritePolicyLevels(uint patch_index) {
     raw[j] = tbEdgeFactor(p[start], p[end], nrm[start], nrm[end]);
   }
   if (!quad) raw[3] = 0.0;
-  float outer[4] = float[4](0.0, 0.0, 0.0, 0.0);
-  float inner = 0.0;
+  outer = float[4](0.0, 0.0, 0.0, 0.0);
+  float inside = 0.0;
   bool culled = false;
   for (uint j = 0u; j < n; ++j) culled = culled || !(raw[j] > 0.0);
   if (!culled) {
@@ -221,17 +221,16 @@ void tbWritePolicyLevels(uint patch_index) {
     }
     // Quads reduce (v = 0, v = 1, u = 0, u = 1), as ProcessQuadTessFactors* does.
     float e[4] = quad ? float[4](cleaned[1], cleaned[3], cleaned[0], cleaned[2]) : cleaned;
-    inner = tbInsideFactor(tb_factor.reduction, e, n, tb_factor.spacing);
+    inside = tbInsideFactor(tb_factor.reduction, e, n, tb_factor.spacing);
   }
-  gl_TessLevelOuter[0] = outer[0];
-  gl_TessLevelOuter[1] = outer[1];
-  gl_TessLevelOuter[2] = outer[2];
-  gl_TessLevelOuter[3] = outer[3];
-  gl_TessLevelInner[0] = inner;
-  gl_TessLevelInner[1] = quad ? inner : 0.0;
+  inner = float[2](inside, quad ? inside : 0.0);
+}
+
+// Writes the levels a TCS chose (policy and culling) to the read-back buffer.
+void tbWriteBackLevels(uint patch_index, float outer[4], float inner[2]) {
   tb_factor_out[patch_index * 2u] = floatBitsToUint(vec4(outer[0], outer[1], outer[2], outer[3]));
-  tb_factor_out[patch_index * 2u + 1u] = uvec4(floatBitsToUint(inner),
-                                         floatBitsToUint(quad ? inner : 0.0), 0u, 0u);
+  tb_factor_out[patch_index * 2u + 1u] =
+      uvec4(floatBitsToUint(inner[0]), floatBitsToUint(inner[1]), 0u, 0u);
 }
 
 #endif

@@ -1,0 +1,135 @@
+// Patch culling in every technique's TCS, when the harness turns it on (kTbCullPolicy != 0,
+// see patch_program_tcs.glsl): a culled patch gets outer level 0, so the tessellator drops
+// it and no TES invocation runs for it. The CPU twin is harness/measures/cull_policy.{h,cpp}:
+// same float operations in the same order, so its decision equals the TCS's for every patch
+// (tests/measures/cull_policy_gpu_test.cpp).
+//
+//   set 1, binding 4   the policy and the view (TbCullParams)
+//   set 1, binding 5   per patch: corners, the cone of normals and the control hull
+//
+// Policies (TbCullParams::policy):
+// - backface_lp2: every corner's normal faces away from the eye, n . (eye - p) < 0 (CAPCOM,
+//   "Lost Planet 2: DirectX 11 Features"). Not conservative: a curved patch bulges past its
+//   corners' normals.
+// - frustum_lp2_global / frustum_lp2_exact: the talk's clip flags, AND-ed over the corners:
+//   every corner lies more than a margin outside one of the six frustum planes. The margin is
+//   one global distance, or per corner the largest bulge of the patches around it over their
+//   corners (the talk's "exact" suggestion, from the control hulls).
+// - frustum_hull: every point of the patch's control hull lies outside one plane
+//   (conservative: the patch lies in the convex hull of its control points).
+// - cone: back-patch culling with the cone of normals (Shirman & Abi-Ezzi, "The Cone of
+//   Normals Technique for Fast Processing of Curved Patches", Eurographics 1993): the patch's
+//   geometric normals lie within angle t of the axis a; it faces away everywhere when every
+//   hull point q has angle(q - eye, a) < 90 deg - t, i.e. (q - eye) . a > |q - eye| sin t.
+// - combined: frustum_hull or cone.
+// Each test widens by the patch's displacement bound (world units; 0 until displacement).
+#ifndef TB_CULL_GLSL
+#define TB_CULL_GLSL
+
+#include "float_order.glsl"
+
+// TbCullParams::policy
+const uint kTbCullBackfaceLp2 = 1u;
+const uint kTbCullFrustumLp2Global = 2u;
+const uint kTbCullFrustumLp2Exact = 3u;
+const uint kTbCullFrustumHull = 4u;
+const uint kTbCullCone = 5u;
+const uint kTbCullCombined = 6u;
+
+const uint kTbCullHullPoints = 20u;  // hull[] capacity per patch
+
+layout(std430, set = 1, binding = 4) readonly buffer TbCullParamsBlock {
+  vec4 planes[6];        // world-space frustum planes, unit xyz: inside when xyz . p + w >= 0
+  vec4 eye;              // xyz: camera position, world units
+  float global_margin;   // frustum_lp2_global's margin, world units
+  uint policy;
+  uint pad0;
+  uint pad1;
+} tb_cull;
+
+struct TbCullPatch {
+  vec4 corner_position[4];  // xyz: welded corner position; w: frustum_lp2_exact's margin
+  vec4 corner_normal[4];    // xyz: the welded position's unit normal
+  vec4 cone;                // xyz: unit axis; w: sin of the half angle, > 1 when there is no cone
+  uvec4 header;             // x: corners (3 or 4), y: hull points, z: displacement bound bits
+  vec4 hull[kTbCullHullPoints];  // xyz
+};
+
+layout(std430, set = 1, binding = 5) readonly buffer TbCullPatches {
+  TbCullPatch tb_cull_patches[];
+};
+
+// Signed distance of p to plane k (positive inside).
+float tbPlaneDistance(uint k, vec3 p) {
+  precise float d = tbDot(tb_cull.planes[k].xyz, p) + tb_cull.planes[k].w;
+  return d;
+}
+
+bool tbCullBackfaceLp2(uint patch_index) {
+  const uint corners = tb_cull_patches[patch_index].header.x;
+  const vec3 eye = tb_cull.eye.xyz;
+  for (uint c = 0u; c < corners; ++c) {
+    const vec3 p = tb_cull_patches[patch_index].corner_position[c].xyz;
+    const vec3 n = tb_cull_patches[patch_index].corner_normal[c].xyz;
+    precise vec3 to_eye = eye - p;
+    if (!(tbDot(n, to_eye) < 0.0)) return false;
+  }
+  return true;
+}
+
+bool tbCullFrustumCorners(uint patch_index, bool exact) {
+  const uint corners = tb_cull_patches[patch_index].header.x;
+  const float displacement = uintBitsToFloat(tb_cull_patches[patch_index].header.z);
+  for (uint k = 0u; k < 6u; ++k) {
+    bool outside = true;
+    for (uint c = 0u; c < corners && outside; ++c) {
+      const vec4 corner = tb_cull_patches[patch_index].corner_position[c];
+      precise float margin = (exact ? corner.w : tb_cull.global_margin) + displacement;
+      outside = tbPlaneDistance(k, corner.xyz) < -margin;
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
+bool tbCullFrustumHull(uint patch_index) {
+  const uint points = tb_cull_patches[patch_index].header.y;
+  const float displacement = uintBitsToFloat(tb_cull_patches[patch_index].header.z);
+  for (uint k = 0u; k < 6u; ++k) {
+    bool outside = true;
+    for (uint i = 0u; i < points && outside; ++i) {
+      outside = tbPlaneDistance(k, tb_cull_patches[patch_index].hull[i].xyz) < -displacement;
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
+bool tbCullCone(uint patch_index) {
+  const vec4 cone = tb_cull_patches[patch_index].cone;
+  if (!(cone.w <= 1.0)) return false;
+  const uint points = tb_cull_patches[patch_index].header.y;
+  const float displacement = uintBitsToFloat(tb_cull_patches[patch_index].header.z);
+  const vec3 eye = tb_cull.eye.xyz;
+  for (uint i = 0u; i < points; ++i) {
+    precise vec3 d = tb_cull_patches[patch_index].hull[i].xyz - eye;
+    precise float along = tbDot(d, cone.xyz) - displacement;
+    precise float reach = (sqrt(tbDot(d, d)) + displacement) * cone.w;
+    if (!(along > reach)) return false;
+  }
+  return true;
+}
+
+// True when the policy culls patch `patch_index`.
+bool tbCullPatch(uint patch_index) {
+  const uint policy = tb_cull.policy;
+  if (policy == kTbCullBackfaceLp2) return tbCullBackfaceLp2(patch_index);
+  if (policy == kTbCullFrustumLp2Global) return tbCullFrustumCorners(patch_index, false);
+  if (policy == kTbCullFrustumLp2Exact) return tbCullFrustumCorners(patch_index, true);
+  if (policy == kTbCullFrustumHull) return tbCullFrustumHull(patch_index);
+  if (policy == kTbCullCone) return tbCullCone(patch_index);
+  if (policy == kTbCullCombined) return tbCullFrustumHull(patch_index) || tbCullCone(patch_index);
+  return false;
+}
+
+#endif
