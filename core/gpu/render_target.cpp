@@ -98,15 +98,16 @@ RenderTarget::RenderTarget(Context& context, uint32_t width_px, uint32_t height_
   color_readback_ = Buffer(context, pixels * 4, kReadback);
   id_readback_ = Buffer(context, pixels * 4, kReadback);
   depth_readback_ = Buffer(context, pixels * 4, kReadback);
-  createPipeline();
-}
-
-void RenderTarget::createPipeline() {
-  const VkDevice device = context_.device();
+  const VkDevice device = context.device();
   const VkShaderStageFlags stages[] = {VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_FRAGMENT_BIT};
   set_layout_ = createStorageBufferSetLayout(device, stages);
   layout_ = createPipelineLayout(device, set_layout_.get(), 0, 0);
   descriptors_ = StorageBufferSet(device, set_layout_.get(), 2);
+  pipeline_ = createPipeline(VK_CULL_MODE_NONE);
+}
+
+VkPipelineOwner RenderTarget::createPipeline(VkCullModeFlags cull_mode) {
+  const VkDevice device = context_.device();
   const VkShaderModuleOwner vertex =
       createShaderModule(device, requireEmbeddedShader("gpu/id_triangles.vert"));
   const VkShaderModuleOwner fragment =
@@ -154,11 +155,21 @@ void RenderTarget::createPipeline() {
   base.info.pMultisampleState = &multisample;
   base.info.pDepthStencilState = &depth;
   base.info.pColorBlendState = &blend_state;
-  pipeline_ = base.create(device, "vkCreateGraphicsPipelines (ID render target)");
+  // Front: counter-clockwise in framebuffer coordinates, by the specification's signed
+  // area (which counts y down), i.e. det[x y w] < 0 of the clip vertices (render_target.h).
+  base.raster.cullMode = cull_mode;
+  base.raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  return base.create(device, "vkCreateGraphicsPipelines (ID render target)");
 }
 
 double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_positions,
                                    std::span<const uint32_t> triangle_ids) {
+  return drawTriangles(clip_positions, triangle_ids, DrawOptions{});
+}
+
+double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_positions,
+                                   std::span<const uint32_t> triangle_ids,
+                                   const DrawOptions& options) {
   const uint32_t triangle_count = static_cast<uint32_t>(triangle_ids.size());
   if (clip_positions.size() != size_t{triangle_count} * 3) {
     throw GpuError("RenderTarget::drawTriangles: need 3 positions per triangle ID");
@@ -169,6 +180,12 @@ double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_po
   triangle_ids_.write(triangle_ids.data(), triangle_ids.size_bytes());
   const VkBuffer storage[] = {positions_.handle(), triangle_ids_.handle()};
   descriptors_.bind(context_.device(), storage);
+  if (options.cull_back_faces && !cull_back_pipeline_) {
+    cull_back_pipeline_ = createPipeline(VK_CULL_MODE_BACK_BIT);
+  }
+  const VkPipeline pipeline = options.cull_back_faces ? cull_back_pipeline_.get() : pipeline_.get();
+  const bool read_all = options.readback == Readback::kAll;
+  colors_and_depths_read_ = read_all;
 
   constexpr VkImageLayout kColorLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   constexpr VkImageLayout kDepthLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
@@ -195,12 +212,17 @@ double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_po
     VkClearValue clear_color{}, clear_id{}, clear_depth{};
     clear_id.color.uint32[0] = kNoId;
     clear_depth.depthStencil = {1.0f, 0};
-    const VkRenderingAttachmentInfo colors[] = {
+    VkRenderingAttachmentInfo colors[] = {
         clearedAttachment(color_.view.get(), kColorLayout, clear_color),
         clearedAttachment(id_.view.get(), kColorLayout, clear_id),
     };
-    const VkRenderingAttachmentInfo depth_attachment =
+    VkRenderingAttachmentInfo depth_attachment =
         clearedAttachment(depth_.view.get(), kDepthLayout, clear_depth);
+    if (!read_all) {  // nobody reads colour: neither clear nor keep it; depth is not kept
+      colors[0].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+      colors[0].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+      depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    }
     auto rendering = vkStruct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {width_, height_}};
     rendering.layerCount = 1;
@@ -208,7 +230,7 @@ double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_po
     rendering.pColorAttachments = colors;
     rendering.pDepthAttachment = &depth_attachment;
     vkCmdBeginRendering(cmd, &rendering);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1,
                             &descriptors_.set, 0, nullptr);
     if (triangle_count > 0) vkCmdDraw(cmd, triangle_count * 3, 1, 0, 0);
@@ -227,10 +249,12 @@ double RenderTarget::drawTriangles(std::span<const std::array<float, 4>> clip_po
     VkBufferImageCopy region{};
     region.imageExtent = {width_, height_, 1};
     region.imageSubresource = {kColorAspect, 0, 0, 1};
-    vkCmdCopyImageToBuffer(cmd, color, kCopyLayout, color_readback_.handle(), 1, &region);
     vkCmdCopyImageToBuffer(cmd, id, kCopyLayout, id_readback_.handle(), 1, &region);
-    region.imageSubresource.aspectMask = kDepthAspect;
-    vkCmdCopyImageToBuffer(cmd, depth, kCopyLayout, depth_readback_.handle(), 1, &region);
+    if (read_all) {
+      vkCmdCopyImageToBuffer(cmd, color, kCopyLayout, color_readback_.handle(), 1, &region);
+      region.imageSubresource.aspectMask = kDepthAspect;
+      vkCmdCopyImageToBuffer(cmd, depth, kCopyLayout, depth_readback_.handle(), 1, &region);
+    }
 
     auto to_host = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -245,12 +269,23 @@ std::vector<uint32_t> RenderTarget::ids() const {
   return {words.begin(), words.end()};
 }
 
+std::span<const uint32_t> RenderTarget::mappedIds() const {
+  const auto words = id_readback_.as<const uint32_t>();
+  return words.first(size_t{width_} * height_);
+}
+
 std::vector<uint32_t> RenderTarget::colors() const {
+  if (!colors_and_depths_read_) {
+    throw GpuError("RenderTarget::colors: the last draw did not read colours back");
+  }
   const auto words = color_readback_.as<uint32_t>();
   return {words.begin(), words.end()};
 }
 
 std::vector<float> RenderTarget::depths() const {
+  if (!colors_and_depths_read_) {
+    throw GpuError("RenderTarget::depths: the last draw did not read depths back");
+  }
   const auto values = depth_readback_.as<float>();
   return {values.begin(), values.end()};
 }

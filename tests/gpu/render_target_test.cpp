@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <span>
 #include <vector>
 
+#include "core/mesh/vec.h"
+#include "core/view/camera.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::gpu {
@@ -56,6 +60,73 @@ TEST(RenderTarget, NearerTriangleWinsTheDepthTest) {
   const std::vector<uint32_t> ids = {1, 2};
   target.drawTriangles(positions, ids);
   for (uint32_t value : target.ids()) ASSERT_EQ(value, 1u);
+}
+
+uint32_t countId(std::span<const uint32_t> ids, uint32_t wanted) {
+  return uint32_t(std::count(ids.begin(), ids.end(), wanted));
+}
+
+// Full-screen triangles: clip (-1,-1), (3,-1), (-1,3) is clockwise on the image (top-left,
+// top-right, bottom-left with y down) and det[x y w] = 16 > 0; the reverse order is
+// counter-clockwise, det < 0.
+const std::vector<std::array<float, 4>> kClockwise = {
+    {-1, -1, 0.5f, 1}, {3, -1, 0.5f, 1}, {-1, 3, 0.5f, 1}};
+const std::vector<std::array<float, 4>> kCounterClockwise = {
+    {-1, -1, 0.5f, 1}, {-1, 3, 0.5f, 1}, {3, -1, 0.5f, 1}};
+
+TEST(RenderTarget, BackFaceCullingDropsClockwiseTrianglesOnly) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  RenderTarget target(context, kSize, kSize);
+  const std::vector<uint32_t> ids = {5};
+  RenderTarget::DrawOptions cull;
+  cull.cull_back_faces = true;
+
+  target.drawTriangles(kClockwise, ids);  // default: no culling
+  EXPECT_EQ(countId(target.mappedIds(), 5), kSize * kSize);
+  target.drawTriangles(kClockwise, ids, cull);
+  EXPECT_EQ(countId(target.mappedIds(), 5), 0u);
+  target.drawTriangles(kCounterClockwise, ids, cull);
+  EXPECT_EQ(countId(target.mappedIds(), 5), kSize * kSize);
+}
+
+// The convention in world terms: with core/view/camera.h's matrices (y flipped into clip
+// space, so the image is upright), a triangle counter-clockwise seen from the eye (its
+// normal (v1 - v0) x (v2 - v0) towards the eye) is front-facing; its mirror is culled.
+TEST(RenderTarget, WorldTriangleFacingTheEyeIsFrontFacing) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const Mat4 view_projection =
+      perspective(1.0, 1.0, 0.1, 10.0) * lookAt({0.3, -0.2, 4}, {0, 0, 0}, {0, 1, 0});
+  auto clip = [&](const Vec3d& p) {
+    const auto c = view_projection.transform({p.x, p.y, p.z, 1});
+    return std::array<float, 4>{float(c[0]), float(c[1]), float(c[2]), float(c[3])};
+  };
+  const Vec3d a{-1, -1, 0}, b{1, -1, 0}, c{0, 1, 0};  // normal +z, towards the eye
+  ASSERT_GT(cross(b - a, c - a).z, 0);
+  RenderTarget target(context, kSize, kSize);
+  RenderTarget::DrawOptions cull;
+  cull.cull_back_faces = true;
+  const std::vector<uint32_t> ids = {9};
+  const std::vector<std::array<float, 4>> facing = {clip(a), clip(b), clip(c)};
+  target.drawTriangles(facing, ids, cull);
+  EXPECT_GT(countId(target.mappedIds(), 9), 0u);
+  const std::vector<std::array<float, 4>> away = {clip(a), clip(c), clip(b)};
+  target.drawTriangles(away, ids, cull);
+  EXPECT_EQ(countId(target.mappedIds(), 9), 0u);
+}
+
+TEST(RenderTarget, IdsOnlyReadbackKeepsIdsAndRefusesColoursAndDepths) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  RenderTarget target(context, kSize, kSize);
+  const std::vector<uint32_t> ids = {3};
+  target.drawTriangles(kCounterClockwise, ids);
+  const std::vector<uint32_t> all_ids = target.ids();
+  RenderTarget::DrawOptions ids_only;
+  ids_only.readback = RenderTarget::Readback::kIdsOnly;
+  target.drawTriangles(kCounterClockwise, ids, ids_only);
+  const std::span<const uint32_t> in_place = target.mappedIds();
+  EXPECT_TRUE(std::equal(in_place.begin(), in_place.end(), all_ids.begin(), all_ids.end()));
+  EXPECT_THROW(target.colors(), GpuError);
+  EXPECT_THROW(target.depths(), GpuError);
 }
 
 }  // namespace

@@ -57,6 +57,10 @@ TEST_F(Validation, NoValidationErrorsOnEveryPath) {
       {-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}};
   const std::vector<uint32_t> ids = {3};
   target.drawTriangles(positions, ids);
+  RenderTarget::DrawOptions culled_ids_only;  // the culling oracle's draw
+  culled_ids_only.cull_back_faces = true;
+  culled_ids_only.readback = RenderTarget::Readback::kIdsOnly;
+  target.drawTriangles(positions, ids, culled_ids_only);
 
   EXPECT_EQ(context.validationErrorCount(), 0u);
   TB_GPU_CONTEXT_OR_SKIP(shared);
