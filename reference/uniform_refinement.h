@@ -1,0 +1,16 @@
+// Uniform subdivision of a control mesh with OpenSubdiv (Far::TopologyRefiner::RefineUniform
+// and Far::PrimvarRefiner): the mesh `levels` steps finer under the scheme, positions only.
+// A refined closed convex mesh is a many-patch convex test object (the culling tests refine
+// catmark_cube three times: 6 x 4^3 = 384 quads).
+#pragma once
+
+#include "core/mesh/mesh.h"
+#include "reference/scheme.h"
+
+namespace tb::ref {
+
+// Throws InputError as buildTopologyRefiner does. The result has no normals, uvs or tags
+// (creases are applied while refining, then dropped); its faces are the last level's.
+Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels);
+
+}  // namespace tb::ref

@@ -1,0 +1,212 @@
+// The culling measure's acceptance over real techniques (harness/measures/culling.h): the
+// conservative policies make no false cull on any bundled asset along the bundled paths; on
+// a refined convex cube the cone culls a good share of the patches but never more than the
+// oracle's back-facing count; a patch straddling the silhouette is never conservatively
+// culled; the device's counts equal the CPU tessellator's.
+#include "harness/measures/culling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "core/mesh/normals.h"
+#include "core/mesh/obj_loader.h"
+#include "core/view/camera.h"
+#include "harness/measures/cull_oracle.h"
+#include "harness/suite/camera_path.h"
+#include "reference/uniform_refinement.h"
+#include "techniques/registry.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr CullPolicy kConservative[] = {CullPolicy::kFrustumHull, CullPolicy::kCone,
+                                        CullPolicy::kCombined};
+
+BuiltSurface buildDefault(const char* technique_id, const Mesh& mesh) {
+  const Technique* technique = TechniqueRegistry::instance().find(technique_id);
+  if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + technique_id);
+  return buildSurface(*technique, mesh, technique->variants().front());
+}
+
+View viewFrom(const Vec3d& eye, const Vec3d& target, double near_plane, double far_plane) {
+  View view;
+  const double fov = 45 * kPi / 180;
+  view.view_projection =
+      perspective(fov, 16.0 / 9.0, near_plane, far_plane) * lookAt(eye, target, {0, 1, 0});
+  view.viewport_width_px = 960;
+  view.viewport_height_px = 540;
+  view.eye = {eye[0], eye[1], eye[2]};
+  view.projection_y_scale = 1 / std::tan(fov / 2);
+  view.near_plane = near_plane;
+  return view;
+}
+
+// Views of `mesh` from `diameters` bounding-box diagonals away, from six scattered directions.
+std::vector<View> viewsFromAfar(const Mesh& mesh, double diameters) {
+  const Aabb box = boundsOf(mesh);
+  const Vec3d centre = 0.5 * (box.min + box.max);
+  const double diagonal = length(box.max - box.min);
+  std::vector<View> views;
+  for (int i = 0; i < 6; ++i) {
+    const double azimuth = 0.4 + 1.1 * i, elevation = 0.6 - 0.25 * i;
+    const Vec3d direction{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                          std::cos(elevation) * std::cos(azimuth)};
+    views.push_back(viewFrom(centre + diameters * diagonal * direction, centre, 0.01 * diagonal,
+                             100 * diagonal));
+  }
+  return views;
+}
+
+Mesh refinedConvex(const char* asset, ref::Scheme scheme, int levels) {
+  Mesh mesh = ref::refineUniform(loadObjFile(testing::assetPath(asset)), scheme, levels);
+  assignAngleWeightedNormals(&mesh);
+  return mesh;
+}
+
+// Acceptance 3: catmark_cube refined three times (384 quads, closed, convex), seen from 10
+// diagonals: the cone culls at least 35% of the patches and never more than the patches
+// the oracle finds back-facing or outside; likewise for the Gregory patches of the same mesh
+// and for PN and Phong on a Loop-refined icosahedron (1280 triangles).
+TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", ref::Scheme::kCatmullClark, 3);
+  ASSERT_EQ(cube.faceCount(), 384u);
+  const Mesh icosahedron =
+      refinedConvex("opensubdiv/loop_icosahedron.obj", ref::Scheme::kLoop, 3);
+  const std::pair<const char*, const Mesh*> cases[] = {{"acc", &cube},
+                                                       {"gregory_acc", &cube},
+                                                       {"pn_triangles", &icosahedron},
+                                                       {"phong", &icosahedron}};
+  const CullPolicy cone[] = {CullPolicy::kCone};
+  for (const auto& [technique_id, mesh] : cases) {
+    const BuiltSurface patches = buildDefault(technique_id, *mesh);
+    CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 1});
+    const std::vector<View> views = viewsFromAfar(*mesh, 10);
+    const std::vector<CullingFrame> frames = run.frames(cone, views)[0];
+    for (const CullingFrame& f : frames) {
+      ASSERT_TRUE(f.oracle_measured && f.gpu_measured) << run.gpuSkipReason();
+      const double fraction = double(f.culled_patches) / double(f.patches);
+      EXPECT_GE(fraction, 0.35) << technique_id << " frame " << f.frame;
+      EXPECT_LE(f.culled_patches, f.cullable_patches) << technique_id << " frame " << f.frame;
+      EXPECT_EQ(f.false_culls, 0u) << technique_id;
+      EXPECT_EQ(f.twin_mismatches, 0u) << technique_id;
+      RecordProperty(std::string(technique_id) + "_frame" + std::to_string(f.frame),
+                     std::to_string(fraction));
+    }
+  }
+}
+
+// Acceptance 3, second half: patches whose own normals face the eye somewhere and away
+// somewhere (they straddle the silhouette) are never culled by the conservative policies.
+TEST(Culling, PatchesStraddlingTheSilhouetteAreNeverConservativelyCulled) {
+  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", ref::Scheme::kCatmullClark, 3);
+  const Mesh torus = loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
+  size_t straddling_seen = 0;
+  for (const Mesh* mesh : {&cube, &torus}) {
+    for (const char* technique_id : {"acc", "gregory_acc"}) {
+      const BuiltSurface patches = buildDefault(technique_id, *mesh);
+      CullingRun run(*patches, nullptr, "not used", {});
+      for (const View& view : viewsFromAfar(*mesh, 3)) {
+        const Vec3d eye{view.eye[0], view.eye[1], view.eye[2]};
+        for (size_t p = 0; p < patches->patchCount(); ++p) {
+          // The geometric normal dp/du x dp/dv by central differences (not the shading
+          // normal: the cone bounds the geometry).
+          bool front = false, back = false;
+          constexpr double h = 1e-5;
+          auto at = [&](double u, double v) {
+            return patches->evaluate(p, DomainCoord{u, v, 0}).position;
+          };
+          for (int i = 1; i < 8; ++i) {
+            for (int j = 1; j < 8; ++j) {
+              const double u = i / 8.0, v = j / 8.0;
+              const Vec3d normal = cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h));
+              const double facing = dot(normal, eye - at(u, v));
+              front = front || facing > 0;
+              back = back || facing < 0;
+            }
+          }
+          if (!(front && back)) continue;
+          ++straddling_seen;
+          for (CullPolicy policy : kConservative) {
+            EXPECT_FALSE(cullsPatch(cullParams(policy, view, run.bounds()), run.bounds().patches[p]))
+                << technique_id << " patch " << p << " " << cullPolicyName(policy);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(straddling_seen, 20u);
+}
+
+struct AssetCase {
+  std::string technique;
+  std::string asset;
+};
+
+std::vector<AssetCase> everyBundledAsset() {
+  std::vector<AssetCase> cases;
+  const std::filesystem::path root = testing::assetPath(".");
+  std::vector<std::filesystem::path> files;
+  for (const char* folder : {"opensubdiv", "tessbench"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      if (entry.path().extension() == ".obj") files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  for (const char* technique : {"acc", "gregory_acc", "pn_triangles", "phong"}) {
+    for (const auto& file : files) cases.push_back({technique, file.string()});
+  }
+  return cases;
+}
+
+// Acceptance 2: frustum_hull, cone and combined make no false cull on any bundled asset a
+// technique accepts, along orbit (every frame), dolly and flyby (every third frame), at
+// level 4 and 960 x 540; the twin equals the TCS throughout.
+TEST(Culling, ConservativePoliciesMakeNoFalseCullOnAnyBundledAssetAndPath) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  size_t runs = 0, culled = 0;
+  for (const AssetCase& c : everyBundledAsset()) {
+    const Technique* technique = TechniqueRegistry::instance().find(c.technique);
+    const Mesh mesh = loadObjFile(c.asset);
+    if (!technique->checkSupport(mesh).empty()) continue;
+    BuiltSurface patches;
+    try {
+      patches = buildSurface(*technique, mesh, technique->variants().front());
+    } catch (const UnsupportedInput&) {
+      continue;
+    }
+    CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 0.5});
+    const Aabb box = boundsOf(patches->controlMesh());
+    for (const char* path : {"orbit", "dolly", "flyby"}) {
+      const CameraPath sampled = sampleCameraPath(resolveCameraPath(path), box, 0);
+      std::vector<View> views;
+      const size_t step = std::string(path) == "orbit" ? 1 : 3;
+      for (size_t f = 0; f < sampled.views.size(); f += step) views.push_back(sampled.views[f]);
+      const auto frames = run.frames(kConservative, views);
+      for (size_t k = 0; k < std::size(kConservative); ++k) {
+        for (const CullingFrame& f : frames[k]) {
+          ASSERT_TRUE(f.oracle_measured) << run.gpuSkipReason();
+          EXPECT_EQ(f.false_culls, 0u) << c.technique << " " << c.asset << " " << path
+                                       << " frame " << f.frame * step << " "
+                                       << cullPolicyName(kConservative[k]) << ": "
+                                       << f.false_cull_pixels << " px";
+          EXPECT_EQ(f.twin_mismatches, 0u) << c.technique << " " << c.asset;
+          EXPECT_FALSE(f.gpu_tes_invocations != f.tes_invocations) << c.technique << " " << c.asset;
+          culled += f.culled_patches;
+        }
+      }
+    }
+    ++runs;
+  }
+  EXPECT_GT(runs, 60u);
+  EXPECT_GT(culled, 0u);
+}
+
+}  // namespace
+}  // namespace tb
