@@ -9,6 +9,7 @@
 #include "core/mesh/topology.h"
 #include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
+#include "techniques/common/patch_bounds.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
@@ -225,6 +226,15 @@ class AccPatches final : public SurfacePatches {
                    (tangent_ ? "tangent patches" : "geometry derivatives") +
                    ", fma counted as one mul and one add";
     return profile;
+  }
+
+  // The bicubic geometry patch's control net and its normal patch; the tangent patches
+  // give shading normals only. The domain runs (0,0), (1,0), (1,1), (0,1) through face
+  // corners 0, 1, 2, 3 (kCornerPoint), the face's own winding, so p_u x p_v faces the
+  // front as it is.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+    const std::array<Vec3d, 16>& b = points_d_[patch].b;
+    return PatchCullBounds{{b.begin(), b.end()}, withoutZeros(bicubicNormalPatch(b))};
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;

@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "techniques/gregory_acc/gregory_batch.h"
+#include "techniques/gregory_acc/gregory_bounds.h"
 #include "techniques/gregory_acc/gregory_eval.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "techniques/registry.h"
@@ -95,6 +96,12 @@ class GregoryPatches final : public SurfacePatches {
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
     const GregoryPoint<float> point = evaluatePatch(points_f_[patch], patch, coord);
     return {point.position, point.normal};
+  }
+
+  // gregory_bounds.h: the control points, and the cone of the rational patch's normals.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+    return patchDomain(patch) == PatchDomain::kTriangle ? gregoryTriangleCullBounds(points_d_[patch])
+                                                         : gregoryQuadCullBounds(points_d_[patch]);
   }
 
   // One program per domain present: the quads' (20 control points per patch) and the

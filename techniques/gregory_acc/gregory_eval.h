@@ -85,6 +85,27 @@ void blendFace(const Vec3T<T>& fp, const Vec3T<T>& fm, T a, T b, T a_u, T b_u, T
   q_v = diff * (a_v * b - b_v * a);
 }
 
+// The quad's 4x4 Bézier net q[j][i] (row j along v, column i along u) outside its four
+// interior points: the corner and edge points, copied. kQuadNetInterior names the interior
+// slots: net slot (j, i) holds the blend of corner c's Fp and Fm.
+struct QuadNetInterior {
+  int row, column;
+  uint32_t corner;
+};
+inline constexpr std::array<QuadNetInterior, 4> kQuadNetInterior{
+    {{1, 1, 0}, {1, 2, 1}, {2, 2, 2}, {2, 1, 3}}};
+
+template <class T>
+void setQuadBoundaryNet(const GregoryPoints<T>& cp, std::array<std::array<Vec3T<T>, 4>, 4>& q) {
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  q[0] = {at(0, kP), at(0, kEp), at(1, kEm), at(1, kP)};
+  q[3] = {at(3, kP), at(3, kEm), at(2, kEp), at(2, kP)};
+  q[1][0] = at(0, kEm);
+  q[1][3] = at(1, kEp);
+  q[2][0] = at(3, kEp);
+  q[2][3] = at(2, kEm);
+}
+
 // Position and tangents at (u, v). `symmetric_edges`: points on the domain boundary
 // come from the shared edge curve alone, evaluated symmetrically.
 template <class T>
@@ -97,12 +118,7 @@ GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool 
   std::array<std::array<Vec3T<T>, 4>, 4> q;
   std::array<std::array<Vec3T<T>, 4>, 4> q_u{}, q_v{};
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
-  q[0] = {at(0, kP), at(0, kEp), at(1, kEm), at(1, kP)};
-  q[3] = {at(3, kP), at(3, kEm), at(2, kEp), at(2, kP)};
-  q[1][0] = at(0, kEm);
-  q[1][3] = at(1, kEp);
-  q[2][0] = at(3, kEp);
-  q[2][3] = at(2, kEm);
+  setQuadBoundaryNet(cp, q);
   blendFace(at(0, kFp), at(0, kFm), u, v, one, zero, zero, one, q[1][1], q_u[1][1], q_v[1][1]);
   blendFace(at(1, kFp), at(1, kFm), v, iu, zero, -one, one, zero, q[1][2], q_u[1][2], q_v[1][2]);
   blendFace(at(2, kFp), at(2, kFm), iu, iv, -one, zero, zero, -one, q[2][2], q_u[2][2],
@@ -176,6 +192,37 @@ constexpr int quarticSlot(int i, int j, int k) {
 static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
               quarticSlot(1, 0, 3) == 9);
 
+// The quartic triangle's net outside its three interior points: the corners and the cubic
+// boundary curves P_c, Ep_c, Em_{c+1}, P_{c+1} degree-raised, e.g. b310 = (P0 + 3 Ep0) / 4,
+// b220 = (Ep0 + Em1) / 2. kTriangleNetInterior: slot b_ijk holds the blend of corner c's
+// Fp and Fm.
+struct TriangleNetInterior {
+  int i, j, k;
+  uint32_t corner;
+};
+inline constexpr std::array<TriangleNetInterior, 3> kTriangleNetInterior{
+    {{2, 1, 1, 0}, {1, 2, 1, 1}, {1, 1, 2, 2}}};
+
+template <class T>
+void setTriangleBoundaryNet(const GregoryPoints<T>& cp, std::array<Vec3T<T>, 15>& b) {
+  const T quarter(0.25), half(0.5), three(3);
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  auto set = [&b](int i, int j, int k, const Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
+  auto nearEnd = [&](const Vec3T<T>& p, const Vec3T<T>& e) { return (p + e * three) * quarter; };
+  set(4, 0, 0, at(0, kP));
+  set(0, 4, 0, at(1, kP));
+  set(0, 0, 4, at(2, kP));
+  set(3, 1, 0, nearEnd(at(0, kP), at(0, kEp)));  // edge 0: corner 0 -> 1 (w = 0)
+  set(2, 2, 0, (at(0, kEp) + at(1, kEm)) * half);
+  set(1, 3, 0, nearEnd(at(1, kP), at(1, kEm)));
+  set(0, 3, 1, nearEnd(at(1, kP), at(1, kEp)));  // edge 1: corner 1 -> 2 (u = 0)
+  set(0, 2, 2, (at(1, kEp) + at(2, kEm)) * half);
+  set(0, 1, 3, nearEnd(at(2, kP), at(2, kEm)));
+  set(1, 0, 3, nearEnd(at(2, kP), at(2, kEp)));  // edge 2: corner 2 -> 0 (v = 0)
+  set(2, 0, 2, (at(2, kEp) + at(0, kEm)) * half);
+  set(3, 0, 1, nearEnd(at(0, kP), at(0, kEm)));
+}
+
 // Triangle Gregory patch (Loop et al. 2009: cubic boundaries, quartic interior) at
 // barycentric (u, v, w) = gl_TessCoord, weights of corners 0, 1, 2; position and the
 // derivatives toward corners 1 and 2, S_v - S_u and S_w - S_u (the frame's tangent_u and
@@ -193,23 +240,11 @@ static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
 template <class T>
 GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T v, T w,
                                              bool symmetric_edges) {
-  const T one(1), zero(0), quarter(0.25), half(0.5), three(3), four(4);
+  const T one(1), zero(0), four(4);
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
   std::array<Vec3T<T>, 15> b;
   auto set = [&b](int i, int j, int k, const Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
-  auto nearEnd = [&](const Vec3T<T>& p, const Vec3T<T>& e) { return (p + e * three) * quarter; };
-  set(4, 0, 0, at(0, kP));
-  set(0, 4, 0, at(1, kP));
-  set(0, 0, 4, at(2, kP));
-  set(3, 1, 0, nearEnd(at(0, kP), at(0, kEp)));  // edge 0: corner 0 -> 1 (w = 0)
-  set(2, 2, 0, (at(0, kEp) + at(1, kEm)) * half);
-  set(1, 3, 0, nearEnd(at(1, kP), at(1, kEm)));
-  set(0, 3, 1, nearEnd(at(1, kP), at(1, kEp)));  // edge 1: corner 1 -> 2 (u = 0)
-  set(0, 2, 2, (at(1, kEp) + at(2, kEm)) * half);
-  set(0, 1, 3, nearEnd(at(2, kP), at(2, kEm)));
-  set(1, 0, 3, nearEnd(at(2, kP), at(2, kEp)));  // edge 2: corner 2 -> 0 (v = 0)
-  set(2, 0, 2, (at(2, kEp) + at(0, kEm)) * half);
-  set(3, 0, 1, nearEnd(at(0, kP), at(0, kEm)));
+  setTriangleBoundaryNet(cp, b);
   // Interior blends with derivatives along a = d/dv - d/du and c = d/dw - d/du.
   Vec3T<T> q_a[3], q_c[3];
   Vec3T<T> q0, q1, q2;

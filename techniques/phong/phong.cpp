@@ -5,6 +5,7 @@
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
 #include "techniques/common/triangle_patches.h"
+#include "techniques/phong/phong_bounds.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/common/triangle_records.h"
@@ -41,14 +42,8 @@ class PhongPatches final : public TrianglePatchesBase {
                             {coord[perm[0]], coord[perm[1]], coord[perm[2]]}, alpha_);
       return {point.position, point.normal};
     }
-    const Mesh& mesh = tri_.mesh;
-    const uint32_t first = mesh.face_offsets[patch];
-    PhongTriangle<double> tri;
-    for (int i = 0; i < 3; ++i) {
-      tri.position[i] = mesh.positions[mesh.corner_positions[first + i]];
-      tri.normal[i] = normalize(mesh.normals[mesh.corner_normals[first + i]]);
-    }
-    const PhongPoint<double> point = evaluatePhong(tri, {coord[0], coord[1], coord[2]}, alpha_);
+    const PhongPoint<double> point =
+        evaluatePhong(faceTriangle(patch), {coord[0], coord[1], coord[2]}, alpha_);
     return {point.position, point.normal};
   }
 
@@ -70,6 +65,17 @@ class PhongPatches final : public TrianglePatchesBase {
     const PhongPoint<float> point =
         evaluatePhong(tri, {coord[0], coord[1], coord[2]}, float(alpha_));
     return {point.position, point.normal};
+  }
+
+  // phong_bounds.h. Plain Phong: the net of the face's corners in face order, whose
+  // weights are gl_TessCoord's components, so the normals face the front as they are.
+  // The edge variant's hull does not depend on the corner order.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+    if (edge_) {
+      return phongEdgeCullBounds(edgeTriangle<double>(patch, [](const Vec3d& v) { return v; }),
+                                 alpha_);
+    }
+    return phongCullBounds(faceTriangle(patch), alpha_);
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
@@ -173,6 +179,18 @@ class PhongPatches final : public TrianglePatchesBase {
     }
     for (int k = 0; k < 6; ++k) r[9 + k] = r[6];  // unused without the edge variant
     return r;
+  }
+
+  // Patch p's corners in face order, double, unit normals.
+  PhongTriangle<double> faceTriangle(size_t patch) const {
+    const Mesh& mesh = tri_.mesh;
+    const uint32_t first = mesh.face_offsets[patch];
+    PhongTriangle<double> tri;
+    for (int i = 0; i < 3; ++i) {
+      tri.position[i] = mesh.positions[mesh.corner_positions[first + i]];
+      tri.normal[i] = normalize(mesh.normals[mesh.corner_normals[first + i]]);
+    }
+    return tri;
   }
 
   static uint32_t edgeNormalIndex(const TriangleRecord& r, int e, int end) {

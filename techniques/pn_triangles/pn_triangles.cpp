@@ -3,6 +3,7 @@
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
 #include "techniques/common/triangle_patches.h"
+#include "techniques/pn_triangles/pn_bounds.h"
 #include "techniques/pn_triangles/pn_build.h"
 #include "techniques/pn_triangles/pn_eval.h"
 #include "techniques/registry.h"
@@ -39,6 +40,18 @@ class PnPatches final : public TrianglePatchesBase {
     const PnPoint<float> point =
         evaluateControl(control, {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
     return {point.position, point.normal};
+  }
+
+  // The cubic geometry net and its quartic normal patch; the quadratic normal patch gives
+  // shading normals only. The net is in label order (labels sorted by position), so its
+  // normals face the front when the labels run in the face's winding (perm a rotation of
+  // 0, 1, 2) and the back otherwise: then they are negated.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+    const std::vector<Vec3d> net = cubicNet(controls_.at(patch));
+    std::vector<Vec3d> normals = withoutZeros(triangleNormalPatch(3, net));
+    const auto& perm = build_.records[patch].perm;
+    const bool mirrored = (perm[1] + 3 - perm[0]) % 3 != 1;
+    return PatchCullBounds{net, mirrored ? negated(std::move(normals)) : std::move(normals)};
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {

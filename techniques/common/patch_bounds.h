@@ -1,0 +1,43 @@
+// Shared math for SurfacePatches::cullBounds (techniques/technique.h, PatchCullBounds):
+// the normal patches of polynomial Bézier patches. Positions and generators are in the
+// control mesh's world units; generators matter only up to a positive factor (a cone is
+// spanned by directions).
+//
+// Normal patch (Sederberg & Meyers 1988): for a polynomial patch p, the geometric normal
+// N = p_s x p_t is itself a polynomial, in the Bernstein basis of the summed degrees of
+// p_s and p_t; a product of two Bernstein polynomials is a Bernstein polynomial of the
+// summed degree times a positive factor, so N's control points are positive combinations
+// of the pairwise cross products of p_s's and p_t's control points
+// (techniques/common/bernstein_poly.h). Because the Bernstein basis is non-negative on the
+// domain, N at every domain point is a non-negative combination of its control points:
+// they generate a cone containing every normal.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/mesh/vec.h"
+#include "techniques/common/bernstein_poly.h"
+
+namespace tb {
+
+// Control points N[m + 6 n] (m along u, n along v; bi-degree 5 x 5) of the normal patch
+// p_u x p_v of the bicubic Bézier patch b[i + 4 j] (i along u).
+std::array<Vec3d, 36> bicubicNormalPatch(const std::array<Vec3d, 16>& b);
+
+// Control points, in bernstein_poly.h's triangle net order, of the degree 2n - 2 normal
+// patch D_1 x D_2 of the degree-n triangle patch `net` (n >= 1): D_1 = d/dv - d/du is the
+// derivative toward corner 1 with corner 2's weight fixed, D_2 = d/dw - d/du toward
+// corner 2. For corners 0, 1, 2 counter-clockwise seen from the front, the normals point
+// to the front.
+std::vector<Vec3d> triangleNormalPatch(int degree, std::span<const Vec3d> net);
+
+// `vectors` without its exact zeros.
+std::vector<Vec3d> withoutZeros(std::span<const Vec3d> vectors);
+
+// Each vector negated: the generators of a patch whose parameterisation is mirrored
+// against its control face's winding.
+std::vector<Vec3d> negated(std::vector<Vec3d> vectors);
+
+}  // namespace tb
