@@ -14,11 +14,11 @@ namespace {
 
 constexpr const char* kSummaryKey = "path";
 
-// Default suite: level 4, the oracle at a quarter of the path's resolution per axis (480 x
-// 270 for the bundled paths); full: level 8 at the path's own resolution.
+// Default suite: level 4, the oracle at half the path's resolution per axis (960 x 540 for
+// the bundled paths); full: level 8 at the path's own resolution.
 CullingOptions optionsFor(SuiteMode suite) {
   if (suite == SuiteMode::kFull) return {.level = 8, .render_scale = 1};
-  return {.level = 4, .render_scale = 0.25};
+  return {.level = 4, .render_scale = 0.5};
 }
 
 // Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
@@ -158,8 +158,10 @@ class CullingMeasure final : public Measure {
            "twin keeps, at one uniform integer level; gpu_*: lavapipe's pipeline statistics "
            "(TES invocations) and VK_EXT_primitives_generated_query with the TCS culling; "
            "twin_mismatches: patches whose TCS decision differs from the CPU twin's",
-           "default suite: level 4, the render at a quarter of the path's resolution per axis, "
-           "default variant only; --suite full: level 8 at the path's resolution, every variant"}};
+           "default suite: level 4, the render at half the path's resolution per axis (960 x "
+           "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); --suite "
+           "full: level 8 at the path's resolution, every variant, every frame of the three "
+           "paths"}};
       for (std::string& note : policyNotes()) info.notes.push_back(std::move(note));
       return info;
     }();
@@ -170,6 +172,12 @@ class CullingMeasure final : public Measure {
     return {{MeasureNeed::kSurface, MeasureNeed::kCameraPath, MeasureNeed::kGpu},
             VariantPolicy::kEveryVariantInFullSuite,
             {}};
+  }
+
+  // Culling needs the camera close as well as far: the dolly's last frames and the flyby put
+  // patches off screen, which the orbit never does.
+  std::vector<std::pair<std::string, uint32_t>> defaultSuitePaths() const override {
+    return {{"orbit", 4}, {"dolly", 8}, {"flyby", 8}};
   }
 
   MeasureResult run(const MeasureInput& input) const override {

@@ -118,6 +118,10 @@ class Measure {
   virtual const MeasureInfo& info() const = 0;
   virtual MeasureRequirements requirements() const = 0;
   virtual MeasureResult run(const MeasureInput& input) const = 0;
+  // kCameraPath measures: the bundled paths (name, frames; 0 = the file's own count) the
+  // measure runs along in the default suite when the run names no --camera. Empty: the
+  // suite's default path (orbit at 4 frames). --suite full always runs every bundled path.
+  virtual std::vector<std::pair<std::string, uint32_t>> defaultSuitePaths() const { return {}; }
 };
 
 class MeasureRegistry {

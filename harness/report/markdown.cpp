@@ -257,17 +257,40 @@ bool anyRow(const Results& results, const std::string& measure_id, RowFilter fil
   return false;
 }
 
+size_t countRows(const Results& results, const std::string& measure_id, RowFilter filter) {
+  size_t count = 0;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) count += filter(row) ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+// Under a summary, more detail rows than this stay in results.json only.
+constexpr size_t kDetailRowsShownUnderSummary = 400;
+
 // One section per measure: its summary rows first (rows keyed `summary`), then the
-// declaration, then a table of the other rows.
+// declaration, then a table of the other rows (left to results.json when a summary
+// aggregates more than kDetailRowsShownUnderSummary of them).
 void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
   const MeasureDeclaration* declaration = results.findMeasure(measure_id);
   *out += "## Measure: " + measure_id + "\n\n";
-  if (anyRow(results, measure_id, isSummaryRow)) {
-    appendTable(results, measure_id, declaration, isSummaryRow, false, out);
-  }
+  const RowFilter detail = [](const MetricRow& row) { return !isSummaryRow(row); };
+  const bool summary = anyRow(results, measure_id, isSummaryRow);
+  const size_t detail_rows = countRows(results, measure_id, detail);
+  const bool detail_shown = !summary || detail_rows <= kDetailRowsShownUnderSummary;
+  if (summary) appendTable(results, measure_id, declaration, isSummaryRow, !detail_shown, out);
   if (declaration != nullptr) appendDeclaration(*declaration, out);
-  appendTable(results, measure_id, declaration, [](const MetricRow& row) { return !isSummaryRow(row); },
-              true, out);
+  if (detail_shown) {
+    appendTable(results, measure_id, declaration, detail, true, out);
+  } else {
+    *out += fmt::format(
+        "The {} detail rows (per frame, policy and the other keys) are in results.json; the "
+        "summary table above aggregates them.\n\n",
+        detail_rows);
+  }
   appendRecordNotes(results, measure_id, out);
 }
 

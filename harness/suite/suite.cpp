@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <cstdio>
+#include <map>
 #include <mutex>
 #include <optional>
 
@@ -52,6 +52,8 @@ struct SuiteRun {
   std::vector<const Measure*> measures;
   std::vector<CameraPathFn> view_paths;   // walked view by view by kView measures
   std::vector<CameraPathFn> whole_paths;  // given whole to kCameraPath measures
+  // The default suite's paths of measures that declare their own (default_suite_paths).
+  std::map<const Measure*, std::vector<CameraPathFn>> measure_paths;
   SuiteMode suite = SuiteMode::kDefault;
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
@@ -135,7 +137,11 @@ MeasureResult runOverPaths(const SuiteRun& run, const Measure& measure, MeasureI
   MeasureResult merged;
   merged.measure = measure.info().id;
   const Aabb bounds = boundsOf(input.mesh);
-  for (const CameraPathFn& make_path : run.whole_paths) {
+  const std::vector<CameraPathFn>* paths = &run.whole_paths;
+  if (auto own = run.measure_paths.find(&measure); own != run.measure_paths.end()) {
+    paths = &own->second;
+  }
+  for (const CameraPathFn& make_path : *paths) {
     const CameraPath path = make_path(bounds);
     input.camera_path = &path;
     mergeRun(measure.run(input), {{"camera_path", path.name}}, &merged);
@@ -288,6 +294,15 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (whole_paths_needed) {
     run.whole_paths = selection.camera_paths;
     if (run.whole_paths.empty()) run.whole_paths = suiteCameraPaths(selection.suite);
+    if (selection.camera_paths.empty() && selection.suite == SuiteMode::kDefault) {
+      for (const Measure* measure : run.measures) {
+        for (const auto& [name, frames] : measure->defaultSuitePaths()) {
+          const CameraPathSpec spec = resolveCameraPath(name);
+          sampleCameraPath(spec, Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, frames);
+          run.measure_paths[measure].push_back(cameraPathFn(spec, frames));
+        }
+      }
+    }
   }
   run.shard = selection.shard;
   for (const Measure* measure : run.measures) {
