@@ -10,7 +10,7 @@ namespace tb {
 namespace {
 
 constexpr size_t kParamWords = 32;  // TbCullParamsBlock, std430
-constexpr double kConeSineWidening = 1e-5;
+constexpr double kConeSineWidening = 1e-3;  // see cull_policy.h
 constexpr int kConeAxisIterations = 32;
 
 constexpr CullPolicy kAllPolicies[] = {

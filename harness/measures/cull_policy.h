@@ -6,7 +6,10 @@
 //
 // Per-patch bounds come from the technique (SurfacePatches::cullBounds: the control hull and
 // the generators of its geometric normals), computed once per asset in double and rounded to
-// float here: the cone's sine is rounded up and widened by 1e-5, a hull of more than 20
+// float here: the cone's sine is rounded up and widened by 1e-3 (about 0.06 degrees: a
+// patch seen that close to edge-on projects thinner than the rasteriser's sub-pixel snapping,
+// which can flip a flat triangle's winding; --suite full once showed a 1-pixel false cull of
+// a flat phong/alpha0 patch with 1e-5), a hull of more than 20
 // points is replaced by the 8 corners of its bounding box.
 #pragma once
 
