@@ -41,4 +41,31 @@ inline Mat4 perspective(double fov_y_rad, double aspect, double near_plane, doub
   return r;
 }
 
+// A perspective camera as plain parameters (the conventions above).
+struct PerspectiveCamera {
+  Vec3d eye{0, 0, 1};
+  Vec3d target{0, 0, 0};
+  Vec3d up{0, 1, 0};
+  double fov_y_rad = 0.7853981633974483;  // 45 degrees
+  uint32_t width_px = 1, height_px = 1;
+  double near_plane = 0.01, far_plane = 100;  // world units
+  double target_pixels_per_edge = 8;
+};
+
+// The View of `camera`: perspective * lookAt, its viewport, eye, |P[1][1]| and near plane.
+inline View perspectiveView(const PerspectiveCamera& camera) {
+  View view;
+  view.view_projection =
+      perspective(camera.fov_y_rad, double(camera.width_px) / camera.height_px,
+                  camera.near_plane, camera.far_plane) *
+      lookAt(camera.eye, camera.target, camera.up);
+  view.viewport_width_px = camera.width_px;
+  view.viewport_height_px = camera.height_px;
+  view.target_pixels_per_edge = camera.target_pixels_per_edge;
+  view.eye = {camera.eye.x, camera.eye.y, camera.eye.z};
+  view.projection_y_scale = 1 / std::tan(camera.fov_y_rad / 2);
+  view.near_plane = camera.near_plane;
+  return view;
+}
+
 }  // namespace tb

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/gpu/patch_program.h"
+#include "core/mesh/bounds.h"
 
 namespace tb {
 namespace {
@@ -87,16 +88,8 @@ AdaptivityRun::AdaptivityRun(const SurfacePatches& patches, gpu::Context* contex
   } else if (context_ == nullptr) {
     gpu_skip_ = "no Vulkan device (" + gpu_unavailable + ")";
   }
-  const Mesh& mesh = patches.controlMesh();
-  if (!mesh.positions.empty()) {
-    Vec3d lo = mesh.positions[0], hi = mesh.positions[0];
-    for (const Vec3d& p : mesh.positions) {
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = std::min(lo[i], p[i]);
-        hi[i] = std::max(hi[i], p[i]);
-      }
-    }
-    diagonal_ = length(hi - lo);
+  if (!patches.controlMesh().positions.empty()) {
+    diagonal_ = diagonalOf(boundsOf(patches.controlMesh()));
   }
 }
 

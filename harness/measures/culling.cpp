@@ -7,6 +7,7 @@
 
 #include "core/gpu/gpu_error.h"
 #include "core/gpu/patch_program.h"
+#include "core/mesh/bounds.h"
 #include "core/tess/tessellator.h"
 #include "harness/measures/cull_oracle.h"
 #include "harness/measures/factor_policy.h"
@@ -17,15 +18,6 @@ namespace {
 // Patches per draw: lavapipe's tessellator slows down with many patches in one draw; at the
 // culling run's low levels 64 keeps the draws few.
 constexpr uint32_t kPatchesPerDraw = 64;
-
-double diagonalOf(const Mesh& mesh) {
-  if (mesh.positions.empty()) return 0;
-  Vec3d lo = mesh.positions[0], hi = mesh.positions[0];
-  for (const Vec3d& p : mesh.positions) {
-    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
-  }
-  return length(hi - lo);
-}
 
 tess::Levels uniformLevels(uint32_t level) {
   const float l = float(level);
@@ -75,7 +67,7 @@ CullingSummary summarise(std::span<const CullingFrame> frames) {
 CullingRun::CullingRun(const SurfacePatches& patches, gpu::Context* context,
                        std::string gpu_unavailable, const CullingOptions& options)
     : patches_(patches), context_(context), options_(options) {
-  bounds_ = cullBounds(patches, factorCorners(patches), diagonalOf(patches.controlMesh()));
+  bounds_ = cullBounds(patches, factorCorners(patches), diagonalOf(boundsOf(patches.controlMesh())));
   const tess::Levels levels = uniformLevels(options.level);
   const tess::Tessellation quad =
       tess::tessellate(tess::Domain::kQuad, tess::Spacing::kInteger, levels);

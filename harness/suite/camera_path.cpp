@@ -11,18 +11,6 @@
 
 namespace tb {
 
-Aabb boundsOf(const Mesh& mesh) {
-  if (mesh.positions.empty()) return {{-1, -1, -1}, {1, 1, 1}};
-  Aabb box{mesh.positions[0], mesh.positions[0]};
-  for (const Vec3d& p : mesh.positions) {
-    for (int i = 0; i < 3; ++i) {
-      box.min[i] = std::min(box.min[i], p[i]);
-      box.max[i] = std::max(box.max[i], p[i]);
-    }
-  }
-  return box;
-}
-
 CameraPath testOrbitPath(const Aabb& bounds) {
   constexpr uint32_t kWidthPx = 640, kHeightPx = 480;
   constexpr double kDegree = std::numbers::pi / 180;
@@ -36,18 +24,14 @@ CameraPath testOrbitPath(const Aabb& bounds) {
     const Vec3d eye =
         centre + distance * Vec3d{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                                   std::cos(elevation) * std::cos(azimuth)};
-    View view;
     // Near and far planes just outside the bounding sphere (distance is 2.5 radii).
-    view.view_projection = perspective(60 * kDegree, double(kWidthPx) / kHeightPx,
-                                       distance - 1.01 * radius, distance + 1.01 * radius) *
-                           lookAt(eye, centre, {0, 1, 0});
-    view.eye = {eye[0], eye[1], eye[2]};
-    view.projection_y_scale = 1 / std::tan(30 * kDegree);
-    view.near_plane = distance - 1.01 * radius;
-    view.viewport_width_px = kWidthPx;
-    view.viewport_height_px = kHeightPx;
-    view.target_pixels_per_edge = 8;
-    path.views.push_back(view);
+    path.views.push_back(perspectiveView({.eye = eye,
+                                          .target = centre,
+                                          .fov_y_rad = 60 * kDegree,
+                                          .width_px = kWidthPx,
+                                          .height_px = kHeightPx,
+                                          .near_plane = distance - 1.01 * radius,
+                                          .far_plane = distance + 1.01 * radius}));
   }
   return path;
 }

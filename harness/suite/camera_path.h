@@ -12,21 +12,12 @@
 #include <vector>
 
 #include "core/mesh/mesh.h"
+#include "core/mesh/bounds.h"
 #include "core/mesh/vec.h"
 #include "core/view/camera_path_views.h"
 #include "core/view/view.h"
 
 namespace tb {
-
-// Axis-aligned bounding box, world units; min <= max component-wise.
-struct Aabb {
-  Vec3d min{0, 0, 0};
-  Vec3d max{0, 0, 0};
-};
-
-// The bounding box of the mesh's positions; the unit cube [-1, 1]^3 when it has none (a
-// simulation's scenario).
-Aabb boundsOf(const Mesh& mesh);
 
 // Makes a path for the scene inside `bounds`.
 using CameraPathFn = std::function<CameraPath(const Aabb& bounds)>;

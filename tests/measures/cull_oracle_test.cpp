@@ -31,15 +31,9 @@ constexpr double kFovYRad = 60 * std::numbers::pi / 180;
 constexpr uint32_t kWidth = 64, kHeight = 48;
 
 View viewFrom(const Vec3d& eye, const Vec3d& target, uint32_t width_px, uint32_t height_px) {
-  View view;
-  view.view_projection = perspective(kFovYRad, double(width_px) / height_px, 0.1, 100) *
-                         lookAt(eye, target, {0, 1, 0});
-  view.viewport_width_px = width_px;
-  view.viewport_height_px = height_px;
-  view.eye = {eye.x, eye.y, eye.z};
-  view.projection_y_scale = 1 / std::tan(kFovYRad / 2);
-  view.near_plane = 0.1;
-  return view;
+  return perspectiveView({.eye = eye, .target = target, .fov_y_rad = kFovYRad,
+                          .width_px = width_px, .height_px = height_px, .near_plane = 0.1,
+                          .far_plane = 100});
 }
 
 tess::Levels uniformLevels(float level) {

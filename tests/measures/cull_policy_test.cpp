@@ -23,16 +23,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 View viewFrom(const Vec3d& eye, const Vec3d& target, double near_plane, double far_plane) {
-  View view;
-  const double fov = 45 * kPi / 180;
-  view.view_projection =
-      perspective(fov, 16.0 / 9.0, near_plane, far_plane) * lookAt(eye, target, {0, 1, 0});
-  view.viewport_width_px = 1920;
-  view.viewport_height_px = 1080;
-  view.eye = {eye[0], eye[1], eye[2]};
-  view.projection_y_scale = 1 / std::tan(fov / 2);
-  view.near_plane = near_plane;
-  return view;
+  return perspectiveView({.eye = eye, .target = target, .width_px = 1920, .height_px = 1080,
+                          .near_plane = near_plane, .far_plane = far_plane});
 }
 
 // One flat quad patch in the plane z = 0 facing +z, corners (-1,-1), (1,-1), (1,1), (-1,1).

@@ -35,16 +35,8 @@ BuiltSurface buildDefault(const char* technique_id, const Mesh& mesh) {
 }
 
 View viewFrom(const Vec3d& eye, const Vec3d& target, double near_plane, double far_plane) {
-  View view;
-  const double fov = 45 * kPi / 180;
-  view.view_projection =
-      perspective(fov, 16.0 / 9.0, near_plane, far_plane) * lookAt(eye, target, {0, 1, 0});
-  view.viewport_width_px = 960;
-  view.viewport_height_px = 540;
-  view.eye = {eye[0], eye[1], eye[2]};
-  view.projection_y_scale = 1 / std::tan(fov / 2);
-  view.near_plane = near_plane;
-  return view;
+  return perspectiveView({.eye = eye, .target = target, .width_px = 960, .height_px = 540,
+                          .near_plane = near_plane, .far_plane = far_plane});
 }
 
 // Views of `mesh` from `diameters` bounding-box diagonals away, from six scattered directions.

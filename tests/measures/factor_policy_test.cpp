@@ -25,16 +25,9 @@ constexpr double kPi = std::numbers::pi;
 
 View viewFrom(const Vec3d& eye, const Vec3d& target, double fov_y_deg, uint32_t width,
               uint32_t height, double near_plane, double far_plane) {
-  View view;
-  const double fov = fov_y_deg * kPi / 180;
-  view.view_projection = perspective(fov, double(width) / height, near_plane, far_plane) *
-                         lookAt(eye, target, {0, 1, 0});
-  view.viewport_width_px = width;
-  view.viewport_height_px = height;
-  view.eye = {eye[0], eye[1], eye[2]};
-  view.projection_y_scale = 1 / std::tan(fov / 2);
-  view.near_plane = near_plane;
-  return view;
+  return perspectiveView({.eye = eye, .target = target, .fov_y_rad = fov_y_deg * kPi / 180,
+                          .width_px = width, .height_px = height, .near_plane = near_plane,
+                          .far_plane = far_plane});
 }
 
 // A few views around `bounds`: near, far, grazing, so factors span the clamp range.

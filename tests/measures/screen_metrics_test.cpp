@@ -27,17 +27,9 @@ constexpr double kFovYRad = 60 * std::numbers::pi / 180;
 
 View makeView(const Vec3d& eye, const Vec3d& target, uint32_t width_px, uint32_t height_px,
               double near_plane, double far_plane) {
-  View view;
-  view.view_projection =
-      perspective(kFovYRad, double(width_px) / height_px, near_plane, far_plane) *
-      lookAt(eye, target, {0, 1, 0});
-  view.viewport_width_px = width_px;
-  view.viewport_height_px = height_px;
-  view.eye = {eye.x, eye.y, eye.z};
-  view.projection_y_scale = 1 / std::tan(kFovYRad / 2);
-  view.near_plane = near_plane;
-  view.target_pixels_per_edge = 8;
-  return view;
+  return perspectiveView({.eye = eye, .target = target, .fov_y_rad = kFovYRad,
+                          .width_px = width_px, .height_px = height_px, .near_plane = near_plane,
+                          .far_plane = far_plane});
 }
 
 // A 1920 x 1080 view of the mesh's bounding sphere from above and aside, the sphere's
