@@ -350,32 +350,42 @@ std::vector<uint8_t> cullDecisions(const CullParams& params, const CullBounds& b
 
 gpu::TcsCullPolicy tcsCullPolicy(const CullParams& params, const CullBounds& bounds,
                                  const gpu::GpuPatchProgram& program) {
-  gpu::TcsCullPolicy out;
-  out.param_words.reserve(kParamWords);
+  return {cullParamWords(params), cullPatchWords(bounds, program)};
+}
+
+std::vector<uint32_t> cullParamWords(const CullParams& params) {
+  std::vector<uint32_t> words;
+  words.reserve(kParamWords);
   for (const std::array<float, 4>& plane : params.planes) {
-    for (float v : plane) putFloat(out.param_words, v);
+    for (float v : plane) putFloat(words, v);
   }
-  putVec(out.param_words, params.eye, 0);
-  putFloat(out.param_words, params.global_margin);
-  out.param_words.push_back(uint32_t(params.policy));
-  out.param_words.push_back(0);
-  out.param_words.push_back(0);
-  out.patch_words.reserve(size_t(program.patch_count) * gpu::kTcsCullPatchWords);
+  putVec(words, params.eye, 0);
+  putFloat(words, params.global_margin);
+  words.push_back(uint32_t(params.policy));
+  words.push_back(0);
+  words.push_back(0);
+  return words;
+}
+
+std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
+                                     const gpu::GpuPatchProgram& program) {
+  std::vector<uint32_t> words;
+  words.reserve(size_t(program.patch_count) * gpu::kTcsCullPatchWords);
   for (uint32_t i = 0; i < program.patch_count; ++i) {
     const size_t p = program.patch_ids.empty() ? i : program.patch_ids[i];
     const CullPatchBounds& b = bounds.patches.at(p);
-    for (int c = 0; c < 4; ++c) putVec(out.patch_words, b.corner_position[c], b.corner_margin[c]);
-    for (int c = 0; c < 4; ++c) putVec(out.patch_words, b.corner_normal[c], 0);
-    putVec(out.patch_words, b.cone_axis, b.cone_sine);
-    out.patch_words.push_back(b.corner_count);
-    out.patch_words.push_back(uint32_t(b.hull.size()));
-    putFloat(out.patch_words, b.displacement_bound);
-    out.patch_words.push_back(0);
+    for (int c = 0; c < 4; ++c) putVec(words, b.corner_position[c], b.corner_margin[c]);
+    for (int c = 0; c < 4; ++c) putVec(words, b.corner_normal[c], 0);
+    putVec(words, b.cone_axis, b.cone_sine);
+    words.push_back(b.corner_count);
+    words.push_back(uint32_t(b.hull.size()));
+    putFloat(words, b.displacement_bound);
+    words.push_back(0);
     for (size_t h = 0; h < kCullHullPoints; ++h) {
-      putVec(out.patch_words, h < b.hull.size() ? b.hull[h] : Vec3f{0, 0, 0}, 0);
+      putVec(words, h < b.hull.size() ? b.hull[h] : Vec3f{0, 0, 0}, 0);
     }
   }
-  return out;
+  return words;
 }
 
 }  // namespace tb

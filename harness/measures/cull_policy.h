@@ -97,8 +97,12 @@ bool cullsPatch(const CullParams& params, const CullPatchBounds& patch);
 std::vector<uint8_t> cullDecisions(const CullParams& params, const CullBounds& bounds);
 
 // The device's input for `program` (one of the patches' gpuPrograms()): bounds in program
-// patch order (GpuPatchProgram::patch_ids).
+// patch order (GpuPatchProgram::patch_ids). The two halves apart, for callers that pack the
+// bounds once and the view per frame: TcsCullPolicy::param_words and ::patch_words.
 gpu::TcsCullPolicy tcsCullPolicy(const CullParams& params, const CullBounds& bounds,
                                  const gpu::GpuPatchProgram& program);
+std::vector<uint32_t> cullParamWords(const CullParams& params);
+std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
+                                     const gpu::GpuPatchProgram& program);
 
 }  // namespace tb

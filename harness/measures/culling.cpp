@@ -66,7 +66,7 @@ CullingSummary summarise(std::span<const CullingFrame> frames) {
 
 CullingRun::CullingRun(const SurfacePatches& patches, gpu::Context* context,
                        std::string gpu_unavailable, const CullingOptions& options)
-    : patches_(patches), context_(context), options_(options) {
+    : patches_(patches), programs_(patches.gpuPrograms()), context_(context), options_(options) {
   bounds_ = cullBounds(patches, factorCorners(patches), diagonalOf(boundsOf(patches.controlMesh())));
   const tess::Levels levels = uniformLevels(options.level);
   const tess::Tessellation quad =
@@ -78,7 +78,10 @@ CullingRun::CullingRun(const SurfacePatches& patches, gpu::Context* context,
     patch_points_.push_back(t.points.size());
     patch_triangles_.push_back(t.triangles.size());
   }
-  if (patches.gpuPrograms().empty()) {
+  for (const gpu::GpuPatchProgram& program : programs_) {
+    device_policies_.push_back({{}, cullPatchWords(bounds_, program)});
+  }
+  if (programs_.empty()) {
     gpu_skip_reason_ = "the technique has no GPU program";
   } else if (context_ == nullptr) {
     gpu_skip_reason_ = "no Vulkan device (" + gpu_unavailable + ")";
@@ -105,16 +108,16 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const CullParams* params) {
   counts.culled.assign(patches_.patchCount(), 0);
   counts.primitives_counted = true;
   const tess::Levels levels = uniformLevels(options_.level);
-  for (const gpu::GpuPatchProgram& program : patches_.gpuPrograms()) {
-    gpu::TcsCullPolicy device_policy;
+  for (size_t k = 0; k < programs_.size(); ++k) {
+    const gpu::GpuPatchProgram& program = programs_[k];
     gpu::PatchProgramOptions run_options;
     run_options.spacing = tess::Spacing::kInteger;
     run_options.capture = false;
     run_options.statistics = true;
     run_options.patches_per_draw = kPatchesPerDraw;
     if (params != nullptr) {
-      device_policy = tcsCullPolicy(*params, bounds_, program);
-      run_options.cull_policy = &device_policy;
+      device_policies_[k].param_words = cullParamWords(*params);
+      run_options.cull_policy = &device_policies_[k];
     }
     const gpu::PatchProgramCapture run =
         gpu::runPatchProgram(*context_, program, levels, run_options);

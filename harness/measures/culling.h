@@ -101,6 +101,9 @@ class CullingRun {
   void prepareDevice();
 
   const SurfacePatches& patches_;
+  std::vector<gpu::GpuPatchProgram> programs_;
+  // Per program, the packed bounds (patch_words, once) and the frame's view (param_words).
+  std::vector<gpu::TcsCullPolicy> device_policies_;
   gpu::Context* context_;
   std::string gpu_skip_reason_;
   CullingOptions options_;
