@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -98,8 +99,8 @@ class ObjScanner {
     }
   }
 
-  // Resolves a 1-based or negative (relative) OBJ index; fails when out of range.
-  void checkIndex(std::string_view token, long count, const char* what) {
+  // Resolves a 1-based or negative (relative) OBJ index to 0-based; fails when out of range.
+  long checkIndex(std::string_view token, long count, const char* what) {
     long index = 0;
     if (!parseInt(token, &index)) {
       fail("face", "has a malformed " + std::string(what) + " index '" + std::string(token) + "'");
@@ -109,6 +110,7 @@ class ObjScanner {
       fail("face", std::string(what) + " index " + std::to_string(index) +
                        " is out of range (1.." + std::to_string(count) + " defined so far)");
     }
+    return resolved;
   }
 
   void scanFace(const std::vector<std::string_view>& tokens) {
@@ -120,10 +122,18 @@ class ObjScanner {
       fail("face", "has " + std::to_string(tokens.size() - 1) + " vertices; at most " +
                        std::to_string(kMaxFaceCorners) + " are supported");
     }
+    std::vector<long> vertices;
     for (size_t i = 1; i < tokens.size(); ++i) {
       std::string_view corner = tokens[i];
       const size_t slash1 = corner.find('/');
-      checkIndex(corner.substr(0, slash1), position_count_, "vertex");
+      const long vertex = checkIndex(corner.substr(0, slash1), position_count_, "vertex");
+      // A corner repeated anywhere in the face (f 1 2 2) collapses an edge: no patch or
+      // normal is defined on it.
+      if (std::find(vertices.begin(), vertices.end(), vertex) != vertices.end()) {
+        fail("face", "uses vertex " + std::to_string(vertex + 1) +
+                         " twice (degenerate face)");
+      }
+      vertices.push_back(vertex);
       if (slash1 == std::string_view::npos) continue;
       std::string_view rest = corner.substr(slash1 + 1);
       const size_t slash2 = rest.find('/');

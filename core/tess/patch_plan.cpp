@@ -132,4 +132,6 @@ IsolinePlan planIsoline(Spacing spacing, const Levels& raw) {
   return plan;
 }
 
+float maxLevel(Spacing spacing) { return boundsFor(spacing).high; }
+
 }  // namespace tb::tess

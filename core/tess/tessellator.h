@@ -57,6 +57,10 @@ struct Options {
 Tessellation tessellate(Domain domain, Spacing spacing, const Levels& levels,
                         const Options& options = {});
 
+// The largest level the spacing takes (D3D11.3 §11): 63 for fractional_odd, else 64. Higher
+// levels (and +inf) are clamped to it.
+float maxLevel(Spacing spacing);
+
 // Closed-form counts for uniform integer level n >= 1 (tested against tessellate()).
 uint64_t quadPointCount(uint32_t n);         // (n+1)^2
 uint64_t quadTriangleCount(uint32_t n);      // 2 n^2

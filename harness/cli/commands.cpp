@@ -156,6 +156,10 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   std::vector<std::string> camera_files;
   selection.camera_paths = selectCameraPaths(args.cameras, &camera_files);
 
+  // The folder is claimed before measuring, so an unwritable --out or a taken --run-id
+  // fails at once. It stays `<run-id>.incomplete` until everything is written; a run that
+  // fails removes it, a killed one leaves it marked unfinished (run_folder.h).
+  PendingRunFolder folder = PendingRunFolder::forRun(args.out, args.run_id);
   Results results;
   // On a terminal the progress line rewrites itself; in a log, one line per step.
   const bool terminal = isatty(fileno(stderr)) != 0;
@@ -169,7 +173,8 @@ int runRun(const RunArgs& args, const std::string& command_line) {
     }
   };
   SuiteTimings timings;
-  runSuite(selection, progress, &results, &timings);
+  runSuite(selection, progress, &results, &timings,
+           [&](const Record& record) { folder.journal(recordJsonLine(record)); });
   // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
   // empty run: one line with the first reason, non-zero exit, no run folder. A shard sees
   // only its slice; `merge` makes this check on the whole.
@@ -178,29 +183,28 @@ int runRun(const RunArgs& args, const std::string& command_line) {
     throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
   }
 
-  // The folder is made only after measuring, so a failed run leaves nothing behind.
-  std::string run_id;
-  const std::string folder = createRunFolder(args.out, args.run_id, &run_id);
   results.context = probeRunContext(command_line, args.device);
   results.context.date = utcTimestampIso8601();
-  results.context.run_id = run_id;
+  results.context.run_id = folder.runId();
   results.context.selection = describeSelection(selection, results);
   results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
-  writeNewFile(folder + "/results.json", serializeResults(results));
-  writeNewFile(folder + "/report.md", renderMarkdown(results));
-  writeNewFile(folder + "/timings.json", timingsJson(timings));
+  folder.writeFile("report.md", renderMarkdown(results));
+  folder.writeFile("timings.json", timingsJson(timings));
+  folder.writeFile("results.json", serializeResults(results));
+  const std::string finished = folder.finish();
   if (!args.quiet) {
     printTimingSummary(timings);
     fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md)\n",
-               results.records.size(), results.skipped.size(), folder);
+               results.records.size(), results.skipped.size(), finished);
   } else {
-    fmt::print("{}\n", folder);
+    fmt::print("{}\n", finished);
   }
   return 0;
 }
 
 int runReport(const ReportArgs& args) {
+  requireFinishedRunFolder(args.run_dir);
   const Results results = readResultsFile(args.run_dir + "/results.json");
   if (args.format != "md") {
     throw InputError("--format", args.format, "unknown report format (known: md)");

@@ -15,6 +15,7 @@ namespace tb::cli {
 namespace {
 
 ShardRun readShard(const std::string& folder) {
+  requireFinishedRunFolder(folder);
   const std::string path = folder + "/results.json";
   if (!std::filesystem::is_regular_file(path)) {
     throw std::runtime_error(folder + ": no results.json (not a tessbench run folder)");
@@ -40,13 +41,14 @@ int runMerge(const MergeArgs& args, const std::string& command_line) {
     throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
   }
   // The folder is made only after the shards are known to fit, so a refused merge leaves
-  // nothing behind.
-  createNewRunFolder(args.out);
+  // nothing behind; it is written as `<out>.incomplete` and renamed when complete.
+  PendingRunFolder folder = PendingRunFolder::at(args.out);
   merged.context.date = utcTimestampIso8601();
   merged.context.run_id = folderName(args.out);
   merged.context.command_line = command_line;
-  writeNewFile(args.out + "/results.json", serializeResults(merged));
-  writeNewFile(args.out + "/report.md", renderMarkdown(merged));
+  folder.writeFile("report.md", renderMarkdown(merged));
+  folder.writeFile("results.json", serializeResults(merged));
+  folder.finish();
   if (!args.quiet) {
     fmt::print(
         "{} records, {} skipped from {} shards: merged run written to {}/ "

@@ -39,10 +39,30 @@ void printText(tess::Domain domain, const tess::Tessellation& result) {
   }
 }
 
+// Levels above the spacing's maximum are clamped by the tessellator, as hardware does;
+// each is reported on one stderr line so a typo (640 for 64) is not silent.
+void reportClampedLevels(const TessellateRequest& request) {
+  const float high = tess::maxLevel(request.spacing);
+  auto report = [&](const char* option, size_t index, float level) {
+    if (!(level > high)) return;
+    fmt::print(stderr, "tessbench: warning: {}[{}] = {} is above {}, the {} maximum: clamped to {}\n",
+               option, index, level, high, tess::toString(request.spacing), high);
+  };
+  const size_t outer = request.domain == tess::Domain::kTriangle ? 3
+                       : request.domain == tess::Domain::kQuad   ? 4
+                                                                 : 2;
+  const size_t inner = request.domain == tess::Domain::kTriangle ? 1
+                       : request.domain == tess::Domain::kQuad   ? 2
+                                                                 : 0;
+  for (size_t i = 0; i < outer; ++i) report("--outer", i, request.levels.outer[i]);
+  for (size_t i = 0; i < inner; ++i) report("--inner", i, request.levels.inner[i]);
+}
+
 }  // namespace
 
 int runTessellate(const TessellateArgs& args) {
   const TessellateRequest request = parseTessellateArgs(args);
+  reportClampedLevels(request);
   const tess::Tessellation result =
       args.backend == "gpu" ? tessellateWithGpu(args, request)
                             : tess::tessellate(request.domain, request.spacing, request.levels,

@@ -247,11 +247,15 @@ class AdaptivityMeasure final : public Measure {
       limit = std::make_unique<ref::LimitSurface>(patches.controlMesh(),
                                                   referenceScheme(patches.approximates()));
     } catch (const InputError& error) {
-      result.notes.push_back(std::string("reference_error_* not measured: ") + error.what());
+      // The per-frame rows then lack reference_error_*; this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "reference_error"}}, MeasureStatus::kSkipped,
+                                          error.what()));
     }
     AdaptivityRun run(patches, input.gpu, input.gpu_unavailable, limit.get());
     if (!run.gpuSkipReason().empty()) {
-      result.notes.push_back("gpu_* and *_gpu figures skipped: " + run.gpuSkipReason());
+      // The gpu_* and *_gpu figures live in the per-frame rows; without them, this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
+                                          run.gpuSkipReason()));
     }
     const Grid grid = gridFor(input.suite, patches);
 

@@ -102,11 +102,13 @@ class CracksMeasure final : public Measure {
     MeasureResult result;
     result.measure = info().id;
     const SurfacePatches& patches = *input.patches;
+    // Why the GPU rows cannot run here; they are then rows with status skipped and this
+    // reason, under the keys a run with a device measures them by.
     std::string gpu_reason;
     if (patches.gpuPrograms().empty()) {
-      gpu_reason = "skipped: the technique has no GPU program";
+      gpu_reason = "the technique has no GPU program";
     } else if (input.gpu == nullptr) {
-      gpu_reason = "skipped: no Vulkan device (" + input.gpu_unavailable + ")";
+      gpu_reason = "no Vulkan device (" + input.gpu_unavailable + ")";
     }
     // Both backends of one spacing and level in turn: the session evaluates on the CPU
     // once for the two.
@@ -114,27 +116,19 @@ class CracksMeasure final : public Measure {
     for (tess::Spacing spacing : kCrackSpacings) {
       for (const LevelChoice& level : kCrackLevels) {
         for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-          if (backend == CrackBackend::kGpu && !gpu_reason.empty()) continue;
-          result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, [&] {
+          result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, gpu_reason, [&] {
             return session.measure(spacing, level.level, backend, input.gpu);
           }));
         }
       }
-    }
-    if (!gpu_reason.empty()) {
-      MetricRow row;
-      row.keys["backend"] = toString(CrackBackend::kGpu);
-      row.keys["note"] = gpu_reason;
-      result.rows.push_back(std::move(row));
     }
     // The per-edge pattern rows come last so the uniform rows keep their places.
     for (tess::Spacing spacing : kCrackSpacings) {
       const std::vector<tess::Levels> levels =
           edgePatternLevels(patches, spacing, kEdgePatternBase.level);
       for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-        if (backend == CrackBackend::kGpu && !gpu_reason.empty()) continue;
         result.rows.push_back(
-            crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey,
+            crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey, gpu_reason,
                      [&] { return session.measure(spacing, levels, backend, input.gpu); }));
       }
     }
@@ -143,25 +137,29 @@ class CracksMeasure final : public Measure {
 
  private:
   // One row: keys spacing, level, backend (and levels when not uniform), then the
-  // figures, or a note saying why there are none. A GPU failure is a note; a CPU one throws.
+  // figures, or status skipped or failed with the reason there are none. A GPU row is
+  // skipped with gpu_reason when that is set; a GPU failure is a failed row, a CPU one throws.
   template <class MeasureFn>
   static MetricRow crackRow(tess::Spacing spacing, const char* level, CrackBackend backend,
-                            const char* levels_key, MeasureFn measure) {
+                            const char* levels_key, const std::string& gpu_reason,
+                            MeasureFn measure) {
     MetricRow row;
     row.keys["spacing"] = std::string(tess::toString(spacing));
     row.keys["level"] = std::string(level);
     row.keys["backend"] = toString(backend);
     if (levels_key != nullptr) row.keys["levels"] = std::string(levels_key);
+    if (backend == CrackBackend::kGpu && !gpu_reason.empty()) {
+      return unmeasuredRow(std::move(row.keys), MeasureStatus::kSkipped, gpu_reason);
+    }
     try {
       const CrackFigures f = measure();
       if (!f.measured) {
-        row.keys["note"] = "skipped: " + f.skipped_reason;
-      } else {
-        row.metrics = crackTable().metrics(f);
+        return unmeasuredRow(std::move(row.keys), MeasureStatus::kSkipped, f.skipped_reason);
       }
+      row.metrics = crackTable().metrics(f);
     } catch (const std::exception& error) {
       if (backend == CrackBackend::kCpuFloat) throw;
-      row.keys["note"] = std::string("failed: ") + error.what();
+      return unmeasuredRow(std::move(row.keys), MeasureStatus::kFailed, error.what());
     }
     return row;
   }

@@ -188,8 +188,10 @@ class CullingMeasure final : public Measure {
     const std::span<const CullPolicy> policies = allCullPolicies();
     const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);
     if (!run.gpuSkipReason().empty()) {
-      result.notes.push_back("gpu_*, twin_mismatches and the oracle's figures skipped: " +
-                             run.gpuSkipReason());
+      // gpu_*, twin_mismatches and the oracle's figures live in the per-frame rows; without
+      // them, this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
+                                          run.gpuSkipReason()));
     }
     const CullBounds& bounds = run.bounds();
     if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {

@@ -132,10 +132,8 @@ class InstructionsMeasure final : public Measure {
   static void staticRows(const MeasureInput& input, MeasureResult* result) {
     const std::vector<ShaderSet> sets = shaderSets(input);
     if (sets.empty()) {
-      MetricRow row;
-      row.keys["source"] = "spirv_O";
-      row.keys["note"] = "skipped: the technique has no shaders";
-      result->rows.push_back(std::move(row));
+      result->rows.push_back(unmeasuredRow({{"source", "spirv_O"}}, MeasureStatus::kSkipped,
+                                           "the technique has no shaders"));
       return;
     }
     for (const ShaderSet& set : sets) {
@@ -144,12 +142,10 @@ class InstructionsMeasure final : public Measure {
         try {
           counts = cachedEmbeddedShaderCounts(shader, set.specialization);
         } catch (const std::exception& error) {
-          MetricRow row;
-          row.keys["source"] = "spirv_O";
-          if (!set.program.empty()) row.keys["program"] = set.program;
-          row.keys["stage"] = shader;
-          row.keys["note"] = std::string("failed: ") + error.what();
-          result->rows.push_back(std::move(row));
+          std::map<std::string, std::string> keys{{"source", "spirv_O"}, {"stage", shader}};
+          if (!set.program.empty()) keys["program"] = set.program;
+          result->rows.push_back(unmeasuredRow(std::move(keys), MeasureStatus::kFailed,
+                                               error.what()));
           continue;
         }
         for (bool scalar : {false, true}) {
@@ -184,10 +180,9 @@ class InstructionsMeasure final : public Measure {
       if (!e.most || cost(*profile) > cost(*e.most)) e.most = profile, e.most_patch = p;
     }
     if (by_domain.empty()) {
-      MetricRow row;
-      row.keys["source"] = "counting_scalar";
-      row.keys["note"] = "skipped: the technique does not count operations";
-      result->rows.push_back(std::move(row));
+      result->rows.push_back(unmeasuredRow({{"source", "counting_scalar"}},
+                                           MeasureStatus::kSkipped,
+                                           "the technique does not count operations"));
       return;
     }
     for (const auto& [domain, e] : by_domain) {

@@ -230,6 +230,12 @@ void appendTable(const Results& results, const std::string& measure_id,
           auto it = row.keys.find(key);
           cells.push_back(it == row.keys.end() ? "" : it->second);
         }
+        if (row.status != MeasureStatus::kOk) {
+          cells.push_back(std::string(toString(row.status)) + ": " + row.reason);
+          cells.resize(header.size());
+          appendRow(out, cells);
+          continue;
+        }
         cells.push_back("ok");
         for (const Column& column : columns) {
           std::string value;

@@ -16,7 +16,13 @@ Json metricRowToJson(const MetricRow& row) {
   for (const Metric& metric : row.metrics) {
     metrics.push_back({{"name", metric.name}, {"value", metric.value}, {"unit", metric.unit}});
   }
-  return {{"keys", keys}, {"metrics", metrics}};
+  Json json{{"keys", keys}, {"metrics", metrics}};
+  // Most rows are ok; only the others spend bytes on saying so.
+  if (row.status != MeasureStatus::kOk) {
+    json["status"] = toString(row.status);
+    json["reason"] = row.reason;
+  }
+  return json;
 }
 
 Json measureToJson(const MeasureResult& measure) {
@@ -60,6 +66,12 @@ MetricRow metricRowFromJson(const Json& json, const std::string& where) {
     row.metrics.push_back({field<std::string>(metrics[i], "name", at),
                            field<double>(metrics[i], "value", at),
                            field<std::string>(metrics[i], "unit", at)});
+  }
+  if (json.contains("status")) {
+    const auto status = parseMeasureStatus(field<std::string>(json, "status", where));
+    if (!status) throw std::runtime_error(where + ": unknown status");
+    row.status = *status;
+    row.reason = field<std::string>(json, "reason", where);
   }
   return row;
 }
@@ -218,6 +230,15 @@ const char* toString(MeasureStatus status) {
   return "unknown";
 }
 
+MetricRow unmeasuredRow(std::map<std::string, std::string> keys, MeasureStatus status,
+                        std::string reason) {
+  MetricRow row;
+  row.keys = std::move(keys);
+  row.status = status;
+  row.reason = std::move(reason);
+  return row;
+}
+
 std::optional<MeasureStatus> parseMeasureStatus(const std::string& text) {
   if (text == "ok") return MeasureStatus::kOk;
   if (text == "skipped") return MeasureStatus::kSkipped;
@@ -323,6 +344,8 @@ const MeasureDeclaration* Results::findMeasure(const std::string& id) const {
   }
   return nullptr;
 }
+
+std::string recordJsonLine(const Record& record) { return recordToJson(record).dump(); }
 
 std::string serializeResults(const Results& results) { return toJson(results).dump(2) + "\n"; }
 

@@ -18,6 +18,10 @@ nlohmann::ordered_json toJson(const MeasureDeclaration& declaration);
 // the schema (or has another schema_version).
 Results resultsFromJson(const nlohmann::ordered_json& document);
 
+// One record as results.json's "records" array holds it, on one line (the run folder's
+// journal of records measured so far).
+std::string recordJsonLine(const Record& record);
+
 std::string serializeResults(const Results& results);  // pretty, 2-space indent, final newline
 Results readResultsFile(const std::string& path);       // throws naming the file
 

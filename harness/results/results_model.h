@@ -14,7 +14,10 @@ namespace tb {
 // Bumped whenever a field changes meaning or is removed.
 // 2: measure declarations (metric units, directions, headline, fixed notes) at the top
 //    level; MeasureResult::notes hold only the notes about their own record.
-constexpr int kResultsSchemaVersion = 2;
+// 3: rows carry a status: a part of a measure that could not run (no Vulkan device, no
+//    shaders, a device error) is a row with status "skipped" or "failed" and a reason,
+//    never an ok row whose note says so.
+constexpr int kResultsSchemaVersion = 3;
 
 struct Metric {
   std::string name;  // snake_case, declared by the measure (MeasureDeclaration::metrics)
@@ -22,14 +25,24 @@ struct Metric {
   std::string unit;  // toString(Unit) of the declared unit: "bytes", "ratio", "ulp", ...
 };
 
+enum class MeasureStatus { kOk, kSkipped, kFailed };
+
 // One row of a measure: the parameters that vary inside the measure (e.g. the
-// tessellation level) as keys, and the figures for them.
+// tessellation level) as keys, and the figures for them. A row whose case could not be
+// measured has status kSkipped (it cannot run here: no Vulkan device, nothing to measure)
+// or kFailed (it ran and broke), the reason, and no metrics; its keys are the ones the
+// measured row would have, so a comparison with a run that measured it sees the figures
+// missing. results.json writes status and reason only on rows that are not ok.
 struct MetricRow {
   std::map<std::string, std::string> keys;
   std::vector<Metric> metrics;
+  MeasureStatus status = MeasureStatus::kOk;
+  std::string reason = {};  // why the row has no figures; empty when ok
 };
 
-enum class MeasureStatus { kOk, kSkipped, kFailed };
+// A row with `keys`, no figures, and the status and reason saying why.
+MetricRow unmeasuredRow(std::map<std::string, std::string> keys, MeasureStatus status,
+                        std::string reason);
 
 struct MeasureResult {
   std::string measure;  // measure id, e.g. "memory"

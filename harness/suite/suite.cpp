@@ -273,7 +273,7 @@ std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode) {
 }
 
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
-              SuiteTimings* timings) {
+              SuiteTimings* timings, const RecordFn& on_record) {
   const auto run_start = std::chrono::steady_clock::now();
   const int threads =
       selection.threads > 0 ? selection.threads : tbb::info::default_concurrency();
@@ -352,6 +352,10 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
       const size_t slot = group.first_slot + v * group.input_count + group.input_index;
       outcomes[slot] = runStep(run, *group.technique, group.variants[v], v == 0, group.input,
                                &default_footprint);
+      if (on_record && outcomes[slot].record) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        on_record(*outcomes[slot].record);
+      }
     }
   }, tbb::simple_partitioner());
   for (StepOutcome& outcome : outcomes) {

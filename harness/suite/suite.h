@@ -64,6 +64,11 @@ struct SuiteTimings {
 // label). Steps run in parallel; calls are serialised, `done` counts up.
 using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 
+// Called with each record as soon as its measures are done, in completion order (not the
+// serial order of results.records); calls are serialised. An exception it throws stops the
+// run and leaves runSuite.
+using RecordFn = std::function<void(const Record&)>;
+
 // Fills assets, records, skipped and the selected measures' declarations of `results`
 // (never the context). An asset
 // that fails to load aborts the run with InputError: a named asset must be
@@ -72,6 +77,6 @@ using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 // Independent technique × input groups run in parallel (the variants of one group in
 // order, since a variant's measures may depend on the default variant's patch data).
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
-              SuiteTimings* timings = nullptr);
+              SuiteTimings* timings = nullptr, const RecordFn& on_record = {});
 
 }  // namespace tb

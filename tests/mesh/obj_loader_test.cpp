@@ -143,6 +143,12 @@ TEST(ObjLoader, DegenerateFaceIsRejected) {
   EXPECT_NE(error.find("at least 3"), std::string::npos) << error;
 }
 
+TEST(ObjLoader, FaceRepeatingAVertexIsRejected) {
+  const std::string error = errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 -3 3\n");
+  EXPECT_NE(error.find("line 6"), std::string::npos) << error;
+  EXPECT_NE(error.find("uses vertex 2 twice (degenerate face)"), std::string::npos) << error;
+}
+
 TEST(ObjLoader, UnreadableTagIsRejected) {
   const std::string base = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   EXPECT_NE(errorOf(base + "t crease 2/x/0 0 1 2.0\n").find("line 5"), std::string::npos);

@@ -65,6 +65,23 @@ TEST(Markdown, SkippedMeasureShowsItsReason) {
   EXPECT_NE(renderMarkdown(results).find("skipped: no Vulkan device"), std::string::npos);
 }
 
+// A row that could not run shows its status and reason in the status column, not figures.
+TEST(Markdown, SkippedRowShowsItsStatusAndReason) {
+  Results results;
+  Record record{"acc", "default", "a", {}, {}, {}};
+  MeasureResult cracks{"cracks", MeasureStatus::kOk, "", {}, {}};
+  cracks.rows.push_back({{{"backend", "cpu_float"}}, {{"points_not_equal", 0, "count"}}});
+  cracks.rows.push_back(
+      unmeasuredRow({{"backend", "gpu"}}, MeasureStatus::kSkipped, "no Vulkan device"));
+  record.measures.push_back(cracks);
+  results.records.push_back(record);
+  const std::string md = renderMarkdown(results);
+  EXPECT_NE(md.find("| acc | default | a | cpu_float | ok | 0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"),
+            std::string::npos)
+      << md;
+}
+
 // Fixed notes come from the declaration, once; a record's own notes follow the table,
 // each naming its record, whichever record has them (not only the first).
 TEST(Markdown, RendersFixedNotesOnceAndEachRecordsOwnNotes) {

@@ -18,6 +18,8 @@ Results sampleResults() {
   MeasureResult memory;
   memory.measure = "memory";
   memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 1234, "bytes"}, {"ratio", 0.1, "ratio"}}});
+  memory.rows.push_back(
+      unmeasuredRow({{"level", "16"}}, MeasureStatus::kFailed, "device lost at level 16"));
   record.measures.push_back(memory);
   MeasureResult skipped{"gpu", MeasureStatus::kSkipped, "no Vulkan device", {}, {}};
   record.measures.push_back(skipped);
@@ -41,6 +43,22 @@ TEST(ResultsJson, RoundTripsEveryField) {
   EXPECT_EQ(parsed.records[0].measures[1].status, MeasureStatus::kSkipped);
   EXPECT_EQ(parsed.records[0].measures[0].rows[0].metrics[1].value, 0.1);
   EXPECT_EQ(parsed.skipped[0].reason, original.skipped[0].reason);
+  const MetricRow& failed = parsed.records[0].measures[0].rows[1];
+  EXPECT_EQ(failed.status, MeasureStatus::kFailed);
+  EXPECT_EQ(failed.reason, "device lost at level 16");
+  EXPECT_TRUE(failed.metrics.empty());
+}
+
+// A skip or failure is a status a reader can filter on; an ok row spends no bytes on it.
+TEST(ResultsJson, RowStatusIsWrittenOnlyWhenNotOk) {
+  const auto json = toJson(sampleResults());
+  const auto& rows = json["records"][0]["measures"][0]["rows"];
+  EXPECT_FALSE(rows[0].contains("status"));
+  EXPECT_EQ(rows[1]["status"], "failed");
+  EXPECT_EQ(rows[1]["reason"], "device lost at level 16");
+  auto broken = json;
+  broken["records"][0]["measures"][0]["rows"][1]["status"] = "maybe";
+  EXPECT_THROW(resultsFromJson(broken), std::runtime_error);
 }
 
 TEST(ResultsJson, SerialisationIsByteStable) {

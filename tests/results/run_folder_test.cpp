@@ -1,38 +1,139 @@
+#include "harness/results/run_folder.h"
+
 #include <gtest/gtest.h>
 
-#include <filesystem>
+#include <sys/resource.h>
 
-#include "harness/results/run_folder.h"
+#include <csignal>
+#include <filesystem>
+#include <functional>
+
 #include "tests/test_support.h"
 
 namespace tb {
 namespace {
 
-TEST(RunFolder, ExplicitRunIdIsNeverReused) {
+namespace fs = std::filesystem;
+
+std::string readFile(const fs::path& path) {
+  std::ifstream file(path);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+std::string errorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// While it runs, a run lives in `<id>.incomplete` with its marker and journal; finish()
+// leaves exactly the files written, under `<id>`.
+TEST(RunFolder, PendingFolderIsRenamedIntoPlaceWhenFinished) {
+  const auto root = testing::scratchDirectory("run_folder_finish");
+  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "baseline");
+  EXPECT_EQ(folder.runId(), "baseline");
+  EXPECT_EQ(folder.pendingPath(), (root / "baseline.incomplete").string());
+  EXPECT_TRUE(fs::is_regular_file(root / "baseline.incomplete" / kIncompleteMarker));
+  EXPECT_FALSE(fs::exists(root / "baseline"));
+  folder.journal(R"({"technique":"acc"})");
+  folder.writeFile("results.json", "{}\n");
+  EXPECT_EQ(folder.finish(), (root / "baseline").string());
+  EXPECT_FALSE(fs::exists(root / "baseline.incomplete"));
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(root / "baseline")) {
+    files.push_back(entry.path().filename().string());
+  }
+  EXPECT_EQ(files, std::vector<std::string>{"results.json"});
+  EXPECT_NO_THROW(requireFinishedRunFolder((root / "baseline").string()));
+}
+
+TEST(RunFolder, ExplicitRunIdIsNeverReusedFinishedOrNot) {
   const auto root = testing::scratchDirectory("run_folder_explicit");
-  std::string chosen;
-  const std::string path = createRunFolder(root.string(), "baseline", &chosen);
-  EXPECT_EQ(chosen, "baseline");
-  EXPECT_TRUE(std::filesystem::is_directory(path));
-  EXPECT_THROW(createRunFolder(root.string(), "baseline", &chosen), std::runtime_error);
+  PendingRunFolder::forRun(root.string(), "baseline").finish();
+  EXPECT_NE(errorOf([&] { PendingRunFolder::forRun(root.string(), "baseline"); })
+                .find("run folder already exists"),
+            std::string::npos);
+  PendingRunFolder running = PendingRunFolder::forRun(root.string(), "running");
+  EXPECT_THROW(PendingRunFolder::forRun(root.string(), "running"), std::runtime_error);
 }
 
 TEST(RunFolder, TimestampedRunsGetDistinctFolders) {
   const auto root = testing::scratchDirectory("run_folder_auto");
-  std::string first, second;
-  const std::string a = createRunFolder(root.string(), "", &first);
-  const std::string b = createRunFolder(root.string(), "", &second);
-  EXPECT_NE(a, b);
-  EXPECT_NE(first, second);
+  PendingRunFolder a = PendingRunFolder::forRun(root.string(), "");
+  PendingRunFolder b = PendingRunFolder::forRun(root.string(), "");
+  EXPECT_NE(a.runId(), b.runId());
+  EXPECT_NE(a.finish(), b.finish());
 }
 
-TEST(RunFolder, NewRunFolderIsCreatedOnceWithItsParents) {
+// A run that fails (bad input, an error) removes its folder, and the results root when it
+// made it; an earlier run's folder is untouched.
+TEST(RunFolder, AbandonedRunLeavesNothingBehind) {
+  const auto root = testing::scratchDirectory("run_folder_abandon");
+  {
+    PendingRunFolder folder = PendingRunFolder::forRun((root / "new" / "results").string(), "r");
+    folder.journal("{}");
+  }
+  EXPECT_TRUE(fs::is_empty(root)) << "the run's folder and the parents it made are gone";
+  PendingRunFolder::forRun(root.string(), "kept").finish();
+  { PendingRunFolder failed = PendingRunFolder::forRun(root.string(), "failed"); }
+  EXPECT_TRUE(fs::is_directory(root / "kept"));
+  EXPECT_FALSE(fs::exists(root / "failed.incomplete"));
+}
+
+// What a killed run leaves is refused by name or by marker, with the records it journaled.
+TEST(RunFolder, UnfinishedFolderIsRefusedWithOneLine) {
+  const auto root = testing::scratchDirectory("run_folder_unfinished");
+  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "killed");
+  folder.journal("{}");
+  folder.journal("{}");
+  const std::string message = errorOf([&] { requireFinishedRunFolder(folder.pendingPath()); });
+  EXPECT_NE(message.find("killed.incomplete: unfinished run"), std::string::npos) << message;
+  EXPECT_NE(message.find("2 records journaled"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  // Renamed by hand, the marker still says so.
+  fs::rename(folder.pendingPath(), root / "renamed");
+  EXPECT_THROW(requireFinishedRunFolder((root / "renamed").string()), std::runtime_error);
+  EXPECT_NE(readFile(root / "renamed" / kIncompleteMarker).find("did not finish"),
+            std::string::npos);
+}
+
+// A folder that appears under the final name while the run measures is never replaced.
+TEST(RunFolder, FinishRefusesToReplaceAFolderThatAppeared) {
+  const auto root = testing::scratchDirectory("run_folder_race");
+  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "r");
+  fs::create_directories(root / "r");
+  testing::writeTextFile(root / "r" / "results.json", "other\n");
+  folder.writeFile("results.json", "{}\n");
+  EXPECT_THROW(folder.finish(), std::runtime_error);
+  EXPECT_EQ(readFile(root / "r" / "results.json"), "other\n");
+  EXPECT_EQ(readFile(root / "r.incomplete" / "results.json"), "{}\n");
+}
+
+// An --out that cannot hold a folder fails before any measuring, naming the path. (Mode
+// bits do not stop root, so the unwritable place is a path through a regular file.)
+TEST(RunFolder, UnwritableRootIsOneLineNamingIt) {
+  const auto root = testing::scratchDirectory("run_folder_unwritable");
+  const std::string file = testing::writeTextFile(root / "plain_file", "x");
+  const std::string message =
+      errorOf([&] { PendingRunFolder::forRun(file + "/results", ""); });
+  EXPECT_NE(message.find(file + "/results: cannot create results folder"), std::string::npos)
+      << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  EXPECT_THROW(PendingRunFolder::at(file + "/merged"), std::runtime_error);
+}
+
+TEST(RunFolder, MergeFolderIsCreatedOnceWithItsParents) {
   const auto root = testing::scratchDirectory("run_folder_new");
   const std::string path = (root / "merged" / "all").string();
-  createNewRunFolder(path + "/");
-  EXPECT_TRUE(std::filesystem::is_directory(path));
-  EXPECT_THROW(createNewRunFolder(path), std::runtime_error);
-  EXPECT_THROW(createNewRunFolder(path + "/"), std::runtime_error);
+  PendingRunFolder folder = PendingRunFolder::at(path + "/");
+  EXPECT_EQ(folder.runId(), "all");
+  folder.finish();
+  EXPECT_TRUE(fs::is_directory(path));
+  EXPECT_THROW(PendingRunFolder::at(path), std::runtime_error);
+  EXPECT_THROW(PendingRunFolder::at(path + "/"), std::runtime_error);
 }
 
 TEST(RunFolder, WriteNewFileRefusesToOverwrite) {
@@ -40,9 +141,29 @@ TEST(RunFolder, WriteNewFileRefusesToOverwrite) {
   const std::string path = (root / "results.json").string();
   writeNewFile(path, "{}\n");
   EXPECT_THROW(writeNewFile(path, "other\n"), std::runtime_error);
-  std::ifstream file(path);
-  std::string contents((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(contents, "{}\n");
+  EXPECT_EQ(readFile(path), "{}\n");
+}
+
+// A file that cannot grow (a full disk; here a file-size limit, which fails write() the
+// same way) is a one-line error naming the file and the cause, not a silent short file.
+TEST(RunFolder, WriteFailureNamesTheFileAndTheCause) {
+  const auto root = testing::scratchDirectory("run_folder_full");
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 1024;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  const std::string path = (root / "results.json").string();
+  const std::string message = errorOf([&] { writeNewFile(path, std::string(4096, 'x')); });
+  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "r");
+  const std::string journal_message =
+      errorOf([&] { folder.journal(std::string(4096, 'x')); });
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(message.find(path + ": write failed (File too large)"), std::string::npos) << message;
+  EXPECT_NE(journal_message.find("records.jsonl: write failed"), std::string::npos)
+      << journal_message;
 }
 
 }  // namespace

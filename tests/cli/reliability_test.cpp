@@ -1,0 +1,413 @@
+// Reliability of the `tessbench` executable: every class of bad input is one line and exit 2
+// with no results folder; no Vulkan device is a run whose GPU rows are skipped; a killed run
+// leaves nothing that looks finished; an unwritable --out is one line before any measuring.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "tests/cli/cli_support.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::readFile;
+using testing::runTessbenchSplit;
+using testing::SplitResult;
+using testing::writeTextFile;
+
+std::vector<std::string> folderEntries(const fs::path& folder) {
+  std::vector<std::string> names;
+  if (!fs::exists(folder)) return names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Bytes no text editor writes: NULs, high bytes and stray newlines, the same every run.
+std::string binaryGarbage(size_t size) {
+  std::string bytes(size, '\0');
+  uint32_t state = 12345;
+  for (char& byte : bytes) {
+    state = state * 1664525u + 1013904223u;
+    byte = char(state >> 24);
+  }
+  return bytes;
+}
+
+// A disc of `valence` quads around vertex 1: its centre has that valence.
+std::string poleObj(int valence) {
+  std::string text = "v 0 0 0\n";
+  const double pi = std::acos(-1.0);
+  for (int ring = 1; ring <= 2; ++ring) {
+    for (int i = 0; i < valence; ++i) {
+      const double a = 2 * pi * (i + 0.5 * (ring - 1)) / valence;
+      text += "v " + std::to_string(ring * std::cos(a)) + " " + std::to_string(ring * std::sin(a)) +
+              " 0\n";
+    }
+  }
+  for (int i = 0; i < valence; ++i) {
+    text += "f 1 " + std::to_string(2 + i) + " " + std::to_string(2 + valence + i) + " " +
+            std::to_string(2 + (i + 1) % valence) + "\n";
+  }
+  return text;
+}
+
+constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+constexpr const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+
+// One class of bad input: the files it needs, the arguments (with {dir} for the scratch
+// folder), and what its one line must name (the file, and the line or element).
+struct BadInput {
+  const char* name;
+  std::vector<std::pair<std::string, std::string>> files;
+  std::string arguments;
+  std::vector<std::string> line_names;
+};
+
+std::vector<BadInput> badInputs() {
+  const std::string run = "run --quiet --out {dir}/out ";
+  const std::string acc = run + "--technique acc --measure memory --asset ";
+  const std::string camera = run + "--technique phong --measure adaptivity --asset catmark_cube "
+                                   "--camera ";
+  const std::string orbit = readFile(testing::assetPath("cameras/orbit.json"));
+  // The bundled orbit with one top-level field's value replaced as text (1e999 is no
+  // double a JSON library would write).
+  auto orbitWith = [&](const std::string& field, const std::string& value) {
+    std::string text = orbit;
+    const size_t key = text.find("\"" + field + "\": ");
+    const size_t start = key + field.size() + 4;
+    text.replace(start, text.find_first_of(",\n", start) - start, value);
+    return text;
+  };
+  return {
+      // Files: the classes of docs/ARCHITECTURE.md section 8, and the reliability list.
+      {"obj missing", {}, run + "--asset {dir}/missing.obj", {"{dir}/missing.obj", "no such file"}},
+      {"obj empty", {{"empty.obj", ""}}, run + "--asset {dir}/empty.obj",
+       {"{dir}/empty.obj", "empty"}},
+      {"obj truncated mid-face",
+       {{"cut.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 1 2"}},
+       run + "--asset {dir}/cut.obj",
+       {"{dir}/cut.obj: line 6", "degenerate face"}},
+      {"obj binary garbage", {{"garbage.obj", binaryGarbage(4096)}}, run + "--asset {dir}/garbage.obj",
+       {"{dir}/garbage.obj"}},
+      {"obj NaN coordinate", {{"nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"}},
+       run + "--asset {dir}/nan.obj", {"{dir}/nan.obj: line 2", "not finite"}},
+      {"obj infinite coordinate", {{"inf.obj", "v 0 0 0\nv 1 0 -inf\nv 0 1 0\nf 1 2 3\n"}},
+       run + "--asset {dir}/inf.obj", {"{dir}/inf.obj: line 2", "not finite"}},
+      {"obj vertex index out of range", {{"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"}},
+       run + "--asset {dir}/range.obj", {"{dir}/range.obj: line 4", "index 9 is out of range"}},
+      {"obj normal index out of range",
+       {{"normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n"}},
+       run + "--asset {dir}/normal.obj", {"{dir}/normal.obj: line 5", "normal index 7"}},
+      {"obj degenerate face", {{"degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"}},
+       run + "--asset {dir}/degenerate.obj",
+       {"{dir}/degenerate.obj: line 4", "uses vertex 2 twice"}},
+      {"obj unreadable tag", {{"tag.obj", std::string(kQuad) + "t crease 1/x/0 1 2 5\n"}},
+       run + "--asset {dir}/tag.obj", {"{dir}/tag.obj: line 6", "tag 'crease'"}},
+      // What a technique cannot take, when no selected technique can.
+      {"non-quad face for acc", {{"tri.obj", kTriangle}}, acc + "{dir}/tri.obj",
+       {"{dir}/tri.obj", "face 0 (line 4)", "ACC needs quads"}},
+      {"non-manifold edge for acc",
+       {{"fan.obj",
+         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 -1 0\nv 1 -1 0\n"
+         "f 1 2 4 3\nf 2 1 5 6\nf 1 2 8 7\n"}},
+       acc + "{dir}/fan.obj",
+       {"{dir}/fan.obj", "edge 0-1 is shared by 3 faces"}},
+      {"valence over acc's limit", {{"pole33.obj", poleObj(33)}}, acc + "{dir}/pole33.obj",
+       {"{dir}/pole33.obj", "vertex 0", "valence 33 above the maximum 32"}},
+      // Camera path files (run --camera).
+      {"camera missing", {}, camera + "{dir}/missing.json", {"{dir}/missing.json", "no such file"}},
+      {"camera malformed JSON", {{"cut.json", orbit.substr(0, orbit.size() / 2)}},
+       camera + "{dir}/cut.json", {"{dir}/cut.json", "malformed JSON"}},
+      {"camera binary garbage", {{"garbage.json", binaryGarbage(512)}},
+       camera + "{dir}/garbage.json", {"{dir}/garbage.json", "malformed JSON"}},
+      {"camera non-finite field", {{"huge.json", orbitWith("near", "1e999")}},
+       camera + "{dir}/huge.json", {"{dir}/huge.json", "near"}},
+      {"camera field out of range", {{"fov.json", orbitWith("fov_y_deg", "180")}},
+       camera + "{dir}/fov.json", {"{dir}/fov.json", "fov_y_deg"}},
+      {"camera field of the wrong type", {{"frames.json", orbitWith("frames", "\"24\"")}},
+       camera + "{dir}/frames.json", {"{dir}/frames.json", "frames"}},
+      // Names and options.
+      {"unknown technique", {}, run + "--technique nope", {"--technique", "nope"}},
+      {"unknown measure", {}, run + "--measure nope", {"--measure", "nope"}},
+      {"unknown asset", {}, run + "--asset no_such_asset", {"no_such_asset"}},
+      {"unknown suite", {}, run + "--suite huge", {"--suite", "huge"}},
+      {"option out of range", {}, run + "--threads -1", {"--threads", "-1"}},
+      {"unknown option", {}, run + "--frobnicate", {"--frobnicate"}},
+      {"tessellation level not a number", {},
+       "tessellate --domain tri --spacing integer --outer 1,x,1", {"--outer", "'x'"}},
+      {"tessellation level count", {}, "tessellate --domain quad --spacing integer --outer 1,1",
+       {"--outer", "needs 4 values"}},
+      // Where results go: a path through a regular file cannot hold a folder, whoever runs.
+      {"unwritable --out", {{"plain_file", "x"}},
+       "run --quiet --technique phong --measure memory --asset catmark_cube --out "
+       "{dir}/plain_file/results",
+       {"{dir}/plain_file/results", "cannot create results folder"}},
+  };
+}
+
+std::string expand(std::string text, const std::string& dir) {
+  for (size_t at; (at = text.find("{dir}")) != std::string::npos;) text.replace(at, 5, dir);
+  return text;
+}
+
+// Every class: exit 2, exactly one line on stderr that names the file (or option) and the
+// line or element, nothing on stdout, and no results folder.
+TEST(BadInputTable, EveryClassIsOneLineExit2AndNoResultsFolder) {
+  const std::vector<BadInput> cases = badInputs();
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const BadInput& bad = cases[i];
+    const fs::path dir = testing::scratchDirectory("bad_input_" + std::to_string(i));
+    for (const auto& [file, contents] : bad.files) writeTextFile(dir / file, contents);
+    const SplitResult r = runTessbenchSplit(expand(bad.arguments, dir.string()));
+    SCOPED_TRACE(std::string(bad.name) + ": " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    ASSERT_FALSE(r.err.empty());
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line, ending in a newline";
+    EXPECT_EQ(r.err.back(), '\n');
+    EXPECT_EQ(r.err.rfind("tessbench: error: ", 0), 0u);
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    for (const std::string& name : bad.line_names) {
+      EXPECT_NE(r.err.find(expand(name, dir.string())), std::string::npos) << name;
+    }
+    EXPECT_FALSE(fs::exists(dir / "out")) << "no results folder";
+    EXPECT_FALSE(fs::exists(dir / "plain_file" / "results"));
+  }
+}
+
+// A run id in use, finished or interrupted, is refused and the earlier folder is untouched.
+TEST(BadInputTable, ARunIdInUseIsRefusedAndTheEarlierRunKept) {
+  const fs::path dir = testing::scratchDirectory("bad_input_run_id");
+  for (const char* earlier : {"taken", "halfway.incomplete"}) {
+    fs::create_directories(dir / "out" / earlier);
+    writeTextFile(dir / "out" / earlier / "results.json", "earlier\n");
+  }
+  for (const char* id : {"taken", "halfway"}) {
+    const SplitResult r = runTessbenchSplit(
+        "run --quiet --technique phong --measure memory --asset catmark_cube --out " +
+        (dir / "out").string() + " --run-id " + id);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find((dir / "out" / id).string() + ": run folder already exists"),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(folderEntries(dir / "out"), (std::vector<std::string>{"halfway.incomplete", "taken"}));
+  EXPECT_EQ(readFile(dir / "out" / "taken" / "results.json"), "earlier\n");
+}
+
+// A level above the spacing's maximum is not an error: it is clamped, as hardware does, and
+// the clamp is reported on one line.
+TEST(BadInputTable, ALevelAboveTheMaximumIsClampedAndReported) {
+  const SplitResult r =
+      runTessbenchSplit("tessellate --domain quad --spacing fractional_odd --outer 1,2,1e999,3 "
+                        "--inner 200,1");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--outer[2] = inf is above 63, the fractional_odd maximum: clamped to 63"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--inner[0] = 200 is above 63"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+  EXPECT_NE(r.out.find(" triangles\n"), std::string::npos);
+}
+
+// No Vulkan driver at all: the CPU measures run, every GPU part is a row with status
+// "skipped" and the reason (never an ok row whose note says so), and the run exits 0.
+TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
+  const fs::path dir = testing::scratchDirectory("no_device");
+  const SplitResult r = runTessbenchSplit(
+      "run --quiet --technique phong --asset catmark_cube --run-id r --out " + (dir / "out").string(),
+      "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
+  EXPECT_EQ(json["context"]["vulkan_device"].get<std::string>().rfind("none", 0), 0u);
+  std::map<std::string, size_t> skipped_rows, measured_rows;
+  for (const auto& record : json["records"]) {
+    for (const auto& measure : record["measures"]) {
+      const std::string id = measure["measure"];
+      EXPECT_EQ(measure["status"], "ok") << id;
+      for (const auto& note : measure["notes"]) {
+        EXPECT_EQ(note.get<std::string>().find("skipped"), std::string::npos) << id << ": " << note;
+      }
+      for (const auto& row : measure["rows"]) {
+        const std::string note = row["keys"].value("note", "");
+        EXPECT_EQ(note.find("skipped"), std::string::npos) << id << " " << row["keys"].dump();
+        EXPECT_EQ(note.find("failed"), std::string::npos) << id << " " << row["keys"].dump();
+        const bool gpu_part = row["keys"].value("backend", "") == "gpu" ||
+                              row["keys"].value("part", "") == "gpu";
+        if (!row.contains("status")) {
+          EXPECT_FALSE(gpu_part) << id << " " << row["keys"].dump() << ": measured without a device";
+          EXPECT_FALSE(row["metrics"].empty()) << id << " " << row["keys"].dump();
+          ++measured_rows[id];
+          continue;
+        }
+        EXPECT_EQ(row["status"], "skipped") << id << " " << row["keys"].dump();
+        EXPECT_TRUE(gpu_part) << id << " " << row["keys"].dump();
+        EXPECT_EQ(row["reason"].get<std::string>().rfind("no Vulkan device", 0), 0u)
+            << row["reason"];
+        EXPECT_TRUE(row["metrics"].empty());
+        ++skipped_rows[id];
+      }
+    }
+  }
+  // The measures with a GPU half say so; every measure still measured its CPU rows.
+  for (const char* id : {"cracks", "adaptivity", "culling"}) {
+    EXPECT_GT(skipped_rows[id], 0u) << id;
+  }
+  for (const char* id : {"cracks", "adaptivity", "culling", "error", "instructions", "memory"}) {
+    EXPECT_GT(measured_rows[id], 0u) << id;
+  }
+  // And report.md shows the skips as statuses too.
+  EXPECT_NE(readFile(dir / "out" / "r" / "report.md").find("| skipped: no Vulkan device"),
+            std::string::npos);
+}
+
+// Starts tessbench in the background; returns its pid.
+pid_t spawnTessbench(const std::vector<std::string>& arguments, const fs::path& stderr_file) {
+  std::vector<std::string> words{TB_TESSBENCH_BIN};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  pid_t pid = -1;
+  const int status = posix_spawn(&pid, TB_TESSBENCH_BIN, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return status == 0 ? pid : -1;
+}
+
+size_t journalLines(const fs::path& journal) {
+  const std::string text = readFile(journal);
+  return size_t(std::count(text.begin(), text.end(), '\n'));
+}
+
+// SIGKILL once the run has journaled its first record: what is left is only the
+// `.incomplete` folder, which report and merge refuse in one line.
+TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
+  const fs::path dir = testing::scratchDirectory("killed_run");
+  const fs::path out = dir / "out";
+  const fs::path pending = out / "killed.incomplete";
+  // Enough records that the run is still going when the first is written (one thread).
+  const pid_t pid = spawnTessbench({"run", "--quiet", "--threads", "1", "--technique",
+                                    "gregory_acc", "--measure", "error", "--measure", "memory",
+                                    "--out", out.string(), "--run-id", "killed"},
+                                   dir / "stderr.txt");
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (journalLines(pending / "records.jsonl") == 0 && std::chrono::steady_clock::now() < deadline &&
+         ::waitpid(pid, nullptr, WNOHANG) == 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_EQ(::kill(pid, SIGKILL), 0) << "the run ended before its first record was seen";
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const size_t journaled = journalLines(pending / "records.jsonl");
+  ASSERT_GE(journaled, 1u);
+
+  EXPECT_EQ(folderEntries(out), std::vector<std::string>{"killed.incomplete"});
+  EXPECT_TRUE(fs::exists(pending / "INCOMPLETE"));
+  EXPECT_FALSE(fs::exists(out / "killed"));
+  // Each journal line is a whole record.
+  std::ifstream journal(pending / "records.jsonl");
+  for (std::string line; std::getline(journal, line);) {
+    const auto record = nlohmann::json::parse(line);
+    EXPECT_EQ(record["technique"], "gregory_acc");
+  }
+  for (const std::string& command :
+       {"report " + pending.string(), "merge " + pending.string() + " --out " + (dir / "m").string()}) {
+    const SplitResult r = runTessbenchSplit(command);
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(pending.string() + ": unfinished run"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "m"));
+  EXPECT_FALSE(fs::exists(dir / "m.incomplete"));
+  // A new run beside it finishes normally and does not touch it.
+  const SplitResult next = runTessbenchSplit(
+      "run --quiet --technique phong --measure memory --asset catmark_cube --out " + out.string());
+  ASSERT_EQ(next.exit_code, 0) << next.err;
+  EXPECT_EQ(folderEntries(out).size(), 2u);
+  EXPECT_EQ(journalLines(pending / "records.jsonl"), journaled);
+}
+
+// Runs tessbench as the unprivileged user `nobody` (root ignores mode bits); -1 when it
+// cannot (not root, or nobody cannot reach the binary).
+int runAsNobody(const std::string& arguments, const fs::path& stderr_file) {
+  if (::geteuid() != 0) return -1;
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int err = ::open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    if (err >= 0) ::dup2(err, 2);
+    if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) _exit(126);
+    const std::string command = std::string(TB_TESSBENCH_BIN) + " " + arguments + " >/dev/null";
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A read-only --out: one line naming it before any measuring (no progress line, which a
+// run that measured first would print), exit 2. Run as `nobody` on a mode-0555 folder
+// when the test runs as root; directly otherwise.
+TEST(ReadOnly, AReadOnlyOutputFolderIsOneLineBeforeMeasuring) {
+  const fs::path dir = testing::scratchDirectory("read_only_out");
+  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                           fs::perms::others_read | fs::perms::others_exec);
+  const fs::path locked = dir / "locked";
+  fs::create_directories(locked);
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec);
+  const std::string arguments = "run --technique phong --measure memory --asset catmark_cube --out " +
+                                (locked / "results").string();
+  const fs::path stderr_file = fs::temp_directory_path() /
+                               ("tessbench_read_only_" + std::to_string(::getpid()) + ".txt");
+  int exit_code;
+  std::string err;
+  if (::geteuid() == 0) {
+    exit_code = runAsNobody(arguments, stderr_file);
+    err = readFile(stderr_file);
+    fs::remove(stderr_file);
+    if (exit_code == 126 || exit_code == 127) {
+      GTEST_SKIP() << "cannot run as nobody here (" << exit_code << "); the path-through-a-file "
+                   << "case of BadInputTable covers an unwritable --out";
+    }
+  } else {
+    const SplitResult r = runTessbenchSplit(arguments);
+    exit_code = r.exit_code;
+    err = r.err;
+  }
+  EXPECT_EQ(exit_code, 2) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find((locked / "results").string() + ": cannot create results folder (Permission "
+                                                      "denied)"),
+            std::string::npos)
+      << err;
+  EXPECT_TRUE(folderEntries(locked).empty());
+}
+
+}  // namespace
+}  // namespace tb
