@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "harness/cli/commands.h"
+#include "harness/cli/compare_command.h"
 #include "harness/cli/merge_command.h"
 #include "harness/cli/tessellate_run.h"
 #include "techniques/registry.h"
@@ -62,6 +63,23 @@ int main(int argc, char** argv) {
   report->add_option("run_dir", report_args.run_dir, "results/<run-id>")->required();
   report->add_option("--format", report_args.format, "md")->capture_default_str();
 
+  tb::cli::CompareArgs compare_args;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "compare two finished runs metric by metric by each metric's direction; exit 1 when the "
+      "new run lost (skipped, failed, absent) or worsened a figure of the base");
+  compare->add_option("base", compare_args.base, "the base run folder (results/<run-id>)")
+      ->required();
+  compare->add_option("new", compare_args.current, "the new run folder")->required();
+  compare->add_option("--threshold", compare_args.threshold,
+                      "relative change that counts: |new - base| > t * max(|base|, |new|); 0 = exact")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  compare->add_option("--metric-threshold", compare_args.metric_thresholds,
+                      "NAME=VALUE: the threshold for one metric name (repeatable)");
+  compare->add_option("--limit", compare_args.limit, "changes listed in the table, worst first")
+      ->capture_default_str();
+
   tb::cli::TessellateArgs tessellate_args;
   tb::cli::addTessellateCommand(app, tessellate_args);
   CLI::App* tessellate = app.get_subcommand("tessellate");
@@ -86,6 +104,7 @@ int main(int argc, char** argv) {
     if (*run) return tb::cli::runRun(run_args, command_line);
     if (*report) return tb::cli::runReport(report_args);
     if (*merge) return tb::cli::runMerge(merge_args, command_line);
+    if (*compare) return tb::cli::runCompare(compare_args);
     if (*tessellate) return tb::cli::runTessellate(tessellate_args);
   } catch (const std::exception& error) {
     std::fflush(stdout);

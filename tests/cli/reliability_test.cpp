@@ -278,6 +278,33 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
             std::string::npos);
 }
 
+// A run without a device compared with one that had lavapipe: the GPU figures are missing
+// (with the reason), so the comparison fails instead of passing; two runs with the device pass.
+TEST(NoDevice, ACompareAgainstARunWithADeviceSaysTheGpuFiguresAreMissing) {
+  const fs::path dir = testing::scratchDirectory("no_device_compare");
+  const std::string run = "run --quiet --technique phong --asset catmark_cube --measure cracks "
+                          "--measure memory --out " + (dir / "out").string() + " --run-id ";
+  ASSERT_EQ(runTessbenchSplit(run + "device").exit_code, 0);
+  ASSERT_EQ(runTessbenchSplit(run + "device_again").exit_code, 0);
+  ASSERT_EQ(runTessbenchSplit(run + "none", "VK_ICD_FILENAMES=/nonexistent/icd.json "
+                                            "VK_DRIVER_FILES=/nonexistent/icd.json")
+                .exit_code,
+            0);
+  const std::string device = (dir / "out" / "device").string();
+  const SplitResult same = runTessbenchSplit("compare " + device + " " + device + "_again");
+  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+  EXPECT_NE(same.out.find("0 missing, 0 regressions"), std::string::npos) << same.out;
+  const SplitResult lost =
+      runTessbenchSplit("compare " + device + " " + (dir / "out" / "none").string());
+  EXPECT_EQ(lost.exit_code, 1) << lost.out << lost.err;
+  EXPECT_NE(lost.out.find("FAIL"), std::string::npos) << lost.out;
+  EXPECT_NE(lost.out.find("| missing | phong/alpha0.75 opensubdiv/catmark_cube | cracks | "
+                          "backend=gpu level=1 spacing=integer | (all) |  | skipped: no Vulkan device"),
+            std::string::npos)
+      << lost.out;
+  EXPECT_NE(lost.out.find("Vulkan device differs"), std::string::npos) << lost.out;
+}
+
 // Starts tessbench in the background; returns its pid.
 pid_t spawnTessbench(const std::vector<std::string>& arguments, const fs::path& stderr_file) {
   std::vector<std::string> words{TB_TESSBENCH_BIN};
@@ -335,7 +362,8 @@ TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
     EXPECT_EQ(record["technique"], "gregory_acc");
   }
   for (const std::string& command :
-       {"report " + pending.string(), "merge " + pending.string() + " --out " + (dir / "m").string()}) {
+       {"report " + pending.string(), "merge " + pending.string() + " --out " + (dir / "m").string(),
+        "compare " + pending.string() + " " + pending.string()}) {
     const SplitResult r = runTessbenchSplit(command);
     EXPECT_EQ(r.exit_code, 2) << command;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

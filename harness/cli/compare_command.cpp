@@ -1,0 +1,51 @@
+#include "harness/cli/compare_command.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "core/mesh/input_error.h"
+#include "harness/results/compare.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+
+namespace tb::cli {
+namespace {
+
+Results readFinishedRun(const std::string& folder) {
+  requireFinishedRunFolder(folder);
+  return readResultsFile(folder + "/results.json");
+}
+
+double parseThreshold(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
+    throw InputError(option, text, "a threshold is a finite number >= 0");
+  }
+  return value;
+}
+
+}  // namespace
+
+int runCompare(const CompareArgs& args) {
+  CompareOptions options;
+  options.threshold = args.threshold;  // CLI11 checked it is a number >= 0
+  for (const std::string& item : args.metric_thresholds) {
+    const size_t equals = item.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw InputError("--metric-threshold", item, "expected NAME=VALUE");
+    }
+    options.metric_thresholds[item.substr(0, equals)] =
+        parseThreshold("--metric-threshold", item.substr(equals + 1));
+  }
+  const Results base = readFinishedRun(args.base);
+  const Results current = readFinishedRun(args.current);
+  const Comparison comparison = compareResults(base, current, options);
+  fmt::print("# Compare {} -> {}\n\n{}", args.base, args.current,
+             renderComparison(comparison, args.limit));
+  return comparison.failed() ? 1 : 0;
+}
+
+}  // namespace tb::cli
