@@ -8,6 +8,7 @@ add_custom_target(tb_build_info ALL
     -DOUTPUT=${TB_BUILD_INFO_DIR}/tb_build_info.h
     "-DCOMPILER=${CMAKE_CXX_COMPILER_ID} ${CMAKE_CXX_COMPILER_VERSION}"
     -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
+    -DVERSION=${PROJECT_VERSION}
     -P ${CMAKE_SOURCE_DIR}/cmake/WriteBuildInfo.cmake
   BYPRODUCTS ${TB_BUILD_INFO_DIR}/tb_build_info.h
   COMMENT "Reading git sha"

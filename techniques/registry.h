@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "techniques/plugin.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -25,24 +26,14 @@ class TechniqueRegistry {
   std::vector<std::unique_ptr<Technique>> techniques_;
 };
 
-// Loads a shared library that exports the C entry point below and lets it add
-// its techniques. Throws std::runtime_error naming the file on failure.
+// Loads a plug-in (techniques/plugin.h): asks its ABI first and refuses one built against
+// another kTessbenchPluginAbi before calling anything else; then lets it register into a
+// staging host and adds its techniques and shaders only when all of them fit (no id or
+// shader name taken). Throws std::runtime_error with one line naming the file on failure;
+// the registry is then unchanged.
 void loadPlugin(const std::string& path);
 
 }  // namespace tb
-
-// Entry point a plug-in library exports. It receives the host's registry, adds
-// its techniques and returns kTessbenchPluginAbi; any other value rejects the
-// plug-in (built against another technique.h).
-// 6: SurfacePatches gained makeBatchPattern() and evaluateBatch() (batched evaluation,
-// techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() / simulation()) instead of
-// buildPatches; SurfacePatches lost domain() and gpuProgram() (patchDomain(p) and
-// gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 6;
-extern "C" {
-typedef int (*TessbenchPluginEntry)(tb::TechniqueRegistry* registry);
-}
-#define TB_PLUGIN_ENTRY_NAME "tessbench_register_techniques"
 
 #define TB_REGISTER_TECHNIQUE_CONCAT2(a, b) a##b
 #define TB_REGISTER_TECHNIQUE_CONCAT(a, b) TB_REGISTER_TECHNIQUE_CONCAT2(a, b)

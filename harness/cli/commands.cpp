@@ -200,7 +200,18 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   } else {
     fmt::print("{}\n", finished);
   }
-  return 0;
+  // A measure that threw (not bad input: that stops the run) failed its record only; the
+  // run is complete but not clean, so it says which and exits 1.
+  size_t failed = 0;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& measure : record.measures) {
+      if (measure.status != MeasureStatus::kFailed) continue;
+      ++failed;
+      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}\n", record.technique,
+                 record.variant, record.asset, measure.measure, measure.reason);
+    }
+  }
+  return failed == 0 ? 0 : 1;
 }
 
 int runReport(const ReportArgs& args) {

@@ -11,10 +11,14 @@
 #include "harness/cli/merge_command.h"
 #include "harness/cli/tessellate_run.h"
 #include "techniques/registry.h"
+#include "tb_build_info.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"tessbench: benchmark and validation harness for GPU surface techniques"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tessbench ") + TB_VERSION + " (git " +
+                                        TB_GIT_SHA + "), plug-in ABI " +
+                                        std::to_string(kTessbenchPluginAbi));
   std::vector<std::string> plugins;
   app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
 

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 
+#include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/suite/measure_rule.h"
 #include "techniques/registry.h"
@@ -173,6 +174,29 @@ void recordSkip(const Technique& technique, const SuiteInput& input, bool is_def
   }
 }
 
+// The record of a technique whose build threw: each measure that may run on it, failed
+// with the message.
+StepOutcome failedBuild(const SuiteRun& run, const Technique& technique,
+                        const VariantInfo& variant, const SuiteInput& input,
+                        const VariantStanding& standing, const std::string& what) {
+  StepOutcome outcome;
+  Record& record = outcome.record.emplace();
+  record.technique = technique.info().id;
+  record.variant = variant.name;
+  record.asset = input.name;
+  formatParameters(variant, &record.parameters);
+  for (const Measure* measure : run.measures) {
+    if (measureRuns(measure->requirements(), technique, expectedCapabilities(technique),
+                    standing) &&
+        ownsMeasure(run.shard, record.technique, variant.name, input.name, measure->info().id)) {
+      record.measures.push_back({measure->info().id, MeasureStatus::kFailed,
+                                 "building the technique failed: " + what, {}, {}});
+    }
+  }
+  if (record.measures.empty()) outcome.record.reset();
+  return outcome;
+}
+
 // Builds the technique on one input and variant, and runs every measure the rule admits
 // into one record. `default_footprint` is the default variant's patch data on this input:
 // set by the default variant's step, read by the others.
@@ -202,6 +226,12 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   } catch (const UnsupportedInput& unsupported) {
     recordSkip(technique, input, is_default, unsupported.what(), run.shard, &outcome);
     return outcome;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    // A technique (a plug-in, say) that throws while building: its record says so, with
+    // every measure that could have run failed with the message, and the run goes on.
+    return failedBuild(run, technique, variant, input, maybe, error.what());
   }
   const SurfacePatches* patches = instance->surface();
   if (patches && is_default) *default_footprint = patches->footprint();
@@ -231,8 +261,16 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   measure_input.suite = run.suite;
   for (const Measure* measure : runnable) {
     const auto start = std::chrono::steady_clock::now();
-    record.measures.push_back(
-        runMeasure(run, *measure, measure_input, technique_input, instance.get()));
+    try {
+      record.measures.push_back(
+          runMeasure(run, *measure, measure_input, technique_input, instance.get()));
+    } catch (const InputError&) {
+      throw;  // bad input stops the run: one line, exit 2, no folder
+    } catch (const std::exception& error) {
+      // Anything else (a technique's evaluator throwing, a device error) fails this
+      // measure of this record only; the other records complete.
+      record.measures.push_back({measure->info().id, MeasureStatus::kFailed, error.what(), {}, {}});
+    }
     outcome.timings.push_back(
         {record.technique, record.variant, record.asset, measure->info().id, secondsSince(start)});
   }

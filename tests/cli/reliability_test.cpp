@@ -305,6 +305,39 @@ TEST(NoDevice, ACompareAgainstARunWithADeviceSaysTheGpuFiguresAreMissing) {
   EXPECT_NE(lost.out.find("Vulkan device differs"), std::string::npos) << lost.out;
 }
 
+// A plug-in whose technique throws while building its patches: that record carries the
+// error as its measures' status, every other record completes, and the run exits 1 with one
+// stderr line per failed measure.
+TEST(PluginFailure, AThrowWhileBuildingFailsThatRecordOnly) {
+  const fs::path dir = testing::scratchDirectory("plugin_throws");
+  const SplitResult r = runTessbenchSplit(
+      std::string("--plugin ") + TB_EXAMPLE_PLUGIN +
+      " run --quiet --technique example_flat --technique phong --asset catmark_cube --measure "
+      "memory --measure error --run-id r --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("tessbench: failed: example_flat/default opensubdiv/catmark_cube memory: "
+                       "building the technique failed: example_flat: deliberately fails"),
+            std::string::npos)
+      << r.err;
+  const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
+  size_t failed = 0, ok = 0;
+  for (const auto& record : json["records"]) {
+    for (const auto& measure : record["measures"]) {
+      if (record["technique"] == "example_flat") {
+        EXPECT_EQ(measure["status"], "failed");
+        EXPECT_NE(measure["reason"].get<std::string>().find("deliberately fails"), std::string::npos);
+        ++failed;
+      } else {
+        EXPECT_EQ(measure["status"], "ok") << record["variant"] << " " << measure["measure"];
+        ++ok;
+      }
+    }
+  }
+  EXPECT_EQ(failed, 2u);
+  EXPECT_GE(ok, 6u) << "phong's variants measured";
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+}
+
 // Starts tessbench in the background; returns its pid.
 pid_t spawnTessbench(const std::vector<std::string>& arguments, const fs::path& stderr_file) {
   std::vector<std::string> words{TB_TESSBENCH_BIN};

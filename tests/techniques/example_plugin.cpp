@@ -1,6 +1,7 @@
-// An out-of-tree technique: a flat (linear) triangle surface, enough to prove
-// the plug-in path end to end.
-#include "techniques/registry.h"
+// An out-of-tree technique built the way a plug-in is (a MODULE seeing only the plug-in
+// headers), registering through TB_PLUGIN: enough to prove loading and the handshake.
+// The measured example, with shaders, is examples/plugin/.
+#include "techniques/plugin.h"
 
 namespace {
 
@@ -12,16 +13,15 @@ class FlatTechnique final : public tb::Technique {
     return kInfo;
   }
   std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
-  std::string checkSupport(const tb::Mesh&) const override { return "example_flat: builds nothing"; }
+  std::string checkSupport(const tb::Mesh&) const override { return ""; }
+  // A technique that throws while building: the suite records the error for its records and
+  // completes the others (tests/cli/reliability_test.cpp).
   std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput&,
                                                const tb::VariantInfo&) const override {
-    throw tb::UnsupportedInput("example_flat: builds nothing");
+    throw std::runtime_error("example_flat: deliberately fails to build its patches");
   }
 };
 
 }  // namespace
 
-extern "C" int tessbench_register_techniques(tb::TechniqueRegistry* registry) {
-  registry->add(std::make_unique<FlatTechnique>());
-  return kTessbenchPluginAbi;
-}
+TB_PLUGIN(host) { host.addTechnique(std::make_unique<FlatTechnique>()); }

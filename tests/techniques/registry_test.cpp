@@ -42,6 +42,59 @@ TEST(Registry, LoadsAnOutOfTreePlugin) {
   EXPECT_EQ(flat->info().title, "Flat triangles (example plug-in)");
 }
 
+std::vector<std::string> registeredIds() {
+  std::vector<std::string> ids;
+  for (const Technique* technique : TechniqueRegistry::instance().all()) {
+    ids.push_back(technique->info().id);
+  }
+  return ids;
+}
+
+std::string loadError(const std::string& path) {
+  try {
+    loadPlugin(path);
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// The handshake comes first: a plug-in of another ABI is refused in one line naming the
+// file and both numbers, its registration entry (which aborts) is never called, and the
+// registry is unchanged.
+TEST(Registry, APluginOfAnotherAbiIsRefusedBeforeItRegisters) {
+  const std::vector<std::string> before = registeredIds();
+  const std::string error = loadError(TB_WRONG_ABI_PLUGIN);
+  EXPECT_EQ(error.rfind(std::string(TB_WRONG_ABI_PLUGIN) + ": plug-in ABI " +
+                            std::to_string(kTessbenchPluginAbi + 1) + ", this tessbench's ABI " +
+                            std::to_string(kTessbenchPluginAbi),
+                        0),
+            0u)
+      << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+  EXPECT_EQ(registeredIds(), before);
+}
+
+// A shared library that is no plug-in (the C maths library) is one line, nothing registered.
+TEST(Registry, ALibraryWithoutTheEntryPointsIsNotAPlugin) {
+  const std::vector<std::string> before = registeredIds();
+  const std::string error = loadError("libm.so.6");
+  EXPECT_EQ(error.rfind("libm.so.6: not a tessbench plug-in: no tessbench_plugin_abi", 0), 0u)
+      << error;
+  EXPECT_EQ(registeredIds(), before);
+}
+
+// Loading the same plug-in twice: the second finds its id taken and adds nothing.
+TEST(Registry, APluginWhoseIdIsTakenAddsNothing) {
+  if (TechniqueRegistry::instance().find("example_flat") == nullptr) loadPlugin(TB_EXAMPLE_PLUGIN);
+  const std::vector<std::string> before = registeredIds();
+  const std::string error = loadError(TB_EXAMPLE_PLUGIN);
+  EXPECT_NE(error.find("technique id 'example_flat' is already registered; nothing was registered"),
+            std::string::npos)
+      << error;
+  EXPECT_EQ(registeredIds(), before);
+}
+
 TEST(Registry, BadPluginPathNamesTheFile) {
   try {
     loadPlugin("/nonexistent/plugin.so");
