@@ -14,9 +14,21 @@ namespace tb {
 
 namespace fs = std::filesystem;
 
+// An installed tessbench (`cmake --install`) finds its assets beside its own binary,
+// <prefix>/bin/tessbench -> <prefix>/share/tessbench/assets, wherever the prefix was moved.
+std::string installedAssetsDirectory() {
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (error) return {};
+  const fs::path dir = exe.parent_path().parent_path() / "share" / "tessbench" / "assets";
+  return fs::is_directory(dir, error) ? dir.string() : std::string();
+}
+
 std::string assetsDirectory() {
   if (const char* dir = std::getenv("TB_ASSETS_DIR"); dir != nullptr && *dir != '\0') return dir;
-  return TB_DEFAULT_ASSETS_DIR;
+  static const std::string installed = installedAssetsDirectory();
+  if (!installed.empty()) return installed;
+  return TB_DEFAULT_ASSETS_DIR;  // the build tree's: the source checkout's assets/
 }
 
 std::vector<AssetRef> bundledAssets() {
