@@ -68,4 +68,7 @@ inline void addShaders(tb::PluginHost& host) {
   target_link_libraries(${name} PRIVATE tessbench::sdk)
   target_include_directories(${name} PRIVATE ${gen_dir})
   set_target_properties(${name} PROPERTIES PREFIX "" CXX_EXTENSIONS OFF)
+  # The float twin must do the shader's operations one by one: no fused multiply-add, even
+  # where the user's flags (-march=native) offer it.
+  target_compile_options(${name} PRIVATE -ffp-contract=off)
 endfunction()
