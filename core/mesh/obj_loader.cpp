@@ -3,6 +3,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -33,9 +34,28 @@ BoundaryInterpolation boundaryFromObjTag(int value, const std::string& source) {
   }
 }
 
+// tinyobjloader parses numbers itself, into floats: one the scan accepted can still come
+// out infinite there (a mantissa of 300 digits and a negative exponent). `what` names the
+// element, numbered from 1 as in OBJ; `width` is the element's number of values.
+void requireFinite(const std::vector<tinyobj::real_t>& values, size_t width, const char* what,
+                   const std::string& source) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i])) {
+      throw InputError(source, std::string(what) + " " + std::to_string(i / width + 1),
+                       "is not finite as tinyobjloader reads it (a 32-bit float)");
+    }
+  }
+}
+
 void readTags(const std::vector<tinyobj::tag_t>& tags, const std::string& source,
               SubdivisionTags* out) {
   for (const auto& tag : tags) {
+    for (float value : tag.floatValues) {
+      if (!std::isfinite(value)) {
+        throw InputError(source, "tag '" + tag.name + "'",
+                         "has a value that is not finite as tinyobjloader reads it (a float)");
+      }
+    }
     if (tag.name == "crease") {
       for (size_t i = 0; i + 1 < tag.intValues.size(); i += 2) {
         // One sharpness for all pairs, or one per pair (both occur in OpenSubdiv's shapes).
@@ -85,6 +105,10 @@ Mesh loadObjText(std::string_view text, const std::string& source_name,
     std::string first_line = error.substr(0, error.find('\n'));
     throw InputError(source_name, "", "tinyobjloader: " + first_line);
   }
+
+  requireFinite(attrib.vertices, 3, "vertex position", source_name);
+  requireFinite(attrib.normals, 3, "vertex normal", source_name);
+  requireFinite(attrib.texcoords, 2, "texture coordinate", source_name);
 
   Mesh mesh;
   mesh.source = source_name;

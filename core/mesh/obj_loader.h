@@ -24,9 +24,10 @@ Mesh loadObjFile(const std::string& path, const LoadOptions& options = {});
 Mesh loadObjText(std::string_view text, const std::string& source_name,
                  const LoadOptions& options = {});
 
-// Validates OBJ text line by line: vertex coordinates are finite numbers, faces
-// have >= 3 corners whose indices are in range, tags are well formed and refer to
-// existing vertices and faces. Throws InputError for the first violation.
+// Validates OBJ text line by line: vertex coordinates are finite numbers within float
+// range, faces have >= 3 corners whose indices are in range, tags are well formed and
+// refer to existing vertices and faces. Lines end at \n, \r\n or a lone \r, as
+// tinyobjloader reads them. Throws InputError for the first violation.
 // Returns the source line of every face, in file order.
 std::vector<uint32_t> validateObjText(std::string_view text, const std::string& source_name);
 

@@ -2,6 +2,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ bool parseInt(std::string_view token, long* value) {
 // tinyobjloader stores corner counts in an unsigned char.
 constexpr size_t kMaxFaceCorners = 255;
 
+// tinyobjloader stores coordinates and tag values as float: a larger finite double would
+// become infinite there.
+bool fitsFloat(double value) { return std::abs(value) <= std::numeric_limits<float>::max(); }
+
 class ObjScanner {
  public:
   explicit ObjScanner(const std::string& source) : source_(source) {}
@@ -61,6 +66,8 @@ class ObjScanner {
       scanFace(tokens);
     } else if (keyword == "t") {
       tag_lines_.push_back({std::string(line), line_number});
+    } else if (keyword == "vw") {
+      scanSkinWeights(tokens);
     }
   }
 
@@ -96,6 +103,30 @@ class ObjScanner {
       if (!std::isfinite(value)) {
         fail(what, "is not finite ('" + std::string(tokens[i]) + "'): NaN and Inf are rejected");
       }
+      if (!fitsFloat(value)) {
+        fail(what, "is beyond float range ('" + std::string(tokens[i]) +
+                       "'): coordinates are read as 32-bit floats");
+      }
+    }
+  }
+
+  // tinyobjloader's skin weights, "vw <vertex> <joint> <weight> ...": unused here, but
+  // tinyobjloader converts each joint to int, which must not overflow.
+  void scanSkinWeights(const std::vector<std::string_view>& tokens) {
+    long value = 0;
+    if (tokens.size() < 2 || !parseInt(tokens[1], &value) || tokens.size() % 2 != 0) {
+      fail("vertex weight", "needs a vertex index and joint-weight pairs");
+    }
+    for (size_t i = 2; i < tokens.size(); i += 2) {
+      if (!parseInt(tokens[i], &value) || value < 0 || value > std::numeric_limits<int>::max()) {
+        fail("vertex weight", "has a joint '" + std::string(tokens[i]) +
+                                  "' that is not a whole number in 0..2147483647");
+      }
+      double weight = 0;
+      if (!parseDouble(tokens[i + 1], &weight) || !std::isfinite(weight) || !fitsFloat(weight)) {
+        fail("vertex weight", "has a weight '" + std::string(tokens[i + 1]) +
+                                  "' that is not a finite number in float range");
+      }
     }
   }
 
@@ -125,6 +156,12 @@ class ObjScanner {
     std::vector<long> vertices;
     for (size_t i = 1; i < tokens.size(); ++i) {
       std::string_view corner = tokens[i];
+      // "2/" or "2//": tinyobjloader takes the next corner's number (atoi skips the space)
+      // for the missing index.
+      if (corner.back() == '/') {
+        fail("face", "has a corner '" + std::string(corner) +
+                         "' ending in '/' (an index must follow every '/')");
+      }
       const size_t slash1 = corner.find('/');
       const long vertex = checkIndex(corner.substr(0, slash1), position_count_, "vertex");
       // A corner repeated anywhere in the face (f 1 2 2) collapses an edge: no patch or
@@ -163,10 +200,18 @@ class ObjScanner {
       }
       triple = slash == std::string_view::npos ? std::string_view() : triple.substr(slash + 1);
     }
-    const size_t expected = 3 + counts[0] + counts[1] + counts[2];
-    if (tokens.size() != expected) {
-      fail("tag '" + name + "'", "declares " + std::to_string(expected - 3) + " values but has " +
-                                     std::to_string(tokens.size() - 3));
+    // Each count is bounded before they are summed: three huge counts would overflow.
+    const size_t given = tokens.size() - 3;
+    for (long count : counts) {
+      if (size_t(count) > given) {
+        fail("tag '" + name + "'", "declares " + std::to_string(count) + " values but has " +
+                                       std::to_string(given));
+      }
+    }
+    const size_t declared = size_t(counts[0] + counts[1] + counts[2]);
+    if (declared != given) {
+      fail("tag '" + name + "'", "declares " + std::to_string(declared) + " values but has " +
+                                     std::to_string(given));
     }
     std::vector<long> ints(counts[0]);
     for (long k = 0; k < counts[0]; ++k) {
@@ -179,6 +224,10 @@ class ObjScanner {
       const auto token = tokens[3 + counts[0] + k];
       if (!parseDouble(token, &value) || !std::isfinite(value)) {
         fail("tag '" + name + "'", "has a non-number '" + std::string(token) + "'");
+      }
+      if (!fitsFloat(value)) {
+        fail("tag '" + name + "'", "has '" + std::string(token) +
+                                       "', beyond float range (tag values are read as floats)");
       }
     }
     checkTagReferences(name, ints);
@@ -219,11 +268,14 @@ std::vector<uint32_t> validateObjText(std::string_view text, const std::string& 
   uint32_t line_number = 0;
   size_t start = 0;
   while (start <= text.size()) {
-    size_t end = text.find('\n', start);
+    // A line ends at \n, \r\n or a lone \r, as tinyobjloader splits them (safeGetline): a
+    // lone \r taken for a space would let the scan count vertices and faces that
+    // tinyobjloader reads differently, and faces index past the positions.
+    size_t end = text.find_first_of("\r\n", start);
     if (end == std::string_view::npos) end = text.size();
     ++line_number;
     scanner.scanLine(text.substr(start, end - start), line_number);
-    start = end + 1;
+    start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
   }
   scanner.finish();
   return scanner.takeFaceLines();

@@ -24,6 +24,15 @@ using Json = nlohmann::json;
 constexpr uint64_t kMaxPixels = 65536;
 constexpr uint64_t kMaxFrames = 100000;
 
+// A key as a message names it: as written, or JSON-quoted and escaped when it holds a
+// control character ("a\nb" from a file's "a\u000ab"), so the message stays one line.
+std::string shownKey(const std::string& key) {
+  for (unsigned char c : key) {
+    if (c < 0x20) return Json(key).dump();
+  }
+  return key;
+}
+
 // Reads the fields of one file; every error names the file (`shown`) and the field.
 class FieldReader {
  public:
@@ -43,7 +52,7 @@ class FieldReader {
         found |= item.key() == key;
         names += (names.empty() ? "" : ", ") + std::string(key);
       }
-      if (!found) fail(where + item.key(), "unknown field (known: " + names + ")");
+      if (!found) fail(where + shownKey(item.key()), "unknown field (known: " + names + ")");
     }
   }
 
@@ -122,7 +131,7 @@ class FieldPathTracker final : public nlohmann::json_sax<Json> {
     std::string text;
     for (const Frame& frame : frames_) {
       text += frame.array ? "[" + std::to_string(frame.index) + "]"
-                          : (text.empty() ? "" : ".") + frame.key;
+                          : (text.empty() ? "" : ".") + shownKey(frame.key);
     }
     return text;
   }

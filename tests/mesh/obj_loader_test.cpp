@@ -159,5 +159,79 @@ TEST(ObjLoader, UnreadableTagIsRejected) {
             std::string::npos);
 }
 
+// Found by tests/fuzz (fuzz_obj_loader): a finite double beyond float range passed the
+// scan and became an infinite position in tinyobjloader's floats.
+TEST(ObjLoader, CoordinateBeyondFloatRangeIsRejected) {
+  const std::string error = errorOf("v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n");
+  EXPECT_NE(error.find("line 3"), std::string::npos) << error;
+  EXPECT_NE(error.find("beyond float range"), std::string::npos) << error;
+  const std::string tag_error =
+      errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 1e39\n");
+  EXPECT_NE(tag_error.find("line 5"), std::string::npos) << tag_error;
+  EXPECT_NE(tag_error.find("beyond float range"), std::string::npos) << tag_error;
+  // The largest float still loads.
+  EXPECT_EQ(errorOf("v 0 0 0\nv 1 0 0\nv 0 3.4028234e38 0\nf 1 2 3\n"), "");
+}
+
+// A number the scan reads as 1e10 that tinyobjloader's own parser overflows (a 311-digit
+// mantissa, then e-300) is refused after loading, naming the vertex.
+TEST(ObjLoader, CoordinateTinyobjloaderReadsAsInfinityIsRejected) {
+  const std::string error =
+      errorOf("v 0 0 0\nv 1 0 0\nv 1" + std::string(310, '0') + "e-300 1 0\nf 1 2 3\n");
+  EXPECT_NE(error.find("vertex position 3"), std::string::npos) << error;
+  EXPECT_NE(error.find("not finite"), std::string::npos) << error;
+}
+
+// Found by tests/fuzz: a lone \r ends a line for tinyobjloader but was a space to the scan,
+// so the scan saw one face "f 1 2 3" where tinyobjloader read "f 1 2 9" (9 > 3 positions),
+// and computing normals read past the positions.
+TEST(ObjLoader, LoneCarriageReturnEndsALineAsInTinyobjloader) {
+  const Mesh mesh = loadObjText("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", "cr.obj");
+  EXPECT_EQ(mesh.positions.size(), 3u);
+  ASSERT_EQ(mesh.faceCount(), 1u);
+  EXPECT_EQ(mesh.face_lines[0], 4u);
+  const std::string error = errorOf("v 0 0 0\nv 1 0 0\nv 0 1 0\rf 1 2 9\nf\r1 2 3\n");
+  EXPECT_NE(error.find("line 4"), std::string::npos) << error;
+  EXPECT_NE(error.find("vertex index 9 is out of range"), std::string::npos) << error;
+  // \r\n is one line end, not two.
+  EXPECT_EQ(loadObjText("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n", "crlf.obj").face_lines[0],
+            4u);
+}
+
+// Found by tests/fuzz: for "2/" tinyobjloader reads the next corner's number as the
+// texture coordinate index (atoi skips the space), past the file's texture coordinates.
+TEST(ObjLoader, CornerEndingInSlashIsRejected) {
+  const std::string base = "v 1 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n";
+  for (const char* face : {"f 1 2/ 3\n", "f 1 2// 3\n", "f 1/1/ 2 3\n", "f 1 2 3/\n"}) {
+    const std::string error = errorOf(base + face);
+    EXPECT_NE(error.find("line 5"), std::string::npos) << face << " -> " << error;
+    EXPECT_NE(error.find("ending in '/'"), std::string::npos) << face << " -> " << error;
+  }
+  EXPECT_EQ(errorOf(base + "f 1//1 2//1 3//1\n"), "");
+}
+
+// Found by tests/fuzz: tinyobjloader converts a skin weight's joint ("vw", its extension)
+// to int, undefined for 1e39 (UBSan in the fuzz build, which compiles it from its header).
+TEST(ObjLoader, SkinWeightJointBeyondIntIsRejected) {
+  const std::string base = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  for (const char* line : {"vw 1 1e39 0.5\n", "vw 1 2147483648 0.5\n", "vw 1 -1 0.5\n",
+                           "vw 1 0 nan\n", "vw 1 0\n", "vw\n"}) {
+    const std::string error = errorOf(base + line);
+    EXPECT_NE(error.find("line 5: vertex weight"), std::string::npos) << line << " -> " << error;
+  }
+  EXPECT_EQ(errorOf(base + "vw 0 0 0.25 1 0.75\n"), "");
+}
+
+// Found by tests/fuzz: the counts of a tag's triple were summed before being bounded, a
+// signed overflow (UBSan) that could also make the sum match the values given.
+TEST(ObjLoader, TagCountsThatOverflowAreRejected) {
+  const std::string base = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string error =
+      errorOf(base + "t crease 9223372036854775807/9223372036854775807/2 0 1 3\n");
+  EXPECT_NE(error.find("line 5"), std::string::npos) << error;
+  EXPECT_NE(error.find("declares 9223372036854775807 values but has 3"), std::string::npos)
+      << error;
+}
+
 }  // namespace
 }  // namespace tb

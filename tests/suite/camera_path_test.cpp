@@ -217,6 +217,9 @@ TEST(CameraPath, EveryBadInputIsOneLineNamingTheFileAndTheField) {
       {pathWith("near", ""), "near: missing"},
       {pathWith("keyframes", ""), "keyframes: missing"},
       {pathWith("fov", "45"), "fov: unknown field"},
+      // Found by tests/fuzz: a key holding a newline (written \n in the file) is escaped.
+      {pathWith(R"(fo\nv)", "45"), R"("fo\nv": unknown field)"},
+      {pathWith(R"(fo\nv)", "[1e999]"), R"("fo\nv"[0]: not a finite number)"},
       {pathWith("frames", R"("24")"), "frames: expected a whole number in 1..100000, got string"},
       {pathWith("frames", "0"), "frames: 0 is out of range"},
       {pathWith("frames", "-3"), "frames: -3 is out of range"},
