@@ -202,13 +202,23 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   }
   // A measure that threw (not bad input: that stops the run) failed its record only; the
   // run is complete but not clean, so it says which and exits 1.
+  // Rows that failed (a GPU part of a measure: a device error, a plug-in's missing shader)
+  // get one line per record and measure, with the first reason.
   size_t failed = 0;
   for (const Record& record : results.records) {
     for (const MeasureResult& measure : record.measures) {
-      if (measure.status != MeasureStatus::kFailed) continue;
+      std::string reason = measure.reason;
+      size_t failed_rows = 0;
+      for (const MetricRow& row : measure.rows) {
+        if (row.status != MeasureStatus::kFailed) continue;
+        if (failed_rows++ == 0) reason = row.reason;
+      }
+      if (measure.status != MeasureStatus::kFailed && failed_rows == 0) continue;
       ++failed;
-      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}\n", record.technique,
-                 record.variant, record.asset, measure.measure, measure.reason);
+      const std::string rows =
+          failed_rows == 0 ? "" : fmt::format("{} of {} rows: ", failed_rows, measure.rows.size());
+      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}{}\n", record.technique,
+                 record.variant, record.asset, measure.measure, rows, reason);
     }
   }
   return failed == 0 ? 0 : 1;

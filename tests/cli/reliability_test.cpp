@@ -338,6 +338,33 @@ TEST(PluginFailure, AThrowWhileBuildingFailsThatRecordOnly) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
 }
 
+// A plug-in whose GPU program names a shader it never shipped: the CPU rows are measured, the
+// GPU rows fail naming the shader, and the run says so in one line per record and measure.
+TEST(PluginFailure, AMissingShaderFailsTheGpuRowsNamingIt) {
+  const fs::path dir = testing::scratchDirectory("plugin_missing_shader");
+  const SplitResult r = runTessbenchSplit(
+      std::string("--plugin ") + TB_EXAMPLE_PLUGIN +
+      " run --quiet --technique example_no_shader --asset loop_cube --measure cracks "
+      "--run-id r --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("tessbench: failed: example_no_shader/default"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("shader 'example_no_shader/missing.tesc' is neither built in"),
+            std::string::npos)
+      << r.err;
+  const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
+  size_t cpu_ok = 0, gpu_failed = 0;
+  for (const auto& row : json["records"][0]["measures"][0]["rows"]) {
+    if (row["keys"]["backend"] == "gpu") {
+      gpu_failed += row.value("status", "") == "failed";
+    } else {
+      cpu_ok += !row.contains("status");
+    }
+  }
+  EXPECT_GT(cpu_ok, 0u);
+  EXPECT_EQ(gpu_failed, cpu_ok);
+}
+
 // Starts tessbench in the background; returns its pid.
 pid_t spawnTessbench(const std::vector<std::string>& arguments, const fs::path& stderr_file) {
   std::vector<std::string> words{TB_TESSBENCH_BIN};

@@ -22,6 +22,69 @@ class FlatTechnique final : public tb::Technique {
   }
 };
 
+// Flat triangles whose GPU program names a shader the plug-in never registered: the GPU
+// parts of each measure fail naming it; the CPU parts are measured.
+class NoShaderPatches final : public tb::SurfacePatches {
+ public:
+  explicit NoShaderPatches(const tb::Mesh& mesh) : mesh_(mesh) {}
+  tb::PatchDomain patchDomain(size_t) const override { return tb::PatchDomain::kTriangle; }
+  size_t patchCount() const override { return mesh_.faceCount(); }
+  const tb::Mesh& controlMesh() const override { return mesh_; }
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    const auto face = mesh_.facePositions(patch);
+    return {face[0], face[1], face[2], UINT32_MAX};
+  }
+  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  tb::SurfacePoint evaluate(size_t patch, const tb::DomainCoord& w) const override {
+    const auto face = mesh_.facePositions(patch);
+    const tb::Vec3d p = mesh_.positions[face[0]] * w[0] + mesh_.positions[face[1]] * w[1] +
+                        mesh_.positions[face[2]] * w[2];
+    return {p, {0, 0, 1}};
+  }
+  tb::SurfacePointF evaluateFloat(size_t patch, const tb::tess::DomainPoint& w) const override {
+    const auto face = mesh_.facePositions(patch);
+    auto f = [&](int i) { return tb::vecCast<float>(mesh_.positions[face[i]]); };
+    return {f(0) * w[0] + f(1) * w[1] + f(2) * w[2], {0, 0, 1}};
+  }
+  std::vector<tb::gpu::GpuPatchProgram> gpuPrograms() const override {
+    tb::gpu::GpuPatchProgram program;
+    program.control_shader = "example_no_shader/missing.tesc";
+    program.evaluation_shader = "example_no_shader/missing.tese";
+    program.domain = tb::tess::Domain::kTriangle;
+    program.patch_count = uint32_t(patchCount());
+    return {program};
+  }
+  tb::DataFootprint footprint() const override { return {}; }
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+ private:
+  tb::Mesh mesh_;
+  std::vector<std::string> warnings_;
+};
+
+class NoShaderTechnique final : public tb::Technique {
+ public:
+  const tb::TechniqueInfo& info() const override {
+    static const tb::TechniqueInfo kInfo{"example_no_shader", tb::TechniqueFamily::kSurface,
+                                         "Flat triangles naming a shader never shipped", "none",
+                                         "triangle meshes"};
+    return kInfo;
+  }
+  std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
+  std::string checkSupport(const tb::Mesh& mesh) const override {
+    return mesh.allFacesOfSize(3) ? "" : "example_no_shader: triangles only";
+  }
+  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput& input,
+                                               const tb::VariantInfo&) const override {
+    const tb::Mesh& mesh = tb::requireMesh(info(), input);
+    if (std::string reason = checkSupport(mesh); !reason.empty()) throw tb::UnsupportedInput(reason);
+    return std::make_unique<tb::SurfaceInstance>(std::make_unique<NoShaderPatches>(mesh));
+  }
+};
+
 }  // namespace
 
-TB_PLUGIN(host) { host.addTechnique(std::make_unique<FlatTechnique>()); }
+TB_PLUGIN(host) {
+  host.addTechnique(std::make_unique<FlatTechnique>());
+  host.addTechnique(std::make_unique<NoShaderTechnique>());
+}
