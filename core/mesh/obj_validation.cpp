@@ -110,16 +110,19 @@ class ObjScanner {
   }
 
   // tinyobjloader's skin weights, "vw <vertex> <joint> <weight> ...": unused here, but
-  // tinyobjloader converts each joint to int, which must not overflow.
+  // tinyobjloader reads each joint as a float and converts it to int, which must not
+  // overflow; whole numbers up to 2^24 are exact floats (2147483647 rounds to 2^31).
   void scanSkinWeights(const std::vector<std::string_view>& tokens) {
+    constexpr long kMaxJoint = 1L << 24;
     long value = 0;
     if (tokens.size() < 2 || !parseInt(tokens[1], &value) || tokens.size() % 2 != 0) {
       fail("vertex weight", "needs a vertex index and joint-weight pairs");
     }
     for (size_t i = 2; i < tokens.size(); i += 2) {
-      if (!parseInt(tokens[i], &value) || value < 0 || value > std::numeric_limits<int>::max()) {
+      if (!parseInt(tokens[i], &value) || value < 0 || value > kMaxJoint) {
         fail("vertex weight", "has a joint '" + std::string(tokens[i]) +
-                                  "' that is not a whole number in 0..2147483647");
+                                  "' that is not a whole number in 0.." +
+                                  std::to_string(kMaxJoint));
       }
       double weight = 0;
       if (!parseDouble(tokens[i + 1], &weight) || !std::isfinite(weight) || !fitsFloat(weight)) {
