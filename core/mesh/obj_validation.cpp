@@ -44,6 +44,33 @@ constexpr size_t kMaxFaceCorners = 255;
 // become infinite there.
 bool fitsFloat(double value) { return std::abs(value) <= std::numeric_limits<float>::max(); }
 
+// Significant digits of the decimal exponent tinyobjloader's own number parser reads in
+// `token` (its tryParseDouble: [sign] digits [. digits] [e|E [sign] digits], or a leading
+// '.'), leading zeros not counted; 0 when it reads none. It sums the exponent in an int,
+// which 10 digits overflow.
+size_t tinyobjExponentDigits(std::string_view token) {
+  const auto digit = [&](size_t k) {
+    return k < token.size() && token[k] >= '0' && token[k] <= '9';
+  };
+  size_t i = 0;
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  if (!digit(i) && !(i < token.size() && token[i] == '.')) return 0;
+  while (digit(i)) ++i;
+  if (i < token.size() && token[i] == '.') {
+    for (++i; digit(i);) ++i;
+  }
+  if (i >= token.size() || (token[i] != 'e' && token[i] != 'E')) return 0;
+  ++i;
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  while (i < token.size() && token[i] == '0') ++i;
+  size_t digits = 0;
+  while (digit(i + digits)) ++digits;
+  return digits;
+}
+
+// Exponents of more digits are refused: the number is 0 or beyond float range anyway.
+constexpr size_t kMaxExponentDigits = 4;
+
 class ObjScanner {
  public:
   explicit ObjScanner(const std::string& source) : source_(source) {}
@@ -55,6 +82,8 @@ class ObjScanner {
     const std::string_view keyword = tokens[0];
     if (keyword == "v") {
       scanCoordinates(tokens, 3, "vertex position");
+      // tinyobjloader reads three more numbers as a colour when there are.
+      for (size_t i = 4; i < tokens.size() && i <= 6; ++i) checkExponent(tokens[i], "vertex");
       ++position_count_;
     } else if (keyword == "vn") {
       scanCoordinates(tokens, 3, "vertex normal");
@@ -107,26 +136,39 @@ class ObjScanner {
         fail(what, "is beyond float range ('" + std::string(tokens[i]) +
                        "'): coordinates are read as 32-bit floats");
       }
+      checkExponent(tokens[i], what);
+    }
+  }
+
+  // A token tinyobjloader parses as a number must not overflow its exponent sum.
+  void checkExponent(std::string_view token, const std::string& what) {
+    if (tinyobjExponentDigits(token) > kMaxExponentDigits) {
+      fail(what, "has an exponent of more than " + std::to_string(kMaxExponentDigits) +
+                     " digits ('" + std::string(token) + "')");
     }
   }
 
   // tinyobjloader's skin weights, "vw <vertex> <joint> <weight> ...": unused here, but
-  // tinyobjloader converts each joint to int, which must not overflow.
+  // tinyobjloader reads each joint as a float and converts it to int, which must not
+  // overflow; whole numbers up to 2^24 are exact floats (2147483647 rounds to 2^31).
   void scanSkinWeights(const std::vector<std::string_view>& tokens) {
+    constexpr long kMaxJoint = 1L << 24;
     long value = 0;
     if (tokens.size() < 2 || !parseInt(tokens[1], &value) || tokens.size() % 2 != 0) {
       fail("vertex weight", "needs a vertex index and joint-weight pairs");
     }
     for (size_t i = 2; i < tokens.size(); i += 2) {
-      if (!parseInt(tokens[i], &value) || value < 0 || value > std::numeric_limits<int>::max()) {
+      if (!parseInt(tokens[i], &value) || value < 0 || value > kMaxJoint) {
         fail("vertex weight", "has a joint '" + std::string(tokens[i]) +
-                                  "' that is not a whole number in 0..2147483647");
+                                  "' that is not a whole number in 0.." +
+                                  std::to_string(kMaxJoint));
       }
       double weight = 0;
       if (!parseDouble(tokens[i + 1], &weight) || !std::isfinite(weight) || !fitsFloat(weight)) {
         fail("vertex weight", "has a weight '" + std::string(tokens[i + 1]) +
                                   "' that is not a finite number in float range");
       }
+      checkExponent(tokens[i + 1], "vertex weight");
     }
   }
 
@@ -229,6 +271,7 @@ class ObjScanner {
         fail("tag '" + name + "'", "has '" + std::string(token) +
                                        "', beyond float range (tag values are read as floats)");
       }
+      checkExponent(token, "tag '" + name + "'");
     }
     checkTagReferences(name, ints);
   }

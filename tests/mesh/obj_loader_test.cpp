@@ -210,16 +210,38 @@ TEST(ObjLoader, CornerEndingInSlashIsRejected) {
   EXPECT_EQ(errorOf(base + "f 1//1 2//1 3//1\n"), "");
 }
 
-// Found by tests/fuzz: tinyobjloader converts a skin weight's joint ("vw", its extension)
-// to int, undefined for 1e39 (UBSan in the fuzz build, which compiles it from its header).
+// Found by tests/fuzz: tinyobjloader reads a skin weight's joint ("vw", its extension) as a
+// float and converts it to int, undefined for 1e39 and for 2147483647, which rounds to 2^31
+// as a float (UBSan in the fuzz build, which compiles tinyobjloader from its header).
 TEST(ObjLoader, SkinWeightJointBeyondIntIsRejected) {
   const std::string base = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-  for (const char* line : {"vw 1 1e39 0.5\n", "vw 1 2147483648 0.5\n", "vw 1 -1 0.5\n",
-                           "vw 1 0 nan\n", "vw 1 0\n", "vw\n"}) {
+  for (const char* line : {"vw 1 1e39 0.5\n", "vw 1 2147483647 0.5\n", "vw 1 16777217 0.5\n",
+                           "vw 1 -1 0.5\n", "vw 1 0 nan\n", "vw 1 0\n", "vw\n"}) {
     const std::string error = errorOf(base + line);
     EXPECT_NE(error.find("line 5: vertex weight"), std::string::npos) << line << " -> " << error;
   }
-  EXPECT_EQ(errorOf(base + "vw 0 0 0.25 1 0.75\n"), "");
+  EXPECT_EQ(errorOf(base + "vw 0 0 0.25 16777216 0.75\n"), "");
+}
+
+// Found by tests/fuzz: tinyobjloader's own number parser sums a decimal exponent in an int,
+// which "0e02147483648" (0 to strtod) overflows (UBSan); so do a colour's numbers, which
+// tinyobjloader reads after a position's three.
+TEST(ObjLoader, ExponentOfMoreThanFourDigitsIsRejected) {
+  const std::string tri = "v 0 0 0\nv 1 0 0\n";
+  for (const std::string& text :
+       {tri + "v 0 1 0e02147483648\nf 1 2 3\n", tri + "v 0 1 0 1 1 1e-99999\nf 1 2 3\n",
+        tri + "vn 0 0 0e00012345\nv 0 1 0\nf 1 2 3\n"}) {
+    const std::string error = errorOf(text);
+    EXPECT_NE(error.find("line 3"), std::string::npos) << text << " -> " << error;
+    EXPECT_NE(error.find("exponent of more than 4 digits"), std::string::npos) << error;
+  }
+  const std::string base = tri + "v 0 1 0\nf 1 2 3\n";
+  EXPECT_NE(errorOf(base + "t crease 2/1/0 0 1 0e+123456\n").find("line 5: tag 'crease'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(base + "vw 0 0 5e-000012345\n").find("line 5: vertex weight"),
+            std::string::npos);
+  // Leading zeros do not count: tinyobjloader's sum stays small.
+  EXPECT_EQ(errorOf(tri + "v 0 1e-0000000000001 0 0.5 0.5 0.5\nf 1 2 3\n"), "");
 }
 
 // Found by tests/fuzz: the counts of a tag's triple were summed before being bounded, a
