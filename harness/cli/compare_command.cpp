@@ -31,7 +31,7 @@ double parseThreshold(const std::string& option, const std::string& text) {
 
 int runCompare(const CompareArgs& args) {
   CompareOptions options;
-  options.threshold = args.threshold;  // CLI11 checked it is a number >= 0
+  options.threshold = parseThreshold("--threshold", args.threshold);
   for (const std::string& item : args.metric_thresholds) {
     const size_t equals = item.find('=');
     if (equals == std::string::npos || equals == 0) {

@@ -9,7 +9,7 @@ namespace tb::cli {
 
 struct CompareArgs {
   std::string base, current;  // run folders (results/<run-id>)
-  double threshold = 1e-9;    // relative; 0 = exact
+  std::string threshold = "1e-9";  // relative; 0 = exact (checked by runCompare)
   std::vector<std::string> metric_thresholds;  // NAME=VALUE, per metric name
   size_t limit = 40;                           // changes shown in the table
 };

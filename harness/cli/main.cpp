@@ -77,8 +77,7 @@ int main(int argc, char** argv) {
   compare->add_option("new", compare_args.current, "the new run folder")->required();
   compare->add_option("--threshold", compare_args.threshold,
                       "relative change that counts: |new - base| > t * max(|base|, |new|); 0 = exact")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->capture_default_str();
   compare->add_option("--metric-threshold", compare_args.metric_thresholds,
                       "NAME=VALUE: the threshold for one metric name (repeatable)");
   compare->add_option("--limit", compare_args.limit, "changes listed in the table, worst first")

@@ -38,11 +38,15 @@ std::vector<float> parseLevels(const std::string& option, const std::string& tex
   return values;
 }
 
-// How many --outer and --inner values each domain takes (gl_TessLevelOuter/Inner use).
-struct LevelCounts {
-  size_t outer;
-  size_t inner;
-};
+
+void requireCount(const std::string& option, tess::Domain domain, size_t expected, size_t got) {
+  if (got == expected) return;
+  throw UsageError(option + " for domain " + std::string(tess::toString(domain)) + " needs " +
+                   std::to_string(expected) + " value" + (expected == 1 ? "" : "s") + ", got " +
+                   std::to_string(got));
+}
+
+}  // namespace
 
 LevelCounts levelCounts(tess::Domain domain) {
   switch (domain) {
@@ -55,15 +59,6 @@ LevelCounts levelCounts(tess::Domain domain) {
   }
   return {2, 0};
 }
-
-void requireCount(const std::string& option, tess::Domain domain, size_t expected, size_t got) {
-  if (got == expected) return;
-  throw UsageError(option + " for domain " + std::string(tess::toString(domain)) + " needs " +
-                   std::to_string(expected) + " value" + (expected == 1 ? "" : "s") + ", got " +
-                   std::to_string(got));
-}
-
-}  // namespace
 
 TessellateRequest parseTessellateArgs(const TessellateArgs& args) {
   TessellateRequest request;

@@ -38,6 +38,13 @@ struct TessellateRequest {
   tess::Options options;
 };
 
+// How many --outer and --inner values each domain takes (gl_TessLevelOuter/Inner use).
+struct LevelCounts {
+  size_t outer;
+  size_t inner;
+};
+LevelCounts levelCounts(tess::Domain domain);
+
 // Parses and validates; throws UsageError on an unknown domain, spacing or backend, a
 // level that is not a number ("nan" and "inf" are numbers: they exercise culling and
 // clamping), or a wrong count of --outer or --inner values for the domain.

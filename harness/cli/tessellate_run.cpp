@@ -48,14 +48,9 @@ void reportClampedLevels(const TessellateRequest& request) {
     fmt::print(stderr, "tessbench: warning: {}[{}] = {} is above {}, the {} maximum: clamped to {}\n",
                option, index, level, high, tess::toString(request.spacing), high);
   };
-  const size_t outer = request.domain == tess::Domain::kTriangle ? 3
-                       : request.domain == tess::Domain::kQuad   ? 4
-                                                                 : 2;
-  const size_t inner = request.domain == tess::Domain::kTriangle ? 1
-                       : request.domain == tess::Domain::kQuad   ? 2
-                                                                 : 0;
-  for (size_t i = 0; i < outer; ++i) report("--outer", i, request.levels.outer[i]);
-  for (size_t i = 0; i < inner; ++i) report("--inner", i, request.levels.inner[i]);
+  const LevelCounts counts = levelCounts(request.domain);
+  for (size_t i = 0; i < counts.outer; ++i) report("--outer", i, request.levels.outer[i]);
+  for (size_t i = 0; i < counts.inner; ++i) report("--inner", i, request.levels.inner[i]);
 }
 
 }  // namespace
