@@ -441,14 +441,15 @@ TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
 
 // Runs tessbench as the unprivileged user `nobody` (root ignores mode bits); -1 when it
 // cannot (not root, or nobody cannot reach the binary).
-int runAsNobody(const std::string& arguments, const fs::path& stderr_file) {
+int runAsNobody(const fs::path& binary, const std::string& arguments,
+                const fs::path& stderr_file) {
   if (::geteuid() != 0) return -1;
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int err = ::open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
     if (err >= 0) ::dup2(err, 2);
     if (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) _exit(126);
-    const std::string command = std::string(TB_TESSBENCH_BIN) + " " + arguments + " >/dev/null";
+    const std::string command = binary.string() + " " + arguments + " >/dev/null";
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -469,14 +470,20 @@ TEST(ReadOnly, AReadOnlyOutputFolderIsOneLineBeforeMeasuring) {
   fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                               fs::perms::group_exec | fs::perms::others_read |
                               fs::perms::others_exec);
-  const std::string arguments = "run --technique phong --measure memory --asset catmark_cube --out " +
-                                (locked / "results").string();
+  // nobody may not reach the build tree (a clone in a mode-0700 folder): the binary and the
+  // asset are copied beside the locked folder, which nobody can reach.
+  const fs::path binary = dir / "tessbench";
+  fs::copy_file(TB_TESSBENCH_BIN, binary);
+  const fs::path asset = dir / "cube.obj";
+  fs::copy_file(testing::assetPath("opensubdiv/catmark_cube.obj"), asset);
+  const std::string arguments = "run --technique phong --measure memory --asset " +
+                                asset.string() + " --out " + (locked / "results").string();
   const fs::path stderr_file = fs::temp_directory_path() /
                                ("tessbench_read_only_" + std::to_string(::getpid()) + ".txt");
   int exit_code;
   std::string err;
   if (::geteuid() == 0) {
-    exit_code = runAsNobody(arguments, stderr_file);
+    exit_code = runAsNobody(binary, arguments, stderr_file);
     err = readFile(stderr_file);
     fs::remove(stderr_file);
     if (exit_code == 126 || exit_code == 127) {
