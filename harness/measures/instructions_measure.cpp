@@ -77,7 +77,10 @@ class InstructionsMeasure final : public Measure {
          "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
          "x86 instructions per TES invocation on lavapipe are not in this table (they need "
          "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
-         "two levels, tessellator and TES JIT code together"}};
+         "two levels, tessellator and TES JIT code together",
+         "summaries (report, table, advise) read the evaluation-stage rows: spirv_O, vector "
+         "expansion, the .tese stages (the work per tessellated vertex)"},
+        {{"source", "spirv_O"}, {"expansion", "vector"}, {"stage", "*.tese"}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

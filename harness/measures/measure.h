@@ -33,6 +33,10 @@ struct MeasureInfo {
   // Notes true of every record (definitions, method), shown once under the measure;
   // a note about one record goes in its MeasureResult::notes.
   std::vector<std::string> notes;
+  // The rows a summary aggregates (MeasureDeclaration::summary_scope); empty: every ok row.
+  RowScope summary_scope = {};
+  // The charts report.html draws of this measure's rows (MeasureDeclaration::plots).
+  std::vector<PlotSpec> plots = {};
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure

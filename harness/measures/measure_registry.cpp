@@ -5,7 +5,8 @@
 namespace tb {
 
 MeasureDeclaration declarationOf(const MeasureInfo& info) {
-  return {info.id, info.title, info.description, info.metrics, info.headline, info.notes};
+  return {info.id,       info.title, info.description,   info.metrics,
+          info.headline, info.notes, info.summary_scope, info.plots};
 }
 
 MeasureRegistry& MeasureRegistry::instance() {

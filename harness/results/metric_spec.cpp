@@ -81,6 +81,50 @@ const std::vector<Unit>& allUnits() {
   return kAll;
 }
 
+std::string_view toString(PlotKind kind) {
+  switch (kind) {
+    case PlotKind::kLine:
+      return "line";
+    case PlotKind::kScatter:
+      return "scatter";
+    case PlotKind::kBar:
+      return "bar";
+  }
+  return "scatter";
+}
+
+std::optional<PlotKind> parsePlotKind(std::string_view text) {
+  for (PlotKind kind : {PlotKind::kLine, PlotKind::kScatter, PlotKind::kBar}) {
+    if (toString(kind) == text) return kind;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// '*' matches any run of characters (also none); every other character itself.
+bool globMatches(std::string_view pattern, std::string_view text) {
+  const size_t star = pattern.find('*');
+  if (star == std::string_view::npos) return pattern == text;
+  const std::string_view head = pattern.substr(0, star);
+  if (text.substr(0, head.size()) != head) return false;
+  const std::string_view rest = pattern.substr(star + 1);
+  for (size_t from = head.size(); from <= text.size(); ++from) {
+    if (globMatches(rest, text.substr(from))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>& keys) {
+  for (const auto& [key, pattern] : scope) {
+    const auto it = keys.find(key);
+    if (it == keys.end() || !globMatches(pattern, it->second)) return false;
+  }
+  return true;
+}
+
 const MetricSpec* MeasureDeclaration::find(std::string_view name) const {
   for (const MetricSpec& spec : metrics) {
     if (spec.name == name) return &spec;

@@ -4,6 +4,7 @@
 // compare read them instead of knowing a measure by name.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,11 +46,47 @@ std::string_view toString(Unit unit);
 std::string_view toString(Direction direction);
 std::optional<Unit> parseUnit(std::string_view text);
 std::optional<Direction> parseDirection(std::string_view text);
+
 // For readers: "fraction of the bounding-box diagonal", "lower is better".
 std::string_view describe(Unit unit);
 std::string_view describe(Direction direction);
 // Every unit, in declaration order (for tests and legends).
 const std::vector<Unit>& allUnits();
+
+// Which rows a measure's summary (report.md's matrices and summary tables, `table`,
+// `advise`) aggregates: the ok rows whose keys match every entry. A value matches exactly,
+// or as a glob when it holds '*' ("*.tese": every key value ending in ".tese"). Empty:
+// every ok row. Used where rows of one record are not alike (instructions: TCS and TES
+// stages, SPIR-V and hand counts), so a median over all of them would mean nothing.
+using RowScope = std::map<std::string, std::string>;
+bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>& keys);
+
+// What a chart of a measure's rows shows (report.html draws it with Chart.js); declared by
+// the measure so no renderer knows a measure by name.
+enum class PlotKind { kLine, kScatter, kBar };
+std::string_view toString(PlotKind kind);  // "line", "scatter", "bar"
+std::optional<PlotKind> parsePlotKind(std::string_view text);
+struct PlotSpec {
+  std::string title;  // "Memory ratio against tessellation level"
+  PlotKind kind = PlotKind::kScatter;
+  // The x axis: a row key whose values are numbers ("level"), a metric of the same row, or
+  // "<measure>.<metric>": another measure's summary figure (its worst value over that
+  // measure's scope) for the same technique × variant × asset (error against instructions).
+  // For kBar: a row key or "variant" (one bar per value).
+  std::string x;
+  std::string y;  // a metric of this measure
+  // What one series (one colour) is: "technique", "variant" (technique/variant) or "asset".
+  std::string series = "technique";
+  // "" (one chart) or "asset" (one chart per asset).
+  std::string facet;
+  // The rows plotted (as RowScope); rows of one series at one x reduce to their median.
+  RowScope where;
+  bool log_x = false;
+  bool log_y = false;
+  // Mark the points no other point beats on both axes (lower x and better y).
+  bool pareto_front = false;
+  bool operator==(const PlotSpec&) const = default;
+};
 
 // A measure's declaration, as results.json and the renderers see it.
 struct MeasureDeclaration {
@@ -61,6 +98,8 @@ struct MeasureDeclaration {
   // Notes that hold for every record of the measure (definitions, method); rendered once
   // under the measure's heading. Notes about one record live in MeasureResult::notes.
   std::vector<std::string> notes;
+  RowScope summary_scope = {};       // the rows summaries aggregate (empty: every ok row)
+  std::vector<PlotSpec> plots = {};  // charts of report.html, in order
   const MetricSpec* find(std::string_view name) const;
 };
 

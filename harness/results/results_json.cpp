@@ -1,6 +1,10 @@
 #include "harness/results/results_json.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -9,29 +13,60 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json metricRowToJson(const MetricRow& row) {
-  Json keys = Json::object();
-  for (const auto& [key, value] : row.keys) keys[key] = value;
-  Json metrics = Json::array();
-  for (const Metric& metric : row.metrics) {
-    metrics.push_back({{"name", metric.name}, {"value", metric.value}, {"unit", metric.unit}});
+// A metric value as JSON: an integral value as an integer ("12", not "12.0"), anything
+// else as a double in its shortest round-trip form.
+Json metricValueToJson(double value) {
+  constexpr double kLargestExactInteger = 9007199254740992.0;  // 2^53
+  if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < kLargestExactInteger &&
+      !(value == 0 && std::signbit(value))) {
+    return static_cast<int64_t>(value);
   }
-  Json json{{"keys", keys}, {"metrics", metrics}};
-  // Most rows are ok; only the others spend bytes on saying so.
-  if (row.status != MeasureStatus::kOk) {
-    json["status"] = toString(row.status);
-    json["reason"] = row.reason;
-  }
-  return json;
+  return value;
 }
 
+// A measure's rows as a table (schema 4): the key names and metric names once, then one
+// array per row, [[key values], [metric values]] in those orders, null where the row has
+// no such key or metric; a row that is not ok appends its status and reason. Units live
+// in the measure's declaration (results.json's "measures"), not in every row.
 Json measureToJson(const MeasureResult& measure) {
+  std::vector<std::string> key_names;
+  std::vector<std::string> metric_names;
+  std::map<std::string, size_t> metric_index;
+  {
+    std::set<std::string> keys;
+    for (const MetricRow& row : measure.rows) {
+      for (const auto& [key, value] : row.keys) keys.insert(key);
+      for (const Metric& metric : row.metrics) {
+        if (metric_index.emplace(metric.name, metric_names.size()).second) {
+          metric_names.push_back(metric.name);
+        }
+      }
+    }
+    key_names.assign(keys.begin(), keys.end());
+  }
   Json rows = Json::array();
-  for (const MetricRow& row : measure.rows) rows.push_back(metricRowToJson(row));
-  return {{"measure", measure.measure},
-          {"status", toString(measure.status)},
-          {"reason", measure.reason},
-          {"notes", measure.notes},
+  for (const MetricRow& row : measure.rows) {
+    Json keys = Json::array();
+    for (const std::string& key : key_names) {
+      const auto it = row.keys.find(key);
+      keys.push_back(it == row.keys.end() ? Json() : Json(it->second));
+    }
+    Json values(Json::value_t::array);
+    values.get_ref<Json::array_t&>().resize(metric_names.size());
+    for (const Metric& metric : row.metrics) {
+      values[metric_index.at(metric.name)] = metricValueToJson(metric.value);
+    }
+    Json line = Json::array({keys, values});
+    // Most rows are ok; only the others spend bytes on saying so.
+    if (row.status != MeasureStatus::kOk) {
+      line.push_back(toString(row.status));
+      line.push_back(row.reason);
+    }
+    rows.push_back(std::move(line));
+  }
+  return {{"measure", measure.measure}, {"status", toString(measure.status)},
+          {"reason", measure.reason},   {"notes", measure.notes},
+          {"keys", key_names},          {"metrics", metric_names},
           {"rows", rows}};
 }
 
@@ -57,25 +92,6 @@ T field(const Json& object, const char* key, const std::string& where) {
   }
 }
 
-MetricRow metricRowFromJson(const Json& json, const std::string& where) {
-  MetricRow row;
-  row.keys = field<std::map<std::string, std::string>>(json, "keys", where);
-  const Json metrics = field<Json>(json, "metrics", where);
-  for (size_t i = 0; i < metrics.size(); ++i) {
-    const std::string at = where + ".metrics[" + std::to_string(i) + "]";
-    row.metrics.push_back({field<std::string>(metrics[i], "name", at),
-                           field<double>(metrics[i], "value", at),
-                           field<std::string>(metrics[i], "unit", at)});
-  }
-  if (json.contains("status")) {
-    const auto status = parseMeasureStatus(field<std::string>(json, "status", where));
-    if (!status) throw std::runtime_error(where + ": unknown status");
-    row.status = *status;
-    row.reason = field<std::string>(json, "reason", where);
-  }
-  return row;
-}
-
 MeasureResult measureFromJson(const Json& json, const std::string& where) {
   MeasureResult measure;
   measure.measure = field<std::string>(json, "measure", where);
@@ -84,11 +100,60 @@ MeasureResult measureFromJson(const Json& json, const std::string& where) {
   measure.status = *status;
   measure.reason = field<std::string>(json, "reason", where);
   measure.notes = field<std::vector<std::string>>(json, "notes", where);
+  const auto key_names = field<std::vector<std::string>>(json, "keys", where);
+  const auto metric_names = field<std::vector<std::string>>(json, "metrics", where);
   const Json rows = field<Json>(json, "rows", where);
+  if (!rows.is_array()) throw std::runtime_error(where + ": field 'rows' has the wrong type");
   for (size_t i = 0; i < rows.size(); ++i) {
-    measure.rows.push_back(metricRowFromJson(rows[i], where + ".rows[" + std::to_string(i) + "]"));
+    const std::string at = where + ".rows[" + std::to_string(i) + "]";
+    const Json& line = rows[i];
+    if (!line.is_array() || (line.size() != 2 && line.size() != 4) || !line[0].is_array() ||
+        !line[1].is_array() || line[0].size() != key_names.size() ||
+        line[1].size() != metric_names.size()) {
+      throw std::runtime_error(at + ": expected [[" + std::to_string(key_names.size()) +
+                               " keys], [" + std::to_string(metric_names.size()) +
+                               " metrics]] (and a status and reason when not ok)");
+    }
+    MetricRow row;
+    for (size_t k = 0; k < key_names.size(); ++k) {
+      if (line[0][k].is_null()) continue;
+      if (!line[0][k].is_string()) throw std::runtime_error(at + ": key values are strings");
+      row.keys[key_names[k]] = line[0][k].get<std::string>();
+    }
+    for (size_t m = 0; m < metric_names.size(); ++m) {
+      if (line[1][m].is_null()) continue;
+      if (!line[1][m].is_number()) throw std::runtime_error(at + ": metric values are numbers");
+      row.metrics.push_back({metric_names[m], line[1][m].get<double>(), ""});
+    }
+    if (line.size() == 4) {
+      const auto row_status =
+          line[2].is_string() ? parseMeasureStatus(line[2].get<std::string>()) : std::nullopt;
+      if (!row_status || !line[3].is_string()) {
+        throw std::runtime_error(at + ": expected a status and a reason after the metrics");
+      }
+      row.status = *row_status;
+      row.reason = line[3].get<std::string>();
+    }
+    measure.rows.push_back(std::move(row));
   }
   return measure;
+}
+
+// Rows carry no units (schema 4): each metric takes its unit from its measure's declaration.
+void assignDeclaredUnits(Results* results) {
+  for (Record& record : results->records) {
+    for (MeasureResult& measure : record.measures) {
+      const MeasureDeclaration* declaration = results->findMeasure(measure.measure);
+      if (declaration == nullptr) continue;
+      for (MetricRow& row : measure.rows) {
+        for (Metric& metric : row.metrics) {
+          if (const MetricSpec* spec = declaration->find(metric.name)) {
+            metric.unit = std::string(toString(spec->unit));
+          }
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -100,12 +165,25 @@ Json toJson(const MeasureDeclaration& declaration) {
                        {"unit", toString(spec.unit)},
                        {"direction", toString(spec.direction)}});
   }
-  return {{"measure", declaration.measure},
-          {"title", declaration.title},
-          {"description", declaration.description},
-          {"headline", declaration.headline},
-          {"notes", declaration.notes},
-          {"metrics", metrics}};
+  Json json{{"measure", declaration.measure},
+            {"title", declaration.title},
+            {"description", declaration.description},
+            {"headline", declaration.headline},
+            {"notes", declaration.notes},
+            {"metrics", metrics}};
+  if (!declaration.summary_scope.empty()) json["summary_scope"] = declaration.summary_scope;
+  if (!declaration.plots.empty()) {
+    Json plots = Json::array();
+    for (const PlotSpec& plot : declaration.plots) {
+      Json item{{"title", plot.title}, {"kind", toString(plot.kind)}, {"x", plot.x},
+                {"y", plot.y},         {"series", plot.series},        {"facet", plot.facet},
+                {"where", plot.where}, {"log_x", plot.log_x},          {"log_y", plot.log_y},
+                {"pareto_front", plot.pareto_front}};
+      plots.push_back(std::move(item));
+    }
+    json["plots"] = plots;
+  }
+  return json;
 }
 
 namespace {
@@ -125,6 +203,29 @@ MeasureDeclaration declarationFromJson(const Json& json, const std::string& wher
     const auto direction = parseDirection(field<std::string>(metrics[i], "direction", at));
     if (!direction) throw std::runtime_error(at + ": unknown direction");
     declaration.metrics.push_back({field<std::string>(metrics[i], "name", at), *unit, *direction});
+  }
+  if (json.contains("summary_scope")) {
+    declaration.summary_scope = field<RowScope>(json, "summary_scope", where);
+  }
+  if (json.contains("plots")) {
+    const Json plots = field<Json>(json, "plots", where);
+    for (size_t i = 0; i < plots.size(); ++i) {
+      const std::string at = where + ".plots[" + std::to_string(i) + "]";
+      PlotSpec plot;
+      plot.title = field<std::string>(plots[i], "title", at);
+      const auto kind = parsePlotKind(field<std::string>(plots[i], "kind", at));
+      if (!kind) throw std::runtime_error(at + ": unknown plot kind");
+      plot.kind = *kind;
+      plot.x = field<std::string>(plots[i], "x", at);
+      plot.y = field<std::string>(plots[i], "y", at);
+      plot.series = field<std::string>(plots[i], "series", at);
+      plot.facet = field<std::string>(plots[i], "facet", at);
+      plot.where = field<RowScope>(plots[i], "where", at);
+      plot.log_x = field<bool>(plots[i], "log_x", at);
+      plot.log_y = field<bool>(plots[i], "log_y", at);
+      plot.pareto_front = field<bool>(plots[i], "pareto_front", at);
+      declaration.plots.push_back(std::move(plot));
+    }
   }
   return declaration;
 }
@@ -335,6 +436,7 @@ Results resultsFromJson(const Json& document) {
     results.measures.push_back(
         declarationFromJson(measures[i], "measures[" + std::to_string(i) + "]"));
   }
+  assignDeclaredUnits(&results);
   return results;
 }
 
@@ -347,7 +449,56 @@ const MeasureDeclaration* Results::findMeasure(const std::string& id) const {
 
 std::string recordJsonLine(const Record& record) { return recordToJson(record).dump(); }
 
-std::string serializeResults(const Results& results) { return toJson(results).dump(2) + "\n"; }
+namespace {
+
+// Nesting depth of arrays in `json` (a scalar 0, [1, 2] 1, [[a], [1]] 2); an object
+// counts as too deep to inline.
+int arrayDepth(const Json& json) {
+  constexpr int kObject = 1000;
+  if (json.is_object()) return kObject;
+  if (!json.is_array()) return 0;
+  int deepest = 0;
+  for (const Json& item : json) deepest = std::max(deepest, arrayDepth(item));
+  return deepest + 1;
+}
+
+// Pretty-prints like dump(2), except that an array of at most two levels holding no object
+// goes on one line (a row [[keys], [metrics]], a list of names): one row per line, a few
+// MB for the default suite.
+void dumpCompactLeaves(const Json& json, int depth, std::string* out) {
+  const std::string indent(static_cast<size_t>(2 * (depth + 1)), ' ');
+  const std::string closing(static_cast<size_t>(2 * depth), ' ');
+  if (json.is_object() && !json.empty()) {
+    *out += "{\n";
+    size_t i = 0;
+    for (const auto& [key, value] : json.items()) {
+      *out += indent + Json(key).dump() + ": ";
+      dumpCompactLeaves(value, depth + 1, out);
+      *out += ++i < json.size() ? ",\n" : "\n";
+    }
+    *out += closing + "}";
+    return;
+  }
+  if (!json.is_array() || json.empty() || arrayDepth(json) <= 2) {
+    *out += json.dump();
+    return;
+  }
+  *out += "[\n";
+  for (size_t i = 0; i < json.size(); ++i) {
+    *out += indent;
+    dumpCompactLeaves(json[i], depth + 1, out);
+    *out += i + 1 < json.size() ? ",\n" : "\n";
+  }
+  *out += closing + "]";
+}
+
+}  // namespace
+
+std::string serializeResults(const Results& results) {
+  std::string out;
+  dumpCompactLeaves(toJson(results), 0, &out);
+  return out + "\n";
+}
 
 Results readResultsFile(const std::string& path) {
   std::ifstream file(path);

@@ -22,7 +22,9 @@ Results resultsFromJson(const nlohmann::ordered_json& document);
 // journal of records measured so far).
 std::string recordJsonLine(const Record& record);
 
-std::string serializeResults(const Results& results);  // pretty, 2-space indent, final newline
+// Pretty (2-space indent) with each row, and every other array without objects, on one
+// line; final newline.
+std::string serializeResults(const Results& results);
 Results readResultsFile(const std::string& path);       // throws naming the file
 
 }  // namespace tb

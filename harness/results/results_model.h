@@ -17,7 +17,11 @@ namespace tb {
 // 3: rows carry a status: a part of a measure that could not run (no Vulkan device, no
 //    shaders, a device error) is a row with status "skipped" or "failed" and a reason,
 //    never an ok row whose note says so.
-constexpr int kResultsSchemaVersion = 3;
+// 4: a measure's rows are a table: "keys" and "metrics" name the columns once, each row is
+//    [[key values], [metric values]] (null where absent; status and reason appended when
+//    not ok); units come from the declaration; integral values print as integers. Each row
+//    is one line of the file. Declarations may carry a summary scope and plots.
+constexpr int kResultsSchemaVersion = 4;
 
 struct Metric {
   std::string name;  // snake_case, declared by the measure (MeasureDeclaration::metrics)

@@ -32,6 +32,15 @@ Results sampleResults() {
                                {"ratio", Unit::kRatio, Direction::kHigherIsBetter}},
                               {"ratio"},
                               {"a fixed note"}});
+  results.measures.back().summary_scope = {{"level", "1*"}};
+  PlotSpec plot;
+  plot.title = "Ratio against level";
+  plot.kind = PlotKind::kLine;
+  plot.x = "level";
+  plot.y = "ratio";
+  plot.where = {{"level", "*"}};
+  plot.log_y = true;
+  results.measures.back().plots.push_back(plot);
   return results;
 }
 
@@ -47,18 +56,73 @@ TEST(ResultsJson, RoundTripsEveryField) {
   EXPECT_EQ(failed.status, MeasureStatus::kFailed);
   EXPECT_EQ(failed.reason, "device lost at level 16");
   EXPECT_TRUE(failed.metrics.empty());
+  EXPECT_EQ(parsed.measures[0].summary_scope, original.measures[0].summary_scope);
+  EXPECT_EQ(parsed.measures[0].plots, original.measures[0].plots);
+}
+
+TEST(ResultsJson, RowScopeMatchesExactlyOrByGlob) {
+  EXPECT_TRUE(rowInScope({}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_TRUE(rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tesc"}}));
+  EXPECT_TRUE(rowInScope({{"stage", "acc/*.te*"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(rowInScope({{"source", "spirv_O"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(rowInScope({{"source", "spirv_O"}}, {{"source", "spirv_O2"}}));
 }
 
 // A skip or failure is a status a reader can filter on; an ok row spends no bytes on it.
 TEST(ResultsJson, RowStatusIsWrittenOnlyWhenNotOk) {
   const auto json = toJson(sampleResults());
   const auto& rows = json["records"][0]["measures"][0]["rows"];
-  EXPECT_FALSE(rows[0].contains("status"));
-  EXPECT_EQ(rows[1]["status"], "failed");
-  EXPECT_EQ(rows[1]["reason"], "device lost at level 16");
+  // Schema 4: [[keys], [metrics]] for an ok row, then status and reason for the others.
+  EXPECT_EQ(rows[0].size(), 2u);
+  ASSERT_EQ(rows[1].size(), 4u);
+  EXPECT_EQ(rows[1][2], "failed");
+  EXPECT_EQ(rows[1][3], "device lost at level 16");
   auto broken = json;
-  broken["records"][0]["measures"][0]["rows"][1]["status"] = "maybe";
+  broken["records"][0]["measures"][0]["rows"][1][2] = "maybe";
   EXPECT_THROW(resultsFromJson(broken), std::runtime_error);
+}
+
+TEST(ResultsJson, RowsAreOneLineEachWithUnitsFromTheDeclaration) {
+  const Results results = sampleResults();
+  const std::string text = serializeResults(results);
+  const Results read = resultsFromJson(nlohmann::ordered_json::parse(text));
+  ASSERT_EQ(read.records.size(), results.records.size());
+  const auto& rows = results.records[0].measures[0].rows;
+  const auto& read_rows = read.records[0].measures[0].rows;
+  ASSERT_EQ(read_rows.size(), rows.size());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    EXPECT_EQ(read_rows[r].keys, rows[r].keys);
+    EXPECT_EQ(read_rows[r].status, rows[r].status);
+    ASSERT_EQ(read_rows[r].metrics.size(), rows[r].metrics.size());
+    for (size_t m = 0; m < rows[r].metrics.size(); ++m) {
+      EXPECT_EQ(read_rows[r].metrics[m].name, rows[r].metrics[m].name);
+      EXPECT_EQ(read_rows[r].metrics[m].value, rows[r].metrics[m].value);
+      if (results.findMeasure(results.records[0].measures[0].measure) != nullptr) {
+        EXPECT_EQ(read_rows[r].metrics[m].unit, rows[r].metrics[m].unit);
+      }
+    }
+  }
+  // Each row is one line: "[[" opens a row's key values.
+  size_t row_lines = 0;
+  for (size_t at = text.find("\n"); at != std::string::npos; at = text.find("\n", at + 1)) {
+    const size_t next = text.find_first_not_of(' ', at + 1);
+    if (next != std::string::npos && text.compare(next, 2, "[[") == 0) ++row_lines;
+  }
+  size_t all_rows = 0;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) all_rows += m.rows.size();
+  }
+  EXPECT_EQ(row_lines, all_rows);
+  // A row with the wrong number of metric values is refused, naming the row.
+  auto broken = toJson(results);
+  broken["records"][0]["measures"][0]["rows"][0][1].push_back(1);
+  try {
+    resultsFromJson(broken);
+    FAIL();
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("rows[0]"), std::string::npos) << error.what();
+  }
 }
 
 TEST(ResultsJson, SerialisationIsByteStable) {

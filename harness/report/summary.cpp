@@ -1,0 +1,153 @@
+#include "harness/report/summary.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace tb {
+namespace {
+
+MetricStats statsOf(std::vector<double> values) {
+  MetricStats stats;
+  stats.rows = values.size();
+  if (values.empty()) return stats;
+  std::sort(values.begin(), values.end());
+  stats.min = values.front();
+  stats.max = values.back();
+  const size_t mid = values.size() / 2;
+  stats.median = values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+  return stats;
+}
+
+// A line under construction: every value of each metric, to reduce at the end.
+struct LineValues {
+  SummaryLine line;
+  std::map<std::string, std::vector<double>> values;
+};
+
+void noteReason(SummaryLine* line, const std::string& reason) {
+  if (line->first_reason.empty()) line->first_reason = reason;
+}
+
+}  // namespace
+
+double worstOf(const MetricStats& stats, Direction direction) {
+  switch (direction) {
+    case Direction::kLowerIsBetter:
+      return stats.max;
+    case Direction::kHigherIsBetter:
+      return stats.min;
+    case Direction::kNone:
+      return stats.median;
+  }
+  return stats.median;
+}
+
+const MetricStats* SummaryLine::find(const std::string& metric) const {
+  const auto it = stats.find(metric);
+  return it == stats.end() ? nullptr : &it->second;
+}
+
+MeasureSummary summarizeMeasure(const Results& results, const std::string& measure,
+                                SummaryGrouping grouping, const std::vector<std::string>& metrics) {
+  MeasureSummary summary;
+  summary.measure = measure;
+  summary.declaration = results.findMeasure(measure);
+  summary.metrics = metrics;
+  if (summary.metrics.empty() && summary.declaration != nullptr) {
+    summary.metrics = summary.declaration->headline;
+  }
+  const bool every_metric = summary.metrics.empty();
+  const RowScope scope =
+      summary.declaration != nullptr ? summary.declaration->summary_scope : RowScope{};
+
+  std::vector<LineValues> lines;
+  std::map<std::tuple<std::string, std::string, std::string>, size_t> line_index;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure) continue;
+      const std::string asset = grouping == SummaryGrouping::kPerAsset ? record.asset : "";
+      const auto key = std::make_tuple(record.technique, record.variant, asset);
+      auto [it, added] = line_index.emplace(key, lines.size());
+      if (added) {
+        lines.emplace_back();
+        lines.back().line.technique = record.technique;
+        lines.back().line.variant = record.variant;
+        lines.back().line.asset = asset;
+      }
+      LineValues& target = lines[it->second];
+      if (m.status != MeasureStatus::kOk) {
+        (m.status == MeasureStatus::kSkipped ? target.line.skipped_rows : target.line.failed_rows)++;
+        noteReason(&target.line, m.reason);
+        continue;
+      }
+      for (const MetricRow& row : m.rows) {
+        if (row.status != MeasureStatus::kOk) {
+          (row.status == MeasureStatus::kSkipped ? target.line.skipped_rows
+                                                 : target.line.failed_rows)++;
+          noteReason(&target.line, row.reason);
+          continue;
+        }
+        if (!rowInScope(scope, row.keys)) continue;
+        ++target.line.ok_rows;
+        for (const Metric& metric : row.metrics) {
+          const bool wanted = every_metric || std::find(summary.metrics.begin(), summary.metrics.end(),
+                                                        metric.name) != summary.metrics.end();
+          if (!wanted) continue;
+          if (every_metric && !target.values.contains(metric.name) &&
+              std::find(summary.metrics.begin(), summary.metrics.end(), metric.name) ==
+                  summary.metrics.end()) {
+            summary.metrics.push_back(metric.name);
+          }
+          target.values[metric.name].push_back(metric.value);
+        }
+      }
+    }
+  }
+  for (LineValues& values : lines) {
+    for (auto& [name, list] : values.values) values.line.stats[name] = statsOf(std::move(list));
+    summary.lines.push_back(std::move(values.line));
+  }
+  return summary;
+}
+
+std::vector<std::string> measureIds(const Results& results) {
+  std::vector<std::string> ids;
+  for (const MeasureDeclaration& declaration : results.measures) ids.push_back(declaration.measure);
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (std::find(ids.begin(), ids.end(), m.measure) == ids.end()) ids.push_back(m.measure);
+    }
+  }
+  return ids;
+}
+
+std::vector<RunSelection::TechniqueVariants> techniquesOf(const Results& results) {
+  std::vector<RunSelection::TechniqueVariants> techniques = results.context.selection.techniques;
+  for (const Record& record : results.records) {
+    auto it = std::find_if(techniques.begin(), techniques.end(),
+                           [&](const auto& t) { return t.technique == record.technique; });
+    if (it == techniques.end()) {
+      techniques.push_back({record.technique, {}});
+      it = techniques.end() - 1;
+    }
+    if (std::find(it->variants.begin(), it->variants.end(), record.variant) == it->variants.end()) {
+      it->variants.push_back(record.variant);
+    }
+  }
+  return techniques;
+}
+
+Direction directionOf(const Results& results, const std::string& measure,
+                      const std::string& metric) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  const MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
+  return spec != nullptr ? spec->direction : Direction::kNone;
+}
+
+std::string unitOf(const Results& results, const std::string& measure, const std::string& metric) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  const MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
+  return spec != nullptr ? std::string(toString(spec->unit)) : std::string();
+}
+
+}  // namespace tb
