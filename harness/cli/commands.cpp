@@ -9,12 +9,14 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "harness/cli/progress_estimate.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
 #include "core/mesh/input_error.h"
+#include "harness/report/csv_tables.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
@@ -161,15 +163,18 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   // fails removes it, a killed one leaves it marked unfinished (run_folder.h).
   PendingRunFolder folder = PendingRunFolder::forRun(args.out, args.run_id);
   Results results;
-  // On a terminal the progress line rewrites itself; in a log, one line per step.
+  // On a terminal the progress line rewrites itself; in a log, one line per step; each
+  // with the time left as estimated from the steps so far (progress_estimate.h).
   const bool terminal = isatty(fileno(stderr)) != 0;
+  ProgressEstimate estimate;
   const ProgressFn progress = [&](size_t done, size_t total, const std::string& label) {
     if (args.quiet) return;
+    const std::string left = estimate.remainingText(done, total);
     if (terminal) {
-      std::fprintf(stderr, "\r[%zu/%zu] %-60.60s", done, total, label.c_str());
+      std::fprintf(stderr, "\r[%zu/%zu %s] %-56.56s", done, total, left.c_str(), label.c_str());
       if (done == total) std::fprintf(stderr, "\n");
     } else {
-      std::fprintf(stderr, "[%zu/%zu] %s\n", done, total, label.c_str());
+      std::fprintf(stderr, "[%zu/%zu %s] %s\n", done, total, left.c_str(), label.c_str());
     }
   };
   SuiteTimings timings;
@@ -190,6 +195,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
   folder.writeFile("report.md", renderMarkdown(results));
+  for (const auto& [name, text] : renderCsvTables(results)) folder.writeFile(name, text);
   folder.writeFile("timings.json", timingsJson(timings));
   folder.writeFile("results.json", serializeResults(results));
   const std::string finished = folder.finish();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/mesh/input_error.h"
+#include "harness/report/csv_tables.h"
 #include "harness/report/markdown.h"
 #include "harness/results/merge.h"
 #include "harness/results/results_json.h"
@@ -47,6 +48,7 @@ int runMerge(const MergeArgs& args, const std::string& command_line) {
   merged.context.run_id = folderName(args.out);
   merged.context.command_line = command_line;
   folder.writeFile("report.md", renderMarkdown(merged));
+  for (const auto& [name, text] : renderCsvTables(merged)) folder.writeFile(name, text);
   folder.writeFile("results.json", serializeResults(merged));
   folder.finish();
   if (!args.quiet) {

@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "harness/report/summary.h"
+
 namespace tb {
 namespace {
 
@@ -43,7 +45,7 @@ void appendHeader(std::string* out, const std::vector<std::string>& cells) {
 
 void appendContext(const Results& results, std::string* out) {
   const RunContext& c = results.context;
-  *out += "## Run\n\n";
+  *out += "## Run context\n\n";
   appendHeader(out, {"field", "value"});
   appendRow(out, {"run id", c.run_id});
   appendRow(out, {"date (UTC)", c.date});
@@ -95,12 +97,6 @@ std::string directionLabel(Direction direction) {
   }
   return "";
 }
-
-// Rows that carry this key are a measure's summary (e.g. adaptivity's triangles at 1 px):
-// rendered first, in their own table, before the declaration and the detail rows.
-constexpr const char* kSummaryRowKey = "summary";
-
-bool isSummaryRow(const MetricRow& row) { return row.keys.contains(kSummaryRowKey); }
 
 using RowFilter = bool (*)(const MetricRow&);
 
@@ -251,18 +247,6 @@ void appendTable(const Results& results, const std::string& measure_id,
   *out += "\n";
 }
 
-bool anyRow(const Results& results, const std::string& measure_id, RowFilter filter) {
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
-      if (m.measure != measure_id) continue;
-      for (const MetricRow& row : m.rows) {
-        if (filter(row)) return true;
-      }
-    }
-  }
-  return false;
-}
-
 size_t countRows(const Results& results, const std::string& measure_id, RowFilter filter) {
   size_t count = 0;
   for (const Record& record : results.records) {
@@ -274,30 +258,322 @@ size_t countRows(const Results& results, const std::string& measure_id, RowFilte
   return count;
 }
 
-// Under a summary, more detail rows than this stay in results.json only.
-constexpr size_t kDetailRowsShownUnderSummary = 400;
+// A measure with at most this many rows also gets its detail table in report.md (a small
+// run reads whole); a larger one leaves its rows to tables/<measure>.csv and results.json.
+constexpr size_t kDetailRowsInReport = 40;
 
-// One section per measure: its summary rows first (rows keyed `summary`), then the
-// declaration, then a table of the other rows (left to results.json when a summary
-// aggregates more than kDetailRowsShownUnderSummary of them).
-void appendMeasure(const Results& results, const std::string& measure_id, std::string* out) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure_id);
-  *out += "## Measure: " + measure_id + "\n\n";
-  const RowFilter detail = [](const MetricRow& row) { return !isSummaryRow(row); };
-  const bool summary = anyRow(results, measure_id, isSummaryRow);
-  const size_t detail_rows = countRows(results, measure_id, detail);
-  const bool detail_shown = !summary || detail_rows <= kDetailRowsShownUnderSummary;
-  if (summary) appendTable(results, measure_id, declaration, isSummaryRow, !detail_shown, out);
-  if (declaration != nullptr) appendDeclaration(*declaration, out);
-  if (detail_shown) {
-    appendTable(results, measure_id, declaration, detail, true, out);
-  } else {
-    *out += fmt::format(
-        "The {} detail rows (per frame, policy and the other keys) are in results.json; the "
-        "summary table above aggregates them.\n\n",
-        detail_rows);
+std::string shortSha(const std::string& sha) { return sha.substr(0, 12); }
+
+std::string directionWord(Direction direction) {
+  switch (direction) {
+    case Direction::kLowerIsBetter:
+      return "lower better";
+    case Direction::kHigherIsBetter:
+      return "higher better";
+    case Direction::kNone:
+      return "context";
   }
-  appendRecordNotes(results, measure_id, out);
+  return "";
+}
+
+// "hausdorff (rel_diag, lower better)"
+std::string metricHeader(const Results& results, const std::string& measure,
+                         const std::string& metric) {
+  const std::string unit = unitOf(results, measure, metric);
+  const Direction direction = directionOf(results, measure, metric);
+  std::string header = metric + " (";
+  if (!unit.empty()) header += unit + ", ";
+  return header + directionWord(direction) + ")";
+}
+
+std::string formatFigure(double value, const std::string& unit) {
+  return formatMetricValue(Metric{"", value, unit});
+}
+
+// The first headline metric of a measure: what its matrices and job screens show.
+std::string firstHeadline(const Results& results, const std::string& measure) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  if (declaration != nullptr && !declaration->headline.empty()) return declaration->headline[0];
+  return "";
+}
+
+// Rows of every status for one measure, for the regression screen.
+struct StatusCounts {
+  size_t records = 0;
+  size_t ok = 0;
+  size_t skipped = 0;
+  size_t failed = 0;
+};
+
+StatusCounts countStatuses(const Results& results, const std::string& measure) {
+  StatusCounts counts;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure) continue;
+      ++counts.records;
+      if (m.status != MeasureStatus::kOk) {
+        (m.status == MeasureStatus::kSkipped ? counts.skipped : counts.failed)++;
+        continue;
+      }
+      for (const MetricRow& row : m.rows) {
+        switch (row.status) {
+          case MeasureStatus::kOk:
+            ++counts.ok;
+            break;
+          case MeasureStatus::kSkipped:
+            ++counts.skipped;
+            break;
+          case MeasureStatus::kFailed:
+            ++counts.failed;
+            break;
+        }
+      }
+    }
+  }
+  return counts;
+}
+
+std::string headlineList(const Results& results, const std::string& measure) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  std::string text;
+  if (declaration == nullptr) return text;
+  for (const std::string& metric : declaration->headline) {
+    text += (text.empty() ? "" : ", ") + metric + " (" + unitOf(results, measure, metric) + ", " +
+            directionWord(directionOf(results, measure, metric)) + ")";
+  }
+  return text;
+}
+
+// Job 1: is this run clean, and what to compare it with.
+void appendRegressionScreen(const Results& results, const std::vector<std::string>& measures,
+                            std::string* out) {
+  *out += "## Regression tracking\n\n";
+  *out += "Every row of every measure, by status. `tessbench compare BASE NEW` lists what changed "
+          "against another run (the committed baseline is `results/baseline`), worst first, by "
+          "each metric's declared direction, and exits 1 on a worsened or missing figure.\n\n";
+  appendHeader(out, {"measure", "records", "rows ok", "rows skipped", "rows failed", "headline"});
+  std::vector<std::string> problems;
+  for (const std::string& measure : measures) {
+    const StatusCounts counts = countStatuses(results, measure);
+    appendRow(out, {measure, std::to_string(counts.records), std::to_string(counts.ok),
+                    std::to_string(counts.skipped), std::to_string(counts.failed),
+                    headlineList(results, measure)});
+  }
+  *out += "\n";
+  size_t failed_shown = 0;
+  constexpr size_t kFailuresShown = 10;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      std::string reason = m.status == MeasureStatus::kFailed ? m.reason : "";
+      for (const MetricRow& row : m.rows) {
+        if (reason.empty() && row.status == MeasureStatus::kFailed) reason = row.reason;
+      }
+      if (reason.empty()) continue;
+      if (failed_shown++ < kFailuresShown) {
+        *out += "- failed: " + record.technique + "/" + record.variant + " " + record.asset + " " +
+                m.measure + ": " + reason + "\n";
+      }
+    }
+  }
+  if (failed_shown > kFailuresShown) {
+    *out += fmt::format("- … and {} more failures (status column of tables/*.csv)\n",
+                        failed_shown - kFailuresShown);
+  }
+  if (failed_shown > 0) *out += "\n";
+}
+
+// The best technique × variant of one asset by one metric: its worst value over the rows.
+struct Best {
+  std::string who;
+  double value = 0;
+  bool found = false;
+};
+
+// Job 2: per asset, which technique × variant wins each measure's first headline figure.
+void appendChoiceScreen(const Results& results, const std::vector<std::string>& measures,
+                        std::string* out) {
+  *out += "## Choosing a technique per asset\n\n";
+  *out += "Per asset, the technique/variant with the best value of each measure's first headline "
+          "figure, taking each candidate's worst value over its levels, spacings, backends and "
+          "frames (ties: the first in run order). `tessbench advise ASSET` ranks every candidate "
+          "under constraints (error, memory, watertightness, instructions).\n\n";
+  std::vector<std::string> shown;
+  std::vector<std::string> header{"asset"};
+  std::vector<std::map<std::string, Best>> best_per_measure;
+  for (const std::string& measure : measures) {
+    const std::string metric = firstHeadline(results, measure);
+    if (metric.empty()) continue;
+    const Direction direction = directionOf(results, measure, metric);
+    const MeasureSummary summary =
+        summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
+    std::map<std::string, Best> best;
+    for (const SummaryLine& line : summary.lines) {
+      const MetricStats* stats = line.find(metric);
+      if (stats == nullptr) continue;
+      const double value = worstOf(*stats, direction);
+      Best& current = best[line.asset];
+      const bool better = !current.found ||
+                          (direction == Direction::kHigherIsBetter ? value > current.value
+                                                                   : value < current.value);
+      if (better) current = {line.technique + "/" + line.variant, value, true};
+    }
+    shown.push_back(measure);
+    header.push_back(measure + ": " + metricHeader(results, measure, metric));
+    best_per_measure.push_back(std::move(best));
+  }
+  appendHeader(out, header);
+  for (const AssetSummary& asset : results.assets) {
+    std::vector<std::string> cells{asset.name};
+    for (size_t i = 0; i < shown.size(); ++i) {
+      const auto it = best_per_measure[i].find(asset.name);
+      if (it == best_per_measure[i].end()) {
+        cells.push_back("—");
+        continue;
+      }
+      const std::string unit = unitOf(results, shown[i], firstHeadline(results, shown[i]));
+      cells.push_back(it->second.who + " " + formatFigure(it->second.value, unit));
+    }
+    appendRow(out, cells);
+  }
+  *out += "\n";
+}
+
+// Job 3: one line per technique × variant, each measure's first headline figure over every
+// asset: median (worst).
+void appendPublishingScreen(const Results& results, const std::vector<std::string>& measures,
+                            std::string* out) {
+  *out += "## Publishing tables\n\n";
+  *out += "Per technique and variant, each measure's first headline figure over every asset and "
+          "row: median (worst). `tessbench table RUN --measure M --format markdown|csv|latex` "
+          "renders one measure's summary with units and this run's context, ready to publish.\n\n";
+  std::vector<std::string> header{"technique", "variant"};
+  std::vector<MeasureSummary> summaries;
+  std::vector<std::string> metrics;
+  for (const std::string& measure : measures) {
+    const std::string metric = firstHeadline(results, measure);
+    if (metric.empty()) continue;
+    summaries.push_back(
+        summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric}));
+    metrics.push_back(metric);
+    header.push_back(measure + ": " + metricHeader(results, measure, metric));
+  }
+  appendHeader(out, header);
+  for (const auto& technique : techniquesOf(results)) {
+    for (const std::string& variant : technique.variants) {
+      std::vector<std::string> cells{technique.technique, variant};
+      bool any = false;
+      for (size_t i = 0; i < summaries.size(); ++i) {
+        std::string cell = "—";
+        for (const SummaryLine& line : summaries[i].lines) {
+          if (line.technique != technique.technique || line.variant != variant) continue;
+          const MetricStats* stats = line.find(metrics[i]);
+          if (stats == nullptr) break;
+          const std::string unit = unitOf(results, summaries[i].measure, metrics[i]);
+          const Direction direction = directionOf(results, summaries[i].measure, metrics[i]);
+          cell = formatFigure(stats->median, unit) + " (" +
+                 formatFigure(worstOf(*stats, direction), unit) + ")";
+          any = true;
+        }
+        cells.push_back(cell);
+      }
+      if (any) appendRow(out, cells);
+    }
+  }
+  *out += "\n";
+}
+
+// A measure's technique × asset matrix: each technique's default variant (its first), the
+// worst value of the first headline metric over the rows; "n/a" where the technique does
+// not take the asset, "—" where the measure did not run.
+void appendMatrix(const Results& results, const std::string& measure, std::string* out) {
+  const std::string metric = firstHeadline(results, measure);
+  if (metric.empty()) return;
+  const Direction direction = directionOf(results, measure, metric);
+  const std::string unit = unitOf(results, measure, metric);
+  const MeasureSummary summary =
+      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
+  const auto techniques = techniquesOf(results);
+  *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
+  std::vector<std::string> header{"asset"};
+  for (const auto& technique : techniques) {
+    header.push_back(technique.technique +
+                     (technique.variants.empty() ? "" : "/" + technique.variants.front()));
+  }
+  appendHeader(out, header);
+  for (const AssetSummary& asset : results.assets) {
+    std::vector<std::string> cells{asset.name};
+    for (const auto& technique : techniques) {
+      std::string cell = "—";
+      const bool unsupported = std::any_of(
+          results.skipped.begin(), results.skipped.end(), [&](const Skip& skip) {
+            return skip.technique == technique.technique && skip.asset == asset.name;
+          });
+      if (unsupported) cell = "n/a";
+      for (const SummaryLine& line : summary.lines) {
+        if (line.technique != technique.technique || line.asset != asset.name ||
+            technique.variants.empty() || line.variant != technique.variants.front()) {
+          continue;
+        }
+        if (const MetricStats* stats = line.find(metric)) {
+          cell = formatFigure(worstOf(*stats, direction), unit);
+        } else if (line.skipped_rows + line.failed_rows > 0) {
+          cell = line.failed_rows > 0 ? "failed" : "skipped";
+        }
+      }
+      cells.push_back(cell);
+    }
+    appendRow(out, cells);
+  }
+  *out += "\n";
+}
+
+// A measure's section: its declaration, then one line per technique × variant over every
+// asset, each headline metric as median / worst; the rows themselves only when few.
+void appendMeasureSection(const Results& results, const std::string& measure, std::string* out) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  *out += "### " + measure + "\n\n";
+  if (declaration != nullptr) appendDeclaration(*declaration, out);
+  if (declaration != nullptr && !declaration->summary_scope.empty()) {
+    std::string scope;
+    for (const auto& [key, value] : declaration->summary_scope) {
+      scope += (scope.empty() ? "" : ", ") + key + " = " + value;
+    }
+    *out += "Summaries read the rows with " + scope + ".\n\n";
+  }
+  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets);
+  std::vector<std::string> header{"technique", "variant", "rows"};
+  for (const std::string& metric : summary.metrics) {
+    header.push_back(metricHeader(results, measure, metric) + " median / worst");
+  }
+  header.push_back("not measured");
+  appendHeader(out, header);
+  for (const SummaryLine& line : summary.lines) {
+    std::vector<std::string> cells{line.technique, line.variant, std::to_string(line.ok_rows)};
+    for (const std::string& metric : summary.metrics) {
+      const MetricStats* stats = line.find(metric);
+      if (stats == nullptr) {
+        cells.push_back("—");
+        continue;
+      }
+      const std::string unit = unitOf(results, measure, metric);
+      cells.push_back(formatFigure(stats->median, unit) + " / " +
+                      formatFigure(worstOf(*stats, directionOf(results, measure, metric)), unit));
+    }
+    std::string status;
+    if (line.skipped_rows > 0) status += fmt::format("{} skipped", line.skipped_rows);
+    if (line.failed_rows > 0) status += fmt::format("{}{} failed", status.empty() ? "" : ", ", line.failed_rows);
+    if (!status.empty()) status += ": " + line.first_reason;
+    cells.push_back(status);
+    appendRow(out, cells);
+  }
+  *out += "\n";
+  const size_t rows = countRows(results, measure, [](const MetricRow&) { return true; });
+  if (rows <= kDetailRowsInReport) {
+    appendTable(results, measure, declaration, [](const MetricRow&) { return true; }, true, out);
+    appendRecordNotes(results, measure, out);
+  } else {
+    *out += fmt::format("Every row ({}): `tables/{}.csv` and results.json.\n\n", rows, measure);
+  }
 }
 
 }  // namespace
@@ -322,21 +598,31 @@ std::string formatMetricValue(const Metric& metric) {
 }
 
 std::string renderMarkdown(const Results& results) {
+  const RunContext& c = results.context;
+  const std::vector<std::string> measures = measureIds(results);
+  size_t variants = 0;
+  for (const auto& technique : techniquesOf(results)) variants += technique.variants.size();
   std::string out = "# tessbench report\n\n";
-  out += "Rendered from results.json (schema " + std::to_string(results.schema_version) +
-         "). Every figure below is measured by this run.\n\n";
+  out += fmt::format(
+      "Run `{}` of {} · git {} · {} · suite {} · {} records ({} technique variants × {} "
+      "assets), {} technique × asset pairs not measured. Every figure is measured by this run; "
+      "every row is in `results.json` (schema {}) and `tables/<measure>.csv`, the charts and "
+      "pictures in `report.html`.\n\n",
+      c.run_id, c.date, shortSha(c.git_sha),
+      c.vulkan_device.empty() ? "no Vulkan device" : c.vulkan_device,
+      c.selection.suite.empty() ? "default" : c.selection.suite, results.records.size(), variants,
+      results.assets.size(), results.skipped.size(), results.schema_version);
+  appendRegressionScreen(results, measures, &out);
+  appendChoiceScreen(results, measures, &out);
+  appendPublishingScreen(results, measures, &out);
+  out += "## Technique × asset matrices\n\n";
+  out += "Each technique's default variant (its first); the worst value over the rows of the "
+         "measure's summary scope. n/a: the technique does not take the asset; —: not run.\n\n";
+  for (const std::string& measure : measures) appendMatrix(results, measure, &out);
+  out += "## Measures\n\n";
+  for (const std::string& measure : measures) appendMeasureSection(results, measure, &out);
   appendContext(results, &out);
   appendAssets(results, &out);
-  std::vector<std::string> measure_ids;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
-      if (std::find(measure_ids.begin(), measure_ids.end(), m.measure) == measure_ids.end()) {
-        measure_ids.push_back(m.measure);
-      }
-    }
-  }
-  std::sort(measure_ids.begin(), measure_ids.end());
-  for (const std::string& id : measure_ids) appendMeasure(results, id, &out);
   if (!results.skipped.empty()) {
     out += "## Not measured\n\n";
     appendHeader(&out, {"technique", "asset", "reason"});
@@ -344,15 +630,26 @@ std::string renderMarkdown(const Results& results) {
       appendRow(&out, {skip.technique, skip.asset, skip.reason});
     out += "\n";
   }
-  bool any_warning = false;
+  size_t warnings = 0;
+  size_t records_warned = 0;
   for (const Record& record : results.records) {
-    for (const std::string& warning : record.warnings) {
-      if (!any_warning) {
-        out += "## Warnings\n\n";
-        any_warning = true;
+    warnings += record.warnings.size();
+    records_warned += record.warnings.empty() ? 0 : 1;
+  }
+  if (warnings > 0) {
+    out += "## Warnings\n\n";
+    constexpr size_t kWarningsShown = 10;
+    if (warnings <= kWarningsShown) {
+      for (const Record& record : results.records) {
+        for (const std::string& warning : record.warnings) {
+          out += "- " + record.technique + "/" + record.variant + " on " + record.asset + ": " +
+                 warning + "\n";
+        }
       }
-      out += "- " + record.technique + "/" + record.variant + " on " + record.asset + ": " +
-             warning + "\n";
+    } else {
+      out += fmt::format("{} warnings on {} records (patch statistics and notes of the input): "
+                         "`tables/warnings.csv`.\n",
+                         warnings, records_warned);
     }
   }
   return out;

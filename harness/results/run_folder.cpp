@@ -198,6 +198,16 @@ void PendingRunFolder::journal(const std::string& line) {
 }
 
 void PendingRunFolder::writeFile(const std::string& name, const std::string& contents) {
+  // A name with folders ("tables/cracks.csv") gets them made inside the run folder.
+  const fs::path parent = fs::path(name).parent_path();
+  if (!parent.empty()) {
+    std::error_code error;
+    fs::create_directories(fs::path(pending_path_) / parent, error);
+    if (error) {
+      throw std::runtime_error(pending_path_ + "/" + parent.string() + ": cannot create (" +
+                               error.message() + ")");
+    }
+  }
   writeNewFile(pending_path_ + "/" + name, contents);
 }
 

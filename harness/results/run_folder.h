@@ -43,7 +43,8 @@ class PendingRunFolder {
   // Appends one line (a record's JSON, no newline inside) to the journal. Callers
   // serialise calls. Throws naming the journal when the write fails (e.g. no space).
   void journal(const std::string& line);
-  // Writes `<pending>/<name>`, which must not exist yet.
+  // Writes `<pending>/<name>`, which must not exist yet; folders in `name` ("tables/x.csv")
+  // are made.
   void writeFile(const std::string& name, const std::string& contents);
   // Removes the journal and the marker and renames the folder to finalPath(), refusing to
   // replace a folder that appeared there meanwhile. Returns finalPath().

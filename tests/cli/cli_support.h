@@ -11,7 +11,34 @@
 #include <iterator>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace tb::testing {
+
+// A measure's rows from results.json (schema 4: "keys" and "metrics" name the columns,
+// each row is [[key values], [metric values]] plus status and reason when not ok) as
+// objects: {"keys": {name: value}, "metrics": {name: value}, "status", "reason"}; absent
+// keys and metrics are left out, ok rows have no status.
+inline nlohmann::json rowObjects(const nlohmann::json& measure) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& line : measure["rows"]) {
+    nlohmann::json row{{"keys", nlohmann::json::object()}, {"metrics", nlohmann::json::object()}};
+    for (size_t k = 0; k < measure["keys"].size(); ++k) {
+      if (!line[0][k].is_null()) row["keys"][measure["keys"][k].get<std::string>()] = line[0][k];
+    }
+    for (size_t m = 0; m < measure["metrics"].size(); ++m) {
+      if (!line[1][m].is_null()) {
+        row["metrics"][measure["metrics"][m].get<std::string>()] = line[1][m];
+      }
+    }
+    if (line.size() == 4) {
+      row["status"] = line[2];
+      row["reason"] = line[3];
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
 
 struct CommandResult {
   int exit_code = -1;

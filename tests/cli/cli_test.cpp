@@ -83,7 +83,7 @@ TEST(Cli, ErrorMeasureReportsEveryTriangleAsset) {
     with_error += measure["rows"].size() == 1;
   }
   EXPECT_EQ(with_error, 10u);  // 5 variants (4 α values and `edge`) x 2 assets
-  EXPECT_NE(readFile(dir / "e" / "report.md").find("## Measure: error"), std::string::npos);
+  EXPECT_NE(readFile(dir / "e" / "report.md").find("### error\n"), std::string::npos);
 }
 
 // Oracle: lavapipe's own tessellator. Both backends must give the same points and the
@@ -203,7 +203,7 @@ TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {
   const size_t assets = json["assets"].size();
   EXPECT_EQ(phong_assets, (std::map<std::string, size_t>{{"alpha0.75", assets}, {"edge", assets}}));
   const std::string report = readFile(dir / "only" / "report.md");
-  EXPECT_NE(report.find("## Measure: memory"), std::string::npos);
+  EXPECT_NE(report.find("### memory\n"), std::string::npos);
   // The same run id again is refused, and the first results stay.
   const CommandResult again =
       runTessbench("run --quiet --measure memory --run-id only --out " + dir.string());

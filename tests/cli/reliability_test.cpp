@@ -245,7 +245,7 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
       for (const auto& note : measure["notes"]) {
         EXPECT_EQ(note.get<std::string>().find("skipped"), std::string::npos) << id << ": " << note;
       }
-      for (const auto& row : measure["rows"]) {
+      for (const auto& row : testing::rowObjects(measure)) {
         const std::string note = row["keys"].value("note", "");
         EXPECT_EQ(note.find("skipped"), std::string::npos) << id << " " << row["keys"].dump();
         EXPECT_EQ(note.find("failed"), std::string::npos) << id << " " << row["keys"].dump();
@@ -354,7 +354,7 @@ TEST(PluginFailure, AMissingShaderFailsTheGpuRowsNamingIt) {
       << r.err;
   const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
   size_t cpu_ok = 0, gpu_failed = 0;
-  for (const auto& row : json["records"][0]["measures"][0]["rows"]) {
+  for (const auto& row : testing::rowObjects(json["records"][0]["measures"][0])) {
     if (row["keys"]["backend"] == "gpu") {
       gpu_failed += row.value("status", "") == "failed";
     } else {

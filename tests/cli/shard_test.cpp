@@ -104,7 +104,7 @@ TEST(ShardCli, ThreeShardsMergeIntoTheUnshardedRunByteForByte) {
   EXPECT_EQ(context["selection"], full["context"]["selection"]);
   const std::string report = readFile(dir / "merged" / "report.md");
   EXPECT_NE(report.find("merged from shard 2/3"), std::string::npos);
-  EXPECT_NE(report.find("## Measure: error"), std::string::npos);
+  EXPECT_NE(report.find("### error\n"), std::string::npos);
 }
 
 TEST(ShardCli, OneShardMergesIntoTheUnshardedRun) {

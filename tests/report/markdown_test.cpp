@@ -17,7 +17,8 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
   const std::string md = renderMarkdown(results);
-  EXPECT_NE(md.find("## Measure: memory"), std::string::npos);
+  EXPECT_NE(md.find("### memory"), std::string::npos);
+  // A small measure also shows its rows.
   EXPECT_NE(md.find("| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
             std::string::npos)
       << md;
@@ -28,33 +29,75 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
   EXPECT_NE(md.find("12 polygons split"), std::string::npos);
 }
 
-// Rows keyed `summary` open the measure's section in their own table, with only their
-// metrics; the other rows follow the declaration without the summary's columns.
-TEST(Markdown, SummaryRowsComeFirstInTheirOwnTable) {
+// A run's figures for the summary tests: `assets` × {acc/default, acc/fast}, a measure
+// "error" with 3 rows per record (levels), hausdorff = base × (level index + 1).
+Results summaryResults(size_t assets, size_t levels) {
   Results results;
-  MeasureDeclaration adaptivity{"adaptivity", "Adaptivity", "d", {}, {"ratio"}, {"a fixed note"}};
-  adaptivity.metrics = {{"ratio", Unit::kRatio, Direction::kLowerIsBetter},
-                        {"triangles", Unit::kCount, Direction::kLowerIsBetter}};
-  results.measures.push_back(adaptivity);
-  Record record{"acc", "default", "opensubdiv/catmark_cube", {}, {}, {}};
-  MeasureResult m;
-  m.measure = "adaptivity";
-  m.rows.push_back({{{"frame", "0"}, {"policy", "p"}}, {{"triangles", 100, "count"}}});
-  m.rows.push_back({{{"policy", "p"}, {"summary", "max_error_1px"}}, {{"ratio", 0.25, "ratio"}}});
-  record.measures.push_back(m);
-  results.records.push_back(record);
-  const std::string md = renderMarkdown(results);
-  const size_t section = md.find("## Measure: adaptivity\n\n");
-  ASSERT_NE(section, std::string::npos);
-  const std::string summary_header =
-      "| technique | variant | asset | policy | summary | status | ratio (ratio, lower better) |";
-  EXPECT_EQ(md.find(summary_header), section + std::string("## Measure: adaptivity\n\n").size())
-      << md;
-  EXPECT_LT(md.find(summary_header), md.find("a fixed note"));
-  EXPECT_NE(md.find("| technique | variant | asset | frame | policy | status | triangles (count, "
-                    "lower better) |"),
-            std::string::npos)
-      << md;
+  MeasureDeclaration error{"error", "Error", "d", {}, {"hausdorff"}, {"a fixed note"}};
+  error.metrics = {{"hausdorff", Unit::kDiagonal, Direction::kLowerIsBetter},
+                   {"samples", Unit::kCount, Direction::kNone}};
+  results.measures.push_back(error);
+  results.context.selection.techniques = {{"acc", {"default", "fast"}}, {"pn", {"pn"}}};
+  for (size_t a = 0; a < assets; ++a) {
+    const std::string asset = "asset" + std::to_string(a);
+    results.assets.push_back({asset, "", 1, 4, "quads", false});
+    results.skipped.push_back({"pn", asset, "pn: needs triangles"});
+    for (const char* variant : {"default", "fast"}) {
+      Record record{"acc", variant, asset, {}, {}, {}};
+      MeasureResult m;
+      m.measure = "error";
+      const double base = std::string(variant) == "fast" ? 0.5 : 0.25;
+      for (size_t level = 0; level < levels; ++level) {
+        m.rows.push_back({{{"level", std::to_string(level)}},
+                          {{"hausdorff", base * static_cast<double>(level + 1), "rel_diag"},
+                           {"samples", 81, "count"}}});
+      }
+      record.measures.push_back(m);
+      results.records.push_back(record);
+    }
+  }
+  return results;
+}
+
+// report.md opens with the three jobs (regression, choice, publishing), then the matrices,
+// then the measures; the run context and assets come last.
+TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
+  const std::string md = renderMarkdown(summaryResults(2, 3));
+  const size_t regression = md.find("## Regression tracking");
+  const size_t choice = md.find("## Choosing a technique per asset");
+  const size_t publishing = md.find("## Publishing tables");
+  const size_t matrices = md.find("## Technique × asset matrices");
+  const size_t measures = md.find("## Measures");
+  const size_t context = md.find("## Run context");
+  ASSERT_NE(regression, std::string::npos) << md;
+  EXPECT_LT(regression, choice);
+  EXPECT_LT(choice, publishing);
+  EXPECT_LT(publishing, matrices);
+  EXPECT_LT(matrices, measures);
+  EXPECT_LT(measures, context);
+  // Choice: the lower-is-better winner with its worst value over the levels (0.25 × 3).
+  EXPECT_NE(md.find("| asset0 | acc/default 0.75 |"), std::string::npos) << md;
+  // Publishing: median (worst) over assets and levels of each variant.
+  EXPECT_NE(md.find("| acc | fast | 1 (1.5) |"), std::string::npos) << md;
+  // Matrix: the default variant; n/a where the technique does not take the asset.
+  EXPECT_NE(md.find("| asset1 | 0.75 | n/a |"), std::string::npos) << md;
+  // Measure section: median / worst per technique × variant.
+  EXPECT_NE(md.find("| acc | default | 6 | 0.5 / 0.75 |"), std::string::npos) << md;
+}
+
+// A measure with many rows leaves them to tables/<measure>.csv; report.md stays short
+// however many rows there are.
+TEST(Markdown, ManyRowsGoToCsvNotToTheReport) {
+  const Results small = summaryResults(2, 3);
+  const Results large = summaryResults(2, 400);
+  const auto lines = [](const std::string& text) {
+    return std::count(text.begin(), text.end(), '\n');
+  };
+  EXPECT_NE(renderMarkdown(small).find("| acc | default | asset0 | 2 | ok |"), std::string::npos);
+  const std::string md = renderMarkdown(large);
+  EXPECT_EQ(md.find("| acc | default | asset0 | 2 | ok |"), std::string::npos);
+  EXPECT_NE(md.find("Every row (1600): `tables/error.csv`"), std::string::npos) << md;
+  EXPECT_LT(lines(md), 100) << md;
 }
 
 TEST(Markdown, SkippedMeasureShowsItsReason) {

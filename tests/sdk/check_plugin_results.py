@@ -24,13 +24,22 @@ for record in records:
 def rows(measure_id):
     if measure_id not in measures:
         fail(f"measure {measure_id} did not run (ran: {sorted(measures)})")
-    return measures[measure_id]["rows"]
+    # results.json schema 4: "keys" and "metrics" name the columns once; a row is
+    # [[key values], [metric values]] (null when absent), then status and reason when not ok.
+    measure = measures[measure_id]
+    objects = []
+    for line in measure["rows"]:
+        row = {"keys": {k: v for k, v in zip(measure["keys"], line[0]) if v is not None},
+               "metrics": {m: v for m, v in zip(measure["metrics"], line[1]) if v is not None}}
+        if len(line) == 4:
+            row["status"], row["reason"] = line[2], line[3]
+        objects.append(row)
+    return objects
 
 
 def metric(row, name):
-    for m in row["metrics"]:
-        if m["name"] == name:
-            return m["value"]
+    if name in row["metrics"]:
+        return row["metrics"][name]
     fail(f"row {row['keys']} has no {name}")
 
 
