@@ -23,7 +23,7 @@ namespace {
 
 // Quad techniques on a quad mesh with extraordinary vertices and a triangle technique on
 // a triangle mesh with them: between them every measure has a technique it runs on (acc
-// for seed_figures, which needs the technique's probe shader).
+// for published_figures, which needs the technique's probe shader).
 struct Case {
   const char* technique;
   const char* asset;

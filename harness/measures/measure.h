@@ -70,7 +70,7 @@ inline const char* toString(SuiteMode mode) {
 
 // Which variants of a technique a measure runs on, on an asset it applies to.
 enum class VariantPolicy : uint8_t {
-  kDefaultOnly,   // the figures are the same for every variant (seed_figures)
+  kDefaultOnly,   // the figures are the same for every variant (published_figures)
   kEveryVariant,  // the figures follow the variant (errors, cracks, instruction counts)
   // The figures follow the patch data alone (memory): the default variant, and each other
   // variant whose SurfacePatches::footprint() differs from the default's on the asset
@@ -85,7 +85,7 @@ enum class VariantPolicy : uint8_t {
 struct MeasureRequirements {
   std::vector<MeasureNeed> needs;
   VariantPolicy variants = VariantPolicy::kDefaultOnly;
-  // Narrows the techniques further when the needs alone do not say it (seed_figures needs
+  // Narrows the techniques further when the needs alone do not say it (published_figures needs
   // the technique's own probe shader); empty: every technique whose instances meet the needs.
   std::function<bool(const Technique&)> technique_filter;
   bool has(MeasureNeed need) const {

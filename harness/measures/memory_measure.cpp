@@ -92,7 +92,7 @@ class MemoryMeasure final : public Measure {
              std::to_string(kCompressChunkPatches) +
              " patches in patch order (the whole mesh below that; points on an edge between "
              "chunks stored in each), sizes summed",
-         "seed 000's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
+         "NVIDIA's displacement subdivision surfaces talk's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
          "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
          "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
          "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "

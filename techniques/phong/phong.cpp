@@ -240,7 +240,7 @@ std::vector<VariantInfo> PhongTechnique::variants() const {
       {"alpha0.5", "shape factor 0.5", {{"alpha", 0.5}}},
       {"alpha1", "shape factor 1: full projection", {{"alpha", 1.0}}},
       {"edge",
-       "seed 003's per-edge extension (α = 0.75): edge curves from per-edge normals, "
+       "the per-edge extension of CAPCOM's Lost Planet 2 DirectX 11 talk (α = 0.75): edge curves from per-edge normals, "
        "geometry normals on split edges",
        {{"alpha", 0.75}, {"edge", 1.0}}},
   };

@@ -108,7 +108,7 @@ const TechniqueInfo& PnTrianglesTechnique::info() const {
   static const TechniqueInfo kInfo{
       "pn_triangles", TechniqueFamily::kSurface, "Curved PN triangles",
       "Vlachos, Peters, Boyd, Mitchell, Curved PN Triangles, I3D 2001; crack fixes from "
-      "Lost Planet 2 (seed 003); PN-AEN: McDonald & Kilgard, NVIDIA 2010",
+      "CAPCOM's \"Lost Planet 2: DirectX 11 Features\" talk; PN-AEN: McDonald & Kilgard, NVIDIA 2010",
       "triangle meshes with vertex normals; polygons are fan-triangulated; missing normals are "
       "computed"};
   return kInfo;
@@ -118,14 +118,14 @@ std::vector<VariantInfo> PnTrianglesTechnique::variants() const {
   return {
       {"pn", "plain PN triangles (shading normals build the geometry)", {}},
       {"geometry_normals",
-       "seed 003: a shared geometry normal per position on split edges (edge flags)",
+       "Lost Planet 2 talk: a shared geometry normal per position on split edges (edge flags)",
        {{"geometry_normals", 1}}},
       {"boundary_flags",
-       "geometry_normals + seed 003's boundary flags: unshared edges stay straight",
+       "geometry_normals + the Lost Planet 2 talk's boundary flags: unshared edges stay straight",
        {{"geometry_normals", 1}, {"boundary_flags", 1}}},
       {"aen", "PN-AEN: edge points averaged with the adjacent face's normals", {{"aen", 1}}},
       {"rounding",
-       "geometry_normals + seed 003's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C / L), "
+       "geometry_normals + the Lost Planet 2 talk's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C / L), "
        "C = 4 mean edge lengths",
        {{"geometry_normals", 1}, {"rounding", kDefaultRounding}}},
   };

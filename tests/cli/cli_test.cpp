@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "tests/cli/cli_support.h"
 #include "tests/test_support.h"
@@ -209,6 +210,42 @@ TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {
       runTessbench("run --quiet --measure memory --run-id only --out " + dir.string());
   EXPECT_NE(again.exit_code, 0);
   EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
+}
+
+}  // namespace
+}  // namespace tb
+
+namespace tb {
+namespace {
+
+using testing::CommandResult;
+using testing::readFile;
+using testing::runTessbench;
+
+// What a reader sees cites sources by published title and author, never by the project's
+// internal seed numbers ("seed 000"), which mean nothing in a published table.
+TEST(Cli, ReaderVisibleTextCitesSourcesNotSeedNumbers) {
+  const auto dir = testing::scratchDirectory("cli_citations");
+  std::string seen;
+  for (const char* command :
+       {"--help", "list techniques --json", "list measures --json", "run --help",
+        "report --help", "compare --help", "merge --help", "tessellate --help"}) {
+    const CommandResult r = runTessbench(command);
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.output;
+    seen += r.output;
+  }
+  const CommandResult run = runTessbench(
+      "run --quiet --technique acc --technique pn_triangles --asset catmark_cube --measure "
+      "published_figures --measure memory --run-id c --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  seen += readFile(dir / "c" / "report.md");
+  EXPECT_NE(seen.find("SubD10"), std::string::npos) << "the published figures are cited";
+  EXPECT_NE(seen.find("Lost Planet 2"), std::string::npos);
+  const std::regex seed_number("seed[ _-]?0[0-9][0-9]", std::regex::icase);
+  std::smatch match;
+  EXPECT_FALSE(std::regex_search(seen, match, seed_number))
+      << "'" << match.str() << "' near: "
+      << seen.substr(static_cast<size_t>(std::max<long>(0, match.position() - 80)), 200);
 }
 
 }  // namespace

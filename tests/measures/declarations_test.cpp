@@ -25,7 +25,7 @@ bool isSnakeCase(const std::string& name) {
 
 TEST(Declarations, EveryRegisteredMeasureDeclaresEachMetricOnce) {
   const std::vector<const Measure*> measures = MeasureRegistry::instance().all();
-  ASSERT_GE(measures.size(), 5u);  // cracks, error, instructions, memory, seed_figures
+  ASSERT_GE(measures.size(), 5u);  // cracks, error, instructions, memory, published_figures
   for (const Measure* measure : measures) {
     const MeasureInfo& info = measure->info();
     SCOPED_TRACE(info.id);
@@ -107,7 +107,7 @@ TEST(Declarations, EveryEmittedMetricIsDeclaredWithItsUnit) {
       }
     }
   }
-  for (const char* id : {"cracks", "error", "instructions", "memory", "seed_figures"}) {
+  for (const char* id : {"cracks", "error", "instructions", "memory", "published_figures"}) {
     EXPECT_TRUE(std::any_of(emitted.begin(), emitted.end(),
                             [&](const auto& entry) { return entry.first == id; }))
         << id << " emitted nothing on the small assets";

@@ -174,7 +174,7 @@ TEST(Capabilities, RegisteredMeasuresNeedASurfaceAndSkipASimulation) {
   selection.assets = {resolveAsset("catmark_cube")};
   selection.scenarios = {testing::chainScenario()};
   Results results;
-  runSuite(selection, nullptr, &results);  // every registered measure, seed_figures included
+  runSuite(selection, nullptr, &results);  // every registered measure, published_figures included
   EXPECT_TRUE(results.records.empty());
   EXPECT_TRUE(results.skipped.empty());
 }
@@ -287,13 +287,13 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   EXPECT_EQ(requirements("cracks").variants, VariantPolicy::kEveryVariant);
   EXPECT_EQ(requirements("instructions").variants, VariantPolicy::kEveryVariant);
   EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryVariant);
-  EXPECT_EQ(requirements("seed_figures").variants, VariantPolicy::kDefaultOnly);
+  EXPECT_EQ(requirements("published_figures").variants, VariantPolicy::kDefaultOnly);
   for (const Measure* measure : MeasureRegistry::instance().all()) {
     EXPECT_TRUE(measure->requirements().has(MeasureNeed::kSurface)) << measure->info().id;
   }
-  // seed_figures: only the technique with the probe shader.
+  // published_figures: only the technique with the probe shader.
   const SurfaceDoubleTechnique surface;
-  EXPECT_FALSE(requirements("seed_figures").technique_filter(surface));
+  EXPECT_FALSE(requirements("published_figures").technique_filter(surface));
 }
 
 }  // namespace

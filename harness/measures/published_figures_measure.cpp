@@ -1,9 +1,9 @@
-// The seed talks' published shader costs set beside ours (issue: "reproduce seed 000's
-// comparison of the four Bézier evaluation orders and seed 001's figures").
-//  - seed 000 (NVIDIA, D3D11 hull/domain shaders): bicubic Bézier position evaluation
+// Published shader costs set beside ours: the four Bézier evaluation orders of NVIDIA's
+// displacement subdivision surfaces talk and the DirectX SDK SubD10 sample's ACC figures.
+//  - NVIDIA's talk (D3D11 hull/domain shaders): bicubic Bézier position evaluation
 //    takes 60 (asymmetric), 105 (symmetric, no FMA), 75 (symmetric with FMA) and 69
 //    (symmetric on edges only) instructions.
-//  - seed 001 (D3D10 SubD10 sample): evaluating a regular ACC patch takes 16 loads and
+//  - the DirectX SDK SubD10 sample (D3D10, Loop & Schaefer 2008's ACC): evaluating a regular ACC patch takes 16 loads and
 //    about 73 ALU operations; an extraordinary one up to 24 loads and about 120 ALU.
 // Ours are static SPIR-V counts after spirv-opt -O of the technique's own shaders
 // (harness/measures/instructions.h), specialised for each order. The measure applies to a
@@ -22,12 +22,12 @@
 namespace tb {
 namespace {
 
-struct SeedOrder {
+struct PublishedOrder {
   const char* name;
   uint32_t order;  // specialisation constant 0 of shaders/common/bezier.glsl users
-  double seed_instructions;
+  double published_instructions;
 };
-constexpr std::array<SeedOrder, 4> kSeed000Orders{{
+constexpr std::array<PublishedOrder, 4> kNvidiaTalkOrders{{
     {"asymmetric", 0, 60},
     {"symmetric_nofma", 1, 105},
     {"symmetric_fma", 2, 75},
@@ -38,20 +38,24 @@ constexpr std::array<SeedOrder, 4> kSeed000Orders{{
 // listing counts ALU (a float3 mad is one).
 double alu(const InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
 
+// Where the published figures come from, as a reader's table cites them (row key "source").
+constexpr const char* kNvidiaTalk = "NVIDIA, displacement subdivision surfaces talk (D3D11)";
+constexpr const char* kSubD10 = "DirectX SDK SubD10 sample (Loop & Schaefer 2008 ACC)";
+
 // One row: a published figure beside ours for the same stage.
-struct SeedComparison {
-  double seed_alu = 0;
-  double seed_loads = 0;  // 0: not published
+struct PublishedComparison {
+  double published_alu = 0;
+  double published_loads = 0;  // 0: not published
   StageInstructionCounts ours;
 };
 
-// The seed's figures are context; ours are instruction counts, better lower.
-const MetricTable<SeedComparison>& comparisonTable() {
+// The published figures are context; ours are instruction counts, better lower.
+const MetricTable<PublishedComparison>& comparisonTable() {
   using D = Direction;
-  using S = SeedComparison;
+  using S = PublishedComparison;
   static const MetricTable<S> kTable{
-      {"seed_alu", Unit::kCount, D::kNone, &S::seed_alu},
-      {"seed_loads", Unit::kCount, D::kNone, &S::seed_loads},
+      {"published_alu", Unit::kCount, D::kNone, &S::published_alu},
+      {"published_loads", Unit::kCount, D::kNone, &S::published_loads},
       {"ours_alu_vector", Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return alu(s.ours.vector); }},
       {"ours_alu_scalar", Unit::kCount, D::kLowerIsBetter,
@@ -66,27 +70,28 @@ std::string probePath(const Technique& technique) {
   return technique.info().id + "/bezier_position.tese";
 }
 
-class SeedFiguresMeasure final : public Measure {
+class PublishedFiguresMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "seed_figures",
-        "Shader costs beside the seed talks' published figures",
+        "published_figures",
+        "Shader costs beside published figures",
         "static SPIR-V instruction counts (spirv-opt -O) of the four Bézier evaluation orders "
-        "and of ACC's domain shader, beside seed 000's and seed 001's numbers",
+        "and of ACC's domain shader, beside the numbers of NVIDIA's displacement subdivision "
+        "surfaces talk and of the DirectX SDK SubD10 sample",
         comparisonTable().specs(),
         {"ours_alu_vector", "ours_alu_scalar"},
         {"ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
          "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
          "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
-         "seed_loads 0: not published",
-         "seed 000 counts D3D11 domain-shader instructions of the position evaluation alone; "
+         "published_loads 0: not published",
+         "NVIDIA's displacement subdivision surfaces talk counts D3D11 domain-shader instructions of the position evaluation alone; "
          "ours count shaders/<technique>/bezier_position.tese (the same evaluation, nothing "
          "else). Compare increments over asymmetric: every order adds the same work to the "
          "shared part (the B0..B3 bases of u and v and the first row products), so the "
-         "seed's increments (+45, +15, +9) are the test of the reproduction; the absolute "
+         "talk's increments (+45, +15, +9) are the test of the reproduction; the absolute "
          "counts differ by the basis cost, which a D3D listing packs into float2 ops",
-         "seed 001 counts the SubD10 domain shader: 16 loads / ~73 ALU for a regular patch "
+         "the DirectX SDK SubD10 sample counts its domain shader: 16 loads / ~73 ALU for a regular patch "
          "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
          "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
          "(the no_tangent variant fills the tangent patches with the derivative patches), so "
@@ -105,12 +110,12 @@ class SeedFiguresMeasure final : public Measure {
     result.measure = info().id;
     const std::string probe = probePath(input.technique);
     try {
-      for (const SeedOrder& order : kSeed000Orders) {
+      for (const PublishedOrder& order : kNvidiaTalkOrders) {
         const StageInstructionCounts counts = cachedEmbeddedShaderCounts(probe, {order.order});
         MetricRow row;
-        row.keys["seed"] = "000";
+        row.keys["source"] = kNvidiaTalk;
         row.keys["what"] = std::string("bezier position, ") + order.name;
-        row.metrics = comparisonTable().metrics({order.seed_instructions, 0, counts});
+        row.metrics = comparisonTable().metrics({order.published_instructions, 0, counts});
         result.rows.push_back(std::move(row));
       }
       // The domain shader of the technique's program, default order (symmetric_fma).
@@ -118,13 +123,13 @@ class SeedFiguresMeasure final : public Measure {
       if (const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front()) {
         const StageInstructionCounts tes =
             cachedEmbeddedShaderCounts(program->evaluation_shader, program->specialization);
-        for (const auto& [what, seed_loads, seed_alu] :
-             {std::tuple{"regular patch (seed 001)", 16.0, 73.0},
-              std::tuple{"extraordinary patch (seed 001)", 24.0, 120.0}}) {
+        for (const auto& [what, published_loads, published_alu] :
+             {std::tuple{"regular patch", 16.0, 73.0},
+              std::tuple{"extraordinary patch", 24.0, 120.0}}) {
           MetricRow row;
-          row.keys["seed"] = "001";
+          row.keys["source"] = kSubD10;
           row.keys["what"] = std::string(what) + ", " + program->evaluation_shader;
-          row.metrics = comparisonTable().metrics({seed_alu, seed_loads, tes});
+          row.metrics = comparisonTable().metrics({published_alu, published_loads, tes});
           result.rows.push_back(std::move(row));
         }
       }
@@ -136,7 +141,7 @@ class SeedFiguresMeasure final : public Measure {
   }
 };
 
-TB_REGISTER_MEASURE(SeedFiguresMeasure);
+TB_REGISTER_MEASURE(PublishedFiguresMeasure);
 
 }  // namespace
 }  // namespace tb

@@ -12,7 +12,7 @@ namespace {
 
 double alu(const InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
 
-TEST(SeedFigures, BezierOrderIncrementsMatchSeed000) {
+TEST(PublishedFigures, BezierOrderIncrementsMatchSeed000) {
   const double seed[4] = {60, 105, 75, 69};  // asymmetric, symmetric_nofma, _fma, _edges
   const double asymmetric = alu(countEmbeddedShader("acc/bezier_position.tese", {0}).scalar);
   for (uint32_t order = 1; order < 4; ++order) {
@@ -21,7 +21,7 @@ TEST(SeedFigures, BezierOrderIncrementsMatchSeed000) {
   }
 }
 
-TEST(SeedFigures, TheOrdersAreNotAllTheSameShader) {
+TEST(PublishedFigures, TheOrdersAreNotAllTheSameShader) {
   // Guards the test above: specialisation must reach the probe, or every order would
   // count the same and only a coincidence could pass.
   const double fma = alu(countEmbeddedShader("acc/bezier_position.tese", {2}).scalar);
