@@ -41,8 +41,8 @@ redefined, a new asset, technique or metric), update the baseline **in the same 
 
     scripts/update_baseline.sh
 
-It builds Release, runs the default suite into a temporary folder (${seconds} s on the machine
-that last wrote it) and copies its \`results.json\` here. Read \`git diff results/baseline\` before
+It builds Release, runs the default suite into a temporary folder (${seconds} s wall when it was
+last written) and copies its \`results.json\` here. Read \`git diff results/baseline\` before
 committing: every changed figure should be one the change meant to change.
 
 Last written from git $(git rev-parse --short HEAD 2>/dev/null || echo unknown) on
