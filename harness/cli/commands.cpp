@@ -20,6 +20,7 @@
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
+#include "harness/results/timings_json.h"
 #include "techniques/registry.h"
 
 namespace tb::cli {
@@ -78,21 +79,15 @@ std::vector<CameraPathFn> selectCameraPaths(const std::vector<std::string>& name
   return paths;
 }
 
-// Wall seconds per record × measure, beside results.json: timings change run to run, the
-// results must not.
+// Wall seconds per record × measure, every repetition's, beside results.json: timings
+// change run to run, the results must not (harness/results/timings_json.h).
 std::string timingsJson(const SuiteTimings& timings) {
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, {}};
   for (const MeasureTiming& t : timings.measures) {
-    rows.push_back({{"technique", t.technique},
-                    {"variant", t.variant},
-                    {"asset", t.asset},
-                    {"measure", t.measure},
-                    {"seconds", t.seconds}});
+    run.measures.push_back({t.technique, t.variant, t.asset, t.measure,
+                            t.samples.empty() ? std::vector<double>{t.seconds} : t.samples});
   }
-  nlohmann::ordered_json json{{"wall_seconds", timings.wall_seconds},
-                              {"threads", timings.threads},
-                              {"measures", rows}};
-  return json.dump(1) + "\n";
+  return serializeTimings(run);
 }
 
 // Suite wall time and each measure's summed time, the figures the suite budget is kept by.
@@ -152,6 +147,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.measures = selectMeasures(args.measures);
   selection.device_name = args.device;
   selection.threads = args.threads;
+  selection.repetitions = args.repetitions;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
   if (!args.shard.empty()) selection.shard = parseShard(args.shard);
   selection.suite = parseSuiteMode(args.suite);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 
 #include "core/mesh/input_error.h"
 #include "harness/results/compare.h"
@@ -13,9 +14,13 @@
 namespace tb::cli {
 namespace {
 
-Results readFinishedRun(const std::string& folder) {
+// results.json, and timings.json when the folder has one (a committed baseline has none).
+RunData readFinishedRun(const std::string& folder, bool with_timings) {
   requireFinishedRunFolder(folder);
-  return readResultsFile(folder + "/results.json");
+  RunData run{readResultsFile(folder + "/results.json"), std::nullopt};
+  const std::string timings = folder + "/timings.json";
+  if (with_timings && std::filesystem::exists(timings)) run.timings = readTimingsFile(timings);
+  return run;
 }
 
 double parseThreshold(const std::string& option, const std::string& text) {
@@ -40,9 +45,15 @@ int runCompare(const CompareArgs& args) {
     options.metric_thresholds[item.substr(0, equals)] =
         parseThreshold("--metric-threshold", item.substr(equals + 1));
   }
-  const Results base = readFinishedRun(args.base);
-  const Results current = readFinishedRun(args.current);
-  const Comparison comparison = compareResults(base, current, options);
+  options.alpha = parseThreshold("--alpha", args.alpha);
+  if (!(options.alpha > 0 && options.alpha < 1)) {
+    throw InputError("--alpha", args.alpha, "a significance level is in (0, 1)");
+  }
+  options.time_threshold = parseThreshold("--time-threshold", args.time_threshold);
+  options.timings = !args.no_timings;
+  const RunData base = readFinishedRun(args.base, options.timings);
+  const RunData current = readFinishedRun(args.current, options.timings);
+  const Comparison comparison = compareRuns(base, current, options);
   fmt::print("# Compare {} -> {}\n\n{}", args.base, args.current,
              renderComparison(comparison, args.limit));
   return comparison.failed() ? 1 : 0;

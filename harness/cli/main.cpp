@@ -52,6 +52,12 @@ int main(int argc, char** argv) {
   run->add_option("--camera", run_args.cameras,
                   "camera path: a bundled name (orbit, dolly, flyby) or a .json file "
                   "(repeatable; default: the suite's paths)");
+  run->add_option("--repetitions", run_args.repetitions,
+                  "run each measure of each record N times: results.json from the first "
+                  "(a record warns when a repeat differs), every sample in timings.json, "
+                  "for compare's U test (9 or more recommended)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
 
   tb::cli::MergeArgs merge_args;
   CLI::App* merge = app.add_subcommand(
@@ -82,6 +88,15 @@ int main(int argc, char** argv) {
                       "NAME=VALUE: the threshold for one metric name (repeatable)");
   compare->add_option("--limit", compare_args.limit, "changes listed in the table, worst first")
       ->capture_default_str();
+  compare->add_option("--alpha", compare_args.alpha,
+                      "timings: significance level of the two-sided Mann-Whitney U test on "
+                      "the repeated samples of timings.json (run --repetitions >= 2)")
+      ->capture_default_str();
+  compare->add_option("--time-threshold", compare_args.time_threshold,
+                      "timings: relative change of the median that counts, with p < alpha")
+      ->capture_default_str();
+  compare->add_flag("--no-timings", compare_args.no_timings,
+                    "compare results.json only, not timings.json");
 
   tb::cli::TessellateArgs tessellate_args;
   tb::cli::addTessellateCommand(app, tessellate_args);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <set>
 
+#include "harness/results/timing_compare.h"
+
 namespace tb {
 namespace {
 
@@ -67,11 +69,6 @@ class Comparer {
       result_.context_notes.push_back("suite differs: base " + base_.context.selection.suite +
                                       ", new " + current_.context.selection.suite);
     }
-    std::stable_sort(result_.changes.begin(), result_.changes.end(),
-                     [](const MetricChange& a, const MetricChange& b) {
-                       if (a.kind != b.kind) return a.kind < b.kind;
-                       return a.relative_change() > b.relative_change();
-                     });
     return std::move(result_);
   }
 
@@ -184,6 +181,15 @@ class Comparer {
   Comparison result_;
 };
 
+// Worst first: by kind (missing, regressions, ...), then by the size of the change.
+void sortChanges(Comparison* comparison) {
+  std::stable_sort(comparison->changes.begin(), comparison->changes.end(),
+                   [](const MetricChange& a, const MetricChange& b) {
+                     if (a.kind != b.kind) return a.kind < b.kind;
+                     return a.relative_change() > b.relative_change();
+                   });
+}
+
 std::string formatValue(double value) {
   if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15) {
     return fmt::format("{:.0f}", value);
@@ -223,7 +229,28 @@ const char* toString(ChangeKind kind) {
 
 Comparison compareResults(const Results& base, const Results& current,
                           const CompareOptions& options) {
-  return Comparer(base, current, options).run();
+  Comparison comparison = Comparer(base, current, options).run();
+  sortChanges(&comparison);
+  return comparison;
+}
+
+Comparison compareRuns(const RunData& base, const RunData& current,
+                       const CompareOptions& options) {
+  Comparison comparison = Comparer(base.results, current.results, options).run();
+  if (!options.timings) {
+    comparison.timing_notes.push_back("timings: not compared (--no-timings)");
+  } else if (!base.timings || !current.timings) {
+    comparison.timing_notes.push_back(
+        std::string("timings: not compared (") +
+        (!base.timings && !current.timings ? "neither run has"
+         : !base.timings                   ? "the base run has no"
+                                           : "the new run has no") +
+        " timings.json)");
+  } else {
+    compareTimings(*base.timings, *current.timings, options, &comparison);
+  }
+  sortChanges(&comparison);
+  return comparison;
 }
 
 std::string renderComparison(const Comparison& comparison, size_t limit) {
@@ -235,23 +262,25 @@ std::string renderComparison(const Comparison& comparison, size_t limit) {
       comparison.count(ChangeKind::kImprovement), comparison.count(ChangeKind::kAdded),
       comparison.failed() ? "FAIL: the new run lost or worsened figures of the base."
                           : "PASS.");
+  for (const std::string& note : comparison.timing_notes) out += note + "\n";
   for (const std::string& note : comparison.context_notes) out += "\nNote: " + note + ".\n";
   if (comparison.changes.empty()) return out;
-  out += "\n| change | record | measure | row | metric | base | new | relative |\n";
-  out += "|---|---|---|---|---|---|---|---|\n";
+  out += "\n| change | record | measure | row | metric | base | new | relative | p (U test) |\n";
+  out += "|---|---|---|---|---|---|---|---|---|\n";
   const size_t shown = std::min(limit, comparison.changes.size());
   for (size_t i = 0; i < shown; ++i) {
     const MetricChange& c = comparison.changes[i];
     const bool figures = c.kind != ChangeKind::kMissing && c.kind != ChangeKind::kAdded;
     out += fmt::format(
-        "| {} | {} | {} | {} | {} | {} | {} | {} |\n", toString(c.kind), c.record, c.measure,
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", toString(c.kind), c.record, c.measure,
         c.row, c.metric.empty() ? "(all)" : c.metric,
         figures || c.kind == ChangeKind::kMissing ? (c.metric.empty() ? "" : formatValue(c.base))
                                                   : "",
         figures ? formatValue(c.current) : c.why,
         !figures      ? ""
         : c.base != 0 ? fmt::format("{:+.3g}%", 100 * (c.current - c.base) / std::fabs(c.base))
-                      : "from 0");
+                      : "from 0",
+        std::isnan(c.p_value) ? "" : fmt::format("{:.3g}", c.p_value));
   }
   if (shown < comparison.changes.size()) {
     out += fmt::format("\n{} more changes not shown (--limit).\n",

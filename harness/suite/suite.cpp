@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -59,6 +60,7 @@ struct SuiteRun {
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
   ShardSpec shard;
+  int repetitions = 1;  // runs of each measure on each record
 };
 
 // What one technique × variant × input step produced; steps run in parallel and their
@@ -166,6 +168,46 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
   return measure.run(input);
 }
 
+// One run of a measure on a record. A measure that throws anything but InputError (a
+// technique's evaluator throwing, a device error) fails this measure of this record only;
+// the other records complete. Bad input stops the run: one line, exit 2, no folder.
+MeasureResult runMeasureOnce(const SuiteRun& run, const Measure& measure,
+                             const MeasureInput& input, const TechniqueInput& technique_input,
+                             TechniqueInstance* instance) {
+  try {
+    return runMeasure(run, measure, input, technique_input, instance);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    return {measure.info().id, MeasureStatus::kFailed, error.what(), {}, {}};
+  }
+}
+
+// Whether two runs of a measure gave the same result: the same statuses, reasons, notes,
+// row keys and metrics, every value bit for bit (so NaN equals NaN, and 0 is not -0).
+bool sameResult(const MeasureResult& a, const MeasureResult& b) {
+  if (a.status != b.status || a.reason != b.reason || a.notes != b.notes ||
+      a.rows.size() != b.rows.size()) {
+    return false;
+  }
+  for (size_t r = 0; r < a.rows.size(); ++r) {
+    const MetricRow& x = a.rows[r];
+    const MetricRow& y = b.rows[r];
+    if (x.keys != y.keys || x.status != y.status || x.reason != y.reason ||
+        x.metrics.size() != y.metrics.size()) {
+      return false;
+    }
+    for (size_t m = 0; m < x.metrics.size(); ++m) {
+      if (x.metrics[m].name != y.metrics[m].name || x.metrics[m].unit != y.metrics[m].unit ||
+          std::bit_cast<uint64_t>(x.metrics[m].value) !=
+              std::bit_cast<uint64_t>(y.metrics[m].value)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // Records a technique that cannot take the input (on the default variant only, once).
 void recordSkip(const Technique& technique, const SuiteInput& input, bool is_default,
                 const std::string& reason, const ShardSpec& shard, StepOutcome* outcome) {
@@ -260,19 +302,23 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
                              patches,   run.gpu.get(), run.gpu_unavailable};
   measure_input.suite = run.suite;
   for (const Measure* measure : runnable) {
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      record.measures.push_back(
-          runMeasure(run, *measure, measure_input, technique_input, instance.get()));
-    } catch (const InputError&) {
-      throw;  // bad input stops the run: one line, exit 2, no folder
-    } catch (const std::exception& error) {
-      // Anything else (a technique's evaluator throwing, a device error) fails this
-      // measure of this record only; the other records complete.
-      record.measures.push_back({measure->info().id, MeasureStatus::kFailed, error.what(), {}, {}});
+    MeasureTiming timing{record.technique, record.variant, record.asset, measure->info().id, 0, {}};
+    bool deterministic = true;
+    for (int repetition = 0; repetition < std::max(run.repetitions, 1); ++repetition) {
+      const auto start = std::chrono::steady_clock::now();
+      MeasureResult result =
+          runMeasureOnce(run, *measure, measure_input, technique_input, instance.get());
+      timing.samples.push_back(secondsSince(start));
+      if (repetition == 0) {
+        record.measures.push_back(std::move(result));
+      } else if (deterministic && !sameResult(record.measures.back(), result)) {
+        deterministic = false;
+        record.warnings.push_back("measure " + measure->info().id +
+                                  " is not deterministic across repetitions");
+      }
     }
-    outcome.timings.push_back(
-        {record.technique, record.variant, record.asset, measure->info().id, secondsSince(start)});
+    timing.seconds = timing.samples.front();
+    outcome.timings.push_back(std::move(timing));
   }
   return outcome;
 }
@@ -343,6 +389,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
     }
   }
   run.shard = selection.shard;
+  run.repetitions = selection.repetitions;
   for (const Measure* measure : run.measures) {
     results->measures.push_back(declarationOf(measure->info()));
   }
@@ -406,6 +453,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (progress) progress(total, total, "done");
   if (timings) {
     timings->threads = threads;
+    timings->repetitions = std::max(selection.repetitions, 1);
     timings->wall_seconds = secondsSince(run_start);
   }
 }

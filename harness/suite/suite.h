@@ -34,6 +34,10 @@ struct SuiteSelection {
   // whatever the count: records are assembled in the serial order.
   int threads = 0;
   ShardSpec shard;  // the slice of the work list to run (shard.h); default: all of it
+  // Runs of each measure on each record (`run --repetitions`), each timed: the record keeps
+  // the first run's result, and a warning when a later run's differs (a measure must be
+  // deterministic); the samples feed compare's U test. At least 1.
+  int repetitions = 1;
 };
 
 // Frames the bundled orbit is sampled to for kCameraPath measures in the default suite
@@ -51,12 +55,16 @@ std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode);
 // they never enter results.json (which is byte-stable); the CLI writes them beside it.
 struct MeasureTiming {
   std::string technique, variant, asset, measure;
-  double seconds = 0;
+  double seconds = 0;  // the first run's
+  // Every run's, in order (SuiteSelection::repetitions of them; samples[0] == seconds). The
+  // first run may be slower: process-wide caches (boundary tessellations, shader counts) fill.
+  std::vector<double> samples;
 };
 
 struct SuiteTimings {
   double wall_seconds = 0;  // the whole runSuite call, assets loading included
   int threads = 0;          // worker threads the run had
+  int repetitions = 1;      // SuiteSelection::repetitions
   std::vector<MeasureTiming> measures;  // in record order
 };
 

@@ -1,0 +1,34 @@
+// timings.json, beside results.json in a run folder: wall seconds per record × measure.
+// Timings change run to run, so they never enter results.json (which is byte-stable);
+// `tessbench compare` tests them apart, with repeated samples (compare.h, mann_whitney.h).
+//
+//   {"wall_seconds": 91.2, "threads": 2, "repetitions": 5,
+//    "measures": [{"technique": "acc", "variant": "default", "asset": "...",
+//                  "measure": "error", "seconds": 0.41, "samples": [0.41, 0.39, ...]}]}
+//
+// `seconds` is the first sample (what a one-sample run wrote before samples existed); a file
+// without `samples` or `repetitions` reads as one sample per entry.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tb {
+
+struct TimingEntry {
+  std::string technique, variant, asset, measure;
+  std::vector<double> samples;  // wall seconds of each repetition, in run order; never empty
+};
+
+struct RunTimings {
+  double wall_seconds = 0;  // the whole suite, assets loading included
+  int threads = 0;          // worker threads the run had
+  int repetitions = 1;      // runs of each measure (`run --repetitions`)
+  std::vector<TimingEntry> measures;  // in record order
+};
+
+std::string serializeTimings(const RunTimings& timings);  // 1-space indent, final newline
+// Throws std::runtime_error naming the file and the field when it cannot be read.
+RunTimings readTimingsFile(const std::string& path);
+
+}  // namespace tb
