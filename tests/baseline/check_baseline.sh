@@ -30,6 +30,19 @@ if [[ ! -f $scratch/current/results.json ]]; then
   exit 1
 fi
 echo "default suite: $(($(date +%s) - start)) s"
+# The default suite's report.md leads with the per-job summary and stays short: the detail
+# is in tables/*.csv and results.json.
+report=$scratch/current/report.md
+lines=$(wc -l <"$report")
+first_section=$(grep -m1 '^## ' "$report" || true)
+echo "report.md: $lines lines, first section: $first_section"
+if [[ $lines -ge 1000 || $first_section != "## Regression tracking" ]]; then
+  echo "FAIL: report.md must be under 1,000 lines and open with the per-job summary"
+  exit 1
+fi
+for measure in $(ls "$scratch/current/tables" | grep -v -e warnings -e record_notes); do
+  [[ -s $scratch/current/tables/$measure ]] || { echo "FAIL: tables/$measure is empty"; exit 1; }
+done
 status=0
 "$tessbench" compare --limit 60 "$baseline" "$scratch/current" || status=$?
 if [[ $status -ne 0 ]]; then
