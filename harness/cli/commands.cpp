@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
+#include "harness/pictures/run_pictures.h"
 #include "core/mesh/input_error.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
@@ -189,6 +191,12 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.selection = describeSelection(selection, results);
   results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
+  if (args.pictures) {  // pictures/: PNGs and pictures.json, on the run's device
+    std::filesystem::create_directory(folder.pendingPath() + "/" + kPicturesFolder);
+    renderRunPictures(results, args.device, [&](const std::string& path, const std::string& bytes) {
+      folder.writeFile(path, bytes);
+    });
+  }
   folder.writeFile("report.md", renderMarkdown(results));
   folder.writeFile("timings.json", timingsJson(timings));
   folder.writeFile("results.json", serializeResults(results));

@@ -23,6 +23,7 @@ struct RunArgs {
   std::string shard;   // "I/N": run shard I of N of the work list; empty = all of it
   std::string suite = "default";     // "default" or "full": which grid measures run
   std::vector<std::string> cameras;  // camera path names or .json files; empty = the suite's
+  bool pictures = true;  // render pictures/ (harness/pictures/run_pictures.h); --no-pictures
 };
 
 struct ReportArgs {

@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
   run->add_option("--camera", run_args.cameras,
                   "camera path: a bundled name (orbit, dolly, flyby) or a .json file "
                   "(repeatable; default: the suite's paths)");
+  run->add_flag_callback("--no-pictures", [&run_args] { run_args.pictures = false; },
+                         "do not render the pictures of each surface (pictures/ in the run folder)");
 
   tb::cli::MergeArgs merge_args;
   CLI::App* merge = app.add_subcommand(
