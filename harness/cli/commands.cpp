@@ -193,9 +193,10 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
   if (args.pictures) {  // pictures/: PNGs and pictures.json, on the run's device
     std::filesystem::create_directory(folder.pendingPath() + "/" + kPicturesFolder);
-    renderRunPictures(results, args.device, [&](const std::string& path, const std::string& bytes) {
-      folder.writeFile(path, bytes);
-    });
+    const PicturesIndex pictures = renderRunPictures(
+        results, args.device,
+        [&](const std::string& path, const std::string& bytes) { folder.writeFile(path, bytes); });
+    if (!args.quiet) fmt::print(stderr, "pictures: {}\n", picturesSummary(pictures));
   }
   folder.writeFile("report.md", renderMarkdown(results));
   folder.writeFile("timings.json", timingsJson(timings));

@@ -2,9 +2,25 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+
 #include "harness/pictures/heat_map.h"
 
 namespace tb {
+
+std::string picturesSummary(const PicturesIndex& index) {
+  if (index.status != "ok") return index.status + ": " + index.reason;
+  size_t failed = 0;
+  for (const PictureEntry& p : index.pictures) failed += p.status != "ok";
+  char text[160];
+  std::snprintf(text, sizeof(text), "%zu pairs at level %d, %.1f MB of PNG, %.1f s",
+                index.pictures.size() - failed,
+                index.pictures.empty() ? 0 : index.pictures.front().level,
+                double(index.png_bytes) / 1e6, index.wall_s);
+  std::string line = text;
+  if (failed > 0) line += ", " + std::to_string(failed) + " failed";
+  return line;
+}
 
 std::string picturesIndexJson(const PicturesIndex& index) {
   using Json = nlohmann::ordered_json;

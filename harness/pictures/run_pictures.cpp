@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <chrono>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -21,6 +22,10 @@ namespace tb {
 namespace {
 
 constexpr const char* kErrorStatistic = "max_of_3_vertices";
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // One technique × asset to picture.
 struct PictureJob {
@@ -143,18 +148,23 @@ std::string wireframePicturePath(const std::string& technique, const std::string
 
 PicturesIndex renderRunPictures(const Results& results, const std::string& device_name,
                                 const WriteFileFn& write, const PictureSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
   gpu::ContextOptions options;
   options.device_name = device_name;
   options.required = gpu::DeviceFeatures{};
   options.required.dynamic_rendering = true;  // all gpu::RenderTarget needs
   auto created = gpu::Context::create(options);
-  if (!created) return renderRunPictures(results, nullptr, created.error(), write, settings);
-  return renderRunPictures(results, created.value().get(), "", write, settings);
+  PicturesIndex index =
+      created ? renderRunPictures(results, created.value().get(), "", write, settings)
+              : renderRunPictures(results, nullptr, created.error(), write, settings);
+  index.wall_s = secondsSince(start);
+  return index;
 }
 
 PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
                                 const std::string& unavailable_reason, const WriteFileFn& write,
                                 const PictureSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
   PicturesIndex index;
   if (context == nullptr) {
     index.status = "skipped";
@@ -176,10 +186,12 @@ PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
     if (outcome.entry.status == "ok") {
       write(outcome.entry.error_png, outcome.error_png);
       write(outcome.entry.wireframe_png, outcome.wireframe_png);
+      index.png_bytes += outcome.error_png.size() + outcome.wireframe_png.size();
     }
     index.pictures.push_back(std::move(outcome.entry));
   }
   write(kPicturesIndexPath, picturesIndexJson(index));
+  index.wall_s = secondsSince(start);
   return index;
 }
 
