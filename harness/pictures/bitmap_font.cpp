@@ -38,8 +38,7 @@ int64_t textWidthPx(std::string_view text, int scale) {
   return (int64_t(text.size() - 1) * kGlyphAdvance + kGlyphWidth) * scale;
 }
 
-void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int scale,
-              Rgb colour) {
+void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int scale, Rgb colour) {
   for (size_t i = 0; i < text.size(); ++i) {
     const Glyph& glyph = glyphOf(text[i]);
     const int64_t left = x + int64_t(i) * kGlyphAdvance * scale;

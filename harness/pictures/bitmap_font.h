@@ -9,8 +9,8 @@
 
 namespace tb {
 
-inline constexpr int kGlyphWidth = 3;   // font pixels
-inline constexpr int kGlyphHeight = 5;  // font pixels
+inline constexpr int kGlyphWidth = 3;    // font pixels
+inline constexpr int kGlyphHeight = 5;   // font pixels
 inline constexpr int kGlyphAdvance = 4;  // font pixels from one character to the next
 
 // Width in picture pixels of `text` drawn at `scale` picture pixels per font pixel.
@@ -19,7 +19,6 @@ int64_t textWidthPx(std::string_view text, int scale);
 // Draws `text` with its top-left corner at (x, y), each font pixel a scale x scale square;
 // parts outside the picture are left out. Throws std::invalid_argument naming a character
 // the font does not have.
-void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int scale,
-              Rgb colour);
+void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int scale, Rgb colour);
 
 }  // namespace tb

@@ -13,8 +13,8 @@ namespace {
 // Five points of the viridis ramp (van der Walt & Smith, matplotlib 2015) at t = 0, 1/4,
 // 1/2, 3/4, 1; between them the colour is interpolated linearly. Lightness rises
 // monotonically along the ramp.
-constexpr std::array<Rgb, 5> kControlPoints = {
-    Rgb{68, 1, 84}, Rgb{59, 82, 139}, Rgb{33, 145, 140}, Rgb{94, 201, 98}, Rgb{253, 231, 37}};
+constexpr std::array<Rgb, 5> kControlPoints = {Rgb{68, 1, 84}, Rgb{59, 82, 139}, Rgb{33, 145, 140},
+                                               Rgb{94, 201, 98}, Rgb{253, 231, 37}};
 
 constexpr Rgb kFrame{40, 40, 40};
 
@@ -45,8 +45,8 @@ std::string scaleLabel(double value) {
   return text;
 }
 
-void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px,
-                   uint32_t height_px, double scale_max) {
+void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px, uint32_t height_px,
+                   double scale_max) {
   for (uint32_t i = 0; i < width_px; ++i) {
     const double t = width_px > 1 ? double(i) / double(width_px - 1) : 0;
     const Rgb colour = heatColour(t);
@@ -64,8 +64,7 @@ void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px,
   const int64_t label_y = int64_t(y) + height_px + 3;
   drawText(image, x, label_y, "0", kScale, kFrame);
   const std::string high = scaleLabel(scale_max);
-  drawText(image, int64_t(x) + width_px - textWidthPx(high, kScale), label_y, high, kScale,
-           kFrame);
+  drawText(image, int64_t(x) + width_px - textWidthPx(high, kScale), label_y, high, kScale, kFrame);
 }
 
 }  // namespace tb

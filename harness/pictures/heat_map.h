@@ -27,10 +27,10 @@ std::string scaleLabel(double value);
 // right (scale_max), a dark frame, and below it the labels "0" at the left end and
 // scaleLabel(scale_max) at the right, in the 3 x 5 font at 2 pixels per font pixel.
 // The box plus kColourBarLabelPx below it must lie inside the image.
-void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px,
-                   uint32_t height_px, double scale_max);
+void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px, uint32_t height_px,
+                   double scale_max);
 
-// Pixels the labels take below the bar (a gap, then 5 font pixels at scale 2).
-inline constexpr uint32_t kColourBarLabelPx = 14;
+// Pixels the labels take below the bar (a 3-pixel gap, then 5 font pixels at scale 2).
+inline constexpr uint32_t kColourBarLabelPx = 13;
 
 }  // namespace tb

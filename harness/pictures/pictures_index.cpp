@@ -1,8 +1,7 @@
 #include "harness/pictures/pictures_index.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "harness/pictures/heat_map.h"
 
@@ -36,18 +35,12 @@ std::string picturesIndexJson(const PicturesIndex& index) {
   json["colour_ramp"] = ramp;
   Json pictures = Json::array();
   for (const PictureEntry& p : index.pictures) {
-    Json entry{{"technique", p.technique},
-               {"variant", p.variant},
-               {"asset", p.asset},
-               {"level", p.level},
-               {"error_png", p.error_png},
-               {"wireframe_png", p.wireframe_png},
-               {"width_px", p.width_px},
-               {"height_px", p.height_px},
-               {"error_max", p.error_max},
-               {"error_statistic", p.error_statistic},
-               {"scale_min", p.scale_min},
-               {"scale_max", p.scale_max}};
+    Json entry{{"technique", p.technique}, {"variant", p.variant},
+               {"asset", p.asset},         {"level", p.level},
+               {"error_png", p.error_png}, {"wireframe_png", p.wireframe_png},
+               {"width_px", p.width_px},   {"height_px", p.height_px},
+               {"error_max", p.error_max}, {"error_statistic", p.error_statistic},
+               {"scale_min", p.scale_min}, {"scale_max", p.scale_max}};
     if (p.status != "ok") {
       entry["status"] = p.status;
       entry["reason"] = p.reason;

@@ -18,7 +18,7 @@ struct PictureEntry {
   // Paths relative to the run folder; empty when the picture failed (status, reason).
   std::string error_png;
   std::string wireframe_png;
-  uint32_t width_px = 0;   // both pictures: the render plus the colour-bar strip below it
+  uint32_t width_px = 0;  // both pictures: the render plus the colour-bar strip below it
   uint32_t height_px = 0;
   double error_max = 0;  // largest vertex error, fraction of the bounding-box diagonal
   // What one triangle's colour shows: "max_of_3_vertices".
@@ -32,14 +32,14 @@ struct PictureEntry {
 };
 
 struct PicturesIndex {
-  std::string status = "ok";  // "ok", or "skipped" when no Vulkan device is usable
-  std::string reason;         // why skipped; empty when ok
-  std::string device;         // the Vulkan device rendered on; empty when skipped
+  std::string status = "ok";           // "ok", or "skipped" when no Vulkan device is usable
+  std::string reason;                  // why skipped; empty when ok
+  std::string device;                  // the Vulkan device rendered on; empty when skipped
   std::vector<PictureEntry> pictures;  // in results.json record order
   // How long the pictures took and what they weigh; they vary run to run or machine to
   // machine, so they stay out of the JSON (printed by the CLI).
-  double wall_s = 0;          // seconds, the device opened to the index written
-  uint64_t png_bytes = 0;     // every PNG written, summed
+  double wall_s = 0;       // seconds, the device opened to the index written
+  uint64_t png_bytes = 0;  // every PNG written, summed
 };
 
 // One line for the terminal: "12 pairs at level 8, 1.9 MB of PNG, 3.2 s" (plus "N failed"),

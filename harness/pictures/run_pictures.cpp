@@ -42,8 +42,8 @@ struct PictureOutcome {
 std::string fileStem(const std::string& technique, const std::string& asset) {
   std::string stem = technique + "--";
   for (char c : asset) {
-    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                       (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '_' || c == '-';
     if (c == '/') {
       stem += "--";
     } else {
@@ -154,9 +154,9 @@ PicturesIndex renderRunPictures(const Results& results, const std::string& devic
   options.required = gpu::DeviceFeatures{};
   options.required.dynamic_rendering = true;  // all gpu::RenderTarget needs
   auto created = gpu::Context::create(options);
-  PicturesIndex index =
-      created ? renderRunPictures(results, created.value().get(), "", write, settings)
-              : renderRunPictures(results, nullptr, created.error(), write, settings);
+  PicturesIndex index = created
+                            ? renderRunPictures(results, created.value().get(), "", write, settings)
+                            : renderRunPictures(results, nullptr, created.error(), write, settings);
   index.wall_s = secondsSince(start);
   return index;
 }
@@ -178,9 +178,10 @@ PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
   if (!jobs.empty()) {
     gpu::RenderTarget target(*context, settings.size_px, settings.size_px);
     std::mutex target_mutex;
-    tbb::parallel_for(size_t(0), jobs.size(), [&](size_t i) {
-      outcomes[i] = makePicture(jobs[i], settings, target, target_mutex);
-    }, tbb::simple_partitioner());
+    tbb::parallel_for(
+        size_t(0), jobs.size(),
+        [&](size_t i) { outcomes[i] = makePicture(jobs[i], settings, target, target_mutex); },
+        tbb::simple_partitioner());
   }
   for (PictureOutcome& outcome : outcomes) {
     if (outcome.entry.status == "ok") {

@@ -14,8 +14,7 @@
 namespace tb {
 
 // Writes one file of the run folder: a path relative to it ("pictures/x.png") and the bytes.
-using WriteFileFn =
-    std::function<void(const std::string& relative_path, const std::string& bytes)>;
+using WriteFileFn = std::function<void(const std::string& relative_path, const std::string& bytes)>;
 
 // The picture files of one technique × asset, relative to the run folder:
 // pictures/<technique>--<asset, '/' as "--", characters other than [A-Za-z0-9._-] as

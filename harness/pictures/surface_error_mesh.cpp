@@ -20,8 +20,7 @@ constexpr double kNoError = std::numeric_limits<double>::quiet_NaN();
 // gl_TessCoord as the technique takes it (techniques/batch_eval.h): quads (u, v, 0),
 // triangles the barycentric weights of corners 0, 1, 2.
 DomainCoord domainCoord(PatchDomain domain, const tess::DomainPoint& p) {
-  return domain == PatchDomain::kQuad ? DomainCoord{p[0], p[1], 0}
-                                      : DomainCoord{p[0], p[1], p[2]};
+  return domain == PatchDomain::kQuad ? DomainCoord{p[0], p[1], 0} : DomainCoord{p[0], p[1], p[2]};
 }
 
 }  // namespace

@@ -94,8 +94,9 @@ std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const Surface
 
 SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View& view,
                                        uint32_t size_px, std::vector<uint32_t> triangle_ids) {
-  if (triangle_ids.size() != size_t(size_px) * size_px) {
-    throw std::invalid_argument("composeSurfacePictures: the ID buffer is not size_px^2");
+  if (size_px < kMinimumPictureSizePx || triangle_ids.size() != size_t(size_px) * size_px) {
+    throw std::invalid_argument(
+        "composeSurfacePictures: the picture is under 64 px or the ID buffer is not size_px^2");
   }
   SurfacePictures pictures;
   pictures.error_max = mesh.error_max;
@@ -128,9 +129,9 @@ SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View&
       pictures.wireframe.set(x, y, edge ? kLine : Rgb{grey, grey, grey});
     }
   }
-  const uint32_t margin = 12;
-  drawColourBar(&pictures.error, margin, size_px + 4, size_px - 2 * margin, 12,
-                pictures.scale_max);
+  const uint32_t margin_px = std::min<uint32_t>(12, size_px / 8);  // left and right of the bar
+  drawColourBar(&pictures.error, margin_px, size_px + kColourBarGapPx, size_px - 2 * margin_px,
+                kColourBarHeightPx, pictures.scale_max);
   pictures.triangle_ids = std::move(triangle_ids);
   return pictures;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/view/view.h"
+#include "harness/pictures/heat_map.h"
 #include "harness/pictures/rgb_image.h"
 #include "harness/pictures/surface_error_mesh.h"
 
@@ -24,13 +25,20 @@ class RenderTarget;
 }  // namespace gpu
 
 struct PictureSettings {
-  int level = 8;          // uniform integer tessellation level of every patch (1..64)
-  uint32_t size_px = 320;  // the render is size_px x size_px
+  int level = 8;           // uniform integer tessellation level of every patch (1..64)
+  uint32_t size_px = 320;  // the render is size_px x size_px; at least kMinimumPictureSizePx
 };
 
+// Smaller renders leave no room for the colour bar's labels.
+inline constexpr uint32_t kMinimumPictureSizePx = 64;
+
+// The colour bar below the render: a gap, the bar, its labels (heat_map.h) and a margin.
+inline constexpr uint32_t kColourBarGapPx = 4;
+inline constexpr uint32_t kColourBarHeightPx = 12;
 // Pixels below the render holding the colour bar and its labels (in both pictures, so
 // they have one size: size_px x (size_px + kColourBarStripPx)).
-inline constexpr uint32_t kColourBarStripPx = 34;
+inline constexpr uint32_t kColourBarStripPx =
+    kColourBarGapPx + kColourBarHeightPx + kColourBarLabelPx + kColourBarGapPx;
 
 // The smallest top of the colour scale, a fraction of the bounding-box diagonal: a surface
 // whose error stays below it (exact up to double round-off, ~1e-16) is drawn all in the
@@ -60,7 +68,8 @@ struct SurfacePictures {
 std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const SurfaceErrorMesh& mesh,
                                         const View& view);
 
-// Composes both pictures from an ID buffer of renderTriangleIds (size_px^2 entries).
+// Composes both pictures from an ID buffer of renderTriangleIds (size_px^2 entries, size_px
+// >= kMinimumPictureSizePx; std::invalid_argument otherwise).
 SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View& view,
                                        uint32_t size_px, std::vector<uint32_t> triangle_ids);
 

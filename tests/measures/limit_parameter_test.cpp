@@ -41,9 +41,8 @@ TEST(LimitParameter, InvertsTheSubFaceMapOfACatmullClarkTriangle) {
       for (int j = 0; j <= 10; ++j) {
         // Inside the sub-face: its edges s = 1 and t = 1 are shared with the neighbours.
         const double s = 0.005 + 0.099 * i, t = 0.005 + 0.099 * j;
-        const LimitParameter p = limitParameterOf(PatchDomain::kTriangle,
-                                                  ref::Scheme::kCatmullClark, 0, 3,
-                                                  subFacePoint(k, s, t));
+        const LimitParameter p = limitParameterOf(
+            PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 0, 3, subFacePoint(k, s, t));
         ASSERT_EQ(p.sub_face, k) << s << " " << t;
         EXPECT_NEAR(p.u, s, 1e-12);
         EXPECT_NEAR(p.v, t, 1e-12);
@@ -51,21 +50,20 @@ TEST(LimitParameter, InvertsTheSubFaceMapOfACatmullClarkTriangle) {
     }
   }
   // The corners of the sub-face.
-  const LimitParameter corner = limitParameterOf(PatchDomain::kTriangle,
-                                                 ref::Scheme::kCatmullClark, 0, 3, {0, 1, 0});
+  const LimitParameter corner =
+      limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 0, 3, {0, 1, 0});
   EXPECT_EQ(corner.sub_face, 1);
   EXPECT_EQ(corner.u, 0);
   EXPECT_EQ(corner.v, 0);
-  const LimitParameter centre =
-      limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 0, 3,
-                       {1.0 / 3, 1.0 / 3, 1.0 / 3});
+  const LimitParameter centre = limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark,
+                                                 0, 3, {1.0 / 3, 1.0 / 3, 1.0 / 3});
   EXPECT_NEAR(centre.u, 1, 1e-15);
   EXPECT_NEAR(centre.v, 1, 1e-15);
 }
 
 TEST(LimitParameter, QuadsAndLoopTrianglesKeepTheirParameter) {
-  const LimitParameter quad = limitParameterOf(PatchDomain::kQuad, ref::Scheme::kCatmullClark, 0,
-                                               4, {0.25, 0.75, 0});
+  const LimitParameter quad =
+      limitParameterOf(PatchDomain::kQuad, ref::Scheme::kCatmullClark, 0, 4, {0.25, 0.75, 0});
   EXPECT_EQ(quad.sub_face, -1);
   EXPECT_EQ(quad.u, 0.25);
   EXPECT_EQ(quad.v, 0.75);
@@ -131,8 +129,7 @@ TEST(ParametricErrorAt, GivesTheMeasuresParametricMax) {
     ASSERT_NE(technique, nullptr);
     const Mesh mesh = loadObjFile(testing::assetPath(c.asset));
     const BuiltSurface patches = buildSurface(*technique, mesh, technique->variants().front());
-    const ref::LimitSurface limit(patches->controlMesh(),
-                                  referenceScheme(patches->approximates()));
+    const ref::LimitSurface limit(patches->controlMesh(), referenceScheme(patches->approximates()));
     const SurfaceErrorFigures f = figuresOf(*patches, limit);
     ASSERT_GT(f.parametric_max, 1e-4);
     if (c.tolerance == 0) {

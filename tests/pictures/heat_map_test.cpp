@@ -1,5 +1,7 @@
 // Oracle: the ramp's own control points (viridis at 0 and 1) and lightness (Rec. 709 luma),
 // which a perceptual ramp must raise monotonically; the 3 x 5 font's glyph bits.
+#include "harness/pictures/heat_map.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <stdexcept>
 
 #include "harness/pictures/bitmap_font.h"
-#include "harness/pictures/heat_map.h"
 
 namespace tb {
 namespace {

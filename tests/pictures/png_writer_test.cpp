@@ -1,13 +1,13 @@
 // Oracle: libpng's own reader (the simplified png_image API) decodes what encodePng wrote
 // to the same size and pixels; the bytes do not depend on when they were written.
+#include "harness/pictures/png_writer.h"
+
 #include <gtest/gtest.h>
 #include <png.h>
 
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include "harness/pictures/png_writer.h"
 
 namespace tb {
 namespace {
@@ -46,7 +46,8 @@ RgbImage testImage(uint32_t width, uint32_t height) {
 }
 
 TEST(PngWriter, RoundTripsThroughLibpngsReader) {
-  for (const auto& [width, height] : {std::pair{37u, 23u}, std::pair{1u, 1u}, std::pair{320u, 354u}}) {
+  for (const auto& [width, height] :
+       {std::pair{37u, 23u}, std::pair{1u, 1u}, std::pair{320u, 354u}}) {
     const RgbImage original = testImage(width, height);
     const std::string bytes = encodePng(original);
     ASSERT_GT(bytes.size(), 8u);

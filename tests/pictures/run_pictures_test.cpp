@@ -2,6 +2,8 @@
 // with a record of the technique's default variant whose `error` result is ok; every file
 // the index names is written, decodes with libpng to the index's size, and comes out the
 // same byte for byte on a second run. Without a device only a "skipped" index is written.
+#include "harness/pictures/run_pictures.h"
+
 #include <gtest/gtest.h>
 #include <png.h>
 
@@ -10,7 +12,6 @@
 #include <string>
 
 #include "harness/measures/measure.h"
-#include "harness/pictures/run_pictures.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"

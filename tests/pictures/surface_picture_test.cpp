@@ -4,6 +4,8 @@
 // triangles on the coarse loop_cube are far from the Loop limit (~1e-2), so the upper half
 // of the ramp shows. lavapipe's ID buffer says which pixels are covered. Skips without a
 // Vulkan device.
+#include "harness/pictures/surface_picture.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/pictures/heat_map.h"
 #include "harness/pictures/png_writer.h"
-#include "harness/pictures/surface_picture.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"
