@@ -10,7 +10,7 @@ packages=(
   mesa-vulkan-drivers libvulkan-dev vulkan-tools vulkan-validationlayers
   libbenchmark-dev libbenchmark-tools libgtest-dev
   libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libmeshoptimizer-dev libtbb-dev
+  libmeshoptimizer-dev libtbb-dev libpng-dev
   valgrind
   clang-14 libfuzzer-14-dev
 )

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
+#include "harness/pictures/run_pictures.h"
 #include "core/mesh/input_error.h"
 #include "harness/report/csv_tables.h"
 #include "harness/report/markdown.h"
@@ -190,6 +192,13 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.selection = describeSelection(selection, results);
   results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
+  if (args.pictures) {  // pictures/: PNGs and pictures.json, on the run's device
+    std::filesystem::create_directory(folder.pendingPath() + "/" + kPicturesFolder);
+    const PicturesIndex pictures = renderRunPictures(
+        results, args.device,
+        [&](const std::string& path, const std::string& bytes) { folder.writeFile(path, bytes); });
+    if (!args.quiet) fmt::print(stderr, "pictures: {}\n", picturesSummary(pictures));
+  }
   folder.writeFile("report.md", renderMarkdown(results));
   for (const auto& [name, text] : renderCsvTables(results)) folder.writeFile(name, text);
   folder.writeFile("timings.json", timingsJson(timings));

@@ -24,6 +24,7 @@ struct RunArgs {
   std::string suite = "default";     // "default" or "full": which grid measures run
   std::vector<std::string> cameras;  // camera path names or .json files; empty = the suite's
   int repetitions = 1;  // runs of each measure per record; every one timed (timings.json)
+  bool pictures = true;  // render pictures/ (harness/pictures/run_pictures.h); --no-pictures
 };
 
 struct ReportArgs {

@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
                   "for compare's U test (9 or more recommended)")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
+  run->add_flag_callback("--no-pictures", [&run_args] { run_args.pictures = false; },
+                         "do not render the pictures of each surface (pictures/ in the run folder)");
 
   tb::cli::MergeArgs merge_args;
   CLI::App* merge = app.add_subcommand(

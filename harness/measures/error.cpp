@@ -114,14 +114,8 @@ PatchSampling subFaceSampling(int level) {
   return sampling;
 }
 
-// The sampling of patch p over its limit face; throws std::logic_error for a patch
-// domain the face's parameterisation cannot be mapped to.
-const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, size_t face,
-                                 uint32_t face_size,
-                                 const std::array<PatchSampling, 3>& samplings) {
-  if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) return samplings[0];
-  if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) return samplings[1];
-  if (domain == PatchDomain::kTriangle && face_size == 3) return samplings[2];
+[[noreturn]] void throwUnmappedDomain(PatchDomain domain, ref::Scheme scheme, size_t face,
+                                      uint32_t face_size) {
   throw std::logic_error("error: patch over face " + std::to_string(face) + " is a " +
                          toString(domain) + " patch, but the face has " +
                          std::to_string(face_size) + " corners under " +
@@ -130,13 +124,62 @@ const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, size_t 
                          "patches onto Loop faces or Catmull-Clark triangles");
 }
 
+// The sampling of patch p over its limit face; throws std::logic_error for a patch
+// domain the face's parameterisation cannot be mapped to.
+const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, size_t face,
+                                 uint32_t face_size,
+                                 const std::array<PatchSampling, 3>& samplings) {
+  if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) return samplings[0];
+  if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) return samplings[1];
+  if (domain == PatchDomain::kTriangle && face_size == 3) return samplings[2];
+  throwUnmappedDomain(domain, scheme, face, face_size);
+}
+
 double angleDegrees(const Vec3d& a, const Vec3d& b) {
   const double la = length(a), lb = length(b);
   if (!(la > 0) || !(lb > 0)) return 0;
   return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
 }
 
+// The inverse of subFaceSampling's map on sub-face k, whose corners in barycentric
+// coordinates are corner k, the midpoints of edges k and k-1 and the centroid. With a, b the
+// weights of corners k+1 and k+2, the map is a = s (3 - t) / 6, b = t (3 - s) / 6, so
+// s - t = 2 (a - b) = d and t is the root in [0, 1] of t^2 + (d - 3) t + 6 b = 0, taken in the
+// form without cancellation (12 b / ((3 - d) + sqrt(disc))).
+LimitParameter subFaceParameter(const DomainCoord& coord) {
+  int k = 0;
+  for (int c = 1; c < 3; ++c) {
+    if (coord[c] > coord[k]) k = c;
+  }
+  const double a = coord[(k + 1) % 3], b = coord[(k + 2) % 3];
+  const double d = 2 * (a - b);
+  const double disc = std::max(0.0, (3 - d) * (3 - d) - 24 * b);
+  const double t = 12 * b / ((3 - d) + std::sqrt(disc));
+  return {k, std::clamp(t + d, 0.0, 1.0), std::clamp(t, 0.0, 1.0)};
+}
+
 }  // namespace
+
+LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t face,
+                                uint32_t face_size, const DomainCoord& coord) {
+  if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) {
+    return {-1, coord[0], coord[1]};
+  }
+  if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) {
+    return {-1, coord[1], coord[2]};
+  }
+  if (domain == PatchDomain::kTriangle && face_size == 3) return subFaceParameter(coord);
+  throwUnmappedDomain(domain, scheme, face, face_size);
+}
+
+double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
+                         ref::Scheme scheme, size_t patch, const DomainCoord& coord) {
+  const LimitParameter at = limitParameterOf(patches.patchDomain(patch), scheme, patch,
+                                             patches.controlMesh().faceSize(patch), coord);
+  const ref::LimitPoint exact =
+      at.sub_face < 0 ? face.evaluate(at.u, at.v) : face.evaluateSubFace(at.sub_face, at.u, at.v);
+  return length(patches.evaluate(patch, coord).position - exact.position);
+}
 
 ref::Scheme referenceScheme(LimitScheme scheme) {
   return scheme == LimitScheme::kLoop ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;

@@ -61,4 +61,28 @@ ref::Scheme referenceScheme(LimitScheme scheme);
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                                         const ref::LimitSurface& limit);
 
+// The point of the limit face (face_domain.h) at which a patch's domain coordinate is
+// graded: the same parameter for quads on Catmull-Clark faces ((u, v) = coord[0], coord[1])
+// and triangles on Loop faces ((u, v) = coord[1], coord[2], the weights of corners 1 and 2);
+// for a triangle patch on a Catmull-Clark triangle, the inverse of the bilinear sub-face map
+// measureSurfaceError samples through (sub-face k where corner k has the largest weight,
+// ties to the lower k).
+struct LimitParameter {
+  int sub_face = -1;  // >= 0: (u, v) are the normalised (s, t) of this Bfr sub-face
+  double u = 0, v = 0;
+};
+
+// Throws std::logic_error, as measureSurfaceError does, for a domain the face's
+// parameterisation cannot be mapped to. `face_size`: corners of control face `face`.
+LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t face,
+                                uint32_t face_size, const DomainCoord& coord);
+
+// One parametric-error sample of patch p at `coord`, in world units (divide by the
+// bounding-box diagonal for the figures' unit): |S(p, coord) - limit(face(p), same point)|,
+// S from patches.evaluate (double), the point from limitParameterOf. Best case 0 (acc on a
+// regular face: ~1e-16 of the diagonal). `face` is limit.face(p) of a LimitSurface built as
+// for measureSurfaceError.
+double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
+                         ref::Scheme scheme, size_t patch, const DomainCoord& coord);
+
 }  // namespace tb

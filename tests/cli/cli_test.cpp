@@ -181,6 +181,41 @@ TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
   while (std::getline(sa, la) && std::getline(sb, lb)) differing_lines += la != lb;
   EXPECT_LE(differing_lines, 2u);
   EXPECT_TRUE(std::filesystem::exists(runs[0] / "report.md"));
+  // The pictures too: the same files, byte for byte (only an index when there is no device).
+  ASSERT_TRUE(std::filesystem::exists(runs[0] / "pictures" / "pictures.json"));
+  size_t pictures = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(runs[0] / "pictures")) {
+    const auto other = runs[1] / "pictures" / entry.path().filename();
+    ASSERT_TRUE(std::filesystem::exists(other)) << other;
+    EXPECT_EQ(readFile(entry.path()), readFile(other)) << entry.path().filename();
+    ++pictures;
+  }
+  const auto index = nlohmann::json::parse(readFile(runs[0] / "pictures" / "pictures.json"));
+  EXPECT_EQ(pictures, 1 + 2 * index["pictures"].size());
+}
+
+TEST(Cli, RunWritesPicturesUnlessToldNot) {
+  const auto dir = testing::scratchDirectory("cli_pictures");
+  const std::string args = "run --quiet --technique acc --asset catmark_torus --measure error --out " +
+                           dir.string() + " --run-id ";
+  CommandResult r = runTessbench(args + "with");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto index = nlohmann::json::parse(readFile(dir / "with" / "pictures" / "pictures.json"));
+  if (index["status"] == "ok") {
+    ASSERT_EQ(index["pictures"].size(), 1u);
+    const auto& picture = index["pictures"][0];
+    EXPECT_EQ(picture["error_png"], "pictures/acc--opensubdiv--catmark_torus--error.png");
+    EXPECT_TRUE(std::filesystem::exists(dir / "with" / picture["error_png"].get<std::string>()));
+    EXPECT_TRUE(
+        std::filesystem::exists(dir / "with" / picture["wireframe_png"].get<std::string>()));
+  } else {
+    EXPECT_EQ(index["status"], "skipped");
+    EXPECT_TRUE(index["pictures"].empty());
+  }
+  r = runTessbench(args + "without --no-pictures");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "without" / "results.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "without" / "pictures"));
 }
 
 TEST(Cli, DefaultRunCoversPhongOnEveryBundledAsset) {

@@ -1,0 +1,199 @@
+#include "harness/pictures/run_pictures.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <utility>
+
+#include "core/gpu/context.h"
+#include "core/gpu/render_target.h"
+#include "core/mesh/obj_loader.h"
+#include "harness/measures/error.h"
+#include "harness/pictures/png_writer.h"
+#include "harness/suite/asset_catalog.h"
+#include "techniques/registry.h"
+
+namespace tb {
+namespace {
+
+constexpr const char* kErrorStatistic = "max_of_3_vertices";
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One technique × asset to picture.
+struct PictureJob {
+  const Technique* technique = nullptr;
+  const Record* record = nullptr;
+};
+
+// What one job produced: the index entry and, when ok, the two files' bytes.
+struct PictureOutcome {
+  PictureEntry entry;
+  std::string error_png, wireframe_png;
+};
+
+std::string fileStem(const std::string& technique, const std::string& asset) {
+  std::string stem = technique + "--";
+  for (char c : asset) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '_' || c == '-';
+    if (c == '/') {
+      stem += "--";
+    } else {
+      stem += plain ? c : '_';
+    }
+  }
+  return std::string(kPicturesFolder) + "/" + stem;
+}
+
+bool errorMeasured(const Record& record) {
+  for (const MeasureResult& measure : record.measures) {
+    if (measure.measure == "error" && measure.status == MeasureStatus::kOk) return true;
+  }
+  return false;
+}
+
+// Records of a surface technique's default variant with an ok `error` result, in record
+// order, one per technique × asset.
+std::vector<PictureJob> picturesOf(const Results& results) {
+  std::vector<PictureJob> jobs;
+  std::set<std::pair<std::string, std::string>> seen;
+  for (const Record& record : results.records) {
+    const Technique* technique = TechniqueRegistry::instance().find(record.technique);
+    if (technique == nullptr || technique->info().family != TechniqueFamily::kSurface) continue;
+    const std::vector<VariantInfo> variants = technique->variants();
+    if (variants.empty() || record.variant != variants.front().name) continue;
+    if (!errorMeasured(record)) continue;
+    if (!seen.insert({record.technique, record.asset}).second) continue;
+    jobs.push_back({technique, &record});
+  }
+  return jobs;
+}
+
+// The technique instance as the suite builds it: the asset loaded by its name, checked,
+// then built with the default variant.
+std::unique_ptr<TechniqueInstance> buildInstance(const Technique& technique,
+                                                 const std::string& asset, Mesh* mesh) {
+  const AssetRef ref = resolveAsset(asset);
+  *mesh = loadObjFile(ref.path);
+  mesh->source = ref.shownPath();
+  if (std::string reason = technique.checkSupport(*mesh); !reason.empty()) {
+    throw UnsupportedInput(reason);
+  }
+  std::unique_ptr<TechniqueInstance> instance =
+      technique.build(TechniqueInput{mesh, nullptr}, technique.variants().front());
+  if (instance == nullptr || instance->surface() == nullptr) {
+    throw std::logic_error(technique.info().id + ": the instance has no surface");
+  }
+  return instance;
+}
+
+// One job: CPU tessellation and error, the render (the shared target taken in turn), the
+// composition and the PNG encoding.
+PictureOutcome makePicture(const PictureJob& job, const PictureSettings& settings,
+                           gpu::RenderTarget& target, std::mutex& target_mutex) {
+  PictureOutcome outcome;
+  PictureEntry& entry = outcome.entry;
+  entry.technique = job.record->technique;
+  entry.variant = job.record->variant;
+  entry.asset = job.record->asset;
+  entry.level = settings.level;
+  entry.error_statistic = kErrorStatistic;
+  try {
+    Mesh mesh;
+    const std::unique_ptr<TechniqueInstance> instance =
+        buildInstance(*job.technique, entry.asset, &mesh);
+    const SurfacePatches& patches = *instance->surface();
+    const ref::LimitSurface limit(patches.controlMesh(), referenceScheme(patches.approximates()));
+    const SurfaceErrorMesh surface = tessellateWithError(patches, limit, settings.level);
+    const View view = threeQuarterView(surface.bounds, settings.size_px);
+    std::vector<uint32_t> ids;
+    {
+      const std::lock_guard lock(target_mutex);
+      ids = renderTriangleIds(target, surface, view);
+    }
+    const SurfacePictures pictures =
+        composeSurfacePictures(surface, view, settings.size_px, std::move(ids));
+    outcome.error_png = encodePng(pictures.error);
+    outcome.wireframe_png = encodePng(pictures.wireframe);
+    entry.error_png = errorPicturePath(entry.technique, entry.asset);
+    entry.wireframe_png = wireframePicturePath(entry.technique, entry.asset);
+    entry.width_px = pictures.error.width_px;
+    entry.height_px = pictures.error.height_px;
+    entry.error_max = pictures.error_max;
+    entry.scale_max = pictures.scale_max;
+  } catch (const std::exception& error) {
+    entry.status = "failed";
+    entry.reason = error.what();
+  }
+  return outcome;
+}
+
+}  // namespace
+
+std::string errorPicturePath(const std::string& technique, const std::string& asset) {
+  return fileStem(technique, asset) + "--error.png";
+}
+
+std::string wireframePicturePath(const std::string& technique, const std::string& asset) {
+  return fileStem(technique, asset) + "--wireframe.png";
+}
+
+PicturesIndex renderRunPictures(const Results& results, const std::string& device_name,
+                                const WriteFileFn& write, const PictureSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  gpu::ContextOptions options;
+  options.device_name = device_name;
+  options.required = gpu::DeviceFeatures{};
+  options.required.dynamic_rendering = true;  // all gpu::RenderTarget needs
+  auto created = gpu::Context::create(options);
+  PicturesIndex index = created
+                            ? renderRunPictures(results, created.value().get(), "", write, settings)
+                            : renderRunPictures(results, nullptr, created.error(), write, settings);
+  index.wall_s = secondsSince(start);
+  return index;
+}
+
+PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
+                                const std::string& unavailable_reason, const WriteFileFn& write,
+                                const PictureSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  PicturesIndex index;
+  if (context == nullptr) {
+    index.status = "skipped";
+    index.reason = "no Vulkan device (" + unavailable_reason + ")";
+    write(kPicturesIndexPath, picturesIndexJson(index));
+    return index;
+  }
+  index.device = context->info().device_name;
+  const std::vector<PictureJob> jobs = picturesOf(results);
+  std::vector<PictureOutcome> outcomes(jobs.size());
+  if (!jobs.empty()) {
+    gpu::RenderTarget target(*context, settings.size_px, settings.size_px);
+    std::mutex target_mutex;
+    tbb::parallel_for(
+        size_t(0), jobs.size(),
+        [&](size_t i) { outcomes[i] = makePicture(jobs[i], settings, target, target_mutex); },
+        tbb::simple_partitioner());
+  }
+  for (PictureOutcome& outcome : outcomes) {
+    if (outcome.entry.status == "ok") {
+      write(outcome.entry.error_png, outcome.error_png);
+      write(outcome.entry.wireframe_png, outcome.wireframe_png);
+      index.png_bytes += outcome.error_png.size() + outcome.wireframe_png.size();
+    }
+    index.pictures.push_back(std::move(outcome.entry));
+  }
+  write(kPicturesIndexPath, picturesIndexJson(index));
+  index.wall_s = secondsSince(start);
+  return index;
+}
+
+}  // namespace tb
