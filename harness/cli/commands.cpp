@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "harness/cli/html_assets.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
@@ -190,6 +191,7 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   results.context.selection.camera_paths = camera_files;
   if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
   folder.writeFile("report.md", renderMarkdown(results));
+  folder.writeFile("report.html", renderRunHtml(results, folder.pendingPath()));
   folder.writeFile("timings.json", timingsJson(timings));
   folder.writeFile("results.json", serializeResults(results));
   const std::string finished = folder.finish();
@@ -227,10 +229,15 @@ int runRun(const RunArgs& args, const std::string& command_line) {
 int runReport(const ReportArgs& args) {
   requireFinishedRunFolder(args.run_dir);
   const Results results = readResultsFile(args.run_dir + "/results.json");
-  if (args.format != "md") {
-    throw InputError("--format", args.format, "unknown report format (known: md)");
+  if (args.format == "md") {
+    fmt::print("{}", renderMarkdown(results));
+  } else if (args.format == "html") {
+    const HtmlAssets assets = loadHtmlAssets(args.run_dir);
+    if (assets.chartjs_source.empty()) throw std::runtime_error(assets.chartjs_missing_reason);
+    fmt::print("{}", renderHtml(results, assets));
+  } else {
+    throw InputError("--format", args.format, "unknown report format (known: md, html)");
   }
-  fmt::print("{}", renderMarkdown(results));
   return 0;
 }
 
