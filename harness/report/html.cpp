@@ -80,7 +80,9 @@ void contextSection(const Results& results, Page* page) {
 std::string plotNote(const PlotData& data) {
   std::vector<std::string> parts;
   parts.push_back(
-      fmt::format("{} rows; a point is the median of one series' rows at one x", data.rows_used));
+      fmt::format("{} rows; a point is the median of {}", data.rows_used,
+                  data.point_per_variant ? "one technique × variant's rows"
+                                         : "one series' rows at one x"));
   if (!data.spec.where.empty()) {
     std::string where;
     for (const auto& [key, value] : data.spec.where)

@@ -265,6 +265,7 @@ PlotData plotData(const Results& results, const MeasureDeclaration& measure, con
       data.x_label = withUnit(spec.x, unitOf(results, measure.measure, spec.x));
       break;
     case XSource::kOtherMeasure:
+      data.point_per_variant = true;
       data.x_label = cross->measure + " " +
                      withUnit(cross->metric, unitOf(results, cross->measure, cross->metric));
       break;

@@ -43,6 +43,8 @@ struct PlotData {
   std::string x_label;  // "level", "hausdorff (rel_diag)", "instructions total (count)"
   std::string y_label;  // "plain_over_technique (ratio)"
   Direction y_direction = Direction::kNone;
+  // x is another measure's figure of the record: each technique × variant is its own point.
+  bool point_per_variant = false;
   // Facets in asset order; facets with fewer than 2 points and empty charts are dropped.
   std::vector<PlotChart> charts;
   size_t rows_used = 0;       // ok rows in `where` with a numeric x and a y

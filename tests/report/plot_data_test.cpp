@@ -168,6 +168,7 @@ TEST(PlotData, CrossMeasureXComesFromTheOtherMeasuresSummary) {
                 .pareto_front = true};
   const PlotData data = plotData(results, results.measures[0], spec);
   EXPECT_EQ(data.x_label, "instructions total (count)");
+  EXPECT_TRUE(data.point_per_variant);
   EXPECT_EQ(data.charts_dropped, 1u);
   ASSERT_EQ(data.charts.size(), 1u);
   EXPECT_EQ(data.charts[0].facet, "cube");
