@@ -37,11 +37,23 @@ const char* const kHtmlChartScript = R"JS(
   };
   function number(v) {
     if (v === null || v === undefined) return '';
-    return Math.abs(v) >= 1e5 || (v !== 0 && Math.abs(v) < 1e-3) ? v.toExponential(3)
-                                                                 : String(+v.toPrecision(5));
+    var rounded = +v.toPrecision(4);  // 4 significant digits, trailing zeros dropped
+    var tiny = rounded !== 0 && Math.abs(rounded) < 1e-3;
+    return Math.abs(rounded) >= 1e5 || tiny ? rounded.toExponential() : String(rounded);
+  }
+  // Log axes label 1, 2 and 5 of each decade (only 1 over more than 4 decades), written
+  // short; Chart.js's own labels print every digit of 1e-13.
+  function logTick(value) {
+    if (!(value > 0)) return '';
+    var mantissa = Math.round(value / Math.pow(10, Math.floor(Math.log10(value) + 1e-9)));
+    var wide = this.max / this.min > 1e4;
+    return mantissa === 1 || (!wide && (mantissa === 2 || mantissa === 5)) ? number(value) : '';
   }
   function axis(type, title) {
-    return { type: type, title: { display: true, text: title } };
+    var scale = { type: type, title: { display: true, text: title } };
+    if (type === 'logarithmic') scale.ticks = { callback: logTick };
+    if (type === 'linear') scale.ticks = { callback: function (value) { return number(value); } };
+    return scale;
   }
   function pointDatasets(chart) {
     var sets = chart.series.map(function (s) {

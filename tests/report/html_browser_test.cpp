@@ -119,6 +119,17 @@ TEST(HtmlBrowser, ChromiumDrawsEveryChartWithoutAScriptError) {
   EXPECT_EQ(occurrences(dom, "src=\"data:image/png;base64,iVBORw0KGgo"), 2u);
   EXPECT_NE(dom.find("failed: a device error"), std::string::npos);
 
+  // The check can fail: the same page with a script that throws shows the error.
+  const fs::path broken = dir / "broken.html";
+  std::string broken_page = report.out;
+  broken_page.insert(broken_page.rfind("</body>"),
+                     "<script>throw new Error('tessbench test error');</script>\n");
+  std::ofstream(broken) << broken_page;
+  ASSERT_EQ(runChromium(dir / "profile", "--dump-dom", broken, dom_file), 0);
+  EXPECT_NE(
+      between(readFile(dom_file), "<ul id=\"script-errors\"", "</ul>").find("tessbench test error"),
+      std::string::npos);
+
   const fs::path artefacts = fs::path(TB_BINARY_DIR) / "test-artefacts";
   fs::create_directories(artefacts);
   const fs::path screenshot = artefacts / "report_html.png";
