@@ -1,6 +1,6 @@
-#include "harness/report/markdown.h"
-
 #include <gtest/gtest.h>
+
+#include "harness/report/markdown.h"
 
 namespace tb {
 namespace {
@@ -11,19 +11,15 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
   Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {}, {"12 polygons split"}, {}};
   MeasureResult memory;
   memory.measure = "memory";
-  memory.rows.push_back(
-      {{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
-  memory.rows.push_back(
-      {{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
+  memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
+  memory.rows.push_back({{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
   record.measures.push_back(memory);
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
   const std::string md = renderMarkdown(results);
   EXPECT_NE(md.find("## Measure: memory"), std::string::npos);
-  EXPECT_NE(
-      md.find(
-          "| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
-      std::string::npos)
+  EXPECT_NE(md.find("| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
+            std::string::npos)
       << md;
   EXPECT_NE(md.find("| phong | alpha0.75 | opensubdiv/catmark_cube | 16 | ok | 8.00 KiB | 3 |"),
             std::string::npos)
@@ -81,7 +77,8 @@ TEST(Markdown, SkippedRowShowsItsStatusAndReason) {
   results.records.push_back(record);
   const std::string md = renderMarkdown(results);
   EXPECT_NE(md.find("| acc | default | a | cpu_float | ok | 0 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"), std::string::npos)
+  EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"),
+            std::string::npos)
       << md;
 }
 
