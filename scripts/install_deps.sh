@@ -12,6 +12,7 @@ packages=(
   libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libmeshoptimizer-dev libtbb-dev libpng-dev
   valgrind
+  chromium libjs-chart.js
   clang-14 libfuzzer-14-dev
 )
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "harness/cli/progress_estimate.h"
+#include "harness/cli/html_assets.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
@@ -201,12 +202,13 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   }
   folder.writeFile("report.md", renderMarkdown(results));
   for (const auto& [name, text] : renderCsvTables(results)) folder.writeFile(name, text);
+  folder.writeFile("report.html", renderRunHtml(results, folder.pendingPath()));
   folder.writeFile("timings.json", timingsJson(timings));
   folder.writeFile("results.json", serializeResults(results));
   const std::string finished = folder.finish();
   if (!args.quiet) {
     printTimingSummary(timings);
-    fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md)\n",
+    fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md, report.html)\n",
                results.records.size(), results.skipped.size(), finished);
   } else {
     fmt::print("{}\n", finished);
@@ -238,10 +240,15 @@ int runRun(const RunArgs& args, const std::string& command_line) {
 int runReport(const ReportArgs& args) {
   requireFinishedRunFolder(args.run_dir);
   const Results results = readResultsFile(args.run_dir + "/results.json");
-  if (args.format != "md") {
-    throw InputError("--format", args.format, "unknown report format (known: md)");
+  if (args.format == "md") {
+    fmt::print("{}", renderMarkdown(results));
+  } else if (args.format == "html") {
+    const HtmlAssets assets = loadHtmlAssets(args.run_dir);
+    if (assets.chartjs_source.empty()) throw std::runtime_error(assets.chartjs_missing_reason);
+    fmt::print("{}", renderHtml(results, assets));
+  } else {
+    throw InputError("--format", args.format, "unknown report format (known: md, html)");
   }
-  fmt::print("{}", renderMarkdown(results));
   return 0;
 }
 

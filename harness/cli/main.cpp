@@ -73,7 +73,9 @@ int main(int argc, char** argv) {
   tb::cli::ReportArgs report_args;
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");
   report->add_option("run_dir", report_args.run_dir, "results/<run-id>")->required();
-  report->add_option("--format", report_args.format, "md")->capture_default_str();
+  report->add_option("--format", report_args.format,
+                     "md | html (one self-contained page of charts and pictures)")
+      ->capture_default_str();
 
   tb::cli::CompareArgs compare_args;
   CLI::App* compare = app.add_subcommand(

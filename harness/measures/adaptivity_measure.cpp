@@ -226,7 +226,19 @@ class AdaptivityMeasure final : public Measure {
          "default path; --suite full: every policy (uniform, the lp2_edge reductions, the "
          "order-dependent controls) at integer, pow2, fractional_odd and fractional_even, and "
          "summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
-         "and stays out of results.json"}};
+         "and stays out of results.json"},
+        {},
+        // The per-frame trade-off of each policy: triangles drawn against the largest
+        // on-screen tessellation error, one chart per asset (every technique's frames).
+        {PlotSpec{.title = "Triangles against tessellation error in pixels, per frame",
+                  .kind = PlotKind::kScatter,
+                  .x = "tess_error_max_px",
+                  .y = "triangles",
+                  .series = "policy",
+                  .facet = "asset",
+                  .where = {{"frame", "*"}},
+                  .log_x = true,
+                  .log_y = true}}};
     return kInfo;
   }
 

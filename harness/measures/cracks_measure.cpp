@@ -91,7 +91,18 @@ class CracksMeasure final : public Measure {
          "(the interior is never compared)",
          "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
          "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
-         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"}};
+         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"},
+        {},
+        // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
+        {PlotSpec{.title = "Points where two patches differ, per variant (median over assets, "
+                           "spacings and levels; no bar: 0)",
+                  .kind = PlotKind::kBar,
+                  .x = "variant",
+                  .y = "points_not_equal",
+                  .series = "backend",
+                  .facet = "",
+                  .where = {},
+                  .log_y = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

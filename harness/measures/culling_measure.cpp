@@ -163,6 +163,15 @@ class CullingMeasure final : public Measure {
            "full: level 8 at the path's resolution, every variant, every frame of the three "
            "paths"}};
       for (std::string& note : policyNotes()) info.notes.push_back(std::move(note));
+      // The share of TES work each policy removes (its path summary rows; median over
+      // assets and camera paths).
+      info.plots = {PlotSpec{.title = "TES invocations saved per culling policy",
+                             .kind = PlotKind::kBar,
+                             .x = "policy",
+                             .y = "mean_tes_saving",
+                             .series = "technique",
+                             .facet = "",
+                             .where = {{"summary", kSummaryKey}}}};
       return info;
     }();
     return kInfo;

@@ -56,7 +56,20 @@ class ErrorMeasure final : public Measure {
          "samples: a lattice of " + std::to_string(kErrorSampleLevel) +
              " segments per patch edge; reference tessellated at rate " +
              std::to_string(kErrorReferenceRate) +
-             "; near extraordinary (xord): corner weight >= 0.75"}};
+             "; near extraordinary (xord): corner weight >= 0.75"},
+        {},
+        // What a technique's accuracy costs: its worst TES instruction count (the
+        // instructions measure's summary scope) against its Hausdorff error, one chart per
+        // asset, each technique × variant a point.
+        {PlotSpec{.title = "Hausdorff error against TES instructions",
+                  .kind = PlotKind::kScatter,
+                  .x = "instructions.total",
+                  .y = "hausdorff",
+                  .series = "technique",
+                  .facet = "asset",
+                  .where = {},
+                  .log_y = true,
+                  .pareto_front = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -98,7 +98,18 @@ class MemoryMeasure final : public Measure {
          "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
          "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
          "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
-         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"}};
+         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"},
+        {},
+        // One line per technique/variant: how the saving grows with the level (median over
+        // the assets; levels double, so a log x spaces them evenly).
+        {PlotSpec{.title = "Plain mesh over technique bytes against tessellation level",
+                  .kind = PlotKind::kLine,
+                  .x = "level",
+                  .y = "plain_over_technique",
+                  .series = "variant",
+                  .facet = "",
+                  .where = {},
+                  .log_x = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

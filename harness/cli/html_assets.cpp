@@ -1,0 +1,163 @@
+#include "harness/cli/html_assets.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+namespace tb::cli {
+namespace {
+
+using Json = nlohmann::json;
+
+// Pictures beyond this many PNG bytes in all are left out (with a note), so a huge run
+// cannot make report.html too big for a browser to open (base64 adds a third).
+constexpr size_t kMaxPictureBytes = size_t{48} << 20;
+
+std::optional<std::string> readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return bytes.str();
+}
+
+std::string textOf(const Json& entry, const char* name) {
+  const auto it = entry.find(name);
+  return it != entry.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+std::optional<double> numberOf(const Json& entry, const char* name) {
+  const auto it = entry.find(name);
+  return it != entry.end() && it->is_number() ? std::optional<double>(it->get<double>())
+                                              : std::nullopt;
+}
+
+// A PNG of the run folder by its relative path; nullopt (and a note) when it is missing,
+// not a PNG, or over the size budget.
+std::optional<std::string> readPicture(const std::string& run_dir, const std::string& path,
+                                       size_t* bytes_used, HtmlAssets* assets) {
+  static constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
+  if (path.empty() || path.find("..") != std::string::npos || path.front() == '/') {
+    assets->picture_notes.push_back("a picture path \"" + path +
+                                    "\" left out (not a file of the run folder)");
+    return std::nullopt;
+  }
+  std::optional<std::string> png = readWholeFile(run_dir + "/" + path);
+  if (!png || png->compare(0, kPngSignature.size(), kPngSignature) != 0) {
+    assets->picture_notes.push_back(path + " left out: " + (png ? "not a PNG" : "cannot be read"));
+    return std::nullopt;
+  }
+  if (*bytes_used + png->size() > kMaxPictureBytes) {
+    assets->picture_notes.push_back(path + " left out: the pictures passed " +
+                                    std::to_string(kMaxPictureBytes >> 20) + " MiB");
+    return std::nullopt;
+  }
+  *bytes_used += png->size();
+  return png;
+}
+
+// One entry of pictures.json ({technique, variant, asset, level, error_png, wireframe_png,
+// error_max, scale_min, scale_max, error_statistic, [status, reason]}) as a group.
+void addPictureGroup(const std::string& run_dir, const Json& entry, size_t* bytes_used,
+                     HtmlAssets* assets) {
+  const std::string name =
+      textOf(entry, "technique") + "/" + textOf(entry, "variant") + " on " + textOf(entry, "asset");
+  if (const std::string status = textOf(entry, "status"); !status.empty() && status != "ok") {
+    assets->picture_notes.push_back(name + ": " + status + ": " + textOf(entry, "reason"));
+    return;
+  }
+  HtmlPictureGroup group;
+  group.title = name;
+  const std::optional<double> level = numberOf(entry, "level");
+  const std::string statistic = textOf(entry, "error_statistic");
+  if (level) group.note = fmt::format("uniform level {}", *level);
+  if (!statistic.empty()) group.note += (group.note.empty() ? "" : "; ") + ("colour: " + statistic);
+  const double scale_min = numberOf(entry, "scale_min").value_or(0);
+  const std::optional<double> scale_max = numberOf(entry, "scale_max");
+  const std::optional<double> error_max = numberOf(entry, "error_max");
+  std::string scale = "error";
+  if (scale_max)
+    scale += fmt::format(", colour scale {:.3g} … {:.3g} rel_diag", scale_min, *scale_max);
+  if (error_max) scale += fmt::format(", largest {:.3g} rel_diag", *error_max);
+  if (auto png = readPicture(run_dir, textOf(entry, "error_png"), bytes_used, assets)) {
+    group.pictures.push_back({scale, std::move(*png)});
+  }
+  if (auto png = readPicture(run_dir, textOf(entry, "wireframe_png"), bytes_used, assets)) {
+    group.pictures.push_back({"wireframe", std::move(*png)});
+  }
+  if (!group.pictures.empty()) assets->pictures.push_back(std::move(group));
+}
+
+void loadPictures(const std::string& run_dir, HtmlAssets* assets) {
+  const std::string index_path = run_dir + "/pictures/pictures.json";
+  const std::optional<std::string> text = readWholeFile(index_path);
+  if (!text) {
+    assets->picture_notes.push_back("No pictures: the run folder has no pictures/pictures.json.");
+    return;
+  }
+  const Json index = Json::parse(*text, nullptr, /*allow_exceptions=*/false);
+  if (!index.is_object() || !index.contains("pictures") || !index["pictures"].is_array()) {
+    assets->picture_notes.push_back(
+        "No pictures: pictures/pictures.json is not an object with a \"pictures\" list.");
+    return;
+  }
+  if (const std::string status = textOf(index, "status"); !status.empty() && status != "ok") {
+    assets->picture_notes.push_back("No pictures: " + status + ": " + textOf(index, "reason"));
+  }
+  if (const std::string device = textOf(index, "device"); !device.empty()) {
+    assets->picture_notes.push_back("Rendered on " + device + ".");
+  }
+  size_t bytes_used = 0;
+  size_t malformed = 0;
+  for (const Json& entry : index["pictures"]) {
+    if (!entry.is_object() || textOf(entry, "technique").empty() ||
+        textOf(entry, "asset").empty()) {
+      ++malformed;
+      continue;
+    }
+    addPictureGroup(run_dir, entry, &bytes_used, assets);
+  }
+  if (malformed > 0) {
+    assets->picture_notes.push_back(fmt::format(
+        "{} entries of pictures/pictures.json without a technique and asset left out.", malformed));
+  }
+}
+
+}  // namespace
+
+std::string chartJsPath() {
+  const char* path = std::getenv("TESSBENCH_CHARTJS");
+  return path != nullptr && *path != '\0' ? std::string(path) : std::string(TB_CHARTJS_PATH);
+}
+
+HtmlAssets loadHtmlAssets(const std::string& run_dir) {
+  HtmlAssets assets;
+  const std::string path = chartJsPath();
+  std::optional<std::string> source = readWholeFile(path);
+  if (source && !source->empty()) {
+    assets.chartjs_source = std::move(*source);
+  } else {
+    assets.chartjs_missing_reason =
+        path +
+        ": cannot read Chart.js (Debian package libjs-chart.js; TESSBENCH_CHARTJS=PATH "
+        "names another file)";
+  }
+  loadPictures(run_dir, &assets);
+  return assets;
+}
+
+std::string renderRunHtml(const Results& results, const std::string& run_dir) {
+  const HtmlAssets assets = loadHtmlAssets(run_dir);
+  if (assets.chartjs_source.empty()) {
+    fmt::print(stderr, "tessbench: warning: {}; report.html has no charts\n",
+               assets.chartjs_missing_reason);
+  }
+  return renderHtml(results, assets);
+}
+
+}  // namespace tb::cli

@@ -1,0 +1,85 @@
+// The CLI side of report.html: `run` writes it, `report --format html` prints it, and both
+// say what is missing (Chart.js, pictures) in the ways the user can act on.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/cli/cli_support.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::lineCount;
+using testing::readFile;
+using testing::runTessbenchSplit;
+
+// A one-record run (phong on the cube, memory only: well under a second).
+fs::path smallRun(const std::string& name) {
+  const fs::path dir = testing::scratchDirectory(name);
+  const testing::SplitResult run = runTessbenchSplit(
+      "run --quiet --technique phong --asset catmark_cube --measure memory --run-id r --out " +
+      dir.string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return dir / "r";
+}
+
+TEST(HtmlCli, WithoutChartJsRunWarnsOnceAndReportExitsTwoNamingTheFile) {
+  const std::string missing = "TESSBENCH_CHARTJS=/nonexistent/chart.umd.js";
+  const fs::path dir = testing::scratchDirectory("html_cli_nochart");
+  const testing::SplitResult run = runTessbenchSplit(
+      "run --quiet --technique phong --asset catmark_cube --measure memory --run-id r --out " +
+          dir.string(),
+      missing);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(lineCount(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find("warning: /nonexistent/chart.umd.js"), std::string::npos) << run.err;
+  const std::string page = readFile(dir / "r" / "report.html");
+  EXPECT_NE(page.find("Charts unavailable: /nonexistent/chart.umd.js"), std::string::npos);
+
+  const testing::SplitResult report =
+      runTessbenchSplit("report --format html " + (dir / "r").string(), missing);
+  EXPECT_EQ(report.exit_code, 2);
+  EXPECT_EQ(report.out, "");
+  EXPECT_EQ(lineCount(report.err), 1u) << report.err;
+  EXPECT_NE(report.err.find("/nonexistent/chart.umd.js"), std::string::npos) << report.err;
+  fs::remove_all(dir);
+}
+
+TEST(HtmlCli, ReportSaysWhyThereAreNoPictures) {
+  const fs::path run = smallRun("html_cli_pictures");
+  const testing::SplitResult absent = runTessbenchSplit("report --format html " + run.string());
+  ASSERT_EQ(absent.exit_code, 0) << absent.err;
+  EXPECT_NE(absent.out.find("No pictures: the run folder has no pictures/pictures.json."),
+            std::string::npos);
+  EXPECT_NE(absent.out.find("<canvas"), std::string::npos) << "the memory plot is drawn";
+
+  // Another format (a list at the top): skipped with a note, the report still renders.
+  fs::create_directories(run / "pictures");
+  testing::writeTextFile(run / "pictures" / "pictures.json", "[{\"png\": \"x.png\"}]");
+  const testing::SplitResult other = runTessbenchSplit("report --format html " + run.string());
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.out.find("is not an object with a &quot;pictures&quot; list"), std::string::npos);
+
+  // An entry whose file is missing is left out by name.
+  testing::writeTextFile(run / "pictures" / "pictures.json",
+                         R"({"pictures": [{"technique": "phong", "variant": "alpha0.75", )"
+                         R"("asset": "opensubdiv/catmark_cube", "error_png": "pictures/e.png"}]})");
+  const testing::SplitResult missing = runTessbenchSplit("report --format html " + run.string());
+  ASSERT_EQ(missing.exit_code, 0) << missing.err;
+  EXPECT_NE(missing.out.find("pictures/e.png left out: cannot be read"), std::string::npos);
+  fs::remove_all(run.parent_path());
+}
+
+TEST(HtmlCli, UnknownFormatIsOneLineListingTheKnownOnes) {
+  const fs::path run = smallRun("html_cli_format");
+  const testing::SplitResult report = runTessbenchSplit("report --format pdf " + run.string());
+  EXPECT_EQ(report.exit_code, 2);
+  EXPECT_NE(report.err.find("known: md, html"), std::string::npos) << report.err;
+  fs::remove_all(run.parent_path());
+}
+
+}  // namespace
+}  // namespace tb
