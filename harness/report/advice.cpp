@@ -172,21 +172,27 @@ std::string behind(const Candidate& c, const Candidate& before, size_t before_ra
   const auto differ = [](const std::optional<double>& a, const std::optional<double>& b) {
     return orInfinity(a) != orInfinity(b);
   };
-  const auto shown = [](const std::optional<double>& v) {
-    return v ? formatAdviceNumber(*v) : std::string("none");
+  // Enough digits to tell the two apart.
+  const auto pair = [](const std::optional<double>& a, const std::optional<double>& b) {
+    const auto shown = [](const std::optional<double>& v, int digits) {
+      return v ? fmt::format("{:.{}g}", *v, digits) : std::string("none");
+    };
+    int digits = 4;
+    while (digits < 17 && shown(a, digits) == shown(b, digits)) ++digits;
+    return std::pair{shown(a, digits), shown(b, digits)};
   };
   if (differ(c.figures.error, before.figures.error)) {
-    return fmt::format("higher error than #{} ({} > {} rel_diag)", before_rank,
-                       shown(c.figures.error), shown(before.figures.error));
+    const auto [mine, theirs] = pair(c.figures.error, before.figures.error);
+    return fmt::format("higher error than #{} ({} > {} rel_diag)", before_rank, mine, theirs);
   }
   if (differ(c.figures.instructions, before.figures.instructions)) {
-    return fmt::format("same error as #{}, more instructions ({} > {})", before_rank,
-                       shown(c.figures.instructions), shown(before.figures.instructions));
+    const auto [mine, theirs] = pair(c.figures.instructions, before.figures.instructions);
+    return fmt::format("same error as #{}, more instructions ({} > {})", before_rank, mine, theirs);
   }
   if (differ(c.figures.memory_ratio, before.figures.memory_ratio)) {
+    const auto [mine, theirs] = pair(c.figures.memory_ratio, before.figures.memory_ratio);
     return fmt::format("same error and instructions as #{}, larger memory ratio ({} > {})",
-                       before_rank, shown(c.figures.memory_ratio),
-                       shown(before.figures.memory_ratio));
+                       before_rank, mine, theirs);
   }
   return fmt::format("same figures as #{}, after it by name", before_rank);
 }

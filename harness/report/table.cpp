@@ -134,7 +134,7 @@ TextTable publishedMemory(const Results& results) {
     }
   }
   for (const PublishedMemoryRow& published : publishedMemoryTable()) {
-    table.rows.push_back({sourceName(kPublishedMemorySeed), "", std::to_string(published.level),
+    table.rows.push_back({sourceName(kPublishedMemorySeed), "-", std::to_string(published.level),
                           figure(published.plain_mb), figure(published.technique_mb),
                           figure(published.plain_mb / published.technique_mb)});
     for (const std::string& who : order) {
