@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <exception>
 
+#include "harness/cli/advise_command.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/compare_command.h"
 #include "harness/cli/merge_command.h"
+#include "harness/cli/table_command.h"
 #include "harness/cli/tessellate_run.h"
 #include "techniques/registry.h"
 #include "tb_build_info.h"
@@ -106,6 +108,11 @@ int main(int argc, char** argv) {
   tb::cli::addTessellateCommand(app, tessellate_args);
   CLI::App* tessellate = app.get_subcommand("tessellate");
 
+  tb::cli::AdviseArgs advise_args;
+  CLI::App* advise = tb::cli::addAdviseCommand(app, advise_args);
+  tb::cli::TableArgs table_args;
+  CLI::App* table = tb::cli::addTableCommand(app, table_args);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -128,6 +135,8 @@ int main(int argc, char** argv) {
     if (*merge) return tb::cli::runMerge(merge_args, command_line);
     if (*compare) return tb::cli::runCompare(compare_args);
     if (*tessellate) return tb::cli::runTessellate(tessellate_args);
+    if (*advise) return tb::cli::runAdvise(advise_args);
+    if (*table) return tb::cli::runTable(table_args);
   } catch (const std::exception& error) {
     std::fflush(stdout);
     fmt::print(stderr, "tessbench: error: {}\n", error.what());

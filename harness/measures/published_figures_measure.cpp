@@ -39,8 +39,9 @@ constexpr std::array<PublishedOrder, 4> kNvidiaTalkOrders{{
 double alu(const InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
 
 // Where the published figures come from, as a reader's table cites them (row key "source").
-constexpr const char* kNvidiaTalk = "NVIDIA, displacement subdivision surfaces talk (D3D11)";
-constexpr const char* kSubD10 = "DirectX SDK SubD10 sample (Loop & Schaefer 2008 ACC)";
+// (harness/report/published_figures.h gives each its full citation by this name.)
+constexpr const char* kNvidiaTalk = "NVIDIA's displacement subdivision surfaces talk";
+constexpr const char* kSubD10 = "the DirectX SDK SubD10 sample";
 
 // One row: a published figure beside ours for the same stage.
 struct PublishedComparison {

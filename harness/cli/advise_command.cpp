@@ -1,0 +1,180 @@
+#include "harness/cli/advise_command.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "core/mesh/input_error.h"
+#include "harness/measures/measure.h"
+#include "harness/report/advice.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+#include "harness/suite/asset_catalog.h"
+#include "harness/suite/suite.h"
+#include "techniques/registry.h"
+
+namespace tb::cli {
+namespace {
+
+std::optional<double> parseBound(const std::string& option, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
+    throw InputError(option, text, "a bound is a finite number >= 0");
+  }
+  return value;
+}
+
+std::vector<const Technique*> techniquesNamed(const std::vector<std::string>& ids) {
+  std::vector<const Technique*> selected;
+  for (const std::string& id : ids) {
+    const Technique* technique = TechniqueRegistry::instance().find(id);
+    if (technique == nullptr) {
+      std::string known;
+      for (const Technique* t : TechniqueRegistry::instance().all()) {
+        known += (known.empty() ? "" : ", ") + t->info().id;
+      }
+      throw InputError("--technique", id, "unknown technique (known: " + known + ")");
+    }
+    selected.push_back(technique);
+  }
+  return selected;
+}
+
+// The advise measures of every (selected) technique on the one asset, default suite, no
+// run folder, no progress output.
+Results measureInProcess(const AdviseArgs& args, std::string* asset_name) {
+  SuiteSelection selection;
+  selection.techniques = techniquesNamed(args.techniques);
+  const AssetRef asset = resolveAsset(args.asset);
+  *asset_name = asset.name;
+  selection.assets.push_back(asset);
+  for (const std::string& id : adviseMeasureIds()) {
+    const Measure* measure = MeasureRegistry::instance().find(id);
+    if (measure == nullptr) throw InputError("advise", id, "measure not registered");
+    selection.measures.push_back(measure);
+  }
+  Results results;
+  runSuite(selection, [](size_t, size_t, const std::string&) {}, &results);
+  return results;
+}
+
+Results readRun(const AdviseArgs& args) {
+  techniquesNamed(args.techniques);  // an unknown id is bad input here too
+  requireFinishedRunFolder(args.run_dir);
+  Results results = readResultsFile(args.run_dir + "/results.json");
+  const bool named =
+      std::any_of(results.records.begin(), results.records.end(),
+                  [&](const Record& r) { return r.asset == args.asset; }) ||
+      std::any_of(results.skipped.begin(), results.skipped.end(),
+                  [&](const Skip& s) { return s.asset == args.asset; });
+  if (!named) {
+    std::string known;
+    for (const AssetSummary& a : results.assets) known += (known.empty() ? "" : ", ") + a.name;
+    throw InputError(args.run_dir + "/results.json", args.asset,
+                     "no records for this asset in the run (assets: " + known + ")");
+  }
+  return results;
+}
+
+nlohmann::ordered_json optionalJson(const std::optional<double>& value) {
+  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+
+std::string adviceJson(const Advice& advice, const AdviceConstraints& c) {
+  nlohmann::ordered_json candidates = nlohmann::ordered_json::array();
+  for (size_t i = 0; i < advice.ranked.size(); ++i) {
+    const Candidate& candidate = advice.ranked[i];
+    const CandidateFigures& f = candidate.figures;
+    candidates.push_back({{"rank", i + 1},
+                          {"technique", candidate.technique},
+                          {"variant", candidate.variant},
+                          {"passes", candidate.passes},
+                          {"error", optionalJson(f.error)},
+                          {"instructions", optionalJson(f.instructions)},
+                          {"memory_ratio", optionalJson(f.memory_ratio)},
+                          {"memory_from_default_variant", f.memory_from_default},
+                          {"watertight", toString(f.watertight)},
+                          {"points_not_equal", f.points_not_equal},
+                          {"unpaired_points", f.unpaired_points},
+                          {"failures", candidate.failures},
+                          {"verdict", candidate.verdict}});
+  }
+  nlohmann::ordered_json unsupported = nlohmann::ordered_json::array();
+  for (const UnsupportedTechnique& u : advice.unsupported) {
+    unsupported.push_back({{"technique", u.technique},
+                           {"verdict", "excluded: unsupported input: " + u.reason},
+                           {"reason", u.reason}});
+  }
+  const nlohmann::ordered_json json{
+      {"asset", advice.asset},
+      {"constraints",
+       {{"max_error", optionalJson(c.max_error)},
+        {"max_memory_ratio", optionalJson(c.max_memory_ratio)},
+        {"watertight", c.watertight},
+        {"max_instructions", optionalJson(c.max_instructions)}}},
+      {"units",
+       {{"error", "rel_diag"}, {"instructions", "count"}, {"memory_ratio", "ratio"}}},
+      {"ranking_rule", kAdviceRankingRule},
+      {"figures", kAdviceFigureUnits},
+      {"candidates", candidates},
+      {"unsupported", unsupported},
+      {"first_choice", advice.anyPasses() ? nlohmann::ordered_json(advice.ranked.front().technique +
+                                                                   "/" + advice.ranked.front().variant)
+                                          : nlohmann::ordered_json(nullptr)}};
+  return json.dump(2) + "\n";
+}
+
+}  // namespace
+
+const std::vector<std::string>& adviseMeasureIds() {
+  static const std::vector<std::string> kIds{"error", "cracks", "memory", "instructions"};
+  return kIds;
+}
+
+CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args) {
+  CLI::App* advise = app.add_subcommand(
+      "advise",
+      "rank technique x variant on one asset under constraints (error, memory, watertightness, "
+      "instructions), measuring error, cracks, memory and instructions in-process or reading a "
+      "finished run; exit 0 when a candidate meets every constraint, 1 when none does, 2 on bad "
+      "input");
+  advise->add_option("asset", args.asset, "bundled asset name or OBJ path")->required();
+  advise->add_option("--run", args.run_dir,
+                     "read a finished run folder (results/<run-id>) instead of measuring");
+  advise->add_option("--max-error", args.max_error,
+                     "largest worst hausdorff distance, fraction of the bounding-box diagonal");
+  advise->add_option("--max-memory-ratio", args.max_memory_ratio,
+                     "largest technique bytes (with displacement map) / plain triangle mesh bytes");
+  advise->add_flag("--watertight", args.watertight,
+                   "every cracks row watertight, CPU and device (skipped device rows fail it)");
+  advise->add_option("--max-instructions", args.max_instructions,
+                     "largest total SPIR-V instructions of the domain (.tese) stage, spirv-opt -O");
+  advise->add_option("--technique", args.techniques, "only this technique (repeatable)");
+  advise->add_flag("--json", args.json, "print JSON");
+  return advise;
+}
+
+int runAdvise(const AdviseArgs& args) {
+  AdviceConstraints constraints;
+  constraints.max_error = parseBound("--max-error", args.max_error);
+  constraints.max_memory_ratio = parseBound("--max-memory-ratio", args.max_memory_ratio);
+  constraints.max_instructions = parseBound("--max-instructions", args.max_instructions);
+  constraints.watertight = args.watertight;
+  constraints.techniques = args.techniques;
+
+  std::string asset = args.asset;
+  const Results results = args.run_dir.empty() ? measureInProcess(args, &asset) : readRun(args);
+  const Advice advice = rankCandidates(results, asset, constraints);
+  fmt::print("{}", args.json ? adviceJson(advice, constraints)
+                             : renderAdviceMarkdown(advice, constraints));
+  return advice.anyPasses() ? 0 : 1;
+}
+
+}  // namespace tb::cli

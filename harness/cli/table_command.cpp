@@ -1,0 +1,110 @@
+#include "harness/cli/table_command.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/mesh/input_error.h"
+#include "harness/report/summary.h"
+#include "harness/report/table.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+
+namespace tb::cli {
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+bool ran(const Results& results, const std::string& measure) {
+  return std::any_of(results.records.begin(), results.records.end(), [&](const Record& r) {
+    return std::any_of(r.measures.begin(), r.measures.end(),
+                       [&](const MeasureResult& m) { return m.measure == measure; });
+  });
+}
+
+}  // namespace
+
+CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
+  CLI::App* table = app.add_subcommand(
+      "table",
+      "render a measure's summary (median and worst per technique x variant) or the published "
+      "figures beside ours (--published) as Markdown, CSV or LaTeX (booktabs), with the run's "
+      "context as a footnote");
+  table->add_option("run_dir", args.run_dir, "results/<run-id>")->required();
+  table->add_option("--measure", args.measure, "measure id (required unless --published)");
+  table->add_option("--metric", args.metrics,
+                    "metric name (repeatable; default: the measure's headline metrics)");
+  table->add_option("--format", args.format,
+                    "markdown | csv (footnote as leading '# ' lines) | latex (booktabs fragment)")
+      ->capture_default_str();
+  table->add_flag("--per-asset", args.per_asset, "a line per technique x variant x asset");
+  table->add_flag("--published", args.published,
+                  "the published tables beside ours: memory (NVIDIA's displacement subdivision "
+                  "surfaces talk) and published_figures (its Bezier instruction counts, the DirectX "
+                  "SDK SubD10 sample's ACC costs); with --measure, that one only");
+  return table;
+}
+
+int runTable(const TableArgs& args) {
+  const std::optional<TableFormat> format = parseTableFormat(args.format);
+  if (!format) {
+    throw InputError("--format", args.format, "unknown table format (known: markdown, csv, latex)");
+  }
+  if (args.measure.empty() && !args.published) {
+    throw InputError("--measure", "", "a measure is required (or --published)");
+  }
+  requireFinishedRunFolder(args.run_dir);
+  const Results results = readResultsFile(args.run_dir + "/results.json");
+  const std::vector<std::string> ids = measureIds(results);
+  if (!args.measure.empty() && std::find(ids.begin(), ids.end(), args.measure) == ids.end()) {
+    throw InputError(args.run_dir + "/results.json", "--measure " + args.measure,
+                     "the run has no such measure (measures: " + joined(ids) + ")");
+  }
+
+  if (args.published) {
+    std::vector<std::string> measures;
+    if (!args.measure.empty()) {
+      if (!hasPublishedTable(args.measure)) {
+        throw InputError("--measure", args.measure,
+                         "no published table for this measure (known: memory, published_figures)");
+      }
+      measures.push_back(args.measure);
+    } else {
+      for (const char* id : {"memory", "published_figures"}) {
+        if (ran(results, id)) measures.push_back(id);
+      }
+      if (measures.empty()) {
+        throw InputError(args.run_dir + "/results.json", "--published",
+                         "the run has neither memory nor published_figures results");
+      }
+    }
+    for (size_t i = 0; i < measures.size(); ++i) {
+      fmt::print("{}{}", i > 0 ? "\n" : "",
+                 renderTable(publishedTable(results, measures[i]), *format));
+    }
+    return 0;
+  }
+
+  const MeasureDeclaration* declaration = results.findMeasure(args.measure);
+  for (const std::string& metric : args.metrics) {
+    if (declaration != nullptr && declaration->find(metric) == nullptr) {
+      std::vector<std::string> known;
+      for (const MetricSpec& spec : declaration->metrics) known.push_back(spec.name);
+      throw InputError("--metric", metric,
+                       "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
+    }
+  }
+  SummaryTableOptions options;
+  options.measure = args.measure;
+  options.metrics = args.metrics;
+  options.per_asset = args.per_asset;
+  fmt::print("{}", renderTable(summaryTable(results, options), *format));
+  return 0;
+}
+
+}  // namespace tb::cli

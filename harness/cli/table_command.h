@@ -1,0 +1,29 @@
+// `tessbench table RUN_DIR --measure M`: a measure's summary, or a published table beside
+// ours, as Markdown, CSV or LaTeX (harness/report/table.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace tb::cli {
+
+struct TableArgs {
+  std::string run_dir;
+  std::string measure;               // required unless --published
+  std::vector<std::string> metrics;  // empty: the declaration's headline metrics
+  std::string format = "markdown";   // markdown | csv | latex
+  bool per_asset = false;
+  bool published = false;  // the published figures beside ours (memory, seed_figures)
+};
+
+CLI::App* addTableCommand(CLI::App& app, TableArgs& args);
+
+// Exit 0, or 2 on bad input (an unfinished folder, a measure or metric the run lacks, an
+// unknown format).
+int runTable(const TableArgs& args);
+
+}  // namespace tb::cli

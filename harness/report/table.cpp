@@ -1,0 +1,338 @@
+#include "harness/report/table.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <regex>
+#include <tuple>
+
+#include "harness/report/published_figures.h"
+#include "harness/report/summary.h"
+
+namespace tb {
+namespace {
+
+// 4 significant digits; integers without a fraction.
+std::string figure(double value) {
+  if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15) {
+    return fmt::format("{}", static_cast<long long>(value));
+  }
+  return fmt::format("{:.4g}", value);
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t mid = values.size() / 2;
+  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+std::string orNone(const std::string& text, const char* none) {
+  return text.empty() ? std::string(none) : text;
+}
+
+}  // namespace
+
+std::optional<TableFormat> parseTableFormat(std::string_view text) {
+  if (text == "markdown") return TableFormat::kMarkdown;
+  if (text == "csv") return TableFormat::kCsv;
+  if (text == "latex") return TableFormat::kLatex;
+  return std::nullopt;
+}
+
+std::vector<std::string> runContextFootnote(const Results& results) {
+  const RunContext& c = results.context;
+  std::vector<std::string> lines;
+  lines.push_back(fmt::format("Run {} ({}), git {}, Vulkan device: {}, suite: {}.",
+                              orNone(c.run_id, "unnamed"), orNone(c.date, "undated"),
+                              orNone(c.git_sha, "unknown"), orNone(c.vulkan_device, "none"),
+                              orNone(c.selection.suite, "default")));
+  std::string libraries;
+  for (const auto& [name, version] : c.libraries) {
+    libraries += fmt::format("{}{} {}", libraries.empty() ? "" : ", ", name, version);
+  }
+  lines.push_back("Libraries: " + orNone(libraries, "not recorded") + ".");
+  return lines;
+}
+
+TextTable summaryTable(const Results& results, const SummaryTableOptions& options) {
+  const MeasureSummary summary = summarizeMeasure(
+      results, options.measure,
+      options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
+      options.metrics);
+  TextTable table;
+  table.title = summary.declaration != nullptr ? summary.declaration->title : options.measure;
+  table.header = {"technique", "variant"};
+  if (options.per_asset) table.header.push_back("asset");
+  table.numeric.assign(table.header.size(), false);
+  for (const std::string& metric : summary.metrics) {
+    const std::string unit = unitOf(results, options.measure, metric);
+    const std::string suffix = unit.empty() ? "" : " (" + unit + ")";
+    table.header.push_back(metric + " median" + suffix);
+    table.header.push_back(metric + " worst" + suffix);
+    table.numeric.insert(table.numeric.end(), {true, true});
+  }
+  for (const SummaryLine& line : summary.lines) {
+    std::vector<std::string> row{line.technique, line.variant};
+    if (options.per_asset) row.push_back(line.asset);
+    for (const std::string& metric : summary.metrics) {
+      const MetricStats* stats = line.find(metric);
+      if (stats == nullptr || stats->rows == 0) {
+        const std::string status = line.ok_rows == 0 && line.skipped_rows + line.failed_rows > 0
+                                       ? (line.failed_rows > 0 ? "failed" : "skipped")
+                                       : "";
+        row.insert(row.end(), {status, status});
+        continue;
+      }
+      row.push_back(figure(stats->median));
+      row.push_back(figure(worstOf(*stats, directionOf(results, options.measure, metric))));
+    }
+    table.rows.push_back(std::move(row));
+  }
+  table.footnote.push_back(fmt::format(
+      "{} (measure {}): median and worst over the rows of its summary scope{}; worst is the "
+      "largest where lower is better, the smallest where higher is better.",
+      table.title, options.measure, options.per_asset ? "" : " and every asset"));
+  for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
+  return table;
+}
+
+namespace {
+
+// Ours beside the talk's memory table: per technique x variant and level, the median over the
+// run's assets of bytes per patch scaled to the talk's patch count, and the ratio.
+TextTable publishedMemory(const Results& results) {
+  TextTable table;
+  table.title = "Memory against plain triangle meshes, published and ours";
+  table.header = {"source", "technique/variant", "level", "plain mesh (MB)",
+                  "technique with displacement (MB)", "plain / technique (ratio)"};
+  table.numeric = {false, false, true, true, true, true};
+  // (technique/variant, level) -> per-asset values.
+  struct Values {
+    std::vector<double> plain_mb, technique_mb, ratio;
+  };
+  std::map<std::pair<std::string, int>, Values> ours;
+  std::vector<std::string> order;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != "memory" || m.status != MeasureStatus::kOk) continue;
+      const std::string who = record.technique + "/" + record.variant;
+      if (std::find(order.begin(), order.end(), who) == order.end()) order.push_back(who);
+      for (const MetricRow& row : m.rows) {
+        const auto level = row.keys.find("level");
+        if (row.status != MeasureStatus::kOk || level == row.keys.end()) continue;
+        std::map<std::string, double> v;
+        for (const Metric& metric : row.metrics) v[metric.name] = metric.value;
+        if (!v.contains("patches") || v["patches"] <= 0) continue;
+        Values& values = ours[{who, std::atoi(level->second.c_str())}];
+        const double scale = kPublishedMemoryPatches / v["patches"] / 1e6;
+        values.plain_mb.push_back(v["plain_bytes"] * scale);
+        values.technique_mb.push_back(v["technique_with_displacement_bytes"] * scale);
+        values.ratio.push_back(v["plain_over_technique"]);
+      }
+    }
+  }
+  for (const PublishedMemoryRow& published : publishedMemoryTable()) {
+    table.rows.push_back({sourceName(kPublishedMemorySeed), "-", std::to_string(published.level),
+                          figure(published.plain_mb), figure(published.technique_mb),
+                          figure(published.plain_mb / published.technique_mb)});
+    for (const std::string& who : order) {
+      const auto it = ours.find({who, published.level});
+      if (it == ours.end()) continue;
+      const Values& v = it->second;
+      table.rows.push_back({"ours", who, std::to_string(published.level), figure(median(v.plain_mb)),
+                            figure(median(v.technique_mb)), figure(median(v.ratio))});
+    }
+  }
+  table.footnote.push_back("Published: " + sourceCitation(kPublishedMemorySeed) +
+                           "; its table fits about 14,400 quad patches, a plain vertex of about "
+                           "16 B and one 16-bit displacement texel per vertex.");
+  table.footnote.push_back(
+      "Ours: the memory measure's plain_bytes and technique_with_displacement_bytes per patch, "
+      "x 14,400 patches (MB = 10^6 B), and plain_over_technique; each the median over the run's "
+      "assets. Our plain vertex is 32 B plus 32-bit indices, so our ratios run higher.");
+  for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
+  return table;
+}
+
+// The published_figures rows: the published shader costs and ours for the same stage.
+TextTable publishedInstructions(const Results& results) {
+  TextTable table;
+  table.title = "Shader costs, published and ours";
+  table.header = {"source",
+                  "technique/variant",
+                  "what",
+                  "published ALU (count)",
+                  "published loads (count)",
+                  "ours ALU, vector (count)",
+                  "ours ALU, scalar (count)",
+                  "ours loads (count)"};
+  table.numeric = {false, false, false, true, true, true, true, true};
+  std::vector<std::string> sources;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != "published_figures" || m.status != MeasureStatus::kOk) continue;
+      for (const MetricRow& row : m.rows) {
+        if (row.status != MeasureStatus::kOk) continue;
+        const auto source = row.keys.find("source");
+        const auto what = row.keys.find("what");
+        const std::string source_name = source != row.keys.end() ? source->second : "";
+        if (std::find(sources.begin(), sources.end(), source_name) == sources.end()) {
+          sources.push_back(source_name);
+        }
+        std::map<std::string, std::string> v;
+        for (const Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
+        // published_loads 0: not published (the measure's notes).
+        if (v["published_loads"] == "0") v["published_loads"] = "";
+        table.rows.push_back(
+            {source_name, record.technique + "/" + record.variant,
+             what != row.keys.end() ? what->second : "",
+             v["published_alu"], v["published_loads"], v["ours_alu_vector"], v["ours_alu_scalar"],
+             v["ours_loads"]});
+      }
+    }
+  }
+  for (const std::string& name : sources) {
+    table.footnote.push_back("Published: " + sourceCitationByName(name) + ".");
+  }
+  table.footnote.push_back(
+      "Ours: float arithmetic + FMA instructions of the stage after spirv-opt -O (vector: per "
+      "SPIR-V instruction, as a D3D listing counts a float3 mad once; scalar: per component) "
+      "and its loads and stores (the published_figures measure).");
+  for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
+  return table;
+}
+
+}  // namespace
+
+bool hasPublishedTable(const std::string& measure) {
+  return measure == "memory" || measure == "published_figures";
+}
+
+TextTable publishedTable(const Results& results, const std::string& measure) {
+  if (measure == "memory") return publishedMemory(results);
+  if (measure == "published_figures") return publishedInstructions(results);
+  return {};
+}
+
+std::string latexEscape(std::string_view text) {
+  std::string out;
+  for (char ch : text) {
+    switch (ch) {
+      case '&': out += "\\&"; break;
+      case '%': out += "\\%"; break;
+      case '$': out += "\\$"; break;
+      case '#': out += "\\#"; break;
+      case '_': out += "\\_"; break;
+      case '{': out += "\\{"; break;
+      case '}': out += "\\}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '\\': out += "\\textbackslash{}"; break;
+      case '<': out += "\\textless{}"; break;
+      case '>': out += "\\textgreater{}"; break;
+      case '\n': out += ' '; break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+std::string csvField(std::string_view text) {
+  const bool quote = text.find_first_of(",\"\r\n") != std::string_view::npos ||
+                     (!text.empty() && (text.front() == '#' || text.front() == ' ' ||
+                                        text.back() == ' '));
+  if (!quote) return std::string(text);
+  std::string out = "\"";
+  for (char ch : text) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+namespace {
+
+std::string markdownCell(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    if (ch == '|') out += "\\|";
+    else if (ch == '\n') out += ' ';
+    else out += ch;
+  }
+  return out.empty() ? "n/a" : out;
+}
+
+std::string renderMarkdown(const TextTable& t) {
+  std::string out = "| ";
+  for (size_t i = 0; i < t.header.size(); ++i) out += (i ? " | " : "") + markdownCell(t.header[i]);
+  out += " |\n|";
+  for (size_t i = 0; i < t.header.size(); ++i) out += t.numeric[i] ? "---:|" : "---|";
+  out += "\n";
+  for (const auto& row : t.rows) {
+    out += "| ";
+    for (size_t i = 0; i < row.size(); ++i) out += (i ? " | " : "") + markdownCell(row[i]);
+    out += " |\n";
+  }
+  out += "\n";
+  for (const std::string& line : t.footnote) out += line + "  \n";
+  return out;
+}
+
+std::string csvLine(const std::vector<std::string>& cells) {
+  std::string out;
+  for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + csvField(cells[i]);
+  return out + "\r\n";
+}
+
+std::string renderCsv(const TextTable& t) {
+  std::string out;
+  for (const std::string& line : t.footnote) out += "# " + line + "\r\n";
+  out += csvLine(t.header);
+  for (const auto& row : t.rows) out += csvLine(row);
+  return out;
+}
+
+std::string latexLine(const std::vector<std::string>& cells) {
+  std::string out;
+  for (size_t i = 0; i < cells.size(); ++i) {
+    out += (i ? " & " : "") + (cells[i].empty() ? std::string("n/a") : latexEscape(cells[i]));
+  }
+  return out + " \\\\\n";
+}
+
+std::string renderLatex(const TextTable& t) {
+  std::string spec;
+  for (bool numeric : t.numeric) spec += numeric ? 'r' : 'l';
+  std::string out = "% " + latexEscape(t.title) + " (tessbench table; needs \\usepackage{booktabs})\n";
+  out += "\\begin{tabular}{" + spec + "}\n\\toprule\n" + latexLine(t.header) + "\\midrule\n";
+  for (const auto& row : t.rows) out += latexLine(row);
+  out += "\\bottomrule\n\\end{tabular}\n\\par\\smallskip\n{\\footnotesize\n";
+  for (const std::string& line : t.footnote) out += latexEscape(line) + "\\par\n";
+  out += "}\n";
+  return out;
+}
+
+}  // namespace
+
+std::string renderTable(const TextTable& table, TableFormat format) {
+  TextTable cited = table;
+  cited.title = citeSources(cited.title);
+  for (std::string& cell : cited.header) cell = citeSources(cell);
+  for (auto& row : cited.rows) {
+    for (std::string& cell : row) cell = citeSources(cell);
+  }
+  for (std::string& line : cited.footnote) line = citeSources(line);
+  switch (format) {
+    case TableFormat::kMarkdown:
+      return renderMarkdown(cited);
+    case TableFormat::kCsv:
+      return renderCsv(cited);
+    case TableFormat::kLatex:
+      return renderLatex(cited);
+  }
+  return {};
+}
+
+}  // namespace tb
