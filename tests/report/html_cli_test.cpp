@@ -20,10 +20,34 @@ using testing::runTessbenchSplit;
 fs::path smallRun(const std::string& name) {
   const fs::path dir = testing::scratchDirectory(name);
   const testing::SplitResult run = runTessbenchSplit(
-      "run --quiet --technique phong --asset catmark_cube --measure memory --run-id r --out " +
+      "run --quiet --no-pictures --technique phong --asset catmark_cube --measure memory "
+      "--run-id r --out " +
       dir.string());
   EXPECT_EQ(run.exit_code, 0) << run.err;
   return dir / "r";
+}
+
+// A run that measured error renders its pictures on the device (lavapipe) and report.html
+// embeds them: the heat map and the wireframe of each technique x asset, as PNG data: URIs.
+TEST(HtmlCli, RunEmbedsTheHeatMapAndWireframePictures) {
+  const fs::path dir = testing::scratchDirectory("html_cli_real_pictures");
+  const testing::SplitResult run = runTessbenchSplit(
+      "run --quiet --technique phong --technique gregory_acc --asset catmark_cube --measure "
+      "error --run-id r --out " + dir.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string index = readFile(dir / "r" / "pictures" / "pictures.json");
+  if (index.find("\"status\": \"skipped\"") != std::string::npos) {
+    GTEST_SKIP() << "no Vulkan device: " << index;
+  }
+  const std::string page = readFile(dir / "r" / "report.html");
+  size_t images = 0;
+  for (size_t at = page.find("src=\"data:image/png;base64,iVBORw0KGgo"); at != std::string::npos;
+       at = page.find("src=\"data:image/png;base64,iVBORw0KGgo", at + 1)) {
+    ++images;
+  }
+  EXPECT_EQ(images, 4u) << "2 techniques x (error, wireframe)";
+  EXPECT_TRUE(fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--error.png"));
+  fs::remove_all(dir);
 }
 
 TEST(HtmlCli, WithoutChartJsRunWarnsOnceAndReportExitsTwoNamingTheFile) {
