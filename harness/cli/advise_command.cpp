@@ -65,15 +65,33 @@ Results measureInProcess(const AdviseArgs& args, std::string* asset_name) {
   return results;
 }
 
-Results readRun(const AdviseArgs& args) {
+// The run's name for `asked`: itself, or the one asset whose name ends in "/<asked>"
+// ("catmark_cube" for "opensubdiv/catmark_cube", as `run --asset` takes it).
+std::string assetInRun(const Results& results, const std::string& asked) {
+  std::vector<std::string> names;
+  for (const AssetSummary& a : results.assets) names.push_back(a.name);
+  for (const Skip& s : results.skipped) names.push_back(s.asset);
+  if (std::find(names.begin(), names.end(), asked) != names.end()) return asked;
+  std::string found;
+  for (const std::string& name : names) {
+    if (name.size() > asked.size() && name.ends_with("/" + asked) && name != found) {
+      if (!found.empty()) return asked;  // ambiguous: only the full name will do
+      found = name;
+    }
+  }
+  return found.empty() ? asked : found;
+}
+
+Results readRun(const AdviseArgs& args, std::string* asset_name) {
   techniquesNamed(args.techniques);  // an unknown id is bad input here too
   requireFinishedRunFolder(args.run_dir);
   Results results = readResultsFile(args.run_dir + "/results.json");
+  *asset_name = assetInRun(results, args.asset);
   const bool named =
       std::any_of(results.records.begin(), results.records.end(),
-                  [&](const Record& r) { return r.asset == args.asset; }) ||
+                  [&](const Record& r) { return r.asset == *asset_name; }) ||
       std::any_of(results.skipped.begin(), results.skipped.end(),
-                  [&](const Skip& s) { return s.asset == args.asset; });
+                  [&](const Skip& s) { return s.asset == *asset_name; });
   if (!named) {
     std::string known;
     for (const AssetSummary& a : results.assets) known += (known.empty() ? "" : ", ") + a.name;
@@ -170,7 +188,7 @@ int runAdvise(const AdviseArgs& args) {
   constraints.techniques = args.techniques;
 
   std::string asset = args.asset;
-  const Results results = args.run_dir.empty() ? measureInProcess(args, &asset) : readRun(args);
+  const Results results = args.run_dir.empty() ? measureInProcess(args, &asset) : readRun(args, &asset);
   const Advice advice = rankCandidates(results, asset, constraints);
   fmt::print("{}", args.json ? adviceJson(advice, constraints)
                              : renderAdviceMarkdown(advice, constraints));

@@ -138,6 +138,10 @@ TEST(AdviseCli, ReadsARunFolderAndExitsOneWhenNoCandidatePasses) {
   // --technique narrows the candidates.
   const auto phong = adviseJson("opensubdiv/catmark_cube --run " + folder + " --technique phong", 0);
   for (const auto& c : phong["candidates"]) EXPECT_EQ(c["technique"], "phong");
+  // The short name `run --asset` takes finds the run's asset too.
+  const auto short_name = adviseJson("catmark_cube --run " + folder + " --technique phong", 0);
+  EXPECT_EQ(short_name["asset"], "opensubdiv/catmark_cube");
+  EXPECT_EQ(short_name["candidates"].size(), phong["candidates"].size());
 
   // An asset the run has no records of, bad numbers, an unknown technique: one line, exit 2.
   for (const std::string& bad :
