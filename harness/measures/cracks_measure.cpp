@@ -94,15 +94,16 @@ class CracksMeasure final : public Measure {
          "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"},
         {},
         // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
-        {PlotSpec{.title = "Points where two patches differ, per variant (median over assets, "
-                           "spacings and levels; no bar: 0)",
+        {PlotSpec{.title = "Points where two patches differ, per variant (the largest count over "
+                           "assets, spacings and levels; no bar: 0, watertight)",
                   .kind = PlotKind::kBar,
                   .x = "variant",
                   .y = "points_not_equal",
                   .series = "backend",
                   .facet = "",
                   .where = {},
-                  .log_y = true}}};
+                  .log_y = true,
+                  .reduce = PlotReduce::kMax}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

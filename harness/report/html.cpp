@@ -80,7 +80,8 @@ void contextSection(const Results& results, Page* page) {
 std::string plotNote(const PlotData& data) {
   std::vector<std::string> parts;
   parts.push_back(
-      fmt::format("{} rows; a point is the median of {}", data.rows_used,
+      fmt::format("{} rows; a point is the {} of {}", data.rows_used,
+                  data.spec.reduce == PlotReduce::kMax ? "largest value" : "median",
                   data.point_per_variant ? "one technique × variant's rows"
                                          : "one series' rows at one x"));
   if (!data.spec.where.empty()) {

@@ -62,7 +62,7 @@ std::optional<CrossMeasureX> crossMeasureX(const Results& results, const std::st
   return cross;
 }
 
-// A point under construction: every y of its rows, reduced to their median at the end.
+// A point under construction: every y of its rows, reduced by PlotSpec::reduce at the end.
 struct PointValues {
   double x = 0;
   std::string category;
@@ -104,7 +104,7 @@ std::string joinLabels(const std::vector<std::string>& labels) {
   return text;
 }
 
-PlotChart finishChart(ChartValues&& values, bool bar) {
+PlotChart finishChart(ChartValues&& values, bool bar, PlotReduce reduce) {
   PlotChart chart{std::move(values.facet), std::move(values.categories), {}};
   for (SeriesValues& series : values.series) {
     PlotSeries out{std::move(series.name), {}};
@@ -114,7 +114,8 @@ PlotChart finishChart(ChartValues&& values, bool bar) {
       point.category = std::move(p.category);
       point.label = joinLabels(p.labels);
       point.rows = p.ys.size();
-      point.y = medianOf(std::move(p.ys));
+      point.y = reduce == PlotReduce::kMax ? *std::max_element(p.ys.begin(), p.ys.end())
+                                           : medianOf(std::move(p.ys));
       out.points.push_back(std::move(point));
     }
     std::stable_sort(out.points.begin(), out.points.end(),
@@ -274,7 +275,7 @@ PlotData plotData(const Results& results, const MeasureDeclaration& measure, con
   }
   if (spec.facet == "asset") orderFacets(results, &charts);
   for (ChartValues& values : charts) {
-    PlotChart chart = finishChart(std::move(values), bar);
+    PlotChart chart = finishChart(std::move(values), bar, spec.reduce);
     // A facet of one point says nothing a table would not; an unfaceted chart keeps it.
     if (chart.points() < (spec.facet.empty() ? 1u : 2u)) {
       ++data.charts_dropped;

@@ -100,6 +100,16 @@ std::optional<PlotKind> parsePlotKind(std::string_view text) {
   return std::nullopt;
 }
 
+std::string_view toString(PlotReduce reduce) {
+  return reduce == PlotReduce::kMax ? "max" : "median";
+}
+
+std::optional<PlotReduce> parsePlotReduce(std::string_view text) {
+  if (text == "median") return PlotReduce::kMedian;
+  if (text == "max") return PlotReduce::kMax;
+  return std::nullopt;
+}
+
 namespace {
 
 // '*' matches any run of characters (also none); every other character itself.

@@ -64,6 +64,11 @@ bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>&
 // What a chart of a measure's rows shows (report.html draws it with Chart.js); declared by
 // the measure so no renderer knows a measure by name.
 enum class PlotKind { kLine, kScatter, kBar };
+// How the rows of one series at one x become one point: their median, or their largest
+// value (a count that is 0 on most rows and not on a few: cracks).
+enum class PlotReduce { kMedian, kMax };
+std::string_view toString(PlotReduce reduce);  // "median", "max"
+std::optional<PlotReduce> parsePlotReduce(std::string_view text);
 std::string_view toString(PlotKind kind);  // "line", "scatter", "bar"
 std::optional<PlotKind> parsePlotKind(std::string_view text);
 struct PlotSpec {
@@ -78,13 +83,14 @@ struct PlotSpec {
   // What one series (one colour) is: "technique", "variant" (technique/variant) or "asset".
   std::string series = "technique";
   // "" (one chart) or "asset" (one chart per asset).
-  std::string facet;
-  // The rows plotted (as RowScope); rows of one series at one x reduce to their median.
-  RowScope where;
+  std::string facet = {};
+  // The rows plotted (as RowScope); rows of one series at one x reduce by `reduce`.
+  RowScope where = {};
   bool log_x = false;
   bool log_y = false;
   // Mark the points no other point beats on both axes (lower x and better y).
   bool pareto_front = false;
+  PlotReduce reduce = PlotReduce::kMedian;
   bool operator==(const PlotSpec&) const = default;
 };
 

@@ -178,7 +178,7 @@ Json toJson(const MeasureDeclaration& declaration) {
       Json item{{"title", plot.title}, {"kind", toString(plot.kind)}, {"x", plot.x},
                 {"y", plot.y},         {"series", plot.series},        {"facet", plot.facet},
                 {"where", plot.where}, {"log_x", plot.log_x},          {"log_y", plot.log_y},
-                {"pareto_front", plot.pareto_front}};
+                {"pareto_front", plot.pareto_front}, {"reduce", toString(plot.reduce)}};
       plots.push_back(std::move(item));
     }
     json["plots"] = plots;
@@ -224,6 +224,11 @@ MeasureDeclaration declarationFromJson(const Json& json, const std::string& wher
       plot.log_x = field<bool>(plots[i], "log_x", at);
       plot.log_y = field<bool>(plots[i], "log_y", at);
       plot.pareto_front = field<bool>(plots[i], "pareto_front", at);
+      if (plots[i].contains("reduce")) {
+        const auto reduce = parsePlotReduce(field<std::string>(plots[i], "reduce", at));
+        if (!reduce) throw std::runtime_error(at + ": unknown plot reduce");
+        plot.reduce = *reduce;
+      }
       declaration.plots.push_back(std::move(plot));
     }
   }

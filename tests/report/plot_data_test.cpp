@@ -69,6 +69,12 @@ TEST(PlotData, RowsOfOneSeriesAtOneXReduceToTheirMedian) {
   EXPECT_EQ(data.rows_used, 6u);
   EXPECT_EQ(data.y_label, "ratio (ratio)");
   EXPECT_EQ(data.x_label, "level");
+  // A plot declared with reduce max takes the largest of the same rows instead.
+  PlotSpec largest = linePlot();
+  largest.reduce = PlotReduce::kMax;
+  const PlotData max_data = plotData(results, results.measures[0], largest);
+  EXPECT_EQ(max_data.charts[0].series[0].points[1].y, 8.0);
+  EXPECT_EQ(max_data.charts[0].series[0].points[0].y, 0.5);
 }
 
 TEST(PlotData, RowsWithANonNumericXAreSkippedAndCounted) {

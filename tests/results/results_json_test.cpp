@@ -40,6 +40,7 @@ Results sampleResults() {
   plot.y = "ratio";
   plot.where = {{"level", "*"}};
   plot.log_y = true;
+  plot.reduce = PlotReduce::kMax;
   results.measures.back().plots.push_back(plot);
   return results;
 }
