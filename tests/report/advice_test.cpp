@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/report/results_builders.h"
+
 namespace tb {
 namespace {
 
@@ -38,19 +40,8 @@ Results emptyResults() {
   return r;
 }
 
-MeasureResult measureResult(const char* id) {
-  MeasureResult m;
-  m.measure = id;
-  return m;
-}
-
-MetricRow row(std::map<std::string, std::string> keys,
-              std::vector<std::pair<std::string, double>> metrics) {
-  MetricRow r;
-  r.keys = std::move(keys);
-  for (const auto& [name, value] : metrics) r.metrics.push_back({name, value, ""});
-  return r;
-}
+using testing::measureResult;
+using testing::row;
 
 struct Figures {
   double error = 1e-3;            // hausdorff at the two levels: error/2 and error

@@ -14,22 +14,13 @@
 
 #include "harness/report/published_figures.h"
 
+#include "tests/report/results_builders.h"
+
 namespace tb {
 namespace {
 
-MeasureResult measureResult(const char* id) {
-  MeasureResult m;
-  m.measure = id;
-  return m;
-}
-
-MetricRow row(std::map<std::string, std::string> keys,
-              std::vector<std::pair<std::string, double>> metrics) {
-  MetricRow r;
-  r.keys = std::move(keys);
-  for (const auto& [name, value] : metrics) r.metrics.push_back({name, value, ""});
-  return r;
-}
+using testing::measureResult;
+using testing::row;
 
 Results sampleResults() {
   Results r;
