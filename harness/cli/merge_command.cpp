@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/mesh/input_error.h"
+#include "harness/cli/html_assets.h"
 #include "harness/report/csv_tables.h"
 #include "harness/report/markdown.h"
 #include "harness/results/merge.h"
@@ -49,12 +50,14 @@ int runMerge(const MergeArgs& args, const std::string& command_line) {
   merged.context.command_line = command_line;
   folder.writeFile("report.md", renderMarkdown(merged));
   for (const auto& [name, text] : renderCsvTables(merged)) folder.writeFile(name, text);
+  // The charts of the merged run; the shards' pictures stay in their own folders.
+  folder.writeFile("report.html", renderRunHtml(merged, folder.pendingPath()));
   folder.writeFile("results.json", serializeResults(merged));
   folder.finish();
   if (!args.quiet) {
     fmt::print(
         "{} records, {} skipped from {} shards: merged run written to {}/ "
-        "(results.json, report.md)\n",
+        "(results.json, report.md, report.html)\n",
         merged.records.size(), merged.skipped.size(), shards.size(), args.out);
   } else {
     fmt::print("{}\n", args.out);

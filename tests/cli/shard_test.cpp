@@ -105,6 +105,9 @@ TEST(ShardCli, ThreeShardsMergeIntoTheUnshardedRunByteForByte) {
   const std::string report = readFile(dir / "merged" / "report.md");
   EXPECT_NE(report.find("merged from shard 2/3"), std::string::npos);
   EXPECT_NE(report.find("### error\n"), std::string::npos);
+  // The merged run's detail and charts: every row as CSV, and report.html.
+  EXPECT_TRUE(fs::exists(dir / "merged" / "tables" / "error.csv"));
+  EXPECT_NE(readFile(dir / "merged" / "report.html").find("<canvas"), std::string::npos);
 }
 
 TEST(ShardCli, OneShardMergesIntoTheUnshardedRun) {
