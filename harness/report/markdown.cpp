@@ -389,10 +389,35 @@ struct Best {
   bool found = false;
 };
 
+// How many of the run's assets each technique measured, and why it refused the others
+// (the first refusal as the example; every refusal is under "Not measured").
+void appendCoverage(const Results& results, std::string* out) {
+  appendHeader(out, {"technique", "assets measured", "assets refused", "first refusal"});
+  for (const auto& technique : techniquesOf(results)) {
+    std::set<std::string> measured;
+    for (const Record& record : results.records) {
+      if (record.technique == technique.technique) measured.insert(record.asset);
+    }
+    size_t refused = 0;
+    std::string example;
+    for (const Skip& skip : results.skipped) {
+      if (skip.technique != technique.technique) continue;
+      if (refused++ == 0) example = skip.asset + ": " + skip.reason;
+    }
+    appendRow(out, {technique.technique,
+                    fmt::format("{} of {}", measured.size(), results.assets.size()),
+                    std::to_string(refused), example});
+  }
+  *out += "\n";
+}
+
 // Job 2: per asset, which technique × variant wins each measure's first headline figure.
 void appendChoiceScreen(const Results& results, const std::vector<std::string>& measures,
                         std::string* out) {
   *out += "## Choosing a technique per asset\n\n";
+  *out += "Which techniques take which assets (every refusal with its reason: \"Not measured\" "
+          "below):\n\n";
+  appendCoverage(results, out);
   *out += "Per asset, the technique/variant with the best value of each measure's first headline "
           "figure, taking each candidate's worst value over its levels, spacings, backends and "
           "frames (ties: the first in run order). `tessbench advise ASSET` ranks every candidate "

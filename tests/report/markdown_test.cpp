@@ -81,6 +81,9 @@ TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
   EXPECT_NE(md.find("| acc | fast | 1 (1.5) |"), std::string::npos) << md;
   // Matrix: the default variant; n/a where the technique does not take the asset.
   EXPECT_NE(md.find("| asset1 | 0.75 | n/a |"), std::string::npos) << md;
+  // Coverage: how many assets each technique measured and its first refusal.
+  EXPECT_NE(md.find("| acc | 2 of 2 | 0 |  |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| pn | 0 of 2 | 2 | asset0: pn: needs triangles |"), std::string::npos) << md;
   // Measure section: median / worst per technique × variant.
   EXPECT_NE(md.find("| acc | default | 6 | 0.5 / 0.75 |"), std::string::npos) << md;
 }
