@@ -16,8 +16,8 @@ enum class DisplacementLayout { kTiles, kUv };
 // Per-patch tile atlas: patch p owns the square tile at column p % tiles_per_row, row
 // p / tiles_per_row, whose top-left texel is (column * tile_size, row * tile_size).
 struct DisplacementTiles {
-  std::uint32_t tile_size = 0;      // texels per tile side, border included (>= 1)
-  std::uint32_t border = 0;         // texels of border on each side of a tile (2*border < tile_size)
+  std::uint32_t tile_size = 0;  // texels per tile side, border included (>= 1)
+  std::uint32_t border = 0;     // texels of border on each side of a tile (2*border < tile_size)
   std::uint32_t tiles_per_row = 0;  // tiles side by side in one row of the atlas (>= 1)
   std::uint32_t tile_count = 0;     // tiles in the atlas, one per patch (>= 1)
 };
@@ -40,9 +40,9 @@ struct DisplacementMap {
 };
 
 std::uint32_t channelCount(DisplacementKind kind);
-std::string_view kindName(DisplacementKind kind);          // "scalar", "vector"
+std::string_view kindName(DisplacementKind kind);            // "scalar", "vector"
 std::string_view pixelTypeName(DisplacementPixelType type);  // "half", "float"
-std::string_view layoutName(DisplacementLayout layout);    // "tiles", "uv" (as in results)
+std::string_view layoutName(DisplacementLayout layout);      // "tiles", "uv" (as in results)
 
 // The nearest half to value (round to nearest even), as a float; +-inf past the half range.
 float roundToHalf(float value);

@@ -21,8 +21,8 @@ std::string exactText(float value) {
 std::string texelName(const DisplacementMap& map, std::size_t index) {
   const std::uint32_t channels = channelCount(map.kind);
   const std::size_t texel = index / channels;
-  return "texel (" + std::to_string(texel % map.width) + ", " +
-         std::to_string(texel / map.width) + ") channel " + std::to_string(index % channels);
+  return "texel (" + std::to_string(texel % map.width) + ", " + std::to_string(texel / map.width) +
+         ") channel " + std::to_string(index % channels);
 }
 
 void validateResolution(const DisplacementMap& map, const std::string& file) {
@@ -57,8 +57,7 @@ void validateTiles(const DisplacementMap& map, const std::string& file) {
     throw InputError(file, element, "the borders leave no interior (2 * border >= tile_size)");
   }
   const std::uint64_t rows = (std::uint64_t{t.tile_count} + t.tiles_per_row - 1) / t.tiles_per_row;
-  if (std::uint64_t{t.tile_size} * t.tiles_per_row > map.width ||
-      rows * t.tile_size > map.height) {
+  if (std::uint64_t{t.tile_size} * t.tiles_per_row > map.width || rows * t.tile_size > map.height) {
     throw InputError(file, element,
                      "the tiles do not fit the " + std::to_string(map.width) + " x " +
                          std::to_string(map.height) + " atlas");

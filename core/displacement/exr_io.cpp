@@ -1,13 +1,13 @@
 #include "core/displacement/exr_io.h"
 
 #include <Iex.h>
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
-#include <Imath/half.h>
 
 #include <algorithm>
 #include <array>
@@ -36,7 +36,8 @@ std::vector<const char*> channelNames(DisplacementKind kind) {
 
 // A library message as one line: OpenEXR's messages may hold newlines.
 std::string oneLine(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   while (!text.empty() && text.back() == ' ') text.pop_back();
   return text;
 }
@@ -74,7 +75,8 @@ void writePixels(const std::string& path, const DisplacementMap& map) {
 
   Imf::Header header(width, height, 1.0f, Imath::V2f(0, 0), 1.0f, Imf::INCREASING_Y,
                      Imf::ZIP_COMPRESSION);
-  for (const char* name : channelNames(map.kind)) header.channels().insert(name, Imf::Channel(type));
+  for (const char* name : channelNames(map.kind))
+    header.channels().insert(name, Imf::Channel(type));
   addLayoutAttributes(header, map);
 
   // Half maps convert once into a half buffer; the texels are exact halves (validated).
@@ -109,10 +111,9 @@ void checkFileStart(const std::string& path) {
   if (file.gcount() == 0) throw InputError(path, "", "the file is empty");
   // OpenEXR files start with the magic number 20000630 (little-endian 76 2f 31 01).
   constexpr std::array<unsigned char, 4> kMagic = {0x76, 0x2f, 0x31, 0x01};
-  if (file.gcount() < 4 || !std::equal(kMagic.begin(), kMagic.end(), magic.begin(),
-                                       [](unsigned char a, char b) {
-                                         return a == static_cast<unsigned char>(b);
-                                       })) {
+  if (file.gcount() < 4 ||
+      !std::equal(kMagic.begin(), kMagic.end(), magic.begin(),
+                  [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); })) {
     throw InputError(path, "", "not an OpenEXR file (no OpenEXR magic number)");
   }
 }
@@ -130,9 +131,9 @@ DisplacementKind channelKind(const std::string& path, const Imf::ChannelList& li
   } else if (names == std::vector<std::string>{"B", "G", "R"}) {  // the list is sorted
     kind = DisplacementKind::kVector;
   } else {
-    throw InputError(path, element,
-                     std::to_string(names.size()) +
-                         " channels; expected Y (scalar map) or R,G,B (vector map)");
+    throw InputError(
+        path, element,
+        std::to_string(names.size()) + " channels; expected Y (scalar map) or R,G,B (vector map)");
   }
   type = list.begin().channel().type;
   for (auto it = list.begin(); it != list.end(); ++it) {
@@ -195,17 +196,17 @@ DisplacementMap readPixels(const std::string& path, std::optional<DisplacementKi
   const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
   const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
   if (width < 1 || height < 1 || width > kMaxDisplacementSide || height > kMaxDisplacementSide) {
-    throw InputError(path, "resolution " + std::to_string(width) + " x " + std::to_string(height),
-                     "width and height must be between 1 and " +
-                         std::to_string(kMaxDisplacementSide));
+    throw InputError(
+        path, "resolution " + std::to_string(width) + " x " + std::to_string(height),
+        "width and height must be between 1 and " + std::to_string(kMaxDisplacementSide));
   }
   Imf::PixelType type = Imf::FLOAT;
   DisplacementMap map;
   map.kind = channelKind(path, header.channels(), type);
   if (expected && *expected != map.kind) {
-    throw InputError(path, "channels", "a " + std::string(kindName(map.kind)) +
-                                           " map where a " + std::string(kindName(*expected)) +
-                                           " map is expected");
+    throw InputError(path, "channels",
+                     "a " + std::string(kindName(map.kind)) + " map where a " +
+                         std::string(kindName(*expected)) + " map is expected");
   }
   map.pixel_type = type == Imf::HALF ? DisplacementPixelType::kHalf : DisplacementPixelType::kFloat;
   map.width = static_cast<std::uint32_t>(width);
@@ -218,7 +219,8 @@ DisplacementMap readPixels(const std::string& path, std::optional<DisplacementKi
   const bool half = type == Imf::HALF;
   std::vector<Imath::half> halves(half ? count : 0);
   map.texels.assign(count, 0.0f);
-  char* base = half ? reinterpret_cast<char*>(halves.data()) : reinterpret_cast<char*>(map.texels.data());
+  char* base =
+      half ? reinterpret_cast<char*>(halves.data()) : reinterpret_cast<char*>(map.texels.data());
   const std::size_t texel_bytes = half ? sizeof(Imath::half) : sizeof(float);
   const std::size_t x_stride = texel_bytes * channels;
   Imf::FrameBuffer frame;
@@ -256,8 +258,8 @@ DisplacementMap readDisplacementExr(const std::string& path,
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& error) {  // Iex::BaseExc derives from std::exception
-    throw InputError(path, "", "unreadable OpenEXR file (damaged or truncated): " +
-                                   oneLine(error.what()));
+    throw InputError(path, "",
+                     "unreadable OpenEXR file (damaged or truncated): " + oneLine(error.what()));
   }
   validateDisplacementMap(map, path);
   return map;

@@ -2,14 +2,14 @@
 // crafted file (written with the OpenEXR library directly, or bytes patched or cut from a good
 // file) and asserts one InputError line naming the file and the problem; a refused write
 // leaves no file.
-#include <gtest/gtest.h>
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -42,8 +42,8 @@ std::string writeRawExr(const std::filesystem::path& path, const std::vector<con
   Imf::FrameBuffer frame;
   for (std::size_t c = 0; c < names.size(); ++c) {
     const bool half = c == 0 && first_type == Imf::HALF;
-    char* base = half ? reinterpret_cast<char*>(halves.data())
-                      : reinterpret_cast<char*>(floats.data());
+    char* base =
+        half ? reinterpret_cast<char*>(halves.data()) : reinterpret_cast<char*>(floats.data());
     const std::size_t bytes = half ? sizeof(Imath::half) : sizeof(float);
     const std::size_t stride = bytes * names.size();
     frame.insert(names[c], Imf::Slice(first_type == Imf::HALF && c == 0 ? Imf::HALF : Imf::FLOAT,
@@ -65,14 +65,16 @@ class ExrBadInput : public ::testing::Test {
   }
   std::string good(const std::string& name) {
     const std::string path = (dir_ / name).string();
-    writeDisplacementExr(path, makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 9, 7));
+    writeDisplacementExr(path,
+                         makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 9, 7));
     return path;
   }
   std::filesystem::path dir_;
 };
 
 // One line, naming the file and holding the problem.
-void expectMessage(const std::string& message, const std::string& path, const std::string& problem) {
+void expectMessage(const std::string& message, const std::string& path,
+                   const std::string& problem) {
   EXPECT_EQ(message.rfind(path, 0), 0u) << message;
   EXPECT_NE(message.find(problem), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -142,7 +144,8 @@ TEST_F(ExrBadInput, ZeroWidthDataWindowOnRead) {
 TEST_F(ExrBadInput, ZeroResolutionOnWrite) {
   const std::string path = (dir_ / "zero.exr").string();
   DisplacementMap map = makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 0, 4);
-  expectMessage(writeError(path, map), path, "resolution 0 x 4: width and height must be at least 1");
+  expectMessage(writeError(path, map), path,
+                "resolution 0 x 4: width and height must be at least 1");
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 
@@ -153,14 +156,14 @@ TEST_F(ExrBadInput, NanTexelOnRead) {
 }
 
 TEST_F(ExrBadInput, InfiniteTexelOnRead) {
-  const std::string path = writeRawExr(dir_ / "inf.exr", {"Y"},
-                                       -std::numeric_limits<float>::infinity(), kUv, Imf::HALF);
+  const std::string path =
+      writeRawExr(dir_ / "inf.exr", {"Y"}, -std::numeric_limits<float>::infinity(), kUv, Imf::HALF);
   expectMessage(readError(path), path, "texel (0, 0) channel 0: not finite");
 }
 
 TEST_F(ExrBadInput, NanAndInfiniteTexelsOnWrite) {
-  for (const float bad : {std::numeric_limits<float>::quiet_NaN(),
-                          std::numeric_limits<float>::infinity()}) {
+  for (const float bad :
+       {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
     const std::string path = (dir_ / "bad_texel.exr").string();
     DisplacementMap map = makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 3, 3);
     map.texels[3 * 4 + 2] = bad;  // texel (1, 1), channel 2
@@ -225,7 +228,8 @@ TEST_F(ExrBadInput, TileAttributeOnUvMap) {
 
 TEST_F(ExrBadInput, InconsistentTilesOnWrite) {
   const std::string path = (dir_ / "tiles.exr").string();
-  DisplacementMap map = testing::makeTilesMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat);
+  DisplacementMap map =
+      testing::makeTilesMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat);
   map.tiles.tile_count = 7;  // 3 rows of 8 texels in a 16-texel-high atlas
   expectMessage(writeError(path, map), path, "the tiles do not fit the 24 x 16 atlas");
   map.tiles.tile_count = 5;
@@ -236,8 +240,9 @@ TEST_F(ExrBadInput, InconsistentTilesOnWrite) {
 
 TEST_F(ExrBadInput, UnwritablePathNamesTheFile) {
   const std::string path = (dir_ / "no_such_folder" / "map.exr").string();
-  expectMessage(writeError(path, makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 2, 2)),
-                path, "cannot write the OpenEXR file");
+  expectMessage(
+      writeError(path, makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 2, 2)),
+      path, "cannot write the OpenEXR file");
 }
 
 // Never a crash and never another exception: every prefix of a good file, random garbage

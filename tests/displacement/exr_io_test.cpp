@@ -60,9 +60,12 @@ TEST(ExrIo, RoundTripKeepsSignedZeroSubnormalsAndExtremes) {
        {DisplacementPixelType::kHalf, DisplacementPixelType::kFloat}) {
     DisplacementMap map = makeMap(DisplacementKind::kScalar, type, 6, 1);
     const bool half = type == DisplacementPixelType::kHalf;
-    map.texels = {-0.0f, 0.0f, half ? 5.9604645e-8f : std::numeric_limits<float>::denorm_min(),
+    map.texels = {-0.0f,
+                  0.0f,
+                  half ? 5.9604645e-8f : std::numeric_limits<float>::denorm_min(),
                   half ? 65504.0f : std::numeric_limits<float>::max(),
-                  half ? -65504.0f : std::numeric_limits<float>::lowest(), 1.0f};
+                  half ? -65504.0f : std::numeric_limits<float>::lowest(),
+                  1.0f};
     expectRoundTrip(map, half ? "extremes_half" : "extremes_float");
   }
 }
@@ -102,15 +105,14 @@ TEST(ExrIo, HalfMapRefusesInexactTexelUntilRounded) {
 
 TEST(ExrIo, RoundToHalfMatchesHalfRounding) {
   EXPECT_EQ(roundToHalf(1.0f), 1.0f);
-  EXPECT_EQ(roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);  // a tie: rounds to even
+  EXPECT_EQ(roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);                   // a tie: rounds to even
   EXPECT_EQ(roundToHalf(1.0f + 3.0f / 2048.0f), 1.0f + 2.0f / 1024.0f);  // a tie, to even
-  EXPECT_TRUE(std::isinf(roundToHalf(70000.0f)));  // past the half range
+  EXPECT_TRUE(std::isinf(roundToHalf(70000.0f)));                        // past the half range
 }
 
 // A float that overflows half is refused as not representable, not written as infinity.
 TEST(ExrIo, HalfMapRefusesTexelBeyondHalfRange) {
-  const std::string path =
-      (testing::scratchDirectory("exr_half_range") / "overflow.exr").string();
+  const std::string path = (testing::scratchDirectory("exr_half_range") / "overflow.exr").string();
   DisplacementMap map = makeMap(DisplacementKind::kScalar, DisplacementPixelType::kHalf, 2, 1);
   map.texels[0] = 70000.0f;
   EXPECT_NE(testing::writeError(path, map).find("not representable as half"), std::string::npos);

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,8 @@ inline DisplacementMap makeMap(DisplacementKind kind, DisplacementPixelType type
   map.height = height;
   const std::size_t count = std::size_t{width} * height * channelCount(kind);
   for (std::size_t i = 0; i < count; ++i) {
-    const float value = (static_cast<float>(i % 97) - 48.0f) * 0.0137f + 1e-5f * static_cast<float>(i);
+    const float value =
+        (static_cast<float>(i % 97) - 48.0f) * 0.0137f + 1e-5f * static_cast<float>(i);
     map.texels.push_back(type == DisplacementPixelType::kHalf ? roundToHalf(value) : value);
   }
   return map;
@@ -50,7 +53,8 @@ inline std::vector<char> fileBytes(const std::filesystem::path& path) {
 }
 
 inline std::string writeBytes(const std::filesystem::path& path, const std::vector<char>& bytes) {
-  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   return path.string();
 }
 
