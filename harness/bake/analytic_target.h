@@ -1,0 +1,56 @@
+// The baker's oracle (docs/ARCHITECTURE.md, "Baker"): a detailed target mesh whose
+// displacement is known in closed form. The asset's exact limit surface (OpenSubdiv Bfr) is
+// tessellated densely and every vertex moved along its limit normal by
+//
+//   h(p) = A * (sin(2 pi f qx + 0.3) + sin(2 pi f qy + 1.1) + sin(2 pi f qz + 2.3)) / 3,
+//   q = (p - c) / D,
+//
+// where c is the centre and D the diagonal of the control mesh's bounding box (world units),
+// so q is dimensionless, A = amplitude_fraction * D (world units, |h| <= A) and f the
+// frequency in cycles per diagonal. h is in world units. Its gradient is at most
+// A * 2 pi f / (D sqrt 3) (0.073 at the defaults), so the displaced surface stays a graph
+// over the limit and a ray along the limit normal meets it once nearby.
+#pragma once
+
+#include <string>
+
+#include "core/mesh/mesh.h"
+#include "core/mesh/vec.h"
+#include "reference/limit_tessellation.h"
+#include "reference/scheme.h"
+
+namespace tb {
+
+struct AnalyticDisplacement {
+  Vec3d centre;          // c: bounding-box centre of the control mesh, world units
+  double diagonal = 1;   // D: its diagonal, world units (> 0)
+  double amplitude = 0;  // A: world units
+  double frequency = 2;  // f: cycles per diagonal
+
+  // h(p), world units.
+  double height(const Vec3d& p) const;
+  // The formula with its numbers, for the sidecar ("h(p) = ...").
+  std::string describe() const;
+};
+
+inline constexpr double kAnalyticAmplitudeFraction = 0.01;  // A / D
+inline constexpr double kAnalyticFrequency = 2;             // f, cycles per diagonal
+
+// h for `mesh`'s bounding box with the default amplitude and frequency. Throws InputError for
+// a mesh without positions or with a zero diagonal.
+AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh);
+
+// The limit surface of `mesh` under `scheme` tessellated at `rate` (ref::tessellateLimit),
+// each vertex moved along its unit limit normal by displacement.height(limit position); the
+// normals are left as the limit's (they are not the displaced surface's). Faces without a
+// limit surface are left out (faces_skipped). Throws InputError like LimitSurface and
+// tessellateLimit (rate outside 1..1024).
+ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, ref::Scheme scheme, int rate,
+                                          const AnalyticDisplacement& displacement);
+
+// The mesh as an OBJ file (v and f lines, 1-based, triangles counter-clockwise); throws
+// InputError naming the path when it cannot be written, and refuses a path that exists.
+void writeTriangleObj(const std::string& path, const ref::LimitTessellation& mesh,
+                      const std::string& comment);
+
+}  // namespace tb

@@ -1,0 +1,33 @@
+// The JSON sidecar written beside a baked map (docs/ARCHITECTURE.md, "Baker"): FILE.exr gets
+// FILE.exr.json, which says what was baked from what.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "harness/bake/baker.h"
+
+namespace tb {
+
+struct BakeProvenance {
+  std::string technique, variant, asset;  // asset as shown (bundled name or path)
+  // "analytic: <formula with its numbers>, rate N" or the target OBJ's path.
+  std::string target;
+};
+
+// The sidecar's path for a map written to `exr_path`: exr_path + ".json".
+std::string sidecarPath(const std::string& exr_path);
+
+// {"format": "tessbench-bake-1", technique, variant, asset, target, kind, pixel_type, layout,
+//  resolution, width, height, tiles{tile_size, border, tiles_per_row, tile_count},
+//  displacement{min[], max[], length_max} (world units, per channel), texels_baked,
+//  rays_missed}.
+nlohmann::json bakeSidecar(const BakeProvenance& provenance, const BakeSettings& settings,
+                           const BakeResult& result);
+
+// Writes the map to exr_path and the sidecar beside it. Refuses (InputError, nothing
+// written) when either file exists already; a failed sidecar removes the map again.
+void writeBake(const std::string& exr_path, const BakeResult& result,
+               const nlohmann::json& sidecar);
+
+}  // namespace tb

@@ -1,0 +1,146 @@
+#include "harness/bake/baker.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "core/displacement/exr_io.h"
+#include "core/mesh/input_error.h"
+#include "reference/triangle_distance_field.h"
+#include "reference/triangle_ray_caster.h"
+
+namespace tb {
+namespace {
+
+// Clamps (u, v) into the patch domain: the unit square, or the triangle u, v >= 0,
+// u + v <= 1 (scaled back onto the hypotenuse).
+DomainCoord domainCoordOf(PatchDomain domain, TexelParameter t) {
+  const double u = std::clamp(t.u, 0.0, 1.0), v = std::clamp(t.v, 0.0, 1.0);
+  if (domain == PatchDomain::kQuad) return DomainCoord{u, v, 0};
+  const double sum = u + v;
+  if (sum <= 1) return DomainCoord{u, v, 1 - sum};
+  return DomainCoord{u / sum, v / sum, 0};
+}
+
+struct Samplers {
+  const ref::TriangleRayCaster* rays = nullptr;         // scalar bakes
+  const ref::TriangleDistanceField* closest = nullptr;  // vector bakes
+};
+
+// One texel's channels; returns false when it missed the target.
+bool bakeTexel(const SurfacePoint& point, const Samplers& samplers, uint32_t* hint, float* out) {
+  if (samplers.closest != nullptr) {
+    const ref::ClosestPoint hit = samplers.closest->closest(point.position, *hint);
+    if (hit.triangle == ref::kNoTriangle) return false;
+    *hint = hit.triangle;
+    const Vec3d d = hit.point - point.position;
+    for (int c = 0; c < 3; ++c) out[c] = float(d[c]);
+    return true;
+  }
+  if (!(length(point.normal) > 0)) return false;
+  const auto up = samplers.rays->nearestHit(point.position, point.normal);
+  const auto down = samplers.rays->nearestHit(point.position, -1.0 * point.normal);
+  if (!up && !down) return false;
+  // The nearer hit; a tie goes to +n.
+  if (up && (!down || up->distance <= down->distance)) {
+    out[0] = float(up->distance);
+  } else {
+    out[0] = float(-down->distance);
+  }
+  return true;
+}
+
+}  // namespace
+
+TexelParameter texelParameter(uint32_t x, uint32_t y, const BakeSettings& settings) {
+  const double tile_size = double(settings.resolution + 2 * settings.border);
+  const double res = double(settings.resolution), border = double(settings.border);
+  return {(double(x) - border + 0.5) / res, (tile_size - 1 - double(y) - border + 0.5) / res};
+}
+
+BakeResult bakeDisplacement(const SurfacePatches& patches, const ref::TriangleMeshRef& target,
+                            const BakeSettings& settings, const std::string& target_source) {
+  if (settings.resolution < 1 || settings.resolution > kMaxBakeResolution) {
+    throw InputError("--resolution", std::to_string(settings.resolution),
+                     "texels per patch side must be 1 to " + std::to_string(kMaxBakeResolution));
+  }
+  if (settings.layout == DisplacementLayout::kUv) {
+    throw InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
+  }
+  const size_t patch_count = patches.patchCount();
+  if (patch_count == 0) throw InputError(patches.controlMesh().source, "", "no patches to bake");
+  const uint32_t tile_size = settings.resolution + 2 * settings.border;
+  const auto per_row = uint32_t(std::ceil(std::sqrt(double(patch_count))));
+  const auto rows = uint32_t((patch_count + per_row - 1) / per_row);
+  if (uint64_t(per_row) * tile_size > kMaxDisplacementSide ||
+      uint64_t(rows) * tile_size > kMaxDisplacementSide) {
+    throw InputError("--resolution", std::to_string(settings.resolution),
+                     "the atlas of " + std::to_string(patch_count) + " tiles would exceed " +
+                         std::to_string(kMaxDisplacementSide) + " texels a side");
+  }
+
+  BakeResult result;
+  DisplacementMap& map = result.map;
+  map.kind = settings.kind;
+  map.pixel_type = settings.pixel_type;
+  map.layout = DisplacementLayout::kTiles;
+  map.tiles = {tile_size, settings.border, per_row, uint32_t(patch_count)};
+  map.width = per_row * tile_size;
+  map.height = rows * tile_size;
+  const uint32_t channels = channelCount(settings.kind);
+  map.texels.assign(size_t(map.width) * map.height * channels, 0.0f);
+  // 1: baked, 0: outside the patch's domain (triangle tiles' upper-right half).
+  std::vector<uint8_t> baked(size_t(map.width) * map.height, 0);
+
+  std::optional<ref::TriangleRayCaster> rays;
+  std::optional<ref::TriangleDistanceField> closest;
+  Samplers samplers;
+  if (settings.kind == DisplacementKind::kScalar) {
+    rays.emplace(target.positions, target.triangles, target_source);
+    samplers.rays = &*rays;
+  } else {
+    closest.emplace(target.positions, target.triangles, target_source);
+    samplers.closest = &*closest;
+  }
+
+  std::vector<size_t> misses(patch_count, 0);
+  const double slack = double(settings.border) / double(settings.resolution);
+  tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    const uint32_t x0 = uint32_t(p % per_row) * tile_size, y0 = uint32_t(p / per_row) * tile_size;
+    uint32_t hint = ref::kNoTriangle;
+    for (uint32_t y = 0; y < tile_size; ++y) {
+      for (uint32_t x = 0; x < tile_size; ++x) {
+        const TexelParameter t = texelParameter(x, y, settings);
+        if (domain == PatchDomain::kTriangle && t.u + t.v > 1 + slack) continue;
+        const size_t texel = size_t(y0 + y) * map.width + (x0 + x);
+        baked[texel] = 1;
+        const SurfacePoint point = patches.evaluate(p, domainCoordOf(domain, t));
+        if (!bakeTexel(point, samplers, &hint, &map.texels[texel * channels])) ++misses[p];
+      }
+    }
+  });
+
+  for (size_t m : misses) result.rays_missed += m;
+  if (settings.pixel_type == DisplacementPixelType::kHalf) roundTexelsToHalf(map);
+  bool first = true;
+  for (size_t texel = 0; texel < baked.size(); ++texel) {
+    if (!baked[texel]) continue;
+    ++result.texels_baked;
+    double squared = 0;
+    for (uint32_t c = 0; c < channels; ++c) {
+      const double value = map.texels[texel * channels + c];
+      result.value_min[c] = first ? value : std::min(result.value_min[c], value);
+      result.value_max[c] = first ? value : std::max(result.value_max[c], value);
+      squared += value * value;
+    }
+    result.length_max = std::max(result.length_max, std::sqrt(squared));
+    first = false;
+  }
+  return result;
+}
+
+}  // namespace tb

@@ -1,0 +1,155 @@
+#include "harness/cli/bake_command.h"
+
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <optional>
+
+#include "core/mesh/input_error.h"
+#include "core/mesh/obj_loader.h"
+#include "harness/bake/analytic_target.h"
+#include "harness/bake/bake_sidecar.h"
+#include "harness/bake/baker.h"
+#include "harness/measures/error.h"
+#include "harness/suite/asset_catalog.h"
+#include "techniques/registry.h"
+
+namespace tb::cli {
+namespace {
+
+const Technique& techniqueNamed(const std::string& id) {
+  const Technique* technique = TechniqueRegistry::instance().find(id);
+  if (technique != nullptr && technique->info().family == TechniqueFamily::kSurface) {
+    return *technique;
+  }
+  std::string known;
+  for (const Technique* t : TechniqueRegistry::instance().all()) {
+    if (t->info().family != TechniqueFamily::kSurface) continue;
+    known += (known.empty() ? "" : ", ") + t->info().id;
+  }
+  throw InputError("--technique", id, "unknown surface technique (known: " + known + ")");
+}
+
+VariantInfo variantNamed(const Technique& technique, const std::string& name) {
+  const std::vector<VariantInfo> variants = technique.variants();
+  if (name.empty() && !variants.empty()) return variants.front();
+  std::string known;
+  for (const VariantInfo& variant : variants) {
+    if (variant.name == name) return variant;
+    known += (known.empty() ? "" : ", ") + variant.name;
+  }
+  throw InputError("--variant", name,
+                   "unknown variant of " + technique.info().id + " (known: " + known + ")");
+}
+
+void refuseExisting(const std::string& option, const std::string& path) {
+  if (std::filesystem::exists(path)) {
+    throw InputError(option, path, "the file exists already (never overwritten)");
+  }
+}
+
+// Every check that needs no computation, so bad input fails before any work.
+BakeSettings checkedSettings(const BakeArgs& args) {
+  if (args.analytic == !args.target.empty()) {
+    throw InputError("--target/--analytic", "",
+                     "give exactly one of --target MESH.obj or --analytic");
+  }
+  if (!args.write_target.empty() && !args.analytic) {
+    throw InputError("--write-target", args.write_target, "needs --analytic");
+  }
+  if (args.layout == "uv") {
+    throw InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
+  }
+  refuseExisting("--out", args.out);
+  refuseExisting("--out", sidecarPath(args.out));
+  if (!args.write_target.empty()) refuseExisting("--write-target", args.write_target);
+  BakeSettings settings;
+  settings.kind = args.kind == "vector" ? DisplacementKind::kVector : DisplacementKind::kScalar;
+  settings.resolution = args.resolution;
+  settings.layout = DisplacementLayout::kTiles;
+  return settings;
+}
+
+}  // namespace
+
+CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
+  CLI::App* bake = app.add_subcommand(
+      "bake",
+      "bake a displacement map (OpenEXR + FILE.exr.json sidecar) for a technique's surface "
+      "against a detailed target mesh or the analytic oracle target (a displaced limit surface)");
+  bake->add_option("--technique", args.technique, "surface technique id")->required();
+  bake->add_option("--variant", args.variant, "variant name (default: the technique's first)");
+  bake->add_option("--asset", args.asset, "bundled asset name or OBJ path")->required();
+  bake->add_option("--out", args.out, "the map, FILE.exr (must not exist yet)")->required();
+  bake->add_option("--target", args.target, "the detailed target mesh (OBJ)");
+  bake->add_flag("--analytic", args.analytic,
+                 "the analytic target: the asset's limit surface displaced along its normal by "
+                 "a sum of sines of the limit position");
+  bake->add_option("--kind", args.kind,
+                   "scalar (distance along the normal, rays both ways) | vector (closest point "
+                   "minus surface point)")
+      ->check(CLI::IsMember({"scalar", "vector"}))
+      ->capture_default_str();
+  bake->add_option("--resolution", args.resolution, "interior texels per patch side")
+      ->check(CLI::Range(1u, kMaxBakeResolution))
+      ->capture_default_str();
+  bake->add_option("--layout", args.layout, "tiles (per-patch atlas) | uv (not built yet)")
+      ->check(CLI::IsMember({"tiles", "uv"}))
+      ->capture_default_str();
+  bake->add_option("--target-rate", args.target_rate,
+                   "the analytic target's tessellation rate (segments per limit face edge)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  bake->add_option("--write-target", args.write_target,
+                   "with --analytic: also write the analytic target mesh as OBJ (must not exist)");
+  return bake;
+}
+
+int runBake(const BakeArgs& args) {
+  const BakeSettings settings = checkedSettings(args);
+  const Technique& technique = techniqueNamed(args.technique);
+  const VariantInfo variant = variantNamed(technique, args.variant);
+  const AssetRef asset = resolveAsset(args.asset);
+  Mesh mesh = loadObjFile(asset.path);
+  mesh.source = asset.shownPath();
+  if (std::string reason = technique.checkSupport(mesh); !reason.empty()) {
+    throw UnsupportedInput(reason);
+  }
+  const BuiltSurface patches = buildSurface(technique, mesh, variant);
+  const auto start = std::chrono::steady_clock::now();
+
+  BakeProvenance provenance{technique.info().id, variant.name, asset.name, ""};
+  std::optional<ref::LimitTessellation> analytic;
+  Mesh target_obj;
+  std::vector<ref::Triangle> target_triangles;
+  ref::TriangleMeshRef target;
+  if (args.analytic) {
+    const AnalyticDisplacement h = analyticDisplacementFor(patches->controlMesh());
+    analytic = analyticTargetMesh(patches->controlMesh(), referenceScheme(patches->approximates()),
+                                  args.target_rate, h);
+    provenance.target =
+        fmt::format("analytic: {}, limit tessellation rate {}", h.describe(), args.target_rate);
+    target = analytic->view();
+  } else {
+    target_obj = loadObjFile(args.target);
+    target_triangles = ref::fanTriangles(target_obj);
+    target = {target_obj.positions, target_triangles};
+    provenance.target = args.target;
+  }
+  const BakeResult result = bakeDisplacement(*patches, target, settings, provenance.target);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  writeBake(args.out, result, bakeSidecar(provenance, settings, result));
+  if (analytic && !args.write_target.empty()) {
+    writeTriangleObj(args.write_target, *analytic, provenance.target);
+  }
+  fmt::print("{}: {} x {} {} map, {} texels baked, {} missed, {:.3f} s; sidecar {}\n", args.out,
+             result.map.width, result.map.height, kindName(result.map.kind), result.texels_baked,
+             result.rays_missed, seconds, sidecarPath(args.out));
+  return 0;
+}
+
+}  // namespace tb::cli

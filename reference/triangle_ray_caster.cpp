@@ -1,0 +1,121 @@
+#include "reference/triangle_ray_caster.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/mesh/input_error.h"
+#include "reference/embree_device.h"
+#include "reference/mesh_checks.h"
+
+namespace tb::ref {
+
+struct TriangleRayCaster::Impl {
+  std::vector<Vec3d> positions;
+  std::vector<Triangle> triangles;
+  RTCScene scene = nullptr;
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+namespace {
+
+// The ray parameter of the plane hit on triangle (a, b, c), Moller & Trumbore (1997), in
+// double, without the inside test: Embree has already chosen the triangle, so only its
+// distance is refined. NaN when the ray is parallel to the triangle's plane.
+double planeHitDistance(const Vec3d& origin, const Vec3d& direction, const Vec3d& a, const Vec3d& b,
+                        const Vec3d& c) {
+  const Vec3d e1 = b - a, e2 = c - a;
+  const Vec3d p = cross(direction, e2);
+  const double det = dot(e1, p);
+  if (det == 0) return std::nan("");
+  const Vec3d q = cross(origin - a, e1);
+  return dot(e2, q) / det;
+}
+
+}  // namespace
+
+TriangleRayCaster::TriangleRayCaster(std::span<const Vec3d> positions,
+                                     std::span<const Triangle> triangles, const std::string& source)
+    : impl_(std::make_unique<Impl>()) {
+  checkFinitePositions(positions, source);
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    for (uint32_t corner : triangles[t]) {
+      if (corner >= positions.size()) {
+        throw InputError(source, "triangle " + std::to_string(t),
+                         "corner index " + std::to_string(corner) + " is out of range (" +
+                             std::to_string(positions.size()) + " vertices)");
+      }
+    }
+  }
+  impl_->positions.assign(positions.begin(), positions.end());
+  impl_->triangles.assign(triangles.begin(), triangles.end());
+
+  const RTCDevice device = sharedEmbreeDevice();
+  impl_->scene = rtcNewScene(device);
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  if (!triangles.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Padded to 16 bytes with a zero: Embree loads vertices as 4 floats.
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                4 * sizeof(float), positions.size()));
+    for (size_t i = 0; i < positions.size(); ++i) {
+      for (int k = 0; k < 3; ++k) vertices[4 * i + size_t(k)] = float(positions[i][k]);
+      vertices[4 * i + 3] = 0.0f;
+    }
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), triangles.size()));
+    for (size_t t = 0; t < triangles.size(); ++t) {
+      std::copy(triangles[t].begin(), triangles[t].end(), indices + 3 * t);
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(impl_->scene, geometry);
+    rtcReleaseGeometry(geometry);  // the scene holds it
+  }
+  rtcCommitScene(impl_->scene);
+  throwOnEmbreeError(source, "triangle scene");
+}
+
+TriangleRayCaster::~TriangleRayCaster() = default;
+TriangleRayCaster::TriangleRayCaster(TriangleRayCaster&&) noexcept = default;
+TriangleRayCaster& TriangleRayCaster::operator=(TriangleRayCaster&&) noexcept = default;
+
+size_t TriangleRayCaster::triangleCount() const { return impl_->triangles.size(); }
+
+std::optional<RayHit> TriangleRayCaster::nearestHit(const Vec3d& origin, const Vec3d& direction,
+                                                    double max_distance) const {
+  if (impl_->triangles.empty()) return std::nullopt;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit ray_hit{};
+  ray_hit.ray.org_x = float(origin.x);
+  ray_hit.ray.org_y = float(origin.y);
+  ray_hit.ray.org_z = float(origin.z);
+  ray_hit.ray.dir_x = float(direction.x);
+  ray_hit.ray.dir_y = float(direction.y);
+  ray_hit.ray.dir_z = float(direction.z);
+  ray_hit.ray.tnear = 0.0f;
+  ray_hit.ray.tfar =
+      std::isinf(max_distance) ? std::numeric_limits<float>::infinity() : float(max_distance);
+  ray_hit.ray.mask = 0xFFFFFFFFu;
+  ray_hit.ray.flags = 0;
+  ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  ray_hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context, &ray_hit);
+  if (ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  const uint32_t id = ray_hit.hit.primID;
+  const Triangle& tri = impl_->triangles[id];
+  const std::vector<Vec3d>& p = impl_->positions;
+  double distance = planeHitDistance(origin, direction, p[tri[0]], p[tri[1]], p[tri[2]]);
+  // A grazing hit whose double plane distance is undefined keeps Embree's float one.
+  if (!std::isfinite(distance)) distance = double(ray_hit.ray.tfar);
+  return RayHit{std::max(distance, 0.0), id};
+}
+
+}  // namespace tb::ref
