@@ -1,7 +1,7 @@
 // tessbench: benchmark and validation harness for real-time GPU surface techniques.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -13,14 +13,15 @@
 #include "harness/cli/merge_command.h"
 #include "harness/cli/table_command.h"
 #include "harness/cli/tessellate_run.h"
-#include "tb_build_info.h"
 #include "techniques/registry.h"
+#include "tb_build_info.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"tessbench: benchmark and validation harness for GPU surface techniques"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("tessbench ") + TB_VERSION + " (git " + TB_GIT_SHA +
-                                        "), plug-in ABI " + std::to_string(kTessbenchPluginAbi));
+  app.set_version_flag("--version", std::string("tessbench ") + TB_VERSION + " (git " +
+                                        TB_GIT_SHA + "), plug-in ABI " +
+                                        std::to_string(kTessbenchPluginAbi));
   std::vector<std::string> plugins;
   app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
 
@@ -32,8 +33,7 @@ int main(int argc, char** argv) {
   list->add_flag("--json", list_args.json, "print JSON");
 
   tb::cli::RunArgs run_args;
-  CLI::App* run =
-      app.add_subcommand("run", "measure techniques on assets into a new results folder");
+  CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
   run->add_option("--technique", run_args.techniques, "technique id (repeatable; default all)");
   run->add_option("--asset", run_args.assets, "bundled asset name or OBJ path (default all)");
   run->add_option("--measure", run_args.measures, "measure id (repeatable; default all)");
@@ -61,9 +61,8 @@ int main(int argc, char** argv) {
                   "for compare's U test (9 or more recommended)")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  run->add_flag_callback(
-      "--no-pictures", [&run_args] { run_args.pictures = false; },
-      "do not render the pictures of each surface (pictures/ in the run folder)");
+  run->add_flag_callback("--no-pictures", [&run_args] { run_args.pictures = false; },
+                         "do not render the pictures of each surface (pictures/ in the run folder)");
 
   tb::cli::MergeArgs merge_args;
   CLI::App* merge = app.add_subcommand(
@@ -77,9 +76,8 @@ int main(int argc, char** argv) {
   tb::cli::ReportArgs report_args;
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");
   report->add_option("run_dir", report_args.run_dir, "results/<run-id>")->required();
-  report
-      ->add_option("--format", report_args.format,
-                   "md | html (one self-contained page of charts and pictures)")
+  report->add_option("--format", report_args.format,
+                     "md | html (one self-contained page of charts and pictures)")
       ->capture_default_str();
 
   tb::cli::CompareArgs compare_args;
@@ -90,22 +88,19 @@ int main(int argc, char** argv) {
   compare->add_option("base", compare_args.base, "the base run folder (results/<run-id>)")
       ->required();
   compare->add_option("new", compare_args.current, "the new run folder")->required();
-  compare
-      ->add_option("--threshold", compare_args.threshold,
-                   "relative change that counts: |new - base| > t * max(|base|, |new|); 0 = exact")
+  compare->add_option("--threshold", compare_args.threshold,
+                      "relative change that counts: |new - base| > t * max(|base|, |new|); 0 = exact")
       ->capture_default_str();
   compare->add_option("--metric-threshold", compare_args.metric_thresholds,
                       "NAME=VALUE: the threshold for one metric name (repeatable)");
   compare->add_option("--limit", compare_args.limit, "changes listed in the table, worst first")
       ->capture_default_str();
-  compare
-      ->add_option("--alpha", compare_args.alpha,
-                   "timings: significance level of the two-sided Mann-Whitney U test on "
-                   "the repeated samples of timings.json (run --repetitions >= 2)")
+  compare->add_option("--alpha", compare_args.alpha,
+                      "timings: significance level of the two-sided Mann-Whitney U test on "
+                      "the repeated samples of timings.json (run --repetitions >= 2)")
       ->capture_default_str();
-  compare
-      ->add_option("--time-threshold", compare_args.time_threshold,
-                   "timings: relative change of the median that counts, with p < alpha")
+  compare->add_option("--time-threshold", compare_args.time_threshold,
+                      "timings: relative change of the median that counts, with p < alpha")
       ->capture_default_str();
   compare->add_flag("--no-timings", compare_args.no_timings,
                     "compare results.json only, not timings.json");
