@@ -1,5 +1,7 @@
 #include "reference/embree_device.h"
 
+#include <algorithm>
+
 #include "core/mesh/input_error.h"
 
 namespace tb::ref {
@@ -45,6 +47,28 @@ void throwOnEmbreeError(const std::string& source, const std::string& element) {
   if (code != RTC_ERROR_NONE) {
     throw InputError(source, element, std::string("Embree failed: ") + errorName(code));
   }
+}
+
+void attachTriangleGeometry(RTCScene scene, std::span<const Vec3d> positions,
+                            std::span<const std::array<uint32_t, 3>> triangles) {
+  if (triangles.empty()) return;
+  RTCGeometry geometry = rtcNewGeometry(sharedEmbreeDevice(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Padded to 16 bytes with a zero: Embree loads vertices as 4 floats.
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), positions.size()));
+  for (size_t i = 0; i < positions.size(); ++i) {
+    for (int k = 0; k < 3; ++k) vertices[4 * i + size_t(k)] = float(positions[i][k]);
+    vertices[4 * i + 3] = 0.0f;
+  }
+  auto* indices = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(uint32_t), triangles.size()));
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    std::copy(triangles[t].begin(), triangles[t].end(), indices + 3 * t);
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);  // the scene holds it
 }
 
 }  // namespace tb::ref

@@ -4,7 +4,12 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
+#include <cstdint>
+#include <span>
 #include <string>
+
+#include "core/mesh/vec.h"
 
 namespace tb::ref {
 
@@ -15,5 +20,11 @@ RTCDevice sharedEmbreeDevice();
 // Throws InputError(source, element, "Embree failed: ...") when the calling thread's
 // last Embree call on the shared device failed.
 void throwOnEmbreeError(const std::string& source, const std::string& element);
+
+// Adds one triangle geometry of `positions` (as floats, padded to 16 bytes as Embree loads
+// them) and `triangles` (position indices, already checked in range) to `scene`, which the
+// caller commits. Nothing is added for no triangles.
+void attachTriangleGeometry(RTCScene scene, std::span<const Vec3d> positions,
+                            std::span<const std::array<uint32_t, 3>> triangles);
 
 }  // namespace tb::ref

@@ -119,30 +119,8 @@ TriangleDistanceField::TriangleDistanceField(std::span<const Vec3d> positions,
     impl_->boxes.push_back(box);
   }
 
-  const RTCDevice device = sharedEmbreeDevice();
-  impl_->scene = rtcNewScene(device);
-  if (triangles.empty()) {
-    rtcCommitScene(impl_->scene);
-    throwOnEmbreeError(source, "triangle scene");
-    return;
-  }
-  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  // Padded to 16 bytes with a zero: Embree loads vertices as 4 floats.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), positions.size()));
-  for (size_t i = 0; i < positions.size(); ++i) {
-    for (int k = 0; k < 3; ++k) vertices[4 * i + size_t(k)] = float(positions[i][k]);
-    vertices[4 * i + 3] = 0.0f;
-  }
-  auto* indices = static_cast<uint32_t*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(uint32_t), triangles.size()));
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    std::copy(triangles[t].begin(), triangles[t].end(), indices + 3 * t);
-  }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(impl_->scene, geometry);
-  rtcReleaseGeometry(geometry);  // the scene holds it
+  impl_->scene = rtcNewScene(sharedEmbreeDevice());
+  attachTriangleGeometry(impl_->scene, positions, triangles);
   rtcCommitScene(impl_->scene);
   throwOnEmbreeError(source, "triangle scene");
 }

@@ -10,28 +10,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/cli/cli_support.h"
 #include "tests/test_support.h"
 
 namespace tb {
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult runTessbench(const std::string& arguments) {
-  const std::string command = std::string(TB_TESSBENCH_BIN) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::CommandResult;
+using testing::runTessbench;
 
 TEST(BakeCli, AnalyticBakeWritesMapSidecarAndTarget) {
   const auto dir = testing::scratchDirectory("bake_cli_ok");
