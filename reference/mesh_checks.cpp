@@ -17,6 +17,19 @@ void checkFinitePositions(std::span<const Vec3d> positions, const std::string& s
   }
 }
 
+void checkTriangleCorners(std::span<const std::array<uint32_t, 3>> triangles, size_t vertex_count,
+                          const std::string& source) {
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    for (uint32_t corner : triangles[t]) {
+      if (corner >= vertex_count) {
+        throw InputError(source, "triangle " + std::to_string(t),
+                         "corner index " + std::to_string(corner) + " is out of range (" +
+                             std::to_string(vertex_count) + " vertices)");
+      }
+    }
+  }
+}
+
 void checkFaceIndex(const Mesh& mesh, size_t face) {
   if (face >= mesh.faceCount()) {
     throw InputError(mesh.source, "face " + std::to_string(face),

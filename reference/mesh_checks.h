@@ -2,6 +2,7 @@
 // cross-check and the distance field, so each rule is written and worded once.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <span>
@@ -18,6 +19,11 @@ inline constexpr double kInfiniteSharpness = 10.0;
 
 // Throws InputError(source, "vertex i", ...) for the first non-finite coordinate.
 void checkFinitePositions(std::span<const Vec3d> positions, const std::string& source);
+
+// Throws InputError(source, "triangle t", ...) for the first corner index that is not below
+// `vertex_count`.
+void checkTriangleCorners(std::span<const std::array<uint32_t, 3>> triangles, size_t vertex_count,
+                          const std::string& source);
 
 // Throws InputError(mesh.source, "face i", "index out of range ...").
 void checkFaceIndex(const Mesh& mesh, size_t face);

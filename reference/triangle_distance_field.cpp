@@ -96,15 +96,7 @@ TriangleDistanceField::TriangleDistanceField(std::span<const Vec3d> positions,
     : impl_(std::make_unique<Impl>()) {
   checkFinitePositions(positions, source);
   for (const Vec3d& q : positions) impl_->max_abs = std::max(impl_->max_abs, maxAbsCoordinate(q));
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    for (uint32_t corner : triangles[t]) {
-      if (corner >= positions.size()) {
-        throw InputError(source, "triangle " + std::to_string(t),
-                         "corner index " + std::to_string(corner) + " is out of range (" +
-                             std::to_string(positions.size()) + " vertices)");
-      }
-    }
-  }
+  checkTriangleCorners(triangles, positions.size(), source);
   impl_->positions.assign(positions.begin(), positions.end());
   impl_->triangles.assign(triangles.begin(), triangles.end());
   impl_->boxes.reserve(triangles.size());

@@ -43,15 +43,7 @@ TriangleRayCaster::TriangleRayCaster(std::span<const Vec3d> positions,
                                      std::span<const Triangle> triangles, const std::string& source)
     : impl_(std::make_unique<Impl>()) {
   checkFinitePositions(positions, source);
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    for (uint32_t corner : triangles[t]) {
-      if (corner >= positions.size()) {
-        throw InputError(source, "triangle " + std::to_string(t),
-                         "corner index " + std::to_string(corner) + " is out of range (" +
-                             std::to_string(positions.size()) + " vertices)");
-      }
-    }
-  }
+  checkTriangleCorners(triangles, positions.size(), source);
   impl_->positions.assign(positions.begin(), positions.end());
   impl_->triangles.assign(triangles.begin(), triangles.end());
 

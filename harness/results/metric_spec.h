@@ -80,9 +80,10 @@ struct PlotSpec {
   // For kBar: a row key or "variant" (one bar per value).
   std::string x;
   std::string y;  // a metric of this measure
-  // What one series (one colour) is: "technique", "variant" (technique/variant) or "asset".
+  // What one series (one colour) is: "technique", "variant" (technique/variant), "asset", or
+  // a row key (one series per value: "backend", "policy"); harness/report/plot_data.h.
   std::string series = "technique";
-  // "" (one chart) or "asset" (one chart per asset).
+  // "" (one chart), "asset" (one chart per asset) or a row key (one chart per value).
   std::string facet = {};
   // The rows plotted (as RowScope); rows of one series at one x reduce by `reduce`.
   RowScope where = {};
