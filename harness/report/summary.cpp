@@ -90,14 +90,10 @@ MeasureSummary summarizeMeasure(const Results& results, const std::string& measu
         if (!rowInScope(scope, row.keys)) continue;
         ++target.line.ok_rows;
         for (const Metric& metric : row.metrics) {
-          const bool wanted = every_metric || std::find(summary.metrics.begin(), summary.metrics.end(),
-                                                        metric.name) != summary.metrics.end();
-          if (!wanted) continue;
-          if (every_metric && !target.values.contains(metric.name) &&
-              std::find(summary.metrics.begin(), summary.metrics.end(), metric.name) ==
-                  summary.metrics.end()) {
-            summary.metrics.push_back(metric.name);
-          }
+          const bool listed = std::find(summary.metrics.begin(), summary.metrics.end(),
+                                        metric.name) != summary.metrics.end();
+          if (!listed && !every_metric) continue;
+          if (!listed) summary.metrics.push_back(metric.name);  // in order of appearance
           target.values[metric.name].push_back(metric.value);
         }
       }
