@@ -14,8 +14,8 @@
 
 namespace tb {
 
-// The input of a simulation, in place of (or beside) a mesh asset. Issue 18 reads it from
-// a scenario JSON file and adds its structured fields here (walls, sources, bones); a
+// The input of a simulation, in place of (or beside) a mesh asset, read from a scenario
+// JSON file (format "tessbench-scenario-1", docs/ARCHITECTURE.md) or built in code. A
 // technique reads only the fields it needs and throws UnsupportedInput naming the field
 // it misses.
 struct Scenario {
@@ -26,6 +26,18 @@ struct Scenario {
   // Scalar settings, each documented with its unit by the scenario format
   // (e.g. {"domain_size_m": 10}); keys are snake_case with the unit as suffix.
   std::map<std::string, double> parameters;
+  // The simulation technique the file is written for ("wave_particles", "mass_spring");
+  // the suite pairs a simulation technique only with its own scenarios. Empty: any.
+  std::string technique;
+  // The file's technique-specific sections, verbatim JSON text keyed by technique name
+  // (e.g. sections["wave_particles"] = "{\"walls\": [...], \"sources\": [...]}"); a
+  // technique parses its own with nlohmann::json and throws InputError naming the file
+  // and the field.
+  std::map<std::string, std::string> sections;
+  // The mesh the scenario simulates or renders (the mass-spring skin): an absolute path
+  // resolved by the loader from the file's "mesh" field (relative to the scenario file,
+  // or a bundled asset name). Empty when the scenario has none.
+  std::string mesh_path;
   size_t stepCount() const { return time_step_s > 0 ? size_t(duration_s / time_step_s + 0.5) : 0; }
 };
 
