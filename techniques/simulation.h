@@ -28,16 +28,16 @@ struct Scenario {
   std::map<std::string, double> parameters;
   // The simulation technique the file is written for ("wave_particles", "mass_spring");
   // the suite pairs a simulation technique only with its own scenarios. Empty: any.
-  std::string technique;
+  std::string technique = {};
   // The file's technique-specific sections, verbatim JSON text keyed by technique name
   // (e.g. sections["wave_particles"] = "{\"walls\": [...], \"sources\": [...]}"); a
   // technique parses its own with nlohmann::json and throws InputError naming the file
   // and the field.
-  std::map<std::string, std::string> sections;
+  std::map<std::string, std::string> sections = {};
   // The mesh the scenario simulates or renders (the mass-spring skin): an absolute path
   // resolved by the loader from the file's "mesh" field (relative to the scenario file,
   // or a bundled asset name). Empty when the scenario has none.
-  std::string mesh_path;
+  std::string mesh_path = {};
   size_t stepCount() const { return time_step_s > 0 ? size_t(duration_s / time_step_s + 0.5) : 0; }
 };
 

@@ -56,7 +56,11 @@ struct DataFootprint {
   // 000: the tuple of corner valences and boundary flags, up to rotation; its example
   // reduces 105 patches to 23). 0 when the technique has no such classes. Best case 1.
   uint64_t topology_combinations = 0;
-  uint64_t total() const { return control_mesh_bytes + patch_data_bytes + stencil_bytes; }
+  // A displaced surface's map as the GPU keeps it (gpuResidentBytes); 0 when undisplaced.
+  uint64_t displacement_map_bytes = 0;
+  uint64_t total() const {
+    return control_mesh_bytes + patch_data_bytes + stencil_bytes + displacement_map_bytes;
+  }
   bool operator==(const DataFootprint&) const = default;
 };
 

@@ -3,6 +3,7 @@
 // the asset's own UV atlas (docs/ARCHITECTURE.md, "Displacement maps").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -43,6 +44,15 @@ std::uint32_t channelCount(DisplacementKind kind);
 std::string_view kindName(DisplacementKind kind);            // "scalar", "vector"
 std::string_view pixelTypeName(DisplacementPixelType type);  // "half", "float"
 std::string_view layoutName(DisplacementLayout layout);      // "tiles", "uv" (as in results)
+
+// The map as the GPU samples it (core/gpu's GpuDisplacement): one channel (R) for a scalar
+// map, four (RGBA, A = 0) for a vector map, since three-channel formats are rarely
+// sampleable; 16-bit float channels for a half map, 32-bit for a float one; rows from the
+// top, tightly packed. Half texels are exact, so the GPU reads the very values of the file.
+std::vector<std::byte> gpuTexelBytes(const DisplacementMap& map);
+// Bytes of gpuTexelBytes(map) (width * height * channels * bytes per channel): what the map
+// keeps resident on the device, without mip levels.
+std::uint64_t gpuResidentBytes(const DisplacementMap& map);
 
 // The nearest half to value (round to nearest even), as a float; +-inf past the half range.
 float roundToHalf(float value);

@@ -8,11 +8,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <tuple>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/context.h"
 #include "core/gpu/pipeline_util.h"
+#include "core/gpu/sampled_image.h"
 #include "core/gpu/spirv_patch.h"
 #include "core/gpu/tess_pipelines.h"
 #include "core/gpu/vk_handle.h"
@@ -35,6 +37,10 @@ constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangle
 constexpr uint32_t kFactorPolicyConstantId = 201;
 // kTbCullPolicy in shaders/common/patch_program_tcs.glsl.
 constexpr uint32_t kCullPolicyConstantId = 202;
+// kTbDisplaceKind, kTbDisplaceSampling, kTbDisplaceTriangle in shaders/common/displace.glsl.
+constexpr uint32_t kDisplaceKindConstantId = 203;
+constexpr uint32_t kDisplaceSamplingConstantId = 204;
+constexpr uint32_t kDisplaceTriangleConstantId = 205;
 // Set 1: the harness levels, then the factor policy's corners, parameters and output, then
 // the culling policy's parameters and per-patch bounds.
 constexpr uint32_t kLevelsSetBindings = 6;
@@ -61,6 +67,7 @@ constexpr VkShaderStageFlags kTessStages =
 struct ProgramPipeline {
   VkDescriptorSetLayoutOwner set_layout;
   VkDescriptorSetLayoutOwner levels_set_layout;
+  VkDescriptorSetLayoutOwner displacement_set_layout;  // set 2, "#displaced" programs only
   VkPipelineLayoutOwner layout;
   VkPipelineOwner pipeline;
   uint32_t binding_count = 0;
@@ -89,7 +96,14 @@ struct CallResources {
 };
 
 using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
-                              uint32_t, uint32_t, uint32_t, uint32_t>;
+                              uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>;
+
+// The displacement's specialisation as one key word: 0 without a map, else kind, sampling
+// and a presence bit.
+uint32_t displacementKey(const GpuPatchProgram& program) {
+  if (!program.displacement) return 0;
+  return 1u << 8 | program.displacement->sampling << 4 | program.displacement->kind;
+}
 
 // `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
 // entry, ignored by the TCS, which does not declare it. `factor_policy`: kTbFactorPolicy,
@@ -118,6 +132,16 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
   if (cull_policy != 0) {
     entries.push_back({kCullPolicyConstantId, uint32_t(values.size()) * 4u, 4});
     values.push_back(cull_policy);
+  }
+  if (program.displacement) {
+    const uint32_t triangle = program.domain == tess::Domain::kTriangle ? 1u : 0u;
+    for (const auto& [id, value] :
+         {std::pair{kDisplaceKindConstantId, program.displacement->kind},
+          std::pair{kDisplaceSamplingConstantId, program.displacement->sampling},
+          std::pair{kDisplaceTriangleConstantId, triangle}}) {
+      entries.push_back({id, uint32_t(values.size()) * 4u, 4});
+      values.push_back(value);
+    }
   }
   VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
                                       values.data()};
@@ -150,7 +174,8 @@ class PatchProgramCache {
                    program.specialization, int(program.domain),
                    int(spacing),           program.input_vertices_per_patch,
                    binding_count,          boundary,
-                   factor_policy,          cull_policy};
+                   factor_policy,          cull_policy,
+                   displacementKey(program)};
     const std::lock_guard lock(mutex_);
     if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
@@ -162,7 +187,12 @@ class PatchProgramCache {
     const std::vector<VkShaderStageFlags> levels_stages(kLevelsSetBindings,
                                                         VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
     p->levels_set_layout = createStorageBufferSetLayout(device, levels_stages);
-    const VkDescriptorSetLayout set_layouts[] = {p->set_layout.get(), p->levels_set_layout.get()};
+    std::vector<VkDescriptorSetLayout> set_layouts = {p->set_layout.get(),
+                                                      p->levels_set_layout.get()};
+    if (program.displacement) {
+      p->displacement_set_layout = createDisplacementSetLayout(device);
+      set_layouts.push_back(p->displacement_set_layout.get());
+    }
     p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
     p->pipeline = createProgramPipeline(device, program, spacing, boundary, factor_policy,
                                         cull_policy, vertex_.get(), p->layout.get());
@@ -356,7 +386,9 @@ struct DrawSetup {
   const ProgramPipeline& pipeline;
   VkQueryPool queries = VK_NULL_HANDLE;
   VkQueryPool primitives = VK_NULL_HANDLE;  // with queries, when the device counts primitives
-  VkDescriptorSet sets[2] = {};  // set 0 (capture + data), set 1 (levels)
+  // set 0 (capture + data), set 1 (levels), set 2 (displacement, when the program has one)
+  VkDescriptorSet sets[3] = {};
+  uint32_t set_count = 2;
   uint32_t input_vertices_per_patch = 1;
   uint32_t per_draw = 1;
 };
@@ -372,8 +404,8 @@ void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uin
   if (count_primitives) vkCmdResetQueryPool(cmd, setup.primitives, 0, 1);
   beginDiscardRendering(cmd);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, setup.pipeline.pipeline.get());
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, setup.sets, 0,
-                          nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, setup.set_count,
+                          setup.sets, 0, nullptr);
   if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   if (count_primitives) vkCmdBeginQuery(cmd, setup.primitives, 0, 0);
   for (uint32_t p = from; p < to; p += setup.per_draw) {
@@ -585,10 +617,24 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   const uint32_t first = std::min(options.first_patch, program.patch_count);
   const uint32_t end =
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
+  // The displacement map and its words live for this call only (set 2).
+  std::optional<SampledImage> displacement_image;
+  Buffer displacement_words;
+  DisplacementSet displacement_set;
+  if (program.displacement) {
+    const GpuDisplacement& d = *program.displacement;
+    if (!d.texels) throw GpuError("patch program " + program.evaluation_shader + ": no texels");
+    displacement_image.emplace(context, floatImageFormat(d.channels, d.bytes_per_channel),
+                               d.width, d.height, *d.texels);
+    uploadWords(context, d.patch_words, &displacement_words);
+    displacement_set = DisplacementSet(device, pipeline.displacement_set_layout.get(),
+                                       *displacement_image, displacement_words);
+  }
   const DrawSetup setup{pipeline,
                         options.statistics ? resources->queries.get() : VK_NULL_HANDLE,
                         options.statistics ? resources->primitives.get() : VK_NULL_HANDLE,
-                        {descriptors.set, levels_descriptors.set},
+                        {descriptors.set, levels_descriptors.set, displacement_set.set},
+                        program.displacement ? 3u : 2u,
                         program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
 

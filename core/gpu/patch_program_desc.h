@@ -3,13 +3,28 @@
 // runs it. No Vulkan header is needed to include this one.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/tess/tessellator.h"
 
 namespace tb::gpu {
+
+// A displacement map the TES samples after evaluating the surface (shaders/common/
+// displace.glsl, set 2): a real sampled image read with texelFetch, and the per-patch owner
+// and direction words (techniques/common/displaced_patches.h).
+struct GpuDisplacement {
+  uint32_t width = 0, height = 0;    // texels
+  uint32_t channels = 1;             // 1 (R, scalar map) or 4 (RGBA, vector map; A unused)
+  uint32_t bytes_per_channel = 4;    // 2: 16-bit float channels, 4: 32-bit float
+  std::shared_ptr<const std::vector<std::byte>> texels;  // rows from the top, packed
+  std::vector<uint32_t> patch_words;  // TbDisplacePatches at set 2, binding 1
+  uint32_t kind = 1;                  // kTbDisplaceKind: 1 scalar, 2 vector
+  uint32_t sampling = 0;              // kTbDisplaceSampling: 0 naive, 1 watertight
+};
 
 struct GpuPatchProgram {
   std::string control_shader;     // embedded path, e.g. "acc/acc.tesc"
@@ -29,6 +44,8 @@ struct GpuPatchProgram {
   std::vector<std::vector<uint32_t>> storage_buffers;
   // Specialisation constants 0..M-1 of both stages (variant switches).
   std::vector<uint32_t> specialization;
+  // Non-null: the evaluation shader is a "#displaced" build that samples this map.
+  std::shared_ptr<const GpuDisplacement> displacement;
 };
 
 }  // namespace tb::gpu

@@ -48,6 +48,7 @@ using VkPipelineLayoutOwner = DeviceHandle<VkPipelineLayout, vkDestroyPipelineLa
 using VkDescriptorSetLayoutOwner =
     DeviceHandle<VkDescriptorSetLayout, vkDestroyDescriptorSetLayout>;
 using VkDescriptorPoolOwner = DeviceHandle<VkDescriptorPool, vkDestroyDescriptorPool>;
+using VkSamplerOwner = DeviceHandle<VkSampler, vkDestroySampler>;
 using VkQueryPoolOwner = DeviceHandle<VkQueryPool, vkDestroyQueryPool>;
 using VkCommandPoolOwner = DeviceHandle<VkCommandPool, vkDestroyCommandPool>;
 using VkFenceOwner = DeviceHandle<VkFence, vkDestroyFence>;

@@ -10,11 +10,14 @@
 //                          (TCS only; tess_factors.glsl)
 //   set 1, bindings 4..5   the culling policy's parameters and per-patch bounds (TCS only;
 //                          cull.glsl)
+//   set 2, bindings 0..1   the displacement map and its per-patch words ("#displaced"
+//                          TES builds only; displace.glsl)
 //   push constants         this block
 //   constant_id 0..M-1     GpuPatchProgram::specialization (declare them in the shader)
 //   constant_id 200        the harness's kTbCaptureBoundary (patch_program_tes.glsl)
 //   constant_id 201        the harness's kTbFactorPolicy (patch_program_tcs.glsl)
 //   constant_id 202        the harness's kTbCullPolicy (patch_program_tcs.glsl)
+//   constant_id 203..205   the displacement's kind, sampling and domain (displace.glsl)
 #ifndef TB_PATCH_PROGRAM_GLSL
 #define TB_PATCH_PROGRAM_GLSL
 

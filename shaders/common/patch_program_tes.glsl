@@ -3,6 +3,9 @@
 #define TB_PATCH_PROGRAM_TES_GLSL
 
 #include "patch_program.glsl"
+#ifdef TB_DISPLACEMENT
+#include "displace.glsl"
+#endif
 
 // 10 words per vertex: patch, gl_TessCoord bits (3), position (3), normal (3).
 const uint kTbCaptureWords = 10u;
@@ -32,7 +35,14 @@ bool tbOnPatchBoundary() {
 // Ends every technique's TES: sets gl_Position and, unless capture is off, appends
 // (patch, gl_TessCoord, position, normal) to the capture buffer (with kTbCaptureBoundary,
 // only on the patch boundary).
-void tbEmitVertex(vec3 position, vec3 normal) {
+// In a "#displaced" build (TB_DISPLACEMENT), the position is first displaced by the map
+// (displace.glsl); the normal stays the undisplaced surface's.
+void tbEmitVertex(vec3 surface_position, vec3 normal) {
+#ifdef TB_DISPLACEMENT
+  const vec3 position = tbDisplace(surface_position);
+#else
+  const vec3 position = surface_position;
+#endif
   gl_Position = vec4(position, 1.0);
   if (tb_push.capture_enabled == 0u) return;
   if (kTbCaptureBoundary != 0u && !tbOnPatchBoundary()) return;

@@ -1,0 +1,89 @@
+// Any surface technique's patches with a displacement map applied after evaluation
+// (docs/ARCHITECTURE.md, "Displaced surfaces"): position + direction * h for a scalar map,
+// position + V for a vector map, sampled naively or watertight (displacement_sampling.h).
+// The GPU side is the same technique's TES compiled with shaders/common/displace.glsl
+// (embedded as "<tese>#displaced"), which its tbEmitVertex calls; evaluateFloat is its twin.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/displacement/displacement_map.h"
+#include "techniques/common/displacement_sampling.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+// The GPU words of one program patch in TbDisplacePatches (shaders/common/displace.glsl),
+// after a 4-word header (resolution, border, tile_size, tiles_per_row): own tile, 4 corners
+// (owner tile, owner corner | owner is a triangle << 8), 4 edges (owner tile, owner edge |
+// triangle << 8, reversed), 4 corner directions (x, y, z float bits).
+inline constexpr size_t kDisplaceHeaderWords = 4;
+inline constexpr size_t kDisplacePatchWords = 1 + 4 * 2 + 4 * 3 + 4 * 3;
+
+class DisplacedPatches final : public SurfacePatches {
+ public:
+  // Throws InputError (naming `map_name`) when the map is not a per-patch tile atlas with
+  // one tile per patch of `inner`.
+  DisplacedPatches(const SurfacePatches& inner, std::shared_ptr<const DisplacementMap> map,
+                   DisplacementSampling sampling, std::string map_name);
+
+  PatchDomain patchDomain(size_t patch) const override { return inner_.patchDomain(patch); }
+  LimitScheme approximates() const override { return inner_.approximates(); }
+  size_t patchCount() const override { return inner_.patchCount(); }
+  const Mesh& controlMesh() const override { return inner_.controlMesh(); }
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    return inner_.patchCorners(patch);
+  }
+  uint32_t sourceFace(size_t patch) const override { return inner_.sourceFace(patch); }
+  // The displaced position; the normal is the undisplaced surface's (the displaced
+  // surface's own normal would come from the map's derivatives, not built).
+  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override;
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override;
+  // The technique's programs with "#displaced" evaluation shaders and the map attached.
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;
+  // Counts and cull bounds of the undisplaced technique would understate the work and the
+  // extent, so a displaced surface gives none.
+  DataFootprint footprint() const override;
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+  const DisplacementMap& map() const { return *map_; }
+  DisplacementSampling sampling() const { return sampling_; }
+  const BoundaryOwners& owners(size_t patch) const { return owners_[patch]; }
+  // The unit displacement direction of patch `patch` at `coord` in double (scalar maps).
+  Vec3d direction(size_t patch, const DomainCoord& coord) const;
+  // The largest |displacement| the map holds (world units): a scalar map's largest |h|, a
+  // vector map's longest V. Best 0.
+  double maxDisplacement() const { return max_displacement_; }
+
+ private:
+  const SurfacePatches& inner_;
+  std::shared_ptr<const DisplacementMap> map_;
+  DisplacementSampling sampling_;
+  TileGeometry geometry_;
+  std::vector<BoundaryOwners> owners_;                  // per patch
+  std::vector<std::array<Vec3d, 4>> corner_dirs_;       // per patch, unit, double
+  std::vector<std::array<Vec3f, 4>> corner_dirs_float_; // the same rounded to float
+  double max_displacement_ = 0;
+  std::vector<std::string> warnings_;
+};
+
+// Builds the owner of every shared corner and edge of `patches` (BoundaryOwners).
+std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches);
+
+// A technique instance whose surface is `inner`'s displaced: owns both.
+class DisplacedInstance final : public TechniqueInstance {
+ public:
+  DisplacedInstance(std::unique_ptr<TechniqueInstance> inner,
+                    std::shared_ptr<const DisplacementMap> map, DisplacementSampling sampling,
+                    std::string map_name);
+  const SurfacePatches* surface() const override { return displaced_.get(); }
+
+ private:
+  std::unique_ptr<TechniqueInstance> inner_;
+  std::unique_ptr<DisplacedPatches> displaced_;
+};
+
+}  // namespace tb
