@@ -11,6 +11,7 @@
 #include "core/mesh/input_error.h"
 #include "reference/triangle_distance_field.h"
 #include "reference/triangle_ray_caster.h"
+#include "techniques/common/displaced_patches.h"
 
 namespace tb {
 namespace {
@@ -30,8 +31,10 @@ struct Samplers {
   const ref::TriangleDistanceField* closest = nullptr;  // vector bakes
 };
 
-// One texel's channels; returns false when it missed the target.
-bool bakeTexel(const SurfacePoint& point, const Samplers& samplers, uint32_t* hint, float* out) {
+// One texel's channels; returns false when it missed the target. `direction`: the unit
+// displacement direction at the point (scalar bakes).
+bool bakeTexel(const SurfacePoint& point, const Vec3d& direction, const Samplers& samplers,
+               uint32_t* hint, float* out) {
   if (samplers.closest != nullptr) {
     const ref::ClosestPoint hit = samplers.closest->closest(point.position, *hint);
     if (hit.triangle == ref::kNoTriangle) return false;
@@ -40,9 +43,9 @@ bool bakeTexel(const SurfacePoint& point, const Samplers& samplers, uint32_t* hi
     for (int c = 0; c < 3; ++c) out[c] = float(d[c]);
     return true;
   }
-  if (!(length(point.normal) > 0)) return false;
-  const auto up = samplers.rays->nearestHit(point.position, point.normal);
-  const auto down = samplers.rays->nearestHit(point.position, -1.0 * point.normal);
+  if (!(length(direction) > 0)) return false;
+  const auto up = samplers.rays->nearestHit(point.position, direction);
+  const auto down = samplers.rays->nearestHit(point.position, -1.0 * direction);
   if (!up && !down) return false;
   // The nearer hit; a tie goes to +n.
   if (up && (!down || up->distance <= down->distance)) {
@@ -57,15 +60,15 @@ bool bakeTexel(const SurfacePoint& point, const Samplers& samplers, uint32_t* hi
 
 TexelParameter texelParameter(uint32_t x, uint32_t y, const BakeSettings& settings) {
   const double tile_size = double(settings.resolution + 2 * settings.border);
-  const double res = double(settings.resolution), border = double(settings.border);
-  return {(double(x) - border + 0.5) / res, (tile_size - 1 - double(y) - border + 0.5) / res};
+  const double step = double(settings.resolution - 1), border = double(settings.border);
+  return {(double(x) - border) / step, (tile_size - 1 - double(y) - border) / step};
 }
 
 BakeResult bakeDisplacement(const SurfacePatches& patches, const ref::TriangleMeshRef& target,
                             const BakeSettings& settings, const std::string& target_source) {
-  if (settings.resolution < 1 || settings.resolution > kMaxBakeResolution) {
+  if (settings.resolution < 2 || settings.resolution > kMaxBakeResolution) {
     throw InputError("--resolution", std::to_string(settings.resolution),
-                     "texels per patch side must be 1 to " + std::to_string(kMaxBakeResolution));
+                     "texels per patch side must be 2 to " + std::to_string(kMaxBakeResolution));
   }
   if (settings.layout == DisplacementLayout::kUv) {
     throw InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
@@ -106,8 +109,9 @@ BakeResult bakeDisplacement(const SurfacePatches& patches, const ref::TriangleMe
     samplers.closest = &*closest;
   }
 
+  const DisplacementFrame frame(patches);
   std::vector<size_t> misses(patch_count, 0);
-  const double slack = double(settings.border) / double(settings.resolution);
+  const double slack = double(settings.border) / double(settings.resolution - 1);
   tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
     const PatchDomain domain = patches.patchDomain(p);
     const uint32_t x0 = uint32_t(p % per_row) * tile_size, y0 = uint32_t(p / per_row) * tile_size;
@@ -118,8 +122,12 @@ BakeResult bakeDisplacement(const SurfacePatches& patches, const ref::TriangleMe
         if (domain == PatchDomain::kTriangle && t.u + t.v > 1 + slack) continue;
         const size_t texel = size_t(y0 + y) * map.width + (x0 + x);
         baked[texel] = 1;
-        const SurfacePoint point = patches.evaluate(p, domainCoordOf(domain, t));
-        if (!bakeTexel(point, samplers, &hint, &map.texels[texel * channels])) ++misses[p];
+        const DomainCoord coord = domainCoordOf(domain, t);
+        const SurfacePoint point = patches.evaluate(p, coord);
+        const Vec3d direction = samplers.rays ? frame.direction(p, coord) : Vec3d{};
+        if (!bakeTexel(point, direction, samplers, &hint, &map.texels[texel * channels])) {
+          ++misses[p];
+        }
       }
     }
   });

@@ -92,7 +92,7 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
                    "minus surface point)")
       ->check(CLI::IsMember({"scalar", "vector"}))
       ->capture_default_str();
-  bake->add_option("--resolution", args.resolution, "interior texels per patch side")
+  bake->add_option("--resolution", args.resolution, "texels per patch side, both edges included (2 to 1024)")
       ->check(CLI::Range(1u, kMaxBakeResolution))
       ->capture_default_str();
   bake->add_option("--layout", args.layout, "tiles (per-patch atlas) | uv (not built yet)")

@@ -93,10 +93,11 @@ vec2 tbEdgeUv(bool triangle, uint edge, float t) {
 vec4 tbSampleTile(uint tile, float u, float v) {
   const uint resolution = tb_displace.words[0], border = tb_displace.words[1];
   const uint tile_size = tb_displace.words[2], per_row = tb_displace.words[3];
-  precise float left = float(border) - 0.5;
-  precise float top = (float(tile_size) - float(border)) - 0.5;
-  precise float x = u * float(resolution) + left;
-  precise float y = top - v * float(resolution);
+  precise float step = float(resolution) - 1.0;
+  precise float left = float(border);
+  precise float top = (float(tile_size) - 1.0) - float(border);
+  precise float x = u * step + left;
+  precise float y = top - v * step;
   const float last = float(tile_size) - 2.0;
   float x0 = floor(x), y0 = floor(y);
   x0 = x0 < 0.0 ? 0.0 : (x0 > last ? last : x0);

@@ -71,7 +71,11 @@ std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches) {
 DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
                                    std::shared_ptr<const DisplacementMap> map,
                                    DisplacementSampling sampling, std::string map_name)
-    : inner_(inner), map_(std::move(map)), sampling_(sampling), warnings_(inner.warnings()) {
+    : inner_(inner),
+      map_(std::move(map)),
+      sampling_(sampling),
+      frame_(inner),
+      warnings_(inner.warnings()) {
   if (map_->layout != DisplacementLayout::kTiles) {
     throw InputError(map_name, "", "a uv-layout map cannot displace patches (tiles only)");
   }
@@ -86,27 +90,6 @@ DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
                                        " texels are too small to sample");
   }
   geometry_ = tileGeometryOf(*map_);
-  owners_ = boundaryOwners(inner);
-  // One direction per control-mesh position: the technique's normal there, taken from the
-  // lowest patch at that corner (as the watertight owner), so every patch sees the same one.
-  const size_t count = inner.patchCount();
-  const Welding welding = weldByPosition(inner.controlMesh());
-  std::map<uint32_t, Vec3d> position_dir;
-  corner_dirs_.resize(count);
-  corner_dirs_float_.resize(count);
-  for (size_t p = 0; p < count; ++p) {
-    const PatchDomain domain = inner.patchDomain(p);
-    const std::array<uint32_t, 4> c = inner.patchCorners(p);
-    for (uint32_t k = 0; k < cornerCountOf(domain); ++k) {
-      const uint32_t vertex = welding.canonical[c[k]];
-      auto it = position_dir.find(vertex);
-      if (it == position_dir.end()) {
-        it = position_dir.emplace(vertex, inner.evaluate(p, cornerCoord(domain, k)).normal).first;
-      }
-      corner_dirs_[p][k] = it->second;
-      corner_dirs_float_[p][k] = vecCast<float>(it->second);
-    }
-  }
   const uint32_t channels = channelCount(map_->kind);
   for (size_t i = 0; i < map_->texels.size(); i += channels) {
     double squared = 0;
@@ -117,8 +100,30 @@ DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
                       samplingName(sampling) + " sampling)");
 }
 
-Vec3d DisplacedPatches::direction(size_t patch, const DomainCoord& coord) const {
-  return displacementDirection(inner_.patchDomain(patch), owners_[patch], corner_dirs_[patch],
+DisplacementFrame::DisplacementFrame(const SurfacePatches& patches)
+    : patches_(patches), owners_(boundaryOwners(patches)) {
+  const size_t count = patches.patchCount();
+  const Welding welding = weldByPosition(patches.controlMesh());
+  std::map<uint32_t, Vec3d> position_dir;
+  corner_dirs_.resize(count);
+  corner_dirs_float_.resize(count);
+  for (size_t p = 0; p < count; ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    const std::array<uint32_t, 4> c = patches.patchCorners(p);
+    for (uint32_t k = 0; k < cornerCountOf(domain); ++k) {
+      const uint32_t vertex = welding.canonical[c[k]];
+      auto it = position_dir.find(vertex);
+      if (it == position_dir.end()) {
+        it = position_dir.emplace(vertex, patches.evaluate(p, cornerCoord(domain, k)).normal).first;
+      }
+      corner_dirs_[p][k] = it->second;
+      corner_dirs_float_[p][k] = vecCast<float>(it->second);
+    }
+  }
+}
+
+Vec3d DisplacementFrame::direction(size_t patch, const DomainCoord& coord) const {
+  return displacementDirection(patches_.patchDomain(patch), owners_[patch], corner_dirs_[patch],
                                coordArray<double>(coord));
 }
 
@@ -127,12 +132,12 @@ SurfacePoint DisplacedPatches::evaluate(size_t patch, const DomainCoord& coord) 
   const PatchDomain domain = inner_.patchDomain(patch);
   const auto c = coordArray<double>(coord);
   const TileCoord<double> at =
-      lookupCoord(uint32_t(patch), domain, owners_[patch], sampling_, c,
+      lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
                   [this](uint32_t q) { return inner_.patchDomain(q); });
   double h[3] = {0, 0, 0};
   sampleTile(*map_, geometry_, at.tile, at.u, at.v, channelCount(map_->kind), h);
   if (map_->kind == DisplacementKind::kScalar) {
-    point.position = point.position + direction(patch, coord) * h[0];
+    point.position = point.position + frame_.direction(patch, coord) * h[0];
   } else {
     point.position = point.position + Vec3d{h[0], h[1], h[2]};
   }
@@ -144,12 +149,13 @@ SurfacePointF DisplacedPatches::evaluateFloat(size_t patch, const tess::DomainPo
   const PatchDomain domain = inner_.patchDomain(patch);
   const std::array<float, 3> c{coord[0], coord[1], coord[2]};
   const TileCoord<float> at =
-      lookupCoord(uint32_t(patch), domain, owners_[patch], sampling_, c,
+      lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
                   [this](uint32_t q) { return inner_.patchDomain(q); });
   float h[3] = {0, 0, 0};
   sampleTile(*map_, geometry_, at.tile, at.u, at.v, channelCount(map_->kind), h);
   if (map_->kind == DisplacementKind::kScalar) {
-    const Vec3f dir = displacementDirection(domain, owners_[patch], corner_dirs_float_[patch], c);
+    const Vec3f dir = displacementDirection(domain, frame_.owners(patch),
+                                            frame_.cornerDirectionsFloat(patch), c);
     point.position = point.position + dir * h[0];
   } else {
     point.position = point.position + Vec3f{h[0], h[1], h[2]};
@@ -182,7 +188,7 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
     words = {geometry_.resolution, geometry_.border, geometry_.tile_size, geometry_.tiles_per_row};
     for (uint32_t i = 0; i < program.patch_count; ++i) {
       const uint32_t p = program.patch_ids.empty() ? i : program.patch_ids[i];
-      const BoundaryOwners& owners = owners_[p];
+      const BoundaryOwners& owners = frame_.owners(p);
       auto triangleBit = [this](uint32_t q) {
         return inner_.patchDomain(q) == PatchDomain::kTriangle ? 1u << 8 : 0u;
       };
@@ -196,7 +202,7 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
         words.push_back(edge.edge | triangleBit(edge.patch));
         words.push_back(edge.reversed ? 1u : 0u);
       }
-      for (const Vec3f& dir : corner_dirs_float_[p]) {
+      for (const Vec3f& dir : frame_.cornerDirectionsFloat(p)) {
         for (int k = 0; k < 3; ++k) words.push_back(std::bit_cast<uint32_t>(dir[k]));
       }
     }

@@ -23,6 +23,28 @@ namespace tb {
 inline constexpr size_t kDisplaceHeaderWords = 4;
 inline constexpr size_t kDisplacePatchWords = 1 + 4 * 2 + 4 * 3 + 4 * 3;
 
+// The owners of every shared corner and edge of a surface and its displacement directions:
+// one unit direction per welded control-mesh position, the technique's normal there taken
+// from the lowest patch at that corner, so every patch sees the same one; inside a patch
+// they are interpolated (displacementDirection). The baker casts its rays along these, and
+// DisplacedPatches moves scalar texels along them.
+class DisplacementFrame {
+ public:
+  explicit DisplacementFrame(const SurfacePatches& patches);
+  const BoundaryOwners& owners(size_t patch) const { return owners_[patch]; }
+  const std::array<Vec3f, 4>& cornerDirectionsFloat(size_t patch) const {
+    return corner_dirs_float_[patch];
+  }
+  // The unit direction of patch `patch` at `coord`, double.
+  Vec3d direction(size_t patch, const DomainCoord& coord) const;
+
+ private:
+  const SurfacePatches& patches_;
+  std::vector<BoundaryOwners> owners_;                   // per patch
+  std::vector<std::array<Vec3d, 4>> corner_dirs_;        // per patch, unit, double
+  std::vector<std::array<Vec3f, 4>> corner_dirs_float_;  // the same rounded to float
+};
+
 class DisplacedPatches final : public SurfacePatches {
  public:
   // Throws InputError (naming `map_name`) when the map is not a per-patch tile atlas with
@@ -51,9 +73,7 @@ class DisplacedPatches final : public SurfacePatches {
 
   const DisplacementMap& map() const { return *map_; }
   DisplacementSampling sampling() const { return sampling_; }
-  const BoundaryOwners& owners(size_t patch) const { return owners_[patch]; }
-  // The unit displacement direction of patch `patch` at `coord` in double (scalar maps).
-  Vec3d direction(size_t patch, const DomainCoord& coord) const;
+  const DisplacementFrame& frame() const { return frame_; }
   // The largest |displacement| the map holds (world units): a scalar map's largest |h|, a
   // vector map's longest V. Best 0.
   double maxDisplacement() const { return max_displacement_; }
@@ -62,10 +82,8 @@ class DisplacedPatches final : public SurfacePatches {
   const SurfacePatches& inner_;
   std::shared_ptr<const DisplacementMap> map_;
   DisplacementSampling sampling_;
+  DisplacementFrame frame_;
   TileGeometry geometry_;
-  std::vector<BoundaryOwners> owners_;                  // per patch
-  std::vector<std::array<Vec3d, 4>> corner_dirs_;       // per patch, unit, double
-  std::vector<std::array<Vec3f, 4>> corner_dirs_float_; // the same rounded to float
   double max_displacement_ = 0;
   std::vector<std::string> warnings_;
 };

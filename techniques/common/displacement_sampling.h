@@ -120,17 +120,17 @@ void edgeUv(PatchDomain domain, uint32_t edge, T t, T* u, T* v) {
 }
 
 // Continuous texel coordinates of (u, v) in a tile, the baker's texel centres
-// (harness/bake/baker.h texelParameter): x = u r + (border - 1/2), y = (tile_size - border
-// - 1/2) - v r, then bilinear between the four texels around (x, y) (clamped to the tile).
-// Returns channel values in out[0..channels).
+// (harness/bake/baker.h texelParameter: the first and last interior texels on the edges):
+// x = u (r - 1) + border, y = (tile_size - 1 - border) - v (r - 1), then bilinear between the
+// four texels around (x, y) (clamped to the tile). Returns channel values in out[0..channels).
 template <class T>
 void sampleTile(const DisplacementMap& map, const TileGeometry& g, uint32_t tile, T u, T v,
                 uint32_t channels, T* out) {
-  const T resolution = T(g.resolution);
-  const T left = T(g.border) - T(0.5);
-  const T top = (T(g.tile_size) - T(g.border)) - T(0.5);
-  const T x = u * resolution + left;
-  const T y = top - v * resolution;
+  const T step = T(g.resolution) - T(1);
+  const T left = T(g.border);
+  const T top = (T(g.tile_size) - T(1)) - T(g.border);
+  const T x = u * step + left;
+  const T y = top - v * step;
   using std::floor;
   const T last = T(g.tile_size) - T(2);
   T x0 = floor(x), y0 = floor(y);

@@ -104,10 +104,10 @@ TEST(BakerOracle, AccScalarTexelsEqualTheAnalyticHeightWithinTheTessellationBoun
   const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
   const ref::Scheme scheme = schemeOf(*f.patches);
   const double m = secondDerivativeBound(f.patches->controlMesh(), scheme, h);
-  // Texel centres (k + 0.5) / 7 never fall on the target's grid vertices (multiples of 1/8),
-  // where the interpolant is exact and the check could not fail.
+  // Texel centres k / 7 fall on the target's grid vertices (multiples of 1/8), where the
+  // interpolant is exact and the check could not fail, only at k = 0 and 7.
   BakeSettings settings;
-  settings.resolution = 7;
+  settings.resolution = 8;
   double previous = 0;
   for (int rate : {8, 16, 32}) {
     const ref::LimitTessellation target =
@@ -173,12 +173,12 @@ TEST(BakerOracle, TriangleTechniqueOnALoopTargetBakesWithoutMisses) {
   settings.resolution = 8;
   const BakeResult result = bakeDisplacement(*f.patches, target.view(), settings);
   EXPECT_EQ(result.rays_missed, 0u);
-  // Texels with u + v <= 1 + 1/8 of a 10 x 10 tile (border 1): rows from the bottom.
+  // Texels with u + v <= 1 + 1/7 of a 10 x 10 tile (border 1, texel step 1/7).
   size_t per_tile = 0;
   for (uint32_t y = 0; y < 10; ++y) {
     for (uint32_t x = 0; x < 10; ++x) {
       const TexelParameter t = texelParameter(x, y, settings);
-      per_tile += t.u + t.v <= 1 + 1.0 / 8;
+      per_tile += t.u + t.v <= 1 + 1.0 / 7;
     }
   }
   EXPECT_EQ(result.texels_baked, per_tile * f.patches->patchCount());
@@ -215,7 +215,7 @@ TEST(Baker, RefusesBadSettings) {
   const ref::LimitTessellation target =
       analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 2, h);
   BakeSettings settings;
-  settings.resolution = 0;
+  settings.resolution = 1;
   EXPECT_THROW(bakeDisplacement(*f.patches, target.view(), settings), InputError);
   settings.resolution = kMaxBakeResolution + 1;
   EXPECT_THROW(bakeDisplacement(*f.patches, target.view(), settings), InputError);

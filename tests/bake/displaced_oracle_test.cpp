@@ -1,0 +1,156 @@
+// The baker's oracle through the displaced technique (issue 17, acceptance 2): bake the
+// analytic target (harness/bake/analytic_target.h: Bfr's limit displaced by a closed-form h),
+// displace the technique by that map (DisplacedPatches, watertight), and measure the distance
+// of the displaced surface to the target (Embree point queries) on a lattice of every patch.
+//
+// The bound, derived per asset: the map holds, at each texel centre, the distance along the
+// displacement direction from the technique's surface to the target, so the displaced surface
+// meets the target there up to the target's own tessellation error e_target; between texel
+// centres it errs by the bilinear interpolation error of that distance over a texel of side
+// 1/r in (u, v). Write the distance as g + d: g the displaced limit's offset (second
+// derivative at most M, sampled as in baker_test.cpp) and d the technique's undisplaced
+// deviation from the limit (at most e_tech, measured); bilinear interpolation errs on g by at
+// most M (1/r)^2 / 4 (two directions, each M (1/r)^2 / 8) and on d by at most 2 e_tech. So
+//   error <= 1.5 (M / (4 r^2) + 2 e_tech) + 2 e_target,
+// the factor 1.5 for the sampled M and the cosine between direction and distance. The test
+// also asks the error to fall as r doubles (4 -> 8 -> 16) while the map limits accuracy.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/mesh/obj_loader.h"
+#include "harness/bake/analytic_target.h"
+#include "harness/bake/baker.h"
+#include "harness/measures/error.h"
+#include "reference/limit_surface.h"
+#include "reference/triangle_distance_field.h"
+#include "techniques/common/displaced_patches.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb {
+namespace {
+
+// Lattice points of a patch: a quad's (i/n, j/n), a triangle's barycentric (i/n, j/n, rest).
+std::vector<DomainCoord> lattice(PatchDomain domain, int n) {
+  std::vector<DomainCoord> points;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double u = double(i) / n, v = double(j) / n;
+      if (domain == PatchDomain::kQuad) {
+        points.push_back({u, v, 0});
+      } else if (i + j <= n) {
+        points.push_back({u, v, std::max(0.0, 1 - u - v)});
+      }
+    }
+  }
+  return points;
+}
+
+// Max distance from `patches` (sampled on lattice(13), off the texel centres of r = 4..16)
+// to `target`.
+double maxDistance(const SurfacePatches& patches, const ref::TriangleDistanceField& target) {
+  double worst = 0;
+  uint32_t hint = ref::kNoTriangle;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    for (const DomainCoord& c : lattice(patches.patchDomain(p), 13)) {
+      const Vec3d point = patches.evaluate(p, c).position;
+      const ref::ClosestPoint hit = target.closest(point, hint);
+      hint = hit.triangle;
+      worst = std::max(worst, length(hit.point - point));
+    }
+  }
+  return worst;
+}
+
+// M of baker_test.cpp: max second directional derivative of the displaced limit, 7 x 7 per face.
+double secondDerivativeBound(const Mesh& mesh, ref::Scheme scheme, const AnalyticDisplacement& h) {
+  const ref::LimitSurface limit(mesh, scheme);
+  auto displaced = [&](size_t face, double u, double v) {
+    const ref::LimitPoint p = limit.evaluate(face, u, v);
+    return p.position + h.height(p.position) * p.normal;
+  };
+  const double d = 1e-3;
+  double bound = 0;
+  for (size_t face = 0; face < limit.faceCount(); ++face) {
+    if (!limit.hasLimitSurface(face)) continue;
+    for (int i = 0; i < 7; ++i) {
+      for (int j = 0; j < 7; ++j) {
+        const double u = 0.05 + 0.15 * i, v = 0.05 + 0.15 * j;
+        // A Loop face's domain is the triangle u + v <= 1 (with room for the stencil).
+        if (scheme == ref::Scheme::kLoop && u + v > 0.95) continue;
+        const Vec3d c = displaced(face, u, v);
+        const Vec3d uu =
+            (displaced(face, u + d, v) - 2.0 * c + displaced(face, u - d, v)) * (1 / (d * d));
+        const Vec3d vv =
+            (displaced(face, u, v + d) - 2.0 * c + displaced(face, u, v - d)) * (1 / (d * d));
+        const Vec3d uv = (displaced(face, u + d, v + d) - displaced(face, u + d, v - d) -
+                          displaced(face, u - d, v + d) + displaced(face, u - d, v - d)) *
+                         (1 / (4 * d * d));
+        bound = std::max(bound, std::max(length(uu), length(vv)) + length(uv));
+      }
+    }
+  }
+  return bound;
+}
+
+struct OracleCase {
+  const char* technique;
+  const char* asset;
+};
+
+TEST(DisplacedOracle, BakedAnalyticTargetIsReproducedWithinTheTexelBoundAndConverges) {
+  const OracleCase cases[] = {
+      {"acc", "opensubdiv/catmark_torus.obj"},
+      {"gregory_acc", "opensubdiv/catmark_toroidal_tet.obj"},
+      {"pn_triangles", "tessbench/tri_torus.obj"},
+      {"phong", "tessbench/tri_torus.obj"},
+  };
+  constexpr int kTargetRate = 40;
+  for (const OracleCase& c : cases) {
+    SCOPED_TRACE(std::string(c.technique) + " on " + c.asset);
+    const Technique& technique = *TechniqueRegistry::instance().find(c.technique);
+    const Mesh mesh = loadObjFile(testing::assetPath(c.asset));
+    const BuiltSurface surface = buildSurface(technique, mesh, technique.variants().front());
+    const ref::Scheme scheme = referenceScheme(surface->approximates());
+    const Mesh& control = surface->controlMesh();
+    const AnalyticDisplacement h = analyticDisplacementFor(control);
+    const ref::LimitTessellation target = analyticTargetMesh(control, scheme, kTargetRate, h);
+    const ref::TriangleDistanceField target_field(target.view(), "analytic target");
+    // e_target: the target's interpolation error, M_target / (4 n^2) (baker_test.cpp), and
+    // e_tech: the undisplaced technique's distance to its undisplaced limit.
+    const double m = secondDerivativeBound(control, scheme, h);
+    const double e_target = 1.5 * m / (4.0 * kTargetRate * kTargetRate);
+    const ref::LimitTessellation limit =
+        analyticTargetMesh(control, scheme, kTargetRate, AnalyticDisplacement{h.centre, h.diagonal, 0, 1});
+    const double e_tech =
+        maxDistance(*surface, ref::TriangleDistanceField(limit.view(), "limit")) + e_target;
+    double previous = 0;
+    for (uint32_t resolution : {4u, 8u, 16u}) {
+      BakeSettings settings;
+      settings.resolution = resolution;
+      const BakeResult baked = bakeDisplacement(*surface, target.view(), settings);
+      EXPECT_EQ(baked.rays_missed, 0u);
+      const auto map = std::make_shared<DisplacementMap>(baked.map);
+      const DisplacedPatches displaced(*surface, map, DisplacementSampling::kWatertight, "baked");
+      const double error = maxDistance(displaced, target_field);
+      const double bound =
+          1.5 * (m / (4.0 * resolution * resolution) + 2 * e_tech) + 2 * e_target;
+      std::printf("[displaced oracle] %s %s r %u: max distance to target %.3e, bound %.3e "
+                  "(M %.3g, e_tech %.3e, e_target %.3e, A %.3e)\n",
+                  c.technique, c.asset, resolution, error, bound, m, e_tech, e_target,
+                  h.amplitude);
+      EXPECT_LE(error, bound) << "r " << resolution;
+      if (previous > 0) {
+        EXPECT_LT(error, previous) << "r " << resolution;
+      }
+      previous = error;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tb
