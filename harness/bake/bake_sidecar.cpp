@@ -24,6 +24,9 @@ nlohmann::json bakeSidecar(const BakeProvenance& provenance, const BakeSettings&
           {"variant", provenance.variant},
           {"asset", provenance.asset},
           {"target", provenance.target},
+          {"target_source", provenance.target_rate > 0
+                                ? nlohmann::json{{"kind", "analytic"}, {"rate", provenance.target_rate}}
+                                : nlohmann::json{{"kind", "mesh"}, {"path", provenance.target_path}}},
           {"kind", std::string(kindName(map.kind))},
           {"pixel_type", std::string(pixelTypeName(map.pixel_type))},
           {"layout", std::string(layoutName(map.layout))},

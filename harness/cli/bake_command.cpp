@@ -69,6 +69,8 @@ BakeSettings checkedSettings(const BakeArgs& args) {
   settings.kind = args.kind == "vector" ? DisplacementKind::kVector : DisplacementKind::kScalar;
   settings.resolution = args.resolution;
   settings.layout = DisplacementLayout::kTiles;
+  settings.pixel_type =
+      args.pixel_type == "float" ? DisplacementPixelType::kFloat : DisplacementPixelType::kHalf;
   return settings;
 }
 
@@ -87,6 +89,10 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
   bake->add_flag("--analytic", args.analytic,
                  "the analytic target: the asset's limit surface displaced along its normal by "
                  "a sum of sines of the limit position");
+  bake->add_option("--pixel-type", args.pixel_type,
+                   "half (16-bit, what a game ships) | float (32-bit) texels in the EXR and on the GPU")
+      ->check(CLI::IsMember({"half", "float"}))
+      ->capture_default_str();
   bake->add_option("--kind", args.kind,
                    "scalar (distance along the normal, rays both ways) | vector (closest point "
                    "minus surface point)")
@@ -132,11 +138,13 @@ int runBake(const BakeArgs& args) {
     provenance.target =
         fmt::format("analytic: {}, limit tessellation rate {}", h.describe(), args.target_rate);
     target = analytic->view();
+    provenance.target_rate = args.target_rate;
   } else {
     target_obj = loadObjFile(args.target);
     target_triangles = ref::fanTriangles(target_obj);
     target = {target_obj.positions, target_triangles};
     provenance.target = args.target;
+    provenance.target_path = std::filesystem::absolute(args.target).lexically_normal().string();
   }
   const BakeResult result = bakeDisplacement(*patches, target, settings, provenance.target);
   const double seconds =

@@ -12,6 +12,7 @@
 
 #include "harness/cli/progress_estimate.h"
 #include "harness/cli/html_assets.h"
+#include "harness/suite/displacement_file.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
@@ -152,6 +153,12 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.threads = args.threads;
   selection.repetitions = args.repetitions;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+  for (const std::string& map : args.displacements) {
+    selection.displacements.push_back(loadDisplacementFile(map));
+  }
+  if (args.displacements.empty() && args.assets.empty()) {
+    selection.displacements = bundledDisplacements();
+  }
   if (!args.shard.empty()) selection.shard = parseShard(args.shard);
   selection.suite = parseSuiteMode(args.suite);
   std::vector<std::string> camera_files;

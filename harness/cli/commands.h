@@ -25,6 +25,9 @@ struct RunArgs {
   std::vector<std::string> cameras;  // camera path names or .json files; empty = the suite's
   int repetitions = 1;  // runs of each measure per record; every one timed (timings.json)
   bool pictures = true;  // render pictures/ (harness/pictures/run_pictures.h); --no-pictures
+  // --displacement FILE.exr (repeatable): displaced assets from baked maps. None given: the
+  // bundled maps (assets/displacement) when the run does not narrow the assets.
+  std::vector<std::string> displacements;
 };
 
 struct ReportArgs {

@@ -1,5 +1,6 @@
 // The "cracks" measure: measureCracks over spacings × levels × backends.
 #include <exception>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ constexpr tess::Spacing kCrackSpacings[] = {tess::Spacing::kInteger, tess::Spaci
 // Rows under per-edge levels (edge_pattern_levels.h), keyed levels = "edge_pattern" with
 // level = the pattern's base level; one base keeps the suite short.
 constexpr LevelChoice kEdgePatternBase = {7.0f, "7"};
+// A displaced surface in the default suite (two samplings per map): two spacings and two
+// levels, enough to show naive gaps and watertight sampling's 0; --suite full runs the grid.
+constexpr LevelChoice kDisplacedDefaultLevels[] = {{7.3f, "7.3"}, {16.0f, "16"}};
+constexpr tess::Spacing kDisplacedDefaultSpacings[] = {tess::Spacing::kInteger,
+                                                       tess::Spacing::kFractionalOdd};
 constexpr const char* kEdgePatternKey = "edge_pattern";
 
 // Best case of every gap figure is 0 (watertight); worst_* locate the largest world gap
@@ -91,8 +97,13 @@ class CracksMeasure final : public Measure {
          "(the interior is never compared)",
          "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
          "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
-         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)"},
-        {},
+         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)",
+         "displaced surfaces (rows with displacement and sampling keys): the technique's patches "
+         "moved by a baked map; naive sampling reads each patch's own tile at its own (u, v), "
+         "watertight sampling reads a shared corner or edge from its owner's tile at the "
+         "owner's (u, v) (displacement direction from per-vertex data both sides share); "
+         "summaries leave these rows out, the chart below shows them"},
+        {{"displacement", ""}},
         // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
         {PlotSpec{.title = "Points where two patches differ, per variant (the largest count over "
                            "assets, spacings and levels; no bar: 0, watertight)",
@@ -101,13 +112,26 @@ class CracksMeasure final : public Measure {
                   .y = "points_not_equal",
                   .series = "backend",
                   .facet = "",
-                  .where = {},
+                  .where = {{"displacement", ""}},
+                  .log_y = true,
+                  .reduce = PlotReduce::kMax},
+         PlotSpec{.title = "Displaced surfaces: points where two patches differ, per sampling "
+                           "(largest count over maps, spacings and levels; no bar: watertight)",
+                  .kind = PlotKind::kBar,
+                  .x = "sampling",
+                  .y = "points_not_equal",
+                  .series = "backend",
+                  .facet = "",
+                  .where = {{"displacement", "*"}},
                   .log_y = true,
                   .reduce = PlotReduce::kMax}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface, MeasureNeed::kGpu}, VariantPolicy::kEveryVariant, {}};
+    MeasureRequirements requirements{
+        {MeasureNeed::kSurface, MeasureNeed::kGpu}, VariantPolicy::kEveryVariant, {}};
+    requirements.displaced_surfaces = true;
+    return requirements;
   }
 
   MeasureResult run(const MeasureInput& input) const override {
@@ -125,8 +149,15 @@ class CracksMeasure final : public Measure {
     // Both backends of one spacing and level in turn: the session evaluates on the CPU
     // once for the two.
     CrackSession session(patches);
-    for (tess::Spacing spacing : kCrackSpacings) {
-      for (const LevelChoice& level : kCrackLevels) {
+    const bool short_grid = input.displacement != nullptr && input.suite == SuiteMode::kDefault;
+    const std::span<const tess::Spacing> spacings =
+        short_grid ? std::span<const tess::Spacing>(kDisplacedDefaultSpacings)
+                   : std::span<const tess::Spacing>(kCrackSpacings);
+    const std::span<const LevelChoice> crack_levels =
+        short_grid ? std::span<const LevelChoice>(kDisplacedDefaultLevels)
+                   : std::span<const LevelChoice>(kCrackLevels);
+    for (tess::Spacing spacing : spacings) {
+      for (const LevelChoice& level : crack_levels) {
         for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
           result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, gpu_reason, [&] {
             return session.measure(spacing, level.level, backend, input.gpu);
@@ -135,7 +166,7 @@ class CracksMeasure final : public Measure {
       }
     }
     // The per-edge pattern rows come last so the uniform rows keep their places.
-    for (tess::Spacing spacing : kCrackSpacings) {
+    for (tess::Spacing spacing : spacings) {
       const std::vector<tess::Levels> levels =
           edgePatternLevels(patches, spacing, kEdgePatternBase.level);
       for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {

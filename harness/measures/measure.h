@@ -14,6 +14,7 @@
 #include "core/mesh/mesh.h"
 #include "core/view/camera_path_views.h"
 #include "core/view/view.h"
+#include "harness/measures/displaced_input.h"
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
 
@@ -88,6 +89,10 @@ struct MeasureRequirements {
   // Narrows the techniques further when the needs alone do not say it (published_figures needs
   // the technique's own probe shader); empty: every technique whose instances meet the needs.
   std::function<bool(const Technique&)> technique_filter;
+  // The measure also runs on displaced surfaces (`run --displacement`, bundled maps): the
+  // suite then hands it a DisplacedPatches and MeasureInput::displacement, and adds the row
+  // keys `displacement` and `sampling`. Other measures never see a displaced surface.
+  bool displaced_surfaces = false;
   bool has(MeasureNeed need) const {
     return std::find(needs.begin(), needs.end(), need) != needs.end();
   }
@@ -114,6 +119,8 @@ struct MeasureInput {
   const CameraPath* camera_path = nullptr;
   // The run's suite: a measure picks its default or full grid by it.
   SuiteMode suite = SuiteMode::kDefault;
+  // Non-null when `patches` is displaced by a map (measures with displaced_surfaces only).
+  const DisplacementRun* displacement = nullptr;
 };
 
 class Measure {

@@ -56,6 +56,16 @@ MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
   m.plain_triangles = triangles;
   m.plain_bytes = m.plain_vertices * kRenderVertexBytes + m.plain_triangles * 3 * kIndexBytes;
   m.technique = patches.footprint();
+  if (m.technique.displacement_map_bytes > 0) {
+    // A displaced surface carries its real map (already in technique.total()): its GPU bytes
+    // replace the one-texel-per-vertex assumption, for the scalar and the vector figures.
+    m.displacement_bytes = m.vector_displacement_bytes = m.technique.displacement_map_bytes;
+    m.technique_with_displacement_bytes = m.technique_with_vector_displacement_bytes =
+        m.technique.total();
+    m.plain_over_technique = m.plain_over_technique_vector =
+        double(m.plain_bytes) / double(m.technique_with_displacement_bytes);
+    return m;
+  }
   m.displacement_bytes = texels * kDisplacementTexelBytes;
   m.technique_with_displacement_bytes = m.technique.total() + m.displacement_bytes;
   m.plain_over_technique = double(m.plain_bytes) / double(m.technique_with_displacement_bytes);

@@ -16,7 +16,10 @@ namespace {
 struct MemoryRowFigures {
   MemoryFigures memory;
   uint64_t patches = 0;
-  CompressedSize compressed;
+  // The compressed plain mesh; none on displaced surfaces (the baseline is the undisplaced
+  // record's, and building it again per sampling would double the measure's cost).
+  std::optional<CompressedSize> compressed;
+  std::optional<uint64_t> map_file_bytes = {};  // displaced surfaces: the EXR on disk
 };
 
 // The plain and compressed meshes are the baselines (context); the technique's own bytes
@@ -56,14 +59,31 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
       {"plain_over_technique_vector", Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique_vector)},
       {"compressed_vertex_bytes", Unit::kBytes, D::kNone,
-       [](const R& r) { return double(r.compressed.vertex_bytes); }},
+       [](const R& r) -> std::optional<double> {
+         if (!r.compressed) return std::nullopt;
+         return double(r.compressed->vertex_bytes);
+       }},
       {"compressed_index_bytes", Unit::kBytes, D::kNone,
-       [](const R& r) { return double(r.compressed.index_bytes); }},
+       [](const R& r) -> std::optional<double> {
+         if (!r.compressed) return std::nullopt;
+         return double(r.compressed->index_bytes);
+       }},
       {"compressed_bytes", Unit::kBytes, D::kNone,
-       [](const R& r) { return double(r.compressed.bytes()); }},
+       [](const R& r) -> std::optional<double> {
+         if (!r.compressed) return std::nullopt;
+         return double(r.compressed->bytes());
+       }},
       {"compressed_over_technique", Unit::kRatio, D::kHigherIsBetter,
-       [](const R& r) {
-         return double(r.compressed.bytes()) / double(r.memory.technique_with_displacement_bytes);
+       [](const R& r) -> std::optional<double> {
+         if (!r.compressed) return std::nullopt;
+         return double(r.compressed->bytes()) /
+                double(r.memory.technique_with_displacement_bytes);
+       }},
+      // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
+      {"map_file_bytes", Unit::kBytes, D::kLowerIsBetter,
+       [](const R& r) -> std::optional<double> {
+         if (!r.map_file_bytes) return std::nullopt;
+         return double(*r.map_file_bytes);
        }},
   };
   return kTable;
@@ -98,8 +118,14 @@ class MemoryMeasure final : public Measure {
          "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
          "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
          "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
-         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"},
-        {},
+         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)",
+         "displaced surfaces (rows with a displacement key): displacement_bytes and the vector_* "
+         "figures are the real map's GPU-resident bytes (R16/R32 float for a scalar map, RGBA for "
+         "a vector map, no mips) instead of the per-vertex assumption, patch_data_bytes includes "
+         "the 33 words per patch of owners and corner directions the displaced TES reads, and "
+         "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record has it); "
+         "summaries leave these rows out"},
+        {{"displacement", ""}},
         // One line per technique/variant: how the saving grows with the level (median over
         // the assets; levels double, so a log x spaces them evenly).
         {PlotSpec{.title = "Plain mesh over technique bytes against tessellation level",
@@ -108,21 +134,28 @@ class MemoryMeasure final : public Measure {
                   .y = "plain_over_technique",
                   .series = "variant",
                   .facet = "",
-                  .where = {},
+                  .where = {{"displacement", ""}},
                   .log_x = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
+    MeasureRequirements requirements{
+        {MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
+    requirements.displaced_surfaces = true;
+    return requirements;
   }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
     for (uint32_t level : kMemoryLevels) {
-      const MemoryRowFigures figures{measureMemory(*input.patches, level),
-                                     input.patches->patchCount(),
-                                     compressedSize(*input.patches, level)};
+      MemoryRowFigures figures{measureMemory(*input.patches, level),
+                               input.patches->patchCount(), std::nullopt};
+      if (input.displacement) {
+        figures.map_file_bytes = input.displacement->input->file_bytes;
+      } else {
+        figures.compressed = compressedSize(*input.patches, level);
+      }
       MetricRow row;
       row.keys["level"] = std::to_string(level);
       row.metrics = memoryTable().metrics(figures);

@@ -71,6 +71,8 @@ std::vector<PictureJob> picturesOf(const Results& results) {
     const std::vector<VariantInfo> variants = technique->variants();
     if (variants.empty() || record.variant != variants.front().name) continue;
     if (!errorMeasured(record)) continue;
+    // A displaced asset's pictures would need its map; the undisplaced asset has its own.
+    if (record.parameters.count("displacement") > 0) continue;
     if (!seen.insert({record.technique, record.asset}).second) continue;
     jobs.push_back({technique, &record});
   }

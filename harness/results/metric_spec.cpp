@@ -130,6 +130,10 @@ bool globMatches(std::string_view pattern, std::string_view text) {
 bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>& keys) {
   for (const auto& [key, pattern] : scope) {
     const auto it = keys.find(key);
+    if (pattern.empty()) {
+      if (it != keys.end()) return false;  // "": the row must not have the key
+      continue;
+    }
     if (it == keys.end() || !globMatches(pattern, it->second)) return false;
   }
   return true;

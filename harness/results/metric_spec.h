@@ -55,8 +55,9 @@ const std::vector<Unit>& allUnits();
 
 // Which rows a measure's summary (report.md's matrices and summary tables, `table`,
 // `advise`) aggregates: the ok rows whose keys match every entry. A value matches exactly,
-// or as a glob when it holds '*' ("*.tese": every key value ending in ".tese"). Empty:
-// every ok row. Used where rows of one record are not alike (instructions: TCS and TES
+// or as a glob when it holds '*' ("*.tese": every key value ending in ".tese"); an empty
+// value matches only rows without the key ({"displacement": ""}: undisplaced rows). Empty
+// scope: every ok row. Used where rows of one record are not alike (instructions: TCS and TES
 // stages, SPIR-V and hand counts), so a median over all of them would mean nothing.
 using RowScope = std::map<std::string, std::string>;
 bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>& keys);

@@ -14,7 +14,9 @@
 
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/suite/displacement_file.h"
 #include "harness/suite/measure_rule.h"
+#include "techniques/common/displaced_patches.h"
 #include "techniques/registry.h"
 
 namespace tb {
@@ -46,6 +48,8 @@ struct SuiteInput {
   std::string name;  // the record's asset column
   const Mesh* mesh = nullptr;
   const Scenario* scenario = nullptr;
+  // A displaced asset: `mesh` displaced by this map (for its technique and variant only).
+  const DisplacedInput* displacement = nullptr;
   bool is_asset() const { return scenario == nullptr; }
 };
 
@@ -61,6 +65,13 @@ struct SuiteRun {
   std::string gpu_unavailable;        // why, when gpu is null
   ShardSpec shard;
   int repetitions = 1;  // runs of each measure on each record
+  // Each displacement map's target, rebuilt once (by the first record that needs it).
+  struct TargetSlot {
+    std::once_flag once;
+    std::shared_ptr<const DisplacementTarget> target;
+    std::string unavailable;
+  };
+  std::map<const DisplacedInput*, std::unique_ptr<TargetSlot>> targets;
 };
 
 // What one technique × variant × input step produced; steps run in parallel and their
@@ -242,9 +253,13 @@ StepOutcome failedBuild(const SuiteRun& run, const Technique& technique,
 // Builds the technique on one input and variant, and runs every measure the rule admits
 // into one record. `default_footprint` is the default variant's patch data on this input:
 // set by the default variant's step, read by the others.
+StepOutcome runDisplacedStep(const SuiteRun& run, const Technique& technique,
+                             const VariantInfo& variant, const SuiteInput& input);
+
 StepOutcome runStep(const SuiteRun& run, const Technique& technique, const VariantInfo& variant,
                     bool is_default, const SuiteInput& input,
                     std::optional<DataFootprint>* default_footprint) {
+  if (input.displacement) return runDisplacedStep(run, technique, variant, input);
   StepOutcome outcome;
   // Measures that may run, before building: no instance is built that no measure would use.
   const bool full = run.suite == SuiteMode::kFull;
@@ -323,11 +338,101 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   return outcome;
 }
 
-// The inputs a technique runs on: the assets for a surface technique, the scenarios for a
-// simulation.
+// The map's target for `patches` (undisplaced), rebuilt once per map; null with the reason
+// when it cannot be.
+std::pair<std::shared_ptr<const DisplacementTarget>, std::string> targetOf(
+    const SuiteRun& run, const DisplacedInput& input, const SurfacePatches& patches) {
+  SuiteRun::TargetSlot& slot = *run.targets.at(&input);
+  std::call_once(slot.once, [&] {
+    try {
+      slot.target = rebuildTarget(input, patches);
+    } catch (const std::exception& error) {
+      slot.unavailable = error.what();
+    }
+  });
+  return {slot.target, slot.unavailable};
+}
+
+// A displaced asset (docs/ARCHITECTURE.md, "Displaced surfaces"): the map's own technique
+// and variant only, each measure that runs on displaced surfaces once per sampling (naive,
+// watertight), the rows keyed `displacement` (the map's file name) and `sampling`.
+StepOutcome runDisplacedStep(const SuiteRun& run, const Technique& technique,
+                             const VariantInfo& variant, const SuiteInput& input) {
+  StepOutcome outcome;
+  const DisplacedInput& map = *input.displacement;
+  if (variant.name != map.variant) return outcome;
+  std::vector<const Measure*> runnable;
+  for (const Measure* measure : run.measures) {
+    if (measure->requirements().displaced_surfaces &&
+        ownsMeasure(run.shard, technique.info().id, variant.name, input.name, measure->info().id)) {
+      runnable.push_back(measure);
+    }
+  }
+  if (runnable.empty()) return outcome;
+  if (std::string reason = technique.checkSupport(*input.mesh); !reason.empty()) {
+    throw InputError(map.path, "", "baked for " + map.technique + " on " + map.asset +
+                                       ", which refuses the asset: " + reason);
+  }
+  const TechniqueInput technique_input{input.mesh, nullptr};
+  const std::unique_ptr<TechniqueInstance> undisplaced = technique.build(technique_input, variant);
+  if (undisplaced->surface() == nullptr) {
+    throw InputError(map.path, "", map.technique + " has no surface to displace");
+  }
+  const auto [target, target_unavailable] = targetOf(run, map, *undisplaced->surface());
+  Record& record = outcome.record.emplace();
+  record.technique = technique.info().id;
+  record.variant = variant.name;
+  record.asset = input.name;
+  formatParameters(variant, &record.parameters);
+  record.parameters["displacement"] = map.name;
+  std::vector<MeasureResult> merged(runnable.size());
+  std::vector<MeasureTiming> timings(runnable.size());
+  for (size_t m = 0; m < runnable.size(); ++m) {
+    merged[m].measure = runnable[m]->info().id;
+    timings[m] = {record.technique, record.variant, record.asset, merged[m].measure, 0, {0.0}};
+  }
+  for (DisplacementSampling sampling :
+       {DisplacementSampling::kNaive, DisplacementSampling::kWatertight}) {
+    // The instance wraps the technique's own patches; build them again for each sampling so
+    // the two are independent.
+    DisplacedInstance instance(technique.build(technique_input, variant), map.map, sampling,
+                                     map.name);
+    const DisplacementRun displacement{&map, sampling, target, target_unavailable};
+    if (record.warnings.empty()) record.warnings = instance.surface()->warnings();
+    MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
+                               instance.surface(), run.gpu.get(), run.gpu_unavailable};
+    measure_input.suite = run.suite;
+    measure_input.displacement = &displacement;
+    for (size_t m = 0; m < runnable.size(); ++m) {
+      const auto start = std::chrono::steady_clock::now();
+      MeasureResult result = runMeasureOnce(run, *runnable[m], measure_input, technique_input,
+                                            &instance);
+      timings[m].samples[0] += secondsSince(start);
+      mergeRun(std::move(result), {{"displacement", map.name}, {"sampling", samplingName(sampling)}},
+               &merged[m]);
+    }
+  }
+  record.measures = std::move(merged);
+  for (MeasureTiming& timing : timings) {
+    timing.seconds = timing.samples[0];
+    outcome.timings.push_back(std::move(timing));
+  }
+  return outcome;
+}
+
+// The record's asset name of a displaced asset: "<asset>+<map file stem>".
+std::string displacedAssetName(const DisplacedInput& input) {
+  const std::string stem = input.name.substr(0, input.name.rfind('.'));
+  return input.asset + "+" + stem;
+}
+
+// The inputs a technique runs on: the assets for a surface technique (then the displaced
+// assets baked for it), the scenarios for a simulation.
 std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<AssetRef>& refs,
                                   const std::vector<Mesh>& meshes,
-                                  const std::vector<Scenario>& scenarios) {
+                                  const std::vector<Scenario>& scenarios,
+                                  const std::vector<DisplacedInput>& displacements,
+                                  const std::vector<const Mesh*>& displacement_meshes) {
   static const Mesh kNoMesh;
   std::vector<SuiteInput> inputs;
   if (technique.info().family == TechniqueFamily::kSimulation) {
@@ -335,6 +440,11 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
       inputs.push_back({scenario.name, &kNoMesh, &scenario});
   } else {
     for (size_t a = 0; a < refs.size(); ++a) inputs.push_back({refs[a].name, &meshes[a], nullptr});
+    for (size_t d = 0; d < displacements.size(); ++d) {
+      if (displacements[d].technique != technique.info().id) continue;
+      inputs.push_back({displacedAssetName(displacements[d]), displacement_meshes[d], nullptr,
+                        &displacements[d]});
+    }
   }
   return inputs;
 }
@@ -401,6 +511,32 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (refs.empty()) refs = bundledAssets();
   openDevice(selection.device_name, &run);
   const std::vector<Mesh> meshes = loadAssets(refs, results);
+  // Displaced assets: the asset each map was baked on (loaded again when the run does not
+  // measure it undisplaced), listed after the assets.
+  std::vector<Mesh> extra_meshes;
+  extra_meshes.reserve(selection.displacements.size());
+  std::vector<const Mesh*> displacement_meshes;
+  for (const DisplacedInput& input : selection.displacements) {
+    const auto same = std::find_if(refs.begin(), refs.end(),
+                                   [&](const AssetRef& ref) { return ref.name == input.asset; });
+    const Mesh* mesh = nullptr;
+    if (same != refs.end()) {
+      mesh = &meshes[size_t(same - refs.begin())];
+    } else {
+      const AssetRef ref = resolveAsset(input.asset);
+      extra_meshes.push_back(loadObjFile(ref.path));
+      extra_meshes.back().source = ref.shownPath();
+      mesh = &extra_meshes.back();
+    }
+    displacement_meshes.push_back(mesh);
+    results->assets.push_back({displacedAssetName(input), input.path, mesh->faceCount(),
+                               mesh->positions.size(),
+                               describeFaceKinds(*mesh) + ", displaced by " + input.name + " (" +
+                                   std::string(kindName(input.map->kind)) + ", " +
+                                   std::to_string(input.resolution) + " texels a patch side)",
+                               mesh->normals_computed});
+    run.targets.emplace(&input, std::make_unique<SuiteRun::TargetSlot>());
+  }
 
   // One group per technique × input: its variants run in order (default first), groups in
   // parallel. Outcomes go to slots in the serial order technique, variant, input.
@@ -414,7 +550,8 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   size_t total = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
-    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios);
+    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios,
+                                                     selection.displacements, displacement_meshes);
     for (size_t i = 0; i < inputs.size(); ++i) {
       groups.push_back({technique, variants, inputs[i], i, inputs.size(), total});
     }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/measures/displaced_input.h"
 #include "harness/measures/measure.h"
 #include "harness/results/results_model.h"
 #include "harness/suite/asset_catalog.h"
@@ -23,6 +24,10 @@ struct SuiteSelection {
   // The inputs of simulation techniques (one record per scenario, in place of the assets);
   // none bundled yet, so simulation techniques run on none by default.
   std::vector<Scenario> scenarios;
+  // Displacement maps (harness/suite/displacement_file.h): each adds a displaced asset, its
+  // sidecar's asset displaced by the map, run by its technique and variant with the measures
+  // that run on displaced surfaces (cracks, error, memory).
+  std::vector<DisplacedInput> displacements;
   // The paths view-dependent measures run along, around each asset's bounding box, for
   // kView and kCameraPath measures alike (`run --camera`). Empty: kView measures get the
   // fixed test orbit (testOrbitPath), kCameraPath measures suiteCameraPaths(suite).
