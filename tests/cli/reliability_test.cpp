@@ -95,6 +95,19 @@ std::vector<BadInput> badInputs() {
     text.replace(start, text.find_first_of(",\n", start) - start, value);
     return text;
   };
+  // A bundled map and its sidecar, and edited copies of the sidecar.
+  const std::string displace = run + "--measure memory --technique acc --displacement ";
+  const std::string exr = readFile(testing::assetPath("displacement/acc_catmark_torus.exr"));
+  const std::string sidecar =
+      readFile(testing::assetPath("displacement/acc_catmark_torus.exr.json"));
+  auto sidecarWith = [&](const std::string& from, const std::string& to) {
+    std::string text = sidecar;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  const std::string vector_sidecar = sidecarWith("\"kind\": \"scalar\"", "\"kind\": \"vector\"");
+  const std::string other_asset =
+      sidecarWith("opensubdiv/catmark_torus", "opensubdiv/catmark_cube");
   return {
       // Files: the classes of docs/ARCHITECTURE.md section 8, and the reliability list.
       {"obj missing", {}, run + "--asset {dir}/missing.obj", {"{dir}/missing.obj", "no such file"}},
@@ -144,6 +157,18 @@ std::vector<BadInput> badInputs() {
       {"camera field of the wrong type", {{"frames.json", orbitWith("frames", "\"24\"")}},
        camera + "{dir}/frames.json", {"{dir}/frames.json", "frames"}},
       // Names and options.
+      // Displacement maps (`run --displacement`): the EXR and its sidecar.
+      {"exr missing", {}, displace + "{dir}/missing.exr", {"{dir}/missing.exr", "no such file"}},
+      {"exr truncated", {{"cut.exr", exr.substr(0, exr.size() / 2)}, {"cut.exr.json", sidecar}},
+       displace + "{dir}/cut.exr", {"{dir}/cut.exr"}},
+      {"exr not an EXR", {{"garbage.exr", binaryGarbage(2048)}, {"garbage.exr.json", sidecar}},
+       displace + "{dir}/garbage.exr", {"{dir}/garbage.exr"}},
+      {"exr without its sidecar", {{"alone.exr", exr}}, displace + "{dir}/alone.exr",
+       {"{dir}/alone.exr.json", "missing bake sidecar"}},
+      {"exr sidecar of another kind", {{"kind.exr", exr}, {"kind.exr.json", vector_sidecar}},
+       displace + "{dir}/kind.exr", {"{dir}/kind.exr.json", "kind"}},
+      {"exr baked for another asset", {{"other.exr", exr}, {"other.exr.json", other_asset}},
+       displace + "{dir}/other.exr", {"other.exr", "tiles but the surface has"}},
       {"unknown technique", {}, run + "--technique nope", {"--technique", "nope"}},
       {"unknown measure", {}, run + "--measure nope", {"--measure", "nope"}},
       {"unknown asset", {}, run + "--asset no_such_asset", {"no_such_asset"}},
