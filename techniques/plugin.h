@@ -23,13 +23,15 @@
 
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
+// 8: DataFootprint gained displacement_map_bytes, GpuPatchProgram a displacement map
+//    (GpuDisplacement), Scenario its technique, sections and mesh path.
 // 7: handshake first (tessbench_plugin_abi, then tessbench_register_plugin(PluginHost*));
 //    plug-ins ship shaders through PluginHost::addShader.
 // 6: SurfacePatches gained makeBatchPattern() and evaluateBatch() (batched evaluation,
 // techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
 // simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 7;
+inline constexpr int kTessbenchPluginAbi = 8;
 
 namespace tb {
 
