@@ -96,6 +96,31 @@ DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
     for (uint32_t c = 0; c < channels; ++c) squared += double(map_->texels[i + c]) * map_->texels[i + c];
     max_displacement_ = std::max(max_displacement_, std::sqrt(squared));
   }
+  // Watertight sampling reads corners and edges from other tiles, so a patch's bound takes
+  // the largest texel of its own tile and of every tile it reads.
+  std::vector<double> own_max(map_->tiles.tile_count, 0);
+  for (uint32_t tile = 0; tile < map_->tiles.tile_count; ++tile) {
+    const uint32_t x0 = (tile % geometry_.tiles_per_row) * geometry_.tile_size;
+    const uint32_t y0 = (tile / geometry_.tiles_per_row) * geometry_.tile_size;
+    for (uint32_t y = 0; y < geometry_.tile_size; ++y) {
+      for (uint32_t x = 0; x < geometry_.tile_size; ++x) {
+        for (uint32_t c = 0; c < channels; ++c) {
+          own_max[tile] = std::max(own_max[tile], double(std::abs(map_->at(x0 + x, y0 + y, c))));
+        }
+      }
+    }
+  }
+  tile_max_.resize(inner.patchCount());
+  for (size_t p = 0; p < inner.patchCount(); ++p) {
+    double largest = own_max[p];
+    for (const BoundaryOwners::Corner& corner : frame_.owners(p).corners) {
+      largest = std::max(largest, own_max[corner.patch]);
+    }
+    for (const BoundaryOwners::Edge& edge : frame_.owners(p).edges) {
+      largest = std::max(largest, own_max[edge.patch]);
+    }
+    tile_max_[p] = largest;
+  }
   warnings_.push_back("displaced by " + map_name + " (" + std::string(kindName(map_->kind)) + ", " +
                       samplingName(sampling) + " sampling)");
 }
@@ -161,6 +186,20 @@ SurfacePointF DisplacedPatches::evaluateFloat(size_t patch, const tess::DomainPo
     point.position = point.position + Vec3f{h[0], h[1], h[2]};
   }
   return point;
+}
+
+std::optional<PatchCullBounds> DisplacedPatches::cullBounds(size_t patch) const {
+  std::optional<PatchCullBounds> inner = inner_.cullBounds(patch);
+  if (!inner) return std::nullopt;
+  const double r = tile_max_[patch];
+  PatchCullBounds grown;
+  for (const Vec3d& point : inner->hull) {
+    for (int corner = 0; corner < 8; ++corner) {
+      grown.hull.push_back(point + Vec3d{corner & 1 ? r : -r, corner & 2 ? r : -r,
+                                         corner & 4 ? r : -r});
+    }
+  }
+  return grown;
 }
 
 DataFootprint DisplacedPatches::footprint() const {

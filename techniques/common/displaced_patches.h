@@ -66,9 +66,17 @@ class DisplacedPatches final : public SurfacePatches {
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override;
   // The technique's programs with "#displaced" evaluation shaders and the map attached.
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;
-  // Counts and cull bounds of the undisplaced technique would understate the work and the
-  // extent, so a displaced surface gives none.
+  // The undisplaced patch's hull grown by the largest displacement its tile holds (each hull
+  // point replaced by the 8 corners of a cube of that half-size around it: the Minkowski sum
+  // with the cube contains every displaced point, since |d h| <= the tile's largest |texel|
+  // per axis); no normal generators (displacement turns the normals anywhere). The culling
+  // measure's per-patch bound input. nullopt where the technique gives no bounds.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override;
+  // The technique's bytes plus the map's GPU-resident bytes and the owner words.
   DataFootprint footprint() const override;
+  // The largest |texel| component in patch `patch`'s tile (world units): a bilinear blend
+  // of the tile's texels never exceeds it.
+  double tileMaxDisplacement(size_t patch) const { return tile_max_[patch]; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
   const DisplacementMap& map() const { return *map_; }
@@ -85,6 +93,7 @@ class DisplacedPatches final : public SurfacePatches {
   DisplacementFrame frame_;
   TileGeometry geometry_;
   double max_displacement_ = 0;
+  std::vector<double> tile_max_;  // per patch
   std::vector<std::string> warnings_;
 };
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
@@ -138,6 +139,46 @@ TEST(DisplacedPatches, LavapipeCaptureEqualsTheTwinAndStaysWatertight) {
             EXPECT_EQ(f.points_not_equal, 0u) << label;
           } else {
             EXPECT_GT(f.points_not_equal, 0u) << label;
+          }
+        }
+      }
+    }
+  }
+}
+
+// The cull bound (the culling measure's per-patch input): every displaced point of a patch
+// lies in the convex hull of its grown bound; checked on the hull's bounding box, which the
+// hull's cube corners span exactly, and the bound must not be loose by more than 2 r.
+TEST(DisplacedPatches, CullBoundsContainEveryDisplacedPoint) {
+  for (const Case& c : kCases) {
+    const BuiltSurface surface = build(c);
+    const double amplitude = 0.05 * diagonalOf(surface->controlMesh());
+    const auto map = randomMap(surface->patchCount(), 6, amplitude, DisplacementKind::kVector,
+                               false, 3);
+    const DisplacedPatches displaced(*surface, map, DisplacementSampling::kWatertight, "random");
+    for (size_t p = 0; p < displaced.patchCount(); ++p) {
+      const std::optional<PatchCullBounds> bounds = displaced.cullBounds(p);
+      if (!surface->cullBounds(p)) {
+        EXPECT_FALSE(bounds);
+        continue;
+      }
+      ASSERT_TRUE(bounds);
+      EXPECT_TRUE(bounds->normal_generators.empty());
+      Vec3d lo = bounds->hull.front(), hi = lo;
+      for (const Vec3d& q : bounds->hull) {
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+      }
+      for (int i = 0; i <= 8; ++i) {
+        for (int j = 0; j <= 8; ++j) {
+          DomainCoord coord{i / 8.0, j / 8.0, 0};
+          if (displaced.patchDomain(p) == PatchDomain::kTriangle) {
+            if (i + j > 8) continue;
+            coord[2] = 1 - coord[0] - coord[1];
+          }
+          const Vec3d q = displaced.evaluate(p, coord).position;
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(q[k], lo[k] - 1e-12) << c.technique << " patch " << p;
+            EXPECT_LE(q[k], hi[k] + 1e-12) << c.technique << " patch " << p;
           }
         }
       }
