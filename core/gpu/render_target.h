@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/gpu/buffer.h"
+#include "core/gpu/device_image.h"
 #include "core/gpu/pipeline_util.h"
 #include "core/gpu/vk_handle.h"
 
@@ -18,11 +19,7 @@ namespace tb::gpu {
 
 class Context;
 
-struct AttachmentImage {
-  VkMemoryOwner memory;  // first, so it is freed after the image and view
-  VkImageOwner image;
-  VkImageViewOwner view;
-};
+using AttachmentImage = DeviceImage;
 
 class RenderTarget {
  public:

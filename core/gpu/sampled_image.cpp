@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/gpu/context.h"
+#include "core/gpu/device_image.h"
 #include "core/gpu/gpu_error.h"
 
 namespace tb::gpu {
@@ -28,20 +29,6 @@ uint32_t texelBytes(VkFormat format) {
   }
 }
 
-VkImageMemoryBarrier layoutBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
-                                   VkAccessFlags src, VkAccessFlags dst) {
-  auto barrier = vkStruct<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
-  barrier.srcAccessMask = src;
-  barrier.dstAccessMask = dst;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  return barrier;
-}
-
 }  // namespace
 
 SampledImage::SampledImage(Context& context, VkFormat format, uint32_t width, uint32_t height,
@@ -58,37 +45,17 @@ SampledImage::SampledImage(Context& context, VkFormat format, uint32_t width, ui
   if ((properties.optimalTilingFeatures & kNeeded) != kNeeded) {
     throw GpuError("the device cannot sample image format " + std::to_string(format));
   }
+  image_ = createDeviceImage(context, width, height, format,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                             VK_IMAGE_ASPECT_COLOR_BIT);
   const VkDevice device = context.device();
-  auto info = vkStruct<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = format;
-  info.extent = {width, height, 1};
-  info.mipLevels = 1;
-  info.arrayLayers = 1;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImage image = VK_NULL_HANDLE;
-  vkCheck(vkCreateImage(device, &info, nullptr, &image), "vkCreateImage (sampled)");
-  image_ = VkImageOwner(device, image);
-  VkMemoryRequirements requirements;
-  vkGetImageMemoryRequirements(device, image, &requirements);
-  auto alloc = vkStruct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex =
-      context.memoryType(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  vkCheck(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory (sampled image)");
-  memory_ = VkMemoryOwner(device, memory);
-  vkCheck(vkBindImageMemory(device, image, memory, 0), "vkBindImageMemory (sampled image)");
-
+  const VkImage image = image_.image.get();
   Buffer staging(context, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   staging.write(texels.data(), texels.size());
   context.submitAndWait([&](VkCommandBuffer cmd) {
     VkImageMemoryBarrier to_transfer =
-        layoutBarrier(image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                      VK_ACCESS_TRANSFER_WRITE_BIT);
+        imageBarrier(image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                          0, nullptr, 0, nullptr, 1, &to_transfer);
     VkBufferImageCopy copy{};
@@ -96,22 +63,13 @@ SampledImage::SampledImage(Context& context, VkFormat format, uint32_t width, ui
     copy.imageExtent = {width, height, 1};
     vkCmdCopyBufferToImage(cmd, staging.handle(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                            &copy);
-    VkImageMemoryBarrier to_read = layoutBarrier(
-        image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    VkImageMemoryBarrier to_read = imageBarrier(
+        image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
         VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT, 0, 0, nullptr, 0,
                          nullptr, 1, &to_read);
   });
-
-  auto view_info = vkStruct<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
-  view_info.image = image;
-  view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view_info.format = format;
-  view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  VkImageView view = VK_NULL_HANDLE;
-  vkCheck(vkCreateImageView(device, &view_info, nullptr, &view), "vkCreateImageView (sampled)");
-  view_ = VkImageViewOwner(device, view);
 
   auto sampler_info = vkStruct<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
   sampler_info.magFilter = VK_FILTER_NEAREST;

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "core/gpu/buffer.h"
+#include "core/gpu/device_image.h"
 #include "core/gpu/vk_handle.h"
 
 namespace tb::gpu {
@@ -28,13 +29,11 @@ class SampledImage {
   // byte count does not match.
   SampledImage(Context& context, VkFormat format, uint32_t width, uint32_t height,
                std::span<const std::byte> texels);
-  VkImageView view() const { return view_.get(); }
+  VkImageView view() const { return image_.view.get(); }
   VkSampler sampler() const { return sampler_.get(); }
 
  private:
-  VkMemoryOwner memory_;  // declared first: destroyed after the image
-  VkImageOwner image_;
-  VkImageViewOwner view_;
+  DeviceImage image_;
   VkSamplerOwner sampler_;
 };
 

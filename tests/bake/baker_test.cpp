@@ -20,6 +20,7 @@
 #include "harness/measures/error.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
+#include "tests/bake/bake_test_support.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -41,37 +42,6 @@ Fixture build(const std::string& technique_id, const std::string& asset) {
 
 ref::Scheme schemeOf(const SurfacePatches& patches) {
   return referenceScheme(patches.approximates());
-}
-
-// M: the largest second directional derivative |d^2 S_d / dt^2| (unit t in the face's (u, v))
-// of the displaced limit S_d(u, v) = L + h(L) N, bounded at each sample by
-// max(|S_uu|, |S_vv|) + |S_uv| from central differences (step 1e-3: truncation ~1e-6
-// relative, round-off ~1e-10), over a 7 x 7 grid of every face.
-double secondDerivativeBound(const Mesh& mesh, ref::Scheme scheme, const AnalyticDisplacement& h) {
-  const ref::LimitSurface limit(mesh, scheme);
-  auto displaced = [&](size_t face, double u, double v) {
-    const ref::LimitPoint p = limit.evaluate(face, u, v);
-    return p.position + h.height(p.position) * p.normal;
-  };
-  const double d = 1e-3;
-  double bound = 0;
-  for (size_t face = 0; face < limit.faceCount(); ++face) {
-    for (int i = 0; i < 7; ++i) {
-      for (int j = 0; j < 7; ++j) {
-        const double u = 0.05 + 0.15 * i, v = 0.05 + 0.15 * j;
-        const Vec3d c = displaced(face, u, v);
-        const Vec3d uu =
-            (displaced(face, u + d, v) - 2.0 * c + displaced(face, u - d, v)) * (1 / (d * d));
-        const Vec3d vv =
-            (displaced(face, u, v + d) - 2.0 * c + displaced(face, u, v - d)) * (1 / (d * d));
-        const Vec3d uv = (displaced(face, u + d, v + d) - displaced(face, u + d, v - d) -
-                          displaced(face, u - d, v + d) + displaced(face, u - d, v - d)) *
-                         (1 / (4 * d * d));
-        bound = std::max(bound, std::max(length(uu), length(vv)) + length(uv));
-      }
-    }
-  }
-  return bound;
 }
 
 // Max |texel - h(S(u, v))| over the interior texels of every tile.
@@ -103,7 +73,7 @@ TEST(BakerOracle, AccScalarTexelsEqualTheAnalyticHeightWithinTheTessellationBoun
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
   const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
   const ref::Scheme scheme = schemeOf(*f.patches);
-  const double m = secondDerivativeBound(f.patches->controlMesh(), scheme, h);
+  const double m = testing::secondDerivativeBound(f.patches->controlMesh(), scheme, h);
   // Texel centres k / 7 fall on the target's grid vertices (multiples of 1/8), where the
   // interpolant is exact and the check could not fail, only at k = 0 and 7.
   BakeSettings settings;

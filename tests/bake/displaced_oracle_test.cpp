@@ -29,6 +29,7 @@
 #include "reference/triangle_distance_field.h"
 #include "techniques/common/displaced_patches.h"
 #include "techniques/registry.h"
+#include "tests/bake/bake_test_support.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -66,37 +67,6 @@ double maxDistance(const SurfacePatches& patches, const ref::TriangleDistanceFie
   return worst;
 }
 
-// M of baker_test.cpp: max second directional derivative of the displaced limit, 7 x 7 per face.
-double secondDerivativeBound(const Mesh& mesh, ref::Scheme scheme, const AnalyticDisplacement& h) {
-  const ref::LimitSurface limit(mesh, scheme);
-  auto displaced = [&](size_t face, double u, double v) {
-    const ref::LimitPoint p = limit.evaluate(face, u, v);
-    return p.position + h.height(p.position) * p.normal;
-  };
-  const double d = 1e-3;
-  double bound = 0;
-  for (size_t face = 0; face < limit.faceCount(); ++face) {
-    if (!limit.hasLimitSurface(face)) continue;
-    for (int i = 0; i < 7; ++i) {
-      for (int j = 0; j < 7; ++j) {
-        const double u = 0.05 + 0.15 * i, v = 0.05 + 0.15 * j;
-        // A Loop face's domain is the triangle u + v <= 1 (with room for the stencil).
-        if (scheme == ref::Scheme::kLoop && u + v > 0.95) continue;
-        const Vec3d c = displaced(face, u, v);
-        const Vec3d uu =
-            (displaced(face, u + d, v) - 2.0 * c + displaced(face, u - d, v)) * (1 / (d * d));
-        const Vec3d vv =
-            (displaced(face, u, v + d) - 2.0 * c + displaced(face, u, v - d)) * (1 / (d * d));
-        const Vec3d uv = (displaced(face, u + d, v + d) - displaced(face, u + d, v - d) -
-                          displaced(face, u - d, v + d) + displaced(face, u - d, v - d)) *
-                         (1 / (4 * d * d));
-        bound = std::max(bound, std::max(length(uu), length(vv)) + length(uv));
-      }
-    }
-  }
-  return bound;
-}
-
 struct OracleCase {
   const char* technique;
   const char* asset;
@@ -122,7 +92,7 @@ TEST(DisplacedOracle, BakedAnalyticTargetIsReproducedWithinTheTexelBoundAndConve
     const ref::TriangleDistanceField target_field(target.view(), "analytic target");
     // e_target: the target's interpolation error, M_target / (4 n^2) (baker_test.cpp), and
     // e_tech: the undisplaced technique's distance to its undisplaced limit.
-    const double m = secondDerivativeBound(control, scheme, h);
+    const double m = testing::secondDerivativeBound(control, scheme, h);
     const double e_target = 1.5 * m / (4.0 * kTargetRate * kTargetRate);
     const ref::LimitTessellation limit =
         analyticTargetMesh(control, scheme, kTargetRate, AnalyticDisplacement{h.centre, h.diagonal, 0, 1});
