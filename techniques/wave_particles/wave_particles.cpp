@@ -139,6 +139,15 @@ SimulationFootprint WaveParticleSimulation::footprint() const {
                               + table_.theta.size() * 3 * 4           // subdivision table
                               + pending_.size() * sizeof(Particle)    // later emissions
                               + 16;                                   // statistics
+  // The output: the height map (float per node) the splat and filter write.
+  const uint64_t nodes = uint64_t(std::llround(scene_.domain_size_m / scene_.height_field_spacing_m)) + 1;
+  footprint.auxiliary_bytes += nodes * nodes * 4;
+  // The alternative: a leapfrog height-field solver on the same grid, whose current field is
+  // the output: current and previous heights (float) and a wall mask (byte) per node.
+  footprint.alternative_bytes = nodes * nodes * (4 + 4 + 1);
+  footprint.alternative =
+      "a height-field wave-equation grid solver at the output's resolution (" +
+      std::to_string(nodes) + "^2 nodes: current and previous height in float, a wall byte)";
   return footprint;
 }
 
