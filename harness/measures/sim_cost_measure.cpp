@@ -1,7 +1,7 @@
 // The "sim_cost" measure: what a simulation costs to run, per technique, variant and
 // scenario: elements alive over time (rows keyed by time), the CPU run's peak and the
-// buffers it is sized for (path = cpu), dispatches per step and the device run's resident
-// bytes (path = gpu). Times per step are measured but kept out of results.json.
+// buffers it is sized for (part = cpu), dispatches per step and the device run's resident
+// bytes (part = gpu). Times per step are measured but kept out of results.json.
 #include <cstdio>
 #include <string>
 
@@ -60,7 +60,7 @@ class SimCostMeasure final : public Measure {
         {"dispatches_per_step", "peak_elements"},
         {"rows keyed by time: the CPU twin's element count (SimulationState::element_count) at "
          "evenly spaced times, the last at the scenario's end",
-         "path = gpu: the simulation's compute programs run by core/gpu/compute_runner (every "
+         "part = gpu: the simulation's compute programs run by core/gpu/compute_runner (every "
          "pass of every step in one command buffer, no read-back inside the step loop) for " +
              std::to_string(kDefaultGpuSteps) +
              " steps in the default suite and the whole scenario in the full suite",
@@ -94,7 +94,7 @@ class SimCostMeasure final : public Measure {
       result.rows.push_back(std::move(row));
     }
     MetricRow cpu;
-    cpu.keys["path"] = "cpu";
+    cpu.keys["part"] = "cpu";
     cpu.metrics = {metric("peak_elements", double(figures.peak_elements), Unit::kCount),
                    metric("steps", double(figures.steps), Unit::kCount),
                    metric("state_bytes", double(figures.footprint.state_bytes), Unit::kBytes),
@@ -102,11 +102,11 @@ class SimCostMeasure final : public Measure {
     result.rows.push_back(std::move(cpu));
     if (!figures.gpu_steps) {
       result.rows.push_back(
-          unmeasuredRow({{"path", "gpu"}}, MeasureStatus::kSkipped, figures.gpu_skip_reason));
+          unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped, figures.gpu_skip_reason));
       return result;
     }
     MetricRow gpu;
-    gpu.keys["path"] = "gpu";
+    gpu.keys["part"] = "gpu";
     gpu.metrics = {metric("compute_passes", double(figures.compute_passes), Unit::kCount),
                    metric("dispatches_per_step", double(figures.dispatches_per_step), Unit::kCount),
                    metric("gpu_steps", double(*figures.gpu_steps), Unit::kCount),
