@@ -42,7 +42,8 @@ SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu
   if (programs.empty()) {
     figures.gpu_skip_reason = "the simulation has no GPU path";
   } else if (gpu == nullptr) {
-    figures.gpu_skip_reason = gpu_unavailable.empty() ? "no Vulkan device" : gpu_unavailable;
+    figures.gpu_skip_reason = gpu_unavailable.empty() ? std::string("no Vulkan device")
+                                                      : "no Vulkan device (" + gpu_unavailable + ")";
   } else {
     gpu::ComputeRunner runner(*gpu, programs);
     const uint64_t gpu_steps = std::min<uint64_t>(steps, gpu_step_limit);
