@@ -45,8 +45,8 @@ void cpuSteps(benchmark::State& state, const Case& c) {
     state.counters["steps"] = double(steps);
   }
   state.counters["seconds_per_step"] = benchmark::Counter(
-      double(c.scenario.stepCount()), benchmark::Counter::kIsIterationInvariantRate |
-                                          benchmark::Counter::kInvert);
+      double(c.scenario.stepCount()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void gpuSteps(benchmark::State& state, const Case& c) {
@@ -62,14 +62,16 @@ void gpuSteps(benchmark::State& state, const Case& c) {
   for (auto _ : state) {
     tb::gpu::ComputeRunner runner(*context.value(), programs);
     const tb::gpu::ComputeRunTiming timing = runner.run(steps);
-    const double run_s = std::isnan(timing.gpu_ns) ? timing.submit_to_fence_s : timing.gpu_ns * 1e-9;
+    const double run_s =
+        std::isnan(timing.gpu_ns) ? timing.submit_to_fence_s : timing.gpu_ns * 1e-9;
     state.SetIterationTime(run_s);
     seconds += run_s;
   }
   state.counters["seconds_per_step"] = seconds / double(state.iterations()) / double(steps);
   state.counters["dispatches_per_step"] = 0;
   for (const auto& program : programs) {
-    for (const auto& pass : program.passes) state.counters["dispatches_per_step"] += pass.repeats_per_step;
+    for (const auto& pass : program.passes)
+      state.counters["dispatches_per_step"] += pass.repeats_per_step;
   }
 }
 

@@ -57,16 +57,18 @@ TEST(WaveParticlesCpu, FullArrivalAtProbesMatchesTheReferenceWithinTheTolerance)
   ASSERT_FALSE(figures.probes.empty());
   for (const WaveProbeFigures& probe : figures.probes) {
     ASSERT_TRUE(probe.arrivalError().has_value()) << probe.x_m << ", " << probe.y_m;
-    std::printf("probe (%.2f, %.2f) at %.2f m: reference %.3f s, particles %.3f s, error %+.3f s "
-                "(tolerance %.3f s)\n",
-                probe.x_m, probe.y_m, probe.distance_m, *probe.reference_arrival_s,
-                *probe.particle_arrival_s, *probe.arrivalError(), figures.arrival_tolerance_s);
+    std::printf(
+        "probe (%.2f, %.2f) at %.2f m: reference %.3f s, particles %.3f s, error %+.3f s "
+        "(tolerance %.3f s)\n",
+        probe.x_m, probe.y_m, probe.distance_m, *probe.reference_arrival_s,
+        *probe.particle_arrival_s, *probe.arrivalError(), figures.arrival_tolerance_s);
     EXPECT_LE(std::abs(*probe.arrivalError()), figures.arrival_tolerance_s);
   }
   for (const WaveTimeFigures& row : figures.times) {
-    std::printf("t = %.2f s: rms %.4f, max %.4f (of the amplitude), coverage %.3f, %llu particles\n",
-                row.time_s, row.rms_error, row.max_error, row.coverage.value_or(-1),
-                (unsigned long long)row.particles);
+    std::printf(
+        "t = %.2f s: rms %.4f, max %.4f (of the amplitude), coverage %.3f, %llu particles\n",
+        row.time_s, row.rms_error, row.max_error, row.coverage.value_or(-1),
+        (unsigned long long)row.particles);
   }
 }
 
@@ -208,7 +210,8 @@ TEST(WaveParticlesCpu, Lp2ExpiresAtTheLifetimeAndKeepsItsBuffer) {
 
 TEST(WaveParticlesCpu, BadScenarioSectionsAreOneLineInputErrors) {
   Scenario scenario = resolveScenario("wave_point_impulse");
-  scenario.sections["wave_particles"] = R"({"sources": [{"position_m": [9, 0], "amplitude_m": 1}]})";
+  scenario.sections["wave_particles"] =
+      R"({"sources": [{"position_m": [9, 0], "amplitude_m": 1}]})";
   try {
     WaveParticleSimulation simulation(scenario, Variant::kFull);
     FAIL() << "accepted a source outside the domain";
