@@ -15,6 +15,7 @@
 #include "harness/suite/displacement_file.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
+#include "harness/suite/scenario_file.h"
 #include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
@@ -128,6 +129,15 @@ int runList(const ListArgs& args) {
       items.push_back({{"name", asset.name}, {"path", asset.path}});
       if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.path);
     }
+  } else if (args.what == "scenarios") {
+    for (const Scenario& scenario : bundledScenarios()) {
+      items.push_back({{"name", scenario.name},
+                       {"technique", scenario.technique},
+                       {"path", scenario.path},
+                       {"time_step_s", scenario.time_step_s},
+                       {"duration_s", scenario.duration_s}});
+      if (!args.json) fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
+    }
   } else if (args.what == "measures") {
     for (const Measure* m : MeasureRegistry::instance().all()) {
       const MeasureInfo& info = m->info();
@@ -139,7 +149,7 @@ int runList(const ListArgs& args) {
       if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
     }
   } else {
-    throw InputError("list", args.what, "expected techniques, assets or measures");
+    throw InputError("list", args.what, "expected techniques, assets, scenarios or measures");
   }
   if (args.json) fmt::print("{}\n", items.dump(2));
   return 0;
@@ -158,6 +168,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   }
   if (args.displacements.empty() && args.assets.empty()) {
     selection.displacements = bundledDisplacements();
+  }
+  for (const std::string& scenario : args.scenarios) {
+    selection.scenarios.push_back(resolveScenario(scenario));
   }
   if (!args.shard.empty()) selection.shard = parseShard(args.shard);
   selection.suite = parseSuiteMode(args.suite);

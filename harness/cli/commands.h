@@ -7,13 +7,16 @@
 namespace tb::cli {
 
 struct ListArgs {
-  std::string what;  // techniques | assets | measures
+  std::string what;  // techniques | assets | scenarios | measures
   bool json = false;
 };
 
 struct RunArgs {
   std::vector<std::string> techniques;
   std::vector<std::string> assets;
+  // Scenario names (assets/scenarios) or .json paths, the inputs of simulation techniques;
+  // empty = every bundled scenario.
+  std::vector<std::string> scenarios;
   std::vector<std::string> measures;
   std::string out = "results";
   std::string run_id;

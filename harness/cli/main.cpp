@@ -26,10 +26,10 @@ int main(int argc, char** argv) {
   app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
 
   tb::cli::ListArgs list_args;
-  CLI::App* list = app.add_subcommand("list", "list techniques, assets or measures");
-  list->add_option("what", list_args.what, "techniques | assets | measures")
+  CLI::App* list = app.add_subcommand("list", "list techniques, assets, scenarios or measures");
+  list->add_option("what", list_args.what, "techniques | assets | scenarios | measures")
       ->required()
-      ->check(CLI::IsMember({"techniques", "assets", "measures"}));
+      ->check(CLI::IsMember({"techniques", "assets", "scenarios", "measures"}));
   list->add_flag("--json", list_args.json, "print JSON");
 
   tb::cli::RunArgs run_args;
@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
                   "a baked map (FILE.exr with its FILE.exr.json from `tessbench bake`): adds its "
                   "asset displaced by it, for the map's technique and variant, to cracks, error "
                   "and memory (default: the bundled maps, unless --asset narrows the run)");
+  run->add_option("--scenario", run_args.scenarios,
+                  "bundled scenario name or scenario .json path, for simulation techniques "
+                  "(repeatable; default all)");
   run->add_option("--measure", run_args.measures, "measure id (repeatable; default all)");
   run->add_option("--out", run_args.out, "results root; each run gets a new folder in it")
       ->capture_default_str();

@@ -89,6 +89,37 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   return kTable;
 }
 
+// Simulations: the bytes they keep resident (Simulation::footprint) against the alternative
+// a user would pick for the same scenario (wave particles: a height-field grid solver at the
+// output's resolution). alternative_over_simulation above 1: the simulation is the smaller.
+const MetricTable<SimulationFootprint>& simulationTable() {
+  using D = Direction;
+  using F = SimulationFootprint;
+  static const MetricTable<F> kTable{
+      {"state_bytes", Unit::kBytes, D::kLowerIsBetter, &F::state_bytes},
+      {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter, &F::auxiliary_bytes},
+      {"simulation_bytes", Unit::kBytes, D::kLowerIsBetter,
+       [](const F& f) { return double(f.total()); }},
+      {"alternative_bytes", Unit::kBytes, D::kNone,
+       [](const F& f) -> std::optional<double> {
+         if (f.alternative_bytes == 0) return std::nullopt;
+         return double(f.alternative_bytes);
+       }},
+      {"alternative_over_simulation", Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (f.alternative_bytes == 0 || f.total() == 0) return std::nullopt;
+         return double(f.alternative_bytes) / double(f.total());
+       }},
+  };
+  return kTable;
+}
+
+std::vector<MetricSpec> memorySpecs() {
+  std::vector<MetricSpec> specs = memoryTable().specs();
+  for (const MetricSpec& spec : simulationTable().specs()) specs.push_back(spec);
+  return specs;
+}
+
 class MemoryMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
@@ -97,7 +128,7 @@ class MemoryMeasure final : public Measure {
         "Memory footprint against plain triangle meshes",
         "bytes of the technique's data (plus a 16-bit displacement map) against the equivalent "
         "welded triangle mesh at uniform levels 8, 16, 32, 64",
-        memoryTable().specs(),
+        memorySpecs(),
         {"plain_over_technique", "technique_with_displacement_bytes"},
         {"plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
          "32-bit indices, with the tessellator's point and triangle counts",
@@ -123,8 +154,11 @@ class MemoryMeasure final : public Measure {
          "figures are the real map's GPU-resident bytes (R16/R32 float for a scalar map, RGBA for "
          "a vector map, no mips) instead of the per-vertex assumption, patch_data_bytes includes "
          "the 33 words per patch of owners and corner directions the displaced TES reads, and "
-         "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record has it); "
-         "summaries leave these rows out"},
+         "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record has "
+         "it); summaries leave these rows out",
+         "simulations (rows keyed by state = resident): Simulation::footprint, the state and "
+         "auxiliary buffers the GPU keeps for the scenario, against the alternative the "
+         "simulation names (its record's note says which)"},
         {{"displacement", ""}},
         // One line per technique/variant: how the saving grows with the level (median over
         // the assets; levels double, so a log x spaces them evenly).
@@ -140,7 +174,7 @@ class MemoryMeasure final : public Measure {
   }
   MeasureRequirements requirements() const override {
     MeasureRequirements requirements{
-        {MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
+        {MeasureNeed::kSurfaceOrSimulation}, VariantPolicy::kWhenPatchDataDiffers, {}};
     requirements.displaced_surfaces = true;
     return requirements;
   }
@@ -148,6 +182,17 @@ class MemoryMeasure final : public Measure {
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
+    if (input.patches == nullptr && input.simulation != nullptr) {
+      const SimulationFootprint footprint = input.simulation->footprint();
+      MetricRow row;
+      row.keys["state"] = "resident";
+      row.metrics = simulationTable().metrics(footprint);
+      result.rows.push_back(std::move(row));
+      if (!footprint.alternative.empty()) {
+        result.notes.push_back("alternative: " + footprint.alternative);
+      }
+      return result;
+    }
     for (uint32_t level : kMemoryLevels) {
       MemoryRowFigures figures{measureMemory(*input.patches, level),
                                input.patches->patchCount(), std::nullopt};

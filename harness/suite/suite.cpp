@@ -16,6 +16,7 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/suite/displacement_file.h"
 #include "harness/suite/measure_rule.h"
+#include "harness/suite/scenario_file.h"
 #include "techniques/common/displaced_patches.h"
 #include "techniques/registry.h"
 
@@ -169,7 +170,8 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
                          const TechniqueInput& technique_input, TechniqueInstance* instance) {
   const MeasureRequirements requirements = measure.requirements();
   std::unique_ptr<TechniqueInstance> fresh;
-  if (requirements.has(MeasureNeed::kSimulation)) {
+  if (requirements.has(MeasureNeed::kSimulation) ||
+      (requirements.has(MeasureNeed::kSurfaceOrSimulation) && instance->simulation() != nullptr)) {
     fresh = input.technique.build(technique_input, input.variant);
     instance = fresh.get();
   }
@@ -263,7 +265,10 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   StepOutcome outcome;
   // Measures that may run, before building: no instance is built that no measure would use.
   const bool full = run.suite == SuiteMode::kFull;
-  const VariantStanding maybe{is_default, default_footprint->has_value(), full};
+  const VariantStanding maybe{
+      is_default,
+      default_footprint->has_value() || technique.info().family == TechniqueFamily::kSimulation,
+      full};
   bool any_may_run = false;
   for (const Measure* measure : run.measures) {
     any_may_run |=
@@ -292,8 +297,10 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   }
   const SurfacePatches* patches = instance->surface();
   if (patches && is_default) *default_footprint = patches->footprint();
+  // A simulation's variants each keep their own state (wave particles' lp2 a fixed buffer).
   const bool own_patch_data =
-      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint);
+      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint) ||
+      (!patches && instance->simulation() != nullptr);
   std::vector<const Measure*> runnable;
   for (const Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
@@ -436,8 +443,11 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
   static const Mesh kNoMesh;
   std::vector<SuiteInput> inputs;
   if (technique.info().family == TechniqueFamily::kSimulation) {
-    for (const Scenario& scenario : scenarios)
-      inputs.push_back({scenario.name, &kNoMesh, &scenario});
+    for (const Scenario& scenario : scenarios) {
+      if (scenario.technique.empty() || scenario.technique == technique.info().id) {
+        inputs.push_back({scenario.name, &kNoMesh, &scenario});
+      }
+    }
   } else {
     for (size_t a = 0; a < refs.size(); ++a) inputs.push_back({refs[a].name, &meshes[a], nullptr});
     for (size_t d = 0; d < displacements.size(); ++d) {
@@ -537,6 +547,12 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
                                mesh->normals_computed});
     run.targets.emplace(&input, std::make_unique<SuiteRun::TargetSlot>());
   }
+  std::vector<Scenario> scenarios = selection.scenarios;
+  const bool any_simulation =
+      std::any_of(techniques.begin(), techniques.end(), [](const Technique* technique) {
+        return technique->info().family == TechniqueFamily::kSimulation;
+      });
+  if (scenarios.empty() && any_simulation) scenarios = bundledScenarios();
 
   // One group per technique × input: its variants run in order (default first), groups in
   // parallel. Outcomes go to slots in the serial order technique, variant, input.
@@ -550,7 +566,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   size_t total = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
-    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios,
+    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, scenarios,
                                                      selection.displacements, displacement_meshes);
     for (size_t i = 0; i < inputs.size(); ++i) {
       groups.push_back({technique, variants, inputs[i], i, inputs.size(), total});

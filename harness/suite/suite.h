@@ -21,8 +21,10 @@ struct SuiteSelection {
   std::vector<AssetRef> assets;              // empty: every bundled asset
   std::vector<const Measure*> measures;      // empty: every registered measure
   std::string device_name;                   // --device substring; empty: best device
-  // The inputs of simulation techniques (one record per scenario, in place of the assets);
-  // none bundled yet, so simulation techniques run on none by default.
+  // The inputs of simulation techniques (one record per scenario, in place of the assets).
+  // Empty: every bundled scenario (assets/scenarios, scenario_file.h), read only when a
+  // selected technique is a simulation. A technique runs only on the scenarios whose
+  // `technique` is its id or empty.
   std::vector<Scenario> scenarios;
   // Displacement maps (harness/suite/displacement_file.h): each adds a displaced asset, its
   // sidecar's asset displaced by the map, run by its technique and variant with the measures
