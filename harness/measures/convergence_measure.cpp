@@ -98,9 +98,12 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
 ConvergenceSettings settingsFor(SuiteMode suite) {
   ConvergenceSettings settings;
   settings.dispatch_budget = kDispatchBudget;
+  settings.max_iterations = 3000;
+  settings.reference_max_iterations = 3000;
   if (suite == SuiteMode::kFull) {
     settings.rows = 128;
     settings.max_iterations = 20000;
+    settings.reference_max_iterations = 200000;
   }
   return settings;
 }

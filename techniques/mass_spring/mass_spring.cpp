@@ -302,7 +302,7 @@ std::vector<VariantInfo> MassSpringTechnique::variants() const {
        {{"omega", 1.0}}},
       {"jacobi_chebyshev",
        "Jacobi with Chebyshev semi-iterative acceleration (Wang, SIGGRAPH Asia 2015)",
-       {{"omega", 1.0}, {"rho", 0.9}, {"delay", 4}}},
+       {{"omega", 1.0}, {"rho", 0.97}, {"delay", 4}}},
   };
 }
 
