@@ -1,8 +1,8 @@
 // A simulation's Vulkan compute programs as plain data, the compute counterpart of
 // GpuPatchProgram (core/gpu/patch_program_desc.h): which embedded shader, which buffers,
-// how many workgroups. Techniques fill it without touching Vulkan; a runner in core/gpu
-// (added with the first simulation, issues 18 and 19) records the dispatches. No Vulkan
-// header is needed to include this one.
+// how many workgroups. Techniques fill it without touching Vulkan; core/gpu/compute_runner.h
+// records the dispatches (every pass of N steps in one command buffer, no read-back
+// inside the step loop). No Vulkan header is needed to include this one.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,10 @@ struct GpuComputeBuffer {
   // Another pass of the same simulation writes it and this one reads it (ping-pong
   // buffers, counters): the runner keeps one allocation per name across passes.
   bool shared_across_passes = true;
+  // Ping-pong: on odd steps (0-based step index) this binding gets the buffer named
+  // `alternate_with` instead, and that buffer's binding (when the pass binds it too) gets
+  // this one. Empty: the same buffer every step. Both names are allocated by the runner.
+  std::string alternate_with;
 };
 
 // One dispatch per simulation step (or per solver iteration, see repeats_per_step).
@@ -36,6 +40,11 @@ struct GpuComputePass {
   std::string indirect_buffer;
   uint64_t indirect_offset_bytes = 0;
   uint32_t repeats_per_step = 1;  // solver iterations per step (Jacobi), >= 1
+  // Per-step push constant: the runner writes the 0-based step index (counted over every
+  // run of one ComputeRunner) into push_constants[step_index_word] before each step's
+  // dispatches; -1: the push block is the same every step. Lets a pass emit on a given
+  // step or seed by step without a CPU round trip.
+  int32_t step_index_word = -1;
 };
 
 // Every pass of one step, in submission order, with a barrier between consecutive passes.

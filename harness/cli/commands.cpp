@@ -14,6 +14,7 @@
 #include "harness/cli/html_assets.h"
 #include "harness/cli/run_context.h"
 #include "harness/suite/asset_catalog.h"
+#include "harness/suite/scenario_file.h"
 #include "harness/suite/camera_path.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/suite.h"
@@ -152,6 +153,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   selection.threads = args.threads;
   selection.repetitions = args.repetitions;
   for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+  for (const std::string& scenario : args.scenarios) {
+    selection.scenarios.push_back(resolveScenario(scenario));
+  }
   if (!args.shard.empty()) selection.shard = parseShard(args.shard);
   selection.suite = parseSuiteMode(args.suite);
   std::vector<std::string> camera_files;

@@ -14,6 +14,9 @@ struct ListArgs {
 struct RunArgs {
   std::vector<std::string> techniques;
   std::vector<std::string> assets;
+  // Scenario names (assets/scenarios) or .json paths, the inputs of simulation techniques;
+  // empty = every bundled scenario.
+  std::vector<std::string> scenarios;
   std::vector<std::string> measures;
   std::string out = "results";
   std::string run_id;

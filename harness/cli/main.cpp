@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
   run->add_option("--technique", run_args.techniques, "technique id (repeatable; default all)");
   run->add_option("--asset", run_args.assets, "bundled asset name or OBJ path (default all)");
+  run->add_option("--scenario", run_args.scenarios,
+                  "bundled scenario name or scenario .json path, for simulation techniques "
+                  "(repeatable; default all)");
   run->add_option("--measure", run_args.measures, "measure id (repeatable; default all)");
   run->add_option("--out", run_args.out, "results root; each run gets a new folder in it")
       ->capture_default_str();

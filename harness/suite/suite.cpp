@@ -15,6 +15,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/suite/measure_rule.h"
+#include "harness/suite/scenario_file.h"
 #include "techniques/registry.h"
 
 namespace tb {
@@ -331,8 +332,11 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
   static const Mesh kNoMesh;
   std::vector<SuiteInput> inputs;
   if (technique.info().family == TechniqueFamily::kSimulation) {
-    for (const Scenario& scenario : scenarios)
-      inputs.push_back({scenario.name, &kNoMesh, &scenario});
+    for (const Scenario& scenario : scenarios) {
+      if (scenario.technique.empty() || scenario.technique == technique.info().id) {
+        inputs.push_back({scenario.name, &kNoMesh, &scenario});
+      }
+    }
   } else {
     for (size_t a = 0; a < refs.size(); ++a) inputs.push_back({refs[a].name, &meshes[a], nullptr});
   }
@@ -401,6 +405,12 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   if (refs.empty()) refs = bundledAssets();
   openDevice(selection.device_name, &run);
   const std::vector<Mesh> meshes = loadAssets(refs, results);
+  std::vector<Scenario> scenarios = selection.scenarios;
+  const bool any_simulation =
+      std::any_of(techniques.begin(), techniques.end(), [](const Technique* technique) {
+        return technique->info().family == TechniqueFamily::kSimulation;
+      });
+  if (scenarios.empty() && any_simulation) scenarios = bundledScenarios();
 
   // One group per technique × input: its variants run in order (default first), groups in
   // parallel. Outcomes go to slots in the serial order technique, variant, input.
@@ -414,7 +424,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   size_t total = 0;
   for (const Technique* technique : techniques) {
     const std::vector<VariantInfo> variants = technique->variants();
-    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, selection.scenarios);
+    const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, scenarios);
     for (size_t i = 0; i < inputs.size(); ++i) {
       groups.push_back({technique, variants, inputs[i], i, inputs.size(), total});
     }

@@ -20,8 +20,10 @@ struct SuiteSelection {
   std::vector<AssetRef> assets;              // empty: every bundled asset
   std::vector<const Measure*> measures;      // empty: every registered measure
   std::string device_name;                   // --device substring; empty: best device
-  // The inputs of simulation techniques (one record per scenario, in place of the assets);
-  // none bundled yet, so simulation techniques run on none by default.
+  // The inputs of simulation techniques (one record per scenario, in place of the assets).
+  // Empty: every bundled scenario (assets/scenarios, scenario_file.h), read only when a
+  // selected technique is a simulation. A technique runs only on the scenarios whose
+  // `technique` is its id or empty.
   std::vector<Scenario> scenarios;
   // The paths view-dependent measures run along, around each asset's bounding box, for
   // kView and kCameraPath measures alike (`run --camera`). Empty: kView measures get the

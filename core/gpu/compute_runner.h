@@ -1,0 +1,56 @@
+// Runs a simulation's compute programs (compute_program_desc.h) on a Vulkan device: one
+// allocation per buffer name, kept across passes, programs and steps; every pass of every
+// step of one run() recorded into one command buffer with a barrier after each dispatch,
+// so no CPU read-back happens inside the step loop (indirect dispatches read their sizes
+// from device buffers). Buffers are read back only after a run.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/gpu/compute_program_desc.h"
+
+namespace tb::gpu {
+
+class Context;
+
+struct ComputeRunTiming {
+  uint32_t steps = 0;            // steps this run() recorded
+  double gpu_ns = 0;             // timestamps around the whole run; NaN without timestamps
+  double submit_to_fence_s = 0;  // host seconds, submit to fence
+};
+
+class ComputeRunner {
+ public:
+  // Creates one pipeline per pass (specialisation constants 0..M-1 from the pass) and one
+  // buffer per name (the largest size_bytes any pass declares, filled with the first
+  // non-empty initial_words, zero elsewhere). Throws GpuError on a device error or an
+  // inconsistent description (a missing shader, an indirect buffer no pass binds, initial
+  // words beyond the size, a step_index_word beyond the push block, repeats_per_step 0).
+  ComputeRunner(Context& context, const std::vector<GpuComputeProgram>& programs);
+  ~ComputeRunner();
+  ComputeRunner(const ComputeRunner&) = delete;
+  ComputeRunner& operator=(const ComputeRunner&) = delete;
+
+  // Records `steps` steps (programs in order, passes in order, each pass repeats_per_step
+  // times) into one command buffer, submits it and waits. Step indices continue from the
+  // previous run, so ping-pong parity and step_index_word stay consistent across runs.
+  ComputeRunTiming run(uint32_t steps);
+  // Dispatches recorded per step: the sum over passes of repeats_per_step.
+  uint32_t dispatchesPerStep() const;
+  uint32_t stepsDone() const;
+  // The whole buffer `name`, as 32-bit words. Throws GpuError for an unknown name.
+  std::vector<uint32_t> read(const std::string& name) const;
+  // Bytes of every buffer the runner allocated (the GPU-resident state of the programs).
+  uint64_t residentBytes() const;
+  std::vector<std::string> bufferNames() const;  // sorted
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tb::gpu
