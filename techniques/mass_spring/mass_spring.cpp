@@ -166,7 +166,6 @@ SimulationFootprint MassSpringSimulation::footprint() const {
   return footprint;
 }
 
-std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const { return {}; }
 
 SolverCounts MassSpringSimulation::counts() const {
   SolverCounts c;

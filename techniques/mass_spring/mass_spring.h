@@ -59,6 +59,13 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   // so float resolves the springs' lengths; positions() adds it back.
   const Vec3d& origin() const { return origin_; }
   const RenderMesh& renderMesh() const { return render_mesh_; }
+  // The solver alone on Vulkan compute (mass_spring_gpu.cpp): programs whose one runner
+  // step is one solver iteration from the current state (positions and anchors), for the
+  // GPU-against-CPU comparison. Empty for gs_serial (no GPU path). After N steps the
+  // positions are in buffer solverPositionBuffer() as vec4 per vertex (decodePositions).
+  std::vector<gpu::GpuComputeProgram> solverPrograms() const;
+  static std::string solverPositionBuffer() { return "positions"; }
+  static std::vector<Vec3f> decodePositions(const std::vector<uint32_t>& words, size_t count);
   // The render vertices for the current simulated positions (DrawVertex, in double).
   std::vector<Vec3d> renderPositions() const;
 
