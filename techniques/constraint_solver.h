@@ -54,8 +54,8 @@ class ConstraintSolver {
   // Runs `iterations` more solver iterations (in float, as the GPU) on the current state.
   virtual void iterate(size_t iterations) = 0;
   // Spends `dispatches` GPU dispatches of solver work on the current state: whole
-  // iterations, then a partial one when an iteration takes several dispatches (a
-  // Gauss-Seidel sweep over its first colours).
+  // iterations, or part of one when an iteration takes several dispatches (a Gauss-Seidel
+  // sweep of more colours goes on where the last call stopped).
   virtual void iterateDispatches(size_t dispatches) = 0;
   // RMS relative stretch of the current positions over every active constraint
   // (dimensionless; anchor springs of rest length 0 measured against lengthScale()).

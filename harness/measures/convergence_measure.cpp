@@ -133,7 +133,8 @@ class ConvergenceMeasure final : public Measure {
          "to another one",
          "8 dispatches: dispatches per iteration are the colour count for Gauss-Seidel (one "
          "batch per dispatch; serial counted as its coloured twin) and 1 for Jacobi; a sweep "
-         "of more than 8 colours is cut after 8 (serial: the same fraction of its springs), "
+         "of more than 8 colours does its first 8 colours (serial: the same fraction of its "
+         "springs), "
          "so iterations_at_8_dispatches = 8 / dispatches_per_iteration may be below 1",
          "solvers run in float, as the GPU; the reference in double"},
         {{"kind", "summary"}},

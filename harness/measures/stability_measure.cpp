@@ -56,7 +56,8 @@ class StabilityMeasure final : public Measure {
          "finite = 0 when the run blew up",
          "max_stretch: largest |length - rest| / rest of any surface spring after any step",
          "8 solver dispatches per step, as a game with a fixed per-frame budget (a Gauss-Seidel "
-         "sweep of more colours than that is cut after 8 colours: iterations_per_step < 1); the default suite runs the scenario's duration, --suite full " +
+         "sweep of more colours than that goes on where it stopped next step: iterations_per_step "
+         "< 1); the default suite runs the scenario's duration, --suite full " +
              std::to_string(kFullSuiteLength) + " times as long"},
         {},
         {}};

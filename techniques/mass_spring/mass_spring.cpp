@@ -187,6 +187,7 @@ void MassSpringSimulation::setConvergenceFrame() {
   state_.iteration = 0;
   state_.previous.clear();
   state_.chebyshev_weight = 1;
+  state_.sweep_cursor = 0;
 }
 
 void MassSpringSimulation::iterate(size_t iterations) { solver_.iterate(state_, iterations); }

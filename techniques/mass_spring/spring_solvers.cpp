@@ -97,21 +97,27 @@ void SpringSolver<Real>::iterate(SolverState<Real>& state, size_t count) const {
 
 template <class Real>
 void SpringSolver<Real>::iterateDispatches(SolverState<Real>& state, size_t dispatches) const {
+  const size_t colours = system_.colour_count;
   if (settings_.kind == SolverKind::kJacobi || settings_.kind == SolverKind::kJacobiChebyshev ||
-      system_.colour_count == 0) {
+      colours == 0) {
     iterate(state, dispatches);
     return;
   }
-  const size_t colours = system_.colour_count;
-  iterate(state, dispatches / colours);
-  const size_t rest = dispatches % colours;
-  if (rest == 0) return;
-  const uint32_t end = system_.colour_start[rest];
   if (settings_.kind == SolverKind::kGaussSeidelSerial && !settings_.colour_major) {
-    const size_t count = a_.size() * rest / colours;
-    for (uint32_t s = 0; s < count; ++s) project(state, s);
-  } else {
-    for (uint32_t i = 0; i < end; ++i) project(state, system_.colour_order[i]);
+    const size_t springs = a_.size();
+    const size_t count = (springs * dispatches + colours / 2) / colours;
+    for (size_t i = 0; i < count; ++i) {
+      project(state, uint32_t(state.sweep_cursor));
+      if (++state.sweep_cursor == springs) state.sweep_cursor = 0, ++state.iteration;
+    }
+    return;
+  }
+  for (size_t d = 0; d < dispatches; ++d) {
+    const size_t c = state.sweep_cursor;
+    for (uint32_t i = system_.colour_start[c]; i < system_.colour_start[c + 1]; ++i) {
+      project(state, system_.colour_order[i]);
+    }
+    if (++state.sweep_cursor == colours) state.sweep_cursor = 0, ++state.iteration;
   }
 }
 

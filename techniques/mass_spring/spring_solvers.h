@@ -67,6 +67,10 @@ struct SolverState {
   std::vector<Vec3T<Real>> scratch;  // Jacobi output
   size_t iteration = 0;              // iterations since the frame started
   double chebyshev_weight = 1;       // the last Chebyshev weight
+  // Gauss-Seidel under a dispatch budget (iterateDispatches): where the cut sweep goes on
+  // next time (a colour; a spring index for the serial index-order sweep). Kept across
+  // steps, so a sweep longer than the budget completes over several frames.
+  size_t sweep_cursor = 0;
 };
 
 // The springs of a SpringSystem in Real, and the solver over them.
@@ -77,9 +81,10 @@ class SpringSolver {
   const SolverSettings& settings() const { return settings_; }
   // Runs `count` iterations on `state`.
   void iterate(SolverState<Real>& state, size_t count) const;
-  // Spends `dispatches` GPU dispatches: Jacobi iterations one each; Gauss-Seidel whole
-  // sweeps of colour_count dispatches, then the first (dispatches mod colour_count) colours
-  // of one more (a serial index-order sweep: the same fraction of its springs).
+  // Spends `dispatches` GPU dispatches: Jacobi iterations one each; Gauss-Seidel one colour
+  // each, going on from state.sweep_cursor and wrapping to the next sweep (a serial
+  // index-order sweep: colour_count dispatches' worth is the whole sweep, so each dispatch
+  // is springs / colour_count springs in its order).
   void iterateDispatches(SolverState<Real>& state, size_t dispatches) const;
   // One Gauss-Seidel projection of spring s.
   void project(SolverState<Real>& state, uint32_t s) const {

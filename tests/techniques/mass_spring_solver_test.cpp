@@ -176,6 +176,28 @@ TEST(MassSpringColouring, ColouredGaussSeidelEqualsSerialColourMajorBitwise) {
   }
 }
 
+// Oracle: whole sweeps. A budget of 8 dispatches cuts a sweep of more colours; the next
+// budget goes on where it stopped, so two budgets that add up to the colour count are one
+// sweep, bitwise.
+TEST(MassSpringColouring, ADispatchBudgetGoesOnWhereTheLastStopped) {
+  for (const char* variant : {"gs_colored", "gs_serial"}) {
+    auto whole = buildMassSpring(massSpringScenario(), variant, {{"colour_major", 1}});
+    auto cut = buildMassSpring(massSpringScenario(), variant, {{"colour_major", 1}});
+    MassSpringSimulation& a = massSpringOf(*whole);
+    MassSpringSimulation& b = massSpringOf(*cut);
+    const uint32_t colours = a.springs().colour_count;
+    ASSERT_GT(colours, 8u);
+    a.setConvergenceFrame();
+    b.setConvergenceFrame();
+    a.iterate(2);
+    b.iterateDispatches(8);
+    EXPECT_FALSE(bitwiseEqual(a.solverState().x, b.solverState().x));
+    b.iterateDispatches(colours - 8);
+    b.iterateDispatches(colours);
+    EXPECT_TRUE(bitwiseEqual(a.solverState().x, b.solverState().x)) << variant;
+  }
+}
+
 TEST(MassSpringScenario, BadFieldsNameTheFileAndTheField) {
   Scenario scenario = massSpringScenario();
   scenario.path = "stomp.json";
