@@ -23,6 +23,16 @@ struct SolverCounts {
   uint64_t constraints = 0;     // constraints projected per iteration
   uint64_t vertices = 0;        // simulated mass points
   uint64_t constraint_ends = 0; // vertex visits per iteration (2 per spring, 1 per anchor spring)
+  // No GPU path: under a dispatch budget it runs whole iterations, max(1, round(budget /
+  // dispatches_per_iteration)), instead of cutting one (serial Gauss-Seidel, the reference).
+  bool whole_iterations_under_budget = false;
+  // Solver iterations a budget of `dispatches` buys (below 1: part of an iteration).
+  double iterationsFor(size_t dispatches) const {
+    const double per = dispatches_per_iteration > 0 ? double(dispatches_per_iteration) : 1.0;
+    if (!whole_iterations_under_budget) return double(dispatches) / per;
+    const double whole = double((dispatches + dispatches_per_iteration / 2) / (dispatches_per_iteration ? dispatches_per_iteration : 1));
+    return whole < 1 ? 1.0 : whole;
+  }
 };
 
 // The converged reference of the convergence frame (double, serial Gauss-Seidel).

@@ -30,9 +30,7 @@ ConvergenceFigures measureConvergence(ConstraintSolver& solver,
   solver.setConvergenceFrame();
   solver.iterateDispatches(settings.dispatch_budget);
   figures.residual_at_budget = solver.residual();
-  figures.budget_iterations =
-      double(settings.dispatch_budget) /
-      double(std::max<uint32_t>(1, figures.counts.dispatches_per_iteration));
+  figures.budget_iterations = figures.counts.iterationsFor(settings.dispatch_budget);
 
   solver.setConvergenceFrame();
   const double r0 = solver.residual();

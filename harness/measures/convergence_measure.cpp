@@ -132,10 +132,10 @@ class ConvergenceMeasure final : public Measure {
          "without goal springs the constraints have many solutions, so a solver may converge "
          "to another one",
          "8 dispatches: dispatches per iteration are the colour count for Gauss-Seidel (one "
-         "batch per dispatch; serial counted as its coloured twin) and 1 for Jacobi; a sweep "
-         "of more than 8 colours does its first 8 colours (serial: the same fraction of its "
-         "springs), "
-         "so iterations_at_8_dispatches = 8 / dispatches_per_iteration may be below 1",
+         "batch per dispatch) and 1 for Jacobi; a coloured sweep of more than 8 colours does "
+         "its first 8 (iterations_at_8_dispatches = 8 / dispatches_per_iteration < 1); "
+         "gs_serial, with no GPU path, is the reference: max(1, round(8 / colours)) whole "
+         "sweeps",
          "solvers run in float, as the GPU; the reference in double"},
         {{"kind", "summary"}},
         {PlotSpec{.title = "Residual against solver iterations",

@@ -11,9 +11,7 @@ StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solv
   StabilityFigures figures;
   figures.steps = settings.steps;
   figures.dispatches_per_step = settings.dispatch_budget;
-  figures.iterations_per_step =
-      double(settings.dispatch_budget) /
-      double(std::max<uint32_t>(1, solver.counts().dispatches_per_iteration));
+  figures.iterations_per_step = solver.counts().iterationsFor(settings.dispatch_budget);
   solver.setDispatchesPerStep(settings.dispatch_budget);
   const double dt = simulation.scenario().time_step_s;
   const size_t half = settings.steps / 2;

@@ -55,9 +55,10 @@ class StabilityMeasure final : public Measure {
          "half (below 1 the motion settles, above 1 the solver feeds energy in); absent with "
          "finite = 0 when the run blew up",
          "max_stretch: largest |length - rest| / rest of any surface spring after any step",
-         "8 solver dispatches per step, as a game with a fixed per-frame budget (a Gauss-Seidel "
-         "sweep of more colours than that goes on where it stopped next step: iterations_per_step "
-         "< 1); the default suite runs the scenario's duration, --suite full " +
+         "8 solver dispatches per step, as a game with a fixed per-frame budget (a coloured "
+         "Gauss-Seidel sweep of more colours than that goes on where it stopped next step: "
+         "iterations_per_step < 1; gs_serial, with no GPU path, runs max(1, round(8 / "
+         "colours)) whole sweeps); the default suite runs the scenario's duration, --suite full " +
              std::to_string(kFullSuiteLength) + " times as long"},
         {},
         {}};

@@ -177,6 +177,8 @@ SolverCounts MassSpringSimulation::counts() const {
   c.constraints = system_.springs.size();
   c.vertices = system_.vertex_count;
   c.constraint_ends = system_.ends.size();
+  c.whole_iterations_under_budget =
+      kind == SolverKind::kGaussSeidelSerial && !solver_.settings().colour_major;
   return c;
 }
 

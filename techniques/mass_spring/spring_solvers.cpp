@@ -104,12 +104,9 @@ void SpringSolver<Real>::iterateDispatches(SolverState<Real>& state, size_t disp
     return;
   }
   if (settings_.kind == SolverKind::kGaussSeidelSerial && !settings_.colour_major) {
-    const size_t springs = a_.size();
-    const size_t count = (springs * dispatches + colours / 2) / colours;
-    for (size_t i = 0; i < count; ++i) {
-      project(state, uint32_t(state.sweep_cursor));
-      if (++state.sweep_cursor == springs) state.sweep_cursor = 0, ++state.iteration;
-    }
+    // No GPU path: the reference runs whole sweeps, as many as the budget buys its coloured
+    // twin (rounded, at least one).
+    iterate(state, std::max<size_t>(1, (dispatches + colours / 2) / colours));
     return;
   }
   for (size_t d = 0; d < dispatches; ++d) {

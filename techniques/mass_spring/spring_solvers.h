@@ -67,9 +67,9 @@ struct SolverState {
   std::vector<Vec3T<Real>> scratch;  // Jacobi output
   size_t iteration = 0;              // iterations since the frame started
   double chebyshev_weight = 1;       // the last Chebyshev weight
-  // Gauss-Seidel under a dispatch budget (iterateDispatches): where the cut sweep goes on
-  // next time (a colour; a spring index for the serial index-order sweep). Kept across
-  // steps, so a sweep longer than the budget completes over several frames.
+  // Coloured Gauss-Seidel under a dispatch budget (iterateDispatches): the colour the cut
+  // sweep goes on from next time. Kept across steps, so a sweep longer than the budget
+  // completes over several frames.
   size_t sweep_cursor = 0;
 };
 
@@ -81,10 +81,10 @@ class SpringSolver {
   const SolverSettings& settings() const { return settings_; }
   // Runs `count` iterations on `state`.
   void iterate(SolverState<Real>& state, size_t count) const;
-  // Spends `dispatches` GPU dispatches: Jacobi iterations one each; Gauss-Seidel one colour
-  // each, going on from state.sweep_cursor and wrapping to the next sweep (a serial
-  // index-order sweep: colour_count dispatches' worth is the whole sweep, so each dispatch
-  // is springs / colour_count springs in its order).
+  // Spends `dispatches` GPU dispatches: Jacobi iterations one each; coloured Gauss-Seidel
+  // (and the serial sweep in colour-major order) one colour each, going on from
+  // state.sweep_cursor and wrapping to the next sweep. The serial index-order sweep has no
+  // GPU path: it runs max(1, round(dispatches / colour_count)) whole sweeps.
   void iterateDispatches(SolverState<Real>& state, size_t dispatches) const;
   // One Gauss-Seidel projection of spring s.
   void project(SolverState<Real>& state, uint32_t s) const {
