@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
@@ -52,28 +53,40 @@ MassSpringSimulation::MassSpringSimulation(const Scenario& scenario,
       solver_(system_, settings),
       goal_springs_(goal_springs) {
   origin_ = rig_.origin();
-  state_.x.resize(system_.vertex_count);
-  for (size_t v = 0; v < system_.vertex_count; ++v) state_.x[v] = toFloat(rig_.restPositions()[v]);
+  for (size_t v = 0; v < system_.vertex_count; ++v) {
+    rest_f_.push_back(toFloat(rig_.restPositions()[v]));
+    bone_f_.push_back(toFloat(rig_.restBonePoint(v)));
+    for (size_t s = 0; s < input_->stomps.size(); ++s) {
+      stomp_amplitude_.push_back(toFloat(rig_.stompAmplitude(v, s)));
+    }
+  }
+  state_.x = rest_f_;
   x_previous_ = state_.x;
-  setAnchors(0);
+  setAnchors(0, scenario.time_step_s);
   goal_previous_.resize(system_.vertex_count);
   for (size_t v = 0; v < system_.vertex_count; ++v) {
     goal_previous_[v] = toDouble(state_.anchors[system_.vertex_count + v]);
   }
-  blast_done_.assign(input_->blasts.size(), false);
   dispatches_per_step_ = input_->dispatches_per_step;
   render_mesh_ = tessellateForRendering(input_->skin, kRenderLevel, system_.length_scale_m);
 }
 
-void MassSpringSimulation::setAnchors(double t_s) { state_.anchors = anchorsAt(t_s); }
+void MassSpringSimulation::setAnchors(size_t j, double dt_s) { state_.anchors = anchorsAt(j, dt_s); }
 
-std::vector<Vec3f> MassSpringSimulation::anchorsAt(double t_s) const {
-  const size_t n = system_.vertex_count;
+float MassSpringSimulation::stompSine(size_t s, size_t j, double dt_s) const {
+  return float(std::sin(2 * std::numbers::pi * input_->stomps[s].frequency_hz * (double(j) * dt_s)));
+}
+
+std::vector<Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const {
+  const size_t n = system_.vertex_count, stomps = input_->stomps.size();
+  std::vector<float> sines(stomps);
+  for (size_t s = 0; s < stomps; ++s) sines[s] = stompSine(s, j, dt_s);
   std::vector<Vec3f> anchors(system_.anchor_count);
   for (size_t v = 0; v < n; ++v) {
-    const Vec3d offset = rig_.offset(v, t_s);
-    anchors[v] = toFloat(rig_.restBonePoint(v) + offset);
-    anchors[n + v] = toFloat(rig_.restPositions()[v] + offset);
+    Vec3f offset{0, 0, 0};
+    for (size_t s = 0; s < stomps; ++s) offset = offset + stomp_amplitude_[v * stomps + s] * sines[s];
+    anchors[v] = bone_f_[v] + offset;
+    anchors[n + v] = rest_f_[v] + offset;
   }
   return anchors;
 }
@@ -81,7 +94,7 @@ std::vector<Vec3f> MassSpringSimulation::anchorsAt(double t_s) const {
 std::vector<Vec3f> MassSpringSimulation::convergenceStart() const {
   std::vector<Vec3f> x(system_.vertex_count);
   for (size_t v = 0; v < x.size(); ++v) {
-    Vec3d p = rig_.restPositions()[v];
+    Vec3d p = toDouble(rest_f_[v]);
     for (int i = 0; i < 3; ++i) p[i] += kConvergenceJitter * system_.length_scale_m * hashUnit(v, i);
     x[v] = toFloat(p);
   }
@@ -90,24 +103,28 @@ std::vector<Vec3f> MassSpringSimulation::convergenceStart() const {
 
 void MassSpringSimulation::step(double dt_s) {
   const size_t n = system_.vertex_count;
-  const double t1 = time_s_ + dt_s;
+  const double t1 = double(steps_done_ + 1) * dt_s;
   for (size_t v = 0; v < n; ++v) goal_previous_[v] = toDouble(state_.anchors[n + v]);
-  setAnchors(t1);
-  // Verlet (seed 003): x' = x + (1 - damping) (x - x_prev) + g dt^2, in float.
+  setAnchors(steps_done_ + 1, dt_s);
+  // Verlet (seed 003): x' = x + (1 - damping) (x - x_prev) + g dt^2 (+ a blast's kick), in
+  // the float operations of shaders/mass_spring/verlet.comp.
   const float keep = float(1 - input_->damping);
   const Vec3f gravity_step = toFloat((dt_s * dt_s) * input_->gravity_m_per_s2);
+  const float dt = float(dt_s);
   std::vector<Vec3f> kick(n, Vec3f{0, 0, 0});
-  for (size_t b = 0; b < input_->blasts.size(); ++b) {
-    const Blast& blast = input_->blasts[b];
-    if (blast_done_[b] || t1 < blast.time_s) continue;
-    blast_done_[b] = true;
+  for (const Blast& blast : input_->blasts) {
+    // A blast fires on the first step that reaches its time.
+    if (!(t1 >= blast.time_s) || (steps_done_ > 0 && double(steps_done_) * dt_s >= blast.time_s)) {
+      continue;
+    }
+    const Vec3f centre = toFloat(blast.center_m - origin_);
+    const float radius = float(blast.radius_m), speed0 = float(blast.speed_m_per_s);
     for (size_t v = 0; v < n; ++v) {
-      const Vec3d x = toDouble(state_.x[v]) + origin_;
-      const Vec3d away = x - blast.center_m;
-      const double distance = length(away);
-      if (!(distance < blast.radius_m) || !(distance > 0)) continue;
-      const double speed = blast.speed_m_per_s * (1 - distance / blast.radius_m);
-      kick[v] = kick[v] + toFloat((speed * dt_s / distance) * away);
+      const Vec3f away = state_.x[v] - centre;
+      const float distance = std::sqrt(away.x * away.x + away.y * away.y + away.z * away.z);
+      if (!(distance < radius) || !(distance > 0.0f)) continue;
+      const float speed = speed0 * (1.0f - distance / radius);
+      kick[v] = kick[v] + away * ((speed * dt) / distance);
     }
   }
   for (size_t v = 0; v < n; ++v) {
@@ -123,6 +140,7 @@ void MassSpringSimulation::step(double dt_s) {
   solver_.iterateDispatches(state_, dispatches_per_step_);
   time_s_ = t1;
   last_dt_s_ = dt_s;
+  ++steps_done_;
 }
 
 SimulationState MassSpringSimulation::state() const {
@@ -183,7 +201,7 @@ SolverCounts MassSpringSimulation::counts() const {
 }
 
 void MassSpringSimulation::setConvergenceFrame() {
-  setAnchors(0);  // the stomp's offset is 0 at t = 0: the rest pose
+  setAnchors(0, scenario_.time_step_s);  // the stomp's offset is 0 at t = 0: the rest pose
   state_.x = convergenceStart();
   x_previous_ = state_.x;
   state_.iteration = 0;
@@ -209,7 +227,7 @@ ReferenceSolution MassSpringSimulation::referenceSolution(double relative_tolera
   // The same start as setConvergenceFrame (the float values, widened), solved in double.
   SolverState<double> state;
   state.x = toDouble(convergenceStart());
-  state.anchors = toDouble(anchorsAt(0));
+  state.anchors = toDouble(anchorsAt(0, scenario_.time_step_s));
   const SpringSolver<double> solver(system_, SolverSettings{});
   const double r0 = measureStretch(system_, state.x, state.anchors).rms;
   ReferenceSolution reference;

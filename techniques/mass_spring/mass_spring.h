@@ -66,12 +66,23 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   std::vector<gpu::GpuComputeProgram> solverPrograms() const;
   static std::string solverPositionBuffer() { return "positions"; }
   static std::vector<Vec3f> decodePositions(const std::vector<uint32_t>& words, size_t count);
+  // gpuPrograms(): one step (verlet.comp, then the solver's dispatches_per_step dispatches),
+  // from the state at time 0; the positions after N steps are in "positions" (gs_serial:
+  // none, it has no GPU path).
   // The render vertices for the current simulated positions (DrawVertex, in double).
   std::vector<Vec3d> renderPositions() const;
 
  private:
-  void setAnchors(double t_s);
-  std::vector<Vec3f> anchorsAt(double t_s) const;
+  // Anchors at time j dt (j = steps done; 0: the rest pose), in the float operations of
+  // shaders/mass_spring/verlet.comp.
+  struct JacobiBuffers {
+    std::vector<uint32_t> end_start, ends, scale, weights;
+  };
+  JacobiBuffers jacobiBuffers() const;
+  void setAnchors(size_t j, double dt_s);
+  std::vector<Vec3f> anchorsAt(size_t j, double dt_s) const;
+  // float(sin(2 pi f_s j dt)): stomp s's phase at time index j (the GPU's table holds these).
+  float stompSine(size_t s, size_t j, double dt_s) const;
   // The convergence frame's start: rest positions displaced by a hashed jitter.
   std::vector<Vec3f> convergenceStart() const;
 
@@ -87,9 +98,11 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   RenderMesh render_mesh_;
   double time_s_ = 0;
   double last_dt_s_ = 0;
+  size_t steps_done_ = 0;
+  std::vector<Vec3f> rest_f_, bone_f_;    // rest positions and bone points (float, local)
+  std::vector<Vec3f> stomp_amplitude_;    // [v * stomps + s]: rig_.stompAmplitude in float
   size_t dispatches_per_step_ = 8;
   bool goal_springs_ = true;
-  std::vector<bool> blast_done_;
 };
 
 class MassSpringTechnique final : public Technique, public ConstraintSolverTechnique {

@@ -13,6 +13,9 @@ constexpr uint32_t kGroupSize = 64;  // local_size_x of every mass_spring shader
 // Chebyshev weights tabulated (Wang's recurrence converges long before; later iterations
 // take the last entry).
 constexpr size_t kChebyshevTable = 1024;
+// The stomp phase table of gpuPrograms() covers this many times the scenario's steps (the
+// stability measure's --suite full run); later steps hold the last phase.
+constexpr size_t kSineTableLength = 10;
 
 uint32_t word(float f) { return std::bit_cast<uint32_t>(f); }
 
@@ -48,6 +51,26 @@ std::vector<Vec3f> MassSpringSimulation::decodePositions(const std::vector<uint3
   return out;
 }
 
+MassSpringSimulation::JacobiBuffers MassSpringSimulation::jacobiBuffers() const {
+  const SolverSettings& settings = solver_.settings();
+  JacobiBuffers tables;
+  tables.end_start.assign(system_.end_start.begin(), system_.end_start.end());
+  for (const SpringEnd& end : system_.ends) {
+    tables.ends.insert(tables.ends.end(),
+                       {end.other, word(float(end.rest_m)), word(float(end.weight)), 0u});
+  }
+  for (size_t v = 0; v < system_.vertex_count; ++v) {
+    const uint32_t count = system_.end_start[v + 1] - system_.end_start[v];
+    tables.scale.push_back(word(count == 0 ? 0.0f : float(settings.omega / double(count))));
+  }
+  double w = 1;
+  for (size_t k = 0; k < kChebyshevTable; ++k) {
+    w = chebyshevWeight(k, w, settings.rho, settings.delay);
+    tables.weights.push_back(word(float(w)));
+  }
+  return tables;
+}
+
 std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const {
   const SolverSettings& settings = solver_.settings();
   const size_t n = system_.vertex_count;
@@ -77,22 +100,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
 
   const bool chebyshev = settings.kind == SolverKind::kJacobiChebyshev;
   program.name = chebyshev ? "jacobi_chebyshev" : "jacobi";
-  std::vector<uint32_t> end_start(system_.end_start.begin(), system_.end_start.end());
-  std::vector<uint32_t> ends;
-  for (const SpringEnd& end : system_.ends) {
-    ends.insert(ends.end(), {end.other, word(float(end.rest_m)), word(float(end.weight)), 0u});
-  }
-  std::vector<uint32_t> scale;
-  for (size_t v = 0; v < n; ++v) {
-    const uint32_t count = system_.end_start[v + 1] - system_.end_start[v];
-    scale.push_back(word(count == 0 ? 0.0f : float(settings.omega / double(count))));
-  }
-  std::vector<uint32_t> weights;
-  double w = 1;
-  for (size_t k = 0; k < kChebyshevTable; ++k) {
-    w = chebyshevWeight(k, w, settings.rho, settings.delay);
-    weights.push_back(word(float(w)));
-  }
+  const JacobiBuffers tables = jacobiBuffers();
   gpu::GpuComputePass pass;
   pass.shader = "mass_spring/jacobi.comp";
   // Ping-pong per runner step: even steps read "positions" and write "positions_other",
@@ -102,10 +110,10 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
                   buffer(1, "positions_other", chebyshev ? positions : std::vector<uint32_t>(positions.size(), 0u),
                          solverPositionBuffer()),
                   buffer(2, "anchors", anchors),
-                  buffer(3, "end_start", end_start),
-                  buffer(4, "ends", ends),
-                  buffer(5, "vertex_scale", scale),
-                  buffer(6, "chebyshev_weights", weights)};
+                  buffer(3, "end_start", tables.end_start),
+                  buffer(4, "ends", tables.ends),
+                  buffer(5, "vertex_scale", tables.scale),
+                  buffer(6, "chebyshev_weights", tables.weights)};
   pass.specialization = {chebyshev ? 1u : 0u};
   pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), 0u};
   pass.step_index_word = 2;
@@ -114,6 +122,107 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
   return {program};
 }
 
-std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const { return {}; }
+std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const {
+  const SolverSettings& settings = solver_.settings();
+  if (settings.kind == SolverKind::kGaussSeidelSerial) return {};
+  const size_t n = system_.vertex_count, stomps = input_->stomps.size();
+  const double dt = scenario_.time_step_s;
+  const std::vector<uint32_t> positions = vec4Words(state_.x);
+  const bool chebyshev = settings.kind == SolverKind::kJacobiChebyshev;
+
+  // The step's first pass: animation, blast, Verlet (verlet.comp).
+  std::vector<uint32_t> sines;
+  const size_t rows = kSineTableLength * std::max<size_t>(1, scenario_.stepCount()) + 2;
+  for (size_t j = 0; j < rows; ++j) {
+    for (size_t st = 0; st < stomps; ++st) sines.push_back(word(stompSine(st, j, dt)));
+  }
+  std::vector<uint32_t> amplitudes = vec4Words(stomp_amplitude_);
+  std::vector<uint32_t> blasts;
+  for (const Blast& blast : input_->blasts) {
+    // The step it fires on (mass_spring.cpp, step()): the first whose end reaches time_s.
+    size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
+    while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
+    const Vec3f centre = vecCast<float>(blast.center_m - origin_);
+    blasts.insert(blasts.end(), {word(centre.x), word(centre.y), word(centre.z), 0u,
+                                 word(float(blast.radius_m)), word(float(blast.speed_m_per_s)),
+                                 k < rows ? uint32_t(k) : 0xffffffffu, 0u});
+  }
+  const Vec3f gravity_step = vecCast<float>((dt * dt) * input_->gravity_m_per_s2);
+  gpu::GpuComputePass verlet;
+  verlet.shader = "mass_spring/verlet.comp";
+  verlet.buffers = {buffer(0, "positions", positions),
+                    buffer(1, "previous_positions", vec4Words(x_previous_)),
+                    buffer(2, "anchors", vec4Words(state_.anchors)),
+                    buffer(3, "rest", vec4Words(rest_f_)),
+                    buffer(4, "bone_rest", vec4Words(bone_f_)),
+                    buffer(5, "stomp_amplitudes", amplitudes),
+                    buffer(6, "stomp_sines", sines),
+                    buffer(7, "blasts", blasts),
+                    buffer(8, "positions_other", std::vector<uint32_t>(positions.size(), 0u))};
+  verlet.specialization = {chebyshev ? 1u : 0u};
+  verlet.push_constants = {uint32_t(n), uint32_t(stomps), uint32_t(rows),
+                           uint32_t(input_->blasts.size()), word(float(1 - input_->damping)),
+                           word(gravity_step.x), word(gravity_step.y), word(gravity_step.z),
+                           word(float(dt)), 0u};
+  verlet.step_index_word = 9;
+  verlet.groups_x = groups(n);
+  gpu::GpuComputeProgram program;
+  program.name = "step";
+  program.passes.push_back(std::move(verlet));
+
+  const uint32_t budget = uint32_t(dispatches_per_step_);
+  if (settings.kind == SolverKind::kGaussSeidelColoured) {
+    std::vector<uint32_t> springs;
+    for (uint32_t s : system_.colour_order) {
+      const Spring& spring = system_.springs[s];
+      springs.insert(springs.end(), {spring.a, spring.b, word(float(spring.rest_m)),
+                                     word(float(spring.weight))});
+    }
+    uint32_t largest = 0;
+    for (uint32_t c = 0; c < system_.colour_count; ++c) {
+      largest = std::max(largest, system_.colour_start[c + 1] - system_.colour_start[c]);
+    }
+    for (uint32_t d = 0; d < budget; ++d) {
+      gpu::GpuComputePass pass;
+      pass.shader = "mass_spring/gs_colour_step.comp";
+      pass.buffers = {buffer(0, "positions", positions),
+                      buffer(1, "anchors", vec4Words(state_.anchors)),
+                      buffer(2, "springs", springs),
+                      buffer(3, "colour_start", system_.colour_start)};
+      pass.push_constants = {d, budget, system_.colour_count, 0u};
+      pass.step_index_word = 3;
+      pass.groups_x = groups(largest);
+      program.passes.push_back(std::move(pass));
+    }
+    return {program};
+  }
+  const JacobiBuffers tables = jacobiBuffers();
+  for (uint32_t d = 0; d < budget; ++d) {
+    const bool even = d % 2 == 0;
+    gpu::GpuComputePass pass;
+    pass.shader = "mass_spring/jacobi.comp";
+    pass.buffers = {buffer(0, even ? "positions" : "positions_other", positions),
+                    buffer(1, even ? "positions_other" : "positions", positions),
+                    buffer(2, "anchors", vec4Words(state_.anchors)),
+                    buffer(3, "end_start", tables.end_start),
+                    buffer(4, "ends", tables.ends),
+                    buffer(5, "vertex_scale", tables.scale),
+                    buffer(6, "chebyshev_weights", tables.weights)};
+    // Only the first declaration of a name uploads: every pass declares the same words.
+    pass.specialization = {chebyshev ? 1u : 0u};
+    pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), d};
+    pass.groups_x = groups(n);
+    program.passes.push_back(std::move(pass));
+  }
+  if (budget % 2 == 1) {
+    gpu::GpuComputePass copy;
+    copy.shader = "mass_spring/copy.comp";
+    copy.buffers = {buffer(0, "positions", positions), buffer(1, "positions_other", positions)};
+    copy.push_constants = {uint32_t(n)};
+    copy.groups_x = groups(n);
+    program.passes.push_back(std::move(copy));
+  }
+  return {program};
+}
 
 }  // namespace tb::mass_spring

@@ -203,17 +203,13 @@ SoftBodyRig::SoftBodyRig(const SoftBodyInput& input, const Vec3d& origin)
   }
 }
 
-Vec3d SoftBodyRig::offset(size_t v, double t_s) const {
-  Vec3d total{0, 0, 0};
-  const uint32_t s = bone_segment_[v];
+Vec3d SoftBodyRig::stompAmplitude(size_t v, size_t s) const {
+  const Stomp& stomp = input_.stomps[s];
+  const uint32_t segment = bone_segment_[v];
   const double u = bone_parameter_[v];
-  for (const Stomp& stomp : input_.stomps) {
-    const double amplitude =
-        (1 - u) * stomp.joint_amplitudes_m[s] + u * stomp.joint_amplitudes_m[s + 1];
-    total = total + (amplitude * std::sin(2 * std::numbers::pi * stomp.frequency_hz * t_s)) *
-                        stomp.direction;
-  }
-  return total;
+  const double amplitude =
+      (1 - u) * stomp.joint_amplitudes_m[segment] + u * stomp.joint_amplitudes_m[segment + 1];
+  return amplitude * stomp.direction;
 }
 
 SpringSystem buildSpringSystem(const SoftBodyInput& input, const SoftBodyRig& rig,

@@ -74,9 +74,11 @@ class SoftBodyRig {
   const std::vector<double>& softness() const { return softness_; }
   // The chain point closest to vertex v at rest.
   const Vec3d& restBonePoint(size_t v) const { return bone_point_[v]; }
-  // The animation's translation of vertex v's closest chain point at time t (the skinning
-  // is rigid per chain point: the vertex and its bone point move together).
-  Vec3d offset(size_t v, double t_s) const;
+  // Stomp s's translation of vertex v's closest chain point at amplitude 1 (direction x the
+  // amplitude interpolated between the segment's joints); the skinning is rigid per chain
+  // point: the vertex and its bone point move together by the sum over the stomps of
+  // stompAmplitude(v, s) * sin(2 pi f_s t).
+  Vec3d stompAmplitude(size_t v, size_t s) const;
 
  private:
   const SoftBodyInput& input_;

@@ -76,6 +76,33 @@ TEST(MassSpringGpu, ColouredGaussSeidelAgreesWithTheCpuTwinWithTheSameColouring)
 TEST(MassSpringGpu, SerialGaussSeidelHasNoGpuPath) {
   auto instance = testing::buildMassSpring(testing::massSpringScenario(), "gs_serial");
   EXPECT_TRUE(testing::massSpringOf(*instance).solverPrograms().empty());
+  EXPECT_TRUE(testing::massSpringOf(*instance).gpuPrograms().empty());
+}
+
+// Whole steps (gpuPrograms(): animation, blast, Verlet, 8 solver dispatches) of each bundled
+// scenario against the CPU twin's step(), after one second (60 steps) in one submission.
+TEST(MassSpringGpu, WholeStepsAgreeWithTheCpuTwinWithinTheUlpBound) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  constexpr uint32_t kSteps = 60;
+  for (const char* animation : {testing::kStompAnimation, testing::kBlastAnimation}) {
+    const Scenario scenario = testing::massSpringScenario(animation);
+    for (const char* variant : {"gs_colored", "jacobi", "jacobi_chebyshev"}) {
+      auto instance = testing::buildMassSpring(scenario, variant);
+      MassSpringSimulation& simulation = testing::massSpringOf(*instance);
+      gpu::ComputeRunner runner(context, simulation.gpuPrograms());
+      runner.run(kSteps);
+      const std::vector<Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
+          runner.read("positions"), simulation.springs().vertex_count);
+      const std::vector<Vec3f> start = simulation.solverState().x;
+      for (uint32_t k = 0; k < kSteps; ++k) simulation.step(scenario.time_step_s);
+      EXPECT_GT(maxUlp(start, simulation.solverState().x), 1000) << variant;
+      const int64_t ulp = maxUlp(gpu_positions, simulation.solverState().x);
+      std::printf("%s, %s: max %lld ulp after %u steps\n", variant,
+                  animation == testing::kStompAnimation ? "stomp" : "blast",
+                  static_cast<long long>(ulp), kSteps);
+      EXPECT_LE(ulp, kUlpBound) << variant;
+    }
+  }
 }
 
 }  // namespace
