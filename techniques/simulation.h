@@ -68,6 +68,11 @@ struct SimulationState {
 struct SimulationFootprint {
   uint64_t state_bytes = 0;      // the per-element state (both ping-pong copies when it has two)
   uint64_t auxiliary_bytes = 0;  // topology, constraint batches, acceleration trees, counters
+  // The alternative a user would pick for the same scenario and output resolution (wave
+  // particles: a height-field grid solver), in bytes resident, and in words; 0 and empty
+  // when the simulation names none. The memory measure sets the two side by side.
+  uint64_t alternative_bytes = 0;
+  std::string alternative;
   uint64_t total() const { return state_bytes + auxiliary_bytes; }
   bool operator==(const SimulationFootprint&) const = default;
 };

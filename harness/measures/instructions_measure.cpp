@@ -79,17 +79,24 @@ class InstructionsMeasure final : public Measure {
          "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
          "two levels, tessellator and TES JIT code together",
          "summaries (report, table, advise) read the evaluation-stage rows: spirv_O, vector "
-         "expansion, the .tese stages (the work per tessellated vertex)"},
+         "expansion, the .tese stages (the work per tessellated vertex)",
+         "simulations: one spirv_O row pair per compute pass of each step program (program = "
+         "the program's name), specialised for the variant; a loop over walls or tree nodes "
+         "counts once; no counting_scalar rows"},
         {{"source", "spirv_O"}, {"expansion", "vector"}, {"stage", "*.tese"}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
+    return {{MeasureNeed::kSurfaceOrSimulation}, VariantPolicy::kEveryVariant, {}};
   }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
+    if (input.patches == nullptr) {  // a simulation: its compute passes, no counting scalar
+      staticRows(input, &result);
+      return result;
+    }
     if (mixesDomains(*input.patches)) {
       // Only records whose patches mix quads and triangles have a program key.
       result.notes.push_back(
@@ -112,8 +119,18 @@ class InstructionsMeasure final : public Measure {
   };
 
   static std::vector<ShaderSet> shaderSets(const MeasureInput& input) {
-    const std::vector<gpu::GpuPatchProgram> programs = input.patches->gpuPrograms();
     std::vector<ShaderSet> sets;
+    if (input.patches == nullptr) {
+      // A simulation: one set per compute pass (its own specialisation), named by program.
+      if (input.simulation == nullptr) return sets;
+      for (const gpu::GpuComputeProgram& program : input.simulation->gpuPrograms()) {
+        for (const gpu::GpuComputePass& pass : program.passes) {
+          sets.push_back({program.name, {pass.shader}, pass.specialization});
+        }
+      }
+      return sets;
+    }
+    const std::vector<gpu::GpuPatchProgram> programs = input.patches->gpuPrograms();
     for (const gpu::GpuPatchProgram& program : programs) {
       const PatchDomain domain =
           program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;

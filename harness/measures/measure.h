@@ -45,6 +45,10 @@ struct MeasureInfo {
 enum class MeasureNeed : uint8_t {
   kSurface,     // MeasureInput::patches (TechniqueInstance::surface())
   kSimulation,  // MeasureInput::simulation (TechniqueInstance::simulation())
+  // Either capability: the measure applies to both families (memory, instructions) and reads
+  // MeasureInput::patches or MeasureInput::simulation, whichever is non-null (a simulation
+  // is freshly built for it, as for kSimulation).
+  kSurfaceOrSimulation,
   // MeasureInput::view: the suite runs the measure once per view of each camera path and
   // adds the row keys "camera_path" and "view" (the view's index on the path) to its rows.
   kView,
@@ -74,7 +78,8 @@ enum class VariantPolicy : uint8_t {
   kEveryVariant,  // the figures follow the variant (errors, cracks, instruction counts)
   // The figures follow the patch data alone (memory): the default variant, and each other
   // variant whose SurfacePatches::footprint() differs from the default's on the asset
-  // (gregory_acc/quads_only: 3 quads per triangle; phong/edge: per-edge normals).
+  // (gregory_acc/quads_only: 3 quads per triangle; phong/edge: per-edge normals). Every
+  // variant of a simulation (each keeps its own state).
   kWhenPatchDataDiffers,
   // The default variant in the default suite, every variant in --suite full (culling: the
   // figures follow the variant, but a frame costs a render and a device run per policy).

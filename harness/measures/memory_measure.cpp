@@ -69,6 +69,37 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   return kTable;
 }
 
+// Simulations: the bytes they keep resident (Simulation::footprint) against the alternative
+// a user would pick for the same scenario (wave particles: a height-field grid solver at the
+// output's resolution). alternative_over_simulation above 1: the simulation is the smaller.
+const MetricTable<SimulationFootprint>& simulationTable() {
+  using D = Direction;
+  using F = SimulationFootprint;
+  static const MetricTable<F> kTable{
+      {"state_bytes", Unit::kBytes, D::kLowerIsBetter, &F::state_bytes},
+      {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter, &F::auxiliary_bytes},
+      {"simulation_bytes", Unit::kBytes, D::kLowerIsBetter,
+       [](const F& f) { return double(f.total()); }},
+      {"alternative_bytes", Unit::kBytes, D::kNone,
+       [](const F& f) -> std::optional<double> {
+         if (f.alternative_bytes == 0) return std::nullopt;
+         return double(f.alternative_bytes);
+       }},
+      {"alternative_over_simulation", Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (f.alternative_bytes == 0 || f.total() == 0) return std::nullopt;
+         return double(f.alternative_bytes) / double(f.total());
+       }},
+  };
+  return kTable;
+}
+
+std::vector<MetricSpec> memorySpecs() {
+  std::vector<MetricSpec> specs = memoryTable().specs();
+  for (const MetricSpec& spec : simulationTable().specs()) specs.push_back(spec);
+  return specs;
+}
+
 class MemoryMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
@@ -77,7 +108,7 @@ class MemoryMeasure final : public Measure {
         "Memory footprint against plain triangle meshes",
         "bytes of the technique's data (plus a 16-bit displacement map) against the equivalent "
         "welded triangle mesh at uniform levels 8, 16, 32, 64",
-        memoryTable().specs(),
+        memorySpecs(),
         {"plain_over_technique", "technique_with_displacement_bytes"},
         {"plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
          "32-bit indices, with the tessellator's point and triangle counts",
@@ -98,7 +129,10 @@ class MemoryMeasure final : public Measure {
          "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
          "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
          "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
-         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)"},
+         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)",
+         "simulations (rows keyed by state = resident): Simulation::footprint, the state and "
+         "auxiliary buffers the GPU keeps for the scenario, against the alternative the "
+         "simulation names (its record's note says which)"},
         {},
         // One line per technique/variant: how the saving grows with the level (median over
         // the assets; levels double, so a log x spaces them evenly).
@@ -113,12 +147,23 @@ class MemoryMeasure final : public Measure {
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kWhenPatchDataDiffers, {}};
+    return {{MeasureNeed::kSurfaceOrSimulation}, VariantPolicy::kWhenPatchDataDiffers, {}};
   }
 
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
+    if (input.patches == nullptr && input.simulation != nullptr) {
+      const SimulationFootprint footprint = input.simulation->footprint();
+      MetricRow row;
+      row.keys["state"] = "resident";
+      row.metrics = simulationTable().metrics(footprint);
+      result.rows.push_back(std::move(row));
+      if (!footprint.alternative.empty()) {
+        result.notes.push_back("alternative: " + footprint.alternative);
+      }
+      return result;
+    }
     for (uint32_t level : kMemoryLevels) {
       const MemoryRowFigures figures{measureMemory(*input.patches, level),
                                      input.patches->patchCount(),

@@ -31,6 +31,10 @@ bool measureRuns(const MeasureRequirements& requirements, const Technique& techn
                  const Capabilities& capabilities, const VariantStanding& standing) {
   if (requirements.has(MeasureNeed::kSurface) && !capabilities.surface) return false;
   if (requirements.has(MeasureNeed::kSimulation) && !capabilities.simulation) return false;
+  if (requirements.has(MeasureNeed::kSurfaceOrSimulation) && !capabilities.surface &&
+      !capabilities.simulation) {
+    return false;
+  }
   if (requirements.technique_filter && !requirements.technique_filter(technique)) return false;
   return policyAdmits(requirements.variants, standing);
 }

@@ -159,7 +159,8 @@ MeasureResult runMeasure(const SuiteRun& run, const Measure& measure, MeasureInp
                          const TechniqueInput& technique_input, TechniqueInstance* instance) {
   const MeasureRequirements requirements = measure.requirements();
   std::unique_ptr<TechniqueInstance> fresh;
-  if (requirements.has(MeasureNeed::kSimulation)) {
+  if (requirements.has(MeasureNeed::kSimulation) ||
+      (requirements.has(MeasureNeed::kSurfaceOrSimulation) && instance->simulation() != nullptr)) {
     fresh = input.technique.build(technique_input, input.variant);
     instance = fresh.get();
   }
@@ -249,7 +250,10 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   StepOutcome outcome;
   // Measures that may run, before building: no instance is built that no measure would use.
   const bool full = run.suite == SuiteMode::kFull;
-  const VariantStanding maybe{is_default, default_footprint->has_value(), full};
+  const VariantStanding maybe{
+      is_default,
+      default_footprint->has_value() || technique.info().family == TechniqueFamily::kSimulation,
+      full};
   bool any_may_run = false;
   for (const Measure* measure : run.measures) {
     any_may_run |=
@@ -278,8 +282,10 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   }
   const SurfacePatches* patches = instance->surface();
   if (patches && is_default) *default_footprint = patches->footprint();
+  // A simulation's variants each keep their own state (wave particles' lp2 a fixed buffer).
   const bool own_patch_data =
-      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint);
+      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint) ||
+      (!patches && instance->simulation() != nullptr);
   std::vector<const Measure*> runnable;
   for (const Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),

@@ -2,6 +2,7 @@
 // emit (later sources), prepare (the next dispatch's size), with ping-pong particle and
 // counter buffers, run by core/gpu/compute_runner.h. No read-back inside the step loop.
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 #include "techniques/wave_particles/wave_particles.h"
@@ -35,6 +36,52 @@ std::vector<Particle> WaveParticleSimulation::decodeParticles(
   std::vector<Particle> particles(count);
   if (count > 0) std::memcpy(particles.data(), particle_words.data(), count * sizeof(Particle));
   return particles;
+}
+
+// The output of each step: clear, splat (indirect, from the step's output counter), filter,
+// normal. Splat sums are fixed-point (kSplatScaleBits below the largest amplitude) so the
+// map does not depend on the order of the atomic adds.
+gpu::GpuComputeProgram WaveParticleSimulation::heightFieldProgram(size_t) const {
+  const uint32_t n = heightFieldNodes();
+  const uint64_t nodes = uint64_t(n) * n;
+  const double spacing = scene_.height_field_spacing_m, radius = scene_.particle_radius_m;
+  const int reach = int(std::floor(radius / spacing));
+  std::vector<uint32_t> kernel;
+  for (int dj = -reach; dj <= reach; ++dj) {
+    for (int di = -reach; di <= reach; ++di) {
+      kernel.push_back(bits(float(particleShape(std::hypot(di * spacing, dj * spacing), radius))));
+    }
+  }
+  const double scale = splatScale();
+  const uint32_t groups = uint32_t((nodes + 63) / 64);
+  const uint64_t particle_bytes = uint64_t(std::max(settings_.capacity, 1u)) * sizeof(Particle);
+  gpu::GpuComputePass clear;
+  clear.shader = "wave_particles/clear.comp";
+  clear.buffers = {{0, "splat_accumulators", nodes * 4, {}, true, ""}};
+  clear.push_constants = {uint32_t(nodes)};
+  clear.groups_x = groups;
+  gpu::GpuComputePass splat;
+  splat.shader = "wave_particles/splat.comp";
+  splat.buffers = {{0, "particles_b", particle_bytes, {}, true, "particles_a"},
+                   {1, "counter_b", 16, {}, true, "counter_a"},
+                   {2, "splat_accumulators", nodes * 4, {}, true, ""}};
+  splat.push_constants = {bits(float(-scene_.domain_size_m / 2)), bits(float(spacing)),
+                          bits(settings_.speed_m_per_s), bits(float(scale)), n};
+  splat.indirect_buffer = "counter_b";
+  gpu::GpuComputePass filter;
+  filter.shader = "wave_particles/filter.comp";
+  filter.buffers = {{0, "splat_accumulators", nodes * 4, {}, true, ""},
+                    {1, "filter_kernel", kernel.size() * 4, kernel, true, ""},
+                    {2, "height_map", nodes * 4, {}, true, ""}};
+  filter.push_constants = {n, uint32_t(reach), bits(float(1.0 / scale))};
+  filter.groups_x = groups;
+  gpu::GpuComputePass normal;
+  normal.shader = "wave_particles/normal.comp";
+  normal.buffers = {{0, "height_map", nodes * 4, {}, true, ""},
+                    {1, "displacement_map", nodes * 16, {}, true, ""}};
+  normal.push_constants = {n, bits(float(spacing))};
+  normal.groups_x = groups;
+  return {"height_field", {clear, splat, filter, normal}};
 }
 
 std::vector<gpu::GpuComputeProgram> WaveParticleSimulation::gpuPrograms() const {
@@ -100,7 +147,7 @@ std::vector<gpu::GpuComputeProgram> WaveParticleSimulation::gpuPrograms() const 
                      {2, "stats", 16, {count, 0, 0, 0}, true, ""}};
   prepare.push_constants = {settings_.capacity};
   step.passes.push_back(prepare);
-  return {step};
+  return {step, heightFieldProgram(start.particles_.size())};
 }
 
 }  // namespace tb::wave_particles

@@ -1,6 +1,7 @@
 #include "techniques/wave_particles/wave_particles.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -139,12 +140,43 @@ SimulationFootprint WaveParticleSimulation::footprint() const {
                               + table_.theta.size() * 3 * 4           // subdivision table
                               + pending_.size() * sizeof(Particle)    // later emissions
                               + 16;                                   // statistics
+  // The output and its making: splat accumulators (int), the height map (float) and the
+  // displacement map (normal xyz + height, 4 floats) per node, and the filter kernel.
+  const uint64_t nodes = heightFieldNodes();
+  const uint64_t reach = uint64_t(std::floor(scene_.particle_radius_m / scene_.height_field_spacing_m));
+  footprint.auxiliary_bytes += nodes * nodes * (4 + 4 + 16) + (2 * reach + 1) * (2 * reach + 1) * 4;
+  // The alternative: a leapfrog height-field solver on the same grid, whose current field is
+  // the output: current and previous heights (float) and a wall mask (byte) per node.
+  footprint.alternative_bytes = nodes * nodes * (4 + 4 + 1);
+  footprint.alternative =
+      "a height-field wave-equation grid solver at the output's resolution (" +
+      std::to_string(nodes) + "^2 nodes: current and previous height in float, a wall byte)";
   return footprint;
 }
 
 HeightField WaveParticleSimulation::heightField() const {
   return splatAndFilter(particles_, settings_.speed_m_per_s, scene_.domain_size_m,
                         scene_.height_field_spacing_m, scene_.particle_radius_m);
+}
+
+uint32_t WaveParticleSimulation::heightFieldNodes() const {
+  return uint32_t(std::lround(scene_.domain_size_m / scene_.height_field_spacing_m)) + 1;
+}
+
+double WaveParticleSimulation::splatScale() const {
+  return std::ldexp(1.0, 20) / std::max(scene_.maxAmplitude(), 1e-30);
+}
+
+HeightField WaveParticleSimulation::heightFieldFromWords(const std::vector<uint32_t>& words) const {
+  HeightField field;
+  field.origin_m = -scene_.domain_size_m / 2;
+  field.spacing_m = scene_.height_field_spacing_m;
+  field.nodes = heightFieldNodes();
+  field.height_m.resize(size_t(field.nodes) * field.nodes);
+  for (size_t i = 0; i < field.height_m.size(); ++i) {
+    field.height_m[i] = std::bit_cast<float>(words.at(i));
+  }
+  return field;
 }
 
 double WaveParticleSimulation::heightAt(double x_m, double y_m) const {

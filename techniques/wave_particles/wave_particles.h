@@ -55,8 +55,16 @@ class WaveParticleSimulation final : public Simulation {
                                                const std::vector<uint32_t>& counter_words,
                                                uint32_t capacity);
 
+  // The height-field grid: nodes per side, and the fixed-point scale of the GPU splat
+  // (units per metre: 2^20 over the largest source amplitude).
+  uint32_t heightFieldNodes() const;
+  double splatScale() const;
+  // The GPU height map (buffer "height_map" of gpuPrograms()) as a HeightField.
+  HeightField heightFieldFromWords(const std::vector<uint32_t>& height_words) const;
+
  private:
   void emitPending(uint32_t step, std::vector<Particle>* out);
+  gpu::GpuComputeProgram heightFieldProgram(size_t initial_count) const;
 
   Scenario scenario_;
   WaveScene scene_;

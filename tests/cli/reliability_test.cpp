@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -86,6 +87,15 @@ std::vector<BadInput> badInputs() {
   const std::string camera = run + "--technique phong --measure adaptivity --asset catmark_cube "
                                    "--camera ";
   const std::string orbit = readFile(testing::assetPath("cameras/orbit.json"));
+  const std::string scenario = run + "--technique wave_particles --measure wave_error --scenario ";
+  const std::string point = readFile(testing::assetPath("scenarios/wave_point_impulse.json"));
+  // The bundled point impulse with `from` replaced (it must be there).
+  auto pointWith = [&](const std::string& from, const std::string& to) {
+    std::string text = point;
+    const size_t at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("not in the scenario: " + from);
+    return text.replace(at, from.size(), to);
+  };
   // The bundled orbit with one top-level field's value replaced as text (1e999 is no
   // double a JSON library would write).
   auto orbitWith = [&](const std::string& field, const std::string& value) {
@@ -143,6 +153,24 @@ std::vector<BadInput> badInputs() {
        camera + "{dir}/fov.json", {"{dir}/fov.json", "fov_y_deg"}},
       {"camera field of the wrong type", {{"frames.json", orbitWith("frames", "\"24\"")}},
        camera + "{dir}/frames.json", {"{dir}/frames.json", "frames"}},
+      // Scenario files (run --scenario), and what a simulation cannot take.
+      {"scenario missing", {}, scenario + "{dir}/missing.json",
+       {"{dir}/missing.json", "no such file"}},
+      {"scenario malformed JSON", {{"cut.json", point.substr(0, point.size() / 2)}},
+       scenario + "{dir}/cut.json", {"{dir}/cut.json", "malformed JSON"}},
+      {"scenario binary garbage", {{"garbage.json", binaryGarbage(512)}},
+       scenario + "{dir}/garbage.json", {"{dir}/garbage.json", "malformed JSON"}},
+      {"scenario non-finite field", {{"huge.json", pointWith("\"time_step_s\": 0.02", "\"time_step_s\": 1e999")}},
+       scenario + "{dir}/huge.json", {"{dir}/huge.json", "not a finite number"}},
+      {"scenario duration below the step", {{"short.json", pointWith("\"duration_s\": 3.0", "\"duration_s\": 0.01")}},
+       scenario + "{dir}/short.json", {"{dir}/short.json", "duration_s", "time_step_s"}},
+      {"scenario missing parameter",
+       {{"speed.json", pointWith("\"wave_speed_m_per_s\": 1.0,", "")}},
+       scenario + "{dir}/speed.json", {"{dir}/speed.json", "parameters.wave_speed_m_per_s", "missing"}},
+      {"scenario source outside the domain",
+       {{"far.json", pointWith("\"position_m\": [0.0, 0.0]", "\"position_m\": [9.0, 0.0]")}},
+       scenario + "{dir}/far.json", {"{dir}/far.json", "wave_particles.sources[0].position_m"}},
+      {"unknown scenario", {}, scenario + "no_such_scenario", {"no_such_scenario", "not a bundled scenario"}},
       // Names and options.
       {"unknown technique", {}, run + "--technique nope", {"--technique", "nope"}},
       {"unknown measure", {}, run + "--measure nope", {"--measure", "nope"}},

@@ -167,7 +167,7 @@ TEST(Capabilities, EachSimulationMeasureGetsAFreshSimulation) {
   }
 }
 
-TEST(Capabilities, RegisteredMeasuresNeedASurfaceAndSkipASimulation) {
+TEST(Capabilities, OnASimulationOnlyTheMeasuresForSimulationsRun) {
   const SimulationDoubleTechnique chain;
   SuiteSelection selection;
   selection.techniques = {&chain};
@@ -175,8 +175,43 @@ TEST(Capabilities, RegisteredMeasuresNeedASurfaceAndSkipASimulation) {
   selection.scenarios = {testing::chainScenario()};
   Results results;
   runSuite(selection, nullptr, &results);  // every registered measure, published_figures included
-  EXPECT_TRUE(results.records.empty());
   EXPECT_TRUE(results.skipped.empty());
+  ASSERT_EQ(results.records.size(), 1u);
+  std::vector<std::string> ids;
+  for (const MeasureResult& measure : results.records[0].measures) ids.push_back(measure.measure);
+  // wave_error is for wave particles only; the surface measures need a surface.
+  EXPECT_EQ(ids, (std::vector<std::string>{"instructions", "memory", "sim_cost"}));
+  for (const MeasureResult& measure : results.records[0].measures) {
+    EXPECT_EQ(measure.status, MeasureStatus::kOk) << measure.measure << ": " << measure.reason;
+  }
+  // The chain has no GPU path and no shaders: those parts are skips with their reason.
+  const MeasureResult& instructions = results.records[0].measures[0];
+  ASSERT_EQ(instructions.rows.size(), 1u);
+  EXPECT_EQ(instructions.rows[0].status, MeasureStatus::kSkipped);
+  // 4 masses x (position + velocity) in float: 32 bytes, as SpringChain::footprint says.
+  EXPECT_EQ(metric(results.records[0].measures[1].rows.at(0), "state_bytes").value, 32);
+}
+
+TEST(Capabilities, ASimulationRunsOnlyOnTheScenariosWrittenForIt) {
+  const SimulationDoubleTechnique chain;
+  const SimulationStepMeasure simulation_measure;
+  Scenario mine = testing::chainScenario(), any = testing::chainScenario(),
+           other = testing::chainScenario();
+  mine.name = "mine";
+  mine.technique = "test_spring_chain";
+  any.name = "any";
+  other.name = "other";
+  other.technique = "wave_particles";
+  SuiteSelection selection;
+  selection.techniques = {&chain};
+  selection.assets = {resolveAsset("catmark_cube")};
+  selection.scenarios = {mine, any, other};
+  selection.measures = {&simulation_measure};
+  Results results;
+  runSuite(selection, nullptr, &results);
+  std::vector<std::string> assets;
+  for (const Record& record : results.records) assets.push_back(record.asset);
+  EXPECT_EQ(assets, (std::vector<std::string>{"mine", "any"}));
 }
 
 TEST(Capabilities, AViewMeasureRunsOncePerViewOfTheTestPathWithTheViewAsRowKeys) {
@@ -288,8 +323,17 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   EXPECT_EQ(requirements("instructions").variants, VariantPolicy::kEveryVariant);
   EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryVariant);
   EXPECT_EQ(requirements("published_figures").variants, VariantPolicy::kDefaultOnly);
+  // Which family each measure applies to (memory and instructions: both).
   for (const Measure* measure : MeasureRegistry::instance().all()) {
-    EXPECT_TRUE(measure->requirements().has(MeasureNeed::kSurface)) << measure->info().id;
+    const MeasureRequirements r = measure->requirements();
+    const std::string id = measure->info().id;
+    if (id == "memory" || id == "instructions") {
+      EXPECT_TRUE(r.has(MeasureNeed::kSurfaceOrSimulation)) << id;
+    } else if (id == "sim_cost" || id == "wave_error") {
+      EXPECT_TRUE(r.has(MeasureNeed::kSimulation)) << id;
+    } else {
+      EXPECT_TRUE(r.has(MeasureNeed::kSurface)) << id;
+    }
   }
   // published_figures: only the technique with the probe shader.
   const SurfaceDoubleTechnique surface;

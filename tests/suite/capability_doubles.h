@@ -88,7 +88,7 @@ class SpringChain final : public Simulation {
     return s;
   }
   SimulationFootprint footprint() const override {
-    return {x_.size() * 2 * sizeof(float), 0};  // position + velocity per mass, in float
+    return {x_.size() * 2 * sizeof(float), 0, 0, ""};  // position + velocity per mass, in float
   }
 
  private:
@@ -119,7 +119,7 @@ class SimulationDoubleTechnique final : public Technique {
 };
 
 inline Scenario chainScenario() {
-  return {"test/chain", "", 0.01, 0.1, {{"masses", 4}, {"stiffness_n_per_m", 10}}};
+  return {"test/chain", "", 0.01, 0.1, {{"masses", 4}, {"stiffness_n_per_m", 10}}, "", {}, ""};
 }
 
 }  // namespace tb::testing

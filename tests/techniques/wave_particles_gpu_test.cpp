@@ -116,12 +116,55 @@ TEST(WaveParticlesGpu, LaterEmissionsAndTheGpuCounterFollowTheCpu) {
   }
 }
 
+TEST(WaveParticlesGpu, TheGpuHeightMapMatchesTheCpuSplatAndFilter) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const char* name : {"wave_point_impulse", "wave_straight_wall"}) {
+    const Scenario scenario = resolveScenario(name);
+    WaveParticleSimulation cpu(scenario, Variant::kFull);
+    gpu::ComputeRunner runner(context, cpu.gpuPrograms());
+    runner.run(kSteps);
+    for (uint32_t s = 0; s < kSteps; ++s) cpu.step(scenario.time_step_s);
+    const HeightField expected = cpu.heightField();
+    const HeightField actual = cpu.heightFieldFromWords(runner.read("height_map"));
+    ASSERT_EQ(actual.height_m.size(), expected.height_m.size());
+    double worst = 0, peak = 0;
+    for (size_t i = 0; i < expected.height_m.size(); ++i) {
+      worst = std::max(worst, std::abs(actual.height_m[i] - expected.height_m[i]));
+      peak = std::max(peak, std::abs(expected.height_m[i]));
+    }
+    // Fixed-point splat (2^-20 of the amplitude per contribution) and float filter sums.
+    const double amplitude = cpu.scene().maxAmplitude();
+    std::printf("%s: GPU height map vs CPU: max |dh| = %.3g m (peak %.3g m, amplitude %.3g m)\n",
+                name, worst, peak, amplitude);
+    EXPECT_GT(peak, 1e-3 * amplitude);
+    EXPECT_LT(worst, 1e-5 * amplitude);
+    // The displacement map: height in w, unit normals, flat (0, 0, 1) where the water is still.
+    const std::vector<uint32_t> words = runner.read("displacement_map");
+    const uint32_t n = actual.nodes;
+    for (uint32_t c : {0u, n * n / 2 + n / 3, n * n - 1}) {
+      const float* v = reinterpret_cast<const float*>(&words[size_t(c) * 4]);
+      EXPECT_EQ(v[3], float(actual.height_m[c]));
+      EXPECT_NEAR(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), 1.0, 1e-6);
+    }
+    const float* corner = reinterpret_cast<const float*>(&words[0]);
+    EXPECT_EQ(corner[2], 1.0f);
+    // What the runner allocated is what the simulation says it keeps resident (each buffer
+    // rounded up to 16 bytes; full binds a placeholder tree).
+    const uint64_t footprint = cpu.footprint().total();
+    EXPECT_GE(runner.residentBytes(), footprint);
+    EXPECT_LE(runner.residentBytes(), footprint + 256);
+  }
+}
+
 TEST(WaveParticlesGpu, TheUpdateIsSizedByAnIndirectDispatchFromTheCounter) {
   const Scenario scenario = resolveScenario("wave_point_impulse");
   const WaveParticleSimulation simulation(scenario, Variant::kLp2);
   const std::vector<gpu::GpuComputeProgram> programs = simulation.gpuPrograms();
-  ASSERT_EQ(programs.size(), 1u);
+  ASSERT_EQ(programs.size(), 2u);  // the step, then the height field
   const gpu::GpuComputePass& update = programs[0].passes.front();
+  const gpu::GpuComputePass& splat = programs[1].passes[1];
+  EXPECT_EQ(splat.shader, "wave_particles/splat.comp");
+  EXPECT_EQ(splat.indirect_buffer, "counter_b") << "the step's output counter";
   EXPECT_EQ(update.shader, "wave_particles/update.comp");
   EXPECT_EQ(update.indirect_buffer, "counter_a");
   EXPECT_EQ(update.indirect_offset_bytes, 0u);
