@@ -118,8 +118,10 @@ class ConvergenceMeasure final : public Measure {
         "iterations to 1e-3 and 1e-5 of the initial residual, and the residual a budget of "
         "8 GPU dispatches per frame reaches, with and without goal springs",
         convergenceTable().specs(),
+        // iterations_to_1e-3's worst counts only the rows that reached it; reached_1e-3's
+        // worst (0) says when one did not.
         {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
-         "iterations_to_1e-3", "dispatches_per_iteration"},
+         "iterations_to_1e-3", "reached_1e-3", "dispatches_per_iteration"},
         {"frame: the rest pose's constraints (every spring at rest length, every goal spring on "
          "its vertex: satisfiable), from positions displaced by a hashed jitter of up to 0.3 "
          "mean spring lengths per coordinate",
