@@ -95,7 +95,8 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
         read.vec3(section["bone_chain_m"][j], "bone_chain_m[" + std::to_string(j) + "]"));
   }
   const Json& stiffness = read.object(section, "stiffness", "stiffness");
-  input.surface_stiffness = read.number(stiffness, "surface", "stiffness.surface", 1e-6, 1);
+  input.surface_stiffness = read.number(stiffness, "surface", "stiffness.surface", 0, 1);
+  if (!(input.surface_stiffness > 0)) read.fail("stiffness.surface", "must be a number in (0, 1]");
   input.inner_stiffness = read.number(stiffness, "inner", "stiffness.inner", 0, 1);
   input.goal_stiffness = read.number(stiffness, "goal", "stiffness.goal", 0, 1);
   if (section.contains("softness")) {
