@@ -20,6 +20,10 @@ struct SolverCounts {
   // serial solver reports what the same sweep costs coloured.
   uint32_t dispatches_per_iteration = 1;
   uint32_t colours = 0;         // independent constraint batches; 0 when not coloured
+  // The same greedy colouring of subsets, for the seed's "at most 8 batches" (its DX9
+  // version had surface and goal springs only): surface springs alone, surface and goal.
+  uint32_t colours_surface = 0;
+  uint32_t colours_surface_goal = 0;
   uint64_t constraints = 0;     // constraints projected per iteration
   uint64_t vertices = 0;        // simulated mass points
   uint64_t constraint_ends = 0; // vertex visits per iteration (2 per spring, 1 per anchor spring)

@@ -195,6 +195,8 @@ SolverCounts MassSpringSimulation::counts() const {
   c.constraints = system_.springs.size();
   c.vertices = system_.vertex_count;
   c.constraint_ends = system_.ends.size();
+  c.colours_surface = colourCountOf(system_, {SpringKind::kSurface});
+  c.colours_surface_goal = colourCountOf(system_, {SpringKind::kSurface, SpringKind::kGoal});
   c.whole_iterations_under_budget =
       kind == SolverKind::kGaussSeidelSerial && !solver_.settings().colour_major;
   return c;

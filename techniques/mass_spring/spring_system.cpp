@@ -16,7 +16,24 @@ void buildSolverTables(SpringSystem& system) {
   };
   system.colour_of.assign(system.springs.size(), 0);
   system.colour_count = 0;
-  for (size_t s = 0; s < system.springs.size(); ++s) {
+  // Welsh-Powell order: springs at the busiest vertices first (the degree of a spring is
+  // the larger spring count of its vertices), ties in spring order.
+  std::vector<uint32_t> degree(n, 0);
+  for (const Spring& spring : system.springs) {
+    if (spring.a < n) ++degree[spring.a];
+    if (!spring.anchored() && spring.b < n) ++degree[spring.b];
+  }
+  auto springDegree = [&](const Spring& spring) {
+    const uint32_t a = spring.a < n ? degree[spring.a] : 0;
+    const uint32_t b = !spring.anchored() && spring.b < n ? degree[spring.b] : 0;
+    return std::max(a, b);
+  };
+  std::vector<uint32_t> visit(system.springs.size());
+  for (uint32_t s = 0; s < visit.size(); ++s) visit[s] = s;
+  std::stable_sort(visit.begin(), visit.end(), [&](uint32_t x, uint32_t y) {
+    return springDegree(system.springs[x]) > springDegree(system.springs[y]);
+  });
+  for (const uint32_t s : visit) {
     const Spring& spring = system.springs[s];
     if (spring.a >= n || (!spring.anchored() && spring.b >= n)) {
       throw std::logic_error("mass_spring: spring " + std::to_string(s) + " ends out of range");
@@ -51,6 +68,19 @@ void buildSolverTables(SpringSystem& system) {
     system.ends[fill[spring.a]++] = {spring.b, spring.rest_m, spring.weight};
     if (!spring.anchored()) system.ends[fill[spring.b]++] = {spring.a, spring.rest_m, spring.weight};
   }
+}
+
+uint32_t colourCountOf(const SpringSystem& system, std::initializer_list<SpringKind> kinds) {
+  SpringSystem subset;
+  subset.vertex_count = system.vertex_count;
+  subset.anchor_count = system.anchor_count;
+  for (const Spring& spring : system.springs) {
+    if (std::find(kinds.begin(), kinds.end(), spring.kind) != kinds.end()) {
+      subset.springs.push_back(spring);
+    }
+  }
+  buildSolverTables(subset);
+  return subset.colour_count;
 }
 
 ColourConflict findColourConflict(const SpringSystem& system) {

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 namespace tb::mass_spring {
@@ -44,9 +45,10 @@ struct SpringSystem {
   std::vector<Spring> springs;
   double length_scale_m = 1;  // mean surface rest length: scales anchor distances of rest 0
 
-  // Greedy graph colouring in spring order: each spring takes the smallest colour used by
-  // no other spring at either of its vertices (anchors are never shared: each is read
-  // only). colour_of[s] for every spring.
+  // Greedy graph colouring, springs at the busiest vertices first (Welsh-Powell order, ties
+  // in spring order): each spring takes the smallest colour used by no other spring at
+  // either of its vertices (anchors are never shared: each is read only). colour_of[s] for
+  // every spring.
   std::vector<uint32_t> colour_of;
   uint32_t colour_count = 0;
   // The springs of colour c are colour_order[colour_start[c] .. colour_start[c + 1]), each
@@ -62,6 +64,10 @@ struct SpringSystem {
 
 // Fills colour_*, end_* of `system` from its springs.
 void buildSolverTables(SpringSystem& system);
+
+// The colour count the same greedy colouring gives the springs of `system` whose kind is
+// in `kinds` (in spring order).
+uint32_t colourCountOf(const SpringSystem& system, std::initializer_list<SpringKind> kinds);
 
 // A broken colouring's first conflict (two springs of one colour sharing a vertex): their
 // indices, or {-1, -1} when the colouring is valid. For tests and assertions.
