@@ -61,8 +61,8 @@ void WaveEquationSolver::addSources() {
       for (uint32_t i = 1; i + 1 < n_; ++i) {
         if (solid_[index(i, j)]) continue;
         const double x = origin + (double(i) - 1) * h, y = origin + (double(j) - 1) * h;
-        const double add = source.amplitude_m * blob(std::hypot(x - source.x_m, y - source.y_m),
-                                                     source.radius_m);
+        const double add =
+            source.amplitude_m * blob(std::hypot(x - source.x_m, y - source.y_m), source.radius_m);
         u_[index(i, j)] += add;
         u_prev_[index(i, j)] += add;  // zero initial velocity
       }

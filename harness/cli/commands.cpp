@@ -128,6 +128,15 @@ int runList(const ListArgs& args) {
       items.push_back({{"name", asset.name}, {"path", asset.path}});
       if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.path);
     }
+  } else if (args.what == "scenarios") {
+    for (const Scenario& scenario : bundledScenarios()) {
+      items.push_back({{"name", scenario.name},
+                       {"technique", scenario.technique},
+                       {"path", scenario.path},
+                       {"time_step_s", scenario.time_step_s},
+                       {"duration_s", scenario.duration_s}});
+      if (!args.json) fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
+    }
   } else if (args.what == "measures") {
     for (const Measure* m : MeasureRegistry::instance().all()) {
       const MeasureInfo& info = m->info();
@@ -139,7 +148,7 @@ int runList(const ListArgs& args) {
       if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
     }
   } else {
-    throw InputError("list", args.what, "expected techniques, assets or measures");
+    throw InputError("list", args.what, "expected techniques, assets, scenarios or measures");
   }
   if (args.json) fmt::print("{}\n", items.dump(2));
   return 0;

@@ -7,7 +7,7 @@
 namespace tb::cli {
 
 struct ListArgs {
-  std::string what;  // techniques | assets | measures
+  std::string what;  // techniques | assets | scenarios | measures
   bool json = false;
 };
 

@@ -26,10 +26,10 @@ int main(int argc, char** argv) {
   app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
 
   tb::cli::ListArgs list_args;
-  CLI::App* list = app.add_subcommand("list", "list techniques, assets or measures");
-  list->add_option("what", list_args.what, "techniques | assets | measures")
+  CLI::App* list = app.add_subcommand("list", "list techniques, assets, scenarios or measures");
+  list->add_option("what", list_args.what, "techniques | assets | scenarios | measures")
       ->required()
-      ->check(CLI::IsMember({"techniques", "assets", "measures"}));
+      ->check(CLI::IsMember({"techniques", "assets", "scenarios", "measures"}));
   list->add_flag("--json", list_args.json, "print JSON");
 
   tb::cli::RunArgs run_args;

@@ -42,7 +42,9 @@ SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu
   if (programs.empty()) {
     figures.gpu_skip_reason = "the simulation has no GPU path";
   } else if (gpu == nullptr) {
-    figures.gpu_skip_reason = gpu_unavailable.empty() ? "no Vulkan device" : gpu_unavailable;
+    figures.gpu_skip_reason = gpu_unavailable.empty()
+                                  ? std::string("no Vulkan device")
+                                  : "no Vulkan device (" + gpu_unavailable + ")";
   } else {
     gpu::ComputeRunner runner(*gpu, programs);
     const uint64_t gpu_steps = std::min<uint64_t>(steps, gpu_step_limit);
@@ -50,7 +52,8 @@ SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu
     figures.gpu_steps = gpu_steps;
     figures.gpu_resident_bytes = runner.residentBytes();
     if (gpu_steps > 0) {
-      const double seconds = std::isnan(timing.gpu_ns) ? timing.submit_to_fence_s : timing.gpu_ns * 1e-9;
+      const double seconds =
+          std::isnan(timing.gpu_ns) ? timing.submit_to_fence_s : timing.gpu_ns * 1e-9;
       figures.gpu_seconds_per_step = seconds / double(gpu_steps);
     }
   }

@@ -32,7 +32,8 @@ std::vector<MetricSpec> specs() {
       // The most alive at once; lower is cheaper (lp2's fixed buffer caps it).
       {"peak_elements", Unit::kCount, D::kLowerIsBetter},
       {"steps", Unit::kCount, D::kNone},
-      // Buffers sized for the whole run (both ping-pong copies) and the rest (Simulation::footprint).
+      // Buffers sized for the whole run (both ping-pong copies) and the rest
+      // (Simulation::footprint).
       {"state_bytes", Unit::kBytes, D::kLowerIsBetter},
       {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter},
       // Passes of one step and their dispatches (passes x repeats_per_step); best 1.
@@ -95,10 +96,11 @@ class SimCostMeasure final : public Measure {
     }
     MetricRow cpu;
     cpu.keys["part"] = "cpu";
-    cpu.metrics = {metric("peak_elements", double(figures.peak_elements), Unit::kCount),
-                   metric("steps", double(figures.steps), Unit::kCount),
-                   metric("state_bytes", double(figures.footprint.state_bytes), Unit::kBytes),
-                   metric("auxiliary_bytes", double(figures.footprint.auxiliary_bytes), Unit::kBytes)};
+    cpu.metrics = {
+        metric("peak_elements", double(figures.peak_elements), Unit::kCount),
+        metric("steps", double(figures.steps), Unit::kCount),
+        metric("state_bytes", double(figures.footprint.state_bytes), Unit::kBytes),
+        metric("auxiliary_bytes", double(figures.footprint.auxiliary_bytes), Unit::kBytes)};
     result.rows.push_back(std::move(cpu));
     if (!figures.gpu_steps) {
       result.rows.push_back(

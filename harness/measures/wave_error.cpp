@@ -68,14 +68,16 @@ std::optional<double> ringCoverage(const WaveParticleSimulation& simulation) {
   for (const wave_particles::WaveSource& source : scene.sources) {
     const double radius = c * (t - source.time_s);
     if (!(radius > 2 * r)) continue;  // the front has not left the source yet
-    const uint32_t points = std::max(64u, uint32_t(std::ceil(2 * std::numbers::pi * radius / (r / 4))));
+    const uint32_t points =
+        std::max(64u, uint32_t(std::ceil(2 * std::numbers::pi * radius / (r / 4))));
     for (uint32_t k = 0; k < points; ++k) {
       const double angle = 2 * std::numbers::pi * k / points;
       const Point2 q{source.position_m[0] + radius * std::cos(angle),
                      source.position_m[1] + radius * std::sin(angle)};
       if (std::abs(q[0]) > half - r || std::abs(q[1]) > half - r) continue;
       bool hidden = false;
-      for (const wave_particles::WaveWall& wall : scene.walls) hidden |= blocked(source.position_m, q, wall);
+      for (const wave_particles::WaveWall& wall : scene.walls)
+        hidden |= blocked(source.position_m, q, wall);
       if (hidden) continue;
       ++kept;
       for (const auto& p : positions) {
@@ -146,7 +148,8 @@ WaveErrorFigures measureWaveError(WaveParticleSimulation& simulation, uint32_t s
       probe.distance_m = std::min(probe.distance_m, std::hypot(probe.x_m - source.position_m[0],
                                                                probe.y_m - source.position_m[1]));
     }
-    for (double h : reference_trace[p]) probe.reference_peak_m = std::max(probe.reference_peak_m, std::abs(h));
+    for (double h : reference_trace[p])
+      probe.reference_peak_m = std::max(probe.reference_peak_m, std::abs(h));
     if (probe.reference_peak_m > 0) {
       const double threshold = 0.1 * probe.reference_peak_m;
       probe.reference_arrival_s = firstAbove(reference_trace[p], threshold, dt);

@@ -30,8 +30,7 @@ const MetricTable<WaveTimeFigures>& timeTable() {
       {"rms_error", Unit::kRatio, D::kLowerIsBetter, &R::rms_error},
       {"max_error", Unit::kRatio, D::kLowerIsBetter, &R::max_error},
       // 1: the ideal ring is whole; 0: no particle is left on it.
-      {"coverage", Unit::kRatio, D::kHigherIsBetter,
-       [](const R& r) { return r.coverage; }},
+      {"coverage", Unit::kRatio, D::kHigherIsBetter, [](const R& r) { return r.coverage; }},
       {"front_radius", Unit::kWorld, D::kNone, &R::front_radius_m},
       {"particles", Unit::kCount, D::kNone, &R::particles},
   };
@@ -49,8 +48,7 @@ const MetricTable<WaveProbeFigures>& probeTable() {
          return std::nullopt;
        }},
       // Signed: positive when the particles arrive late.
-      {"arrival_delay_s", Unit::kSeconds, D::kNone,
-       [](const R& r) { return r.arrivalError(); }},
+      {"arrival_delay_s", Unit::kSeconds, D::kNone, [](const R& r) { return r.arrivalError(); }},
       {"reference_arrival_s", Unit::kSeconds, D::kNone,
        [](const R& r) { return r.reference_arrival_s; }},
       {"particle_arrival_s", Unit::kSeconds, D::kNone,
@@ -130,8 +128,8 @@ class WaveErrorMeasure final : public Measure {
       std::map<std::string, std::string> keys{
           {"probe", "(" + shortNumber(probe.x_m) + ", " + shortNumber(probe.y_m) + ")"}};
       if (!probe.reference_arrival_s) {
-        result.rows.push_back(unmeasuredRow(keys, MeasureStatus::kSkipped,
-                                            "the reference never reaches the probe"));
+        result.rows.push_back(
+            unmeasuredRow(keys, MeasureStatus::kSkipped, "the reference never reaches the probe"));
         continue;
       }
       MetricRow row;

@@ -91,8 +91,7 @@ Scenario loadScenarioFile(const std::string& path, const std::string& shown_path
   scenario.path = fs::absolute(path).lexically_normal().string();
   scenario.name = text(required(json, shown, "name"), shown, "name");
   if (scenario.name.empty()) throw InputError(shown, "name", "empty");
-  scenario.time_step_s =
-      finiteNumber(required(json, shown, "time_step_s"), shown, "time_step_s");
+  scenario.time_step_s = finiteNumber(required(json, shown, "time_step_s"), shown, "time_step_s");
   if (!(scenario.time_step_s > 0)) throw InputError(shown, "time_step_s", "must be > 0");
   scenario.duration_s = finiteNumber(required(json, shown, "duration_s"), shown, "duration_s");
   if (!(scenario.duration_s >= scenario.time_step_s)) {

@@ -15,9 +15,9 @@
 namespace tb::wave_particles {
 
 struct HeightField {
-  double origin_m = 0;   // the coordinate of node 0 on both axes (-domain/2)
-  double spacing_m = 0;  // node spacing
-  uint32_t nodes = 0;    // per side
+  double origin_m = 0;           // the coordinate of node 0 on both axes (-domain/2)
+  double spacing_m = 0;          // node spacing
+  uint32_t nodes = 0;            // per side
   std::vector<double> height_m;  // nodes x nodes, row-major (y rows)
   double at(uint32_t i, uint32_t j) const { return height_m[size_t(j) * nodes + i]; }
   // Bilinear interpolation at (x, y) (clamped to the grid).

@@ -143,8 +143,8 @@ uint32_t updateParticle(const Particle& in, const StepSettings& settings,
     uint32_t i = 0;
     while (i < tree.size()) {
       const AabbNode& node = tree[i];
-      const bool overlaps = node.lo[0] <= hi[0] && lo[0] <= node.hi[0] && node.lo[1] <= hi[1] &&
-                            lo[1] <= node.hi[1];
+      const bool overlaps =
+          node.lo[0] <= hi[0] && lo[0] <= node.hi[0] && node.lo[1] <= hi[1] && lo[1] <= node.hi[1];
       if (!overlaps) {
         i = node.skip;
         continue;

@@ -51,10 +51,10 @@ std::vector<AabbNode> buildWallTree(const std::vector<WallSegment>& walls);
 struct StepSettings {
   float dt_s = 0;
   float speed_m_per_s = 0;
-  float decay_per_step = 1;  // full: amplitude *= this each step (exp(-damping dt), in double)
-  float min_amplitude_m = 0; // full: particles below it die
+  float decay_per_step = 1;   // full: amplitude *= this each step (exp(-damping dt), in double)
+  float min_amplitude_m = 0;  // full: particles below it die
   float subdivide_fraction = 0.5f;  // full: subdivide when neighbour spacing > this * radius
-  uint32_t capacity = 0;     // particles the output buffer holds; appends beyond are dropped
+  uint32_t capacity = 0;            // particles the output buffer holds; appends beyond are dropped
   Variant variant = Variant::kFull;
 };
 

@@ -99,11 +99,11 @@ std::vector<gpu::GpuComputeProgram> WaveParticleSimulation::gpuPrograms() const 
   if (tree_words.empty()) tree_words.assign(8, 0);  // full: unused, but bound
   const std::vector<uint32_t> wall_words = words(walls_);
   using gpu::GpuComputeBuffer;
-  const GpuComputeBuffer particles_in{0, "particles_a", particle_bytes, words(start.particles_),
+  const GpuComputeBuffer particles_in{0,    "particles_a", particle_bytes, words(start.particles_),
                                       true, "particles_b"};
   const GpuComputeBuffer particles_out{1, "particles_b", particle_bytes, {}, true, "particles_a"};
-  const GpuComputeBuffer counter_in{2, "counter_a", 16, {(count + 63) / 64, 1, 1, count}, true,
-                                    "counter_b"};
+  const GpuComputeBuffer counter_in{2,    "counter_a", 16, {(count + 63) / 64, 1, 1, count},
+                                    true, "counter_b"};
   const GpuComputeBuffer counter_out{3, "counter_b", 16, {}, true, "counter_a"};
 
   gpu::GpuComputePass update;

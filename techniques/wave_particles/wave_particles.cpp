@@ -43,8 +43,8 @@ WaveParticleSimulation::WaveParticleSimulation(const Scenario& scenario, Variant
   settings_.decay_per_step = float(std::exp(-scene_.damping_per_s * dt));
   settings_.min_amplitude_m = float(1e-6 * scene_.maxAmplitude());
   settings_.subdivide_fraction = 0.5f;
-  settings_.capacity = variant == Variant::kLp2 ? scene_.max_particles
-                                                : fullCapacity(scene_, scenario.duration_s);
+  settings_.capacity =
+      variant == Variant::kLp2 ? scene_.max_particles : fullCapacity(scene_, scenario.duration_s);
   walls_ = wallSegments(scene_);
   if (variant == Variant::kLp2) tree_ = buildWallTree(walls_);
   const uint32_t n = scene_.particles_per_source;
@@ -134,23 +134,24 @@ SimulationFootprint WaveParticleSimulation::footprint() const {
   SimulationFootprint footprint;
   // Both ping-pong buffers at full capacity.
   footprint.state_bytes = 2 * uint64_t(settings_.capacity) * sizeof(Particle);
-  footprint.auxiliary_bytes = 2 * 16                                  // the two counters
-                              + walls_.size() * sizeof(WallSegment)   // boundary segments
-                              + tree_.size() * sizeof(AabbNode)       // lp2's tree
-                              + table_.theta.size() * 3 * 4           // subdivision table
-                              + pending_.size() * sizeof(Particle)    // later emissions
-                              + 16;                                   // statistics
+  footprint.auxiliary_bytes = 2 * 16                                 // the two counters
+                              + walls_.size() * sizeof(WallSegment)  // boundary segments
+                              + tree_.size() * sizeof(AabbNode)      // lp2's tree
+                              + table_.theta.size() * 3 * 4          // subdivision table
+                              + pending_.size() * sizeof(Particle)   // later emissions
+                              + 16;                                  // statistics
   // The output and its making: splat accumulators (int), the height map (float) and the
   // displacement map (normal xyz + height, 4 floats) per node, and the filter kernel.
   const uint64_t nodes = heightFieldNodes();
-  const uint64_t reach = uint64_t(std::floor(scene_.particle_radius_m / scene_.height_field_spacing_m));
+  const uint64_t reach =
+      uint64_t(std::floor(scene_.particle_radius_m / scene_.height_field_spacing_m));
   footprint.auxiliary_bytes += nodes * nodes * (4 + 4 + 16) + (2 * reach + 1) * (2 * reach + 1) * 4;
   // The alternative: a leapfrog height-field solver on the same grid, whose current field is
   // the output: current and previous heights (float) and a wall mask (byte) per node.
   footprint.alternative_bytes = nodes * nodes * (4 + 4 + 1);
-  footprint.alternative =
-      "a height-field wave-equation grid solver at the output's resolution (" +
-      std::to_string(nodes) + "^2 nodes: current and previous height in float, a wall byte)";
+  footprint.alternative = "a height-field wave-equation grid solver at the output's resolution (" +
+                          std::to_string(nodes) +
+                          "^2 nodes: current and previous height in float, a wall byte)";
   return footprint;
 }
 

@@ -107,13 +107,16 @@ WaveScene parseWaveScene(const Scenario& scenario) {
   auto inside = [&](const Point2& p) { return std::abs(p[0]) < half && std::abs(p[1]) < half; };
   const std::string where = "wave_particles";
   const Json& sources = reader.member(json, where, "sources");
-  if (!sources.is_array() || sources.empty()) reader.fail(where + ".sources", "expected a non-empty array");
+  if (!sources.is_array() || sources.empty())
+    reader.fail(where + ".sources", "expected a non-empty array");
   for (size_t i = 0; i < sources.size(); ++i) {
     const std::string field = where + ".sources[" + std::to_string(i) + "]";
     WaveSource source;
-    source.position_m = reader.point(reader.member(sources[i], field, "position_m"), field + ".position_m");
+    source.position_m =
+        reader.point(reader.member(sources[i], field, "position_m"), field + ".position_m");
     if (!inside(source.position_m)) reader.fail(field + ".position_m", "outside the domain");
-    source.amplitude_m = reader.number(reader.member(sources[i], field, "amplitude_m"), field + ".amplitude_m");
+    source.amplitude_m =
+        reader.number(reader.member(sources[i], field, "amplitude_m"), field + ".amplitude_m");
     if (sources[i].contains("time_s")) {
       source.time_s = reader.number(sources[i].at("time_s"), field + ".time_s");
       if (source.time_s < 0 || source.time_s > scenario.duration_s) {

@@ -25,13 +25,13 @@ struct WaveWall {
 };
 
 struct WaveScene {
-  double domain_size_m = 0;        // the domain is [-size/2, size/2]^2; its border reflects
-  double wave_speed_m_per_s = 0;   // c: particles' speed and the reference's wave speed
-  double particle_radius_m = 0;    // r of the particle shape (Yuksel et al. 2007, eq. 3)
+  double domain_size_m = 0;           // the domain is [-size/2, size/2]^2; its border reflects
+  double wave_speed_m_per_s = 0;      // c: particles' speed and the reference's wave speed
+  double particle_radius_m = 0;       // r of the particle shape (Yuksel et al. 2007, eq. 3)
   uint32_t particles_per_source = 0;  // ring of particles each source emits
-  double particle_lifetime_s = 0;  // lp2: expiry age; default the duration
-  uint32_t max_particles = 0;      // lp2: the fixed buffer; default particles_per_source x sources
-  double damping_per_s = 0;        // full: amplitude decays as exp(-damping t); 0: none
+  double particle_lifetime_s = 0;     // lp2: expiry age; default the duration
+  uint32_t max_particles = 0;  // lp2: the fixed buffer; default particles_per_source x sources
+  double damping_per_s = 0;    // full: amplitude decays as exp(-damping t); 0: none
   double height_field_spacing_m = 0;  // node spacing of the output height field
   double reference_spacing_m = 0;     // node spacing of the wave-equation reference
   std::vector<WaveSource> sources;

@@ -9,6 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 
 #include "tests/cli/cli_support.h"
 #include "tests/test_support.h"
@@ -281,6 +282,55 @@ TEST(Cli, ReaderVisibleTextCitesSourcesNotSeedNumbers) {
   EXPECT_FALSE(std::regex_search(seen, match, seed_number))
       << "'" << match.str() << "' near: "
       << seen.substr(static_cast<size_t>(std::max<long>(0, match.position() - 80)), 200);
+}
+
+}  // namespace
+}  // namespace tb
+
+namespace tb {
+namespace {
+
+// Issue 18's acceptance 5: wave particles are listed as a simulation, and a run of the
+// technique alone runs every bundled scenario written for it with its four measures.
+TEST(Cli, WaveParticlesAreASimulationRunOnEveryBundledScenarioWithTheirMeasures) {
+  const CommandResult list = runTessbench("list techniques --json");
+  ASSERT_EQ(list.exit_code, 0) << list.output;
+  bool listed = false;
+  for (const auto& technique : nlohmann::json::parse(list.output)) {
+    if (technique["id"] == "wave_particles") {
+      listed = true;
+      EXPECT_EQ(technique["family"], "simulation");
+    }
+  }
+  EXPECT_TRUE(listed);
+  const CommandResult scenarios = runTessbench("list scenarios --json");
+  ASSERT_EQ(scenarios.exit_code, 0) << scenarios.output;
+  std::set<std::string> bundled;
+  for (const auto& scenario : nlohmann::json::parse(scenarios.output)) {
+    if (scenario["technique"] == "wave_particles") bundled.insert(scenario["name"]);
+  }
+  EXPECT_TRUE(bundled.count("wave_point_impulse") && bundled.count("wave_straight_wall"));
+
+  const auto dir = testing::scratchDirectory("cli_wave_particles");
+  const CommandResult r =
+      runTessbench("run --quiet --technique wave_particles --run-id w --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto json = nlohmann::json::parse(readFile(dir / "w" / "results.json"));
+  std::map<std::string, std::set<std::string>> measures_by_record;
+  for (const auto& record : json["records"]) {
+    EXPECT_EQ(record["technique"], "wave_particles");
+    std::set<std::string>& ids = measures_by_record[record["variant"].get<std::string>() + " " +
+                                                    record["asset"].get<std::string>()];
+    for (const auto& measure : record["measures"]) {
+      EXPECT_EQ(measure["status"], "ok") << measure["measure"];
+      ids.insert(measure["measure"]);
+    }
+  }
+  EXPECT_EQ(measures_by_record.size(), 2 * bundled.size()) << "full and lp2 on every scenario";
+  for (const auto& [record, ids] : measures_by_record) {
+    EXPECT_EQ(ids, (std::set<std::string>{"instructions", "memory", "sim_cost", "wave_error"}))
+        << record;
+  }
 }
 
 }  // namespace

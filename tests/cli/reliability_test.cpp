@@ -260,7 +260,8 @@ TEST(BadInputTable, ALevelAboveTheMaximumIsClampedAndReported) {
 TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
   const fs::path dir = testing::scratchDirectory("no_device");
   const SplitResult r = runTessbenchSplit(
-      "run --quiet --technique phong --asset catmark_cube --run-id r --out " + (dir / "out").string(),
+      "run --quiet --technique phong --technique wave_particles --asset catmark_cube --run-id r "
+      "--out " + (dir / "out").string(),
       "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
@@ -298,9 +299,11 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
   for (const char* id : {"cracks", "adaptivity", "culling"}) {
     EXPECT_GT(skipped_rows[id], 0u) << id;
   }
-  for (const char* id : {"cracks", "adaptivity", "culling", "error", "instructions", "memory"}) {
+  for (const char* id : {"cracks", "adaptivity", "culling", "error", "instructions", "memory",
+                         "wave_error", "sim_cost"}) {
     EXPECT_GT(measured_rows[id], 0u) << id;
   }
+  EXPECT_GT(skipped_rows["sim_cost"], 0u) << "the simulation's device run";
   // And report.md shows the skips as statuses too.
   EXPECT_NE(readFile(dir / "out" / "r" / "report.md").find("| skipped: no Vulkan device"),
             std::string::npos);

@@ -63,7 +63,7 @@ TEST(SimCost, ElementsPeakAndDispatchesAreTheHandCountedOnes) {
   EXPECT_EQ(figures.dispatches_per_step, 6u);
   EXPECT_EQ(figures.footprint.total(), 424u);
   EXPECT_FALSE(figures.gpu_steps.has_value());
-  EXPECT_EQ(figures.gpu_skip_reason, "no device here");
+  EXPECT_EQ(figures.gpu_skip_reason, "no Vulkan device (no device here)");
 }
 
 TEST(SimCost, TheDeviceRunDispatchesAsDeclared) {

@@ -43,8 +43,10 @@ TEST(WaveEquation, HalvingTheSpacingShrinksTheDifferenceAsASecondOrderScheme) {
   }
   const double coarse = maxDifference(solvers[0], solvers[1]);
   const double fine = maxDifference(solvers[1], solvers[2]);
-  std::printf("reference convergence at t = 1 s: |u(0.05) - u(0.025)| = %.3g, "
-              "|u(0.025) - u(0.0125)| = %.3g, ratio %.2f\n", coarse, fine, coarse / fine);
+  std::printf(
+      "reference convergence at t = 1 s: |u(0.05) - u(0.025)| = %.3g, "
+      "|u(0.025) - u(0.0125)| = %.3g, ratio %.2f\n",
+      coarse, fine, coarse / fine);
   EXPECT_GT(coarse, 0.0);
   // Second order would shrink it fourfold; the particle-shape blob's curvature jumps at its
   // rim (W''(r) = pi^2 / 2r^2 outside, 0 inside), which costs the max norm some order: it

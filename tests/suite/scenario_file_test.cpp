@@ -101,7 +101,8 @@ TEST(ScenarioFile, EveryBadInputIsOneLineNamingTheFileAndTheField) {
   for (const Case& c : cases) {
     const std::string message = loadError(c.text);
     EXPECT_EQ(message.rfind("scenarios/bad.json: ", 0), 0u) << message;
-    EXPECT_NE(message.find(c.expected), std::string::npos) << message << "\n  wanted " << c.expected;
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << message << "\n  wanted " << c.expected;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
   EXPECT_EQ(loadError(kValid), "");

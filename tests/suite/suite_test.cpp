@@ -92,6 +92,8 @@ TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
     std::filesystem::copy_file(testing::assetPath(std::string("opensubdiv/") + name),
                                copy / "opensubdiv" / name);
   }
+  // The bundled scenarios too: simulation techniques run on them by default.
+  std::filesystem::copy(testing::assetPath("scenarios"), copy / "scenarios");
   ::setenv("TB_ASSETS_DIR", copy.c_str(), 1);
   const std::string there = run();
   ::unsetenv("TB_ASSETS_DIR");

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/mesh/input_error.h"
 #include "harness/measures/wave_error.h"
@@ -56,16 +57,18 @@ TEST(WaveParticlesCpu, FullArrivalAtProbesMatchesTheReferenceWithinTheTolerance)
   ASSERT_FALSE(figures.probes.empty());
   for (const WaveProbeFigures& probe : figures.probes) {
     ASSERT_TRUE(probe.arrivalError().has_value()) << probe.x_m << ", " << probe.y_m;
-    std::printf("probe (%.2f, %.2f) at %.2f m: reference %.3f s, particles %.3f s, error %+.3f s "
-                "(tolerance %.3f s)\n",
-                probe.x_m, probe.y_m, probe.distance_m, *probe.reference_arrival_s,
-                *probe.particle_arrival_s, *probe.arrivalError(), figures.arrival_tolerance_s);
+    std::printf(
+        "probe (%.2f, %.2f) at %.2f m: reference %.3f s, particles %.3f s, error %+.3f s "
+        "(tolerance %.3f s)\n",
+        probe.x_m, probe.y_m, probe.distance_m, *probe.reference_arrival_s,
+        *probe.particle_arrival_s, *probe.arrivalError(), figures.arrival_tolerance_s);
     EXPECT_LE(std::abs(*probe.arrivalError()), figures.arrival_tolerance_s);
   }
   for (const WaveTimeFigures& row : figures.times) {
-    std::printf("t = %.2f s: rms %.4f, max %.4f (of the amplitude), coverage %.3f, %llu particles\n",
-                row.time_s, row.rms_error, row.max_error, row.coverage.value_or(-1),
-                (unsigned long long)row.particles);
+    std::printf(
+        "t = %.2f s: rms %.4f, max %.4f (of the amplitude), coverage %.3f, %llu particles\n",
+        row.time_s, row.rms_error, row.max_error, row.coverage.value_or(-1),
+        (unsigned long long)row.particles);
   }
 }
 
@@ -133,6 +136,65 @@ TEST(WaveParticlesCpu, Lp2CoverageFallsBelowFullWithDistance) {
   }
 }
 
+// Oracle: the linear search over every wall (full's). Random walls and moves; the tree must
+// find the same first crossing, so the reflected particle is the same bit for bit. A tree
+// whose skip indices jumped too far would miss walls.
+TEST(WaveParticlesCpu, Lp2TreeReflectsExactlyLikeTheLinearSearch) {
+  uint32_t seed = 12345;
+  auto uniform = [&](float lo, float hi) {
+    seed = seed * 1664525u + 1013904223u;
+    return lo + (hi - lo) * float(seed >> 8) / float(1u << 24);
+  };
+  std::vector<WallSegment> walls;
+  for (int w = 0; w < 37; ++w) {
+    const float ax = uniform(-4, 4), ay = uniform(-4, 4);
+    const float bx = ax + uniform(-1, 1), by = ay + uniform(-1, 1);
+    const float len = std::hypot(bx - ax, by - ay);
+    walls.push_back({{ax, ay}, {bx, by}, {-(by - ay) / len, (bx - ax) / len}});
+  }
+  const std::vector<AabbNode> tree = buildWallTree(walls);
+  ASSERT_EQ(tree.size(), 2 * walls.size() - 1);
+  StepSettings linear;
+  linear.dt_s = 0.5f;  // 1 m moves: many cross a wall
+  linear.speed_m_per_s = 2.0f;
+  linear.capacity = 10;
+  linear.subdivide_fraction = 1e30f;  // no subdivision: only the reflection differs
+  StepSettings lp2 = linear;
+  lp2.variant = Variant::kLp2;
+  const SubdivisionTable table = subdivisionTable(0.1f, 2);
+  // A broken tree (the root's first child skips past the end) must show.
+  std::vector<AabbNode> broken = tree;
+  broken[1].skip = uint32_t(broken.size());
+  int reflected = 0, broken_differs = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    Particle p{};
+    p.origin[0] = uniform(-4, 4);
+    p.origin[1] = uniform(-4, 4);
+    const float angle = uniform(0, 6.2831853f);
+    p.direction[0] = std::cos(angle);
+    p.direction[1] = std::sin(angle);
+    p.age_s = uniform(0, 0.5f);
+    p.lifetime_s = 100;
+    p.amplitude_m = 1;
+    p.dispersion_rad = 0.1f;
+    p.radius_m = 0.1f;
+    std::vector<Particle> a, b;
+    uint64_t dropped = 0;
+    updateParticle(p, linear, walls, {}, table, &a, &dropped);
+    updateParticle(p, lp2, walls, tree, table, &b, &dropped);
+    ASSERT_EQ(a.size(), 1u);
+    ASSERT_EQ(b.size(), 1u);
+    EXPECT_EQ(std::memcmp(a[0].origin, b[0].origin, sizeof(float) * 4), 0) << "trial " << trial;
+    reflected += a[0].direction[0] != p.direction[0] || a[0].direction[1] != p.direction[1];
+    std::vector<Particle> c;
+    updateParticle(p, lp2, walls, broken, table, &c, &dropped);
+    broken_differs += std::memcmp(a[0].origin, c[0].origin, sizeof(float) * 4) != 0;
+  }
+  EXPECT_GT(broken_differs, 0) << "the comparison catches a tree that misses walls";
+  std::printf("AABB tree vs linear search: %d of 4000 moves reflected, all identical\n", reflected);
+  EXPECT_GT(reflected, 100) << "the trials hit walls";
+}
+
 TEST(WaveParticlesCpu, Lp2ExpiresAtTheLifetimeAndKeepsItsBuffer) {
   Scenario scenario = resolveScenario("wave_point_impulse");
   scenario.parameters["particle_lifetime_s"] = 1.0;
@@ -148,7 +210,8 @@ TEST(WaveParticlesCpu, Lp2ExpiresAtTheLifetimeAndKeepsItsBuffer) {
 
 TEST(WaveParticlesCpu, BadScenarioSectionsAreOneLineInputErrors) {
   Scenario scenario = resolveScenario("wave_point_impulse");
-  scenario.sections["wave_particles"] = R"({"sources": [{"position_m": [9, 0], "amplitude_m": 1}]})";
+  scenario.sections["wave_particles"] =
+      R"({"sources": [{"position_m": [9, 0], "amplitude_m": 1}]})";
   try {
     WaveParticleSimulation simulation(scenario, Variant::kFull);
     FAIL() << "accepted a source outside the domain";

@@ -34,20 +34,19 @@ int64_t ulpDistance(float a, float b) {
 }
 
 void sortById(std::vector<Particle>* particles) {
-  std::sort(particles->begin(), particles->end(), [](const Particle& a, const Particle& b) {
-    return a.id < b.id;
-  });
+  std::sort(particles->begin(), particles->end(),
+            [](const Particle& a, const Particle& b) { return a.id < b.id; });
 }
 
 // Largest ulp distance over the float fields, particles paired in id order.
 int64_t maxUlp(const std::vector<Particle>& a, const std::vector<Particle>& b) {
   int64_t worst = 0;
   for (size_t i = 0; i < a.size(); ++i) {
-    const float fa[] = {a[i].origin[0],   a[i].origin[1],    a[i].direction[0],
-                        a[i].direction[1], a[i].age_s,       a[i].lifetime_s,
+    const float fa[] = {a[i].origin[0],    a[i].origin[1],      a[i].direction[0],
+                        a[i].direction[1], a[i].age_s,          a[i].lifetime_s,
                         a[i].amplitude_m,  a[i].dispersion_rad, a[i].radius_m};
-    const float fb[] = {b[i].origin[0],   b[i].origin[1],    b[i].direction[0],
-                        b[i].direction[1], b[i].age_s,       b[i].lifetime_s,
+    const float fb[] = {b[i].origin[0],    b[i].origin[1],      b[i].direction[0],
+                        b[i].direction[1], b[i].age_s,          b[i].lifetime_s,
                         b[i].amplitude_m,  b[i].dispersion_rad, b[i].radius_m};
     for (size_t k = 0; k < std::size(fa); ++k) worst = std::max(worst, ulpDistance(fa[k], fb[k]));
   }
@@ -76,8 +75,9 @@ Compared runBoth(gpu::Context& context, const Scenario& scenario, Variant varian
   compared.cpu_count = cpu_particles.size();
   compared.gpu_count = gpu_particles.size();
   if (compared.cpu_count != compared.gpu_count) return compared;
-  compared.ids_match = std::equal(cpu_particles.begin(), cpu_particles.end(), gpu_particles.begin(),
-                                  [](const Particle& a, const Particle& b) { return a.id == b.id; });
+  compared.ids_match =
+      std::equal(cpu_particles.begin(), cpu_particles.end(), gpu_particles.begin(),
+                 [](const Particle& a, const Particle& b) { return a.id == b.id; });
   if (compared.ids_match) compared.max_ulp = maxUlp(cpu_particles, gpu_particles);
   return compared;
 }
