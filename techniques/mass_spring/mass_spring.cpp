@@ -162,29 +162,6 @@ SimulationState MassSpringSimulation::state() const {
   return s;
 }
 
-SimulationFootprint MassSpringSimulation::footprint() const {
-  // GPU layout (shaders/mass_spring): std430 vec4 per position (16 B).
-  const uint64_t n = system_.vertex_count;
-  uint64_t position_buffers = 2;  // x, x_prev
-  const SolverKind kind = solver_.settings().kind;
-  if (kind == SolverKind::kJacobi) position_buffers = 3;           // + ping-pong
-  if (kind == SolverKind::kJacobiChebyshev) position_buffers = 4;  // + x_{k-1}
-  SimulationFootprint footprint;
-  footprint.state_bytes = position_buffers * n * 16;
-  uint64_t aux = system_.anchor_count * 16;  // anchors
-  if (kind == SolverKind::kJacobi || kind == SolverKind::kJacobiChebyshev) {
-    aux += (n + 1) * 4 + system_.ends.size() * 12;  // gather lists: start, (other, rest, weight)
-    aux += n * 4;                                   // omega / n_v
-  } else {
-    aux += system_.springs.size() * 16;          // (a, b, rest, weight) in colour-major order
-    aux += (system_.colour_count + 1) * 4;       // colour starts
-  }
-  aux += render_mesh_.bindings.size() * 28;  // (v0, v1, v2, w0, w1, w2, volume)
-  footprint.auxiliary_bytes = aux;
-  return footprint;
-}
-
-
 SolverCounts MassSpringSimulation::counts() const {
   SolverCounts c;
   const SolverKind kind = solver_.settings().kind;

@@ -79,6 +79,8 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
     std::vector<uint32_t> end_start, ends, scale, weights;
   };
   JacobiBuffers jacobiBuffers() const;
+  // One step's programs for the solver `kind` (gpuPrograms(), and the footprint's layout).
+  std::vector<gpu::GpuComputeProgram> stepPrograms(SolverKind kind) const;
   void setAnchors(size_t j, double dt_s);
   std::vector<Vec3f> anchorsAt(size_t j, double dt_s) const;
   // float(sin(2 pi f_s j dt)): stomp s's phase at time index j (the GPU's table holds these).

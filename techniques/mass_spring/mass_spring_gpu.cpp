@@ -1,7 +1,9 @@
 // The mass-spring solvers as Vulkan compute programs (shaders/mass_spring/), plain data for
 // core/gpu/compute_runner.h. Buffers hold the CPU twin's float values bit for bit: vec4 per
 // position and anchor (w = 0), springs in colour-major order, Jacobi gather lists.
+#include <algorithm>
 #include <bit>
+#include <map>
 #include <cmath>
 
 #include "techniques/mass_spring/mass_spring.h"
@@ -31,7 +33,7 @@ gpu::GpuComputeBuffer buffer(uint32_t binding, std::string name, std::vector<uin
   gpu::GpuComputeBuffer b;
   b.binding = binding;
   b.name = std::move(name);
-  b.size_bytes = std::max<uint64_t>(4, words.size() * 4);
+  b.size_bytes = std::max<uint64_t>(16, words.size() * 4);  // the runner's least allocation
   b.initial_words = std::move(words);
   b.alternate_with = std::move(alternate);
   return b;
@@ -123,12 +125,39 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
 }
 
 std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const {
-  const SolverSettings& settings = solver_.settings();
-  if (settings.kind == SolverKind::kGaussSeidelSerial) return {};
+  if (solver_.settings().kind == SolverKind::kGaussSeidelSerial) return {};
+  return stepPrograms(solver_.settings().kind);
+}
+
+SimulationFootprint MassSpringSimulation::footprint() const {
+  // The buffers the compute runner allocates for the step programs (one per name, the
+  // largest size declared); gs_serial, with no GPU path, as its coloured twin would.
+  const SolverKind kind = solver_.settings().kind == SolverKind::kGaussSeidelSerial
+                              ? SolverKind::kGaussSeidelColoured
+                              : solver_.settings().kind;
+  std::map<std::string, uint64_t> sizes;
+  for (const gpu::GpuComputeProgram& program : stepPrograms(kind)) {
+    for (const gpu::GpuComputePass& pass : program.passes) {
+      for (const gpu::GpuComputeBuffer& b : pass.buffers) {
+        sizes[b.name] = std::max(sizes[b.name], (b.size_bytes + 3) / 4 * 4);
+      }
+    }
+  }
+  SimulationFootprint footprint;
+  for (const auto& [name, bytes] : sizes) {
+    const bool state = name == "positions" || name == "previous_positions" ||
+                       name == "positions_other";
+    (state ? footprint.state_bytes : footprint.auxiliary_bytes) += bytes;
+  }
+  return footprint;
+}
+
+std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKind kind) const {
   const size_t n = system_.vertex_count, stomps = input_->stomps.size();
   const double dt = scenario_.time_step_s;
   const std::vector<uint32_t> positions = vec4Words(state_.x);
-  const bool chebyshev = settings.kind == SolverKind::kJacobiChebyshev;
+  const bool chebyshev = kind == SolverKind::kJacobiChebyshev;
+  const bool jacobi = chebyshev || kind == SolverKind::kJacobi;
 
   // The step's first pass: animation, blast, Verlet (verlet.comp).
   std::vector<uint32_t> sines;
@@ -158,7 +187,10 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const {
                     buffer(5, "stomp_amplitudes", amplitudes),
                     buffer(6, "stomp_sines", sines),
                     buffer(7, "blasts", blasts),
-                    buffer(8, "positions_other", std::vector<uint32_t>(positions.size(), 0u))};
+                    // Gauss-Seidel has no second position buffer: binding 8 aliases the
+                    // first and is never written (kCopyToOther = 0).
+                    jacobi ? buffer(8, "positions_other", std::vector<uint32_t>(positions.size(), 0u))
+                           : buffer(8, "positions", positions)};
   verlet.specialization = {chebyshev ? 1u : 0u};
   verlet.push_constants = {uint32_t(n), uint32_t(stomps), uint32_t(rows),
                            uint32_t(input_->blasts.size()), word(float(1 - input_->damping)),
@@ -171,7 +203,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const {
   program.passes.push_back(std::move(verlet));
 
   const uint32_t budget = uint32_t(dispatches_per_step_);
-  if (settings.kind == SolverKind::kGaussSeidelColoured) {
+  if (!jacobi) {
     std::vector<uint32_t> springs;
     for (uint32_t s : system_.colour_order) {
       const Spring& spring = system_.springs[s];

@@ -91,6 +91,8 @@ TEST(MassSpringGpu, WholeStepsAgreeWithTheCpuTwinWithinTheUlpBound) {
       MassSpringSimulation& simulation = testing::massSpringOf(*instance);
       gpu::ComputeRunner runner(context, simulation.gpuPrograms());
       runner.run(kSteps);
+      // The footprint counts the buffers the runner allocates.
+      EXPECT_EQ(simulation.footprint().total(), runner.residentBytes()) << variant;
       const std::vector<Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
           runner.read("positions"), simulation.springs().vertex_count);
       const std::vector<Vec3f> start = simulation.solverState().x;
