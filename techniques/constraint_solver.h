@@ -19,14 +19,14 @@ struct SolverCounts {
   // colour count for graph-coloured Gauss-Seidel (one dispatch per independent batch). A
   // serial solver reports what the same sweep costs coloured.
   uint32_t dispatches_per_iteration = 1;
-  uint32_t colours = 0;         // independent constraint batches; 0 when not coloured
+  uint32_t colours = 0;  // independent constraint batches; 0 when not coloured
   // The same greedy colouring of subsets, for the seed's "at most 8 batches" (its DX9
   // version had surface and goal springs only): surface springs alone, surface and goal.
   uint32_t colours_surface = 0;
   uint32_t colours_surface_goal = 0;
-  uint64_t constraints = 0;     // constraints projected per iteration
-  uint64_t vertices = 0;        // simulated mass points
-  uint64_t constraint_ends = 0; // vertex visits per iteration (2 per spring, 1 per anchor spring)
+  uint64_t constraints = 0;      // constraints projected per iteration
+  uint64_t vertices = 0;         // simulated mass points
+  uint64_t constraint_ends = 0;  // vertex visits per iteration (2 per spring, 1 per anchor spring)
   // No GPU path: under a dispatch budget it runs whole iterations, max(1, round(budget /
   // dispatches_per_iteration)), instead of cutting one (serial Gauss-Seidel, the reference).
   bool whole_iterations_under_budget = false;
@@ -34,7 +34,8 @@ struct SolverCounts {
   double iterationsFor(size_t dispatches) const {
     const double per = dispatches_per_iteration > 0 ? double(dispatches_per_iteration) : 1.0;
     if (!whole_iterations_under_budget) return double(dispatches) / per;
-    const double whole = double((dispatches + dispatches_per_iteration / 2) / (dispatches_per_iteration ? dispatches_per_iteration : 1));
+    const double whole = double((dispatches + dispatches_per_iteration / 2) /
+                                (dispatches_per_iteration ? dispatches_per_iteration : 1));
     return whole < 1 ? 1.0 : whole;
   }
 };
@@ -42,9 +43,9 @@ struct SolverCounts {
 // The converged reference of the convergence frame (double, serial Gauss-Seidel).
 struct ReferenceSolution {
   std::vector<Vec3d> positions;
-  size_t iterations = 0;          // sweeps it took
-  double relative_residual = 0;   // residual / initial residual when it stopped
-  bool converged = false;         // relative_residual reached the requested tolerance
+  size_t iterations = 0;         // sweeps it took
+  double relative_residual = 0;  // residual / initial residual when it stopped
+  bool converged = false;        // relative_residual reached the requested tolerance
 };
 
 // Figures of the state after a step, for the stability measure.

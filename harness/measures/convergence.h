@@ -15,9 +15,9 @@
 namespace tb {
 
 struct ConvergenceSettings {
-  size_t rows = 32;               // iterations reported one by one (k = 1..rows)
-  size_t max_iterations = 2000;   // iteration budget for the tolerances
-  size_t dispatch_budget = 8;     // GPU dispatches per frame for the summary
+  size_t rows = 32;                    // iterations reported one by one (k = 1..rows)
+  size_t max_iterations = 2000;        // iteration budget for the tolerances
+  size_t dispatch_budget = 8;          // GPU dispatches per frame for the summary
   double reference_tolerance = 1e-12;  // relative residual of the double reference
   size_t reference_max_iterations = 200000;
 };
@@ -34,7 +34,7 @@ struct ConvergenceIteration {
 
 struct ConvergenceFigures {
   SolverCounts counts;
-  double initial_residual = 0;  // residual of the frame's start (1)
+  double initial_residual = 0;                   // residual of the frame's start (1)
   std::vector<ConvergenceIteration> iterations;  // k = 1..rows
   // Iterations until residual / initial <= 1e-3 and 1e-5; nullopt: not reached within
   // max_iterations (recorded as not reached, never as 0).
@@ -45,15 +45,16 @@ struct ConvergenceFigures {
   // per iteration; below 1 for a Gauss-Seidel sweep of more colours: a partial sweep).
   double budget_iterations = 0;
   double residual_at_budget = 0;
-  double final_residual_ratio = 0;   // after the last iteration run
-  double final_position_error = 0;   // after the last iteration run (as position_error)
-  size_t reference_iterations = 0;   // sweeps the double reference took
+  double final_residual_ratio = 0;  // after the last iteration run
+  double final_position_error = 0;  // after the last iteration run (as position_error)
+  size_t reference_iterations = 0;  // sweeps the double reference took
   double reference_relative_residual = 0;
   bool reference_converged = false;
 };
 
 // Runs `solver` on its convergence frame. It resets the frame itself.
-ConvergenceFigures measureConvergence(ConstraintSolver& solver, const ConvergenceSettings& settings);
+ConvergenceFigures measureConvergence(ConstraintSolver& solver,
+                                      const ConvergenceSettings& settings);
 
 // RMS of |a_i - b_i| over `scale`.
 double rmsDistance(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b, double scale);

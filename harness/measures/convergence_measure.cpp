@@ -58,11 +58,13 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
        budget_residual(false)},
       {"residual_at_8_dispatches_goal_springs", Unit::kRatio, D::kLowerIsBetter,
        budget_residual(true)},
-      {"iterations_to_1e-3", Unit::kCount, D::kLowerIsBetter, [](const R& r) -> O {
+      {"iterations_to_1e-3", Unit::kCount, D::kLowerIsBetter,
+       [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e3) return std::nullopt;
          return double(*r.figures->iterations_to_1e3);
        }},
-      {"iterations_to_1e-5", Unit::kCount, D::kLowerIsBetter, [](const R& r) -> O {
+      {"iterations_to_1e-5", Unit::kCount, D::kLowerIsBetter,
+       [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e5) return std::nullopt;
          return double(*r.figures->iterations_to_1e5);
        }},
@@ -76,7 +78,8 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
        summary([](const F& f) { return double(f.counts.dispatches_per_iteration); })},
       {"iterations_at_8_dispatches", Unit::kRatio, D::kNone,
        summary([](const F& f) { return double(f.budget_iterations); })},
-      {"colours", Unit::kCount, D::kNone, summary([](const F& f) { return double(f.counts.colours); })},
+      {"colours", Unit::kCount, D::kNone,
+       summary([](const F& f) { return double(f.counts.colours); })},
       {"colours_surface", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.colours_surface); })},
       {"colours_surface_goal", Unit::kCount, D::kNone,

@@ -26,8 +26,7 @@ StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solv
     stretch_sum += d.rms_stretch;
   }
   figures.energy_first_half = half ? first / double(half) : 0;
-  figures.energy_last_half =
-      settings.steps > half ? last / double(settings.steps - half) : 0;
+  figures.energy_last_half = settings.steps > half ? last / double(settings.steps - half) : 0;
   figures.energy_drift = !figures.finite ? std::numeric_limits<double>::infinity()
                          : figures.energy_first_half > 0
                              ? figures.energy_last_half / figures.energy_first_half

@@ -11,8 +11,8 @@
 namespace tb {
 
 struct StabilitySettings {
-  size_t steps = 60;            // frames simulated
-  size_t dispatch_budget = 8;   // GPU dispatches per frame the solver may spend
+  size_t steps = 60;           // frames simulated
+  size_t dispatch_budget = 8;  // GPU dispatches per frame the solver may spend
 };
 
 struct StabilityFigures {
@@ -28,7 +28,7 @@ struct StabilityFigures {
   // blast), about 1 a steady periodic motion, above 1 the solver feeds energy in; a run
   // that blew up is +inf. Lower is better.
   double energy_drift = 0;
-  double energy_peak = 0;   // largest per-step value (m^2/s^2)
+  double energy_peak = 0;  // largest per-step value (m^2/s^2)
   // Largest |length - rest| / rest of any surface spring at the end of any step (1): 0 is
   // a skin that never stretches; the budget's residual shows here.
   double max_stretch = 0;

@@ -44,8 +44,8 @@ Vec3d boundingBoxCentre(const std::vector<Vec3d>& points) {
 
 }  // namespace
 
-MassSpringSimulation::MassSpringSimulation(const Scenario& scenario,
-                                           const SolverSettings& settings, bool goal_springs)
+MassSpringSimulation::MassSpringSimulation(const Scenario& scenario, const SolverSettings& settings,
+                                           bool goal_springs)
     : scenario_(scenario),
       input_(std::make_unique<SoftBodyInput>(parseSoftBody(scenario))),
       rig_(*input_, boundingBoxCentre(input_->skin.positions)),
@@ -71,10 +71,13 @@ MassSpringSimulation::MassSpringSimulation(const Scenario& scenario,
   render_mesh_ = tessellateForRendering(input_->skin, kRenderLevel, system_.length_scale_m);
 }
 
-void MassSpringSimulation::setAnchors(size_t j, double dt_s) { state_.anchors = anchorsAt(j, dt_s); }
+void MassSpringSimulation::setAnchors(size_t j, double dt_s) {
+  state_.anchors = anchorsAt(j, dt_s);
+}
 
 float MassSpringSimulation::stompSine(size_t s, size_t j, double dt_s) const {
-  return float(std::sin(2 * std::numbers::pi * input_->stomps[s].frequency_hz * (double(j) * dt_s)));
+  return float(
+      std::sin(2 * std::numbers::pi * input_->stomps[s].frequency_hz * (double(j) * dt_s)));
 }
 
 std::vector<Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const {
@@ -84,7 +87,8 @@ std::vector<Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const 
   std::vector<Vec3f> anchors(system_.anchor_count);
   for (size_t v = 0; v < n; ++v) {
     Vec3f offset{0, 0, 0};
-    for (size_t s = 0; s < stomps; ++s) offset = offset + stomp_amplitude_[v * stomps + s] * sines[s];
+    for (size_t s = 0; s < stomps; ++s)
+      offset = offset + stomp_amplitude_[v * stomps + s] * sines[s];
     anchors[v] = bone_f_[v] + offset;
     anchors[n + v] = rest_f_[v] + offset;
   }
@@ -95,7 +99,8 @@ std::vector<Vec3f> MassSpringSimulation::convergenceStart() const {
   std::vector<Vec3f> x(system_.vertex_count);
   for (size_t v = 0; v < x.size(); ++v) {
     Vec3d p = toDouble(rest_f_[v]);
-    for (int i = 0; i < 3; ++i) p[i] += kConvergenceJitter * system_.length_scale_m * hashUnit(v, i);
+    for (int i = 0; i < 3; ++i)
+      p[i] += kConvergenceJitter * system_.length_scale_m * hashUnit(v, i);
     x[v] = toFloat(p);
   }
   return x;
@@ -229,7 +234,8 @@ StepDiagnostics MassSpringSimulation::diagnostics() const {
   const std::vector<Vec3d> x = toDouble(state_.x);
   double energy = 0;
   for (size_t v = 0; v < n; ++v) {
-    if (!std::isfinite(x[v].x) || !std::isfinite(x[v].y) || !std::isfinite(x[v].z)) d.finite = false;
+    if (!std::isfinite(x[v].x) || !std::isfinite(x[v].y) || !std::isfinite(x[v].z))
+      d.finite = false;
     if (last_dt_s_ > 0) {
       const Vec3d velocity = (1 / last_dt_s_) * (x[v] - toDouble(x_previous_[v]));
       const Vec3d goal_velocity =
@@ -297,7 +303,8 @@ std::vector<VariantInfo> MassSpringTechnique::variants() const {
        "Gauss-Seidel by independent batches from a greedy graph colouring (one dispatch per "
        "colour)",
        {}},
-      {"jacobi", "Jacobi: each vertex averages its springs' corrections (one dispatch per iteration)",
+      {"jacobi",
+       "Jacobi: each vertex averages its springs' corrections (one dispatch per iteration)",
        {{"omega", 1.0}}},
       {"jacobi_chebyshev",
        "Jacobi with Chebyshev semi-iterative acceleration (Wang, SIGGRAPH Asia 2015)",

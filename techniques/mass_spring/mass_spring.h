@@ -24,8 +24,7 @@ inline constexpr uint32_t kRenderLevel = 3;
 
 class MassSpringSimulation final : public Simulation, public ConstraintSolver {
  public:
-  MassSpringSimulation(const Scenario& scenario, const SolverSettings& settings,
-                       bool goal_springs);
+  MassSpringSimulation(const Scenario& scenario, const SolverSettings& settings, bool goal_springs);
 
   // Simulation
   const Scenario& scenario() const override { return scenario_; }
@@ -94,15 +93,15 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   SpringSystem system_;
   SpringSolver<float> solver_;
   SolverState<float> state_;
-  std::vector<Vec3f> x_previous_;      // Verlet: positions of the step before
-  std::vector<Vec3d> goal_previous_;   // goal anchors of the step before (diagnostics)
+  std::vector<Vec3f> x_previous_;     // Verlet: positions of the step before
+  std::vector<Vec3d> goal_previous_;  // goal anchors of the step before (diagnostics)
   Vec3d origin_{0, 0, 0};
   RenderMesh render_mesh_;
   double time_s_ = 0;
   double last_dt_s_ = 0;
   size_t steps_done_ = 0;
-  std::vector<Vec3f> rest_f_, bone_f_;    // rest positions and bone points (float, local)
-  std::vector<Vec3f> stomp_amplitude_;    // [v * stomps + s]: rig_.stompAmplitude in float
+  std::vector<Vec3f> rest_f_, bone_f_;  // rest positions and bone points (float, local)
+  std::vector<Vec3f> stomp_amplitude_;  // [v * stomps + s]: rig_.stompAmplitude in float
   size_t dispatches_per_step_ = 8;
   bool goal_springs_ = true;
 };

@@ -3,8 +3,8 @@
 // position and anchor (w = 0), springs in colour-major order, Jacobi gather lists.
 #include <algorithm>
 #include <bit>
-#include <map>
 #include <cmath>
+#include <map>
 
 #include "techniques/mass_spring/mass_spring.h"
 
@@ -84,8 +84,8 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
     std::vector<uint32_t> springs;
     for (uint32_t s : system_.colour_order) {
       const Spring& spring = system_.springs[s];
-      springs.insert(springs.end(), {spring.a, spring.b, word(float(spring.rest_m)),
-                                     word(float(spring.weight))});
+      springs.insert(springs.end(),
+                     {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
     }
     for (uint32_t c = 0; c < system_.colour_count; ++c) {
       gpu::GpuComputePass pass;
@@ -109,7 +109,8 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
   // odd steps the reverse, so after an even number of steps "positions" holds the result.
   // Chebyshev: the output buffer holds x_{k-1} on entry (x_0 before the first iteration).
   pass.buffers = {buffer(0, solverPositionBuffer(), positions, "positions_other"),
-                  buffer(1, "positions_other", chebyshev ? positions : std::vector<uint32_t>(positions.size(), 0u),
+                  buffer(1, "positions_other",
+                         chebyshev ? positions : std::vector<uint32_t>(positions.size(), 0u),
                          solverPositionBuffer()),
                   buffer(2, "anchors", anchors),
                   buffer(3, "end_start", tables.end_start),
@@ -145,8 +146,8 @@ SimulationFootprint MassSpringSimulation::footprint() const {
   }
   SimulationFootprint footprint;
   for (const auto& [name, bytes] : sizes) {
-    const bool state = name == "positions" || name == "previous_positions" ||
-                       name == "positions_other";
+    const bool state =
+        name == "positions" || name == "previous_positions" || name == "positions_other";
     (state ? footprint.state_bytes : footprint.auxiliary_bytes) += bytes;
   }
   return footprint;
@@ -172,30 +173,33 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
     size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
     while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
     const Vec3f centre = vecCast<float>(blast.center_m - origin_);
-    blasts.insert(blasts.end(), {word(centre.x), word(centre.y), word(centre.z), 0u,
-                                 word(float(blast.radius_m)), word(float(blast.speed_m_per_s)),
-                                 k < rows ? uint32_t(k) : 0xffffffffu, 0u});
+    blasts.insert(blasts.end(),
+                  {word(centre.x), word(centre.y), word(centre.z), 0u, word(float(blast.radius_m)),
+                   word(float(blast.speed_m_per_s)), k < rows ? uint32_t(k) : 0xffffffffu, 0u});
   }
   const Vec3f gravity_step = vecCast<float>((dt * dt) * input_->gravity_m_per_s2);
   gpu::GpuComputePass verlet;
   verlet.shader = "mass_spring/verlet.comp";
-  verlet.buffers = {buffer(0, "positions", positions),
-                    buffer(1, "previous_positions", vec4Words(x_previous_)),
-                    buffer(2, "anchors", vec4Words(state_.anchors)),
-                    buffer(3, "rest", vec4Words(rest_f_)),
-                    buffer(4, "bone_rest", vec4Words(bone_f_)),
-                    buffer(5, "stomp_amplitudes", amplitudes),
-                    buffer(6, "stomp_sines", sines),
-                    buffer(7, "blasts", blasts),
-                    // Gauss-Seidel has no second position buffer: binding 8 aliases the
-                    // first and is never written (kCopyToOther = 0).
-                    jacobi ? buffer(8, "positions_other", std::vector<uint32_t>(positions.size(), 0u))
-                           : buffer(8, "positions", positions)};
+  verlet.buffers = {
+      buffer(0, "positions", positions), buffer(1, "previous_positions", vec4Words(x_previous_)),
+      buffer(2, "anchors", vec4Words(state_.anchors)), buffer(3, "rest", vec4Words(rest_f_)),
+      buffer(4, "bone_rest", vec4Words(bone_f_)), buffer(5, "stomp_amplitudes", amplitudes),
+      buffer(6, "stomp_sines", sines), buffer(7, "blasts", blasts),
+      // Gauss-Seidel has no second position buffer: binding 8 aliases the
+      // first and is never written (kCopyToOther = 0).
+      jacobi ? buffer(8, "positions_other", std::vector<uint32_t>(positions.size(), 0u))
+             : buffer(8, "positions", positions)};
   verlet.specialization = {chebyshev ? 1u : 0u};
-  verlet.push_constants = {uint32_t(n), uint32_t(stomps), uint32_t(rows),
-                           uint32_t(input_->blasts.size()), word(float(1 - input_->damping)),
-                           word(gravity_step.x), word(gravity_step.y), word(gravity_step.z),
-                           word(float(dt)), 0u};
+  verlet.push_constants = {uint32_t(n),
+                           uint32_t(stomps),
+                           uint32_t(rows),
+                           uint32_t(input_->blasts.size()),
+                           word(float(1 - input_->damping)),
+                           word(gravity_step.x),
+                           word(gravity_step.y),
+                           word(gravity_step.z),
+                           word(float(dt)),
+                           0u};
   verlet.step_index_word = 9;
   verlet.groups_x = groups(n);
   gpu::GpuComputeProgram program;
@@ -207,8 +211,8 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
     std::vector<uint32_t> springs;
     for (uint32_t s : system_.colour_order) {
       const Spring& spring = system_.springs[s];
-      springs.insert(springs.end(), {spring.a, spring.b, word(float(spring.rest_m)),
-                                     word(float(spring.weight))});
+      springs.insert(springs.end(),
+                     {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
     }
     uint32_t largest = 0;
     for (uint32_t c = 0; c < system_.colour_count; ++c) {
@@ -217,10 +221,9 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
     for (uint32_t d = 0; d < budget; ++d) {
       gpu::GpuComputePass pass;
       pass.shader = "mass_spring/gs_colour_step.comp";
-      pass.buffers = {buffer(0, "positions", positions),
-                      buffer(1, "anchors", vec4Words(state_.anchors)),
-                      buffer(2, "springs", springs),
-                      buffer(3, "colour_start", system_.colour_start)};
+      pass.buffers = {
+          buffer(0, "positions", positions), buffer(1, "anchors", vec4Words(state_.anchors)),
+          buffer(2, "springs", springs), buffer(3, "colour_start", system_.colour_start)};
       pass.push_constants = {d, budget, system_.colour_count, 0u};
       pass.step_index_word = 3;
       pass.groups_x = groups(largest);

@@ -1,10 +1,9 @@
 #include "techniques/mass_spring/soft_body.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <utility>
 
@@ -77,7 +76,8 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
   SoftBodyInput input;
   input.source = file;
   const auto section_it = scenario.sections.find("mass_spring");
-  if (section_it == scenario.sections.end()) read.fail("", "the scenario has no \"mass_spring\" section");
+  if (section_it == scenario.sections.end())
+    read.fail("", "the scenario has no \"mass_spring\" section");
   Json section;
   try {
     section = Json::parse(section_it->second);
@@ -136,8 +136,8 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
           stomp.direction = read.vec3(motion["direction"], field + ".direction");
         }
         stomp.frequency_hz = read.number(motion, "frequency_hz", field + ".frequency_hz", 0, 1e6);
-        const Json& amplitudes = motion.contains("joint_amplitudes_m") ? motion["joint_amplitudes_m"]
-                                                                        : Json();
+        const Json& amplitudes =
+            motion.contains("joint_amplitudes_m") ? motion["joint_amplitudes_m"] : Json();
         if (!amplitudes.is_array() || amplitudes.size() != input.bone_joints_m.size()) {
           read.fail(field + ".joint_amplitudes_m",
                     "must be an array of one number (metres) per joint of bone_chain_m");
@@ -155,7 +155,8 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
         if (!motion.contains("center_m")) read.fail(field + ".center_m", "missing");
         blast.center_m = read.vec3(motion["center_m"], field + ".center_m");
         blast.radius_m = read.number(motion, "radius_m", field + ".radius_m", 1e-9, 1e9);
-        blast.speed_m_per_s = read.number(motion, "speed_m_per_s", field + ".speed_m_per_s", 0, 1e6);
+        blast.speed_m_per_s =
+            read.number(motion, "speed_m_per_s", field + ".speed_m_per_s", 0, 1e6);
         input.blasts.push_back(blast);
       } else {
         read.fail(field + ".kind", "must be \"stomp\" or \"blast\", not \"" + kind + "\"");

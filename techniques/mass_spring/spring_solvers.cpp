@@ -63,8 +63,8 @@ void SpringSolver<Real>::jacobi(SolverState<Real>& state) const {
                       }
                     });
   if (settings_.kind == SolverKind::kJacobiChebyshev) {
-    const double w = chebyshevWeight(state.iteration, state.chebyshev_weight, settings_.rho,
-                                     settings_.delay);
+    const double w =
+        chebyshevWeight(state.iteration, state.chebyshev_weight, settings_.rho, settings_.delay);
     state.chebyshev_weight = w;
     if (state.previous.size() != n) state.previous = state.x;
     const Real wr = Real(w);
@@ -72,7 +72,8 @@ void SpringSolver<Real>::jacobi(SolverState<Real>& state) const {
     for (size_t v = 0; v < n; ++v) {
       const Vec3T<Real>& p = state.previous[v];
       const Vec3T<Real>& y = state.scratch[v];
-      const Vec3T<Real> next{p.x + wr * (y.x - p.x), p.y + wr * (y.y - p.y), p.z + wr * (y.z - p.z)};
+      const Vec3T<Real> next{p.x + wr * (y.x - p.x), p.y + wr * (y.y - p.y),
+                             p.z + wr * (y.z - p.z)};
       state.previous[v] = state.x[v];
       state.x[v] = next;
     }
@@ -86,10 +87,16 @@ void SpringSolver<Real>::iterate(SolverState<Real>& state, size_t count) const {
   assert(state.x.size() == system_.vertex_count && state.anchors.size() >= system_.anchor_count);
   for (size_t i = 0; i < count; ++i) {
     switch (settings_.kind) {
-      case SolverKind::kGaussSeidelSerial: gaussSeidelSerial(state); break;
-      case SolverKind::kGaussSeidelColoured: gaussSeidelColoured(state); break;
+      case SolverKind::kGaussSeidelSerial:
+        gaussSeidelSerial(state);
+        break;
+      case SolverKind::kGaussSeidelColoured:
+        gaussSeidelColoured(state);
+        break;
       case SolverKind::kJacobi:
-      case SolverKind::kJacobiChebyshev: jacobi(state); break;
+      case SolverKind::kJacobiChebyshev:
+        jacobi(state);
+        break;
     }
     ++state.iteration;
   }

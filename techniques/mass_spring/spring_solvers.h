@@ -19,10 +19,10 @@
 namespace tb::mass_spring {
 
 enum class SolverKind : uint8_t {
-  kGaussSeidelSerial,   // gs_serial: one spring at a time, in index or colour-major order
-  kGaussSeidelColoured, // gs_colored: colour by colour, the springs of a colour in parallel
-  kJacobi,              // jacobi: every vertex gathers its springs' corrections from old positions
-  kJacobiChebyshev,     // jacobi_chebyshev: Jacobi with Wang's Chebyshev weights
+  kGaussSeidelSerial,    // gs_serial: one spring at a time, in index or colour-major order
+  kGaussSeidelColoured,  // gs_colored: colour by colour, the springs of a colour in parallel
+  kJacobi,               // jacobi: every vertex gathers its springs' corrections from old positions
+  kJacobiChebyshev,      // jacobi_chebyshev: Jacobi with Wang's Chebyshev weights
 };
 
 struct SolverSettings {
@@ -61,12 +61,12 @@ inline double chebyshevWeight(size_t k, double previous, double rho, size_t dela
 // Positions and anchors of one solve, and the solver's running state.
 template <class Real>
 struct SolverState {
-  std::vector<Vec3T<Real>> x;        // vertex positions, metres
-  std::vector<Vec3T<Real>> anchors;  // kinematic anchor positions, metres
-  std::vector<Vec3T<Real>> previous; // Chebyshev: x of the iteration before
-  std::vector<Vec3T<Real>> scratch;  // Jacobi output
-  size_t iteration = 0;              // iterations since the frame started
-  double chebyshev_weight = 1;       // the last Chebyshev weight
+  std::vector<Vec3T<Real>> x;         // vertex positions, metres
+  std::vector<Vec3T<Real>> anchors;   // kinematic anchor positions, metres
+  std::vector<Vec3T<Real>> previous;  // Chebyshev: x of the iteration before
+  std::vector<Vec3T<Real>> scratch;   // Jacobi output
+  size_t iteration = 0;               // iterations since the frame started
+  double chebyshev_weight = 1;        // the last Chebyshev weight
   // Coloured Gauss-Seidel under a dispatch budget (iterateDispatches): the colour the cut
   // sweep goes on from next time. Kept across steps, so a sweep longer than the budget
   // completes over several frames.
@@ -124,8 +124,8 @@ class SpringSolver {
 // RMS relative stretch of `x` over every spring (surface and inner: (|d| - rest) / rest;
 // anchor springs of rest 0: |d| / length_scale_m), in double. `kinds` selects the springs.
 struct StretchFigures {
-  double rms = 0;          // over the selected springs
-  double max_abs = 0;      // largest |relative stretch|
+  double rms = 0;      // over the selected springs
+  double max_abs = 0;  // largest |relative stretch|
   size_t springs = 0;
 };
 StretchFigures measureStretch(const SpringSystem& system, const std::vector<Vec3d>& x,

@@ -66,7 +66,8 @@ void buildSolverTables(SpringSystem& system) {
   std::vector<uint32_t> fill(system.end_start.begin(), system.end_start.end() - 1);
   for (const Spring& spring : system.springs) {
     system.ends[fill[spring.a]++] = {spring.b, spring.rest_m, spring.weight};
-    if (!spring.anchored()) system.ends[fill[spring.b]++] = {spring.a, spring.rest_m, spring.weight};
+    if (!spring.anchored())
+      system.ends[fill[spring.b]++] = {spring.a, spring.rest_m, spring.weight};
   }
 }
 

@@ -18,9 +18,9 @@ enum class SpringKind : uint8_t { kSurface, kInner, kGoal };
 inline constexpr uint32_t kAnchorBit = 0x80000000u;
 
 struct Spring {
-  uint32_t a = 0;       // vertex
-  uint32_t b = 0;       // vertex, or kAnchorBit | anchor index
-  double rest_m = 0;    // rest length, metres (0 for a goal spring)
+  uint32_t a = 0;     // vertex
+  uint32_t b = 0;     // vertex, or kAnchorBit | anchor index
+  double rest_m = 0;  // rest length, metres (0 for a goal spring)
   // Fraction of the stretch a projection removes, (0, 1]: the seed's code moves each of two
   // vertices by half the stretch (weight 0.5 x stiffness); an anchor spring moves its one
   // vertex by the whole (weight = stiffness).
@@ -32,9 +32,9 @@ struct Spring {
 
 // One end of a spring seen from a vertex (the Jacobi gather list).
 struct SpringEnd {
-  uint32_t other = 0;   // the other vertex, or kAnchorBit | anchor index
+  uint32_t other = 0;  // the other vertex, or kAnchorBit | anchor index
   double rest_m = 0;
-  double weight = 0;    // as Spring::weight
+  double weight = 0;  // as Spring::weight
 };
 
 struct SpringSystem {

@@ -32,8 +32,7 @@ TetBinding bindToTriangle(const std::vector<Vec3d>& rest, uint32_t v0, uint32_t 
 }
 
 Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions) {
-  const Vec3d &p0 = positions[binding.v0], &p1 = positions[binding.v1],
-              &p2 = positions[binding.v2];
+  const Vec3d &p0 = positions[binding.v0], &p1 = positions[binding.v1], &p2 = positions[binding.v2];
   const Vec3d p3 = virtualApex(p0, p1, p2, binding.volume);
   return binding.w0 * p0 + binding.w1 * p1 + binding.w2 * p2 +
          (1 - binding.w0 - binding.w1 - binding.w2) * p3;
@@ -58,14 +57,15 @@ RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_
           const double u = double(i) / level, v = double(j) / level;
           const Vec3d q = (1 - v) * ((1 - u) * rest[face[0]] + u * rest[face[1]]) +
                           v * ((1 - u) * rest[face[3]] + u * rest[face[2]]);
-          grid[j * (level + 1) + i] = j <= i ? add(face[0], face[1], face[2], q)
-                                             : add(face[0], face[2], face[3], q);
+          grid[j * (level + 1) + i] =
+              j <= i ? add(face[0], face[1], face[2], q) : add(face[0], face[2], face[3], q);
         }
       }
       for (uint32_t j = 0; j < level; ++j) {
         for (uint32_t i = 0; i < level; ++i) {
           const uint32_t a = grid[j * (level + 1) + i], b = grid[j * (level + 1) + i + 1],
-                         c = grid[(j + 1) * (level + 1) + i + 1], d = grid[(j + 1) * (level + 1) + i];
+                         c = grid[(j + 1) * (level + 1) + i + 1],
+                         d = grid[(j + 1) * (level + 1) + i];
           out.triangles.insert(out.triangles.end(), {a, b, c, a, c, d});
         }
       }

@@ -37,9 +37,9 @@ Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions)
 // on quads, linear on triangles, fan triangles on larger polygons), each point bound to the
 // fan triangle of its face that contains it, with an apex at `apex_height` metres.
 struct RenderMesh {
-  std::vector<TetBinding> bindings;     // one per render vertex (points on shared edges repeat)
-  std::vector<Vec3d> rest_positions;    // the render vertices at rest
-  std::vector<uint32_t> triangles;      // 3 indices per triangle into bindings
+  std::vector<TetBinding> bindings;   // one per render vertex (points on shared edges repeat)
+  std::vector<Vec3d> rest_positions;  // the render vertices at rest
+  std::vector<uint32_t> triangles;    // 3 indices per triangle into bindings
 };
 RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_height);
 

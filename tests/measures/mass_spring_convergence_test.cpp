@@ -29,10 +29,11 @@ TEST(MassSpringConvergence, GaussSeidelAndChebyshevNeedFewerIterationsThanJacobi
   for (const bool goal : {false, true}) {
     for (const char* variant : {"gs_serial", "gs_colored", "jacobi", "jacobi_chebyshev"}) {
       const ConvergenceFigures f = converge(variant, goal);
-      std::printf("%-17s goal=%d colours=%u to1e-3=%s to1e-5=%s r0=%.3g r@8=%.3g ref=%zu/%d err=%.3g\n",
-                  variant, goal, f.counts.colours, text(f.iterations_to_1e3).c_str(),
-                  text(f.iterations_to_1e5).c_str(), f.initial_residual, f.residual_at_budget,
-                  f.reference_iterations, f.reference_converged, f.final_position_error);
+      std::printf(
+          "%-17s goal=%d colours=%u to1e-3=%s to1e-5=%s r0=%.3g r@8=%.3g ref=%zu/%d err=%.3g\n",
+          variant, goal, f.counts.colours, text(f.iterations_to_1e3).c_str(),
+          text(f.iterations_to_1e5).c_str(), f.initial_residual, f.residual_at_budget,
+          f.reference_iterations, f.reference_converged, f.final_position_error);
       if (goal) {
         EXPECT_TRUE(f.reference_converged) << variant;
       }
@@ -56,7 +57,8 @@ TEST(MassSpringConvergence, GaussSeidelAndChebyshevNeedFewerIterationsThanJacobi
   // Without goal springs too: fewer iterations to 1e-3, or Jacobi never gets there.
   const ConvergenceFigures& chebyshev = figures[{"jacobi_chebyshev", false}];
   ASSERT_TRUE(chebyshev.iterations_to_1e3);
-  EXPECT_TRUE(!jacobi.iterations_to_1e3 || *chebyshev.iterations_to_1e3 < *jacobi.iterations_to_1e3);
+  EXPECT_TRUE(!jacobi.iterations_to_1e3 ||
+              *chebyshev.iterations_to_1e3 < *jacobi.iterations_to_1e3);
 }
 
 }  // namespace

@@ -46,8 +46,7 @@ int64_t compare(gpu::Context& context, const std::string& variant, bool goal) {
   gpu::ComputeRunner runner(context, simulation.solverPrograms());
   runner.run(kIterations);
   const std::vector<Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
-      runner.read(MassSpringSimulation::solverPositionBuffer()),
-      simulation.springs().vertex_count);
+      runner.read(MassSpringSimulation::solverPositionBuffer()), simulation.springs().vertex_count);
   const std::vector<Vec3f> start = simulation.solverState().x;
   simulation.iterate(kIterations);
   const int64_t ulp = maxUlp(gpu_positions, simulation.solverState().x);

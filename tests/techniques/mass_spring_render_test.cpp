@@ -76,8 +76,8 @@ TEST(MassSpringRender, RenderMeshFollowsTheSimulatedMesh) {
     worst = std::max(worst, length(drawVertex(lifted_binding, moved) - rigid(lifted)));
     // Broken variant: an apex left where it was at rest does not follow the motion.
     const TetBinding& l = lifted_binding;
-    const Vec3d apex = virtualApex(skin.positions[l.v0], skin.positions[l.v1],
-                                   skin.positions[l.v2], l.volume);
+    const Vec3d apex =
+        virtualApex(skin.positions[l.v0], skin.positions[l.v1], skin.positions[l.v2], l.volume);
     const Vec3d fixed_apex = l.w0 * moved[l.v0] + l.w1 * moved[l.v1] + l.w2 * moved[l.v2] +
                              (1 - l.w0 - l.w1 - l.w2) * apex;
     worst_fixed_apex = std::max(worst_fixed_apex, length(fixed_apex - rigid(lifted)));

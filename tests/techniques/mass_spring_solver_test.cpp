@@ -1,7 +1,6 @@
 // Issue 19, acceptance 1 and 2: the projection against hand computations and the analytic
 // rest state (double), and the graph-coloured Gauss-Seidel against the serial one.
 #include <gtest/gtest.h>
-
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -100,7 +99,8 @@ TEST(MassSpringSolver, HangingChainSettlesToTheAnalyticRestState) {
     std::vector<Vec3d> previous = state.x;
     for (int step = 0; step < 4000; ++step) {
       for (size_t v = 0; v < 3; ++v) {
-        const Vec3d next = state.x[v] + (1 - damping) * (state.x[v] - previous[v]) + dt * dt * gravity;
+        const Vec3d next =
+            state.x[v] + (1 - damping) * (state.x[v] - previous[v]) + dt * dt * gravity;
         previous[v] = state.x[v];
         state.x[v] = next;
       }
@@ -163,7 +163,8 @@ bool bitwiseEqual(const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
 TEST(MassSpringColouring, ColouredGaussSeidelEqualsSerialColourMajorBitwise) {
   for (const bool goal : {true, false}) {
     const std::map<std::string, double> extra{{"goal_springs", goal}};
-    const auto serial = solveFromConvergenceFrame("gs_serial", {{"goal_springs", goal}, {"colour_major", 1}}, 20);
+    const auto serial =
+        solveFromConvergenceFrame("gs_serial", {{"goal_springs", goal}, {"colour_major", 1}}, 20);
     std::vector<Vec3f> coloured;
     {
       tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);

@@ -21,7 +21,8 @@ inline std::string massSpringSection(const std::string& animation) {
                  "spheres": [{"center_m": [1.90, -1.2749, 0.20], "radius_m": 0.15, "value": 0.95}]},
     "damping": 0.02,
     "gravity_m_per_s2": [0, 0, -9.81],
-    "animation": )" + animation + "}";
+    "animation": )" +
+         animation + "}";
 }
 
 inline const char* kStompAnimation =
