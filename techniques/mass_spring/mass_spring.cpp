@@ -252,6 +252,15 @@ StepDiagnostics MassSpringSimulation::diagnostics() const {
   return d;
 }
 
+std::vector<Vec3f> MassSpringSimulation::renderPositionsFloat() const {
+  std::vector<Vec3f> out;
+  out.reserve(render_mesh_.bindings.size());
+  for (const TetBinding& binding : render_mesh_.bindings) {
+    out.push_back(drawVertexFloat(binding, state_.x));
+  }
+  return out;
+}
+
 std::vector<Vec3d> MassSpringSimulation::renderPositions() const {
   const std::vector<Vec3d> x = positions();
   std::vector<Vec3d> out;

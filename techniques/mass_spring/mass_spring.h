@@ -70,6 +70,9 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   // none, it has no GPU path).
   // The render vertices for the current simulated positions (DrawVertex, in double).
   std::vector<Vec3d> renderPositions() const;
+  // The same in float relative to origin(), as gpuPrograms()' render pass writes
+  // "render_positions" (drawVertexFloat).
+  std::vector<Vec3f> renderPositionsFloat() const;
 
  private:
   // Anchors at time j dt (j = steps done; 0: the rest pose), in the float operations of
@@ -80,6 +83,8 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   JacobiBuffers jacobiBuffers() const;
   // One step's programs for the solver `kind` (gpuPrograms(), and the footprint's layout).
   std::vector<gpu::GpuComputeProgram> stepPrograms(SolverKind kind) const;
+  // The step's last pass: render vertices from the simulated ones (render.comp).
+  gpu::GpuComputePass renderPass() const;
   void setAnchors(size_t j, double dt_s);
   std::vector<Vec3f> anchorsAt(size_t j, double dt_s) const;
   // float(sin(2 pi f_s j dt)): stomp s's phase at time index j (the GPU's table holds these).

@@ -153,6 +153,23 @@ SimulationFootprint MassSpringSimulation::footprint() const {
   return footprint;
 }
 
+gpu::GpuComputePass MassSpringSimulation::renderPass() const {
+  std::vector<uint32_t> bindings;
+  for (const TetBinding& b : render_mesh_.bindings) {
+    bindings.insert(bindings.end(), {b.v0, b.v1, b.v2, word(float(b.w0)), word(float(b.w1)),
+                                     word(float(b.w2)), word(float(b.volume)), 0u});
+  }
+  const size_t count = render_mesh_.bindings.size();
+  gpu::GpuComputePass pass;
+  pass.shader = "mass_spring/render.comp";
+  pass.buffers = {buffer(0, "positions", vec4Words(state_.x)),
+                  buffer(1, "render_bindings", bindings),
+                  buffer(2, "render_positions", std::vector<uint32_t>(4 * count, 0u))};
+  pass.push_constants = {uint32_t(count)};
+  pass.groups_x = groups(count);
+  return pass;
+}
+
 std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKind kind) const {
   const size_t n = system_.vertex_count, stomps = input_->stomps.size();
   const double dt = scenario_.time_step_s;
@@ -229,6 +246,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
       pass.groups_x = groups(largest);
       program.passes.push_back(std::move(pass));
     }
+    program.passes.push_back(renderPass());
     return {program};
   }
   const JacobiBuffers tables = jacobiBuffers();
@@ -257,6 +275,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
     copy.groups_x = groups(n);
     program.passes.push_back(std::move(copy));
   }
+  program.passes.push_back(renderPass());
   return {program};
 }
 

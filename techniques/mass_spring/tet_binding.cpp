@@ -38,6 +38,25 @@ Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions)
          (1 - binding.w0 - binding.w1 - binding.w2) * p3;
 }
 
+Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<Vec3f>& positions) {
+  const Vec3f &p0 = positions[binding.v0], &p1 = positions[binding.v1], &p2 = positions[binding.v2];
+  const float third = 1.0f / 3.0f;  // 0.333333343, as the shader's constant
+  const float w0 = float(binding.w0), w1 = float(binding.w1), w2 = float(binding.w2);
+  const float volume = float(binding.volume);
+  const Vec3f c{(p0.x + p1.x + p2.x) * third, (p0.y + p1.y + p2.y) * third,
+                (p0.z + p1.z + p2.z) * third};
+  const Vec3f e1{p1.x - p0.x, p1.y - p0.y, p1.z - p0.z};
+  const Vec3f e2{p2.x - p0.x, p2.y - p0.y, p2.z - p0.z};
+  const Vec3f n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+  const float nn = n.x * n.x + n.y * n.y + n.z * n.z;
+  const float s = nn > 0.0f ? (6.0f * volume) / nn : 0.0f;
+  const Vec3f p3{c.x + n.x * s, c.y + n.y * s, c.z + n.z * s};
+  const float w3 = 1.0f - w0 - w1 - w2;
+  return {p0.x * w0 + p1.x * w1 + p2.x * w2 + p3.x * w3,
+          p0.y * w0 + p1.y * w1 + p2.y * w2 + p3.y * w3,
+          p0.z * w0 + p1.z * w1 + p2.z * w2 + p3.z * w3};
+}
+
 RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_height) {
   if (level < 1) throw std::invalid_argument("tessellateForRendering: level must be >= 1");
   RenderMesh out;

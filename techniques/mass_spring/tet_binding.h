@@ -32,6 +32,9 @@ TetBinding bindToTriangle(const std::vector<Vec3d>& rest, uint32_t v0, uint32_t 
 
 // DrawVertex of `binding` over the current simulated positions.
 Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions);
+// The same in float, in the operation order of shaders/mass_spring/render.comp (the weights
+// and volume rounded to float, as the GPU holds them).
+Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<Vec3f>& positions);
 
 // A rendered mesh: the simulated mesh's faces tessellated uniformly at `level` (bilinear
 // on quads, linear on triangles, fan triangles on larger polygons), each point bound to the

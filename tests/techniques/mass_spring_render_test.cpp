@@ -59,6 +59,14 @@ TEST(MassSpringRender, RenderMeshFollowsTheSimulatedMesh) {
     worst = std::max(worst, length(at_rest[i] - render.rest_positions[i]));
   }
   EXPECT_LT(worst, 1e-6);  // the simulated positions are float; the pawn spans ~0.5 m
+  // The float twin of the GPU's render pass agrees with the double DrawVertex.
+  const std::vector<Vec3f> at_rest_float = simulation.renderPositionsFloat();
+  double worst_float = 0;
+  for (size_t i = 0; i < at_rest.size(); ++i) {
+    worst_float = std::max(
+        worst_float, length(vecCast<double>(at_rest_float[i]) + simulation.origin() - at_rest[i]));
+  }
+  EXPECT_LT(worst_float, 1e-6);
   std::vector<Vec3d> moved = skin.positions;
   for (Vec3d& p : moved) p = rigid(p);
   worst = 0;
