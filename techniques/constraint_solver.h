@@ -24,6 +24,10 @@ struct SolverCounts {
   // version had surface and goal springs only): surface springs alone, surface and goal.
   uint32_t colours_surface = 0;
   uint32_t colours_surface_goal = 0;
+  // Jacobi: the fraction of gather reads of a neighbouring vertex that fall in the reader's
+  // own tile of 64 consecutive vertices (served from shared memory by the tiled GPU gather);
+  // 1 best, 0 for a solver without tiles.
+  double tile_local_fraction = 0;
   uint64_t constraints = 0;      // constraints projected per iteration
   uint64_t vertices = 0;         // simulated mass points
   uint64_t constraint_ends = 0;  // vertex visits per iteration (2 per spring, 1 per anchor spring)

@@ -84,6 +84,8 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
        summary([](const F& f) { return double(f.counts.colours_surface); })},
       {"colours_surface_goal", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.colours_surface_goal); })},
+      {"tile_local_fraction", Unit::kRatio, D::kNone,
+       summary([](const F& f) { return f.counts.tile_local_fraction; })},
       {"constraints", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.constraints); })},
       {"constraint_ends", Unit::kCount, D::kNone,

@@ -10,6 +10,11 @@
 
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kChebyshev = 0;
+// 1: seed 003's shared-memory tiling: the workgroup's 64 consecutive vertices are copied to
+// shared memory once, and a gather reads a neighbour inside the tile from there (the same
+// values, so the result is bitwise the untiled one).
+layout(constant_id = 1) const uint kTiled = 1;
+shared vec3 tile[64];
 
 struct End { uint other; float rest; float weight; uint pad; };
 layout(std430, set = 0, binding = 0) readonly buffer PositionsIn { vec4 x_in[]; };
@@ -27,15 +32,25 @@ layout(push_constant) uniform Params {
   uint iteration;     // 0-based, written by the runner each step (step_index_word)
 } params;
 
+vec3 positionIn(uint o) {
+  const uint base = gl_WorkGroupID.x * 64u;
+  if (kTiled != 0u && o >= base && o < base + 64u) return tile[o - base];
+  return x_in[o].xyz;
+}
+
 void main() {
   const uint v = gl_GlobalInvocationID.x;
+  if (kTiled != 0u) {
+    if (v < params.vertex_count) tile[gl_LocalInvocationID.x] = x_in[v].xyz;
+    barrier();
+  }
   if (v >= params.vertex_count) return;
   const vec3 self = x_in[v].xyz;
   precise float sx = 0.0, sy = 0.0, sz = 0.0;
   for (uint e = end_start[v]; e < end_start[v + 1u]; ++e) {
     const End end = ends[e];
     const vec3 other = (end.other & kAnchorBit) != 0u ? anchors[end.other & ~kAnchorBit].xyz
-                                                       : x_in[end.other].xyz;
+                                                       : positionIn(end.other);
     const vec3 c = springCorrection(self, other, end.rest, end.weight);
     sx = sx + c.x;
     sy = sy + c.y;

@@ -177,6 +177,19 @@ SolverCounts MassSpringSimulation::counts() const {
   c.constraints = system_.springs.size();
   c.vertices = system_.vertex_count;
   c.constraint_ends = system_.ends.size();
+  if (kind == SolverKind::kJacobi || kind == SolverKind::kJacobiChebyshev) {
+    // Gather reads of a neighbour in the same 64-vertex tile (shared memory when tiled).
+    uint64_t vertex_ends = 0, in_tile = 0;
+    for (size_t v = 0; v < system_.vertex_count; ++v) {
+      for (uint32_t e = system_.end_start[v]; e < system_.end_start[v + 1]; ++e) {
+        const uint32_t o = system_.ends[e].other;
+        if (o & kAnchorBit) continue;
+        ++vertex_ends;
+        if (o / 64 == v / 64) ++in_tile;
+      }
+    }
+    c.tile_local_fraction = vertex_ends ? double(in_tile) / double(vertex_ends) : 0;
+  }
   c.colours_surface = colourCountOf(system_, {SpringKind::kSurface});
   c.colours_surface_goal = colourCountOf(system_, {SpringKind::kSurface, SpringKind::kGoal});
   c.whole_iterations_under_budget =
@@ -288,6 +301,7 @@ SolverSettings settingsOf(const TechniqueInfo& info, const VariantInfo& variant)
   settings.omega = paramOr<double>(info, variant, "omega", 1.0);
   settings.rho = paramOr<double>(info, variant, "rho", settings.rho);
   settings.delay = paramOr<size_t>(info, variant, "delay", settings.delay);
+  settings.tiled = paramOr<bool>(info, variant, "tiled", settings.tiled);
   if (!(settings.omega > 0 && settings.omega < 2)) {
     throw UnsupportedInput(info.id + "/" + variant.name + ": omega must be in (0, 2)");
   }

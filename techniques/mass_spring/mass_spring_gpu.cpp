@@ -117,7 +117,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
                   buffer(4, "ends", tables.ends),
                   buffer(5, "vertex_scale", tables.scale),
                   buffer(6, "chebyshev_weights", tables.weights)};
-  pass.specialization = {chebyshev ? 1u : 0u};
+  pass.specialization = {chebyshev ? 1u : 0u, settings.tiled ? 1u : 0u};
   pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), 0u};
   pass.step_index_word = 2;
   pass.groups_x = groups(n);
@@ -262,7 +262,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
                     buffer(5, "vertex_scale", tables.scale),
                     buffer(6, "chebyshev_weights", tables.weights)};
     // Only the first declaration of a name uploads: every pass declares the same words.
-    pass.specialization = {chebyshev ? 1u : 0u};
+    pass.specialization = {chebyshev ? 1u : 0u, solver_.settings().tiled ? 1u : 0u};
     pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), d};
     pass.groups_x = groups(n);
     program.passes.push_back(std::move(pass));

@@ -35,6 +35,9 @@ struct SolverSettings {
   // Jacobi iteration and the iterations run with weight 1 before the schedule starts.
   double rho = 0.9;
   size_t delay = 4;
+  // GPU Jacobi: seed 003's shared-memory tiling of the gather (shaders/mass_spring/
+  // jacobi.comp, kTiled); the same values either way.
+  bool tiled = true;
 };
 
 // The correction a spring end at `self` takes towards `other` (operation order fixed: the
