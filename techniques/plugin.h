@@ -24,7 +24,8 @@
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
 // 8: DataFootprint gained displacement_map_bytes, GpuPatchProgram a displacement map
-//    (GpuDisplacement), Scenario its technique, sections and mesh path.
+//    (GpuDisplacement), Scenario its technique, sections and mesh path, SimulationFootprint
+//    the alternative a user would pick (alternative_bytes, alternative).
 // 7: handshake first (tessbench_plugin_abi, then tessbench_register_plugin(PluginHost*));
 //    plug-ins ship shaders through PluginHost::addShader.
 // 6: SurfacePatches gained makeBatchPattern() and evaluateBatch() (batched evaluation,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <optional>
 #include <set>
 #include <string>
@@ -15,10 +16,19 @@
 namespace tb {
 namespace {
 
+// snake_case; a '-' only as a tolerance's negative exponent ("iterations_to_1e-3", the
+// name the amendments to issue 19 give).
 bool isSnakeCase(const std::string& name) {
   if (name.empty() || name.front() == '_' || name.back() == '_') return false;
-  for (char c : name) {
-    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  for (size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    const bool exponent_sign = c == '-' && i >= 2 && name[i - 1] == 'e' &&
+                               std::isdigit(static_cast<unsigned char>(name[i - 2])) &&
+                               i + 1 < name.size() &&
+                               std::isdigit(static_cast<unsigned char>(name[i + 1]));
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || exponent_sign)) {
+      return false;
+    }
   }
   return true;
 }

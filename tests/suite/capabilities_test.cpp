@@ -329,7 +329,8 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
     const std::string id = measure->info().id;
     if (id == "memory" || id == "instructions") {
       EXPECT_TRUE(r.has(MeasureNeed::kSurfaceOrSimulation)) << id;
-    } else if (id == "sim_cost" || id == "wave_error") {
+    } else if (id == "sim_cost" || id == "wave_error" || id == "convergence" ||
+               id == "stability") {
       EXPECT_TRUE(r.has(MeasureNeed::kSimulation)) << id;
     } else {
       EXPECT_TRUE(r.has(MeasureNeed::kSurface)) << id;

@@ -92,8 +92,11 @@ TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
     std::filesystem::copy_file(testing::assetPath(std::string("opensubdiv/") + name),
                                copy / "opensubdiv" / name);
   }
-  // The bundled scenarios too: simulation techniques run on them by default.
+  // The bundled scenarios too: simulation techniques run on them by default (the
+  // mass_spring ones with the bundled pawn as their skin).
   std::filesystem::copy(testing::assetPath("scenarios"), copy / "scenarios");
+  std::filesystem::copy_file(testing::assetPath("opensubdiv/catmark_pawn.obj"),
+                             copy / "opensubdiv" / "catmark_pawn.obj");
   ::setenv("TB_ASSETS_DIR", copy.c_str(), 1);
   const std::string there = run();
   ::unsetenv("TB_ASSETS_DIR");
