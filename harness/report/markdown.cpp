@@ -509,7 +509,10 @@ void appendPublishingScreen(const Results& results, const std::vector<std::strin
 
 // A measure's technique × asset matrix: each technique's default variant (its first), the
 // worst value of the first headline metric over the rows; "n/a" where the technique does
-// not take the asset, "—" where the measure did not run.
+// not take the asset, "—" where the measure did not run. Only the techniques with a record
+// of the measure, or a refusal of an input it ran on, are columns, and only the inputs (assets, then scenarios) where some cell
+// says more than "—" are rows, so a simulation's matrix lists its scenarios and a surface
+// measure's leaves out displaced assets (whose rows its summary scope excludes).
 void appendMatrix(const Results& results, const std::string& measure, std::string* out) {
   const std::string metric = firstHeadline(results, measure);
   if (metric.empty()) return;
@@ -517,7 +520,32 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
   const std::string unit = unitOf(results, measure, metric);
   const MeasureSummary summary =
       summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
-  const auto techniques = techniquesOf(results);
+  std::set<std::string> measured_by;
+  std::vector<std::string> inputs;
+  for (const AssetSummary& asset : results.assets) inputs.push_back(asset.name);
+  for (const Record& record : results.records) {
+    const bool has = std::any_of(record.measures.begin(), record.measures.end(),
+                                 [&](const MeasureResult& m) { return m.measure == measure; });
+    if (!has) continue;
+    measured_by.insert(record.technique);
+    if (std::find(inputs.begin(), inputs.end(), record.asset) == inputs.end()) {
+      inputs.push_back(record.asset);
+    }
+  }
+  // A technique that refused an input the measure ran on stays a column (n/a there).
+  std::set<std::string> measured_inputs;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure == measure) measured_inputs.insert(record.asset);
+    }
+  }
+  for (const Skip& skip : results.skipped) {
+    if (measured_inputs.count(skip.asset) > 0) measured_by.insert(skip.technique);
+  }
+  std::vector<RunSelection::TechniqueVariants> techniques;
+  for (const auto& technique : techniquesOf(results)) {
+    if (measured_by.count(technique.technique) > 0) techniques.push_back(technique);
+  }
   *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
   std::vector<std::string> header{"asset"};
   for (const auto& technique : techniques) {
@@ -525,17 +553,18 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
                      (technique.variants.empty() ? "" : "/" + technique.variants.front()));
   }
   appendHeader(out, header);
-  for (const AssetSummary& asset : results.assets) {
-    std::vector<std::string> cells{asset.name};
+  for (const std::string& input : inputs) {
+    std::vector<std::string> cells{input};
+    bool informative = false;
     for (const auto& technique : techniques) {
       std::string cell = "—";
       const bool unsupported = std::any_of(
           results.skipped.begin(), results.skipped.end(), [&](const Skip& skip) {
-            return skip.technique == technique.technique && skip.asset == asset.name;
+            return skip.technique == technique.technique && skip.asset == input;
           });
       if (unsupported) cell = "n/a";
       for (const SummaryLine& line : summary.lines) {
-        if (line.technique != technique.technique || line.asset != asset.name ||
+        if (line.technique != technique.technique || line.asset != input ||
             technique.variants.empty() || line.variant != technique.variants.front()) {
           continue;
         }
@@ -545,9 +574,10 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
           cell = line.failed_rows > 0 ? "failed" : "skipped";
         }
       }
+      informative |= cell != "—";
       cells.push_back(cell);
     }
-    appendRow(out, cells);
+    if (informative) appendRow(out, cells);
   }
   *out += "\n";
 }

@@ -175,3 +175,40 @@ TEST(Markdown, FormatsBytesAndValues) {
 
 }  // namespace
 }  // namespace tb
+
+namespace tb {
+namespace {
+
+// A measure's matrix lists the inputs it ran on and the techniques that ran it: a
+// simulation measure's matrix has its scenario and not the mesh assets, and a surface
+// measure's leaves out the scenario.
+TEST(Markdown, MatricesListOnlyTheInputsAndTechniquesOfTheirMeasure) {
+  Results results = summaryResults(2, 1);
+  MeasureDeclaration wave{"wave", "Wave", "d", {}, {"rms"}, {}};
+  wave.metrics = {{"rms", Unit::kRatio, Direction::kLowerIsBetter}};
+  results.measures.push_back(wave);
+  results.context.selection.techniques.push_back({"sim", {"full"}});
+  Record record{"sim", "full", "scenario_a", {}, {}, {}};
+  MeasureResult m;
+  m.measure = "wave";
+  m.rows.push_back({{{"time", "1"}}, {{"rms", 0.125, "ratio"}}});
+  record.measures.push_back(m);
+  results.records.push_back(record);
+  const std::string md = renderMarkdown(results);
+  const size_t wave_matrix = md.find("### wave: rms");
+  const size_t error_matrix = md.find("### error: hausdorff");
+  ASSERT_NE(wave_matrix, std::string::npos) << md;
+  ASSERT_NE(error_matrix, std::string::npos) << md;
+  const std::string wave_text = md.substr(wave_matrix, md.find("\n\n", md.find("|", wave_matrix)) - wave_matrix);
+  const std::string error_text =
+      md.substr(error_matrix, md.find("\n\n", md.find("|", error_matrix)) - error_matrix);
+  EXPECT_NE(wave_text.find("| asset | sim/full |"), std::string::npos) << wave_text;
+  EXPECT_NE(wave_text.find("| scenario_a | 0.125 |"), std::string::npos) << wave_text;
+  EXPECT_EQ(wave_text.find("asset0"), std::string::npos) << wave_text;
+  EXPECT_EQ(error_text.find("scenario_a"), std::string::npos) << error_text;
+  EXPECT_EQ(error_text.find("sim/full"), std::string::npos) << error_text;
+  EXPECT_NE(error_text.find("| asset0 |"), std::string::npos) << error_text;
+}
+
+}  // namespace
+}  // namespace tb
