@@ -546,6 +546,7 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
   for (const auto& technique : techniquesOf(results)) {
     if (measured_by.count(technique.technique) > 0) techniques.push_back(technique);
   }
+  if (techniques.empty()) return;  // no technique ran it (a run of simulations alone, say)
   *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
   std::vector<std::string> header{"asset"};
   for (const auto& technique : techniques) {
