@@ -287,14 +287,14 @@ std::string bipyramid(int n) {
 }
 
 TEST(GregoryAccRejects, ValenceAboveTheMaximum) {
-  EXPECT_EQ(rejection(bipyramid(33)),
-            "gregory_acc: test.obj: vertex 0 has valence 33; gregory_acc needs 3..32");
+  EXPECT_EQ(rejection(bipyramid(257)),
+            "gregory_acc: test.obj: vertex 0 has valence 257; gregory_acc needs 3..256");
 }
 
 TEST(GregoryAccRejects, ValenceTwo) {
-  // With 32 the poles pass; the first M vertex (index 3) has valence 2.
-  EXPECT_EQ(rejection(bipyramid(32)),
-            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..32");
+  // With 64 the poles pass; the first M vertex (index 3) has valence 2.
+  EXPECT_EQ(rejection(bipyramid(64)),
+            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..256");
 }
 
 TEST(GregoryAccRejects, BoundaryVertexWithTooManyFaces) {
