@@ -20,7 +20,7 @@
 
 namespace tb::gregory_acc {
 
-// Highest vertex valence (and face size) accepted. The construction itself has no
+// Highest vertex valence accepted. The construction itself has no
 // limit and nothing is sized by it (stencils are variable-length entries of one table,
 // read by the TCS from a storage buffer); it bounds stencil sizes, hence the cost per
 // patch: a P or E stencil touches the 1-ring of its vertex (at most 1 + 2n vertices for
@@ -29,6 +29,9 @@ namespace tb::gregory_acc {
 // tested: 256 on the CPU (tests/techniques/valence_test.cpp), 64 on the GPU
 // (assets/tessbench/pole64.obj).
 constexpr uint32_t kMaxValence = 256;
+// Largest face accepted (vertices). Kept at the former limit: the OBJ loader stops at
+// 255, and a face of 5+ vertices becomes a vertex of that valence after refineOnce.
+constexpr uint32_t kMaxFaceSize = 32;
 
 // Control point slots of one patch corner; patch point index = corner * 5 + slot.
 // Ep points along the edge to the next corner (corner + 1), Em to the previous one;
