@@ -86,8 +86,9 @@ TEST(Valence, Pole64AssetHasOnePoleOfValence64) {
 //   pole (subdominant eigenvalue lambda = 0.654 at n = 64 against 0.5 at n = 4), so the
 //   same (u,v) lands elsewhere on the same surface;
 // - geometric: distance to the nearest of 65 x 65 Bfr samples of the face and its two
-//   neighbours around the pole (an upper bound of the distance to the limit surface,
-//   within half a sample cell: < 0.2% of the diagonal on these kite faces).
+//   neighbours around the pole: an upper bound of the distance to the limit surface (the
+//   Bfr samples are sparse where the characteristic map stretches; the error measure's
+//   Hausdorff distance on pole64 is 2.3e-3 for acc and 1.7e-3 for gregory_acc).
 struct PoleFigures {
   double parametric = 0, geometric = 0, float_vs_double = 0;
   size_t patches = 0;
