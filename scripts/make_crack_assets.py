@@ -11,6 +11,8 @@ Phong tessellation (seed 003; docs/ARCHITECTURE.md §5 rule 4 and 5):
                        midpoint of the shared vertical edge
   tri_torus.obj        catmark_torus fan-triangulated, no normals (computed smooth at load)
   tri_pawn.obj         catmark_pawn fan-triangulated, no normals (computed smooth at load)
+  pole64.obj           open all-quad dome of 64 kites around one valence-64 pole (acc
+                       and gregory_acc above the former valence limit of 32; issue 16)
 
 Run from the repository root: python3 scripts/make_crack_assets.py
 The output is deterministic; the files are committed.
@@ -101,6 +103,28 @@ def fan_triangulated(source, name):
           "Modified Apache 2.0: see ../opensubdiv/OPENSUBDIV_LICENSE.txt)")
 
 
+def pole_disc(valence=64):
+    """An open dome of `valence` quads around one pole (vertex 1, at the top).
+
+    The boundary ring has 2 * valence vertices: even ones are the spokes (radius 0.8, two
+    faces), odd ones the outer tips of the kites (radius 1, one face). Face i is
+    (pole, r_2i, r_2i+1, r_2i+2), counter-clockwise seen from above; z = 0.5 - 0.5 r^2.
+    One pole and no other faces, so it stays cheap for every measure: the faces at a
+    high-valence vertex are thin (2 pi / valence at the pole), which the error measure's
+    closest-point search pays for."""
+    m = 2 * valence
+    lines = [f"v {fmt(0, 0, 0.5)}"]
+    for j in range(m):
+        a = 2 * math.pi * j / m
+        r = 0.8 if j % 2 == 0 else 1.0
+        lines.append(f"v {fmt(r * math.cos(a), r * math.sin(a), 0.5 - 0.5 * r * r)}")
+    ring = lambda j: 2 + j % m  # 1-based
+    for i in range(valence):
+        lines.append(f"f 1 {ring(2 * i)} {ring(2 * i + 1)} {ring(2 * i + 2)}")
+    write(f"pole{valence}.obj", lines,
+          f"open quad dome, one pole of valence {valence} at vertex 1")
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     flat_cube()
@@ -108,3 +132,4 @@ if __name__ == "__main__":
     tjunction()
     fan_triangulated("assets/opensubdiv/catmark_torus.obj", "tri_torus.obj")
     fan_triangulated("assets/opensubdiv/catmark_pawn.obj", "tri_pawn.obj")
+    pole_disc(64)

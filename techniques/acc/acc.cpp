@@ -331,7 +331,7 @@ const TechniqueInfo& AccTechnique::info() const {
       "Loop & Schaefer, Approximating Catmull-Clark Subdivision Surfaces with Bicubic Patches, "
       "ACM TOG 27(1) 2008",
       "manifold all-quad meshes, smooth (no creases, corners or holes), boundaries with "
-      "edge-and-corner interpolation, valence <= 32"};
+      "edge-and-corner interpolation, valence <= 256"};
   return kInfo;
 }
 

@@ -7,9 +7,16 @@
 
 namespace tb::acc {
 
-// Largest vertex valence accepted; the GPU reads rings of any valence up to this
-// from storage buffers (the stencil table holds one tangent mask per valence).
-inline constexpr uint32_t kMaxValence = 32;
+// Largest vertex valence accepted. Nothing in the construction is sized by valence:
+// the CPU and the TCS both read a vertex's ring (n edge and n diagonal neighbours) from
+// storage buffers and its tangent mask (2n floats, one per valence in the mesh) from the
+// stencil table, so the bound only keeps one corner's cost per patch finite. Cost of a
+// corner of valence n, per patch: the corner point sums 2n + 1 terms and each of its two
+// limit tangents 2n terms (about 6n + 1 multiply-adds per corner, in every TCS invocation
+// that owns it); per vertex the GPU holds 8n bytes of ring slots and, per distinct valence,
+// 8n bytes of mask. Largest valence tested: 256 on the CPU (tests/techniques/valence_test.cpp)
+// and 64 on the GPU (assets/tessbench/pole64.obj).
+inline constexpr uint32_t kMaxValence = 256;
 
 class AccTechnique final : public Technique {
  public:

@@ -235,7 +235,7 @@ const TechniqueInfo& GregoryAccTechnique::info() const {
       "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad and triangle Gregory patches)",
       "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
       "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
-      "manifold Catmull-Clark meshes with smooth boundaries, valence and face size 3..32, no "
+      "manifold Catmull-Clark meshes with smooth boundaries, valence 3..256, face size 3..32, no "
       "crease/corner/hole/smoothtriangles tags; quads and triangles get patches of their own, "
       "meshes with faces of 5+ vertices are refined once"};
   return kInfo;

@@ -304,9 +304,9 @@ std::string checkGregorySupport(const Mesh& mesh) {
   }
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const uint32_t size = mesh.faceSize(f);
-    if (size < 3 || size > kMaxValence) {
+    if (size < 3 || size > kMaxFaceSize) {
       return prefix(mesh) + describeFace(mesh, f) + " has " + std::to_string(size) +
-             " vertices; gregory_acc needs 3.." + std::to_string(kMaxValence);
+             " vertices; gregory_acc needs 3.." + std::to_string(kMaxFaceSize);
     }
     const auto fv = mesh.facePositions(f);
     for (uint32_t a = 0; a < size; ++a) {

@@ -20,9 +20,18 @@
 
 namespace tb::gregory_acc {
 
-// Highest vertex valence accepted. The construction itself has no limit; this bounds
-// stencil sizes (an Fp stencil touches two 1-rings: at most 4 + 4 * 32 vertices).
-constexpr uint32_t kMaxValence = 32;
+// Highest vertex valence accepted. The construction itself has no
+// limit and nothing is sized by it (stencils are variable-length entries of one table,
+// read by the TCS from a storage buffer); it bounds stencil sizes, hence the cost per
+// patch: a P or E stencil touches the 1-ring of its vertex (at most 1 + 2n vertices for
+// valence n), an Fp/Fm stencil two 1-rings (at most 4 + 4n), each entry one
+// multiply-add of a vec3 and 8 bytes (index + float weight) on the GPU. Largest valence
+// tested: 256 on the CPU (tests/techniques/valence_test.cpp), 64 on the GPU
+// (assets/tessbench/pole64.obj).
+constexpr uint32_t kMaxValence = 256;
+// Largest face accepted (vertices). Kept at the former limit: the OBJ loader stops at
+// 255, and a face of 5+ vertices becomes a vertex of that valence after refineOnce.
+constexpr uint32_t kMaxFaceSize = 32;
 
 // Control point slots of one patch corner; patch point index = corner * 5 + slot.
 // Ep points along the edge to the next corner (corner + 1), Em to the previous one;

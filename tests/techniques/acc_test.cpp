@@ -288,9 +288,9 @@ TEST(AccRejects, NonManifoldVerticesNamingTheVertex) {
 }
 
 TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
-  // A fan of 33 quads around vertex 0 (closed disc): valence 33.
+  // A fan of 257 quads around vertex 0 (closed disc): valence 257, one above kMaxValence.
   std::string obj = "v 0 0 0\n";
-  const int n = 33;
+  const int n = 257;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 0.5) / n;
     obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
@@ -301,7 +301,7 @@ TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
     obj += "f 1 " + std::to_string(e0) + " " + std::to_string(f0) + " " + std::to_string(e1) + "\n";
   }
   const std::string why = rejection(obj);
-  EXPECT_NE(why.find("vertex 0 (0, 0, 0) has valence 33 above the maximum 32"), std::string::npos)
+  EXPECT_NE(why.find("vertex 0 (0, 0, 0) has valence 257 above the maximum 256"), std::string::npos)
       << why;
 }
 

@@ -34,8 +34,8 @@ const std::vector<std::string> kSupported = {
     "opensubdiv/loop_cube.obj",             "opensubdiv/loop_icosahedron.obj",
     "opensubdiv/loop_toroidal_tet.obj",     "opensubdiv/loop_triangle_edgecorner.obj",
     "opensubdiv/loop_xord_interior.obj",    "tessbench/cylinder_seam.obj",
-    "tessbench/flat_cube.obj",              "tessbench/tri_pawn.obj",
-    "tessbench/tri_torus.obj"};
+    "tessbench/flat_cube.obj",              "tessbench/pole64.obj",
+    "tessbench/tri_pawn.obj",               "tessbench/tri_torus.obj"};
 
 Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
 
@@ -287,30 +287,30 @@ std::string bipyramid(int n) {
 }
 
 TEST(GregoryAccRejects, ValenceAboveTheMaximum) {
-  EXPECT_EQ(rejection(bipyramid(33)),
-            "gregory_acc: test.obj: vertex 0 has valence 33; gregory_acc needs 3..32");
+  EXPECT_EQ(rejection(bipyramid(257)),
+            "gregory_acc: test.obj: vertex 0 has valence 257; gregory_acc needs 3..256");
 }
 
 TEST(GregoryAccRejects, ValenceTwo) {
-  // With 32 the poles pass; the first M vertex (index 3) has valence 2.
-  EXPECT_EQ(rejection(bipyramid(32)),
-            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..32");
+  // With 64 the poles pass; the first M vertex (index 3) has valence 2.
+  EXPECT_EQ(rejection(bipyramid(64)),
+            "gregory_acc: test.obj: vertex 3 has valence 2; gregory_acc needs 3..256");
 }
 
 TEST(GregoryAccRejects, BoundaryVertexWithTooManyFaces) {
-  // An open fan of 33 quads (0, r_i, m_i, r_{i+1}) around vertex 0.
+  // An open fan of 257 quads (0, r_i, m_i, r_{i+1}) around vertex 0.
   std::string obj = "v 0 0 0\n";
-  for (int i = 0; i <= 66; ++i) {
-    const double a = 3.0 * i / 66, radius = i % 2 == 0 ? 1.0 : 1.5;
+  for (int i = 0; i <= 514; ++i) {
+    const double a = 3.0 * i / 514, radius = i % 2 == 0 ? 1.0 : 1.5;
     obj += "v " + std::to_string(radius * std::cos(a)) + " " +
            std::to_string(radius * std::sin(a)) + " 0\n";
   }
-  for (int i = 0; i < 33; ++i) {
+  for (int i = 0; i < 257; ++i) {
     obj += "f 1 " + std::to_string(2 + 2 * i) + " " + std::to_string(3 + 2 * i) + " " +
            std::to_string(4 + 2 * i) + "\n";
   }
   EXPECT_EQ(rejection(obj),
-            "gregory_acc: test.obj: boundary vertex 0 has 33 faces; gregory_acc needs 1..32");
+            "gregory_acc: test.obj: boundary vertex 0 has 257 faces; gregory_acc needs 1..256");
 }
 
 TEST(GregoryAccRejects, NoFaces) {
