@@ -28,8 +28,8 @@ def fmt(*values):
     return " ".join(f"{v:.6f}" for v in values)
 
 
-def write(name, lines, comment):
-    with open(os.path.join(OUT, name), "w") as f:
+def write(name, lines, comment, out=OUT):
+    with open(os.path.join(out, name), "w") as f:
         f.write(HEADER + f"# {comment}\n" + "\n".join(lines) + "\n")
 
 
@@ -121,8 +121,9 @@ def pole_disc(valence=64):
     ring = lambda j: 2 + j % m  # 1-based
     for i in range(valence):
         lines.append(f"f 1 {ring(2 * i)} {ring(2 * i + 1)} {ring(2 * i + 2)}")
+    # Too costly for the default suite: a full-suite asset (assets/full_suite/README.md).
     write(f"pole{valence}.obj", lines,
-          f"open quad dome, one pole of valence {valence} at vertex 1")
+          f"open quad dome, one pole of valence {valence} at vertex 1", out="assets/full_suite")
 
 
 if __name__ == "__main__":

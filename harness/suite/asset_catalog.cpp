@@ -48,6 +48,16 @@ std::vector<AssetRef> bundledAssets() {
   return assets;
 }
 
+std::vector<AssetRef> suiteAssets(bool full_suite) {
+  std::vector<AssetRef> assets = bundledAssets();
+  if (!full_suite) {
+    std::erase_if(assets, [](const AssetRef& asset) {
+      return asset.name.rfind(kFullSuiteAssetFolder, 0) == 0;
+    });
+  }
+  return assets;
+}
+
 AssetRef resolveAsset(const std::string& name_or_path) {
   for (const AssetRef& asset : bundledAssets()) {
     const std::string stem = fs::path(asset.name).filename().string();

@@ -23,6 +23,13 @@ std::string assetsDirectory();
 // Every bundled .obj, sorted by name.
 std::vector<AssetRef> bundledAssets();
 
+// The folder of bundled assets too costly for the default suite (assets/full_suite/README.md):
+// `run --suite full` runs them, the default suite leaves them out unless named.
+inline constexpr const char* kFullSuiteAssetFolder = "full_suite/";
+// The bundled assets a suite runs when none is named: every one for the full suite, all but
+// the full-suite folder's for the default suite.
+std::vector<AssetRef> suiteAssets(bool full_suite);
+
 // A bundled name ("catmark_cube" or "opensubdiv/catmark_cube") or a path to an
 // .obj. Throws InputError naming the argument when it is neither.
 AssetRef resolveAsset(const std::string& name_or_path);

@@ -518,7 +518,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
               return a.measure < b.measure;
             });
   std::vector<AssetRef> refs = selection.assets;
-  if (refs.empty()) refs = bundledAssets();
+  if (refs.empty()) refs = suiteAssets(selection.suite == SuiteMode::kFull);
   openDevice(selection.device_name, &run);
   const std::vector<Mesh> meshes = loadAssets(refs, results);
   // Displaced assets: the asset each map was baked on (loaded again when the run does not

@@ -15,7 +15,7 @@ namespace tb::acc {
 // limit tangents 2n terms (about 6n + 1 multiply-adds per corner, in every TCS invocation
 // that owns it); per vertex the GPU holds 8n bytes of ring slots and, per distinct valence,
 // 8n bytes of mask. Largest valence tested: 256 on the CPU (tests/techniques/valence_test.cpp)
-// and 64 on the GPU (assets/tessbench/pole64.obj).
+// and 64 on the GPU (assets/full_suite/pole64.obj).
 inline constexpr uint32_t kMaxValence = 256;
 
 class AccTechnique final : public Technique {

@@ -27,7 +27,7 @@ namespace tb::gregory_acc {
 // valence n), an Fp/Fm stencil two 1-rings (at most 4 + 4n), each entry one
 // multiply-add of a vec3 and 8 bytes (index + float weight) on the GPU. Largest valence
 // tested: 256 on the CPU (tests/techniques/valence_test.cpp), 64 on the GPU
-// (assets/tessbench/pole64.obj).
+// (assets/full_suite/pole64.obj).
 constexpr uint32_t kMaxValence = 256;
 // Largest face accepted (vertices). Kept at the former limit: the OBJ loader stops at
 // 255, and a face of 5+ vertices becomes a vertex of that valence after refineOnce.

@@ -152,7 +152,7 @@ std::vector<BadInput> badInputs() {
          "f 1 2 4 3\nf 2 1 5 6\nf 1 2 8 7\n"}},
        acc + "{dir}/fan.obj",
        {"{dir}/fan.obj", "edge 0-1 is shared by 3 faces"}},
-      // acc and gregory_acc accept valence 64 (assets/tessbench/pole64.obj) and keep a
+      // acc and gregory_acc accept valence 64 (assets/full_suite/pole64.obj) and keep a
       // finite limit of 256 (techniques/acc/acc.h kMaxValence): the class applies above it.
       {"valence over acc's limit", {{"pole257.obj", poleObj(257)}}, acc + "{dir}/pole257.obj",
        {"{dir}/pole257.obj", "vertex 0", "valence 257 above the maximum 256"}},

@@ -72,6 +72,24 @@ TEST(Suite, BundledAssetsAreSortedAndComplete) {
   for (size_t i = 1; i < assets.size(); ++i) EXPECT_LT(assets[i - 1].name, assets[i].name);
 }
 
+// The default suite leaves the full-suite folder out (assets/full_suite/README.md); the full
+// suite and a named asset reach it.
+TEST(Suite, FullSuiteAssetsRunOnlyInTheFullSuiteOrWhenNamed) {
+  auto names = [](const std::vector<AssetRef>& assets) {
+    std::vector<std::string> out;
+    for (const AssetRef& asset : assets) out.push_back(asset.name);
+    return out;
+  };
+  const std::vector<std::string> all = names(bundledAssets());
+  const std::vector<std::string> full = names(suiteAssets(true));
+  const std::vector<std::string> fast = names(suiteAssets(false));
+  EXPECT_EQ(full, all);
+  ASSERT_NE(std::find(all.begin(), all.end(), "full_suite/pole64"), all.end());
+  EXPECT_EQ(std::find(fast.begin(), fast.end(), "full_suite/pole64"), fast.end());
+  EXPECT_EQ(fast.size() + 1, all.size());
+  EXPECT_EQ(resolveAsset("pole64").name, "full_suite/pole64");
+}
+
 // Oracle: the same run from a copy of the assets in another folder. Results name bundled
 // assets relative to the assets folder (skip reasons and warnings included), so two
 // checkouts, or two shards on two machines, give the same JSON.

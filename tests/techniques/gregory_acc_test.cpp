@@ -34,7 +34,7 @@ const std::vector<std::string> kSupported = {
     "opensubdiv/loop_cube.obj",             "opensubdiv/loop_icosahedron.obj",
     "opensubdiv/loop_toroidal_tet.obj",     "opensubdiv/loop_triangle_edgecorner.obj",
     "opensubdiv/loop_xord_interior.obj",    "tessbench/cylinder_seam.obj",
-    "tessbench/flat_cube.obj",              "tessbench/pole64.obj",
+    "tessbench/flat_cube.obj",              "full_suite/pole64.obj",
     "tessbench/tri_pawn.obj",               "tessbench/tri_torus.obj"};
 
 Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }

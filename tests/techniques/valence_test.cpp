@@ -1,5 +1,5 @@
 // High valence in acc and gregory_acc (issue 16, acceptance 3): a valence-64 pole
-// (assets/tessbench/pole64.obj, OpenSubdiv's catmark_pole64 case) and a generated
+// (assets/full_suite/pole64.obj, OpenSubdiv's catmark_pole64 case) and a generated
 // valence-256 dome (kMaxValence of both) build, evaluate to finite points near the Bfr
 // limit, and on the device the capture equals the CPU float twin with the symmetric
 // orders bitwise watertight around the pole. Oracles: OpenSubdiv Bfr (ApproxLevel 10),
@@ -45,7 +45,7 @@ std::string domeObj(int valence) {
   return obj;
 }
 
-Mesh pole64() { return loadObjFile(testing::assetPath("tessbench/pole64.obj")); }
+Mesh pole64() { return loadObjFile(testing::assetPath("full_suite/pole64.obj")); }
 
 VariantInfo variantOf(const Technique& technique, const std::string& name) {
   for (const VariantInfo& v : technique.variants()) {
