@@ -72,7 +72,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
     Far::TopologyRefiner::AdaptiveOptions adaptive(isolation_);
     adaptive.useInfSharpPatch = true;
     refiner_->RefineAdaptive(adaptive);
-    Far::PatchTableFactory::Options options(unsigned(isolation_));
+    Far::PatchTableFactory::Options options{unsigned(isolation_)};
     options.SetEndCapType(end_cap_ == EndCap::kGregoryBasis
                               ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
                               : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
