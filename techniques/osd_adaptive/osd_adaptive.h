@@ -14,7 +14,8 @@ enum class EndCap { kGregoryBasis = 0, kBSplineBasis = 1 };
 class OsdAdaptiveTechnique final : public Technique {
  public:
   const TechniqueInfo& info() const override;
-  // "iso2_gregory" (default), "iso4_gregory", "iso6_gregory", "iso4_bspline".
+  // "iso2_gregory" (default) and "iso4_gregory"; parameters "isolation" and "endcap" give
+  // any other level and B-spline basis end caps.
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
