@@ -67,8 +67,12 @@ double maxRegularDifference(const SurfacePatches& patches, const ref::LimitSurfa
 // of `mesh` is exact, at least 2.
 int exactCreaseLevel(const Mesh& mesh) {
   double sharpest = 0;
-  for (const Crease& crease : mesh.tags.creases) sharpest = std::max(sharpest, double(crease.sharpness));
-  for (const Corner& corner : mesh.tags.corners) sharpest = std::max(sharpest, double(corner.sharpness));
+  for (const Crease& crease : mesh.tags.creases) {
+    sharpest = std::max(sharpest, double(crease.sharpness));
+  }
+  for (const Corner& corner : mesh.tags.corners) {
+    sharpest = std::max(sharpest, double(corner.sharpness));
+  }
   return std::clamp(int(std::ceil(sharpest)), 2, 10);
 }
 
