@@ -33,9 +33,7 @@ struct Point3 {
   void AddWithWeight(const Point3& src, double weight) { p = p + src.p * weight; }
 };
 
-[[noreturn]] void fail(const std::string& what) {
-  throw UnsupportedInput("osd_adaptive: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw UnsupportedInput("osd_adaptive: " + what); }
 
 // Rules the per-base-face parameterisation needs (OpenSubdiv itself refuses less): quads
 // only, a manifold mesh, no holes.
@@ -99,8 +97,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
     if (const auto* local = table_->GetLocalPointStencilTable<double>()) {
       local->UpdateValues(points.data(), points.data() + refined_count_);
       // The GPU keeps stencils in float: sizes, offsets, indices (4 bytes) and weights.
-      local_stencil_bytes_ = 8ull * size_t(local->GetNumStencils()) +
-                             8ull * local->GetControlIndices().size();
+      local_stencil_bytes_ =
+          8ull * size_t(local->GetNumStencils()) + 8ull * local->GetControlIndices().size();
     }
     points_d_.resize(points.size());
     points_f_.resize(points.size());
@@ -130,8 +128,9 @@ class OsdAdaptivePatches final : public SurfacePatches {
     }
     for (size_t f = 0; f < mesh_.faceCount(); ++f) {
       if (face_patches_[f].empty()) {
-        fail(describeFace(mesh_, f) + " has no limit patch (a boundary face without boundary "
-                                      "interpolation?)");
+        fail(describeFace(mesh_, f) +
+             " has no limit patch (a boundary face without boundary "
+             "interpolation?)");
       }
     }
     counts_.base_faces = mesh_.faceCount();

@@ -31,11 +31,11 @@ EndCap variantEndCap(const VariantInfo& variant);
 // patches not built by osd_adaptive.
 struct PatchTableCounts {
   size_t base_faces = 0;
-  size_t patches = 0;          // Far patches in the table
-  size_t regular_patches = 0;  // 16-point B-spline patches (boundary masks included)
-  size_t end_caps = 0;         // Gregory basis or B-spline basis end caps
-  size_t refined_vertices = 0; // vertices of every refinement level, base level included
-  size_t local_points = 0;     // end-cap points computed by the local point stencils
+  size_t patches = 0;           // Far patches in the table
+  size_t regular_patches = 0;   // 16-point B-spline patches (boundary masks included)
+  size_t end_caps = 0;          // Gregory basis or B-spline basis end caps
+  size_t refined_vertices = 0;  // vertices of every refinement level, base level included
+  size_t local_points = 0;      // end-cap points computed by the local point stencils
 };
 PatchTableCounts patchTableCounts(const SurfacePatches& patches);
 

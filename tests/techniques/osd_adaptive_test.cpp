@@ -1,6 +1,8 @@
 // osd_adaptive (OpenSubdiv Far's feature-adaptive patch table; Nießner, Loop, Meyer & DeRose,
 // ACM TOG 2012): regular patches against Bfr's exact limit, the error against the isolation
 // level, creased input, refused input and determinism.
+#include "techniques/osd_adaptive/osd_adaptive.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "harness/measures/error.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_mesh_ref.h"
-#include "techniques/osd_adaptive/osd_adaptive.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
 
@@ -147,8 +148,9 @@ double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface
     const ref::LimitFace face = limit.face(f);
     for (double u : values) {
       for (double v : values) {
-        worst = std::max(worst, parametricErrorAt(patches, face, ref::Scheme::kCatmullClark, f,
-                                                  {u, v, 0}) / diagonal);
+        worst = std::max(
+            worst,
+            parametricErrorAt(patches, face, ref::Scheme::kCatmullClark, f, {u, v, 0}) / diagonal);
       }
     }
   }
