@@ -97,10 +97,12 @@ TEST(AdviseCli, TriangleMeshExcludesAccWithItsReason) {
   const Bounds bounds;
   const auto advice = adviseJson("opensubdiv/loop_icosahedron" + boundArguments(bounds), 0);
   expectRankedByTheRule(advice, bounds);
-  ASSERT_EQ(advice["unsupported"].size(), 1u) << advice["unsupported"].dump();
+  // acc and the quad-only baseline osd_adaptive refuse it; every other technique takes it.
+  ASSERT_EQ(advice["unsupported"].size(), 2u) << advice["unsupported"].dump();
   EXPECT_EQ(advice["unsupported"][0]["technique"], "acc");
   EXPECT_NE(advice["unsupported"][0]["reason"].get<std::string>().find("ACC needs quads"),
             std::string::npos);
+  EXPECT_EQ(advice["unsupported"][1]["technique"], "osd_adaptive");
   EXPECT_FALSE(std::any_of(advice["candidates"].begin(), advice["candidates"].end(),
                            [](const auto& c) { return c["technique"] == "acc"; }));
   const SplitResult markdown = runTessbenchSplit("advise opensubdiv/loop_icosahedron --technique acc");

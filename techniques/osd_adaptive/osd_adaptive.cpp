@@ -1,0 +1,333 @@
+#include "techniques/osd_adaptive/osd_adaptive.h"
+
+#include <opensubdiv/far/patchMap.h>
+#include <opensubdiv/far/patchTable.h>
+#include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/stencilTable.h>
+#include <opensubdiv/far/topologyRefiner.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/mesh/input_error.h"
+#include "core/mesh/topology.h"
+#include "reference/topology_refiner_builder.h"
+#include "techniques/registry.h"
+#include "techniques/variant_param.h"
+
+namespace tb::osd_adaptive {
+
+namespace Far = OpenSubdiv::Far;
+
+namespace {
+
+// Largest patch Far builds: a Gregory basis end cap (20 points).
+constexpr int kMaxPatchPoints = 20;
+
+// A refined or local point for Far's interpolation templates, in double.
+struct Point3 {
+  Vec3d p{};
+  void Clear(void* = nullptr) { p = Vec3d{}; }
+  void AddWithWeight(const Point3& src, double weight) { p = p + src.p * weight; }
+};
+
+[[noreturn]] void fail(const std::string& what) { throw UnsupportedInput("osd_adaptive: " + what); }
+
+// Rules the per-base-face parameterisation needs (OpenSubdiv itself refuses less): quads
+// only, a manifold mesh, no holes.
+void validate(const Mesh& mesh) {
+  if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (mesh.faceSize(f) != 4) {
+      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
+           " vertices; this baseline samples quad base faces only");
+    }
+  }
+  const Topology topology = buildTopology(mesh);
+  for (const MeshEdge& edge : topology.edges) {
+    if (edge.face_count > 2) {
+      fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
+           std::to_string(edge.face_count) + " faces; needs a manifold mesh");
+    }
+  }
+  if (!mesh.tags.holes.empty()) {
+    fail(describeFace(mesh, mesh.tags.holes[0]) + " is tagged as a hole; holes are not supported");
+  }
+}
+
+class OsdAdaptivePatches final : public SurfacePatches {
+ public:
+  OsdAdaptivePatches(const Mesh& mesh, int isolation, EndCap end_cap)
+      : mesh_(mesh), isolation_(isolation), end_cap_(end_cap) {
+    validate(mesh_);
+    try {
+      refiner_ = ref::buildTopologyRefiner(mesh_, ref::Scheme::kCatmullClark);
+    } catch (const InputError& error) {
+      fail(std::string("OpenSubdiv refuses ") + mesh_.source + ": " + error.what());
+    }
+    Far::TopologyRefiner::AdaptiveOptions adaptive(isolation_);
+    adaptive.useInfSharpPatch = true;
+    refiner_->RefineAdaptive(adaptive);
+    Far::PatchTableFactory::Options options{unsigned(isolation_)};
+    options.SetEndCapType(end_cap_ == EndCap::kGregoryBasis
+                              ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
+                              : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
+    options.useInfSharpPatch = true;
+    options.generateFVarTables = false;
+    options.generateVaryingTables = false;
+    options.SetPatchPrecision<double>();
+    table_.reset(Far::PatchTableFactory::Create(*refiner_, options));
+    if (!table_) fail("OpenSubdiv built no patch table for " + mesh_.source);
+    map_ = std::make_unique<Far::PatchMap>(*table_);
+
+    // Refined points of every level in double, then the end caps' local points.
+    refined_count_ = size_t(refiner_->GetNumVerticesTotal());
+    std::vector<Point3> points(refined_count_ + size_t(table_->GetNumLocalPoints()));
+    for (size_t v = 0; v < mesh_.positions.size(); ++v) points[v].p = mesh_.positions[v];
+    Far::PrimvarRefinerReal<double> primvar(*refiner_);
+    Point3* src = points.data();
+    for (int level = 1; level <= refiner_->GetMaxLevel(); ++level) {
+      Point3* dst = src + refiner_->GetLevel(level - 1).GetNumVertices();
+      primvar.Interpolate(level, src, dst);
+      src = dst;
+    }
+    local_stencil_bytes_ = 0;
+    if (const auto* local = table_->GetLocalPointStencilTable<double>()) {
+      local->UpdateValues(points.data(), points.data() + refined_count_);
+      // The GPU keeps stencils in float: sizes, offsets, indices (4 bytes) and weights.
+      local_stencil_bytes_ =
+          8ull * size_t(local->GetNumStencils()) + 8ull * local->GetControlIndices().size();
+    }
+    points_d_.resize(points.size());
+    points_f_.resize(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+      points_d_[i] = points[i].p;
+      points_f_[i] = vecCast<float>(points[i].p);
+    }
+
+    // Every Far patch, grouped by the base face it covers.
+    face_patches_.resize(mesh_.faceCount());
+    for (int array = 0; array < table_->GetNumPatchArrays(); ++array) {
+      const int size = table_->GetPatchArrayDescriptor(array).GetNumControlVertices();
+      for (int patch = 0; patch < table_->GetNumPatches(array); ++patch) {
+        const Far::PatchParam param = table_->GetPatchParam(array, patch);
+        const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, patch);
+        bool local = false;
+        for (int k = 0; k < cvs.size(); ++k) local = local || size_t(cvs[k]) >= refined_count_;
+        const bool regular = size == 16 && !local;
+        ++counts_.patches;
+        counts_.regular_patches += regular;
+        counts_.end_caps += !regular;
+        patch_indices_ += size_t(cvs.size());
+        const size_t face = size_t(param.GetFaceId());
+        if (face >= face_patches_.size()) fail("a patch names face " + std::to_string(face));
+        face_patches_[face].push_back({array, patch});
+      }
+    }
+    for (size_t f = 0; f < mesh_.faceCount(); ++f) {
+      if (face_patches_[f].empty()) {
+        fail(describeFace(mesh_, f) +
+             " has no limit patch (a boundary face without boundary "
+             "interpolation?)");
+      }
+    }
+    counts_.base_faces = mesh_.faceCount();
+    counts_.refined_vertices = refined_count_;
+    counts_.local_points = size_t(table_->GetNumLocalPoints());
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%zu Far patches over %zu base faces (%.2f patches per face) at isolation "
+                  "level %d: %zu regular, %zu %s end caps",
+                  counts_.patches, counts_.base_faces,
+                  double(counts_.patches) / double(counts_.base_faces), isolation_,
+                  counts_.regular_patches, counts_.end_caps,
+                  end_cap_ == EndCap::kGregoryBasis ? "Gregory basis" : "B-spline basis");
+    warnings_.push_back(line);
+  }
+
+  // One SurfacePatches patch per base face: the Far patches of the face are its pieces,
+  // found by Far::PatchMap from the face's own (u, v), which is also Bfr's parameter, so
+  // the parametric error measure compares the same point.
+  PatchDomain patchDomain(size_t) const override { return PatchDomain::kQuad; }
+  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
+  size_t patchCount() const override { return mesh_.faceCount(); }
+  const Mesh& controlMesh() const override { return mesh_; }
+  std::array<uint32_t, 4> patchCorners(size_t patch) const override {
+    const auto face = mesh_.facePositions(patch);
+    return {face[0], face[1], face[2], face[3]};
+  }
+  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+
+  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+    const Far::PatchTable::PatchHandle& handle = find(patch, coord[0], coord[1]);
+    double w[kMaxPatchPoints], wu[kMaxPatchPoints], wv[kMaxPatchPoints];
+    table_->EvaluateBasis(handle, coord[0], coord[1], w, wu, wv);
+    const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
+    Vec3d p{}, du{}, dv{};
+    for (int k = 0; k < cvs.size(); ++k) {
+      const Vec3d& q = points_d_[size_t(cvs[k])];
+      p = p + q * w[k];
+      du = du + q * wu[k];
+      dv = dv + q * wv[k];
+    }
+    return {p, normalizeOrZero(cross(du, dv))};
+  }
+
+  // Far's basis in float (EvaluateBasis<float>) over float control points, summed in
+  // control-point order.
+  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+    const float u = coord[0], v = coord[1];
+    const Far::PatchTable::PatchHandle& handle = find(patch, u, v);
+    float w[kMaxPatchPoints], wu[kMaxPatchPoints], wv[kMaxPatchPoints];
+    table_->EvaluateBasis(handle, u, v, w, wu, wv);
+    const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
+    Vec3f p{}, du{}, dv{};
+    for (int k = 0; k < cvs.size(); ++k) {
+      const Vec3f& q = points_f_[size_t(cvs[k])];
+      p = p + q * w[k];
+      du = du + q * wu[k];
+      dv = dv + q * wv[k];
+    }
+    return {p, normalizeOrZero(cross(du, dv))};
+  }
+
+  // Every control point of the face's Far patches: B-spline and Gregory basis patches lie in
+  // the convex hull of their control points. No normal bound.
+  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+    PatchCullBounds bounds;
+    for (const auto& [array, index] : face_patches_[patch]) {
+      const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, index);
+      for (int k = 0; k < cvs.size(); ++k) bounds.hull.push_back(points_d_[size_t(cvs[k])]);
+    }
+    return bounds;
+  }
+
+  DataFootprint footprint() const override {
+    DataFootprint f;
+    // What an OpenSubdiv GPU draw keeps: the vertex buffer of every refined level plus the
+    // local points (vec4 each, so the control mesh's own vertices are counted there), the
+    // patch table (4-byte control-vertex indices, 8-byte PatchParams) and the local point
+    // stencils (float weights, 4-byte indices, sizes and offsets).
+    f.control_mesh_bytes = 16ull * points_d_.size() + 4ull * 4 * mesh_.faceCount();
+    f.patch_data_bytes = 4ull * patch_indices_ + 8ull * counts_.patches;
+    f.stencil_bytes = local_stencil_bytes_;
+    return f;
+  }
+
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+
+  const PatchTableCounts& counts() const { return counts_; }
+  bool regularAt(size_t face, double u, double v) const {
+    const Far::PatchTable::PatchHandle& handle = find(face, u, v);
+    const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
+    if (cvs.size() != 16) return false;
+    for (int k = 0; k < cvs.size(); ++k) {
+      if (size_t(cvs[k]) >= refined_count_) return false;
+    }
+    return true;
+  }
+
+ private:
+  static Vec3d normalizeOrZero(const Vec3d& n) {
+    const double l = length(n);
+    return l > 0 ? n * (1 / l) : Vec3d{};
+  }
+  static Vec3f normalizeOrZero(const Vec3f& n) {
+    const float l = length(n);
+    return l > 0 ? n * (1 / l) : Vec3f{};
+  }
+
+  const Far::PatchTable::PatchHandle& find(size_t face, double u, double v) const {
+    const double cu = std::clamp(u, 0.0, 1.0), cv = std::clamp(v, 0.0, 1.0);
+    const Far::PatchTable::PatchHandle* handle = map_->FindPatch(int(face), cu, cv);
+    if (handle == nullptr) {
+      throw std::logic_error("osd_adaptive: no Far patch at face " + std::to_string(face));
+    }
+    return *handle;
+  }
+
+  Mesh mesh_;
+  int isolation_;
+  EndCap end_cap_;
+  std::unique_ptr<Far::TopologyRefiner> refiner_;
+  std::unique_ptr<Far::PatchTable> table_;
+  std::unique_ptr<Far::PatchMap> map_;
+  size_t refined_count_ = 0;
+  size_t patch_indices_ = 0;
+  uint64_t local_stencil_bytes_ = 0;
+  std::vector<Vec3d> points_d_;
+  std::vector<Vec3f> points_f_;
+  std::vector<std::vector<std::pair<int, int>>> face_patches_;
+  PatchTableCounts counts_;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace
+
+const TechniqueInfo& OsdAdaptiveTechnique::info() const {
+  static const TechniqueInfo kInfo{
+      "osd_adaptive", TechniqueFamily::kSurface,
+      "OpenSubdiv feature-adaptive patch table (baseline)",
+      "Nießner, Loop, Meyer & DeRose, Feature-Adaptive GPU Rendering of Catmull-Clark "
+      "Subdivision Surfaces, ACM TOG 31(1) 2012; OpenSubdiv Far",
+      "manifold all-quad meshes without holes; creases, corners and boundaries as "
+      "OpenSubdiv handles them"};
+  return kInfo;
+}
+
+std::vector<VariantInfo> OsdAdaptiveTechnique::variants() const {
+  const auto make = [](int isolation, EndCap cap) {
+    const bool gregory = cap == EndCap::kGregoryBasis;
+    return VariantInfo{"iso" + std::to_string(isolation) + (gregory ? "_gregory" : "_bspline"),
+                       "isolation level " + std::to_string(isolation) + ", " +
+                           (gregory ? "Gregory basis" : "B-spline basis") + " end caps",
+                       {{"isolation", double(isolation)}, {"endcap", double(int(cap))}}};
+  };
+  // Two variants only: every variant runs every per-variant measure of the default suite
+  // (its budget). Other levels and B-spline end caps: VariantInfo parameters (tests).
+  return {make(2, EndCap::kGregoryBasis), make(4, EndCap::kGregoryBasis)};
+}
+
+int variantIsolation(const VariantInfo& variant) {
+  return std::clamp(paramOr<int>(OsdAdaptiveTechnique().info(), variant, "isolation", 2), 0, 10);
+}
+
+EndCap variantEndCap(const VariantInfo& variant) {
+  return paramOr<int>(OsdAdaptiveTechnique().info(), variant, "endcap", 0) == 1
+             ? EndCap::kBSplineBasis
+             : EndCap::kGregoryBasis;
+}
+
+std::string OsdAdaptiveTechnique::checkSupport(const Mesh& mesh) const {
+  try {
+    validate(mesh);
+    ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
+  } catch (const UnsupportedInput& error) {
+    return error.what();
+  } catch (const InputError& error) {
+    return std::string("osd_adaptive: OpenSubdiv refuses ") + mesh.source + ": " + error.what();
+  }
+  return {};
+}
+
+std::unique_ptr<TechniqueInstance> OsdAdaptiveTechnique::build(const TechniqueInput& input,
+                                                               const VariantInfo& variant) const {
+  return std::make_unique<SurfaceInstance>(std::make_unique<OsdAdaptivePatches>(
+      requireMesh(info(), input), variantIsolation(variant), variantEndCap(variant)));
+}
+
+PatchTableCounts patchTableCounts(const SurfacePatches& patches) {
+  const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
+  return osd == nullptr ? PatchTableCounts{} : osd->counts();
+}
+
+bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v) {
+  const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
+  return osd != nullptr && osd->regularAt(face, u, v);
+}
+
+TB_REGISTER_TECHNIQUE(OsdAdaptiveTechnique);
+
+}  // namespace tb::osd_adaptive

@@ -1,0 +1,46 @@
+// The `osd_adaptive` technique: OpenSubdiv Far's feature-adaptive patch table (Nießner,
+// Loop, Meyer & DeRose, "Feature-Adaptive GPU Rendering of Catmull-Clark Subdivision
+// Surfaces", ACM TOG 31(1) 2012; OpenSubdiv). The baseline row: regular B-spline patches
+// around regular faces, adaptive refinement towards extraordinary vertices and creases down
+// to the isolation level, and end caps (Gregory basis or B-spline basis) there.
+#pragma once
+
+#include "techniques/technique.h"
+
+namespace tb::osd_adaptive {
+
+enum class EndCap { kGregoryBasis = 0, kBSplineBasis = 1 };
+
+class OsdAdaptiveTechnique final : public Technique {
+ public:
+  const TechniqueInfo& info() const override;
+  // "iso2_gregory" (default) and "iso4_gregory"; parameters "isolation" and "endcap" give
+  // any other level and B-spline basis end caps.
+  std::vector<VariantInfo> variants() const override;
+  std::string checkSupport(const Mesh& mesh) const override;
+  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
+                                           const VariantInfo& variant) const override;
+};
+
+// Parameters of a variant: "isolation" (Far adaptive isolation level, 0..10) and
+// "endcap" (EndCap as a number).
+int variantIsolation(const VariantInfo& variant);
+EndCap variantEndCap(const VariantInfo& variant);
+
+// What the patch table of one built instance holds (for tests and the report): 0 for
+// patches not built by osd_adaptive.
+struct PatchTableCounts {
+  size_t base_faces = 0;
+  size_t patches = 0;           // Far patches in the table
+  size_t regular_patches = 0;   // 16-point B-spline patches (boundary masks included)
+  size_t end_caps = 0;          // Gregory basis or B-spline basis end caps
+  size_t refined_vertices = 0;  // vertices of every refinement level, base level included
+  size_t local_points = 0;      // end-cap points computed by the local point stencils
+};
+PatchTableCounts patchTableCounts(const SurfacePatches& patches);
+
+// True when the Far patch that covers (u, v) of base face `face` is a regular B-spline patch
+// (not an end cap). False for patches not built by osd_adaptive.
+bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v);
+
+}  // namespace tb::osd_adaptive

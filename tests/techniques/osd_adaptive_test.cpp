@@ -1,0 +1,245 @@
+// osd_adaptive (OpenSubdiv Far's feature-adaptive patch table; Nießner, Loop, Meyer & DeRose,
+// ACM TOG 2012): regular patches against Bfr's exact limit, the error against the isolation
+// level, creased input, refused input and determinism.
+#include "techniques/osd_adaptive/osd_adaptive.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+
+#include "core/mesh/obj_loader.h"
+#include "harness/measures/error.h"
+#include "reference/limit_surface.h"
+#include "reference/triangle_mesh_ref.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb::osd_adaptive {
+namespace {
+
+const Technique& technique() {
+  const Technique* found = TechniqueRegistry::instance().find("osd_adaptive");
+  if (found == nullptr) throw std::logic_error("osd_adaptive is not registered");
+  return *found;
+}
+
+VariantInfo variant(int isolation, EndCap cap = EndCap::kGregoryBasis) {
+  return {"test", "test", {{"isolation", double(isolation)}, {"endcap", double(int(cap))}}};
+}
+
+Mesh asset(const char* name) { return loadObjFile(testing::assetPath(name)); }
+
+TEST(OsdAdaptive, IsRegisteredWithItsVariants) {
+  const Technique& osd = technique();
+  EXPECT_EQ(osd.info().family, TechniqueFamily::kSurface);
+  const auto variants = osd.variants();
+  ASSERT_FALSE(variants.empty());
+  EXPECT_EQ(variants[0].name, "iso2_gregory");
+  EXPECT_EQ(variantIsolation(variants[0]), 2);
+  EXPECT_EQ(variantEndCap(variants[0]), EndCap::kGregoryBasis);
+}
+
+// Max |osd - Bfr| (world units) over a 9x9 lattice of every base face, at the samples whose
+// Far patch is a regular B-spline patch (end caps left out). Best 0; the regular patches are
+// the exact limit, so only rounding (~1e-15) remains. Counts the samples compared.
+double maxRegularDifference(const SurfacePatches& patches, const ref::LimitSurface& limit,
+                            size_t& compared) {
+  double worst = 0;
+  for (size_t f = 0; f < patches.patchCount(); ++f) {
+    for (int i = 0; i <= 8; ++i) {
+      for (int j = 0; j <= 8; ++j) {
+        const double u = i / 8.0, v = j / 8.0;
+        if (!isRegularAt(patches, f, u, v)) continue;
+        const SurfacePoint osd = patches.evaluate(f, {u, v, 0});
+        const ref::LimitPoint exact = limit.evaluate(f, u, v);
+        worst = std::max(worst, length(osd.position - exact.position));
+        ++compared;
+      }
+    }
+  }
+  return worst;
+}
+
+// Far truncates semi-sharp creases at the isolation level (a crease of sharpness s is exact
+// only once the level reaches ceil(s)); the smallest level at which every crease and corner
+// of `mesh` is exact, at least 2.
+int exactCreaseLevel(const Mesh& mesh) {
+  double sharpest = 0;
+  for (const Crease& crease : mesh.tags.creases) {
+    sharpest = std::max(sharpest, double(crease.sharpness));
+  }
+  for (const Corner& corner : mesh.tags.corners) {
+    sharpest = std::max(sharpest, double(corner.sharpness));
+  }
+  return std::clamp(int(std::ceil(sharpest)), 2, 10);
+}
+
+TEST(OsdAdaptive, RegularPatchesEqualBfrLimit) {
+  for (const char* name : {"opensubdiv/catmark_torus.obj", "opensubdiv/catmark_cube.obj",
+                           "opensubdiv/catmark_pawn.obj", "opensubdiv/catmark_cube_creases1.obj"}) {
+    const Mesh mesh = asset(name);
+    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const int exact = exactCreaseLevel(mesh);
+    for (int isolation : {exact, exact + 2}) {
+      const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
+      size_t compared = 0;
+      const double worst = maxRegularDifference(*patches, limit, compared);
+      std::printf("%s iso%d: max |osd - Bfr| on regular patches %.3g over %zu samples\n", name,
+                  isolation, worst, compared);
+      EXPECT_GT(compared, 0u) << name;
+      EXPECT_LT(worst, 1e-12) << name << " isolation " << isolation;
+    }
+  }
+}
+
+// Below the crease's sharpness Far treats the rest of a semi-sharp crease as infinitely
+// sharp, so the pawn's (sharpness 6) regular patches differ from Bfr there; the difference
+// falls with the level.
+TEST(OsdAdaptive, SemiSharpCreasesAreApproximatedBelowTheirSharpness) {
+  const Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
+  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  double previous = INFINITY;
+  for (int isolation : {2, 4}) {
+    const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
+    size_t compared = 0;
+    const double worst = maxRegularDifference(*patches, limit, compared);
+    std::printf("catmark_pawn iso%d: max |osd - Bfr| on regular patches %.3g\n", isolation, worst);
+    EXPECT_GT(worst, 1e-9);
+    EXPECT_LT(worst, previous);
+    previous = worst;
+  }
+}
+
+TEST(OsdAdaptive, TorusIsOneRegularPatchPerFace) {
+  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const BuiltSurface patches = buildSurface(technique(), mesh, variant(4));
+  const PatchTableCounts counts = patchTableCounts(*patches);
+  EXPECT_EQ(counts.patches, mesh.faceCount());
+  EXPECT_EQ(counts.regular_patches, mesh.faceCount());
+  EXPECT_EQ(counts.end_caps, 0u);
+}
+
+// Parameters that land inside the end caps of every level up to 8: 0, 1 and m 2^-j, 1 - m 2^-j
+// for m in {1, 1.5}, j = 1..8 (a lattice of step 1/8 only meets an end cap of level >= 3 at
+// its corner, where it interpolates the limit).
+std::vector<double> graded() {
+  std::vector<double> values = {0, 1};
+  for (int j = 1; j <= 8; ++j) {
+    for (double m : {1.0, 1.5}) {
+      const double x = m * std::ldexp(1.0, -j);
+      if (x < 1) values.insert(values.end(), {x, 1 - x});
+    }
+  }
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  return values;
+}
+
+// Max parametric error |osd(f, u, v) - Bfr(f, u, v)| over the graded lattice of every face,
+// as a fraction of the bounding-box diagonal (best 0).
+double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface& limit) {
+  const std::vector<double> values = graded();
+  const double diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);
+  double worst = 0;
+  for (size_t f = 0; f < patches.patchCount(); ++f) {
+    const ref::LimitFace face = limit.face(f);
+    for (double u : values) {
+      for (double v : values) {
+        worst = std::max(
+            worst,
+            parametricErrorAt(patches, face, ref::Scheme::kCatmullClark, f, {u, v, 0}) / diagonal);
+      }
+    }
+  }
+  return worst;
+}
+
+// The parametric max error falls as the isolation level shrinks the end caps around the
+// extraordinary vertices.
+TEST(OsdAdaptive, ErrorFallsWithIsolationLevel) {
+  for (const char* name : {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj"}) {
+    const Mesh mesh = asset(name);
+    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    for (EndCap cap : {EndCap::kGregoryBasis, EndCap::kBSplineBasis}) {
+      double previous = INFINITY;
+      for (int isolation : {1, 2, 3, 4, 5, 6}) {
+        const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation, cap));
+        const double error = maxParametricError(*patches, limit);
+        const PatchTableCounts counts = patchTableCounts(*patches);
+        std::printf("%s %s iso%d: parametric max %.3e of the diagonal; %.2f patches per face\n",
+                    name, cap == EndCap::kGregoryBasis ? "gregory" : "bspline", isolation, error,
+                    double(counts.patches) / double(counts.base_faces));
+        EXPECT_LT(error, previous) << name << " isolation " << isolation;
+        EXPECT_LT(error, 5e-2) << name;
+        previous = error;
+      }
+    }
+  }
+}
+
+// The error measure itself runs on osd_adaptive's patches (one per base face).
+TEST(OsdAdaptive, ErrorMeasureRuns) {
+  const Mesh mesh = asset("opensubdiv/catmark_cube.obj");
+  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const BuiltSurface patches = buildSurface(technique(), mesh, variant(2));
+  const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
+  EXPECT_EQ(figures.samples, 6u * 81u);
+  EXPECT_GT(figures.parametric_max, 1e-4);  // level-2 end caps: ~1.7e-3
+  EXPECT_LT(figures.parametric_max, 1e-2);
+}
+
+TEST(OsdAdaptive, AcceptsCreasedAssets) {
+  for (const char* name :
+       {"opensubdiv/catmark_cube_creases1.obj", "opensubdiv/catmark_single_crease.obj",
+        "opensubdiv/catmark_cube_corner3.obj", "opensubdiv/catmark_edgecorner.obj",
+        "opensubdiv/catmark_tent_creases1.obj"}) {
+    const Mesh mesh = asset(name);
+    if (!technique().checkSupport(mesh).empty()) {
+      ADD_FAILURE() << name << ": " << technique().checkSupport(mesh);
+      continue;
+    }
+    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const BuiltSurface patches = buildSurface(technique(), mesh, variant(4));
+    const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
+    std::printf("%s iso4: parametric max %.3e\n", name, figures.parametric_max);
+    EXPECT_LT(figures.parametric_max, 1e-2) << name;
+    EXPECT_TRUE(std::isfinite(figures.hausdorff)) << name;
+  }
+}
+
+TEST(OsdAdaptive, RefusesNonQuadMeshesWithAReason) {
+  const Mesh mesh = asset("opensubdiv/catmark_nonquads.obj");
+  const std::string reason = technique().checkSupport(mesh);
+  EXPECT_NE(reason.find("osd_adaptive: face"), std::string::npos) << reason;
+  EXPECT_THROW(buildSurface(technique(), mesh, variant(2)), UnsupportedInput);
+}
+
+TEST(OsdAdaptive, FloatEvaluationIsDeterministicAndCloseToDouble) {
+  const Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
+  const BuiltSurface a = buildSurface(technique(), mesh, variant(2));
+  const BuiltSurface b = buildSurface(technique(), mesh, variant(2));
+  const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
+  double worst = 0;
+  for (size_t f = 0; f < a->patchCount(); ++f) {
+    for (int i = 0; i <= 4; ++i) {
+      for (int j = 0; j <= 4; ++j) {
+        const tess::DomainPoint at{float(i) / 4, float(j) / 4, 0};
+        const SurfacePointF x = a->evaluateFloat(f, at), y = b->evaluateFloat(f, at);
+        for (int k = 0; k < 3; ++k) {
+          ASSERT_EQ(std::bit_cast<uint32_t>(x.position[k]), std::bit_cast<uint32_t>(y.position[k]));
+        }
+        const SurfacePoint d = a->evaluate(f, {double(at[0]), double(at[1]), 0});
+        worst = std::max(worst, length(vecCast<double>(x.position) - d.position) / diagonal);
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_EQ(a->footprint(), b->footprint());
+  EXPECT_GT(a->footprint().total(), 0u);
+}
+
+}  // namespace
+}  // namespace tb::osd_adaptive
