@@ -20,7 +20,7 @@ namespace tb::gregory_acc::testing {
 inline std::vector<std::string> supportedBundledAssets() {
   std::vector<std::string> names;
   GregoryAccTechnique technique;
-  for (const char* folder : {"opensubdiv", "tessbench"}) {
+  for (const char* folder : {"full_suite", "opensubdiv", "tessbench"}) {
     for (const auto& entry :
          std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
       if (entry.path().extension() != ".obj") continue;

@@ -255,7 +255,10 @@ TEST(PatchCullBounds, HullAndNormalConeContainEveryPatchOfEveryTechnique) {
     const std::string id = t->info().id + "/" + t->variants()[0].name;
     ASSERT_TRUE(by_technique.count(id)) << id;
     EXPECT_GT(by_technique[id].patches, 50u) << id;
-    EXPECT_GT(by_technique[id].pointed, by_technique[id].with_generators / 2) << id;
+    // A technique that gives no normal bound (osd_adaptive: hull only) has no cone to test.
+    if (by_technique[id].with_generators > 0) {
+      EXPECT_GT(by_technique[id].pointed, by_technique[id].with_generators / 2) << id;
+    }
   }
   // Tightness: every acc and gregory_acc cone on these assets is less than a half-space
   // (a looser Gregory bound, e.g. the cone of all pairwise crosses of the derivatives'
