@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "core/gpu/compute_runner.h"
+#include "core/mesh/float_ulp.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/techniques/mass_spring_test_support.h"
 
@@ -21,18 +22,10 @@ constexpr uint32_t kIterations = 50;
 // order or a race between batches shows as thousands of ulp.
 constexpr int64_t kUlpBound = 4;
 
-int64_t ulpDistance(float a, float b) {
-  auto ordered = [](float f) {
-    const int32_t bits = std::bit_cast<int32_t>(f);
-    return bits < 0 ? int64_t(INT32_MIN) - bits : int64_t(bits);
-  };
-  return std::llabs(ordered(a) - ordered(b));
-}
-
 int64_t maxUlp(const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
   int64_t worst = 0;
   for (size_t v = 0; v < a.size(); ++v) {
-    for (int i = 0; i < 3; ++i) worst = std::max(worst, ulpDistance(a[v][i], b[v][i]));
+    for (int i = 0; i < 3; ++i) worst = std::max(worst, int64_t(ulpDistance(a[v][i], b[v][i])));
   }
   return worst;
 }

@@ -14,6 +14,7 @@
 #include "core/gpu/compute_runner.h"
 #include "harness/suite/scenario_file.h"
 #include "techniques/wave_particles/wave_particles.h"
+#include "core/mesh/float_ulp.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::wave_particles {
@@ -24,14 +25,6 @@ constexpr uint32_t kSteps = 100;
 // states agree bit for bit on lavapipe; 4 ulp leaves room for a device that rounds a
 // product differently (a different order would show as thousands).
 constexpr int64_t kUlpBound = 4;
-
-int64_t ulpDistance(float a, float b) {
-  auto ordered = [](float f) {
-    const int32_t bits = std::bit_cast<int32_t>(f);
-    return bits < 0 ? int64_t(INT32_MIN) - bits : int64_t(bits);
-  };
-  return std::llabs(ordered(a) - ordered(b));
-}
 
 void sortById(std::vector<Particle>* particles) {
   std::sort(particles->begin(), particles->end(),
@@ -48,7 +41,7 @@ int64_t maxUlp(const std::vector<Particle>& a, const std::vector<Particle>& b) {
     const float fb[] = {b[i].origin[0],    b[i].origin[1],      b[i].direction[0],
                         b[i].direction[1], b[i].age_s,          b[i].lifetime_s,
                         b[i].amplitude_m,  b[i].dispersion_rad, b[i].radius_m};
-    for (size_t k = 0; k < std::size(fa); ++k) worst = std::max(worst, ulpDistance(fa[k], fb[k]));
+    for (size_t k = 0; k < std::size(fa); ++k) worst = std::max(worst, int64_t(ulpDistance(fa[k], fb[k])));
   }
   return worst;
 }
