@@ -360,6 +360,16 @@ std::pair<std::shared_ptr<const DisplacementTarget>, std::string> targetOf(
   return {slot.target, slot.unavailable};
 }
 
+// An instance whose surface lives elsewhere (a DisplacedPatches over a build of the step).
+class BorrowedSurface final : public TechniqueInstance {
+ public:
+  explicit BorrowedSurface(const SurfacePatches& surface) : surface_(surface) {}
+  const SurfacePatches* surface() const override { return &surface_; }
+
+ private:
+  const SurfacePatches& surface_;
+};
+
 // A displaced asset (docs/ARCHITECTURE.md, "Displaced surfaces"): the map's own technique
 // and variant only, each measure that runs on displaced surfaces once per sampling (naive,
 // watertight), the rows keyed `displacement` (the map's file name) and `sampling`.
@@ -400,10 +410,10 @@ StepOutcome runDisplacedStep(const SuiteRun& run, const Technique& technique,
   }
   for (DisplacementSampling sampling :
        {DisplacementSampling::kNaive, DisplacementSampling::kWatertight}) {
-    // The instance wraps the technique's own patches; build them again for each sampling so
-    // the two are independent.
-    DisplacedInstance instance(technique.build(technique_input, variant), map.map, sampling,
-                                     map.name);
+    // Both samplings wrap the one build of the technique's patches (the wrapper only reads
+    // them).
+    const DisplacedPatches displaced(*undisplaced->surface(), map.map, sampling, map.name);
+    BorrowedSurface instance(displaced);
     const DisplacementRun displacement{&map, sampling, target, target_unavailable};
     if (record.warnings.empty()) record.warnings = instance.surface()->warnings();
     MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,

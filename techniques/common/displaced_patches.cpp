@@ -251,15 +251,4 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
   return programs;
 }
 
-DisplacedInstance::DisplacedInstance(std::unique_ptr<TechniqueInstance> inner,
-                                     std::shared_ptr<const DisplacementMap> map,
-                                     DisplacementSampling sampling, std::string map_name)
-    : inner_(std::move(inner)) {
-  if (inner_ == nullptr || inner_->surface() == nullptr) {
-    throw UnsupportedInput(map_name + ": only a surface technique can be displaced");
-  }
-  displaced_ = std::make_unique<DisplacedPatches>(*inner_->surface(), std::move(map), sampling,
-                                                  std::move(map_name));
-}
-
 }  // namespace tb

@@ -100,17 +100,4 @@ class DisplacedPatches final : public SurfacePatches {
 // Builds the owner of every shared corner and edge of `patches` (BoundaryOwners).
 std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches);
 
-// A technique instance whose surface is `inner`'s displaced: owns both.
-class DisplacedInstance final : public TechniqueInstance {
- public:
-  DisplacedInstance(std::unique_ptr<TechniqueInstance> inner,
-                    std::shared_ptr<const DisplacementMap> map, DisplacementSampling sampling,
-                    std::string map_name);
-  const SurfacePatches* surface() const override { return displaced_.get(); }
-
- private:
-  std::unique_ptr<TechniqueInstance> inner_;
-  std::unique_ptr<DisplacedPatches> displaced_;
-};
-
 }  // namespace tb
