@@ -4,10 +4,10 @@
 // storage buffers, so any valence up to acc::kMaxValence works; the four corner-point
 // invocations also compute their corner's limit tangents, and invocation 0 then builds
 // the two tangent patches from the geometry points and those tangents.
-//   binding 1  positions, vec4 per control-mesh vertex
-//   binding 2  ring header per vertex: (offset, valence, boundary, tangent mask offset)
+//   binding 1  positions, vec4 per ring centre (per vertex, then per extra crease sector)
+//   binding 2  ring header per ring: (offset, valence, boundary, tangent mask offset)
 //   binding 3  ring slots: (e_i, f_i)
-//   binding 4  per patch 12 words: corner vertices, ring slots, class, rotation, 0, 0
+//   binding 4  per patch 12 words: corner rings, ring slots, class, rotation, 0, 0
 //   binding 5  stencil table: per class 4 x 16 weights, then the tangent masks
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"
@@ -68,7 +68,7 @@ vec3 controlPoint(Corner c, uint role) {
   if (role == 0u) {
     acc = v * W(c, 0u);
     if (c.boundary) {
-      acc = acc + E(c, 0u) * W(c, 1u) + E(c, n - 1u) * W(c, 1u);
+      acc = acc + (E(c, 0u) + E(c, n - 1u)) * W(c, 1u);  // commutative: crease sectors agree
     } else {
       for (uint i = 0u; i < n; ++i) acc = acc + E(c, i) * W(c, 1u) + F(c, i) * W(c, 2u);
     }

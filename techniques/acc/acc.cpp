@@ -5,8 +5,10 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <tuple>
 
 #include "core/mesh/topology.h"
+#include "techniques/common/crease_refinement.h"
 #include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
 #include "techniques/common/patch_bounds.h"
@@ -16,7 +18,7 @@
 
 namespace tb::acc {
 
-CornerWeights cornerWeights(uint32_t valence, bool boundary) {
+CornerWeights cornerWeights(uint32_t valence, bool boundary, bool corner) {
   CornerWeights w;
   const double n = boundary ? 4.0 : double(valence);  // boundary: the valence-4 masks
   w.ev = 2 * n / (2 * n + 10);
@@ -29,9 +31,9 @@ CornerWeights cornerWeights(uint32_t valence, bool boundary) {
   w.bv = 2.0 / 3.0;
   w.be = 1.0 / 3.0;
   if (boundary) {
-    // Boundary B-spline corner (e_0 + 4 v + e_{n-1}) / 6; a valence-2 corner interpolates.
-    w.cv = valence == 2 ? 1.0 : 4.0 / 6.0;
-    w.ce = valence == 2 ? 0.0 : 1.0 / 6.0;
+    // Boundary B-spline corner (e_0 + 4 v + e_{n-1}) / 6; a corner interpolates.
+    w.cv = corner ? 1.0 : 4.0 / 6.0;
+    w.ce = corner ? 0.0 : 1.0 / 6.0;
     w.cosine = 0;
   } else {
     w.cv = n / (n + 5);
@@ -59,11 +61,12 @@ std::vector<double> tangentMask(uint32_t valence) {
 
 namespace {
 
-using KindKey = std::pair<uint32_t, bool>;  // (valence, boundary)
+using KindKey = std::tuple<uint32_t, bool, bool>;  // (valence, boundary, corner)
 using ClassKey = std::array<KindKey, 4>;
 
-// Checks everything except the rings; throws UnsupportedInput.
-void validate(const Mesh& mesh, const Topology& topology) {
+// Checks the input (quads, manifold edges) and what the crease preparation cannot
+// represent; throws UnsupportedInput.
+void validate(const Mesh& mesh) {
   const auto fail = [](const std::string& what) { throw UnsupportedInput("acc: " + what); };
   if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -72,69 +75,63 @@ void validate(const Mesh& mesh, const Topology& topology) {
            " vertices; ACC needs quads");
     }
   }
+  const Topology topology = buildTopology(mesh);
   for (const MeshEdge& edge : topology.edges) {
     if (edge.face_count > 2) {
       fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
            std::to_string(edge.face_count) + " faces; ACC needs a manifold mesh");
     }
   }
-  if (!mesh.tags.holes.empty()) {
-    fail(describeFace(mesh, mesh.tags.holes[0]) + " is tagged as a hole; ACC has no holes");
-  }
-  for (const Crease& crease : mesh.tags.creases) {
-    if (crease.sharpness > 0) {
-      fail("edge " + std::to_string(crease.v0) + "-" + std::to_string(crease.v1) +
-           " has crease sharpness " + std::to_string(crease.sharpness) +
-           "; ACC handles smooth edges only");
+}
+
+void validateCreases(const CreasePreparation& creases) {
+  for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
+    if (creases.vertex_kind[v] == SharpVertexKind::kCone) {
+      throw UnsupportedInput("acc: " + describeVertex(creases.control, uint32_t(v)) +
+                             " is an infinitely sharp corner with fewer than two sharp edges "
+                             "(a cone point); ACC patches cannot represent it");
     }
   }
-  for (const Corner& corner : mesh.tags.corners) {
-    if (corner.sharpness > 0) {
-      fail(describeVertex(mesh, corner.vertex) + " has corner sharpness " +
-           std::to_string(corner.sharpness) + "; ACC handles smooth vertices only");
-    }
+  if (creases.patch_faces == 0) {
+    throw UnsupportedInput("acc: " + creases.control.source + " has no face with a limit surface");
   }
-  if (topology.boundaryEdgeCount() > 0 &&
-      mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner) {
-    for (const MeshEdge& edge : topology.edges) {
-      if (edge.face_count == 1) {
-        fail("boundary edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) +
-             ": boundary interpolation " +
-             (mesh.tags.boundary == BoundaryInterpolation::kNone ? "none" : "edge-only") +
-             " is not supported; ACC honours edge-and-corner only");
-      }
-    }
-  }
+}
+
+// The crease preparation of a mesh for acc (validate first).
+CreasePreparation prepare(const Mesh& mesh, size_t face_budget) {
+  CreasePreparation creases = prepareCreases(mesh, "acc", face_budget);
+  validateCreases(creases);
+  return creases;
 }
 
 class AccPatches final : public SurfacePatches {
  public:
-  AccPatches(const Mesh& mesh, BezierOrder order, bool tangent_patches)
-      : mesh_(mesh), order_(order), tangent_(tangent_patches) {
-    const Topology topology = buildTopology(mesh_);
-    validate(mesh_, topology);
-    rings_ = buildQuadRings(mesh_, "acc", kMaxValence);
-    const size_t patches = mesh_.faceCount();
+  AccPatches(CreasePreparation creases, BezierOrder order, bool tangent_patches)
+      : creases_(std::move(creases)), mesh_(creases_.control), order_(order), tangent_(tangent_patches) {
+    rings_ = buildQuadRings(mesh_, "acc", kMaxValence, &creases_);
+    // Ring r's centre position (an extra sector repeats its vertex's position).
+    for (const VertexRing& ring : rings_.rings) ring_positions_.push_back(mesh_.positions[ring.vertex]);
+    const size_t patches = creases_.patch_faces;
     corners_.resize(patches);
     class_of_.resize(patches);
     rotation_of_.resize(patches);
     std::map<ClassKey, uint32_t> class_index;
     for (size_t p = 0; p < patches; ++p) {
-      const auto face = mesh_.facePositions(p);
       ClassKey key;
       for (int k = 0; k < 4; ++k) {
-        const VertexRing& ring = rings_.rings[face[k]];
-        const KindKey kind{ring.valence, ring.boundary};
+        const uint32_t ring_index = rings_.face_rings[p][k];
+        const VertexRing& ring = rings_.rings[ring_index];
+        const KindKey kind{ring.valence, ring.boundary, ring.corner};
         key[k] = kind;
         auto [it, inserted] = weights_.try_emplace(kind);
-        if (inserted) it->second = cornerWeights(ring.valence, ring.boundary);
+        if (inserted) it->second = cornerWeights(ring.valence, ring.boundary, ring.corner);
         const std::vector<double>* mask = nullptr;
         if (!ring.boundary) {
           auto [m, fresh] = masks_.try_emplace(ring.valence);
           if (fresh) m->second = tangentMask(ring.valence);
           mask = &m->second;
         }
-        corners_[p][k] = {face[k], rings_.face_slots[p][k], &it->second, mask};
+        corners_[p][k] = {ring_index, rings_.face_slots[p][k], &it->second, mask};
       }
       // Topology combination: the corner kinds up to rotation (smallest rotation).
       ClassKey best = key;
@@ -149,27 +146,30 @@ class AccPatches final : public SurfacePatches {
       class_of_[p] = it->second;
       rotation_of_[p] = best_rotation;  // patch corner k is class corner (k + 4 - r) % 4
     }
-    const auto position_d = [this](uint32_t i) { return mesh_.positions[i]; };
-    const auto position_f = [this](uint32_t i) { return vecCast<float>(mesh_.positions[i]); };
+    const auto position_d = [this](uint32_t i) { return ring_positions_[i]; };
+    const auto position_f = [this](uint32_t i) { return vecCast<float>(ring_positions_[i]); };
     points_d_.resize(patches);
     points_f_.resize(patches);
     for (size_t p = 0; p < patches; ++p) {
       points_d_[p] = accControlPoints<double>(rings_, corners_[p], tangent_, position_d);
       points_f_[p] = accControlPoints<float>(rings_, corners_[p], tangent_, position_f);
     }
+    warnings_ = creases_.notes;
     warnings_.push_back(std::to_string(patches) + " patches in " +
                         std::to_string(classes_.size()) +
                         " topology combinations (corner valence and boundary, up to rotation)");
   }
 
   PatchDomain patchDomain(size_t) const override { return PatchDomain::kQuad; }
-  size_t patchCount() const override { return mesh_.faceCount(); }
+  size_t patchCount() const override { return creases_.patch_faces; }
+  // The input, or the input refined until its semi-sharp creases have decayed, with its
+  // holes last: face p is patch p for p < patchCount().
   const Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = mesh_.facePositions(patch);
     return {face[0], face[1], face[2], face[3]};
   }
-  uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
+  uint32_t sourceFace(size_t patch) const override { return creases_.source_face[patch]; }
 
   SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
     const AccControlPoints<double>& p = points_d_[patch];
@@ -203,7 +203,7 @@ class AccPatches final : public SurfacePatches {
   std::optional<OperationProfile> operationProfile(size_t patch) const override {
     using C = CountingScalar<float>;
     const auto position = [&](uint32_t i) {
-      const Vec3d& q = mesh_.positions[i];
+      const Vec3d& q = ring_positions_[i];
       return Vec3T<C>{C(float(q.x)), C(float(q.y)), C(float(q.z))};
     };
     OperationProfile profile;
@@ -261,7 +261,9 @@ class AccPatches final : public SurfacePatches {
     return classes_.size() * 4 * kCornerWeightFloats + masks;
   }
 
-  Mesh mesh_;
+  CreasePreparation creases_;
+  const Mesh& mesh_;  // creases_.control
+  std::vector<Vec3d> ring_positions_;
   BezierOrder order_;
   bool tangent_;
   QuadRings rings_;
@@ -285,7 +287,7 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
   program.patch_count = uint32_t(patchCount());
   program.input_vertices_per_patch = 1;
   std::vector<uint32_t> positions, headers, slots, patches, stencils;
-  for (const Vec3d& p : mesh_.positions) {
+  for (const Vec3d& p : ring_positions_) {
     for (double x : {p.x, p.y, p.z, 0.0}) positions.push_back(floatBits(x));
   }
   // Stencil table: per class 4 corners x kCornerWeightFloats, then the tangent masks.
@@ -330,8 +332,9 @@ const TechniqueInfo& AccTechnique::info() const {
       "Approximate Catmull-Clark (bicubic geometry + tangent patches)",
       "Loop & Schaefer, Approximating Catmull-Clark Subdivision Surfaces with Bicubic Patches, "
       "ACM TOG 27(1) 2008",
-      "manifold all-quad meshes, smooth (no creases, corners or holes), boundaries with "
-      "edge-and-corner interpolation, valence <= 256"};
+      "manifold all-quad meshes, valence <= 256; creases, corners, holes and every boundary "
+      "interpolation (semi-sharp creases refined with OpenSubdiv until they decay, within a "
+      "face budget); no cone points (a sharp vertex tag off a crease)"};
   return kInfo;
 }
 
@@ -365,11 +368,16 @@ bool variantTangentPatches(const VariantInfo& variant) {
   return paramOr<bool>(AccTechnique().info(), variant, "tangent", true);
 }
 
+size_t variantCreaseFaceBudget(const VariantInfo& variant) {
+  return size_t(std::max(1.0, paramOr<double>(AccTechnique().info(), variant, "crease_face_budget",
+                                              double(kDefaultCreaseFaceBudget))));
+}
+
 std::string AccTechnique::checkSupport(const Mesh& mesh) const {
   try {
-    const Topology topology = buildTopology(mesh);
-    validate(mesh, topology);
-    buildQuadRings(mesh, "acc", kMaxValence);
+    validate(mesh);
+    const CreasePreparation creases = prepare(mesh, kDefaultCreaseFaceBudget);
+    buildQuadRings(creases.control, "acc", kMaxValence, &creases);
   } catch (const UnsupportedInput& error) {
     return error.what();
   }
@@ -378,8 +386,11 @@ std::string AccTechnique::checkSupport(const Mesh& mesh) const {
 
 std::unique_ptr<TechniqueInstance> AccTechnique::build(const TechniqueInput& input,
                                                        const VariantInfo& variant) const {
+  const Mesh& mesh = requireMesh(info(), input);
+  validate(mesh);
   return std::make_unique<SurfaceInstance>(std::make_unique<AccPatches>(
-      requireMesh(info(), input), variantOrder(variant), variantTangentPatches(variant)));
+      prepare(mesh, variantCreaseFaceBudget(variant)), variantOrder(variant),
+      variantTangentPatches(variant)));
 }
 
 size_t topologyCombinationCount(const SurfacePatches& patches) {

@@ -30,9 +30,12 @@ class AccTechnique final : public Technique {
                                            const VariantInfo& variant) const override;
 };
 
-// Parameters of a variant: "order" (BezierOrder as a number) and "tangent" (0/1).
+// Parameters of a variant: "order" (BezierOrder as a number), "tangent" (0/1) and
+// "crease_face_budget" (faces the refinement of semi-sharp creases may reach;
+// kDefaultCreaseFaceBudget in techniques/common/crease_refinement.h when absent).
 BezierOrder variantOrder(const VariantInfo& variant);
 bool variantTangentPatches(const VariantInfo& variant);
+size_t variantCreaseFaceBudget(const VariantInfo& variant);
 
 }  // namespace tb::acc
 

@@ -9,10 +9,13 @@
 //   edge      (2n v + 4 e_i + 2 e_{i-1} + 2 e_{i+1} + f_{i-1} + f_i) / (2n + 10)
 //   interior  (n v + 2 e_i + 2 e_{i+1} + f_i) / (n + 5)
 // On a smooth boundary (Sdc EDGE_AND_CORNER) the boundary curve is the cubic B-spline
-// of the boundary vertices: corner (e_0 + 4 v + e_{n-1}) / 6 (v itself at a valence-2
-// corner), boundary edge point (2 v + e) / 3; interior edge and interior points at a
+// of the boundary vertices: corner (e_0 + 4 v + e_{n-1}) / 6 (v itself at a corner),
+// boundary edge point (2 v + e) / 3; interior edge and interior points at a
 // boundary vertex use the valence-4 masks. Regular boundary faces are then exactly
-// OpenSubdiv's B-spline boundary patches.
+// OpenSubdiv's B-spline boundary patches. An infinitely sharp crease is a boundary to each
+// of its sides (Kovacs et al. 2009; techniques/common/crease_refinement.h): every sector of
+// a crease vertex is a boundary ring, so the crease curve is the B-spline of the crease
+// vertices, the limit's crease curve, from both sides.
 //
 // Tangent patches, §3.2: tu (degree 2 x 3) and tv (3 x 2) start as the derivative
 // patches of the geometry. At interior corners the tangents become the limit tangents
@@ -50,7 +53,8 @@ struct CornerWeights {
 };
 inline constexpr int kCornerWeightFloats = 16;
 
-CornerWeights cornerWeights(uint32_t valence, bool boundary);
+// `corner`: a boundary or sector corner the limit interpolates (weights v alone).
+CornerWeights cornerWeights(uint32_t valence, bool boundary, bool corner);
 // Limit tangent mask of an interior vertex of valence n: α[0..n-1] on e_j, then
 // β[0..n-1] on f_j, for the tangent along e_0.
 std::vector<double> tangentMask(uint32_t valence);
@@ -97,7 +101,9 @@ Vec3T<T> accControlPoint(const QuadRings& rings, const PatchCorner& c, PointRole
   switch (role) {
     case PointRole::kCorner: {
       Vec3T<T> acc = v * T(w.cv);
-      if (ring.boundary) return acc + e(0) * T(w.ce) + e(n - 1) * T(w.ce);
+      // (e_0 + e_{n-1}) adds commutatively: the two sectors of a crease vertex list its
+      // crease neighbours in opposite orders and still compute the same bits.
+      if (ring.boundary) return acc + (e(0) + e(n - 1)) * T(w.ce);
       for (uint32_t i = 0; i < n; ++i) acc = acc + e(i) * T(w.ce) + f(i) * T(w.cf);
       return acc;
     }

@@ -3,6 +3,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "techniques/common/crease_refinement.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -27,7 +28,8 @@ std::string describeVertex(const Mesh& mesh, uint32_t vertex) {
   return text.str();
 }
 
-QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence) {
+QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence,
+                         const CreasePreparation* creases) {
   const auto fail = [&](const std::string& what) { throw UnsupportedInput(technique + ": " + what); };
   const size_t face_count = mesh.faceCount();
   std::unordered_map<uint64_t, CornerRef> outgoing;  // directed edge c_k -> c_{k+1}
@@ -57,52 +59,82 @@ QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_
   const auto cornerVertex = [&](CornerRef r, uint32_t step) {
     return mesh.facePositions(r.face)[(r.corner + step) % 4];
   };
+  const auto splits = [&](uint32_t v) {
+    if (creases == nullptr) return false;
+    const SharpVertexKind kind = creases->vertex_kind[v];
+    return kind == SharpVertexKind::kCrease || kind == SharpVertexKind::kCorner;
+  };
+  // A sector ends at an edge with no face beyond it or, at a splitting vertex, a sharp one.
+  const auto endsSector = [&](uint32_t v, uint32_t w) {
+    return !outgoing.count(directedKey(v, w)) || !outgoing.count(directedKey(w, v)) ||
+           (splits(v) && creases->isSharp(v, w));
+  };
 
   QuadRings rings;
   rings.rings.resize(mesh.positions.size());
   rings.face_slots.assign(face_count, {0, 0, 0, 0});
+  rings.face_rings.assign(face_count, {0, 0, 0, 0});
   for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const std::vector<CornerRef>& corners = corners_of[v];
     if (corners.empty()) continue;
-    // The corner whose e_i edge has no face on the other side starts a boundary fan;
-    // the face before corner r is the one with the directed edge e_i -> v.
-    int start = -1;
+    // Sector starts: the corners whose e_i edge ends a sector (no face on the other side,
+    // or sharp at a splitting vertex). None: one interior ring.
+    std::vector<size_t> starts;
+    size_t boundary_starts = 0;
     for (size_t c = 0; c < corners.size(); ++c) {
-      if (!outgoing.count(directedKey(cornerVertex(corners[c], 1), v))) {
-        if (start >= 0) fail(describeVertex(mesh, v) + " has faces in more than one fan (non-manifold vertex)");
-        start = int(c);
+      const uint32_t e = cornerVertex(corners[c], 1);
+      const bool open = !outgoing.count(directedKey(e, v));
+      boundary_starts += open;
+      if (open || (splits(v) && creases->isSharp(v, e))) starts.push_back(c);
+    }
+    if (boundary_starts > 1) fail(describeVertex(mesh, v) + " has faces in more than one fan (non-manifold vertex)");
+    const bool interior = starts.empty();
+    if (interior) starts.push_back(0);
+    size_t walked = 0;
+    for (size_t s = 0; s < starts.size(); ++s) {
+      CornerRef r = corners[starts[s]];
+      VertexRing ring;
+      ring.vertex = v;
+      ring.offset = uint32_t(rings.edge_neighbours.size());
+      ring.boundary = !interior;
+      ring.corner = creases != nullptr ? creases->vertex_kind[v] == SharpVertexKind::kCorner
+                                       : false;
+      const uint32_t index = s == 0 ? v : uint32_t(rings.rings.size());
+      for (;;) {
+        rings.face_slots[r.face][r.corner] = ring.face_count;
+        rings.face_rings[r.face][r.corner] = index;
+        rings.edge_neighbours.push_back(cornerVertex(r, 1));
+        rings.diagonals.push_back(cornerVertex(r, 2));
+        ++ring.face_count;
+        const uint32_t next_edge = cornerVertex(r, 3);
+        if (!interior && endsSector(v, next_edge)) {
+          rings.edge_neighbours.push_back(next_edge);
+          rings.diagonals.push_back(UINT32_MAX);
+          break;
+        }
+        // Next face: the one holding the directed edge v -> e_{i+1}.
+        const auto next = outgoing.find(directedKey(v, next_edge));
+        if (next == outgoing.end()) break;  // cannot happen: endsSector caught it
+        r = next->second;
+        if (interior && r.face == corners[0].face && r.corner == corners[0].corner) break;
+        if (ring.face_count > corners.size()) break;  // cannot happen on a consistent mesh
+      }
+      ring.valence = ring.boundary ? ring.face_count + 1 : ring.face_count;
+      if (creases == nullptr && ring.boundary && ring.valence == 2) ring.corner = true;
+      walked += ring.face_count;
+      if (ring.valence > max_valence) {
+        fail(describeVertex(mesh, v) + " has valence " + std::to_string(ring.valence) +
+             " above the maximum " + std::to_string(max_valence));
+      }
+      if (s == 0) {
+        rings.rings[v] = ring;
+      } else {
+        rings.rings.push_back(ring);
       }
     }
-    const bool boundary = start >= 0;
-    CornerRef r = corners[boundary ? size_t(start) : 0];
-    VertexRing ring;
-    ring.offset = uint32_t(rings.edge_neighbours.size());
-    ring.boundary = boundary;
-    for (;;) {
-      rings.face_slots[r.face][r.corner] = ring.face_count;
-      rings.edge_neighbours.push_back(cornerVertex(r, 1));
-      rings.diagonals.push_back(cornerVertex(r, 2));
-      ++ring.face_count;
-      // Next face: the one holding the directed edge v -> e_{i+1}.
-      const auto next = outgoing.find(directedKey(v, cornerVertex(r, 3)));
-      if (next == outgoing.end()) {
-        rings.edge_neighbours.push_back(cornerVertex(r, 3));
-        rings.diagonals.push_back(UINT32_MAX);
-        break;
-      }
-      r = next->second;
-      if (!boundary && r.face == corners[0].face && r.corner == corners[0].corner) break;
-      if (ring.face_count > corners.size()) break;  // cannot happen on a consistent mesh
-    }
-    ring.valence = boundary ? ring.face_count + 1 : ring.face_count;
-    if (ring.face_count != corners.size()) {
+    if (walked != corners.size()) {
       fail(describeVertex(mesh, v) + " has faces in more than one fan (non-manifold vertex)");
     }
-    if (ring.valence > max_valence) {
-      fail(describeVertex(mesh, v) + " has valence " + std::to_string(ring.valence) +
-           " above the maximum " + std::to_string(max_valence));
-    }
-    rings.rings[v] = ring;
   }
   return rings;
 }

@@ -6,6 +6,10 @@
 // edge e_{n-1}; it has n - 1 faces. An interior vertex has n faces, f_{n-1} between
 // e_{n-1} and e_0. The stored start of the ring is fixed per vertex, so every face
 // that sums over a ring sums in the same order (docs/ARCHITECTURE.md §5 rule 1).
+//
+// Creases (techniques/common/crease_refinement.h): a crease or corner vertex has one ring
+// per sector, the faces between two sharp edges, each a boundary ring. Ring r < the
+// position count is vertex r's (its first sector); the further sectors are appended.
 #pragma once
 
 #include <array>
@@ -17,20 +21,26 @@
 
 namespace tb {
 
+struct CreasePreparation;
+
 struct VertexRing {
+  uint32_t vertex = 0;      // the centre's position index
   uint32_t offset = 0;      // into QuadRings::edge_neighbours / diagonals
-  uint32_t valence = 0;     // n: edges at the vertex
-  uint32_t face_count = 0;  // n on the interior, n - 1 on a boundary
-  bool boundary = false;
+  uint32_t valence = 0;     // n: edges at the vertex (in the sector)
+  uint32_t face_count = 0;  // n on the interior, n - 1 on a boundary or sector
+  bool boundary = false;    // a mesh boundary or a sector between sharp edges
+  bool corner = false;      // the limit interpolates the vertex (a sharp corner)
 };
 
 struct QuadRings {
-  std::vector<VertexRing> rings;           // per position; valence 0 when unused
+  std::vector<VertexRing> rings;           // per position, then extra sectors; valence 0 when unused
   std::vector<uint32_t> edge_neighbours;   // e_i, `valence` entries per vertex
   std::vector<uint32_t> diagonals;         // f_i, `valence` entries (last unused on a boundary)
   // Per face, per corner k: the ring slot i of the face at corner k's vertex, so that
   // e_i is corner k+1, f_i is corner k+2 and e_{i+1} is corner k+3.
   std::vector<std::array<uint32_t, 4>> face_slots;
+  // Per face, per corner k: the ring (the sector of corner k's vertex) the face lies in.
+  std::vector<std::array<uint32_t, 4>> face_rings;
 
   uint32_t e(uint32_t v, uint32_t i) const {
     const VertexRing& r = rings[v];
@@ -46,8 +56,11 @@ struct QuadRings {
 // mesh. Throws UnsupportedInput "<technique>: <element> <rule>" naming the first face
 // or vertex that breaks a rule: a non-quad face, a degenerate face, an edge used
 // twice in one direction (non-manifold or flipped), a vertex whose faces form more
-// than one fan, valence above max_valence.
-QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence);
+// than one fan, valence above max_valence. With `creases`, built over creases->control:
+// rings split at its sharp edges and corners marked from its vertex kinds; without, a
+// boundary vertex of one face is a corner (edge-and-corner interpolation).
+QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence,
+                         const CreasePreparation* creases = nullptr);
 
 // "vertex 12 (0.5, 1, 0)" for error messages.
 std::string describeVertex(const Mesh& mesh, uint32_t vertex);

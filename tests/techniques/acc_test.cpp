@@ -14,6 +14,7 @@
 #include "reference/limit_surface.h"
 #include "techniques/acc/acc.h"
 #include "techniques/common/bezier_eval.h"
+#include "techniques/common/crease_refinement.h"
 #include "techniques/common/quad_ring.h"
 #include "tests/techniques/acc_test_support.h"
 
@@ -52,8 +53,10 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
   const auto points = domainPoints();
   size_t checked_faces = 0;
   for (const auto& asset : supportedAssets()) {
-    const ref::LimitSurface limit(asset.mesh, ref::Scheme::kCatmullClark);
     const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
+    // Over the control mesh: a creased input is refined there (techniques/common/
+    // crease_refinement.h), with the same limit surface.
+    const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
     const double diag = diagonal(asset.mesh);
     double worst_d = 0, worst_f = 0;
     size_t faces = 0;
@@ -259,25 +262,39 @@ TEST(AccRejects, NonManifoldEdgesNamingTheEdge) {
   EXPECT_NE(why.find("edge 1-2 is shared by 3 faces"), std::string::npos) << why;
 }
 
-TEST(AccRejects, HolesNamingTheFace) {
-  const std::string why = rejection(std::string(kGrid) + "t hole 1/0/0 2\n");
-  EXPECT_NE(why.find("face 2 (line 12) is tagged as a hole"), std::string::npos) << why;
-}
-
-TEST(AccRejects, CreasesNamingTheEdge) {
-  const std::string why = rejection(std::string(kGrid) + "t crease 2/1/0 3 4 2.5\n");
-  EXPECT_NE(why.find("edge 3-4 has crease sharpness"), std::string::npos) << why;
-}
-
-TEST(AccRejects, CornerTagsNamingTheVertex) {
-  const std::string why = rejection(std::string(kGrid) + "t corner 1/1/0 4 1.0\n");
-  EXPECT_NE(why.find("vertex 4 (1, 1, 0) has corner sharpness"), std::string::npos) << why;
-}
-
-TEST(AccRejects, EdgeOnlyBoundariesNamingAnEdge) {
-  const std::string why = rejection(std::string(kGrid) + "t interpolateboundary 1/0/0 2\n");
-  EXPECT_NE(why.find("boundary edge 0-1: boundary interpolation edge-only"), std::string::npos)
+TEST(AccRejects, ConePointsNamingTheVertex) {
+  // An infinitely sharp vertex tag inside a smooth region: no crease to split the ring at.
+  const std::string why = rejection(std::string(kGrid) + "t corner 1/1/0 4 10\n");
+  EXPECT_NE(why.find("acc: vertex 4 (1, 1, 0) is an infinitely sharp corner with fewer than two "
+                     "sharp edges (a cone point)"),
+            std::string::npos)
       << why;
+}
+
+// What used to be refused: holes, creases, corner tags and edge-only boundaries.
+TEST(AccTags, HolesCreasesCornersAndBoundaryRulesAreAccepted) {
+  EXPECT_EQ(rejection(std::string(kGrid) + "t hole 1/0/0 2\n"), "accepted");
+  EXPECT_EQ(rejection(std::string(kGrid) + "t crease 2/1/0 3 4 2.5\n"), "accepted");
+  EXPECT_EQ(rejection(std::string(kGrid) + "t crease 2/1/0 3 4 10\n"), "accepted");
+  EXPECT_EQ(rejection(std::string(kGrid) + "t corner 1/1/0 4 1.0\n"), "accepted");
+  EXPECT_EQ(rejection(std::string(kGrid) + "t interpolateboundary 1/0/0 2\n"), "accepted");
+  // Boundary interpolation "none": every face of the 2 x 2 grid touches the boundary, so
+  // OpenSubdiv gives none of them a limit surface.
+  EXPECT_EQ(rejection(std::string(kGrid) + "t interpolateboundary 1/0/0 0\n"),
+            "acc: test.obj has no face with a limit surface");
+}
+
+// A hole has no patch; the other faces keep theirs, in input order, and still use the
+// hole's vertices (its corner points are those of the full ring).
+TEST(AccTags, HoleFacesGetNoPatch) {
+  const Mesh mesh = loadObjText(std::string(kGrid) + "t hole 1/0/0 2\n", "hole.obj");
+  const auto patches = buildSurface(AccTechnique(), mesh, {});
+  ASSERT_EQ(patches->patchCount(), 3u);
+  EXPECT_EQ(patches->controlMesh().faceCount(), 4u);
+  EXPECT_EQ(patches->sourceFace(0), 0u);
+  EXPECT_EQ(patches->sourceFace(1), 1u);
+  EXPECT_EQ(patches->sourceFace(2), 3u);
+  EXPECT_EQ(patches->controlMesh().tags.holes, std::vector<uint32_t>{3});
 }
 
 TEST(AccRejects, NonManifoldVerticesNamingTheVertex) {
@@ -349,9 +366,15 @@ TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
     double worst = 0;
     size_t edges = 0;
     for (const auto& asset : testing::supportedAssets()) {
-      const QuadRings rings = buildQuadRings(asset.mesh, "acc", kMaxValence);
+      const CreasePreparation creases = prepareCreases(asset.mesh, "acc", kDefaultCreaseFaceBudget);
+      const QuadRings rings = buildQuadRings(creases.control, "acc", kMaxValence, &creases);
+      // Boundary, crease and corner vertices keep the geometry tangents (a regular boundary
+      // or crease sector, valence 3, still matches its neighbour), and a sharp edge is meant
+      // to break the normal.
       const auto keeps_geometry = [&](uint32_t v) {
-        return rings.rings[v].boundary && rings.rings[v].valence != 3;
+        const SharpVertexKind kind = creases.vertex_kind[v];
+        return (rings.rings[v].boundary && rings.rings[v].valence != 3) ||
+               kind == SharpVertexKind::kCrease || kind == SharpVertexKind::kCorner;
       };
       const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
       std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
@@ -364,7 +387,7 @@ TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
             first_side[{a, b}] = {p, k};
             continue;
           }
-          if (keeps_geometry(a) || keeps_geometry(b)) continue;
+          if (keeps_geometry(a) || keeps_geometry(b) || creases.isSharp(a, b)) continue;
           ++edges;
           for (int i = 1; i < 16; ++i) {
             const auto ua = testing::edgeUv(k, i / 16.0);

@@ -1,0 +1,75 @@
+// Creases, corners, holes and boundary interpolation for the ACC-family patches
+// (acc, gregory_acc), after Kovacs, Mitchell, Drone & Zorin, "Real-Time Creased
+// Approximate Subdivision Surfaces" (I3D 2009):
+//
+// - An infinitely sharp edge is a boundary for patch construction: the faces on each side
+//   build their corners from their own sector of the vertex's ring, with the boundary
+//   (B-spline curve) rules. The crease curve then depends only on the crease vertices, so
+//   both sides compute the same curve and it is exactly the limit's crease curve.
+// - A vertex with one sharp edge (a dart) keeps its whole ring and smooth rules.
+// - A vertex with two sharp edges is a crease vertex; with three or more, or with an
+//   infinitely sharp vertex tag on a crease or a boundary, a corner (interpolated).
+// - Semi-sharp (finite) sharpness is refined away, as the amendment to issue 16 asks: the
+//   mesh is refined with OpenSubdiv (Far::TopologyRefiner, Chaikin or uniform rule as
+//   tagged) until every finite sharpness has decayed to 0 (each level subtracts 1), at most
+//   as many levels as keep the patch count within a budget. The whole mesh is refined
+//   uniformly: patches of different levels would meet at T-junctions, which no bitwise
+//   watertight evaluation can close. When the budget stops refinement early, a sharpness
+//   left over is rounded: >= 0.5 becomes infinitely sharp, below 0.5 smooth (a note says so);
+//   a vertex sharpness left over on a vertex with fewer than two sharp edges becomes smooth.
+// - Holes (and, with boundary interpolation "none", the faces OpenSubdiv leaves without a
+//   limit surface) get no patch; their vertices still shape their neighbours.
+//
+// The refined mesh keeps its true remaining tags, so a reference limit built over it is
+// the input's own limit surface.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+
+namespace tb {
+
+enum class SharpVertexKind : uint8_t {
+  kSmooth,  // no sharp edge
+  kDart,    // one sharp edge: smooth rules, whole ring
+  kCrease,  // two sharp edges: the crease curve's B-spline rules, one ring per sector
+  kCorner,  // interpolated: three or more sharp edges, or a sharp vertex tag on a crease
+  kCone,    // an infinitely sharp vertex tag with fewer than two sharp edges: no patch
+            // construction here represents it (the technique refuses it)
+};
+
+struct CreasePreparation {
+  // Faces [0, patch_faces) carry patches, in input order; the faces after them have no
+  // limit surface (holes). Positions: the input's, or the refined level's.
+  Mesh control;
+  size_t patch_faces = 0;
+  std::vector<uint32_t> source_face;  // per control face: the input face it refines
+  int levels = 0;                     // refinement steps applied
+  int levels_needed = 0;              // steps for every finite sharpness to decay to 0
+  double rounded_sharpness = 0;       // largest finite sharpness left over (rounded)
+  // Infinitely sharp edges of `control` as the patches honour them, boundary edges
+  // included under edge-only and edge-and-corner interpolation: sharpEdgeKey(a, b).
+  std::unordered_set<uint64_t> sharp_edges;
+  std::vector<SharpVertexKind> vertex_kind;  // per control position
+  std::vector<std::string> notes;            // for the instance's warnings
+
+  bool isSharp(uint32_t a, uint32_t b) const { return sharp_edges.count(sharpEdgeKey(a, b)) != 0; }
+  static uint64_t sharpEdgeKey(uint32_t a, uint32_t b) {
+    return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
+  }
+};
+
+// Refines `mesh` while finite sharpness remains and the refined mesh has at most
+// `max_faces` faces (a mesh without finite sharpness is not refined). Throws
+// UnsupportedInput "<technique>: ..." when OpenSubdiv refuses the mesh's topology or tags.
+CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces);
+
+// The default face budget of refinement for creases: acc and gregory_acc refine at most
+// until the control mesh has this many faces (a variant parameter may raise it).
+inline constexpr size_t kDefaultCreaseFaceBudget = 256;
+
+}  // namespace tb
