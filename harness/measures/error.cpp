@@ -185,8 +185,26 @@ ref::Scheme referenceScheme(LimitScheme scheme) {
   return scheme == LimitScheme::kLoop ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;
 }
 
+std::vector<uint8_t> facesTouchingCreases(const Mesh& mesh) {
+  std::vector<uint8_t> creased_vertex(mesh.positions.size(), 0);
+  for (const Crease& crease : mesh.tags.creases) {
+    if (crease.sharpness <= 0) continue;
+    for (uint32_t v : {crease.v0, crease.v1}) {
+      if (v < creased_vertex.size()) creased_vertex[v] = 1;
+    }
+  }
+  for (const Corner& corner : mesh.tags.corners) {
+    if (corner.sharpness > 0 && corner.vertex < creased_vertex.size()) creased_vertex[corner.vertex] = 1;
+  }
+  std::vector<uint8_t> touching(mesh.faceCount(), 0);
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    for (uint32_t v : mesh.facePositions(f)) touching[f] |= creased_vertex[v];
+  }
+  return touching;
+}
+
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
-                                        const ref::LimitSurface& limit) {
+                                        const ref::LimitSurface& limit, const Mesh* input) {
   const ref::Scheme scheme = referenceScheme(patches.approximates());
   if (limit.scheme() != scheme) {
     throw std::logic_error("error: the patches approximate " +
@@ -226,6 +244,11 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   std::vector<Vec3d> technique_points(sample_count);
   std::vector<double> errors(sample_count), angles(sample_count);
   std::vector<uint8_t> near_xord(sample_count);
+  const std::vector<uint8_t> creased_face = facesTouchingCreases(input ? *input : control);
+  const auto nearCrease = [&](size_t p) {
+    const size_t face = input ? patches.sourceFace(p) : p;
+    return face < creased_face.size() && creased_face[face] != 0;
+  };
   tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
     if (sampling_of[p] == nullptr) return;
     const ref::LimitFace face = limit.face(p);
@@ -256,12 +279,24 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
       technique_triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
     }
   }
+  std::vector<uint8_t> crease_of_sample(sample_count, 0);
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (nearCrease(p)) {
+      std::fill(crease_of_sample.begin() + ptrdiff_t(first_sample[p]),
+                crease_of_sample.begin() + ptrdiff_t(first_sample[p + 1]), uint8_t(1));
+    }
+  }
   double squared_sum = 0, normal_sum = 0;
   for (size_t i = 0; i < sample_count; ++i) {
     const double error = errors[i];
     double& bucket =
         near_xord[i] ? figures.parametric_max_near_xord : figures.parametric_max_elsewhere;
     bucket = std::max(bucket, error);
+    const bool near_crease = crease_of_sample[i] != 0;
+    double& crease_bucket = near_crease ? figures.parametric_max_near_crease
+                                        : figures.parametric_max_away_from_crease;
+    crease_bucket = std::max(crease_bucket, error);
+    figures.samples_near_crease += near_crease;
     figures.samples_near_xord += near_xord[i];
     figures.parametric_max = std::max(figures.parametric_max, error);
     squared_sum += error * error;
@@ -284,6 +319,8 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
   for (double* value : {&figures.parametric_max, &figures.parametric_rms,
                         &figures.parametric_max_near_xord, &figures.parametric_max_elsewhere,
+                        &figures.parametric_max_near_crease,
+                        &figures.parametric_max_away_from_crease,
                         &figures.hausdorff, &figures.hausdorff_technique_to_limit,
                         &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
     *value *= scale;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "reference/limit_surface.h"
 #include "reference/scheme.h"
@@ -19,6 +21,12 @@ struct SurfaceErrorFigures {
   double parametric_rms = 0;
   double parametric_max_near_xord = 0;  // samples near an extraordinary vertex (kNearExtraordinary)
   double parametric_max_elsewhere = 0;
+  // Samples on patches whose input face touches a crease (an edge of crease sharpness > 0 or
+  // a vertex of corner sharpness > 0 in the input's tags), and the others. A creased input
+  // refined by the technique (techniques/common/crease_refinement.h) keeps the input face
+  // of every refined face (SurfacePatches::sourceFace).
+  double parametric_max_near_crease = 0;
+  double parametric_max_away_from_crease = 0;
   // Two-sided distance between the technique's tessellation and a dense
   // tessellation of the limit, sampled inside triangles.
   double hausdorff = 0;
@@ -31,6 +39,7 @@ struct SurfaceErrorFigures {
   double normal_mean_deg = 0;
   size_t samples = 0;  // parametric samples taken
   size_t samples_near_xord = 0;
+  size_t samples_near_crease = 0;
   size_t patches_without_limit = 0;  // hole faces etc., left out
   // Triangle patches over Catmull-Clark triangles, sampled through Bfr's quad sub-faces
   // (kErrorSubFaceSampleLevel); 0 for single-scheme techniques.
@@ -58,8 +67,15 @@ ref::Scheme referenceScheme(LimitScheme scheme);
 // parameterisation; triangles on Catmull-Clark triangles go through the sub-face map
 // (subFaceSampling in the .cpp). Throws std::logic_error for a scheme mismatch or any other
 // combination.
+// `input`: the mesh the technique was built from, whose tags say which samples are near a
+// crease; null: the control mesh's own tags.
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
-                                        const ref::LimitSurface& limit);
+                                        const ref::LimitSurface& limit,
+                                        const Mesh* input = nullptr);
+
+// Per face of `mesh`: 1 when the face touches a crease (an edge of crease sharpness > 0 or a
+// vertex of corner sharpness > 0).
+std::vector<uint8_t> facesTouchingCreases(const Mesh& mesh);
 
 // The point of the limit face (face_domain.h) at which a patch's domain coordinate is
 // graded: the same parameter for quads on Catmull-Clark faces ((u, v) = coord[0], coord[1])

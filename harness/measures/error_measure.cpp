@@ -26,6 +26,10 @@ const MetricTable<SurfaceErrorFigures>& errorTable() {
        &F::parametric_max_near_xord},
       {"parametric_max_elsewhere", Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_elsewhere},
+      {"parametric_max_near_crease", Unit::kDiagonal, D::kLowerIsBetter,
+       &F::parametric_max_near_crease},
+      {"parametric_max_away_from_crease", Unit::kDiagonal, D::kLowerIsBetter,
+       &F::parametric_max_away_from_crease},
       {"hausdorff", Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
       {"hausdorff_tech_to_limit", Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_technique_to_limit},
@@ -36,6 +40,7 @@ const MetricTable<SurfaceErrorFigures>& errorTable() {
       {"normal_mean", Unit::kDegrees, D::kLowerIsBetter, &F::normal_mean_deg},
       {"samples", Unit::kCount, D::kNone, &F::samples},
       {"samples_near_xord", Unit::kCount, D::kNone, &F::samples_near_xord},
+      {"samples_near_crease", Unit::kCount, D::kNone, &F::samples_near_crease},
       {"patches_without_limit", Unit::kCount, D::kNone, &F::patches_without_limit},
       {"bbox_diagonal", Unit::kWorld, D::kNone, &F::bbox_diagonal},
   };
@@ -144,7 +149,7 @@ class ErrorMeasure final : public Measure {
     const ref::Scheme scheme = referenceScheme(input.patches->approximates());
     try {
       const ref::LimitSurface limit(input.patches->controlMesh(), scheme);
-      const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit);
+      const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit, &input.mesh);
       if (f.patches_through_sub_faces > 0) {
         // Only records whose technique puts triangle patches on a Catmull-Clark mesh.
         result.notes.push_back(

@@ -55,6 +55,7 @@ void forSupportedAssets(const Case& c, Fn fn) {
     ++supported;
     fn(asset.name, *patches);
   }
+  std::printf("%s/%s: %zu bundled assets supported\n", c.technique, c.variant, supported);
   EXPECT_GT(supported, 0u) << c.technique << "/" << c.variant;
 }
 
