@@ -32,7 +32,7 @@
 // techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
 // simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 8;
+inline constexpr int kTessbenchPluginAbi = 9;
 
 namespace tb {
 

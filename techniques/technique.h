@@ -45,6 +45,10 @@ struct VariantInfo {
   std::string name;                          // "alpha0.75"; unique within the technique
   std::string description;                   // one line for reports
   std::map<std::string, double> parameters;  // numeric parameters, e.g. {"alpha": 0.75}
+  // The default variant's surface evaluated in another float operation order: its double
+  // evaluate() is the default's to rounding, so its surface-error figures repeat the
+  // default's (the default suite grades them once; VariantPolicy::kEveryDistinctSurface).
+  bool evaluation_order_only = false;
 };
 
 // Bytes a technique keeps resident to draw one asset, before tessellation.

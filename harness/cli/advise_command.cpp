@@ -118,6 +118,7 @@ std::string adviceJson(const Advice& advice, const AdviceConstraints& c) {
                           {"instructions", optionalJson(f.instructions)},
                           {"memory_ratio", optionalJson(f.memory_ratio)},
                           {"memory_from_default_variant", f.memory_from_default},
+                          {"error_from_default_variant", f.error_from_default},
                           {"watertight", toString(f.watertight)},
                           {"points_not_equal", f.points_not_equal},
                           {"unpaired_points", f.unpaired_points},

@@ -85,6 +85,9 @@ enum class VariantPolicy : uint8_t {
   // The default variant in the default suite, every variant in --suite full (culling: the
   // figures follow the variant, but a frame costs a render and a device run per policy).
   kEveryVariantInFullSuite,
+  // Every variant whose surface differs from the default's; in --suite full every variant
+  // (error: a variant that only reorders the float evaluation has the default's figures).
+  kEveryDistinctSurface,
 };
 
 // A measure's whole declaration of where it runs.

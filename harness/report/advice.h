@@ -45,6 +45,7 @@ struct CandidateFigures {
   double unpaired_points = 0;   // largest over the cracks rows (count); 0 when watertight
   std::string missing_error, missing_memory, missing_instructions, watertight_detail;
   bool memory_from_default = false;  // the default variant's figure (same patch data)
+  bool error_from_default = false;   // the default variant's figure (same double surface)
 };
 
 struct Candidate {

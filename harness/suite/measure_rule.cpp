@@ -22,6 +22,8 @@ bool policyAdmits(VariantPolicy policy, const VariantStanding& standing) {
       return standing.is_default || standing.own_patch_data;
     case VariantPolicy::kEveryVariantInFullSuite:
       return standing.is_default || standing.full_suite;
+    case VariantPolicy::kEveryDistinctSurface:
+      return standing.is_default || standing.full_suite || !standing.same_surface_as_default;
   }
   return false;
 }

@@ -26,6 +26,8 @@ struct VariantStanding {
   // instance is built: whether they may (the default's footprint is known).
   bool own_patch_data = false;
   bool full_suite = false;  // the run is --suite full
+  // VariantInfo::evaluation_order_only: the default's surface in another float order.
+  bool same_surface_as_default = false;
 };
 
 // True when every need the suite decides on (surface, simulation) is met, the technique

@@ -268,7 +268,7 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   const VariantStanding maybe{
       is_default,
       default_footprint->has_value() || technique.info().family == TechniqueFamily::kSimulation,
-      full};
+      full, variant.evaluation_order_only};
   bool any_may_run = false;
   for (const Measure* measure : run.measures) {
     any_may_run |=
@@ -304,7 +304,7 @@ StepOutcome runStep(const SuiteRun& run, const Technique& technique, const Varia
   std::vector<const Measure*> runnable;
   for (const Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
-                    {is_default, own_patch_data, full}) &&
+                    {is_default, own_patch_data, full, variant.evaluation_order_only}) &&
         ownsMeasure(run.shard, technique.info().id, variant.name, input.name, measure->info().id)) {
       runnable.push_back(measure);
     }

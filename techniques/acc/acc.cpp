@@ -339,9 +339,13 @@ const TechniqueInfo& AccTechnique::info() const {
 }
 
 std::vector<VariantInfo> AccTechnique::variants() const {
+  // Every variant but default and no_tangent only reorders the float evaluation of the
+  // default's patches (VariantInfo::evaluation_order_only).
   const auto make = [](std::string name, std::string text, BezierOrder order, bool tangent) {
+    const bool reorders = order != BezierOrder::kSymmetricFma;
     return VariantInfo{std::move(name), std::move(text),
-                       {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}}};
+                       {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}},
+                       reorders};
   };
   return {
       make("default", "tangent patches; symmetric FMA Bézier order", BezierOrder::kSymmetricFma, true),
