@@ -71,6 +71,25 @@ Mesh creasedGrid() {
   return loadObjText(obj, "creased_grid.obj");
 }
 
+// An n x n grid of unit quads, bumped so no patch is planar, with a boundary rule.
+Mesh bumpyGrid(int n, int boundary_tag) {
+  std::string obj;
+  for (int y = 0; y <= n; ++y) {
+    for (int x = 0; x <= n; ++x) {
+      const double z = 0.3 * std::sin(0.9 * x + 0.2) * std::cos(0.7 * y + 0.1);
+      obj += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    }
+  }
+  const auto id = [n](int x, int y) { return std::to_string(1 + x + (n + 1) * y); };
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      obj += "f " + id(x, y) + " " + id(x + 1, y) + " " + id(x + 1, y + 1) + " " + id(x, y + 1) + "\n";
+    }
+  }
+  obj += "t interpolateboundary 1/0/0 " + std::to_string(boundary_tag) + "\n";
+  return loadObjText(obj, "grid.obj");
+}
+
 struct CurveFigures {
   size_t edges = 0;
   double worst = 0;  // max |patch - limit| / diagonal along those edges
@@ -135,7 +154,8 @@ TEST(AccCreases, InfinitelySharpCreaseCurvesEqualTheLimit) {
         {"creased grid", creasedGrid()},
         {"catmark_single_crease", bundled("catmark_single_crease")},
         {"catmark_edgecorner", bundled("catmark_edgecorner")},
-        {"catmark_tent_creases1", bundled("catmark_tent_creases1")}}) {
+        {"catmark_tent_creases1", bundled("catmark_tent_creases1")},
+        {"grid, edge-only boundary", bumpyGrid(4, 2)}}) {
     const CurveFigures f = creaseCurveError(mesh);
     std::printf("%-24s %4zu sharp patch edges between crease/corner vertices: max |acc - limit| "
                 "/ diagonal %.2e\n",
@@ -144,6 +164,33 @@ TEST(AccCreases, InfinitelySharpCreaseCurvesEqualTheLimit) {
     edges += f.edges;
   }
   EXPECT_GT(edges, 40u);
+}
+
+// Boundary interpolation "none": OpenSubdiv gives a limit surface only to the faces with no
+// boundary vertex; acc patches exactly those (the inner 2 x 2 of a 4 x 4 grid, regular: exact
+// B-spline patches over the rings that run through the boundary faces), in input order.
+TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
+  const Mesh mesh = bumpyGrid(4, 0);
+  const auto patches = buildSurface(AccTechnique(), mesh, {});
+  ASSERT_EQ(patches->patchCount(), 4u);
+  EXPECT_EQ(patches->controlMesh().faceCount(), 16u);
+  const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+  double worst = 0;
+  for (size_t p = 0; p < patches->patchCount(); ++p) {
+    ASSERT_TRUE(limit.hasLimitSurface(p)) << "patch " << p;
+    const ref::LimitFace face = limit.face(p);
+    for (int i = 0; i <= 8; ++i) {
+      for (int j = 0; j <= 8; ++j) {
+        const Vec3d ours = patches->evaluate(p, {i / 8.0, j / 8.0, 0}).position;
+        worst = std::max(worst, length(ours - face.evaluate(i / 8.0, j / 8.0).position));
+      }
+    }
+  }
+  for (size_t f = patches->patchCount(); f < 16; ++f) EXPECT_FALSE(limit.hasLimitSurface(f));
+  EXPECT_EQ(patches->sourceFace(0), 5u);  // the inner faces of the 4 x 4 grid: 5, 6, 9, 10
+  EXPECT_EQ(patches->sourceFace(3), 10u);
+  std::printf("grid, boundary none: %zu patches, max |acc - limit| %.2e\n", patches->patchCount(), worst);
+  EXPECT_LT(worst, 1e-12);
 }
 
 // Both sides of a creased edge are C0 in double (bitwise in float: the symmetric-variant
