@@ -278,13 +278,21 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
 }
 
 // lavapipe: the crack measure over every shared edge (crease edges included) of the
-// creased assets, capture against capture, and the capture against evaluateFloat.
+// creased assets, a holed cube and grids with edge-only / none boundaries (the TCS reads
+// the stencils from buffers: no shader knows about creases or holes), capture against
+// capture, and the capture against evaluateFloat.
 TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  for (const std::string& name : kCreasedAssets) meshes.emplace_back(name, load(name));
+  meshes.emplace_back("holed cube", loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj"));
+  meshes.emplace_back("crease loop cube", loadObjText(std::string(kCube) + kCubeCreaseLoop, "loop.obj"));
+  meshes.emplace_back("edge-only grid", loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "eo.obj"));
+  meshes.emplace_back("none grid", loadObjText(grid(4, "t interpolateboundary 1/0/0 0\n"), "none.obj"));
   for (const char* variant : kSymmetricVariants) {
     uint64_t pairs = 0, unequal = 0, device_ulp = 0;
-    for (const std::string& name : kCreasedAssets) {
-      const auto patches = build(load(name), variant);
+    for (const auto& [name, mesh] : meshes) {
+      const auto patches = build(mesh, variant);
       for (const auto& [level, spacing] : {std::pair{7.3f, tess::Spacing::kFractionalOdd},
                                            std::pair{16.0f, tess::Spacing::kInteger}}) {
         const CrackFigures f = measureCracks(*patches, spacing, level, CrackBackend::kGpu, &context);
