@@ -360,7 +360,8 @@ bool nativeFaces(const Mesh& mesh, NonQuadFaces non_quads) {
 }
 
 // What the plain rings (buildRings, refineOnce) do not represent: creases, corner tags,
-// holes, a boundary interpolation other than edge-and-corner.
+// holes, a boundary with an interpolation other than edge-and-corner (a closed mesh's
+// boundary tag changes nothing).
 bool hasSharpFeatures(const Mesh& mesh) {
   for (const Crease& crease : mesh.tags.creases) {
     if (crease.sharpness > 0) return true;
@@ -368,7 +369,9 @@ bool hasSharpFeatures(const Mesh& mesh) {
   for (const Corner& corner : mesh.tags.corners) {
     if (corner.sharpness > 0) return true;
   }
-  return !mesh.tags.holes.empty() || mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner;
+  if (!mesh.tags.holes.empty()) return true;
+  return mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner &&
+         buildTopology(mesh).boundaryEdgeCount() > 0;
 }
 
 // The input rules that need no crease preparation.

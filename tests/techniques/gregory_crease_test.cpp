@@ -430,3 +430,19 @@ TEST(GregoryCrease, TheCreaseFaceBudgetIsAVariantParameter) {
 
 }  // namespace
 }  // namespace tb::gregory_acc
+
+namespace tb::gregory_acc {
+namespace {
+
+// loop_icosahedron is closed but tagged edge-only: nothing sharp, so quads_only keeps the
+// stencils over its own 12 vertices (refineOnce), as before creases were supported.
+TEST(GregoryCrease, AClosedMeshsBoundaryTagForcesNoOpenSubdivRefinement) {
+  const Mesh mesh = load("opensubdiv/loop_icosahedron.obj");
+  ASSERT_EQ(mesh.tags.boundary, BoundaryInterpolation::kEdgeOnly);
+  const auto patches = build(mesh, "quads_only");
+  EXPECT_EQ(patches->footprint().control_mesh_bytes, 12u * 16u);  // vec4 per input vertex
+  EXPECT_EQ(patches->patchCount(), 60u);                          // 20 triangles x 3 quads
+}
+
+}  // namespace
+}  // namespace tb::gregory_acc
