@@ -50,7 +50,8 @@ size_t facesAfter(const Mesh& mesh, int levels) {
 
 }  // namespace
 
-CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces) {
+CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
+                                 int min_levels) {
   std::unique_ptr<Far::TopologyRefiner> refiner;
   try {
     refiner = ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
@@ -60,6 +61,7 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
   CreasePreparation out;
   const float largest = largestFiniteSharpness(refiner->GetLevel(0));
   out.levels_needed = int(std::ceil(largest));
+  out.levels = std::max(0, min_levels);
   while (out.levels < out.levels_needed && facesAfter(mesh, out.levels + 1) <= max_faces) ++out.levels;
 
   std::vector<RefinedPoint> points(mesh.positions.size());
@@ -172,7 +174,7 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
   if (out.levels == 0 && out.patch_faces == control.faceCount()) {
     control.tags = mesh.tags;  // nothing moved: the control mesh is the input as it is
   }
-  if (out.levels > 0) {
+  if (out.levels > 0 && out.levels_needed > 0) {
     char line[200];
     std::snprintf(line, sizeof line,
                   "semi-sharp creases: refined %d of %d levels (%zu faces; budget %zu faces)",

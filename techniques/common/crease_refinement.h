@@ -66,7 +66,10 @@ struct CreasePreparation {
 // Refines `mesh` while finite sharpness remains and the refined mesh has at most
 // `max_faces` faces (a mesh without finite sharpness is not refined). Throws
 // UnsupportedInput "<technique>: ..." when OpenSubdiv refuses the mesh's topology or tags.
-CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces);
+// `min_levels` steps are applied whatever the budget (gregory_acc: 1 for a mesh whose
+// non-quad faces it cannot patch next to sharp features; acc passes none).
+CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
+                                 int min_levels = 0);
 
 // The default face budget of refinement for creases: acc and gregory_acc refine at most
 // until the control mesh has this many faces (a variant parameter may raise it).

@@ -1,5 +1,6 @@
 #include "techniques/gregory_acc/gregory_acc.h"
 
+#include <algorithm>
 #include <bit>
 
 #include "techniques/gregory_acc/gregory_batch.h"
@@ -20,11 +21,12 @@ constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control p
 class GregoryPatches final : public SurfacePatches {
  public:
   GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask,
-                 NonQuadFaces non_quads)
-      : positions_(mesh.positions),
-        build_(buildGregory(mesh, mask, non_quads)),
+                 NonQuadFaces non_quads, size_t crease_face_budget)
+      : build_(buildGregory(mesh, mask, non_quads, crease_face_budget)),
+        positions_(build_.creases.control.positions),
         stencils_(build_.stencils),
         symmetric_edges_(symmetric_edges) {
+    warnings_ = build_.creases.notes;
     if (build_.refined) {
       warnings_.push_back(
           std::string(non_quads == NonQuadFaces::kRefineOnce
@@ -55,12 +57,13 @@ class GregoryPatches final : public SurfacePatches {
     }
   }
 
-  // Quads, and (unless the mesh was refined) triangles: patch p is face p.
+  // Quads, and (unless the mesh was refined) triangles: patch p is face p; the faces
+  // after patchCount() are holes.
   PatchDomain patchDomain(size_t patch) const override {
     return build_.control.faceSize(patch) == 3 ? PatchDomain::kTriangle : PatchDomain::kQuad;
   }
   LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
-  size_t patchCount() const override { return build_.control.faceCount(); }
+  size_t patchCount() const override { return build_.patch_count; }
   const Mesh& controlMesh() const override { return build_.control; }
 
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
@@ -216,8 +219,8 @@ class GregoryPatches final : public SurfacePatches {
     return cp;
   }
 
-  std::vector<Vec3d> positions_;  // the input control mesh's, which every stencil reads
   GregoryBuild build_;
+  std::vector<Vec3d> positions_;  // build_.creases.control's, which every stencil reads
   const GregoryStencils& stencils_;
   bool symmetric_edges_;
   std::vector<Vec3f> positions_f_;
@@ -235,9 +238,11 @@ const TechniqueInfo& GregoryAccTechnique::info() const {
       "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad and triangle Gregory patches)",
       "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
       "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
-      "manifold Catmull-Clark meshes with smooth boundaries, valence 3..256, face size 3..32, no "
-      "crease/corner/hole/smoothtriangles tags; quads and triangles get patches of their own, "
-      "meshes with faces of 5+ vertices are refined once"};
+      "manifold Catmull-Clark meshes, valence 3..256, face size 3..32; creases, corners, holes "
+      "and every boundary interpolation (semi-sharp creases refined with OpenSubdiv until they "
+      "decay, within a face budget; sharp edges bound the patches, Kovacs et al. 2009); no cone "
+      "points (a sharp vertex tag off a crease) or smoothtriangles; quads and triangles get "
+      "patches of their own, meshes with faces of 5+ vertices are refined once"};
   return kInfo;
 }
 
@@ -274,8 +279,14 @@ std::unique_ptr<TechniqueInstance> GregoryAccTechnique::build(const TechniqueInp
   const NonQuadFaces non_quads = paramOr<bool>(info(), variant, "quads_only", false)
                                      ? NonQuadFaces::kRefineOnce
                                      : NonQuadFaces::kTrianglePatches;
-  return std::make_unique<SurfaceInstance>(
-      std::make_unique<GregoryPatches>(mesh, symmetric_edges, mask, non_quads));
+  return std::make_unique<SurfaceInstance>(std::make_unique<GregoryPatches>(
+      mesh, symmetric_edges, mask, non_quads, variantCreaseFaceBudget(variant)));
+}
+
+size_t variantCreaseFaceBudget(const VariantInfo& variant) {
+  return size_t(std::max(1.0, paramOr<double>(GregoryAccTechnique().info(), variant,
+                                              "crease_face_budget",
+                                              double(kDefaultCreaseFaceBudget))));
 }
 
 TB_REGISTER_TECHNIQUE(GregoryAccTechnique);

@@ -1,8 +1,9 @@
 // The `gregory_acc` technique: Catmull-Clark limit surfaces approximated by quad Gregory
 // patches (Loop, Schaefer, Ni, Castaño, SIGGRAPH Asia 2009; seed 000 "Gregory ACC"), and
 // triangle Gregory patches for triangle faces (the `quads_only` variant refines non-quad
-// faces once instead). Closed, manifold polygon meshes without crease, corner or hole tags
-// (see checkGregorySupport for the exact rules and messages).
+// faces once instead). Manifold polygon meshes with creases, corners, holes and any
+// boundary interpolation (see gregory_stencils.h, and checkGregorySupport for the exact
+// rules and messages).
 #pragma once
 
 #include "techniques/technique.h"
@@ -17,5 +18,9 @@ class GregoryAccTechnique final : public Technique {
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
                                            const VariantInfo& variant) const override;
 };
+
+// Parameter "crease_face_budget" of a variant: faces the refinement of semi-sharp creases
+// may reach (kDefaultCreaseFaceBudget in techniques/common/crease_refinement.h when absent).
+size_t variantCreaseFaceBudget(const VariantInfo& variant);
 
 }  // namespace tb::gregory_acc

@@ -6,9 +6,11 @@
 #include <numbers>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "core/mesh/topology.h"
+#include "techniques/common/quad_ring.h"
 #include "techniques/gregory_acc/gregory_refine.h"
 #include "techniques/technique.h"
 
@@ -42,7 +44,9 @@ uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 // The 1-ring of a vertex, counter-clockwise: face i follows the edge to neighbour[i]
 // and precedes the edge to neighbour[i + 1] (indices modulo the valence inside). On a
 // boundary, neighbour[0] and neighbour[faces] are the two boundary neighbours, and there
-// is one more neighbour than faces.
+// is one more neighbour than faces. A sector (the faces between two consecutive sharp
+// edges of a crease or corner vertex, Kovacs et al. 2009) is a Ring too, open like a
+// boundary: neighbour[0] and neighbour[faces] are its sharp edges' other ends.
 //
 // diagonal[i] is face i's "diagonal" as a stencil: on a quad (v, e_i, d_i, e_{i+1}) the
 // vertex d_i; on any other face 4 c_i - v - e_i - e_{i+1}, with c_i the face's
@@ -53,8 +57,9 @@ uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 struct Ring {
   std::vector<uint32_t> neighbour;
   std::vector<Stencil> diagonal;  // one per face
-  bool boundary = false;
-  bool quads_only = true;  // every face of the ring is a quad
+  bool boundary = false;    // open: a mesh boundary, or a sector between sharp edges
+  bool corner = false;      // the vertex is interpolated (SharpVertexKind::kCorner)
+  bool quads_only = true;   // every face of the ring is a quad
   uint32_t valence() const { return uint32_t(neighbour.size()); }  // edges at the vertex
   uint32_t faces() const { return uint32_t(diagonal.size()); }
   // The valence used in the face-point weights cos(2 pi / n): a boundary vertex with k
@@ -106,26 +111,25 @@ VertexFrame vertexFrame(uint32_t v, const Ring& ring, TangentMask mask) {
   return frame;
 }
 
-// Smooth boundary vertex with k >= 2 faces (Sdc EDGE_AND_CORNER: the boundary is an
-// infinitely sharp crease): P is the boundary B-spline's limit point, e0 its tangent
-// (exact: it involves only the two boundary neighbours, so both patches of a boundary
-// edge agree), e1 the cross-boundary tangent of Loop et al. 2009 (as in OpenSubdiv Far's
-// Gregory basis); the edge point toward neighbour j is P + cos(pi j/k) e0 + sin(pi j/k) e1.
-// A corner (k = 1) interpolates its vertex; its edge points are (2 v + w) / 3.
+// Crease vertex, one open ring of k >= 1 faces: a smooth mesh-boundary vertex (the
+// boundary is an infinitely sharp crease) or one sector of a crease vertex. P is the
+// crease B-spline's limit point, e0 its tangent (exact: both involve only the vertex and
+// the two crease neighbours, so every patch along the crease agrees, whichever side it is
+// on), e1 the cross-boundary tangent of Loop et al. 2009 (as in OpenSubdiv Far's Gregory
+// basis; 0 for k = 1, where the limit folds); the edge point toward neighbour j is
+// P + cos(pi j/k) e0 + sin(pi j/k) e1. Corners (interpolated) are not framed here: see
+// cornerEdgePoint.
 VertexFrame boundaryFrame(uint32_t v, const Ring& ring) {
   const uint32_t k = ring.faces();
   const double dk = double(k);
   const uint32_t b0 = ring.neighbour.front(), b1 = ring.neighbour.back();
   VertexFrame frame;
-  if (k == 1) {  // corner: interpolated; edge points are formed in edgePoint
-    add(frame.position, v, 1.0);
-    return frame;
-  }
   add(frame.position, v, 4.0 / 6);
   add(frame.position, b0, 1.0 / 6);
   add(frame.position, b1, 1.0 / 6);
   add(frame.e0, b0, 1.0 / 6);
   add(frame.e0, b1, -1.0 / 6);
+  // k = 1: cos(pi) = -1 exactly, sin(pi) = 1.2e-16 (its terms are dropped by emit).
   const double c = std::cos(std::numbers::pi / dk), s = std::sin(std::numbers::pi / dk);
   const double den = 3 * dk + c;
   add(frame.e1, v, -4 * s / den / 3);
@@ -278,27 +282,101 @@ Rings buildRings(const Mesh& mesh) {
   return out;
 }
 
-}  // namespace
-
-std::string checkGregorySupport(const Mesh& mesh) {
-  if (mesh.faceCount() == 0) return prefix(mesh) + "has no faces";
-  for (const Crease& crease : mesh.tags.creases) {
-    if (crease.sharpness > 0) {
-      return prefix(mesh) + "crease edge (" + std::to_string(crease.v0) + ", " +
-             std::to_string(crease.v1) + ") has sharpness " + std::to_string(crease.sharpness) +
-             "; creases are not supported";
+// The rings of vertex v as the patches use them (Kovacs et al. 2009: a sharp edge is a
+// boundary for patch construction). Smooth vertices and darts keep their whole ring (a
+// dart: smooth rules); crease and corner vertices get one open ring per sector, cut at
+// their sharp edges (and, on a mesh boundary, at its two ends).
+std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole, const CreasePreparation& creases) {
+  const SharpVertexKind kind = creases.vertex_kind[v];
+  if (kind != SharpVertexKind::kCrease && kind != SharpVertexKind::kCorner) return {whole};
+  const uint32_t n = whole.valence();
+  std::vector<uint32_t> cuts;  // neighbour indices where a sector starts or ends, ascending
+  for (uint32_t i = 0; i < n; ++i) {
+    if (creases.isSharp(v, whole.neighbour[i]) || (whole.boundary && (i == 0 || i + 1 == n))) {
+      cuts.push_back(i);
     }
+  }
+  Ring ring = whole;  // a closed ring rotated to start at a cut, then closed by repeating it
+  if (!whole.boundary) {
+    if (cuts.empty()) return {whole};  // not reached: crease and corner kinds have sharp edges
+    std::rotate(ring.neighbour.begin(), ring.neighbour.begin() + cuts[0], ring.neighbour.end());
+    std::rotate(ring.diagonal.begin(), ring.diagonal.begin() + cuts[0], ring.diagonal.end());
+    const uint32_t shift = cuts[0];
+    for (uint32_t& c : cuts) c -= shift;
+    ring.neighbour.push_back(ring.neighbour.front());
+    cuts.push_back(n);
+  }
+  std::vector<Ring> sectors;
+  for (size_t s = 0; s + 1 < cuts.size(); ++s) {
+    Ring sector;
+    sector.boundary = true;
+    sector.corner = kind == SharpVertexKind::kCorner;
+    sector.quads_only = whole.quads_only;
+    sector.neighbour.assign(ring.neighbour.begin() + cuts[s], ring.neighbour.begin() + cuts[s + 1] + 1);
+    sector.diagonal.assign(ring.diagonal.begin() + cuts[s], ring.diagonal.begin() + cuts[s + 1]);
+    sectors.push_back(std::move(sector));
+  }
+  return sectors;
+}
+
+// Corner sector (interpolated vertex v; its two sharp edges end at b0 = neighbour[0] and
+// b1 = neighbour[k]): the edge points along the sharp edges are the B-spline end rule
+// (2 v + b) / 3, which makes the crease curve the limit's. An interior edge j (0 < j < k)
+// has no rule in Loop et al. 2009 or Kovacs et al. 2009; it gets the direction between the
+// two crease tangents t0 = b0 - v, t1 = b1 - v that a regular corner's grid gives, the
+// sector spread over a quarter turn: E_j = v + (sin((k - j) phi) t0 + sin(j phi) t1) / 3,
+// phi = pi / (2k) (for k = 2 the diagonal direction). Affine; one stencil per directed edge.
+Stencil cornerEdgePoint(uint32_t v, const Ring& sector, uint32_t w) {
+  const uint32_t k = sector.faces(), j = sector.indexOf(w);
+  Stencil e;
+  if (j == 0 || j == k) {
+    add(e, v, 2.0 / 3);
+    add(e, w, 1.0 / 3);
+    return e;
+  }
+  const double phi = std::numbers::pi / (2.0 * double(k));
+  const double a = std::sin(double(k - j) * phi) / 3, b = std::sin(double(j) * phi) / 3;
+  add(e, v, 1.0 - a - b);
+  add(e, sector.neighbour.front(), a);
+  add(e, sector.neighbour.back(), b);
+  return e;
+}
+
+// A stencil without the terms emit drops (cancelled weights), for exact comparisons.
+Stencil pruned(const Stencil& s) {
+  Stencil out;
+  for (const auto& [index, weight] : s) {
+    if (std::abs(weight) >= 1e-14) out.emplace(index, weight);
+  }
+  return out;
+}
+
+bool nativeFaces(const Mesh& mesh, NonQuadFaces non_quads) {
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const uint32_t size = mesh.faceSize(f);
+    if (size != 4 && (size != 3 || non_quads != NonQuadFaces::kTrianglePatches)) return false;
+  }
+  return true;
+}
+
+// What the plain rings (buildRings, refineOnce) do not represent: creases, corner tags,
+// holes, a boundary with an interpolation other than edge-and-corner (a closed mesh's
+// boundary tag changes nothing).
+bool hasSharpFeatures(const Mesh& mesh) {
+  for (const Crease& crease : mesh.tags.creases) {
+    if (crease.sharpness > 0) return true;
   }
   for (const Corner& corner : mesh.tags.corners) {
-    if (corner.sharpness > 0) {
-      return prefix(mesh) + "corner vertex " + std::to_string(corner.vertex) +
-             " is tagged sharp; corner tags are not supported";
-    }
+    if (corner.sharpness > 0) return true;
   }
-  if (!mesh.tags.holes.empty()) {
-    return prefix(mesh) + "face " + std::to_string(mesh.tags.holes.front()) +
-           " is tagged as a hole; holes are not supported";
-  }
+  if (!mesh.tags.holes.empty()) return true;
+  return mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner &&
+         buildTopology(mesh).boundaryEdgeCount() > 0;
+}
+
+// The input rules that need no crease preparation.
+std::string checkInput(const Mesh& mesh) {
+  if (mesh.faceCount() == 0) return prefix(mesh) + "has no faces";
   if (mesh.tags.smooth_triangles) {
     return prefix(mesh) + "`t smoothtriangles` is not supported (plain Catmull-Clark only)";
   }
@@ -324,16 +402,49 @@ std::string checkGregorySupport(const Mesh& mesh) {
              ") is non-manifold (" + std::to_string(edge.face_count) + " faces)";
     }
   }
-  if (mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner) {
-    for (const MeshEdge& edge : topology.edges) {
-      if (edge.face_count == 1) {
-        return prefix(mesh) + "boundary edge (" + std::to_string(edge.v0) + ", " +
-               std::to_string(edge.v1) +
-               "); only edge-and-corner boundary interpolation is supported";
-      }
+  return buildRings(mesh).error;
+}
+
+// The crease preparation gregory_acc builds on (checkInput(mesh) must be empty): a mesh
+// with faces the patches cannot take natively (5+ vertices, or non-quads in quads_only)
+// and sharp features is refined once by OpenSubdiv, since refineOnce knows only smooth
+// rules and edge-and-corner boundaries. Throws UnsupportedInput for a cone point and for a
+// mesh with no face that has a limit surface.
+CreasePreparation prepareGregoryCreases(const Mesh& mesh, NonQuadFaces non_quads,
+                                        size_t face_budget) {
+  const bool refine = !nativeFaces(mesh, non_quads) && hasSharpFeatures(mesh);
+  CreasePreparation creases = prepareCreases(mesh, "gregory_acc", face_budget, refine ? 1 : 0);
+  for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
+    if (creases.vertex_kind[v] == SharpVertexKind::kCone) {
+      throw UnsupportedInput(prefix(mesh) + describeVertex(creases.control, uint32_t(v)) +
+                             " is an infinitely sharp corner with fewer than two sharp edges "
+                             "(a cone point); Gregory patches cannot represent it");
     }
   }
-  return buildRings(mesh).error;
+  if (creases.patch_faces == 0) {
+    throw UnsupportedInput(prefix(mesh) + "no face has a limit surface (all are holes)");
+  }
+  if (refine && creases.levels_needed == 0) {
+    creases.notes.push_back(
+        "non-quad faces with creases, corners, holes or edge-only/none boundaries: the mesh "
+        "was refined once (OpenSubdiv) and patched with quads");
+  }
+  if (std::string error = buildRings(creases.control).error; !error.empty()) {
+    throw UnsupportedInput(error);
+  }
+  return creases;
+}
+
+}  // namespace
+
+std::string checkGregorySupport(const Mesh& mesh) {
+  if (std::string error = checkInput(mesh); !error.empty()) return error;
+  try {
+    prepareGregoryCreases(mesh, NonQuadFaces::kTrianglePatches, kDefaultCreaseFaceBudget);
+  } catch (const UnsupportedInput& error) {
+    return error.what();
+  }
+  return {};
 }
 
 namespace {
@@ -341,29 +452,43 @@ namespace {
 // Builds the stencil table of buildGregoryStencils. Stencils are emitted in a fixed order
 // (vertex positions, then edge points in face order, then face points per face and
 // corner) so that every shared point is one stencil computed once: both patches that
-// use it read the same weights (docs/ARCHITECTURE.md §5, rule 1).
+// use it read the same weights (docs/ARCHITECTURE.md §5, rule 1). Around crease and
+// corner vertices each face uses its own sector's ring; a P or E(v->w) that more than one
+// sector could form (P of a crease or corner vertex, E along a sharp edge) is formed from
+// every such sector and required to come out identical before it is shared.
 class StencilBuilder {
  public:
-  StencilBuilder(const Mesh& mesh, TangentMask mask)
-      : mesh_(mesh), mask_(mask), rings_(buildRings(mesh).rings) {
+  StencilBuilder(const CreasePreparation& creases, TangentMask mask)
+      : mesh_(creases.control), creases_(creases), mask_(mask) {
+    const std::vector<Ring> whole = buildRings(mesh_).rings;
+    sectors_.resize(whole.size());
+    for (uint32_t v = 0; v < whole.size(); ++v) {
+      if (whole[v].valence() > 0) sectors_[v] = sectorsOf(v, whole[v], creases_);
+    }
     // Vertices with a non-quad face around them take their frame from the mesh refined
-    // once (refinedFrame); all-quad rings keep the direct masks.
-    if (!mesh.allFacesOfSize(4)) {
-      refined_ = refineOnce(mesh);
+    // once (refinedFrame); all-quad rings keep the direct masks. (Non-quad faces come
+    // with the plain rules only: prepareGregoryCreases refines the rest.)
+    if (!mesh_.allFacesOfSize(4)) {
+      refined_ = refineOnce(mesh_);
       refined_rings_ = buildRings(refined_->mesh).rings;
     }
   }
 
   GregoryStencils build() {
-    frames_.resize(rings_.size());
-    position_id_.assign(rings_.size(), UINT32_MAX);
-    for (uint32_t v = 0; v < rings_.size(); ++v) {
-      if (rings_[v].valence() == 0) continue;
-      frames_[v] = frameOf(v);
-      position_id_[v] = emit(frames_[v].position);
+    const size_t patches = creases_.patch_faces;
+    frames_.resize(sectors_.size());
+    position_id_.assign(sectors_.size(), UINT32_MAX);
+    std::vector<uint8_t> used(sectors_.size(), 0);
+    for (size_t f = 0; f < patches; ++f) {
+      for (uint32_t v : mesh_.facePositions(f)) used[v] = 1;
+    }
+    for (uint32_t v = 0; v < sectors_.size(); ++v) {
+      if (!used[v]) continue;  // only on holes: no patch reads it
+      for (const Ring& ring : sectors_[v]) frames_[v].push_back(frameOf(v, ring));
+      position_id_[v] = emit(sharedPosition(v));
     }
     // Edge stencils first, in face order, so all shared stencils precede the face points.
-    for (size_t f = 0; f < mesh_.faceCount(); ++f) {
+    for (size_t f = 0; f < patches; ++f) {
       const auto fv = mesh_.facePositions(f);
       const uint32_t size = uint32_t(fv.size());
       for (uint32_t c = 0; c < size; ++c) {
@@ -372,17 +497,22 @@ class StencilBuilder {
       }
     }
     out_.sharedStencilCount = out_.stencilCount();
-    out_.patch_points.resize(mesh_.faceCount());
-    for (size_t f = 0; f < mesh_.faceCount(); ++f) emitFacePoints(f);
+    out_.patch_points.resize(patches);
+    for (size_t f = 0; f < patches; ++f) emitFacePoints(f);
     return std::move(out_);
   }
 
  private:
-  VertexFrame frameOf(uint32_t v) const {
-    const Ring& ring = rings_[v];
-    if (ring.quads_only || (ring.boundary && ring.faces() == 1)) {
+  VertexFrame frameOf(uint32_t v, const Ring& ring) const {
+    if (ring.corner) {  // interpolated; edge points from cornerEdgePoint
+      VertexFrame frame;
+      add(frame.position, v, 1.0);
+      return frame;
+    }
+    if (ring.quads_only) {
       return ring.boundary ? boundaryFrame(v, ring) : vertexFrame(v, ring, mask_);
     }
+    // A whole ring here (rings with non-quad faces are never cut into sectors).
     Ring local = refined_rings_[v];
     if (!local.boundary) {  // start where the input ring starts (boundary rings already do)
       const uint32_t first = local.indexOf(refined_->edgePoint(v, ring.neighbour[0]));
@@ -390,6 +520,29 @@ class StencilBuilder {
       std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
     }
     return refinedFrame(v, local, *refined_, mask_);
+  }
+
+  // P of v: every sector's (a crease vertex's sectors all give the crease curve's limit
+  // point, a corner's all give v), checked equal term by term.
+  Stencil sharedPosition(uint32_t v) const {
+    const Stencil first = pruned(frames_[v].front().position);
+    for (const VertexFrame& frame : frames_[v]) {
+      if (pruned(frame.position) != first) {
+        throw std::logic_error(prefix(mesh_) + "the sectors of vertex " + std::to_string(v) +
+                               " disagree on its limit position");
+      }
+    }
+    return first;
+  }
+
+  // The sector of v whose face follows the edge v -> w (counter-clockwise).
+  uint32_t sectorWithFaceAfter(uint32_t v, uint32_t w) const {
+    const std::vector<Ring>& sectors = sectors_[v];
+    for (uint32_t s = 0; s < sectors.size(); ++s) {
+      if (sectors[s].indexOf(w) < sectors[s].faces()) return s;
+    }
+    throw std::logic_error(prefix(mesh_) + "no sector of vertex " + std::to_string(v) +
+                           " has a face after its edge to " + std::to_string(w));
   }
 
   uint32_t emit(const Stencil& s) {
@@ -402,21 +555,39 @@ class StencilBuilder {
     return uint32_t(out_.offsets.size() - 2);
   }
 
-  Stencil edgePoint(uint32_t v, uint32_t w) const {
-    const Ring& ring = rings_[v];
+  // E(v -> w) as sector s of v forms it.
+  Stencil edgePointIn(uint32_t v, uint32_t s, uint32_t w) const {
+    const Ring& ring = sectors_[v][s];
+    if (ring.corner) return cornerEdgePoint(v, ring, w);
+    const VertexFrame& frame = frames_[v][s];
     const uint32_t j = ring.indexOf(w);
-    Stencil e;
-    if (ring.boundary && ring.faces() == 1) {  // corner: the boundary curve's end
-      add(e, v, 2.0 / 3);
-      add(e, w, 1.0 / 3);
-      return e;
-    }
-    e = frames_[v].position;
-    // Interior: angle 2 pi j / n; boundary with k faces: pi j / k = 2 pi j / (2k).
+    Stencil e = frame.position;
+    // Interior: angle 2 pi j / n; boundary or sector with k faces: pi j / k = 2 pi j / (2k).
     const uint32_t n = ring.effectiveValence();
-    add(e, frames_[v].e0, cosTurn(j, n));
-    add(e, frames_[v].e1, sinTurn(j, n));
+    add(e, frame.e0, cosTurn(j, n));
+    add(e, frame.e1, sinTurn(j, n));
     return e;
+  }
+
+  // E(v -> w): along a sharp edge of a crease or corner vertex both sectors at the edge
+  // form it (the crease curve's Bézier point); they must agree term by term.
+  Stencil edgePoint(uint32_t v, uint32_t w) const {
+    std::optional<Stencil> e;
+    for (uint32_t s = 0; s < sectors_[v].size(); ++s) {
+      if (sectors_[v][s].indexOf(w) == UINT32_MAX) continue;
+      Stencil candidate = pruned(edgePointIn(v, s, w));
+      if (!e) {
+        e = std::move(candidate);
+      } else if (*e != candidate) {
+        throw std::logic_error(prefix(mesh_) + "the sectors of vertex " + std::to_string(v) +
+                               " disagree on the edge point toward " + std::to_string(w));
+      }
+    }
+    if (!e) {
+      throw std::logic_error(prefix(mesh_) + "vertex " + std::to_string(w) +
+                             " is not a neighbour of " + std::to_string(v));
+    }
+    return *e;
   }
 
   uint32_t edgeId(uint32_t v, uint32_t w) {
@@ -429,23 +600,29 @@ class StencilBuilder {
   // Far's Gregory basis): with c_n = cos(2 pi/n),
   //   Fp = (c_np P + (3 - 2 c_n - c_np) Ep + 2 c_n Em(ip) + r_start) / 3,
   //   Fm = (c_nm P + (3 - 2 c_n - c_nm) Em + 2 c_n Ep(im) - r_prev) / 3,
-  // for corner v of a face with next corner ip and previous corner im.
-  std::pair<Stencil, Stencil> facePoints(uint32_t v, uint32_t ip, uint32_t im) const {
-    const Ring& ring = rings_[v];
-    const uint32_t n = ring.effectiveValence(), np = rings_[ip].effectiveValence(),
-                   nm = rings_[im].effectiveValence();
+  // for corner v of a face with next corner ip and previous corner im; `after_ip` is the
+  // corner after ip (im on a triangle). Each of v, ip, im uses its sector holding the face.
+  std::pair<Stencil, Stencil> facePoints(uint32_t v, uint32_t ip, uint32_t im,
+                                         uint32_t after_ip) const {
+    const uint32_t sector = sectorWithFaceAfter(v, ip);
+    const Ring& ring = sectors_[v][sector];
+    const Ring& ring_ip = sectors_[ip][sectorWithFaceAfter(ip, after_ip)];
+    const Ring& ring_im = sectors_[im][sectorWithFaceAfter(im, v)];
+    const uint32_t n = ring.effectiveValence(), np = ring_ip.effectiveValence(),
+                   nm = ring_im.effectiveValence();
     const uint32_t start = ring.indexOf(ip);             // the face is ring face `start`
     const uint32_t prev = (start + 1) % ring.valence();  // ring index of im
     const double cn = cosTurn(1, n), cnp = cosTurn(1, np), cnm = cosTurn(1, nm);
-    // On a boundary there is no continuity to keep across a boundary edge: the face
-    // point next to it takes the other one's value (as Far's Gregory basis does), and
-    // the twist across it (which has no face there) is never formed. A corner's face
-    // point is the bicubic B-spline's with mirrored phantom points.
+    const Stencil& position = frames_[v][sector].position;
+    // On a boundary or a sharp edge there is no continuity to keep across the edge: the
+    // face point next to it takes the other one's value (as Far's Gregory basis does),
+    // and the twist across it is never formed. With both edges open (a one-face corner or
+    // crease sector) the face point is the bicubic B-spline's, (4 v + 2 ip + 2 im + d) / 9.
     const bool ip_edge_open = ring.boundary && start == 0;
     const bool im_edge_open = ring.boundary && prev + 1 == ring.valence();
     auto plusPoint = [&] {
       Stencil fp;
-      add(fp, frames_[v].position, cnp / 3);
+      add(fp, position, cnp / 3);
       add(fp, edgePoint(v, ip), (3 - 2 * cn - cnp) / 3);
       add(fp, edgePoint(ip, v), 2 * cn / 3);
       add(fp, twist(ring, start), 1.0 / 3);
@@ -453,7 +630,7 @@ class StencilBuilder {
     };
     auto minusPoint = [&] {
       Stencil fm;
-      add(fm, frames_[v].position, cnm / 3);
+      add(fm, position, cnm / 3);
       add(fm, edgePoint(v, im), (3 - 2 * cn - cnm) / 3);
       add(fm, edgePoint(im, v), 2 * cn / 3);
       add(fm, twist(ring, prev), -1.0 / 3);
@@ -495,7 +672,7 @@ class StencilBuilder {
     points.fill(kNoStencil);
     for (uint32_t c = 0; c < size; ++c) {
       const uint32_t v = fv[c], ip = fv[(c + 1) % size], im = fv[(c + size - 1) % size];
-      auto [fp, fm] = facePoints(v, ip, im);
+      auto [fp, fm] = facePoints(v, ip, im, fv[(c + 2) % size]);
       if (size == 3) {
         fp = triangleInteriorPoint(edgePoint(v, ip), fp);
         fm = triangleInteriorPoint(edgePoint(v, im), fm);
@@ -509,53 +686,62 @@ class StencilBuilder {
   }
 
   const Mesh& mesh_;
+  const CreasePreparation& creases_;
   const TangentMask mask_;
-  const std::vector<Ring> rings_;
+  std::vector<std::vector<Ring>> sectors_;  // per position: its whole ring or its sectors
   std::optional<RefinedMesh> refined_;
   std::vector<Ring> refined_rings_;
-  std::vector<VertexFrame> frames_;
+  std::vector<std::vector<VertexFrame>> frames_;  // per position, per sector
   std::vector<uint32_t> position_id_;
   std::unordered_map<uint64_t, uint32_t> edge_id_;
   GregoryStencils out_;
 };
 
-}  // namespace
+// The plain rules' preparation of a mesh that has no sharp features beyond its
+// edge-and-corner boundary (refineOnce's output, buildGregoryStencils' input): never refined.
+CreasePreparation plainPreparation(const Mesh& mesh) {
+  return prepareCreases(mesh, "gregory_acc", 0);
+}
 
-GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
-  if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
-    throw UnsupportedInput(reason);
-  }
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    if (mesh.faceSize(f) != 3 && mesh.faceSize(f) != 4) {
-      throw UnsupportedInput(prefix(mesh) + describeFace(mesh, f) +
+GregoryStencils stencilsOver(const CreasePreparation& creases, TangentMask mask) {
+  for (size_t f = 0; f < creases.control.faceCount(); ++f) {
+    if (creases.control.faceSize(f) != 3 && creases.control.faceSize(f) != 4) {
+      throw UnsupportedInput(prefix(creases.control) + describeFace(creases.control, f) +
                              ": buildGregoryStencils needs quads and triangles only");
     }
   }
-  return StencilBuilder(mesh, mask).build();
+  return StencilBuilder(creases, mask).build();
 }
 
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask, NonQuadFaces non_quads) {
-  if (std::string reason = checkGregorySupport(mesh); !reason.empty()) {
-    throw UnsupportedInput(reason);
-  }
+}  // namespace
+
+GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
+  if (std::string reason = checkInput(mesh); !reason.empty()) throw UnsupportedInput(reason);
+  return stencilsOver(plainPreparation(mesh), mask);
+}
+
+GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask, NonQuadFaces non_quads,
+                          size_t crease_face_budget) {
+  if (std::string reason = checkInput(mesh); !reason.empty()) throw UnsupportedInput(reason);
   GregoryBuild out;
-  bool native = true;
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    const uint32_t size = mesh.faceSize(f);
-    native &= size == 4 || (size == 3 && non_quads == NonQuadFaces::kTrianglePatches);
-  }
-  if (native) {
-    out.control = mesh;
-    out.stencils = buildGregoryStencils(mesh, mask);
-    out.source_face.resize(mesh.faceCount());
-    for (uint32_t f = 0; f < mesh.faceCount(); ++f) out.source_face[f] = f;
+  out.creases = prepareGregoryCreases(mesh, non_quads, crease_face_budget);
+  const Mesh& base = out.creases.control;
+  if (nativeFaces(base, non_quads)) {
+    out.control = base;
+    out.stencils = stencilsOver(out.creases, mask);
+    out.patch_count = out.creases.patch_faces;
+    out.source_face.assign(out.creases.source_face.begin(),
+                           out.creases.source_face.begin() + ptrdiff_t(out.patch_count));
     return out;
   }
-  RefinedMesh refined = refineOnce(mesh);
-  const GregoryStencils level1 = buildGregoryStencils(refined.mesh, mask);
+  // Here `base` is the input itself with its plain rules (prepareGregoryCreases refines a
+  // mesh with non-native faces and sharp features), so refineOnce is exact.
+  RefinedMesh refined = refineOnce(base);
+  const GregoryStencils level1 = stencilsOver(plainPreparation(refined.mesh), mask);
   out.refined = true;
   out.control = std::move(refined.mesh);
-  out.source_face = std::move(refined.source_face);
+  out.patch_count = out.control.faceCount();
+  for (uint32_t face : refined.source_face) out.source_face.push_back(out.creases.source_face[face]);
   out.stencils.patch_points = level1.patch_points;
   out.stencils.sharedStencilCount = level1.sharedStencilCount;
   // Compose: each Gregory stencil over refined vertices becomes one over input vertices,

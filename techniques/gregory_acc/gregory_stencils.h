@@ -8,6 +8,17 @@
 // an edge point E(v->w) to its directed edge; each is ONE stencil referenced by every
 // patch that uses it, so both patches of an edge compute their shared points with the
 // same terms in the same order. The face points Fp/Fm are per patch corner.
+//
+// Creases, corners, holes and boundary interpolation (techniques/common/
+// crease_refinement.h, after Kovacs, Mitchell, Drone & Zorin, I3D 2009): the patches are
+// built over the crease preparation's control mesh, where an infinitely sharp edge is a
+// boundary for patch construction. A crease or corner vertex is cut at its sharp edges into
+// sectors, each framed like a mesh-boundary vertex (crease: the crease B-spline's limit
+// point and tangent; corner: interpolated, B-spline end rule along its sharp edges); a
+// dart keeps its whole ring and the smooth rules. Its P, and E along a sharp edge, come out
+// identical from every sector that forms them (checked), so they stay one shared stencil;
+// Fp/Fm use the sector that holds their face. Holes get no patch; their vertices still
+// shape their neighbours' rings.
 #pragma once
 
 #include <array>
@@ -16,6 +27,7 @@
 #include <vector>
 
 #include "core/mesh/mesh.h"
+#include "techniques/common/crease_refinement.h"
 #include "techniques/gregory_acc/gregory_refine.h"
 
 namespace tb::gregory_acc {
@@ -52,8 +64,8 @@ struct GregoryStencils {
   std::vector<uint32_t> offsets{0};
   std::vector<uint32_t> indices;  // control-mesh position index per entry
   std::vector<double> weights;    // weight per entry (affine: each stencil sums to 1)
-  // Stencil id of every control point of every patch (patch p = face p; a triangle
-  // uses the first kPointsPerTriangle).
+  // Stencil id of every control point of every patch (patch p = face p; faces after the
+  // patches, holes, have none; a triangle uses the first kPointsPerTriangle).
   std::vector<std::array<uint32_t, kPointsPerPatch>> patch_points;
   size_t sharedStencilCount = 0;  // P and E stencils (shared between patches)
 
@@ -62,6 +74,7 @@ struct GregoryStencils {
 
 // Empty when the mesh is supported; otherwise one line naming the first offending
 // element and the rule ("gregory_acc: <file>: face 3 (line 12) has 3 vertices; ...").
+// Checked with the default crease face budget.
 std::string checkGregorySupport(const Mesh& mesh);
 
 // Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
@@ -72,8 +85,10 @@ enum class TangentMask {
   kExactLimit,  // the Catmull-Clark limit tangent plane (Halstead et al. 1993)
 };
 
-// Stencils over `mesh`'s own vertices; `mesh` must have quads and triangles only.
-// Throws tb::UnsupportedInput with checkGregorySupport's message.
+// Stencils over `mesh`'s own vertices; `mesh` must have quads and triangles only. Its
+// tags as prepareCreases sees them without refining (a finite sharpness is rounded); patch
+// p is face p of that preparation's control mesh (the mesh's faces, holes moved last).
+// Throws tb::UnsupportedInput for an unsupported mesh.
 GregoryStencils buildGregoryStencils(const Mesh& mesh,
                                      TangentMask mask = TangentMask::kPaper);
 
@@ -85,17 +100,24 @@ enum class NonQuadFaces {
 };
 
 struct GregoryBuild {
-  // The mesh the patches are built over (patch p = its face p): the input itself when
-  // all its faces are quads (or quads and triangles, with kTrianglePatches); otherwise
-  // the input refined once (refineOnce), all quads.
+  // The input prepared for creases: refined by OpenSubdiv while semi-sharp sharpness
+  // remains (within the face budget), and once more when it has faces the patches do not
+  // take natively next to sharp features; holes last. The stencils read its positions.
+  CreasePreparation creases;
+  // The mesh the patches are built over (patch p = its face p for p < patch_count):
+  // creases.control when all its faces are quads (or quads and triangles, with
+  // kTrianglePatches); otherwise creases.control refined once (refineOnce), all quads.
   Mesh control;
-  bool refined = false;
-  std::vector<uint32_t> source_face;  // input face of each patch
-  GregoryStencils stencils;           // over the INPUT mesh's positions
+  bool refined = false;                // by refineOnce
+  size_t patch_count = 0;              // faces of `control` with a patch (the rest: holes)
+  std::vector<uint32_t> source_face;   // input face of each patch
+  GregoryStencils stencils;            // over creases.control's positions
 };
 
-// Throws tb::UnsupportedInput with checkGregorySupport's message.
+// Throws tb::UnsupportedInput with checkGregorySupport's message. `crease_face_budget`:
+// prepareCreases' max_faces.
 GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper,
-                          NonQuadFaces non_quads = NonQuadFaces::kTrianglePatches);
+                          NonQuadFaces non_quads = NonQuadFaces::kTrianglePatches,
+                          size_t crease_face_budget = kDefaultCreaseFaceBudget);
 
 }  // namespace tb::gregory_acc

@@ -23,18 +23,39 @@ namespace tb::gregory_acc {
 namespace {
 
 // The bundled assets gregory_acc supports, pinned: all-quad, quad+triangle (triangle
-// patches), with n-gons (refined once), with
-// smooth boundaries, and triangle meshes (Catmull-Clark of triangles).
+// patches), with n-gons (refined once), with boundaries, with creases and corners
+// (semi-sharp ones refined, tests/techniques/gregory_crease_test.cpp), and triangle meshes
+// (Catmull-Clark of triangles).
 const std::vector<std::string> kSupported = {
-    "full_suite/pole64.obj",                "opensubdiv/catmark_cube.obj",          "opensubdiv/catmark_edgecorner.obj",
-    "opensubdiv/catmark_gregory_test2.obj", "opensubdiv/catmark_gregory_test5.obj",
-    "opensubdiv/catmark_nonquads.obj",      "opensubdiv/catmark_pyramid.obj",
-    "opensubdiv/catmark_quadstrips.obj",    "opensubdiv/catmark_toroidal_tet.obj",
-    "opensubdiv/catmark_torus.obj",         "opensubdiv/catmark_xord_interior.obj",
-    "opensubdiv/loop_cube.obj",             "opensubdiv/loop_icosahedron.obj",
-    "opensubdiv/loop_toroidal_tet.obj",     "opensubdiv/loop_triangle_edgecorner.obj",
-    "opensubdiv/loop_xord_interior.obj",    "tessbench/cylinder_seam.obj",
-    "tessbench/flat_cube.obj",              "tessbench/tri_pawn.obj",
+    "full_suite/pole64.obj",
+    "opensubdiv/catmark_chaikin0.obj",
+    "opensubdiv/catmark_cube.obj",
+    "opensubdiv/catmark_cube_corner3.obj",
+    "opensubdiv/catmark_cube_creases1.obj",
+    "opensubdiv/catmark_edgecorner.obj",
+    "opensubdiv/catmark_gregory_test2.obj",
+    "opensubdiv/catmark_gregory_test5.obj",
+    "opensubdiv/catmark_helmet.obj",
+    "opensubdiv/catmark_nonquads.obj",
+    "opensubdiv/catmark_pawn.obj",
+    "opensubdiv/catmark_pyramid.obj",
+    "opensubdiv/catmark_pyramid_creases1.obj",
+    "opensubdiv/catmark_quadstrips.obj",
+    "opensubdiv/catmark_single_crease.obj",
+    "opensubdiv/catmark_tent_creases1.obj",
+    "opensubdiv/catmark_toroidal_tet.obj",
+    "opensubdiv/catmark_torus.obj",
+    "opensubdiv/catmark_xord_interior.obj",
+    "opensubdiv/loop_cube.obj",
+    "opensubdiv/loop_cube_creases1.obj",
+    "opensubdiv/loop_icos_semisharp.obj",
+    "opensubdiv/loop_icosahedron.obj",
+    "opensubdiv/loop_toroidal_tet.obj",
+    "opensubdiv/loop_triangle_edgecorner.obj",
+    "opensubdiv/loop_xord_interior.obj",
+    "tessbench/cylinder_seam.obj",
+    "tessbench/flat_cube.obj",
+    "tessbench/tri_pawn.obj",
     "tessbench/tri_torus.obj"};
 
 Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
@@ -79,7 +100,7 @@ TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
     // The refined mesh of a mixed input has the same limit; Bfr parameterises its faces.
     const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
     const double diagonal = bboxDiagonal(mesh);
-    for (size_t f = 0; f < control.faceCount(); ++f) {
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       // Bfr says which faces are one regular B-spline patch (interior or boundary).
       if (!limit.hasLimitSurface(f) || !limit.isRegular(f)) continue;
       ++regular_faces;
@@ -110,7 +131,7 @@ TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     size_t edges = 0;
     size_t directed_edges = 0;
-    for (size_t f = 0; f < control.faceCount(); ++f) {
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       const PatchDomain domain = patches->patchDomain(f);
       directed_edges += size_t(cornerCount(domain));
       for (int c = 0; c < cornerCount(domain); ++c) {
@@ -161,14 +182,20 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
 }
 
 TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
+  double worst_dart = 0;  // |P - limit| / diagonal at dart vertices
   for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "exact_tangents");
     const Mesh& control = patches->controlMesh();
-    const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+    // The limit the patches approximate: semi-sharp creases left after the face budget
+    // are rounded (techniques/common/crease_refinement.h).
+    const CreasePreparation creases = testing::defaultCreases(mesh);
+    const ref::LimitSurface limit(testing::limitMeshOf(*patches, creases),
+                                  ref::Scheme::kCatmullClark);
+    const bool kinds_known = creases.control.positions.size() == control.positions.size();
     const std::vector<uint8_t> on_boundary = buildTopology(control).on_boundary;
     const double diagonal = bboxDiagonal(mesh);
-    for (size_t f = 0; f < control.faceCount(); ++f) {
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       const PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
         const DomainCoord d = edgeCoord(domain, c, 0.0);
@@ -178,20 +205,32 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
                 ? Vec2d{d[0], d[1]}
                 : ref::subFaceToFaceUv(ref::Scheme::kCatmullClark, 3, c, {0.0, 0.0});
         const ref::LimitPoint exact = limit.evaluate(f, uv.x, uv.y);
-        EXPECT_LE(length(patches->evaluate(f, d).position - exact.position), 1e-12 * diagonal)
-            << name << " face " << f;
+        const uint32_t v = control.facePositions(f)[c];
+        const double error = length(patches->evaluate(f, d).position - exact.position);
+        // A dart (one sharp edge) keeps the smooth rules (Kovacs et al. 2009), whose limit
+        // mask is not the dart's: its corner is approximate (measured below).
+        if (kinds_known && creases.vertex_kind[v] == SharpVertexKind::kDart) {
+          worst_dart = std::max(worst_dart, error / diagonal);
+          continue;
+        }
+        EXPECT_LE(error, 1e-12 * diagonal) << name << " face " << f << " vertex " << v;
         // Interior corners: the tangent plane is the limit's (exact tangent masks; the
         // boundary cross tangent is the paper's, not exact, so boundary corners are
         // not checked). 1e-5: Bfr
         // itself approximates irregular corners (Gregory patches after 10 levels), and the
         // Far-compatible mask is off by 1e-2 here, so the bound still separates the two.
-        if (on_boundary[control.facePositions(f)[c]]) continue;
+        // Sharp vertices (crease, corner, dart) have no exact tangent mask either.
+        if (on_boundary[v]) continue;
+        if (kinds_known && creases.vertex_kind[v] != SharpVertexKind::kSmooth) continue;
         EXPECT_LE(length(patches->evaluate(f, d).normal - exact.normal), 1e-5)
             << name << " face " << f << " corner " << c << " vertex "
             << control.facePositions(f)[c];
       }
     }
   }
+  // Measured: 4.6e-3 of the diagonal (catmark_chaikin0's four darts).
+  std::printf("[gregory_acc corners] worst dart corner |P - limit| / diagonal %.2e\n", worst_dart);
+  EXPECT_LT(worst_dart, 1e-2);
 }
 
 std::string rejection(const std::string& obj) {
@@ -228,30 +267,6 @@ TEST(GregoryAccRejects, SmoothTriangles) {
   EXPECT_EQ(rejection(std::string(kCube) + "t smoothtriangles 0/0/1 catmark\n"),
             "gregory_acc: test.obj: `t smoothtriangles` is not supported (plain Catmull-Clark "
             "only)");
-}
-
-TEST(GregoryAccRejects, EdgeOnlyBoundaries) {
-  EXPECT_EQ(rejection("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"
-                      "t interpolateboundary 1/0/0 2\n"),
-            "gregory_acc: test.obj: boundary edge (0, 1); only edge-and-corner boundary "
-            "interpolation is supported");
-}
-
-TEST(GregoryAccRejects, Creases) {
-  EXPECT_EQ(rejection(std::string(kCube) + "t crease 2/1/0 0 1 2.5\n"),
-            "gregory_acc: test.obj: crease edge (0, 1) has sharpness 2.500000; creases are not "
-            "supported");
-}
-
-TEST(GregoryAccRejects, CornerTags) {
-  EXPECT_EQ(rejection(std::string(kCube) + "t corner 1/1/0 3 4\n"),
-            "gregory_acc: test.obj: corner vertex 3 is tagged sharp; corner tags are not "
-            "supported");
-}
-
-TEST(GregoryAccRejects, Holes) {
-  EXPECT_EQ(rejection(std::string(kCube) + "t hole 1/0/0 2\n"),
-            "gregory_acc: test.obj: face 2 is tagged as a hole; holes are not supported");
 }
 
 TEST(GregoryAccRejects, NonManifoldEdges) {
@@ -322,13 +337,22 @@ TEST(GregoryAccRejects, NoFaces) {
   EXPECT_THROW(buildSurface(technique, mesh, technique.variants().front()), UnsupportedInput);
 }
 
-TEST(GregoryAcc, SupportsExactlyTheClosedUntaggedQuadAssets) {
+TEST(GregoryAcc, SupportsExactlyTheManifoldAssetsWithoutSmoothTrianglesOrValenceTwo) {
   GregoryAccTechnique technique;
   EXPECT_EQ(testing::supportedBundledAssets(), kSupported);
-  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_pawn.obj")), "");
-  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_smoothtris0.obj")), "");
-  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_gregory_test8.obj")), "");
-  EXPECT_NE(technique.checkSupport(load("tessbench/tjunction.obj")), "");
+  // The three bundled refusals, each with its rule.
+  EXPECT_EQ(technique.checkSupport(load("opensubdiv/catmark_smoothtris0.obj")),
+            "gregory_acc: " + tb::testing::assetPath("opensubdiv/catmark_smoothtris0.obj") +
+                ": `t smoothtriangles` is not supported (plain Catmull-Clark only)");
+  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_gregory_test8.obj"))
+                .find("has valence 2; gregory_acc needs 3..256"),
+            std::string::npos);
+  EXPECT_NE(technique.checkSupport(load("tessbench/tjunction.obj")).find("is non-manifold"),
+            std::string::npos);
+  for (const char* name : {"opensubdiv/catmark_smoothtris0.obj", "opensubdiv/catmark_gregory_test8.obj",
+                           "tessbench/tjunction.obj"}) {
+    std::printf("[gregory_acc refuses] %s\n", technique.checkSupport(load(name)).c_str());
+  }
 }
 
 TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
@@ -365,9 +389,8 @@ TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
   for (const std::string& name : kSupported) {
     const Mesh mesh = load(name);
     const auto patches = build(mesh, "asymmetric");
-    const Mesh& control = patches->controlMesh();
     const double h = 1e-6;
-    for (size_t f = 0; f < control.faceCount(); ++f) {
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       if (patches->patchDomain(f) == PatchDomain::kTriangle) {
         // Barycentric: tangents toward corner 1 and corner 2, normal (S_1 - S_0) x (S_2 - S_0).
         for (const DomainCoord& b : {DomainCoord{0.2, 0.3, 0.5}, DomainCoord{0.7, 0.1, 0.2},
@@ -487,7 +510,7 @@ TEST(GregoryAcc, TrianglePatchesStayCloseToTheCatmullClarkLimit) {
     SCOPED_TRACE(asset);
     const Mesh mesh = load(asset);
     const auto patches = build(mesh, "edge_symmetric");
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
     const SurfaceErrorFigures f = measureSurfaceError(*patches, limit);
     size_t triangles = 0;
     for (size_t p = 0; p < patches->patchCount(); ++p) {
@@ -516,7 +539,7 @@ TEST(GregoryAcc, NormalsAgreeAcrossSharedEdgesOfQuadsAndTriangles) {
     const Mesh& control = patches->controlMesh();
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     double worst_deg = 0;
-    for (size_t f = 0; f < control.faceCount(); ++f) {
+    for (size_t f = 0; f < patches->patchCount(); ++f) {
       const PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];

@@ -1,5 +1,6 @@
 // Helpers shared by the gregory_acc test files: the bundled assets the technique accepts,
-// and the twin of every directed patch edge (for shared-edge checks).
+// the twin of every directed patch edge (for shared-edge checks), and the mesh whose limit
+// the patches approximate (creases as the patches honour them).
 #pragma once
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
+#include "techniques/common/crease_refinement.h"
 #include "techniques/gregory_acc/gregory_acc.h"
+#include "techniques/technique.h"
 #include "tests/test_support.h"
 
 namespace tb::gregory_acc::testing {
@@ -78,6 +81,31 @@ std::array<T, 3> edgeCoord(PatchDomain domain, int corner, T t) {
     case 2: return {T(1) - t, T(1), T(0)};
     default: return {T(0), T(1) - t, T(0)};
   }
+}
+
+// The crease preparation gregory_acc builds on for `input` with the default face budget
+// (the same call gregory_acc makes for a mesh it does not refine for non-quads).
+inline CreasePreparation defaultCreases(const Mesh& input) {
+  return prepareCreases(input, "gregory_acc", kDefaultCreaseFaceBudget);
+}
+
+// The mesh whose limit surface the patches approximate: the patches' control mesh with
+// its true remaining tags when the crease preparation rounded nothing (then its limit is
+// the input's), else with the tags the patches honour: every sharp edge and every corner
+// infinitely sharp, leftover finite sharpness gone.
+inline Mesh limitMeshOf(const SurfacePatches& patches, const CreasePreparation& creases) {
+  const Mesh& control = patches.controlMesh();
+  if (creases.rounded_sharpness == 0) return control;
+  Mesh mesh = control;
+  mesh.tags.creases.clear();
+  mesh.tags.corners.clear();
+  for (uint64_t key : creases.sharp_edges) {
+    mesh.tags.creases.push_back({uint32_t(key >> 32), uint32_t(key & 0xffffffffu), 10.0});
+  }
+  for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
+    if (creases.vertex_kind[v] == SharpVertexKind::kCorner) mesh.tags.corners.push_back({uint32_t(v), 10.0});
+  }
+  return mesh;
 }
 
 }  // namespace tb::gregory_acc::testing
