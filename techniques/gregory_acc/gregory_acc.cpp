@@ -252,8 +252,10 @@ std::vector<VariantInfo> GregoryAccTechnique::variants() const {
        "tensor-product Bernstein inside; domain-boundary points from the shared edge curve "
        "evaluated symmetrically (watertight in float)",
        {{"symmetric_edges", 1.0}}},
+      // The default's patches in another float order (VariantInfo::evaluation_order_only).
       {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
-       {{"symmetric_edges", 0.0}}},
+       {{"symmetric_edges", 0.0}},
+       true},
       {"exact_tangents",
        "edge_symmetric, edge points from the exact Catmull-Clark limit tangent masks "
        "(Halstead et al. 1993) instead of the paper's averaged face points",
