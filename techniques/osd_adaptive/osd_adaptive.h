@@ -5,6 +5,8 @@
 // to the isolation level, and end caps (Gregory basis or B-spline basis) there.
 #pragma once
 
+#include <optional>
+
 #include "techniques/technique.h"
 
 namespace tb::osd_adaptive {
@@ -42,5 +44,11 @@ PatchTableCounts patchTableCounts(const SurfacePatches& patches);
 // True when the Far patch that covers (u, v) of base face `face` is a regular B-spline patch
 // (not an end cap). False for patches not built by osd_adaptive.
 bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v);
+
+// Base face `face` at (u, v) with osd_basis.h's weights in double (the GPU's sub-patch
+// search and basis, evaluateFloat's in double) instead of Far's PatchMap and EvaluateBasis:
+// for tests of the basis against evaluate(). Nullopt for patches not built by osd_adaptive.
+std::optional<SurfacePoint> evaluateOwnBasis(const SurfacePatches& patches, size_t face, double u,
+                                             double v);
 
 }  // namespace tb::osd_adaptive
