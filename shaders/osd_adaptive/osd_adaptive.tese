@@ -178,11 +178,21 @@ void main() {
   float w[20], ws[20], wt[20];
   const int count = subPatchWeights(sub.x, s, t, w, ws, wt);
   precise vec3 position = vec3(0.0), tangent_s = vec3(0.0), tangent_t = vec3(0.0);
-  for (int k = 0; k < count; ++k) {
+  // Two loops of constant length (16, then 4 more for a Gregory end cap), so the compiler
+  // unrolls them and keeps the weights in registers.
+  for (int k = 0; k < 16; ++k) {
     const vec3 q = points[point_indices[sub.y + uint(k)]].xyz;
     position = position + q * w[k];
     tangent_s = tangent_s + q * ws[k];
     tangent_t = tangent_t + q * wt[k];
+  }
+  if (count == 20) {
+    for (int k = 16; k < 20; ++k) {
+      const vec3 q = points[point_indices[sub.y + uint(k)]].xyz;
+      position = position + q * w[k];
+      tangent_s = tangent_s + q * ws[k];
+      tangent_t = tangent_t + q * wt[k];
+    }
   }
   // cross(tangent_s, tangent_t) in core/mesh/vec.h's order, then v * (1 / |v|) or zero.
   precise vec3 n = vec3(tangent_s.y * tangent_t.z - tangent_s.z * tangent_t.y,

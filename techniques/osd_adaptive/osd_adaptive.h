@@ -3,6 +3,10 @@
 // Surfaces", ACM TOG 31(1) 2012; OpenSubdiv). The baseline row: regular B-spline patches
 // around regular faces, adaptive refinement towards extraordinary vertices and creases down
 // to the isolation level, and end caps (Gregory basis or B-spline basis) there.
+// evaluate() is Far's own (PatchMap, EvaluateBasis<double>): the oracle. On the GPU
+// (gpuPrograms(), shaders/osd_adaptive/) one patch per base face: the TES finds the face's
+// Far patch covering gl_TessCoord and evaluates it with osd_basis.h's basis; evaluateFloat
+// is its CPU twin.
 #pragma once
 
 #include <optional>
@@ -16,8 +20,8 @@ enum class EndCap { kGregoryBasis = 0, kBSplineBasis = 1 };
 class OsdAdaptiveTechnique final : public Technique {
  public:
   const TechniqueInfo& info() const override;
-  // "iso2_gregory" (default) and "iso4_gregory"; parameters "isolation" and "endcap" give
-  // any other level and B-spline basis end caps.
+  // "iso2_gregory" only (the default suite's budget); parameters "isolation" and "endcap"
+  // give any other level and B-spline basis end caps.
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
