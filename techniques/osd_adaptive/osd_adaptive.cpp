@@ -112,8 +112,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
       const Far::PatchDescriptor descriptor = table_->GetPatchArrayDescriptor(array);
       if (descriptor.GetType() != Far::PatchDescriptor::REGULAR &&
           descriptor.GetType() != Far::PatchDescriptor::GREGORY_BASIS) {
-        fail("Far built patches of type " + std::to_string(int(descriptor.GetType())) +
-             " for " + mesh_.source + "; only regular and Gregory basis patches are evaluated");
+        fail("Far built patches of type " + std::to_string(int(descriptor.GetType())) + " for " +
+             mesh_.source + "; only regular and Gregory basis patches are evaluated");
       }
       const int size = descriptor.GetNumControlVertices();
       for (int patch = 0; patch < table_->GetNumPatches(array); ++patch) {
@@ -224,7 +224,9 @@ class OsdAdaptivePatches final : public SurfacePatches {
       for (float x : {p.x, p.y, p.z, 0.0f}) points.push_back(std::bit_cast<uint32_t>(x));
     }
     for (const auto& [first, count] : face_ranges_) ranges.insert(ranges.end(), {first, count});
-    for (const SubPatchWords& sub : sub_patches_) subs.insert(subs.end(), {sub.packed, sub.first_index});
+    for (const SubPatchWords& sub : sub_patches_) {
+      subs.insert(subs.end(), {sub.packed, sub.first_index});
+    }
     program.storage_buffers = {std::move(points), std::move(ranges), std::move(subs),
                                point_indices_};
     return {program};
@@ -249,8 +251,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
     // PatchParam) and 4 bytes per control-point index. The refinement and the local point
     // stencils run on the CPU when the instance is built, so no stencil table is uploaded.
     f.control_mesh_bytes = 16ull * points_f_.size();
-    f.patch_data_bytes = 8ull * face_ranges_.size() + 8ull * sub_patches_.size() +
-                         4ull * point_indices_.size();
+    f.patch_data_bytes =
+        8ull * face_ranges_.size() + 8ull * sub_patches_.size() + 4ull * point_indices_.size();
     f.stencil_bytes = 0;
     return f;
   }
@@ -300,8 +302,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
                                              param.GetBoundary(), gregory);
         const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, index);
         if (cvs.size() != subPatchPointCount(packed)) {
-          fail("a Far patch of " + describeFace(mesh_, f) + " has " +
-               std::to_string(cvs.size()) + " points");
+          fail("a Far patch of " + describeFace(mesh_, f) + " has " + std::to_string(cvs.size()) +
+               " points");
         }
         sub_patches_.push_back({packed, uint32_t(point_indices_.size())});
         for (int k = 0; k < cvs.size(); ++k) {

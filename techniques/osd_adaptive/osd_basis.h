@@ -120,8 +120,8 @@ void bezierCurve(T x, T b[4], T d[4]) {
 // Weights of one sub-patch's points for the position (w), d/ds (ws) and d/dt (wt) at local
 // (s, t); returns the point count (16 or 20).
 template <class T>
-int subPatchWeights(uint32_t packed, T s, T t, T w[kMaxSubPatchPoints],
-                    T ws[kMaxSubPatchPoints], T wt[kMaxSubPatchPoints]) {
+int subPatchWeights(uint32_t packed, T s, T t, T w[kMaxSubPatchPoints], T ws[kMaxSubPatchPoints],
+                    T wt[kMaxSubPatchPoints]) {
   T bs[4], ds[4], bt[4], dt[4];
   if (!subPatchIsGregory(packed)) {
     bsplineCurve(s, bs, ds);

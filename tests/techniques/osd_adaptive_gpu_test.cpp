@@ -46,9 +46,10 @@ TEST(OsdAdaptiveGpu, CaptureEqualsTheCpuFloatTwin) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const OsdAdaptiveTechnique technique;
   for (const VariantCase& vc : kVariants) {
-    const VariantInfo variant{vc.name, vc.name,
-                              {{"isolation", double(vc.isolation)},
-                               {"endcap", double(int(vc.end_cap))}}};
+    const VariantInfo variant{
+        vc.name,
+        vc.name,
+        {{"isolation", double(vc.isolation)}, {"endcap", double(int(vc.end_cap))}}};
     size_t variant_end_cap_vertices = 0;
     for (const char* name : kAssets) {
       const Mesh mesh = loadObjFile(testing::assetPath(name));
@@ -75,11 +76,12 @@ TEST(OsdAdaptiveGpu, CaptureEqualsTheCpuFloatTwin) {
           worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
           end_cap_vertices += !isRegularAt(*patches, v.patch, v.coord[0], v.coord[1]);
         }
-        std::printf("[osd_adaptive gpu] %-12s %-38s level %4.1f: %zu vertices (%zu on end "
-                    "caps; %zu Far patches), max %llu ulp from evaluateFloat, max normal diff "
-                    "%.1e\n",
-                    vc.name, name, lc.level, capture.vertices.size(), end_cap_vertices,
-                    counts.patches, (unsigned long long)worst, worst_normal);
+        std::printf(
+            "[osd_adaptive gpu] %-12s %-38s level %4.1f: %zu vertices (%zu on end "
+            "caps; %zu Far patches), max %llu ulp from evaluateFloat, max normal diff "
+            "%.1e\n",
+            vc.name, name, lc.level, capture.vertices.size(), end_cap_vertices, counts.patches,
+            (unsigned long long)worst, worst_normal);
         // Every vertex of every base face: (level + 1)^2 per face at integer levels.
         if (lc.spacing == tess::Spacing::kInteger) {
           const size_t per_face = size_t(lc.level + 1) * size_t(lc.level + 1);

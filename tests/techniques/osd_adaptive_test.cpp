@@ -162,10 +162,10 @@ double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface
 
 // Assets for the basis tests: extraordinary vertices (cube, pawn), boundaries and corners
 // (edgecorner), creases (cube_creases1, single_crease).
-const char* const kBasisAssets[] = {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_edgecorner.obj",
-                                    "opensubdiv/catmark_cube_creases1.obj",
-                                    "opensubdiv/catmark_single_crease.obj",
-                                    "opensubdiv/catmark_pawn.obj"};
+const char* const kBasisAssets[] = {
+    "opensubdiv/catmark_cube.obj", "opensubdiv/catmark_edgecorner.obj",
+    "opensubdiv/catmark_cube_creases1.obj", "opensubdiv/catmark_single_crease.obj",
+    "opensubdiv/catmark_pawn.obj"};
 
 // Isolation levels 2 and 4 with Gregory basis end caps, level 2 with B-spline basis ones.
 std::vector<VariantInfo> basisVariants() {
@@ -200,10 +200,11 @@ TEST(OsdAdaptive, OwnBasisEqualsFarsBasisInDouble) {
           }
         }
       }
-      std::printf("%s iso%d %s: own basis vs Far's, max %.3g of the diagonal; normals off "
-                  "Gregory end caps %.3g (%zu samples)\n",
-                  name, variantIsolation(info), gregory ? "gregory" : "bspline", worst,
-                  worst_normal, normals);
+      std::printf(
+          "%s iso%d %s: own basis vs Far's, max %.3g of the diagonal; normals off "
+          "Gregory end caps %.3g (%zu samples)\n",
+          name, variantIsolation(info), gregory ? "gregory" : "bspline", worst, worst_normal,
+          normals);
       EXPECT_LT(worst, 1e-13) << name;
       EXPECT_LT(worst_normal, 1e-9) << name;
       EXPECT_GT(normals, 0u) << name;
@@ -225,7 +226,9 @@ TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
     for (double u : {0.02, 0.07, 0.15, 0.85, 0.93, 0.98}) {
       for (double v : {0.03, 0.11, 0.2, 0.8, 0.89, 0.97}) {
         if (isRegularAt(*patches, f, u, v)) continue;
-        const auto at = [&](double x, double y) { return patches->evaluate(f, {x, y, 0}).position; };
+        const auto at = [&](double x, double y) {
+          return patches->evaluate(f, {x, y, 0}).position;
+        };
         const Vec3d n = normalize(cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h)));
         worst_own = std::max(worst_own, length(evaluateOwnBasis(*patches, f, u, v)->normal - n));
         worst_far = std::max(worst_far, length(patches->evaluate(f, {u, v, 0}).normal - n));
@@ -233,9 +236,10 @@ TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
       }
     }
   }
-  std::printf("catmark_cube iso2 Gregory end caps, %zu samples: normal - central-difference "
-              "normal, own basis %.3g, Far's EvaluateBasis %.3g\n",
-              compared, worst_own, worst_far);
+  std::printf(
+      "catmark_cube iso2 Gregory end caps, %zu samples: normal - central-difference "
+      "normal, own basis %.3g, Far's EvaluateBasis %.3g\n",
+      compared, worst_own, worst_far);
   EXPECT_GT(compared, 6u * 16);  // four corners of each face lie in end caps
   EXPECT_LT(worst_own, 1e-8);
 }
@@ -257,18 +261,20 @@ TEST(OsdAdaptive, FloatTwinAgreesWithDoubleEvaluate) {
             const tess::DomainPoint at{float(u), float(v), 0};
             const SurfacePointF single = patches->evaluateFloat(f, at);
             const SurfacePoint exact = patches->evaluate(f, {u, v, 0});
-            worst = std::max(worst, length(vecCast<double>(single.position) - exact.position) /
-                                        diagonal);
-            worst_normal = std::max(worst_normal, length(vecCast<double>(single.normal) -
-                                                         evaluateOwnBasis(*patches, f, u, v)->normal));
+            worst = std::max(worst,
+                             length(vecCast<double>(single.position) - exact.position) / diagonal);
+            worst_normal =
+                std::max(worst_normal, length(vecCast<double>(single.normal) -
+                                              evaluateOwnBasis(*patches, f, u, v)->normal));
           }
         }
       }
-      std::printf("%s iso%d %s: evaluateFloat vs evaluate, max %.3g of the diagonal, normals "
-                  "%.3g\n",
-                  name, variantIsolation(info),
-                  variantEndCap(info) == EndCap::kGregoryBasis ? "gregory" : "bspline", worst,
-                  worst_normal);
+      std::printf(
+          "%s iso%d %s: evaluateFloat vs evaluate, max %.3g of the diagonal, normals "
+          "%.3g\n",
+          name, variantIsolation(info),
+          variantEndCap(info) == EndCap::kGregoryBasis ? "gregory" : "bspline", worst,
+          worst_normal);
       EXPECT_LT(worst, 1e-5) << name;
       // The pawn's small faces near its axis lose the tangents' low bits to cancellation in
       // float (1.3e-3 at isolation level 4); the other assets stay near 1e-5.
