@@ -8,12 +8,15 @@
 #include <opensubdiv/far/topologyRefiner.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 
+#include "core/gpu/patch_program_desc.h"
 #include "core/mesh/input_error.h"
 #include "core/mesh/topology.h"
 #include "reference/topology_refiner_builder.h"
+#include "techniques/osd_adaptive/osd_basis.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
 
@@ -24,7 +27,7 @@ namespace Far = OpenSubdiv::Far;
 namespace {
 
 // Largest patch Far builds: a Gregory basis end cap (20 points).
-constexpr int kMaxPatchPoints = 20;
+constexpr int kMaxPatchPoints = kMaxSubPatchPoints;
 
 // A refined or local point for Far's interpolation templates, in double.
 struct Point3 {
@@ -93,12 +96,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
       primvar.Interpolate(level, src, dst);
       src = dst;
     }
-    local_stencil_bytes_ = 0;
     if (const auto* local = table_->GetLocalPointStencilTable<double>()) {
       local->UpdateValues(points.data(), points.data() + refined_count_);
-      // The GPU keeps stencils in float: sizes, offsets, indices (4 bytes) and weights.
-      local_stencil_bytes_ =
-          8ull * size_t(local->GetNumStencils()) + 8ull * local->GetControlIndices().size();
     }
     points_d_.resize(points.size());
     points_f_.resize(points.size());
@@ -110,7 +109,13 @@ class OsdAdaptivePatches final : public SurfacePatches {
     // Every Far patch, grouped by the base face it covers.
     face_patches_.resize(mesh_.faceCount());
     for (int array = 0; array < table_->GetNumPatchArrays(); ++array) {
-      const int size = table_->GetPatchArrayDescriptor(array).GetNumControlVertices();
+      const Far::PatchDescriptor descriptor = table_->GetPatchArrayDescriptor(array);
+      if (descriptor.GetType() != Far::PatchDescriptor::REGULAR &&
+          descriptor.GetType() != Far::PatchDescriptor::GREGORY_BASIS) {
+        fail("Far built patches of type " + std::to_string(int(descriptor.GetType())) + " for " +
+             mesh_.source + "; only regular and Gregory basis patches are evaluated");
+      }
+      const int size = descriptor.GetNumControlVertices();
       for (int patch = 0; patch < table_->GetNumPatches(array); ++patch) {
         const Far::PatchParam param = table_->GetPatchParam(array, patch);
         const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, patch);
@@ -126,13 +131,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
         face_patches_[face].push_back({array, patch});
       }
     }
-    for (size_t f = 0; f < mesh_.faceCount(); ++f) {
-      if (face_patches_[f].empty()) {
-        fail(describeFace(mesh_, f) +
-             " has no limit patch (a boundary face without boundary "
-             "interpolation?)");
-      }
-    }
+    buildSubPatches();
     counts_.base_faces = mesh_.faceCount();
     counts_.refined_vertices = refined_count_;
     counts_.local_points = size_t(table_->GetNumLocalPoints());
@@ -175,22 +174,62 @@ class OsdAdaptivePatches final : public SurfacePatches {
     return {p, normalizeOrZero(cross(du, dv))};
   }
 
-  // Far's basis in float (EvaluateBasis<float>) over float control points, summed in
-  // control-point order.
+  // The CPU twin of osd_adaptive.tese: the same sub-patch search, osd_basis.h's weights in
+  // float, and the sums in control-point order from zero.
   SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
-    const float u = coord[0], v = coord[1];
-    const Far::PatchTable::PatchHandle& handle = find(patch, u, v);
-    float w[kMaxPatchPoints], wu[kMaxPatchPoints], wv[kMaxPatchPoints];
-    table_->EvaluateBasis(handle, u, v, w, wu, wv);
-    const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
-    Vec3f p{}, du{}, dv{};
-    for (int k = 0; k < cvs.size(); ++k) {
-      const Vec3f& q = points_f_[size_t(cvs[k])];
+    const float u = std::clamp(coord[0], 0.0f, 1.0f), v = std::clamp(coord[1], 0.0f, 1.0f);
+    const SubPatchWords& sub = findSubPatch(patch, u, v);
+    const Vec2T<float> local = subPatchLocal(sub.packed, u, v);
+    float w[kMaxPatchPoints], ws[kMaxPatchPoints], wt[kMaxPatchPoints];
+    const int count = subPatchWeights(sub.packed, local.x, local.y, w, ws, wt);
+    Vec3f p{}, ds{}, dt{};
+    for (int k = 0; k < count; ++k) {
+      const Vec3f& q = points_f_[point_indices_[sub.first_index + uint32_t(k)]];
       p = p + q * w[k];
-      du = du + q * wu[k];
-      dv = dv + q * wv[k];
+      ds = ds + q * ws[k];
+      dt = dt + q * wt[k];
     }
-    return {p, normalizeOrZero(cross(du, dv))};
+    return {p, normalizeOrZero(cross(ds, dt))};
+  }
+
+  // osd_basis.h's weights in double over the double points (Far's PatchMap and basis left
+  // out): evaluate()'s twin, for the tests of the basis.
+  SurfacePoint evaluateOwnBasis(size_t face, double u, double v) const {
+    u = std::clamp(u, 0.0, 1.0);
+    v = std::clamp(v, 0.0, 1.0);
+    const SubPatchWords& sub = findSubPatch(face, u, v);
+    const Vec2d local = subPatchLocal(sub.packed, u, v);
+    double w[kMaxPatchPoints], ws[kMaxPatchPoints], wt[kMaxPatchPoints];
+    const int count = subPatchWeights(sub.packed, local.x, local.y, w, ws, wt);
+    Vec3d p{}, ds{}, dt{};
+    for (int k = 0; k < count; ++k) {
+      const Vec3d& q = points_d_[point_indices_[sub.first_index + uint32_t(k)]];
+      p = p + q * w[k];
+      ds = ds + q * ws[k];
+      dt = dt + q * wt[k];
+    }
+    return {p, normalizeOrZero(cross(ds, dt))};
+  }
+
+  std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
+    gpu::GpuPatchProgram program;
+    program.control_shader = "osd_adaptive/osd_adaptive.tesc";
+    program.evaluation_shader = "osd_adaptive/osd_adaptive.tese";
+    program.domain = tess::Domain::kQuad;
+    program.patch_count = uint32_t(patchCount());
+    program.input_vertices_per_patch = 1;
+    std::vector<uint32_t> points, ranges, subs;
+    points.reserve(4 * points_f_.size());
+    for (const Vec3f& p : points_f_) {
+      for (float x : {p.x, p.y, p.z, 0.0f}) points.push_back(std::bit_cast<uint32_t>(x));
+    }
+    for (const auto& [first, count] : face_ranges_) ranges.insert(ranges.end(), {first, count});
+    for (const SubPatchWords& sub : sub_patches_) {
+      subs.insert(subs.end(), {sub.packed, sub.first_index});
+    }
+    program.storage_buffers = {std::move(points), std::move(ranges), std::move(subs),
+                               point_indices_};
+    return {program};
   }
 
   // Every control point of the face's Far patches: B-spline and Gregory basis patches lie in
@@ -206,13 +245,15 @@ class OsdAdaptivePatches final : public SurfacePatches {
 
   DataFootprint footprint() const override {
     DataFootprint f;
-    // What an OpenSubdiv GPU draw keeps: the vertex buffer of every refined level plus the
-    // local points (vec4 each, so the control mesh's own vertices are counted there), the
-    // patch table (4-byte control-vertex indices, 8-byte PatchParams) and the local point
-    // stencils (float weights, 4-byte indices, sizes and offsets).
-    f.control_mesh_bytes = 16ull * points_d_.size() + 4ull * 4 * mesh_.faceCount();
-    f.patch_data_bytes = 4ull * patch_indices_ + 8ull * counts_.patches;
-    f.stencil_bytes = local_stencil_bytes_;
+    // The GPU layout of gpuPrograms(): every refined level's points and the end caps' local
+    // points as vec4 (16 bytes each; the control mesh's own vertices are the first of
+    // them); per base face its sub-patch range (8 bytes), per Far patch 8 bytes (as Far's
+    // PatchParam) and 4 bytes per control-point index. The refinement and the local point
+    // stencils run on the CPU when the instance is built, so no stencil table is uploaded.
+    f.control_mesh_bytes = 16ull * points_f_.size();
+    f.patch_data_bytes =
+        8ull * face_ranges_.size() + 8ull * sub_patches_.size() + 4ull * point_indices_.size();
+    f.stencil_bytes = 0;
     return f;
   }
 
@@ -239,6 +280,59 @@ class OsdAdaptivePatches final : public SurfacePatches {
     return l > 0 ? n * (1 / l) : Vec3f{};
   }
 
+  // Far's patches in the GPU's form: per face a range of sub_patches_, in patch table order.
+  void buildSubPatches() {
+    face_ranges_.assign(mesh_.faceCount(), {0u, 0u});
+    for (size_t f = 0; f < mesh_.faceCount(); ++f) {
+      if (face_patches_[f].empty()) {
+        fail(describeFace(mesh_, f) +
+             " has no limit patch (a boundary face without boundary "
+             "interpolation?)");
+      }
+      face_ranges_[f] = {uint32_t(sub_patches_.size()), uint32_t(face_patches_[f].size())};
+      double area = 0;  // of the face's domain its sub-patches cover; 1 when they tile it
+      for (const auto& [array, index] : face_patches_[f]) {
+        const Far::PatchParam param = table_->GetPatchParam(array, index);
+        const bool gregory =
+            table_->GetPatchArrayDescriptor(array).GetType() == Far::PatchDescriptor::GREGORY_BASIS;
+        if (param.NonQuadRoot() || param.GetDepth() > 10) {
+          fail("a Far patch of " + describeFace(mesh_, f) + " has an unexpected parameterisation");
+        }
+        const uint32_t packed = packSubPatch(param.GetU(), param.GetV(), param.GetDepth(),
+                                             param.GetBoundary(), gregory);
+        const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, index);
+        if (cvs.size() != subPatchPointCount(packed)) {
+          fail("a Far patch of " + describeFace(mesh_, f) + " has " + std::to_string(cvs.size()) +
+               " points");
+        }
+        sub_patches_.push_back({packed, uint32_t(point_indices_.size())});
+        for (int k = 0; k < cvs.size(); ++k) {
+          if (cvs[k] < 0 || size_t(cvs[k]) >= points_f_.size()) {
+            fail("a Far patch of " + describeFace(mesh_, f) + " names point " +
+                 std::to_string(cvs[k]));
+          }
+          point_indices_.push_back(uint32_t(cvs[k]));
+        }
+        area += std::ldexp(1.0, -2 * int(param.GetDepth()));
+      }
+      if (area != 1.0) {
+        fail("the Far patches of " + describeFace(mesh_, f) + " do not tile its domain");
+      }
+    }
+  }
+
+  // The sub-patch of `face` covering (u, v) in [0, 1]: the first in the face's range, as
+  // osd_adaptive.tese searches (the sub-patches tile the face, so exactly one covers it;
+  // the last is the fallback the shader has too).
+  template <class T>
+  const SubPatchWords& findSubPatch(size_t face, T u, T v) const {
+    const auto [first, count] = face_ranges_[face];
+    for (uint32_t k = first; k < first + count; ++k) {
+      if (subPatchCovers(sub_patches_[k].packed, u, v)) return sub_patches_[k];
+    }
+    return sub_patches_[first + count - 1];
+  }
+
   const Far::PatchTable::PatchHandle& find(size_t face, double u, double v) const {
     const double cu = std::clamp(u, 0.0, 1.0), cv = std::clamp(v, 0.0, 1.0);
     const Far::PatchTable::PatchHandle* handle = map_->FindPatch(int(face), cu, cv);
@@ -256,10 +350,14 @@ class OsdAdaptivePatches final : public SurfacePatches {
   std::unique_ptr<Far::PatchMap> map_;
   size_t refined_count_ = 0;
   size_t patch_indices_ = 0;
-  uint64_t local_stencil_bytes_ = 0;
   std::vector<Vec3d> points_d_;
   std::vector<Vec3f> points_f_;
   std::vector<std::vector<std::pair<int, int>>> face_patches_;
+  // The GPU's form (gpuPrograms()): per face (first sub-patch, count), the sub-patches, and
+  // their control-point indices into points_f_.
+  std::vector<std::pair<uint32_t, uint32_t>> face_ranges_;
+  std::vector<SubPatchWords> sub_patches_;
+  std::vector<uint32_t> point_indices_;
   PatchTableCounts counts_;
   std::vector<std::string> warnings_;
 };
@@ -285,9 +383,12 @@ std::vector<VariantInfo> OsdAdaptiveTechnique::variants() const {
                            (gregory ? "Gregory basis" : "B-spline basis") + " end caps",
                        {{"isolation", double(isolation)}, {"endcap", double(int(cap))}}};
   };
-  // Two variants only: every variant runs every per-variant measure of the default suite
-  // (its budget). Other levels and B-spline end caps: VariantInfo parameters (tests).
-  return {make(2, EndCap::kGregoryBasis), make(4, EndCap::kGregoryBasis)};
+  // One variant only: every variant runs every per-variant measure of the default suite, and
+  // with the GPU program (culling, cracks and adaptivity on the device) a second one
+  // (iso4_gregory) took osd_adaptive's share of the default suite past its 15 s budget. The
+  // suite has no variants for --suite full alone, so other levels and B-spline end caps are
+  // VariantInfo parameters ("isolation", "endcap"; the tests use them).
+  return {make(2, EndCap::kGregoryBasis)};
 }
 
 int variantIsolation(const VariantInfo& variant) {
@@ -326,6 +427,13 @@ PatchTableCounts patchTableCounts(const SurfacePatches& patches) {
 bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v) {
   const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
   return osd != nullptr && osd->regularAt(face, u, v);
+}
+
+std::optional<SurfacePoint> evaluateOwnBasis(const SurfacePatches& patches, size_t face, double u,
+                                             double v) {
+  const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
+  if (osd == nullptr) return std::nullopt;
+  return osd->evaluateOwnBasis(face, u, v);
 }
 
 TB_REGISTER_TECHNIQUE(OsdAdaptiveTechnique);

@@ -3,7 +3,13 @@
 // Surfaces", ACM TOG 31(1) 2012; OpenSubdiv). The baseline row: regular B-spline patches
 // around regular faces, adaptive refinement towards extraordinary vertices and creases down
 // to the isolation level, and end caps (Gregory basis or B-spline basis) there.
+// evaluate() is Far's own (PatchMap, EvaluateBasis<double>): the oracle. On the GPU
+// (gpuPrograms(), shaders/osd_adaptive/) one patch per base face: the TES finds the face's
+// Far patch covering gl_TessCoord and evaluates it with osd_basis.h's basis; evaluateFloat
+// is its CPU twin.
 #pragma once
+
+#include <optional>
 
 #include "techniques/technique.h"
 
@@ -14,8 +20,8 @@ enum class EndCap { kGregoryBasis = 0, kBSplineBasis = 1 };
 class OsdAdaptiveTechnique final : public Technique {
  public:
   const TechniqueInfo& info() const override;
-  // "iso2_gregory" (default) and "iso4_gregory"; parameters "isolation" and "endcap" give
-  // any other level and B-spline basis end caps.
+  // "iso2_gregory" only (the default suite's budget); parameters "isolation" and "endcap"
+  // give any other level and B-spline basis end caps.
   std::vector<VariantInfo> variants() const override;
   std::string checkSupport(const Mesh& mesh) const override;
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
@@ -42,5 +48,11 @@ PatchTableCounts patchTableCounts(const SurfacePatches& patches);
 // True when the Far patch that covers (u, v) of base face `face` is a regular B-spline patch
 // (not an end cap). False for patches not built by osd_adaptive.
 bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v);
+
+// Base face `face` at (u, v) with osd_basis.h's weights in double (the GPU's sub-patch
+// search and basis, evaluateFloat's in double) instead of Far's PatchMap and EvaluateBasis:
+// for tests of the basis against evaluate(). Nullopt for patches not built by osd_adaptive.
+std::optional<SurfacePoint> evaluateOwnBasis(const SurfacePatches& patches, size_t face, double u,
+                                             double v);
 
 }  // namespace tb::osd_adaptive

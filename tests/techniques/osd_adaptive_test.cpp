@@ -9,6 +9,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "core/mesh/obj_loader.h"
 #include "harness/measures/error.h"
@@ -155,6 +158,130 @@ double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface
     }
   }
   return worst;
+}
+
+// Assets for the basis tests: extraordinary vertices (cube, pawn), boundaries and corners
+// (edgecorner), creases (cube_creases1, single_crease).
+const char* const kBasisAssets[] = {
+    "opensubdiv/catmark_cube.obj", "opensubdiv/catmark_edgecorner.obj",
+    "opensubdiv/catmark_cube_creases1.obj", "opensubdiv/catmark_single_crease.obj",
+    "opensubdiv/catmark_pawn.obj"};
+
+// Isolation levels 2 and 4 with Gregory basis end caps, level 2 with B-spline basis ones.
+std::vector<VariantInfo> basisVariants() {
+  return {variant(2), variant(4), variant(2, EndCap::kBSplineBasis)};
+}
+
+// The GPU's sub-patch search and basis (osd_basis.h) in double equal Far's PatchMap and
+// EvaluateBasis<double> (the oracle, evaluate()) to rounding, regular patches with boundary
+// masks and both end-cap kinds, on the graded lattice that lands inside the end caps.
+// Normals too, but on Gregory basis end caps: there osd_basis.h differentiates the rational
+// interior weights and Far does not (next test).
+TEST(OsdAdaptive, OwnBasisEqualsFarsBasisInDouble) {
+  const std::vector<double> values = graded();
+  for (const char* name : kBasisAssets) {
+    const Mesh mesh = asset(name);
+    const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
+    for (const VariantInfo& info : basisVariants()) {
+      const bool gregory = variantEndCap(info) == EndCap::kGregoryBasis;
+      const BuiltSurface patches = buildSurface(technique(), mesh, info);
+      double worst = 0, worst_normal = 0;
+      size_t normals = 0;
+      for (size_t f = 0; f < patches->patchCount(); ++f) {
+        for (double u : values) {
+          for (double v : values) {
+            const SurfacePoint far = patches->evaluate(f, {u, v, 0});
+            const std::optional<SurfacePoint> own = evaluateOwnBasis(*patches, f, u, v);
+            ASSERT_TRUE(own.has_value());
+            worst = std::max(worst, length(own->position - far.position) / diagonal);
+            if (gregory && !isRegularAt(*patches, f, u, v)) continue;
+            worst_normal = std::max(worst_normal, length(own->normal - far.normal));
+            ++normals;
+          }
+        }
+      }
+      std::printf(
+          "%s iso%d %s: own basis vs Far's, max %.3g of the diagonal; normals off "
+          "Gregory end caps %.3g (%zu samples)\n",
+          name, variantIsolation(info), gregory ? "gregory" : "bspline", worst, worst_normal,
+          normals);
+      EXPECT_LT(worst, 1e-13) << name;
+      EXPECT_LT(worst_normal, 1e-9) << name;
+      EXPECT_GT(normals, 0u) << name;
+    }
+  }
+}
+
+// On Gregory basis end caps the normal is the surface's: osd_basis.h's derivatives include
+// those of the rational interior weights, so its normal equals the one from central
+// differences of Far's positions (step 1e-6 of the base face: error ~1e-10). Far's
+// EvaluateBasis leaves those terms out; its normals there are printed for comparison.
+TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
+  const Mesh mesh = asset("opensubdiv/catmark_cube.obj");
+  const BuiltSurface patches = buildSurface(technique(), mesh, variant(2));
+  const double h = 1e-6;
+  double worst_own = 0, worst_far = 0;
+  size_t compared = 0;
+  for (size_t f = 0; f < patches->patchCount(); ++f) {
+    for (double u : {0.02, 0.07, 0.15, 0.85, 0.93, 0.98}) {
+      for (double v : {0.03, 0.11, 0.2, 0.8, 0.89, 0.97}) {
+        if (isRegularAt(*patches, f, u, v)) continue;
+        const auto at = [&](double x, double y) {
+          return patches->evaluate(f, {x, y, 0}).position;
+        };
+        const Vec3d n = normalize(cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h)));
+        worst_own = std::max(worst_own, length(evaluateOwnBasis(*patches, f, u, v)->normal - n));
+        worst_far = std::max(worst_far, length(patches->evaluate(f, {u, v, 0}).normal - n));
+        ++compared;
+      }
+    }
+  }
+  std::printf(
+      "catmark_cube iso2 Gregory end caps, %zu samples: normal - central-difference "
+      "normal, own basis %.3g, Far's EvaluateBasis %.3g\n",
+      compared, worst_own, worst_far);
+  EXPECT_GT(compared, 6u * 16);  // four corners of each face lie in end caps
+  EXPECT_LT(worst_own, 1e-8);
+}
+
+// evaluateFloat (the shader's twin, float) against the double evaluations: positions
+// against evaluate (Far), within 1e-5 of the bounding-box diagonal; normals against the
+// same basis in double (evaluateOwnBasis; they differ from Far's on Gregory end caps).
+TEST(OsdAdaptive, FloatTwinAgreesWithDoubleEvaluate) {
+  const std::vector<double> values = graded();
+  for (const char* name : kBasisAssets) {
+    const Mesh mesh = asset(name);
+    const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
+    for (const VariantInfo& info : basisVariants()) {
+      const BuiltSurface patches = buildSurface(technique(), mesh, info);
+      double worst = 0, worst_normal = 0;
+      for (size_t f = 0; f < patches->patchCount(); ++f) {
+        for (double u : values) {
+          for (double v : values) {
+            const tess::DomainPoint at{float(u), float(v), 0};
+            const SurfacePointF single = patches->evaluateFloat(f, at);
+            const SurfacePoint exact = patches->evaluate(f, {u, v, 0});
+            worst = std::max(worst,
+                             length(vecCast<double>(single.position) - exact.position) / diagonal);
+            worst_normal =
+                std::max(worst_normal, length(vecCast<double>(single.normal) -
+                                              evaluateOwnBasis(*patches, f, u, v)->normal));
+          }
+        }
+      }
+      std::printf(
+          "%s iso%d %s: evaluateFloat vs evaluate, max %.3g of the diagonal, normals "
+          "%.3g\n",
+          name, variantIsolation(info),
+          variantEndCap(info) == EndCap::kGregoryBasis ? "gregory" : "bspline", worst,
+          worst_normal);
+      EXPECT_LT(worst, 1e-5) << name;
+      // The pawn's small faces near its axis lose the tangents' low bits to cancellation in
+      // float (1.3e-3 at isolation level 4); the other assets stay near 1e-5.
+      const bool pawn = std::string(name).find("pawn") != std::string::npos;
+      EXPECT_LT(worst_normal, pawn ? 5e-3 : 1e-4) << name;
+    }
+  }
 }
 
 // The parametric max error falls as the isolation level shrinks the end caps around the
