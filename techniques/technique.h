@@ -49,6 +49,8 @@ struct VariantInfo {
   // evaluate() is the default's to rounding, so its surface-error figures repeat the
   // default's (the default suite grades them once; VariantPolicy::kEveryDistinctSurface).
   bool evaluation_order_only = false;
+  // Run by --suite full only: a costlier variant the default suite's time budget leaves out.
+  bool full_suite_only = false;
 };
 
 // Bytes a technique keeps resident to draw one asset, before tessellation.

@@ -65,6 +65,7 @@ RunSelection describeSelection(const SuiteSelection& selection, const Results& r
   for (const Technique* technique : techniques) {
     described.techniques.push_back({technique->info().id, {}});
     for (const VariantInfo& variant : technique->variants()) {
+      if (variant.full_suite_only && selection.suite != SuiteMode::kFull) continue;
       described.techniques.back().variants.push_back(variant.name);
     }
   }

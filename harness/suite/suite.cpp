@@ -575,7 +575,10 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   std::vector<Group> groups;
   size_t total = 0;
   for (const Technique* technique : techniques) {
-    const std::vector<VariantInfo> variants = technique->variants();
+    std::vector<VariantInfo> variants = technique->variants();
+    if (selection.suite != SuiteMode::kFull) {
+      std::erase_if(variants, [](const VariantInfo& v) { return v.full_suite_only; });
+    }
     const std::vector<SuiteInput> inputs = inputsFor(*technique, refs, meshes, scenarios,
                                                      selection.displacements, displacement_meshes);
     for (size_t i = 0; i < inputs.size(); ++i) {

@@ -376,19 +376,22 @@ const TechniqueInfo& OsdAdaptiveTechnique::info() const {
 }
 
 std::vector<VariantInfo> OsdAdaptiveTechnique::variants() const {
-  const auto make = [](int isolation, EndCap cap) {
+  const auto make = [](int isolation, EndCap cap, bool full_suite_only) {
     const bool gregory = cap == EndCap::kGregoryBasis;
     return VariantInfo{"iso" + std::to_string(isolation) + (gregory ? "_gregory" : "_bspline"),
                        "isolation level " + std::to_string(isolation) + ", " +
                            (gregory ? "Gregory basis" : "B-spline basis") + " end caps",
-                       {{"isolation", double(isolation)}, {"endcap", double(int(cap))}}};
+                       {{"isolation", double(isolation)}, {"endcap", double(int(cap))}},
+                       false,
+                       full_suite_only};
   };
-  // One variant only: every variant runs every per-variant measure of the default suite, and
-  // with the GPU program (culling, cracks and adaptivity on the device) a second one
-  // (iso4_gregory) took osd_adaptive's share of the default suite past its 15 s budget. The
-  // suite has no variants for --suite full alone, so other levels and B-spline end caps are
-  // VariantInfo parameters ("isolation", "endcap"; the tests use them).
-  return {make(2, EndCap::kGregoryBasis)};
+  // The default suite runs iso2_gregory only: every variant runs every per-variant measure,
+  // and with the GPU program (culling, cracks and adaptivity on the device) a second one took
+  // osd_adaptive's share of the default suite past its 15 s budget. --suite full adds deeper
+  // isolation and B-spline end caps; any other level: VariantInfo parameters ("isolation",
+  // "endcap").
+  return {make(2, EndCap::kGregoryBasis, false), make(4, EndCap::kGregoryBasis, true),
+          make(2, EndCap::kBSplineBasis, true)};
 }
 
 int variantIsolation(const VariantInfo& variant) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 #include <map>
 #include <string>
@@ -90,14 +92,35 @@ TEST(Suite, FullSuiteAssetsRunOnlyInTheFullSuiteOrWhenNamed) {
   EXPECT_EQ(resolveAsset("pole64").name, "full_suite/pole64");
 }
 
+// A variant marked full_suite_only (osd_adaptive's iso4_gregory) runs in --suite full only.
+TEST(Suite, FullSuiteOnlyVariantsRunOnlyInTheFullSuite) {
+  const auto variants_run = [](SuiteMode mode) {
+    SuiteSelection selection;
+    selection.techniques = {TechniqueRegistry::instance().find("osd_adaptive")};
+    selection.assets = {resolveAsset("catmark_cube")};
+    selection.measures = {MeasureRegistry::instance().find("memory")};
+    selection.suite = mode;
+    Results results;
+    runSuite(selection, nullptr, &results);
+    std::set<std::string> names;
+    for (const Record& record : results.records) names.insert(record.variant);
+    return names;
+  };
+  const std::set<std::string> fast = variants_run(SuiteMode::kDefault);
+  const std::set<std::string> full = variants_run(SuiteMode::kFull);
+  EXPECT_EQ(fast, (std::set<std::string>{"iso2_gregory"}));
+  EXPECT_TRUE(full.count("iso2_gregory") && full.count("iso4_gregory") && full.count("iso2_bspline"))
+      << full.size();
+}
+
 // Oracle: the same run from a copy of the assets in another folder. Results name bundled
 // assets relative to the assets folder (skip reasons and warnings included), so two
 // checkouts, or two shards on two machines, give the same JSON.
 TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
   const auto run = [] {
     SuiteSelection selection;
-    // catmark_chaikin0 is skipped by acc and gregory_acc with reasons that name the file.
-    selection.assets = {resolveAsset("catmark_chaikin0"), resolveAsset("catmark_cube")};
+    // catmark_smoothtris0 is skipped by gregory_acc with a reason that names the file.
+    selection.assets = {resolveAsset("catmark_smoothtris0"), resolveAsset("catmark_cube")};
     selection.measures = {MeasureRegistry::instance().find("memory")};
     Results results;
     runSuite(selection, nullptr, &results);
@@ -106,7 +129,7 @@ TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
   const std::string here = run();
   const std::filesystem::path copy = testing::scratchDirectory("assets_copy");
   std::filesystem::create_directories(copy / "opensubdiv");
-  for (const char* name : {"catmark_chaikin0.obj", "catmark_cube.obj"}) {
+  for (const char* name : {"catmark_smoothtris0.obj", "catmark_cube.obj"}) {
     std::filesystem::copy_file(testing::assetPath(std::string("opensubdiv/") + name),
                                copy / "opensubdiv" / name);
   }
@@ -119,7 +142,7 @@ TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
   const std::string there = run();
   ::unsetenv("TB_ASSETS_DIR");
   std::filesystem::remove_all(copy);
-  EXPECT_NE(here.find("assets/opensubdiv/catmark_chaikin0.obj"), std::string::npos);
+  EXPECT_NE(here.find("assets/opensubdiv/catmark_smoothtris0.obj"), std::string::npos);
   EXPECT_EQ(here.find(TB_SOURCE_DIR), std::string::npos);
   EXPECT_TRUE(here == there) << "results depend on the assets folder's location";
 }
