@@ -41,9 +41,10 @@ TEST(Suite, PhongMemoryOnOneAssetGivesOneRecordPerMeasuredVariant) {
 
 // Memory follows the patch data: gregory_acc/quads_only refines the pyramid's triangles
 // into quads (16 patches instead of 4 triangles + 1 quad) and is measured; the evaluation
-// orders share the default's patch data and are not.
+// orders share the default's patch data and are not (quads_only: a --suite full variant).
 TEST(Suite, VariantsWithTheirOwnPatchDataGetTheirOwnMemoryRecord) {
   SuiteSelection selection;
+  selection.suite = SuiteMode::kFull;
   selection.techniques = {TechniqueRegistry::instance().find("gregory_acc")};
   selection.assets = {resolveAsset("catmark_pyramid")};
   selection.measures = {MeasureRegistry::instance().find("memory")};
