@@ -314,6 +314,23 @@ TEST(MeasureRule, VariantPoliciesMatchTheFormerBooleans) {
                            surface, caps, {true, true}));
 }
 
+// kEveryDistinctSurface: the default variant, every variant in --suite full, and otherwise only
+// variants that are not the default's surface in another float order.
+TEST(MeasureRule, EveryDistinctSurfaceSkipsEvaluationOrderVariantsInTheDefaultSuite) {
+  const SurfaceDoubleTechnique surface;
+  const Capabilities caps{true, false};
+  const MeasureRequirements r{{MeasureNeed::kSurface}, VariantPolicy::kEveryDistinctSurface, {}};
+  for (bool is_default : {false, true}) {
+    for (bool full : {false, true}) {
+      for (bool same_surface : {false, true}) {
+        const bool expected = is_default || full || !same_surface;
+        EXPECT_EQ(measureRuns(r, surface, caps, {is_default, false, full, same_surface}), expected)
+            << is_default << full << same_surface;
+      }
+    }
+  }
+}
+
 TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   const auto requirements = [](const char* id) {
     return MeasureRegistry::instance().find(id)->requirements();
@@ -321,7 +338,8 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   EXPECT_EQ(requirements("memory").variants, VariantPolicy::kWhenPatchDataDiffers);
   EXPECT_EQ(requirements("cracks").variants, VariantPolicy::kEveryVariant);
   EXPECT_EQ(requirements("instructions").variants, VariantPolicy::kEveryVariant);
-  EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryVariant);
+  // Since issue 16: a variant that only reorders the float evaluation is graded once.
+  EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryDistinctSurface);
   EXPECT_EQ(requirements("published_figures").variants, VariantPolicy::kDefaultOnly);
   // Which family each measure applies to (memory and instructions: both).
   for (const Measure* measure : MeasureRegistry::instance().all()) {

@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 
+#include "core/mesh/bounds.h"
 #include "core/mesh/obj_loader.h"
 #include "reference/limit_surface.h"
 #include "techniques/acc/acc.h"
@@ -22,14 +23,7 @@
 namespace tb::acc {
 namespace {
 
-double diagonalOf(const Mesh& mesh) {
-  Vec3d lo = mesh.positions[0], hi = lo;
-  for (const Vec3d& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return length(hi - lo);
-}
+double diagonalOf(const Mesh& mesh) { return tb::diagonalOf(boundsOf(mesh)); }
 
 Mesh bundled(const std::string& name) {
   return loadObjFile(tb::testing::assetPath("opensubdiv") + "/" + name + ".obj");

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/mesh/bounds.h"
 #include "core/mesh/obj_loader.h"
 #include "core/tess/tessellator.h"
 #include "harness/measures/cracks.h"
@@ -39,16 +40,7 @@ const char* const kSymmetricVariants[] = {"edge_symmetric", "exact_tangents", "q
 
 Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
 
-double bboxDiagonal(const Mesh& mesh) {
-  Vec3d lo = mesh.positions[0], hi = lo;
-  for (const Vec3d& p : mesh.positions) {
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
-  return length(hi - lo);
-}
+double bboxDiagonal(const Mesh& mesh) { return diagonalOf(boundsOf(mesh)); }
 
 VariantInfo variantNamed(const std::string& name) {
   for (const VariantInfo& info : GregoryAccTechnique().variants()) {
