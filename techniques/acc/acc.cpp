@@ -7,7 +7,6 @@
 #include <numbers>
 #include <tuple>
 
-#include "core/mesh/topology.h"
 #include "techniques/common/crease_refinement.h"
 #include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
@@ -67,21 +66,7 @@ using ClassKey = std::array<KindKey, 4>;
 // Checks the input (quads, manifold edges) and what the crease preparation cannot
 // represent; throws UnsupportedInput.
 void validate(const Mesh& mesh) {
-  const auto fail = [](const std::string& what) { throw UnsupportedInput("acc: " + what); };
-  if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    if (mesh.faceSize(f) != 4) {
-      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
-           " vertices; ACC needs quads");
-    }
-  }
-  const Topology topology = buildTopology(mesh);
-  for (const MeshEdge& edge : topology.edges) {
-    if (edge.face_count > 2) {
-      fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
-           std::to_string(edge.face_count) + " faces; ACC needs a manifold mesh");
-    }
-  }
+  requireManifoldQuads(mesh, "acc", "ACC needs quads", "ACC needs a manifold mesh");
 }
 
 void validateCreases(const CreasePreparation& creases) {

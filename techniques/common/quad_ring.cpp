@@ -3,6 +3,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "core/mesh/topology.h"
 #include "techniques/common/crease_refinement.h"
 #include "techniques/technique.h"
 
@@ -17,6 +18,24 @@ struct CornerRef {
 };
 
 }  // namespace
+
+void requireManifoldQuads(const Mesh& mesh, const std::string& technique,
+                          const std::string& why_quads, const std::string& why_manifold) {
+  const auto fail = [&](const std::string& what) { throw UnsupportedInput(technique + ": " + what); };
+  if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (mesh.faceSize(f) != 4) {
+      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) + " vertices; " +
+           why_quads);
+    }
+  }
+  for (const MeshEdge& edge : buildTopology(mesh).edges) {
+    if (edge.face_count > 2) {
+      fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
+           std::to_string(edge.face_count) + " faces; " + why_manifold);
+    }
+  }
+}
 
 std::string describeVertex(const Mesh& mesh, uint32_t vertex) {
   std::ostringstream text;

@@ -14,7 +14,7 @@
 
 #include "core/gpu/patch_program_desc.h"
 #include "core/mesh/input_error.h"
-#include "core/mesh/topology.h"
+#include "techniques/common/quad_ring.h"
 #include "reference/topology_refiner_builder.h"
 #include "techniques/osd_adaptive/osd_basis.h"
 #include "techniques/registry.h"
@@ -41,20 +41,8 @@ struct Point3 {
 // Rules the per-base-face parameterisation needs (OpenSubdiv itself refuses less): quads
 // only, a manifold mesh, no holes.
 void validate(const Mesh& mesh) {
-  if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
-  for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    if (mesh.faceSize(f) != 4) {
-      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
-           " vertices; this baseline samples quad base faces only");
-    }
-  }
-  const Topology topology = buildTopology(mesh);
-  for (const MeshEdge& edge : topology.edges) {
-    if (edge.face_count > 2) {
-      fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
-           std::to_string(edge.face_count) + " faces; needs a manifold mesh");
-    }
-  }
+  requireManifoldQuads(mesh, "osd_adaptive", "this baseline samples quad base faces only",
+                       "needs a manifold mesh");
   if (!mesh.tags.holes.empty()) {
     fail(describeFace(mesh, mesh.tags.holes[0]) + " is tagged as a hole; holes are not supported");
   }
