@@ -146,7 +146,37 @@ def functions(code):
     return found
 
 
+def selftest():
+    """A tree with a 601-line file and a 101-line function: both must be caught, and a
+    100-line function with a long lambda, comments and strings inside it must not."""
+    import subprocess
+    import tempfile
+    body = "".join(f"  x += {i};\n" for i in range(98))
+    ok_fn = "int ok(int x) {\n" + body.replace("x += 5;", 'auto f = [] { return "}"; };') + "}\n"
+    long_fn = "int tooLong(int x) {\n" + body + "  x += 1;\n}\n"
+    with tempfile.TemporaryDirectory() as root:
+        os.makedirs(os.path.join(root, "core"))
+        with open(os.path.join(root, "core", "fine.cpp"), "w") as f:
+            f.write("// {\n" + ok_fn)
+        with open(os.path.join(root, "core", "long_function.cpp"), "w") as f:
+            f.write(long_fn)
+        with open(os.path.join(root, "core", "long_file.h"), "w") as f:
+            f.write("int a;\n" * 601)
+        out = subprocess.run([sys.executable, __file__, root], capture_output=True, text=True).stdout
+    print(out, end="")
+    wanted = ["core/long_function.cpp:1: function has 101 lines", "core/long_file.h: file has 601 lines"]
+    missing = [w for w in wanted if w not in out]
+    wrong = "fine.cpp" in out
+    for w in missing:
+        print(f"selftest: NOT caught: {w}")
+    if wrong:
+        print("selftest: a function within the limit was flagged")
+    return 1 if missing or wrong else 0
+
+
 def main():
+    if "--selftest" in sys.argv[1:]:
+        return selftest()
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("root", nargs="?", default=os.path.join(os.path.dirname(__file__), ".."))
     parser.add_argument("--max-file", type=int, default=600)
