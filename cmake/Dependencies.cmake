@@ -29,11 +29,22 @@ if(NOT TB_FUZZ)
   find_package(fmt CONFIG REQUIRED)
   find_package(TBB CONFIG REQUIRED)
   find_package(PNG REQUIRED)  # CMake's FindPNG: the pictures' PNG files (libpng-dev)
+  # The tests and benchmarks need GoogleTest and Google Benchmark, which README command 1
+  # (scripts/install_deps.sh --run) does not install: without them this configure builds
+  # tessbench and says so; scripts/test.sh installs them first.
   if(TB_BUILD_TESTS)
-    find_package(GTest CONFIG REQUIRED)
+    find_package(GTest CONFIG QUIET)
+    if(NOT GTest_FOUND)
+      message(STATUS "GoogleTest not installed: tests not configured (scripts/install_deps.sh)")
+      set(TB_BUILD_TESTS OFF)
+    endif()
   endif()
   if(TB_BUILD_BENCH)
-    find_package(benchmark CONFIG REQUIRED)
+    find_package(benchmark CONFIG QUIET)
+    if(NOT benchmark_FOUND)
+      message(STATUS "Google Benchmark not installed: benchmarks not configured (scripts/install_deps.sh)")
+      set(TB_BUILD_BENCH OFF)
+    endif()
   endif()
 
   # Debian's OpenSubdivConfig.cmake names a static archive the package does not ship,
