@@ -6,7 +6,9 @@ option(TB_CCACHE "Compile through ccache when it is installed" ON)
 if(TB_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
   find_program(TB_CCACHE_PROGRAM ccache)
   if(TB_CCACHE_PROGRAM)
-    set(_tb_launcher ${TB_CCACHE_PROGRAM} base_dir=${PROJECT_SOURCE_DIR} hash_dir=false)
+    # ccache 4.7 (Debian 12) takes its settings from the environment only.
+    set(_tb_launcher ${CMAKE_COMMAND} -E env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR}
+        CCACHE_NOHASHDIR=1 ${TB_CCACHE_PROGRAM})
     set(CMAKE_C_COMPILER_LAUNCHER ${_tb_launcher})
     set(CMAKE_CXX_COMPILER_LAUNCHER ${_tb_launcher})
   endif()
