@@ -164,9 +164,9 @@ class ConvergenceMeasure final : public Measure {
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSimulation}, VariantPolicy::kEveryVariant, [](const Technique& t) {
-              return dynamic_cast<const ConstraintSolverTechnique*>(&t) != nullptr;
-            }};
+    return {{MeasureNeed::kSimulation, MeasureNeed::kConstraintSolver},
+            VariantPolicy::kEveryVariant,
+            {}};
   }
 
   MeasureResult run(const MeasureInput& input) const override {
@@ -178,7 +178,8 @@ class ConvergenceMeasure final : public Measure {
       variant.parameters["goal_springs"] = goal ? 1 : 0;
       const std::unique_ptr<TechniqueInstance> instance =
           input.technique.build({nullptr, &input.simulation->scenario()}, variant);
-      auto* solver = dynamic_cast<ConstraintSolver*>(instance->simulation());
+      Simulation* simulation = instance->simulation();
+      ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
       const std::string goal_key = goal ? "true" : "false";
       if (solver == nullptr) {
         result.rows.push_back(unmeasuredRow({{"goal_springs", goal_key}, {"kind", "summary"}},

@@ -65,9 +65,9 @@ class StabilityMeasure final : public Measure {
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSimulation}, VariantPolicy::kEveryVariant, [](const Technique& t) {
-              return dynamic_cast<const ConstraintSolverTechnique*>(&t) != nullptr;
-            }};
+    return {{MeasureNeed::kSimulation, MeasureNeed::kConstraintSolver},
+            VariantPolicy::kEveryVariant,
+            {}};
   }
 
   MeasureResult run(const MeasureInput& input) const override {
@@ -83,7 +83,7 @@ class StabilityMeasure final : public Measure {
       const std::unique_ptr<TechniqueInstance> instance =
           input.technique.build({nullptr, &input.simulation->scenario()}, variant);
       Simulation* simulation = instance->simulation();
-      auto* solver = dynamic_cast<ConstraintSolver*>(simulation);
+      ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
       const std::string goal_key = goal ? "true" : "false";
       if (solver == nullptr) {
         result.rows.push_back(unmeasuredRow({{"goal_springs", goal_key}}, MeasureStatus::kSkipped,

@@ -1,4 +1,5 @@
-// The "wave_error" measure's algorithm: steps a wave-particle simulation and the
+// The "wave_error" measure's algorithm: steps a wave-field simulation (techniques/wave_field.h:
+// wave particles) and the
 // wave-equation reference (reference/wave_equation.h) side by side over the scenario and
 // compares them: the height field at sample times, the wavefront's arrival at the
 // scenario's probes, and how much of the ideal wavefront ring the particles still cover.
@@ -10,7 +11,8 @@
 #include <vector>
 
 #include "reference/wave_equation.h"
-#include "techniques/wave_particles/wave_particles.h"
+#include "techniques/simulation.h"
+#include "techniques/wave_field.h"
 
 namespace tb {
 
@@ -50,14 +52,14 @@ struct WaveErrorFigures {
 };
 
 // The reference set up from the same scene (sources as the particle-shape blob, walls).
-ref::WaveEquationSetup referenceSetup(const wave_particles::WaveScene& scene);
+ref::WaveEquationSetup referenceSetup(const WaveFieldScene& scene);
 
 // Steps `simulation` (from its start) and the reference to the scenario's duration,
 // sampling the height field at `sample_count` evenly spaced times (the last at the end).
-WaveErrorFigures measureWaveError(wave_particles::WaveParticleSimulation& simulation,
-                                  uint32_t sample_count);
+// Throws std::invalid_argument when the simulation has no waveField().
+WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count);
 
 // Coverage of the ideal rings at the simulation's current time (see WaveTimeFigures).
-std::optional<double> ringCoverage(const wave_particles::WaveParticleSimulation& simulation);
+std::optional<double> ringCoverage(const WaveField& field);
 
 }  // namespace tb

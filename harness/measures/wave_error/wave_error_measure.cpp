@@ -102,15 +102,13 @@ class WaveErrorMeasure final : public Measure {
     return kInfo;
   }
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSimulation},
-            VariantPolicy::kEveryVariant,
-            [](const Technique& technique) { return technique.info().id == "wave_particles"; }};
+    return {{MeasureNeed::kSimulation, MeasureNeed::kWaveField}, VariantPolicy::kEveryVariant, {}};
   }
   MeasureResult run(const MeasureInput& input) const override {
     MeasureResult result;
     result.measure = info().id;
-    auto* simulation = dynamic_cast<wave_particles::WaveParticleSimulation*>(input.simulation);
-    if (simulation == nullptr) {
+    Simulation* simulation = input.simulation;
+    if (simulation == nullptr || simulation->waveField() == nullptr) {
       result.status = MeasureStatus::kSkipped;
       result.reason = "not a wave-particle simulation";
       return result;
