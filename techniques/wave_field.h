@@ -41,7 +41,8 @@ struct WaveFieldScene {
   // The largest |amplitude_m| of the sources (0 without sources).
   double maxAmplitude() const {
     double peak = 0;
-    for (const WaveFieldSource& source : sources) peak = std::max(peak, std::abs(source.amplitude_m));
+    for (const WaveFieldSource& source : sources)
+      peak = std::max(peak, std::abs(source.amplitude_m));
     return peak;
   }
 };

@@ -199,6 +199,155 @@ std::vector<uint8_t> facesTouchingCreases(const Mesh& mesh) {
   return touching;
 }
 
+namespace {
+
+// Where each patch's samples start in the flat sample arrays (patches without a limit
+// have none), so patches can be sampled in parallel into fixed slots; the figures are
+// then reduced serially in sample order, so they do not depend on the thread count.
+struct SamplePlan {
+  std::vector<const PatchSampling*> sampling_of;  // null: no limit surface
+  std::vector<size_t> first_sample;               // patch count + 1 entries
+  size_t sampleCount() const { return first_sample.back(); }
+};
+
+SamplePlan planSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
+                       ref::Scheme scheme, const std::array<PatchSampling, 3>& samplings,
+                       SurfaceErrorFigures* figures) {
+  const Mesh& control = patches.controlMesh();
+  const size_t patch_count = patches.patchCount();
+  SamplePlan plan{std::vector<const PatchSampling*>(patch_count, nullptr),
+                  std::vector<size_t>(patch_count + 1, 0)};
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (limit.hasLimitSurface(p)) {
+      plan.sampling_of[p] =
+          &samplingFor(patches.patchDomain(p), scheme, p, control.faceSize(p), samplings);
+      figures->patches_through_sub_faces += plan.sampling_of[p] == &samplings[2];
+    } else {
+      ++figures->patches_without_limit;
+    }
+    plan.first_sample[p + 1] =
+        plan.first_sample[p] + (plan.sampling_of[p] ? plan.sampling_of[p]->samples.size() : 0);
+  }
+  return plan;
+}
+
+// Per sample, in plan order: the technique's point, its parametric error (world units),
+// the normal angle (degrees), and whether it is near an extraordinary vertex.
+struct SampleValues {
+  std::vector<Vec3d> technique_points;
+  std::vector<double> errors, angles;
+  std::vector<uint8_t> near_xord;
+};
+
+SampleValues evaluateSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
+                             ref::Scheme scheme, const SamplePlan& plan) {
+  const Topology topology = buildTopology(patches.controlMesh());
+  const uint32_t regular_valence = scheme == ref::Scheme::kCatmullClark ? 4 : 6;
+  std::vector<uint8_t> extraordinary(patches.controlMesh().positions.size(), 0);
+  for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
+  const size_t sample_count = plan.sampleCount();
+  SampleValues values{std::vector<Vec3d>(sample_count), std::vector<double>(sample_count),
+                      std::vector<double>(sample_count), std::vector<uint8_t>(sample_count)};
+  tbb::parallel_for(size_t(0), patches.patchCount(), [&](size_t p) {
+    if (plan.sampling_of[p] == nullptr) return;
+    const ref::LimitFace face = limit.face(p);
+    const auto corners = patches.patchCorners(p);
+    size_t i = plan.first_sample[p];
+    for (const PatchSample& sample : plan.sampling_of[p]->samples) {
+      const SurfacePoint point = patches.evaluate(p, sample.coord);
+      const ref::LimitPoint exact = sample.sub_face < 0
+                                        ? face.evaluate(sample.u, sample.v)
+                                        : face.evaluateSubFace(sample.sub_face, sample.u, sample.v);
+      values.technique_points[i] = point.position;
+      values.errors[i] = length(point.position - exact.position);
+      bool near = false;
+      for (int c = 0; c < 4; ++c) {
+        near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
+                sample.corner_weight[c] >= kNearExtraordinary;
+      }
+      values.near_xord[i] = near;
+      values.angles[i] = angleDegrees(point.normal, exact.normal);
+      ++i;
+    }
+  });
+  return values;
+}
+
+// The technique's side of the distance: every sampled patch's triangles, indexing the
+// plan's flat sample order.
+std::vector<ref::Triangle> techniqueTriangles(const SamplePlan& plan) {
+  std::vector<ref::Triangle> triangles;
+  for (size_t p = 0; p + 1 < plan.first_sample.size(); ++p) {
+    if (plan.sampling_of[p] == nullptr) continue;
+    const uint32_t base = uint32_t(plan.first_sample[p]);
+    for (const ref::Triangle& triangle : plan.sampling_of[p]->triangles) {
+      triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
+    }
+  }
+  return triangles;
+}
+
+// 1 for each sample of a patch whose input face touches a crease.
+std::vector<uint8_t> creasedSamples(const SurfacePatches& patches, const Mesh* input,
+                                    const SamplePlan& plan) {
+  const std::vector<uint8_t> creased_face =
+      facesTouchingCreases(input ? *input : patches.controlMesh());
+  const auto nearCrease = [&](size_t p) {
+    const size_t face = input ? patches.sourceFace(p) : p;
+    return face < creased_face.size() && creased_face[face] != 0;
+  };
+  std::vector<uint8_t> crease_of_sample(plan.sampleCount(), 0);
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    if (nearCrease(p)) {
+      std::fill(crease_of_sample.begin() + ptrdiff_t(plan.first_sample[p]),
+                crease_of_sample.begin() + ptrdiff_t(plan.first_sample[p + 1]), uint8_t(1));
+    }
+  }
+  return crease_of_sample;
+}
+
+// The parametric and normal figures (world units), reduced serially in sample order.
+void reduceSamples(const SampleValues& values, const std::vector<uint8_t>& crease_of_sample,
+                   SurfaceErrorFigures* figures) {
+  double squared_sum = 0, normal_sum = 0;
+  for (size_t i = 0; i < values.errors.size(); ++i) {
+    const double error = values.errors[i];
+    double& bucket =
+        values.near_xord[i] ? figures->parametric_max_near_xord : figures->parametric_max_elsewhere;
+    bucket = std::max(bucket, error);
+    const bool near_crease = crease_of_sample[i] != 0;
+    double& crease_bucket = near_crease ? figures->parametric_max_near_crease
+                                        : figures->parametric_max_away_from_crease;
+    crease_bucket = std::max(crease_bucket, error);
+    figures->samples_near_crease += near_crease;
+    figures->samples_near_xord += values.near_xord[i];
+    figures->parametric_max = std::max(figures->parametric_max, error);
+    squared_sum += error * error;
+    figures->normal_max_deg = std::max(figures->normal_max_deg, values.angles[i]);
+    normal_sum += values.angles[i];
+    ++figures->samples;
+  }
+  if (figures->samples > 0) {
+    figures->parametric_rms = std::sqrt(squared_sum / double(figures->samples));
+    figures->normal_mean_deg = normal_sum / double(figures->samples);
+  }
+}
+
+// Relative to the bounding-box diagonal, as every error figure is reported.
+void scaleByDiagonal(SurfaceErrorFigures* figures) {
+  const double scale = figures->bbox_diagonal > 0 ? 1 / figures->bbox_diagonal : 0;
+  for (double* value :
+       {&figures->parametric_max, &figures->parametric_rms, &figures->parametric_max_near_xord,
+        &figures->parametric_max_elsewhere, &figures->parametric_max_near_crease,
+        &figures->parametric_max_away_from_crease, &figures->hausdorff,
+        &figures->hausdorff_technique_to_limit, &figures->hausdorff_limit_to_technique,
+        &figures->rms_distance}) {
+    *value *= scale;
+  }
+}
+
+}  // namespace
+
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                                         const ref::LimitSurface& limit, const Mesh* input) {
   const ref::Scheme scheme = referenceScheme(patches.approximates());
@@ -207,120 +356,26 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                            std::string(ref::schemeName(scheme)) + " but the limit surface is " +
                            std::string(ref::schemeName(limit.scheme())));
   }
-  const Mesh& control = patches.controlMesh();
-  const Topology topology = buildTopology(control);
-  const uint32_t regular_valence = scheme == ref::Scheme::kCatmullClark ? 4 : 6;
-  std::vector<uint8_t> extraordinary(control.positions.size(), 0);
-  for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
-
   SurfaceErrorFigures figures;
-  figures.bbox_diagonal = ref::boundingBoxDiagonal(control.positions);
+  figures.bbox_diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);
   const std::array<PatchSampling, 3> samplings = {
       patchSampling(PatchDomain::kQuad, kErrorSampleLevel),
       patchSampling(PatchDomain::kTriangle, kErrorSampleLevel),
       subFaceSampling(kErrorSubFaceSampleLevel)};
-  // Where each patch's samples start (patches without a limit have none), so patches
-  // can be sampled in parallel into fixed slots; the figures are then reduced serially in
-  // sample order, so they do not depend on the thread count.
-  const size_t patch_count = patches.patchCount();
-  std::vector<const PatchSampling*> sampling_of(patch_count, nullptr);
-  std::vector<size_t> first_sample(patch_count + 1, 0);
-  for (size_t p = 0; p < patch_count; ++p) {
-    if (limit.hasLimitSurface(p)) {
-      sampling_of[p] =
-          &samplingFor(patches.patchDomain(p), scheme, p, control.faceSize(p), samplings);
-      figures.patches_through_sub_faces += sampling_of[p] == &samplings[2];
-    } else {
-      ++figures.patches_without_limit;
-    }
-    first_sample[p + 1] =
-        first_sample[p] + (sampling_of[p] ? sampling_of[p]->samples.size() : 0);
-  }
-  const size_t sample_count = first_sample[patch_count];
-  std::vector<Vec3d> technique_points(sample_count);
-  std::vector<double> errors(sample_count), angles(sample_count);
-  std::vector<uint8_t> near_xord(sample_count);
-  const std::vector<uint8_t> creased_face = facesTouchingCreases(input ? *input : control);
-  const auto nearCrease = [&](size_t p) {
-    const size_t face = input ? patches.sourceFace(p) : p;
-    return face < creased_face.size() && creased_face[face] != 0;
-  };
-  tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
-    if (sampling_of[p] == nullptr) return;
-    const ref::LimitFace face = limit.face(p);
-    const auto corners = patches.patchCorners(p);
-    size_t i = first_sample[p];
-    for (const PatchSample& sample : sampling_of[p]->samples) {
-      const SurfacePoint point = patches.evaluate(p, sample.coord);
-      const ref::LimitPoint exact = sample.sub_face < 0
-                                        ? face.evaluate(sample.u, sample.v)
-                                        : face.evaluateSubFace(sample.sub_face, sample.u, sample.v);
-      technique_points[i] = point.position;
-      errors[i] = length(point.position - exact.position);
-      bool near = false;
-      for (int c = 0; c < 4; ++c) {
-        near |= corners[c] != UINT32_MAX && extraordinary[corners[c]] &&
-                sample.corner_weight[c] >= kNearExtraordinary;
-      }
-      near_xord[i] = near;
-      angles[i] = angleDegrees(point.normal, exact.normal);
-      ++i;
-    }
-  });
-  std::vector<ref::Triangle> technique_triangles;
-  for (size_t p = 0; p < patch_count; ++p) {
-    if (sampling_of[p] == nullptr) continue;
-    const uint32_t base = uint32_t(first_sample[p]);
-    for (const ref::Triangle& triangle : sampling_of[p]->triangles) {
-      technique_triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
-    }
-  }
-  std::vector<uint8_t> crease_of_sample(sample_count, 0);
-  for (size_t p = 0; p < patch_count; ++p) {
-    if (nearCrease(p)) {
-      std::fill(crease_of_sample.begin() + ptrdiff_t(first_sample[p]),
-                crease_of_sample.begin() + ptrdiff_t(first_sample[p + 1]), uint8_t(1));
-    }
-  }
-  double squared_sum = 0, normal_sum = 0;
-  for (size_t i = 0; i < sample_count; ++i) {
-    const double error = errors[i];
-    double& bucket =
-        near_xord[i] ? figures.parametric_max_near_xord : figures.parametric_max_elsewhere;
-    bucket = std::max(bucket, error);
-    const bool near_crease = crease_of_sample[i] != 0;
-    double& crease_bucket = near_crease ? figures.parametric_max_near_crease
-                                        : figures.parametric_max_away_from_crease;
-    crease_bucket = std::max(crease_bucket, error);
-    figures.samples_near_crease += near_crease;
-    figures.samples_near_xord += near_xord[i];
-    figures.parametric_max = std::max(figures.parametric_max, error);
-    squared_sum += error * error;
-    figures.normal_max_deg = std::max(figures.normal_max_deg, angles[i]);
-    normal_sum += angles[i];
-    ++figures.samples;
-  }
+  const SamplePlan plan = planSamples(patches, limit, scheme, samplings, &figures);
+  const SampleValues values = evaluateSamples(patches, limit, scheme, plan);
+  const std::vector<ref::Triangle> technique_triangles = techniqueTriangles(plan);
+  reduceSamples(values, creasedSamples(patches, input, plan), &figures);
   if (figures.samples > 0) {
-    figures.parametric_rms = std::sqrt(squared_sum / double(figures.samples));
-    figures.normal_mean_deg = normal_sum / double(figures.samples);
     const ref::LimitTessellation dense = ref::tessellateLimit(limit, kErrorReferenceRate);
     const ref::HausdorffResult distance =
-        ref::hausdorff({technique_points, technique_triangles}, dense.view(), 2);
+        ref::hausdorff({values.technique_points, technique_triangles}, dense.view(), 2);
     figures.hausdorff = distance.hausdorff;
     figures.hausdorff_technique_to_limit = distance.a_to_b.max;
     figures.hausdorff_limit_to_technique = distance.b_to_a.max;
     figures.rms_distance = distance.rms;
   }
-  // Relative to the bounding-box diagonal, as every error figure is reported.
-  const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
-  for (double* value : {&figures.parametric_max, &figures.parametric_rms,
-                        &figures.parametric_max_near_xord, &figures.parametric_max_elsewhere,
-                        &figures.parametric_max_near_crease,
-                        &figures.parametric_max_away_from_crease,
-                        &figures.hausdorff, &figures.hausdorff_technique_to_limit,
-                        &figures.hausdorff_limit_to_technique, &figures.rms_distance}) {
-    *value *= scale;
-  }
+  scaleByDiagonal(&figures);
   return figures;
 }
 

@@ -8,7 +8,6 @@
 namespace tb {
 namespace {
 
-
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
 // Whether segment p -> q crosses wall w (proper or touching).
@@ -66,11 +65,10 @@ std::optional<double> ringCoverage(const WaveField& field) {
     for (uint32_t k = 0; k < points; ++k) {
       const double angle = 2 * std::numbers::pi * k / points;
       const WavePoint q{source.position_m[0] + radius * std::cos(angle),
-                     source.position_m[1] + radius * std::sin(angle)};
+                        source.position_m[1] + radius * std::sin(angle)};
       if (std::abs(q[0]) > half - r || std::abs(q[1]) > half - r) continue;
       bool hidden = false;
-      for (const WaveFieldWall& wall : scene.walls)
-        hidden |= blocked(source.position_m, q, wall);
+      for (const WaveFieldWall& wall : scene.walls) hidden |= blocked(source.position_m, q, wall);
       if (hidden) continue;
       ++kept;
       for (const auto& p : positions) {

@@ -1,8 +1,8 @@
-// The "wave_error" measure's algorithm: steps a wave-field simulation (techniques/wave_field.h:
-// wave particles) and the
-// wave-equation reference (reference/wave_equation.h) side by side over the scenario and
-// compares them: the height field at sample times, the wavefront's arrival at the
-// scenario's probes, and how much of the ideal wavefront ring the particles still cover.
+// The "wave_error" measure's algorithm: steps a simulation with a wave field
+// (techniques/wave_field.h; today wave particles) and the wave-equation reference
+// (reference/wave_equation.h) side by side over the scenario and compares them: the height
+// field at sample times, the wavefront's arrival at the scenario's probes, and how much of
+// the ideal wavefront ring the particles still cover.
 #pragma once
 
 #include <cstdint>
