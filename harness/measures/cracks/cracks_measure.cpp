@@ -39,26 +39,50 @@ const MetricTable<CrackFigures>& crackTable() {
     return [member](const F& f) { return f.worst.found ? double(f.worst.*member) : -1.0; };
   };
   static const MetricTable<F> kTable{
+      // shared_edges: count; context (no best or worst): edges two or more patches share
       {"shared_edges", Unit::kCount, D::kNone, &F::shared_edges},
+      // seam_edges: count; context: of shared_edges, shared only through welding
       {"seam_edges", Unit::kCount, D::kNone, &F::seam_edges},
+      // shared_corners: count; context: welded vertices at corners of two or more patches
       {"shared_corners", Unit::kCount, D::kNone, &F::shared_corners},
+      // points_compared: count; context: side pairs compared at shared tessellated points
       {"points_compared", Unit::kCount, D::kNone, &F::points_compared},
+      // points_not_equal: count; 0 when watertight (best), up to points_compared (worst)
       {"points_not_equal", Unit::kCount, D::kLowerIsBetter, &F::points_not_equal},
+      // unpaired_points: count; 0 when every edge point has its mirror (best), up to the edge
+      //   points (worst)
       {"unpaired_points", Unit::kCount, D::kLowerIsBetter, &F::unpaired_points},
+      // max_gap_world: world units; 0 when watertight (best), unbounded (worst)
       {"max_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::max_gap_world},
+      // mean_gap_world: world units; 0 when watertight (best), up to max_gap_world (worst)
       {"mean_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::mean_gap_world},
+      // max_gap_ulp: float ulps; 0 when bitwise equal (best), up to ~2^32 (worst: a sign or
+      //   exponent apart)
       {"max_gap_ulp", Unit::kUlp, D::kLowerIsBetter, &F::max_gap_ulp},
+      // max_gap_scale_ulp: ulps of the asset scale; 0 (best), 1 is one rounding step of the largest
+      //   coordinate, unbounded (worst)
       {"max_gap_scale_ulp", Unit::kScaleUlp, D::kLowerIsBetter, &F::max_gap_scale_ulp},
+      // worst_patch_a: patch id; context: side a of the pair with the largest world gap
       {"worst_patch_a", Unit::kId, D::kNone, where(&CrackLocation::patch_a)},
+      // worst_patch_b: patch id; context: side b of that pair
       {"worst_patch_b", Unit::kId, D::kNone, where(&CrackLocation::patch_b)},
+      // worst_is_corner: flag; context: 1 when the worst pair sits at a shared corner, 0 on an edge
       {"worst_is_corner", Unit::kFlag, D::kNone,
        [](const F& f) { return f.worst.found && f.worst.corner ? 1.0 : 0.0; }},
+      // worst_local_a: local edge or corner id; context: on side a
       {"worst_local_a", Unit::kId, D::kNone, where(&CrackLocation::local_a)},
+      // worst_local_b: local edge or corner id; context: on side b
       {"worst_local_b", Unit::kId, D::kNone, where(&CrackLocation::local_b)},
+      // worst_t: edge parameter in [0, 1]; context: where on side a's edge the worst gap is
       {"worst_t", Unit::kEdgeParameter, D::kNone, [](const F& f) { return f.worst.t; }},
+      // vs_cpu_float_points: count; context: captured GPU boundary points compared with the CPU
+      //   float model
       {"vs_cpu_float_points", Unit::kCount, D::kNone, &F::device_points},
+      // vs_cpu_float_points_differing: count; 0 when the device agrees with the CPU float model
+      //   (best), up to vs_cpu_float_points (worst)
       {"vs_cpu_float_points_differing", Unit::kCount, D::kLowerIsBetter,
        &F::device_points_differing},
+      // vs_cpu_float_max_ulp: float ulps; 0 (best), up to ~2^32 (worst)
       {"vs_cpu_float_max_ulp", Unit::kUlp, D::kLowerIsBetter, &F::device_max_ulp},
   };
   return kTable;

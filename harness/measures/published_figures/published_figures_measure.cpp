@@ -55,12 +55,19 @@ const MetricTable<PublishedComparison>& comparisonTable() {
   using D = Direction;
   using S = PublishedComparison;
   static const MetricTable<S> kTable{
+      // published_alu: instructions; context: the published ALU count
       {"published_alu", Unit::kCount, D::kNone, &S::published_alu},
+      // published_loads: instructions; context: the published loads, 0 when not published
       {"published_loads", Unit::kCount, D::kNone, &S::published_loads},
+      // ours_alu_vector: instructions; 0 (best), unbounded (worst); vector float arithmetic + fma
+      //   after spirv-opt -O
       {"ours_alu_vector", Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return alu(s.ours.vector); }},
+      // ours_alu_scalar: instructions; 0 (best), unbounded (worst); the same counted per scalar
+      //   component
       {"ours_alu_scalar", Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return alu(s.ours.scalar); }},
+      // ours_loads: instructions; 0 (best), unbounded (worst); vector loads and stores
       {"ours_loads", Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return double(s.ours.vector.load_store); }},
   };

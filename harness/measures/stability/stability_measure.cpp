@@ -29,12 +29,22 @@ const MetricTable<StabilityFigures>& stabilityTable() {
     };
   };
   static const MetricTable<F> kTable{
+      // energy_drift: ratio; below 1 the motion settles (best), about 1 steady, +inf for a run that
+      //   blew up (worst)
       {"energy_drift", Unit::kRatio, D::kLowerIsBetter, finite(&F::energy_drift)},
+      // max_stretch: ratio |length - rest| / rest; 0 when no surface spring stretches (best),
+      //   unbounded (worst)
       {"max_stretch", Unit::kRatio, D::kLowerIsBetter, finite(&F::max_stretch)},
+      // mean_rms_stretch: ratio; 0 (best), unbounded (worst)
       {"mean_rms_stretch", Unit::kRatio, D::kLowerIsBetter, finite(&F::mean_rms_stretch)},
+      // finite: flag; 1 when every position stayed finite (best), 0 (worst)
       {"finite", Unit::kFlag, D::kHigherIsBetter, [](const F& f) { return f.finite ? 1.0 : 0.0; }},
+      // steps: count; context: frames simulated
       {"steps", Unit::kCount, D::kNone, &F::steps},
+      // dispatches_per_step: count; context: the solver's dispatch budget per frame
       {"dispatches_per_step", Unit::kCount, D::kNone, &F::dispatches_per_step},
+      // iterations_per_step: ratio; context: solver iterations the budget buys (below 1: a partial
+      //   sweep)
       {"iterations_per_step", Unit::kRatio, D::kNone, &F::iterations_per_step},
   };
   return kTable;

@@ -27,11 +27,17 @@ const MetricTable<WaveTimeFigures>& timeTable() {
   static const MetricTable<R> kTable{
       // 0 when the particles' height field equals the reference; grows with the model's
       // departures from the wave equation (no 1/sqrt(R) spreading, no wake).
+      // rms_error: ratio of the largest source amplitude; 0 when the field equals the reference
+      //   (best), unbounded (worst)
       {"rms_error", Unit::kRatio, D::kLowerIsBetter, &R::rms_error},
+      // max_error: ratio of the largest source amplitude; 0 (best), unbounded (worst)
       {"max_error", Unit::kRatio, D::kLowerIsBetter, &R::max_error},
-      // 1: the ideal ring is whole; 0: no particle is left on it.
+      // coverage: ratio; 1 when the ideal ring is whole (best), 0 when no particle is left on it
+      //   (worst)
       {"coverage", Unit::kRatio, D::kHigherIsBetter, [](const R& r) { return r.coverage; }},
+      // front_radius: world units (m); context: c t for the first source, coverage's distance axis
       {"front_radius", Unit::kWorld, D::kNone, &R::front_radius_m},
+      // particles: count; context: particles alive at this time
       {"particles", Unit::kCount, D::kNone, &R::particles},
   };
   return kTable;
@@ -41,18 +47,22 @@ const MetricTable<WaveProbeFigures>& probeTable() {
   using D = Direction;
   using R = WaveProbeFigures;
   static const MetricTable<R> kTable{
-      // |particles - reference| arrival; 0 best; acceptance: <= one step + radius / speed.
+      // |particles - reference| arrival.
+      // arrival_error_s: seconds; 0 (best), unbounded (worst); acceptance <= arrival_tolerance_s
       {"arrival_error_s", Unit::kSeconds, D::kLowerIsBetter,
        [](const R& r) -> std::optional<double> {
          if (auto e = r.arrivalError()) return std::abs(*e);
          return std::nullopt;
        }},
-      // Signed: positive when the particles arrive late.
+      // arrival_delay_s: seconds, signed; context: positive when the particles arrive late
       {"arrival_delay_s", Unit::kSeconds, D::kNone, [](const R& r) { return r.arrivalError(); }},
+      // reference_arrival_s: seconds; context: the reference's arrival at the probe
       {"reference_arrival_s", Unit::kSeconds, D::kNone,
        [](const R& r) { return r.reference_arrival_s; }},
+      // particle_arrival_s: seconds; context: the particles' arrival at the probe
       {"particle_arrival_s", Unit::kSeconds, D::kNone,
        [](const R& r) { return r.particle_arrival_s; }},
+      // probe_distance: world units (m); context: distance to the nearest source
       {"probe_distance", Unit::kWorld, D::kNone, &R::distance_m},
   };
   return kTable;
@@ -61,7 +71,9 @@ const MetricTable<WaveProbeFigures>& probeTable() {
 std::vector<MetricSpec> allSpecs() {
   std::vector<MetricSpec> specs = timeTable().specs();
   for (const MetricSpec& spec : probeTable().specs()) specs.push_back(spec);
+  // arrival_tolerance_s: seconds; context: one time step + particle radius / wave speed.
   specs.push_back({"arrival_tolerance_s", Unit::kSeconds, Direction::kNone});
+  // arrival_within_tolerance: flag; 1 when |arrival_error_s| <= the tolerance (best), 0 (worst).
   specs.push_back({"arrival_within_tolerance", Unit::kFlag, Direction::kHigherIsBetter});
   return specs;
 }
