@@ -21,17 +21,41 @@ const MetricTable<InstructionCounts>& countTable() {
   using C = InstructionCounts;
   constexpr Direction kLower = Direction::kLowerIsBetter;
   static const MetricTable<C> kTable{
+      // add: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); OpFAdd,
+      //   OpFSub
       {"add", Unit::kCount, kLower, &C::add},
+      // mul: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); float
+      //   multiplies
       {"mul", Unit::kCount, kLower, &C::mul},
+      // div: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); OpFDiv,
+      //   OpFRem, OpFMod
       {"div", Unit::kCount, kLower, &C::div},
+      // sqrt: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); Sqrt,
+      //   InverseSqrt
       {"sqrt", Unit::kCount, kLower, &C::sqrt},
+      // compare: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   float comparisons
       {"compare", Unit::kCount, kLower, &C::compare},
+      // float_other: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   OpDot, OpFNegate, other float functions
       {"float_other", Unit::kCount, kLower, &C::float_other},
+      // float_arith: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   add + mul + div + sqrt + compare + float_other
       {"float_arith", Unit::kCount, kLower, [](const C& c) { return double(c.floatArithmetic()); }},
+      // fma: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   GLSL.std.450 Fma
       {"fma", Unit::kCount, kLower, &C::fma},
+      // load_store: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   loads, stores, atomics
       {"load_store", Unit::kCount, kLower, &C::load_store},
+      // control_flow: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   branches, switch, return, kill, calls
       {"control_flow", Unit::kCount, kLower, &C::control_flow},
+      // other: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
+      //   integer, conversion, composite, access chain, phi
       {"other", Unit::kCount, kLower, &C::other},
+      // total: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); every
+      //   category
       {"total", Unit::kCount, kLower, [](const C& c) { return double(c.total()); }},
   };
   return kTable;

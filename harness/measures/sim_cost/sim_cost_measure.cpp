@@ -28,19 +28,28 @@ std::vector<MetricSpec> specs() {
   using D = Direction;
   return {
       // Context: how many elements the scenario has alive at the row's time.
+      // elements: count; context (no best or worst)
       {"elements", Unit::kCount, D::kNone},
       // The most alive at once; lower is cheaper (lp2's fixed buffer caps it).
+      // peak_elements: count; 0 (best), unbounded (worst)
       {"peak_elements", Unit::kCount, D::kLowerIsBetter},
+      // steps: count; context: steps the run took
       {"steps", Unit::kCount, D::kNone},
       // Buffers sized for the whole run (both ping-pong copies) and the rest
       // (Simulation::footprint).
+      // state_bytes: bytes; 0 (best), unbounded (worst)
       {"state_bytes", Unit::kBytes, D::kLowerIsBetter},
+      // auxiliary_bytes: bytes; 0 (best), unbounded (worst)
       {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter},
       // Passes of one step and their dispatches (passes x repeats_per_step); best 1.
+      // compute_passes: count; 1 (best), unbounded (worst)
       {"compute_passes", Unit::kCount, D::kLowerIsBetter},
+      // dispatches_per_step: count; 1 (best), unbounded (worst)
       {"dispatches_per_step", Unit::kCount, D::kLowerIsBetter},
+      // gpu_steps: count; context: steps run on the device
       {"gpu_steps", Unit::kCount, D::kNone},
       // Every buffer the compute runner allocated for the programs.
+      // gpu_resident_bytes: bytes; 0 (best), unbounded (worst)
       {"gpu_resident_bytes", Unit::kBytes, D::kLowerIsBetter},
   };
 }
