@@ -20,28 +20,55 @@ const MetricTable<SurfaceErrorFigures>& errorTable() {
   using D = Direction;
   using F = SurfaceErrorFigures;
   static const MetricTable<F> kTable{
+      // parametric_max: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
+      //   (worst; visible near 1e-3)
       {"parametric_max", Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_max},
+      // parametric_rms: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
+      //   (worst; visible near 1e-3)
       {"parametric_rms", Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_rms},
+      // parametric_max_near_xord: fraction of the control mesh's bounding-box diagonal; 0 (best),
+      //   unbounded (worst; visible near 1e-3); samples near an extraordinary vertex
       {"parametric_max_near_xord", Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_near_xord},
+      // parametric_max_elsewhere: fraction of the control mesh's bounding-box diagonal; 0 (best),
+      //   unbounded (worst; visible near 1e-3); the other samples
       {"parametric_max_elsewhere", Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_elsewhere},
+      // parametric_max_near_crease: fraction of the control mesh's bounding-box diagonal; 0 (best),
+      //   unbounded (worst; visible near 1e-3); patches touching a crease
       {"parametric_max_near_crease", Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_near_crease},
+      // parametric_max_away_from_crease: fraction of the control mesh's bounding-box diagonal; 0
+      //   (best), unbounded (worst; visible near 1e-3); the other patches
       {"parametric_max_away_from_crease", Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_away_from_crease},
+      // hausdorff: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
+      //   (worst; visible near 1e-3); two-sided
       {"hausdorff", Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
+      // hausdorff_tech_to_limit: fraction of the control mesh's bounding-box diagonal; 0 (best),
+      //   unbounded (worst; visible near 1e-3)
       {"hausdorff_tech_to_limit", Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_technique_to_limit},
+      // hausdorff_limit_to_tech: fraction of the control mesh's bounding-box diagonal; 0 (best),
+      //   unbounded (worst; visible near 1e-3)
       {"hausdorff_limit_to_tech", Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_limit_to_technique},
+      // rms_distance: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
+      //   (worst; visible near 1e-3)
       {"rms_distance", Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
+      // normal_max: degrees; 0 (best), 180 (worst)
       {"normal_max", Unit::kDegrees, D::kLowerIsBetter, &F::normal_max_deg},
+      // normal_mean: degrees; 0 (best), 180 (worst)
       {"normal_mean", Unit::kDegrees, D::kLowerIsBetter, &F::normal_mean_deg},
+      // samples: count; context: parametric samples taken
       {"samples", Unit::kCount, D::kNone, &F::samples},
+      // samples_near_xord: count; context
       {"samples_near_xord", Unit::kCount, D::kNone, &F::samples_near_xord},
+      // samples_near_crease: count; context
       {"samples_near_crease", Unit::kCount, D::kNone, &F::samples_near_crease},
+      // patches_without_limit: count; context: patches left out (hole faces)
       {"patches_without_limit", Unit::kCount, D::kNone, &F::patches_without_limit},
+      // bbox_diagonal: world units; context: the unit of the other figures
       {"bbox_diagonal", Unit::kWorld, D::kNone, &F::bbox_diagonal},
   };
   return kTable;
@@ -54,14 +81,24 @@ const MetricTable<DisplacedErrorFigures>& displacedErrorTable() {
   using D = Direction;
   using F = DisplacedErrorFigures;
   static const MetricTable<F> kTable{
+      // hausdorff: fraction of the bounding-box diagonal; 0 (best), unbounded (worst); two-sided,
+      //   against the displaced target
       {"hausdorff", Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
+      // hausdorff_tech_to_target: fraction of the bounding-box diagonal; 0 (best), unbounded
+      //   (worst)
       {"hausdorff_tech_to_target", Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_tech_to_target},
+      // hausdorff_target_to_tech: fraction of the bounding-box diagonal; 0 (best), unbounded
+      //   (worst)
       {"hausdorff_target_to_tech", Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_target_to_tech},
+      // rms_distance: fraction of the bounding-box diagonal; 0 (best), unbounded (worst)
       {"rms_distance", Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
+      // samples: count; context
       {"samples", Unit::kCount, D::kNone, &F::samples},
+      // bbox_diagonal: world units; context: the unit of the other figures
       {"bbox_diagonal", Unit::kWorld, D::kNone, &F::bbox_diagonal},
+      // map_texels_per_side: count; context: the displacement map's resolution
       {"map_texels_per_side", Unit::kCount, D::kNone, &F::map_texels_per_side},
   };
   return kTable;
