@@ -35,44 +35,67 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
     return [member](const R& r) { return double(r.memory.technique.*member); };
   };
   static const MetricTable<R> kTable{
+      // plain_vertices: count; context: the welded plain mesh's vertices at the level
       {"plain_vertices", Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
+      // plain_triangles: count; context
       {"plain_triangles", Unit::kCount, D::kNone, field(&MemoryFigures::plain_triangles)},
+      // plain_bytes: bytes; context: the plain mesh (32 B vertices, 32-bit indices)
       {"plain_bytes", Unit::kBytes, D::kNone, field(&MemoryFigures::plain_bytes)},
+      // control_mesh_bytes: bytes; 0 (best), unbounded (worst)
       {"control_mesh_bytes", Unit::kBytes, D::kLowerIsBetter,
        footprint(&DataFootprint::control_mesh_bytes)},
+      // patch_data_bytes: bytes; 0 (best), unbounded (worst)
       {"patch_data_bytes", Unit::kBytes, D::kLowerIsBetter,
        footprint(&DataFootprint::patch_data_bytes)},
+      // stencil_bytes: bytes; 0 (best), unbounded (worst)
       {"stencil_bytes", Unit::kBytes, D::kLowerIsBetter, footprint(&DataFootprint::stencil_bytes)},
+      // topology_combinations: count; 1 (best) when every patch shares one weight table, 0 without
+      //   classes, up to patches (worst)
       {"topology_combinations", Unit::kCount, D::kLowerIsBetter,
        footprint(&DataFootprint::topology_combinations)},
+      // patches: count; context
       {"patches", Unit::kCount, D::kNone, &R::patches},
+      // displacement_bytes: bytes; 0 (best), unbounded (worst); a 16-bit scalar map sized for the
+      //   level
       {"displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::displacement_bytes)},
+      // technique_with_displacement_bytes: bytes; 0 (best), unbounded (worst)
       {"technique_with_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::technique_with_displacement_bytes)},
+      // plain_over_technique: ratio; above 1 the technique is smaller (better, unbounded), towards
+      //   0 (worst)
       {"plain_over_technique", Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique)},
+      // vector_displacement_bytes: bytes; 0 (best), unbounded (worst); 3 x 16 bits per texel
       {"vector_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::vector_displacement_bytes)},
+      // technique_with_vector_displacement_bytes: bytes; 0 (best), unbounded (worst)
       {"technique_with_vector_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::technique_with_vector_displacement_bytes)},
+      // plain_over_technique_vector: ratio; above 1 the technique is smaller (better, unbounded),
+      //   towards 0 (worst)
       {"plain_over_technique_vector", Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique_vector)},
+      // compressed_vertex_bytes: bytes; context: the meshoptimizer-compressed plain mesh's vertices
       {"compressed_vertex_bytes", Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->vertex_bytes);
        }},
+      // compressed_index_bytes: bytes; context
       {"compressed_index_bytes", Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->index_bytes);
        }},
+      // compressed_bytes: bytes; context
       {"compressed_bytes", Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->bytes());
        }},
+      // compressed_over_technique: ratio; above 1 the technique is smaller (better, unbounded),
+      //   towards 0 (worst)
       {"compressed_over_technique", Unit::kRatio, D::kHigherIsBetter,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
@@ -80,6 +103,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
                 double(r.memory.technique_with_displacement_bytes);
        }},
       // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
+      // map_file_bytes: bytes; 0 (best), unbounded (worst); the map as an OpenEXR file
       {"map_file_bytes", Unit::kBytes, D::kLowerIsBetter,
        [](const R& r) -> std::optional<double> {
          if (!r.map_file_bytes) return std::nullopt;
@@ -96,15 +120,21 @@ const MetricTable<SimulationFootprint>& simulationTable() {
   using D = Direction;
   using F = SimulationFootprint;
   static const MetricTable<F> kTable{
+      // state_bytes: bytes; 0 (best), unbounded (worst)
       {"state_bytes", Unit::kBytes, D::kLowerIsBetter, &F::state_bytes},
+      // auxiliary_bytes: bytes; 0 (best), unbounded (worst)
       {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter, &F::auxiliary_bytes},
+      // simulation_bytes: bytes; 0 (best), unbounded (worst)
       {"simulation_bytes", Unit::kBytes, D::kLowerIsBetter,
        [](const F& f) { return double(f.total()); }},
+      // alternative_bytes: bytes; context: the alternative a user would pick
       {"alternative_bytes", Unit::kBytes, D::kNone,
        [](const F& f) -> std::optional<double> {
          if (f.alternative_bytes == 0) return std::nullopt;
          return double(f.alternative_bytes);
        }},
+      // alternative_over_simulation: ratio; above 1 the simulation is smaller (better, unbounded),
+      //   towards 0 (worst)
       {"alternative_over_simulation", Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) -> std::optional<double> {
          if (f.alternative_bytes == 0 || f.total() == 0) return std::nullopt;
