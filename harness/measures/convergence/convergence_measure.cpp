@@ -48,56 +48,88 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
   using F = ConvergenceFigures;
   static const MetricTable<R> kTable{
       // kind = iteration
+      // residual: ratio (RMS relative stretch); 0 when every constraint is met (best), unbounded
+      //   (worst)
       {"residual", Unit::kRatio, D::kLowerIsBetter, per_iteration(&ConvergenceIteration::residual)},
+      // residual_ratio: ratio to the initial residual; 0 (best), above 1 diverging (worst)
       {"residual_ratio", Unit::kRatio, D::kLowerIsBetter,
        per_iteration(&ConvergenceIteration::residual_ratio)},
+      // position_error: ratio of the mean spring length; 0 at the converged reference (best),
+      //   unbounded (worst)
       {"position_error", Unit::kRatio, D::kLowerIsBetter,
        per_iteration(&ConvergenceIteration::position_error)},
       // kind = summary
+      // residual_at_8_dispatches_no_goal_springs: ratio to the initial residual; 0 (best),
+      //   unbounded (worst)
       {"residual_at_8_dispatches_no_goal_springs", Unit::kRatio, D::kLowerIsBetter,
        budget_residual(false)},
+      // residual_at_8_dispatches_goal_springs: ratio to the initial residual; 0 (best), unbounded
+      //   (worst)
       {"residual_at_8_dispatches_goal_springs", Unit::kRatio, D::kLowerIsBetter,
        budget_residual(true)},
+      // iterations_to_1e-3: count; 1 (best), up to the iteration budget (worst; absent when not
+      //   reached)
       {"iterations_to_1e-3", Unit::kCount, D::kLowerIsBetter,
        [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e3) return std::nullopt;
          return double(*r.figures->iterations_to_1e3);
        }},
+      // iterations_to_1e-5: count; 1 (best), up to the iteration budget (worst; absent when not
+      //   reached)
       {"iterations_to_1e-5", Unit::kCount, D::kLowerIsBetter,
        [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e5) return std::nullopt;
          return double(*r.figures->iterations_to_1e5);
        }},
+      // reached_1e-3: flag; 1 when reached within the budget (best), 0 (worst)
       {"reached_1e-3", Unit::kFlag, D::kHigherIsBetter,
        summary([](const F& f) { return f.iterations_to_1e3 ? 1.0 : 0.0; })},
+      // reached_1e-5: flag; 1 when reached within the budget (best), 0 (worst)
       {"reached_1e-5", Unit::kFlag, D::kHigherIsBetter,
        summary([](const F& f) { return f.iterations_to_1e5 ? 1.0 : 0.0; })},
+      // iteration_budget: count; context
       {"iteration_budget", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.iteration_budget); })},
+      // dispatches_per_iteration: count; 1 for Jacobi (best), the colour count for Gauss-Seidel,
+      //   unbounded (worst)
       {"dispatches_per_iteration", Unit::kCount, D::kLowerIsBetter,
        summary([](const F& f) { return double(f.counts.dispatches_per_iteration); })},
+      // iterations_at_8_dispatches: ratio; context: iterations 8 dispatches buy (below 1: a partial
+      //   sweep)
       {"iterations_at_8_dispatches", Unit::kRatio, D::kNone,
        summary([](const F& f) { return double(f.budget_iterations); })},
+      // colours: count; context: independent constraint batches, 0 when not coloured
       {"colours", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.colours); })},
+      // colours_surface: count; context
       {"colours_surface", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.colours_surface); })},
+      // colours_surface_goal: count; context
       {"colours_surface_goal", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.colours_surface_goal); })},
+      // tile_local_fraction: ratio; context: 1 when every gather read is in-tile, 0 for a solver
+      //   without tiles
       {"tile_local_fraction", Unit::kRatio, D::kNone,
        summary([](const F& f) { return f.counts.tile_local_fraction; })},
+      // constraints: count; context
       {"constraints", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.constraints); })},
+      // constraint_ends: count; context
       {"constraint_ends", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.counts.constraint_ends); })},
+      // initial_residual: ratio; context: the convergence frame's starting residual
       {"initial_residual", Unit::kRatio, D::kNone,
        summary([](const F& f) { return f.initial_residual; })},
+      // final_residual_ratio: ratio to the initial residual; 0 (best), unbounded (worst)
       {"final_residual_ratio", Unit::kRatio, D::kLowerIsBetter,
        summary([](const F& f) { return f.final_residual_ratio; })},
+      // final_position_error: ratio of the mean spring length; 0 (best), unbounded (worst)
       {"final_position_error", Unit::kRatio, D::kLowerIsBetter,
        summary([](const F& f) { return f.final_position_error; })},
+      // reference_iterations: count; context: sweeps the double reference took
       {"reference_iterations", Unit::kCount, D::kNone,
        summary([](const F& f) { return double(f.reference_iterations); })},
+      // reference_converged: flag; context: 1 when the reference reached its tolerance
       {"reference_converged", Unit::kFlag, D::kNone,
        summary([](const F& f) { return f.reference_converged ? 1.0 : 0.0; })},
   };
