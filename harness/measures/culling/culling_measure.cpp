@@ -37,35 +37,50 @@ const MetricTable<CullingFrame>& frameTable() {
     };
   };
   static const MetricTable<F> kTable{
+      // patches: count; context
       {"patches", Unit::kCount, D::kNone, &F::patches},
+      // culled_patches: count; context (see culled_fraction)
       {"culled_patches", Unit::kCount, D::kNone, &F::culled_patches},
+      // culled_fraction: ratio; up to cullable / patches with no false cull (best), 0 (worst:
+      //   nothing culled)
       {"culled_fraction", Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) { return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0; }},
+      // tes_invocations: count; 0 (best), tes_invocations_unculled (worst: no saving)
       {"tes_invocations", Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
+      // tes_invocations_unculled: count; context
       {"tes_invocations_unculled", Unit::kCount, D::kNone, &F::tes_invocations_unculled},
+      // tes_saving: ratio 1 - TES invocations / unculled; 1 (best), 0 (worst)
       {"tes_saving", Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) {
          return f.tes_invocations_unculled > 0
                     ? 1 - double(f.tes_invocations) / double(f.tes_invocations_unculled)
                     : 0.0;
        }},
+      // triangles: count; 0 (best), the unculled triangles (worst)
       {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      // gpu_culled_patches: count; context: the device's pipeline statistics
       {"gpu_culled_patches", Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
+      // gpu_tes_invocations: count; 0 (best), gpu_tes_invocations_unculled (worst)
       {"gpu_tes_invocations", Unit::kCount, D::kLowerIsBetter, gpu(&F::gpu_tes_invocations)},
+      // gpu_tes_invocations_unculled: count; context
       {"gpu_tes_invocations_unculled", Unit::kCount, D::kNone,
        gpu(&F::gpu_tes_invocations_unculled)},
+      // gpu_primitives: count; 0 (best), gpu_primitives_unculled (worst)
       {"gpu_primitives", Unit::kCount, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          return f.gpu_measured && f.gpu_primitives_counted
                     ? std::optional<double>(double(f.gpu_primitives))
                     : std::nullopt;
        }},
+      // gpu_primitives_unculled: count; context
       {"gpu_primitives_unculled", Unit::kCount, D::kNone,
        [](const F& f) -> std::optional<double> {
          return f.gpu_measured && f.gpu_primitives_counted
                     ? std::optional<double>(double(f.gpu_primitives_unculled))
                     : std::nullopt;
        }},
+      // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
+      //   (worst)
       {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          if (!f.gpu_measured) return std::nullopt;
@@ -73,13 +88,22 @@ const MetricTable<CullingFrame>& frameTable() {
                              (f.gpu_primitives_counted && f.gpu_primitives != f.triangles);
          return differ ? 1.0 : 0.0;
        }},
+      // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
+      //   (worst)
       {"twin_mismatches", Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
+      // visible_patches: count; context: patches with a pixel in the unculled render
       {"visible_patches", Unit::kCount, D::kNone, oracle(&F::visible_patches)},
+      // cullable_patches: count; context: what an ideal back-face + frustum culler removes
       {"cullable_patches", Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
+      // false_culls: count; 0 (best), up to visible_patches (worst)
       {"false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
+      // false_cull_pixels: pixels; 0 (best), up to the render's pixels (worst)
       {"false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&F::false_cull_pixels)},
+      // missed_culls: count; 0 (best), up to cullable_patches (worst)
       {"missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
+      // render_width_px: pixels; context
       {"render_width_px", Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
+      // render_height_px: pixels; context
       {"render_height_px", Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
   };
   return kTable;
@@ -95,16 +119,24 @@ const MetricTable<CullingSummary>& summaryTable() {
     };
   };
   static const MetricTable<S> kTable{
+      // mean_culled_fraction: ratio, mean over frames; as culled_fraction
       {"mean_culled_fraction", Unit::kRatio, D::kHigherIsBetter, &S::mean_culled_fraction},
+      // mean_tes_saving: ratio, mean over frames; 1 (best), 0 (worst)
       {"mean_tes_saving", Unit::kRatio, D::kHigherIsBetter, &S::mean_tes_saving},
+      // total_false_culls: count over frames; 0 (best), unbounded (worst)
       {"total_false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::false_culls)},
+      // total_false_cull_pixels: pixels over frames; 0 (best), unbounded (worst)
       {"total_false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&S::false_cull_pixels)},
+      // total_missed_culls: count over frames; 0 (best), unbounded (worst)
       {"total_missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::missed_culls)},
+      // mean_cullable_fraction: ratio; context: the ideal culler's share
       {"mean_cullable_fraction", Unit::kRatio, D::kNone, oracle(&S::mean_cullable_fraction)},
+      // total_twin_mismatches: count over frames; 0 (best), unbounded (worst)
       {"total_twin_mismatches", Unit::kCount, D::kLowerIsBetter,
        [](const S& s) -> std::optional<double> {
          return s.gpu_measured ? std::optional<double>(double(s.twin_mismatches)) : std::nullopt;
        }},
+      // frames: count; context
       {"frames", Unit::kCount, D::kNone, &S::frames},
   };
   return kTable;
