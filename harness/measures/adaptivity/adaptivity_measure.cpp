@@ -86,17 +86,25 @@ const MetricTable<AdaptivityFrame>& frameTable() {
     };
   };
   static const MetricTable<F> kTable{
+      // patches: count; context
       {"patches", Unit::kCount, D::kNone, &F::patches},
+      // triangles: count; 0 (best), unbounded (worst); the CPU tessellator under the twin's levels
       {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      // domain_points: count; 0 (best), unbounded (worst)
       {"domain_points", Unit::kCount, D::kLowerIsBetter, &F::domain_points},
+      // gpu_tcs_patches: count; context: lavapipe's pipeline statistics
       {"gpu_tcs_patches", Unit::kCount, D::kNone, gpu(&F::gpu_tcs_patches)},
+      // gpu_tes_invocations: count; context
       {"gpu_tes_invocations", Unit::kCount, D::kNone, gpu(&F::gpu_tes_invocations)},
+      // gpu_triangles: count; context
       {"gpu_triangles", Unit::kCount, D::kNone,
        [](const F& f) -> std::optional<double> {
          return f.gpu_measured && f.gpu_triangles_counted
                     ? std::optional<double>(double(f.gpu_triangles))
                     : std::nullopt;
        }},
+      // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
+      //   (worst)
       {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          if (!f.gpu_measured) return std::nullopt;
@@ -105,37 +113,62 @@ const MetricTable<AdaptivityFrame>& frameTable() {
                              (f.gpu_triangles_counted && f.gpu_triangles != f.triangles);
          return differ ? 1.0 : 0.0;
        }},
+      // twin_level_mismatches: count; 0 when the TCS levels equal the twin's bitwise (best), up to
+      //   patches (worst)
       {"twin_level_mismatches", Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_level_mismatches)},
+      // factor_mismatches_cpu: count; 0 when shared edges agree (best), up to the shared edges
+      //   (worst)
       {"factor_mismatches_cpu", Unit::kCount, D::kLowerIsBetter, &F::factor_mismatches_cpu},
+      // factor_mismatches_gpu: count; 0 (best), up to the shared edges (worst)
       {"factor_mismatches_gpu", Unit::kCount, D::kLowerIsBetter, gpu(&F::factor_mismatches_gpu)},
+      // crack_points_not_equal_cpu: count; 0 when watertight (best), up to the points compared
+      //   (worst)
       {"crack_points_not_equal_cpu", Unit::kCount, D::kLowerIsBetter,
        cpuCrack(&CrackFigures::points_not_equal)},
+      // crack_unpaired_points_cpu: count; 0 (best), up to the edge points (worst)
       {"crack_unpaired_points_cpu", Unit::kCount, D::kLowerIsBetter,
        cpuCrack(&CrackFigures::unpaired_points)},
+      // crack_max_gap_world_cpu: world units; 0 when watertight (best), unbounded (worst)
       {"crack_max_gap_world_cpu", Unit::kWorld, D::kLowerIsBetter,
        cpuCrack(&CrackFigures::max_gap_world)},
+      // crack_points_not_equal_gpu: count; 0 when watertight (best), up to the points compared
+      //   (worst)
       {"crack_points_not_equal_gpu", Unit::kCount, D::kLowerIsBetter,
        gpuCrack(&CrackFigures::points_not_equal)},
+      // crack_unpaired_points_gpu: count; 0 (best), up to the edge points (worst)
       {"crack_unpaired_points_gpu", Unit::kCount, D::kLowerIsBetter,
        gpuCrack(&CrackFigures::unpaired_points)},
+      // crack_max_gap_world_gpu: world units; 0 when watertight (best), unbounded (worst)
       {"crack_max_gap_world_gpu", Unit::kWorld, D::kLowerIsBetter,
        gpuCrack(&CrackFigures::max_gap_world)},
+      // visible_edges: count; context: tessellated edges with an end in the viewport
       {"visible_edges", Unit::kCount, D::kNone, [](const F& f) { return double(f.screen.edges.edges); }},
+      // edge_px_median: pixels; context (the band around the target is what counts)
       {"edge_px_median", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.median_px; }},
+      // edge_px_p05: pixels; context
       {"edge_px_p05", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p05_px; }},
+      // edge_px_p95: pixels; context
       {"edge_px_p95", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p95_px; }},
+      // edge_fraction_in_band: ratio; 1 when every edge is within [0.5, 2] x target (best), 0
+      //   (worst)
       {"edge_fraction_in_band", Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) { return f.screen.edges.fraction_in_band; }},
+      // error_samples: count; context
       {"error_samples", Unit::kCount, D::kNone,
        [](const F& f) { return double(f.screen.tessellation_error.samples); }},
+      // tess_error_max_px: pixels; 0 (best), unbounded (worst); 1 px is the criterion
       {"tess_error_max_px", Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) { return f.screen.tessellation_error.max_px; }},
+      // tess_error_rms_px: pixels; 0 (best), unbounded (worst)
       {"tess_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) { return f.screen.tessellation_error.rms_px; }},
+      // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
       {"reference_error_max_px", Unit::kPixels, D::kLowerIsBetter,
        reference(&ScreenErrorFigures::max_px)},
+      // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
       {"reference_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
        reference(&ScreenErrorFigures::rms_px)},
+      // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
       {"pop_max_px", Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
@@ -149,23 +182,35 @@ const MetricTable<AdaptivitySummary>& summaryTable() {
   using D = Direction;
   using S = AdaptivitySummary;
   static const MetricTable<S> kTable{
+      // triangle_ratio_vs_uniform: ratio; towards 0 (best), 1 as uniform, above 1 (worse than
+      //   uniform)
       {"triangle_ratio_vs_uniform", Unit::kRatio, D::kLowerIsBetter,
        [](const S& s) -> std::optional<double> {
          return s.reached && s.uniform_reached ? std::optional<double>(s.triangle_ratio_vs_uniform)
                                                : std::nullopt;
        }},
+      // triangles_per_frame_at_target: count; 0 (best), unbounded (worst)
       {"triangles_per_frame_at_target", Unit::kCount, D::kLowerIsBetter,
        &S::triangles_per_frame},
+      // uniform_triangles_per_frame: count; context
       {"uniform_triangles_per_frame", Unit::kCount, D::kNone, &S::uniform_triangles_per_frame},
+      // uniform_level: level; context
       {"uniform_level", Unit::kCount, D::kNone, &S::uniform_level},
+      // error_target_px: pixels; context
       {"error_target_px", Unit::kPixels, D::kNone, &S::error_target_px},
+      // target_reached: flag; 1 (best), 0 (worst)
       {"target_reached", Unit::kFlag, D::kHigherIsBetter,
        [](const S& s) { return s.reached ? 1.0 : 0.0; }},
+      // policy_target: the policy's own unit; context
       {"policy_target", Unit::kRatio, D::kNone, &S::target},
+      // path_max_error_px: pixels; context: at the target found
       {"path_max_error_px", Unit::kPixels, D::kNone, &S::max_error_px},
+      // uniform_reached: flag; context
       {"uniform_reached", Unit::kFlag, D::kNone,
        [](const S& s) { return s.uniform_reached ? 1.0 : 0.0; }},
+      // uniform_path_max_error_px: pixels; context
       {"uniform_path_max_error_px", Unit::kPixels, D::kNone, &S::uniform_max_error_px},
+      // search_passes: count; context
       {"search_passes", Unit::kCount, D::kNone, &S::evaluations},
   };
   return kTable;
