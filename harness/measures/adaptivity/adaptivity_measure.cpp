@@ -58,33 +58,35 @@ Grid gridFor(SuiteMode suite, const SurfacePatches& patches) {
   return grid;
 }
 
+// Accessors of the frame table's figures that a frame may lack.
+constexpr auto frameGpu = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.gpu_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
+  };
+};
+constexpr auto frameCpuCrack = [](auto member) {
+  return [member](const AdaptivityFrame& f) { return double(f.cracks_cpu.*member); };
+};
+constexpr auto frameGpuCrack = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.gpu_measured && f.cracks_gpu.measured
+               ? std::optional<double>(double(f.cracks_gpu.*member))
+               : std::nullopt;
+  };
+};
+constexpr auto frameReference = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.screen.reference_measured && f.screen.reference_error.samples > 0
+               ? std::optional<double>(f.screen.reference_error.*member)
+               : std::nullopt;
+  };
+};
+
 // Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
 // edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
 const MetricTable<AdaptivityFrame>& frameTable() {
   using D = Direction;
   using F = AdaptivityFrame;
-  auto gpu = [](auto member) {
-    return [member](const F& f) -> std::optional<double> {
-      return f.gpu_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
-    };
-  };
-  auto cpuCrack = [](auto member) {
-    return [member](const F& f) { return double(f.cracks_cpu.*member); };
-  };
-  auto gpuCrack = [](auto member) {
-    return [member](const F& f) -> std::optional<double> {
-      return f.gpu_measured && f.cracks_gpu.measured
-                 ? std::optional<double>(double(f.cracks_gpu.*member))
-                 : std::nullopt;
-    };
-  };
-  auto reference = [](auto member) {
-    return [member](const F& f) -> std::optional<double> {
-      return f.screen.reference_measured && f.screen.reference_error.samples > 0
-                 ? std::optional<double>(f.screen.reference_error.*member)
-                 : std::nullopt;
-    };
-  };
   static const MetricTable<F> kTable{
       // patches: count; context
       {"patches", Unit::kCount, D::kNone, &F::patches},
@@ -93,9 +95,9 @@ const MetricTable<AdaptivityFrame>& frameTable() {
       // domain_points: count; 0 (best), unbounded (worst)
       {"domain_points", Unit::kCount, D::kLowerIsBetter, &F::domain_points},
       // gpu_tcs_patches: count; context: lavapipe's pipeline statistics
-      {"gpu_tcs_patches", Unit::kCount, D::kNone, gpu(&F::gpu_tcs_patches)},
+      {"gpu_tcs_patches", Unit::kCount, D::kNone, frameGpu(&F::gpu_tcs_patches)},
       // gpu_tes_invocations: count; context
-      {"gpu_tes_invocations", Unit::kCount, D::kNone, gpu(&F::gpu_tes_invocations)},
+      {"gpu_tes_invocations", Unit::kCount, D::kNone, frameGpu(&F::gpu_tes_invocations)},
       // gpu_triangles: count; context
       {"gpu_triangles", Unit::kCount, D::kNone,
        [](const F& f) -> std::optional<double> {
@@ -115,32 +117,32 @@ const MetricTable<AdaptivityFrame>& frameTable() {
        }},
       // twin_level_mismatches: count; 0 when the TCS levels equal the twin's bitwise (best), up to
       //   patches (worst)
-      {"twin_level_mismatches", Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_level_mismatches)},
+      {"twin_level_mismatches", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::twin_level_mismatches)},
       // factor_mismatches_cpu: count; 0 when shared edges agree (best), up to the shared edges
       //   (worst)
       {"factor_mismatches_cpu", Unit::kCount, D::kLowerIsBetter, &F::factor_mismatches_cpu},
       // factor_mismatches_gpu: count; 0 (best), up to the shared edges (worst)
-      {"factor_mismatches_gpu", Unit::kCount, D::kLowerIsBetter, gpu(&F::factor_mismatches_gpu)},
+      {"factor_mismatches_gpu", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::factor_mismatches_gpu)},
       // crack_points_not_equal_cpu: count; 0 when watertight (best), up to the points compared
       //   (worst)
       {"crack_points_not_equal_cpu", Unit::kCount, D::kLowerIsBetter,
-       cpuCrack(&CrackFigures::points_not_equal)},
+       frameCpuCrack(&CrackFigures::points_not_equal)},
       // crack_unpaired_points_cpu: count; 0 (best), up to the edge points (worst)
       {"crack_unpaired_points_cpu", Unit::kCount, D::kLowerIsBetter,
-       cpuCrack(&CrackFigures::unpaired_points)},
+       frameCpuCrack(&CrackFigures::unpaired_points)},
       // crack_max_gap_world_cpu: world units; 0 when watertight (best), unbounded (worst)
       {"crack_max_gap_world_cpu", Unit::kWorld, D::kLowerIsBetter,
-       cpuCrack(&CrackFigures::max_gap_world)},
+       frameCpuCrack(&CrackFigures::max_gap_world)},
       // crack_points_not_equal_gpu: count; 0 when watertight (best), up to the points compared
       //   (worst)
       {"crack_points_not_equal_gpu", Unit::kCount, D::kLowerIsBetter,
-       gpuCrack(&CrackFigures::points_not_equal)},
+       frameGpuCrack(&CrackFigures::points_not_equal)},
       // crack_unpaired_points_gpu: count; 0 (best), up to the edge points (worst)
       {"crack_unpaired_points_gpu", Unit::kCount, D::kLowerIsBetter,
-       gpuCrack(&CrackFigures::unpaired_points)},
+       frameGpuCrack(&CrackFigures::unpaired_points)},
       // crack_max_gap_world_gpu: world units; 0 when watertight (best), unbounded (worst)
       {"crack_max_gap_world_gpu", Unit::kWorld, D::kLowerIsBetter,
-       gpuCrack(&CrackFigures::max_gap_world)},
+       frameGpuCrack(&CrackFigures::max_gap_world)},
       // visible_edges: count; context: tessellated edges with an end in the viewport
       {"visible_edges", Unit::kCount, D::kNone, [](const F& f) { return double(f.screen.edges.edges); }},
       // edge_px_median: pixels; context (the band around the target is what counts)
@@ -164,10 +166,10 @@ const MetricTable<AdaptivityFrame>& frameTable() {
        [](const F& f) { return f.screen.tessellation_error.rms_px; }},
       // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
       {"reference_error_max_px", Unit::kPixels, D::kLowerIsBetter,
-       reference(&ScreenErrorFigures::max_px)},
+       frameReference(&ScreenErrorFigures::max_px)},
       // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
       {"reference_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
-       reference(&ScreenErrorFigures::rms_px)},
+       frameReference(&ScreenErrorFigures::rms_px)},
       // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
       {"pop_max_px", Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {

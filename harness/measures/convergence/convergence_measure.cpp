@@ -23,50 +23,53 @@ struct ConvergenceRowFigures {
   bool goal_springs = true;
 };
 
+// Accessors: a figure of the iteration rows, of the summary row, and the summary's residual
+// at the dispatch budget with or without goal springs.
+auto perIteration(double ConvergenceIteration::*member) {
+  return [member](const ConvergenceRowFigures& r) -> std::optional<double> {
+    if (r.iteration == nullptr) return std::nullopt;
+    return r.iteration->*member;
+  };
+}
+constexpr auto summary = [](auto fn) {
+  return [fn](const ConvergenceRowFigures& r) -> std::optional<double> {
+    if (r.iteration != nullptr) return std::nullopt;
+    return fn(*r.figures);
+  };
+};
+auto budgetResidual(bool goal) {
+  return [goal](const ConvergenceRowFigures& r) -> std::optional<double> {
+    if (r.iteration != nullptr || r.goal_springs != goal) return std::nullopt;
+    return r.figures->residual_at_budget;
+  };
+}
+
 const MetricTable<ConvergenceRowFigures>& convergenceTable() {
   using D = Direction;
   using R = ConvergenceRowFigures;
   using O = std::optional<double>;
-  auto per_iteration = [](double ConvergenceIteration::*member) {
-    return [member](const R& r) -> O {
-      if (r.iteration == nullptr) return std::nullopt;
-      return r.iteration->*member;
-    };
-  };
-  auto summary = [](auto fn) {
-    return [fn](const R& r) -> O {
-      if (r.iteration != nullptr) return std::nullopt;
-      return fn(*r.figures);
-    };
-  };
-  auto budget_residual = [](bool goal) {
-    return [goal](const R& r) -> O {
-      if (r.iteration != nullptr || r.goal_springs != goal) return std::nullopt;
-      return r.figures->residual_at_budget;
-    };
-  };
   using F = ConvergenceFigures;
   static const MetricTable<R> kTable{
       // kind = iteration
       // residual: ratio (RMS relative stretch); 0 when every constraint is met (best), unbounded
       //   (worst)
-      {"residual", Unit::kRatio, D::kLowerIsBetter, per_iteration(&ConvergenceIteration::residual)},
+      {"residual", Unit::kRatio, D::kLowerIsBetter, perIteration(&ConvergenceIteration::residual)},
       // residual_ratio: ratio to the initial residual; 0 (best), above 1 diverging (worst)
       {"residual_ratio", Unit::kRatio, D::kLowerIsBetter,
-       per_iteration(&ConvergenceIteration::residual_ratio)},
+       perIteration(&ConvergenceIteration::residual_ratio)},
       // position_error: ratio of the mean spring length; 0 at the converged reference (best),
       //   unbounded (worst)
       {"position_error", Unit::kRatio, D::kLowerIsBetter,
-       per_iteration(&ConvergenceIteration::position_error)},
+       perIteration(&ConvergenceIteration::position_error)},
       // kind = summary
       // residual_at_8_dispatches_no_goal_springs: ratio to the initial residual; 0 (best),
       //   unbounded (worst)
       {"residual_at_8_dispatches_no_goal_springs", Unit::kRatio, D::kLowerIsBetter,
-       budget_residual(false)},
+       budgetResidual(false)},
       // residual_at_8_dispatches_goal_springs: ratio to the initial residual; 0 (best), unbounded
       //   (worst)
       {"residual_at_8_dispatches_goal_springs", Unit::kRatio, D::kLowerIsBetter,
-       budget_residual(true)},
+       budgetResidual(true)},
       // iterations_to_1e-3: count; 1 (best), up to the iteration budget (worst; absent when not
       //   reached)
       {"iterations_to_1e-3", Unit::kCount, D::kLowerIsBetter,
