@@ -4,9 +4,9 @@ namespace tb {
 
 Capabilities expectedCapabilities(const Technique& technique) {
   const bool surface = technique.info().family == TechniqueFamily::kSurface;
-  const SimulationCapabilities optional =
+  const SimulationCapabilities promised =
       surface ? SimulationCapabilities{} : technique.simulationCapabilities();
-  return {surface, !surface, optional.constraint_solver, optional.wave_field};
+  return {surface, !surface, promised.constraint_solver, promised.wave_field};
 }
 
 Capabilities capabilitiesOf(const TechniqueInstance& instance) {

@@ -31,7 +31,7 @@ auto perIteration(double ConvergenceIteration::*member) {
     return r.iteration->*member;
   };
 }
-constexpr auto summary = [](auto fn) {
+constexpr auto summaryFigure = [](auto fn) {
   return [fn](const ConvergenceRowFigures& r) -> std::optional<double> {
     if (r.iteration != nullptr) return std::nullopt;
     return fn(*r.figures);
@@ -86,55 +86,55 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
        }},
       // reached_1e-3: flag; 1 when reached within the budget (best), 0 (worst)
       {"reached_1e-3", Unit::kFlag, D::kHigherIsBetter,
-       summary([](const F& f) { return f.iterations_to_1e3 ? 1.0 : 0.0; })},
+       summaryFigure([](const F& f) { return f.iterations_to_1e3 ? 1.0 : 0.0; })},
       // reached_1e-5: flag; 1 when reached within the budget (best), 0 (worst)
       {"reached_1e-5", Unit::kFlag, D::kHigherIsBetter,
-       summary([](const F& f) { return f.iterations_to_1e5 ? 1.0 : 0.0; })},
+       summaryFigure([](const F& f) { return f.iterations_to_1e5 ? 1.0 : 0.0; })},
       // iteration_budget: count; context
       {"iteration_budget", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.iteration_budget); })},
+       summaryFigure([](const F& f) { return double(f.iteration_budget); })},
       // dispatches_per_iteration: count; 1 for Jacobi (best), the colour count for Gauss-Seidel,
       //   unbounded (worst)
       {"dispatches_per_iteration", Unit::kCount, D::kLowerIsBetter,
-       summary([](const F& f) { return double(f.counts.dispatches_per_iteration); })},
+       summaryFigure([](const F& f) { return double(f.counts.dispatches_per_iteration); })},
       // iterations_at_8_dispatches: ratio; context: iterations 8 dispatches buy (below 1: a partial
       //   sweep)
       {"iterations_at_8_dispatches", Unit::kRatio, D::kNone,
-       summary([](const F& f) { return double(f.budget_iterations); })},
+       summaryFigure([](const F& f) { return double(f.budget_iterations); })},
       // colours: count; context: independent constraint batches, 0 when not coloured
       {"colours", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.counts.colours); })},
+       summaryFigure([](const F& f) { return double(f.counts.colours); })},
       // colours_surface: count; context
       {"colours_surface", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.counts.colours_surface); })},
+       summaryFigure([](const F& f) { return double(f.counts.colours_surface); })},
       // colours_surface_goal: count; context
       {"colours_surface_goal", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.counts.colours_surface_goal); })},
+       summaryFigure([](const F& f) { return double(f.counts.colours_surface_goal); })},
       // tile_local_fraction: ratio; context: 1 when every gather read is in-tile, 0 for a solver
       //   without tiles
       {"tile_local_fraction", Unit::kRatio, D::kNone,
-       summary([](const F& f) { return f.counts.tile_local_fraction; })},
+       summaryFigure([](const F& f) { return f.counts.tile_local_fraction; })},
       // constraints: count; context
       {"constraints", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.counts.constraints); })},
+       summaryFigure([](const F& f) { return double(f.counts.constraints); })},
       // constraint_ends: count; context
       {"constraint_ends", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.counts.constraint_ends); })},
+       summaryFigure([](const F& f) { return double(f.counts.constraint_ends); })},
       // initial_residual: ratio; context: the convergence frame's starting residual
       {"initial_residual", Unit::kRatio, D::kNone,
-       summary([](const F& f) { return f.initial_residual; })},
+       summaryFigure([](const F& f) { return f.initial_residual; })},
       // final_residual_ratio: ratio to the initial residual; 0 (best), unbounded (worst)
       {"final_residual_ratio", Unit::kRatio, D::kLowerIsBetter,
-       summary([](const F& f) { return f.final_residual_ratio; })},
+       summaryFigure([](const F& f) { return f.final_residual_ratio; })},
       // final_position_error: ratio of the mean spring length; 0 (best), unbounded (worst)
       {"final_position_error", Unit::kRatio, D::kLowerIsBetter,
-       summary([](const F& f) { return f.final_position_error; })},
+       summaryFigure([](const F& f) { return f.final_position_error; })},
       // reference_iterations: count; context: sweeps the double reference took
       {"reference_iterations", Unit::kCount, D::kNone,
-       summary([](const F& f) { return double(f.reference_iterations); })},
+       summaryFigure([](const F& f) { return double(f.reference_iterations); })},
       // reference_converged: flag; context: 1 when the reference reached its tolerance
       {"reference_converged", Unit::kFlag, D::kNone,
-       summary([](const F& f) { return f.reference_converged ? 1.0 : 0.0; })},
+       summaryFigure([](const F& f) { return f.reference_converged ? 1.0 : 0.0; })},
   };
   return kTable;
 }
