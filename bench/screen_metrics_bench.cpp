@@ -21,7 +21,7 @@
 
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
-#include "harness/measures/screen_metrics.h"
+#include "harness/lod/screen_metrics.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
 #include "reference/limit_surface.h"

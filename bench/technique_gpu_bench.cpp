@@ -25,8 +25,8 @@
 #include "bench/technique_bench_support.h"
 #include "core/gpu/context.h"
 #include "core/gpu/patch_program.h"
-#include "harness/measures/crack_capture.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/crack_capture.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "techniques/registry.h"
 
 namespace {

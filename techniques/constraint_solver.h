@@ -1,8 +1,9 @@
 // An optional capability of a Simulation whose step ends in an iterative constraint solver
 // (position-based dynamics: the mass-spring soft body). The convergence and stability
-// measures (harness/measures/convergence.h, stability.h) read a simulation through it, so
-// they know no technique by name: a measure finds it with dynamic_cast on the Simulation,
-// and a technique whose simulations have it also derives from ConstraintSolverTechnique.
+// measures (harness/measures/convergence/, stability/) read a simulation through it, so
+// they know no technique by name: Simulation::constraintSolver() returns it (null when
+// absent), and a technique whose simulations have it declares so before building
+// (Technique::simulationCapabilities().constraint_solver).
 #pragma once
 
 #include <cstddef>
@@ -89,13 +90,6 @@ class ConstraintSolver {
   // Solver dispatches each step() spends (the frame's budget, as iterateDispatches).
   virtual void setDispatchesPerStep(size_t dispatches) = 0;
   virtual StepDiagnostics diagnostics() const = 0;
-};
-
-// Marks a technique whose simulations implement ConstraintSolver, so a measure's
-// technique filter can select it without building an instance.
-class ConstraintSolverTechnique {
- public:
-  virtual ~ConstraintSolverTechnique() = default;
 };
 
 }  // namespace tb

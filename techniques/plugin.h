@@ -23,6 +23,9 @@
 
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
+// 10: Simulation gained constraintSolver() and waveField() (optional capabilities,
+//     techniques/constraint_solver.h, wave_field.h), Technique simulationCapabilities();
+//     ConstraintSolverTechnique is gone.
 // 8: DataFootprint gained displacement_map_bytes, GpuPatchProgram a displacement map
 //    (GpuDisplacement), Scenario its technique, sections and mesh path, SimulationFootprint
 //    the alternative a user would pick (alternative_bytes, alternative).
@@ -32,7 +35,7 @@
 // techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
 // simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 9;
+inline constexpr int kTessbenchPluginAbi = 10;
 
 namespace tb {
 

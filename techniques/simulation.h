@@ -77,6 +77,17 @@ struct SimulationFootprint {
   bool operator==(const SimulationFootprint&) const = default;
 };
 
+class ConstraintSolver;  // techniques/constraint_solver.h
+class WaveField;         // techniques/wave_field.h
+
+// The optional capabilities a simulation technique declares before building
+// (Technique::simulationCapabilities()), so a measure that needs one (MeasureNeed) is
+// matched without building an instance; its simulations then return them non-null.
+struct SimulationCapabilities {
+  bool constraint_solver = false;  // Simulation::constraintSolver()
+  bool wave_field = false;         // Simulation::waveField()
+};
+
 class Simulation {
  public:
   virtual ~Simulation() = default;
@@ -88,6 +99,13 @@ class Simulation {
   // path. They start from the state at time 0.
   virtual std::vector<gpu::GpuComputeProgram> gpuPrograms() const { return {}; }
   virtual SimulationFootprint footprint() const = 0;
+  // Optional capabilities, null when absent: an iterative constraint solver at the end of
+  // the step (the convergence and stability measures), a 2-D wave height field (wave_error).
+  virtual ConstraintSolver* constraintSolver() { return nullptr; }
+  const ConstraintSolver* constraintSolver() const {
+    return const_cast<Simulation*>(this)->constraintSolver();
+  }
+  virtual const WaveField* waveField() const { return nullptr; }
   // Non-fatal notes gathered while building; none by default.
   virtual const std::vector<std::string>& warnings() const {
     static const std::vector<std::string> kNone;

@@ -253,6 +253,9 @@ class Technique {
   // input breaks a rule of the technique (or lacks the mesh or scenario it needs).
   virtual std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
                                                    const VariantInfo& variant) const = 0;
+  // The optional capabilities the simulations it builds have (techniques/simulation.h);
+  // none by default, and none for a surface technique.
+  virtual SimulationCapabilities simulationCapabilities() const { return {}; }
 };
 
 // The mesh of `input`, or UnsupportedInput naming the technique when there is none.

@@ -12,7 +12,7 @@
 #include "harness/bake/analytic_target.h"
 #include "harness/bake/bake_sidecar.h"
 #include "harness/bake/baker.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
 

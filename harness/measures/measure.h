@@ -61,6 +61,11 @@ enum class MeasureNeed : uint8_t {
   // MeasureInput::gpu: the run's Vulkan device. Never a reason not to run: without a
   // device the measure reports its GPU parts skipped with gpu_unavailable, as it would.
   kGpu,
+  // Optional simulation capabilities (techniques/simulation.h), declared beside kSimulation:
+  // the technique's simulationCapabilities() promise them and MeasureInput::simulation
+  // returns them non-null (Simulation::constraintSolver(), Simulation::waveField()).
+  kConstraintSolver,  // convergence, stability
+  kWaveField,         // wave_error
 };
 
 // Which grid of parameters a measure runs (`tessbench run --suite`): the default suite

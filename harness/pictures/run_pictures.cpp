@@ -13,7 +13,7 @@
 #include "core/gpu/context.h"
 #include "core/gpu/render_target.h"
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "harness/pictures/png_writer.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/tess/tessellator.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "reference/triangle_mesh_ref.h"
 
 namespace tb {

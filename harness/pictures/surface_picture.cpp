@@ -7,7 +7,7 @@
 
 #include "core/gpu/render_target.h"
 #include "core/view/camera.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "harness/pictures/heat_map.h"
 
 namespace tb {

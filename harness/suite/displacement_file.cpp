@@ -11,7 +11,7 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/bake/analytic_target.h"
 #include "harness/bake/bake_sidecar.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "harness/suite/asset_catalog.h"
 #include "reference/triangle_mesh_ref.h"
 

@@ -4,11 +4,16 @@ namespace tb {
 
 Capabilities expectedCapabilities(const Technique& technique) {
   const bool surface = technique.info().family == TechniqueFamily::kSurface;
-  return {surface, !surface};
+  const SimulationCapabilities promised =
+      surface ? SimulationCapabilities{} : technique.simulationCapabilities();
+  return {surface, !surface, promised.constraint_solver, promised.wave_field};
 }
 
 Capabilities capabilitiesOf(const TechniqueInstance& instance) {
-  return {instance.surface() != nullptr, instance.simulation() != nullptr};
+  const Simulation* simulation = instance.simulation();
+  return {instance.surface() != nullptr, simulation != nullptr,
+          simulation != nullptr && simulation->constraintSolver() != nullptr,
+          simulation != nullptr && simulation->waveField() != nullptr};
 }
 
 namespace {
@@ -37,6 +42,10 @@ bool measureRuns(const MeasureRequirements& requirements, const Technique& techn
       !capabilities.simulation) {
     return false;
   }
+  if (requirements.has(MeasureNeed::kConstraintSolver) && !capabilities.constraint_solver) {
+    return false;
+  }
+  if (requirements.has(MeasureNeed::kWaveField) && !capabilities.wave_field) return false;
   if (requirements.technique_filter && !requirements.technique_filter(technique)) return false;
   return policyAdmits(requirements.variants, standing);
 }

@@ -11,6 +11,9 @@ namespace tb {
 struct Capabilities {
   bool surface = false;
   bool simulation = false;
+  // The simulation's optional capabilities (SimulationCapabilities, techniques/simulation.h).
+  bool constraint_solver = false;
+  bool wave_field = false;
 };
 
 // Before building: what the technique's family promises (a surface technique builds
@@ -30,7 +33,8 @@ struct VariantStanding {
   bool same_surface_as_default = false;
 };
 
-// True when every need the suite decides on (surface, simulation) is met, the technique
+// True when every need the suite decides on (surface, simulation, constraint solver, wave
+// field) is met, the technique
 // passes the requirement's filter, and the variant policy admits the variant. kView,
 // kCameraPath and kGpu never stop a measure: the suite supplies views and camera paths,
 // and a measure without a device reports its GPU parts skipped.

@@ -32,6 +32,7 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   SimulationState state() const override;
   std::vector<gpu::GpuComputeProgram> gpuPrograms() const override;
   SimulationFootprint footprint() const override;
+  ConstraintSolver* constraintSolver() override { return this; }
 
   // ConstraintSolver
   SolverCounts counts() const override;
@@ -111,7 +112,7 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   bool goal_springs_ = true;
 };
 
-class MassSpringTechnique final : public Technique, public ConstraintSolverTechnique {
+class MassSpringTechnique final : public Technique {
  public:
   const TechniqueInfo& info() const override;
   std::vector<VariantInfo> variants() const override;
@@ -120,6 +121,9 @@ class MassSpringTechnique final : public Technique, public ConstraintSolverTechn
   // "colour_major" (gs_serial's order).
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
                                            const VariantInfo& variant) const override;
+  SimulationCapabilities simulationCapabilities() const override {
+    return {.constraint_solver = true, .wave_field = false};
+  }
 };
 
 // The solver settings a variant names (its name picks the solver, its parameters the rest).

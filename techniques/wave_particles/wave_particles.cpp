@@ -184,6 +184,37 @@ double WaveParticleSimulation::heightAt(double x_m, double y_m) const {
   return particleHeightAt(particles_, settings_.speed_m_per_s, x_m, y_m);
 }
 
+WaveFieldScene WaveParticleSimulation::waveScene() const {
+  WaveFieldScene out;
+  out.domain_size_m = scene_.domain_size_m;
+  out.wave_speed_m_per_s = scene_.wave_speed_m_per_s;
+  out.packet_radius_m = scene_.particle_radius_m;
+  out.damping_per_s = scene_.damping_per_s;
+  out.reference_spacing_m = scene_.reference_spacing_m;
+  for (const WaveSource& source : scene_.sources) {
+    out.sources.push_back({source.position_m, source.time_s, source.amplitude_m});
+  }
+  for (const WaveWall& wall : scene_.walls) out.walls.push_back({wall.from_m, wall.to_m});
+  out.probes_m = scene_.probes_m;
+  return out;
+}
+
+WaveHeightGrid WaveParticleSimulation::heightGrid() const {
+  HeightField field = heightField();
+  return {field.origin_m, field.spacing_m, field.nodes, std::move(field.height_m)};
+}
+
+std::vector<std::array<float, 2>> WaveParticleSimulation::packetPositions() const {
+  std::vector<std::array<float, 2>> positions;
+  positions.reserve(particles_.size());
+  for (const Particle& p : particles_) {
+    float x, y;
+    particlePosition(p, settings_.speed_m_per_s, &x, &y);
+    positions.push_back({x, y});
+  }
+  return positions;
+}
+
 const TechniqueInfo& WaveParticlesTechnique::info() const {
   static const TechniqueInfo kInfo{
       "wave_particles", TechniqueFamily::kSimulation, "Wave particles",

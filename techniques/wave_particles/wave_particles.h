@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "techniques/technique.h"
+#include "techniques/wave_field.h"
 #include "techniques/wave_particles/height_field.h"
 #include "techniques/wave_particles/particles.h"
 #include "techniques/wave_particles/wave_scene.h"
@@ -23,7 +24,7 @@ namespace tb::wave_particles {
 // Levels of subdivision the `full` table holds (2*pi/N / 3^12 is far below any radius).
 constexpr int kSubdivisionLevels = 12;
 
-class WaveParticleSimulation final : public Simulation {
+class WaveParticleSimulation final : public Simulation, public WaveField {
  public:
   WaveParticleSimulation(const Scenario& scenario, Variant variant);
 
@@ -33,11 +34,17 @@ class WaveParticleSimulation final : public Simulation {
   SimulationState state() const override;
   std::vector<gpu::GpuComputeProgram> gpuPrograms() const override;
   SimulationFootprint footprint() const override;
+  const WaveField* waveField() const override { return this; }
+
+  // WaveField (the scene, packets and height field, for the wave_error measure)
+  WaveFieldScene waveScene() const override;
+  WaveHeightGrid heightGrid() const override;
+  std::vector<std::array<float, 2>> packetPositions() const override;
 
   const WaveScene& scene() const { return scene_; }
   Variant variant() const { return settings_.variant; }
   const std::vector<Particle>& particles() const { return particles_; }
-  double timeS() const { return time_s_; }
+  double timeS() const override { return time_s_; }
   uint32_t stepsDone() const { return steps_; }
   uint64_t dropped() const { return dropped_; }  // appends beyond the buffer, so far
   uint32_t capacity() const { return settings_.capacity; }
@@ -45,7 +52,7 @@ class WaveParticleSimulation final : public Simulation {
   // The output: particles splatted and filtered on the scene's height-field grid.
   HeightField heightField() const;
   // The exact particle sum at a point (probes).
-  double heightAt(double x_m, double y_m) const;
+  double heightAt(double x_m, double y_m) const override;
 
   // The GPU side of gpuPrograms(): which buffer holds the particles and the counter after
   // `steps` steps, and the particles decoded from those buffers' words.
@@ -86,6 +93,9 @@ class WaveParticlesTechnique final : public Technique {
   std::string checkSupport(const Mesh& mesh) const override;
   std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
                                            const VariantInfo& variant) const override;
+  SimulationCapabilities simulationCapabilities() const override {
+    return {.constraint_solver = false, .wave_field = true};
+  }
 };
 
 }  // namespace tb::wave_particles

@@ -17,7 +17,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/bake/analytic_target.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
 #include "tests/bake/bake_test_support.h"

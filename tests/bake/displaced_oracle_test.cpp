@@ -24,7 +24,7 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/bake/analytic_target.h"
 #include "harness/bake/baker.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_distance_field.h"
 #include "techniques/common/displaced_patches.h"

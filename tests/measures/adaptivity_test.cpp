@@ -3,7 +3,7 @@
 // on the CPU twin and in lavapipe (the technique's own TCS computing the factors); the
 // order-dependent control does not; the device's counts equal the CPU tessellator's; and
 // integer spacing pops more than fractional_odd along the dolly.
-#include "harness/measures/adaptivity.h"
+#include "harness/measures/adaptivity/adaptivity.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // device's capture under the patches' own levels (lowered inner levels must capture the
 // same positions bit for bit); lavapipe's TES invocation statistic for the count the
 // capture reports without a query.
-#include "harness/measures/crack_capture.h"
+#include "harness/measures/common/cracks/crack_capture.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 
 #include "core/gpu/patch_program.h"
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/crack_boundaries.h"
+#include "harness/measures/common/cracks/crack_boundaries.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"

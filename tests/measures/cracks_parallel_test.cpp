@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "harness/measures/measure.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"

@@ -3,7 +3,7 @@
 // symmetric in the edge parameter (must be bitwise watertight) or naive (must show
 // cracks); and on the device, the bilinear test shaders, whose captured positions must
 // equal the same formulas evaluated on the CPU.
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 
 #include <gtest/gtest.h>
 

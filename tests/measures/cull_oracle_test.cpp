@@ -6,7 +6,7 @@
 // the winding convention (outside is front) per technique by the divergence theorem: on a
 // closed surface seen from inside, sum(area vector . (centroid - centre)) > 0 per patch
 // when triangles face out.
-#include "harness/measures/cull_oracle.h"
+#include "harness/measures/culling/cull_oracle.h"
 
 #include <gtest/gtest.h>
 

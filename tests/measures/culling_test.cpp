@@ -3,7 +3,7 @@
 // a refined convex cube the cone culls a good share of the patches but never more than the
 // oracle's back-facing count; a patch straddling the silhouette is never conservatively
 // culled; the device's counts equal the CPU tessellator's.
-#include "harness/measures/culling.h"
+#include "harness/measures/culling/culling.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "core/mesh/normals.h"
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
-#include "harness/measures/cull_oracle.h"
+#include "harness/measures/culling/cull_oracle.h"
 #include "harness/suite/camera_path.h"
 #include "reference/uniform_refinement.h"
 #include "techniques/registry.h"

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/cracks.h"
-#include "harness/measures/edge_pattern_levels.h"
+#include "harness/lod/edge_pattern_levels.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "harness/measures/measure.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <map>
 
-#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
 #include "tests/measures/face_patches.h"

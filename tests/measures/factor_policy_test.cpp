@@ -1,7 +1,7 @@
 // Factor policies (harness/measures/factor_policy.h) against hand-computed factors, and
 // their CPU twin against the levels every technique's own TCS writes on the device
 // (shaders/common/tess_factors.glsl), bit for bit.
-#include "harness/measures/factor_policy.h"
+#include "harness/lod/factor_policy.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "core/gpu/patch_program.h"
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "harness/suite/camera_path.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"

@@ -1,14 +1,14 @@
 // Instruction counts against hand counts: a bicubic Bézier patch evaluated with the
 // counting scalar, and the arithmetic of shaders/gpu/test_bilinear.tese after spirv-opt -O.
-#include "harness/measures/instructions.h"
+#include "harness/measures/common/instruction_counts/instructions.h"
 
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <map>
 
-#include "harness/measures/measure.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/measure.h"
 #include "shaders/embedded_shaders.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/registry.h"

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <map>
 
-#include "harness/measures/convergence.h"
-#include "harness/measures/stability.h"
+#include "harness/measures/convergence/convergence.h"
+#include "harness/measures/stability/stability.h"
 #include "tests/techniques/mass_spring_test_support.h"
 
 namespace tb {

@@ -2,7 +2,7 @@
 // rest state (no animation, no gravity: nothing moves) and the decay of a blast's energy.
 #include <gtest/gtest.h>
 
-#include "harness/measures/stability.h"
+#include "harness/measures/stability/stability.h"
 #include "tests/techniques/mass_spring_test_support.h"
 
 namespace tb {

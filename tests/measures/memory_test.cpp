@@ -2,7 +2,7 @@
 // after any subdivision), hand counts for a single triangle, the closed-form counts
 // against the mesh actually built, meshoptimizer's decoders for the compressed
 // baseline, and a second run for determinism.
-#include "harness/measures/memory.h"
+#include "harness/measures/memory/memory.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 
 #include "core/mesh/mesh_copies.h"
 
-#include "harness/suite/suite.h"
 #include "core/mesh/obj_loader.h"
-#include "harness/results/results_json.h"
 #include "core/tess/tessellator.h"
+#include "harness/results/results_json.h"
+#include "harness/suite/suite.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
 

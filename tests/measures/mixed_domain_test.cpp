@@ -12,11 +12,11 @@
 #include <map>
 #include <stdexcept>
 
-#include "harness/measures/cracks.h"
-#include "harness/measures/measure.h"
-#include "harness/measures/memory.h"
-#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/common/cracks/cracks.h"
+#include "harness/measures/error/error.h"
+#include "harness/measures/measure.h"
+#include "harness/measures/memory/memory.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"

@@ -10,8 +10,8 @@
 
 #include <cstdio>
 
-#include "harness/measures/cracks.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"

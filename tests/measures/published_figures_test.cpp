@@ -5,7 +5,7 @@
 // arithmetic + fma) of the position-only probe must reproduce the seed's increments.
 #include <gtest/gtest.h>
 
-#include "harness/measures/instructions.h"
+#include "harness/measures/common/instruction_counts/instructions.h"
 
 namespace tb {
 namespace {

@@ -2,7 +2,7 @@
 // camera has edges of a length computed from the projection), the chord's sagitta (error
 // falls as 1/n^2 with the level n), the Catmull-Clark limit itself (acc is exactly the
 // bicubic B-spline limit on regular faces), and the serial run (thread invariance).
-#include "harness/measures/screen_metrics.h"
+#include "harness/lod/screen_metrics.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -13,7 +13,7 @@
 
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "harness/suite/camera_path.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"

@@ -7,9 +7,9 @@
 // tessellator's, which equal lavapipe's bit for bit).
 #include <gtest/gtest.h>
 
-#include "harness/suite/asset_catalog.h"
-#include "harness/measures/cracks.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/common/cracks/cracks.h"
+#include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 

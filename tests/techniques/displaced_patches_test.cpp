@@ -13,7 +13,7 @@
 
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "techniques/common/displaced_patches.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"

@@ -9,9 +9,9 @@
 #include <tuple>
 
 #include "core/gpu/patch_program.h"
-#include "harness/measures/cracks.h"
 #include "core/mesh/float_ulp.h"
 #include "core/mesh/obj_loader.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "techniques/gregory_acc/gregory_acc.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/techniques/gregory_acc_test_support.h"

@@ -7,10 +7,10 @@
 #include <bit>
 #include <cmath>
 
-#include "harness/measures/error.h"
 #include "core/mesh/obj_loader.h"
 #include "core/mesh/topology.h"
 #include "core/tess/tessellator.h"
+#include "harness/measures/error/error.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"
 #include "techniques/gregory_acc/gregory_acc.h"

@@ -14,7 +14,7 @@
 #include "core/mesh/bounds.h"
 #include "core/mesh/obj_loader.h"
 #include "core/tess/tessellator.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "reference/limit_surface.h"
 #include "techniques/common/crease_refinement.h"
 #include "techniques/gregory_acc/gregory_acc.h"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
-#include "harness/measures/error.h"
+#include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "reference/triangle_mesh_ref.h"
 #include "techniques/registry.h"

@@ -17,7 +17,7 @@
 #include "core/mesh/obj_loader.h"
 #include "core/mesh/topology.h"
 #include "core/tess/tessellator.h"
-#include "harness/measures/cracks.h"
+#include "harness/measures/common/cracks/cracks.h"
 #include "reference/limit_surface.h"
 #include "techniques/acc/acc.h"
 #include "techniques/gregory_acc/gregory_acc.h"

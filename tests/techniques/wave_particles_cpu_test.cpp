@@ -11,7 +11,7 @@
 #include <cstring>
 
 #include "core/mesh/input_error.h"
-#include "harness/measures/wave_error.h"
+#include "harness/measures/wave_error/wave_error.h"
 #include "harness/suite/scenario_file.h"
 #include "techniques/wave_particles/wave_particles.h"
 

@@ -1,0 +1,391 @@
+#include "harness/lod/cull_policy.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace tb {
+namespace {
+
+constexpr size_t kParamWords = 32;  // TbCullParamsBlock, std430
+constexpr double kConeSineWidening = 1e-3;  // see cull_policy.h
+constexpr int kConeAxisIterations = 32;
+
+constexpr CullPolicy kAllPolicies[] = {
+    CullPolicy::kNone,         CullPolicy::kBackfaceLp2, CullPolicy::kFrustumLp2Global,
+    CullPolicy::kFrustumLp2Exact, CullPolicy::kFrustumHull, CullPolicy::kCone,
+    CullPolicy::kCombined,
+};
+
+// The shader's helpers, in its operation order (shaders/common/float_order.glsl).
+float dotF(const Vec3f& a, const Vec3f& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3f subF(const Vec3f& a, const Vec3f& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+Vec3f toFloat(const Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+Vec3d toDouble(const Vec3f& v) { return {v[0], v[1], v[2]}; }
+
+// tbPlaneDistance.
+float planeDistance(const std::array<float, 4>& plane, const Vec3f& p) {
+  return dotF({plane[0], plane[1], plane[2]}, p) + plane[3];
+}
+
+// Closest distance from p to the triangle (a, b, c) (Ericson, "Real-Time Collision
+// Detection", 5.1.5: by the Voronoi region of p).
+double pointTriangleDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return length(p - a);
+  const Vec3d bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return length(p - b);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + ab * (d1 / (d1 - d3))));
+  const Vec3d cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return length(p - c);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(p - (a + ac * (d2 / (d2 - d6))));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    return length(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
+  }
+  const double denom = 1 / (va + vb + vc);
+  return length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
+}
+
+// How far the control hull reaches beyond the corners' flat triangle (a quad: the nearer
+// of its two triangles (0,1,2), (0,2,3)). Bounds the surface's bulge over any point of the
+// corners' convex hull, since the surface lies in the control hull.
+double bulge(const std::vector<Vec3d>& hull, const std::array<Vec3d, 4>& corner, bool quad) {
+  double worst = 0;
+  for (const Vec3d& h : hull) {
+    double d = pointTriangleDistance(h, corner[0], corner[1], corner[2]);
+    if (quad) d = std::min(d, pointTriangleDistance(h, corner[0], corner[2], corner[3]));
+    worst = std::max(worst, d);
+  }
+  return worst;
+}
+
+// A cone (unit axis, sine of the half angle) containing every generator's direction, or
+// nullopt when they span 90 degrees or more. The axis starts at the mean direction and moves
+// towards the worst generator (Badoiu-Clarkson steps); the narrowest cone seen is kept.
+std::optional<std::pair<Vec3d, double>> normalCone(const std::vector<Vec3d>& generators) {
+  std::vector<Vec3d> units;
+  for (const Vec3d& g : generators) {
+    const double len = length(g);
+    if (len > 0) units.push_back(g * (1 / len));
+  }
+  if (units.empty()) return std::nullopt;
+  Vec3d sum{0, 0, 0};
+  for (const Vec3d& u : units) sum = sum + u;
+  if (!(length(sum) > 1e-12)) return std::nullopt;
+  Vec3d axis = normalize(sum);
+  Vec3d best_axis = axis;
+  double best_cos = -2;
+  for (int step = 0; step < kConeAxisIterations; ++step) {
+    double worst_cos = 2;
+    const Vec3d* worst = nullptr;
+    for (const Vec3d& u : units) {
+      const double c = dot(axis, u);
+      if (c < worst_cos) worst_cos = c, worst = &u;
+    }
+    if (worst_cos > best_cos) best_cos = worst_cos, best_axis = axis;
+    const Vec3d moved = axis + (*worst - axis) * (1.0 / (step + 2));
+    if (!(length(moved) > 1e-12)) break;
+    axis = normalize(moved);
+  }
+  if (!(best_cos > 1e-3)) return std::nullopt;
+  const double sine = std::sqrt(std::max(0.0, 1 - best_cos * best_cos));
+  return std::make_pair(best_axis, sine);
+}
+
+std::vector<Vec3d> boxCorners(const std::vector<Vec3d>& points) {
+  Vec3d lo = points[0], hi = points[0];
+  for (const Vec3d& p : points) {
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
+  }
+  std::vector<Vec3d> corners;
+  for (int k = 0; k < 8; ++k) {
+    corners.push_back({(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]});
+  }
+  return corners;
+}
+
+using PositionKey = std::array<uint32_t, 3>;
+PositionKey positionKey(const Vec3f& p) {
+  return {std::bit_cast<uint32_t>(p[0]), std::bit_cast<uint32_t>(p[1]),
+          std::bit_cast<uint32_t>(p[2])};
+}
+
+void putFloat(std::vector<uint32_t>& words, float value) {
+  words.push_back(std::bit_cast<uint32_t>(value));
+}
+void putVec(std::vector<uint32_t>& words, const Vec3f& v, float w) {
+  for (int i = 0; i < 3; ++i) putFloat(words, v[i]);
+  putFloat(words, w);
+}
+
+}  // namespace
+
+std::span<const CullPolicy> allCullPolicies() { return kAllPolicies; }
+
+std::string_view cullPolicyName(CullPolicy policy) {
+  switch (policy) {
+    case CullPolicy::kNone:
+      return "none";
+    case CullPolicy::kBackfaceLp2:
+      return "backface_lp2";
+    case CullPolicy::kFrustumLp2Global:
+      return "frustum_lp2_global";
+    case CullPolicy::kFrustumLp2Exact:
+      return "frustum_lp2_exact";
+    case CullPolicy::kFrustumHull:
+      return "frustum_hull";
+    case CullPolicy::kCone:
+      return "cone";
+    case CullPolicy::kCombined:
+      return "combined";
+  }
+  return "?";
+}
+
+std::optional<CullPolicy> parseCullPolicy(std::string_view name) {
+  for (CullPolicy policy : kAllPolicies) {
+    if (cullPolicyName(policy) == name) return policy;
+  }
+  return std::nullopt;
+}
+
+std::string_view cullPolicyDescription(CullPolicy policy) {
+  switch (policy) {
+    case CullPolicy::kNone:
+      return "no culling: every patch runs through the TES";
+    case CullPolicy::kBackfaceLp2:
+      return "culled when every corner normal faces away from the eye, n . (eye - p) < 0 "
+             "(CAPCOM, \"Lost Planet 2: DirectX 11 Features\"); not conservative";
+    case CullPolicy::kFrustumLp2Global:
+      return "culled when every corner is more than a margin (2% of the bounding-box diagonal) "
+             "outside one frustum plane: the clip flags AND-ed over the corners (CAPCOM, \"Lost "
+             "Planet 2: DirectX 11 Features\"); not conservative";
+    case CullPolicy::kFrustumLp2Exact:
+      return "the same clip flags with a per-vertex margin: the largest bulge over their flat "
+             "corners of the patches around the vertex, from their control hulls (the talk's "
+             "\"exact\" suggestion)";
+    case CullPolicy::kFrustumHull:
+      return "culled when the convex hull of the patch's control points lies outside one "
+             "frustum plane; conservative";
+    case CullPolicy::kCone:
+      return "back-patch culling with a cone of the geometric normals dp/du x dp/dv from the "
+             "normal patch's control points (Shirman & Abi-Ezzi, \"The Cone of Normals Technique "
+             "for Fast Processing of Curved Patches\", Eurographics 1993; Sederberg & Meyers "
+             "1988 for the normal patch): culled when every control-hull point sees the eye "
+             "outside the cone's back-facing region; conservative";
+    case CullPolicy::kCombined:
+      return "frustum_hull or cone; conservative";
+  }
+  return "";
+}
+
+bool isConservative(CullPolicy policy) {
+  return policy == CullPolicy::kFrustumHull || policy == CullPolicy::kCone ||
+         policy == CullPolicy::kCombined;
+}
+
+CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corners,
+                      double world_scale) {
+  CullBounds result;
+  result.global_margin = float(kGlobalMarginOfDiagonal * world_scale);
+  const size_t count = patches.patchCount();
+  result.patches.resize(count);
+  std::vector<double> patch_bulge(count, 0);
+  for (size_t p = 0; p < count; ++p) {
+    CullPatchBounds& out = result.patches[p];
+    const bool quad = corners.domains[p] == PatchDomain::kQuad;
+    out.corner_count = quad ? 4 : 3;
+    std::array<Vec3d, 4> corner_d{};
+    for (uint32_t c = 0; c < 4; ++c) {
+      out.corner_position[c] = corners.patches[p][c].position;
+      out.corner_normal[c] = corners.patches[p][c].normal;
+      corner_d[c] = toDouble(out.corner_position[c]);
+    }
+    const std::optional<PatchCullBounds> bounds = patches.cullBounds(p);
+    std::vector<Vec3d> hull;
+    if (bounds && !bounds->hull.empty()) {
+      hull = bounds->hull;
+    } else {
+      ++result.patches_without_hull;
+      hull.assign(corner_d.begin(), corner_d.begin() + out.corner_count);
+    }
+    patch_bulge[p] = bulge(hull, corner_d, quad);
+    if (hull.size() > kCullHullPoints) hull = boxCorners(hull);
+    for (const Vec3d& h : hull) out.hull.push_back(toFloat(h));
+    const std::optional<std::pair<Vec3d, double>> cone =
+        bounds ? normalCone(bounds->normal_generators) : std::nullopt;
+    if (cone && cone->second + kConeSineWidening < 1) {
+      out.cone_axis = toFloat(cone->first);
+      const float sine = float(cone->second + kConeSineWidening);
+      out.cone_sine = std::nextafter(sine, 2.0f);
+    } else {
+      ++result.patches_without_cone;
+    }
+  }
+  // Per welded position, the largest bulge of the patches around it.
+  std::map<PositionKey, double> vertex_margin;
+  for (size_t p = 0; p < count; ++p) {
+    const CullPatchBounds& b = result.patches[p];
+    for (uint32_t c = 0; c < b.corner_count; ++c) {
+      double& margin = vertex_margin[positionKey(b.corner_position[c])];
+      margin = std::max(margin, patch_bulge[p]);
+    }
+  }
+  for (CullPatchBounds& b : result.patches) {
+    for (uint32_t c = 0; c < b.corner_count; ++c) {
+      const float margin = float(vertex_margin[positionKey(b.corner_position[c])]);
+      b.corner_margin[c] = std::nextafter(margin, std::numeric_limits<float>::infinity());
+    }
+  }
+  return result;
+}
+
+CullParams cullParams(CullPolicy policy, const View& view, const CullBounds& bounds) {
+  CullParams params;
+  params.policy = policy;
+  params.global_margin = bounds.global_margin;
+  params.eye = {float(view.eye[0]), float(view.eye[1]), float(view.eye[2])};
+  const auto& m = view.view_projection.m;
+  auto row = [&](int r) { return std::array<double, 4>{m[0][r], m[1][r], m[2][r], m[3][r]}; };
+  const std::array<double, 4> x = row(0), y = row(1), z = row(2), w = row(3);
+  const std::array<std::array<double, 4>, 6> planes = {{
+      {w[0] + x[0], w[1] + x[1], w[2] + x[2], w[3] + x[3]},  // x >= -w
+      {w[0] - x[0], w[1] - x[1], w[2] - x[2], w[3] - x[3]},  // x <= w
+      {w[0] + y[0], w[1] + y[1], w[2] + y[2], w[3] + y[3]},  // y >= -w
+      {w[0] - y[0], w[1] - y[1], w[2] - y[2], w[3] - y[3]},  // y <= w
+      z,                                                     // z >= 0
+      {w[0] - z[0], w[1] - z[1], w[2] - z[2], w[3] - z[3]},  // z <= w
+  }};
+  for (size_t k = 0; k < 6; ++k) {
+    const double len = std::sqrt(planes[k][0] * planes[k][0] + planes[k][1] * planes[k][1] +
+                                 planes[k][2] * planes[k][2]);
+    for (int i = 0; i < 4; ++i) params.planes[k][i] = float(len > 0 ? planes[k][i] / len : 0);
+  }
+  return params;
+}
+
+namespace {
+
+bool cullsBackfaceLp2(const CullParams& params, const CullPatchBounds& patch) {
+  for (uint32_t c = 0; c < patch.corner_count; ++c) {
+    const Vec3f to_eye = subF(params.eye, patch.corner_position[c]);
+    if (!(dotF(patch.corner_normal[c], to_eye) < 0.0f)) return false;
+  }
+  return true;
+}
+
+bool cullsFrustumCorners(const CullParams& params, const CullPatchBounds& patch, bool exact) {
+  for (const std::array<float, 4>& plane : params.planes) {
+    bool outside = true;
+    for (uint32_t c = 0; c < patch.corner_count && outside; ++c) {
+      const float margin =
+          (exact ? patch.corner_margin[c] : params.global_margin) + patch.displacement_bound;
+      outside = planeDistance(plane, patch.corner_position[c]) < -margin;
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
+bool cullsFrustumHull(const CullParams& params, const CullPatchBounds& patch) {
+  for (const std::array<float, 4>& plane : params.planes) {
+    bool outside = true;
+    for (size_t i = 0; i < patch.hull.size() && outside; ++i) {
+      outside = planeDistance(plane, patch.hull[i]) < -patch.displacement_bound;
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
+bool cullsCone(const CullParams& params, const CullPatchBounds& patch) {
+  if (!(patch.cone_sine <= 1.0f)) return false;
+  for (const Vec3f& q : patch.hull) {
+    const Vec3f d = subF(q, params.eye);
+    const float along = dotF(d, patch.cone_axis) - patch.displacement_bound;
+    const float reach = (std::sqrt(dotF(d, d)) + patch.displacement_bound) * patch.cone_sine;
+    if (!(along > reach)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool cullsPatch(const CullParams& params, const CullPatchBounds& patch) {
+  switch (params.policy) {
+    case CullPolicy::kNone:
+      return false;
+    case CullPolicy::kBackfaceLp2:
+      return cullsBackfaceLp2(params, patch);
+    case CullPolicy::kFrustumLp2Global:
+      return cullsFrustumCorners(params, patch, false);
+    case CullPolicy::kFrustumLp2Exact:
+      return cullsFrustumCorners(params, patch, true);
+    case CullPolicy::kFrustumHull:
+      return cullsFrustumHull(params, patch);
+    case CullPolicy::kCone:
+      return cullsCone(params, patch);
+    case CullPolicy::kCombined:
+      return cullsFrustumHull(params, patch) || cullsCone(params, patch);
+  }
+  return false;
+}
+
+std::vector<uint8_t> cullDecisions(const CullParams& params, const CullBounds& bounds) {
+  std::vector<uint8_t> culled(bounds.patches.size());
+  for (size_t p = 0; p < bounds.patches.size(); ++p) {
+    culled[p] = cullsPatch(params, bounds.patches[p]) ? 1 : 0;
+  }
+  return culled;
+}
+
+gpu::TcsCullPolicy tcsCullPolicy(const CullParams& params, const CullBounds& bounds,
+                                 const gpu::GpuPatchProgram& program) {
+  return {cullParamWords(params), cullPatchWords(bounds, program)};
+}
+
+std::vector<uint32_t> cullParamWords(const CullParams& params) {
+  std::vector<uint32_t> words;
+  words.reserve(kParamWords);
+  for (const std::array<float, 4>& plane : params.planes) {
+    for (float v : plane) putFloat(words, v);
+  }
+  putVec(words, params.eye, 0);
+  putFloat(words, params.global_margin);
+  words.push_back(uint32_t(params.policy));
+  words.push_back(0);
+  words.push_back(0);
+  return words;
+}
+
+std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
+                                     const gpu::GpuPatchProgram& program) {
+  std::vector<uint32_t> words;
+  words.reserve(size_t(program.patch_count) * gpu::kTcsCullPatchWords);
+  for (uint32_t i = 0; i < program.patch_count; ++i) {
+    const size_t p = program.patch_ids.empty() ? i : program.patch_ids[i];
+    const CullPatchBounds& b = bounds.patches.at(p);
+    for (int c = 0; c < 4; ++c) putVec(words, b.corner_position[c], b.corner_margin[c]);
+    for (int c = 0; c < 4; ++c) putVec(words, b.corner_normal[c], 0);
+    putVec(words, b.cone_axis, b.cone_sine);
+    words.push_back(b.corner_count);
+    words.push_back(uint32_t(b.hull.size()));
+    putFloat(words, b.displacement_bound);
+    words.push_back(0);
+    for (size_t h = 0; h < kCullHullPoints; ++h) {
+      putVec(words, h < b.hull.size() ? b.hull[h] : Vec3f{0, 0, 0}, 0);
+    }
+  }
+  return words;
+}
+
+}  // namespace tb

@@ -1,0 +1,108 @@
+// Patch culling policies: the CPU twin of shaders/common/cull.glsl (same float operations
+// in the same order, so its decision equals the one every technique's TCS makes, patch for
+// patch) and the packing of the policy and the per-patch bounds for the device
+// (gpu::TcsCullPolicy). The policies are described in cull.glsl and by
+// cullPolicyDescription().
+//
+// Per-patch bounds come from the technique (SurfacePatches::cullBounds: the control hull and
+// the generators of its geometric normals), computed once per asset in double and rounded to
+// float here: the cone's sine is rounded up and widened by 1e-3 (about 0.06 degrees: a
+// patch seen that close to edge-on projects thinner than the rasteriser's sub-pixel snapping,
+// which can flip a flat triangle's winding; --suite full once showed a 1-pixel false cull of
+// a flat phong/alpha0 patch with 1e-5), a hull of more than 20
+// points is replaced by the 8 corners of its bounding box.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "core/gpu/patch_program.h"
+#include "core/mesh/vec.h"
+#include "core/view/view.h"
+#include "harness/lod/factor_policy.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+enum class CullPolicy : uint32_t {  // TbCullParams::policy
+  kNone = 0,
+  kBackfaceLp2 = 1,
+  kFrustumLp2Global = 2,
+  kFrustumLp2Exact = 3,
+  kFrustumHull = 4,
+  kCone = 5,
+  kCombined = 6,
+};
+
+// Every policy, kNone first.
+std::span<const CullPolicy> allCullPolicies();
+// "none", "backface_lp2", "frustum_lp2_global", "frustum_lp2_exact", "frustum_hull",
+// "cone", "combined".
+std::string_view cullPolicyName(CullPolicy policy);
+std::optional<CullPolicy> parseCullPolicy(std::string_view name);
+// One line for reports, with the source it follows.
+std::string_view cullPolicyDescription(CullPolicy policy);
+// True for the policies that never cull a patch covering a pixel (the hull and cone
+// tests): frustum_hull, cone, combined.
+bool isConservative(CullPolicy policy);
+
+// frustum_lp2_global's margin as a fraction of the asset's bounding-box diagonal.
+inline constexpr double kGlobalMarginOfDiagonal = 0.02;
+inline constexpr size_t kCullHullPoints = 20;  // kTbCullHullPoints
+
+// One patch as cull.glsl reads it (TbCullPatch), in float.
+struct CullPatchBounds {
+  uint32_t corner_count = 4;  // 3 for a triangle patch
+  std::array<Vec3f, 4> corner_position{};
+  // frustum_lp2_exact's margin at each corner (world units): the largest bulge over the
+  // corners' flat triangle or quad of any patch around the corner's welded position.
+  std::array<float, 4> corner_margin{};
+  std::array<Vec3f, 4> corner_normal{};
+  Vec3f cone_axis{0, 0, 0};
+  float cone_sine = 2;  // sin of the cone's half angle; > 1: no cone (cone never culls)
+  std::vector<Vec3f> hull;  // at most kCullHullPoints
+  float displacement_bound = 0;  // world units; 0 until displacement maps exist
+};
+
+struct CullBounds {
+  std::vector<CullPatchBounds> patches;  // SurfacePatches order
+  float global_margin = 0;               // world units
+  size_t patches_without_hull = 0;       // technique gave no bounds: hull = the corners
+  size_t patches_without_cone = 0;       // no bounds, or normals spanning 90 degrees or more
+};
+
+// The bounds of every patch: corners from `corners` (factorCorners), hull and cone from
+// SurfacePatches::cullBounds. world_scale: the bounding-box diagonal (the global margin).
+CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corners,
+                      double world_scale);
+
+// The policy and the view as the shader reads them (TbCullParamsBlock), in float.
+struct CullParams {
+  // Unit-normal world-space frustum planes (x, y, z, w), inside when xyz . p + w >= 0: left,
+  // right, top, bottom, near, far of Vulkan's clip volume (|x|, |y| <= w, 0 <= z <= w).
+  std::array<std::array<float, 4>, 6> planes{};
+  Vec3f eye{0, 0, 0};
+  float global_margin = 0;
+  CullPolicy policy = CullPolicy::kNone;
+};
+CullParams cullParams(CullPolicy policy, const View& view, const CullBounds& bounds);
+
+// The twin of tbCullPatch: true when the policy culls the patch.
+bool cullsPatch(const CullParams& params, const CullPatchBounds& patch);
+// Per SurfacePatches patch: 1 when culled.
+std::vector<uint8_t> cullDecisions(const CullParams& params, const CullBounds& bounds);
+
+// The device's input for `program` (one of the patches' gpuPrograms()): bounds in program
+// patch order (GpuPatchProgram::patch_ids). The two halves apart, for callers that pack the
+// bounds once and the view per frame: TcsCullPolicy::param_words and ::patch_words.
+gpu::TcsCullPolicy tcsCullPolicy(const CullParams& params, const CullBounds& bounds,
+                                 const gpu::GpuPatchProgram& program);
+std::vector<uint32_t> cullParamWords(const CullParams& params);
+std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
+                                     const gpu::GpuPatchProgram& program);
+
+}  // namespace tb

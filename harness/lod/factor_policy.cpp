@@ -1,0 +1,307 @@
+#include "harness/lod/factor_policy.h"
+
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "core/mesh/topology.h"
+#include "core/tess/factor_helpers.h"
+
+namespace tb {
+namespace {
+
+constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
+constexpr size_t kParamWords = 32;   // TbFactorParamsBlock, std430
+constexpr size_t kCornerWords = 32;  // 4 corners x (position vec4, normal vec4)
+constexpr const char* kOrderDependentSuffix = "_order_dependent";
+
+// The shader's helpers, in its operation order (shaders/common/float_order.glsl).
+float dotF(const Vec3f& a, const Vec3f& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+float lengthF(const Vec3f& v) { return std::sqrt(dotF(v, v)); }
+Vec3f normalizeF(const Vec3f& v) {
+  const float len = std::sqrt(dotF(v, v));
+  if (!(len > 0.0f)) return v;
+  const float inv = 1.0f / len;
+  return {v[0] * inv, v[1] * inv, v[2] * inv};
+}
+Vec3f sub(const Vec3f& a, const Vec3f& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3f add(const Vec3f& a, const Vec3f& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+bool positionLess(const Vec3f& a, const Vec3f& b) {
+  if (a[0] != b[0]) return a[0] < b[0];
+  if (a[1] != b[1]) return a[1] < b[1];
+  return a[2] < b[2];
+}
+
+// tbClipW: row 3 of the matrix times (p, 1), left to right.
+float clipW(const FactorParams& params, const Vec3f& p) {
+  const auto& m = params.view_projection;
+  return m[0 * 4 + 3] * p[0] + m[1 * 4 + 3] * p[1] + m[2 * 4 + 3] * p[2] + m[3 * 4 + 3];
+}
+
+const char* kindName(FactorPolicyKind kind) {
+  switch (kind) {
+    case FactorPolicyKind::kUniform:
+      return "uniform";
+    case FactorPolicyKind::kDistance:
+      return "distance";
+    case FactorPolicyKind::kSphereDiameter:
+      return "sphere_diameter";
+    case FactorPolicyKind::kLp2Edge:
+      return "lp2_edge";
+  }
+  return "?";
+}
+
+// Area-weighted (Newell) face normals summed per welded position, normalised.
+std::vector<Vec3f> weldedNormals(const Mesh& mesh, const Welding& welding) {
+  std::vector<Vec3d> sums(mesh.positions.size(), Vec3d{0, 0, 0});
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const std::span<const uint32_t> corners = mesh.facePositions(f);
+    Vec3d normal{0, 0, 0};
+    for (size_t i = 0; i < corners.size(); ++i) {
+      normal = normal + cross(mesh.positions[corners[i]],
+                              mesh.positions[corners[(i + 1) % corners.size()]]);
+    }
+    for (uint32_t c : corners) {
+      Vec3d& sum = sums[welding.canonical[c]];
+      sum = sum + normal;
+    }
+  }
+  std::vector<Vec3f> normals(mesh.positions.size());
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3d n = normalize(sums[welding.canonical[v]]);
+    normals[v] = {float(n[0]), float(n[1]), float(n[2])};
+  }
+  return normals;
+}
+
+}  // namespace
+
+std::string FactorPolicy::name() const {
+  std::string name = kindName(kind);
+  if (silhouette) name += "_silhouette";
+  if (roundness) name += "_roundness";
+  if (order_dependent) name += kOrderDependentSuffix;
+  return name;
+}
+
+const char* FactorPolicy::targetUnit() const {
+  switch (kind) {
+    case FactorPolicyKind::kUniform:
+      return "level";
+    case FactorPolicyKind::kDistance:
+      return "level at 1 diagonal";
+    case FactorPolicyKind::kSphereDiameter:
+      return "px/edge";
+    case FactorPolicyKind::kLp2Edge:
+      return "C";
+  }
+  return "";
+}
+
+double defaultTarget(FactorPolicyKind kind) {
+  switch (kind) {
+    case FactorPolicyKind::kUniform:
+      return 8;
+    case FactorPolicyKind::kDistance:
+      return 16;
+    case FactorPolicyKind::kSphereDiameter:
+      return 8;
+    case FactorPolicyKind::kLp2Edge:
+      return 0.15;
+  }
+  return 1;
+}
+
+std::optional<FactorPolicy> parseFactorPolicy(std::string_view name) {
+  FactorPolicy policy;
+  const std::string_view suffix = kOrderDependentSuffix;
+  if (name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix) {
+    policy.order_dependent = true;
+    name.remove_suffix(suffix.size());
+  }
+  if (name == "lp2_edge_silhouette") {
+    policy.kind = FactorPolicyKind::kLp2Edge;
+    policy.silhouette = true;
+  } else if (name == "lp2_edge_roundness") {
+    policy.kind = FactorPolicyKind::kLp2Edge;
+    policy.roundness = true;
+  } else {
+    bool found = false;
+    for (FactorPolicyKind kind :
+         {FactorPolicyKind::kUniform, FactorPolicyKind::kDistance,
+          FactorPolicyKind::kSphereDiameter, FactorPolicyKind::kLp2Edge}) {
+      if (name == kindName(kind)) {
+        policy.kind = kind;
+        found = true;
+      }
+    }
+    if (!found) return std::nullopt;
+  }
+  policy.target = defaultTarget(policy.kind);
+  return policy;
+}
+
+FactorCorners factorCorners(const SurfacePatches& patches) {
+  const Mesh& mesh = patches.controlMesh();
+  const Welding welding = weldByPosition(mesh);
+  const std::vector<Vec3f> normals = weldedNormals(mesh, welding);
+  FactorCorners out;
+  out.patches.resize(patches.patchCount());
+  out.domains.resize(patches.patchCount());
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    out.domains[p] = patches.patchDomain(p);
+    const size_t count = out.domains[p] == PatchDomain::kQuad ? 4 : 3;
+    const std::array<uint32_t, 4> corners = patches.patchCorners(p);
+    for (size_t c = 0; c < count; ++c) {
+      const Vec3d& position = mesh.positions[corners[c]];
+      out.patches[p][c] = {{float(position[0]), float(position[1]), float(position[2])},
+                           normals[corners[c]]};
+    }
+  }
+  return out;
+}
+
+FactorParams factorParams(const FactorPolicy& policy, const View& view, tess::Spacing spacing,
+                          double world_scale) {
+  FactorParams params;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) params.view_projection[c * 4 + r] = float(view.view_projection.m[c][r]);
+  }
+  params.eye = {float(view.eye[0]), float(view.eye[1]), float(view.eye[2])};
+  params.viewport_height_px = float(view.viewport_height_px);
+  params.projection_y_scale = float(view.projection_y_scale);
+  params.target = float(policy.kind == FactorPolicyKind::kDistance ? policy.target * world_scale
+                                                                   : policy.target);
+  params.pixel_scale = float(double(view.viewport_height_px) / (2 * policy.target));
+  params.min_scale = float(policy.min_scale);
+  params.roundness_span =
+      float(1 - std::cos(policy.roundness_angle_deg * std::numbers::pi / 180));
+  params.policy = uint32_t(policy.kind);
+  params.flags = (policy.order_dependent ? kFlagOrderDependent : 0) |
+                 (policy.silhouette ? kFlagSilhouette : 0) |
+                 (policy.roundness ? kFlagRoundness : 0);
+  params.reduction = uint32_t(policy.reduction);
+  params.spacing = uint32_t(spacing);
+  return params;
+}
+
+float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
+                 const FactorCorner& corner_b) {
+  Vec3f a = corner_a.position, b = corner_b.position;
+  Vec3f na = corner_a.normal, nb = corner_b.normal;
+  if ((params.flags & kFlagOrderDependent) == 0 && positionLess(b, a)) {
+    std::swap(a, b);
+    std::swap(na, nb);
+  }
+  const Vec3f edge = sub(b, a);
+  const Vec3f mid = {a[0] + edge[0] * 0.5f, a[1] + edge[1] * 0.5f, a[2] + edge[2] * 0.5f};
+  float factor = 0;
+  switch (FactorPolicyKind(params.policy)) {
+    case FactorPolicyKind::kUniform:
+      factor = params.target;
+      break;
+    case FactorPolicyKind::kDistance:
+      factor = params.target / lengthF(sub(mid, params.eye));
+      break;
+    case FactorPolicyKind::kSphereDiameter: {
+      const float ndc_height =
+          std::fabs(lengthF(edge) * params.projection_y_scale / clipW(params, mid));
+      factor = ndc_height * params.pixel_scale;
+      break;
+    }
+    case FactorPolicyKind::kLp2Edge: {
+      const float lrc = lengthF(edge) * params.viewport_height_px * params.target;
+      const float f0 = lrc / lengthF(sub(a, params.eye));
+      const float f1 = lrc / lengthF(sub(b, params.eye));
+      factor = f0 < f1 ? f1 : f0;
+      break;
+    }
+  }
+  if ((params.flags & kFlagSilhouette) != 0) {
+    const Vec3f n = normalizeF(add(na, nb));
+    const Vec3f v = normalizeF(sub(params.eye, mid));
+    const float scale = 1.0f - (1.0f - params.min_scale) * std::fabs(dotF(n, v));
+    factor = factor * scale;
+  }
+  if ((params.flags & kFlagRoundness) != 0) {
+    const float turn = (1.0f - dotF(na, nb)) / params.roundness_span;
+    const float scale = params.min_scale + (1.0f - params.min_scale) * (turn < 1.0f ? turn : 1.0f);
+    factor = factor * scale;
+  }
+  return factor;
+}
+
+tess::Levels policyLevels(const FactorParams& params, PatchDomain domain,
+                          const std::array<FactorCorner, 4>& corners) {
+  const auto spacing = tess::Spacing(params.spacing);
+  const auto reduction = InnerReduction(params.reduction);
+  if (domain == PatchDomain::kQuad) {
+    // gl_TessLevelOuter order (u = 0, v = 0, u = 1, v = 1): corners (3,0), (0,1), (1,2), (2,3).
+    std::array<float, 4> raw{};
+    for (size_t j = 0; j < 4; ++j) raw[j] = edgeFactor(params, corners[(j + 3) % 4], corners[j]);
+    switch (reduction) {
+      case InnerReduction::kMax:
+        return tess::processQuadTessFactorsMax(spacing, raw, 1.0f).rounded;
+      case InnerReduction::kMin:
+        return tess::processQuadTessFactorsMin(spacing, raw, 1.0f).rounded;
+      case InnerReduction::kAverage:
+        break;
+    }
+    return tess::processQuadTessFactorsAvg(spacing, raw, 1.0f).rounded;
+  }
+  // (u = 0, v = 0, w = 0): corners (1,2), (2,0), (0,1).
+  std::array<float, 3> raw{};
+  for (size_t j = 0; j < 3; ++j) {
+    raw[j] = edgeFactor(params, corners[(j + 1) % 3], corners[(j + 2) % 3]);
+  }
+  switch (reduction) {
+    case InnerReduction::kMax:
+      return tess::processTriTessFactorsMax(spacing, raw, 1.0f).rounded;
+    case InnerReduction::kMin:
+      return tess::processTriTessFactorsMin(spacing, raw, 1.0f).rounded;
+    case InnerReduction::kAverage:
+      break;
+  }
+  return tess::processTriTessFactorsAvg(spacing, raw, 1.0f).rounded;
+}
+
+std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners) {
+  std::vector<tess::Levels> levels(corners.patches.size());
+  for (size_t p = 0; p < levels.size(); ++p) {
+    levels[p] = policyLevels(params, corners.domains[p], corners.patches[p]);
+  }
+  return levels;
+}
+
+gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCorners& corners,
+                                     const gpu::GpuPatchProgram& program) {
+  gpu::TcsFactorPolicy out;
+  out.corner_words.reserve(size_t(program.patch_count) * kCornerWords);
+  for (uint32_t i = 0; i < program.patch_count; ++i) {
+    const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
+    for (const FactorCorner& corner : corners.patches.at(patch)) {
+      for (const Vec3f* v : {&corner.position, &corner.normal}) {
+        for (int k = 0; k < 3; ++k) out.corner_words.push_back(std::bit_cast<uint32_t>((*v)[k]));
+        out.corner_words.push_back(0);
+      }
+    }
+  }
+  out.param_words.reserve(kParamWords);
+  for (float m : params.view_projection) out.param_words.push_back(std::bit_cast<uint32_t>(m));
+  for (int k = 0; k < 3; ++k) out.param_words.push_back(std::bit_cast<uint32_t>(params.eye[k]));
+  out.param_words.push_back(0);
+  for (float f : {params.viewport_height_px, params.projection_y_scale, params.target,
+                  params.pixel_scale, params.min_scale, params.roundness_span}) {
+    out.param_words.push_back(std::bit_cast<uint32_t>(f));
+  }
+  const uint32_t domain = program.domain == tess::Domain::kQuad ? 1u : 0u;
+  for (uint32_t u : {params.policy, params.flags, params.reduction, params.spacing, domain, 0u}) {
+    out.param_words.push_back(u);
+  }
+  return out;
+}
+
+}  // namespace tb

@@ -1,0 +1,372 @@
+#include "harness/lod/screen_metrics.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "harness/lod/reference_scheme.h"
+#include "reference/limit_face.h"
+
+namespace tb {
+namespace {
+
+// How patch p's parameter maps to its limit face p (as the error measure maps it).
+enum ReferenceMap : uint8_t {
+  kNoReference,  // no limit face, or a parameterisation the face does not share
+  kQuadUv,       // quad patch on a Catmull-Clark face: (u, v) = (coord[0], coord[1])
+  kLoopUv,       // triangle patch on a Loop face: Bfr's corners (0,0), (1,0), (0,1) weigh
+                 // (1 - u - v, u, v), so (u, v) = (coord[1], coord[2])
+};
+
+// Sums of one set of screen distances, added in a fixed order.
+struct ErrorSums {
+  uint64_t samples = 0;
+  double max_px = 0, squared_px2 = 0;
+  void add(double distance_px) {
+    ++samples;
+    max_px = std::max(max_px, distance_px);
+    squared_px2 += distance_px * distance_px;
+  }
+  void merge(const ErrorSums& other) {
+    samples += other.samples;
+    max_px = std::max(max_px, other.max_px);
+    squared_px2 += other.squared_px2;
+  }
+  ScreenErrorFigures figures() const {
+    if (samples == 0) return {};
+    return {samples, max_px, std::sqrt(squared_px2 / double(samples))};
+  }
+};
+
+bool inFront(const View& view, const ProjectedPoint& p) { return p.clip_w >= view.near_plane; }
+bool inside(const View& view, const ProjectedPoint& p) {
+  return p.x_px >= 0 && p.x_px <= view.viewport_width_px && p.y_px >= 0 &&
+         p.y_px <= view.viewport_height_px;
+}
+bool visible(const View& view, const ProjectedPoint& p) {
+  return inFront(view, p) && inside(view, p);
+}
+double distancePx(const ProjectedPoint& a, const ProjectedPoint& b) {
+  const double dx = a.x_px - b.x_px, dy = a.y_px - b.y_px;
+  return std::sqrt(dx * dx + dy * dy);
+}
+ProjectedPoint project(const View& view, const Vec3d& p) {
+  return projectToPixels(view, p.x, p.y, p.z);
+}
+
+// The piecewise-linear surface at a blend of tessellation vertices (points evaluated
+// with a ScreenPattern's batch pattern: the vertices first).
+Vec3d blendPosition(const BatchPoints& points, const VertexBlend& blend) {
+  Vec3d r{0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    r = r + blend.weight[k] * BatchPoints::at(points.position, blend.index[k]);
+  }
+  return r;
+}
+
+// One thread's evaluation buffers, reused from patch to patch.
+struct Scratch {
+  BatchPoints points, before;
+  std::vector<ProjectedPoint> projected;
+};
+
+// What one patch contributes, reduced serially in patch order.
+struct PatchSlot {
+  ErrorSums tessellation, reference;
+  size_t edges = 0;  // visible edge lengths written at the patch's offset
+};
+
+// Consecutive patches [begin, end) evaluated together, and their distinct patterns.
+struct Chunk {
+  size_t begin = 0, end = 0;
+  std::vector<ScreenPatternKey> keys;           // distinct, in order of first use
+  std::array<std::vector<uint32_t>, 2> key_of;  // per level set: the key of patch begin + i
+};
+
+// True when the chunk's patches share their patterns enough (on average 4 patches a
+// pattern or more) for the technique's tabulated batch kernel to pay for building it;
+// adaptive frames give most patches their own levels, and then point-by-point evaluation
+// is cheaper. Either way the figures agree to rounding (~1e-12 relative).
+bool sharesPatterns(const Chunk& chunk) {
+  return 4 * chunk.keys.size() <= chunk.end - chunk.begin;
+}
+
+// Splits the patches into chunks whose distinct patterns need about kScreenPatternPoints
+// batch points at most (at least one patch each) and calls fn(chunk) in patch order.
+template <class Fn>
+void forEachChunk(const SurfacePatches& patches, tess::Spacing spacing,
+                  std::span<const std::span<const tess::Levels>> sets, Fn&& fn) {
+  assert(sets.size() <= std::tuple_size_v<decltype(Chunk::key_of)>);
+  Chunk chunk;
+  std::map<ScreenPatternKey, uint32_t> index;
+  size_t points = 0;
+  const size_t patch_count = patches.patchCount();
+  for (size_t p = 0; p < patch_count; ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    auto new_points = [&] {
+      size_t extra = 0;
+      for (const auto& set : sets) {
+        if (!index.contains(screenPatternKey(domain, spacing, set[p]))) {
+          extra += estimateScreenPatternPoints(domain, set[p]);
+        }
+      }
+      return extra;
+    };
+    size_t extra = new_points();
+    if (p > chunk.begin && points + extra > kScreenPatternPoints) {
+      chunk.end = p;
+      fn(chunk);
+      chunk = Chunk{p, p, {}, {}};
+      index.clear();
+      points = 0;
+      extra = new_points();
+    }
+    points += extra;
+    for (size_t s = 0; s < sets.size(); ++s) {
+      const ScreenPatternKey key = screenPatternKey(domain, spacing, sets[s][p]);
+      const auto [it, added] = index.emplace(key, uint32_t(chunk.keys.size()));
+      if (added) chunk.keys.push_back(key);
+      chunk.key_of[s].push_back(it->second);
+    }
+  }
+  chunk.end = patch_count;
+  if (chunk.end > chunk.begin) fn(chunk);
+}
+
+void requireLevels(const SurfacePatches& patches, std::span<const tess::Levels> levels) {
+  if (levels.size() != patches.patchCount()) {
+    throw std::invalid_argument("screen metrics: " + std::to_string(levels.size()) +
+                                " level sets for " + std::to_string(patches.patchCount()) +
+                                " patches");
+  }
+}
+
+void projectVertices(const View& view, size_t vertex_count, const BatchPoints& points,
+                     std::vector<ProjectedPoint>* projected) {
+  projected->resize(vertex_count);
+  for (size_t i = 0; i < vertex_count; ++i) {
+    (*projected)[i] = project(view, BatchPoints::at(points.position, i));
+  }
+}
+
+// FrameScreenFigures::tessellation_error of one patch.
+void addTessellationError(const ScreenPattern& pattern, const BatchPoints& points, const View& view,
+                          ErrorSums* sums) {
+  const size_t first = pattern.vertexCount();
+  for (size_t i = 0; i < pattern.samples.size(); ++i) {
+    const ProjectedPoint surface = project(view, BatchPoints::at(points.position, first + i));
+    if (!visible(view, surface)) continue;
+    const ProjectedPoint linear = project(view, blendPosition(points, pattern.samples[i]));
+    if (!inFront(view, linear)) continue;
+    sums->add(distancePx(surface, linear));
+  }
+}
+
+// The visible edges' lengths of one patch into `out`; returns how many.
+size_t writeEdgeLengths(const ScreenPattern& pattern, std::span<const ProjectedPoint> projected,
+                        const View& view, double* out) {
+  size_t written = 0;
+  for (const auto& e : pattern.edges) {
+    const ProjectedPoint& a = projected[e[0]];
+    const ProjectedPoint& b = projected[e[1]];
+    if (!inFront(view, a) || !inFront(view, b) || (!inside(view, a) && !inside(view, b))) continue;
+    out[written++] = distancePx(a, b);
+  }
+  return written;
+}
+
+// FrameScreenFigures::reference_error of patch p, at its visible tessellation vertices.
+void addReferenceError(const ref::LimitSurface& limit, size_t p, ReferenceMap map,
+                       const ScreenPattern& pattern, std::span<const ProjectedPoint> projected,
+                       const View& view, ErrorSums* sums) {
+  std::optional<ref::LimitFace> face;  // prepared at the first visible vertex
+  const std::vector<DomainCoord>& coords = pattern.vertex_coords;
+  for (size_t i = 0; i < coords.size(); ++i) {
+    if (!visible(view, projected[i])) continue;
+    if (!face) face.emplace(limit.face(p));
+    const DomainCoord& c = coords[i];
+    const ref::LimitPoint exact =
+        map == kQuadUv ? face->evaluate(c[0], c[1]) : face->evaluate(c[1], c[2]);
+    const ProjectedPoint reference = project(view, exact.position);
+    if (!inFront(view, reference)) continue;
+    sums->add(distancePx(projected[i], reference));
+  }
+}
+
+// Percentiles and band of the visible edge lengths (any order; sorted here).
+ScreenEdgeFigures edgeFigures(std::vector<double> lengths_px, double target_px) {
+  ScreenEdgeFigures f;
+  f.edges = lengths_px.size();
+  if (lengths_px.empty()) return f;
+  const size_t in_band = size_t(std::count_if(lengths_px.begin(), lengths_px.end(), [&](double l) {
+    return l >= 0.5 * target_px && l <= 2 * target_px;
+  }));
+  f.fraction_in_band = double(in_band) / double(lengths_px.size());
+  std::sort(lengths_px.begin(), lengths_px.end());
+  // Nearest rank: the smallest value with at least `percent` % of the values at or below it.
+  const size_t n = lengths_px.size();
+  auto rank = [&](size_t percent) {
+    return lengths_px[std::max<size_t>(1, (percent * n + 99) / 100) - 1];
+  };
+  f.p05_px = rank(5);
+  f.median_px = rank(50);
+  f.p95_px = rank(95);
+  return f;
+}
+
+}  // namespace
+
+ScreenMetrics::ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurface* limit)
+    : patches_(patches), limit_(limit), cache_(patches, kScreenPatternPoints) {
+  if (limit == nullptr) return;
+  const ref::Scheme scheme = referenceScheme(patches.approximates());
+  if (limit->scheme() != scheme || limit->faceCount() != patches.patchCount()) {
+    throw std::logic_error("screen metrics: the limit surface (" +
+                           std::string(ref::schemeName(limit->scheme())) + ", " +
+                           std::to_string(limit->faceCount()) + " faces) is not the " +
+                           std::string(ref::schemeName(scheme)) + " limit of the " +
+                           std::to_string(patches.patchCount()) + " patches' control mesh");
+  }
+  reference_map_.assign(patches.patchCount(), kNoReference);
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    if (!limit->hasLimitSurface(p)) continue;
+    const PatchDomain domain = patches.patchDomain(p);
+    if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) {
+      reference_map_[p] = kQuadUv;
+    } else if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) {
+      reference_map_[p] = kLoopUv;
+    }
+  }
+}
+
+FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
+                                        const View& view) {
+  requireLevels(patches_, levels);
+  FrameScreenFigures figures;
+  figures.reference_measured = limit_ != nullptr;
+  ErrorSums tessellation, reference;
+  std::vector<double> lengths_px;
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  const std::span<const tess::Levels> sets[] = {levels};
+  forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
+    const std::vector<const ScreenPattern*> patterns =
+        cache_.acquire(chunk.keys, kPatternEdges | kPatternSamples, sharesPatterns(chunk));
+    const size_t count = chunk.end - chunk.begin;
+    auto pattern_of = [&](size_t i) -> const ScreenPattern& {
+      return *patterns[chunk.key_of[0][i]];
+    };
+    std::vector<size_t> edge_start(count + 1, 0);
+    for (size_t i = 0; i < count; ++i) {
+      edge_start[i + 1] = edge_start[i] + pattern_of(i).edges.size();
+    }
+    std::vector<double> chunk_lengths_px(edge_start[count]);
+    std::vector<PatchSlot> slots(count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+      const ScreenPattern& pattern = pattern_of(i);
+      if (pattern.culled) return;
+      const size_t p = chunk.begin + i;
+      Scratch& s = scratch.local();
+      patches_.evaluateBatch(p, *pattern.points, s.points);
+      projectVertices(view, pattern.vertexCount(), s.points, &s.projected);
+      addTessellationError(pattern, s.points, view, &slots[i].tessellation);
+      slots[i].edges =
+          writeEdgeLengths(pattern, s.projected, view, chunk_lengths_px.data() + edge_start[i]);
+      if (limit_ != nullptr && reference_map_[p] != kNoReference) {
+        addReferenceError(*limit_, p, ReferenceMap(reference_map_[p]), pattern, s.projected, view,
+                          &slots[i].reference);
+      }
+    });
+    for (size_t i = 0; i < count; ++i) {
+      const ScreenPattern& pattern = pattern_of(i);
+      if (pattern.culled) continue;
+      ++figures.patches;
+      figures.triangles += pattern.triangles.size();
+      figures.domain_points += pattern.vertexCount();
+      tessellation.merge(slots[i].tessellation);
+      reference.merge(slots[i].reference);
+      if (limit_ != nullptr && reference_map_[chunk.begin + i] == kNoReference) {
+        ++figures.patches_without_reference;
+      }
+      const double* first = chunk_lengths_px.data() + edge_start[i];
+      lengths_px.insert(lengths_px.end(), first, first + slots[i].edges);
+    }
+  });
+  figures.tessellation_error = tessellation.figures();
+  figures.reference_error = reference.figures();
+  figures.edges = edgeFigures(std::move(lengths_px), view.target_pixels_per_edge);
+  return figures;
+}
+
+ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
+                                                    std::span<const tess::Levels> levels,
+                                                    const View& view, uint64_t* triangles) {
+  requireLevels(patches_, levels);
+  ErrorSums sums;
+  uint64_t triangle_count = 0;
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  const std::span<const tess::Levels> sets[] = {levels};
+  forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
+    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternSamples, sharesPatterns(chunk));
+    const size_t count = chunk.end - chunk.begin;
+    std::vector<ErrorSums> slots(count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+      const ScreenPattern& pattern = *patterns[chunk.key_of[0][i]];
+      if (pattern.culled) return;
+      const size_t p = chunk.begin + i;
+      Scratch& s = scratch.local();
+      patches_.evaluateBatch(p, *pattern.points, s.points);
+      addTessellationError(pattern, s.points, view, &slots[i]);
+    });
+    for (size_t i = 0; i < count; ++i) {
+      sums.merge(slots[i]);
+      triangle_count += patterns[chunk.key_of[0][i]]->triangles.size();
+    }
+  });
+  if (triangles != nullptr) *triangles = triangle_count;
+  return sums.figures();
+}
+
+ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tess::Levels> before,
+                                      std::span<const tess::Levels> after, const View& view) {
+  requireLevels(patches_, before);
+  requireLevels(patches_, after);
+  ErrorSums sums;
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  const std::span<const tess::Levels> sets[] = {before, after};
+  forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
+    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternLattice, sharesPatterns(chunk));
+    const size_t count = chunk.end - chunk.begin;
+    std::vector<ErrorSums> slots(count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+      const ScreenPattern& was = *patterns[chunk.key_of[0][i]];
+      const ScreenPattern& is = *patterns[chunk.key_of[1][i]];
+      if (was.culled || is.culled) return;
+      const size_t p = chunk.begin + i;
+      Scratch& s = scratch.local();
+      patches_.evaluateBatch(p, *is.points, s.points);
+      const BatchPoints* was_points = &s.points;
+      if (&was != &is) {
+        patches_.evaluateBatch(p, *was.points, s.before);
+        was_points = &s.before;
+      }
+      for (size_t k = 0; k < is.lattice.size(); ++k) {
+        const ProjectedPoint now = project(view, blendPosition(s.points, is.lattice[k]));
+        if (!visible(view, now)) continue;
+        const ProjectedPoint then = project(view, blendPosition(*was_points, was.lattice[k]));
+        if (!inFront(view, then)) continue;
+        slots[i].add(distancePx(now, then));
+      }
+    });
+    for (const ErrorSums& slot : slots) sums.merge(slot);
+  });
+  return sums.figures();
+}
+
+}  // namespace tb

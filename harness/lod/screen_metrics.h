@@ -1,0 +1,113 @@
+// Screen-space figures of a tessellated surface under one camera view (CPU only): what a
+// view-dependent tessellation-factor policy (seed 002) buys and costs on screen. Given the
+// patches, a spacing, one tess::Levels per patch and a View (core/view/view.h), the CPU
+// tessellator (core/tess) tessellates each patch as the GPU would, the technique's double
+// evaluator places its points (batched, techniques/batch_eval.h), and the view's double
+// matrix projects them to pixels.
+//
+// Visibility, used by every figure: a point is in front when its clip w >= view.near_plane
+// (perspective views: clip w is the distance along the view direction), and inside when its
+// pixel lies in the closed viewport [0, width] x [0, height].
+//
+// Results are byte-identical whatever the thread count: patches are evaluated in parallel
+// into per-patch slots and reduced serially in patch order.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "core/tess/tessellator.h"
+#include "core/view/view.h"
+#include "harness/lod/screen_patterns.h"
+#include "reference/limit_surface.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+// On-screen length of tessellated triangle edges, pixels. Each patch's unique edges (an
+// edge shared by two patches counts once in each); an edge is visible when both ends are
+// in front and at least one is inside.
+struct ScreenEdgeFigures {
+  uint64_t edges = 0;  // visible edges (0 when nothing is on screen)
+  // Nearest-rank percentiles of the visible edges' lengths, pixels (0 without edges). A
+  // factor policy aims them at view.target_pixels_per_edge; edges cut by the viewport
+  // border count at their full projected length.
+  double median_px = 0, p05_px = 0, p95_px = 0;
+  // Fraction of visible edges within [0.5, 2] x view.target_pixels_per_edge: best 1, worst 0.
+  double fraction_in_band = 0;
+};
+
+// A screen-space distance over samples, pixels: best 0; a visible artefact starts near 0.5.
+struct ScreenErrorFigures {
+  uint64_t samples = 0;  // visible samples (0: the other fields are 0)
+  double max_px = 0;     // largest distance
+  double rms_px = 0;     // root mean square over the visible samples
+};
+
+struct FrameScreenFigures {
+  // The CPU tessellator's output over the non-culled patches (visible or not).
+  uint64_t patches = 0;        // patches not culled by their levels
+  uint64_t triangles = 0;      // tessellated triangles
+  uint64_t domain_points = 0;  // unique domain points (TES invocations)
+  ScreenEdgeFigures edges;
+  // Piecewise-linear tessellation against the technique's own surface (chord error): in
+  // every triangle, at its centroid and at the midpoint of each of its edges (each unique
+  // edge once per patch), the surface S(c) against the blend of the triangle's evaluated
+  // vertices with the same barycentric weights; both projected. Visible: S(c) in front and
+  // inside, the blended point in front. 0 on a surface affine in its parameter (flat).
+  ScreenErrorFigures tessellation_error;
+  // The technique's surface against the reference limit at the same parameter, sampled at
+  // the tessellation's vertices (its visible points: what the GPU draws there). Visible:
+  // the technique's point in front and inside, the limit's point in front. 0 where the
+  // technique is exact (acc on regular faces); all zero when no limit was given.
+  ScreenErrorFigures reference_error;
+  bool reference_measured = false;  // a limit was given
+  // Non-culled patches left out of reference_error: faces without a limit surface (holes,
+  // boundary faces without interpolation) and patches whose domain does not share the
+  // limit face's parameterisation (triangle patches on a Catmull-Clark mesh, whose faces
+  // Bfr splits into quad sub-faces). 0 when no limit was given.
+  uint64_t patches_without_reference = 0;
+};
+
+// Batch-pattern points kept between calls (each costs its coordinates plus the technique's
+// basis weights, up to ~0.5 KB for a Gregory patch), and the most a chunk of patches
+// evaluated together may need: large assets are processed in consecutive chunks.
+inline constexpr size_t kScreenPatternPoints = size_t(1) << 18;
+
+// One per technique instance; not thread-safe itself, parallel inside (TBB). Every call
+// takes one level set per patch (levels.size() == patches.patchCount(), else
+// std::invalid_argument); a patch whose levels cull it contributes nothing.
+class ScreenMetrics {
+ public:
+  // `limit`: null, or the reference limit of patches.controlMesh() under the scheme
+  // patches.approximates() names (referenceScheme, harness/lod/reference_scheme.h); std::logic_error when its
+  // scheme or face count does not match. Both must outlive this object.
+  ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurface* limit);
+
+  FrameScreenFigures frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
+                           const View& view);
+
+  // Only FrameScreenFigures::tessellation_error and, when `triangles` is not null, the
+  // triangle count (what a parameter sweep needs; no edges, no reference).
+  ScreenErrorFigures tessellationError(tess::Spacing spacing, std::span<const tess::Levels> levels,
+                                       const View& view, uint64_t* triangles = nullptr);
+
+  // Popping between consecutive frames: how far the tessellated (piecewise-linear) surface
+  // moves on screen at fixed surface points because the levels changed, the camera held
+  // at `view` (the later frame's). At latticeCoords(domain, kPopSampleSegments) of every
+  // patch, the tessellation's point under `before` and under `after` (the blend of the
+  // evaluated corners of the triangle containing it); visible: the `after` point in front
+  // and inside, the `before` point in front. Patches culled in either frame are left out.
+  // Best 0 (identical levels give exactly 0).
+  ScreenErrorFigures pop(tess::Spacing spacing, std::span<const tess::Levels> before,
+                         std::span<const tess::Levels> after, const View& view);
+
+ private:
+  const SurfacePatches& patches_;
+  const ref::LimitSurface* limit_;
+  // Per patch: how the reference is sampled (screen_metrics.cpp, ReferenceMap).
+  std::vector<uint8_t> reference_map_;
+  ScreenPatternCache cache_;
+};
+
+}  // namespace tb

@@ -1,0 +1,293 @@
+#include "harness/measures/adaptivity/adaptivity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "core/gpu/patch_program.h"
+#include "core/mesh/bounds.h"
+
+namespace tb {
+namespace {
+
+// lavapipe tessellates on one thread and slows with many patches per draw (ARCHITECTURE
+// §6): about this many TES invocations a draw.
+constexpr uint64_t kInvocationsPerDraw = 4096;
+constexpr uint32_t kMaxPatchesPerDraw = 256;
+
+// The target range a search covers, per policy kind: coarse (few triangles) to fine.
+struct TargetRange {
+  double coarse, fine;
+};
+TargetRange targetRange(FactorPolicyKind kind) {
+  switch (kind) {
+    case FactorPolicyKind::kDistance:
+      return {0.25, 4096};  // level at one diagonal
+    case FactorPolicyKind::kSphereDiameter:
+      return {128, 0.25};  // pixels per edge
+    case FactorPolicyKind::kLp2Edge:
+      return {0.002, 20};  // C
+    case FactorPolicyKind::kUniform:
+      break;
+  }
+  return {1, 64};
+}
+
+// gl_TessLevelOuter index of local edge k (corner k to k + 1), technique.h.
+size_t outerIndex(PatchDomain domain, uint32_t local_edge) {
+  return domain == PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
+}
+
+uint32_t patchesPerDraw(std::span<const tess::Levels> levels) {
+  float highest = 1;
+  for (const tess::Levels& l : levels) {
+    for (float x : l.outer) highest = std::max(highest, x);
+    for (float x : l.inner) highest = std::max(highest, x);
+  }
+  const uint64_t side = uint64_t(std::ceil(std::min(highest, 64.0f))) + 1;
+  return uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / (side * side), 1, kMaxPatchesPerDraw));
+}
+
+tess::Levels levelsFromBits(const tess::LevelsBits& bits) {
+  tess::Levels levels;
+  for (int i = 0; i < 4; ++i) levels.outer[i] = std::bit_cast<float>(bits[i]);
+  for (int i = 0; i < 2; ++i) levels.inner[i] = std::bit_cast<float>(bits[4 + i]);
+  return levels;
+}
+
+}  // namespace
+
+uint64_t factorMismatches(const SurfacePatches& patches, const SharedBoundaries& shared,
+                          const std::vector<tess::Levels>& levels) {
+  uint64_t mismatches = 0;
+  for (const SharedEdge& edge : shared.edges) {
+    auto factorBits = [&](const PatchSide& side) {
+      const size_t j = outerIndex(patches.patchDomain(side.patch), side.local);
+      return std::bit_cast<uint32_t>(levels[side.patch].outer[j]);
+    };
+    const uint32_t first = factorBits(edge.sides.front());
+    const bool differs = std::any_of(edge.sides.begin() + 1, edge.sides.end(),
+                                     [&](const PatchSide& side) { return factorBits(side) != first; });
+    mismatches += differs ? 1 : 0;
+  }
+  return mismatches;
+}
+
+AdaptivityRun::AdaptivityRun(const SurfacePatches& patches, gpu::Context* context,
+                             std::string gpu_unavailable, const ref::LimitSurface* limit)
+    : patches_(patches),
+      context_(context),
+      programs_(patches.gpuPrograms()),
+      corners_(factorCorners(patches)),
+      shared_(findSharedBoundaries(patches)),
+      cracks_(std::make_unique<CrackSession>(patches)),
+      screen_(std::make_unique<ScreenMetrics>(patches, limit)) {
+  if (programs_.empty()) {
+    gpu_skip_ = "the technique has no GPU program";
+  } else if (context_ == nullptr) {
+    gpu_skip_ = "no Vulkan device (" + gpu_unavailable + ")";
+  }
+  if (!patches.controlMesh().positions.empty()) {
+    diagonal_ = diagonalOf(boundsOf(patches.controlMesh()));
+  }
+}
+
+AdaptivityRun::~AdaptivityRun() = default;
+
+std::vector<tess::Levels> AdaptivityRun::twinLevels(const FactorPolicy& policy,
+                                                    tess::Spacing spacing,
+                                                    const View& view) const {
+  return policyLevels(factorParams(policy, view, spacing, diagonal_), corners_);
+}
+
+void AdaptivityRun::runDevice(const FactorPolicy& policy, tess::Spacing spacing,
+                              const View& view, const std::vector<tess::Levels>& twin,
+                              bool cracks, AdaptivityFrame* frame) {
+  if (!gpu_skip_.empty()) return;
+  const FactorParams params = factorParams(policy, view, spacing, diagonal_);
+  std::vector<tess::Levels> device(twin.size());
+  for (const gpu::GpuPatchProgram& program : programs_) {
+    std::vector<tess::Levels> expected(program.patch_count);
+    for (uint32_t i = 0; i < program.patch_count; ++i) {
+      expected[i] = twin[program.patch_ids.empty() ? i : program.patch_ids[i]];
+    }
+    const gpu::TcsFactorPolicy device_policy = tcsFactorPolicy(params, corners_, program);
+    gpu::PatchProgramOptions options;
+    options.spacing = spacing;
+    options.capture = false;
+    options.statistics = true;
+    options.patches_per_draw = patchesPerDraw(expected);
+    options.factor_policy = &device_policy;
+    const gpu::PatchProgramCapture run =
+        gpu::runPatchProgram(*context_, program, expected, options);
+    frame->gpu_tcs_patches += run.stats.tcs_patches;
+    frame->gpu_tes_invocations += run.stats.tes_invocations;
+    frame->gpu_triangles += run.stats.primitives_generated;
+    frame->gpu_triangles_counted = run.stats.primitives_counted;
+    frame->gpu_host_s += run.submit_to_fence_s;
+    for (uint32_t i = 0; i < program.patch_count; ++i) {
+      const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
+      device[patch] = levelsFromBits(run.tcs_levels[i]);
+      if (run.tcs_levels[i] != tess::levelsBits(expected[i])) ++frame->twin_level_mismatches;
+    }
+  }
+  frame->factor_mismatches_gpu = factorMismatches(patches_, shared_, device);
+  if (cracks) frame->cracks_gpu = cracks_->measure(spacing, device, CrackBackend::kGpu, context_);
+  frame->gpu_measured = true;
+}
+
+void AdaptivityRun::countTessellations(tess::Spacing spacing,
+                                       const std::vector<tess::Levels>& levels,
+                                       AdaptivityFrame* frame) const {
+  std::map<std::pair<PatchDomain, tess::LevelsBits>, std::pair<uint64_t, uint64_t>> counted;
+  for (size_t p = 0; p < levels.size(); ++p) {
+    const PatchDomain domain = patches_.patchDomain(p);
+    auto [it, fresh] = counted.try_emplace({domain, tess::levelsBits(levels[p])});
+    if (fresh) {
+      const tess::Tessellation t = tess::tessellate(
+          domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle, spacing,
+          levels[p]);
+      it->second = {t.points.size(), t.triangles.size()};
+      if (t.culled) it->second = {0, 0};
+    }
+    if (it->second.first > 0) ++frame->patches;
+    frame->domain_points += it->second.first;
+    frame->triangles += it->second.second;
+  }
+}
+
+std::vector<AdaptivityFrame> AdaptivityRun::frames(const FactorPolicy& policy,
+                                                   tess::Spacing spacing,
+                                                   const std::vector<View>& views,
+                                                   const AdaptivityParts& parts) {
+  std::vector<AdaptivityFrame> frames;
+  std::vector<tess::Levels> previous;
+  for (size_t f = 0; f < views.size(); ++f) {
+    AdaptivityFrame frame;
+    frame.frame = uint32_t(f);
+    const std::vector<tess::Levels> levels = twinLevels(policy, spacing, views[f]);
+    if (parts.screen) {
+      frame.screen = screen_->frame(spacing, levels, views[f]);
+      frame.patches = frame.screen.patches;
+      frame.triangles = frame.screen.triangles;
+      frame.domain_points = frame.screen.domain_points;
+      if (f > 0) frame.pop = screen_->pop(spacing, previous, levels, views[f]);
+    } else {
+      countTessellations(spacing, levels, &frame);
+    }
+    frame.factor_mismatches_cpu = factorMismatches(patches_, shared_, levels);
+    if (parts.cracks) frame.cracks_cpu = cracks_->measure(spacing, levels, CrackBackend::kCpuFloat);
+    runDevice(policy, spacing, views[f], levels, parts.cracks, &frame);
+    frames.push_back(std::move(frame));
+    previous = levels;
+  }
+  return frames;
+}
+
+AdaptivityRun::PathError AdaptivityRun::pathError(const FactorPolicy& policy,
+                                                  tess::Spacing spacing,
+                                                  const std::vector<View>& views) {
+  PathError error;
+  uint64_t triangles = 0;
+  for (const View& view : views) {
+    uint64_t frame_triangles = 0;
+    const ScreenErrorFigures e = screen_->tessellationError(
+        spacing, twinLevels(policy, spacing, view), view, &frame_triangles);
+    error.max_px = std::max(error.max_px, e.max_px);
+    triangles += frame_triangles;
+  }
+  error.triangles_per_frame = views.empty() ? 0 : double(triangles) / double(views.size());
+  return error;
+}
+
+AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spacing spacing,
+                                           const std::vector<View>& views,
+                                           double error_target_px, int search_steps) {
+  AdaptivitySummary summary;
+  summary.error_target_px = error_target_px;
+
+  // The policy: the coarsest target on a log scale whose path error is within the target.
+  const TargetRange range = targetRange(policy.kind);
+  auto targetAt = [&](double fineness) {
+    return std::exp(std::log(range.coarse) +
+                    fineness * (std::log(range.fine) - std::log(range.coarse)));
+  };
+  auto errorAt = [&](double fineness) {
+    FactorPolicy p = policy;
+    p.target = targetAt(fineness);
+    ++summary.evaluations;
+    return pathError(p, spacing, views);
+  };
+  // Coarse to fine, so the cheap (coarse) end is tried first and the fine end, whose
+  // tessellations are the largest, only when nothing coarser reaches the target.
+  PathError best;
+  double best_fineness = -1;
+  const PathError coarse = errorAt(0.0);
+  if (coarse.max_px <= error_target_px) {
+    best = coarse;
+    best_fineness = 0.0;
+  } else {
+    double fails = 0.0, passes = 1.0;
+    for (int step = 0; step < search_steps; ++step) {
+      const double mid = 0.5 * (fails + passes);
+      const PathError e = errorAt(mid);
+      if (e.max_px <= error_target_px) {
+        best = e;
+        best_fineness = passes = mid;
+      } else {
+        fails = mid;
+      }
+    }
+    if (best_fineness < 0) {  // nothing passed: only the fine end is left to try
+      best = errorAt(1.0);
+      best_fineness = 1.0;
+    }
+  }
+  summary.reached = best.max_px <= error_target_px;
+  summary.target = targetAt(best_fineness);
+  summary.triangles_per_frame = best.triangles_per_frame;
+  summary.max_error_px = best.max_px;
+
+  // Uniform: the lowest integer level within the target, by doubling from 1 and then
+  // bisecting between the last level that failed and the first that passed.
+  FactorPolicy uniform;
+  uniform.kind = FactorPolicyKind::kUniform;
+  uniform.reduction = policy.reduction;
+  const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
+  auto uniformAt = [&](uint32_t level) {
+    uniform.target = level;
+    ++summary.evaluations;
+    return pathError(uniform, spacing, views);
+  };
+  uint32_t fails = 0, uniform_level = 1;
+  PathError uniform_best = uniformAt(uniform_level);
+  while (uniform_best.max_px > error_target_px && uniform_level < highest) {
+    fails = uniform_level;
+    uniform_level = std::min(2 * uniform_level, highest);
+    uniform_best = uniformAt(uniform_level);
+  }
+  summary.uniform_reached = uniform_best.max_px <= error_target_px;
+  if (summary.uniform_reached) {
+    while (uniform_level - fails > 1) {
+      const uint32_t mid = (fails + uniform_level) / 2;
+      const PathError e = uniformAt(mid);
+      if (e.max_px <= error_target_px) {
+        uniform_best = e;
+        uniform_level = mid;
+      } else {
+        fails = mid;
+      }
+    }
+  }
+  summary.uniform_level = uniform_level;
+  summary.uniform_triangles_per_frame = uniform_best.triangles_per_frame;
+  summary.uniform_max_error_px = uniform_best.max_px;
+  summary.triangle_ratio_vs_uniform =
+      summary.uniform_triangles_per_frame > 0
+          ? summary.triangles_per_frame / summary.uniform_triangles_per_frame
+          : 0;
+  return summary;
+}
+
+}  // namespace tb

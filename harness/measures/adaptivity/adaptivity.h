@@ -1,0 +1,139 @@
+// The adaptivity measure's algorithm (docs/ARCHITECTURE.md §3): a factor policy
+// (factor_policy.h) run along a camera path, frame by frame, on the CPU twin and in the
+// technique's own TCS on the device, and what its factors cost and buy:
+//
+// - counts: patches, triangles and domain points from the CPU tessellator under the
+//   twin's levels, against the device's pipeline statistics (TES invocations, primitives
+//   generated) under the TCS's own levels;
+// - crack safety: patches whose TCS levels differ from the twin's, shared edges whose two
+//   patches got bitwise-different factors (CPU twin and device), and the crack measure's
+//   shared-point comparison under the frame's per-edge levels (CPU float and device);
+// - screen space (screen_metrics.h): on-screen edge lengths, tessellation error (the
+//   piecewise-linear surface against the technique's own), error against the reference
+//   limit, and popping between consecutive frames;
+// - the number an engineer chooses by: for each policy, the triangles per frame needed to
+//   keep the tessellation error under a target (1 px) over the whole path, against the
+//   best uniform level that does the same.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/view/view.h"
+#include "harness/lod/factor_policy.h"
+#include "harness/lod/screen_metrics.h"
+#include "harness/measures/common/cracks/cracks.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+namespace ref {
+class LimitSurface;
+}
+
+struct AdaptivityFrame {
+  uint32_t frame = 0;
+  // CPU tessellator under the twin's levels, over every patch (no culling).
+  uint64_t patches = 0, triangles = 0, domain_points = 0;
+  // Shared edges whose sides' outer factors differ bitwise, from the twin's levels (best 0;
+  // > 0 means the policy is not crack-safe).
+  uint64_t factor_mismatches_cpu = 0;
+  CrackFigures cracks_cpu;  // shared points under the frame's levels, CPU float
+  FrameScreenFigures screen;
+  // Largest screen movement of the tessellated surface since the previous frame due to the
+  // factor change alone (px; 0 on frame 0).
+  ScreenErrorFigures pop;
+
+  // The device (absent without one, or without a GPU program).
+  bool gpu_measured = false;
+  uint64_t gpu_tcs_patches = 0, gpu_tes_invocations = 0, gpu_triangles = 0;
+  bool gpu_triangles_counted = false;
+  uint64_t twin_level_mismatches = 0;  // patches whose TCS levels differ from the twin's
+  uint64_t factor_mismatches_gpu = 0;  // as factor_mismatches_cpu, from the TCS's levels
+  CrackFigures cracks_gpu;             // device capture under the TCS's levels
+  double gpu_host_s = 0;               // submit-to-fence seconds of the counting run
+};
+
+struct AdaptivitySummary {
+  double error_target_px = 1;
+  bool reached = false;     // some target of the policy keeps the error under error_target_px
+  double target = 0;        // the coarsest such target (FactorPolicy::targetUnit())
+  double triangles_per_frame = 0;  // mean over the path's frames at that target
+  double max_error_px = 0;         // the path's largest tessellation error there
+  bool uniform_reached = false;
+  uint32_t uniform_level = 0;  // the lowest uniform level reaching the error target
+  double uniform_triangles_per_frame = 0;
+  double uniform_max_error_px = 0;
+  // triangles_per_frame / uniform_triangles_per_frame (best near 0; 1 = no saving).
+  double triangle_ratio_vs_uniform = 0;
+  uint32_t evaluations = 0;  // path passes the search took
+};
+
+// Which parts of a frame to measure (all by default; crack-safety checks need only the
+// factors and cracks).
+struct AdaptivityParts {
+  bool screen = true;  // FrameScreenFigures and pops (counts then come from the tessellator)
+  bool cracks = true;  // crack_* on both backends
+};
+
+// One technique instance along camera paths. Not thread-safe; parallel inside.
+class AdaptivityRun {
+ public:
+  // context: null when no device is usable (gpu_unavailable says why); limit: the
+  // reference limit of patches.controlMesh(), or null.
+  AdaptivityRun(const SurfacePatches& patches, gpu::Context* context,
+                std::string gpu_unavailable, const ref::LimitSurface* limit);
+  ~AdaptivityRun();
+
+  // Every frame of `views` under `policy` and `spacing`.
+  std::vector<AdaptivityFrame> frames(const FactorPolicy& policy, tess::Spacing spacing,
+                                      const std::vector<View>& views,
+                                      const AdaptivityParts& parts = {});
+
+  // Searches the policy's target for the coarsest one whose tessellation error stays under
+  // error_target_px on every frame, and the lowest uniform level that does.
+  // search_steps: bisection steps on the log-scale target range (7: targets within ~5%
+  // of the coarsest that passes for sphere_diameter's 0.25..128 px; 5: within ~20%).
+  AdaptivitySummary summarise(const FactorPolicy& policy, tess::Spacing spacing,
+                              const std::vector<View>& views, double error_target_px,
+                              int search_steps = 7);
+
+  // Why the device parts are absent; empty when they ran.
+  const std::string& gpuSkipReason() const { return gpu_skip_; }
+  double diagonal() const { return diagonal_; }
+
+ private:
+  std::vector<tess::Levels> twinLevels(const FactorPolicy& policy, tess::Spacing spacing,
+                                       const View& view) const;
+  // The max tessellation error over the path and the mean triangles per frame.
+  struct PathError {
+    double max_px = 0;
+    double triangles_per_frame = 0;
+  };
+  PathError pathError(const FactorPolicy& policy, tess::Spacing spacing,
+                      const std::vector<View>& views);
+  void runDevice(const FactorPolicy& policy, tess::Spacing spacing, const View& view,
+                 const std::vector<tess::Levels>& twin, bool cracks, AdaptivityFrame* frame);
+  void countTessellations(tess::Spacing spacing, const std::vector<tess::Levels>& levels,
+                          AdaptivityFrame* frame) const;
+
+  const SurfacePatches& patches_;
+  gpu::Context* context_;
+  std::string gpu_skip_;
+  std::vector<gpu::GpuPatchProgram> programs_;
+  FactorCorners corners_;
+  SharedBoundaries shared_;
+  double diagonal_ = 0;
+  std::unique_ptr<CrackSession> cracks_;
+  std::unique_ptr<ScreenMetrics> screen_;
+};
+
+// Shared edges (of `shared`) whose sides' outer levels differ bitwise under `levels`.
+uint64_t factorMismatches(const SurfacePatches& patches, const SharedBoundaries& shared,
+                          const std::vector<tess::Levels>& levels);
+
+}  // namespace tb

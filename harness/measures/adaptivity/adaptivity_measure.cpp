@@ -1,0 +1,353 @@
+// The "adaptivity" measure: view-dependent factor policies along camera paths
+// (adaptivity.h). Rows keyed policy, spacing and frame (camera_path added by the suite),
+// and per policy and spacing one summary row (key summary) with the triangles needed for
+// a 1 px tessellation error over the whole path against the best uniform level.
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/mesh/input_error.h"
+#include "harness/lod/reference_scheme.h"
+#include "harness/measures/adaptivity/adaptivity.h"
+#include "harness/measures/measure.h"
+#include "harness/measures/metric_table.h"
+#include "reference/limit_surface.h"
+
+namespace tb {
+namespace {
+
+constexpr double kErrorTargetPx = 1.0;
+constexpr const char* kSummaryKey = "max_error_1px";
+
+// What runs in each suite. Default: three policies at fractional_odd along the default
+// path (the suite's 4-frame orbit), about 0.1-0.3 s a record. Full: every policy (the
+// order-dependent ones show what a crack-unsafe policy does), every spacing.
+struct Grid {
+  std::vector<std::string> policies;
+  std::vector<tess::Spacing> spacings;
+  std::vector<std::string> summary_policies;
+  std::vector<tess::Spacing> summary_spacings;
+  int search_steps = 7;
+};
+
+Grid gridFor(SuiteMode suite, const SurfacePatches& patches) {
+  Grid grid;
+  if (suite == SuiteMode::kFull) {
+    grid.policies = {"uniform",  "distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
+    // Roundness scales by how the vertex normals turn: the surfaces built from them
+    // (PN triangles, Phong tessellation: the techniques graded against Loop).
+    if (patches.approximates() == LimitScheme::kLoop) grid.policies.push_back("lp2_edge_roundness");
+    grid.policies.push_back("sphere_diameter_order_dependent");
+    grid.policies.push_back("distance_order_dependent");
+    grid.spacings = {tess::Spacing::kInteger, tess::Spacing::kPow2, tess::Spacing::kFractionalOdd,
+                     tess::Spacing::kFractionalEven};
+    grid.summary_policies = {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
+    if (patches.approximates() == LimitScheme::kLoop) {
+      grid.summary_policies.push_back("lp2_edge_roundness");
+    }
+    grid.summary_spacings = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd};
+    return grid;
+  }
+  grid.policies = {"sphere_diameter", "distance", "lp2_edge"};
+  grid.spacings = {tess::Spacing::kFractionalOdd};
+  grid.summary_policies = {"sphere_diameter"};
+  grid.search_steps = 5;
+  grid.summary_spacings = grid.spacings;
+  return grid;
+}
+
+// Accessors of the frame table's figures that a frame may lack.
+constexpr auto frameGpu = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.gpu_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
+  };
+};
+constexpr auto frameCpuCrack = [](auto member) {
+  return [member](const AdaptivityFrame& f) { return double(f.cracks_cpu.*member); };
+};
+constexpr auto frameGpuCrack = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.gpu_measured && f.cracks_gpu.measured
+               ? std::optional<double>(double(f.cracks_gpu.*member))
+               : std::nullopt;
+  };
+};
+constexpr auto frameReference = [](auto member) {
+  return [member](const AdaptivityFrame& f) -> std::optional<double> {
+    return f.screen.reference_measured && f.screen.reference_error.samples > 0
+               ? std::optional<double>(f.screen.reference_error.*member)
+               : std::nullopt;
+  };
+};
+
+// Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
+// edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
+const MetricTable<AdaptivityFrame>& frameTable() {
+  using D = Direction;
+  using F = AdaptivityFrame;
+  static const MetricTable<F> kTable{
+      // patches: count; context
+      {"patches", Unit::kCount, D::kNone, &F::patches},
+      // triangles: count; 0 (best), unbounded (worst); the CPU tessellator under the twin's levels
+      {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      // domain_points: count; 0 (best), unbounded (worst)
+      {"domain_points", Unit::kCount, D::kLowerIsBetter, &F::domain_points},
+      // gpu_tcs_patches: count; context: lavapipe's pipeline statistics
+      {"gpu_tcs_patches", Unit::kCount, D::kNone, frameGpu(&F::gpu_tcs_patches)},
+      // gpu_tes_invocations: count; context
+      {"gpu_tes_invocations", Unit::kCount, D::kNone, frameGpu(&F::gpu_tes_invocations)},
+      // gpu_triangles: count; context
+      {"gpu_triangles", Unit::kCount, D::kNone,
+       [](const F& f) -> std::optional<double> {
+         return f.gpu_measured && f.gpu_triangles_counted
+                    ? std::optional<double>(double(f.gpu_triangles))
+                    : std::nullopt;
+       }},
+      // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
+      //   (worst)
+      {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.gpu_measured) return std::nullopt;
+         const bool differ = f.gpu_tes_invocations != f.domain_points ||
+                             f.gpu_tcs_patches != f.patches ||
+                             (f.gpu_triangles_counted && f.gpu_triangles != f.triangles);
+         return differ ? 1.0 : 0.0;
+       }},
+      // twin_level_mismatches: count; 0 when the TCS levels equal the twin's bitwise (best), up to
+      //   patches (worst)
+      {"twin_level_mismatches", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::twin_level_mismatches)},
+      // factor_mismatches_cpu: count; 0 when shared edges agree (best), up to the shared edges
+      //   (worst)
+      {"factor_mismatches_cpu", Unit::kCount, D::kLowerIsBetter, &F::factor_mismatches_cpu},
+      // factor_mismatches_gpu: count; 0 (best), up to the shared edges (worst)
+      {"factor_mismatches_gpu", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::factor_mismatches_gpu)},
+      // crack_points_not_equal_cpu: count; 0 when watertight (best), up to the points compared
+      //   (worst)
+      {"crack_points_not_equal_cpu", Unit::kCount, D::kLowerIsBetter,
+       frameCpuCrack(&CrackFigures::points_not_equal)},
+      // crack_unpaired_points_cpu: count; 0 (best), up to the edge points (worst)
+      {"crack_unpaired_points_cpu", Unit::kCount, D::kLowerIsBetter,
+       frameCpuCrack(&CrackFigures::unpaired_points)},
+      // crack_max_gap_world_cpu: world units; 0 when watertight (best), unbounded (worst)
+      {"crack_max_gap_world_cpu", Unit::kWorld, D::kLowerIsBetter,
+       frameCpuCrack(&CrackFigures::max_gap_world)},
+      // crack_points_not_equal_gpu: count; 0 when watertight (best), up to the points compared
+      //   (worst)
+      {"crack_points_not_equal_gpu", Unit::kCount, D::kLowerIsBetter,
+       frameGpuCrack(&CrackFigures::points_not_equal)},
+      // crack_unpaired_points_gpu: count; 0 (best), up to the edge points (worst)
+      {"crack_unpaired_points_gpu", Unit::kCount, D::kLowerIsBetter,
+       frameGpuCrack(&CrackFigures::unpaired_points)},
+      // crack_max_gap_world_gpu: world units; 0 when watertight (best), unbounded (worst)
+      {"crack_max_gap_world_gpu", Unit::kWorld, D::kLowerIsBetter,
+       frameGpuCrack(&CrackFigures::max_gap_world)},
+      // visible_edges: count; context: tessellated edges with an end in the viewport
+      {"visible_edges", Unit::kCount, D::kNone, [](const F& f) { return double(f.screen.edges.edges); }},
+      // edge_px_median: pixels; context (the band around the target is what counts)
+      {"edge_px_median", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.median_px; }},
+      // edge_px_p05: pixels; context
+      {"edge_px_p05", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p05_px; }},
+      // edge_px_p95: pixels; context
+      {"edge_px_p95", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p95_px; }},
+      // edge_fraction_in_band: ratio; 1 when every edge is within [0.5, 2] x target (best), 0
+      //   (worst)
+      {"edge_fraction_in_band", Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) { return f.screen.edges.fraction_in_band; }},
+      // error_samples: count; context
+      {"error_samples", Unit::kCount, D::kNone,
+       [](const F& f) { return double(f.screen.tessellation_error.samples); }},
+      // tess_error_max_px: pixels; 0 (best), unbounded (worst); 1 px is the criterion
+      {"tess_error_max_px", Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) { return f.screen.tessellation_error.max_px; }},
+      // tess_error_rms_px: pixels; 0 (best), unbounded (worst)
+      {"tess_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) { return f.screen.tessellation_error.rms_px; }},
+      // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
+      {"reference_error_max_px", Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&ScreenErrorFigures::max_px)},
+      // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
+      {"reference_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&ScreenErrorFigures::rms_px)},
+      // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
+      {"pop_max_px", Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
+       }},
+  };
+  return kTable;
+}
+
+// Summary rows: the number to choose by.
+const MetricTable<AdaptivitySummary>& summaryTable() {
+  using D = Direction;
+  using S = AdaptivitySummary;
+  static const MetricTable<S> kTable{
+      // triangle_ratio_vs_uniform: ratio; towards 0 (best), 1 as uniform, above 1 (worse than
+      //   uniform)
+      {"triangle_ratio_vs_uniform", Unit::kRatio, D::kLowerIsBetter,
+       [](const S& s) -> std::optional<double> {
+         return s.reached && s.uniform_reached ? std::optional<double>(s.triangle_ratio_vs_uniform)
+                                               : std::nullopt;
+       }},
+      // triangles_per_frame_at_target: count; 0 (best), unbounded (worst)
+      {"triangles_per_frame_at_target", Unit::kCount, D::kLowerIsBetter,
+       &S::triangles_per_frame},
+      // uniform_triangles_per_frame: count; context
+      {"uniform_triangles_per_frame", Unit::kCount, D::kNone, &S::uniform_triangles_per_frame},
+      // uniform_level: level; context
+      {"uniform_level", Unit::kCount, D::kNone, &S::uniform_level},
+      // error_target_px: pixels; context
+      {"error_target_px", Unit::kPixels, D::kNone, &S::error_target_px},
+      // target_reached: flag; 1 (best), 0 (worst)
+      {"target_reached", Unit::kFlag, D::kHigherIsBetter,
+       [](const S& s) { return s.reached ? 1.0 : 0.0; }},
+      // policy_target: the policy's own unit; context
+      {"policy_target", Unit::kRatio, D::kNone, &S::target},
+      // path_max_error_px: pixels; context: at the target found
+      {"path_max_error_px", Unit::kPixels, D::kNone, &S::max_error_px},
+      // uniform_reached: flag; context
+      {"uniform_reached", Unit::kFlag, D::kNone,
+       [](const S& s) { return s.uniform_reached ? 1.0 : 0.0; }},
+      // uniform_path_max_error_px: pixels; context
+      {"uniform_path_max_error_px", Unit::kPixels, D::kNone, &S::uniform_max_error_px},
+      // search_passes: count; context
+      {"search_passes", Unit::kCount, D::kNone, &S::evaluations},
+  };
+  return kTable;
+}
+
+std::vector<MetricSpec> allSpecs() {
+  std::vector<MetricSpec> specs = summaryTable().specs();
+  for (const MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
+  return specs;
+}
+
+class AdaptivityMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{
+        "adaptivity",
+        "Tessellation-factor adaptivity along camera paths",
+        "view-dependent factor policies per frame of a camera path: triangles, crack safety of "
+        "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
+        "triangles a policy needs for a 1 px tessellation error against uniform levels",
+        allSpecs(),
+        {"triangle_ratio_vs_uniform", "factor_mismatches_cpu", "tess_error_max_px"},
+        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter): for each policy, the coarsest target whose "
+         "tessellation error stays within 1 px on every frame of the path (bisection on a log "
+         "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the lowest uniform level "
+         "(integer, binary search) that does the same; triangle_ratio_vs_uniform = the two "
+         "triangle counts' ratio (0.25: a quarter of uniform's triangles); policy_target is "
+         "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
+         "pixels per edge; lp2_edge: C)",
+         "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
+         "twin harness/measures/factor_policy.h): distance = target x diagonal / |eye - edge "
+         "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
+         "target px) (Dudash, \"Dynamic Hardware Tessellation Basics\", NVIDIA 2012); lp2_edge "
+         "= max(L R C / D0, L R C / D1) with its silhouette and roundness reductions (CAPCOM, "
+         "\"Lost Planet 2: DirectX 11 Features\"); inner levels from the edges with the D3D11 "
+         "helpers (average); *_order_dependent: the edge's corners in patch order, not "
+         "crack-safe on purpose",
+         "counts: patches, triangles and domain points from the CPU tessellator under the "
+         "twin's levels; gpu_*: lavapipe's pipeline statistics (TCS patches, TES invocations) "
+         "and VK_EXT_primitives_generated_query (triangles) with the TCS computing its own "
+         "levels; gpu_counts_differ = 1 when any of them differs from the CPU tessellator's",
+         "twin_level_mismatches: patches whose TCS-written levels differ bitwise from the "
+         "twin's; factor_mismatches_*: shared edges whose two patches got bitwise-different "
+         "outer factors (cpu: twin levels, gpu: the TCS's levels); crack_*: the crack "
+         "measure's shared-point comparison under the frame's per-edge levels (cpu: float in "
+         "shader order; gpu: lavapipe capture of the technique's TES under the TCS's levels)",
+         "screen space (pixels of the path's viewport): edge_px_*: on-screen length of every "
+         "tessellated triangle edge with an end in the viewport, nearest-rank percentiles; "
+         "edge_fraction_in_band: the share within [0.5, 2] x the view's target pixels per "
+         "edge; tess_error_*: the piecewise-linear tessellation against the technique's own "
+         "surface at each triangle's centroid and edge midpoints (the 1 px criterion); "
+         "reference_error_*: the technique's surface against the reference limit at the same "
+         "parameter (approximation error, reported apart); pop_max_px: the largest movement of "
+         "the tessellated surface at fixed surface points since the previous frame due to the "
+         "factor change alone (both tessellations projected with this frame's camera); "
+         "visibility is the view frustum (no occlusion)",
+         "default suite: sphere_diameter, distance and lp2_edge at fractional_odd on the "
+         "default path; --suite full: every policy (uniform, the lp2_edge reductions, the "
+         "order-dependent controls) at integer, pow2, fractional_odd and fractional_even, and "
+         "summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
+         "and stays out of results.json"},
+        {},
+        // The per-frame trade-off of each policy: triangles drawn against the largest
+        // on-screen tessellation error, one chart per asset (every technique's frames).
+        {PlotSpec{.title = "Triangles against tessellation error in pixels, per frame",
+                  .kind = PlotKind::kScatter,
+                  .x = "tess_error_max_px",
+                  .y = "triangles",
+                  .series = "policy",
+                  .facet = "asset",
+                  .where = {{"frame", "*"}},
+                  .log_x = true,
+                  .log_y = true}}};
+    return kInfo;
+  }
+
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface, MeasureNeed::kCameraPath, MeasureNeed::kGpu},
+            VariantPolicy::kDefaultOnly,
+            {}};
+  }
+
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    const SurfacePatches& patches = *input.patches;
+    const CameraPath& path = *input.camera_path;
+
+    std::unique_ptr<ref::LimitSurface> limit;
+    try {
+      limit = std::make_unique<ref::LimitSurface>(patches.controlMesh(),
+                                                  referenceScheme(patches.approximates()));
+    } catch (const InputError& error) {
+      // The per-frame rows then lack reference_error_*; this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "reference_error"}}, MeasureStatus::kSkipped,
+                                          error.what()));
+    }
+    AdaptivityRun run(patches, input.gpu, input.gpu_unavailable, limit.get());
+    if (!run.gpuSkipReason().empty()) {
+      // The gpu_* and *_gpu figures live in the per-frame rows; without them, this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
+                                          run.gpuSkipReason()));
+    }
+    const Grid grid = gridFor(input.suite, patches);
+
+    for (const std::string& name : grid.summary_policies) {
+      const FactorPolicy policy = *parseFactorPolicy(name);
+      for (tess::Spacing spacing : grid.summary_spacings) {
+        MetricRow row;
+        row.keys["policy"] = name;
+        row.keys["spacing"] = std::string(tess::toString(spacing));
+        row.keys["summary"] = kSummaryKey;
+        row.metrics = summaryTable().metrics(
+            run.summarise(policy, spacing, path.views, kErrorTargetPx, grid.search_steps));
+        result.rows.push_back(std::move(row));
+      }
+    }
+    for (const std::string& name : grid.policies) {
+      const FactorPolicy policy = *parseFactorPolicy(name);
+      for (tess::Spacing spacing : grid.spacings) {
+        for (const AdaptivityFrame& frame : run.frames(policy, spacing, path.views)) {
+          MetricRow row;
+          row.keys["policy"] = name;
+          row.keys["spacing"] = std::string(tess::toString(spacing));
+          row.keys["frame"] = std::to_string(frame.frame);
+          row.metrics = frameTable().metrics(frame);
+          result.rows.push_back(std::move(row));
+        }
+      }
+    }
+    return result;
+  }
+};
+
+TB_REGISTER_MEASURE(AdaptivityMeasure);
+
+}  // namespace
+}  // namespace tb

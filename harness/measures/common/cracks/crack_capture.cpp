@@ -1,0 +1,157 @@
+#include "harness/measures/common/cracks/crack_capture.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "core/gpu/patch_program.h"
+
+namespace tb {
+namespace {
+
+// A draw of about this many TES invocations keeps lavapipe's single-threaded tessellator
+// out of its super-linear regime (docs/ARCHITECTURE.md §6): 8 patches at level 16 (289
+// points each), 1 to 2 at a full level 64.
+constexpr uint64_t kInvocationsPerDraw = 4096;
+constexpr uint32_t kMaxPatchesPerDraw = 8;
+
+PatchDomain patchDomain(tess::Domain domain) {
+  return domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
+}
+
+// Program patch i's SurfacePatches patch.
+uint32_t surfacePatch(const gpu::GpuPatchProgram& program, uint32_t i) {
+  return program.patch_ids.empty() ? i : program.patch_ids.at(i);
+}
+
+class ProgramCapture {
+ public:
+  ProgramCapture(const SurfacePatches& patches, const PatchBoundaries& boundaries,
+                 tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
+                 const CrackCaptureOptions& options, BoundaryCapture* capture,
+                 std::vector<uint8_t>* filled)
+      : patches_(patches),
+        boundaries_(boundaries),
+        spacing_(spacing),
+        patch_levels_(patch_levels),
+        options_(options),
+        capture_(capture),
+        filled_(filled) {}
+
+  void run(const gpu::GpuPatchProgram& program, gpu::Context& context) {
+    const PatchDomain domain = patchDomain(program.domain);
+    std::vector<tess::Levels> levels(program.patch_count);
+    std::vector<uint64_t> boundary_points(program.patch_count);
+    uint64_t max_points = 1;
+    for (uint32_t i = 0; i < program.patch_count; ++i) {
+      const uint32_t patch = surfacePatch(program, i);
+      checkPatch(program, patch, domain);
+      const BoundaryTessellation& t = boundaries_.of(patch);
+      levels[i] = options_.lower_inner_levels ? t.capture_levels : patch_levels_[patch];
+      boundary_points[i] = t.points.size();
+      const uint64_t points = options_.lower_inner_levels ? t.capture_points : t.tessellated_points;
+      max_points = std::max(max_points, points);
+      capture_->tes_invocations += points;
+    }
+    gpu::PatchProgramOptions run;
+    run.spacing = spacing_;
+    run.boundary_only = true;
+    run.sort = false;  // store() indexes each vertex and checks a duplicate against its slot
+    run.statistics = false;
+    run.patches_per_draw =
+        uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / max_points, 1, kMaxPatchesPerDraw));
+    for (uint32_t first = 0; first < program.patch_count;) {
+      uint64_t vertices = 0;
+      uint32_t end = first;
+      while (end < program.patch_count &&
+             (end == first || vertices + boundary_points[end] <= options_.max_vertices_per_call)) {
+        vertices += boundary_points[end++];
+      }
+      run.first_patch = first;
+      run.patch_count = end - first;
+      store(program, gpu::runPatchProgram(context, program, levels, run), domain);
+      first = end;
+    }
+  }
+
+ private:
+  void checkPatch(const gpu::GpuPatchProgram& program, uint32_t patch, PatchDomain domain) const {
+    if (patch >= patches_.patchCount() || boundaries_.domain[patch] != domain) {
+      throw std::runtime_error("cracks: " + program.evaluation_shader + " draws patch " +
+                               std::to_string(patch) + ", which is not a patch of its domain");
+    }
+  }
+
+  void store(const gpu::GpuPatchProgram& program, const gpu::PatchProgramCapture& run,
+             PatchDomain domain) {
+    capture_->submit_to_fence_s += run.submit_to_fence_s;
+    capture_->draws += run.draws;
+    ++capture_->calls;
+    for (const gpu::CapturedVertex& v : run.vertices) {
+      const int64_t k = boundaries_.of(v.patch).indexOf(domain, v.coord);
+      if (k < 0) {
+        throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
+                                 std::to_string(v.patch) +
+                                 " at a boundary point the CPU tessellator does not emit");
+      }
+      // The tessellator may emit two vertices on one 2^-16 coordinate (fractional spacing
+      // just above an integer level); the CPU list keeps both, next to each other, and
+      // one captured position fills them all.
+      const BoundaryTessellation& b = boundaries_.of(v.patch);
+      for (size_t j = size_t(k);
+           j < b.points.size() && std::memcmp(&b.points[j], &v.coord, sizeof(v.coord)) == 0; ++j) {
+        const size_t slot = boundaries_.at(v.patch, j);
+        if ((*filled_)[slot] == 0) {
+          capture_->positions[slot] = v.position;
+          (*filled_)[slot] = 1;
+          ++capture_->points_captured;
+        } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(Vec3f)) != 0) {
+          // The TES ran twice at one gl_TessCoord (fractional spacing) and disagreed.
+          throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
+                                   std::to_string(v.patch) +
+                                   " twice at one boundary point with different positions");
+        }
+      }
+    }
+  }
+
+  const SurfacePatches& patches_;
+  const PatchBoundaries& boundaries_;
+  tess::Spacing spacing_;
+  std::span<const tess::Levels> patch_levels_;
+  const CrackCaptureOptions& options_;
+  BoundaryCapture* capture_;
+  std::vector<uint8_t>* filled_;
+};
+
+}  // namespace
+
+BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
+                                         std::span<const gpu::GpuPatchProgram> programs,
+                                         const PatchBoundaries& boundaries, tess::Spacing spacing,
+                                         std::span<const tess::Levels> patch_levels,
+                                         gpu::Context& context,
+                                         const CrackCaptureOptions& options) {
+  if (patch_levels.size() != patches.patchCount() || boundaries.culled_patches > 0) {
+    throw std::invalid_argument(
+        "cracks: capture needs one level set per patch and no culled patch");
+  }
+  BoundaryCapture capture;
+  capture.positions.resize(boundaries.size());
+  std::vector<uint8_t> filled(boundaries.size(), 0);
+  ProgramCapture run(patches, boundaries, spacing, patch_levels, options, &capture, &filled);
+  std::string shaders;
+  for (const gpu::GpuPatchProgram& program : programs) {
+    run.run(program, context);
+    shaders += (shaders.empty() ? "" : ", ") + program.evaluation_shader;
+  }
+  if (std::find(filled.begin(), filled.end(), 0) != filled.end()) {
+    throw std::runtime_error(
+        "cracks: the GPU capture lacks boundary points the CPU tessellator emits (" + shaders +
+        ")");
+  }
+  return capture;
+}
+
+}  // namespace tb

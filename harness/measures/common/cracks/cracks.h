@@ -1,0 +1,164 @@
+// Crack gaps (docs/ARCHITECTURE.md §3) between patches that share an edge or a corner.
+//
+// Two patches share an edge when its two end corners weld to the same positions
+// (control-mesh position indices from patchCorners(), merged by weldByPosition so that
+// triangle meshes whose positions are duplicated at attribute seams count too). Along a
+// shared edge the tessellator emits, on each side, the same domain points mirrored
+// (edge parameter t on one side is exactly 1 - t on the other, in 16.16 fixed point); the
+// measure pairs them by t and compares the positions each side computes there: in float
+// with the shader's operation order on the CPU (SurfacePatches::evaluateFloat), or as
+// captured from the technique's own TES on the Vulkan device (crack_capture.h).
+//
+// Cost: tessellations are shared process-wide (crack_boundaries.h); a CrackSession finds
+// the shared edges once per asset and evaluates the CPU float positions once per
+// spacing and levels for both backends; evaluation and pairing run in parallel (TBB)
+// with results that do not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/gpu/patch_program_desc.h"
+#include "core/mesh/float_ulp.h"  // ulpDistance, used with these figures
+#include "harness/measures/common/cracks/crack_boundaries.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+enum class CrackBackend { kCpuFloat, kGpu };
+const char* toString(CrackBackend backend);
+
+// One side of a shared edge or corner. Local edge k runs from corner k to corner k + 1
+// (mod the corner count); corners follow technique.h (quad (0,0),(1,0),(1,1),(0,1);
+// triangle corner i where gl_TessCoord[i] = 1).
+struct PatchSide {
+  uint32_t patch = 0;
+  uint32_t local = 0;     // local edge or corner index
+  bool reversed = false;  // edges: the patch runs the edge from the higher welded vertex
+};
+
+struct SharedEdge {
+  uint32_t v0 = 0, v1 = 0;       // welded position indices, v0 < v1
+  bool seam = false;             // the sides use different (unwelded) position indices
+  std::vector<PatchSide> sides;  // two or more, in patch order
+};
+
+struct SharedCorner {
+  uint32_t vertex = 0;           // welded position index
+  std::vector<PatchSide> sides;  // two or more, in patch order
+};
+
+struct SharedBoundaries {
+  std::vector<SharedEdge> edges;      // sorted by (v0, v1)
+  std::vector<SharedCorner> corners;  // sorted by vertex
+};
+
+SharedBoundaries findSharedBoundaries(const SurfacePatches& patches);
+
+// Where the largest gap is. For an edge, `t` is the edge parameter on side a, from its
+// corner `local_a` (t = 0) towards the next corner (t = 1).
+struct CrackLocation {
+  bool found = false;
+  bool corner = false;
+  uint32_t patch_a = 0, patch_b = 0;
+  uint32_t local_a = 0, local_b = 0;
+  double t = 0;
+};
+
+struct CrackFigures {
+  CrackBackend backend = CrackBackend::kCpuFloat;
+  bool measured = false;
+  std::string skipped_reason;  // non-empty when !measured (no GPU program, no device)
+
+  uint64_t shared_edges = 0;    // edges with two or more patches
+  uint64_t seam_edges = 0;      // of those, shared only through welding
+  uint64_t shared_corners = 0;  // welded vertices at corners of two or more patches
+  // Pairs compared: each side of an edge (after the first) against the first side, at
+  // every tessellated point strictly inside the edge; likewise at corners.
+  uint64_t points_compared = 0;
+  uint64_t points_not_equal = 0;  // some component differs (+0 and -0 count as equal)
+  uint64_t unpaired_points = 0;   // edge points with no mirror on the other side; 0 expected
+  double max_gap_world = 0;       // Euclidean distance, world (asset) units
+  double mean_gap_world = 0;      // over all compared pairs
+  // Max over pairs and components of the float ulp distance. Near zero a tiny gap spans
+  // many ulps (1e-8 against 0 is ~8e8), hence the next figure.
+  uint64_t max_gap_ulp = 0;
+  // Max component gap in ulps of the asset's scale (the largest |coordinate| of the control
+  // mesh): 1 means one rounding step of the model's largest coordinate.
+  double max_gap_scale_ulp = 0;
+  CrackLocation worst;  // pair with the largest world gap (first one on ties)
+
+  // GPU only: the captured position against evaluateFloat at the same gl_TessCoord, over
+  // every captured vertex, i.e. every boundary point of every patch (agreement of the CPU
+  // float model with the device where the pairs are taken).
+  uint64_t device_points = 0;
+  uint64_t device_points_differing = 0;
+  uint64_t device_max_ulp = 0;
+  uint32_t draws = 0;
+};
+
+// Per-patch levels: patch p is tessellated in its own patchDomain(p) with
+// patch_levels[p] (one per patch; tessellations are shared between patches with the same
+// domain and level bits) under `spacing`; a quad edge and a triangle edge that share an
+// edge pair by edge parameter like two edges of one domain. Two sides of a shared edge
+// pair point for point only when their levels for that edge agree (see
+// edge_pattern_levels.h); otherwise the extra points count as unpaired_points.
+// kGpu runs every program of patches.gpuPrograms() on `context` with the same per-patch
+// outer levels, capturing the boundary points (captureBoundaryPositions); without a
+// program or a context the result is not measured and says why, as when some level
+// culls a patch. Throws gpu::GpuError when the device fails and std::invalid_argument
+// when patch_levels.size() != patches.patchCount().
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+                           std::span<const tess::Levels> patch_levels, CrackBackend backend,
+                           gpu::Context* context = nullptr);
+
+// Uniform levels: every outer and inner level of every patch = `level`.
+CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
+                           CrackBackend backend, gpu::Context* context = nullptr);
+
+// measureCracks over one asset's patches, many times: the shared edges and corners are
+// found once, and the CPU float positions and pair figures are kept per set of boundary
+// points, so both backends at one spacing and levels evaluate on the CPU once, and so do
+// spacings whose boundary points coincide bit for bit (integer and pow2 at levels 1, 7.3
+// (8), 16 and 64). A device capture equal bit for bit to the CPU positions takes their
+// pair figures. Same figures as measureCracks. One thread at a time (a record's).
+class CrackSession {
+ public:
+  explicit CrackSession(const SurfacePatches& patches);
+
+  CrackFigures measure(tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
+                       CrackBackend backend, gpu::Context* context = nullptr);
+  CrackFigures measure(tess::Spacing spacing, float level, CrackBackend backend,
+                       gpu::Context* context = nullptr);
+
+ private:
+  // The CPU float side of one set of boundary points.
+  struct CpuSide {
+    std::vector<Vec3f> positions;       // per boundary point; empty until evaluated
+    std::optional<CrackFigures> pairs;  // pair figures of `positions`, once computed
+  };
+  struct Evaluated {
+    tess::Spacing spacing;
+    std::vector<tess::LevelsBits> levels;
+    PatchBoundaries boundaries;
+    std::shared_ptr<CpuSide> cpu;
+  };
+  static constexpr size_t kKeptEvaluations = 8;  // a spacing's levels and the next's
+
+  Evaluated& evaluated(tess::Spacing spacing, std::span<const tess::Levels> patch_levels);
+  const CrackFigures& cpuPairs(const Evaluated& e);
+
+  const SurfacePatches& patches_;
+  std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
+  SharedBoundaries shared_;
+  uint64_t seam_edges_ = 0;
+  double scale_ulp_ = 0;
+  std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
+};
+
+}  // namespace tb

@@ -1,0 +1,118 @@
+// The culling measure's machinery: each culling policy (cull_policy.h) decided by every
+// technique's own TCS on the device and by its CPU twin, the TES work it saves (lavapipe's
+// pipeline statistics), and the patches it wrongly removes, counted against a rasterised
+// render of the unculled surface (cull_oracle.h: the technique's own shaders, a depth
+// buffer, fixed-function back-face culling and a per-patch ID target).
+//
+// Every patch is tessellated at one uniform integer level, so the TES saving is the share of
+// domain points the culled patches would have had.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/gpu/context.h"
+#include "core/view/view.h"
+#include "harness/lod/cull_policy.h"
+#include "techniques/technique.h"
+
+namespace tb {
+
+class VisibilityOracle;
+struct DeviceSurface;
+
+// One policy on one frame.
+struct CullingFrame {
+  uint32_t frame = 0;
+  uint64_t patches = 0;
+  // Patches the CPU twin culls. Best case: every patch that shows no pixel; worst: 0.
+  uint64_t culled_patches = 0;
+  // CPU tessellator counts at the run's level: the patches kept, and every patch.
+  uint64_t tes_invocations = 0, tes_invocations_unculled = 0;
+  uint64_t triangles = 0, triangles_unculled = 0;
+
+  // lavapipe: the TCS's own decisions and pipeline statistics, with and without culling.
+  bool gpu_measured = false;
+  uint64_t gpu_culled_patches = 0;
+  uint64_t gpu_tes_invocations = 0, gpu_tes_invocations_unculled = 0;
+  bool gpu_primitives_counted = false;
+  uint64_t gpu_primitives = 0, gpu_primitives_unculled = 0;
+  // Patches whose culling decision differs between the TCS and the twin. Best 0; any is a bug.
+  uint64_t twin_mismatches = 0;
+
+  // The ID-buffer oracle (a render of the unculled surface at the run's render size).
+  bool oracle_measured = false;
+  uint32_t render_width_px = 0, render_height_px = 0;
+  uint64_t visible_patches = 0;   // patches with at least one pixel in the image
+  uint64_t cullable_patches = 0;  // every triangle back-facing or outside the frustum
+  // Culled patches that show pixels in the image (holes). Best 0; each is a visible hole.
+  uint64_t false_culls = 0;
+  uint64_t false_cull_pixels = 0;  // the pixels those patches cover
+  // Cullable patches the policy kept (TES work an ideal culler would save). Best 0.
+  uint64_t missed_culls = 0;
+};
+
+// A policy over a whole path.
+struct CullingSummary {
+  uint32_t frames = 0;
+  double mean_culled_fraction = 0;  // culled patches / patches, mean over frames
+  double mean_tes_saving = 0;       // 1 - TES invocations / unculled, mean over frames
+  double mean_cullable_fraction = 0;  // the ideal culler's share, for comparison
+  uint64_t false_culls = 0, false_cull_pixels = 0, missed_culls = 0;
+  uint64_t twin_mismatches = 0;
+  bool oracle_measured = false;  // every frame had the oracle
+  bool gpu_measured = false;     // every frame ran on the device
+};
+CullingSummary summarise(std::span<const CullingFrame> frames);
+
+struct CullingOptions {
+  uint32_t level = 8;  // uniform integer tessellation level of every patch
+  // The oracle's render size as a fraction of each view's viewport (1: the path's own).
+  double render_scale = 1;
+};
+
+class CullingRun {
+ public:
+  // `context` null: CPU twin and counts only; gpu_unavailable says why.
+  CullingRun(const SurfacePatches& patches, gpu::Context* context, std::string gpu_unavailable,
+             const CullingOptions& options);
+  ~CullingRun();
+
+  // Per policy (in `policies` order), one CullingFrame per view.
+  std::vector<std::vector<CullingFrame>> frames(std::span<const CullPolicy> policies,
+                                                std::span<const View> views);
+
+  const CullBounds& bounds() const { return bounds_; }
+  // Why the device figures (gpu_*, oracle) are missing; empty when they were measured.
+  const std::string& gpuSkipReason() const { return gpu_skip_reason_; }
+
+ private:
+  struct DeviceCounts {
+    std::vector<uint8_t> culled;  // per SurfacePatches patch, from the TCS's levels
+    uint64_t tes_invocations = 0;
+    bool primitives_counted = false;
+    uint64_t primitives = 0;
+  };
+  DeviceCounts runOnDevice(const CullParams* params);
+  void prepareDevice();
+
+  const SurfacePatches& patches_;
+  std::vector<gpu::GpuPatchProgram> programs_;
+  // Per program, the packed bounds (patch_words, once) and the frame's view (param_words).
+  std::vector<gpu::TcsCullPolicy> device_policies_;
+  gpu::Context* context_;
+  std::string gpu_skip_reason_;
+  CullingOptions options_;
+  CullBounds bounds_;
+  std::vector<uint64_t> patch_points_, patch_triangles_;
+  bool device_ready_ = false;
+  std::optional<DeviceCounts> unculled_;
+  std::unique_ptr<DeviceSurface> surface_;
+  std::unique_ptr<VisibilityOracle> oracle_;
+};
+
+}  // namespace tb

@@ -1,0 +1,269 @@
+// The "culling" measure: patch culling policies (cull_policy.h) along camera paths
+// (culling.h). Rows keyed policy and frame (camera_path added by the suite), and per policy
+// one summary row (key summary = path) with what a person chooses a policy by: the share of
+// patches and TES work it removes, and the visible patches it wrongly removes.
+#include <string>
+#include <vector>
+
+#include "harness/measures/culling/culling.h"
+#include "harness/measures/measure.h"
+#include "harness/measures/metric_table.h"
+
+namespace tb {
+namespace {
+
+constexpr const char* kSummaryKey = "path";
+
+// Default suite: level 4, the oracle at half the path's resolution per axis (960 x 540 for
+// the bundled paths); full: level 8 at the path's own resolution.
+CullingOptions optionsFor(SuiteMode suite) {
+  if (suite == SuiteMode::kFull) return {.level = 8, .render_scale = 1};
+  return {.level = 4, .render_scale = 0.5};
+}
+
+// Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
+// as many patches as show no pixel; worst: a visible patch culled (a hole in the image).
+const MetricTable<CullingFrame>& frameTable() {
+  using D = Direction;
+  using F = CullingFrame;
+  auto gpu = [](auto member) {
+    return [member](const F& f) -> std::optional<double> {
+      return f.gpu_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
+    };
+  };
+  auto oracle = [](auto member) {
+    return [member](const F& f) -> std::optional<double> {
+      return f.oracle_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
+    };
+  };
+  static const MetricTable<F> kTable{
+      // patches: count; context
+      {"patches", Unit::kCount, D::kNone, &F::patches},
+      // culled_patches: count; context (see culled_fraction)
+      {"culled_patches", Unit::kCount, D::kNone, &F::culled_patches},
+      // culled_fraction: ratio; up to cullable / patches with no false cull (best), 0 (worst:
+      //   nothing culled)
+      {"culled_fraction", Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) { return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0; }},
+      // tes_invocations: count; 0 (best), tes_invocations_unculled (worst: no saving)
+      {"tes_invocations", Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
+      // tes_invocations_unculled: count; context
+      {"tes_invocations_unculled", Unit::kCount, D::kNone, &F::tes_invocations_unculled},
+      // tes_saving: ratio 1 - TES invocations / unculled; 1 (best), 0 (worst)
+      {"tes_saving", Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) {
+         return f.tes_invocations_unculled > 0
+                    ? 1 - double(f.tes_invocations) / double(f.tes_invocations_unculled)
+                    : 0.0;
+       }},
+      // triangles: count; 0 (best), the unculled triangles (worst)
+      {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      // gpu_culled_patches: count; context: the device's pipeline statistics
+      {"gpu_culled_patches", Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
+      // gpu_tes_invocations: count; 0 (best), gpu_tes_invocations_unculled (worst)
+      {"gpu_tes_invocations", Unit::kCount, D::kLowerIsBetter, gpu(&F::gpu_tes_invocations)},
+      // gpu_tes_invocations_unculled: count; context
+      {"gpu_tes_invocations_unculled", Unit::kCount, D::kNone,
+       gpu(&F::gpu_tes_invocations_unculled)},
+      // gpu_primitives: count; 0 (best), gpu_primitives_unculled (worst)
+      {"gpu_primitives", Unit::kCount, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         return f.gpu_measured && f.gpu_primitives_counted
+                    ? std::optional<double>(double(f.gpu_primitives))
+                    : std::nullopt;
+       }},
+      // gpu_primitives_unculled: count; context
+      {"gpu_primitives_unculled", Unit::kCount, D::kNone,
+       [](const F& f) -> std::optional<double> {
+         return f.gpu_measured && f.gpu_primitives_counted
+                    ? std::optional<double>(double(f.gpu_primitives_unculled))
+                    : std::nullopt;
+       }},
+      // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
+      //   (worst)
+      {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.gpu_measured) return std::nullopt;
+         const bool differ = f.gpu_tes_invocations != f.tes_invocations ||
+                             (f.gpu_primitives_counted && f.gpu_primitives != f.triangles);
+         return differ ? 1.0 : 0.0;
+       }},
+      // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
+      //   (worst)
+      {"twin_mismatches", Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
+      // visible_patches: count; context: patches with a pixel in the unculled render
+      {"visible_patches", Unit::kCount, D::kNone, oracle(&F::visible_patches)},
+      // cullable_patches: count; context: what an ideal back-face + frustum culler removes
+      {"cullable_patches", Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
+      // false_culls: count; 0 (best), up to visible_patches (worst)
+      {"false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
+      // false_cull_pixels: pixels; 0 (best), up to the render's pixels (worst)
+      {"false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&F::false_cull_pixels)},
+      // missed_culls: count; 0 (best), up to cullable_patches (worst)
+      {"missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
+      // render_width_px: pixels; context
+      {"render_width_px", Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
+      // render_height_px: pixels; context
+      {"render_height_px", Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
+  };
+  return kTable;
+}
+
+// Summary rows, one per policy over the path: the numbers to choose a policy by.
+const MetricTable<CullingSummary>& summaryTable() {
+  using D = Direction;
+  using S = CullingSummary;
+  auto oracle = [](auto member) {
+    return [member](const S& s) -> std::optional<double> {
+      return s.oracle_measured ? std::optional<double>(double(s.*member)) : std::nullopt;
+    };
+  };
+  static const MetricTable<S> kTable{
+      // mean_culled_fraction: ratio, mean over frames; as culled_fraction
+      {"mean_culled_fraction", Unit::kRatio, D::kHigherIsBetter, &S::mean_culled_fraction},
+      // mean_tes_saving: ratio, mean over frames; 1 (best), 0 (worst)
+      {"mean_tes_saving", Unit::kRatio, D::kHigherIsBetter, &S::mean_tes_saving},
+      // total_false_culls: count over frames; 0 (best), unbounded (worst)
+      {"total_false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::false_culls)},
+      // total_false_cull_pixels: pixels over frames; 0 (best), unbounded (worst)
+      {"total_false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&S::false_cull_pixels)},
+      // total_missed_culls: count over frames; 0 (best), unbounded (worst)
+      {"total_missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::missed_culls)},
+      // mean_cullable_fraction: ratio; context: the ideal culler's share
+      {"mean_cullable_fraction", Unit::kRatio, D::kNone, oracle(&S::mean_cullable_fraction)},
+      // total_twin_mismatches: count over frames; 0 (best), unbounded (worst)
+      {"total_twin_mismatches", Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) -> std::optional<double> {
+         return s.gpu_measured ? std::optional<double>(double(s.twin_mismatches)) : std::nullopt;
+       }},
+      // frames: count; context
+      {"frames", Unit::kCount, D::kNone, &S::frames},
+  };
+  return kTable;
+}
+
+std::vector<MetricSpec> allSpecs() {
+  std::vector<MetricSpec> specs = summaryTable().specs();
+  for (const MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
+  return specs;
+}
+
+std::vector<std::string> policyNotes() {
+  std::string text = "policies (shaders/common/cull.glsl, run in every technique's own TCS, which "
+                     "writes outer level 0 for a culled patch; CPU twin "
+                     "harness/measures/cull_policy.h):";
+  for (CullPolicy policy : allCullPolicies()) {
+    text += " ";
+    text += cullPolicyName(policy);
+    text += " = ";
+    text += cullPolicyDescription(policy);
+    text += ";";
+  }
+  return {text};
+}
+
+class CullingMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo = [] {
+      MeasureInfo info{
+          "culling",
+          "Patch culling effectiveness, with false culls counted against a render",
+          "patch culling policies per frame of a camera path: patches culled, TES invocations "
+          "saved (lavapipe pipeline statistics), false culls (culled patches that show pixels in "
+          "a render of the unculled surface) and missed culls (patches an ideal back-face and "
+          "frustum culler would remove)",
+          allSpecs(),
+          {"total_false_culls", "mean_tes_saving", "mean_culled_fraction"},
+          {"summary rows (summary = path), one per policy over the camera path: "
+           "mean_culled_fraction and mean_tes_saving are means over the frames (0.5: half the "
+           "patches or TES invocations removed); total_* are sums over the frames",
+           "false culls: a patch the policy culls that covers at least one pixel of a render of "
+           "the unculled tessellated surface on lavapipe (the technique's own TCS and TES, depth "
+           "test, fixed-function back-face culling, a per-patch ID target); false_cull_pixels = "
+           "the pixels those patches show. Occlusion by other patches is not a reason to cull",
+           "missed culls: a patch kept although every one of its tessellated triangles is "
+           "back-facing (screen-space winding) or entirely outside one frustum plane (clip test): "
+           "an ideal back-face + frustum culler removes it; a front-facing patch too small to "
+           "cover a pixel is not missed",
+           "counts: tes_invocations and triangles from the CPU tessellator for the patches the "
+           "twin keeps, at one uniform integer level; gpu_*: lavapipe's pipeline statistics "
+           "(TES invocations) and VK_EXT_primitives_generated_query with the TCS culling; "
+           "twin_mismatches: patches whose TCS decision differs from the CPU twin's",
+           "default suite: level 4, the render at half the path's resolution per axis (960 x "
+           "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); --suite "
+           "full: level 8 at the path's resolution, every variant, every frame of the three "
+           "paths"}};
+      for (std::string& note : policyNotes()) info.notes.push_back(std::move(note));
+      // The share of TES work each policy removes (its path summary rows; median over
+      // assets and camera paths).
+      info.plots = {PlotSpec{.title = "TES invocations saved per culling policy",
+                             .kind = PlotKind::kBar,
+                             .x = "policy",
+                             .y = "mean_tes_saving",
+                             .series = "technique",
+                             .facet = "",
+                             .where = {{"summary", kSummaryKey}}}};
+      return info;
+    }();
+    return kInfo;
+  }
+
+  MeasureRequirements requirements() const override {
+    return {{MeasureNeed::kSurface, MeasureNeed::kCameraPath, MeasureNeed::kGpu},
+            VariantPolicy::kEveryVariantInFullSuite,
+            {}};
+  }
+
+  // Culling needs the camera close as well as far: the dolly's last frames and the flyby put
+  // patches off screen, which the orbit never does.
+  std::vector<std::pair<std::string, uint32_t>> defaultSuitePaths() const override {
+    return {{"orbit", 4}, {"dolly", 8}, {"flyby", 8}};
+  }
+
+  MeasureResult run(const MeasureInput& input) const override {
+    MeasureResult result;
+    result.measure = info().id;
+    const CameraPath& path = *input.camera_path;
+    CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, optionsFor(input.suite));
+    const std::span<const CullPolicy> policies = allCullPolicies();
+    const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);
+    if (!run.gpuSkipReason().empty()) {
+      // gpu_*, twin_mismatches and the oracle's figures live in the per-frame rows; without
+      // them, this row says why.
+      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
+                                          run.gpuSkipReason()));
+    }
+    const CullBounds& bounds = run.bounds();
+    if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {
+      result.notes.push_back(std::to_string(bounds.patches_without_cone) + " of " +
+                             std::to_string(bounds.patches.size()) +
+                             " patches have no cone of normals (none given, or normals spanning "
+                             "90 degrees or more): cone never culls them; " +
+                             std::to_string(bounds.patches_without_hull) +
+                             " have no control hull (their corners stand in)");
+    }
+    for (size_t k = 0; k < policies.size(); ++k) {
+      MetricRow row;
+      row.keys["policy"] = std::string(cullPolicyName(policies[k]));
+      row.keys["summary"] = kSummaryKey;
+      row.metrics = summaryTable().metrics(summarise(frames[k]));
+      result.rows.push_back(std::move(row));
+    }
+    for (size_t k = 0; k < policies.size(); ++k) {
+      for (const CullingFrame& frame : frames[k]) {
+        MetricRow row;
+        row.keys["policy"] = std::string(cullPolicyName(policies[k]));
+        row.keys["frame"] = std::to_string(frame.frame);
+        row.metrics = frameTable().metrics(frame);
+        result.rows.push_back(std::move(row));
+      }
+    }
+    return result;
+  }
+};
+
+TB_REGISTER_MEASURE(CullingMeasure);
+
+}  // namespace
+}  // namespace tb

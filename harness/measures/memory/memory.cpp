@@ -1,0 +1,256 @@
+#include "harness/measures/memory/memory.h"
+
+#include <meshoptimizer.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <optional>
+#include <unordered_map>
+
+#include "core/mesh/render_vertices.h"
+#include "core/tess/tessellator.h"
+#include "harness/measures/common/cracks/cracks.h"
+
+namespace tb {
+namespace {
+
+constexpr uint64_t kDisplacementTexelBytes = 2;        // 16-bit scalar
+constexpr uint64_t kVectorDisplacementTexelBytes = 6;  // 3 × 16 bits
+constexpr int64_t kFixedOne = 1 << 16;                 // the tessellator's 16.16 fixed point
+constexpr size_t kFloatsPerVertex = kRenderVertexBytes / sizeof(float);
+
+// Points strictly inside one patch at uniform integer level n (not on its edges).
+uint64_t interiorPointCount(PatchDomain domain, uint32_t n) {
+  if (domain == PatchDomain::kQuad) return uint64_t(n - 1) * (n - 1);
+  return tess::trianglePointCount(n) - 3ull * n;
+}
+
+uint64_t displacementTexels(PatchDomain domain, uint32_t n) {
+  if (domain == PatchDomain::kQuad) return uint64_t(n + 1) * (n + 1);
+  return uint64_t(n + 1) * (n + 2) / 2;
+}
+
+}  // namespace
+
+MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
+  const Mesh& control = patches.controlMesh();
+  const RenderVertices render = buildRenderVertices(control);
+
+  // Points on edges are shared through the render mesh's edges; the rest is per patch,
+  // in the patch's own domain.
+  uint64_t interior_points = 0, triangles = 0, texels = 0;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    interior_points += interiorPointCount(domain, level);
+    triangles += domain == PatchDomain::kQuad ? tess::quadTriangleCount(level)
+                                              : tess::triangleTriangleCount(level);
+    texels += displacementTexels(domain, level);
+  }
+
+  MemoryFigures m;
+  m.level = level;
+  m.plain_vertices =
+      render.vertex_count + uint64_t(render.edge_count) * (level - 1) + interior_points;
+  m.plain_triangles = triangles;
+  m.plain_bytes = m.plain_vertices * kRenderVertexBytes + m.plain_triangles * 3 * kIndexBytes;
+  m.technique = patches.footprint();
+  if (m.technique.displacement_map_bytes > 0) {
+    // A displaced surface carries its real map (already in technique.total()): its GPU bytes
+    // replace the one-texel-per-vertex assumption, for the scalar and the vector figures.
+    m.displacement_bytes = m.vector_displacement_bytes = m.technique.displacement_map_bytes;
+    m.technique_with_displacement_bytes = m.technique_with_vector_displacement_bytes =
+        m.technique.total();
+    m.plain_over_technique = m.plain_over_technique_vector =
+        double(m.plain_bytes) / double(m.technique_with_displacement_bytes);
+    return m;
+  }
+  m.displacement_bytes = texels * kDisplacementTexelBytes;
+  m.technique_with_displacement_bytes = m.technique.total() + m.displacement_bytes;
+  m.plain_over_technique = double(m.plain_bytes) / double(m.technique_with_displacement_bytes);
+  m.vector_displacement_bytes = texels * kVectorDisplacementTexelBytes;
+  m.technique_with_vector_displacement_bytes = m.technique.total() + m.vector_displacement_bytes;
+  m.plain_over_technique_vector =
+      double(m.plain_bytes) / double(m.technique_with_vector_displacement_bytes);
+  return m;
+}
+
+namespace {
+
+// The integer-level tessellation of one domain, each point classified as corner c, edge e
+// at parameter t (from corner e towards e + 1, as domainEdgeParameter gives it for both
+// domains, so a quad and a triangle that share an edge name its points alike), or inside.
+struct ClassifiedTessellation {
+  struct PointClass {
+    int corner = -1, edge = -1;
+    int64_t t = 0;
+  };
+  PatchDomain domain;
+  uint32_t corners;
+  tess::Tessellation t;
+  std::vector<PointClass> classes;
+};
+
+ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level) {
+  const float n = float(level);
+  ClassifiedTessellation c{
+      domain,
+      domain == PatchDomain::kQuad ? 4u : 3u,
+      tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+                       tess::Spacing::kInteger, {{n, n, n, n}, {n, n}}),
+      {}};
+  c.classes.resize(c.t.points.size());
+  for (size_t i = 0; i < c.t.points.size(); ++i) {
+    for (uint32_t k = 0; k < c.corners; ++k) {
+      if (isDomainCorner(domain, k, c.t.points[i])) c.classes[i].corner = int(k);
+    }
+    for (uint32_t e = 0; e < c.corners && c.classes[i].corner < 0; ++e) {
+      const int64_t param = domainEdgeParameter(domain, e, c.t.points[i]);
+      if (param > 0 && param < kFixedOne) c.classes[i] = {-1, int(e), param};
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
+  return buildTessellatedMesh(patches, level, buildRenderVertices(patches.controlMesh()), 0,
+                              patches.patchCount());
+}
+
+TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level,
+                                     const RenderVertices& render, size_t first_patch,
+                                     size_t end_patch) {
+  const Mesh& control = patches.controlMesh();
+  std::array<std::optional<ClassifiedTessellation>, 2> by_domain;  // quad, triangle
+
+  TessellatedMesh mesh;
+  std::vector<uint32_t> corner_ids(render.vertex_count, UINT32_MAX);
+  std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
+  std::vector<uint32_t> local;
+  for (size_t p = first_patch; p < end_patch; ++p) {
+    const PatchDomain domain = patches.patchDomain(p);
+    std::optional<ClassifiedTessellation>& slot = by_domain[domain == PatchDomain::kQuad ? 0 : 1];
+    if (!slot) slot = classifiedTessellation(domain, level);
+    const ClassifiedTessellation& c = *slot;
+    const uint32_t corners = c.corners;
+    const uint32_t first = control.face_offsets[p];
+    auto renderVertex = [&](uint32_t k) { return render.corner_vertex[first + k % corners]; };
+    local.resize(c.t.points.size());
+    for (size_t i = 0; i < c.t.points.size(); ++i) {
+      const ClassifiedTessellation::PointClass& k = c.classes[i];
+      uint32_t* id = nullptr;
+      uint32_t fresh = UINT32_MAX;
+      if (k.corner >= 0) {
+        id = &corner_ids[renderVertex(uint32_t(k.corner))];
+      } else if (k.edge >= 0) {
+        const uint32_t a = renderVertex(uint32_t(k.edge)), b = renderVertex(uint32_t(k.edge) + 1);
+        // Unique below 2^64 for up to 16M render vertices.
+        const uint64_t key =
+            a < b ? (uint64_t(a) * render.vertex_count + b) * kFixedOne + uint64_t(k.t)
+                  : (uint64_t(b) * render.vertex_count + a) * kFixedOne + uint64_t(kFixedOne - k.t);
+        id = &edge_ids.try_emplace(key, UINT32_MAX).first->second;
+      } else {
+        id = &fresh;
+      }
+      if (*id == UINT32_MAX) {
+        *id = uint32_t(mesh.vertexCount());
+        const tess::DomainPoint& d = c.t.points[i];
+        const SurfacePointF s = patches.evaluateFloat(p, d);
+        // Corner weights of the uv interpolation, in the domain's corner order.
+        float w[4] = {d[0], d[1], d[2], 0};
+        if (domain == PatchDomain::kQuad) {
+          w[0] = (1 - d[0]) * (1 - d[1]), w[1] = d[0] * (1 - d[1]);
+          w[2] = d[0] * d[1], w[3] = (1 - d[0]) * d[1];
+        }
+        float uv[2] = {0, 0};
+        for (uint32_t corner = 0; corner < corners && control.hasUvs(); ++corner) {
+          const int32_t uv_id = control.corner_uvs[first + corner];
+          if (uv_id < 0) continue;
+          uv[0] += w[corner] * float(control.uvs[uv_id].x);
+          uv[1] += w[corner] * float(control.uvs[uv_id].y);
+        }
+        for (float x : {s.position.x, s.position.y, s.position.z, s.normal.x, s.normal.y,
+                        s.normal.z, uv[0], uv[1]}) {
+          mesh.vertices.push_back(x);
+        }
+      }
+      local[i] = *id;
+    }
+    for (const auto& tri : c.t.triangles) {
+      for (uint32_t v : tri) mesh.indices.push_back(local[v]);
+    }
+  }
+  return mesh;
+}
+
+CompressedMesh compressMesh(TessellatedMesh* mesh) {
+  const size_t vertex_count = mesh->vertexCount();
+  std::vector<uint32_t>& indices = mesh->indices;
+  meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertex_count);
+  std::vector<float> fetched(mesh->vertices.size());
+  const size_t used =
+      meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
+                                  mesh->vertices.data(), vertex_count, kRenderVertexBytes);
+  fetched.resize(used * kFloatsPerVertex);
+  mesh->vertices = std::move(fetched);
+
+  CompressedMesh out;
+  out.index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
+  out.index_data.resize(meshopt_encodeIndexBuffer(out.index_data.data(), out.index_data.size(),
+                                                  indices.data(), indices.size()));
+  out.vertex_data.resize(meshopt_encodeVertexBufferBound(used, kRenderVertexBytes));
+  out.vertex_data.resize(meshopt_encodeVertexBuffer(out.vertex_data.data(), out.vertex_data.size(),
+                                                    mesh->vertices.data(), used,
+                                                    kRenderVertexBytes));
+  return out;
+}
+
+CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level) {
+  const RenderVertices render = buildRenderVertices(patches.controlMesh());
+  const size_t patch_count = patches.patchCount();
+  const size_t chunks = (patch_count + kCompressChunkPatches - 1) / kCompressChunkPatches;
+  std::vector<CompressedSize> per_chunk(chunks);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    const size_t first = c * kCompressChunkPatches;
+    TessellatedMesh mesh = buildTessellatedMesh(
+        patches, level, render, first, std::min(patch_count, first + kCompressChunkPatches));
+    const CompressedMesh compressed = compressMesh(&mesh);
+    per_chunk[c] = {compressed.vertex_data.size(), compressed.index_data.size(), 1};
+  });
+  CompressedSize total;
+  for (const CompressedSize& chunk : per_chunk) {
+    total.vertex_bytes += chunk.vertex_bytes;
+    total.index_bytes += chunk.index_bytes;
+    total.chunks += chunk.chunks;
+  }
+  return total;
+}
+
+bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {
+  std::vector<float> vertices(like.vertices.size());
+  std::vector<uint32_t> indices(like.indices.size());
+  if (meshopt_decodeVertexBuffer(vertices.data(), like.vertexCount(), kRenderVertexBytes,
+                                 compressed.vertex_data.data(),
+                                 compressed.vertex_data.size()) != 0 ||
+      meshopt_decodeIndexBuffer(indices.data(), indices.size(), sizeof(uint32_t),
+                                compressed.index_data.data(), compressed.index_data.size()) != 0) {
+    return false;
+  }
+  // The index codec keeps triangle order and winding but may rotate a triangle's
+  // vertices; compare each triangle from its smallest index.
+  auto canonical = [](std::vector<uint32_t> list) {
+    for (size_t i = 0; i + 2 < list.size(); i += 3) {
+      while (list[i] > list[i + 1] || list[i] > list[i + 2]) {
+        std::rotate(list.begin() + i, list.begin() + i + 1, list.begin() + i + 3);
+      }
+    }
+    return list;
+  };
+  return canonical(indices) == canonical(like.indices) &&
+         std::memcmp(vertices.data(), like.vertices.data(), vertices.size() * sizeof(float)) == 0;
+}
+
+}  // namespace tb
