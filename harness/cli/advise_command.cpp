@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -195,5 +196,17 @@ int runAdvise(const AdviseArgs& args) {
                              : renderAdviceMarkdown(advice, constraints));
   return advice.anyPasses() ? 0 : 1;
 }
+
+namespace {
+
+SubcommandRun addAdvise(CLI::App& app) {
+  auto args = std::make_shared<AdviseArgs>();
+  addAdviseCommand(app, *args);
+  return [args](const Invocation&) { return runAdvise(*args); };
+}
+
+}  // namespace
+
+const Subcommand kAdviseSubcommand{"advise", addAdvise};
 
 }  // namespace tb::cli

@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "harness/cli/subcommand.h"
 
 namespace tb::cli {
 
@@ -30,5 +28,7 @@ CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args);
 // Exit 0 when at least one candidate meets every constraint, 1 when none does, 2 on bad
 // input (an unknown asset, technique or number; a run folder without the asset).
 int runAdvise(const AdviseArgs& args);
+
+extern const Subcommand kAdviseSubcommand;
 
 }  // namespace tb::cli

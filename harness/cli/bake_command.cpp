@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "core/mesh/input_error.h"
@@ -159,5 +160,17 @@ int runBake(const BakeArgs& args) {
              result.rays_missed, seconds, sidecarPath(args.out));
   return 0;
 }
+
+namespace {
+
+SubcommandRun addBake(CLI::App& app) {
+  auto args = std::make_shared<BakeArgs>();
+  addBakeCommand(app, *args);
+  return [args](const Invocation&) { return runBake(*args); };
+}
+
+}  // namespace
+
+const Subcommand kBakeSubcommand{"bake", addBake};
 
 }  // namespace tb::cli

@@ -6,9 +6,7 @@
 #include <cstdint>
 #include <string>
 
-namespace CLI {
-class App;
-}
+#include "harness/cli/subcommand.h"
 
 namespace tb::cli {
 
@@ -31,5 +29,7 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args);
 
 // Exit 0, or throws InputError / UnsupportedInput (exit 2, nothing written) on bad input.
 int runBake(const BakeArgs& args);
+
+extern const Subcommand kBakeSubcommand;
 
 }  // namespace tb::cli

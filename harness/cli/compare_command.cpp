@@ -1,10 +1,12 @@
 #include "harness/cli/compare_command.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include "core/mesh/input_error.h"
 #include "harness/results/compare.h"
@@ -32,7 +34,40 @@ double parseThreshold(const std::string& option, const std::string& text) {
   return value;
 }
 
+SubcommandRun addCompare(CLI::App& app) {
+  auto args = std::make_shared<CompareArgs>();
+  addCompareCommand(app, *args);
+  return [args](const Invocation&) { return runCompare(*args); };
+}
+
 }  // namespace
+
+CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "compare two finished runs metric by metric by each metric's direction; exit 1 when the "
+      "new run lost (skipped, failed, absent) or worsened a figure of the base");
+  compare->add_option("base", args.base, "the base run folder (results/<run-id>)")
+      ->required();
+  compare->add_option("new", args.current, "the new run folder")->required();
+  compare->add_option("--threshold", args.threshold,
+                      "relative change that counts: |new - base| > t * max(|base|, |new|); 0 = exact")
+      ->capture_default_str();
+  compare->add_option("--metric-threshold", args.metric_thresholds,
+                      "NAME=VALUE: the threshold for one metric name (repeatable)");
+  compare->add_option("--limit", args.limit, "changes listed in the table, worst first")
+      ->capture_default_str();
+  compare->add_option("--alpha", args.alpha,
+                      "timings: significance level of the two-sided Mann-Whitney U test on "
+                      "the repeated samples of timings.json (run --repetitions >= 2)")
+      ->capture_default_str();
+  compare->add_option("--time-threshold", args.time_threshold,
+                      "timings: relative change of the median that counts, with p < alpha")
+      ->capture_default_str();
+  compare->add_flag("--no-timings", args.no_timings,
+                    "compare results.json only, not timings.json");
+  return compare;
+}
 
 int runCompare(const CompareArgs& args) {
   CompareOptions options;
@@ -58,5 +93,7 @@ int runCompare(const CompareArgs& args) {
              renderComparison(comparison, args.limit));
   return comparison.failed() ? 1 : 0;
 }
+
+const Subcommand kCompareSubcommand{"compare", addCompare};
 
 }  // namespace tb::cli

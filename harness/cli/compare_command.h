@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/cli/subcommand.h"
+
 namespace tb::cli {
 
 struct CompareArgs {
@@ -18,9 +20,13 @@ struct CompareArgs {
   bool no_timings = false;              // compare results.json only
 };
 
+CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
+
 // Exit 0 when nothing was lost or worsened, 1 on a regression or a missing figure (a row the
 // new run skipped, e.g. without a Vulkan device, is missing) or a timing regression, 2 on bad
 // input (an unfinished or unreadable folder, a malformed NAME=VALUE or timings.json).
 int runCompare(const CompareArgs& args);
+
+extern const Subcommand kCompareSubcommand;
 
 }  // namespace tb::cli

@@ -1,8 +1,10 @@
 #include "harness/cli/merge_command.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include "core/mesh/input_error.h"
@@ -31,7 +33,26 @@ std::string folderName(const std::string& path) {
   return folder.filename().string();
 }
 
+SubcommandRun addMerge(CLI::App& app) {
+  auto args = std::make_shared<MergeArgs>();
+  addMergeCommand(app, *args);
+  return [args](const Invocation& invocation) {
+    return runMerge(*args, invocation.command_line);
+  };
+}
+
 }  // namespace
+
+CLI::App* addMergeCommand(CLI::App& app, MergeArgs& args) {
+  CLI::App* merge = app.add_subcommand(
+      "merge", "join the run folders of shards 0..N-1 (run --shard I/N) into one new run folder");
+  merge->add_option("shards", args.shards, "shard run folders (results/<run-id>), all N")
+      ->required();
+  merge->add_option("--out", args.out, "the merged run's folder (must not exist yet)")
+      ->required();
+  merge->add_flag("--quiet", args.quiet, "print only the merged folder");
+  return merge;
+}
 
 int runMerge(const MergeArgs& args, const std::string& command_line) {
   std::vector<ShardRun> shards;
@@ -64,5 +85,7 @@ int runMerge(const MergeArgs& args, const std::string& command_line) {
   }
   return 0;
 }
+
+const Subcommand kMergeSubcommand{"merge", addMerge};
 
 }  // namespace tb::cli

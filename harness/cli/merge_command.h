@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/cli/subcommand.h"
+
 namespace tb::cli {
 
 struct MergeArgs {
@@ -12,6 +14,10 @@ struct MergeArgs {
   bool quiet = false;
 };
 
+CLI::App* addMergeCommand(CLI::App& app, MergeArgs& args);
+
 int runMerge(const MergeArgs& args, const std::string& command_line);
+
+extern const Subcommand kMergeSubcommand;
 
 }  // namespace tb::cli

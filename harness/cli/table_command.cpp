@@ -4,8 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "core/mesh/input_error.h"
+#include "harness/cli/format_option.h"
 #include "harness/report/summary.h"
 #include "harness/report/table.h"
 #include "harness/results/results_json.h"
@@ -41,6 +43,7 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
                     "metric name (repeatable; default: the measure's headline metrics)");
   table->add_option("--format", args.format,
                     "markdown | csv (footnote as leading '# ' lines) | latex (booktabs fragment)")
+      ->transform(markdownAlias())
       ->capture_default_str();
   table->add_flag("--per-asset", args.per_asset, "a line per technique x variant x asset");
   table->add_flag("--published", args.published,
@@ -106,5 +109,17 @@ int runTable(const TableArgs& args) {
   fmt::print("{}", renderTable(summaryTable(results, options), *format));
   return 0;
 }
+
+namespace {
+
+SubcommandRun addTable(CLI::App& app) {
+  auto args = std::make_shared<TableArgs>();
+  addTableCommand(app, *args);
+  return [args](const Invocation&) { return runTable(*args); };
+}
+
+}  // namespace
+
+const Subcommand kTableSubcommand{"table", addTable};
 
 }  // namespace tb::cli

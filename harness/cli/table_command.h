@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "harness/cli/subcommand.h"
 
 namespace tb::cli {
 
@@ -15,7 +13,7 @@ struct TableArgs {
   std::string run_dir;
   std::string measure;               // required unless --published
   std::vector<std::string> metrics;  // empty: the declaration's headline metrics
-  std::string format = "markdown";   // markdown | csv | latex
+  std::string format = "markdown";   // markdown (alias md) | csv | latex
   bool per_asset = false;
   bool published = false;  // the published figures beside ours (memory, seed_figures)
 };
@@ -25,5 +23,7 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args);
 // Exit 0, or 2 on bad input (an unfinished folder, a measure or metric the run lacks, an
 // unknown format).
 int runTable(const TableArgs& args);
+
+extern const Subcommand kTableSubcommand;
 
 }  // namespace tb::cli

@@ -1,7 +1,9 @@
 #include "harness/cli/tessellate_run.h"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <memory>
 #include <stdexcept>
 
 #include "core/gpu/context.h"
@@ -69,5 +71,17 @@ int runTessellate(const TessellateArgs& args) {
   }
   return 0;
 }
+
+namespace {
+
+SubcommandRun addTessellate(CLI::App& app) {
+  auto args = std::make_shared<TessellateArgs>();
+  addTessellateCommand(app, *args);
+  return [args](const Invocation&) { return runTessellate(*args); };
+}
+
+}  // namespace
+
+const Subcommand kTessellateSubcommand{"tessellate", addTessellate};
 
 }  // namespace tb::cli

@@ -180,6 +180,107 @@ void markParetoFront(PlotChart* chart, Direction y_direction) {
   }
 }
 
+namespace {
+
+// Where a row goes on the x axis: a category for bars, a number otherwise (a key, a metric
+// of the row, or another measure's figure of the record); neither when the row has none.
+struct RowX {
+  std::optional<std::string> category;
+  std::optional<double> x;
+  XSource source = XSource::kNone;
+};
+
+RowX rowX(const Record& record, const MetricRow& row, const PlotSpec& spec, bool bar,
+          const std::optional<CrossMeasureX>& cross) {
+  RowX at;
+  if (bar) {
+    at.category = axisText(record, row, spec.x);
+  } else if (const auto key = row.keys.find(spec.x); key != row.keys.end()) {
+    at.x = parsePlotNumber(key->second);
+    at.source = XSource::kKey;
+  } else if (const Metric* metric = findMetric(row, spec.x); metric != nullptr) {
+    if (std::isfinite(metric->value)) at.x = metric->value;
+    at.source = XSource::kMetric;
+  } else if (cross) {
+    const auto it = cross->by_record.find({record.technique, record.variant, record.asset});
+    if (it != cross->by_record.end() && std::isfinite(it->second)) at.x = it->second;
+    at.source = XSource::kOtherMeasure;
+  }
+  return at;
+}
+
+// Adds the row's y value to its facet's chart, series and point.
+void addValue(std::vector<ChartValues>* charts, const Record& record, RowX at,
+              const std::string& facet, const std::string& series, double y) {
+  ChartValues& chart = findOrAdd(
+      *charts, [&](const ChartValues& c) { return c.facet == facet; },
+      ChartValues{facet, {}, {}});
+  const std::optional<std::string>& category = at.category;
+  std::optional<double>& x = at.x;
+  if (category && std::find(chart.categories.begin(), chart.categories.end(), *category) ==
+                      chart.categories.end()) {
+    chart.categories.push_back(*category);
+  }
+  if (category) {
+    x = double(std::find(chart.categories.begin(), chart.categories.end(), *category) -
+               chart.categories.begin());
+  }
+  SeriesValues& line = findOrAdd(
+      chart.series, [&](const SeriesValues& s) { return s.name == series; },
+      SeriesValues{series, {}});
+  const std::string record_label = record.technique + "/" + record.variant;
+  const std::string own = at.source == XSource::kOtherMeasure ? record_label : "";
+  PointValues& point = findOrAdd(
+      line.points, [&](const PointValues& p) { return p.x == *x && p.record_label == own; },
+      PointValues{*x, category.value_or(""), own, {}, {}});
+  if (std::find(point.labels.begin(), point.labels.end(), record_label) ==
+      point.labels.end()) {
+    point.labels.push_back(record_label);
+  }
+  point.ys.push_back(y);
+}
+
+// The x axis's label, by where the x values came from.
+void labelX(const Results& results, const MeasureDeclaration& measure, const PlotSpec& spec,
+            XSource x_source, const std::optional<CrossMeasureX>& cross, PlotData* data) {
+  switch (x_source) {
+    case XSource::kMetric:
+      data->x_label = withUnit(spec.x, unitOf(results, measure.measure, spec.x));
+      break;
+    case XSource::kOtherMeasure:
+      data->point_per_variant = true;
+      data->x_label = cross->measure + " " +
+                      withUnit(cross->metric, unitOf(results, cross->measure, cross->metric));
+      break;
+    default:
+      data->x_label = spec.x;
+  }
+}
+
+// The charts from their values: facets in order, the ones with too few points dropped,
+// the Pareto front marked, the points a log axis hides counted.
+void finishCharts(const Results& results, const PlotSpec& spec, bool bar,
+                  std::vector<ChartValues> charts, PlotData* data) {
+  if (spec.facet == "asset") orderFacets(results, &charts);
+  for (ChartValues& values : charts) {
+    PlotChart chart = finishChart(std::move(values), bar, spec.reduce);
+    // A facet of one point says nothing a table would not; an unfaceted chart keeps it.
+    if (chart.points() < (spec.facet.empty() ? 1u : 2u)) {
+      ++data->charts_dropped;
+      continue;
+    }
+    if (spec.pareto_front) markParetoFront(&chart, data->y_direction);
+    for (const PlotSeries& series : chart.series) {
+      data->points_hidden_by_log +=
+          size_t(std::count_if(series.points.begin(), series.points.end(),
+                               [&](const PlotPoint& p) { return hiddenByLog(spec, p); }));
+    }
+    data->charts.push_back(std::move(chart));
+  }
+}
+
+}  // namespace
+
 PlotData plotData(const Results& results, const MeasureDeclaration& measure, const PlotSpec& spec) {
   PlotData data;
   data.measure = measure.measure;
@@ -197,24 +298,8 @@ PlotData plotData(const Results& results, const MeasureDeclaration& measure, con
       if (result.measure != measure.measure || result.status != MeasureStatus::kOk) continue;
       for (const MetricRow& row : result.rows) {
         if (row.status != MeasureStatus::kOk || !rowInScope(spec.where, row.keys)) continue;
-        // x: a category for bars, a number otherwise.
-        std::optional<std::string> category;
-        std::optional<double> x;
-        XSource source = XSource::kNone;
-        if (bar) {
-          category = axisText(record, row, spec.x);
-        } else if (const auto key = row.keys.find(spec.x); key != row.keys.end()) {
-          x = parsePlotNumber(key->second);
-          source = XSource::kKey;
-        } else if (const Metric* metric = findMetric(row, spec.x); metric != nullptr) {
-          if (std::isfinite(metric->value)) x = metric->value;
-          source = XSource::kMetric;
-        } else if (cross) {
-          const auto it = cross->by_record.find({record.technique, record.variant, record.asset});
-          if (it != cross->by_record.end() && std::isfinite(it->second)) x = it->second;
-          source = XSource::kOtherMeasure;
-        }
-        if (!category && !x) {
+        const RowX at = rowX(record, row, spec, bar, cross);
+        if (!at.category && !at.x) {
           ++data.rows_without_x;
           continue;
         }
@@ -230,65 +315,14 @@ PlotData plotData(const Results& results, const MeasureDeclaration& measure, con
           ++data.rows_without_x;  // no value to place the row by
           continue;
         }
-        if (x_source == XSource::kNone) x_source = source;
+        if (x_source == XSource::kNone) x_source = at.source;
         ++data.rows_used;
-
-        ChartValues& chart = findOrAdd(
-            charts, [&](const ChartValues& c) { return c.facet == *facet; },
-            ChartValues{*facet, {}, {}});
-        if (category && std::find(chart.categories.begin(), chart.categories.end(), *category) ==
-                            chart.categories.end()) {
-          chart.categories.push_back(*category);
-        }
-        if (category) {
-          x = double(std::find(chart.categories.begin(), chart.categories.end(), *category) -
-                     chart.categories.begin());
-        }
-        SeriesValues& line = findOrAdd(
-            chart.series, [&](const SeriesValues& s) { return s.name == *series; },
-            SeriesValues{*series, {}});
-        const std::string record_label = record.technique + "/" + record.variant;
-        const std::string own = source == XSource::kOtherMeasure ? record_label : "";
-        PointValues& point = findOrAdd(
-            line.points, [&](const PointValues& p) { return p.x == *x && p.record_label == own; },
-            PointValues{*x, category.value_or(""), own, {}, {}});
-        if (std::find(point.labels.begin(), point.labels.end(), record_label) ==
-            point.labels.end()) {
-          point.labels.push_back(record_label);
-        }
-        point.ys.push_back(y->value);
+        addValue(&charts, record, at, *facet, *series, y->value);
       }
     }
   }
-
-  switch (x_source) {
-    case XSource::kMetric:
-      data.x_label = withUnit(spec.x, unitOf(results, measure.measure, spec.x));
-      break;
-    case XSource::kOtherMeasure:
-      data.point_per_variant = true;
-      data.x_label = cross->measure + " " +
-                     withUnit(cross->metric, unitOf(results, cross->measure, cross->metric));
-      break;
-    default:
-      data.x_label = spec.x;
-  }
-  if (spec.facet == "asset") orderFacets(results, &charts);
-  for (ChartValues& values : charts) {
-    PlotChart chart = finishChart(std::move(values), bar, spec.reduce);
-    // A facet of one point says nothing a table would not; an unfaceted chart keeps it.
-    if (chart.points() < (spec.facet.empty() ? 1u : 2u)) {
-      ++data.charts_dropped;
-      continue;
-    }
-    if (spec.pareto_front) markParetoFront(&chart, data.y_direction);
-    for (const PlotSeries& series : chart.series) {
-      data.points_hidden_by_log +=
-          size_t(std::count_if(series.points.begin(), series.points.end(),
-                               [&](const PlotPoint& p) { return hiddenByLog(spec, p); }));
-    }
-    data.charts.push_back(std::move(chart));
-  }
+  labelX(results, measure, spec, x_source, cross, &data);
+  finishCharts(results, spec, bar, std::move(charts), &data);
   return data;
 }
 

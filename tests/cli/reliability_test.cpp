@@ -81,45 +81,11 @@ struct BadInput {
   std::vector<std::string> line_names;
 };
 
-std::vector<BadInput> badInputs() {
-  const std::string run = "run --quiet --out {dir}/out ";
+// OBJ files: the classes of docs/ARCHITECTURE.md section 8 and the reliability list, and
+// what a technique cannot take, when no selected technique can.
+std::vector<BadInput> objInputs(const std::string& run) {
   const std::string acc = run + "--technique acc --measure memory --asset ";
-  const std::string camera = run + "--technique phong --measure adaptivity --asset catmark_cube "
-                                   "--camera ";
-  const std::string orbit = readFile(testing::assetPath("cameras/orbit.json"));
-  const std::string scenario = run + "--technique wave_particles --measure wave_error --scenario ";
-  const std::string point = readFile(testing::assetPath("scenarios/wave_point_impulse.json"));
-  // The bundled point impulse with `from` replaced (it must be there).
-  auto pointWith = [&](const std::string& from, const std::string& to) {
-    std::string text = point;
-    const size_t at = text.find(from);
-    if (at == std::string::npos) throw std::logic_error("not in the scenario: " + from);
-    return text.replace(at, from.size(), to);
-  };
-  // The bundled orbit with one top-level field's value replaced as text (1e999 is no
-  // double a JSON library would write).
-  auto orbitWith = [&](const std::string& field, const std::string& value) {
-    std::string text = orbit;
-    const size_t key = text.find("\"" + field + "\": ");
-    const size_t start = key + field.size() + 4;
-    text.replace(start, text.find_first_of(",\n", start) - start, value);
-    return text;
-  };
-  // A bundled map and its sidecar, and edited copies of the sidecar.
-  const std::string displace = run + "--measure memory --technique acc --displacement ";
-  const std::string exr = readFile(testing::assetPath("displacement/acc_catmark_torus.exr"));
-  const std::string sidecar =
-      readFile(testing::assetPath("displacement/acc_catmark_torus.exr.json"));
-  auto sidecarWith = [&](const std::string& from, const std::string& to) {
-    std::string text = sidecar;
-    text.replace(text.find(from), from.size(), to);
-    return text;
-  };
-  const std::string vector_sidecar = sidecarWith("\"kind\": \"scalar\"", "\"kind\": \"vector\"");
-  const std::string other_asset =
-      sidecarWith("opensubdiv/catmark_torus", "opensubdiv/catmark_cube");
   return {
-      // Files: the classes of docs/ARCHITECTURE.md section 8, and the reliability list.
       {"obj missing", {}, run + "--asset {dir}/missing.obj", {"{dir}/missing.obj", "no such file"}},
       {"obj empty", {{"empty.obj", ""}}, run + "--asset {dir}/empty.obj",
        {"{dir}/empty.obj", "empty"}},
@@ -156,7 +122,24 @@ std::vector<BadInput> badInputs() {
       // finite limit of 256 (techniques/acc/acc.h kMaxValence): the class applies above it.
       {"valence over acc's limit", {{"pole257.obj", poleObj(257)}}, acc + "{dir}/pole257.obj",
        {"{dir}/pole257.obj", "vertex 0", "valence 257 above the maximum 256"}},
-      // Camera path files (run --camera).
+  };
+}
+
+// Camera path files (run --camera).
+std::vector<BadInput> cameraInputs(const std::string& run) {
+  const std::string camera = run + "--technique phong --measure adaptivity --asset catmark_cube "
+                                   "--camera ";
+  const std::string orbit = readFile(testing::assetPath("cameras/orbit.json"));
+  // The bundled orbit with one top-level field's value replaced as text (1e999 is no
+  // double a JSON library would write).
+  auto orbitWith = [&](const std::string& field, const std::string& value) {
+    std::string text = orbit;
+    const size_t key = text.find("\"" + field + "\": ");
+    const size_t start = key + field.size() + 4;
+    text.replace(start, text.find_first_of(",\n", start) - start, value);
+    return text;
+  };
+  return {
       {"camera missing", {}, camera + "{dir}/missing.json", {"{dir}/missing.json", "no such file"}},
       {"camera malformed JSON", {{"cut.json", orbit.substr(0, orbit.size() / 2)}},
        camera + "{dir}/cut.json", {"{dir}/cut.json", "malformed JSON"}},
@@ -168,7 +151,21 @@ std::vector<BadInput> badInputs() {
        camera + "{dir}/fov.json", {"{dir}/fov.json", "fov_y_deg"}},
       {"camera field of the wrong type", {{"frames.json", orbitWith("frames", "\"24\"")}},
        camera + "{dir}/frames.json", {"{dir}/frames.json", "frames"}},
-      // Scenario files (run --scenario), and what a simulation cannot take.
+  };
+}
+
+// Scenario files (run --scenario), and what a simulation cannot take.
+std::vector<BadInput> scenarioInputs(const std::string& run) {
+  const std::string scenario = run + "--technique wave_particles --measure wave_error --scenario ";
+  const std::string point = readFile(testing::assetPath("scenarios/wave_point_impulse.json"));
+  // The bundled point impulse with `from` replaced (it must be there).
+  auto pointWith = [&](const std::string& from, const std::string& to) {
+    std::string text = point;
+    const size_t at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("not in the scenario: " + from);
+    return text.replace(at, from.size(), to);
+  };
+  return {
       {"scenario missing", {}, scenario + "{dir}/missing.json",
        {"{dir}/missing.json", "no such file"}},
       {"scenario malformed JSON", {{"cut.json", point.substr(0, point.size() / 2)}},
@@ -186,8 +183,25 @@ std::vector<BadInput> badInputs() {
        {{"far.json", pointWith("\"position_m\": [0.0, 0.0]", "\"position_m\": [9.0, 0.0]")}},
        scenario + "{dir}/far.json", {"{dir}/far.json", "wave_particles.sources[0].position_m"}},
       {"unknown scenario", {}, scenario + "no_such_scenario", {"no_such_scenario", "not a bundled scenario"}},
-      // Names and options.
-      // Displacement maps (`run --displacement`): the EXR and its sidecar.
+  };
+}
+
+// Displacement maps (`run --displacement`): the EXR and its sidecar.
+std::vector<BadInput> displacementInputs(const std::string& run) {
+  // A bundled map and its sidecar, and edited copies of the sidecar.
+  const std::string displace = run + "--measure memory --technique acc --displacement ";
+  const std::string exr = readFile(testing::assetPath("displacement/acc_catmark_torus.exr"));
+  const std::string sidecar =
+      readFile(testing::assetPath("displacement/acc_catmark_torus.exr.json"));
+  auto sidecarWith = [&](const std::string& from, const std::string& to) {
+    std::string text = sidecar;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  const std::string vector_sidecar = sidecarWith("\"kind\": \"scalar\"", "\"kind\": \"vector\"");
+  const std::string other_asset =
+      sidecarWith("opensubdiv/catmark_torus", "opensubdiv/catmark_cube");
+  return {
       {"exr missing", {}, displace + "{dir}/missing.exr", {"{dir}/missing.exr", "no such file"}},
       {"exr truncated", {{"cut.exr", exr.substr(0, exr.size() / 2)}, {"cut.exr.json", sidecar}},
        displace + "{dir}/cut.exr", {"{dir}/cut.exr"}},
@@ -199,6 +213,12 @@ std::vector<BadInput> badInputs() {
        displace + "{dir}/kind.exr", {"{dir}/kind.exr.json", "kind"}},
       {"exr baked for another asset", {{"other.exr", exr}, {"other.exr.json", other_asset}},
        displace + "{dir}/other.exr", {"other.exr", "tiles but the surface has"}},
+  };
+}
+
+// Names and options, and where results go.
+std::vector<BadInput> optionInputs(const std::string& run) {
+  return {
       {"unknown technique", {}, run + "--technique nope", {"--technique", "nope"}},
       {"unknown measure", {}, run + "--measure nope", {"--measure", "nope"}},
       {"unknown asset", {}, run + "--asset no_such_asset", {"no_such_asset"}},
@@ -215,6 +235,16 @@ std::vector<BadInput> badInputs() {
        "{dir}/plain_file/results",
        {"{dir}/plain_file/results", "cannot create results folder"}},
   };
+}
+
+// Every class, `run` being "run --quiet --out {dir}/out ".
+std::vector<BadInput> badInputs() {
+  const std::string run = "run --quiet --out {dir}/out ";
+  std::vector<BadInput> all;
+  for (auto inputs : {objInputs, cameraInputs, scenarioInputs, displacementInputs, optionInputs}) {
+    for (BadInput& input : inputs(run)) all.push_back(std::move(input));
+  }
+  return all;
 }
 
 std::string expand(std::string text, const std::string& dir) {

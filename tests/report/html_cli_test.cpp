@@ -97,6 +97,21 @@ TEST(HtmlCli, ReportSaysWhyThereAreNoPictures) {
   fs::remove_all(run.parent_path());
 }
 
+// `markdown` is the format's one spelling (help, default); `md` stays accepted for it. Each
+// prints the run's report.md.
+TEST(HtmlCli, FormatMarkdownAndItsAliasMdPrintReportMd) {
+  const fs::path run = smallRun("html_cli_markdown");
+  const std::string expected = readFile(run / "report.md");
+  for (const std::string format : {"", " --format markdown", " --format md"}) {
+    const testing::SplitResult report = runTessbenchSplit("report " + run.string() + format);
+    EXPECT_EQ(report.exit_code, 0) << format << ": " << report.err;
+    EXPECT_EQ(report.out, expected) << format;
+  }
+  const testing::SplitResult help = runTessbenchSplit("report --help");
+  EXPECT_NE(help.out.find("--format TEXT=markdown"), std::string::npos) << help.out;
+  fs::remove_all(run.parent_path());
+}
+
 TEST(HtmlCli, UnknownFormatIsOneLineListingTheKnownOnes) {
   const fs::path run = smallRun("html_cli_format");
   const testing::SplitResult report = runTessbenchSplit("report --format pdf " + run.string());

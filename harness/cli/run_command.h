@@ -1,15 +1,13 @@
-// The `tessbench` subcommands other than tessellate. Each returns the exit code.
+// `tessbench run`: measures techniques on assets (the suite, harness/suite/suite.h) into a new
+// results folder: results.json, timings.json, report.md, report.html, tables/, pictures/.
 #pragma once
 
 #include <string>
 #include <vector>
 
-namespace tb::cli {
+#include "harness/cli/subcommand.h"
 
-struct ListArgs {
-  std::string what;  // techniques | assets | scenarios | measures
-  bool json = false;
-};
+namespace tb::cli {
 
 struct RunArgs {
   std::vector<std::string> techniques;
@@ -33,13 +31,12 @@ struct RunArgs {
   std::vector<std::string> displacements;
 };
 
-struct ReportArgs {
-  std::string run_dir;
-  std::string format = "md";
-};
+CLI::App* addRunCommand(CLI::App& app, RunArgs& args);
 
-int runList(const ListArgs& args);
+// Exit 0, or 1 when a measure failed on some record (the run is complete but not clean);
+// throws on bad input (nothing written).
 int runRun(const RunArgs& args, const std::string& command_line);
-int runReport(const ReportArgs& args);
+
+extern const Subcommand kRunSubcommand;
 
 }  // namespace tb::cli

@@ -1,0 +1,85 @@
+#include "harness/cli/list_command.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "harness/suite/asset_catalog.h"
+#include "harness/suite/scenario_file.h"
+#include "harness/measures/measure.h"
+#include "core/mesh/input_error.h"
+#include "harness/results/results_json.h"
+#include "techniques/registry.h"
+
+namespace tb::cli {
+
+CLI::App* addListCommand(CLI::App& app, ListArgs& args) {
+  CLI::App* list = app.add_subcommand("list", "list techniques, assets, scenarios or measures");
+  list->add_option("what", args.what, "techniques | assets | scenarios | measures")
+      ->required()
+      ->check(CLI::IsMember({"techniques", "assets", "scenarios", "measures"}));
+  list->add_flag("--json", args.json, "print JSON");
+  return list;
+}
+
+int runList(const ListArgs& args) {
+  nlohmann::ordered_json items = nlohmann::ordered_json::array();
+  if (args.what == "techniques") {
+    for (const Technique* t : TechniqueRegistry::instance().all()) {
+      const TechniqueInfo& info = t->info();
+      nlohmann::ordered_json variants = nlohmann::ordered_json::array();
+      for (const VariantInfo& v : t->variants()) variants.push_back(v.name);
+      items.push_back({{"id", info.id},
+                       {"family", toString(info.family)},
+                       {"title", info.title},
+                       {"citation", info.citation},
+                       {"input", info.input},
+                       {"variants", variants}});
+      if (!args.json) fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title, info.citation);
+    }
+  } else if (args.what == "assets") {
+    for (const AssetRef& asset : bundledAssets()) {
+      items.push_back({{"name", asset.name}, {"path", asset.path}});
+      if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.path);
+    }
+  } else if (args.what == "scenarios") {
+    for (const Scenario& scenario : bundledScenarios()) {
+      items.push_back({{"name", scenario.name},
+                       {"technique", scenario.technique},
+                       {"path", scenario.path},
+                       {"time_step_s", scenario.time_step_s},
+                       {"duration_s", scenario.duration_s}});
+      if (!args.json) fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
+    }
+  } else if (args.what == "measures") {
+    for (const Measure* m : MeasureRegistry::instance().all()) {
+      const MeasureInfo& info = m->info();
+      // The declaration: id, title, description, headline, fixed notes, metrics (unit, direction).
+      nlohmann::ordered_json item = toJson(declarationOf(info));
+      item.erase("measure");
+      items.push_back({{"id", info.id}});
+      items.back().update(item);
+      if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
+    }
+  } else {
+    throw InputError("list", args.what, "expected techniques, assets, scenarios or measures");
+  }
+  if (args.json) fmt::print("{}\n", items.dump(2));
+  return 0;
+}
+
+namespace {
+
+SubcommandRun addList(CLI::App& app) {
+  auto args = std::make_shared<ListArgs>();
+  addListCommand(app, *args);
+  return [args](const Invocation&) { return runList(*args); };
+}
+
+}  // namespace
+
+const Subcommand kListSubcommand{"list", addList};
+
+}  // namespace tb::cli

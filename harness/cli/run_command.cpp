@@ -1,0 +1,288 @@
+#include "harness/cli/run_command.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "harness/cli/progress_estimate.h"
+#include "harness/cli/html_assets.h"
+#include "harness/suite/displacement_file.h"
+#include "harness/cli/run_context.h"
+#include "harness/suite/asset_catalog.h"
+#include "harness/suite/scenario_file.h"
+#include "harness/suite/camera_path.h"
+#include "harness/measures/measure.h"
+#include "harness/suite/suite.h"
+#include "harness/pictures/run_pictures.h"
+#include "core/mesh/input_error.h"
+#include "harness/report/csv_tables.h"
+#include "harness/report/markdown.h"
+#include "harness/results/results_json.h"
+#include "harness/results/run_folder.h"
+#include "harness/results/timings_json.h"
+#include "techniques/registry.h"
+
+namespace tb::cli {
+namespace {
+
+std::string knownIds(const std::vector<std::string>& ids) {
+  std::string text;
+  for (const auto& id : ids) text += (text.empty() ? "" : ", ") + id;
+  return text;
+}
+
+std::vector<const Technique*> selectTechniques(const std::vector<std::string>& ids) {
+  std::vector<const Technique*> selected;
+  std::vector<std::string> known;
+  for (const Technique* t : TechniqueRegistry::instance().all()) known.push_back(t->info().id);
+  for (const std::string& id : ids) {
+    const Technique* technique = TechniqueRegistry::instance().find(id);
+    if (technique == nullptr) {
+      throw InputError("--technique", id, "unknown technique (known: " + knownIds(known) + ")");
+    }
+    selected.push_back(technique);
+  }
+  return selected;
+}
+
+std::vector<const Measure*> selectMeasures(const std::vector<std::string>& ids) {
+  std::vector<const Measure*> selected;
+  std::vector<std::string> known;
+  for (const Measure* m : MeasureRegistry::instance().all()) known.push_back(m->info().id);
+  for (const std::string& id : ids) {
+    const Measure* measure = MeasureRegistry::instance().find(id);
+    if (measure == nullptr) {
+      throw InputError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
+    }
+    selected.push_back(measure);
+  }
+  return selected;
+}
+
+SuiteMode parseSuiteMode(const std::string& text) {
+  if (text == toString(SuiteMode::kDefault)) return SuiteMode::kDefault;
+  if (text == toString(SuiteMode::kFull)) return SuiteMode::kFull;
+  throw InputError("--suite", text, "unknown suite (known: default, full)");
+}
+
+// Reads every --camera file before any work, so a bad one stops the run with nothing
+// written; `shown` gets the files as results name them.
+std::vector<CameraPathFn> selectCameraPaths(const std::vector<std::string>& names_or_paths,
+                                            std::vector<std::string>* shown) {
+  std::vector<CameraPathFn> paths;
+  for (const std::string& name_or_path : names_or_paths) {
+    CameraPathSpec spec = resolveCameraPath(name_or_path);
+    shown->push_back(spec.shown_path);
+    paths.push_back(cameraPathFn(std::move(spec)));
+  }
+  return paths;
+}
+
+// Wall seconds per record × measure, every repetition's, beside results.json: timings
+// change run to run, the results must not (harness/results/timings_json.h).
+std::string timingsJson(const SuiteTimings& timings) {
+  RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, {}};
+  for (const MeasureTiming& t : timings.measures) {
+    run.measures.push_back({t.technique, t.variant, t.asset, t.measure,
+                            t.samples.empty() ? std::vector<double>{t.seconds} : t.samples});
+  }
+  return serializeTimings(run);
+}
+
+// Suite wall time and each measure's summed time, the figures the suite budget is kept by.
+void printTimingSummary(const SuiteTimings& timings) {
+  std::map<std::string, double> per_measure;
+  for (const MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
+  std::string parts;
+  for (const auto& [measure, seconds] : per_measure) {
+    parts += fmt::format("{}{} {:.1f} s", parts.empty() ? "" : ", ", measure, seconds);
+  }
+  fmt::print(stderr, "suite: {:.1f} s wall on {} threads; measure time: {}\n",
+             timings.wall_seconds, timings.threads, parts);
+}
+
+
+// The suite's selection from the options; `camera_files` gets the --camera files as
+// results name them. Throws InputError on an unknown id, asset, scenario or map.
+SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>* camera_files) {
+  SuiteSelection selection;
+  selection.techniques = selectTechniques(args.techniques);
+  selection.measures = selectMeasures(args.measures);
+  selection.device_name = args.device;
+  selection.threads = args.threads;
+  selection.repetitions = args.repetitions;
+  for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+  for (const std::string& map : args.displacements) {
+    selection.displacements.push_back(loadDisplacementFile(map));
+  }
+  if (args.displacements.empty() && args.assets.empty()) {
+    selection.displacements = bundledDisplacements();
+  }
+  for (const std::string& scenario : args.scenarios) {
+    selection.scenarios.push_back(resolveScenario(scenario));
+  }
+  if (!args.shard.empty()) selection.shard = parseShard(args.shard);
+  selection.suite = parseSuiteMode(args.suite);
+  selection.camera_paths = selectCameraPaths(args.cameras, camera_files);
+  return selection;
+}
+
+// On a terminal the progress line rewrites itself; in a log, one line per step; each
+// with the time left as estimated from the steps so far (progress_estimate.h).
+ProgressFn progressPrinter(const RunArgs& args, ProgressEstimate* estimate) {
+  const bool terminal = isatty(fileno(stderr)) != 0;
+  return [&args, estimate, terminal](size_t done, size_t total, const std::string& label) {
+    if (args.quiet) return;
+    const std::string left = estimate->remainingText(done, total);
+    if (terminal) {
+      std::fprintf(stderr, "\r[%zu/%zu %s] %-56.56s", done, total, left.c_str(), label.c_str());
+      if (done == total) std::fprintf(stderr, "\n");
+    } else {
+      std::fprintf(stderr, "[%zu/%zu %s] %s\n", done, total, left.c_str(), label.c_str());
+    }
+  };
+}
+
+// Everything the run folder holds besides the journal: pictures/ (unless --no-pictures),
+// report.md, tables/, report.html, timings.json and results.json.
+void writeRunFiles(const RunArgs& args, const Results& results, const SuiteTimings& timings,
+                   PendingRunFolder* folder) {
+  if (args.pictures) {  // pictures/: PNGs and pictures.json, on the run's device
+    std::filesystem::create_directory(folder->pendingPath() + "/" + kPicturesFolder);
+    const PicturesIndex pictures = renderRunPictures(
+        results, args.device,
+        [&](const std::string& path, const std::string& bytes) { folder->writeFile(path, bytes); });
+    if (!args.quiet) fmt::print(stderr, "pictures: {}\n", picturesSummary(pictures));
+  }
+  folder->writeFile("report.md", renderMarkdown(results));
+  for (const auto& [name, text] : renderCsvTables(results)) folder->writeFile(name, text);
+  folder->writeFile("report.html", renderRunHtml(results, folder->pendingPath()));
+  folder->writeFile("timings.json", timingsJson(timings));
+  folder->writeFile("results.json", serializeResults(results));
+}
+
+// A measure that threw (not bad input: that stops the run) failed its record only; the
+// run is complete but not clean, so it says which: one line per record and measure that
+// failed or has failed rows (a GPU part of a measure: a device error, a plug-in's missing
+// shader), with the first reason. Returns how many.
+size_t printFailures(const Results& results) {
+  size_t failed = 0;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& measure : record.measures) {
+      std::string reason = measure.reason;
+      size_t failed_rows = 0;
+      for (const MetricRow& row : measure.rows) {
+        if (row.status != MeasureStatus::kFailed) continue;
+        if (failed_rows++ == 0) reason = row.reason;
+      }
+      if (measure.status != MeasureStatus::kFailed && failed_rows == 0) continue;
+      ++failed;
+      const std::string rows =
+          failed_rows == 0 ? "" : fmt::format("{} of {} rows: ", failed_rows, measure.rows.size());
+      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}{}\n", record.technique,
+                 record.variant, record.asset, measure.measure, rows, reason);
+    }
+  }
+  return failed;
+}
+
+SubcommandRun addRun(CLI::App& app) {
+  auto args = std::make_shared<RunArgs>();
+  addRunCommand(app, *args);
+  return [args](const Invocation& invocation) { return runRun(*args, invocation.command_line); };
+}
+
+}  // namespace
+
+CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
+  CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
+  run->add_option("--technique", args.techniques, "technique id (repeatable; default all)");
+  run->add_option("--asset", args.assets, "bundled asset name or OBJ path (default all)");
+  run->add_option("--displacement", args.displacements,
+                  "a baked map (FILE.exr with its FILE.exr.json from `tessbench bake`): adds its "
+                  "asset displaced by it, for the map's technique and variant, to cracks, error "
+                  "and memory (default: the bundled maps, unless --asset narrows the run)");
+  run->add_option("--scenario", args.scenarios,
+                  "bundled scenario name or scenario .json path, for simulation techniques "
+                  "(repeatable; default all)");
+  run->add_option("--measure", args.measures, "measure id (repeatable; default all)");
+  run->add_option("--out", args.out, "results root; each run gets a new folder in it")
+      ->capture_default_str();
+  run->add_option("--run-id", args.run_id, "folder name (must not exist yet)");
+  run->add_flag("--quiet", args.quiet, "no progress output");
+  run->add_option("--device", args.device, "Vulkan device name substring (default: best)");
+  run->add_option("--threads", args.threads,
+                  "worker threads (default 0: every core); results do not depend on it")
+      ->check(CLI::Range(0, 4096));
+  run->add_option("--shard", args.shard,
+                  "I/N: run only shard I of N (numbered from 0) of the technique x variant x "
+                  "asset x measure work list; join the N run folders with `merge`");
+  run->add_option("--suite", args.suite,
+                  "default | full: the measures' default grid (within the time budget) or "
+                  "every level, camera path and policy they know")
+      ->capture_default_str();
+  run->add_option("--camera", args.cameras,
+                  "camera path: a bundled name (orbit, dolly, flyby) or a .json file "
+                  "(repeatable; default: the suite's paths)");
+  run->add_option("--repetitions", args.repetitions,
+                  "run each measure of each record N times: results.json from the first "
+                  "(a record warns when a repeat differs), every sample in timings.json, "
+                  "for compare's U test (9 or more recommended)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  run->add_flag_callback("--no-pictures", [&args] { args.pictures = false; },
+                         "do not render the pictures of each surface (pictures/ in the run folder)");
+  return run;
+}
+
+int runRun(const RunArgs& args, const std::string& command_line) {
+  std::vector<std::string> camera_files;
+  const SuiteSelection selection = selectionOf(args, &camera_files);
+
+  // The folder is claimed before measuring, so an unwritable --out or a taken --run-id
+  // fails at once. It stays `<run-id>.incomplete` until everything is written; a run that
+  // fails removes it, a killed one leaves it marked unfinished (run_folder.h).
+  PendingRunFolder folder = PendingRunFolder::forRun(args.out, args.run_id);
+  Results results;
+  ProgressEstimate estimate;
+  const ProgressFn progress = progressPrinter(args, &estimate);
+  SuiteTimings timings;
+  runSuite(selection, progress, &results, &timings,
+           [&](const Record& record) { folder.journal(recordJsonLine(record)); });
+  // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
+  // empty run: one line with the first reason, non-zero exit, no run folder. A shard sees
+  // only its slice; `merge` makes this check on the whole.
+  if (!selection.shard.sharded() && results.records.empty() && !results.skipped.empty()) {
+    const Skip& skip = results.skipped.front();
+    throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
+  }
+
+  results.context = probeRunContext(command_line, args.device);
+  results.context.date = utcTimestampIso8601();
+  results.context.run_id = folder.runId();
+  results.context.selection = describeSelection(selection, results);
+  results.context.selection.camera_paths = camera_files;
+  if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
+  writeRunFiles(args, results, timings, &folder);
+  const std::string finished = folder.finish();
+  if (!args.quiet) {
+    printTimingSummary(timings);
+    fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md, report.html)\n",
+               results.records.size(), results.skipped.size(), finished);
+  } else {
+    fmt::print("{}\n", finished);
+  }
+  return printFailures(results) == 0 ? 0 : 1;
+}
+
+const Subcommand kRunSubcommand{"run", addRun};
+
+}  // namespace tb::cli

@@ -1,0 +1,249 @@
+// The measures' sections of report.md: declaration, summary, rows (markdown_sections.h).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "harness/report/markdown.h"
+#include "harness/report/markdown_sections.h"
+#include "harness/report/summary.h"
+
+namespace tb::markdown_detail {
+namespace {
+
+// The measure's metric columns: the declared metrics some row emits, in declared order,
+// then any undeclared one (results written without declarations) in order of appearance.
+struct Column {
+  std::string name;
+  std::string header;  // "max_gap_world (world, lower better)"
+};
+
+std::string directionLabel(Direction direction) {
+  switch (direction) {
+    case Direction::kLowerIsBetter:
+      return ", lower better";
+    case Direction::kHigherIsBetter:
+      return ", higher better";
+    case Direction::kNone:
+      return "";
+  }
+  return "";
+}
+
+using RowFilter = bool (*)(const MetricRow&);
+
+// The metric columns of the measure's rows that pass `filter`: declared metrics in
+// declaration order, then undeclared ones in order of appearance.
+std::vector<Column> metricColumns(const Results& results, const std::string& measure_id,
+                                  const MeasureDeclaration* declaration, RowFilter filter) {
+  std::vector<std::string> seen;  // emitted names, in order of appearance
+  std::map<std::string, std::string> row_unit;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
+        for (const Metric& metric : row.metrics) {
+          if (row_unit.emplace(metric.name, metric.unit).second) seen.push_back(metric.name);
+        }
+      }
+    }
+  }
+  std::vector<Column> columns;
+  if (declaration != nullptr) {
+    for (const MetricSpec& spec : declaration->metrics) {
+      if (!row_unit.contains(spec.name)) continue;
+      columns.push_back({spec.name, spec.name + " (" + std::string(toString(spec.unit)) +
+                                        directionLabel(spec.direction) + ")"});
+    }
+  }
+  for (const std::string& name : seen) {
+    if (declaration != nullptr && declaration->find(name) != nullptr) continue;
+    columns.push_back({name, name + " (" + row_unit[name] + ")"});
+  }
+  return columns;
+}
+
+// What the declaration says once for the whole measure: its title, fixed notes, headline
+// metrics and the meaning of the units its columns use.
+void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) {
+  if (!declaration.title.empty()) *out += "**" + declaration.title + "**";
+  if (!declaration.description.empty()) *out += ": " + declaration.description;
+  if (!declaration.title.empty() || !declaration.description.empty()) *out += "\n\n";
+  for (const std::string& note : declaration.notes) *out += "- " + note + "\n";
+  if (!declaration.headline.empty()) {
+    *out += "- headline: ";
+    for (size_t i = 0; i < declaration.headline.size(); ++i) {
+      *out += (i > 0 ? ", " : "") + declaration.headline[i];
+    }
+    *out += "\n";
+  }
+  // Units whose spelling does not already say it all ("count", "bytes", "ratio" do).
+  std::vector<Unit> units;
+  for (const MetricSpec& spec : declaration.metrics) {
+    if (toString(spec.unit) != describe(spec.unit) &&
+        std::find(units.begin(), units.end(), spec.unit) == units.end()) {
+      units.push_back(spec.unit);
+    }
+  }
+  if (!units.empty()) {
+    *out += "- units: ";
+    for (size_t i = 0; i < units.size(); ++i) {
+      *out += std::string(i > 0 ? "; " : "") + std::string(toString(units[i])) + " = " +
+              std::string(describe(units[i]));
+    }
+    *out += "\n";
+  }
+  *out += "\n";
+}
+
+// The notes that belong to one record (e.g. how this asset's patches were sampled),
+// each naming its record.
+void appendRecordNotes(const Results& results, const std::string& measure_id, std::string* out) {
+  bool any = false;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const std::string& note : m.notes) {
+        if (!any) *out += "Notes per record:\n\n";
+        any = true;
+        *out += "- " + record.technique + "/" + record.variant + " on " + record.asset + ": " +
+                note + "\n";
+      }
+    }
+  }
+  if (any) *out += "\n";
+}
+
+// One table of the measure's rows that pass `filter`: a line per row, a column per key and
+// metric. Records whose measure did not run are listed when `with_status_rows`.
+void appendTable(const Results& results, const std::string& measure_id,
+                 const MeasureDeclaration* declaration, RowFilter filter, bool with_status_rows,
+                 std::string* out) {
+  std::vector<std::string> key_names;
+  std::set<std::string> seen_keys;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
+        for (const auto& [key, value] : row.keys) {
+          if (seen_keys.insert(key).second) key_names.push_back(key);
+        }
+      }
+    }
+  }
+  const std::vector<Column> columns = metricColumns(results, measure_id, declaration, filter);
+  std::vector<std::string> header{"technique", "variant", "asset"};
+  header.insert(header.end(), key_names.begin(), key_names.end());
+  header.push_back("status");
+  for (const Column& column : columns) header.push_back(column.header);
+  appendHeader(out, header);
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      if (m.status != MeasureStatus::kOk) {
+        if (!with_status_rows) continue;
+        std::vector<std::string> cells{record.technique, record.variant, record.asset};
+        cells.resize(cells.size() + key_names.size());
+        cells.push_back(std::string(toString(m.status)) + ": " + m.reason);
+        cells.resize(header.size());
+        appendRow(out, cells);
+        continue;
+      }
+      for (const MetricRow& row : m.rows) {
+        if (!filter(row)) continue;
+        std::vector<std::string> cells{record.technique, record.variant, record.asset};
+        for (const std::string& key : key_names) {
+          auto it = row.keys.find(key);
+          cells.push_back(it == row.keys.end() ? "" : it->second);
+        }
+        if (row.status != MeasureStatus::kOk) {
+          cells.push_back(std::string(toString(row.status)) + ": " + row.reason);
+          cells.resize(header.size());
+          appendRow(out, cells);
+          continue;
+        }
+        cells.push_back("ok");
+        for (const Column& column : columns) {
+          std::string value;
+          for (const Metric& metric : row.metrics) {
+            if (metric.name == column.name) value = formatMetricValue(metric);
+          }
+          cells.push_back(value);
+        }
+        appendRow(out, cells);
+      }
+    }
+  }
+  *out += "\n";
+}
+
+size_t countRows(const Results& results, const std::string& measure_id, RowFilter filter) {
+  size_t count = 0;
+  for (const Record& record : results.records) {
+    for (const MeasureResult& m : record.measures) {
+      if (m.measure != measure_id) continue;
+      for (const MetricRow& row : m.rows) count += filter(row) ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+// A measure with at most this many rows also gets its detail table in report.md (a small
+// run reads whole); a larger one leaves its rows to tables/<measure>.csv and results.json.
+constexpr size_t kDetailRowsInReport = 40;
+
+}  // namespace
+
+// A measure's section: its declaration, then one line per technique × variant over every
+// asset, each headline metric as median / worst; the rows themselves only when few.
+void appendMeasureSection(const Results& results, const std::string& measure, std::string* out) {
+  const MeasureDeclaration* declaration = results.findMeasure(measure);
+  *out += "### " + measure + "\n\n";
+  if (declaration != nullptr) appendDeclaration(*declaration, out);
+  if (declaration != nullptr && !declaration->summary_scope.empty()) {
+    std::string scope;
+    for (const auto& [key, value] : declaration->summary_scope) {
+      scope += (scope.empty() ? "" : ", ") + key + " = " + value;
+    }
+    *out += "Summaries read the rows with " + scope + ".\n\n";
+  }
+  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets);
+  std::vector<std::string> header{"technique", "variant", "rows"};
+  for (const std::string& metric : summary.metrics) {
+    header.push_back(metricHeader(results, measure, metric) + " median / worst");
+  }
+  header.push_back("not measured");
+  appendHeader(out, header);
+  for (const SummaryLine& line : summary.lines) {
+    std::vector<std::string> cells{line.technique, line.variant, std::to_string(line.ok_rows)};
+    for (const std::string& metric : summary.metrics) {
+      const MetricStats* stats = line.find(metric);
+      if (stats == nullptr) {
+        cells.push_back("—");
+        continue;
+      }
+      const std::string unit = unitOf(results, measure, metric);
+      cells.push_back(formatFigure(stats->median, unit) + " / " +
+                      formatFigure(worstOf(*stats, directionOf(results, measure, metric)), unit));
+    }
+    std::string status;
+    if (line.skipped_rows > 0) status += fmt::format("{} skipped", line.skipped_rows);
+    if (line.failed_rows > 0) status += fmt::format("{}{} failed", status.empty() ? "" : ", ", line.failed_rows);
+    if (!status.empty()) status += ": " + line.first_reason;
+    cells.push_back(status);
+    appendRow(out, cells);
+  }
+  *out += "\n";
+  const size_t rows = countRows(results, measure, [](const MetricRow&) { return true; });
+  if (rows <= kDetailRowsInReport) {
+    appendTable(results, measure, declaration, [](const MetricRow&) { return true; }, true, out);
+    appendRecordNotes(results, measure, out);
+  } else {
+    *out += fmt::format("Every row ({}): `tables/{}.csv` and results.json.\n\n", rows, measure);
+  }
+}
+
+}  // namespace tb::markdown_detail

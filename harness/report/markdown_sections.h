@@ -1,0 +1,43 @@
+// The pieces report.md is built of (renderMarkdown, markdown.cpp): table lines, metric
+// headers and figures (markdown_cells.cpp), the three job screens and the technique × asset
+// matrices (markdown_screens.cpp), the measures' sections (markdown_measures.cpp). Each
+// section appends to `out`. Internal to harness/report.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "harness/results/results_model.h"
+
+namespace tb::markdown_detail {
+
+// "| a | b |": a table line, '|' escaped and newlines as spaces.
+void appendRow(std::string* out, const std::vector<std::string>& cells);
+// The header line and its "|---|" rule.
+void appendHeader(std::string* out, const std::vector<std::string>& cells);
+
+// "lower better", "higher better", "context".
+std::string directionWord(Direction direction);
+// "hausdorff (rel_diag, lower better)"
+std::string metricHeader(const Results& results, const std::string& measure,
+                         const std::string& metric);
+std::string formatFigure(double value, const std::string& unit);
+// The first headline metric of a measure: what its matrices and job screens show.
+std::string firstHeadline(const Results& results, const std::string& measure);
+
+// Job 1: is this run clean, and what to compare it with.
+void appendRegressionScreen(const Results& results, const std::vector<std::string>& measures,
+                            std::string* out);
+// Job 2: per asset, which technique × variant wins each measure's first headline figure.
+void appendChoiceScreen(const Results& results, const std::vector<std::string>& measures,
+                        std::string* out);
+// Job 3: one line per technique × variant, each measure's first headline figure over every
+// asset: median (worst).
+void appendPublishingScreen(const Results& results, const std::vector<std::string>& measures,
+                            std::string* out);
+// A measure's technique × asset matrix of its first headline metric.
+void appendMatrix(const Results& results, const std::string& measure, std::string* out);
+// A measure's section: its declaration, its summary, its rows when few.
+void appendMeasureSection(const Results& results, const std::string& measure, std::string* out);
+
+}  // namespace tb::markdown_detail
