@@ -35,7 +35,7 @@ int runReport(const ReportArgs& args) {
     if (assets.chartjs_source.empty()) throw std::runtime_error(assets.chartjs_missing_reason);
     fmt::print("{}", renderHtml(results, assets));
   } else {
-    throw InputError("--format", args.format, "unknown report format (known: md, html)");
+    throw InputError("--format", args.format, "unknown report format (known: markdown, html)");
   }
   return 0;
 }

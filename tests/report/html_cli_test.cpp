@@ -116,7 +116,7 @@ TEST(HtmlCli, UnknownFormatIsOneLineListingTheKnownOnes) {
   const fs::path run = smallRun("html_cli_format");
   const testing::SplitResult report = runTessbenchSplit("report --format pdf " + run.string());
   EXPECT_EQ(report.exit_code, 2);
-  EXPECT_NE(report.err.find("known: md, html"), std::string::npos) << report.err;
+  EXPECT_NE(report.err.find("known: markdown, html"), std::string::npos) << report.err;
   fs::remove_all(run.parent_path());
 }
 
