@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/osd/scheme.h"
 #include "reference/limit_surface.h"
-#include "reference/scheme.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -59,7 +59,7 @@ constexpr int kErrorSubFaceSampleLevel = kErrorSampleLevel / 2;
 constexpr double kNearExtraordinary = 0.75;
 
 // The scheme of the limit a technique is graded against: the one its patches approximate.
-ref::Scheme referenceScheme(LimitScheme scheme);
+osd::Scheme referenceScheme(LimitScheme scheme);
 
 // The limit surface must be built over patches.controlMesh(), whose face p is patch p,
 // under the scheme patches.approximates() names. Each patch is sampled in its own
@@ -90,7 +90,7 @@ struct LimitParameter {
 
 // Throws std::logic_error, as measureSurfaceError does, for a domain the face's
 // parameterisation cannot be mapped to. `face_size`: corners of control face `face`.
-LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t face,
+LimitParameter limitParameterOf(PatchDomain domain, osd::Scheme scheme, size_t face,
                                 uint32_t face_size, const DomainCoord& coord);
 
 // One parametric-error sample of patch p at `coord`, in world units (divide by the
@@ -99,6 +99,6 @@ LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t f
 // regular face: ~1e-16 of the diagonal). `face` is limit.face(p) of a LimitSurface built as
 // for measureSurfaceError.
 double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
-                         ref::Scheme scheme, size_t patch, const DomainCoord& coord);
+                         osd::Scheme scheme, size_t patch, const DomainCoord& coord);
 
 }  // namespace tb
