@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "reference/topology_refiner_builder.h"
+#include "core/osd/topology_refiner_builder.h"
 
 namespace tb::bench {
 namespace {
@@ -29,7 +29,7 @@ std::unique_ptr<Far::TopologyRefiner> quadRefiner(const Mesh& mesh) {
                                " is not a quad; the OpenSubdiv rows take quad meshes only");
     }
   }
-  return ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
+  return osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
 }
 
 // Results of every point of every face: position, du, dv, face-major.

@@ -15,7 +15,7 @@
 
 namespace {
 
-using tb::ref::Scheme;
+using tb::osd::Scheme;
 
 constexpr int kGrid = 8;  // kGrid x kGrid points per (sub-)face
 

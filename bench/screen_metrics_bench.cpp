@@ -160,8 +160,8 @@ void BM_Frame(benchmark::State& state, const std::string& technique) {
   const Subject& s = subject(technique);
   const std::vector<tb::tess::Levels> levels = levelsFor(s, int(state.range(0)));
   const tb::ref::LimitSurface limit(s.patches->controlMesh(), technique == "acc"
-                                                                  ? tb::ref::Scheme::kCatmullClark
-                                                                  : tb::ref::Scheme::kLoop);
+                                                                  ? tb::osd::Scheme::kCatmullClark
+                                                                  : tb::osd::Scheme::kLoop);
   tb::ScreenMetrics metrics(*s.patches, &limit);
   tb::FrameScreenFigures figures;
   for (auto _ : state) figures = metrics.frame(spacingFor(int(state.range(0))), levels, s.view);

@@ -73,8 +73,8 @@ std::string vertexMismatch(const VertexFeatures& f) {
 
 }  // namespace
 
-std::string crossCheckIneligibility(const Mesh& mesh, Scheme scheme) {
-  if (scheme == Scheme::kLoop) return "Loop scheme: Embree subdivision is Catmull-Clark only";
+std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme) {
+  if (scheme == osd::Scheme::kLoop) return "Loop scheme: Embree subdivision is Catmull-Clark only";
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) > kEmbreeMaxFaceSize) {
       return describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +

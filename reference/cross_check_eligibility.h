@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/mesh/mesh.h"
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
 namespace tb::ref {
 
@@ -22,6 +22,6 @@ namespace tb::ref {
 //    more sharp edges (boundary edges included) meet, or a fractional corner less
 //    sharp than a crease or boundary edge at its vertex (cross_check_eligibility.cpp gives the
 //    measurements).
-std::string crossCheckIneligibility(const Mesh& mesh, Scheme scheme);
+std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme);
 
 }  // namespace tb::ref

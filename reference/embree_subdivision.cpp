@@ -179,7 +179,7 @@ LimitPoint EmbreeSubdivision::evaluate(size_t face, double u, double v) const {
     throw InputError(impl_->mesh.source, describeFace(impl_->mesh, face),
                      "face is tagged as a hole and has no limit surface");
   }
-  checkInsideFaceDomain(impl_->mesh, face, Scheme::kCatmullClark, {u, v});
+  checkInsideFaceDomain(impl_->mesh, face, osd::Scheme::kCatmullClark, {u, v});
   const Vec2d native = faceUvToEmbreeUv(size, {u, v});
   LimitPoint point = evaluateNative(face, float(native.x), float(native.y));
   if (size != 4) {

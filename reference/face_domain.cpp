@@ -2,28 +2,28 @@
 
 #include <opensubdiv/bfr/parameterization.h>
 
-#include "reference/sdc_scheme.h"
+#include "core/osd/sdc_scheme.h"
 
 namespace tb::ref {
 namespace {
 
 namespace Bfr = OpenSubdiv::Bfr;
 
-Bfr::Parameterization parameterization(Scheme scheme, int face_size) {
-  return Bfr::Parameterization(sdcScheme(scheme), face_size);
+Bfr::Parameterization parameterization(osd::Scheme scheme, int face_size) {
+  return Bfr::Parameterization(osd::sdcScheme(scheme), face_size);
 }
 
 }  // namespace
 
-bool hasSubFaces(Scheme scheme, int face_size) {
+bool hasSubFaces(osd::Scheme scheme, int face_size) {
   return parameterization(scheme, face_size).HasSubFaces();
 }
 
-int subFaceCount(Scheme scheme, int face_size) {
+int subFaceCount(osd::Scheme scheme, int face_size) {
   return hasSubFaces(scheme, face_size) ? face_size : 1;
 }
 
-Vec2d subFaceToFaceUv(Scheme scheme, int face_size, int sub_face, Vec2d st) {
+Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, Vec2d st) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.HasSubFaces()) return st;
   const double in[2] = {st.x, st.y};
@@ -32,7 +32,7 @@ Vec2d subFaceToFaceUv(Scheme scheme, int face_size, int sub_face, Vec2d st) {
   return {out[0], out[1]};
 }
 
-SubFacePoint faceUvToSubFace(Scheme scheme, int face_size, Vec2d uv) {
+SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, Vec2d uv) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.HasSubFaces()) return {0, uv};
   const double in[2] = {uv.x, uv.y};
@@ -41,7 +41,7 @@ SubFacePoint faceUvToSubFace(Scheme scheme, int face_size, Vec2d uv) {
   return {sub_face, {out[0], out[1]}};
 }
 
-bool insideFaceDomain(Scheme scheme, int face_size, Vec2d uv, double slack) {
+bool insideFaceDomain(osd::Scheme scheme, int face_size, Vec2d uv, double slack) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.IsValid()) return false;
   switch (param.GetType()) {
@@ -61,7 +61,7 @@ bool insideFaceDomain(Scheme scheme, int face_size, Vec2d uv, double slack) {
 
 Vec2d faceUvToEmbreeUv(int face_size, Vec2d uv) {
   if (face_size == 4) return uv;
-  const SubFacePoint sub = faceUvToSubFace(Scheme::kCatmullClark, face_size, uv);
+  const SubFacePoint sub = faceUvToSubFace(osd::Scheme::kCatmullClark, face_size, uv);
   return {2.0 * (sub.sub_face % 4) + sub.st.x + 0.5, 2.0 * (sub.sub_face / 4) + sub.st.y + 0.5};
 }
 

@@ -16,7 +16,7 @@
 #pragma once
 
 #include "core/mesh/vec.h"
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
 namespace tb::ref {
 
@@ -29,20 +29,20 @@ struct SubFacePoint {
 };
 
 // True when a face of this size is split into quad sub-faces (Catmull-Clark, N != 4).
-bool hasSubFaces(Scheme scheme, int face_size);
+bool hasSubFaces(osd::Scheme scheme, int face_size);
 
 // N for faces with sub-faces, else 1.
-int subFaceCount(Scheme scheme, int face_size);
+int subFaceCount(osd::Scheme scheme, int face_size);
 
 // Face (u,v) of normalised sub-face coordinates; identity on faces without sub-faces.
-Vec2d subFaceToFaceUv(Scheme scheme, int face_size, int sub_face, Vec2d st);
+Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, Vec2d st);
 
 // Inverse of subFaceToFaceUv; points on a tile edge go to the lower sub-face index
 // OpenSubdiv picks.
-SubFacePoint faceUvToSubFace(Scheme scheme, int face_size, Vec2d uv);
+SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, Vec2d uv);
 
 // True when uv lies in the face's domain, up to `slack` in parameter units.
-bool insideFaceDomain(Scheme scheme, int face_size, Vec2d uv, double slack = 1e-12);
+bool insideFaceDomain(osd::Scheme scheme, int face_size, Vec2d uv, double slack = 1e-12);
 
 // Embree's subdivision-geometry (U,V) for a Catmull-Clark face (u,v): the identity on
 // quads; on other N-gons sub-face k at (s,t) is U = 2 (k % 4) + s + 0.5,

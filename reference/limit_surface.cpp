@@ -4,9 +4,9 @@
 #include <string>
 
 #include "core/mesh/input_error.h"
+#include "core/osd/topology_refiner_builder.h"
 #include "reference/limit_surface_impl.h"
 #include "reference/mesh_checks.h"
-#include "reference/topology_refiner_builder.h"
 
 namespace tb::ref {
 namespace {
@@ -33,7 +33,7 @@ void LimitSurface::Impl::checkFace(size_t face) const {
                                    "so it has no limit surface");
 }
 
-LimitSurface::LimitSurface(const Mesh& mesh, Scheme scheme, const LimitOptions& options)
+LimitSurface::LimitSurface(const Mesh& mesh, osd::Scheme scheme, const LimitOptions& options)
     : impl_(std::make_unique<Impl>()) {
   checkApproxLevel(mesh, "approx_level_smooth", options.approx_level_smooth);
   checkApproxLevel(mesh, "approx_level_sharp", options.approx_level_sharp);
@@ -42,7 +42,7 @@ LimitSurface::LimitSurface(const Mesh& mesh, Scheme scheme, const LimitOptions& 
   Impl& impl = *impl_;
   impl.mesh = mesh;
   impl.scheme = scheme;
-  impl.refiner = buildTopologyRefiner(mesh, scheme);
+  impl.refiner = osd::buildTopologyRefiner(mesh, scheme);
   impl.positions.reserve(mesh.positions.size() * 3);
   for (const Vec3d& p : mesh.positions)
     impl.positions.insert(impl.positions.end(), {p.x, p.y, p.z});
@@ -59,7 +59,7 @@ LimitSurface::~LimitSurface() = default;
 LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
 LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
 
-Scheme LimitSurface::scheme() const { return impl_->scheme; }
+osd::Scheme LimitSurface::scheme() const { return impl_->scheme; }
 const Mesh& LimitSurface::mesh() const { return impl_->mesh; }
 size_t LimitSurface::faceCount() const { return impl_->mesh.faceCount(); }
 

@@ -15,9 +15,9 @@
 #include <span>
 
 #include "core/mesh/mesh.h"
+#include "core/osd/scheme.h"
 #include "reference/limit_face.h"
 #include "reference/limit_point.h"
-#include "reference/scheme.h"
 
 namespace tb::ref {
 
@@ -39,14 +39,14 @@ class LimitSurface {
  public:
   // Copies what it needs from `mesh`. Throws InputError for an option out of range
   // (naming the option), a non-finite coordinate, and any mesh the reference cannot
-  // represent (see buildTopologyRefiner: e.g. a non-triangle face for Loop, or topology
+  // represent (see osd::buildTopologyRefiner: e.g. a non-triangle face for Loop, or topology
   // OpenSubdiv rejects).
-  LimitSurface(const Mesh& mesh, Scheme scheme, const LimitOptions& options = {});
+  LimitSurface(const Mesh& mesh, osd::Scheme scheme, const LimitOptions& options = {});
   ~LimitSurface();
   LimitSurface(LimitSurface&&) noexcept;
   LimitSurface& operator=(LimitSurface&&) noexcept;
 
-  Scheme scheme() const;
+  osd::Scheme scheme() const;
   const Mesh& mesh() const;  // the control mesh as copied at construction
   size_t faceCount() const;
 

@@ -23,7 +23,7 @@ using ThreadedSurfaceFactory = OpenSubdiv::Bfr::RefinerSurfaceFactory<ThreadedSu
 
 struct LimitSurface::Impl {
   Mesh mesh;
-  Scheme scheme = Scheme::kCatmullClark;
+  osd::Scheme scheme = osd::Scheme::kCatmullClark;
   std::vector<double> positions;  // xyz per vertex, Bfr's contiguous mesh points
   std::vector<bool> is_hole;      // per face
   std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> refiner;

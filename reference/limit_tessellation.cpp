@@ -33,7 +33,7 @@ FaceGrid faceGrid(const LimitSurface& surface, size_t face, int rate) {
     return grid;
   }
   const int size = int(surface.mesh().faceSize(face));
-  grid.triangular = surface.scheme() == Scheme::kLoop;
+  grid.triangular = surface.scheme() == osd::Scheme::kLoop;
   grid.sub_faces = subFaceCount(surface.scheme(), size);
   grid.segments = hasSubFaces(surface.scheme(), size) ? (rate + 1) / 2 : rate;
   return grid;
@@ -124,7 +124,7 @@ LimitTessellation tessellateLimit(const LimitSurface& surface, int rate) {
   out.triangles.resize(first_triangle[faces]);
   out.triangle_face.resize(first_triangle[faces]);
 
-  const Scheme scheme = surface.scheme();
+  const osd::Scheme scheme = surface.scheme();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, faces), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t f = r.begin(); f != r.end(); ++f) {
       const FaceGrid& grid = grids[f];

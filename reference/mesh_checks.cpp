@@ -37,7 +37,7 @@ void checkFaceIndex(const Mesh& mesh, size_t face) {
   }
 }
 
-void checkInsideFaceDomain(const Mesh& mesh, size_t face, Scheme scheme, Vec2d uv) {
+void checkInsideFaceDomain(const Mesh& mesh, size_t face, osd::Scheme scheme, Vec2d uv) {
   if (!insideFaceDomain(scheme, int(mesh.faceSize(face)), uv)) {
     throw InputError(mesh.source, describeFace(mesh, face),
                      "(u, v) = (" + std::to_string(uv.x) + ", " + std::to_string(uv.y) +

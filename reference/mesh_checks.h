@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "core/mesh/mesh.h"
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
 namespace tb::ref {
 
@@ -29,7 +29,7 @@ void checkTriangleCorners(std::span<const std::array<uint32_t, 3>> triangles, si
 void checkFaceIndex(const Mesh& mesh, size_t face);
 
 // Throws InputError naming the face when (u,v) is outside its domain (face_domain.h).
-void checkInsideFaceDomain(const Mesh& mesh, size_t face, Scheme scheme, Vec2d uv);
+void checkInsideFaceDomain(const Mesh& mesh, size_t face, osd::Scheme scheme, Vec2d uv);
 
 // Crease sharpness per unoriented edge (v0 < v1); a repeated tag keeps the last
 // value, as OpenSubdiv's Far does.

@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cstring>
 #include <map>
-#include <memory>
-#include <mutex>
 #include <optional>
-#include <tuple>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/context.h"
+#include "core/gpu/patch_program_pipeline.h"
 #include "core/gpu/pipeline_util.h"
 #include "core/gpu/sampled_image.h"
-#include "core/gpu/spirv_patch.h"
 #include "core/gpu/tess_pipelines.h"
 #include "core/gpu/vk_handle.h"
 #include "core/tess/factor_helpers.h"
@@ -23,27 +19,7 @@
 namespace tb::gpu {
 namespace {
 
-// TbPatchProgramPush in shaders/common/patch_program.glsl.
-struct PushBlock {
-  uint32_t first_patch;
-  uint32_t capture_enabled;
-};
-static_assert(sizeof(PushBlock) == 8);
-
-// kTbCaptureBoundary in shaders/common/patch_program_tes.glsl: its constant_id and values.
-constexpr uint32_t kCaptureBoundaryConstantId = 200;
-constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
-// kTbFactorPolicy in shaders/common/patch_program_tcs.glsl.
-constexpr uint32_t kFactorPolicyConstantId = 201;
-// kTbCullPolicy in shaders/common/patch_program_tcs.glsl.
-constexpr uint32_t kCullPolicyConstantId = 202;
-// kTbDisplaceKind, kTbDisplaceSampling, kTbDisplaceTriangle in shaders/common/displace.glsl.
-constexpr uint32_t kDisplaceKindConstantId = 203;
-constexpr uint32_t kDisplaceSamplingConstantId = 204;
-constexpr uint32_t kDisplaceTriangleConstantId = 205;
-// Set 1: the harness levels, then the factor policy's corners, parameters and output, then
-// the culling policy's parameters and per-patch bounds.
-constexpr uint32_t kLevelsSetBindings = 6;
+// Set 1's factor policy corners: words per patch (TcsFactorPolicy::corner_words).
 constexpr uint32_t kFactorCornerWordsPerPatch = 32;
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
@@ -57,204 +33,6 @@ static_assert(sizeof(PatchLevelsBits) == 32);
 constexpr uint32_t kCaptureWords = 10;            // kTbCaptureWords
 constexpr VkDeviceSize kCaptureHeaderBytes = 16;  // count, capacity, 2 reserved
 constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 64ull << 20;
-constexpr VkShaderStageFlags kTessStages =
-    VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-
-// One compiled program: its descriptor layouts (set 0: capture + the technique's
-// buffers; set 1: per-patch levels) and pipeline. Immutable once built (but for the
-// warm-up flag), so calls on several threads share it; each call allocates its own
-// descriptor sets.
-struct ProgramPipeline {
-  VkDescriptorSetLayoutOwner set_layout;
-  VkDescriptorSetLayoutOwner levels_set_layout;
-  VkDescriptorSetLayoutOwner displacement_set_layout;  // set 2, "#displaced" programs only
-  VkPipelineLayoutOwner layout;
-  VkPipelineOwner pipeline;
-  uint32_t binding_count = 0;
-  std::atomic<bool> warmed{false};  // the compile-at-first-draw warm-up has been drawn
-};
-
-// What one call uploads to, captures into, binds and counts with; pooled so that calls
-// reuse the buffers (fresh device memory costs page faults on lavapipe) and descriptor
-// sets. Buffers only grow; each is bound with the range the call uses.
-struct CallResources {
-  struct PipelineSets {
-    StorageBufferSet data;    // set 0: capture + GpuPatchProgram::storage_buffers
-    StorageBufferSet levels;  // set 1: per-patch levels
-  };
-  VkQueryPoolOwner queries;
-  VkQueryPoolOwner primitives;  // VK_QUERY_TYPE_PRIMITIVES_GENERATED_EXT, when supported
-  Buffer capture;
-  Buffer levels;
-  Buffer factor_corners;  // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
-  Buffer factor_params;   // TcsFactorPolicy::param_words
-  Buffer factor_out;      // the levels the TCS wrote, 8 words per patch
-  Buffer cull_params;     // TcsCullPolicy::param_words
-  Buffer cull_patches;    // TcsCullPolicy::patch_words
-  std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
-  std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
-};
-
-using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
-                              uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>;
-
-// The displacement's specialisation as one key word: 0 without a map, else kind, sampling
-// and a presence bit.
-uint32_t displacementKey(const GpuPatchProgram& program) {
-  if (!program.displacement) return 0;
-  return 1u << 8 | program.displacement->sampling << 4 | program.displacement->kind;
-}
-
-// `boundary`: kTbCaptureBoundary (kCapture*); a non-zero value is one more specialisation
-// entry, ignored by the TCS, which does not declare it. `factor_policy`: kTbFactorPolicy,
-// likewise ignored by the TES, and so is `cull_policy`: kTbCullPolicy.
-VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
-                                      tess::Spacing spacing, uint32_t boundary,
-                                      uint32_t factor_policy, uint32_t cull_policy,
-                                      VkShaderModule vertex, VkPipelineLayout layout) {
-  const VkShaderModuleOwner control =
-      createShaderModule(device, requireEmbeddedShader(program.control_shader));
-  const std::vector<uint32_t> tes_spirv = withTessModes(
-      requireEmbeddedShader(program.evaluation_shader), {program.domain, spacing, true, false});
-  const VkShaderModuleOwner evaluation = createShaderModule(device, tes_spirv);
-
-  std::vector<VkSpecializationMapEntry> entries;
-  std::vector<uint32_t> values = program.specialization;
-  for (uint32_t i = 0; i < values.size(); ++i) entries.push_back({i, i * 4u, 4});
-  if (boundary != kCaptureEvery) {
-    entries.push_back({kCaptureBoundaryConstantId, uint32_t(values.size()) * 4u, 4});
-    values.push_back(boundary);
-  }
-  if (factor_policy != 0) {
-    entries.push_back({kFactorPolicyConstantId, uint32_t(values.size()) * 4u, 4});
-    values.push_back(factor_policy);
-  }
-  if (cull_policy != 0) {
-    entries.push_back({kCullPolicyConstantId, uint32_t(values.size()) * 4u, 4});
-    values.push_back(cull_policy);
-  }
-  if (program.displacement) {
-    const uint32_t triangle = program.domain == tess::Domain::kTriangle ? 1u : 0u;
-    for (const auto& [id, value] :
-         {std::pair{kDisplaceKindConstantId, program.displacement->kind},
-          std::pair{kDisplaceSamplingConstantId, program.displacement->sampling},
-          std::pair{kDisplaceTriangleConstantId, triangle}}) {
-      entries.push_back({id, uint32_t(values.size()) * 4u, 4});
-      values.push_back(value);
-    }
-  }
-  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), values.size() * 4,
-                                      values.data()};
-  VkPipelineShaderStageCreateInfo shader_stages[] = {
-      shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex),
-      shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, control.get()),
-      shaderStage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, evaluation.get()),
-  };
-  if (!entries.empty()) {
-    shader_stages[1].pSpecializationInfo = &specialization;
-    shader_stages[2].pSpecializationInfo = &specialization;
-  }
-  return createDiscardTessPipeline(device, layout, shader_stages, program.input_vertices_per_patch,
-                                   "vkCreateGraphicsPipelines (patch program)");
-}
-
-// Per-device cache of program pipelines (lavapipe compiles at the first draw, so a
-// pipeline is worth keeping) and a pool of per-call resources. `mutex` guards the map
-// and the pool; what they hand out is used without it.
-class PatchProgramCache {
- public:
-  explicit PatchProgramCache(Context& context) : context_(context) {
-    vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
-  }
-
-  ProgramPipeline& get(const GpuPatchProgram& program, tess::Spacing spacing, uint32_t boundary,
-                       uint32_t factor_policy, uint32_t cull_policy) {
-    const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
-    ProgramKey key{program.control_shader, program.evaluation_shader,
-                   program.specialization, int(program.domain),
-                   int(spacing),           program.input_vertices_per_patch,
-                   binding_count,          boundary,
-                   factor_policy,          cull_policy,
-                   displacementKey(program)};
-    const std::lock_guard lock(mutex_);
-    if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
-
-    const VkDevice device = context_.device();
-    auto p = std::make_unique<ProgramPipeline>();
-    p->binding_count = binding_count;
-    const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
-    p->set_layout = createStorageBufferSetLayout(device, stages);
-    const std::vector<VkShaderStageFlags> levels_stages(kLevelsSetBindings,
-                                                        VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
-    p->levels_set_layout = createStorageBufferSetLayout(device, levels_stages);
-    std::vector<VkDescriptorSetLayout> set_layouts = {p->set_layout.get(),
-                                                      p->levels_set_layout.get()};
-    if (program.displacement) {
-      p->displacement_set_layout = createDisplacementSetLayout(device);
-      set_layouts.push_back(p->displacement_set_layout.get());
-    }
-    p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-    p->pipeline = createProgramPipeline(device, program, spacing, boundary, factor_policy,
-                                        cull_policy, vertex_.get(), p->layout.get());
-    return *programs_.emplace(std::move(key), std::move(p)).first->second;
-  }
-
-  std::unique_ptr<CallResources> acquire() {
-    {
-      const std::lock_guard lock(mutex_);
-      if (!free_.empty()) {
-        std::unique_ptr<CallResources> resources = std::move(free_.back());
-        free_.pop_back();
-        return resources;
-      }
-    }
-    auto resources = std::make_unique<CallResources>();
-    auto info = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-    info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
-    info.queryCount = 1;
-    info.pipelineStatistics = kTessStatisticFlags;
-    VkQueryPool pool = VK_NULL_HANDLE;
-    vkCheck(vkCreateQueryPool(context_.device(), &info, nullptr, &pool), "vkCreateQueryPool");
-    resources->queries = VkQueryPoolOwner(context_.device(), pool);
-    if (context_.features().primitives_generated_query) {
-      auto primitives = vkStruct<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-      primitives.queryType = VK_QUERY_TYPE_PRIMITIVES_GENERATED_EXT;
-      primitives.queryCount = 1;
-      VkQueryPool primitives_pool = VK_NULL_HANDLE;
-      vkCheck(vkCreateQueryPool(context_.device(), &primitives, nullptr, &primitives_pool),
-              "vkCreateQueryPool (primitives generated)");
-      resources->primitives = VkQueryPoolOwner(context_.device(), primitives_pool);
-    }
-    return resources;
-  }
-
-  void release(std::unique_ptr<CallResources> resources) {
-    const std::lock_guard lock(mutex_);
-    free_.push_back(std::move(resources));
-  }
-
- private:
-  Context& context_;
-  VkShaderModuleOwner vertex_;
-  std::mutex mutex_;
-  std::map<ProgramKey, std::unique_ptr<ProgramPipeline>> programs_;
-  std::vector<std::unique_ptr<CallResources>> free_;
-};
-
-// Per-call resources from the cache, given back when the call ends (or throws).
-class CallResourcesLease {
- public:
-  explicit CallResourcesLease(PatchProgramCache& cache)
-      : cache_(cache), resources_(cache.acquire()) {}
-  ~CallResourcesLease() { cache_.release(std::move(resources_)); }
-  CallResourcesLease(const CallResourcesLease&) = delete;
-  CallResourcesLease& operator=(const CallResourcesLease&) = delete;
-  CallResources* operator->() const { return resources_.get(); }
-
- private:
-  PatchProgramCache& cache_;
-  std::unique_ptr<CallResources> resources_;
-};
 
 void barrierShaderWritesToHost(VkCommandBuffer cmd) {
   auto barrier = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -551,6 +329,139 @@ void checkProgram(const Context& context, const GpuPatchProgram& program, size_t
   }
 }
 
+// The levels the device is given for each patch (deviceLevels).
+std::vector<tess::Levels> deviceLevelsOf(const GpuPatchProgram& program, tess::Spacing spacing,
+                                         std::span<const tess::Levels> patch_levels) {
+  std::vector<tess::Levels> device_levels;
+  device_levels.reserve(patch_levels.size());
+  for (const tess::Levels& levels : patch_levels) {
+    device_levels.push_back(deviceLevels(program.domain, spacing, levels));
+  }
+  return device_levels;
+}
+
+// The call's sets 0 and 1 for `pipeline`, allocated the first time these resources draw
+// with it.
+const CallResources::PipelineSets& pipelineSets(VkDevice device, const ProgramPipeline& pipeline,
+                                                CallResources& resources) {
+  auto [sets, first_use] = resources.sets.try_emplace(&pipeline);
+  if (first_use) {
+    sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
+    sets->second.levels =
+        StorageBufferSet(device, pipeline.levels_set_layout.get(), kLevelsSetBindings);
+  }
+  return sets->second;
+}
+
+// Set 1: uploads the per-patch levels, the factor policy's corners and parameters, a zeroed
+// output for the levels the TCS writes (`out_words`), and the culling policy's words; binds
+// them.
+void bindLevelsSet(Context& context, CallResources& resources, const StorageBufferSet& set,
+                   std::span<const tess::Levels> device_levels, const TcsFactorPolicy* policy,
+                   const TcsCullPolicy* cull, size_t out_words) {
+  const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources.levels);
+  const std::span<const uint32_t> no_words;
+  const VkDeviceSize corners_range =
+      uploadWords(context, policy ? std::span(policy->corner_words) : no_words,
+                  &resources.factor_corners);
+  const VkDeviceSize params_range = uploadWords(
+      context, policy ? std::span(policy->param_words) : no_words, &resources.factor_params);
+  const std::vector<uint32_t> zero_out(out_words, 0u);
+  const VkDeviceSize out_range = uploadWords(context, zero_out, &resources.factor_out);
+  const VkDeviceSize cull_params_range = uploadWords(
+      context, cull ? std::span(cull->param_words) : no_words, &resources.cull_params);
+  const VkDeviceSize cull_patches_range = uploadWords(
+      context, cull ? std::span(cull->patch_words) : no_words, &resources.cull_patches);
+  const VkBuffer levels_handles[kLevelsSetBindings] = {
+      resources.levels.handle(), resources.factor_corners.handle(),
+      resources.factor_params.handle(), resources.factor_out.handle(),
+      resources.cull_params.handle(),   resources.cull_patches.handle()};
+  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
+      levels_range, corners_range, params_range, out_range, cull_params_range, cull_patches_range};
+  set.bind(context.device(), levels_handles, levels_ranges);
+}
+
+// Binds set 0 to the current capture buffer (again whenever it grows) and the program's
+// storage buffers.
+void bindDataSet(VkDevice device, const CallResources& resources, const StorageBufferSet& set,
+                 std::span<const VkDeviceSize> data_ranges) {
+  std::vector<VkBuffer> handles{resources.capture.handle()};
+  std::vector<VkDeviceSize> ranges{VK_WHOLE_SIZE};
+  for (size_t i = 0; i < data_ranges.size(); ++i) {
+    handles.push_back(resources.data[i].handle());
+    ranges.push_back(data_ranges[i]);
+  }
+  set.bind(device, handles, ranges);
+}
+
+// Set 2: the displacement map and its words, which live for one call only.
+struct CallDisplacement {
+  std::optional<SampledImage> image;
+  Buffer words;
+  DisplacementSet set;
+};
+
+void bindDisplacement(Context& context, const GpuPatchProgram& program,
+                      const ProgramPipeline& pipeline, CallDisplacement* displacement) {
+  if (!program.displacement) return;
+  const GpuDisplacement& d = *program.displacement;
+  if (!d.texels) throw GpuError("patch program " + program.evaluation_shader + ": no texels");
+  displacement->image.emplace(context, floatImageFormat(d.channels, d.bytes_per_channel), d.width,
+                              d.height, *d.texels);
+  uploadWords(context, d.patch_words, &displacement->words);
+  displacement->set = DisplacementSet(context.device(), pipeline.displacement_set_layout.get(),
+                                      *displacement->image, displacement->words);
+}
+
+// Warm-up, once per pipeline (lavapipe compiles at the first draw): not captured and
+// not counted.
+void warmUp(Context& context, ProgramPipeline& pipeline, const DrawSetup& setup, uint32_t first,
+            uint32_t end) {
+  if (first < end && !pipeline.warmed.load()) {
+    context.submitAndWait(
+        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, false); });
+    pipeline.warmed.store(true);
+  }
+}
+
+// Draws patches [first, end) in submissions whose captures fit, reading back each one's
+// capture and statistics into `result`.
+void drawPatches(Context& context, const GpuPatchProgram& program,
+                 const PatchProgramOptions& options, const DrawSetup& setup,
+                 std::span<const tess::Levels> device_levels, uint32_t first, uint32_t end,
+                 bool boundary_only, CallResources& resources, const StorageBufferSet& data_set,
+                 std::span<const VkDeviceSize> data_ranges, PatchProgramCapture* result) {
+  const VkDevice device = context.device();
+  const std::vector<uint64_t> bounds =
+      captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
+  for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
+    const VkDeviceSize bytes = kCaptureHeaderBytes + range.capacity * kCaptureWords * 4;
+    if (resources.capture.sizeBytes() < bytes) {
+      ensureCapacity(context, resources.capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      bindDataSet(device, resources, data_set, data_ranges);
+    }
+    const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
+    resources.capture.write(header, sizeof(header));
+    result->submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
+      recordDraws(cmd, setup, range.from, range.to, options.capture);
+    });
+    result->draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
+    if (options.statistics) addStatistics(device, setup.queries, setup.primitives, &result->stats);
+    if (options.capture) readCapture(resources.capture, program, range.capacity, &result->vertices);
+  }
+}
+
+// The levels the TCS wrote, 6 of each patch's 8 words.
+void readTcsLevels(const CallResources& resources, const GpuPatchProgram& program,
+                   PatchProgramCapture* result) {
+  std::vector<uint32_t> written(size_t(program.patch_count) * 8);
+  resources.factor_out.read(written.data(), written.size() * 4);
+  result->tcs_levels.resize(program.patch_count);
+  for (size_t p = 0; p < program.patch_count; ++p) {
+    std::copy_n(&written[p * 8], 6, result->tcs_levels[p].begin());
+  }
+}
+
 }  // namespace
 
 PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& program,
@@ -565,118 +476,41 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   ProgramPipeline& pipeline =
       cache.get(program, options.spacing, boundary, policy ? 1u : 0u, cull ? 1u : 0u);
   const bool read_levels = policy != nullptr || cull != nullptr;
-  const CallResourcesLease resources(cache);
+  const CallResourcesLease lease(cache);
+  CallResources& resources = *lease;
   const VkDevice device = context.device();
 
-  std::vector<tess::Levels> device_levels;
-  device_levels.reserve(patch_levels.size());
-  for (const tess::Levels& levels : patch_levels) {
-    device_levels.push_back(deviceLevels(program.domain, options.spacing, levels));
-  }
+  const std::vector<tess::Levels> device_levels =
+      deviceLevelsOf(program, options.spacing, patch_levels);
   const std::vector<VkDeviceSize> data_ranges =
-      uploadStorageBuffers(context, program, &resources->data);
-  const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources->levels);
-  const std::span<const uint32_t> no_words;
-  const VkDeviceSize corners_range =
-      uploadWords(context, policy ? std::span(policy->corner_words) : no_words,
-                  &resources->factor_corners);
-  const VkDeviceSize params_range = uploadWords(
-      context, policy ? std::span(policy->param_words) : no_words, &resources->factor_params);
-  const std::vector<uint32_t> zero_out(read_levels ? size_t(program.patch_count) * 8 : 0, 0u);
-  const VkDeviceSize out_range = uploadWords(context, zero_out, &resources->factor_out);
-  const VkDeviceSize cull_params_range = uploadWords(
-      context, cull ? std::span(cull->param_words) : no_words, &resources->cull_params);
-  const VkDeviceSize cull_patches_range = uploadWords(
-      context, cull ? std::span(cull->patch_words) : no_words, &resources->cull_patches);
-  auto [sets, first_use] = resources->sets.try_emplace(&pipeline);
-  if (first_use) {
-    sets->second.data = StorageBufferSet(device, pipeline.set_layout.get(), pipeline.binding_count);
-    sets->second.levels =
-        StorageBufferSet(device, pipeline.levels_set_layout.get(), kLevelsSetBindings);
-  }
-  const StorageBufferSet& descriptors = sets->second.data;
-  const StorageBufferSet& levels_descriptors = sets->second.levels;
-  const VkBuffer levels_handles[kLevelsSetBindings] = {
-      resources->levels.handle(), resources->factor_corners.handle(),
-      resources->factor_params.handle(), resources->factor_out.handle(),
-      resources->cull_params.handle(),   resources->cull_patches.handle()};
-  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
-      levels_range, corners_range, params_range, out_range, cull_params_range, cull_patches_range};
-  levels_descriptors.bind(device, levels_handles, levels_ranges);
-  // Binds set 0 to the current capture buffer (replaced when it grows).
-  auto bindBuffers = [&]() {
-    std::vector<VkBuffer> handles{resources->capture.handle()};
-    std::vector<VkDeviceSize> ranges{VK_WHOLE_SIZE};
-    for (size_t i = 0; i < data_ranges.size(); ++i) {
-      handles.push_back(resources->data[i].handle());
-      ranges.push_back(data_ranges[i]);
-    }
-    descriptors.bind(device, handles, ranges);
-  };
+      uploadStorageBuffers(context, program, &resources.data);
+  const CallResources::PipelineSets& sets = pipelineSets(device, pipeline, resources);
+  bindLevelsSet(context, resources, sets.levels, device_levels, policy, cull,
+                read_levels ? size_t(program.patch_count) * 8 : 0);
 
   const uint32_t first = std::min(options.first_patch, program.patch_count);
   const uint32_t end =
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
-  // The displacement map and its words live for this call only (set 2).
-  std::optional<SampledImage> displacement_image;
-  Buffer displacement_words;
-  DisplacementSet displacement_set;
-  if (program.displacement) {
-    const GpuDisplacement& d = *program.displacement;
-    if (!d.texels) throw GpuError("patch program " + program.evaluation_shader + ": no texels");
-    displacement_image.emplace(context, floatImageFormat(d.channels, d.bytes_per_channel),
-                               d.width, d.height, *d.texels);
-    uploadWords(context, d.patch_words, &displacement_words);
-    displacement_set = DisplacementSet(device, pipeline.displacement_set_layout.get(),
-                                       *displacement_image, displacement_words);
-  }
+  CallDisplacement displacement;
+  bindDisplacement(context, program, pipeline, &displacement);
   const DrawSetup setup{pipeline,
-                        options.statistics ? resources->queries.get() : VK_NULL_HANDLE,
-                        options.statistics ? resources->primitives.get() : VK_NULL_HANDLE,
-                        {descriptors.set, levels_descriptors.set, displacement_set.set},
+                        options.statistics ? resources.queries.get() : VK_NULL_HANDLE,
+                        options.statistics ? resources.primitives.get() : VK_NULL_HANDLE,
+                        {sets.data.set, sets.levels.set, displacement.set.set},
                         program.displacement ? 3u : 2u,
                         program.input_vertices_per_patch,
                         std::max(options.patches_per_draw, 1u)};
 
-  ensureCapacity(context, resources->capture, kCaptureHeaderBytes + 64,
+  ensureCapacity(context, resources.capture, kCaptureHeaderBytes + 64,
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  bindBuffers();
-  // Warm-up, once per pipeline (lavapipe compiles at the first draw): not captured and
-  // not counted.
-  if (first < end && !pipeline.warmed.load()) {
-    context.submitAndWait(
-        [&](VkCommandBuffer cmd) { recordDraws(cmd, setup, first, first + 1, false); });
-    pipeline.warmed.store(true);
-  }
+  bindDataSet(device, resources, sets.data, data_ranges);
+  warmUp(context, pipeline, setup, first, end);
 
   PatchProgramCapture result;
-  const bool boundary_only = boundary != kCaptureEvery;
-  const std::vector<uint64_t> bounds =
-      captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
-  for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
-    const VkDeviceSize bytes = kCaptureHeaderBytes + range.capacity * kCaptureWords * 4;
-    if (resources->capture.sizeBytes() < bytes) {
-      ensureCapacity(context, resources->capture, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-      bindBuffers();
-    }
-    const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
-    resources->capture.write(header, sizeof(header));
-    result.submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
-      recordDraws(cmd, setup, range.from, range.to, options.capture);
-    });
-    result.draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
-    if (options.statistics) addStatistics(device, setup.queries, setup.primitives, &result.stats);
-    if (options.capture) readCapture(resources->capture, program, range.capacity, &result.vertices);
-  }
+  drawPatches(context, program, options, setup, device_levels, first, end,
+              boundary != kCaptureEvery, resources, sets.data, data_ranges, &result);
   if (options.sort) sortUnique(&result.vertices);
-  if (read_levels) {
-    std::vector<uint32_t> written(size_t(program.patch_count) * 8);
-    resources->factor_out.read(written.data(), written.size() * 4);
-    result.tcs_levels.resize(program.patch_count);
-    for (size_t p = 0; p < program.patch_count; ++p) {
-      std::copy_n(&written[p * 8], 6, result.tcs_levels[p].begin());
-    }
-  }
+  if (read_levels) readTcsLevels(resources, program, &result);
   return result;
 }
 

@@ -49,7 +49,7 @@ AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh) {
   return h;
 }
 
-ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, ref::Scheme scheme, int rate,
+ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, int rate,
                                           const AnalyticDisplacement& displacement) {
   const ref::LimitSurface limit(mesh, scheme);
   ref::LimitTessellation target = ref::tessellateLimit(limit, rate);

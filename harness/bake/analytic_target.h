@@ -16,8 +16,8 @@
 
 #include "core/mesh/mesh.h"
 #include "core/mesh/vec.h"
+#include "core/osd/scheme.h"
 #include "reference/limit_tessellation.h"
-#include "reference/scheme.h"
 
 namespace tb {
 
@@ -45,7 +45,7 @@ AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh);
 // normals are left as the limit's (they are not the displaced surface's). Faces without a
 // limit surface are left out (faces_skipped). Throws InputError like LimitSurface and
 // tessellateLimit (rate outside 1..1024).
-ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, ref::Scheme scheme, int rate,
+ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, int rate,
                                           const AnalyticDisplacement& displacement);
 
 // The mesh as an OBJ file (v and f lines, 1-based, triangles counter-clockwise); throws

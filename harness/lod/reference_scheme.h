@@ -1,16 +1,16 @@
-// The subdivision scheme of the limit a technique is graded against (reference/scheme.h),
+// The subdivision scheme of the limit a technique is graded against (core/osd/scheme.h),
 // from the scheme its patches approximate (techniques/technique.h). Shared by the screen
 // metrics here and by the error and adaptivity measures above (harness/measures/).
 #pragma once
 
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 #include "techniques/technique.h"
 
 namespace tb {
 
 // The scheme of the limit a technique is graded against: the one its patches approximate.
-inline ref::Scheme referenceScheme(LimitScheme scheme) {
-  return scheme == LimitScheme::kLoop ? ref::Scheme::kLoop : ref::Scheme::kCatmullClark;
+inline osd::Scheme referenceScheme(LimitScheme scheme) {
+  return scheme == LimitScheme::kLoop ? osd::Scheme::kLoop : osd::Scheme::kCatmullClark;
 }
 
 }  // namespace tb

@@ -226,21 +226,21 @@ ScreenEdgeFigures edgeFigures(std::vector<double> lengths_px, double target_px) 
 ScreenMetrics::ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurface* limit)
     : patches_(patches), limit_(limit), cache_(patches, kScreenPatternPoints) {
   if (limit == nullptr) return;
-  const ref::Scheme scheme = referenceScheme(patches.approximates());
+  const osd::Scheme scheme = referenceScheme(patches.approximates());
   if (limit->scheme() != scheme || limit->faceCount() != patches.patchCount()) {
     throw std::logic_error("screen metrics: the limit surface (" +
-                           std::string(ref::schemeName(limit->scheme())) + ", " +
+                           std::string(osd::schemeName(limit->scheme())) + ", " +
                            std::to_string(limit->faceCount()) + " faces) is not the " +
-                           std::string(ref::schemeName(scheme)) + " limit of the " +
+                           std::string(osd::schemeName(scheme)) + " limit of the " +
                            std::to_string(patches.patchCount()) + " patches' control mesh");
   }
   reference_map_.assign(patches.patchCount(), kNoReference);
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     if (!limit->hasLimitSurface(p)) continue;
     const PatchDomain domain = patches.patchDomain(p);
-    if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) {
+    if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
       reference_map_[p] = kQuadUv;
-    } else if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) {
+    } else if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
       reference_map_[p] = kLoopUv;
     }
   }

@@ -31,7 +31,7 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
     throw std::invalid_argument("tessellateWithError: level " + std::to_string(level) +
                                 " outside 1..64");
   }
-  const ref::Scheme scheme = referenceScheme(patches.approximates());
+  const osd::Scheme scheme = referenceScheme(patches.approximates());
   tess::Levels levels;
   levels.outer = {float(level), float(level), float(level), float(level)};
   levels.inner = {float(level), float(level)};

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "core/mesh/input_error.h"
-#include "reference/topology_refiner_builder.h"
+#include "core/osd/topology_refiner_builder.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -48,48 +48,52 @@ size_t facesAfter(const Mesh& mesh, int levels) {
   return faces;
 }
 
-}  // namespace
-
-CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
-                                 int min_levels) {
-  std::unique_ptr<Far::TopologyRefiner> refiner;
+std::unique_ptr<Far::TopologyRefiner> buildRefiner(const Mesh& mesh, const std::string& technique) {
   try {
-    refiner = ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
+    return osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
   } catch (const InputError& error) {
     throw UnsupportedInput(technique + ": OpenSubdiv refuses " + mesh.source + ": " + error.what());
   }
-  CreasePreparation out;
-  const float largest = largestFiniteSharpness(refiner->GetLevel(0));
-  out.levels_needed = int(std::ceil(largest));
-  out.levels = std::max(0, min_levels);
-  while (out.levels < out.levels_needed && facesAfter(mesh, out.levels + 1) <= max_faces) ++out.levels;
+}
 
+// Refines `levels` uniform steps (full topology at the last) and returns the last level's
+// positions: the input's when `levels` is 0.
+std::vector<RefinedPoint> refinePositions(Far::TopologyRefiner& refiner, const Mesh& mesh,
+                                          int levels) {
   std::vector<RefinedPoint> points(mesh.positions.size());
   for (size_t v = 0; v < mesh.positions.size(); ++v) points[v].p = mesh.positions[v];
-  if (out.levels > 0) {
-    Far::TopologyRefiner::UniformOptions options(out.levels);
+  if (levels > 0) {
+    Far::TopologyRefiner::UniformOptions options(levels);
     options.fullTopologyInLastLevel = true;  // edges and their sharpness at the last level
-    refiner->RefineUniform(options);
-    Far::PrimvarRefinerReal<double> primvar(*refiner);
-    for (int level = 1; level <= out.levels; ++level) {
-      std::vector<RefinedPoint> finer(size_t(refiner->GetLevel(level).GetNumVertices()));
+    refiner.RefineUniform(options);
+    Far::PrimvarRefinerReal<double> primvar(refiner);
+    for (int level = 1; level <= levels; ++level) {
+      std::vector<RefinedPoint> finer(size_t(refiner.GetLevel(level).GetNumVertices()));
       RefinedPoint* destination = finer.data();
       primvar.Interpolate(level, points.data(), destination);
       points = std::move(finer);
     }
   }
-  const Far::TopologyLevel& last = refiner->GetLevel(out.levels);
-  const int face_count = last.GetNumFaces();
+  return points;
+}
 
-  // Input face of every face of the last level, through the parent chain.
+// Input face of every face of the last level, through the parent chain.
+std::vector<uint32_t> inputFaces(const Far::TopologyRefiner& refiner, int levels) {
+  const int face_count = refiner.GetLevel(levels).GetNumFaces();
   std::vector<uint32_t> source_of(static_cast<size_t>(face_count));
   for (int f = 0; f < face_count; ++f) {
     int face = f;
-    for (int level = out.levels; level > 0; --level) face = refiner->GetLevel(level).GetFaceParentFace(face);
+    for (int level = levels; level > 0; --level) face = refiner.GetLevel(level).GetFaceParentFace(face);
     source_of[size_t(f)] = uint32_t(face);
   }
+  return source_of;
+}
 
-  // The control mesh: faces with a limit surface first, then the holes.
+// The control mesh: faces with a limit surface first, then the holes.
+void buildControlMesh(const Mesh& mesh, const Far::TopologyLevel& last,
+                      const std::vector<RefinedPoint>& points,
+                      const std::vector<uint32_t>& source_of, CreasePreparation& out) {
+  const int face_count = last.GetNumFaces();
   Mesh& control = out.control;
   control.source = mesh.source;
   for (const RefinedPoint& p : points) control.positions.push_back(p.p);
@@ -126,9 +130,13 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
     out.source_face.push_back(input_face);
     if (i >= out.patch_faces) control.tags.holes.push_back(uint32_t(i));
   }
+}
 
-  // Remaining tags (true values, for the reference) and the sharp features the patches
-  // honour (finite leftovers rounded).
+// The last level's edges: crease tags (true values, for the reference) and the sharp edges
+// the patches honour (finite leftovers rounded). Returns the sharp edges at each vertex.
+std::vector<uint32_t> tagEdges(const Mesh& mesh, const Far::TopologyLevel& last,
+                               CreasePreparation& out) {
+  Mesh& control = out.control;
   const bool boundary_sharp = mesh.tags.boundary != BoundaryInterpolation::kNone;
   std::vector<uint32_t> sharp_count(control.positions.size(), 0);
   for (int e = 0; e < last.GetNumEdges(); ++e) {
@@ -144,6 +152,13 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
       ++sharp_count[b];
     }
   }
+  return sharp_count;
+}
+
+// The last level's vertices: corner tags and each vertex's kind as the patches see it.
+void tagVertices(const Mesh& mesh, const Far::TopologyLevel& last,
+                 const std::vector<uint32_t>& sharp_count, CreasePreparation& out) {
+  Mesh& control = out.control;
   out.vertex_kind.assign(control.positions.size(), SharpVertexKind::kSmooth);
   for (int v = 0; v < last.GetNumVertices(); ++v) {
     const float sharpness = last.GetVertexSharpness(v);
@@ -171,9 +186,11 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
     }
     out.vertex_kind[size_t(v)] = kind;
   }
-  if (out.levels == 0 && out.patch_faces == control.faceCount()) {
-    control.tags = mesh.tags;  // nothing moved: the control mesh is the input as it is
-  }
+}
+
+// The instance's warnings: levels refined against the budget, sharpness rounded, holes.
+void addNotes(size_t max_faces, CreasePreparation& out) {
+  const Mesh& control = out.control;
   if (out.levels > 0 && out.levels_needed > 0) {
     char line[200];
     std::snprintf(line, sizeof line,
@@ -193,6 +210,28 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
     out.notes.push_back(std::to_string(control.faceCount() - out.patch_faces) +
                         " faces without a limit surface (holes) get no patch");
   }
+}
+
+}  // namespace
+
+CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
+                                 int min_levels) {
+  std::unique_ptr<Far::TopologyRefiner> refiner = buildRefiner(mesh, technique);
+  CreasePreparation out;
+  const float largest = largestFiniteSharpness(refiner->GetLevel(0));
+  out.levels_needed = int(std::ceil(largest));
+  out.levels = std::max(0, min_levels);
+  while (out.levels < out.levels_needed && facesAfter(mesh, out.levels + 1) <= max_faces) ++out.levels;
+
+  const std::vector<RefinedPoint> points = refinePositions(*refiner, mesh, out.levels);
+  const Far::TopologyLevel& last = refiner->GetLevel(out.levels);
+  buildControlMesh(mesh, last, points, inputFaces(*refiner, out.levels), out);
+  const std::vector<uint32_t> sharp_count = tagEdges(mesh, last, out);
+  tagVertices(mesh, last, sharp_count, out);
+  if (out.levels == 0 && out.patch_faces == out.control.faceCount()) {
+    out.control.tags = mesh.tags;  // nothing moved: the control mesh is the input as it is
+  }
+  addNotes(max_faces, out);
   return out;
 }
 

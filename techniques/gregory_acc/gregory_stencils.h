@@ -77,7 +77,7 @@ struct GregoryStencils {
 // Checked with the default crease face budget.
 std::string checkGregorySupport(const Mesh& mesh);
 
-// Which tangent mask places the edge points (see vertexFrame in gregory_stencils.cpp).
+// Which tangent mask places the edge points (see vertexFrame in gregory_rings.cpp).
 enum class TangentMask {
   kPaper,       // Loop et al. 2009 / OpenSubdiv Far's Gregory basis (averaged ACC face
                 // points); parametric error no larger than kExactLimit's on every bundled

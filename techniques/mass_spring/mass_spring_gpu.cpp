@@ -41,6 +41,83 @@ gpu::GpuComputeBuffer buffer(uint32_t binding, std::string name, std::vector<uin
 
 uint32_t groups(size_t threads) { return uint32_t((threads + kGroupSize - 1) / kGroupSize); }
 
+// The blasts for verlet.comp: centre, radius, speed and the step each fires on.
+std::vector<uint32_t> blastWords(const std::vector<Blast>& input_blasts, const Vec3d& origin,
+                                 double dt, size_t rows) {
+  std::vector<uint32_t> blasts;
+  for (const Blast& blast : input_blasts) {
+    // The step it fires on (mass_spring.cpp, step()): the first whose end reaches time_s.
+    size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
+    while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
+    const Vec3f centre = vecCast<float>(blast.center_m - origin);
+    blasts.insert(blasts.end(),
+                  {word(centre.x), word(centre.y), word(centre.z), 0u, word(float(blast.radius_m)),
+                   word(float(blast.speed_m_per_s)), k < rows ? uint32_t(k) : 0xffffffffu, 0u});
+  }
+  return blasts;
+}
+
+// Gauss-Seidel: `budget` coloured sweeps per step (gs_colour_step.comp).
+void appendGaussSeidelSteps(const SpringSystem& system, const std::vector<uint32_t>& positions,
+                            const std::vector<Vec3f>& anchors, uint32_t budget,
+                            gpu::GpuComputeProgram& program) {
+  std::vector<uint32_t> springs;
+  for (uint32_t s : system.colour_order) {
+    const Spring& spring = system.springs[s];
+    springs.insert(springs.end(),
+                   {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
+  }
+  uint32_t largest = 0;
+  for (uint32_t c = 0; c < system.colour_count; ++c) {
+    largest = std::max(largest, system.colour_start[c + 1] - system.colour_start[c]);
+  }
+  for (uint32_t d = 0; d < budget; ++d) {
+    gpu::GpuComputePass pass;
+    pass.shader = "mass_spring/gs_colour_step.comp";
+    pass.buffers = {
+        buffer(0, "positions", positions), buffer(1, "anchors", vec4Words(anchors)),
+        buffer(2, "springs", springs), buffer(3, "colour_start", system.colour_start)};
+    pass.push_constants = {d, budget, system.colour_count, 0u};
+    pass.step_index_word = 3;
+    pass.groups_x = groups(largest);
+    program.passes.push_back(std::move(pass));
+  }
+}
+
+// Jacobi (Chebyshev or not): `budget` ping-pong iterations per step (jacobi.comp), then a
+// copy back into "positions" after an odd count.
+void appendJacobiSteps(size_t n, const std::vector<uint32_t>& positions,
+                       const std::vector<Vec3f>& anchors, const std::vector<uint32_t>& end_start,
+                       const std::vector<uint32_t>& ends, const std::vector<uint32_t>& scale,
+                       const std::vector<uint32_t>& weights, bool chebyshev, bool tiled,
+                       uint32_t budget, gpu::GpuComputeProgram& program) {
+  for (uint32_t d = 0; d < budget; ++d) {
+    const bool even = d % 2 == 0;
+    gpu::GpuComputePass pass;
+    pass.shader = "mass_spring/jacobi.comp";
+    pass.buffers = {buffer(0, even ? "positions" : "positions_other", positions),
+                    buffer(1, even ? "positions_other" : "positions", positions),
+                    buffer(2, "anchors", vec4Words(anchors)),
+                    buffer(3, "end_start", end_start),
+                    buffer(4, "ends", ends),
+                    buffer(5, "vertex_scale", scale),
+                    buffer(6, "chebyshev_weights", weights)};
+    // Only the first declaration of a name uploads: every pass declares the same words.
+    pass.specialization = {chebyshev ? 1u : 0u, tiled ? 1u : 0u};
+    pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), d};
+    pass.groups_x = groups(n);
+    program.passes.push_back(std::move(pass));
+  }
+  if (budget % 2 == 1) {
+    gpu::GpuComputePass copy;
+    copy.shader = "mass_spring/copy.comp";
+    copy.buffers = {buffer(0, "positions", positions), buffer(1, "positions_other", positions)};
+    copy.push_constants = {uint32_t(n)};
+    copy.groups_x = groups(n);
+    program.passes.push_back(std::move(copy));
+  }
+}
+
 }  // namespace
 
 std::vector<Vec3f> MassSpringSimulation::decodePositions(const std::vector<uint32_t>& words,
@@ -184,16 +261,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
     for (size_t st = 0; st < stomps; ++st) sines.push_back(word(stompSine(st, j, dt)));
   }
   std::vector<uint32_t> amplitudes = vec4Words(stomp_amplitude_);
-  std::vector<uint32_t> blasts;
-  for (const Blast& blast : input_->blasts) {
-    // The step it fires on (mass_spring.cpp, step()): the first whose end reaches time_s.
-    size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
-    while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
-    const Vec3f centre = vecCast<float>(blast.center_m - origin_);
-    blasts.insert(blasts.end(),
-                  {word(centre.x), word(centre.y), word(centre.z), 0u, word(float(blast.radius_m)),
-                   word(float(blast.speed_m_per_s)), k < rows ? uint32_t(k) : 0xffffffffu, 0u});
-  }
+  std::vector<uint32_t> blasts = blastWords(input_->blasts, origin_, dt, rows);
   const Vec3f gravity_step = vecCast<float>((dt * dt) * input_->gravity_m_per_s2);
   gpu::GpuComputePass verlet;
   verlet.shader = "mass_spring/verlet.comp";
@@ -225,56 +293,13 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
 
   const uint32_t budget = uint32_t(dispatches_per_step_);
   if (!jacobi) {
-    std::vector<uint32_t> springs;
-    for (uint32_t s : system_.colour_order) {
-      const Spring& spring = system_.springs[s];
-      springs.insert(springs.end(),
-                     {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
-    }
-    uint32_t largest = 0;
-    for (uint32_t c = 0; c < system_.colour_count; ++c) {
-      largest = std::max(largest, system_.colour_start[c + 1] - system_.colour_start[c]);
-    }
-    for (uint32_t d = 0; d < budget; ++d) {
-      gpu::GpuComputePass pass;
-      pass.shader = "mass_spring/gs_colour_step.comp";
-      pass.buffers = {
-          buffer(0, "positions", positions), buffer(1, "anchors", vec4Words(state_.anchors)),
-          buffer(2, "springs", springs), buffer(3, "colour_start", system_.colour_start)};
-      pass.push_constants = {d, budget, system_.colour_count, 0u};
-      pass.step_index_word = 3;
-      pass.groups_x = groups(largest);
-      program.passes.push_back(std::move(pass));
-    }
+    appendGaussSeidelSteps(system_, positions, state_.anchors, budget, program);
     program.passes.push_back(renderPass());
     return {program};
   }
   const JacobiBuffers tables = jacobiBuffers();
-  for (uint32_t d = 0; d < budget; ++d) {
-    const bool even = d % 2 == 0;
-    gpu::GpuComputePass pass;
-    pass.shader = "mass_spring/jacobi.comp";
-    pass.buffers = {buffer(0, even ? "positions" : "positions_other", positions),
-                    buffer(1, even ? "positions_other" : "positions", positions),
-                    buffer(2, "anchors", vec4Words(state_.anchors)),
-                    buffer(3, "end_start", tables.end_start),
-                    buffer(4, "ends", tables.ends),
-                    buffer(5, "vertex_scale", tables.scale),
-                    buffer(6, "chebyshev_weights", tables.weights)};
-    // Only the first declaration of a name uploads: every pass declares the same words.
-    pass.specialization = {chebyshev ? 1u : 0u, solver_.settings().tiled ? 1u : 0u};
-    pass.push_constants = {uint32_t(n), uint32_t(kChebyshevTable), d};
-    pass.groups_x = groups(n);
-    program.passes.push_back(std::move(pass));
-  }
-  if (budget % 2 == 1) {
-    gpu::GpuComputePass copy;
-    copy.shader = "mass_spring/copy.comp";
-    copy.buffers = {buffer(0, "positions", positions), buffer(1, "positions_other", positions)};
-    copy.push_constants = {uint32_t(n)};
-    copy.groups_x = groups(n);
-    program.passes.push_back(std::move(copy));
-  }
+  appendJacobiSteps(n, positions, state_.anchors, tables.end_start, tables.ends, tables.scale,
+                    tables.weights, chebyshev, solver_.settings().tiled, budget, program);
   program.passes.push_back(renderPass());
   return {program};
 }

@@ -68,13 +68,8 @@ double closestParameter(const Vec3d& p, const Vec3d& q, const Vec3d& x) {
   return std::clamp(dot(x - p, d) / dd, 0.0, 1.0);
 }
 
-}  // namespace
-
-SoftBodyInput parseSoftBody(const Scenario& scenario) {
-  const std::string file = scenario.path.empty() ? scenario.name : scenario.path;
-  const SectionReader read(file);
-  SoftBodyInput input;
-  input.source = file;
+// The scenario's "mass_spring" section as a JSON object.
+Json sectionOf(const Scenario& scenario, const SectionReader& read) {
   const auto section_it = scenario.sections.find("mass_spring");
   if (section_it == scenario.sections.end())
     read.fail("", "the scenario has no \"mass_spring\" section");
@@ -85,6 +80,87 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
     read.fail("", std::string("is not valid JSON: ") + error.what());
   }
   if (!section.is_object()) read.fail("", "must be an object");
+  return section;
+}
+
+void readSoftness(const Json& section, const SectionReader& read, SoftBodyInput& input) {
+  const Json& softness = read.object(section, "softness", "softness");
+  input.softness_default = read.number(softness, "default", "softness.default", 0, 1, 0.5);
+  if (softness.contains("spheres")) {
+    if (!softness["spheres"].is_array()) read.fail("softness.spheres", "must be an array");
+    for (size_t i = 0; i < softness["spheres"].size(); ++i) {
+      const std::string field = "softness.spheres[" + std::to_string(i) + "]";
+      const Json& sphere = softness["spheres"][i];
+      if (!sphere.is_object()) read.fail(field, "must be an object");
+      SoftnessSphere s;
+      if (!sphere.contains("center_m")) read.fail(field + ".center_m", "missing");
+      s.center_m = read.vec3(sphere["center_m"], field + ".center_m");
+      s.radius_m = read.number(sphere, "radius_m", field + ".radius_m", 1e-9, 1e9);
+      s.value = read.number(sphere, "value", field + ".value", 0, 1);
+      input.softness_spheres.push_back(s);
+    }
+  }
+}
+
+Stomp readStomp(const Json& motion, const std::string& field, const SectionReader& read,
+                size_t joint_count) {
+  Stomp stomp;
+  if (motion.contains("direction")) {
+    stomp.direction = read.vec3(motion["direction"], field + ".direction");
+  }
+  stomp.frequency_hz = read.number(motion, "frequency_hz", field + ".frequency_hz", 0, 1e6);
+  const Json& amplitudes =
+      motion.contains("joint_amplitudes_m") ? motion["joint_amplitudes_m"] : Json();
+  if (!amplitudes.is_array() || amplitudes.size() != joint_count) {
+    read.fail(field + ".joint_amplitudes_m",
+              "must be an array of one number (metres) per joint of bone_chain_m");
+  }
+  for (const Json& a : amplitudes) {
+    if (!a.is_number() || !std::isfinite(a.get<double>())) {
+      read.fail(field + ".joint_amplitudes_m", "must hold finite numbers");
+    }
+    stomp.joint_amplitudes_m.push_back(a.get<double>());
+  }
+  return stomp;
+}
+
+Blast readBlast(const Json& motion, const std::string& field, const SectionReader& read) {
+  Blast blast;
+  blast.time_s = read.number(motion, "time_s", field + ".time_s", 0, 1e9);
+  if (!motion.contains("center_m")) read.fail(field + ".center_m", "missing");
+  blast.center_m = read.vec3(motion["center_m"], field + ".center_m");
+  blast.radius_m = read.number(motion, "radius_m", field + ".radius_m", 1e-9, 1e9);
+  blast.speed_m_per_s = read.number(motion, "speed_m_per_s", field + ".speed_m_per_s", 0, 1e6);
+  return blast;
+}
+
+void readAnimation(const Json& section, const SectionReader& read, SoftBodyInput& input) {
+  if (!section["animation"].is_array()) read.fail("animation", "must be an array of motions");
+  for (size_t i = 0; i < section["animation"].size(); ++i) {
+    const std::string field = "animation[" + std::to_string(i) + "]";
+    const Json& motion = section["animation"][i];
+    if (!motion.is_object() || !motion.contains("kind") || !motion["kind"].is_string()) {
+      read.fail(field + ".kind", "must be \"stomp\" or \"blast\"");
+    }
+    const std::string kind = motion["kind"].get<std::string>();
+    if (kind == "stomp") {
+      input.stomps.push_back(readStomp(motion, field, read, input.bone_joints_m.size()));
+    } else if (kind == "blast") {
+      input.blasts.push_back(readBlast(motion, field, read));
+    } else {
+      read.fail(field + ".kind", "must be \"stomp\" or \"blast\", not \"" + kind + "\"");
+    }
+  }
+}
+
+}  // namespace
+
+SoftBodyInput parseSoftBody(const Scenario& scenario) {
+  const std::string file = scenario.path.empty() ? scenario.name : scenario.path;
+  const SectionReader read(file);
+  SoftBodyInput input;
+  input.source = file;
+  Json section = sectionOf(scenario, read);
 
   if (!section.contains("bone_chain_m") || !section["bone_chain_m"].is_array() ||
       section["bone_chain_m"].size() < 2) {
@@ -99,70 +175,12 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
   if (!(input.surface_stiffness > 0)) read.fail("stiffness.surface", "must be a number in (0, 1]");
   input.inner_stiffness = read.number(stiffness, "inner", "stiffness.inner", 0, 1);
   input.goal_stiffness = read.number(stiffness, "goal", "stiffness.goal", 0, 1);
-  if (section.contains("softness")) {
-    const Json& softness = read.object(section, "softness", "softness");
-    input.softness_default = read.number(softness, "default", "softness.default", 0, 1, 0.5);
-    if (softness.contains("spheres")) {
-      if (!softness["spheres"].is_array()) read.fail("softness.spheres", "must be an array");
-      for (size_t i = 0; i < softness["spheres"].size(); ++i) {
-        const std::string field = "softness.spheres[" + std::to_string(i) + "]";
-        const Json& sphere = softness["spheres"][i];
-        if (!sphere.is_object()) read.fail(field, "must be an object");
-        SoftnessSphere s;
-        if (!sphere.contains("center_m")) read.fail(field + ".center_m", "missing");
-        s.center_m = read.vec3(sphere["center_m"], field + ".center_m");
-        s.radius_m = read.number(sphere, "radius_m", field + ".radius_m", 1e-9, 1e9);
-        s.value = read.number(sphere, "value", field + ".value", 0, 1);
-        input.softness_spheres.push_back(s);
-      }
-    }
-  }
+  if (section.contains("softness")) readSoftness(section, read, input);
   input.damping = read.number(section, "damping", "damping", 0, 0.999, 0.01);
   if (section.contains("gravity_m_per_s2")) {
     input.gravity_m_per_s2 = read.vec3(section["gravity_m_per_s2"], "gravity_m_per_s2");
   }
-  if (section.contains("animation")) {
-    if (!section["animation"].is_array()) read.fail("animation", "must be an array of motions");
-    for (size_t i = 0; i < section["animation"].size(); ++i) {
-      const std::string field = "animation[" + std::to_string(i) + "]";
-      const Json& motion = section["animation"][i];
-      if (!motion.is_object() || !motion.contains("kind") || !motion["kind"].is_string()) {
-        read.fail(field + ".kind", "must be \"stomp\" or \"blast\"");
-      }
-      const std::string kind = motion["kind"].get<std::string>();
-      if (kind == "stomp") {
-        Stomp stomp;
-        if (motion.contains("direction")) {
-          stomp.direction = read.vec3(motion["direction"], field + ".direction");
-        }
-        stomp.frequency_hz = read.number(motion, "frequency_hz", field + ".frequency_hz", 0, 1e6);
-        const Json& amplitudes =
-            motion.contains("joint_amplitudes_m") ? motion["joint_amplitudes_m"] : Json();
-        if (!amplitudes.is_array() || amplitudes.size() != input.bone_joints_m.size()) {
-          read.fail(field + ".joint_amplitudes_m",
-                    "must be an array of one number (metres) per joint of bone_chain_m");
-        }
-        for (const Json& a : amplitudes) {
-          if (!a.is_number() || !std::isfinite(a.get<double>())) {
-            read.fail(field + ".joint_amplitudes_m", "must hold finite numbers");
-          }
-          stomp.joint_amplitudes_m.push_back(a.get<double>());
-        }
-        input.stomps.push_back(stomp);
-      } else if (kind == "blast") {
-        Blast blast;
-        blast.time_s = read.number(motion, "time_s", field + ".time_s", 0, 1e9);
-        if (!motion.contains("center_m")) read.fail(field + ".center_m", "missing");
-        blast.center_m = read.vec3(motion["center_m"], field + ".center_m");
-        blast.radius_m = read.number(motion, "radius_m", field + ".radius_m", 1e-9, 1e9);
-        blast.speed_m_per_s =
-            read.number(motion, "speed_m_per_s", field + ".speed_m_per_s", 0, 1e6);
-        input.blasts.push_back(blast);
-      } else {
-        read.fail(field + ".kind", "must be \"stomp\" or \"blast\", not \"" + kind + "\"");
-      }
-    }
-  }
+  if (section.contains("animation")) readAnimation(section, read, input);
   if (const auto it = scenario.parameters.find("dispatches_per_step");
       it != scenario.parameters.end()) {
     if (!(it->second >= 1 && it->second <= 4096)) {

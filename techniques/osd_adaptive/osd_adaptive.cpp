@@ -14,8 +14,8 @@
 
 #include "core/gpu/patch_program_desc.h"
 #include "core/mesh/input_error.h"
+#include "core/osd/topology_refiner_builder.h"
 #include "techniques/common/quad_ring.h"
-#include "reference/topology_refiner_builder.h"
 #include "techniques/osd_adaptive/osd_basis.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
@@ -54,7 +54,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
       : mesh_(mesh), isolation_(isolation), end_cap_(end_cap) {
     validate(mesh_);
     try {
-      refiner_ = ref::buildTopologyRefiner(mesh_, ref::Scheme::kCatmullClark);
+      refiner_ = osd::buildTopologyRefiner(mesh_, osd::Scheme::kCatmullClark);
     } catch (const InputError& error) {
       fail(std::string("OpenSubdiv refuses ") + mesh_.source + ": " + error.what());
     }
@@ -395,7 +395,7 @@ EndCap variantEndCap(const VariantInfo& variant) {
 std::string OsdAdaptiveTechnique::checkSupport(const Mesh& mesh) const {
   try {
     validate(mesh);
-    ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
+    osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
   } catch (const UnsupportedInput& error) {
     return error.what();
   } catch (const InputError& error) {

@@ -13,7 +13,7 @@ namespace tb::testing {
 // max(|S_uu|, |S_vv|) + |S_uv| from central differences (step 1e-3: truncation ~1e-6
 // relative, round-off ~1e-10), over a 7 x 7 grid of every face (a Loop face's samples with
 // u + v <= 0.95 only: its domain is the triangle).
-inline double secondDerivativeBound(const Mesh& mesh, ref::Scheme scheme,
+inline double secondDerivativeBound(const Mesh& mesh, osd::Scheme scheme,
                                     const AnalyticDisplacement& h) {
   const ref::LimitSurface limit(mesh, scheme);
   auto displaced = [&](size_t face, double u, double v) {
@@ -27,7 +27,7 @@ inline double secondDerivativeBound(const Mesh& mesh, ref::Scheme scheme,
     for (int i = 0; i < 7; ++i) {
       for (int j = 0; j < 7; ++j) {
         const double u = 0.05 + 0.15 * i, v = 0.05 + 0.15 * j;
-        if (scheme == ref::Scheme::kLoop && u + v > 0.95) continue;
+        if (scheme == osd::Scheme::kLoop && u + v > 0.95) continue;
         const Vec3d c = displaced(face, u, v);
         const Vec3d uu =
             (displaced(face, u + d, v) - 2.0 * c + displaced(face, u - d, v)) * (1 / (d * d));

@@ -40,7 +40,7 @@ Fixture build(const std::string& technique_id, const std::string& asset) {
   return f;
 }
 
-ref::Scheme schemeOf(const SurfacePatches& patches) {
+osd::Scheme schemeOf(const SurfacePatches& patches) {
   return referenceScheme(patches.approximates());
 }
 
@@ -72,7 +72,7 @@ TEST(BakerOracle, AccScalarTexelsEqualTheAnalyticHeightWithinTheTessellationBoun
   // bound = 1.5 M / (4 n^2) leaves room for the sampled M and the cosine.
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
   const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
-  const ref::Scheme scheme = schemeOf(*f.patches);
+  const osd::Scheme scheme = schemeOf(*f.patches);
   const double m = testing::secondDerivativeBound(f.patches->controlMesh(), scheme, h);
   // Texel centres k / 7 fall on the target's grid vertices (multiples of 1/8), where the
   // interpolant is exact and the check could not fail, only at k = 0 and 7.
@@ -136,8 +136,8 @@ TEST(BakerOracle, AccVectorTexelsHaveLengthHAndPointAlongTheNormal) {
 TEST(BakerOracle, TriangleTechniqueOnALoopTargetBakesWithoutMisses) {
   const Fixture f = build("pn_triangles", "tessbench/tri_torus.obj");
   const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
-  const ref::Scheme scheme = schemeOf(*f.patches);
-  EXPECT_EQ(scheme, ref::Scheme::kLoop);
+  const osd::Scheme scheme = schemeOf(*f.patches);
+  EXPECT_EQ(scheme, osd::Scheme::kLoop);
   const ref::LimitTessellation target = analyticTargetMesh(f.patches->controlMesh(), scheme, 16, h);
   BakeSettings settings;
   settings.resolution = 8;

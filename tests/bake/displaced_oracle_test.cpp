@@ -85,7 +85,7 @@ TEST(DisplacedOracle, BakedAnalyticTargetIsReproducedWithinTheTexelBoundAndConve
     const Technique& technique = *TechniqueRegistry::instance().find(c.technique);
     const Mesh mesh = loadObjFile(testing::assetPath(c.asset));
     const BuiltSurface surface = buildSurface(technique, mesh, technique.variants().front());
-    const ref::Scheme scheme = referenceScheme(surface->approximates());
+    const osd::Scheme scheme = referenceScheme(surface->approximates());
     const Mesh& control = surface->controlMesh();
     const AnalyticDisplacement h = analyticDisplacementFor(control);
     const ref::LimitTessellation target = analyticTargetMesh(control, scheme, kTargetRate, h);

@@ -13,10 +13,10 @@
 
 #include "core/mesh/normals.h"
 #include "core/mesh/obj_loader.h"
+#include "core/osd/uniform_refinement.h"
 #include "core/view/camera.h"
 #include "harness/measures/culling/cull_oracle.h"
 #include "harness/suite/camera_path.h"
-#include "reference/uniform_refinement.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"
@@ -55,8 +55,8 @@ std::vector<View> viewsFromAfar(const Mesh& mesh, double diameters) {
   return views;
 }
 
-Mesh refinedConvex(const char* asset, ref::Scheme scheme, int levels) {
-  Mesh mesh = ref::refineUniform(loadObjFile(testing::assetPath(asset)), scheme, levels);
+Mesh refinedConvex(const char* asset, osd::Scheme scheme, int levels) {
+  Mesh mesh = osd::refineUniform(loadObjFile(testing::assetPath(asset)), scheme, levels);
   assignAngleWeightedNormals(&mesh);
   return mesh;
 }
@@ -67,10 +67,10 @@ Mesh refinedConvex(const char* asset, ref::Scheme scheme, int levels) {
 // and for PN and Phong on a Loop-refined icosahedron (1280 triangles).
 TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", ref::Scheme::kCatmullClark, 3);
+  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
   ASSERT_EQ(cube.faceCount(), 384u);
   const Mesh icosahedron =
-      refinedConvex("opensubdiv/loop_icosahedron.obj", ref::Scheme::kLoop, 3);
+      refinedConvex("opensubdiv/loop_icosahedron.obj", osd::Scheme::kLoop, 3);
   const std::pair<const char*, const Mesh*> cases[] = {{"acc", &cube},
                                                        {"gregory_acc", &cube},
                                                        {"pn_triangles", &icosahedron},
@@ -97,7 +97,7 @@ TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) 
 // Acceptance 3, second half: patches whose own normals face the eye somewhere and away
 // somewhere (they straddle the silhouette) are never culled by the conservative policies.
 TEST(Culling, PatchesStraddlingTheSilhouetteAreNeverConservativelyCulled) {
-  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", ref::Scheme::kCatmullClark, 3);
+  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
   const Mesh torus = loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
   size_t straddling_seen = 0;
   for (const Mesh* mesh : {&cube, &torus}) {

@@ -20,7 +20,7 @@ namespace {
 class LimitPatches final : public testing::FacePatches {
  public:
   LimitPatches(const Mesh& mesh, Vec3d offset)
-      : FacePatches(mesh), limit_(mesh, ref::Scheme::kLoop), offset_(offset) {}
+      : FacePatches(mesh), limit_(mesh, osd::Scheme::kLoop), offset_(offset) {}
   SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position + offset_, point.normal};
@@ -38,7 +38,7 @@ class LimitPatches final : public testing::FacePatches {
 TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const LimitPatches patches(mesh, {0, 0, 0});
-  const ref::LimitSurface limit(mesh, ref::Scheme::kLoop);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
   const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
   EXPECT_EQ(f.parametric_max, 0.0);
   EXPECT_LT(f.normal_max_deg, 1e-6);
@@ -50,7 +50,7 @@ TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
 
 TEST(SurfaceError, AKnownOffsetIsMeasuredExactly) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
-  const ref::LimitSurface limit(mesh, ref::Scheme::kLoop);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
   const double offset = 0.01;
   const LimitPatches patches(mesh, {offset, 0, 0});
   const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
@@ -71,7 +71,7 @@ TEST(SurfaceError, PhongBulgesAwayFromTheShrunkenLoopLimitOfTheIcosahedron) {
   for (const VariantInfo& variant : phong->variants()) {
     if (variant.parameters.count("edge") != 0) continue;  // same α as alpha0.75
     const auto patches = buildSurface(*phong, mesh, variant);
-    const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kLoop);
+    const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kLoop);
     rms_by_alpha[variant.parameters.at("alpha")] = measureSurfaceError(*patches, limit).rms_distance;
   }
   ASSERT_EQ(rms_by_alpha.size(), 4u);

@@ -42,7 +42,7 @@ TEST(LimitParameter, InvertsTheSubFaceMapOfACatmullClarkTriangle) {
         // Inside the sub-face: its edges s = 1 and t = 1 are shared with the neighbours.
         const double s = 0.005 + 0.099 * i, t = 0.005 + 0.099 * j;
         const LimitParameter p = limitParameterOf(
-            PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 0, 3, subFacePoint(k, s, t));
+            PatchDomain::kTriangle, osd::Scheme::kCatmullClark, 0, 3, subFacePoint(k, s, t));
         ASSERT_EQ(p.sub_face, k) << s << " " << t;
         EXPECT_NEAR(p.u, s, 1e-12);
         EXPECT_NEAR(p.v, t, 1e-12);
@@ -51,11 +51,11 @@ TEST(LimitParameter, InvertsTheSubFaceMapOfACatmullClarkTriangle) {
   }
   // The corners of the sub-face.
   const LimitParameter corner =
-      limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 0, 3, {0, 1, 0});
+      limitParameterOf(PatchDomain::kTriangle, osd::Scheme::kCatmullClark, 0, 3, {0, 1, 0});
   EXPECT_EQ(corner.sub_face, 1);
   EXPECT_EQ(corner.u, 0);
   EXPECT_EQ(corner.v, 0);
-  const LimitParameter centre = limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark,
+  const LimitParameter centre = limitParameterOf(PatchDomain::kTriangle, osd::Scheme::kCatmullClark,
                                                  0, 3, {1.0 / 3, 1.0 / 3, 1.0 / 3});
   EXPECT_NEAR(centre.u, 1, 1e-15);
   EXPECT_NEAR(centre.v, 1, 1e-15);
@@ -63,33 +63,33 @@ TEST(LimitParameter, InvertsTheSubFaceMapOfACatmullClarkTriangle) {
 
 TEST(LimitParameter, QuadsAndLoopTrianglesKeepTheirParameter) {
   const LimitParameter quad =
-      limitParameterOf(PatchDomain::kQuad, ref::Scheme::kCatmullClark, 0, 4, {0.25, 0.75, 0});
+      limitParameterOf(PatchDomain::kQuad, osd::Scheme::kCatmullClark, 0, 4, {0.25, 0.75, 0});
   EXPECT_EQ(quad.sub_face, -1);
   EXPECT_EQ(quad.u, 0.25);
   EXPECT_EQ(quad.v, 0.75);
   const LimitParameter loop =
-      limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kLoop, 0, 3, {0.5, 0.125, 0.375});
+      limitParameterOf(PatchDomain::kTriangle, osd::Scheme::kLoop, 0, 3, {0.5, 0.125, 0.375});
   EXPECT_EQ(loop.sub_face, -1);
   EXPECT_EQ(loop.u, 0.125);
   EXPECT_EQ(loop.v, 0.375);
-  EXPECT_THROW(limitParameterOf(PatchDomain::kQuad, ref::Scheme::kLoop, 7, 4, {0.5, 0.5, 0}),
+  EXPECT_THROW(limitParameterOf(PatchDomain::kQuad, osd::Scheme::kLoop, 7, 4, {0.5, 0.5, 0}),
                std::logic_error);
   EXPECT_THROW(
-      limitParameterOf(PatchDomain::kTriangle, ref::Scheme::kCatmullClark, 7, 5, {1, 0, 0}),
+      limitParameterOf(PatchDomain::kTriangle, osd::Scheme::kCatmullClark, 7, 5, {1, 0, 0}),
       std::logic_error);
 }
 
 // Largest parametricErrorAt over the measure's lattices (error.cpp: kErrorSampleLevel on
 // quads and Loop triangles; sub-face grids of kErrorSubFaceSampleLevel), over the diagonal.
 double latticeErrorMax(const SurfacePatches& patches, const ref::LimitSurface& limit) {
-  const ref::Scheme scheme = referenceScheme(patches.approximates());
+  const osd::Scheme scheme = referenceScheme(patches.approximates());
   double worst = 0;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     if (!limit.hasLimitSurface(p)) continue;
     const ref::LimitFace face = limit.face(p);
     std::vector<DomainCoord> coords;
     const bool sub_faces =
-        patches.patchDomain(p) == PatchDomain::kTriangle && scheme == ref::Scheme::kCatmullClark;
+        patches.patchDomain(p) == PatchDomain::kTriangle && scheme == osd::Scheme::kCatmullClark;
     const int n = sub_faces ? kErrorSubFaceSampleLevel : kErrorSampleLevel;
     for (int i = 0; i <= n; ++i) {
       for (int j = 0; j <= n; ++j) {

@@ -190,12 +190,12 @@ ref::SubFacePoint invertSubFaceMap(const DomainCoord& w) {
 class ExactLimitPatches final : public MixedPatches {
  public:
   ExactLimitPatches(Mesh mesh, Vec3d offset)
-      : MixedPatches(std::move(mesh)), limit_(mesh_, ref::Scheme::kCatmullClark), offset_(offset) {}
+      : MixedPatches(std::move(mesh)), limit_(mesh_, osd::Scheme::kCatmullClark), offset_(offset) {}
   SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
     Vec2d uv{c[0], c[1]};
     if (patchDomain(patch) == PatchDomain::kTriangle) {
       const ref::SubFacePoint sub = invertSubFaceMap(c);
-      uv = ref::subFaceToFaceUv(ref::Scheme::kCatmullClark, 3, sub.sub_face, sub.st);
+      uv = ref::subFaceToFaceUv(osd::Scheme::kCatmullClark, 3, sub.sub_face, sub.st);
     }
     const ref::LimitPoint point = limit_.evaluate(patch, uv.x, uv.y);
     return {point.position + offset_, point.normal};
@@ -215,7 +215,7 @@ TEST(MixedDomains, TheCatmullClarkLimitThroughTheSubFaceMapHasNoParametricError)
     SCOPED_TRACE(asset);
     const Mesh mesh = loadObjFile(testing::assetPath(asset));
     const ExactLimitPatches patches(mesh, {0, 0, 0});
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
     size_t triangles = 0, quads = 0;
     for (size_t p = 0; p < patches.patchCount(); ++p) {
@@ -232,7 +232,7 @@ TEST(MixedDomains, TheCatmullClarkLimitThroughTheSubFaceMapHasNoParametricError)
 
 TEST(MixedDomains, AnOffsetAndFlatPatchesAreMeasuredOnMixedPatches) {
   const Mesh mesh = pyramid();
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const double offset = 0.01;
   const SurfaceErrorFigures shifted =
       measureSurfaceError(ExactLimitPatches(mesh, {0, 0, offset}), limit);
@@ -247,7 +247,7 @@ TEST(MixedDomains, AnOffsetAndFlatPatchesAreMeasuredOnMixedPatches) {
 TEST(MixedDomains, TheSchemeComesFromApproximatesAndMismatchesThrow) {
   const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const ExactLimitPatches patches(mesh, {0, 0, 0});  // triangles approximating Catmull-Clark
-  const ref::LimitSurface loop(mesh, ref::Scheme::kLoop);
+  const ref::LimitSurface loop(mesh, osd::Scheme::kLoop);
   EXPECT_THROW(measureSurfaceError(patches, loop), std::logic_error);
 
   const Technique* phong = TechniqueRegistry::instance().find("phong");

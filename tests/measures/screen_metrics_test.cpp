@@ -91,7 +91,7 @@ class FlatFaces final : public testing::FacePatches {
 class LoopLimitPatches final : public testing::FacePatches {
  public:
   explicit LoopLimitPatches(const Mesh& mesh)
-      : FacePatches(mesh), limit_(mesh, ref::Scheme::kLoop) {}
+      : FacePatches(mesh), limit_(mesh, osd::Scheme::kLoop) {}
   SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position, point.normal};
@@ -315,7 +315,7 @@ void expectEqual(const ScreenErrorFigures& a, const ScreenErrorFigures& b) {
 TEST(ScreenMetrics, FiguresDoNotDependOnTheThreadCount) {
   const Mesh mesh = smoothPawn();
   const BuiltSurface patches = build("acc", mesh);
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const View view = halfScreenView(mesh);
   const std::vector<tess::Levels> before = mixedLevels(*patches, 0),
                                   after = mixedLevels(*patches, 0.3f);
@@ -376,7 +376,7 @@ TEST(ScreenMetrics, AccMatchesTheLimitOnARegularMeshOnly) {
        {std::pair{"opensubdiv/catmark_torus.obj", true}, {"opensubdiv/catmark_cube.obj", false}}) {
     const Mesh mesh = asset(name);
     const BuiltSurface patches = build("acc", mesh);
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     ScreenMetrics metrics(*patches, &limit);
     const FrameScreenFigures f =
         metrics.frame(tess::Spacing::kInteger, uniform(*patches, 6), halfScreenView(mesh));
@@ -395,7 +395,7 @@ TEST(ScreenMetrics, TheLoopLimitItselfHasNoReferenceError) {
   // Oracle: Bfr against itself, so only a wrong parameter map gives an error.
   const Mesh mesh = asset("opensubdiv/loop_icosahedron.obj");
   const LoopLimitPatches patches(mesh);
-  const ref::LimitSurface limit(mesh, ref::Scheme::kLoop);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
   ScreenMetrics metrics(patches, &limit);
   const FrameScreenFigures f =
       metrics.frame(tess::Spacing::kFractionalOdd, uniform(patches, 4.5f), halfScreenView(mesh));
@@ -410,7 +410,7 @@ TEST(ScreenMetrics, TrianglesOnACatmullClarkMeshAreLeftOutOfTheReference) {
   // square base is a quad patch on a quad face and is measured.
   const Mesh mesh = asset("opensubdiv/catmark_pyramid.obj");
   const FlatFaces patches(mesh);
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   ScreenMetrics metrics(patches, &limit);
   const FrameScreenFigures f =
       metrics.frame(tess::Spacing::kInteger, uniform(patches, 4), halfScreenView(mesh));
@@ -425,7 +425,7 @@ TEST(ScreenMetrics, ALimitOfAnotherSchemeIsRefused) {
   const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
   const BuiltSurface patches = build("acc", mesh);
   const Mesh loop_mesh = asset("opensubdiv/loop_icosahedron.obj");
-  const ref::LimitSurface loop(loop_mesh, ref::Scheme::kLoop);
+  const ref::LimitSurface loop(loop_mesh, osd::Scheme::kLoop);
   EXPECT_THROW(ScreenMetrics(*patches, &loop), std::logic_error);
 }
 

@@ -37,27 +37,27 @@ TEST(BadInput, ApproxLevelAboveTenIsRejected) {
   const Mesh mesh = loadShape("catmark_cube.obj");
   LimitOptions options;
   options.approx_level_smooth = 11;
-  InputError error = expectInputError([&] { LimitSurface(mesh, Scheme::kCatmullClark, options); });
+  InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark, options); });
   EXPECT_EQ(error.element(), "option 'approx_level_smooth'");
   EXPECT_TRUE(contains(error.file(), "catmark_cube.obj"));
   EXPECT_TRUE(contains(error.rule(), "11"));
 
   options = {};
   options.approx_level_sharp = 11;
-  error = expectInputError([&] { LimitSurface(mesh, Scheme::kCatmullClark, options); });
+  error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark, options); });
   EXPECT_EQ(error.element(), "option 'approx_level_sharp'");
 
   options = {};
   options.approx_level_smooth = 0;
-  error = expectInputError([&] { LimitSurface(mesh, Scheme::kCatmullClark, options); });
+  error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark, options); });
   EXPECT_EQ(error.element(), "option 'approx_level_smooth'");
 
   options.approx_level_smooth = kMaxApproxLevel;  // the largest accepted level
-  EXPECT_NO_THROW(LimitSurface(mesh, Scheme::kCatmullClark, options));
+  EXPECT_NO_THROW(LimitSurface(mesh, osd::Scheme::kCatmullClark, options));
 }
 
 TEST(BadInput, FaceIndexOutOfRangeNamesTheFace) {
-  const LimitSurface surface(loadShape("catmark_cube.obj"), Scheme::kCatmullClark);
+  const LimitSurface surface(loadShape("catmark_cube.obj"), osd::Scheme::kCatmullClark);
   for (const auto& call : std::vector<std::function<void()>>{
            [&] { surface.evaluate(6, 0.5, 0.5); }, [&] { surface.face(6); },
            [&] { surface.hasLimitSurface(6); }, [&] { surface.isRegular(6); }}) {
@@ -71,7 +71,7 @@ TEST(BadInput, FaceIndexOutOfRangeNamesTheFace) {
 
 TEST(BadInput, LoopSurfaceFromQuadMeshIsRejected) {
   const InputError error =
-      expectInputError([] { LimitSurface(loadShape("catmark_cube.obj"), Scheme::kLoop); });
+      expectInputError([] { LimitSurface(loadShape("catmark_cube.obj"), osd::Scheme::kLoop); });
   EXPECT_TRUE(contains(error.element(), "face 0"));
   EXPECT_TRUE(contains(error.rule(), "Loop"));
   EXPECT_TRUE(contains(error.rule(), "4 corners"));
@@ -80,7 +80,7 @@ TEST(BadInput, LoopSurfaceFromQuadMeshIsRejected) {
 TEST(BadInput, HoleFaceHasNoLimitToEvaluate) {
   Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {2};
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const InputError error = expectInputError([&] { surface.evaluate(2, 0.5, 0.5); });
   EXPECT_TRUE(contains(error.element(), "face 2"));
   EXPECT_TRUE(contains(error.rule(), "hole"));
@@ -89,7 +89,7 @@ TEST(BadInput, HoleFaceHasNoLimitToEvaluate) {
 TEST(BadInput, BoundaryFaceWithoutInterpolationHasNoLimit) {
   Mesh mesh = loadShape("catmark_edgecorner.obj");
   mesh.tags.boundary = BoundaryInterpolation::kNone;
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   size_t without = 0;
   for (size_t f = 0; f < surface.faceCount(); ++f) {
     if (surface.hasLimitSurface(f)) continue;
@@ -100,9 +100,9 @@ TEST(BadInput, BoundaryFaceWithoutInterpolationHasNoLimit) {
 }
 
 TEST(BadInput, ParameterOutsideTheFaceDomain) {
-  const LimitSurface quads(loadShape("catmark_cube.obj"), Scheme::kCatmullClark);
+  const LimitSurface quads(loadShape("catmark_cube.obj"), osd::Scheme::kCatmullClark);
   EXPECT_TRUE(contains(expectInputError([&] { quads.evaluate(0, 1.5, 0.5); }).rule(), "outside"));
-  const LimitSurface loop(loadShape("loop_icosahedron.obj"), Scheme::kLoop);
+  const LimitSurface loop(loadShape("loop_icosahedron.obj"), osd::Scheme::kLoop);
   EXPECT_TRUE(contains(expectInputError([&] { loop.evaluate(0, 0.7, 0.7); }).rule(), "outside"));
   EXPECT_NO_THROW(loop.evaluate(0, 0.5, 0.5));
 }
@@ -110,7 +110,7 @@ TEST(BadInput, ParameterOutsideTheFaceDomain) {
 TEST(BadInput, NonFiniteCoordinateIsRejected) {
   Mesh mesh = loadShape("catmark_cube.obj");
   mesh.positions[3].y = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(expectInputError([&] { LimitSurface(mesh, Scheme::kCatmullClark); }).element(),
+  EXPECT_EQ(expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark); }).element(),
             "vertex 3");
   EXPECT_EQ(expectInputError([&] { EmbreeSubdivision{mesh}; }).element(), "vertex 3");
 }
@@ -119,7 +119,7 @@ TEST(BadInput, MeshWithoutFacesIsRejected) {
   Mesh mesh;
   mesh.source = "empty.obj";
   mesh.positions = {{0, 0, 0}};
-  const InputError error = expectInputError([&] { LimitSurface(mesh, Scheme::kCatmullClark); });
+  const InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark); });
   EXPECT_EQ(error.file(), "empty.obj");
   EXPECT_TRUE(contains(error.rule(), "no faces"));
 }
@@ -138,7 +138,7 @@ TEST(BadInput, TopologyOpenSubdivRejectsCarriesItsReason) {
     const uint32_t corners[3] = {0, 1 + i, 1 + (i + 1) % kFan};
     mesh.addFace(corners, {}, {}, 0);
   }
-  const InputError error = expectInputError([&] { LimitSurface(mesh, Scheme::kLoop); });
+  const InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kLoop); });
   EXPECT_EQ(error.element(), "mesh topology");
   EXPECT_TRUE(contains(error.rule(), "valence 65536")) << error.rule();
 }
@@ -153,12 +153,12 @@ TEST(BadInput, FaceTooLargeForEmbree) {
   for (int i = 1; i <= 16; ++i) text.append(" ").append(std::to_string(i));
   const Mesh mesh = loadObjText(text + "\n", "hexadecagon.obj");
   EXPECT_TRUE(contains(expectInputError([&] { EmbreeSubdivision{mesh}; }).rule(), "15"));
-  EXPECT_TRUE(contains(crossCheckIneligibility(mesh, Scheme::kCatmullClark), "15"));
-  EXPECT_NO_THROW(LimitSurface(mesh, Scheme::kCatmullClark));  // Bfr takes any N
+  EXPECT_TRUE(contains(crossCheckIneligibility(mesh, osd::Scheme::kCatmullClark), "15"));
+  EXPECT_NO_THROW(LimitSurface(mesh, osd::Scheme::kCatmullClark));  // Bfr takes any N
 }
 
 TEST(BadInput, TessellationRateAndLatticeLevelOutOfRange) {
-  const LimitSurface surface(loadShape("catmark_cube.obj"), Scheme::kCatmullClark);
+  const LimitSurface surface(loadShape("catmark_cube.obj"), osd::Scheme::kCatmullClark);
   EXPECT_EQ(expectInputError([&] { tessellateLimit(surface, 0); }).element(), "option 'rate'");
   EXPECT_EQ(expectInputError([&] { tessellateLimit(surface, kMaxTessellationRate + 1); }).element(),
             "option 'rate'");

@@ -62,7 +62,7 @@ std::array<double, 4> basisDerivative(double t) {
 
 TEST(BSplinePatch, RegularFacesEqualTheHandBuiltBicubicPatch) {
   const Mesh mesh = periodicGrid();
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   // Control points as read back from the mesh (the OBJ text rounds them).
   auto cp = [&](int i, int j) { return mesh.positions[size_t(wrap(j) * kN + wrap(i))]; };

@@ -72,7 +72,7 @@ TEST(ClosestPoint, DegenerateTriangleIsItsLongestEdge) {
 
 TEST(TriangleDistanceField, MatchesBruteForceOnRandomQueries) {
   // ~10k triangles of the pawn's limit surface: curved, with thin features.
-  const LimitSurface surface(testing::loadShape("catmark_pawn.obj"), Scheme::kCatmullClark);
+  const LimitSurface surface(testing::loadShape("catmark_pawn.obj"), osd::Scheme::kCatmullClark);
   const LimitTessellation tessellation = tessellateLimit(surface, 3);
   ASSERT_GT(tessellation.triangles.size(), 10000u);
   const TriangleDistanceField field(tessellation.view());

@@ -65,13 +65,13 @@ std::vector<Vec2d> extraordinaryCorners(const Mesh& mesh, const Topology& topolo
 }
 
 Agreement compareShape(const Mesh& mesh) {
-  const LimitSurface bfr(mesh, Scheme::kCatmullClark);
+  const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const Topology topology = buildTopology(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   size_t sub_faces = 0;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    sub_faces += size_t(subFaceCount(Scheme::kCatmullClark, int(mesh.faceSize(f))));
+    sub_faces += size_t(subFaceCount(osd::Scheme::kCatmullClark, int(mesh.faceSize(f))));
   }
   const int g = std::max(4, int(std::ceil(std::sqrt(double(kMinPointsPerShape) / sub_faces))) + 1);
   Agreement agreement;
@@ -82,7 +82,7 @@ Agreement compareShape(const Mesh& mesh) {
     for (int k = 0; k < face.subFaceCount(); ++k) {
       const std::vector<Vec2d> singular = extraordinaryCorners(mesh, topology, f, k);
       for (const Vec2d& st : clusteredSubFacePoints(g)) {
-        const Vec2d uv = subFaceToFaceUv(Scheme::kCatmullClark, size, k, st);
+        const Vec2d uv = subFaceToFaceUv(osd::Scheme::kCatmullClark, size, k, st);
         const LimitPoint a = face.evaluate(uv.x, uv.y);
         const LimitPoint b = embree.evaluate(f, uv.x, uv.y);
         agreement.position =
@@ -107,7 +107,7 @@ TEST(EmbreeCrossCheck, BfrMatchesEmbreeOnEveryEligibleCatmarkShape) {
   int compared = 0;
   for (const std::string& name : bundledShapes("catmark_")) {
     const Mesh mesh = loadShape(name);
-    const std::string reason = crossCheckIneligibility(mesh, Scheme::kCatmullClark);
+    const std::string reason = crossCheckIneligibility(mesh, osd::Scheme::kCatmullClark);
     if (!reason.empty()) {
       skipped << "  " << name << ": " << reason << "\n";
       continue;
@@ -167,7 +167,7 @@ TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
   for (Case& c : cases) {
     c.mesh.tags.boundary = c.boundary;
     const std::string label = c.mesh.source + " mode " + std::to_string(int(c.boundary));
-    const std::string reason = crossCheckIneligibility(c.mesh, Scheme::kCatmullClark);
+    const std::string reason = crossCheckIneligibility(c.mesh, osd::Scheme::kCatmullClark);
     if (c.boundary == BoundaryInterpolation::kEdgeOnly && c.mesh.source != "tube.obj") {
       EXPECT_NE(reason.find("valence-2 corner"), std::string::npos) << label;
       continue;
@@ -178,8 +178,8 @@ TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
     EXPECT_GT(agreement.points, 100u) << label;
   }
   // The modes give different surfaces, so the agreement above pins each mapping.
-  const LimitSurface corner(cases[0].mesh, Scheme::kCatmullClark);
-  const LimitSurface edge(cases[2].mesh, Scheme::kCatmullClark);
+  const LimitSurface corner(cases[0].mesh, osd::Scheme::kCatmullClark);
+  const LimitSurface edge(cases[2].mesh, osd::Scheme::kCatmullClark);
   EXPECT_GT(length(corner.evaluate(0, 0, 0).position - edge.evaluate(0, 0, 0).position), 1e-3);
 }
 
@@ -187,7 +187,7 @@ TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
 // Embree (u,v); swapping u and v must not agree, so the comparison above has teeth.
 TEST(EmbreeCrossCheck, QuadOrientationIsOneToOne) {
   const Mesh mesh = loadShape("catmark_cube.obj");
-  const LimitSurface bfr(mesh, Scheme::kCatmullClark);
+  const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -202,7 +202,7 @@ TEST(EmbreeCrossCheck, QuadOrientationIsOneToOne) {
 // The transposed (s,t) must disagree.
 TEST(EmbreeCrossCheck, NgonSubFacesMapToEmbreeSubPatches) {
   const Mesh mesh = loadShape("catmark_nonquads.obj");
-  const LimitSurface bfr(mesh, Scheme::kCatmullClark);
+  const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   int ngons = 0;
@@ -244,40 +244,40 @@ Mesh gridWithTags(const std::string& tags) {
 
 // Oracle: the rule list in cross_check_eligibility.h, one small mesh per rule.
 TEST(EmbreeCrossCheck, IneligibilityNamesTheReason) {
-  EXPECT_EQ(crossCheckIneligibility(gridWithTags(""), Scheme::kCatmullClark), "");
-  EXPECT_NE(crossCheckIneligibility(gridWithTags(""), Scheme::kLoop).find("Loop"),
+  EXPECT_EQ(crossCheckIneligibility(gridWithTags(""), osd::Scheme::kCatmullClark), "");
+  EXPECT_NE(crossCheckIneligibility(gridWithTags(""), osd::Scheme::kLoop).find("Loop"),
             std::string::npos);
   EXPECT_NE(
-      crossCheckIneligibility(gridWithTags("t hole 1/0/0 5\n"), Scheme::kCatmullClark).find("hole"),
+      crossCheckIneligibility(gridWithTags("t hole 1/0/0 5\n"), osd::Scheme::kCatmullClark).find("hole"),
       std::string::npos);
   EXPECT_NE(
-      crossCheckIneligibility(gridWithTags("t creasemethod 0/0/1 chaikin\n"), Scheme::kCatmullClark)
+      crossCheckIneligibility(gridWithTags("t creasemethod 0/0/1 chaikin\n"), osd::Scheme::kCatmullClark)
           .find("Chaikin"),
       std::string::npos);
-  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 6 7 10\n"), Scheme::kCatmullClark)
+  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 6 7 10\n"), osd::Scheme::kCatmullClark)
                 .find("infinitely sharp"),
             std::string::npos);
   // Equal semi-sharp creases along a line agree; unequal ones meeting at vertex 12 do not.
   EXPECT_EQ(
       crossCheckIneligibility(gridWithTags("t crease 2/1/0 11 12 2\nt crease 2/1/0 12 13 2\n"),
-                              Scheme::kCatmullClark),
+                              osd::Scheme::kCatmullClark),
       "");
   EXPECT_NE(
       crossCheckIneligibility(gridWithTags("t crease 2/1/0 11 12 1\nt crease 2/1/0 12 13 2\n"),
-                              Scheme::kCatmullClark)
+                              osd::Scheme::kCatmullClark)
           .find("unequal"),
       std::string::npos);
   // A fractional crease ending on the boundary meets two (infinitely sharp) boundary edges.
-  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2.5\n"), Scheme::kCatmullClark)
+  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2.5\n"), osd::Scheme::kCatmullClark)
                 .find("three or more"),
             std::string::npos);
-  EXPECT_EQ(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2\n"), Scheme::kCatmullClark),
+  EXPECT_EQ(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2\n"), osd::Scheme::kCatmullClark),
             "");
-  EXPECT_EQ(crossCheckIneligibility(loadShape("catmark_gregory_test8.obj"), Scheme::kCatmullClark),
+  EXPECT_EQ(crossCheckIneligibility(loadShape("catmark_gregory_test8.obj"), osd::Scheme::kCatmullClark),
             "interior valence-2 vertex 1");
   const std::string non_manifold =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  EXPECT_NE(crossCheckIneligibility(loadObjText(non_manifold, "fin.obj"), Scheme::kCatmullClark)
+  EXPECT_NE(crossCheckIneligibility(loadObjText(non_manifold, "fin.obj"), osd::Scheme::kCatmullClark)
                 .find("non-manifold"),
             std::string::npos);
 }

@@ -61,7 +61,7 @@ Soup icosphere(int levels, double radius) {
 }
 
 TEST(Hausdorff, MeshAgainstItselfIsZero) {
-  const LimitSurface surface(testing::loadShape("catmark_pawn.obj"), Scheme::kCatmullClark);
+  const LimitSurface surface(testing::loadShape("catmark_pawn.obj"), osd::Scheme::kCatmullClark);
   const LimitTessellation tessellation = tessellateLimit(surface, 2);
   const HausdorffResult result = hausdorff(tessellation.view(), tessellation.view());
   const double diagonal = boundingBoxDiagonal(tessellation.positions);

@@ -111,17 +111,17 @@ MaskResult loopMask(const VertexRing& ring, const Vec3d& v) {
 
 // Compares Bfr at every qualifying control vertex of the shape with the mask;
 // returns how many vertices were checked and of which valences.
-std::set<size_t> checkVertexLimits(const std::string& name, Scheme scheme) {
+std::set<size_t> checkVertexLimits(const std::string& name, osd::Scheme scheme) {
   const Mesh mesh = loadShape(name);
   const LimitSurface surface(mesh, scheme);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
-  const uint32_t face_size = scheme == Scheme::kLoop ? 3 : 4;
+  const uint32_t face_size = scheme == osd::Scheme::kLoop ? 3 : 4;
   std::set<size_t> valences;
   for (const VertexRing& ring : untaggedInteriorRings(mesh, face_size)) {
     const Vec3d& v = mesh.positions[ring.vertex];
-    const MaskResult mask = scheme == Scheme::kLoop ? loopMask(ring, v) : catmullClarkMask(ring, v);
+    const MaskResult mask = scheme == osd::Scheme::kLoop ? loopMask(ring, v) : catmullClarkMask(ring, v);
     const Vec2d uv =
-        scheme == Scheme::kLoop ? triangleCornerUv(ring.corner) : quadCornerUv(ring.corner);
+        scheme == osd::Scheme::kLoop ? triangleCornerUv(ring.corner) : quadCornerUv(ring.corner);
     const LimitPoint bfr = surface.evaluate(ring.face, uv.x, uv.y);
     EXPECT_LT(length(bfr.position - mask.position), 1e-12 * diagonal)
         << name << " vertex " << ring.vertex << " valence " << ring.e.size();
@@ -136,7 +136,7 @@ TEST(LimitSurface, CatmullClarkVertexLimitsMatchHalsteadMasks) {
   std::set<size_t> valences;
   for (const char* name : {"catmark_cube.obj", "catmark_torus.obj", "catmark_pawn.obj",
                            "catmark_xord_interior.obj", "catmark_toroidal_tet.obj"}) {
-    const std::set<size_t> checked = checkVertexLimits(name, Scheme::kCatmullClark);
+    const std::set<size_t> checked = checkVertexLimits(name, osd::Scheme::kCatmullClark);
     valences.insert(checked.begin(), checked.end());
   }
   // Regular and extraordinary valences, low and high, must all have been exercised.
@@ -148,7 +148,7 @@ TEST(LimitSurface, LoopVertexLimitsMatchLoopMasks) {
   std::set<size_t> valences;
   for (const char* name : {"loop_icosahedron.obj", "loop_cube.obj", "loop_xord_interior.obj",
                            "loop_toroidal_tet.obj"}) {
-    const std::set<size_t> checked = checkVertexLimits(name, Scheme::kLoop);
+    const std::set<size_t> checked = checkVertexLimits(name, osd::Scheme::kLoop);
     valences.insert(checked.begin(), checked.end());
   }
   for (size_t n : {4u, 5u, 6u}) EXPECT_TRUE(valences.count(n)) << "valence " << n;
@@ -161,7 +161,7 @@ TEST(LimitSurface, LoopVertexLimitsMatchLoopMasks) {
 // from the neighbouring quad.
 TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
   const Mesh mesh = loadShape("catmark_nonquads.obj");
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const double tolerance = 1e-12 * boundingBoxDiagonal(mesh.positions);
   int ngons = 0;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -208,7 +208,7 @@ TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
 // counter-clockwise faces.
 TEST(LimitSurface, CubeFaceCentresAndNormalsFollowSymmetry) {
   const Mesh mesh = loadShape("catmark_cube.obj");
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     Vec3d centroid;
     for (uint32_t v : mesh.facePositions(f)) centroid = centroid + mesh.positions[v] * 0.25;
@@ -229,9 +229,9 @@ TEST(LimitSurface, NormalsStayUnitAtSharpFeatures) {
   for (uint32_t v = 0; v < 8; ++v) mesh.tags.corners.push_back({v, 10.0});
   const uint32_t first = mesh.facePositions(0)[0], second = mesh.facePositions(0)[1];
   mesh.tags.creases.push_back({first, second, 10.0});
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    for (const Vec2d& uv : testing::clusteredFacePoints(Scheme::kCatmullClark, 4, 6)) {
+    for (const Vec2d& uv : testing::clusteredFacePoints(osd::Scheme::kCatmullClark, 4, 6)) {
       const LimitPoint p = surface.evaluate(f, uv.x, uv.y);
       EXPECT_NEAR(length(p.normal), 1.0, 1e-12) << f << " " << uv.x << " " << uv.y;
       const bool cone_point = (uv.x == 0 || uv.x == 1) && (uv.y == 0 || uv.y == 1);
@@ -246,7 +246,7 @@ TEST(LimitSurface, NormalsStayUnitAtSharpFeatures) {
 // normal there is taken just inside the face rather than left undefined.
 TEST(LimitSurface, NormalIsTakenBesideACollapsedEdge) {
   const Mesh mesh = loadObjText("v 0 0 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "collapsed.obj");
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const LimitPoint corner = surface.evaluate(0, 0.5, 0.0);
   EXPECT_LT(length(corner.du), 1e-12);  // the degenerate case is really reached
   for (double u : {0.0, 0.5, 1.0}) {
@@ -257,7 +257,7 @@ TEST(LimitSurface, NormalIsTakenBesideACollapsedEdge) {
 
 TEST(LimitSurface, TorusFacesAreRegularPatches) {
   const Mesh mesh = loadShape("catmark_torus.obj");
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_TRUE(surface.isRegular(f)) << f;
 }
 
@@ -266,7 +266,7 @@ TEST(LimitSurface, TorusFacesAreRegularPatches) {
 TEST(LimitSurface, HoleFacesHaveNoLimitSurface) {
   Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {3};
-  const LimitSurface surface(mesh, Scheme::kCatmullClark);
+  const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_EQ(surface.hasLimitSurface(f), f != 3) << f;
 }
 

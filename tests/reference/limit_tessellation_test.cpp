@@ -63,27 +63,27 @@ Welded weld(const LimitTessellation& t, double tolerance) {
 }
 
 TEST(LimitTessellation, CountsFollowTheGridFormulas) {
-  const LimitSurface cube(loadShape("catmark_cube.obj"), Scheme::kCatmullClark);
+  const LimitSurface cube(loadShape("catmark_cube.obj"), osd::Scheme::kCatmullClark);
   const LimitTessellation quads = tessellateLimit(cube, 5);
   EXPECT_EQ(quads.triangles.size(), 6u * 2 * 5 * 5);
   EXPECT_EQ(quads.positions.size(), 6u * 6 * 6);
 
-  const LimitSurface pyramid(loadShape("catmark_pyramid.obj"), Scheme::kCatmullClark);
+  const LimitSurface pyramid(loadShape("catmark_pyramid.obj"), osd::Scheme::kCatmullClark);
   const LimitTessellation mixed = tessellateLimit(pyramid, 6);  // 4 triangles + 1 quad
   EXPECT_EQ(mixed.triangles.size(), 4u * 3 * 2 * 3 * 3 + 2 * 6 * 6);
 
-  const LimitSurface loop(loadShape("loop_icosahedron.obj"), Scheme::kLoop);
+  const LimitSurface loop(loadShape("loop_icosahedron.obj"), osd::Scheme::kLoop);
   const LimitTessellation triangles = tessellateLimit(loop, 4);
   EXPECT_EQ(triangles.triangles.size(), 20u * 16);
   EXPECT_EQ(triangles.positions.size(), 20u * 15);
 }
 
 TEST(LimitTessellation, ClosedControlMeshGivesClosedSurface) {
-  for (const auto& [name, scheme] : {std::pair{"catmark_cube.obj", Scheme::kCatmullClark},
-                                     std::pair{"catmark_smoothtris0.obj", Scheme::kCatmullClark},
-                                     std::pair{"catmark_torus.obj", Scheme::kCatmullClark},
-                                     std::pair{"catmark_toroidal_tet.obj", Scheme::kCatmullClark},
-                                     std::pair{"loop_icosahedron.obj", Scheme::kLoop}}) {
+  for (const auto& [name, scheme] : {std::pair{"catmark_cube.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"catmark_smoothtris0.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"catmark_torus.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"catmark_toroidal_tet.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"loop_icosahedron.obj", osd::Scheme::kLoop}}) {
     const Mesh mesh = loadShape(name);
     const Topology topology = buildTopology(mesh);
     ASSERT_EQ(topology.boundaryEdgeCount(), 0u) << name;
@@ -98,7 +98,7 @@ TEST(LimitTessellation, ClosedControlMeshGivesClosedSurface) {
 
 TEST(LimitTessellation, TrianglesFaceAlongTheLimitNormal) {
   for (const char* name : {"catmark_nonquads.obj", "catmark_pawn.obj"}) {
-    const LimitSurface surface(loadShape(name), Scheme::kCatmullClark);
+    const LimitSurface surface(loadShape(name), osd::Scheme::kCatmullClark);
     const LimitTessellation t = tessellateLimit(surface, 4);
     size_t against = 0;
     for (const Triangle& tri : t.triangles) {
@@ -112,7 +112,7 @@ TEST(LimitTessellation, TrianglesFaceAlongTheLimitNormal) {
 }
 
 TEST(LimitTessellation, VerticesRecordWhereTheyWereEvaluated) {
-  const LimitSurface surface(loadShape("catmark_nonquads.obj"), Scheme::kCatmullClark);
+  const LimitSurface surface(loadShape("catmark_nonquads.obj"), osd::Scheme::kCatmullClark);
   const LimitTessellation t = tessellateLimit(surface, 4);
   for (size_t i = 0; i < t.positions.size(); i += 7) {
     const LimitPoint p = surface.evaluate(t.vertex_face[i], t.vertex_uv[i].x, t.vertex_uv[i].y);
@@ -126,7 +126,7 @@ TEST(LimitTessellation, VerticesRecordWhereTheyWereEvaluated) {
 TEST(LimitTessellation, SkipsFacesWithoutLimitSurface) {
   Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {0, 5};
-  const LimitTessellation t = tessellateLimit(LimitSurface(mesh, Scheme::kCatmullClark), 2);
+  const LimitTessellation t = tessellateLimit(LimitSurface(mesh, osd::Scheme::kCatmullClark), 2);
   EXPECT_EQ(t.faces_skipped, 2u);
   EXPECT_EQ(t.triangles.size(), (mesh.faceCount() - 2) * 8);
 }

@@ -49,11 +49,11 @@ inline std::vector<Vec2d> clusteredSubFacePoints(int g) {
 
 // clusteredSubFacePoints on every sub-face, as face (u,v); Loop triangles keep the
 // points with s + t <= 1.
-inline std::vector<Vec2d> clusteredFacePoints(Scheme scheme, int face_size, int g) {
+inline std::vector<Vec2d> clusteredFacePoints(osd::Scheme scheme, int face_size, int g) {
   std::vector<Vec2d> points;
   for (int k = 0; k < subFaceCount(scheme, face_size); ++k) {
     for (const Vec2d& st : clusteredSubFacePoints(g)) {
-      if (scheme == Scheme::kLoop && st.x + st.y > 1) continue;
+      if (scheme == osd::Scheme::kLoop && st.x + st.y > 1) continue;
       points.push_back(subFaceToFaceUv(scheme, face_size, k, st));
     }
   }

@@ -27,7 +27,7 @@ struct Sample {
   Vec2d uv;
 };
 
-std::vector<Sample> samplesOf(const Mesh& mesh, Scheme scheme) {
+std::vector<Sample> samplesOf(const Mesh& mesh, osd::Scheme scheme) {
   std::vector<Sample> samples;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     for (const Vec2d& uv : clusteredFacePoints(scheme, int(mesh.faceSize(f)), 4))
@@ -53,9 +53,9 @@ bool samePoint(const LimitPoint& a, const LimitPoint& b) {
 }
 
 TEST(ThreadSafety, ParallelLimitEvaluationEqualsSerial) {
-  for (const auto& [name, scheme] : {std::pair{"catmark_pawn.obj", Scheme::kCatmullClark},
-                                     std::pair{"catmark_xord_interior.obj", Scheme::kCatmullClark},
-                                     std::pair{"loop_xord_interior.obj", Scheme::kLoop}}) {
+  for (const auto& [name, scheme] : {std::pair{"catmark_pawn.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"catmark_xord_interior.obj", osd::Scheme::kCatmullClark},
+                                     std::pair{"loop_xord_interior.obj", osd::Scheme::kLoop}}) {
     const Mesh mesh = loadShape(name);
     const std::vector<Sample> samples = samplesOf(mesh, scheme);
     std::vector<LimitPoint> serial(samples.size()), parallel(samples.size());
@@ -77,7 +77,7 @@ TEST(ThreadSafety, ParallelLimitEvaluationEqualsSerial) {
 
 TEST(ThreadSafety, ParallelEmbreeAndDistanceQueriesEqualSerial) {
   const Mesh mesh = loadShape("catmark_pawn.obj");
-  const std::vector<Sample> samples = samplesOf(mesh, Scheme::kCatmullClark);
+  const std::vector<Sample> samples = samplesOf(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const std::vector<Triangle> triangles = fanTriangles(mesh);
   const TriangleDistanceField field(mesh.positions, triangles);

@@ -97,7 +97,7 @@ CurveFigures creaseCurveError(const Mesh& mesh) {
   const auto patches = buildSurface(AccTechnique(), mesh, {});
   const Mesh& control = patches->controlMesh();
   const CreasePreparation creases = prepareCreases(mesh, "acc", kDefaultCreaseFaceBudget);
-  const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
   std::set<uint64_t> infinitely_sharp;
   for (const Crease& c : control.tags.creases) {
     if (c.sharpness >= 10) infinitely_sharp.insert(CreasePreparation::sharpEdgeKey(c.v0, c.v1));
@@ -168,7 +168,7 @@ TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
   const auto patches = buildSurface(AccTechnique(), mesh, {});
   ASSERT_EQ(patches->patchCount(), 4u);
   EXPECT_EQ(patches->controlMesh().faceCount(), 16u);
-  const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
   double worst = 0;
   for (size_t p = 0; p < patches->patchCount(); ++p) {
     ASSERT_TRUE(limit.hasLimitSurface(p)) << "patch " << p;
@@ -242,7 +242,7 @@ TEST(AccCreases, RefiningEveryLevelOfASemiSharpCreaseRemovesTheRoundingError) {
     VariantInfo variant{"budget", "", {{"crease_face_budget", budget}}};
     const auto patches = buildSurface(AccTechnique(), mesh, variant);
     const Mesh& control = patches->controlMesh();
-    const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
     const double diagonal = diagonalOf(control);
     double worst = 0;
     for (size_t p = 0; p < patches->patchCount(); ++p) {

@@ -56,7 +56,7 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
     const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
     // Over the control mesh: a creased input is refined there (techniques/common/
     // crease_refinement.h), with the same limit surface.
-    const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
     const double diag = diagonal(asset.mesh);
     double worst_d = 0, worst_f = 0;
     size_t faces = 0;
@@ -83,7 +83,7 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
 }
 
 double meanNormalAngleDeg(const Mesh& mesh, const std::string& variant) {
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const auto patches = buildSurface(AccTechnique(), mesh, variantNamed(variant));
   const auto points = domainPoints();
   double sum = 0;

@@ -181,7 +181,7 @@ TEST(BatchEval, DerivativesEqualTheBfrLimitOnRegularFaces) {
       const Mesh mesh = load(name);
       if (!technique(id).checkSupport(mesh).empty()) continue;
       const BuiltSurface surface = buildSurface(technique(id), mesh, technique(id).variants()[0]);
-      const ref::LimitSurface limit(surface->controlMesh(), ref::Scheme::kCatmullClark);
+      const ref::LimitSurface limit(surface->controlMesh(), osd::Scheme::kCatmullClark);
       const double tolerance = 1e-12 * diagonal(mesh);
       const std::vector<DomainCoord> coords = latticeCoords(PatchDomain::kQuad, 6);
       const auto pattern = surface->makeBatchPattern(PatchDomain::kQuad, coords,

@@ -8,7 +8,7 @@
 #include <opensubdiv/far/stencilTable.h>
 
 #include "core/mesh/obj_loader.h"
-#include "reference/topology_refiner_builder.h"
+#include "core/osd/topology_refiner_builder.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "tests/test_support.h"
 
@@ -41,7 +41,7 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
                            "opensubdiv/catmark_edgecorner.obj"}) {
     const Mesh mesh = loadObjFile(testing::assetPath(name));
     const GregoryStencils stencils = buildGregoryStencils(mesh, TangentMask::kPaper);
-    auto refiner = ref::buildTopologyRefiner(mesh, ref::Scheme::kCatmullClark);
+    auto refiner = osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
     refiner->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(0));
     Far::PatchTableFactory::Options options(0);
     options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);

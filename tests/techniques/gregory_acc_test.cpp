@@ -98,7 +98,7 @@ TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
     const auto patches = build(mesh);
     const Mesh& control = patches->controlMesh();
     // The refined mesh of a mixed input has the same limit; Bfr parameterises its faces.
-    const ref::LimitSurface limit(control, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
     const double diagonal = bboxDiagonal(mesh);
     for (size_t f = 0; f < patches->patchCount(); ++f) {
       // Bfr says which faces are one regular B-spline patch (interior or boundary).
@@ -191,7 +191,7 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
     // are rounded (techniques/common/crease_refinement.h).
     const CreasePreparation creases = testing::defaultCreases(mesh);
     const ref::LimitSurface limit(testing::limitMeshOf(*patches, creases),
-                                  ref::Scheme::kCatmullClark);
+                                  osd::Scheme::kCatmullClark);
     const bool kinds_known = creases.control.positions.size() == control.positions.size();
     const std::vector<uint8_t> on_boundary = buildTopology(control).on_boundary;
     const double diagonal = bboxDiagonal(mesh);
@@ -203,7 +203,7 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
         const Vec2d uv =
             domain == PatchDomain::kQuad
                 ? Vec2d{d[0], d[1]}
-                : ref::subFaceToFaceUv(ref::Scheme::kCatmullClark, 3, c, {0.0, 0.0});
+                : ref::subFaceToFaceUv(osd::Scheme::kCatmullClark, 3, c, {0.0, 0.0});
         const ref::LimitPoint exact = limit.evaluate(f, uv.x, uv.y);
         const uint32_t v = control.facePositions(f)[c];
         const double error = length(patches->evaluate(f, d).position - exact.position);
@@ -510,7 +510,7 @@ TEST(GregoryAcc, TrianglePatchesStayCloseToTheCatmullClarkLimit) {
     SCOPED_TRACE(asset);
     const Mesh mesh = load(asset);
     const auto patches = build(mesh, "edge_symmetric");
-    const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
     const SurfaceErrorFigures f = measureSurfaceError(*patches, limit);
     size_t triangles = 0;
     for (size_t p = 0; p < patches->patchCount(); ++p) {

@@ -97,7 +97,7 @@ CurveFigures creaseCurveError(const SurfacePatches& patches, const CreasePrepara
                               const Mesh& limit_mesh, double diagonal) {
   const Mesh& control = patches.controlMesh();
   EXPECT_EQ(control.positions.size(), creases.control.positions.size());
-  const ref::LimitSurface limit(limit_mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(limit_mesh, osd::Scheme::kCatmullClark);
   CurveFigures figures;
   for (size_t f = 0; f < patches.patchCount(); ++f) {
     EXPECT_EQ(patches.patchDomain(f), PatchDomain::kQuad);
@@ -179,7 +179,7 @@ TEST(GregoryCrease, InfinitelySharpCreasesNeedNoRounding) {
   EXPECT_EQ(creases.vertex_kind[1], SharpVertexKind::kCrease);
   EXPECT_EQ(creases.vertex_kind[6], SharpVertexKind::kDart);
   const auto patches = build(mesh);
-  const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
   const CurveFigures figures = creaseCurveError(*patches, creases, patches->controlMesh(), 1.0);
   EXPECT_EQ(figures.sides, 8u);  // the top face's 4 edges, from both sides
   EXPECT_LE(figures.worst, 1e-12);
@@ -337,7 +337,7 @@ TEST(GregoryCrease, BoundaryInterpolationNoneKeepsOnlyTheInteriorFace) {
   const auto patches = build(mesh);
   ASSERT_EQ(patches->patchCount(), 1u);
   EXPECT_EQ(patches->sourceFace(0), 4u);
-  const ref::LimitSurface limit(patches->controlMesh(), ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
   ASSERT_TRUE(limit.isRegular(0));
   for (double u : {0.0, 0.3, 0.75, 1.0}) {
     for (double v : {0.0, 0.5, 0.9}) {
@@ -358,7 +358,7 @@ TEST(GregoryCrease, EdgeOnlyBoundaryCornersAreCreaseVertices) {
   ASSERT_EQ(a->patchCount(), 9u);
   EXPECT_EQ(b->evaluate(0, {0, 0, 0}).position, edge_and_corner.positions[0]);
   EXPECT_GT(length(a->evaluate(0, {0, 0, 0}).position - edge_only.positions[0]), 0.1);
-  const ref::LimitSurface limit(a->controlMesh(), ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(a->controlMesh(), osd::Scheme::kCatmullClark);
   EXPECT_LE(length(a->evaluate(0, {0, 0, 0}).position - limit.evaluate(0, 0, 0).position), 1e-12);
 }
 

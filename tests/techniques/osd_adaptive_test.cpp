@@ -84,7 +84,7 @@ TEST(OsdAdaptive, RegularPatchesEqualBfrLimit) {
   for (const char* name : {"opensubdiv/catmark_torus.obj", "opensubdiv/catmark_cube.obj",
                            "opensubdiv/catmark_pawn.obj", "opensubdiv/catmark_cube_creases1.obj"}) {
     const Mesh mesh = asset(name);
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     const int exact = exactCreaseLevel(mesh);
     for (int isolation : {exact, exact + 2}) {
       const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
@@ -103,7 +103,7 @@ TEST(OsdAdaptive, RegularPatchesEqualBfrLimit) {
 // falls with the level.
 TEST(OsdAdaptive, SemiSharpCreasesAreApproximatedBelowTheirSharpness) {
   const Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   double previous = INFINITY;
   for (int isolation : {2, 4}) {
     const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
@@ -153,7 +153,7 @@ double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface
       for (double v : values) {
         worst = std::max(
             worst,
-            parametricErrorAt(patches, face, ref::Scheme::kCatmullClark, f, {u, v, 0}) / diagonal);
+            parametricErrorAt(patches, face, osd::Scheme::kCatmullClark, f, {u, v, 0}) / diagonal);
       }
     }
   }
@@ -289,7 +289,7 @@ TEST(OsdAdaptive, FloatTwinAgreesWithDoubleEvaluate) {
 TEST(OsdAdaptive, ErrorFallsWithIsolationLevel) {
   for (const char* name : {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj"}) {
     const Mesh mesh = asset(name);
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     for (EndCap cap : {EndCap::kGregoryBasis, EndCap::kBSplineBasis}) {
       double previous = INFINITY;
       for (int isolation : {1, 2, 3, 4, 5, 6}) {
@@ -310,7 +310,7 @@ TEST(OsdAdaptive, ErrorFallsWithIsolationLevel) {
 // The error measure itself runs on osd_adaptive's patches (one per base face).
 TEST(OsdAdaptive, ErrorMeasureRuns) {
   const Mesh mesh = asset("opensubdiv/catmark_cube.obj");
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const BuiltSurface patches = buildSurface(technique(), mesh, variant(2));
   const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
   EXPECT_EQ(figures.samples, 6u * 81u);
@@ -328,7 +328,7 @@ TEST(OsdAdaptive, AcceptsCreasedAssets) {
       ADD_FAILURE() << name << ": " << technique().checkSupport(mesh);
       continue;
     }
-    const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+    const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     const BuiltSurface patches = buildSurface(technique(), mesh, variant(4));
     const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
     std::printf("%s iso4: parametric max %.3e\n", name, figures.parametric_max);

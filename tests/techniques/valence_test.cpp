@@ -95,7 +95,7 @@ struct PoleFigures {
 };
 
 PoleFigures nearThePole(const Technique& technique, const std::string& variant, const Mesh& mesh) {
-  const ref::LimitSurface limit(mesh, ref::Scheme::kCatmullClark);
+  const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const auto patches = buildSurface(technique, mesh, variantOf(technique, variant));
   const double diag = diagonal(mesh);
   std::vector<size_t> caps;  // in order around the pole (the file's order)

@@ -10,9 +10,9 @@
 
 #include "core/mesh/input_error.h"
 #include "core/mesh/topology.h"
+#include "core/osd/scheme.h"
 #include "reference/hausdorff.h"
 #include "reference/limit_tessellation.h"
-#include "reference/scheme.h"
 #include "reference/triangle_mesh_ref.h"
 
 namespace tb {
@@ -114,23 +114,23 @@ PatchSampling subFaceSampling(int level) {
   return sampling;
 }
 
-[[noreturn]] void throwUnmappedDomain(PatchDomain domain, ref::Scheme scheme, size_t face,
+[[noreturn]] void throwUnmappedDomain(PatchDomain domain, osd::Scheme scheme, size_t face,
                                       uint32_t face_size) {
   throw std::logic_error("error: patch over face " + std::to_string(face) + " is a " +
                          toString(domain) + " patch, but the face has " +
                          std::to_string(face_size) + " corners under " +
-                         std::string(ref::schemeName(scheme)) +
+                         std::string(osd::schemeName(scheme)) +
                          "; the measure maps quad patches onto Catmull-Clark faces, and triangle "
                          "patches onto Loop faces or Catmull-Clark triangles");
 }
 
 // The sampling of patch p over its limit face; throws std::logic_error for a patch
 // domain the face's parameterisation cannot be mapped to.
-const PatchSampling& samplingFor(PatchDomain domain, ref::Scheme scheme, size_t face,
+const PatchSampling& samplingFor(PatchDomain domain, osd::Scheme scheme, size_t face,
                                  uint32_t face_size,
                                  const std::array<PatchSampling, 3>& samplings) {
-  if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) return samplings[0];
-  if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) return samplings[1];
+  if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) return samplings[0];
+  if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) return samplings[1];
   if (domain == PatchDomain::kTriangle && face_size == 3) return samplings[2];
   throwUnmappedDomain(domain, scheme, face, face_size);
 }
@@ -160,12 +160,12 @@ LimitParameter subFaceParameter(const DomainCoord& coord) {
 
 }  // namespace
 
-LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t face,
+LimitParameter limitParameterOf(PatchDomain domain, osd::Scheme scheme, size_t face,
                                 uint32_t face_size, const DomainCoord& coord) {
-  if (domain == PatchDomain::kQuad && scheme == ref::Scheme::kCatmullClark) {
+  if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
     return {-1, coord[0], coord[1]};
   }
-  if (domain == PatchDomain::kTriangle && scheme == ref::Scheme::kLoop) {
+  if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
     return {-1, coord[1], coord[2]};
   }
   if (domain == PatchDomain::kTriangle && face_size == 3) return subFaceParameter(coord);
@@ -173,7 +173,7 @@ LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t f
 }
 
 double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
-                         ref::Scheme scheme, size_t patch, const DomainCoord& coord) {
+                         osd::Scheme scheme, size_t patch, const DomainCoord& coord) {
   const LimitParameter at = limitParameterOf(patches.patchDomain(patch), scheme, patch,
                                              patches.controlMesh().faceSize(patch), coord);
   const ref::LimitPoint exact =
@@ -211,7 +211,7 @@ struct SamplePlan {
 };
 
 SamplePlan planSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                       ref::Scheme scheme, const std::array<PatchSampling, 3>& samplings,
+                       osd::Scheme scheme, const std::array<PatchSampling, 3>& samplings,
                        SurfaceErrorFigures* figures) {
   const Mesh& control = patches.controlMesh();
   const size_t patch_count = patches.patchCount();
@@ -240,9 +240,9 @@ struct SampleValues {
 };
 
 SampleValues evaluateSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                             ref::Scheme scheme, const SamplePlan& plan) {
+                             osd::Scheme scheme, const SamplePlan& plan) {
   const Topology topology = buildTopology(patches.controlMesh());
-  const uint32_t regular_valence = scheme == ref::Scheme::kCatmullClark ? 4 : 6;
+  const uint32_t regular_valence = scheme == osd::Scheme::kCatmullClark ? 4 : 6;
   std::vector<uint8_t> extraordinary(patches.controlMesh().positions.size(), 0);
   for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
   const size_t sample_count = plan.sampleCount();
@@ -350,11 +350,11 @@ void scaleByDiagonal(SurfaceErrorFigures* figures) {
 
 SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
                                         const ref::LimitSurface& limit, const Mesh* input) {
-  const ref::Scheme scheme = referenceScheme(patches.approximates());
+  const osd::Scheme scheme = referenceScheme(patches.approximates());
   if (limit.scheme() != scheme) {
     throw std::logic_error("error: the patches approximate " +
-                           std::string(ref::schemeName(scheme)) + " but the limit surface is " +
-                           std::string(ref::schemeName(limit.scheme())));
+                           std::string(osd::schemeName(scheme)) + " but the limit surface is " +
+                           std::string(osd::schemeName(limit.scheme())));
   }
   SurfaceErrorFigures figures;
   figures.bbox_diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);

@@ -8,7 +8,6 @@
 
 #include "harness/lod/reference_scheme.h"
 #include "reference/limit_surface.h"
-#include "reference/scheme.h"
 #include "techniques/technique.h"
 
 namespace tb {
@@ -91,7 +90,7 @@ struct LimitParameter {
 
 // Throws std::logic_error, as measureSurfaceError does, for a domain the face's
 // parameterisation cannot be mapped to. `face_size`: corners of control face `face`.
-LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t face,
+LimitParameter limitParameterOf(PatchDomain domain, osd::Scheme scheme, size_t face,
                                 uint32_t face_size, const DomainCoord& coord);
 
 // One parametric-error sample of patch p at `coord`, in world units (divide by the
@@ -100,6 +99,6 @@ LimitParameter limitParameterOf(PatchDomain domain, ref::Scheme scheme, size_t f
 // regular face: ~1e-16 of the diagonal). `face` is limit.face(p) of a LimitSurface built as
 // for measureSurfaceError.
 double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
-                         ref::Scheme scheme, size_t patch, const DomainCoord& coord);
+                         osd::Scheme scheme, size_t patch, const DomainCoord& coord);
 
 }  // namespace tb

@@ -186,7 +186,7 @@ class ErrorMeasure final : public Measure {
     if (input.displacement) return runDisplaced(input);
     MeasureResult result;
     result.measure = info().id;
-    const ref::Scheme scheme = referenceScheme(input.patches->approximates());
+    const osd::Scheme scheme = referenceScheme(input.patches->approximates());
     try {
       const ref::LimitSurface limit(input.patches->controlMesh(), scheme);
       const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit, &input.mesh);
@@ -203,7 +203,7 @@ class ErrorMeasure final : public Measure {
             "parametric error therefore depends on that map, their Hausdorff distance does not");
       }
       MetricRow row;
-      row.keys["reference"] = scheme == ref::Scheme::kLoop ? "loop_limit" : "catmull_clark_limit";
+      row.keys["reference"] = scheme == osd::Scheme::kLoop ? "loop_limit" : "catmull_clark_limit";
       row.metrics = errorTable().metrics(f);
       result.rows.push_back(std::move(row));
     } catch (const InputError& error) {

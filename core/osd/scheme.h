@@ -3,7 +3,7 @@
 
 #include <string_view>
 
-namespace tb::ref {
+namespace tb::osd {
 
 enum class Scheme {
   kCatmullClark,  // quads are the regular faces; any N-gon is allowed (N >= 3)
@@ -18,4 +18,4 @@ std::string_view schemeName(Scheme scheme);
 // name counts, not its folder.
 Scheme schemeFromShapeName(std::string_view path);
 
-}  // namespace tb::ref
+}  // namespace tb::osd

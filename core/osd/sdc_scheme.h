@@ -3,12 +3,12 @@
 
 #include <opensubdiv/sdc/types.h>
 
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
-namespace tb::ref {
+namespace tb::osd {
 
 inline OpenSubdiv::Sdc::SchemeType sdcScheme(Scheme scheme) {
   return scheme == Scheme::kLoop ? OpenSubdiv::Sdc::SCHEME_LOOP : OpenSubdiv::Sdc::SCHEME_CATMARK;
 }
 
-}  // namespace tb::ref
+}  // namespace tb::osd

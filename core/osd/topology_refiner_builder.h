@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "core/mesh/mesh.h"
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
-namespace tb::ref {
+namespace tb::osd {
 
 // Sdc options from the mesh's tags: boundary interpolation (already mapped from the
 // OBJ tag values), the crease method, and Catmark weights on triangles.
@@ -21,4 +21,4 @@ OpenSubdiv::Sdc::Options sdcOptions(const SubdivisionTags& tags);
 std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh,
                                                                        Scheme scheme);
 
-}  // namespace tb::ref
+}  // namespace tb::osd

@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace tb::ref {
+namespace tb::osd {
 
 class FarErrorCapture {
  public:
@@ -24,4 +24,4 @@ class FarErrorCapture {
   FarErrorCapture* previous_;
 };
 
-}  // namespace tb::ref
+}  // namespace tb::osd

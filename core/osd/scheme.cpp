@@ -1,6 +1,6 @@
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
-namespace tb::ref {
+namespace tb::osd {
 
 std::string_view schemeName(Scheme scheme) {
   return scheme == Scheme::kLoop ? "loop" : "catmull-clark";
@@ -12,4 +12,4 @@ Scheme schemeFromShapeName(std::string_view path) {
   return file.starts_with("loop_") ? Scheme::kLoop : Scheme::kCatmullClark;
 }
 
-}  // namespace tb::ref
+}  // namespace tb::osd

@@ -1,12 +1,12 @@
-#include "reference/uniform_refinement.h"
+#include "core/osd/uniform_refinement.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
 
 #include <vector>
 
-#include "reference/topology_refiner_builder.h"
+#include "core/osd/topology_refiner_builder.h"
 
-namespace tb::ref {
+namespace tb::osd {
 namespace {
 
 // The interpolation buffer element Far::PrimvarRefiner works on.
@@ -46,4 +46,4 @@ Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels) {
   return refined;
 }
 
-}  // namespace tb::ref
+}  // namespace tb::osd

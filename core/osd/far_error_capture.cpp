@@ -1,11 +1,11 @@
-#include "reference/far_error_capture.h"
+#include "core/osd/far_error_capture.h"
 
 #include <opensubdiv/far/error.h>
 
 #include <cstdio>
 #include <mutex>
 
-namespace tb::ref {
+namespace tb::osd {
 namespace {
 
 namespace Far = OpenSubdiv::Far;
@@ -47,4 +47,4 @@ FarErrorCapture::FarErrorCapture() : previous_(t_active) {
 
 FarErrorCapture::~FarErrorCapture() { t_active = previous_; }
 
-}  // namespace tb::ref
+}  // namespace tb::osd

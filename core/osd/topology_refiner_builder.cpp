@@ -1,4 +1,4 @@
-#include "reference/topology_refiner_builder.h"
+#include "core/osd/topology_refiner_builder.h"
 
 #include <opensubdiv/far/topologyDescriptor.h>
 
@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "core/mesh/input_error.h"
-#include "reference/far_error_capture.h"
-#include "reference/sdc_scheme.h"
+#include "core/osd/far_error_capture.h"
+#include "core/osd/sdc_scheme.h"
 
-namespace tb::ref {
+namespace tb::osd {
 namespace {
 
 namespace Far = OpenSubdiv::Far;
@@ -135,4 +135,4 @@ std::unique_ptr<Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh, Sch
   return refiner;
 }
 
-}  // namespace tb::ref
+}  // namespace tb::osd

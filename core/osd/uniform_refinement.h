@@ -5,12 +5,12 @@
 #pragma once
 
 #include "core/mesh/mesh.h"
-#include "reference/scheme.h"
+#include "core/osd/scheme.h"
 
-namespace tb::ref {
+namespace tb::osd {
 
 // Throws InputError as buildTopologyRefiner does. The result has no normals, uvs or tags
 // (creases are applied while refining, then dropped); its faces are the last level's.
 Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels);
 
-}  // namespace tb::ref
+}  // namespace tb::osd
