@@ -5,6 +5,7 @@ set(TB_UNITY_SKIP
   core/tess/triangle_domain.cpp
   core/gpu/tess_capture.cpp
   techniques/gregory_acc/gregory_stencils.cpp
+  harness/lod/factor_policy.cpp
 )
 foreach(path IN LISTS TB_UNITY_SKIP)
   # The directory whose CMakeLists.txt lists the file: the nearest one above it.

@@ -3,15 +3,13 @@
 #include <array>
 #include <unordered_map>
 
+#include "techniques/gregory_acc/gregory_rings.h"  // add: stencil arithmetic
+
 namespace tb::gregory_acc {
 namespace {
 
 uint64_t edgeKey(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
-}
-
-void add(Stencil& into, const Stencil& s, double scale) {
-  for (const auto& [index, weight] : s) into[index] += weight * scale;
 }
 
 }  // namespace
