@@ -1,4 +1,4 @@
-// Cost of the screen-space figures (harness/measures/screen_metrics.h) per call, the figure
+// Cost of the screen-space figures (harness/lod/screen_metrics.h) per call, the figure
 // a factor-policy sweep multiplies by its ~30 calls per record: tessellationError, frame
 // and pop on a pawn at 1920 x 1080 filling about half the screen height. acc runs on the
 // pawn with its crease tags removed (acc refuses creases); pn_triangles on tri_pawn.

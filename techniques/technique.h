@@ -82,7 +82,7 @@ struct SurfacePointF {
 };
 
 // What a conservative patch culler may assume about one patch (the culling measure,
-// harness/measures/cull_policy.h), in world units of controlMesh(). Computed once per
+// harness/lod/cull_policy.h), in world units of controlMesh(). Computed once per
 // patch in double; the harness rounds it outward for the device.
 struct PatchCullBounds {
   // Points whose convex hull contains the whole patch: its Bezier, Gregory or PN control

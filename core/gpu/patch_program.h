@@ -43,7 +43,7 @@ struct CapturedVertex {
 
 // A view-dependent factor policy computed by the program's own TCS
 // (shaders/common/tess_factors.glsl) in place of the harness's levels. Plain words; the
-// CPU twin that packs them is harness/measures/factor_policy.h.
+// CPU twin that packs them is harness/lod/factor_policy.h.
 struct TcsFactorPolicy {
   // Per program patch, 4 corners of 8 words (position xyzw, normal xyzw; float bits):
   // TbFactorCorners at set 1, binding 1.
@@ -53,7 +53,7 @@ struct TcsFactorPolicy {
 
 // A culling policy run by the program's own TCS (shaders/common/cull.glsl): culled patches
 // get outer level 0. Plain words; the CPU twin that packs them is
-// harness/measures/cull_policy.h.
+// harness/lod/cull_policy.h.
 struct TcsCullPolicy {
   std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4 (32 words)
   // Per program patch, kTcsCullPatchWords words: TbCullPatches at set 1, binding 5.

@@ -18,7 +18,7 @@ struct SurfaceErrorMesh {
   // Every patch's tessellation vertices, patch by patch, in world units (positions from
   // the double evaluator, patches.evaluate).
   std::vector<Vec3d> positions;
-  // Per vertex: |S - limit| at the same parameter (harness/measures/error.h,
+  // Per vertex: |S - limit| at the same parameter (harness/measures/error/error.h,
   // parametricErrorAt), a fraction of the control mesh's bounding-box diagonal. NaN on
   // patches whose face has no limit surface (holes).
   std::vector<double> vertex_error;

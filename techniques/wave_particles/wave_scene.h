@@ -1,7 +1,7 @@
 // What a wave-particle scenario describes (its "wave_particles" section and parameters),
 // parsed and checked once: the square domain (its border reflects), the wave speed, the
 // sources, the walls and the probe points. Shared by the simulation, the wave-equation
-// reference setup (harness/measures/wave_error.cpp) and the tests.
+// reference setup (harness/measures/wave_error/wave_error.cpp) and the tests.
 #pragma once
 
 #include <array>

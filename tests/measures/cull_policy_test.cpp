@@ -1,4 +1,4 @@
-// Culling policies (harness/measures/cull_policy.h): hand-made cases with known answers, and
+// Culling policies (harness/lod/cull_policy.h): hand-made cases with known answers, and
 // the CPU twin against the decisions every technique's own TCS makes on the device
 // (shaders/common/cull.glsl) on every frame of the bundled camera paths.
 #include "harness/lod/cull_policy.h"

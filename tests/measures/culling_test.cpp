@@ -1,4 +1,4 @@
-// The culling measure's acceptance over real techniques (harness/measures/culling.h): the
+// The culling measure's acceptance over real techniques (harness/measures/culling/culling.h): the
 // conservative policies make no false cull on any bundled asset along the bundled paths; on
 // a refined convex cube the cone culls a good share of the patches but never more than the
 // oracle's back-facing count; a patch straddling the silhouette is never conservatively

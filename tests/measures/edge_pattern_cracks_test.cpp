@@ -1,5 +1,5 @@
 // Issue 12, acceptance 3: the crack measure under per-patch, non-uniform levels. The
-// pattern (harness/measures/edge_pattern_levels.h) gives every edge its own level and
+// pattern (harness/lod/edge_pattern_levels.h) gives every edge its own level and
 // both sides of a shared edge the same one, so the symmetric (`precise`) variants must
 // leave 0 shared points that are not bitwise equal, on the CPU float model and in
 // lavapipe's capture, and the capture must equal the CPU twin; the asymmetric variant

@@ -1,4 +1,4 @@
-// Factor policies (harness/measures/factor_policy.h) against hand-computed factors, and
+// Factor policies (harness/lod/factor_policy.h) against hand-computed factors, and
 // their CPU twin against the levels every technique's own TCS writes on the device
 // (shaders/common/tess_factors.glsl), bit for bit.
 #include "harness/lod/factor_policy.h"

@@ -1,4 +1,4 @@
-// pn_triangles and phong cracks on split normals, measured with harness/measures/cracks.h
+// pn_triangles and phong cracks on split normals, measured with harness/measures/common/cracks/cracks.h
 // on CPU float (evaluateFloat) and on lavapipe's capture of the techniques' own shaders.
 // Oracle: the crack measure's pairing of shared-edge points by welded position (its own
 // tests check it against hand counts); plain PN must open gaps where the two faces' normals

@@ -1,4 +1,4 @@
-// The sim_cost measure's algorithm (harness/measures/sim_cost.h) on a simulation double
+// The sim_cost measure's algorithm (harness/measures/sim_cost/sim_cost.h) on a simulation double
 // whose figures are known by hand: a fixed element count, a footprint, and compute
 // programs whose dispatches per step are counted by hand (1 + 3 + 2 = 6).
 #include "harness/measures/sim_cost/sim_cost.h"

@@ -1,7 +1,7 @@
 // Displaced surfaces (techniques/common/displaced_patches.h): watertight sampling keeps every
 // shared boundary point bitwise equal on the CPU float twin and on lavapipe's capture of the
 // technique's own "#displaced" TES; naive sampling opens gaps at tile borders; the capture
-// equals the twin bit for bit. Oracle: the crack measure's pairing (harness/measures/cracks.h,
+// equals the twin bit for bit. Oracle: the crack measure's pairing (harness/measures/common/cracks/cracks.h,
 // tested against hand counts) and lavapipe. Maps are random (a fixed LCG): independent tile
 // borders are the adversary watertight sampling must beat.
 #include <gtest/gtest.h>

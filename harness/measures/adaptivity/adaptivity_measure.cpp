@@ -243,7 +243,7 @@ class AdaptivityMeasure final : public Measure {
          "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
          "pixels per edge; lp2_edge: C)",
          "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
-         "twin harness/measures/factor_policy.h): distance = target x diagonal / |eye - edge "
+         "twin harness/lod/factor_policy.h): distance = target x diagonal / |eye - edge "
          "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
          "target px) (Dudash, \"Dynamic Hardware Tessellation Basics\", NVIDIA 2012); lp2_edge "
          "= max(L R C / D0, L R C / D1) with its silhouette and roundness reductions (CAPCOM, "

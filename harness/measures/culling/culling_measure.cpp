@@ -151,7 +151,7 @@ std::vector<MetricSpec> allSpecs() {
 std::vector<std::string> policyNotes() {
   std::string text = "policies (shaders/common/cull.glsl, run in every technique's own TCS, which "
                      "writes outer level 0 for a culled patch; CPU twin "
-                     "harness/measures/cull_policy.h):";
+                     "harness/lod/cull_policy.h):";
   for (CullPolicy policy : allCullPolicies()) {
     text += " ";
     text += cullPolicyName(policy);
