@@ -23,6 +23,8 @@ set(TB_SDK_HEADERS
   techniques/batch_eval.h
   techniques/counting_scalar.h
   techniques/simulation.h
+  techniques/constraint_solver.h
+  techniques/wave_field.h
   core/gpu/patch_program_desc.h
   core/gpu/compute_program_desc.h
   core/mesh/mesh.h
