@@ -7,6 +7,8 @@
 
 #include <unistd.h>
 
+#include "tests/test_paths.h"
+
 namespace tb::testing {
 
 inline std::string assetPath(const std::string& name) {

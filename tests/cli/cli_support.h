@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/test_paths.h"
+
 namespace tb::testing {
 
 // A measure's rows from results.json (schema 4: "keys" and "metrics" name the columns,

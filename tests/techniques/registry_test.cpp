@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "techniques/registry.h"
+#include "tests/test_paths.h"
 
 namespace tb {
 namespace {
