@@ -1,9 +1,14 @@
 // Helpers shared by the test suites: bundled asset paths and scratch files.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include <unistd.h>
 
@@ -15,12 +20,37 @@ inline std::string assetPath(const std::string& name) {
   return std::string(TB_SOURCE_DIR) + "/assets/" + name;
 }
 
-// A fresh, empty scratch directory under the system temp dir, unique per test.
+// The scratch directories a test program made: removed when the program exits with every
+// test passed, kept for a look when one failed (the failure messages name them).
+class ScratchDirectories {
+ public:
+  static ScratchDirectories& instance() {
+    static ScratchDirectories directories;  // after gtest's UnitTest, so destroyed before it
+    return directories;
+  }
+  void add(const std::filesystem::path& dir) {
+    const std::lock_guard lock(mutex_);
+    dirs_.push_back(dir);
+  }
+  ~ScratchDirectories() {
+    if (::testing::UnitTest::GetInstance()->Failed()) return;
+    std::error_code ignored;
+    for (const auto& dir : dirs_) std::filesystem::remove_all(dir, ignored);
+  }
+
+ private:
+  ScratchDirectories() = default;
+  std::mutex mutex_;
+  std::vector<std::filesystem::path> dirs_;
+};
+
+// A fresh, empty scratch directory under the system temp dir, unique per test program.
 inline std::filesystem::path scratchDirectory(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("tessbench_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  ScratchDirectories::instance().add(dir);
   return dir;
 }
 

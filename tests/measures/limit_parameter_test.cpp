@@ -116,14 +116,14 @@ SurfaceErrorFigures figuresOf(const SurfacePatches& patches, const ref::LimitSur
 }
 
 TEST(ParametricErrorAt, GivesTheMeasuresParametricMax) {
-  struct Case {
+  struct LimitCase {
     const char* technique;
     const char* asset;
     double tolerance;  // relative to parametric_max
   };
-  for (const Case& c : {Case{"acc", "opensubdiv/catmark_cube.obj", 0.0},
-                        Case{"pn_triangles", "opensubdiv/loop_cube.obj", 0.0},
-                        Case{"gregory_acc", "opensubdiv/catmark_pyramid.obj", 1e-9}}) {
+  for (const LimitCase& c : {LimitCase{"acc", "opensubdiv/catmark_cube.obj", 0.0},
+                             LimitCase{"pn_triangles", "opensubdiv/loop_cube.obj", 0.0},
+                             LimitCase{"gregory_acc", "opensubdiv/catmark_pyramid.obj", 1e-9}}) {
     SCOPED_TRACE(c.technique);
     const Technique* technique = TechniqueRegistry::instance().find(c.technique);
     ASSERT_NE(technique, nullptr);
