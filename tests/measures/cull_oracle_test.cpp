@@ -65,7 +65,12 @@ BuiltSurface flatTriangles(const std::vector<std::array<Vec3d, 3>>& triangles) {
   for (size_t f = 0; f < triangles.size(); ++f) {
     const std::string n = std::to_string(f + 1);
     obj += "f";
-    for (size_t k = 1; k <= 3; ++k) obj += " " + std::to_string(3 * f + k) + "//" + n;
+    for (size_t k = 1; k <= 3; ++k) {
+      obj += ' ';
+      obj += std::to_string(3 * f + k);
+      obj += "//";
+      obj += n;
+    }
     obj += "\n";
   }
   return build("phong", loadObjText(obj, "flat_triangles"));
