@@ -16,11 +16,10 @@ const char* regressBroken();   // the same source built broken (tests/cli)
 
 }  // namespace tb::testing
 
-// The names the tests have always used.
+// The names the tests have always used. (The regress plug-ins' paths have none: TB_REGRESS_BROKEN
+// is the flag regress_plugin.cpp is built broken with.)
 #define TB_SOURCE_DIR (::tb::testing::sourceDir())
 #define TB_BINARY_DIR (::tb::testing::binaryDir())
 #define TB_TESSBENCH_BIN (::tb::testing::tessbenchBin())
 #define TB_EXAMPLE_PLUGIN (::tb::testing::examplePlugin())
 #define TB_WRONG_ABI_PLUGIN (::tb::testing::wrongAbiPlugin())
-#define TB_REGRESS_GOOD (::tb::testing::regressGood())
-#define TB_REGRESS_BROKEN (::tb::testing::regressBroken())

@@ -60,8 +60,8 @@ void writeSamples(const std::string& run, const std::vector<double>& samples) {
 
 TEST(CompareAcceptance, ABrokenTechniqueAgainstTheBaselineFails) {
   const fs::path dir = testing::scratchDirectory("compare_broken");
-  const std::string good = runRegress(dir, TB_REGRESS_GOOD, "good");
-  const std::string broken = runRegress(dir, TB_REGRESS_BROKEN, "broken");
+  const std::string good = runRegress(dir, testing::regressGood(), "good");
+  const std::string broken = runRegress(dir, testing::regressBroken(), "broken");
   const SplitResult r = compare(good, broken, "--limit 1000");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
@@ -79,8 +79,8 @@ TEST(CompareAcceptance, ABrokenTechniqueAgainstTheBaselineFails) {
 
 TEST(CompareAcceptance, TwoIdenticalRunsPass) {
   const fs::path dir = testing::scratchDirectory("compare_identical");
-  const std::string first = runRegress(dir, TB_REGRESS_GOOD, "first");
-  const std::string second = runRegress(dir, TB_REGRESS_GOOD, "second");
+  const std::string first = runRegress(dir, testing::regressGood(), "first");
+  const std::string second = runRegress(dir, testing::regressGood(), "second");
   const SplitResult r = compare(first, second);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("0 missing, 0 regressions, 0 changed (no direction), 0 improvements, 0 "
@@ -93,8 +93,8 @@ TEST(CompareAcceptance, TwoIdenticalRunsPass) {
 // One sample a side: however far apart, the timings are not tested, and the output says so.
 TEST(CompareAcceptance, SingleSampleTimingsAreNeverFlagged) {
   const fs::path dir = testing::scratchDirectory("compare_single");
-  const std::string base = runRegress(dir, TB_REGRESS_GOOD, "base");
-  const std::string slow = runRegress(dir, TB_REGRESS_GOOD, "slow");
+  const std::string base = runRegress(dir, testing::regressGood(), "base");
+  const std::string slow = runRegress(dir, testing::regressGood(), "slow");
   writeSamples(base, {0.01});
   writeSamples(slow, {100.0});
   const SplitResult r = compare(base, slow);
@@ -112,9 +112,9 @@ TEST(CompareAcceptance, SingleSampleTimingsAreNeverFlagged) {
 // overlapping ones are not flagged; --no-timings leaves timings out.
 TEST(CompareAcceptance, RepeatedTimingsAreFlaggedOnlyWhenClearlySlower) {
   const fs::path dir = testing::scratchDirectory("compare_repeated");
-  const std::string base = runRegress(dir, TB_REGRESS_GOOD, "base", 5);
-  const std::string slower = runRegress(dir, TB_REGRESS_GOOD, "slower", 5);
-  const std::string similar = runRegress(dir, TB_REGRESS_GOOD, "similar", 5);
+  const std::string base = runRegress(dir, testing::regressGood(), "base", 5);
+  const std::string slower = runRegress(dir, testing::regressGood(), "slower", 5);
+  const std::string similar = runRegress(dir, testing::regressGood(), "similar", 5);
   const nlohmann::json timings = nlohmann::json::parse(readFile(fs::path(base) / "timings.json"));
   EXPECT_EQ(timings.at("repetitions"), 5);
   EXPECT_EQ(timings.at("measures").at(0).at("samples").size(), 5u);
@@ -145,7 +145,7 @@ TEST(CompareAcceptance, RepeatedTimingsAreFlaggedOnlyWhenClearlySlower) {
 TEST(Repetitions, ARepeatThatDiffersIsARecordWarning) {
   const fs::path dir = testing::scratchDirectory("repetitions_flaky");
   const std::string run_arguments =
-      std::string("--plugin ") + TB_REGRESS_GOOD +
+      std::string("--plugin ") + testing::regressGood() +
       " run --quiet --technique regress_flaky --technique regress --asset loop_cube --measure "
       "error --repetitions 2 --out " + (dir / "out").string() + " --run-id r";
   const SplitResult r = runTessbenchSplit(run_arguments, kNoDevice);
