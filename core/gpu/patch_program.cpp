@@ -19,6 +19,19 @@
 namespace tb::gpu {
 namespace {
 
+// Whether malloc is AddressSanitizer's (GCC defines __SANITIZE_ADDRESS__; clang has the feature).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitizedAllocator = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitizedAllocator = true;
+#else
+constexpr bool kSanitizedAllocator = false;
+#endif
+#else
+constexpr bool kSanitizedAllocator = false;
+#endif
+
 // Set 1's factor policy corners: words per patch (TcsFactorPolicy::corner_words).
 constexpr uint32_t kFactorCornerWordsPerPatch = 32;
 
@@ -424,16 +437,32 @@ void warmUp(Context& context, ProgramPipeline& pipeline, const DrawSetup& setup,
   }
 }
 
+// The patches one draw takes: `requested`, fewer under AddressSanitizer when their capture
+// bounds would pass kMaxCaptureBoundPerDraw. Mesa's draw module (lavapipe's tessellation)
+// grows a draw's output with one realloc per patch; ASan's realloc never grows in place, so
+// there a draw's host work grows with the square of its output, and once the output passes
+// the allocator's 128 KiB size classes each realloc maps fresh pages (Culling's acceptance
+// test: 1001 s with 64 patches a draw, 193 s with this cap). How patches are split into
+// draws changes no figure: each draw carries its first patch's index (tbPatchIndex).
+uint32_t patchesPerDraw(uint32_t requested, std::span<const uint64_t> bounds) {
+  if (!kSanitizedAllocator) return requested;
+  constexpr uint64_t kMaxCaptureBoundPerDraw = 256;
+  const uint64_t largest = bounds.empty() ? 1 : *std::max_element(bounds.begin(), bounds.end());
+  return uint32_t(std::clamp<uint64_t>(kMaxCaptureBoundPerDraw / largest, 1, requested));
+}
+
 // Draws patches [first, end) in submissions whose captures fit, reading back each one's
 // capture and statistics into `result`.
 void drawPatches(Context& context, const GpuPatchProgram& program,
-                 const PatchProgramOptions& options, const DrawSetup& setup,
+                 const PatchProgramOptions& options, const DrawSetup& setup_in,
                  std::span<const tess::Levels> device_levels, uint32_t first, uint32_t end,
                  bool boundary_only, CallResources& resources, const StorageBufferSet& data_set,
                  std::span<const VkDeviceSize> data_ranges, PatchProgramCapture* result) {
   const VkDevice device = context.device();
   const std::vector<uint64_t> bounds =
       captureBounds(program.domain, options.spacing, device_levels, first, end, boundary_only);
+  DrawSetup setup = setup_in;
+  setup.per_draw = patchesPerDraw(setup_in.per_draw, bounds);
   for (const SubmitRange& range : planSubmits(first, bounds, setup.per_draw, options.capture)) {
     const VkDeviceSize bytes = kCaptureHeaderBytes + range.capacity * kCaptureWords * 4;
     if (resources.capture.sizeBytes() < bytes) {
