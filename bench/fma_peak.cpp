@@ -64,19 +64,21 @@ int64_t loopSse2(int64_t iterations) {
 }  // namespace
 
 int64_t runFmaPeakLoop(int64_t iterations) {
-  switch (fastestBatchKernel()) {
-    case BatchKernel::kAvx512:
+  switch (techniques::fastestBatchKernel()) {
+    case techniques::BatchKernel::kAvx512:
       return loopAvx512(iterations);
-    case BatchKernel::kAvx2Fma:
+    case techniques::BatchKernel::kAvx2Fma:
       return loopAvx2(iterations);
-    case BatchKernel::kPortable:
+    case techniques::BatchKernel::kPortable:
       break;
   }
   return loopSse2(iterations);
 }
 
 const char* fmaPeakKernel() {
-  return fastestBatchKernel() == BatchKernel::kPortable ? "sse2" : toString(fastestBatchKernel());
+  return techniques::fastestBatchKernel() == techniques::BatchKernel::kPortable
+             ? "sse2"
+             : toString(techniques::fastestBatchKernel());
 }
 
 double threadCpuSeconds() {

@@ -32,25 +32,30 @@ constexpr Case kCases[] = {{"acc", "catmark_xord_interior"},
                            {"gregory_acc", "catmark_xord_interior"},
                            {"pn_triangles", "loop_xord_interior"}};
 
-void measureOnCopies(benchmark::State& state, const tb::Measure* measure,
-                     const tb::Technique* technique, const std::string& asset) {
+void measureOnCopies(benchmark::State& state, const tb::measures::Measure* measure,
+                     const tb::techniques::Technique* technique, const std::string& asset) {
   const int copies = int(state.range(0));
   tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   static auto context = tb::gpu::Context::create();
-  const tb::Mesh mesh = tb::translatedCopies(tb::loadObjFile(tb::resolveAsset(asset).path), copies);
-  const tb::VariantInfo variant = technique->variants()[0];
-  tb::BuiltSurface patches;
+  const tb::mesh::Mesh mesh = tb::mesh::translatedCopies(
+      tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path), copies);
+  const tb::techniques::VariantInfo variant = technique->variants()[0];
+  tb::techniques::BuiltSurface patches;
   try {
-    patches = tb::buildSurface(*technique, mesh, variant);
+    patches = tb::techniques::buildSurface(*technique, mesh, variant);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
     return;
   }
-  const tb::CameraPath path = tb::testOrbitPath(tb::boundsOf(mesh));
+  const tb::view::CameraPath path = tb::suite::testOrbitPath(tb::mesh::boundsOf(mesh));
   const std::string asset_name = asset + " x" + std::to_string(copies);
-  tb::MeasureInput input{*technique, variant, asset_name, mesh, patches.get(),
-                         context ? context.value().get() : nullptr,
-                         context ? std::string() : context.error()};
+  tb::measures::MeasureInput input{*technique,
+                                   variant,
+                                   asset_name,
+                                   mesh,
+                                   patches.get(),
+                                   context ? context.value().get() : nullptr,
+                                   context ? std::string() : context.error()};
   input.view = &path.views[0];
   for (auto _ : state) {
     benchmark::DoNotOptimize(measure->run(input));
@@ -64,11 +69,12 @@ void measureOnCopies(benchmark::State& state, const tb::Measure* measure,
 // Registered from the registries in main, so a new measure is benchmarked without
 // touching this file. Surface measures only: simulations scale with their scenario.
 void registerScalingBenchmarks() {
-  for (const tb::Measure* measure : tb::MeasureRegistry::instance().all()) {
-    const tb::MeasureRequirements requirements = measure->requirements();
-    if (!requirements.has(tb::MeasureNeed::kSurface)) continue;
+  for (const tb::measures::Measure* measure : tb::measures::MeasureRegistry::instance().all()) {
+    const tb::measures::MeasureRequirements requirements = measure->requirements();
+    if (!requirements.has(tb::measures::MeasureNeed::kSurface)) continue;
     for (const Case& c : kCases) {
-      const tb::Technique* technique = tb::TechniqueRegistry::instance().find(c.technique);
+      const tb::techniques::Technique* technique =
+          tb::techniques::TechniqueRegistry::instance().find(c.technique);
       if (technique == nullptr) continue;
       if (requirements.technique_filter && !requirements.technique_filter(*technique)) continue;
       const std::string asset = c.asset;

@@ -22,7 +22,7 @@ namespace Far = OpenSubdiv::Far;
 
 constexpr size_t kValuesPerPoint = 9;  // position, du, dv
 
-std::unique_ptr<Far::TopologyRefiner> quadRefiner(const Mesh& mesh) {
+std::unique_ptr<Far::TopologyRefiner> quadRefiner(const mesh::Mesh& mesh) {
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) != 4) {
       throw std::runtime_error(mesh.source + ": face " + std::to_string(f) +
@@ -35,19 +35,19 @@ std::unique_ptr<Far::TopologyRefiner> quadRefiner(const Mesh& mesh) {
 // Results of every point of every face: position, du, dv, face-major.
 class PointBuffer : public OsdEvaluation {
  public:
-  PointBuffer(size_t faces, const std::vector<Vec2d>& uv)
+  PointBuffer(size_t faces, const std::vector<mesh::Vec2d>& uv)
       : uv_(uv), values_(faces * uv.size() * kValuesPerPoint) {}
-  Vec3d position(size_t face, size_t i) const override { return at(face, i, 0); }
-  Vec3d du(size_t face, size_t i) const override { return at(face, i, 3); }
-  Vec3d dv(size_t face, size_t i) const override { return at(face, i, 6); }
+  mesh::Vec3d position(size_t face, size_t i) const override { return at(face, i, 0); }
+  mesh::Vec3d du(size_t face, size_t i) const override { return at(face, i, 3); }
+  mesh::Vec3d dv(size_t face, size_t i) const override { return at(face, i, 6); }
 
  protected:
   size_t faces() const { return values_.size() / (uv_.size() * kValuesPerPoint); }
-  const std::vector<Vec2d> uv_;
+  const std::vector<mesh::Vec2d> uv_;
   std::vector<double> values_;
 
  private:
-  Vec3d at(size_t face, size_t i, size_t offset) const {
+  mesh::Vec3d at(size_t face, size_t i, size_t offset) const {
     const double* v = &values_[(face * uv_.size() + i) * kValuesPerPoint + offset];
     return {v[0], v[1], v[2]};
   }
@@ -55,14 +55,14 @@ class PointBuffer : public OsdEvaluation {
 
 class BfrSurfaces final : public PointBuffer {
  public:
-  BfrSurfaces(const Mesh& mesh, const std::vector<Vec2d>& uv, int approx_level)
+  BfrSurfaces(const mesh::Mesh& mesh, const std::vector<mesh::Vec2d>& uv, int approx_level)
       : PointBuffer(mesh.faceCount(), uv), refiner_(quadRefiner(mesh)) {
     Bfr::SurfaceFactory::Options options;
     options.SetApproxLevelSmooth(approx_level);
     options.SetApproxLevelSharp(std::max(approx_level, 6));
     const Bfr::RefinerSurfaceFactory<> factory(*refiner_, options);
     std::vector<double> positions;
-    for (const Vec3d& p : mesh.positions) positions.insert(positions.end(), {p.x, p.y, p.z});
+    for (const mesh::Vec3d& p : mesh.positions) positions.insert(positions.end(), {p.x, p.y, p.z});
     const Bfr::Surface<double>::PointDescriptor xyz(3);
     surfaces_.resize(mesh.faceCount());
     patch_points_.resize(mesh.faceCount());
@@ -82,7 +82,7 @@ class BfrSurfaces final : public PointBuffer {
     for (size_t f = 0; f < surfaces_.size(); ++f) {
       const Bfr::Surface<double>& surface = surfaces_[f];
       const double* patch_points = patch_points_[f].data();
-      for (const Vec2d& p : uv_) {
+      for (const mesh::Vec2d& p : uv_) {
         const double uv[2] = {p.x, p.y};
         surface.Evaluate(uv, patch_points, xyz, out, out + 3, out + 6);
         out += kValuesPerPoint;
@@ -108,7 +108,7 @@ struct FarPoint {
   }
 };
 
-std::unique_ptr<Far::TopologyRefiner> adaptiveRefiner(const Mesh& mesh, int isolation) {
+std::unique_ptr<Far::TopologyRefiner> adaptiveRefiner(const mesh::Mesh& mesh, int isolation) {
   std::unique_ptr<Far::TopologyRefiner> refiner = quadRefiner(mesh);
   Far::TopologyRefiner::AdaptiveOptions adaptive(isolation);
   adaptive.useInfSharpPatch = true;
@@ -118,7 +118,7 @@ std::unique_ptr<Far::TopologyRefiner> adaptiveRefiner(const Mesh& mesh, int isol
 
 class PatchMapEvaluation final : public PointBuffer {
  public:
-  PatchMapEvaluation(const Mesh& mesh, const std::vector<Vec2d>& uv, int isolation)
+  PatchMapEvaluation(const mesh::Mesh& mesh, const std::vector<mesh::Vec2d>& uv, int isolation)
       : PointBuffer(mesh.faceCount(), uv), refiner_(adaptiveRefiner(mesh, isolation)) {
     Far::PatchTableFactory::Options options(isolation);
     options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
@@ -151,7 +151,7 @@ class PatchMapEvaluation final : public PointBuffer {
     double* out = values_.data();
     double w[3][20];
     for (size_t f = 0; f < faces(); ++f) {
-      for (const Vec2d& p : uv_) {
+      for (const mesh::Vec2d& p : uv_) {
         const Far::PatchTable::PatchHandle* handle = map_->FindPatch(int(f), p.x, p.y);
         table_->EvaluateBasis(*handle, p.x, p.y, w[0], w[1], w[2]);
         const Far::ConstIndexArray cvs = table_->GetPatchVertices(*handle);
@@ -177,11 +177,11 @@ class PatchMapEvaluation final : public PointBuffer {
 
 class LimitStencilEvaluation final : public PointBuffer {
  public:
-  LimitStencilEvaluation(const Mesh& mesh, const std::vector<Vec2d>& uv, int isolation)
+  LimitStencilEvaluation(const mesh::Mesh& mesh, const std::vector<mesh::Vec2d>& uv, int isolation)
       : PointBuffer(mesh.faceCount(), uv) {
     const std::unique_ptr<Far::TopologyRefiner> refiner = adaptiveRefiner(mesh, isolation);
     std::vector<double> s, t;
-    for (const Vec2d& p : uv) {
+    for (const mesh::Vec2d& p : uv) {
       s.push_back(p.x);
       t.push_back(p.y);
     }
@@ -194,7 +194,7 @@ class LimitStencilEvaluation final : public PointBuffer {
       locations[f].t = t.data();
     }
     table_.reset(Factory::Create(*refiner, locations));
-    for (const Vec3d& p : mesh.positions) control_.push_back({p.x, p.y, p.z});
+    for (const mesh::Vec3d& p : mesh.positions) control_.push_back({p.x, p.y, p.z});
     for (int source : table_->GetControlIndices()) {
       if (source < 0 || size_t(source) >= control_.size()) {
         throw std::runtime_error("limit stencils refer to refined vertices");
@@ -237,17 +237,19 @@ class LimitStencilEvaluation final : public PointBuffer {
 
 }  // namespace
 
-std::unique_ptr<OsdEvaluation> makeBfrSurfaces(const Mesh& mesh, const std::vector<Vec2d>& uv,
+std::unique_ptr<OsdEvaluation> makeBfrSurfaces(const mesh::Mesh& mesh,
+                                               const std::vector<mesh::Vec2d>& uv,
                                                int approx_level) {
   return std::make_unique<BfrSurfaces>(mesh, uv, approx_level);
 }
 
-std::unique_ptr<OsdEvaluation> makePatchMap(const Mesh& mesh, const std::vector<Vec2d>& uv,
-                                            int isolation) {
+std::unique_ptr<OsdEvaluation> makePatchMap(const mesh::Mesh& mesh,
+                                            const std::vector<mesh::Vec2d>& uv, int isolation) {
   return std::make_unique<PatchMapEvaluation>(mesh, uv, isolation);
 }
 
-std::unique_ptr<OsdEvaluation> makeLimitStencils(const Mesh& mesh, const std::vector<Vec2d>& uv,
+std::unique_ptr<OsdEvaluation> makeLimitStencils(const mesh::Mesh& mesh,
+                                                 const std::vector<mesh::Vec2d>& uv,
                                                  int isolation) {
   return std::make_unique<LimitStencilEvaluation>(mesh, uv, isolation);
 }

@@ -31,9 +31,9 @@ class OsdEvaluation {
   // buffer; returns the points evaluated.
   virtual int64_t evaluateAll() = 0;
   // After evaluateAll: point i of face f (position, du, dv).
-  virtual Vec3d position(size_t face, size_t i) const = 0;
-  virtual Vec3d du(size_t face, size_t i) const = 0;
-  virtual Vec3d dv(size_t face, size_t i) const = 0;
+  virtual mesh::Vec3d position(size_t face, size_t i) const = 0;
+  virtual mesh::Vec3d du(size_t face, size_t i) const = 0;
+  virtual mesh::Vec3d dv(size_t face, size_t i) const = 0;
   // Multiply-adds of the per-point sums where they are plain weighted sums (the limit
   // stencils: 9 per stencil entry), else 0.
   virtual double multiplyAddsPerPoint() const { return 0; }
@@ -41,12 +41,13 @@ class OsdEvaluation {
 
 // `approx_level`: Bfr's ApproxLevelSmooth; the sharp level is max(approx_level, 6).
 // Throws std::runtime_error for a mesh with non-quad faces.
-std::unique_ptr<OsdEvaluation> makeBfrSurfaces(const Mesh& mesh, const std::vector<Vec2d>& uv,
+std::unique_ptr<OsdEvaluation> makeBfrSurfaces(const mesh::Mesh& mesh,
+                                               const std::vector<mesh::Vec2d>& uv,
                                                int approx_level);
 // `isolation`: the adaptive refinement level of the patch table / stencils.
-std::unique_ptr<OsdEvaluation> makePatchMap(const Mesh& mesh, const std::vector<Vec2d>& uv,
-                                            int isolation);
-std::unique_ptr<OsdEvaluation> makeLimitStencils(const Mesh& mesh, const std::vector<Vec2d>& uv,
-                                                 int isolation);
+std::unique_ptr<OsdEvaluation> makePatchMap(const mesh::Mesh& mesh,
+                                            const std::vector<mesh::Vec2d>& uv, int isolation);
+std::unique_ptr<OsdEvaluation> makeLimitStencils(const mesh::Mesh& mesh,
+                                                 const std::vector<mesh::Vec2d>& uv, int isolation);
 
 }  // namespace tb::bench

@@ -16,14 +16,14 @@
 namespace {
 
 void defaultSuitePictures(benchmark::State& state) {
-  tb::SuiteSelection selection;
-  selection.measures = {tb::MeasureRegistry::instance().find("error")};
-  tb::Results results;
-  tb::runSuite(selection, nullptr, &results);
+  tb::suite::SuiteSelection selection;
+  selection.measures = {tb::measures::MeasureRegistry::instance().find("error")};
+  tb::results::Results results;
+  tb::suite::runSuite(selection, nullptr, &results);
   for (auto _ : state) {
     uint64_t bytes = 0;
     const std::clock_t cpu_start = std::clock();
-    const tb::PicturesIndex index = tb::renderRunPictures(
+    const tb::pictures::PicturesIndex index = tb::pictures::renderRunPictures(
         results, "", [&](const std::string&, const std::string& file) { bytes += file.size(); });
     state.SetIterationTime(index.wall_s);
     state.counters["pairs"] = double(index.pictures.size());

@@ -19,11 +19,13 @@ using tb::osd::Scheme;
 
 constexpr int kGrid = 8;  // kGrid x kGrid points per (sub-)face
 
-tb::Mesh pawn() { return tb::loadObjFile(tb::resolveAsset("catmark_pawn").path); }
+tb::mesh::Mesh pawn() {
+  return tb::mesh::loadObjFile(tb::suite::resolveAsset("catmark_pawn").path);
+}
 
 // Face (u,v) of a uniform grid on every sub-face of `face_size`.
-std::vector<tb::Vec2d> gridPoints(int face_size) {
-  std::vector<tb::Vec2d> points;
+std::vector<tb::mesh::Vec2d> gridPoints(int face_size) {
+  std::vector<tb::mesh::Vec2d> points;
   for (int k = 0; k < tb::ref::subFaceCount(Scheme::kCatmullClark, face_size); ++k) {
     for (int j = 0; j < kGrid; ++j) {
       for (int i = 0; i < kGrid; ++i) {
@@ -36,8 +38,8 @@ std::vector<tb::Vec2d> gridPoints(int face_size) {
 }
 
 // gridPoints of every face, computed before timing.
-std::vector<std::vector<tb::Vec2d>> pointsPerFace(const tb::Mesh& mesh) {
-  std::vector<std::vector<tb::Vec2d>> points(mesh.faceCount());
+std::vector<std::vector<tb::mesh::Vec2d>> pointsPerFace(const tb::mesh::Mesh& mesh) {
+  std::vector<std::vector<tb::mesh::Vec2d>> points(mesh.faceCount());
   for (size_t f = 0; f < mesh.faceCount(); ++f) points[f] = gridPoints(int(mesh.faceSize(f)));
   return points;
 }
@@ -45,8 +47,8 @@ std::vector<std::vector<tb::Vec2d>> pointsPerFace(const tb::Mesh& mesh) {
 // Runs evaluate_face(f, grid points of f) over every face per iteration; it returns
 // how many points it evaluated. Reports evaluations (position + dP/du + dP/dv) per second.
 template <class EvaluateFace>
-void timeFaces(benchmark::State& state, const tb::Mesh& mesh, EvaluateFace evaluate_face) {
-  const std::vector<std::vector<tb::Vec2d>> points = pointsPerFace(mesh);
+void timeFaces(benchmark::State& state, const tb::mesh::Mesh& mesh, EvaluateFace evaluate_face) {
+  const std::vector<std::vector<tb::mesh::Vec2d>> points = pointsPerFace(mesh);
   int64_t evaluations = 0;
   for (auto _ : state) {
     for (size_t f = 0; f < mesh.faceCount(); ++f) evaluations += evaluate_face(f, points[f]);
@@ -58,11 +60,11 @@ void timeFaces(benchmark::State& state, const tb::Mesh& mesh, EvaluateFace evalu
 // Prepares each face once per pass (LimitSurface::face) and evaluates its grid: the
 // way the error measure walks a mesh.
 void BM_BfrLimitEvaluate(benchmark::State& state) {
-  const tb::Mesh mesh = pawn();
+  const tb::mesh::Mesh mesh = pawn();
   const tb::ref::LimitSurface surface(mesh, Scheme::kCatmullClark);
-  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::Vec2d>& points) {
+  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::mesh::Vec2d>& points) {
     const tb::ref::LimitFace face = surface.face(f);
-    for (const tb::Vec2d& uv : points) benchmark::DoNotOptimize(face.evaluate(uv.x, uv.y));
+    for (const tb::mesh::Vec2d& uv : points) benchmark::DoNotOptimize(face.evaluate(uv.x, uv.y));
     return int64_t(points.size());
   });
 }
@@ -70,10 +72,10 @@ BENCHMARK(BM_BfrLimitEvaluate)->Unit(benchmark::kMillisecond);
 
 // One-off points: every evaluation prepares its face again.
 void BM_BfrLimitEvaluateSinglePoints(benchmark::State& state) {
-  const tb::Mesh mesh = pawn();
+  const tb::mesh::Mesh mesh = pawn();
   const tb::ref::LimitSurface surface(mesh, Scheme::kCatmullClark);
-  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::Vec2d>& points) {
-    const tb::Vec2d uv = points[kGrid + 3];
+  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::mesh::Vec2d>& points) {
+    const tb::mesh::Vec2d uv = points[kGrid + 3];
     benchmark::DoNotOptimize(surface.evaluate(f, uv.x, uv.y));
     return int64_t(1);
   });
@@ -81,10 +83,11 @@ void BM_BfrLimitEvaluateSinglePoints(benchmark::State& state) {
 BENCHMARK(BM_BfrLimitEvaluateSinglePoints)->Unit(benchmark::kMillisecond);
 
 void BM_EmbreeInterpolate(benchmark::State& state) {
-  const tb::Mesh mesh = pawn();
+  const tb::mesh::Mesh mesh = pawn();
   const tb::ref::EmbreeSubdivision embree(mesh);
-  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::Vec2d>& points) {
-    for (const tb::Vec2d& uv : points) benchmark::DoNotOptimize(embree.evaluate(f, uv.x, uv.y));
+  timeFaces(state, mesh, [&](size_t f, const std::vector<tb::mesh::Vec2d>& points) {
+    for (const tb::mesh::Vec2d& uv : points)
+      benchmark::DoNotOptimize(embree.evaluate(f, uv.x, uv.y));
     return int64_t(points.size());
   });
 }
@@ -100,13 +103,13 @@ void BM_ClosestPoint(benchmark::State& state) {
   std::mt19937_64 rng(3);
   std::uniform_int_distribution<size_t> pick(0, tessellation.positions.size() - 1);
   std::uniform_real_distribution<double> offset(-spread, spread);
-  std::vector<tb::Vec3d> queries(4096);
-  for (tb::Vec3d& q : queries) {
-    q = tessellation.positions[pick(rng)] + tb::Vec3d{offset(rng), offset(rng), offset(rng)};
+  std::vector<tb::mesh::Vec3d> queries(4096);
+  for (tb::mesh::Vec3d& q : queries) {
+    q = tessellation.positions[pick(rng)] + tb::mesh::Vec3d{offset(rng), offset(rng), offset(rng)};
   }
   int64_t count = 0;
   for (auto _ : state) {
-    for (const tb::Vec3d& q : queries) benchmark::DoNotOptimize(field.closest(q));
+    for (const tb::mesh::Vec3d& q : queries) benchmark::DoNotOptimize(field.closest(q));
     count += int64_t(queries.size());
   }
   state.counters["triangles"] = double(field.triangleCount());

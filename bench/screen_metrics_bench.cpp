@@ -32,22 +32,22 @@ namespace {
 constexpr double kFovYRad = 60 * std::numbers::pi / 180;
 
 struct Subject {
-  tb::Mesh mesh;
-  tb::BuiltSurface patches;
-  tb::View view;
+  tb::mesh::Mesh mesh;
+  tb::techniques::BuiltSurface patches;
+  tb::view::View view;
 };
 
 // The sphere around the mesh's bounding box spans half the screen height.
-tb::View halfScreenView(const tb::Mesh& mesh) {
-  const tb::Aabb box = tb::boundsOf(mesh);
-  const tb::Vec3d centre = 0.5 * (box.min + box.max);
+tb::view::View halfScreenView(const tb::mesh::Mesh& mesh) {
+  const tb::mesh::Aabb box = tb::mesh::boundsOf(mesh);
+  const tb::mesh::Vec3d centre = 0.5 * (box.min + box.max);
   const double radius = 0.5 * length(box.max - box.min);
   const double distance = 2 * radius / std::tan(kFovYRad / 2);
-  const tb::Vec3d eye = centre + distance * normalize(tb::Vec3d{0.6, 0.5, 0.8});
-  tb::View view;
+  const tb::mesh::Vec3d eye = centre + distance * normalize(tb::mesh::Vec3d{0.6, 0.5, 0.8});
+  tb::view::View view;
   const double near_plane = distance - 1.5 * radius, far_plane = distance + 1.5 * radius;
-  view.view_projection = tb::perspective(kFovYRad, 1920.0 / 1080, near_plane, far_plane) *
-                         tb::lookAt(eye, centre, {0, 1, 0});
+  view.view_projection = tb::view::perspective(kFovYRad, 1920.0 / 1080, near_plane, far_plane) *
+                         tb::view::lookAt(eye, centre, {0, 1, 0});
   view.viewport_width_px = 1920;
   view.viewport_height_px = 1080;
   view.eye = {eye.x, eye.y, eye.z};
@@ -61,13 +61,14 @@ const Subject& subject(const std::string& technique) {
   static std::optional<Subject> acc, pn;
   std::optional<Subject>& s = technique == "acc" ? acc : pn;
   if (!s) {
-    tb::Mesh mesh =
-        tb::loadObjFile(tb::resolveAsset(technique == "acc" ? "catmark_pawn" : "tri_pawn").path);
+    tb::mesh::Mesh mesh = tb::mesh::loadObjFile(
+        tb::suite::resolveAsset(technique == "acc" ? "catmark_pawn" : "tri_pawn").path);
     mesh.tags.creases.clear();
     mesh.tags.corners.clear();
-    const tb::Technique* t = tb::TechniqueRegistry::instance().find(technique);
-    tb::BuiltSurface patches = tb::buildSurface(*t, mesh, t->variants()[0]);
-    const tb::View view = halfScreenView(mesh);
+    const tb::techniques::Technique* t =
+        tb::techniques::TechniqueRegistry::instance().find(technique);
+    tb::techniques::BuiltSurface patches = tb::techniques::buildSurface(*t, mesh, t->variants()[0]);
+    const tb::view::View view = halfScreenView(mesh);
     s.emplace(Subject{std::move(mesh), std::move(patches), view});
   }
   return *s;
@@ -79,13 +80,14 @@ std::vector<tb::tess::Levels> adaptiveLevels(const Subject& s, double target_px 
   std::vector<tb::tess::Levels> levels;
   for (size_t p = 0; p < s.patches->patchCount(); ++p) {
     const auto corners = s.patches->patchCorners(p);
-    const int n = s.patches->patchDomain(p) == tb::PatchDomain::kQuad ? 4 : 3;
+    const int n = s.patches->patchDomain(p) == tb::techniques::PatchDomain::kQuad ? 4 : 3;
     tb::tess::Levels l;
     float largest = 1;
     for (int k = 0; k < n; ++k) {
-      const tb::Vec3d a = s.mesh.positions[corners[k]], b = s.mesh.positions[corners[(k + 1) % n]];
-      const tb::ProjectedPoint pa = tb::projectToPixels(s.view, a.x, a.y, a.z);
-      const tb::ProjectedPoint pb = tb::projectToPixels(s.view, b.x, b.y, b.z);
+      const tb::mesh::Vec3d a = s.mesh.positions[corners[k]],
+                            b = s.mesh.positions[corners[(k + 1) % n]];
+      const tb::view::ProjectedPoint pa = tb::view::projectToPixels(s.view, a.x, a.y, a.z);
+      const tb::view::ProjectedPoint pb = tb::view::projectToPixels(s.view, b.x, b.y, b.z);
       const double px = std::hypot(pa.x_px - pb.x_px, pa.y_px - pb.y_px);
       l.outer[k] = float(std::clamp(px / target_px, 1.0, 64.0));
       largest = std::max(largest, l.outer[k]);
@@ -123,9 +125,9 @@ void BM_TessellationError(benchmark::State& state, const std::string& technique,
   const Subject& s = subject(technique);
   const std::vector<tb::tess::Levels> levels = levelsFor(s, int(state.range(0)));
   const tb::tess::Spacing spacing = spacingFor(int(state.range(0)));
-  std::optional<tb::ScreenMetrics> metrics(std::in_place, *s.patches, nullptr);
+  std::optional<tb::lod::ScreenMetrics> metrics(std::in_place, *s.patches, nullptr);
   uint64_t triangles = 0;
-  tb::ScreenErrorFigures figures;
+  tb::lod::ScreenErrorFigures figures;
   for (auto _ : state) {
     if (cold) metrics.emplace(*s.patches, nullptr);
     figures = metrics->tessellationError(spacing, levels, s.view, &triangles);
@@ -144,7 +146,7 @@ void BM_TessellationErrorSweep(benchmark::State& state, const std::string& techn
   std::vector<std::vector<tb::tess::Levels>> sweep;
   for (int target_px = 4; target_px < 34; ++target_px)
     sweep.push_back(adaptiveLevels(s, target_px));
-  tb::ScreenMetrics metrics(*s.patches, nullptr);
+  tb::lod::ScreenMetrics metrics(*s.patches, nullptr);
   size_t call = 0;
   uint64_t triangles = 0, total = 0;
   for (auto _ : state) {
@@ -162,8 +164,8 @@ void BM_Frame(benchmark::State& state, const std::string& technique) {
   const tb::ref::LimitSurface limit(s.patches->controlMesh(), technique == "acc"
                                                                   ? tb::osd::Scheme::kCatmullClark
                                                                   : tb::osd::Scheme::kLoop);
-  tb::ScreenMetrics metrics(*s.patches, &limit);
-  tb::FrameScreenFigures figures;
+  tb::lod::ScreenMetrics metrics(*s.patches, &limit);
+  tb::lod::FrameScreenFigures figures;
   for (auto _ : state) figures = metrics.frame(spacingFor(int(state.range(0))), levels, s.view);
   state.counters["triangles"] = double(figures.triangles);
   state.counters["edges"] = double(figures.edges.edges);
@@ -179,8 +181,8 @@ void BM_Pop(benchmark::State& state, const std::string& technique) {
     for (float& level : l.outer) level = std::min(64.0f, level * 1.1f);
     for (float& level : l.inner) level = std::min(64.0f, level * 1.1f);
   }
-  tb::ScreenMetrics metrics(*s.patches, nullptr);
-  tb::ScreenErrorFigures figures;
+  tb::lod::ScreenMetrics metrics(*s.patches, nullptr);
+  tb::lod::ScreenErrorFigures figures;
   for (auto _ : state) {
     figures = metrics.pop(tb::tess::Spacing::kFractionalOdd, before, after, s.view);
   }

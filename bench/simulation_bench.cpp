@@ -18,17 +18,18 @@
 namespace {
 
 struct Case {
-  const tb::Technique* technique = nullptr;
-  tb::VariantInfo variant;
-  tb::Scenario scenario;
+  const tb::techniques::Technique* technique = nullptr;
+  tb::techniques::VariantInfo variant;
+  tb::techniques::Scenario scenario;
 };
 
 std::vector<Case> cases() {
   std::vector<Case> all;
-  for (const tb::Scenario& scenario : tb::bundledScenarios()) {
-    const tb::Technique* technique = tb::TechniqueRegistry::instance().find(scenario.technique);
+  for (const tb::techniques::Scenario& scenario : tb::suite::bundledScenarios()) {
+    const tb::techniques::Technique* technique =
+        tb::techniques::TechniqueRegistry::instance().find(scenario.technique);
     if (technique == nullptr) continue;
-    for (const tb::VariantInfo& variant : technique->variants()) {
+    for (const tb::techniques::VariantInfo& variant : technique->variants()) {
       all.push_back({technique, variant, scenario});
     }
   }
@@ -38,7 +39,7 @@ std::vector<Case> cases() {
 void cpuSteps(benchmark::State& state, const Case& c) {
   for (auto _ : state) {
     auto instance = c.technique->build({nullptr, &c.scenario}, c.variant);
-    tb::Simulation& simulation = *instance->simulation();
+    tb::techniques::Simulation& simulation = *instance->simulation();
     const size_t steps = c.scenario.stepCount();
     for (size_t s = 0; s < steps; ++s) simulation.step(c.scenario.time_step_s);
     state.counters["elements"] = double(simulation.state().element_count);

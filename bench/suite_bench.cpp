@@ -12,15 +12,15 @@
 namespace {
 
 void defaultSuite(benchmark::State& state) {
-  tb::SuiteSelection selection;
+  tb::suite::SuiteSelection selection;
   selection.threads = int(state.range(0));
   for (auto _ : state) {
-    tb::Results results;
-    tb::SuiteTimings timings;
-    tb::runSuite(selection, nullptr, &results, &timings);
+    tb::results::Results results;
+    tb::suite::SuiteTimings timings;
+    tb::suite::runSuite(selection, nullptr, &results, &timings);
     state.SetIterationTime(timings.wall_seconds);
     std::map<std::string, double> per_measure;
-    for (const tb::MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
+    for (const tb::suite::MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
     for (const auto& [measure, seconds] : per_measure) state.counters[measure + "_s"] = seconds;
     state.counters["wall_s"] = timings.wall_seconds;
     state.counters["records"] = double(results.records.size());

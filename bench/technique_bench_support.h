@@ -17,11 +17,12 @@ namespace tb::bench {
 
 // Null, with the benchmark skipped and the technique's reason shown, when the technique
 // does not take the asset.
-inline BuiltSurface defaultVariantPatches(benchmark::State& state, const Technique& technique,
-                                          const std::string& asset) {
+inline techniques::BuiltSurface defaultVariantPatches(benchmark::State& state,
+                                                      const techniques::Technique& technique,
+                                                      const std::string& asset) {
   try {
-    const Mesh mesh = loadObjFile(resolveAsset(asset).path);
-    return buildSurface(technique, mesh, technique.variants()[0]);
+    const mesh::Mesh mesh = mesh::loadObjFile(suite::resolveAsset(asset).path);
+    return techniques::buildSurface(technique, mesh, technique.variants()[0]);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
     return nullptr;

@@ -37,17 +37,18 @@ constexpr int kOsdLevel = 10;  // the reference's Bfr ApproxLevel (reference/lim
 const char* const kAssets[] = {"catmark_pawn", "loop_icosahedron", "catmark_xord_interior",
                                "catmark_pyramid"};
 
-void evaluatePerPoint(benchmark::State& state, const tb::Technique* technique,
+void evaluatePerPoint(benchmark::State& state, const tb::techniques::Technique* technique,
                       const std::string& asset) {
-  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
+  const tb::techniques::BuiltSurface patches =
+      tb::bench::defaultVariantPatches(state, *technique, asset);
   if (!patches) return;
-  const std::vector<tb::DomainCoord> lattice[2] = {
-      tb::latticeCoords(tb::PatchDomain::kTriangle, kSegments),
-      tb::latticeCoords(tb::PatchDomain::kQuad, kSegments)};
+  const std::vector<tb::techniques::DomainCoord> lattice[2] = {
+      tb::techniques::latticeCoords(tb::techniques::PatchDomain::kTriangle, kSegments),
+      tb::techniques::latticeCoords(tb::techniques::PatchDomain::kQuad, kSegments)};
   int64_t points = 0;
   for (auto _ : state) {
     for (size_t p = 0; p < patches->patchCount(); ++p) {
-      for (const tb::DomainCoord& coord : lattice[int(patches->patchDomain(p))]) {
+      for (const tb::techniques::DomainCoord& coord : lattice[int(patches->patchDomain(p))]) {
         benchmark::DoNotOptimize(patches->evaluate(p, coord));
       }
       points += int64_t(lattice[int(patches->patchDomain(p))].size());
@@ -57,23 +58,24 @@ void evaluatePerPoint(benchmark::State& state, const tb::Technique* technique,
       benchmark::Counter(double(points), benchmark::Counter::kIsRate);
 }
 
-void evaluateBatched(benchmark::State& state, const tb::Technique* technique,
+void evaluateBatched(benchmark::State& state, const tb::techniques::Technique* technique,
                      const std::string& asset) {
-  const tb::BuiltSurface patches = tb::bench::defaultVariantPatches(state, *technique, asset);
+  const tb::techniques::BuiltSurface patches =
+      tb::bench::defaultVariantPatches(state, *technique, asset);
   if (!patches) return;
-  std::unique_ptr<tb::BatchPattern> patterns[2];  // by PatchDomain
+  std::unique_ptr<tb::techniques::BatchPattern> patterns[2];  // by PatchDomain
   double fmas_per_pass = 0, points_per_pass = 0;
   for (size_t p = 0; p < patches->patchCount(); ++p) {
-    const tb::PatchDomain domain = patches->patchDomain(p);
+    const tb::techniques::PatchDomain domain = patches->patchDomain(p);
     auto& pattern = patterns[int(domain)];
     if (!pattern) {
-      pattern = patches->makeBatchPattern(domain, tb::latticeCoords(domain, kSegments),
-                                          tb::BatchOutput::kPositionAndDerivatives);
+      pattern = patches->makeBatchPattern(domain, tb::techniques::latticeCoords(domain, kSegments),
+                                          tb::techniques::BatchOutput::kPositionAndDerivatives);
     }
     fmas_per_pass += pattern->multiplyAddsPerPoint() * double(pattern->pointCount());
     points_per_pass += double(pattern->pointCount());
   }
-  tb::BatchPoints out;
+  tb::techniques::BatchPoints out;
   int64_t points = 0;
   const double start_s = tb::bench::threadCpuSeconds();
   for (auto _ : state) {
@@ -94,31 +96,32 @@ void evaluateBatched(benchmark::State& state, const tb::Technique* technique,
     // and streamed its weights from memory would sit near 0.1.
     state.counters["fma_peak_fraction"] =
         double(points) * fma_per_point / cpu_s / tb::bench::fmaPeakPerSecond();
-    state.SetLabel(toString(tb::fastestBatchKernel()));
+    state.SetLabel(toString(tb::techniques::fastestBatchKernel()));
   } else {
     state.SetLabel("per-point default");
   }
 }
 
-std::vector<tb::Vec2d> quadLattice() {
-  std::vector<tb::Vec2d> uv;
-  for (const tb::DomainCoord& d : tb::latticeCoords(tb::PatchDomain::kQuad, kSegments)) {
+std::vector<tb::mesh::Vec2d> quadLattice() {
+  std::vector<tb::mesh::Vec2d> uv;
+  for (const tb::techniques::DomainCoord& d :
+       tb::techniques::latticeCoords(tb::techniques::PatchDomain::kQuad, kSegments)) {
     uv.push_back({d[0], d[1]});
   }
   return uv;
 }
 
-double diagonal(const tb::Mesh& mesh) {
-  tb::Vec3d lo = mesh.positions[0], hi = lo;
-  for (const tb::Vec3d& p : mesh.positions) {
+double diagonal(const tb::mesh::Mesh& mesh) {
+  tb::mesh::Vec3d lo = mesh.positions[0], hi = lo;
+  for (const tb::mesh::Vec3d& p : mesh.positions) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
   return length(hi - lo);
 }
 
-using OsdFactory = std::unique_ptr<tb::bench::OsdEvaluation> (*)(const tb::Mesh&,
-                                                                 const std::vector<tb::Vec2d>&);
+using OsdFactory = std::unique_ptr<tb::bench::OsdEvaluation> (*)(
+    const tb::mesh::Mesh&, const std::vector<tb::mesh::Vec2d>&);
 
 struct OsdSetup {
   const char* name;
@@ -127,26 +130,26 @@ struct OsdSetup {
 
 const OsdSetup kOsdSetups[] = {
     {"bfr_surface",
-     [](const tb::Mesh& m, const std::vector<tb::Vec2d>& uv) {
+     [](const tb::mesh::Mesh& m, const std::vector<tb::mesh::Vec2d>& uv) {
        return tb::bench::makeBfrSurfaces(m, uv, kOsdLevel);
      }},
     {"bfr_surface_default_levels",  // OpenSubdiv's defaults: ApproxLevelSmooth 2, sharp 6
-     [](const tb::Mesh& m, const std::vector<tb::Vec2d>& uv) {
+     [](const tb::mesh::Mesh& m, const std::vector<tb::mesh::Vec2d>& uv) {
        return tb::bench::makeBfrSurfaces(m, uv, 2);
      }},
     {"far_patch_map",
-     [](const tb::Mesh& m, const std::vector<tb::Vec2d>& uv) {
+     [](const tb::mesh::Mesh& m, const std::vector<tb::mesh::Vec2d>& uv) {
        return tb::bench::makePatchMap(m, uv, kOsdLevel);
      }},
     {"far_limit_stencils",
-     [](const tb::Mesh& m, const std::vector<tb::Vec2d>& uv) {
+     [](const tb::mesh::Mesh& m, const std::vector<tb::mesh::Vec2d>& uv) {
        return tb::bench::makeLimitStencils(m, uv, kOsdLevel);
      }},
 };
 
 void evaluateOpenSubdiv(benchmark::State& state, const OsdSetup& setup, const std::string& asset) {
-  const tb::Mesh mesh = tb::loadObjFile(tb::resolveAsset(asset).path);
-  const std::vector<tb::Vec2d> uv = quadLattice();
+  const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path);
+  const std::vector<tb::mesh::Vec2d> uv = quadLattice();
   std::unique_ptr<tb::bench::OsdEvaluation> evaluation, reference;
   try {
     evaluation = setup.make(mesh, uv);
@@ -185,7 +188,7 @@ void fmaPeak(benchmark::State& state) {
 
 bool quadOnlyCatmullClark(const std::string& asset) {
   if (asset.rfind("catmark_", 0) != 0) return false;
-  const tb::Mesh mesh = tb::loadObjFile(tb::resolveAsset(asset).path);
+  const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) != 4) return false;
   }
@@ -197,8 +200,9 @@ bool quadOnlyCatmullClark(const std::string& asset) {
 void registerBenchmarks() {
   benchmark::RegisterBenchmark("fma_peak", fmaPeak);
   for (const std::string asset : kAssets) {
-    for (const tb::Technique* technique : tb::TechniqueRegistry::instance().all()) {
-      if (technique->info().family != tb::TechniqueFamily::kSurface) continue;
+    for (const tb::techniques::Technique* technique :
+         tb::techniques::TechniqueRegistry::instance().all()) {
+      if (technique->info().family != tb::techniques::TechniqueFamily::kSurface) continue;
       const std::string id = technique->info().id;
       benchmark::RegisterBenchmark(("eval/" + id + "/" + asset).c_str(),
                                    [technique, asset](benchmark::State& state) {

@@ -48,11 +48,11 @@ tb::gpu::Context* benchContext(benchmark::State& state) {
 // context when the case is skipped (no device, the asset refused, no GPU program).
 struct GpuCase {
   tb::gpu::Context* context = nullptr;
-  tb::BuiltSurface patches;
+  tb::techniques::BuiltSurface patches;
   std::vector<tb::gpu::GpuPatchProgram> programs;
 };
 
-GpuCase prepareGpuCase(benchmark::State& state, const tb::Technique& technique,
+GpuCase prepareGpuCase(benchmark::State& state, const tb::techniques::Technique& technique,
                        const std::string& asset) {
   GpuCase gpu_case;
   tb::gpu::Context* context = benchContext(state);
@@ -92,12 +92,12 @@ NoCaptureRun runWithoutCapture(tb::gpu::Context& context,
   return run;
 }
 
-void drawAllPatches(benchmark::State& state, const tb::Technique* technique,
+void drawAllPatches(benchmark::State& state, const tb::techniques::Technique* technique,
                     const std::string& asset, float level) {
   GpuCase gpu_case = prepareGpuCase(state, *technique, asset);
   if (gpu_case.context == nullptr) return;
   tb::gpu::Context* context = gpu_case.context;
-  const tb::BuiltSurface& patches = gpu_case.patches;
+  const tb::techniques::BuiltSurface& patches = gpu_case.patches;
   const std::vector<tb::gpu::GpuPatchProgram>& programs = gpu_case.programs;
   const tb::tess::Levels levels{{level, level, level, level}, {level, level}};
   double invocations = 0, seconds = 0;
@@ -120,29 +120,30 @@ enum class CrackPath {
 };
 
 // The crack measure's GPU half against the same shaders without capture, in one run.
-void crackCapture(benchmark::State& state, const tb::Technique* technique, const std::string& asset,
-                  float level, CrackPath path) {
+void crackCapture(benchmark::State& state, const tb::techniques::Technique* technique,
+                  const std::string& asset, float level, CrackPath path) {
   GpuCase gpu_case = prepareGpuCase(state, *technique, asset);
   if (gpu_case.context == nullptr) return;
   tb::gpu::Context* context = gpu_case.context;
-  const tb::BuiltSurface& patches = gpu_case.patches;
+  const tb::techniques::BuiltSurface& patches = gpu_case.patches;
   const std::vector<tb::gpu::GpuPatchProgram>& programs = gpu_case.programs;
   const tb::tess::Levels uniform{{level, level, level, level}, {level, level}};
   const std::vector<tb::tess::Levels> levels(patches->patchCount(), uniform);
   const tb::tess::Spacing spacing = tb::tess::Spacing::kInteger;
-  const tb::PatchBoundaries boundaries = tb::patchBoundaries(*patches, spacing, levels);
-  tb::CrackCaptureOptions options;
+  const tb::measures::PatchBoundaries boundaries =
+      tb::measures::patchBoundaries(*patches, spacing, levels);
+  tb::measures::CrackCaptureOptions options;
   options.lower_inner_levels = path != CrackPath::kCaptureFullInner;
   double crack_invocations = 0, crack_seconds = 0, crack_fence_seconds = 0;
   NoCaptureRun bare;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     if (path == CrackPath::kWholeRow) {
-      const tb::CrackFigures f =
-          tb::measureCracks(*patches, spacing, levels, tb::CrackBackend::kGpu, context);
+      const tb::measures::CrackFigures f = tb::measures::measureCracks(
+          *patches, spacing, levels, tb::measures::CrackBackend::kGpu, context);
       if (!f.measured) state.SkipWithError(f.skipped_reason.c_str());
     } else {
-      const tb::BoundaryCapture capture = tb::captureBoundaryPositions(
+      const tb::measures::BoundaryCapture capture = tb::measures::captureBoundaryPositions(
           *patches, programs, boundaries, spacing, levels, *context, options);
       benchmark::DoNotOptimize(capture.positions.data());
       crack_fence_seconds += capture.submit_to_fence_s;
@@ -184,8 +185,9 @@ void crackCapture(benchmark::State& state, const tb::Technique* technique, const
 // without touching this file. Assets: smooth quads with extraordinary vertices (every
 // quad technique, ACC included), triangles, and a mesh of both.
 void registerTechniqueGpuBenchmarks() {
-  for (const tb::Technique* technique : tb::TechniqueRegistry::instance().all()) {
-    if (technique->info().family != tb::TechniqueFamily::kSurface) continue;
+  for (const tb::techniques::Technique* technique :
+       tb::techniques::TechniqueRegistry::instance().all()) {
+    if (technique->info().family != tb::techniques::TechniqueFamily::kSurface) continue;
     for (const char* asset : {"catmark_xord_interior", "loop_icosahedron", "catmark_pyramid"}) {
       for (float level : {4.0f, 16.0f, 64.0f}) {
         const std::string suffix =

@@ -23,17 +23,18 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const tb::Technique* technique = tb::TechniqueRegistry::instance().find(argv[1]);
+    const tb::techniques::Technique* technique =
+        tb::techniques::TechniqueRegistry::instance().find(argv[1]);
     if (technique == nullptr) throw std::runtime_error(std::string("unknown technique ") + argv[1]);
-    const tb::Mesh mesh = tb::loadObjFile(tb::resolveAsset(argv[2]).path);
-    tb::VariantInfo variant = technique->variants()[0];
-    for (const tb::VariantInfo& v : technique->variants()) {
+    const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(argv[2]).path);
+    tb::techniques::VariantInfo variant = technique->variants()[0];
+    for (const tb::techniques::VariantInfo& v : technique->variants()) {
       if (argc > 3 && v.name == argv[3]) variant = v;
     }
     std::vector<float> levels;
     for (int i = 4; i < argc; ++i) levels.push_back(std::stof(argv[i]));
     if (levels.empty()) levels = {8, 16};
-    const auto patches = buildSurface(*technique, mesh, variant);
+    const auto patches = tb::techniques::buildSurface(*technique, mesh, variant);
     // The first program only: callgrind_tes.sh takes the slope between exactly two dumps.
     // Patches that mix domains have one program per domain; the others are not counted.
     const auto programs = patches->gpuPrograms();

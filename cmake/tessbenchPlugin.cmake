@@ -4,7 +4,7 @@
 # is compiled to SPIR-V with glslangValidator (Vulkan 1.3, with tessbench's shaders/common on
 # the include path: patch_program_tcs.glsl, patch_program_tes.glsl, float_order.glsl) and
 # embedded; the generated header NAME_shaders.h defines
-#     namespace NAME { void addShaders(tb::PluginHost& host); }
+#     namespace NAME { void addShaders(tb::techniques::PluginHost& host); }
 # which registers each as "<ns>/<file name>" (ns defaults to NAME), the names the plug-in's
 # GpuPatchProgram uses. Call it from TB_PLUGIN. A GLSL error fails the build with file:line.
 function(tessbench_add_plugin name)
@@ -58,7 +58,7 @@ function(tessbench_add_plugin name)
 namespace @namespace@ {
 
 // Registers every shader of tessbench_add_plugin(@name@ SHADERS ...) with the host.
-inline void addShaders(tb::PluginHost& host) {
+inline void addShaders(tb::techniques::PluginHost& host) {
 @calls@  (void)host;
 }
 

@@ -6,13 +6,14 @@ namespace tb::ref {
 namespace {
 
 // Closest point of segment [a, b] as the weight t of b (a + t (b - a)).
-double segmentParameter(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
-  const Vec3d ab = b - a;
+double segmentParameter(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b) {
+  const mesh::Vec3d ab = b - a;
   const double len2 = dot(ab, ab);
   return len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
 }
 
-TrianglePoint closestOnEdges(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+TrianglePoint closestOnEdges(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b,
+                             const mesh::Vec3d& c) {
   const double t_ab = segmentParameter(p, a, b);
   const double t_bc = segmentParameter(p, b, c);
   const double t_ca = segmentParameter(p, c, a);
@@ -23,7 +24,7 @@ TrianglePoint closestOnEdges(const Vec3d& p, const Vec3d& a, const Vec3d& b, con
   };
   const TrianglePoint* best = &candidates[0];
   for (const TrianglePoint& candidate : candidates) {
-    const Vec3d d = candidate.point - p, e = best->point - p;
+    const mesh::Vec3d d = candidate.point - p, e = best->point - p;
     if (dot(d, d) < dot(e, e)) best = &candidate;
   }
   return *best;
@@ -31,19 +32,19 @@ TrianglePoint closestOnEdges(const Vec3d& p, const Vec3d& a, const Vec3d& b, con
 
 }  // namespace
 
-TrianglePoint closestPointOnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b,
-                                     const Vec3d& c) {
-  const Vec3d ab = b - a, ac = c - a;
-  const Vec3d normal = cross(ab, ac);
+TrianglePoint closestPointOnTriangle(const mesh::Vec3d& p, const mesh::Vec3d& a,
+                                     const mesh::Vec3d& b, const mesh::Vec3d& c) {
+  const mesh::Vec3d ab = b - a, ac = c - a;
+  const mesh::Vec3d normal = cross(ab, ac);
   if (!(dot(normal, normal) > 0)) return closestOnEdges(p, a, b, c);
 
   // Vertex region of a: p projects before a on both edges leaving it.
-  const Vec3d ap = p - a;
+  const mesh::Vec3d ap = p - a;
   const double ab_ap = dot(ab, ap), ac_ap = dot(ac, ap);
   if (ab_ap <= 0 && ac_ap <= 0) return {a, {1, 0, 0}};
 
   // Vertex region of b.
-  const Vec3d bp = p - b;
+  const mesh::Vec3d bp = p - b;
   const double ab_bp = dot(ab, bp), ac_bp = dot(ac, bp);
   if (ab_bp >= 0 && ac_bp <= ab_bp) return {b, {0, 1, 0}};
 
@@ -55,7 +56,7 @@ TrianglePoint closestPointOnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d
   }
 
   // Vertex region of c.
-  const Vec3d cp = p - c;
+  const mesh::Vec3d cp = p - c;
   const double ab_cp = dot(ab, cp), ac_cp = dot(ac, cp);
   if (ac_cp >= 0 && ab_cp <= ac_cp) return {c, {0, 0, 1}};
 

@@ -6,15 +6,15 @@
 namespace tb::ref {
 
 struct TrianglePoint {
-  Vec3d point;        // closest point of the triangle to the query
-  Vec3d barycentric;  // weights of corners a, b, c (sum 1, each in [0,1])
+  mesh::Vec3d point;        // closest point of the triangle to the query
+  mesh::Vec3d barycentric;  // weights of corners a, b, c (sum 1, each in [0,1])
 };
 
 // Ericson, Real-Time Collision Detection (2005), section 5.1.5: classify the query
 // against the Voronoi regions of the three vertices, then the three edges, and fall
 // through to the face, so only the region that holds the answer does any division.
 // Degenerate (zero-area) triangles are answered as the closest of their three edges.
-TrianglePoint closestPointOnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b,
-                                     const Vec3d& c);
+TrianglePoint closestPointOnTriangle(const mesh::Vec3d& p, const mesh::Vec3d& a,
+                                     const mesh::Vec3d& b, const mesh::Vec3d& c);
 
 }  // namespace tb::ref

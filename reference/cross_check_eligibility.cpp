@@ -28,10 +28,10 @@ struct VertexFeatures {
   double corner = 0;
 };
 
-std::vector<VertexFeatures> vertexFeatures(const Mesh& mesh, const Topology& topology) {
+std::vector<VertexFeatures> vertexFeatures(const mesh::Mesh& mesh, const mesh::Topology& topology) {
   std::vector<VertexFeatures> features(mesh.positions.size());
   const auto creases = creaseSharpnessByEdge(mesh);
-  for (const MeshEdge& edge : topology.edges) {
+  for (const mesh::MeshEdge& edge : topology.edges) {
     const auto tagged = creases.find({edge.v0, edge.v1});
     const double sharpness = edge.face_count == 1      ? kInfiniteSharpness
                              : tagged != creases.end() ? tagged->second
@@ -42,7 +42,7 @@ std::vector<VertexFeatures> vertexFeatures(const Mesh& mesh, const Topology& top
       if (sharpness < kInfiniteSharpness) features[v].semi_sharp.push_back(sharpness);
     }
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     if (corner.vertex < features.size()) features[corner.vertex].corner = corner.sharpness;
   }
   return features;
@@ -73,11 +73,11 @@ std::string vertexMismatch(const VertexFeatures& f) {
 
 }  // namespace
 
-std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme) {
+std::string crossCheckIneligibility(const mesh::Mesh& mesh, osd::Scheme scheme) {
   if (scheme == osd::Scheme::kLoop) return "Loop scheme: Embree subdivision is Catmull-Clark only";
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) > kEmbreeMaxFaceSize) {
-      return describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
+      return mesh::describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
              " corners; Embree takes at most 15";
     }
   }
@@ -87,19 +87,19 @@ std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme) {
   if (mesh.tags.crease_method == "chaikin") return "Chaikin creases (`t creasemethod chaikin`)";
   // Embree stops refining sharp features after 10 levels and approximates the rest;
   // an infinitely sharp crease is then off by ~4e-5 of the diagonal, a corner by ~5e-4.
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     if (crease.sharpness >= kInfiniteSharpness) {
       return "infinitely sharp crease (sharpness >= 10) on edge " + std::to_string(crease.v0) +
              "-" + std::to_string(crease.v1);
     }
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     if (corner.sharpness >= kInfiniteSharpness) {
       return "infinitely sharp corner (sharpness >= 10) at vertex " + std::to_string(corner.vertex);
     }
   }
 
-  const Topology topology = buildTopology(mesh);
+  const mesh::Topology topology = mesh::buildTopology(mesh);
   if (const size_t count = topology.nonManifoldEdgeCount(); count > 0) {
     return std::to_string(count) + " non-manifold edge(s)";
   }
@@ -110,7 +110,7 @@ std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme) {
     // Sdc's edge-only rule and Embree's SMOOTH_BOUNDARY agree on the boundary curve
     // but not inside the faces at a valence-2 corner (2e-3 of the diagonal measured
     // on catmark_edgecorner); boundaries without such corners agree.
-    if (topology.valence[v] == 2 && mesh.tags.boundary == BoundaryInterpolation::kEdgeOnly) {
+    if (topology.valence[v] == 2 && mesh.tags.boundary == mesh::BoundaryInterpolation::kEdgeOnly) {
       return "edge-only boundary interpolation at valence-2 corner " + std::to_string(v);
     }
   }

@@ -22,6 +22,6 @@ namespace tb::ref {
 //    more sharp edges (boundary edges included) meet, or a fractional corner less
 //    sharp than a crease or boundary edge at its vertex (cross_check_eligibility.cpp gives the
 //    measurements).
-std::string crossCheckIneligibility(const Mesh& mesh, osd::Scheme scheme);
+std::string crossCheckIneligibility(const mesh::Mesh& mesh, osd::Scheme scheme);
 
 }  // namespace tb::ref

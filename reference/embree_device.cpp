@@ -33,7 +33,7 @@ RTCDevice sharedEmbreeDevice() {
   static const RTCDevice device = [] {
     RTCDevice created = rtcNewDevice("verbose=0");
     if (!created) {
-      throw InputError(
+      throw mesh::InputError(
           "embree", "device",
           std::string("rtcNewDevice failed: ") + errorName(rtcGetDeviceError(nullptr)));
     }
@@ -45,11 +45,11 @@ RTCDevice sharedEmbreeDevice() {
 void throwOnEmbreeError(const std::string& source, const std::string& element) {
   const RTCError code = rtcGetDeviceError(sharedEmbreeDevice());
   if (code != RTC_ERROR_NONE) {
-    throw InputError(source, element, std::string("Embree failed: ") + errorName(code));
+    throw mesh::InputError(source, element, std::string("Embree failed: ") + errorName(code));
   }
 }
 
-void attachTriangleGeometry(RTCScene scene, std::span<const Vec3d> positions,
+void attachTriangleGeometry(RTCScene scene, std::span<const mesh::Vec3d> positions,
                             std::span<const std::array<uint32_t, 3>> triangles) {
   if (triangles.empty()) return;
   RTCGeometry geometry = rtcNewGeometry(sharedEmbreeDevice(), RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -24,7 +24,7 @@ void throwOnEmbreeError(const std::string& source, const std::string& element);
 // Adds one triangle geometry of `positions` (as floats, padded to 16 bytes as Embree loads
 // them) and `triangles` (position indices, already checked in range) to `scene`, which the
 // caller commits. Nothing is added for no triangles.
-void attachTriangleGeometry(RTCScene scene, std::span<const Vec3d> positions,
+void attachTriangleGeometry(RTCScene scene, std::span<const mesh::Vec3d> positions,
                             std::span<const std::array<uint32_t, 3>> triangles);
 
 }  // namespace tb::ref

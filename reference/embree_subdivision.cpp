@@ -24,24 +24,24 @@ float embreeWeight(double sharpness) {
                                          : float(sharpness);
 }
 
-RTCSubdivisionMode embreeMode(BoundaryInterpolation boundary) {
+RTCSubdivisionMode embreeMode(mesh::BoundaryInterpolation boundary) {
   switch (boundary) {
-    case BoundaryInterpolation::kNone:
+    case mesh::BoundaryInterpolation::kNone:
       return RTC_SUBDIVISION_MODE_NO_BOUNDARY;
-    case BoundaryInterpolation::kEdgeOnly:
+    case mesh::BoundaryInterpolation::kEdgeOnly:
       return RTC_SUBDIVISION_MODE_SMOOTH_BOUNDARY;
-    case BoundaryInterpolation::kEdgeAndCorner:
+    case mesh::BoundaryInterpolation::kEdgeAndCorner:
       return RTC_SUBDIVISION_MODE_PIN_CORNERS;
   }
   return RTC_SUBDIVISION_MODE_PIN_CORNERS;
 }
 
-void checkRepresentable(const Mesh& mesh) {
+void checkRepresentable(const mesh::Mesh& mesh) {
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) < kMinFaceSize || mesh.faceSize(f) > kMaxFaceSize) {
-      throw InputError(mesh.source, describeFace(mesh, f),
-                       "Embree subdivision faces have 3 to 15 corners; this one has " +
-                           std::to_string(mesh.faceSize(f)));
+      throw mesh::InputError(mesh.source, mesh::describeFace(mesh, f),
+                             "Embree subdivision faces have 3 to 15 corners; this one has " +
+                                 std::to_string(mesh.faceSize(f)));
     }
   }
   checkFinitePositions(mesh.positions, mesh.source);
@@ -57,7 +57,7 @@ T* newBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, size_t 
 
 // Embree takes each unoriented crease edge once; a repeated tag keeps the last
 // sharpness, as OpenSubdiv's Far does.
-void setCreases(RTCGeometry geometry, const Mesh& mesh) {
+void setCreases(RTCGeometry geometry, const mesh::Mesh& mesh) {
   const auto edges = creaseSharpnessByEdge(mesh);
   if (!edges.empty()) {
     auto* pairs = newBuffer<uint32_t>(geometry, RTC_BUFFER_TYPE_EDGE_CREASE_INDEX, RTC_FORMAT_UINT2,
@@ -72,7 +72,7 @@ void setCreases(RTCGeometry geometry, const Mesh& mesh) {
     }
   }
   std::map<uint32_t, double> corners;
-  for (const Corner& c : mesh.tags.corners) corners[c.vertex] = c.sharpness;
+  for (const mesh::Corner& c : mesh.tags.corners) corners[c.vertex] = c.sharpness;
   if (!corners.empty()) {
     auto* vertices = newBuffer<uint32_t>(geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX,
                                          RTC_FORMAT_UINT, corners.size());
@@ -89,7 +89,7 @@ void setCreases(RTCGeometry geometry, const Mesh& mesh) {
 }  // namespace
 
 struct EmbreeSubdivision::Impl {
-  Mesh mesh;  // kept for face sizes and error messages
+  mesh::Mesh mesh;  // kept for face sizes and error messages
   RTCGeometry geometry = nullptr;
   RTCScene scene = nullptr;
 
@@ -99,7 +99,7 @@ struct EmbreeSubdivision::Impl {
   }
 };
 
-EmbreeSubdivision::EmbreeSubdivision(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+EmbreeSubdivision::EmbreeSubdivision(const mesh::Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   checkRepresentable(mesh);
   impl_->mesh = mesh;
   const RTCDevice device = sharedEmbreeDevice();
@@ -176,11 +176,11 @@ LimitPoint EmbreeSubdivision::evaluate(size_t face, double u, double v) const {
   const int size = int(impl_->mesh.faceSize(face));
   const auto& holes = impl_->mesh.tags.holes;
   if (std::find(holes.begin(), holes.end(), uint32_t(face)) != holes.end()) {
-    throw InputError(impl_->mesh.source, describeFace(impl_->mesh, face),
-                     "face is tagged as a hole and has no limit surface");
+    throw mesh::InputError(impl_->mesh.source, mesh::describeFace(impl_->mesh, face),
+                           "face is tagged as a hole and has no limit surface");
   }
   checkInsideFaceDomain(impl_->mesh, face, osd::Scheme::kCatmullClark, {u, v});
-  const Vec2d native = faceUvToEmbreeUv(size, {u, v});
+  const mesh::Vec2d native = faceUvToEmbreeUv(size, {u, v});
   LimitPoint point = evaluateNative(face, float(native.x), float(native.y));
   if (size != 4) {
     point.du = point.du * (1.0 / kSubFaceSpan);

@@ -26,7 +26,7 @@ class EmbreeSubdivision {
   // Throws InputError for meshes Embree cannot hold at all (a face with fewer than 3
   // or more than 15 corners, a non-finite coordinate). Meshes that are representable
   // but not eligible for the cross-check are accepted; see crossCheckIneligibility().
-  explicit EmbreeSubdivision(const Mesh& mesh);
+  explicit EmbreeSubdivision(const mesh::Mesh& mesh);
   ~EmbreeSubdivision();
   EmbreeSubdivision(EmbreeSubdivision&&) noexcept;
   EmbreeSubdivision& operator=(EmbreeSubdivision&&) noexcept;

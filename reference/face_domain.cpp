@@ -23,7 +23,7 @@ int subFaceCount(osd::Scheme scheme, int face_size) {
   return hasSubFaces(scheme, face_size) ? face_size : 1;
 }
 
-Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, Vec2d st) {
+mesh::Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, mesh::Vec2d st) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.HasSubFaces()) return st;
   const double in[2] = {st.x, st.y};
@@ -32,7 +32,7 @@ Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, Vec2d st)
   return {out[0], out[1]};
 }
 
-SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, Vec2d uv) {
+SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, mesh::Vec2d uv) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.HasSubFaces()) return {0, uv};
   const double in[2] = {uv.x, uv.y};
@@ -41,7 +41,7 @@ SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, Vec2d uv) {
   return {sub_face, {out[0], out[1]}};
 }
 
-bool insideFaceDomain(osd::Scheme scheme, int face_size, Vec2d uv, double slack) {
+bool insideFaceDomain(osd::Scheme scheme, int face_size, mesh::Vec2d uv, double slack) {
   const Bfr::Parameterization param = parameterization(scheme, face_size);
   if (!param.IsValid()) return false;
   switch (param.GetType()) {
@@ -59,7 +59,7 @@ bool insideFaceDomain(osd::Scheme scheme, int face_size, Vec2d uv, double slack)
   return false;
 }
 
-Vec2d faceUvToEmbreeUv(int face_size, Vec2d uv) {
+mesh::Vec2d faceUvToEmbreeUv(int face_size, mesh::Vec2d uv) {
   if (face_size == 4) return uv;
   const SubFacePoint sub = faceUvToSubFace(osd::Scheme::kCatmullClark, face_size, uv);
   return {2.0 * (sub.sub_face % 4) + sub.st.x + 0.5, 2.0 * (sub.sub_face / 4) + sub.st.y + 0.5};

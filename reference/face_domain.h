@@ -25,7 +25,7 @@ inline constexpr double kSubFaceSpan = 0.5;
 
 struct SubFacePoint {
   int sub_face = 0;  // 0 for faces without sub-faces
-  Vec2d st;          // normalised sub-face coordinates, [0,1]^2
+  mesh::Vec2d st;    // normalised sub-face coordinates, [0,1]^2
 };
 
 // True when a face of this size is split into quad sub-faces (Catmull-Clark, N != 4).
@@ -35,19 +35,19 @@ bool hasSubFaces(osd::Scheme scheme, int face_size);
 int subFaceCount(osd::Scheme scheme, int face_size);
 
 // Face (u,v) of normalised sub-face coordinates; identity on faces without sub-faces.
-Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, Vec2d st);
+mesh::Vec2d subFaceToFaceUv(osd::Scheme scheme, int face_size, int sub_face, mesh::Vec2d st);
 
 // Inverse of subFaceToFaceUv; points on a tile edge go to the lower sub-face index
 // OpenSubdiv picks.
-SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, Vec2d uv);
+SubFacePoint faceUvToSubFace(osd::Scheme scheme, int face_size, mesh::Vec2d uv);
 
 // True when uv lies in the face's domain, up to `slack` in parameter units.
-bool insideFaceDomain(osd::Scheme scheme, int face_size, Vec2d uv, double slack = 1e-12);
+bool insideFaceDomain(osd::Scheme scheme, int face_size, mesh::Vec2d uv, double slack = 1e-12);
 
 // Embree's subdivision-geometry (U,V) for a Catmull-Clark face (u,v): the identity on
 // quads; on other N-gons sub-face k at (s,t) is U = 2 (k % 4) + s + 0.5,
 // V = 2 (k / 4) + t + 0.5 (rtcInterpolate's sub-patch encoding). Embree's derivatives
 // are per unit of (s,t), so dP/du = dP/dU / kSubFaceSpan there.
-Vec2d faceUvToEmbreeUv(int face_size, Vec2d uv);
+mesh::Vec2d faceUvToEmbreeUv(int face_size, mesh::Vec2d uv);
 
 }  // namespace tb::ref

@@ -14,25 +14,26 @@ namespace {
 
 struct TriangleSums {
   double max = 0;
-  Vec3d max_at;
+  mesh::Vec3d max_at;
   double sum_d = 0;   // sum of centroid distances (each weighs area / m^2)
   double sum_d2 = 0;  // sum of squared centroid distances
   double area = 0;
 };
 
-Vec3d barycentricPoint(const Vec3d& a, const Vec3d& b, const Vec3d& c, double wb, double wc) {
+mesh::Vec3d barycentricPoint(const mesh::Vec3d& a, const mesh::Vec3d& b, const mesh::Vec3d& c,
+                             double wb, double wc) {
   return a * (1 - wb - wc) + b * wb + c * wc;
 }
 
 // `hint`: the target triangle closest to the previous sample (speeds the search, never
 // changes an answer); updated to this triangle's last.
-TriangleSums sampleTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c,
+TriangleSums sampleTriangle(const mesh::Vec3d& a, const mesh::Vec3d& b, const mesh::Vec3d& c,
                             const TriangleDistanceField& target, int m, uint32_t* hint) {
   TriangleSums sums;
   sums.area = 0.5 * length(cross(b - a, c - a));
   const double inv_m = 1.0 / m;
   bool first = true;
-  auto consider = [&](const Vec3d& p) {
+  auto consider = [&](const mesh::Vec3d& p) {
     const ClosestPoint closest = target.closest(p, *hint);
     *hint = closest.triangle;
     const double d = closest.distance;
@@ -69,9 +70,9 @@ TriangleSums sampleTriangle(const Vec3d& a, const Vec3d& b, const Vec3d& c,
 DirectedDistance directedDistance(const TriangleMeshRef& source,
                                   const TriangleDistanceField& target, int lattice_level) {
   if (lattice_level < 1 || lattice_level > kMaxLatticeLevel) {
-    throw InputError("hausdorff", "option 'lattice_level'",
-                     "level " + std::to_string(lattice_level) + " is outside [1, " +
-                         std::to_string(kMaxLatticeLevel) + "]");
+    throw mesh::InputError("hausdorff", "option 'lattice_level'",
+                           "level " + std::to_string(lattice_level) + " is outside [1, " +
+                               std::to_string(kMaxLatticeLevel) + "]");
   }
   const int m = lattice_level;
   std::vector<TriangleSums> per_triangle(source.triangles.size());

@@ -21,7 +21,7 @@ inline constexpr int kMaxLatticeLevel = 256;
 
 struct DirectedDistance {
   double max = 0;      // world units: largest sample distance from the source to the target
-  Vec3d max_at;        // the source sample where it occurs
+  mesh::Vec3d max_at;  // the source sample where it occurs
   double rms = 0;      // world units: area-weighted root mean square distance
   double mean = 0;     // world units: area-weighted mean distance
   double area = 0;     // world units^2: area of the source

@@ -23,7 +23,7 @@ constexpr double kDegenerateSine = 1e-12;
 // normal is taken this far (in parameter units) towards the face centre.
 constexpr double kNormalNudge = 1e-7;
 
-Vec3d toVec(const double p[3]) { return {p[0], p[1], p[2]}; }
+mesh::Vec3d toVec(const double p[3]) { return {p[0], p[1], p[2]}; }
 
 }  // namespace
 
@@ -33,7 +33,7 @@ struct LimitFace::Impl {
   Bfr::Surface<double> patch;
   std::vector<double> patch_points;  // xyz per patch point
 
-  void evaluateRaw(double u, double v, Vec3d* p, Vec3d* du, Vec3d* dv) const {
+  void evaluateRaw(double u, double v, mesh::Vec3d* p, mesh::Vec3d* du, mesh::Vec3d* dv) const {
     const double uv[2] = {u, v};
     double pp[3], pu[3], pv[3];
     patch.Evaluate(uv, patch_points.data(), Bfr::Surface<double>::PointDescriptor(3), pp, pu, pv);
@@ -42,8 +42,8 @@ struct LimitFace::Impl {
     *dv = toVec(pv);
   }
 
-  Vec3d normalAt(double u, double v, const Vec3d& du, const Vec3d& dv) const {
-    const Vec3d n = cross(du, dv);
+  mesh::Vec3d normalAt(double u, double v, const mesh::Vec3d& du, const mesh::Vec3d& dv) const {
+    const mesh::Vec3d n = cross(du, dv);
     if (length(n) > kDegenerateSine * length(du) * length(dv)) return normalize(n);
     double centre[2];
     patch.GetParameterization().GetCenterCoord(centre);
@@ -51,12 +51,12 @@ struct LimitFace::Impl {
     // nudge towards the centre of this point's own sub-face.
     if (patch.GetParameterization().HasSubFaces()) {
       const SubFacePoint sub = faceUvToSubFace(surface->scheme, patch.GetFaceSize(), {u, v});
-      const Vec2d c =
+      const mesh::Vec2d c =
           subFaceToFaceUv(surface->scheme, patch.GetFaceSize(), sub.sub_face, {0.5, 0.5});
       centre[0] = c.x;
       centre[1] = c.y;
     }
-    Vec3d p, nudged_du, nudged_dv;
+    mesh::Vec3d p, nudged_du, nudged_dv;
     evaluateRaw(u + kNormalNudge * (centre[0] - u), v + kNormalNudge * (centre[1] - v), &p,
                 &nudged_du, &nudged_dv);
     return normalize(cross(nudged_du, nudged_dv));
@@ -69,8 +69,8 @@ LimitFace LimitSurface::face(size_t face) const {
   prepared->surface = impl_.get();
   prepared->face = face;
   if (!impl_->factory->InitVertexSurface<double>(int(face), &prepared->patch)) {
-    throw InputError(impl_->mesh.source, describeFace(impl_->mesh, face),
-                     "OpenSubdiv Bfr could not build a limit patch for this face");
+    throw mesh::InputError(impl_->mesh.source, mesh::describeFace(impl_->mesh, face),
+                           "OpenSubdiv Bfr could not build a limit patch for this face");
   }
   const Bfr::Surface<double>::PointDescriptor xyz(3);
   prepared->patch_points.resize(size_t(prepared->patch.GetNumPatchPoints()) * 3);
@@ -100,7 +100,7 @@ LimitPoint LimitFace::evaluate(double u, double v) const {
 }
 
 LimitPoint LimitFace::evaluateSubFace(int sub_face, double s, double t) const {
-  const Vec2d uv = subFaceToFaceUv(impl_->surface->scheme, faceSize(), sub_face, {s, t});
+  const mesh::Vec2d uv = subFaceToFaceUv(impl_->surface->scheme, faceSize(), sub_face, {s, t});
   return evaluate(uv.x, uv.y);
 }
 

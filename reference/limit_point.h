@@ -7,13 +7,13 @@
 namespace tb::ref {
 
 struct LimitPoint {
-  Vec3d position;  // world units
-  Vec3d du;        // dP/du: world units per unit of the face's u (face_domain.h)
-  Vec3d dv;        // dP/dv: world units per unit of the face's v
+  mesh::Vec3d position;  // world units
+  mesh::Vec3d du;        // dP/du: world units per unit of the face's u (face_domain.h)
+  mesh::Vec3d dv;        // dP/dv: world units per unit of the face's v
   // Unit length, along du x dv (outward for counter-clockwise faces). At a cone point
   // (the vertex of an infinitely sharp corner) the surface has no tangent plane and
   // the normal is only what the derivatives there give.
-  Vec3d normal;
+  mesh::Vec3d normal;
 };
 
 }  // namespace tb::ref

@@ -13,12 +13,12 @@ namespace {
 
 namespace Bfr = OpenSubdiv::Bfr;
 
-void checkApproxLevel(const Mesh& mesh, const char* option, int level) {
+void checkApproxLevel(const mesh::Mesh& mesh, const char* option, int level) {
   if (level < 1 || level > kMaxApproxLevel) {
-    throw InputError(mesh.source, std::string("option '") + option + "'",
-                     "level " + std::to_string(level) + " is outside [1, " +
-                         std::to_string(kMaxApproxLevel) +
-                         "]: deeper levels crash or return garbage in OpenSubdiv 3.5.0");
+    throw mesh::InputError(mesh.source, std::string("option '") + option + "'",
+                           "level " + std::to_string(level) + " is outside [1, " +
+                               std::to_string(kMaxApproxLevel) +
+                               "]: deeper levels crash or return garbage in OpenSubdiv 3.5.0");
   }
 }
 
@@ -27,13 +27,14 @@ void checkApproxLevel(const Mesh& mesh, const char* option, int level) {
 void LimitSurface::Impl::checkFace(size_t face) const {
   checkFaceIndex(mesh, face);
   if (factory->FaceHasLimitSurface(int(face))) return;
-  throw InputError(mesh.source, describeFace(mesh, face),
-                   is_hole[face] ? "face is tagged as a hole and has no limit surface"
-                                 : "face lies on a boundary and `interpolateboundary` is none, "
-                                   "so it has no limit surface");
+  throw mesh::InputError(mesh.source, mesh::describeFace(mesh, face),
+                         is_hole[face]
+                             ? "face is tagged as a hole and has no limit surface"
+                             : "face lies on a boundary and `interpolateboundary` is none, "
+                               "so it has no limit surface");
 }
 
-LimitSurface::LimitSurface(const Mesh& mesh, osd::Scheme scheme, const LimitOptions& options)
+LimitSurface::LimitSurface(const mesh::Mesh& mesh, osd::Scheme scheme, const LimitOptions& options)
     : impl_(std::make_unique<Impl>()) {
   checkApproxLevel(mesh, "approx_level_smooth", options.approx_level_smooth);
   checkApproxLevel(mesh, "approx_level_sharp", options.approx_level_sharp);
@@ -44,7 +45,7 @@ LimitSurface::LimitSurface(const Mesh& mesh, osd::Scheme scheme, const LimitOpti
   impl.scheme = scheme;
   impl.refiner = osd::buildTopologyRefiner(mesh, scheme);
   impl.positions.reserve(mesh.positions.size() * 3);
-  for (const Vec3d& p : mesh.positions)
+  for (const mesh::Vec3d& p : mesh.positions)
     impl.positions.insert(impl.positions.end(), {p.x, p.y, p.z});
   impl.is_hole.assign(mesh.faceCount(), false);
   for (uint32_t hole : mesh.tags.holes) impl.is_hole[hole] = true;
@@ -60,7 +61,7 @@ LimitSurface::LimitSurface(LimitSurface&&) noexcept = default;
 LimitSurface& LimitSurface::operator=(LimitSurface&&) noexcept = default;
 
 osd::Scheme LimitSurface::scheme() const { return impl_->scheme; }
-const Mesh& LimitSurface::mesh() const { return impl_->mesh; }
+const mesh::Mesh& LimitSurface::mesh() const { return impl_->mesh; }
 size_t LimitSurface::faceCount() const { return impl_->mesh.faceCount(); }
 
 bool LimitSurface::hasLimitSurface(size_t face) const {
@@ -74,7 +75,7 @@ LimitPoint LimitSurface::evaluate(size_t face, double u, double v) const {
   return this->face(face).evaluate(u, v);
 }
 
-void LimitSurface::evaluate(size_t face, std::span<const Vec2d> uv,
+void LimitSurface::evaluate(size_t face, std::span<const mesh::Vec2d> uv,
                             std::span<LimitPoint> out) const {
   assert(uv.size() == out.size());
   const LimitFace prepared = this->face(face);

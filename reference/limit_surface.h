@@ -41,13 +41,13 @@ class LimitSurface {
   // (naming the option), a non-finite coordinate, and any mesh the reference cannot
   // represent (see osd::buildTopologyRefiner: e.g. a non-triangle face for Loop, or topology
   // OpenSubdiv rejects).
-  LimitSurface(const Mesh& mesh, osd::Scheme scheme, const LimitOptions& options = {});
+  LimitSurface(const mesh::Mesh& mesh, osd::Scheme scheme, const LimitOptions& options = {});
   ~LimitSurface();
   LimitSurface(LimitSurface&&) noexcept;
   LimitSurface& operator=(LimitSurface&&) noexcept;
 
   osd::Scheme scheme() const;
-  const Mesh& mesh() const;  // the control mesh as copied at construction
+  const mesh::Mesh& mesh() const;  // the control mesh as copied at construction
   size_t faceCount() const;
 
   // False for hole faces, and for faces on a boundary when `interpolateboundary` is
@@ -65,7 +65,7 @@ class LimitSurface {
   // the face's domain.
   LimitPoint evaluate(size_t face, double u, double v) const;
   // Many points of one face; out.size() must equal uv.size().
-  void evaluate(size_t face, std::span<const Vec2d> uv, std::span<LimitPoint> out) const;
+  void evaluate(size_t face, std::span<const mesh::Vec2d> uv, std::span<LimitPoint> out) const;
 
   struct Impl;
 

@@ -22,7 +22,7 @@ using ThreadedSurfaceCache = OpenSubdiv::Bfr::SurfaceFactoryCacheThreaded<
 using ThreadedSurfaceFactory = OpenSubdiv::Bfr::RefinerSurfaceFactory<ThreadedSurfaceCache>;
 
 struct LimitSurface::Impl {
-  Mesh mesh;
+  mesh::Mesh mesh;
   osd::Scheme scheme = osd::Scheme::kCatmullClark;
   std::vector<double> positions;  // xyz per vertex, Bfr's contiguous mesh points
   std::vector<bool> is_hole;      // per face

@@ -45,7 +45,7 @@ class FaceWriter {
              size_t first_triangle)
       : out_(out), face_(face), vertex_(first_vertex), triangle_(first_triangle) {}
 
-  uint32_t vertex(Vec2d uv) {
+  uint32_t vertex(mesh::Vec2d uv) {
     const LimitPoint point = face_.evaluate(uv.x, uv.y);
     out_->positions[vertex_] = point.position;
     out_->normals[vertex_] = point.normal;
@@ -103,9 +103,9 @@ void writeTriangleGrid(FaceWriter* writer, int n) {
 
 LimitTessellation tessellateLimit(const LimitSurface& surface, int rate) {
   if (rate < 1 || rate > kMaxTessellationRate) {
-    throw InputError(surface.mesh().source, "option 'rate'",
-                     "tessellation rate " + std::to_string(rate) + " is outside [1, " +
-                         std::to_string(kMaxTessellationRate) + "]");
+    throw mesh::InputError(surface.mesh().source, "option 'rate'",
+                           "tessellation rate " + std::to_string(rate) + " is outside [1, " +
+                               std::to_string(kMaxTessellationRate) + "]");
   }
   const size_t faces = surface.faceCount();
   std::vector<FaceGrid> grids(faces);

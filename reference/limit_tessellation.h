@@ -16,12 +16,12 @@ namespace tb::ref {
 inline constexpr int kMaxTessellationRate = 1024;
 
 struct LimitTessellation {
-  std::vector<Vec3d> positions;         // limit points, world units
-  std::vector<Vec3d> normals;           // unit limit normals
+  std::vector<mesh::Vec3d> positions;   // limit points, world units
+  std::vector<mesh::Vec3d> normals;     // unit limit normals
   std::vector<Triangle> triangles;      // counter-clockwise, as their control faces
   std::vector<uint32_t> triangle_face;  // control face of each triangle
   std::vector<uint32_t> vertex_face;    // control face each vertex was evaluated on
-  std::vector<Vec2d> vertex_uv;         // its face (u,v) (face_domain.h)
+  std::vector<mesh::Vec2d> vertex_uv;   // its face (u,v) (face_domain.h)
   size_t faces_skipped = 0;             // faces without a limit surface (holes, ...)
 
   TriangleMeshRef view() const { return {positions, triangles}; }

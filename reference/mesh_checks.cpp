@@ -8,11 +8,11 @@
 
 namespace tb::ref {
 
-void checkFinitePositions(std::span<const Vec3d> positions, const std::string& source) {
+void checkFinitePositions(std::span<const mesh::Vec3d> positions, const std::string& source) {
   for (size_t i = 0; i < positions.size(); ++i) {
-    const Vec3d& p = positions[i];
+    const mesh::Vec3d& p = positions[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-      throw InputError(source, "vertex " + std::to_string(i), "coordinate is not finite");
+      throw mesh::InputError(source, "vertex " + std::to_string(i), "coordinate is not finite");
     }
   }
 }
@@ -22,32 +22,33 @@ void checkTriangleCorners(std::span<const std::array<uint32_t, 3>> triangles, si
   for (size_t t = 0; t < triangles.size(); ++t) {
     for (uint32_t corner : triangles[t]) {
       if (corner >= vertex_count) {
-        throw InputError(source, "triangle " + std::to_string(t),
-                         "corner index " + std::to_string(corner) + " is out of range (" +
-                             std::to_string(vertex_count) + " vertices)");
+        throw mesh::InputError(source, "triangle " + std::to_string(t),
+                               "corner index " + std::to_string(corner) + " is out of range (" +
+                                   std::to_string(vertex_count) + " vertices)");
       }
     }
   }
 }
 
-void checkFaceIndex(const Mesh& mesh, size_t face) {
+void checkFaceIndex(const mesh::Mesh& mesh, size_t face) {
   if (face >= mesh.faceCount()) {
-    throw InputError(mesh.source, "face " + std::to_string(face),
-                     "index out of range (" + std::to_string(mesh.faceCount()) + " faces)");
+    throw mesh::InputError(mesh.source, "face " + std::to_string(face),
+                           "index out of range (" + std::to_string(mesh.faceCount()) + " faces)");
   }
 }
 
-void checkInsideFaceDomain(const Mesh& mesh, size_t face, osd::Scheme scheme, Vec2d uv) {
+void checkInsideFaceDomain(const mesh::Mesh& mesh, size_t face, osd::Scheme scheme,
+                           mesh::Vec2d uv) {
   if (!insideFaceDomain(scheme, int(mesh.faceSize(face)), uv)) {
-    throw InputError(mesh.source, describeFace(mesh, face),
-                     "(u, v) = (" + std::to_string(uv.x) + ", " + std::to_string(uv.y) +
-                         ") is outside the face's parameter domain");
+    throw mesh::InputError(mesh.source, mesh::describeFace(mesh, face),
+                           "(u, v) = (" + std::to_string(uv.x) + ", " + std::to_string(uv.y) +
+                               ") is outside the face's parameter domain");
   }
 }
 
-std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const Mesh& mesh) {
+std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const mesh::Mesh& mesh) {
   std::map<std::pair<uint32_t, uint32_t>, double> edges;
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     edges[std::minmax(crease.v0, crease.v1)] = crease.sharpness;
   }
   return edges;

@@ -18,7 +18,7 @@ namespace tb::ref {
 inline constexpr double kInfiniteSharpness = 10.0;
 
 // Throws InputError(source, "vertex i", ...) for the first non-finite coordinate.
-void checkFinitePositions(std::span<const Vec3d> positions, const std::string& source);
+void checkFinitePositions(std::span<const mesh::Vec3d> positions, const std::string& source);
 
 // Throws InputError(source, "triangle t", ...) for the first corner index that is not below
 // `vertex_count`.
@@ -26,13 +26,13 @@ void checkTriangleCorners(std::span<const std::array<uint32_t, 3>> triangles, si
                           const std::string& source);
 
 // Throws InputError(mesh.source, "face i", "index out of range ...").
-void checkFaceIndex(const Mesh& mesh, size_t face);
+void checkFaceIndex(const mesh::Mesh& mesh, size_t face);
 
 // Throws InputError naming the face when (u,v) is outside its domain (face_domain.h).
-void checkInsideFaceDomain(const Mesh& mesh, size_t face, osd::Scheme scheme, Vec2d uv);
+void checkInsideFaceDomain(const mesh::Mesh& mesh, size_t face, osd::Scheme scheme, mesh::Vec2d uv);
 
 // Crease sharpness per unoriented edge (v0 < v1); a repeated tag keeps the last
 // value, as OpenSubdiv's Far does.
-std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const Mesh& mesh);
+std::map<std::pair<uint32_t, uint32_t>, double> creaseSharpnessByEdge(const mesh::Mesh& mesh);
 
 }  // namespace tb::ref

@@ -19,7 +19,7 @@ namespace {
 // that) never drops a triangle that could hold the double minimum.
 constexpr double kRadiusPad = 0x1p-18;
 
-double maxAbsCoordinate(const Vec3d& p) {
+double maxAbsCoordinate(const mesh::Vec3d& p) {
   return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 }
 
@@ -28,10 +28,10 @@ double maxAbsCoordinate(const Vec3d& p) {
 // A triangle's bounding box in double: the distance to it bounds the distance to the
 // triangle from below, and costs a fraction of the exact closest point.
 struct TriangleBox {
-  Vec3d lo, hi;
+  mesh::Vec3d lo, hi;
 };
 
-double squaredDistanceToBox(const Vec3d& p, const TriangleBox& box) {
+double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box) {
   double sum = 0;
   for (int k = 0; k < 3; ++k) {
     const double below = box.lo[k] - p[k], above = p[k] - box.hi[k];
@@ -42,7 +42,7 @@ double squaredDistanceToBox(const Vec3d& p, const TriangleBox& box) {
 }
 
 struct TriangleDistanceField::Impl {
-  std::vector<Vec3d> positions;
+  std::vector<mesh::Vec3d> positions;
   std::vector<Triangle> triangles;
   std::vector<TriangleBox> boxes;  // per triangle
   double max_abs = 0;  // largest |coordinate| of the mesh
@@ -56,10 +56,10 @@ struct TriangleDistanceField::Impl {
 namespace {
 
 struct QueryState {
-  const std::vector<Vec3d>* positions;
+  const std::vector<mesh::Vec3d>* positions;
   const std::vector<Triangle>* triangles;
   const std::vector<TriangleBox>* boxes;
-  Vec3d query;
+  mesh::Vec3d query;
   double pad;
   ClosestPoint best;
 };
@@ -74,7 +74,7 @@ bool visitTriangle(RTCPointQueryFunctionArguments* args) {
   const double best_distance = state->best.distance;
   if (box_squared > best_distance * best_distance * (1 + 1e-12)) return false;
   const Triangle& tri = (*state->triangles)[id];
-  const std::vector<Vec3d>& p = *state->positions;
+  const std::vector<mesh::Vec3d>& p = *state->positions;
   const TrianglePoint hit = closestPointOnTriangle(state->query, p[tri[0]], p[tri[1]], p[tri[2]]);
   const double distance = length(hit.point - state->query);
   ClosestPoint& best = state->best;
@@ -90,12 +90,13 @@ bool visitTriangle(RTCPointQueryFunctionArguments* args) {
 TriangleDistanceField::TriangleDistanceField(const TriangleMeshRef& mesh, const std::string& source)
     : TriangleDistanceField(mesh.positions, mesh.triangles, source) {}
 
-TriangleDistanceField::TriangleDistanceField(std::span<const Vec3d> positions,
+TriangleDistanceField::TriangleDistanceField(std::span<const mesh::Vec3d> positions,
                                              std::span<const Triangle> triangles,
                                              const std::string& source)
     : impl_(std::make_unique<Impl>()) {
   checkFinitePositions(positions, source);
-  for (const Vec3d& q : positions) impl_->max_abs = std::max(impl_->max_abs, maxAbsCoordinate(q));
+  for (const mesh::Vec3d& q : positions)
+    impl_->max_abs = std::max(impl_->max_abs, maxAbsCoordinate(q));
   checkTriangleCorners(triangles, positions.size(), source);
   impl_->positions.assign(positions.begin(), positions.end());
   impl_->triangles.assign(triangles.begin(), triangles.end());
@@ -123,11 +124,11 @@ TriangleDistanceField& TriangleDistanceField::operator=(TriangleDistanceField&&)
 
 size_t TriangleDistanceField::triangleCount() const { return impl_->triangles.size(); }
 
-ClosestPoint TriangleDistanceField::closest(const Vec3d& query) const {
+ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query) const {
   return closest(query, kNoTriangle);
 }
 
-ClosestPoint TriangleDistanceField::closest(const Vec3d& query, uint32_t hint) const {
+ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t hint) const {
   QueryState state{&impl_->positions,
                    &impl_->triangles,
                    &impl_->boxes,
@@ -146,7 +147,7 @@ ClosestPoint TriangleDistanceField::closest(const Vec3d& query, uint32_t hint) c
     // visits it again inside the padded radius, so the answer is found exactly as
     // without a hint, only with fewer BVH nodes opened.
     const Triangle& tri = impl_->triangles[hint];
-    const std::vector<Vec3d>& p = impl_->positions;
+    const std::vector<mesh::Vec3d>& p = impl_->positions;
     const double distance =
         length(closestPointOnTriangle(query, p[tri[0]], p[tri[1]], p[tri[2]]).point - query);
     point_query.radius =

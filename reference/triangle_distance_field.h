@@ -20,16 +20,16 @@ inline constexpr uint32_t kNoTriangle = std::numeric_limits<uint32_t>::max();
 
 struct ClosestPoint {
   double distance = std::numeric_limits<double>::infinity();  // world units; inf: no triangles
-  Vec3d point;                                                // closest point on the mesh
+  mesh::Vec3d point;                                          // closest point on the mesh
   uint32_t triangle = kNoTriangle;  // its triangle (the lowest index on ties)
-  Vec3d barycentric;                // its weights of the triangle's corners 0, 1, 2
+  mesh::Vec3d barycentric;          // its weights of the triangle's corners 0, 1, 2
 };
 
 class TriangleDistanceField {
  public:
   // Copies the mesh. Throws InputError (naming `source`) for a corner index out of
   // range or a non-finite coordinate.
-  TriangleDistanceField(std::span<const Vec3d> positions, std::span<const Triangle> triangles,
+  TriangleDistanceField(std::span<const mesh::Vec3d> positions, std::span<const Triangle> triangles,
                         const std::string& source = "triangle mesh");
   explicit TriangleDistanceField(const TriangleMeshRef& mesh,
                                  const std::string& source = "triangle mesh");
@@ -38,13 +38,13 @@ class TriangleDistanceField {
   TriangleDistanceField& operator=(TriangleDistanceField&&) noexcept;
 
   size_t triangleCount() const;
-  ClosestPoint closest(const Vec3d& query) const;
+  ClosestPoint closest(const mesh::Vec3d& query) const;
   // The same answer, bit for bit, found faster when `hint` is a triangle near the answer
   // (e.g. the previous answer of a coherent run of queries): the search starts with the
   // hint's distance as its radius instead of infinity. Any hint (kNoTriangle, or out of
   // range, included) is valid: the minimum and its tie-break (lowest triangle index)
   // do not depend on it.
-  ClosestPoint closest(const Vec3d& query, uint32_t hint) const;
+  ClosestPoint closest(const mesh::Vec3d& query, uint32_t hint) const;
 
  private:
   struct Impl;

@@ -6,8 +6,8 @@
 
 namespace tb::ref {
 
-std::vector<Triangle> fanTriangles(const Mesh& mesh) {
-  const Triangulation triangulated = fanTriangulate(mesh);
+std::vector<Triangle> fanTriangles(const mesh::Mesh& mesh) {
+  const mesh::Triangulation triangulated = mesh::fanTriangulate(mesh);
   std::vector<Triangle> triangles(triangulated.mesh.faceCount());
   for (size_t t = 0; t < triangles.size(); ++t) {
     const auto corners = triangulated.mesh.facePositions(t);
@@ -16,10 +16,10 @@ std::vector<Triangle> fanTriangles(const Mesh& mesh) {
   return triangles;
 }
 
-double boundingBoxDiagonal(std::span<const Vec3d> positions) {
+double boundingBoxDiagonal(std::span<const mesh::Vec3d> positions) {
   if (positions.empty()) return 0;
-  Vec3d lo = positions.front(), hi = positions.front();
-  for (const Vec3d& p : positions) {
+  mesh::Vec3d lo = positions.front(), hi = positions.front();
+  for (const mesh::Vec3d& p : positions) {
     for (int i = 0; i < 3; ++i) {
       lo[i] = std::min(lo[i], p[i]);
       hi[i] = std::max(hi[i], p[i]);

@@ -13,7 +13,7 @@
 namespace tb::ref {
 
 struct TriangleRayCaster::Impl {
-  std::vector<Vec3d> positions;
+  std::vector<mesh::Vec3d> positions;
   std::vector<Triangle> triangles;
   RTCScene scene = nullptr;
 
@@ -27,19 +27,19 @@ namespace {
 // The ray parameter of the plane hit on triangle (a, b, c), Moller & Trumbore (1997), in
 // double, without the inside test: Embree has already chosen the triangle, so only its
 // distance is refined. NaN when the ray is parallel to the triangle's plane.
-double planeHitDistance(const Vec3d& origin, const Vec3d& direction, const Vec3d& a, const Vec3d& b,
-                        const Vec3d& c) {
-  const Vec3d e1 = b - a, e2 = c - a;
-  const Vec3d p = cross(direction, e2);
+double planeHitDistance(const mesh::Vec3d& origin, const mesh::Vec3d& direction,
+                        const mesh::Vec3d& a, const mesh::Vec3d& b, const mesh::Vec3d& c) {
+  const mesh::Vec3d e1 = b - a, e2 = c - a;
+  const mesh::Vec3d p = cross(direction, e2);
   const double det = dot(e1, p);
   if (det == 0) return std::nan("");
-  const Vec3d q = cross(origin - a, e1);
+  const mesh::Vec3d q = cross(origin - a, e1);
   return dot(e2, q) / det;
 }
 
 }  // namespace
 
-TriangleRayCaster::TriangleRayCaster(std::span<const Vec3d> positions,
+TriangleRayCaster::TriangleRayCaster(std::span<const mesh::Vec3d> positions,
                                      std::span<const Triangle> triangles, const std::string& source)
     : impl_(std::make_unique<Impl>()) {
   checkFinitePositions(positions, source);
@@ -60,7 +60,8 @@ TriangleRayCaster& TriangleRayCaster::operator=(TriangleRayCaster&&) noexcept = 
 
 size_t TriangleRayCaster::triangleCount() const { return impl_->triangles.size(); }
 
-std::optional<RayHit> TriangleRayCaster::nearestHit(const Vec3d& origin, const Vec3d& direction,
+std::optional<RayHit> TriangleRayCaster::nearestHit(const mesh::Vec3d& origin,
+                                                    const mesh::Vec3d& direction,
                                                     double max_distance) const {
   if (impl_->triangles.empty()) return std::nullopt;
   RTCIntersectContext context;
@@ -83,7 +84,7 @@ std::optional<RayHit> TriangleRayCaster::nearestHit(const Vec3d& origin, const V
   if (ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   const uint32_t id = ray_hit.hit.primID;
   const Triangle& tri = impl_->triangles[id];
-  const std::vector<Vec3d>& p = impl_->positions;
+  const std::vector<mesh::Vec3d>& p = impl_->positions;
   double distance = planeHitDistance(origin, direction, p[tri[0]], p[tri[1]], p[tri[2]]);
   // A grazing hit whose double plane distance is undefined keeps Embree's float one.
   if (!std::isfinite(distance)) distance = double(ray_hit.ray.tfar);

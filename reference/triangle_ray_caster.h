@@ -26,7 +26,7 @@ class TriangleRayCaster {
   // Copies the mesh. Throws InputError (naming `source`) for a corner index out of range or
   // a non-finite coordinate. The scene is built robust (RTC_SCENE_FLAG_ROBUST), so a ray
   // through a shared edge does not slip between its two triangles.
-  TriangleRayCaster(std::span<const Vec3d> positions, std::span<const Triangle> triangles,
+  TriangleRayCaster(std::span<const mesh::Vec3d> positions, std::span<const Triangle> triangles,
                     const std::string& source = "triangle mesh");
   ~TriangleRayCaster();
   TriangleRayCaster(TriangleRayCaster&&) noexcept;
@@ -36,7 +36,7 @@ class TriangleRayCaster {
   // The first hit of the ray origin + t * direction, 0 <= t <= max_distance (direction of unit
   // length, world units), either side of a triangle; nullopt when it hits nothing.
   std::optional<RayHit> nearestHit(
-      const Vec3d& origin, const Vec3d& direction,
+      const mesh::Vec3d& origin, const mesh::Vec3d& direction,
       double max_distance = std::numeric_limits<double>::infinity()) const;
 
  private:

@@ -13,6 +13,9 @@ Rules:
      of it.
   4. Measures select techniques by capability: no source under harness/measures/ holds a
      string literal naming a technique id (the folders under techniques/).
+  5. One namespace per layer, matching its folder (NAMESPACES): a source opens only its
+     folder's namespace or one nested in it (anonymous namespaces and aliases aside); a
+     technique's folder has tb::<technique>.
 
 Usage: scripts/check_layers.py [ROOT]      --selftest: shows each rule catching a breach
 """
@@ -40,6 +43,18 @@ LAYERS += [
     ("harness/lod", ["harness/lod/"], LOWER + ["harness/results"]),
     ("harness/measures", ["harness/measures/"], LOWER + ["harness/results", "harness/lod"]),
 ]
+# (folder prefix, its namespace); the longest prefix wins. techniques/<id>/ is tb::<id>.
+NAMESPACES = [
+    ("core/mesh/", "tb::mesh"), ("core/view/", "tb::view"), ("core/tess/", "tb::tess"),
+    ("core/displacement/", "tb::displacement"), ("core/osd/", "tb::osd"), ("core/gpu/", "tb::gpu"),
+    ("techniques/", "tb::techniques"), ("reference/", "tb::ref"),
+    ("harness/results/", "tb::results"), ("harness/lod/", "tb::lod"),
+    ("harness/measures/", "tb::measures"), ("harness/suite/", "tb::suite"),
+    ("harness/pictures/", "tb::pictures"), ("harness/report/", "tb::report"),
+    ("harness/bake/", "tb::bake"), ("harness/cli/", "tb::cli"),
+]
+FORWARD_ONLY = re.compile(r"(?:\s*(?:class|struct)\s+\w+\s*;)+\s*\}")
+NAMESPACE = re.compile(r"^\s*namespace\s+([\w:]+)\s*\{", re.M)
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 STRING = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 SOURCES = (".h", ".hpp", ".cpp", ".cc", ".glsl", ".tesc", ".tese", ".comp", ".vert", ".frag")
@@ -136,6 +151,38 @@ def check(root):
                     line = code.count("\n", 0, m.start()) + 1
                     problems.append(f"{rel}:{line}: string \"{m.group(1)}\" names technique '{tid}' "
                                     "(select by capability)")
+    problems += namespace_problems(root)
+    return problems
+
+
+def expected_namespace(rel):
+    parts = rel.split("/")
+    if parts[0] == "techniques" and len(parts) > 2 and parts[1] != "common":
+        return "tb::" + parts[1]
+    best = None
+    for prefix, ns in NAMESPACES:
+        if rel.startswith(prefix) and (best is None or len(prefix) > len(best[0])):
+            best = (prefix, ns)
+    return best[1] if best else None
+
+
+def namespace_problems(root):
+    problems = []
+    for top in ["core", "techniques", "reference", "harness"]:
+        for rel, path in files(root, top):
+            want = expected_namespace(rel)
+            if want is None or not rel.endswith((".h", ".cpp")):
+                continue
+            with open(path, encoding="utf-8", errors="replace") as f:
+                code = re.sub(r"//[^\n]*", "", f.read())
+            for m in NAMESPACE.finditer(code):
+                ns = m.group(1)
+                if ns.split("::")[0] != "tb" or ns == want or ns.startswith(want + "::"):
+                    continue
+                if FORWARD_ONLY.match(code, m.end()):
+                    continue  # forward declarations of a lower layer's classes
+                line = code.count("\n", 0, m.start()) + 1
+                problems.append(f"{rel}:{line}: namespace {ns} (this folder's is {want})")
     return problems
 
 
@@ -153,6 +200,7 @@ def selftest():
                                   "harness/measures/error/error_measure.cpp": ""},
         "technique id": {"techniques/wave_particles/w.h": "",
                          "harness/measures/wave/wave_measure.cpp": 'auto id = "wave_particles";\n'},
+        "namespace": {"harness/results/a.h": "namespace tb::gpu {\nclass C;\n}\nnamespace tb {\nstruct A {};\n}  // namespace tb\n"},
     }
     failures = 0
     for name, tree in cases.items():

@@ -20,7 +20,7 @@
 
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::techniques {
 
 enum class PatchDomain { kTriangle, kQuad };
 
@@ -140,10 +140,10 @@ struct BatchPoints {
       }
     }
   }
-  static Vec3d at(const std::array<AlignedDoubles, 3>& field, size_t i) {
+  static mesh::Vec3d at(const std::array<AlignedDoubles, 3>& field, size_t i) {
     return {field[0][i], field[1][i], field[2][i]};
   }
-  static void set(std::array<AlignedDoubles, 3>& field, size_t i, const Vec3d& value) {
+  static void set(std::array<AlignedDoubles, 3>& field, size_t i, const mesh::Vec3d& value) {
     field[0][i] = value.x;
     field[1][i] = value.y;
     field[2][i] = value.z;
@@ -167,4 +167,4 @@ inline std::vector<DomainCoord> latticeCoords(PatchDomain domain, int segments) 
   return coords;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -12,7 +12,7 @@
 
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // What one solver iteration costs, counted (not timed).
 struct SolverCounts {
@@ -47,7 +47,7 @@ struct SolverCounts {
 
 // The converged reference of the convergence frame (double, serial Gauss-Seidel).
 struct ReferenceSolution {
-  std::vector<Vec3d> positions;
+  std::vector<mesh::Vec3d> positions;
   size_t iterations = 0;         // sweeps it took
   double relative_residual = 0;  // residual / initial residual when it stopped
   bool converged = false;        // relative_residual reached the requested tolerance
@@ -80,7 +80,7 @@ class ConstraintSolver {
   // RMS relative stretch of the current positions over every active constraint
   // (dimensionless; anchor springs of rest length 0 measured against lengthScale()).
   virtual double residual() const = 0;
-  virtual std::vector<Vec3d> positions() const = 0;
+  virtual std::vector<mesh::Vec3d> positions() const = 0;
   // The length that makes position differences relative (mean surface rest length, m).
   virtual double lengthScale() const = 0;
   // The convergence frame solved in double by serial Gauss-Seidel in the reference order
@@ -92,4 +92,4 @@ class ConstraintSolver {
   virtual StepDiagnostics diagnostics() const = 0;
 };
 
-}  // namespace tb
+}  // namespace tb::techniques

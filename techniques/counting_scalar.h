@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace tb {
+namespace tb::techniques {
 
 struct OperationCounts {
   uint64_t add = 0;      // additions and subtractions
@@ -55,4 +55,4 @@ class CountingScalar {
   T value_{};
 };
 
-}  // namespace tb
+}  // namespace tb::techniques

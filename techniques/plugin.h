@@ -37,7 +37,7 @@
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
 inline constexpr int kTessbenchPluginAbi = 10;
 
-namespace tb {
+namespace tb::techniques {
 
 class PluginHost {
  public:
@@ -51,24 +51,24 @@ class PluginHost {
   virtual void addShader(std::string path, std::vector<uint32_t> spirv_words) = 0;
 };
 
-}  // namespace tb
+}  // namespace tb::techniques
 
 extern "C" {
 typedef int (*TessbenchPluginAbiQuery)();
-typedef void (*TessbenchPluginEntry)(tb::PluginHost* host);
+typedef void (*TessbenchPluginEntry)(tb::techniques::PluginHost* host);
 }
 #define TB_PLUGIN_ABI_NAME "tessbench_plugin_abi"
 #define TB_PLUGIN_ENTRY_NAME "tessbench_register_plugin"
 
 // In one .cpp of a plug-in:
 //   TB_PLUGIN(host) { host.addTechnique(std::make_unique<MyTechnique>()); }
-#define TB_PLUGIN(host_name)                                                              \
-  static void tbPluginRegister(::tb::PluginHost& host_name);                             \
-  extern "C" __attribute__((visibility("default"))) int tessbench_plugin_abi() {         \
-    return kTessbenchPluginAbi;                                                           \
-  }                                                                                       \
-  extern "C" __attribute__((visibility("default"))) void tessbench_register_plugin(      \
-      ::tb::PluginHost* host) {                                                           \
-    tbPluginRegister(*host);                                                              \
-  }                                                                                       \
-  static void tbPluginRegister(::tb::PluginHost& host_name)
+#define TB_PLUGIN(host_name)                                                        \
+  static void tbPluginRegister(::tb::techniques::PluginHost& host_name);            \
+  extern "C" __attribute__((visibility("default"))) int tessbench_plugin_abi() {    \
+    return kTessbenchPluginAbi;                                                     \
+  }                                                                                 \
+  extern "C" __attribute__((visibility("default"))) void tessbench_register_plugin( \
+      ::tb::techniques::PluginHost* host) {                                         \
+    tbPluginRegister(*host);                                                        \
+  }                                                                                 \
+  static void tbPluginRegister(::tb::techniques::PluginHost& host_name)

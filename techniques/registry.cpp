@@ -8,7 +8,7 @@
 
 #include "shaders/embedded_shaders.h"
 
-namespace tb {
+namespace tb::techniques {
 
 TechniqueRegistry& TechniqueRegistry::instance() {
   static TechniqueRegistry registry;
@@ -130,4 +130,4 @@ const char* toString(PatchDomain domain) {
   return domain == PatchDomain::kTriangle ? "triangle" : "quad";
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

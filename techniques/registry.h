@@ -10,7 +10,7 @@
 #include "techniques/plugin.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 
 class TechniqueRegistry {
  public:
@@ -33,11 +33,11 @@ class TechniqueRegistry {
 // the registry is then unchanged.
 void loadPlugin(const std::string& path);
 
-}  // namespace tb
+}  // namespace tb::techniques
 
 #define TB_REGISTER_TECHNIQUE_CONCAT2(a, b) a##b
 #define TB_REGISTER_TECHNIQUE_CONCAT(a, b) TB_REGISTER_TECHNIQUE_CONCAT2(a, b)
 // One line in a technique's .cpp: TB_REGISTER_TECHNIQUE(PhongTechnique);
 #define TB_REGISTER_TECHNIQUE(Class)                                                          \
   static const bool TB_REGISTER_TECHNIQUE_CONCAT(tb_registered_, __LINE__) [[maybe_unused]] = \
-      ::tb::TechniqueRegistry::instance().add(std::make_unique<Class>())
+      ::tb::techniques::TechniqueRegistry::instance().add(std::make_unique<Class>())

@@ -12,7 +12,7 @@
 
 #include "core/gpu/compute_program_desc.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // The input of a simulation, in place of (or beside) a mesh asset, read from a scenario
 // JSON file (format "tessbench-scenario-1", docs/ARCHITECTURE.md) or built in code. A
@@ -113,4 +113,4 @@ class Simulation {
   }
 };
 
-}  // namespace tb
+}  // namespace tb::techniques

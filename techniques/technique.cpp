@@ -3,9 +3,9 @@
 
 #include "techniques/variant_param.h"
 
-namespace tb {
+namespace tb::techniques {
 
-const Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input) {
+const mesh::Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input) {
   if (input.mesh == nullptr) throw UnsupportedInput(technique.id + ": needs a mesh asset as input");
   return *input.mesh;
 }
@@ -15,7 +15,7 @@ BuiltSurface::BuiltSurface(std::unique_ptr<TechniqueInstance> instance)
   if (surface_ == nullptr) throw std::logic_error("buildSurface: the instance has no surface");
 }
 
-BuiltSurface buildSurface(const Technique& technique, const Mesh& mesh,
+BuiltSurface buildSurface(const Technique& technique, const mesh::Mesh& mesh,
                           const VariantInfo& variant) {
   TechniqueInput input;
   input.mesh = &mesh;
@@ -30,4 +30,4 @@ void throwVariantParameterError(const TechniqueInfo& technique, const VariantInf
 }
 }  // namespace detail
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -22,7 +22,7 @@
 #include "techniques/counting_scalar.h"
 #include "techniques/simulation.h"
 
-namespace tb {
+namespace tb::techniques {
 
 enum class TechniqueFamily {
   kSurface,     // turns a control mesh into patches evaluated by the tessellator
@@ -71,14 +71,14 @@ struct DataFootprint {
 };
 
 struct SurfacePoint {
-  Vec3d position;
-  Vec3d normal;  // unit length, or zero where the surface is degenerate
+  mesh::Vec3d position;
+  mesh::Vec3d normal;  // unit length, or zero where the surface is degenerate
 };
 
 // The same in float: what the technique's shaders compute.
 struct SurfacePointF {
-  Vec3f position;
-  Vec3f normal;  // as the TES outputs it (normalised there when the shader normalises)
+  mesh::Vec3f position;
+  mesh::Vec3f normal;  // as the TES outputs it (normalised there when the shader normalises)
 };
 
 // What a conservative patch culler may assume about one patch (the culling measure,
@@ -87,14 +87,14 @@ struct SurfacePointF {
 struct PatchCullBounds {
   // Points whose convex hull contains the whole patch: its Bezier, Gregory or PN control
   // net (a patch lies in the convex hull of its control points). Never empty.
-  std::vector<Vec3d> hull;
+  std::vector<mesh::Vec3d> hull;
   // Vectors whose non-negative combinations include the geometric normal dp/du x dp/dv of
   // the position patch at every point of the domain (never a shading normal), oriented to
   // the front: the side the control face's winding (counter-clockwise, OBJ order) faces,
   // which is the side the technique's tessellated triangles face. For a polynomial patch,
   // the control points of its normal patch (Sederberg & Meyers 1988; the cone of normals
   // of Shirman & Abi-Ezzi 1993 is built from them). Empty: no bound, so no cone culling.
-  std::vector<Vec3d> normal_generators;
+  std::vector<mesh::Vec3d> normal_generators;
 };
 
 // Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
@@ -120,7 +120,7 @@ class SurfacePatches {
   virtual size_t patchCount() const = 0;
   // The mesh the patches are built over: patch p covers face p of it (for
   // `phong`, the fan-triangulated input). Measures read its render vertices.
-  virtual const Mesh& controlMesh() const = 0;
+  virtual const mesh::Mesh& controlMesh() const = 0;
   // Control-mesh positions at the patch corners, in domain order (3 for a triangle
   // patch, the 4th then unused); shared edges between patches are found through these.
   virtual std::array<uint32_t, 4> patchCorners(size_t patch) const = 0;
@@ -237,7 +237,7 @@ class SimulationInstance final : public TechniqueInstance {
 // What a technique builds from: the asset's mesh (surface techniques) and/or a scenario
 // (simulations). Absent parts are null; build throws UnsupportedInput when it needs one.
 struct TechniqueInput {
-  const Mesh* mesh = nullptr;
+  const mesh::Mesh* mesh = nullptr;
   const Scenario* scenario = nullptr;
 };
 
@@ -248,7 +248,7 @@ class Technique {
   // The first variant is the default.
   virtual std::vector<VariantInfo> variants() const = 0;
   // Empty string when the mesh is supported; otherwise the reason (one line).
-  virtual std::string checkSupport(const Mesh& mesh) const = 0;
+  virtual std::string checkSupport(const mesh::Mesh& mesh) const = 0;
   // Builds the instance for one input and variant; throws UnsupportedInput when the
   // input breaks a rule of the technique (or lacks the mesh or scenario it needs).
   virtual std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
@@ -259,7 +259,7 @@ class Technique {
 };
 
 // The mesh of `input`, or UnsupportedInput naming the technique when there is none.
-const Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input);
+const mesh::Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input);
 
 // A built instance whose surface is used directly: `*built` and `built->` are the
 // SurfacePatches, and the instance stays alive with it. For callers that need only the
@@ -283,9 +283,10 @@ class BuiltSurface {
 
 // technique.build({&mesh}, variant) for a technique with a surface; throws
 // UnsupportedInput as build does, and std::logic_error when the instance has no surface.
-BuiltSurface buildSurface(const Technique& technique, const Mesh& mesh, const VariantInfo& variant);
+BuiltSurface buildSurface(const Technique& technique, const mesh::Mesh& mesh,
+                          const VariantInfo& variant);
 
 const char* toString(TechniqueFamily family);
 const char* toString(PatchDomain domain);
 
-}  // namespace tb
+}  // namespace tb::techniques

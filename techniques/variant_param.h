@@ -11,7 +11,7 @@
 
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // Thrown when a variant lacks a parameter its technique reads, or holds a value of the
 // wrong kind. The message names technique, variant and parameter:
@@ -63,4 +63,4 @@ T paramOr(const TechniqueInfo& technique, const VariantInfo& variant, std::strin
   return detail::convertParameter<T>(technique, variant, name, it->second);
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace tb {
+namespace tb::techniques {
 
 using WavePoint = std::array<double, 2>;  // metres
 
@@ -70,4 +70,4 @@ class WaveField {
   virtual std::vector<std::array<float, 2>> packetPositions() const = 0;
 };
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -5,7 +5,7 @@
 #include <cassert>
 #include <cstring>
 
-namespace tb {
+namespace tb::displacement {
 
 float DisplacementMap::at(std::uint32_t x, std::uint32_t y, std::uint32_t c) const {
   const std::uint32_t channels = channelCount(kind);
@@ -68,4 +68,4 @@ void roundTexelsToHalf(DisplacementMap& map) {
   for (float& texel : map.texels) texel = roundToHalf(texel);
 }
 
-}  // namespace tb
+}  // namespace tb::displacement

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tb {
+namespace tb::displacement {
 
 enum class DisplacementKind { kScalar, kVector };
 enum class DisplacementPixelType { kHalf, kFloat };
@@ -59,4 +59,4 @@ float roundToHalf(float value);
 // Rounds every texel to its nearest half, so a half map holds only exact halves.
 void roundTexelsToHalf(DisplacementMap& map);
 
-}  // namespace tb
+}  // namespace tb::displacement

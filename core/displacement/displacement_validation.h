@@ -5,7 +5,7 @@
 
 #include "core/displacement/displacement_map.h"
 
-namespace tb {
+namespace tb::displacement {
 
 // Throws InputError(file, element, rule) for the first broken rule: a width or height of 0 or
 // above kMaxDisplacementSide, a texel count other than width * height * channels, a tile
@@ -13,4 +13,4 @@ namespace tb {
 // NaN or infinite texel, and in a half map a texel that is not an exact half.
 void validateDisplacementMap(const DisplacementMap& map, const std::string& file);
 
-}  // namespace tb
+}  // namespace tb::displacement

@@ -21,7 +21,7 @@
 #include "core/displacement/displacement_validation.h"
 #include "core/mesh/input_error.h"
 
-namespace tb {
+namespace tb::displacement {
 namespace {
 
 // Channel names: "Y" for a scalar map (viewers show it as grey), "R", "G", "B" for the x, y, z
@@ -102,19 +102,19 @@ void writePixels(const std::string& path, const DisplacementMap& map) {
 void checkFileStart(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError(path, "", "cannot open the file (missing or not a regular file)");
+    throw mesh::InputError(path, "", "cannot open the file (missing or not a regular file)");
   }
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path, "", "cannot open the file (unreadable)");
+  if (!file) throw mesh::InputError(path, "", "cannot open the file (unreadable)");
   std::array<char, 4> magic{};
   file.read(magic.data(), magic.size());
-  if (file.gcount() == 0) throw InputError(path, "", "the file is empty");
+  if (file.gcount() == 0) throw mesh::InputError(path, "", "the file is empty");
   // OpenEXR files start with the magic number 20000630 (little-endian 76 2f 31 01).
   constexpr std::array<unsigned char, 4> kMagic = {0x76, 0x2f, 0x31, 0x01};
   if (file.gcount() < 4 ||
       !std::equal(kMagic.begin(), kMagic.end(), magic.begin(),
                   [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); })) {
-    throw InputError(path, "", "not an OpenEXR file (no OpenEXR magic number)");
+    throw mesh::InputError(path, "", "not an OpenEXR file (no OpenEXR magic number)");
   }
 }
 
@@ -131,7 +131,7 @@ DisplacementKind channelKind(const std::string& path, const Imf::ChannelList& li
   } else if (names == std::vector<std::string>{"B", "G", "R"}) {  // the list is sorted
     kind = DisplacementKind::kVector;
   } else {
-    throw InputError(
+    throw mesh::InputError(
         path, element,
         std::to_string(names.size()) + " channels; expected Y (scalar map) or R,G,B (vector map)");
   }
@@ -139,10 +139,10 @@ DisplacementKind channelKind(const std::string& path, const Imf::ChannelList& li
   for (auto it = list.begin(); it != list.end(); ++it) {
     const Imf::Channel& channel = it.channel();
     if (channel.type != type || (type != Imf::HALF && type != Imf::FLOAT)) {
-      throw InputError(path, element, "channels must all be half or all be float");
+      throw mesh::InputError(path, element, "channels must all be half or all be float");
     }
     if (channel.xSampling != 1 || channel.ySampling != 1) {
-      throw InputError(path, element, "subsampled channels are not supported");
+      throw mesh::InputError(path, element, "subsampled channels are not supported");
     }
   }
   return kind;
@@ -156,11 +156,11 @@ const std::string* findString(const Imf::Header& header, const char* name) {
 std::uint32_t tileField(const std::string& path, const Imf::Header& header, const char* name) {
   const std::string* text = findString(header, name);
   const std::string element = std::string("header attribute '") + name + "'";
-  if (!text) throw InputError(path, element, "missing (a tiles map needs it, as a string)");
+  if (!text) throw mesh::InputError(path, element, "missing (a tiles map needs it, as a string)");
   std::uint32_t value = 0;
   const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
   if (error != std::errc() || end != text->data() + text->size() || text->empty()) {
-    throw InputError(path, element, "'" + oneLine(*text) + "' is not a whole number");
+    throw mesh::InputError(path, element, "'" + oneLine(*text) + "' is not a whole number");
   }
   return value;
 }
@@ -168,14 +168,14 @@ std::uint32_t tileField(const std::string& path, const Imf::Header& header, cons
 void readLayout(const std::string& path, const Imf::Header& header, DisplacementMap& map) {
   const std::string* layout = findString(header, kExrLayoutAttribute);
   const std::string element = std::string("header attribute '") + kExrLayoutAttribute + "'";
-  if (!layout) throw InputError(path, element, "missing (a string: tiles or uv)");
+  if (!layout) throw mesh::InputError(path, element, "missing (a string: tiles or uv)");
   if (*layout == "uv") {
     map.layout = DisplacementLayout::kUv;
     for (const char* name : {kExrTileSizeAttribute, kExrTileBorderAttribute,
                              kExrTilesPerRowAttribute, kExrTileCountAttribute}) {
       if (header.find(name) != header.end()) {
-        throw InputError(path, std::string("header attribute '") + name + "'",
-                         "present on a uv map (only tiles maps have tiles)");
+        throw mesh::InputError(path, std::string("header attribute '") + name + "'",
+                               "present on a uv map (only tiles maps have tiles)");
       }
     }
   } else if (*layout == "tiles") {
@@ -185,7 +185,7 @@ void readLayout(const std::string& path, const Imf::Header& header, Displacement
     map.tiles.tiles_per_row = tileField(path, header, kExrTilesPerRowAttribute);
     map.tiles.tile_count = tileField(path, header, kExrTileCountAttribute);
   } else {
-    throw InputError(path, element, "'" + oneLine(*layout) + "', expected tiles or uv");
+    throw mesh::InputError(path, element, "'" + oneLine(*layout) + "', expected tiles or uv");
   }
 }
 
@@ -196,7 +196,7 @@ DisplacementMap readPixels(const std::string& path, std::optional<DisplacementKi
   const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
   const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
   if (width < 1 || height < 1 || width > kMaxDisplacementSide || height > kMaxDisplacementSide) {
-    throw InputError(
+    throw mesh::InputError(
         path, "resolution " + std::to_string(width) + " x " + std::to_string(height),
         "width and height must be between 1 and " + std::to_string(kMaxDisplacementSide));
   }
@@ -204,15 +204,15 @@ DisplacementMap readPixels(const std::string& path, std::optional<DisplacementKi
   DisplacementMap map;
   map.kind = channelKind(path, header.channels(), type);
   if (expected && *expected != map.kind) {
-    throw InputError(path, "channels",
-                     "a " + std::string(kindName(map.kind)) + " map where a " +
-                         std::string(kindName(*expected)) + " map is expected");
+    throw mesh::InputError(path, "channels",
+                           "a " + std::string(kindName(map.kind)) + " map where a " +
+                               std::string(kindName(*expected)) + " map is expected");
   }
   map.pixel_type = type == Imf::HALF ? DisplacementPixelType::kHalf : DisplacementPixelType::kFloat;
   map.width = static_cast<std::uint32_t>(width);
   map.height = static_cast<std::uint32_t>(height);
   readLayout(path, header, map);
-  if (!file.isComplete()) throw InputError(path, "", "truncated (scan lines are missing)");
+  if (!file.isComplete()) throw mesh::InputError(path, "", "truncated (scan lines are missing)");
 
   const std::uint32_t channels = channelCount(map.kind);
   const std::size_t count = std::size_t{map.width} * map.height * channels;
@@ -244,7 +244,7 @@ void writeDisplacementExr(const std::string& path, const DisplacementMap& map) {
   } catch (const std::exception& error) {  // Iex::BaseExc derives from std::exception
     std::error_code ignored;
     std::filesystem::remove(path, ignored);  // never leave a partial map behind
-    throw InputError(path, "", "cannot write the OpenEXR file: " + oneLine(error.what()));
+    throw mesh::InputError(path, "", "cannot write the OpenEXR file: " + oneLine(error.what()));
   }
 }
 
@@ -255,14 +255,14 @@ DisplacementMap readDisplacementExr(const std::string& path,
   DisplacementMap map;
   try {
     map = readPixels(path, expected);
-  } catch (const InputError&) {
+  } catch (const mesh::InputError&) {
     throw;
   } catch (const std::exception& error) {  // Iex::BaseExc derives from std::exception
-    throw InputError(path, "",
-                     "unreadable OpenEXR file (damaged or truncated): " + oneLine(error.what()));
+    throw mesh::InputError(
+        path, "", "unreadable OpenEXR file (damaged or truncated): " + oneLine(error.what()));
   }
   validateDisplacementMap(map, path);
   return map;
 }
 
-}  // namespace tb
+}  // namespace tb::displacement

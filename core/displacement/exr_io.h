@@ -9,7 +9,7 @@
 
 #include "core/displacement/displacement_map.h"
 
-namespace tb {
+namespace tb::displacement {
 
 // Header attributes (string values; numbers in decimal) that carry the layout.
 inline constexpr const char* kExrLayoutAttribute = "tessbench.layout";  // "tiles" or "uv"
@@ -33,4 +33,4 @@ void writeDisplacementExr(const std::string& path, const DisplacementMap& map);
 DisplacementMap readDisplacementExr(const std::string& path,
                                     std::optional<DisplacementKind> expected = std::nullopt);
 
-}  // namespace tb
+}  // namespace tb::displacement

@@ -37,8 +37,8 @@ namespace tb::gpu {
 struct CapturedVertex {
   uint32_t patch = 0;         // SurfacePatches patch (GpuPatchProgram::patch_ids applied)
   tess::DomainPoint coord{};  // gl_TessCoord bit for bit
-  Vec3f position;
-  Vec3f normal;
+  mesh::Vec3f position;
+  mesh::Vec3f normal;
 };
 
 // A view-dependent factor policy computed by the program's own TCS

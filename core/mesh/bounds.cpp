@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace tb {
+namespace tb::mesh {
 
 Aabb boundsOf(const Mesh& mesh) {
   if (mesh.positions.empty()) return {{-1, -1, -1}, {1, 1, 1}};
@@ -16,4 +16,4 @@ Aabb boundsOf(const Mesh& mesh) {
   return box;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

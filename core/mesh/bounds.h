@@ -5,7 +5,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // Axis-aligned bounding box, world units; min <= max component-wise.
 struct Aabb {
@@ -20,4 +20,4 @@ Aabb boundsOf(const Mesh& mesh);
 // |max - min|: the box's diagonal, world units.
 inline double diagonalOf(const Aabb& box) { return length(box.max - box.min); }
 
-}  // namespace tb
+}  // namespace tb::mesh

@@ -8,7 +8,7 @@
 
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // The count of representable floats between a and b (+0 and -0 are 0 apart; best case
 // 0, 1 is one rounding step). Meaningful for finite values.
@@ -26,4 +26,4 @@ inline uint64_t maxUlpDistance(const Vec3f& a, const Vec3f& b) {
   return std::max({ulpDistance(a.x, b.x), ulpDistance(a.y, b.y), ulpDistance(a.z, b.z)});
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

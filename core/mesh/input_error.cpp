@@ -1,6 +1,6 @@
 #include "core/mesh/input_error.h"
 
-namespace tb {
+namespace tb::mesh {
 namespace {
 std::string composeMessage(const std::string& file, const std::string& element,
                            const std::string& rule) {
@@ -20,4 +20,4 @@ InputError::InputError(std::string file, std::string element, std::string rule)
       element_(std::move(element)),
       rule_(std::move(rule)) {}
 
-}  // namespace tb
+}  // namespace tb::mesh

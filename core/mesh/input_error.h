@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace tb {
+namespace tb::mesh {
 
 class InputError : public std::runtime_error {
  public:
@@ -22,4 +22,4 @@ class InputError : public std::runtime_error {
   std::string file_, element_, rule_;
 };
 
-}  // namespace tb
+}  // namespace tb::mesh

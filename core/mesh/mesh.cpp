@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace tb {
+namespace tb::mesh {
 
 bool Mesh::allFacesOfSize(uint32_t n) const {
   for (size_t f = 0; f < faceCount(); ++f) {
@@ -37,4 +37,4 @@ std::string describeFace(const Mesh& mesh, size_t face) {
   return text;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

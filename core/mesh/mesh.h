@@ -9,7 +9,7 @@
 
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // Sdc-style boundary interpolation. Note the OBJ tag value is NOT this enum:
 // `t interpolateboundary` 1 means edge-and-corner and 2 means edge-only.
@@ -72,4 +72,4 @@ struct Mesh {
 // A short human description of a face element for errors: "face 17 (line 42)".
 std::string describeFace(const Mesh& mesh, size_t face);
 
-}  // namespace tb
+}  // namespace tb::mesh

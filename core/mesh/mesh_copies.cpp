@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace tb {
+namespace tb::mesh {
 
 Mesh translatedCopies(const Mesh& mesh, int copies) {
   if (copies < 1) throw std::invalid_argument("translatedCopies: copies must be >= 1");
@@ -56,4 +56,4 @@ Mesh translatedCopies(const Mesh& mesh, int copies) {
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

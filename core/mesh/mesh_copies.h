@@ -5,7 +5,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // `copies` (>= 1) copies of `mesh` on a square grid in the xy plane, each moved by a
 // whole number of grid steps of twice the mesh's largest bounding-box extent, so no two
@@ -14,4 +14,4 @@ namespace tb {
 // for copies < 1.
 Mesh translatedCopies(const Mesh& mesh, int copies);
 
-}  // namespace tb
+}  // namespace tb::mesh

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tb {
+namespace tb::mesh {
 
 void assignAngleWeightedNormals(Mesh* mesh) {
   std::vector<Vec3d> sums(mesh->positions.size());
@@ -30,4 +30,4 @@ void assignAngleWeightedNormals(Mesh* mesh) {
   mesh->normals_computed = true;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

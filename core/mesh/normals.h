@@ -2,7 +2,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // Replaces the mesh's normals with one smooth normal per position: the sum of the
 // incident face normals, each weighted by the face's interior angle at that
@@ -10,4 +10,4 @@ namespace tb {
 // faces around the vertex are triangulated. Sets normals_computed.
 void assignAngleWeightedNormals(Mesh* mesh);
 
-}  // namespace tb
+}  // namespace tb::mesh

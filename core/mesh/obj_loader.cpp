@@ -10,7 +10,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/normals.h"
 
-namespace tb {
+namespace tb::mesh {
 namespace {
 
 std::string readWholeFile(const std::string& path) {
@@ -167,4 +167,4 @@ Mesh loadObjFile(const std::string& path, const LoadOptions& options) {
   return loadObjText(text, path, options);
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

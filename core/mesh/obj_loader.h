@@ -9,7 +9,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 struct LoadOptions {
   // Meshes without normals get angle-weighted smooth normals (docs/ARCHITECTURE.md); the
@@ -31,4 +31,4 @@ Mesh loadObjText(std::string_view text, const std::string& source_name,
 // Returns the source line of every face, in file order.
 std::vector<uint32_t> validateObjText(std::string_view text, const std::string& source_name);
 
-}  // namespace tb
+}  // namespace tb::mesh

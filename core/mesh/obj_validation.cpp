@@ -9,7 +9,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 
-namespace tb {
+namespace tb::mesh {
 namespace {
 
 std::vector<std::string_view> splitTokens(std::string_view line) {
@@ -324,4 +324,4 @@ std::vector<uint32_t> validateObjText(std::string_view text, const std::string& 
   return scanner.takeFaceLines();
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <array>
 
-namespace tb {
+namespace tb::mesh {
 
 RenderVertices buildRenderVertices(const Mesh& mesh) {
   RenderVertices result;
@@ -38,4 +38,4 @@ uint64_t triangleControlMeshBytes(const Mesh& mesh) {
          mesh.faceCount() * 3 * kIndexBytes;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

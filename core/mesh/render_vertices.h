@@ -9,7 +9,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 // float3 position + float3 normal + float2 uv.
 constexpr uint64_t kRenderVertexBytes = 32;
@@ -29,4 +29,4 @@ RenderVertices buildRenderVertices(const Mesh& mesh);
 // triangle): render vertices × 32 + triangles × 3 × 4.
 uint64_t triangleControlMeshBytes(const Mesh& mesh);
 
-}  // namespace tb
+}  // namespace tb::mesh

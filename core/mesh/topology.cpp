@@ -6,7 +6,7 @@
 #include <numeric>
 #include <tuple>
 
-namespace tb {
+namespace tb::mesh {
 namespace {
 
 struct HalfEdge {
@@ -130,4 +130,4 @@ Welding weldByPosition(const Mesh& mesh) {
   return welding;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

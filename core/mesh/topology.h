@@ -8,7 +8,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 struct MeshEdge {
   uint32_t v0, v1;        // position indices, v0 < v1
@@ -49,4 +49,4 @@ struct Welding {
 };
 Welding weldByPosition(const Mesh& mesh);
 
-}  // namespace tb
+}  // namespace tb::mesh

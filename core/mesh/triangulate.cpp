@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace tb {
+namespace tb::mesh {
 
 Triangulation fanTriangulate(const Mesh& mesh) {
   Triangulation result;
@@ -50,4 +50,4 @@ std::vector<std::string> triangulationWarnings(const Triangulation& triangulatio
   return warnings;
 }
 
-}  // namespace tb
+}  // namespace tb::mesh

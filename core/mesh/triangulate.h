@@ -5,7 +5,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::mesh {
 
 struct Triangulation {
   Mesh mesh;                          // every face a triangle
@@ -20,4 +20,4 @@ Triangulation fanTriangulate(const Mesh& mesh);
 // The notes a triangle technique reports about its input: polygons split, normals computed.
 std::vector<std::string> triangulationWarnings(const Triangulation& triangulation);
 
-}  // namespace tb
+}  // namespace tb::mesh

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace tb {
+namespace tb::mesh {
 
 template <class T>
 struct Vec2T {
@@ -58,4 +58,4 @@ using Vec2d = Vec2T<double>;
 using Vec3d = Vec3T<double>;
 using Vec3f = Vec3T<float>;
 
-}  // namespace tb
+}  // namespace tb::mesh

@@ -16,58 +16,59 @@ namespace {
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
-void checkSharpness(const Mesh& mesh, const char* tag, double sharpness) {
+void checkSharpness(const mesh::Mesh& mesh, const char* tag, double sharpness) {
   if (!std::isfinite(sharpness) || sharpness < 0) {
-    throw InputError(mesh.source, std::string("tag '") + tag + "'",
-                     "sharpness " + std::to_string(sharpness) + " is not a finite value >= 0");
+    throw mesh::InputError(
+        mesh.source, std::string("tag '") + tag + "'",
+        "sharpness " + std::to_string(sharpness) + " is not a finite value >= 0");
   }
 }
 
-void checkVertex(const Mesh& mesh, const char* tag, uint32_t vertex) {
+void checkVertex(const mesh::Mesh& mesh, const char* tag, uint32_t vertex) {
   if (vertex >= mesh.positions.size()) {
-    throw InputError(mesh.source, std::string("tag '") + tag + "'",
-                     "vertex " + std::to_string(vertex) + " is out of range (" +
-                         std::to_string(mesh.positions.size()) + " vertices)");
+    throw mesh::InputError(mesh.source, std::string("tag '") + tag + "'",
+                           "vertex " + std::to_string(vertex) + " is out of range (" +
+                               std::to_string(mesh.positions.size()) + " vertices)");
   }
 }
 
-void validateForScheme(const Mesh& mesh, Scheme scheme) {
+void validateForScheme(const mesh::Mesh& mesh, Scheme scheme) {
   if (mesh.faceCount() == 0) {
-    throw InputError(mesh.source, "mesh", "has no faces, so it has no limit surface");
+    throw mesh::InputError(mesh.source, "mesh", "has no faces, so it has no limit surface");
   }
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (scheme == Scheme::kLoop && mesh.faceSize(f) != 3) {
-      throw InputError(mesh.source, describeFace(mesh, f),
-                       "Loop subdivision needs triangles; this face has " +
-                           std::to_string(mesh.faceSize(f)) + " corners");
+      throw mesh::InputError(mesh.source, mesh::describeFace(mesh, f),
+                             "Loop subdivision needs triangles; this face has " +
+                                 std::to_string(mesh.faceSize(f)) + " corners");
     }
     for (uint32_t p : mesh.facePositions(f)) checkVertex(mesh, "face", p);
   }
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     checkVertex(mesh, "crease", crease.v0);
     checkVertex(mesh, "crease", crease.v1);
     checkSharpness(mesh, "crease", crease.sharpness);
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     checkVertex(mesh, "corner", corner.vertex);
     checkSharpness(mesh, "corner", corner.sharpness);
   }
   for (uint32_t hole : mesh.tags.holes) {
     if (hole >= mesh.faceCount()) {
-      throw InputError(mesh.source, "tag 'hole'",
-                       "face " + std::to_string(hole) + " is out of range (" +
-                           std::to_string(mesh.faceCount()) + " faces)");
+      throw mesh::InputError(mesh.source, "tag 'hole'",
+                             "face " + std::to_string(hole) + " is out of range (" +
+                                 std::to_string(mesh.faceCount()) + " faces)");
     }
   }
 }
 
-Sdc::Options::VtxBoundaryInterpolation sdcBoundary(BoundaryInterpolation boundary) {
+Sdc::Options::VtxBoundaryInterpolation sdcBoundary(mesh::BoundaryInterpolation boundary) {
   switch (boundary) {
-    case BoundaryInterpolation::kNone:
+    case mesh::BoundaryInterpolation::kNone:
       return Sdc::Options::VTX_BOUNDARY_NONE;
-    case BoundaryInterpolation::kEdgeOnly:
+    case mesh::BoundaryInterpolation::kEdgeOnly:
       return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
-    case BoundaryInterpolation::kEdgeAndCorner:
+    case mesh::BoundaryInterpolation::kEdgeAndCorner:
       return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
   }
   return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
@@ -75,7 +76,7 @@ Sdc::Options::VtxBoundaryInterpolation sdcBoundary(BoundaryInterpolation boundar
 
 }  // namespace
 
-Sdc::Options sdcOptions(const SubdivisionTags& tags) {
+Sdc::Options sdcOptions(const mesh::SubdivisionTags& tags) {
   Sdc::Options options;
   options.SetVtxBoundaryInterpolation(sdcBoundary(tags.boundary));
   options.SetCreasingMethod(tags.crease_method == "chaikin" ? Sdc::Options::CREASE_CHAIKIN
@@ -86,7 +87,7 @@ Sdc::Options sdcOptions(const SubdivisionTags& tags) {
   return options;
 }
 
-std::unique_ptr<Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh, Scheme scheme) {
+std::unique_ptr<Far::TopologyRefiner> buildTopologyRefiner(const mesh::Mesh& mesh, Scheme scheme) {
   validateForScheme(mesh, scheme);
 
   std::vector<int> verts_per_face(mesh.faceCount());
@@ -95,14 +96,14 @@ std::unique_ptr<Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh, Sch
                                            mesh.corner_positions.end());
   std::vector<Far::Index> crease_pairs;
   std::vector<float> crease_weights;
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     crease_pairs.push_back(Far::Index(crease.v0));
     crease_pairs.push_back(Far::Index(crease.v1));
     crease_weights.push_back(float(crease.sharpness));
   }
   std::vector<Far::Index> corner_verts;
   std::vector<float> corner_weights;
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     corner_verts.push_back(Far::Index(corner.vertex));
     corner_weights.push_back(float(corner.sharpness));
   }
@@ -127,10 +128,10 @@ std::unique_ptr<Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh, Sch
   FarErrorCapture capture;
   std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, options));
   if (!refiner) {
-    throw InputError(mesh.source, "mesh topology",
-                     "OpenSubdiv cannot build a " + std::string(schemeName(scheme)) +
-                         " surface from it: " +
-                         (capture.errors().empty() ? "no reason given" : capture.errors()));
+    throw mesh::InputError(mesh.source, "mesh topology",
+                           "OpenSubdiv cannot build a " + std::string(schemeName(scheme)) +
+                               " surface from it: " +
+                               (capture.errors().empty() ? "no reason given" : capture.errors()));
   }
   return refiner;
 }

@@ -13,12 +13,12 @@ namespace tb::osd {
 
 // Sdc options from the mesh's tags: boundary interpolation (already mapped from the
 // OBJ tag values), the crease method, and Catmark weights on triangles.
-OpenSubdiv::Sdc::Options sdcOptions(const SubdivisionTags& tags);
+OpenSubdiv::Sdc::Options sdcOptions(const mesh::SubdivisionTags& tags);
 
 // Throws InputError when the reference cannot represent the mesh: no faces, a
 // non-triangle face under Loop, a tag naming a missing vertex or face, a negative or
 // non-finite sharpness, or topology OpenSubdiv rejects (with its message).
-std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> buildTopologyRefiner(const Mesh& mesh,
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> buildTopologyRefiner(const mesh::Mesh& mesh,
                                                                        Scheme scheme);
 
 }  // namespace tb::osd

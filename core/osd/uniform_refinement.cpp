@@ -22,11 +22,11 @@ struct RefinedPoint {
 
 }  // namespace
 
-Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels) {
+mesh::Mesh refineUniform(const mesh::Mesh& mesh, Scheme scheme, int levels) {
   auto refiner = buildTopologyRefiner(mesh, scheme);
   refiner->RefineUniform(OpenSubdiv::Far::TopologyRefiner::UniformOptions(levels));
   std::vector<RefinedPoint> points;
-  for (const Vec3d& p : mesh.positions) points.push_back({p[0], p[1], p[2]});
+  for (const mesh::Vec3d& p : mesh.positions) points.push_back({p[0], p[1], p[2]});
   OpenSubdiv::Far::PrimvarRefiner primvar(*refiner);
   for (int level = 1; level <= levels; ++level) {
     std::vector<RefinedPoint> finer(size_t(refiner->GetLevel(level).GetNumVertices()));
@@ -35,7 +35,7 @@ Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels) {
     points = std::move(finer);
   }
   const OpenSubdiv::Far::TopologyLevel& last = refiner->GetLevel(levels);
-  Mesh refined;
+  mesh::Mesh refined;
   refined.source = mesh.source + " (refined " + std::to_string(levels) + "x)";
   for (const RefinedPoint& p : points) refined.positions.push_back({p.x, p.y, p.z});
   for (int f = 0; f < last.GetNumFaces(); ++f) {

@@ -11,6 +11,6 @@ namespace tb::osd {
 
 // Throws InputError as buildTopologyRefiner does. The result has no normals, uvs or tags
 // (creases are applied while refining, then dropped); its faces are the last level's.
-Mesh refineUniform(const Mesh& mesh, Scheme scheme, int levels);
+mesh::Mesh refineUniform(const mesh::Mesh& mesh, Scheme scheme, int levels);
 
 }  // namespace tb::osd

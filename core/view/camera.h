@@ -7,14 +7,14 @@
 #include "core/mesh/vec.h"
 #include "core/view/view.h"
 
-namespace tb {
+namespace tb::view {
 
 // World to eye space, right-handed: the camera at `eye` looks at `target`; eye space has
 // x right, y up, and looks down -z. `up` must not be parallel to target - eye.
-inline Mat4 lookAt(const Vec3d& eye, const Vec3d& target, const Vec3d& up) {
-  const Vec3d f = normalize(target - eye);
-  const Vec3d s = normalize(cross(f, up));
-  const Vec3d u = cross(s, f);
+inline Mat4 lookAt(const mesh::Vec3d& eye, const mesh::Vec3d& target, const mesh::Vec3d& up) {
+  const mesh::Vec3d f = normalize(target - eye);
+  const mesh::Vec3d s = normalize(cross(f, up));
+  const mesh::Vec3d u = cross(s, f);
   Mat4 r = Mat4::identity();
   for (int i = 0; i < 3; ++i) {
     r.m[i][0] = s[i];
@@ -43,9 +43,9 @@ inline Mat4 perspective(double fov_y_rad, double aspect, double near_plane, doub
 
 // A perspective camera as plain parameters (the conventions above).
 struct PerspectiveCamera {
-  Vec3d eye{0, 0, 1};
-  Vec3d target{0, 0, 0};
-  Vec3d up{0, 1, 0};
+  mesh::Vec3d eye{0, 0, 1};
+  mesh::Vec3d target{0, 0, 0};
+  mesh::Vec3d up{0, 1, 0};
   double fov_y_rad = 0.7853981633974483;  // 45 degrees
   uint32_t width_px = 1, height_px = 1;
   double near_plane = 0.01, far_plane = 100;  // world units
@@ -68,4 +68,4 @@ inline View perspectiveView(const PerspectiveCamera& camera) {
   return view;
 }
 
-}  // namespace tb
+}  // namespace tb::view

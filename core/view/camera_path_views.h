@@ -8,11 +8,11 @@
 
 #include "core/view/view.h"
 
-namespace tb {
+namespace tb::view {
 
 struct CameraPath {
   std::string name;         // the rows' "camera_path" key, e.g. "orbit" or "test_orbit"
   std::vector<View> views;  // in path order (frame i is views[i]); never empty from a file
 };
 
-}  // namespace tb
+}  // namespace tb::view

@@ -12,7 +12,7 @@
 #include <array>
 #include <cstdint>
 
-namespace tb {
+namespace tb::view {
 
 // A 4x4 matrix, column-major: m[c][r] is row r of column c.
 struct Mat4 {
@@ -77,4 +77,4 @@ inline ProjectedPoint projectToPixels(const View& view, double x, double y, doub
   return p;
 }
 
-}  // namespace tb
+}  // namespace tb::view

@@ -13,7 +13,7 @@
 
 namespace flat {
 
-using tb::Vec3T;
+using tb::mesh::Vec3T;
 
 // One triangle's corners, in the scalar of the evaluation (double, float, or CountingScalar
 // for the operation counts).
@@ -36,18 +36,20 @@ template <class T>
 Point<T> evaluateLinear(const Triangle<T>& t, const T (&w)[3]) {
   Point<T> point;
   point.position = t.position[0] * w[0] + t.position[1] * w[1] + t.position[2] * w[2];
-  point.normal = tb::normalize(t.normal[0] * w[0] + t.normal[1] * w[1] + t.normal[2] * w[2]);
+  point.normal = tb::mesh::normalize(t.normal[0] * w[0] + t.normal[1] * w[1] + t.normal[2] * w[2]);
   return point;
 }
 
-class FlatPatches final : public tb::SurfacePatches {
+class FlatPatches final : public tb::techniques::SurfacePatches {
  public:
-  explicit FlatPatches(tb::Triangulation triangulation)
-      : tri_(std::move(triangulation)), warnings_(tb::triangulationWarnings(tri_)) {}
+  explicit FlatPatches(tb::mesh::Triangulation triangulation)
+      : tri_(std::move(triangulation)), warnings_(tb::mesh::triangulationWarnings(tri_)) {}
 
-  tb::PatchDomain patchDomain(size_t) const override { return tb::PatchDomain::kTriangle; }
+  tb::techniques::PatchDomain patchDomain(size_t) const override {
+    return tb::techniques::PatchDomain::kTriangle;
+  }
   size_t patchCount() const override { return tri_.mesh.faceCount(); }
-  const tb::Mesh& controlMesh() const override { return tri_.mesh; }
+  const tb::mesh::Mesh& controlMesh() const override { return tri_.mesh; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = tri_.mesh.facePositions(patch);
     return {face[0], face[1], face[2], UINT32_MAX};
@@ -55,13 +57,15 @@ class FlatPatches final : public tb::SurfacePatches {
   uint32_t sourceFace(size_t patch) const override { return tri_.source_face[patch]; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
-  tb::SurfacePoint evaluate(size_t patch, const tb::DomainCoord& coord) const override {
+  tb::techniques::SurfacePoint evaluate(size_t patch,
+                                        const tb::techniques::DomainCoord& coord) const override {
     const double w[3] = {coord[0], coord[1], coord[2]};
     const Point<double> point = evaluateLinear(corners<double>(patch), w);
     return {point.position, point.normal};
   }
 
-  tb::SurfacePointF evaluateFloat(size_t patch, const tb::tess::DomainPoint& coord) const override {
+  tb::techniques::SurfacePointF evaluateFloat(size_t patch,
+                                              const tb::tess::DomainPoint& coord) const override {
     const float w[3] = {coord[0], coord[1], coord[2]};
     const Point<float> point = evaluateLinear(corners<float>(patch), w);
     return {point.position, point.normal};
@@ -76,7 +80,7 @@ class FlatPatches final : public tb::SurfacePatches {
     program.domain = tb::tess::Domain::kTriangle;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;
-    const tb::Mesh& mesh = tri_.mesh;
+    const tb::mesh::Mesh& mesh = tri_.mesh;
     std::vector<uint32_t> corners;
     for (size_t p = 0; p < patchCount(); ++p) {
       const uint32_t first = mesh.face_offsets[p];
@@ -88,34 +92,34 @@ class FlatPatches final : public tb::SurfacePatches {
   }
 
   // Exact counts: nothing per patch (the TCS only loads), the interpolation per vertex.
-  std::optional<tb::OperationProfile> operationProfile(size_t patch) const override {
-    using C = tb::CountingScalar<float>;
+  std::optional<tb::techniques::OperationProfile> operationProfile(size_t patch) const override {
+    using C = tb::techniques::CountingScalar<float>;
     const Triangle<C> triangle = corners<C>(patch);
     const C w[3] = {C(1.0f / 3.0f), C(1.0f / 3.0f), C(1.0f / 3.0f)};
-    tb::OperationProfile profile;
-    tb::resetOperationCounts();
+    tb::techniques::OperationProfile profile;
+    tb::techniques::resetOperationCounts();
     (void)evaluateLinear(triangle, w);
-    profile.per_vertex = tb::operationCounts();
+    profile.per_vertex = tb::techniques::operationCounts();
     profile.note = "float, shader order: linear position and normal, tbNormalize";
     return profile;
   }
 
   // A vertex buffer (position + normal, float) per corner position and an index buffer:
   // the plain mesh itself. Best case for memory; every other technique adds patch data.
-  tb::DataFootprint footprint() const override {
-    const tb::Mesh& mesh = tri_.mesh;
+  tb::techniques::DataFootprint footprint() const override {
+    const tb::mesh::Mesh& mesh = tri_.mesh;
     return {uint64_t(mesh.positions.size()) * 24 + uint64_t(mesh.faceCount()) * 3 * 4, 0, 0, 0};
   }
 
  private:
   template <class T>
   Triangle<T> corners(size_t patch) const {
-    const tb::Mesh& mesh = tri_.mesh;
+    const tb::mesh::Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     Triangle<T> t;
     for (int i = 0; i < 3; ++i) {
-      const tb::Vec3d& p = mesh.positions[mesh.corner_positions[first + i]];
-      const tb::Vec3d& n = mesh.normals[size_t(mesh.corner_normals[first + i])];
+      const tb::mesh::Vec3d& p = mesh.positions[mesh.corner_positions[first + i]];
+      const tb::mesh::Vec3d& n = mesh.normals[size_t(mesh.corner_normals[first + i])];
       if constexpr (std::is_same_v<T, double>) {
         t.position[i] = p;  // the exact surface, for the error measure
         t.normal[i] = n;
@@ -128,9 +132,9 @@ class FlatPatches final : public tb::SurfacePatches {
     return t;
   }
 
-  static std::vector<uint32_t> vec4Words(const std::vector<tb::Vec3d>& values) {
+  static std::vector<uint32_t> vec4Words(const std::vector<tb::mesh::Vec3d>& values) {
     std::vector<uint32_t> words;
-    for (const tb::Vec3d& v : values) {
+    for (const tb::mesh::Vec3d& v : values) {
       for (float x : {float(v.x), float(v.y), float(v.z), 1.0f}) {
         words.push_back(std::bit_cast<uint32_t>(x));
       }
@@ -138,33 +142,36 @@ class FlatPatches final : public tb::SurfacePatches {
     return words;
   }
 
-  tb::Triangulation tri_;
+  tb::mesh::Triangulation tri_;
   std::vector<std::string> warnings_;
 };
 
-class FlatTechnique final : public tb::Technique {
+class FlatTechnique final : public tb::techniques::Technique {
  public:
-  const tb::TechniqueInfo& info() const override {
-    static const tb::TechniqueInfo kInfo{
-        "flat", tb::TechniqueFamily::kSurface, "Plain triangle mesh (linear interpolation)",
+  const tb::techniques::TechniqueInfo& info() const override {
+    static const tb::techniques::TechniqueInfo kInfo{
+        "flat", tb::techniques::TechniqueFamily::kSurface,
+        "Plain triangle mesh (linear interpolation)",
         "the baseline: what a GPU draws from the mesh's own vertex and index buffers",
         "triangle meshes with vertex normals; polygons are fan-triangulated"};
     return kInfo;
   }
-  std::vector<tb::VariantInfo> variants() const override {
+  std::vector<tb::techniques::VariantInfo> variants() const override {
     return {{"default", "linear position, interpolated and renormalised vertex normal", {}}};
   }
-  std::string checkSupport(const tb::Mesh& mesh) const override {
+  std::string checkSupport(const tb::mesh::Mesh& mesh) const override {
     if (mesh.faceCount() == 0) return "flat: " + mesh.source + " has no faces";
     if (!mesh.hasNormals()) return "flat: " + mesh.source + " has no normals";
     return {};
   }
-  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput& input,
-                                               const tb::VariantInfo&) const override {
-    const tb::Mesh& mesh = tb::requireMesh(info(), input);
-    if (std::string reason = checkSupport(mesh); !reason.empty()) throw tb::UnsupportedInput(reason);
-    return std::make_unique<tb::SurfaceInstance>(
-        std::make_unique<FlatPatches>(tb::fanTriangulate(mesh)));
+  std::unique_ptr<tb::techniques::TechniqueInstance> build(
+      const tb::techniques::TechniqueInput& input,
+      const tb::techniques::VariantInfo&) const override {
+    const tb::mesh::Mesh& mesh = tb::techniques::requireMesh(info(), input);
+    if (std::string reason = checkSupport(mesh); !reason.empty())
+      throw tb::techniques::UnsupportedInput(reason);
+    return std::make_unique<tb::techniques::SurfaceInstance>(
+        std::make_unique<FlatPatches>(tb::mesh::fanTriangulate(mesh)));
   }
 };
 

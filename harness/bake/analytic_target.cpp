@@ -11,7 +11,7 @@
 #include "core/mesh/input_error.h"
 #include "reference/limit_surface.h"
 
-namespace tb {
+namespace tb::bake {
 namespace {
 
 // Phases of the three sines, so h is not symmetric about the box centre.
@@ -19,7 +19,7 @@ constexpr double kPhase[3] = {0.3, 1.1, 2.3};
 
 }  // namespace
 
-double AnalyticDisplacement::height(const Vec3d& p) const {
+double AnalyticDisplacement::height(const mesh::Vec3d& p) const {
   const double k = 2 * std::numbers::pi * frequency / diagonal;
   double sum = 0;
   for (int i = 0; i < 3; ++i) sum += std::sin(k * (p[i] - centre[i]) + kPhase[i]);
@@ -34,12 +34,12 @@ std::string AnalyticDisplacement::describe() const {
       diagonal);
 }
 
-AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh) {
-  if (mesh.positions.empty()) throw InputError(mesh.source, "", "the mesh has no vertices");
-  const Aabb box = boundsOf(mesh);
-  const double diagonal = diagonalOf(box);
+AnalyticDisplacement analyticDisplacementFor(const mesh::Mesh& mesh) {
+  if (mesh.positions.empty()) throw mesh::InputError(mesh.source, "", "the mesh has no vertices");
+  const mesh::Aabb box = mesh::boundsOf(mesh);
+  const double diagonal = mesh::diagonalOf(box);
   if (!(diagonal > 0)) {
-    throw InputError(mesh.source, "", "the bounding box has a zero diagonal");
+    throw mesh::InputError(mesh.source, "", "the bounding box has a zero diagonal");
   }
   AnalyticDisplacement h;
   h.centre = 0.5 * (box.min + box.max);
@@ -49,12 +49,12 @@ AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh) {
   return h;
 }
 
-ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, int rate,
+ref::LimitTessellation analyticTargetMesh(const mesh::Mesh& mesh, osd::Scheme scheme, int rate,
                                           const AnalyticDisplacement& displacement) {
   const ref::LimitSurface limit(mesh, scheme);
   ref::LimitTessellation target = ref::tessellateLimit(limit, rate);
   for (size_t i = 0; i < target.positions.size(); ++i) {
-    const Vec3d p = target.positions[i];
+    const mesh::Vec3d p = target.positions[i];
     target.positions[i] = p + displacement.height(p) * target.normals[i];
   }
   return target;
@@ -63,13 +63,13 @@ ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, 
 void writeTriangleObj(const std::string& path, const ref::LimitTessellation& mesh,
                       const std::string& comment) {
   if (std::filesystem::exists(path)) {
-    throw InputError(path, "", "the file exists already (never overwritten)");
+    throw mesh::InputError(path, "", "the file exists already (never overwritten)");
   }
   const std::string partial = path + ".partial";
   std::FILE* file = std::fopen(partial.c_str(), "wx");
-  if (file == nullptr) throw InputError(path, "", "cannot be written");
+  if (file == nullptr) throw mesh::InputError(path, "", "cannot be written");
   bool ok = std::fprintf(file, "# %s\n", comment.c_str()) > 0;
-  for (const Vec3d& p : mesh.positions) {
+  for (const mesh::Vec3d& p : mesh.positions) {
     ok = ok && std::fprintf(file, "v %.17g %.17g %.17g\n", p.x, p.y, p.z) > 0;
   }
   for (const ref::Triangle& t : mesh.triangles) {
@@ -80,8 +80,8 @@ void writeTriangleObj(const std::string& path, const ref::LimitTessellation& mes
   if (ok) std::filesystem::rename(partial, path, error);
   if (!ok || error) {
     std::filesystem::remove(partial, error);
-    throw InputError(path, "", "cannot be written");
+    throw mesh::InputError(path, "", "cannot be written");
   }
 }
 
-}  // namespace tb
+}  // namespace tb::bake

@@ -19,16 +19,16 @@
 #include "core/osd/scheme.h"
 #include "reference/limit_tessellation.h"
 
-namespace tb {
+namespace tb::bake {
 
 struct AnalyticDisplacement {
-  Vec3d centre;          // c: bounding-box centre of the control mesh, world units
+  mesh::Vec3d centre;    // c: bounding-box centre of the control mesh, world units
   double diagonal = 1;   // D: its diagonal, world units (> 0)
   double amplitude = 0;  // A: world units
   double frequency = 2;  // f: cycles per diagonal
 
   // h(p), world units.
-  double height(const Vec3d& p) const;
+  double height(const mesh::Vec3d& p) const;
   // The formula with its numbers, for the sidecar ("h(p) = ...").
   std::string describe() const;
 };
@@ -38,14 +38,14 @@ inline constexpr double kAnalyticFrequency = 2;             // f, cycles per dia
 
 // h for `mesh`'s bounding box with the default amplitude and frequency. Throws InputError for
 // a mesh without positions or with a zero diagonal.
-AnalyticDisplacement analyticDisplacementFor(const Mesh& mesh);
+AnalyticDisplacement analyticDisplacementFor(const mesh::Mesh& mesh);
 
 // The limit surface of `mesh` under `scheme` tessellated at `rate` (ref::tessellateLimit),
 // each vertex moved along its unit limit normal by displacement.height(limit position); the
 // normals are left as the limit's (they are not the displaced surface's). Faces without a
 // limit surface are left out (faces_skipped). Throws InputError like LimitSurface and
 // tessellateLimit (rate outside 1..1024).
-ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, int rate,
+ref::LimitTessellation analyticTargetMesh(const mesh::Mesh& mesh, osd::Scheme scheme, int rate,
                                           const AnalyticDisplacement& displacement);
 
 // The mesh as an OBJ file (v and f lines, 1-based, triangles counter-clockwise); throws
@@ -53,4 +53,4 @@ ref::LimitTessellation analyticTargetMesh(const Mesh& mesh, osd::Scheme scheme, 
 void writeTriangleObj(const std::string& path, const ref::LimitTessellation& mesh,
                       const std::string& comment);
 
-}  // namespace tb
+}  // namespace tb::bake

@@ -7,7 +7,7 @@
 
 #include "harness/bake/baker.h"
 
-namespace tb {
+namespace tb::bake {
 
 struct BakeProvenance {
   std::string technique, variant, asset;  // asset as shown (bundled name or path)
@@ -35,4 +35,4 @@ nlohmann::json bakeSidecar(const BakeProvenance& provenance, const BakeSettings&
 void writeBake(const std::string& exr_path, const BakeResult& result,
                const nlohmann::json& sidecar);
 
-}  // namespace tb
+}  // namespace tb::bake

@@ -16,24 +16,25 @@
 #include "reference/triangle_mesh_ref.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::bake {
 
 inline constexpr std::uint32_t kMaxBakeResolution = 1024;
 
 struct BakeSettings {
-  DisplacementKind kind = DisplacementKind::kScalar;
+  displacement::DisplacementKind kind = displacement::DisplacementKind::kScalar;
   // Texels per patch side, both edges included (2..kMaxBakeResolution): the first and last
   // lie on the patch's edges, so a patch's edges and corners sit on texel centres and
   // bilinear sampling is second order up to them; each tile adds `border` texels on every
   // side (copies of the edge, for filtering that reaches past it).
   std::uint32_t resolution = 16;
-  DisplacementLayout layout = DisplacementLayout::kTiles;  // kUv is refused (not built yet)
+  displacement::DisplacementLayout layout =
+      displacement::DisplacementLayout::kTiles;  // kUv is refused (not built yet)
   std::uint32_t border = 1;
-  DisplacementPixelType pixel_type = DisplacementPixelType::kFloat;
+  displacement::DisplacementPixelType pixel_type = displacement::DisplacementPixelType::kFloat;
 };
 
 struct BakeResult {
-  DisplacementMap map;
+  displacement::DisplacementMap map;
   // Scalar: texels whose rays along +n and -n both missed the target (texel 0), plus texels
   // where the direction is zero. Vector: texels with a zero normal never count; 0 unless
   // the target is empty. Best 0, worst every baked texel.
@@ -64,8 +65,8 @@ TexelParameter texelParameter(std::uint32_t x, std::uint32_t y, const BakeSettin
 // thread count. Throws InputError for a resolution outside 2..kMaxBakeResolution, the uv
 // layout ("not built yet"), an atlas wider or taller than kMaxDisplacementSide, and a target
 // with bad indices or coordinates (named `target_source`).
-BakeResult bakeDisplacement(const SurfacePatches& patches, const ref::TriangleMeshRef& target,
-                            const BakeSettings& settings,
+BakeResult bakeDisplacement(const techniques::SurfacePatches& patches,
+                            const ref::TriangleMeshRef& target, const BakeSettings& settings,
                             const std::string& target_source = "target mesh");
 
-}  // namespace tb
+}  // namespace tb::bake

@@ -27,21 +27,21 @@ std::optional<double> parseBound(const std::string& option, const std::string& t
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
-    throw InputError(option, text, "a bound is a finite number >= 0");
+    throw mesh::InputError(option, text, "a bound is a finite number >= 0");
   }
   return value;
 }
 
-std::vector<const Technique*> techniquesNamed(const std::vector<std::string>& ids) {
-  std::vector<const Technique*> selected;
+std::vector<const techniques::Technique*> techniquesNamed(const std::vector<std::string>& ids) {
+  std::vector<const techniques::Technique*> selected;
   for (const std::string& id : ids) {
-    const Technique* technique = TechniqueRegistry::instance().find(id);
+    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
     if (technique == nullptr) {
       std::string known;
-      for (const Technique* t : TechniqueRegistry::instance().all()) {
+      for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
         known += (known.empty() ? "" : ", ") + t->info().id;
       }
-      throw InputError("--technique", id, "unknown technique (known: " + known + ")");
+      throw mesh::InputError("--technique", id, "unknown technique (known: " + known + ")");
     }
     selected.push_back(technique);
   }
@@ -50,28 +50,29 @@ std::vector<const Technique*> techniquesNamed(const std::vector<std::string>& id
 
 // The advise measures of every (selected) technique on the one asset, default suite, no
 // run folder, no progress output.
-Results measureInProcess(const AdviseArgs& args, std::string* asset_name) {
-  SuiteSelection selection;
+results::Results measureInProcess(const AdviseArgs& args, std::string* asset_name) {
+  suite::SuiteSelection selection;
   selection.techniques = techniquesNamed(args.techniques);
-  const AssetRef asset = resolveAsset(args.asset);
+  const suite::AssetRef asset = suite::resolveAsset(args.asset);
   *asset_name = asset.name;
   selection.assets.push_back(asset);
   for (const std::string& id : adviseMeasureIds()) {
-    const Measure* measure = MeasureRegistry::instance().find(id);
-    if (measure == nullptr) throw InputError("advise", id, "measure not registered");
+    const measures::Measure* measure = measures::MeasureRegistry::instance().find(id);
+    if (measure == nullptr) throw mesh::InputError("advise", id, "measure not registered");
     selection.measures.push_back(measure);
   }
-  Results results;
-  runSuite(selection, [](size_t, size_t, const std::string&) {}, &results);
+  results::Results results;
+  suite::runSuite(
+      selection, [](size_t, size_t, const std::string&) {}, &results);
   return results;
 }
 
 // The run's name for `asked`: itself, or the one asset whose name ends in "/<asked>"
 // ("catmark_cube" for "opensubdiv/catmark_cube", as `run --asset` takes it).
-std::string assetInRun(const Results& results, const std::string& asked) {
+std::string assetInRun(const results::Results& results, const std::string& asked) {
   std::vector<std::string> names;
-  for (const AssetSummary& a : results.assets) names.push_back(a.name);
-  for (const Skip& s : results.skipped) names.push_back(s.asset);
+  for (const results::AssetSummary& a : results.assets) names.push_back(a.name);
+  for (const results::Skip& s : results.skipped) names.push_back(s.asset);
   if (std::find(names.begin(), names.end(), asked) != names.end()) return asked;
   std::string found;
   for (const std::string& name : names) {
@@ -83,21 +84,22 @@ std::string assetInRun(const Results& results, const std::string& asked) {
   return found.empty() ? asked : found;
 }
 
-Results readRun(const AdviseArgs& args, std::string* asset_name) {
+results::Results readRun(const AdviseArgs& args, std::string* asset_name) {
   techniquesNamed(args.techniques);  // an unknown id is bad input here too
-  requireFinishedRunFolder(args.run_dir);
-  Results results = readResultsFile(args.run_dir + "/results.json");
+  results::requireFinishedRunFolder(args.run_dir);
+  results::Results results = results::readResultsFile(args.run_dir + "/results.json");
   *asset_name = assetInRun(results, args.asset);
   const bool named =
       std::any_of(results.records.begin(), results.records.end(),
-                  [&](const Record& r) { return r.asset == *asset_name; }) ||
+                  [&](const results::Record& r) { return r.asset == *asset_name; }) ||
       std::any_of(results.skipped.begin(), results.skipped.end(),
-                  [&](const Skip& s) { return s.asset == *asset_name; });
+                  [&](const results::Skip& s) { return s.asset == *asset_name; });
   if (!named) {
     std::string known;
-    for (const AssetSummary& a : results.assets) known += (known.empty() ? "" : ", ") + a.name;
-    throw InputError(args.run_dir + "/results.json", args.asset,
-                     "no records for this asset in the run (assets: " + known + ")");
+    for (const results::AssetSummary& a : results.assets)
+      known += (known.empty() ? "" : ", ") + a.name;
+    throw mesh::InputError(args.run_dir + "/results.json", args.asset,
+                           "no records for this asset in the run (assets: " + known + ")");
   }
   return results;
 }
@@ -106,11 +108,11 @@ nlohmann::ordered_json optionalJson(const std::optional<double>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
 }
 
-std::string adviceJson(const Advice& advice, const AdviceConstraints& c) {
+std::string adviceJson(const report::Advice& advice, const report::AdviceConstraints& c) {
   nlohmann::ordered_json candidates = nlohmann::ordered_json::array();
   for (size_t i = 0; i < advice.ranked.size(); ++i) {
-    const Candidate& candidate = advice.ranked[i];
-    const CandidateFigures& f = candidate.figures;
+    const report::Candidate& candidate = advice.ranked[i];
+    const report::CandidateFigures& f = candidate.figures;
     candidates.push_back({{"rank", i + 1},
                           {"technique", candidate.technique},
                           {"variant", candidate.variant},
@@ -127,7 +129,7 @@ std::string adviceJson(const Advice& advice, const AdviceConstraints& c) {
                           {"verdict", candidate.verdict}});
   }
   nlohmann::ordered_json unsupported = nlohmann::ordered_json::array();
-  for (const UnsupportedTechnique& u : advice.unsupported) {
+  for (const report::UnsupportedTechnique& u : advice.unsupported) {
     unsupported.push_back({{"technique", u.technique},
                            {"verdict", "excluded: unsupported input: " + u.reason},
                            {"reason", u.reason}});
@@ -139,15 +141,15 @@ std::string adviceJson(const Advice& advice, const AdviceConstraints& c) {
         {"max_memory_ratio", optionalJson(c.max_memory_ratio)},
         {"watertight", c.watertight},
         {"max_instructions", optionalJson(c.max_instructions)}}},
-      {"units",
-       {{"error", "rel_diag"}, {"instructions", "count"}, {"memory_ratio", "ratio"}}},
-      {"ranking_rule", kAdviceRankingRule},
-      {"figures", kAdviceFigureUnits},
+      {"units", {{"error", "rel_diag"}, {"instructions", "count"}, {"memory_ratio", "ratio"}}},
+      {"ranking_rule", report::kAdviceRankingRule},
+      {"figures", report::kAdviceFigureUnits},
       {"candidates", candidates},
       {"unsupported", unsupported},
-      {"first_choice", advice.anyPasses() ? nlohmann::ordered_json(advice.ranked.front().technique +
-                                                                   "/" + advice.ranked.front().variant)
-                                          : nlohmann::ordered_json(nullptr)}};
+      {"first_choice", advice.anyPasses()
+                           ? nlohmann::ordered_json(advice.ranked.front().technique + "/" +
+                                                    advice.ranked.front().variant)
+                           : nlohmann::ordered_json(nullptr)}};
   return json.dump(2) + "\n";
 }
 
@@ -182,7 +184,7 @@ CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args) {
 }
 
 int runAdvise(const AdviseArgs& args) {
-  AdviceConstraints constraints;
+  report::AdviceConstraints constraints;
   constraints.max_error = parseBound("--max-error", args.max_error);
   constraints.max_memory_ratio = parseBound("--max-memory-ratio", args.max_memory_ratio);
   constraints.max_instructions = parseBound("--max-instructions", args.max_instructions);
@@ -190,10 +192,11 @@ int runAdvise(const AdviseArgs& args) {
   constraints.techniques = args.techniques;
 
   std::string asset = args.asset;
-  const Results results = args.run_dir.empty() ? measureInProcess(args, &asset) : readRun(args, &asset);
-  const Advice advice = rankCandidates(results, asset, constraints);
+  const results::Results results =
+      args.run_dir.empty() ? measureInProcess(args, &asset) : readRun(args, &asset);
+  const report::Advice advice = report::rankCandidates(results, asset, constraints);
   fmt::print("{}", args.json ? adviceJson(advice, constraints)
-                             : renderAdviceMarkdown(advice, constraints));
+                             : report::renderAdviceMarkdown(advice, constraints));
   return advice.anyPasses() ? 0 : 1;
 }
 

@@ -20,58 +20,60 @@
 namespace tb::cli {
 namespace {
 
-const Technique& techniqueNamed(const std::string& id) {
-  const Technique* technique = TechniqueRegistry::instance().find(id);
-  if (technique != nullptr && technique->info().family == TechniqueFamily::kSurface) {
+const techniques::Technique& techniqueNamed(const std::string& id) {
+  const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
+  if (technique != nullptr && technique->info().family == techniques::TechniqueFamily::kSurface) {
     return *technique;
   }
   std::string known;
-  for (const Technique* t : TechniqueRegistry::instance().all()) {
-    if (t->info().family != TechniqueFamily::kSurface) continue;
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+    if (t->info().family != techniques::TechniqueFamily::kSurface) continue;
     known += (known.empty() ? "" : ", ") + t->info().id;
   }
-  throw InputError("--technique", id, "unknown surface technique (known: " + known + ")");
+  throw mesh::InputError("--technique", id, "unknown surface technique (known: " + known + ")");
 }
 
-VariantInfo variantNamed(const Technique& technique, const std::string& name) {
-  const std::vector<VariantInfo> variants = technique.variants();
+techniques::VariantInfo variantNamed(const techniques::Technique& technique,
+                                     const std::string& name) {
+  const std::vector<techniques::VariantInfo> variants = technique.variants();
   if (name.empty() && !variants.empty()) return variants.front();
   std::string known;
-  for (const VariantInfo& variant : variants) {
+  for (const techniques::VariantInfo& variant : variants) {
     if (variant.name == name) return variant;
     known += (known.empty() ? "" : ", ") + variant.name;
   }
-  throw InputError("--variant", name,
-                   "unknown variant of " + technique.info().id + " (known: " + known + ")");
+  throw mesh::InputError("--variant", name,
+                         "unknown variant of " + technique.info().id + " (known: " + known + ")");
 }
 
 void refuseExisting(const std::string& option, const std::string& path) {
   if (std::filesystem::exists(path)) {
-    throw InputError(option, path, "the file exists already (never overwritten)");
+    throw mesh::InputError(option, path, "the file exists already (never overwritten)");
   }
 }
 
 // Every check that needs no computation, so bad input fails before any work.
-BakeSettings checkedSettings(const BakeArgs& args) {
+bake::BakeSettings checkedSettings(const BakeArgs& args) {
   if (args.analytic == !args.target.empty()) {
-    throw InputError("--target/--analytic", "",
-                     "give exactly one of --target MESH.obj or --analytic");
+    throw mesh::InputError("--target/--analytic", "",
+                           "give exactly one of --target MESH.obj or --analytic");
   }
   if (!args.write_target.empty() && !args.analytic) {
-    throw InputError("--write-target", args.write_target, "needs --analytic");
+    throw mesh::InputError("--write-target", args.write_target, "needs --analytic");
   }
   if (args.layout == "uv") {
-    throw InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
+    throw mesh::InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
   }
   refuseExisting("--out", args.out);
-  refuseExisting("--out", sidecarPath(args.out));
+  refuseExisting("--out", bake::sidecarPath(args.out));
   if (!args.write_target.empty()) refuseExisting("--write-target", args.write_target);
-  BakeSettings settings;
-  settings.kind = args.kind == "vector" ? DisplacementKind::kVector : DisplacementKind::kScalar;
+  bake::BakeSettings settings;
+  settings.kind = args.kind == "vector" ? displacement::DisplacementKind::kVector
+                                        : displacement::DisplacementKind::kScalar;
   settings.resolution = args.resolution;
-  settings.layout = DisplacementLayout::kTiles;
-  settings.pixel_type =
-      args.pixel_type == "float" ? DisplacementPixelType::kFloat : DisplacementPixelType::kHalf;
+  settings.layout = displacement::DisplacementLayout::kTiles;
+  settings.pixel_type = args.pixel_type == "float" ? displacement::DisplacementPixelType::kFloat
+                                                   : displacement::DisplacementPixelType::kHalf;
   return settings;
 }
 
@@ -99,8 +101,9 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
                    "minus surface point)")
       ->check(CLI::IsMember({"scalar", "vector"}))
       ->capture_default_str();
-  bake->add_option("--resolution", args.resolution, "texels per patch side, both edges included (2 to 1024)")
-      ->check(CLI::Range(1u, kMaxBakeResolution))
+  bake->add_option("--resolution", args.resolution,
+                   "texels per patch side, both edges included (2 to 1024)")
+      ->check(CLI::Range(1u, bake::kMaxBakeResolution))
       ->capture_default_str();
   bake->add_option("--layout", args.layout, "tiles (per-patch atlas) | uv (not built yet)")
       ->check(CLI::IsMember({"tiles", "uv"}))
@@ -115,49 +118,50 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
 }
 
 int runBake(const BakeArgs& args) {
-  const BakeSettings settings = checkedSettings(args);
-  const Technique& technique = techniqueNamed(args.technique);
-  const VariantInfo variant = variantNamed(technique, args.variant);
-  const AssetRef asset = resolveAsset(args.asset);
-  Mesh mesh = loadObjFile(asset.path);
+  const bake::BakeSettings settings = checkedSettings(args);
+  const techniques::Technique& technique = techniqueNamed(args.technique);
+  const techniques::VariantInfo variant = variantNamed(technique, args.variant);
+  const suite::AssetRef asset = suite::resolveAsset(args.asset);
+  mesh::Mesh mesh = mesh::loadObjFile(asset.path);
   mesh.source = asset.shownPath();
   if (std::string reason = technique.checkSupport(mesh); !reason.empty()) {
-    throw UnsupportedInput(reason);
+    throw techniques::UnsupportedInput(reason);
   }
-  const BuiltSurface patches = buildSurface(technique, mesh, variant);
+  const techniques::BuiltSurface patches = techniques::buildSurface(technique, mesh, variant);
   const auto start = std::chrono::steady_clock::now();
 
-  BakeProvenance provenance{technique.info().id, variant.name, asset.name, ""};
+  bake::BakeProvenance provenance{technique.info().id, variant.name, asset.name, ""};
   std::optional<ref::LimitTessellation> analytic;
-  Mesh target_obj;
+  mesh::Mesh target_obj;
   std::vector<ref::Triangle> target_triangles;
   ref::TriangleMeshRef target;
   if (args.analytic) {
-    const AnalyticDisplacement h = analyticDisplacementFor(patches->controlMesh());
-    analytic = analyticTargetMesh(patches->controlMesh(), referenceScheme(patches->approximates()),
-                                  args.target_rate, h);
+    const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(patches->controlMesh());
+    analytic = bake::analyticTargetMesh(
+        patches->controlMesh(), lod::referenceScheme(patches->approximates()), args.target_rate, h);
     provenance.target =
         fmt::format("analytic: {}, limit tessellation rate {}", h.describe(), args.target_rate);
     target = analytic->view();
     provenance.target_rate = args.target_rate;
   } else {
-    target_obj = loadObjFile(args.target);
+    target_obj = mesh::loadObjFile(args.target);
     target_triangles = ref::fanTriangles(target_obj);
     target = {target_obj.positions, target_triangles};
     provenance.target = args.target;
     provenance.target_path = std::filesystem::absolute(args.target).lexically_normal().string();
   }
-  const BakeResult result = bakeDisplacement(*patches, target, settings, provenance.target);
+  const bake::BakeResult result =
+      bake::bakeDisplacement(*patches, target, settings, provenance.target);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  writeBake(args.out, result, bakeSidecar(provenance, settings, result));
+  bake::writeBake(args.out, result, bake::bakeSidecar(provenance, settings, result));
   if (analytic && !args.write_target.empty()) {
-    writeTriangleObj(args.write_target, *analytic, provenance.target);
+    bake::writeTriangleObj(args.write_target, *analytic, provenance.target);
   }
   fmt::print("{}: {} x {} {} map, {} texels baked, {} missed, {:.3f} s; sidecar {}\n", args.out,
-             result.map.width, result.map.height, kindName(result.map.kind), result.texels_baked,
-             result.rays_missed, seconds, sidecarPath(args.out));
+             result.map.width, result.map.height, displacement::kindName(result.map.kind),
+             result.texels_baked, result.rays_missed, seconds, bake::sidecarPath(args.out));
   return 0;
 }
 

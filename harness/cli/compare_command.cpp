@@ -17,11 +17,12 @@ namespace tb::cli {
 namespace {
 
 // results.json, and timings.json when the folder has one (a committed baseline has none).
-RunData readFinishedRun(const std::string& folder, bool with_timings) {
-  requireFinishedRunFolder(folder);
-  RunData run{readResultsFile(folder + "/results.json"), std::nullopt};
+results::RunData readFinishedRun(const std::string& folder, bool with_timings) {
+  results::requireFinishedRunFolder(folder);
+  results::RunData run{results::readResultsFile(folder + "/results.json"), std::nullopt};
   const std::string timings = folder + "/timings.json";
-  if (with_timings && std::filesystem::exists(timings)) run.timings = readTimingsFile(timings);
+  if (with_timings && std::filesystem::exists(timings))
+    run.timings = results::readTimingsFile(timings);
   return run;
 }
 
@@ -29,7 +30,7 @@ double parseThreshold(const std::string& option, const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
-    throw InputError(option, text, "a threshold is a finite number >= 0");
+    throw mesh::InputError(option, text, "a threshold is a finite number >= 0");
   }
   return value;
 }
@@ -70,27 +71,27 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
 }
 
 int runCompare(const CompareArgs& args) {
-  CompareOptions options;
+  results::CompareOptions options;
   options.threshold = parseThreshold("--threshold", args.threshold);
   for (const std::string& item : args.metric_thresholds) {
     const size_t equals = item.find('=');
     if (equals == std::string::npos || equals == 0) {
-      throw InputError("--metric-threshold", item, "expected NAME=VALUE");
+      throw mesh::InputError("--metric-threshold", item, "expected NAME=VALUE");
     }
     options.metric_thresholds[item.substr(0, equals)] =
         parseThreshold("--metric-threshold", item.substr(equals + 1));
   }
   options.alpha = parseThreshold("--alpha", args.alpha);
   if (!(options.alpha > 0 && options.alpha < 1)) {
-    throw InputError("--alpha", args.alpha, "a significance level is in (0, 1)");
+    throw mesh::InputError("--alpha", args.alpha, "a significance level is in (0, 1)");
   }
   options.time_threshold = parseThreshold("--time-threshold", args.time_threshold);
   options.timings = !args.no_timings;
-  const RunData base = readFinishedRun(args.base, options.timings);
-  const RunData current = readFinishedRun(args.current, options.timings);
-  const Comparison comparison = compareRuns(base, current, options);
+  const results::RunData base = readFinishedRun(args.base, options.timings);
+  const results::RunData current = readFinishedRun(args.current, options.timings);
+  const results::Comparison comparison = results::compareRuns(base, current, options);
   fmt::print("# Compare {} -> {}\n\n{}", args.base, args.current,
-             renderComparison(comparison, args.limit));
+             results::renderComparison(comparison, args.limit));
   return comparison.failed() ? 1 : 0;
 }
 

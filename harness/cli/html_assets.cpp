@@ -40,7 +40,7 @@ std::optional<double> numberOf(const Json& entry, const char* name) {
 // A PNG of the run folder by its relative path; nullopt (and a note) when it is missing,
 // not a PNG, or over the size budget.
 std::optional<std::string> readPicture(const std::string& run_dir, const std::string& path,
-                                       size_t* bytes_used, HtmlAssets* assets) {
+                                       size_t* bytes_used, report::HtmlAssets* assets) {
   static constexpr std::string_view kPngSignature = "\x89PNG\r\n\x1a\n";
   if (path.empty() || path.find("..") != std::string::npos || path.front() == '/') {
     assets->picture_notes.push_back("a picture path \"" + path +
@@ -64,14 +64,14 @@ std::optional<std::string> readPicture(const std::string& run_dir, const std::st
 // One entry of pictures.json ({technique, variant, asset, level, error_png, wireframe_png,
 // error_max, scale_min, scale_max, error_statistic, [status, reason]}) as a group.
 void addPictureGroup(const std::string& run_dir, const Json& entry, size_t* bytes_used,
-                     HtmlAssets* assets) {
+                     report::HtmlAssets* assets) {
   const std::string name =
       textOf(entry, "technique") + "/" + textOf(entry, "variant") + " on " + textOf(entry, "asset");
   if (const std::string status = textOf(entry, "status"); !status.empty() && status != "ok") {
     assets->picture_notes.push_back(name + ": " + status + ": " + textOf(entry, "reason"));
     return;
   }
-  HtmlPictureGroup group;
+  report::HtmlPictureGroup group;
   group.title = name;
   const std::optional<double> level = numberOf(entry, "level");
   const std::string statistic = textOf(entry, "error_statistic");
@@ -93,7 +93,7 @@ void addPictureGroup(const std::string& run_dir, const Json& entry, size_t* byte
   if (!group.pictures.empty()) assets->pictures.push_back(std::move(group));
 }
 
-void loadPictures(const std::string& run_dir, HtmlAssets* assets) {
+void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
   const std::string index_path = run_dir + "/pictures/pictures.json";
   const std::optional<std::string> text = readWholeFile(index_path);
   if (!text) {
@@ -135,8 +135,8 @@ std::string chartJsPath() {
   return path != nullptr && *path != '\0' ? std::string(path) : std::string(TB_CHARTJS_PATH);
 }
 
-HtmlAssets loadHtmlAssets(const std::string& run_dir) {
-  HtmlAssets assets;
+report::HtmlAssets loadHtmlAssets(const std::string& run_dir) {
+  report::HtmlAssets assets;
   const std::string path = chartJsPath();
   std::optional<std::string> source = readWholeFile(path);
   if (source && !source->empty()) {
@@ -151,13 +151,13 @@ HtmlAssets loadHtmlAssets(const std::string& run_dir) {
   return assets;
 }
 
-std::string renderRunHtml(const Results& results, const std::string& run_dir) {
-  const HtmlAssets assets = loadHtmlAssets(run_dir);
+std::string renderRunHtml(const results::Results& results, const std::string& run_dir) {
+  const report::HtmlAssets assets = loadHtmlAssets(run_dir);
   if (assets.chartjs_source.empty()) {
     fmt::print(stderr, "tessbench: warning: {}; report.html has no charts\n",
                assets.chartjs_missing_reason);
   }
-  return renderHtml(results, assets);
+  return report::renderHtml(results, assets);
 }
 
 }  // namespace tb::cli

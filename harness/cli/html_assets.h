@@ -17,10 +17,10 @@ std::string chartJsPath();
 // no Chart.js leaves chartjs_source empty with the reason; no pictures.json, or one in
 // another format, leaves no pictures and a note saying why; a picture whose file is
 // missing or not a PNG is left out with a note.
-HtmlAssets loadHtmlAssets(const std::string& run_dir);
+report::HtmlAssets loadHtmlAssets(const std::string& run_dir);
 
 // report.html for `run`: without Chart.js, the page says charts are unavailable and one
 // warning line goes to stderr.
-std::string renderRunHtml(const Results& results, const std::string& run_dir);
+std::string renderRunHtml(const results::Results& results, const std::string& run_dir);
 
 }  // namespace tb::cli

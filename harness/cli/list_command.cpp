@@ -27,10 +27,10 @@ CLI::App* addListCommand(CLI::App& app, ListArgs& args) {
 int runList(const ListArgs& args) {
   nlohmann::ordered_json items = nlohmann::ordered_json::array();
   if (args.what == "techniques") {
-    for (const Technique* t : TechniqueRegistry::instance().all()) {
-      const TechniqueInfo& info = t->info();
+    for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+      const techniques::TechniqueInfo& info = t->info();
       nlohmann::ordered_json variants = nlohmann::ordered_json::array();
-      for (const VariantInfo& v : t->variants()) variants.push_back(v.name);
+      for (const techniques::VariantInfo& v : t->variants()) variants.push_back(v.name);
       items.push_back({{"id", info.id},
                        {"family", toString(info.family)},
                        {"title", info.title},
@@ -40,12 +40,12 @@ int runList(const ListArgs& args) {
       if (!args.json) fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title, info.citation);
     }
   } else if (args.what == "assets") {
-    for (const AssetRef& asset : bundledAssets()) {
+    for (const suite::AssetRef& asset : suite::bundledAssets()) {
       items.push_back({{"name", asset.name}, {"path", asset.path}});
       if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.path);
     }
   } else if (args.what == "scenarios") {
-    for (const Scenario& scenario : bundledScenarios()) {
+    for (const techniques::Scenario& scenario : suite::bundledScenarios()) {
       items.push_back({{"name", scenario.name},
                        {"technique", scenario.technique},
                        {"path", scenario.path},
@@ -54,17 +54,17 @@ int runList(const ListArgs& args) {
       if (!args.json) fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
     }
   } else if (args.what == "measures") {
-    for (const Measure* m : MeasureRegistry::instance().all()) {
-      const MeasureInfo& info = m->info();
+    for (const measures::Measure* m : measures::MeasureRegistry::instance().all()) {
+      const measures::MeasureInfo& info = m->info();
       // The declaration: id, title, description, headline, fixed notes, metrics (unit, direction).
-      nlohmann::ordered_json item = toJson(declarationOf(info));
+      nlohmann::ordered_json item = results::toJson(measures::declarationOf(info));
       item.erase("measure");
       items.push_back({{"id", info.id}});
       items.back().update(item);
       if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
     }
   } else {
-    throw InputError("list", args.what, "expected techniques, assets, scenarios or measures");
+    throw mesh::InputError("list", args.what, "expected techniques, assets, scenarios or measures");
   }
   if (args.json) fmt::print("{}\n", items.dump(2));
   return 0;

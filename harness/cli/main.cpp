@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   }
   const tb::cli::Invocation invocation{tb::cli::commandLine(argc, argv)};
   try {
-    for (const std::string& plugin : plugins) tb::loadPlugin(plugin);
+    for (const std::string& plugin : plugins) tb::techniques::loadPlugin(plugin);
     for (const auto& [subcommand, run] : commands) {
       if (*subcommand) return run(invocation);
     }

@@ -18,13 +18,13 @@
 namespace tb::cli {
 namespace {
 
-ShardRun readShard(const std::string& folder) {
-  requireFinishedRunFolder(folder);
+results::ShardRun readShard(const std::string& folder) {
+  results::requireFinishedRunFolder(folder);
   const std::string path = folder + "/results.json";
   if (!std::filesystem::is_regular_file(path)) {
     throw std::runtime_error(folder + ": no results.json (not a tessbench run folder)");
   }
-  return {folder, readResultsFile(path)};
+  return {folder, results::readResultsFile(path)};
 }
 
 std::string folderName(const std::string& path) {
@@ -55,25 +55,25 @@ CLI::App* addMergeCommand(CLI::App& app, MergeArgs& args) {
 }
 
 int runMerge(const MergeArgs& args, const std::string& command_line) {
-  std::vector<ShardRun> shards;
+  std::vector<results::ShardRun> shards;
   for (const std::string& folder : args.shards) shards.push_back(readShard(folder));
-  Results merged = mergeShards(shards);
+  results::Results merged = results::mergeShards(shards);
   // The check `run` makes on an unsharded run, which no single shard can make.
   if (merged.records.empty() && !merged.skipped.empty()) {
-    const Skip& skip = merged.skipped.front();
-    throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
+    const results::Skip& skip = merged.skipped.front();
+    throw mesh::InputError(skip.asset, "", skip.reason + " (nothing to measure)");
   }
   // The folder is made only after the shards are known to fit, so a refused merge leaves
   // nothing behind; it is written as `<out>.incomplete` and renamed when complete.
-  PendingRunFolder folder = PendingRunFolder::at(args.out);
-  merged.context.date = utcTimestampIso8601();
+  results::PendingRunFolder folder = results::PendingRunFolder::at(args.out);
+  merged.context.date = results::utcTimestampIso8601();
   merged.context.run_id = folderName(args.out);
   merged.context.command_line = command_line;
-  folder.writeFile("report.md", renderMarkdown(merged));
-  for (const auto& [name, text] : renderCsvTables(merged)) folder.writeFile(name, text);
+  folder.writeFile("report.md", report::renderMarkdown(merged));
+  for (const auto& [name, text] : report::renderCsvTables(merged)) folder.writeFile(name, text);
   // The charts of the merged run; the shards' pictures stay in their own folders.
   folder.writeFile("report.html", renderRunHtml(merged, folder.pendingPath()));
-  folder.writeFile("results.json", serializeResults(merged));
+  folder.writeFile("results.json", results::serializeResults(merged));
   folder.finish();
   if (!args.quiet) {
     fmt::print(

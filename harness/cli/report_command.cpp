@@ -26,16 +26,17 @@ CLI::App* addReportCommand(CLI::App& app, ReportArgs& args) {
 }
 
 int runReport(const ReportArgs& args) {
-  requireFinishedRunFolder(args.run_dir);
-  const Results results = readResultsFile(args.run_dir + "/results.json");
+  results::requireFinishedRunFolder(args.run_dir);
+  const results::Results results = results::readResultsFile(args.run_dir + "/results.json");
   if (args.format == "markdown") {
-    fmt::print("{}", renderMarkdown(results));
+    fmt::print("{}", report::renderMarkdown(results));
   } else if (args.format == "html") {
-    const HtmlAssets assets = loadHtmlAssets(args.run_dir);
+    const report::HtmlAssets assets = loadHtmlAssets(args.run_dir);
     if (assets.chartjs_source.empty()) throw std::runtime_error(assets.chartjs_missing_reason);
-    fmt::print("{}", renderHtml(results, assets));
+    fmt::print("{}", report::renderHtml(results, assets));
   } else {
-    throw InputError("--format", args.format, "unknown report format (known: markdown, html)");
+    throw mesh::InputError("--format", args.format,
+                           "unknown report format (known: markdown, html)");
   }
   return 0;
 }

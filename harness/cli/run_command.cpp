@@ -39,68 +39,71 @@ std::string knownIds(const std::vector<std::string>& ids) {
   return text;
 }
 
-std::vector<const Technique*> selectTechniques(const std::vector<std::string>& ids) {
-  std::vector<const Technique*> selected;
+std::vector<const techniques::Technique*> selectTechniques(const std::vector<std::string>& ids) {
+  std::vector<const techniques::Technique*> selected;
   std::vector<std::string> known;
-  for (const Technique* t : TechniqueRegistry::instance().all()) known.push_back(t->info().id);
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all())
+    known.push_back(t->info().id);
   for (const std::string& id : ids) {
-    const Technique* technique = TechniqueRegistry::instance().find(id);
+    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
     if (technique == nullptr) {
-      throw InputError("--technique", id, "unknown technique (known: " + knownIds(known) + ")");
+      throw mesh::InputError("--technique", id,
+                             "unknown technique (known: " + knownIds(known) + ")");
     }
     selected.push_back(technique);
   }
   return selected;
 }
 
-std::vector<const Measure*> selectMeasures(const std::vector<std::string>& ids) {
-  std::vector<const Measure*> selected;
+std::vector<const measures::Measure*> selectMeasures(const std::vector<std::string>& ids) {
+  std::vector<const measures::Measure*> selected;
   std::vector<std::string> known;
-  for (const Measure* m : MeasureRegistry::instance().all()) known.push_back(m->info().id);
+  for (const measures::Measure* m : measures::MeasureRegistry::instance().all())
+    known.push_back(m->info().id);
   for (const std::string& id : ids) {
-    const Measure* measure = MeasureRegistry::instance().find(id);
+    const measures::Measure* measure = measures::MeasureRegistry::instance().find(id);
     if (measure == nullptr) {
-      throw InputError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
+      throw mesh::InputError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
     }
     selected.push_back(measure);
   }
   return selected;
 }
 
-SuiteMode parseSuiteMode(const std::string& text) {
-  if (text == toString(SuiteMode::kDefault)) return SuiteMode::kDefault;
-  if (text == toString(SuiteMode::kFull)) return SuiteMode::kFull;
-  throw InputError("--suite", text, "unknown suite (known: default, full)");
+measures::SuiteMode parseSuiteMode(const std::string& text) {
+  if (text == toString(measures::SuiteMode::kDefault)) return measures::SuiteMode::kDefault;
+  if (text == toString(measures::SuiteMode::kFull)) return measures::SuiteMode::kFull;
+  throw mesh::InputError("--suite", text, "unknown suite (known: default, full)");
 }
 
 // Reads every --camera file before any work, so a bad one stops the run with nothing
 // written; `shown` gets the files as results name them.
-std::vector<CameraPathFn> selectCameraPaths(const std::vector<std::string>& names_or_paths,
-                                            std::vector<std::string>* shown) {
-  std::vector<CameraPathFn> paths;
+std::vector<suite::CameraPathFn> selectCameraPaths(const std::vector<std::string>& names_or_paths,
+                                                   std::vector<std::string>* shown) {
+  std::vector<suite::CameraPathFn> paths;
   for (const std::string& name_or_path : names_or_paths) {
-    CameraPathSpec spec = resolveCameraPath(name_or_path);
+    suite::CameraPathSpec spec = suite::resolveCameraPath(name_or_path);
     shown->push_back(spec.shown_path);
-    paths.push_back(cameraPathFn(std::move(spec)));
+    paths.push_back(suite::cameraPathFn(std::move(spec)));
   }
   return paths;
 }
 
 // Wall seconds per record × measure, every repetition's, beside results.json: timings
 // change run to run, the results must not (harness/results/timings_json.h).
-std::string timingsJson(const SuiteTimings& timings) {
-  RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, {}};
-  for (const MeasureTiming& t : timings.measures) {
+std::string timingsJson(const suite::SuiteTimings& timings) {
+  results::RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, {}};
+  for (const suite::MeasureTiming& t : timings.measures) {
     run.measures.push_back({t.technique, t.variant, t.asset, t.measure,
                             t.samples.empty() ? std::vector<double>{t.seconds} : t.samples});
   }
-  return serializeTimings(run);
+  return results::serializeTimings(run);
 }
 
 // Suite wall time and each measure's summed time, the figures the suite budget is kept by.
-void printTimingSummary(const SuiteTimings& timings) {
+void printTimingSummary(const suite::SuiteTimings& timings) {
   std::map<std::string, double> per_measure;
-  for (const MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
+  for (const suite::MeasureTiming& t : timings.measures) per_measure[t.measure] += t.seconds;
   std::string parts;
   for (const auto& [measure, seconds] : per_measure) {
     parts += fmt::format("{}{} {:.1f} s", parts.empty() ? "" : ", ", measure, seconds);
@@ -109,27 +112,27 @@ void printTimingSummary(const SuiteTimings& timings) {
              timings.wall_seconds, timings.threads, parts);
 }
 
-
 // The suite's selection from the options; `camera_files` gets the --camera files as
 // results name them. Throws InputError on an unknown id, asset, scenario or map.
-SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>* camera_files) {
-  SuiteSelection selection;
+suite::SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>* camera_files) {
+  suite::SuiteSelection selection;
   selection.techniques = selectTechniques(args.techniques);
   selection.measures = selectMeasures(args.measures);
   selection.device_name = args.device;
   selection.threads = args.threads;
   selection.repetitions = args.repetitions;
-  for (const std::string& asset : args.assets) selection.assets.push_back(resolveAsset(asset));
+  for (const std::string& asset : args.assets)
+    selection.assets.push_back(suite::resolveAsset(asset));
   for (const std::string& map : args.displacements) {
-    selection.displacements.push_back(loadDisplacementFile(map));
+    selection.displacements.push_back(suite::loadDisplacementFile(map));
   }
   if (args.displacements.empty() && args.assets.empty()) {
-    selection.displacements = bundledDisplacements();
+    selection.displacements = suite::bundledDisplacements();
   }
   for (const std::string& scenario : args.scenarios) {
-    selection.scenarios.push_back(resolveScenario(scenario));
+    selection.scenarios.push_back(suite::resolveScenario(scenario));
   }
-  if (!args.shard.empty()) selection.shard = parseShard(args.shard);
+  if (!args.shard.empty()) selection.shard = suite::parseShard(args.shard);
   selection.suite = parseSuiteMode(args.suite);
   selection.camera_paths = selectCameraPaths(args.cameras, camera_files);
   return selection;
@@ -137,7 +140,7 @@ SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>* camera
 
 // On a terminal the progress line rewrites itself; in a log, one line per step; each
 // with the time left as estimated from the steps so far (progress_estimate.h).
-ProgressFn progressPrinter(const RunArgs& args, ProgressEstimate* estimate) {
+suite::ProgressFn progressPrinter(const RunArgs& args, ProgressEstimate* estimate) {
   const bool terminal = isatty(fileno(stderr)) != 0;
   return [&args, estimate, terminal](size_t done, size_t total, const std::string& label) {
     if (args.quiet) return;
@@ -153,37 +156,37 @@ ProgressFn progressPrinter(const RunArgs& args, ProgressEstimate* estimate) {
 
 // Everything the run folder holds besides the journal: pictures/ (unless --no-pictures),
 // report.md, tables/, report.html, timings.json and results.json.
-void writeRunFiles(const RunArgs& args, const Results& results, const SuiteTimings& timings,
-                   PendingRunFolder* folder) {
+void writeRunFiles(const RunArgs& args, const results::Results& results,
+                   const suite::SuiteTimings& timings, results::PendingRunFolder* folder) {
   if (args.pictures) {  // pictures/: PNGs and pictures.json, on the run's device
-    std::filesystem::create_directory(folder->pendingPath() + "/" + kPicturesFolder);
-    const PicturesIndex pictures = renderRunPictures(
+    std::filesystem::create_directory(folder->pendingPath() + "/" + pictures::kPicturesFolder);
+    const pictures::PicturesIndex pictures = pictures::renderRunPictures(
         results, args.device,
         [&](const std::string& path, const std::string& bytes) { folder->writeFile(path, bytes); });
-    if (!args.quiet) fmt::print(stderr, "pictures: {}\n", picturesSummary(pictures));
+    if (!args.quiet) fmt::print(stderr, "pictures: {}\n", pictures::picturesSummary(pictures));
   }
-  folder->writeFile("report.md", renderMarkdown(results));
-  for (const auto& [name, text] : renderCsvTables(results)) folder->writeFile(name, text);
+  folder->writeFile("report.md", report::renderMarkdown(results));
+  for (const auto& [name, text] : report::renderCsvTables(results)) folder->writeFile(name, text);
   folder->writeFile("report.html", renderRunHtml(results, folder->pendingPath()));
   folder->writeFile("timings.json", timingsJson(timings));
-  folder->writeFile("results.json", serializeResults(results));
+  folder->writeFile("results.json", results::serializeResults(results));
 }
 
 // A measure that threw (not bad input: that stops the run) failed its record only; the
 // run is complete but not clean, so it says which: one line per record and measure that
 // failed or has failed rows (a GPU part of a measure: a device error, a plug-in's missing
 // shader), with the first reason. Returns how many.
-size_t printFailures(const Results& results) {
+size_t printFailures(const results::Results& results) {
   size_t failed = 0;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& measure : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& measure : record.measures) {
       std::string reason = measure.reason;
       size_t failed_rows = 0;
-      for (const MetricRow& row : measure.rows) {
-        if (row.status != MeasureStatus::kFailed) continue;
+      for (const results::MetricRow& row : measure.rows) {
+        if (row.status != results::MeasureStatus::kFailed) continue;
         if (failed_rows++ == 0) reason = row.reason;
       }
-      if (measure.status != MeasureStatus::kFailed && failed_rows == 0) continue;
+      if (measure.status != results::MeasureStatus::kFailed && failed_rows == 0) continue;
       ++failed;
       const std::string rows =
           failed_rows == 0 ? "" : fmt::format("{} of {} rows: ", failed_rows, measure.rows.size());
@@ -245,32 +248,33 @@ CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
 
 int runRun(const RunArgs& args, const std::string& command_line) {
   std::vector<std::string> camera_files;
-  const SuiteSelection selection = selectionOf(args, &camera_files);
+  const suite::SuiteSelection selection = selectionOf(args, &camera_files);
 
   // The folder is claimed before measuring, so an unwritable --out or a taken --run-id
   // fails at once. It stays `<run-id>.incomplete` until everything is written; a run that
   // fails removes it, a killed one leaves it marked unfinished (run_folder.h).
-  PendingRunFolder folder = PendingRunFolder::forRun(args.out, args.run_id);
-  Results results;
+  results::PendingRunFolder folder = results::PendingRunFolder::forRun(args.out, args.run_id);
+  results::Results results;
   ProgressEstimate estimate;
-  const ProgressFn progress = progressPrinter(args, &estimate);
-  SuiteTimings timings;
-  runSuite(selection, progress, &results, &timings,
-           [&](const Record& record) { folder.journal(recordJsonLine(record)); });
+  const suite::ProgressFn progress = progressPrinter(args, &estimate);
+  suite::SuiteTimings timings;
+  suite::runSuite(selection, progress, &results, &timings, [&](const results::Record& record) {
+    folder.journal(results::recordJsonLine(record));
+  });
   // Nothing measurable (e.g. a triangle mesh given to acc alone) is bad input, not an
   // empty run: one line with the first reason, non-zero exit, no run folder. A shard sees
   // only its slice; `merge` makes this check on the whole.
   if (!selection.shard.sharded() && results.records.empty() && !results.skipped.empty()) {
-    const Skip& skip = results.skipped.front();
-    throw InputError(skip.asset, "", skip.reason + " (nothing to measure)");
+    const results::Skip& skip = results.skipped.front();
+    throw mesh::InputError(skip.asset, "", skip.reason + " (nothing to measure)");
   }
 
   results.context = probeRunContext(command_line, args.device);
-  results.context.date = utcTimestampIso8601();
+  results.context.date = results::utcTimestampIso8601();
   results.context.run_id = folder.runId();
-  results.context.selection = describeSelection(selection, results);
+  results.context.selection = suite::describeSelection(selection, results);
   results.context.selection.camera_paths = camera_files;
-  if (!args.shard.empty()) results.context.shard = toShardId(selection.shard);
+  if (!args.shard.empty()) results.context.shard = suite::toShardId(selection.shard);
   writeRunFiles(args, results, timings, &folder);
   const std::string finished = folder.finish();
   if (!args.quiet) {

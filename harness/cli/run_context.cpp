@@ -59,8 +59,9 @@ std::string describeVulkanDevice(const std::string& device_name) {
   return info.device_name + " (" + info.driver_info + ", Vulkan " + info.api_version + ")";
 }
 
-RunContext probeRunContext(const std::string& command_line, const std::string& device_name) {
-  RunContext context;
+results::RunContext probeRunContext(const std::string& command_line,
+                                    const std::string& device_name) {
+  results::RunContext context;
   context.vulkan_device = describeVulkanDevice(device_name);
   context.git_sha = TB_GIT_SHA;
   context.host = hostName();

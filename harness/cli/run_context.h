@@ -8,6 +8,7 @@
 namespace tb::cli {
 
 // device_name: --device substring; empty picks the best device (lavapipe here).
-RunContext probeRunContext(const std::string& command_line, const std::string& device_name);
+results::RunContext probeRunContext(const std::string& command_line,
+                                    const std::string& device_name);
 
 }  // namespace tb::cli

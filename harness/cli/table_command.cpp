@@ -22,10 +22,10 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
-bool ran(const Results& results, const std::string& measure) {
-  return std::any_of(results.records.begin(), results.records.end(), [&](const Record& r) {
+bool ran(const results::Results& results, const std::string& measure) {
+  return std::any_of(results.records.begin(), results.records.end(), [&](const results::Record& r) {
     return std::any_of(r.measures.begin(), r.measures.end(),
-                       [&](const MeasureResult& m) { return m.measure == measure; });
+                       [&](const results::MeasureResult& m) { return m.measure == measure; });
   });
 }
 
@@ -54,27 +54,29 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
 }
 
 int runTable(const TableArgs& args) {
-  const std::optional<TableFormat> format = parseTableFormat(args.format);
+  const std::optional<report::TableFormat> format = report::parseTableFormat(args.format);
   if (!format) {
-    throw InputError("--format", args.format, "unknown table format (known: markdown, csv, latex)");
+    throw mesh::InputError("--format", args.format,
+                           "unknown table format (known: markdown, csv, latex)");
   }
   if (args.measure.empty() && !args.published) {
-    throw InputError("--measure", "", "a measure is required (or --published)");
+    throw mesh::InputError("--measure", "", "a measure is required (or --published)");
   }
-  requireFinishedRunFolder(args.run_dir);
-  const Results results = readResultsFile(args.run_dir + "/results.json");
-  const std::vector<std::string> ids = measureIds(results);
+  results::requireFinishedRunFolder(args.run_dir);
+  const results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  const std::vector<std::string> ids = report::measureIds(results);
   if (!args.measure.empty() && std::find(ids.begin(), ids.end(), args.measure) == ids.end()) {
-    throw InputError(args.run_dir + "/results.json", "--measure " + args.measure,
-                     "the run has no such measure (measures: " + joined(ids) + ")");
+    throw mesh::InputError(args.run_dir + "/results.json", "--measure " + args.measure,
+                           "the run has no such measure (measures: " + joined(ids) + ")");
   }
 
   if (args.published) {
     std::vector<std::string> measures;
     if (!args.measure.empty()) {
-      if (!hasPublishedTable(args.measure)) {
-        throw InputError("--measure", args.measure,
-                         "no published table for this measure (known: memory, published_figures)");
+      if (!report::hasPublishedTable(args.measure)) {
+        throw mesh::InputError(
+            "--measure", args.measure,
+            "no published table for this measure (known: memory, published_figures)");
       }
       measures.push_back(args.measure);
     } else {
@@ -82,31 +84,32 @@ int runTable(const TableArgs& args) {
         if (ran(results, id)) measures.push_back(id);
       }
       if (measures.empty()) {
-        throw InputError(args.run_dir + "/results.json", "--published",
-                         "the run has neither memory nor published_figures results");
+        throw mesh::InputError(args.run_dir + "/results.json", "--published",
+                               "the run has neither memory nor published_figures results");
       }
     }
     for (size_t i = 0; i < measures.size(); ++i) {
       fmt::print("{}{}", i > 0 ? "\n" : "",
-                 renderTable(publishedTable(results, measures[i]), *format));
+                 report::renderTable(report::publishedTable(results, measures[i]), *format));
     }
     return 0;
   }
 
-  const MeasureDeclaration* declaration = results.findMeasure(args.measure);
+  const results::MeasureDeclaration* declaration = results.findMeasure(args.measure);
   for (const std::string& metric : args.metrics) {
     if (declaration != nullptr && declaration->find(metric) == nullptr) {
       std::vector<std::string> known;
-      for (const MetricSpec& spec : declaration->metrics) known.push_back(spec.name);
-      throw InputError("--metric", metric,
-                       "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
+      for (const results::MetricSpec& spec : declaration->metrics) known.push_back(spec.name);
+      throw mesh::InputError(
+          "--metric", metric,
+          "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
     }
   }
-  SummaryTableOptions options;
+  report::SummaryTableOptions options;
   options.measure = args.measure;
   options.metrics = args.metrics;
   options.per_asset = args.per_asset;
-  fmt::print("{}", renderTable(summaryTable(results, options), *format));
+  fmt::print("{}", report::renderTable(report::summaryTable(results, options), *format));
   return 0;
 }
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <map>
 
-namespace tb {
+namespace tb::lod {
 namespace {
 
 constexpr size_t kParamWords = 32;  // TbCullParamsBlock, std430
@@ -20,29 +20,34 @@ constexpr CullPolicy kAllPolicies[] = {
 };
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
-float dotF(const Vec3f& a, const Vec3f& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3f subF(const Vec3f& a, const Vec3f& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+float dotF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+mesh::Vec3f subF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
-Vec3f toFloat(const Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
-Vec3d toDouble(const Vec3f& v) { return {v[0], v[1], v[2]}; }
+mesh::Vec3f toFloat(const mesh::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+mesh::Vec3d toDouble(const mesh::Vec3f& v) { return {v[0], v[1], v[2]}; }
 
 // tbPlaneDistance.
-float planeDistance(const std::array<float, 4>& plane, const Vec3f& p) {
+float planeDistance(const std::array<float, 4>& plane, const mesh::Vec3f& p) {
   return dotF({plane[0], plane[1], plane[2]}, p) + plane[3];
 }
 
 // Closest distance from p to the triangle (a, b, c) (Ericson, "Real-Time Collision
 // Detection", 5.1.5: by the Voronoi region of p).
-double pointTriangleDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d ab = b - a, ac = c - a, ap = p - a;
+double pointTriangleDistance(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b,
+                             const mesh::Vec3d& c) {
+  const mesh::Vec3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return length(p - a);
-  const Vec3d bp = p - b;
+  const mesh::Vec3d bp = p - b;
   const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return length(p - b);
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + ab * (d1 / (d1 - d3))));
-  const Vec3d cp = p - c;
+  const mesh::Vec3d cp = p - c;
   const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return length(p - c);
   const double vb = d5 * d2 - d1 * d6;
@@ -58,9 +63,10 @@ double pointTriangleDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b, con
 // How far the control hull reaches beyond the corners' flat triangle (a quad: the nearer
 // of its two triangles (0,1,2), (0,2,3)). Bounds the surface's bulge over any point of the
 // corners' convex hull, since the surface lies in the control hull.
-double bulge(const std::vector<Vec3d>& hull, const std::array<Vec3d, 4>& corner, bool quad) {
+double bulge(const std::vector<mesh::Vec3d>& hull, const std::array<mesh::Vec3d, 4>& corner,
+             bool quad) {
   double worst = 0;
-  for (const Vec3d& h : hull) {
+  for (const mesh::Vec3d& h : hull) {
     double d = pointTriangleDistance(h, corner[0], corner[1], corner[2]);
     if (quad) d = std::min(d, pointTriangleDistance(h, corner[0], corner[2], corner[3]));
     worst = std::max(worst, d);
@@ -71,28 +77,29 @@ double bulge(const std::vector<Vec3d>& hull, const std::array<Vec3d, 4>& corner,
 // A cone (unit axis, sine of the half angle) containing every generator's direction, or
 // nullopt when they span 90 degrees or more. The axis starts at the mean direction and moves
 // towards the worst generator (Badoiu-Clarkson steps); the narrowest cone seen is kept.
-std::optional<std::pair<Vec3d, double>> normalCone(const std::vector<Vec3d>& generators) {
-  std::vector<Vec3d> units;
-  for (const Vec3d& g : generators) {
+std::optional<std::pair<mesh::Vec3d, double>> normalCone(
+    const std::vector<mesh::Vec3d>& generators) {
+  std::vector<mesh::Vec3d> units;
+  for (const mesh::Vec3d& g : generators) {
     const double len = length(g);
     if (len > 0) units.push_back(g * (1 / len));
   }
   if (units.empty()) return std::nullopt;
-  Vec3d sum{0, 0, 0};
-  for (const Vec3d& u : units) sum = sum + u;
+  mesh::Vec3d sum{0, 0, 0};
+  for (const mesh::Vec3d& u : units) sum = sum + u;
   if (!(length(sum) > 1e-12)) return std::nullopt;
-  Vec3d axis = normalize(sum);
-  Vec3d best_axis = axis;
+  mesh::Vec3d axis = normalize(sum);
+  mesh::Vec3d best_axis = axis;
   double best_cos = -2;
   for (int step = 0; step < kConeAxisIterations; ++step) {
     double worst_cos = 2;
-    const Vec3d* worst = nullptr;
-    for (const Vec3d& u : units) {
+    const mesh::Vec3d* worst = nullptr;
+    for (const mesh::Vec3d& u : units) {
       const double c = dot(axis, u);
       if (c < worst_cos) worst_cos = c, worst = &u;
     }
     if (worst_cos > best_cos) best_cos = worst_cos, best_axis = axis;
-    const Vec3d moved = axis + (*worst - axis) * (1.0 / (step + 2));
+    const mesh::Vec3d moved = axis + (*worst - axis) * (1.0 / (step + 2));
     if (!(length(moved) > 1e-12)) break;
     axis = normalize(moved);
   }
@@ -101,12 +108,12 @@ std::optional<std::pair<Vec3d, double>> normalCone(const std::vector<Vec3d>& gen
   return std::make_pair(best_axis, sine);
 }
 
-std::vector<Vec3d> boxCorners(const std::vector<Vec3d>& points) {
-  Vec3d lo = points[0], hi = points[0];
-  for (const Vec3d& p : points) {
+std::vector<mesh::Vec3d> boxCorners(const std::vector<mesh::Vec3d>& points) {
+  mesh::Vec3d lo = points[0], hi = points[0];
+  for (const mesh::Vec3d& p : points) {
     for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
   }
-  std::vector<Vec3d> corners;
+  std::vector<mesh::Vec3d> corners;
   for (int k = 0; k < 8; ++k) {
     corners.push_back({(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]});
   }
@@ -114,7 +121,7 @@ std::vector<Vec3d> boxCorners(const std::vector<Vec3d>& points) {
 }
 
 using PositionKey = std::array<uint32_t, 3>;
-PositionKey positionKey(const Vec3f& p) {
+PositionKey positionKey(const mesh::Vec3f& p) {
   return {std::bit_cast<uint32_t>(p[0]), std::bit_cast<uint32_t>(p[1]),
           std::bit_cast<uint32_t>(p[2])};
 }
@@ -122,7 +129,7 @@ PositionKey positionKey(const Vec3f& p) {
 void putFloat(std::vector<uint32_t>& words, float value) {
   words.push_back(std::bit_cast<uint32_t>(value));
 }
-void putVec(std::vector<uint32_t>& words, const Vec3f& v, float w) {
+void putVec(std::vector<uint32_t>& words, const mesh::Vec3f& v, float w) {
   for (int i = 0; i < 3; ++i) putFloat(words, v[i]);
   putFloat(words, w);
 }
@@ -193,7 +200,7 @@ bool isConservative(CullPolicy policy) {
          policy == CullPolicy::kCombined;
 }
 
-CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corners,
+CullBounds cullBounds(const techniques::SurfacePatches& patches, const FactorCorners& corners,
                       double world_scale) {
   CullBounds result;
   result.global_margin = float(kGlobalMarginOfDiagonal * world_scale);
@@ -202,16 +209,16 @@ CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corner
   std::vector<double> patch_bulge(count, 0);
   for (size_t p = 0; p < count; ++p) {
     CullPatchBounds& out = result.patches[p];
-    const bool quad = corners.domains[p] == PatchDomain::kQuad;
+    const bool quad = corners.domains[p] == techniques::PatchDomain::kQuad;
     out.corner_count = quad ? 4 : 3;
-    std::array<Vec3d, 4> corner_d{};
+    std::array<mesh::Vec3d, 4> corner_d{};
     for (uint32_t c = 0; c < 4; ++c) {
       out.corner_position[c] = corners.patches[p][c].position;
       out.corner_normal[c] = corners.patches[p][c].normal;
       corner_d[c] = toDouble(out.corner_position[c]);
     }
-    const std::optional<PatchCullBounds> bounds = patches.cullBounds(p);
-    std::vector<Vec3d> hull;
+    const std::optional<techniques::PatchCullBounds> bounds = patches.cullBounds(p);
+    std::vector<mesh::Vec3d> hull;
     if (bounds && !bounds->hull.empty()) {
       hull = bounds->hull;
     } else {
@@ -220,8 +227,8 @@ CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corner
     }
     patch_bulge[p] = bulge(hull, corner_d, quad);
     if (hull.size() > kCullHullPoints) hull = boxCorners(hull);
-    for (const Vec3d& h : hull) out.hull.push_back(toFloat(h));
-    const std::optional<std::pair<Vec3d, double>> cone =
+    for (const mesh::Vec3d& h : hull) out.hull.push_back(toFloat(h));
+    const std::optional<std::pair<mesh::Vec3d, double>> cone =
         bounds ? normalCone(bounds->normal_generators) : std::nullopt;
     if (cone && cone->second + kConeSineWidening < 1) {
       out.cone_axis = toFloat(cone->first);
@@ -249,7 +256,7 @@ CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corner
   return result;
 }
 
-CullParams cullParams(CullPolicy policy, const View& view, const CullBounds& bounds) {
+CullParams cullParams(CullPolicy policy, const view::View& view, const CullBounds& bounds) {
   CullParams params;
   params.policy = policy;
   params.global_margin = bounds.global_margin;
@@ -277,7 +284,7 @@ namespace {
 
 bool cullsBackfaceLp2(const CullParams& params, const CullPatchBounds& patch) {
   for (uint32_t c = 0; c < patch.corner_count; ++c) {
-    const Vec3f to_eye = subF(params.eye, patch.corner_position[c]);
+    const mesh::Vec3f to_eye = subF(params.eye, patch.corner_position[c]);
     if (!(dotF(patch.corner_normal[c], to_eye) < 0.0f)) return false;
   }
   return true;
@@ -309,8 +316,8 @@ bool cullsFrustumHull(const CullParams& params, const CullPatchBounds& patch) {
 
 bool cullsCone(const CullParams& params, const CullPatchBounds& patch) {
   if (!(patch.cone_sine <= 1.0f)) return false;
-  for (const Vec3f& q : patch.hull) {
-    const Vec3f d = subF(q, params.eye);
+  for (const mesh::Vec3f& q : patch.hull) {
+    const mesh::Vec3f d = subF(q, params.eye);
     const float along = dotF(d, patch.cone_axis) - patch.displacement_bound;
     const float reach = (std::sqrt(dotF(d, d)) + patch.displacement_bound) * patch.cone_sine;
     if (!(along > reach)) return false;
@@ -382,10 +389,10 @@ std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
     putFloat(words, b.displacement_bound);
     words.push_back(0);
     for (size_t h = 0; h < kCullHullPoints; ++h) {
-      putVec(words, h < b.hull.size() ? b.hull[h] : Vec3f{0, 0, 0}, 0);
+      putVec(words, h < b.hull.size() ? b.hull[h] : mesh::Vec3f{0, 0, 0}, 0);
     }
   }
   return words;
 }
 
-}  // namespace tb
+}  // namespace tb::lod

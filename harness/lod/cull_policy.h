@@ -26,7 +26,7 @@
 #include "harness/lod/factor_policy.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 enum class CullPolicy : uint32_t {  // TbCullParams::policy
   kNone = 0,
@@ -57,14 +57,14 @@ inline constexpr size_t kCullHullPoints = 20;  // kTbCullHullPoints
 // One patch as cull.glsl reads it (TbCullPatch), in float.
 struct CullPatchBounds {
   uint32_t corner_count = 4;  // 3 for a triangle patch
-  std::array<Vec3f, 4> corner_position{};
+  std::array<mesh::Vec3f, 4> corner_position{};
   // frustum_lp2_exact's margin at each corner (world units): the largest bulge over the
   // corners' flat triangle or quad of any patch around the corner's welded position.
   std::array<float, 4> corner_margin{};
-  std::array<Vec3f, 4> corner_normal{};
-  Vec3f cone_axis{0, 0, 0};
+  std::array<mesh::Vec3f, 4> corner_normal{};
+  mesh::Vec3f cone_axis{0, 0, 0};
   float cone_sine = 2;  // sin of the cone's half angle; > 1: no cone (cone never culls)
-  std::vector<Vec3f> hull;  // at most kCullHullPoints
+  std::vector<mesh::Vec3f> hull;  // at most kCullHullPoints
   float displacement_bound = 0;  // world units; 0 until displacement maps exist
 };
 
@@ -77,7 +77,7 @@ struct CullBounds {
 
 // The bounds of every patch: corners from `corners` (factorCorners), hull and cone from
 // SurfacePatches::cullBounds. world_scale: the bounding-box diagonal (the global margin).
-CullBounds cullBounds(const SurfacePatches& patches, const FactorCorners& corners,
+CullBounds cullBounds(const techniques::SurfacePatches& patches, const FactorCorners& corners,
                       double world_scale);
 
 // The policy and the view as the shader reads them (TbCullParamsBlock), in float.
@@ -85,11 +85,11 @@ struct CullParams {
   // Unit-normal world-space frustum planes (x, y, z, w), inside when xyz . p + w >= 0: left,
   // right, top, bottom, near, far of Vulkan's clip volume (|x|, |y| <= w, 0 <= z <= w).
   std::array<std::array<float, 4>, 6> planes{};
-  Vec3f eye{0, 0, 0};
+  mesh::Vec3f eye{0, 0, 0};
   float global_margin = 0;
   CullPolicy policy = CullPolicy::kNone;
 };
-CullParams cullParams(CullPolicy policy, const View& view, const CullBounds& bounds);
+CullParams cullParams(CullPolicy policy, const view::View& view, const CullBounds& bounds);
 
 // The twin of tbCullPatch: true when the policy culls the patch.
 bool cullsPatch(const CullParams& params, const CullPatchBounds& patch);
@@ -105,4 +105,4 @@ std::vector<uint32_t> cullParamWords(const CullParams& params);
 std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
                                      const gpu::GpuPatchProgram& program);
 
-}  // namespace tb
+}  // namespace tb::lod

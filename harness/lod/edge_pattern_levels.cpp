@@ -7,7 +7,7 @@
 #include "core/mesh/topology.h"
 #include "core/tess/factor_helpers.h"
 
-namespace tb {
+namespace tb::lod {
 
 size_t edgePatternScaleIndex(uint32_t a, uint32_t b) {
   const uint32_t lo = std::min(a, b), hi = std::max(a, b);
@@ -17,13 +17,13 @@ size_t edgePatternScaleIndex(uint32_t a, uint32_t b) {
   return h % std::size(kEdgePatternScales);
 }
 
-std::vector<tess::Levels> edgePatternLevels(const SurfacePatches& patches, tess::Spacing spacing,
-                                            float base_level) {
-  const Welding welding = weldByPosition(patches.controlMesh());
+std::vector<tess::Levels> edgePatternLevels(const techniques::SurfacePatches& patches,
+                                            tess::Spacing spacing, float base_level) {
+  const mesh::Welding welding = mesh::weldByPosition(patches.controlMesh());
   std::vector<tess::Levels> levels(patches.patchCount());
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const std::array<uint32_t, 4> raw = patches.patchCorners(p);
-    const bool quad = patches.patchDomain(p) == PatchDomain::kQuad;
+    const bool quad = patches.patchDomain(p) == techniques::PatchDomain::kQuad;
     const uint32_t corners = quad ? 4 : 3;
     std::array<float, 4> edges{};  // gl_TessLevelOuter order
     for (uint32_t k = 0; k < corners; ++k) {
@@ -40,4 +40,4 @@ std::vector<tess::Levels> edgePatternLevels(const SurfacePatches& patches, tess:
   return levels;
 }
 
-}  // namespace tb
+}  // namespace tb::lod

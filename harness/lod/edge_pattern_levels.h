@@ -9,7 +9,7 @@
 #include "core/tess/tessellator.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 // The pattern. Edge level: base_level times one of kEdgePatternScales, chosen by a hash
 // of the edge's two welded end vertices (weldByPosition of the control mesh, applied to
@@ -22,8 +22,8 @@ namespace tb {
 // Returns one tess::Levels per patch (levels the domain does not use are 0), in the
 // gl_TessLevelOuter order: local edge k (corner k to k + 1, technique.h) is outer[(k + 1)
 // % 4] of a quad (u = 0, v = 0, u = 1, v = 1) and outer[(k + 2) % 3] of a triangle.
-std::vector<tess::Levels> edgePatternLevels(const SurfacePatches& patches, tess::Spacing spacing,
-                                            float base_level);
+std::vector<tess::Levels> edgePatternLevels(const techniques::SurfacePatches& patches,
+                                            tess::Spacing spacing, float base_level);
 
 // The edge-level multipliers (exact in float, so base 7 gives 3.5, 5.25, 7, 9.625, 12.25:
 // fractional levels for the fractional spacings).
@@ -32,4 +32,4 @@ inline constexpr float kEdgePatternScales[] = {0.5f, 0.75f, 1.0f, 1.375f, 1.75f}
 // The scale index of the edge between welded vertices a and b (symmetric in a, b).
 size_t edgePatternScaleIndex(uint32_t a, uint32_t b);
 
-}  // namespace tb
+}  // namespace tb::lod

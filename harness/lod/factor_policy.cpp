@@ -8,7 +8,7 @@
 #include "core/mesh/topology.h"
 #include "core/tess/factor_helpers.h"
 
-namespace tb {
+namespace tb::lod {
 namespace {
 
 constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
@@ -17,25 +17,31 @@ constexpr size_t kCornerWords = 32;  // 4 corners x (position vec4, normal vec4)
 constexpr const char* kOrderDependentSuffix = "_order_dependent";
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
-float dotF(const Vec3f& a, const Vec3f& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-float lengthF(const Vec3f& v) { return std::sqrt(dotF(v, v)); }
-Vec3f normalizeF(const Vec3f& v) {
+float dotF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+float lengthF(const mesh::Vec3f& v) { return std::sqrt(dotF(v, v)); }
+mesh::Vec3f normalizeF(const mesh::Vec3f& v) {
   const float len = std::sqrt(dotF(v, v));
   if (!(len > 0.0f)) return v;
   const float inv = 1.0f / len;
   return {v[0] * inv, v[1] * inv, v[2] * inv};
 }
-Vec3f sub(const Vec3f& a, const Vec3f& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3f add(const Vec3f& a, const Vec3f& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+mesh::Vec3f sub(const mesh::Vec3f& a, const mesh::Vec3f& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+mesh::Vec3f add(const mesh::Vec3f& a, const mesh::Vec3f& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
 
-bool positionLess(const Vec3f& a, const Vec3f& b) {
+bool positionLess(const mesh::Vec3f& a, const mesh::Vec3f& b) {
   if (a[0] != b[0]) return a[0] < b[0];
   if (a[1] != b[1]) return a[1] < b[1];
   return a[2] < b[2];
 }
 
 // tbClipW: row 3 of the matrix times (p, 1), left to right.
-float clipW(const FactorParams& params, const Vec3f& p) {
+float clipW(const FactorParams& params, const mesh::Vec3f& p) {
   const auto& m = params.view_projection;
   return m[0 * 4 + 3] * p[0] + m[1 * 4 + 3] * p[1] + m[2 * 4 + 3] * p[2] + m[3 * 4 + 3];
 }
@@ -55,23 +61,23 @@ const char* kindName(FactorPolicyKind kind) {
 }
 
 // Area-weighted (Newell) face normals summed per welded position, normalised.
-std::vector<Vec3f> weldedNormals(const Mesh& mesh, const Welding& welding) {
-  std::vector<Vec3d> sums(mesh.positions.size(), Vec3d{0, 0, 0});
+std::vector<mesh::Vec3f> weldedNormals(const mesh::Mesh& mesh, const mesh::Welding& welding) {
+  std::vector<mesh::Vec3d> sums(mesh.positions.size(), mesh::Vec3d{0, 0, 0});
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const std::span<const uint32_t> corners = mesh.facePositions(f);
-    Vec3d normal{0, 0, 0};
+    mesh::Vec3d normal{0, 0, 0};
     for (size_t i = 0; i < corners.size(); ++i) {
       normal = normal + cross(mesh.positions[corners[i]],
                               mesh.positions[corners[(i + 1) % corners.size()]]);
     }
     for (uint32_t c : corners) {
-      Vec3d& sum = sums[welding.canonical[c]];
+      mesh::Vec3d& sum = sums[welding.canonical[c]];
       sum = sum + normal;
     }
   }
-  std::vector<Vec3f> normals(mesh.positions.size());
+  std::vector<mesh::Vec3f> normals(mesh.positions.size());
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const Vec3d n = normalize(sums[welding.canonical[v]]);
+    const mesh::Vec3d n = normalize(sums[welding.canonical[v]]);
     normals[v] = {float(n[0]), float(n[1]), float(n[2])};
   }
   return normals;
@@ -144,19 +150,19 @@ std::optional<FactorPolicy> parseFactorPolicy(std::string_view name) {
   return policy;
 }
 
-FactorCorners factorCorners(const SurfacePatches& patches) {
-  const Mesh& mesh = patches.controlMesh();
-  const Welding welding = weldByPosition(mesh);
-  const std::vector<Vec3f> normals = weldedNormals(mesh, welding);
+FactorCorners factorCorners(const techniques::SurfacePatches& patches) {
+  const mesh::Mesh& mesh = patches.controlMesh();
+  const mesh::Welding welding = mesh::weldByPosition(mesh);
+  const std::vector<mesh::Vec3f> normals = weldedNormals(mesh, welding);
   FactorCorners out;
   out.patches.resize(patches.patchCount());
   out.domains.resize(patches.patchCount());
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     out.domains[p] = patches.patchDomain(p);
-    const size_t count = out.domains[p] == PatchDomain::kQuad ? 4 : 3;
+    const size_t count = out.domains[p] == techniques::PatchDomain::kQuad ? 4 : 3;
     const std::array<uint32_t, 4> corners = patches.patchCorners(p);
     for (size_t c = 0; c < count; ++c) {
-      const Vec3d& position = mesh.positions[corners[c]];
+      const mesh::Vec3d& position = mesh.positions[corners[c]];
       out.patches[p][c] = {{float(position[0]), float(position[1]), float(position[2])},
                            normals[corners[c]]};
     }
@@ -164,7 +170,7 @@ FactorCorners factorCorners(const SurfacePatches& patches) {
   return out;
 }
 
-FactorParams factorParams(const FactorPolicy& policy, const View& view, tess::Spacing spacing,
+FactorParams factorParams(const FactorPolicy& policy, const view::View& view, tess::Spacing spacing,
                           double world_scale) {
   FactorParams params;
   for (int c = 0; c < 4; ++c) {
@@ -190,14 +196,14 @@ FactorParams factorParams(const FactorPolicy& policy, const View& view, tess::Sp
 
 float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
                  const FactorCorner& corner_b) {
-  Vec3f a = corner_a.position, b = corner_b.position;
-  Vec3f na = corner_a.normal, nb = corner_b.normal;
+  mesh::Vec3f a = corner_a.position, b = corner_b.position;
+  mesh::Vec3f na = corner_a.normal, nb = corner_b.normal;
   if ((params.flags & kFlagOrderDependent) == 0 && positionLess(b, a)) {
     std::swap(a, b);
     std::swap(na, nb);
   }
-  const Vec3f edge = sub(b, a);
-  const Vec3f mid = {a[0] + edge[0] * 0.5f, a[1] + edge[1] * 0.5f, a[2] + edge[2] * 0.5f};
+  const mesh::Vec3f edge = sub(b, a);
+  const mesh::Vec3f mid = {a[0] + edge[0] * 0.5f, a[1] + edge[1] * 0.5f, a[2] + edge[2] * 0.5f};
   float factor = 0;
   switch (FactorPolicyKind(params.policy)) {
     case FactorPolicyKind::kUniform:
@@ -221,8 +227,8 @@ float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
     }
   }
   if ((params.flags & kFlagSilhouette) != 0) {
-    const Vec3f n = normalizeF(add(na, nb));
-    const Vec3f v = normalizeF(sub(params.eye, mid));
+    const mesh::Vec3f n = normalizeF(add(na, nb));
+    const mesh::Vec3f v = normalizeF(sub(params.eye, mid));
     const float scale = 1.0f - (1.0f - params.min_scale) * std::fabs(dotF(n, v));
     factor = factor * scale;
   }
@@ -234,11 +240,11 @@ float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
   return factor;
 }
 
-tess::Levels policyLevels(const FactorParams& params, PatchDomain domain,
+tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
                           const std::array<FactorCorner, 4>& corners) {
   const auto spacing = tess::Spacing(params.spacing);
   const auto reduction = InnerReduction(params.reduction);
-  if (domain == PatchDomain::kQuad) {
+  if (domain == techniques::PatchDomain::kQuad) {
     // gl_TessLevelOuter order (u = 0, v = 0, u = 1, v = 1): corners (3,0), (0,1), (1,2), (2,3).
     std::array<float, 4> raw{};
     for (size_t j = 0; j < 4; ++j) raw[j] = edgeFactor(params, corners[(j + 3) % 4], corners[j]);
@@ -283,7 +289,7 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
   for (uint32_t i = 0; i < program.patch_count; ++i) {
     const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
     for (const FactorCorner& corner : corners.patches.at(patch)) {
-      for (const Vec3f* v : {&corner.position, &corner.normal}) {
+      for (const mesh::Vec3f* v : {&corner.position, &corner.normal}) {
         for (int k = 0; k < 3; ++k) out.corner_words.push_back(std::bit_cast<uint32_t>((*v)[k]));
         out.corner_words.push_back(0);
       }
@@ -304,4 +310,4 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::lod

@@ -46,7 +46,7 @@
 #include "core/view/view.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 enum class FactorPolicyKind : uint32_t {  // TbFactorParams::policy
   kUniform = 0,
@@ -84,21 +84,21 @@ double defaultTarget(FactorPolicyKind kind);
 
 // One patch corner as the policy reads it.
 struct FactorCorner {
-  Vec3f position;  // welded control-mesh position, world units
-  Vec3f normal;    // the welded position's unit normal (area-weighted face normals)
+  mesh::Vec3f position;  // welded control-mesh position, world units
+  mesh::Vec3f normal;    // the welded position's unit normal (area-weighted face normals)
 };
 
 // The corners of every patch (SurfacePatches order; a triangle's 4th is zero).
 struct FactorCorners {
   std::vector<std::array<FactorCorner, 4>> patches;
-  std::vector<PatchDomain> domains;
+  std::vector<techniques::PatchDomain> domains;
 };
-FactorCorners factorCorners(const SurfacePatches& patches);
+FactorCorners factorCorners(const techniques::SurfacePatches& patches);
 
 // The policy and the view as the shader reads them (TbFactorParamsBlock), in float.
 struct FactorParams {
   std::array<float, 16> view_projection{};  // column-major
-  Vec3f eye;
+  mesh::Vec3f eye;
   float viewport_height_px = 1;
   float projection_y_scale = 1;
   float target = 1;       // distance: already times the diagonal (world_scale)
@@ -108,14 +108,14 @@ struct FactorParams {
   uint32_t policy = 0, flags = 0, reduction = 0, spacing = 0;
 };
 // world_scale: the asset's bounding-box diagonal (distance's unit).
-FactorParams factorParams(const FactorPolicy& policy, const View& view, tess::Spacing spacing,
+FactorParams factorParams(const FactorPolicy& policy, const view::View& view, tess::Spacing spacing,
                           double world_scale);
 
 // The twin of tbEdgeFactor: the raw factor of the edge from corner a to corner b.
 float edgeFactor(const FactorParams& params, const FactorCorner& a, const FactorCorner& b);
 
 // The twin of tbWritePolicyLevels: one patch's levels (culled patches: all 0).
-tess::Levels policyLevels(const FactorParams& params, PatchDomain domain,
+tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
                           const std::array<FactorCorner, 4>& corners);
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners);
 
@@ -124,4 +124,4 @@ std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorC
 gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCorners& corners,
                                      const gpu::GpuPatchProgram& program);
 
-}  // namespace tb
+}  // namespace tb::lod

@@ -6,11 +6,11 @@
 #include "core/osd/scheme.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 // The scheme of the limit a technique is graded against: the one its patches approximate.
-inline osd::Scheme referenceScheme(LimitScheme scheme) {
-  return scheme == LimitScheme::kLoop ? osd::Scheme::kLoop : osd::Scheme::kCatmullClark;
+inline osd::Scheme referenceScheme(techniques::LimitScheme scheme) {
+  return scheme == techniques::LimitScheme::kLoop ? osd::Scheme::kLoop : osd::Scheme::kCatmullClark;
 }
 
-}  // namespace tb
+}  // namespace tb::lod

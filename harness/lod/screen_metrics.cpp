@@ -14,7 +14,7 @@
 #include "harness/lod/reference_scheme.h"
 #include "reference/limit_face.h"
 
-namespace tb {
+namespace tb::lod {
 namespace {
 
 // How patch p's parameter maps to its limit face p (as the error measure maps it).
@@ -45,36 +45,38 @@ struct ErrorSums {
   }
 };
 
-bool inFront(const View& view, const ProjectedPoint& p) { return p.clip_w >= view.near_plane; }
-bool inside(const View& view, const ProjectedPoint& p) {
+bool inFront(const view::View& view, const view::ProjectedPoint& p) {
+  return p.clip_w >= view.near_plane;
+}
+bool inside(const view::View& view, const view::ProjectedPoint& p) {
   return p.x_px >= 0 && p.x_px <= view.viewport_width_px && p.y_px >= 0 &&
          p.y_px <= view.viewport_height_px;
 }
-bool visible(const View& view, const ProjectedPoint& p) {
+bool visible(const view::View& view, const view::ProjectedPoint& p) {
   return inFront(view, p) && inside(view, p);
 }
-double distancePx(const ProjectedPoint& a, const ProjectedPoint& b) {
+double distancePx(const view::ProjectedPoint& a, const view::ProjectedPoint& b) {
   const double dx = a.x_px - b.x_px, dy = a.y_px - b.y_px;
   return std::sqrt(dx * dx + dy * dy);
 }
-ProjectedPoint project(const View& view, const Vec3d& p) {
-  return projectToPixels(view, p.x, p.y, p.z);
+view::ProjectedPoint project(const view::View& view, const mesh::Vec3d& p) {
+  return view::projectToPixels(view, p.x, p.y, p.z);
 }
 
 // The piecewise-linear surface at a blend of tessellation vertices (points evaluated
 // with a ScreenPattern's batch pattern: the vertices first).
-Vec3d blendPosition(const BatchPoints& points, const VertexBlend& blend) {
-  Vec3d r{0, 0, 0};
+mesh::Vec3d blendPosition(const techniques::BatchPoints& points, const VertexBlend& blend) {
+  mesh::Vec3d r{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
-    r = r + blend.weight[k] * BatchPoints::at(points.position, blend.index[k]);
+    r = r + blend.weight[k] * techniques::BatchPoints::at(points.position, blend.index[k]);
   }
   return r;
 }
 
 // One thread's evaluation buffers, reused from patch to patch.
 struct Scratch {
-  BatchPoints points, before;
-  std::vector<ProjectedPoint> projected;
+  techniques::BatchPoints points, before;
+  std::vector<view::ProjectedPoint> projected;
 };
 
 // What one patch contributes, reduced serially in patch order.
@@ -101,7 +103,7 @@ bool sharesPatterns(const Chunk& chunk) {
 // Splits the patches into chunks whose distinct patterns need about kScreenPatternPoints
 // batch points at most (at least one patch each) and calls fn(chunk) in patch order.
 template <class Fn>
-void forEachChunk(const SurfacePatches& patches, tess::Spacing spacing,
+void forEachChunk(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                   std::span<const std::span<const tess::Levels>> sets, Fn&& fn) {
   assert(sets.size() <= std::tuple_size_v<decltype(Chunk::key_of)>);
   Chunk chunk;
@@ -109,7 +111,7 @@ void forEachChunk(const SurfacePatches& patches, tess::Spacing spacing,
   size_t points = 0;
   const size_t patch_count = patches.patchCount();
   for (size_t p = 0; p < patch_count; ++p) {
-    const PatchDomain domain = patches.patchDomain(p);
+    const techniques::PatchDomain domain = patches.patchDomain(p);
     auto new_points = [&] {
       size_t extra = 0;
       for (const auto& set : sets) {
@@ -140,7 +142,8 @@ void forEachChunk(const SurfacePatches& patches, tess::Spacing spacing,
   if (chunk.end > chunk.begin) fn(chunk);
 }
 
-void requireLevels(const SurfacePatches& patches, std::span<const tess::Levels> levels) {
+void requireLevels(const techniques::SurfacePatches& patches,
+                   std::span<const tess::Levels> levels) {
   if (levels.size() != patches.patchCount()) {
     throw std::invalid_argument("screen metrics: " + std::to_string(levels.size()) +
                                 " level sets for " + std::to_string(patches.patchCount()) +
@@ -148,34 +151,37 @@ void requireLevels(const SurfacePatches& patches, std::span<const tess::Levels> 
   }
 }
 
-void projectVertices(const View& view, size_t vertex_count, const BatchPoints& points,
-                     std::vector<ProjectedPoint>* projected) {
+void projectVertices(const view::View& view, size_t vertex_count,
+                     const techniques::BatchPoints& points,
+                     std::vector<view::ProjectedPoint>* projected) {
   projected->resize(vertex_count);
   for (size_t i = 0; i < vertex_count; ++i) {
-    (*projected)[i] = project(view, BatchPoints::at(points.position, i));
+    (*projected)[i] = project(view, techniques::BatchPoints::at(points.position, i));
   }
 }
 
 // FrameScreenFigures::tessellation_error of one patch.
-void addTessellationError(const ScreenPattern& pattern, const BatchPoints& points, const View& view,
-                          ErrorSums* sums) {
+void addTessellationError(const ScreenPattern& pattern, const techniques::BatchPoints& points,
+                          const view::View& view, ErrorSums* sums) {
   const size_t first = pattern.vertexCount();
   for (size_t i = 0; i < pattern.samples.size(); ++i) {
-    const ProjectedPoint surface = project(view, BatchPoints::at(points.position, first + i));
+    const view::ProjectedPoint surface =
+        project(view, techniques::BatchPoints::at(points.position, first + i));
     if (!visible(view, surface)) continue;
-    const ProjectedPoint linear = project(view, blendPosition(points, pattern.samples[i]));
+    const view::ProjectedPoint linear = project(view, blendPosition(points, pattern.samples[i]));
     if (!inFront(view, linear)) continue;
     sums->add(distancePx(surface, linear));
   }
 }
 
 // The visible edges' lengths of one patch into `out`; returns how many.
-size_t writeEdgeLengths(const ScreenPattern& pattern, std::span<const ProjectedPoint> projected,
-                        const View& view, double* out) {
+size_t writeEdgeLengths(const ScreenPattern& pattern,
+                        std::span<const view::ProjectedPoint> projected, const view::View& view,
+                        double* out) {
   size_t written = 0;
   for (const auto& e : pattern.edges) {
-    const ProjectedPoint& a = projected[e[0]];
-    const ProjectedPoint& b = projected[e[1]];
+    const view::ProjectedPoint& a = projected[e[0]];
+    const view::ProjectedPoint& b = projected[e[1]];
     if (!inFront(view, a) || !inFront(view, b) || (!inside(view, a) && !inside(view, b))) continue;
     out[written++] = distancePx(a, b);
   }
@@ -184,17 +190,18 @@ size_t writeEdgeLengths(const ScreenPattern& pattern, std::span<const ProjectedP
 
 // FrameScreenFigures::reference_error of patch p, at its visible tessellation vertices.
 void addReferenceError(const ref::LimitSurface& limit, size_t p, ReferenceMap map,
-                       const ScreenPattern& pattern, std::span<const ProjectedPoint> projected,
-                       const View& view, ErrorSums* sums) {
+                       const ScreenPattern& pattern,
+                       std::span<const view::ProjectedPoint> projected, const view::View& view,
+                       ErrorSums* sums) {
   std::optional<ref::LimitFace> face;  // prepared at the first visible vertex
-  const std::vector<DomainCoord>& coords = pattern.vertex_coords;
+  const std::vector<techniques::DomainCoord>& coords = pattern.vertex_coords;
   for (size_t i = 0; i < coords.size(); ++i) {
     if (!visible(view, projected[i])) continue;
     if (!face) face.emplace(limit.face(p));
-    const DomainCoord& c = coords[i];
+    const techniques::DomainCoord& c = coords[i];
     const ref::LimitPoint exact =
         map == kQuadUv ? face->evaluate(c[0], c[1]) : face->evaluate(c[1], c[2]);
-    const ProjectedPoint reference = project(view, exact.position);
+    const view::ProjectedPoint reference = project(view, exact.position);
     if (!inFront(view, reference)) continue;
     sums->add(distancePx(projected[i], reference));
   }
@@ -223,7 +230,8 @@ ScreenEdgeFigures edgeFigures(std::vector<double> lengths_px, double target_px) 
 
 }  // namespace
 
-ScreenMetrics::ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurface* limit)
+ScreenMetrics::ScreenMetrics(const techniques::SurfacePatches& patches,
+                             const ref::LimitSurface* limit)
     : patches_(patches), limit_(limit), cache_(patches, kScreenPatternPoints) {
   if (limit == nullptr) return;
   const osd::Scheme scheme = referenceScheme(patches.approximates());
@@ -237,17 +245,17 @@ ScreenMetrics::ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurf
   reference_map_.assign(patches.patchCount(), kNoReference);
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     if (!limit->hasLimitSurface(p)) continue;
-    const PatchDomain domain = patches.patchDomain(p);
-    if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
+    const techniques::PatchDomain domain = patches.patchDomain(p);
+    if (domain == techniques::PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
       reference_map_[p] = kQuadUv;
-    } else if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
+    } else if (domain == techniques::PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
       reference_map_[p] = kLoopUv;
     }
   }
 }
 
 FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
-                                        const View& view) {
+                                        const view::View& view) {
   requireLevels(patches_, levels);
   FrameScreenFigures figures;
   figures.reference_measured = limit_ != nullptr;
@@ -306,7 +314,7 @@ FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const t
 
 ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
                                                     std::span<const tess::Levels> levels,
-                                                    const View& view, uint64_t* triangles) {
+                                                    const view::View& view, uint64_t* triangles) {
   requireLevels(patches_, levels);
   ErrorSums sums;
   uint64_t triangle_count = 0;
@@ -334,7 +342,7 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
 }
 
 ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tess::Levels> before,
-                                      std::span<const tess::Levels> after, const View& view) {
+                                      std::span<const tess::Levels> after, const view::View& view) {
   requireLevels(patches_, before);
   requireLevels(patches_, after);
   ErrorSums sums;
@@ -351,15 +359,15 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
       patches_.evaluateBatch(p, *is.points, s.points);
-      const BatchPoints* was_points = &s.points;
+      const techniques::BatchPoints* was_points = &s.points;
       if (&was != &is) {
         patches_.evaluateBatch(p, *was.points, s.before);
         was_points = &s.before;
       }
       for (size_t k = 0; k < is.lattice.size(); ++k) {
-        const ProjectedPoint now = project(view, blendPosition(s.points, is.lattice[k]));
+        const view::ProjectedPoint now = project(view, blendPosition(s.points, is.lattice[k]));
         if (!visible(view, now)) continue;
-        const ProjectedPoint then = project(view, blendPosition(*was_points, was.lattice[k]));
+        const view::ProjectedPoint then = project(view, blendPosition(*was_points, was.lattice[k]));
         if (!inFront(view, then)) continue;
         slots[i].add(distancePx(now, then));
       }
@@ -369,4 +377,4 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
   return sums.figures();
 }
 
-}  // namespace tb
+}  // namespace tb::lod

@@ -22,7 +22,7 @@
 #include "reference/limit_surface.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 // On-screen length of tessellated triangle edges, pixels. Each patch's unique edges (an
 // edge shared by two patches counts once in each); an edge is visible when both ends are
@@ -82,15 +82,15 @@ class ScreenMetrics {
   // `limit`: null, or the reference limit of patches.controlMesh() under the scheme
   // patches.approximates() names (referenceScheme, harness/lod/reference_scheme.h); std::logic_error when its
   // scheme or face count does not match. Both must outlive this object.
-  ScreenMetrics(const SurfacePatches& patches, const ref::LimitSurface* limit);
+  ScreenMetrics(const techniques::SurfacePatches& patches, const ref::LimitSurface* limit);
 
   FrameScreenFigures frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
-                           const View& view);
+                           const view::View& view);
 
   // Only FrameScreenFigures::tessellation_error and, when `triangles` is not null, the
   // triangle count (what a parameter sweep needs; no edges, no reference).
   ScreenErrorFigures tessellationError(tess::Spacing spacing, std::span<const tess::Levels> levels,
-                                       const View& view, uint64_t* triangles = nullptr);
+                                       const view::View& view, uint64_t* triangles = nullptr);
 
   // Popping between consecutive frames: how far the tessellated (piecewise-linear) surface
   // moves on screen at fixed surface points because the levels changed, the camera held
@@ -100,14 +100,14 @@ class ScreenMetrics {
   // and inside, the `before` point in front. Patches culled in either frame are left out.
   // Best 0 (identical levels give exactly 0).
   ScreenErrorFigures pop(tess::Spacing spacing, std::span<const tess::Levels> before,
-                         std::span<const tess::Levels> after, const View& view);
+                         std::span<const tess::Levels> after, const view::View& view);
 
  private:
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   const ref::LimitSurface* limit_;
   // Per patch: how the reference is sampled (screen_metrics.cpp, ReferenceMap).
   std::vector<uint8_t> reference_map_;
   ScreenPatternCache cache_;
 };
 
-}  // namespace tb
+}  // namespace tb::lod

@@ -11,11 +11,11 @@
 
 #include "core/tess/factor_helpers.h"
 
-namespace tb {
+namespace tb::lod {
 namespace {
 
-tess::Domain tessDomain(PatchDomain domain) {
-  return domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+tess::Domain tessDomain(techniques::PatchDomain domain) {
+  return domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
 }
 
 void tessellatePattern(ScreenPattern* pattern) {
@@ -36,9 +36,9 @@ void tessellatePattern(ScreenPattern* pattern) {
   for (const tess::DomainPoint& p : t.points) {
     // gl_TessCoord as the technique takes it (batch_eval.h): quads (u, v, 0), triangles
     // the barycentric (u, v, w) of corners 0, 1, 2, as the crack measure passes it.
-    pattern->vertex_coords.push_back(key.domain == PatchDomain::kQuad
-                                         ? DomainCoord{p[0], p[1], 0}
-                                         : DomainCoord{p[0], p[1], p[2]});
+    pattern->vertex_coords.push_back(key.domain == techniques::PatchDomain::kQuad
+                                         ? techniques::DomainCoord{p[0], p[1], 0}
+                                         : techniques::DomainCoord{p[0], p[1], p[2]});
   }
 }
 
@@ -58,8 +58,9 @@ void buildEdges(ScreenPattern* pattern) {
   for (uint64_t e : packed) pattern->edges.push_back({uint32_t(e >> 32), uint32_t(e)});
 }
 
-DomainCoord blendCoord(const std::vector<DomainCoord>& vertices, const VertexBlend& blend) {
-  DomainCoord c{0, 0, 0};
+techniques::DomainCoord blendCoord(const std::vector<techniques::DomainCoord>& vertices,
+                                   const VertexBlend& blend) {
+  techniques::DomainCoord c{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     for (int i = 0; i < 3; ++i) c[i] += blend.weight[k] * vertices[blend.index[k]][i];
   }
@@ -78,20 +79,21 @@ void buildSamples(ScreenPattern* pattern) {
 }
 
 // The batch pattern of the vertices, followed by the samples when there are any.
-void buildPoints(const SurfacePatches& patches, ScreenPattern* pattern, bool technique_kernel) {
-  std::vector<DomainCoord> coords;
+void buildPoints(const techniques::SurfacePatches& patches, ScreenPattern* pattern,
+                 bool technique_kernel) {
+  std::vector<techniques::DomainCoord> coords;
   coords.reserve(pattern->vertexCount() + pattern->samples.size());
   coords.insert(coords.end(), pattern->vertex_coords.begin(), pattern->vertex_coords.end());
   for (const VertexBlend& s : pattern->samples) {
     coords.push_back(blendCoord(pattern->vertex_coords, s));
   }
   if (!technique_kernel) {
-    pattern->points = std::make_unique<BatchPattern>(pattern->key.domain, std::move(coords),
-                                                     BatchOutput::kPositionAndDerivatives);
+    pattern->points = std::make_unique<techniques::BatchPattern>(
+        pattern->key.domain, std::move(coords), techniques::BatchOutput::kPositionAndDerivatives);
     return;
   }
   pattern->points = patches.makeBatchPattern(pattern->key.domain, std::move(coords),
-                                             BatchOutput::kPositionAndDerivatives);
+                                             techniques::BatchOutput::kPositionAndDerivatives);
 }
 
 // Each lattice point in the first triangle that contains it (barycentric weights >= -1e-9;
@@ -99,14 +101,15 @@ void buildPoints(const SurfacePatches& patches, ScreenPattern* pattern, bool tec
 // nearly exact). Only lattice points inside a triangle's bounding box are tested.
 void buildLattice(ScreenPattern* pattern) {
   const int n = kPopSampleSegments;
-  const bool quad = pattern->key.domain == PatchDomain::kQuad;
-  const std::vector<DomainCoord> lattice = latticeCoords(pattern->key.domain, n);
+  const bool quad = pattern->key.domain == techniques::PatchDomain::kQuad;
+  const std::vector<techniques::DomainCoord> lattice =
+      techniques::latticeCoords(pattern->key.domain, n);
   // Index of lattice point (i, j), in latticeCoords' order (j-major rows).
   std::vector<int> row_start(n + 2, 0);
   for (int j = 0; j <= n; ++j) row_start[j + 1] = row_start[j] + (quad ? n + 1 : n - j + 1);
   std::vector<VertexBlend> located(lattice.size());
   std::vector<uint8_t> found(lattice.size(), 0);
-  const std::vector<DomainCoord>& v = pattern->vertex_coords;
+  const std::vector<techniques::DomainCoord>& v = pattern->vertex_coords;
   constexpr double kSlack = 1e-9;
   for (const auto& t : pattern->triangles) {
     const double u0 = v[t[0]][0], v0 = v[t[0]][1];
@@ -144,13 +147,13 @@ void buildLattice(ScreenPattern* pattern) {
 
 }  // namespace
 
-ScreenPatternKey screenPatternKey(PatchDomain domain, tess::Spacing spacing,
+ScreenPatternKey screenPatternKey(techniques::PatchDomain domain, tess::Spacing spacing,
                                   const tess::Levels& levels) {
   return {domain, spacing, tess::levelsBits(levels)};
 }
 
-void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern,
-                           bool technique_kernel) {
+void completeScreenPattern(const techniques::SurfacePatches& patches, unsigned parts,
+                           ScreenPattern* pattern, bool technique_kernel) {
   if (!pattern->tessellated) tessellatePattern(pattern);
   if (!pattern->culled) {
     const unsigned missing = parts & ~pattern->parts;
@@ -166,8 +169,8 @@ void completeScreenPattern(const SurfacePatches& patches, unsigned parts, Screen
   pattern->parts |= parts;
 }
 
-size_t estimateScreenPatternPoints(PatchDomain domain, const tess::Levels& levels) {
-  const bool quad = domain == PatchDomain::kQuad;
+size_t estimateScreenPatternPoints(techniques::PatchDomain domain, const tess::Levels& levels) {
+  const bool quad = domain == techniques::PatchDomain::kQuad;
   float largest = 1;
   auto take = [&](float level) {
     if (level > largest) largest = std::min(level, 64.0f);  // NaN and culling levels: 1
@@ -180,7 +183,7 @@ size_t estimateScreenPatternPoints(PatchDomain domain, const tess::Levels& level
   return (quad ? 6 : 3) * (n + 1) * (n + 1);
 }
 
-ScreenPatternCache::ScreenPatternCache(const SurfacePatches& patches, size_t max_points)
+ScreenPatternCache::ScreenPatternCache(const techniques::SurfacePatches& patches, size_t max_points)
     : patches_(patches), max_points_(max_points) {}
 
 std::vector<const ScreenPattern*> ScreenPatternCache::acquire(
@@ -210,4 +213,4 @@ std::vector<const ScreenPattern*> ScreenPatternCache::acquire(
   return {found.begin(), found.end()};
 }
 
-}  // namespace tb
+}  // namespace tb::lod

@@ -18,7 +18,7 @@
 #include "techniques/batch_eval.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::lod {
 
 // Segments per patch edge of the fixed lattice the popping figure samples (latticeCoords):
 // 81 points on a quad patch, 45 on a triangle patch.
@@ -40,13 +40,13 @@ struct VertexBlend {
 };
 
 struct ScreenPatternKey {
-  PatchDomain domain = PatchDomain::kQuad;
+  techniques::PatchDomain domain = techniques::PatchDomain::kQuad;
   tess::Spacing spacing = tess::Spacing::kInteger;
   tess::LevelsBits levels{};
   auto operator<=>(const ScreenPatternKey&) const = default;
 };
 
-ScreenPatternKey screenPatternKey(PatchDomain domain, tess::Spacing spacing,
+ScreenPatternKey screenPatternKey(techniques::PatchDomain domain, tess::Spacing spacing,
                                   const tess::Levels& levels);
 
 struct ScreenPattern {
@@ -57,7 +57,7 @@ struct ScreenPattern {
   std::vector<std::array<uint32_t, 3>> triangles;  // indices into vertex_coords
   // The tessellation's unique domain points as the technique takes them (DomainCoord:
   // quads (u, v, 0), triangles barycentric (u, v, w) = gl_TessCoord).
-  std::vector<DomainCoord> vertex_coords;
+  std::vector<techniques::DomainCoord> vertex_coords;
   // kPatternEdges: each unique edge once, as (lower index, higher index), sorted.
   std::vector<std::array<uint32_t, 2>> edges;
   // kPatternSamples: the midpoint of every unique edge (in `edges` order), then the
@@ -70,7 +70,7 @@ struct ScreenPattern {
   // One batch pattern for every point a patch evaluates (one allocation and one kernel call
   // per patch): point i < vertexCount() is vertex i, and with kPatternSamples point
   // vertexCount() + k is sample k. Null when culled.
-  std::unique_ptr<BatchPattern> points;
+  std::unique_ptr<techniques::BatchPattern> points;
 
   size_t vertexCount() const { return vertex_coords.size(); }
   // Domain points held in the batch pattern (what bounds the cache).
@@ -84,18 +84,18 @@ struct ScreenPattern {
 // tabulated kernel: worth it when many patches share the pattern); false: a plain pattern,
 // evaluated point by point (cheaper for a pattern one patch uses: gregory_acc tabulates
 // ~15 basis evaluations per point).
-void completeScreenPattern(const SurfacePatches& patches, unsigned parts, ScreenPattern* pattern,
-                           bool technique_kernel = true);
+void completeScreenPattern(const techniques::SurfacePatches& patches, unsigned parts,
+                           ScreenPattern* pattern, bool technique_kernel = true);
 
 // Domain points a pattern for `levels` may hold with every part (an upper estimate from the
 // largest level, used to size chunks before tessellating).
-size_t estimateScreenPatternPoints(PatchDomain domain, const tess::Levels& levels);
+size_t estimateScreenPatternPoints(techniques::PatchDomain domain, const tess::Levels& levels);
 
 // Patterns of one surface by key. Not thread-safe; acquire() builds in parallel (TBB).
 class ScreenPatternCache {
  public:
   // Keeps at most about `max_points` batch-pattern points between calls of acquire().
-  ScreenPatternCache(const SurfacePatches& patches, size_t max_points);
+  ScreenPatternCache(const techniques::SurfacePatches& patches, size_t max_points);
 
   // The patterns of `keys` (distinct: no key twice), in their order, each with at least `parts`;
   // the missing ones are built in parallel. Entries not in `keys` may be dropped first to stay
@@ -106,9 +106,9 @@ class ScreenPatternCache {
   size_t size() const { return patterns_.size(); }
 
  private:
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   size_t max_points_;
   std::map<ScreenPatternKey, std::unique_ptr<ScreenPattern>> patterns_;
 };
 
-}  // namespace tb
+}  // namespace tb::lod

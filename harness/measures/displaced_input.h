@@ -14,11 +14,11 @@
 #include "reference/triangle_distance_field.h"
 #include "techniques/common/displacement_sampling.h"
 
-namespace tb {
+namespace tb::measures {
 
 // The detailed target a map was baked against, rebuilt for grading.
 struct DisplacementTarget {
-  std::vector<Vec3d> positions;              // world units
+  std::vector<mesh::Vec3d> positions;  // world units
   std::vector<ref::Triangle> triangles;
   std::shared_ptr<const ref::TriangleDistanceField> field;  // Embree point queries on it
 };
@@ -26,7 +26,7 @@ struct DisplacementTarget {
 struct DisplacedInput {
   std::string name;  // the map's file name ("acc_catmark_torus.exr"): row key `displacement`
   std::string path;  // as shown in results (relative to the source tree when bundled)
-  std::shared_ptr<const DisplacementMap> map;
+  std::shared_ptr<const displacement::DisplacementMap> map;
   std::string technique, variant, asset;  // what the sidecar says it was baked for
   uint32_t resolution = 0;                // texels per patch side (sidecar)
   uint64_t file_bytes = 0;                // the EXR on disk
@@ -39,9 +39,9 @@ struct DisplacedInput {
 // when it could not be rebuilt; the error measure then skips with the reason).
 struct DisplacementRun {
   const DisplacedInput* input = nullptr;
-  DisplacementSampling sampling = DisplacementSampling::kWatertight;
+  techniques::DisplacementSampling sampling = techniques::DisplacementSampling::kWatertight;
   std::shared_ptr<const DisplacementTarget> target;
   std::string target_unavailable;  // why target is null
 };
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -18,7 +18,7 @@
 #include "harness/results/results_model.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 // What a measure is and what it emits, declared once: reports and compare read this
 // (through the MeasureDeclaration each run writes to results.json), never the measure's id.
@@ -27,7 +27,7 @@ struct MeasureInfo {
   std::string title;        // "Memory footprint against plain triangle meshes"
   std::string description;  // one line: what is measured, in which units
   // Every metric a row may emit, in emission order (a MetricTable's specs()).
-  std::vector<MetricSpec> metrics;
+  std::vector<results::MetricSpec> metrics;
   // Names from `metrics` that a summary shows first, most important first; each has a
   // direction (a headline ranks techniques), so never a Direction::kNone context figure.
   std::vector<std::string> headline;
@@ -35,9 +35,9 @@ struct MeasureInfo {
   // a note about one record goes in its MeasureResult::notes.
   std::vector<std::string> notes;
   // The rows a summary aggregates (MeasureDeclaration::summary_scope); empty: every ok row.
-  RowScope summary_scope = {};
+  results::RowScope summary_scope = {};
   // The charts report.html draws of this measure's rows (MeasureDeclaration::plots).
-  std::vector<PlotSpec> plots = {};
+  std::vector<results::PlotSpec> plots = {};
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure
@@ -101,7 +101,7 @@ struct MeasureRequirements {
   VariantPolicy variants = VariantPolicy::kDefaultOnly;
   // Narrows the techniques further when the needs alone do not say it (published_figures needs
   // the technique's own probe shader); empty: every technique whose instances meet the needs.
-  std::function<bool(const Technique&)> technique_filter;
+  std::function<bool(const techniques::Technique&)> technique_filter;
   // The measure also runs on displaced surfaces (`run --displacement`, bundled maps): the
   // suite then hands it a DisplacedPatches and MeasureInput::displacement, and adds the row
   // keys `displacement` and `sampling`. Other measures never see a displaced surface.
@@ -110,26 +110,26 @@ struct MeasureRequirements {
     return std::find(needs.begin(), needs.end(), need) != needs.end();
   }
 };
-MeasureDeclaration declarationOf(const MeasureInfo& info);
+results::MeasureDeclaration declarationOf(const MeasureInfo& info);
 
 struct MeasureInput {
-  const Technique& technique;
-  const VariantInfo& variant;
+  const techniques::Technique& technique;
+  const techniques::VariantInfo& variant;
   const std::string& asset_name;  // the asset's name, or the scenario's for a simulation
-  const Mesh& mesh;               // the asset as loaded (empty for a scenario)
+  const mesh::Mesh& mesh;         // the asset as loaded (empty for a scenario)
   // The surface capability, built for this variant; non-null when the measure needs kSurface.
-  const SurfacePatches* patches;
+  const techniques::SurfacePatches* patches;
   // The run's Vulkan device, or null when none is usable; then gpu_unavailable says why
   // and GPU measures report themselves skipped with that reason.
   gpu::Context* gpu = nullptr;
   std::string gpu_unavailable;
   // The simulation capability, freshly built for this measure (at time 0); non-null when
   // the measure needs kSimulation. The measure may step it.
-  Simulation* simulation = nullptr;
+  techniques::Simulation* simulation = nullptr;
   // The camera view; non-null when the measure needs kView.
-  const View* view = nullptr;
+  const view::View* view = nullptr;
   // The whole camera path; non-null when the measure needs kCameraPath.
-  const CameraPath* camera_path = nullptr;
+  const view::CameraPath* camera_path = nullptr;
   // The run's suite: a measure picks its default or full grid by it.
   SuiteMode suite = SuiteMode::kDefault;
   // Non-null when `patches` is displaced by a map (measures with displaced_surfaces only).
@@ -141,7 +141,7 @@ class Measure {
   virtual ~Measure() = default;
   virtual const MeasureInfo& info() const = 0;
   virtual MeasureRequirements requirements() const = 0;
-  virtual MeasureResult run(const MeasureInput& input) const = 0;
+  virtual results::MeasureResult run(const MeasureInput& input) const = 0;
   // kCameraPath measures: the bundled paths (name, frames; 0 = the file's own count) the
   // measure runs along in the default suite when the run names no --camera. Empty: the
   // suite's default path (orbit at 4 frames). --suite full always runs every bundled path.
@@ -163,6 +163,7 @@ class MeasureRegistry {
 #define TB_REGISTER_MEASURE_CONCAT(a, b) TB_REGISTER_MEASURE_CONCAT2(a, b)
 #define TB_REGISTER_MEASURE(Class)                                               \
   static const bool TB_REGISTER_MEASURE_CONCAT(tb_measure_registered_, __LINE__) \
-      [[maybe_unused]] = ::tb::MeasureRegistry::instance().add(std::make_unique<Class>())
+      [[maybe_unused]] =                                                         \
+          ::tb::measures::MeasureRegistry::instance().add(std::make_unique<Class>())
 
-}  // namespace tb
+}  // namespace tb::measures

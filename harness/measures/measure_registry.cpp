@@ -2,9 +2,9 @@
 
 #include "harness/measures/measure.h"
 
-namespace tb {
+namespace tb::measures {
 
-MeasureDeclaration declarationOf(const MeasureInfo& info) {
+results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
   return {info.id,       info.title, info.description,   info.metrics,
           info.headline, info.notes, info.summary_scope, info.plots};
 }
@@ -35,4 +35,4 @@ std::vector<const Measure*> MeasureRegistry::all() const {
   return result;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -17,24 +17,25 @@
 #include "harness/results/metric_spec.h"
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::measures {
 
 template <class Figures>
 struct MetricField {
   using Accessor = std::function<std::optional<double>(const Figures&)>;
 
   template <class Member>
-  requires std::is_arithmetic_v<Member> MetricField(std::string name, Unit unit,
-                                                    Direction direction, Member Figures::*member)
+  requires std::is_arithmetic_v<Member> MetricField(std::string name, results::Unit unit,
+                                                    results::Direction direction,
+                                                    Member Figures::*member)
       : spec{std::move(name), unit, direction},
         value([member](const Figures& f) -> std::optional<double> { return double(f.*member); }) {}
 
   template <class Fn>
   requires(!std::is_member_pointer_v<Fn> && std::invocable<const Fn&, const Figures&>)
-      MetricField(std::string name, Unit unit, Direction direction, Fn accessor)
+      MetricField(std::string name, results::Unit unit, results::Direction direction, Fn accessor)
       : spec{std::move(name), unit, direction}, value(std::move(accessor)) {}
 
-  MetricSpec spec;
+  results::MetricSpec spec;
   Accessor value;
 };
 
@@ -43,15 +44,15 @@ class MetricTable {
  public:
   MetricTable(std::initializer_list<MetricField<Figures>> fields) : fields_(fields) {}
 
-  std::vector<MetricSpec> specs() const {
-    std::vector<MetricSpec> result;
+  std::vector<results::MetricSpec> specs() const {
+    std::vector<results::MetricSpec> result;
     for (const MetricField<Figures>& field : fields_) result.push_back(field.spec);
     return result;
   }
 
   // The row's metrics, in table order, each with its declared unit's spelling.
-  std::vector<Metric> metrics(const Figures& figures) const {
-    std::vector<Metric> result;
+  std::vector<results::Metric> metrics(const Figures& figures) const {
+    std::vector<results::Metric> result;
     for (const MetricField<Figures>& field : fields_) {
       if (const std::optional<double> value = field.value(figures)) {
         result.push_back({field.spec.name, *value, std::string(toString(field.spec.unit))});
@@ -64,4 +65,4 @@ class MetricTable {
   std::vector<MetricField<Figures>> fields_;
 };
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 // Each glyph is 5 rows of 3 bits, the most significant bit the left column.
@@ -55,4 +55,4 @@ void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int 
   }
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -7,7 +7,7 @@
 
 #include "harness/pictures/rgb_image.h"
 
-namespace tb {
+namespace tb::pictures {
 
 inline constexpr int kGlyphWidth = 3;    // font pixels
 inline constexpr int kGlyphHeight = 5;   // font pixels
@@ -21,4 +21,4 @@ int64_t textWidthPx(std::string_view text, int scale);
 // the font does not have.
 void drawText(RgbImage* image, int64_t x, int64_t y, std::string_view text, int scale, Rgb colour);
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -7,7 +7,7 @@
 
 #include "harness/pictures/bitmap_font.h"
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 // Five points of the viridis ramp (van der Walt & Smith, matplotlib 2015) at t = 0, 1/4,
@@ -67,4 +67,4 @@ void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px, u
   drawText(image, int64_t(x) + width_px - textWidthPx(high, kScale), label_y, high, kScale, kFrame);
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -8,7 +8,7 @@
 
 #include "harness/pictures/rgb_image.h"
 
-namespace tb {
+namespace tb::pictures {
 
 // Colour of t in [0, 1] (t <= 0 the first colour, t >= 1 the last; NaN the first):
 // linear interpolation in 8-bit sRGB between heat_map.cpp's five control points, rounded
@@ -33,4 +33,4 @@ void drawColourBar(RgbImage* image, uint32_t x, uint32_t y, uint32_t width_px, u
 // Pixels the labels take below the bar (a 3-pixel gap, then 5 font pixels at scale 2).
 inline constexpr uint32_t kColourBarLabelPx = 13;
 
-}  // namespace tb
+}  // namespace tb::pictures

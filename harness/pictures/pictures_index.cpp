@@ -5,7 +5,7 @@
 
 #include "harness/pictures/heat_map.h"
 
-namespace tb {
+namespace tb::pictures {
 
 std::string picturesSummary(const PicturesIndex& index) {
   if (index.status != "ok") return index.status + ": " + index.reason;
@@ -51,4 +51,4 @@ std::string picturesIndexJson(const PicturesIndex& index) {
   return json.dump(1) + "\n";
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace tb {
+namespace tb::pictures {
 
 // One technique × asset: its error and wireframe pictures.
 struct PictureEntry {
@@ -57,4 +57,4 @@ inline constexpr const char* kPicturesIndexPath = "pictures/pictures.json";
 //  scale_min, scale_max, [status, reason when failed]}]}.
 std::string picturesIndexJson(const PicturesIndex& index);
 
-}  // namespace tb
+}  // namespace tb::pictures

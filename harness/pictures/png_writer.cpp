@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 // libpng reports errors by longjmp to the encoder's setjmp; a C++ exception must not cross
@@ -75,4 +75,4 @@ std::string encodePng(const RgbImage& image) {
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

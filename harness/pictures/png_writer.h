@@ -7,7 +7,7 @@
 
 #include "harness/pictures/rgb_image.h"
 
-namespace tb {
+namespace tb::pictures {
 
 // zlib level of every PNG written (0 none .. 9 smallest); 9 costs ~10 ms on a 320 x 356
 // picture and makes the files ~15 % smaller than the default 6.
@@ -17,4 +17,4 @@ inline constexpr int kPngCompressionLevel = 9;
 // message when encoding fails, std::invalid_argument for an empty or inconsistent image.
 std::string encodePng(const RgbImage& image);
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace tb {
+namespace tb::pictures {
 
 struct Rgb {
   uint8_t r = 0, g = 0, b = 0;
@@ -48,4 +48,4 @@ struct RgbImage {
   }
 };
 
-}  // namespace tb
+}  // namespace tb::pictures

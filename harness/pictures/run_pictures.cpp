@@ -18,7 +18,7 @@
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 constexpr const char* kErrorStatistic = "max_of_3_vertices";
@@ -29,8 +29,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // One technique × asset to picture.
 struct PictureJob {
-  const Technique* technique = nullptr;
-  const Record* record = nullptr;
+  const techniques::Technique* technique = nullptr;
+  const results::Record* record = nullptr;
 };
 
 // What one job produced: the index entry and, when ok, the two files' bytes.
@@ -53,22 +53,24 @@ std::string fileStem(const std::string& technique, const std::string& asset) {
   return std::string(kPicturesFolder) + "/" + stem;
 }
 
-bool errorMeasured(const Record& record) {
-  for (const MeasureResult& measure : record.measures) {
-    if (measure.measure == "error" && measure.status == MeasureStatus::kOk) return true;
+bool errorMeasured(const results::Record& record) {
+  for (const results::MeasureResult& measure : record.measures) {
+    if (measure.measure == "error" && measure.status == results::MeasureStatus::kOk) return true;
   }
   return false;
 }
 
 // Records of a surface technique's default variant with an ok `error` result, in record
 // order, one per technique × asset.
-std::vector<PictureJob> picturesOf(const Results& results) {
+std::vector<PictureJob> picturesOf(const results::Results& results) {
   std::vector<PictureJob> jobs;
   std::set<std::pair<std::string, std::string>> seen;
-  for (const Record& record : results.records) {
-    const Technique* technique = TechniqueRegistry::instance().find(record.technique);
-    if (technique == nullptr || technique->info().family != TechniqueFamily::kSurface) continue;
-    const std::vector<VariantInfo> variants = technique->variants();
+  for (const results::Record& record : results.records) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(record.technique);
+    if (technique == nullptr || technique->info().family != techniques::TechniqueFamily::kSurface)
+      continue;
+    const std::vector<techniques::VariantInfo> variants = technique->variants();
     if (variants.empty() || record.variant != variants.front().name) continue;
     if (!errorMeasured(record)) continue;
     // A displaced asset's pictures would need its map; the undisplaced asset has its own.
@@ -81,16 +83,17 @@ std::vector<PictureJob> picturesOf(const Results& results) {
 
 // The technique instance as the suite builds it: the asset loaded by its name, checked,
 // then built with the default variant.
-std::unique_ptr<TechniqueInstance> buildInstance(const Technique& technique,
-                                                 const std::string& asset, Mesh* mesh) {
-  const AssetRef ref = resolveAsset(asset);
-  *mesh = loadObjFile(ref.path);
+std::unique_ptr<techniques::TechniqueInstance> buildInstance(const techniques::Technique& technique,
+                                                             const std::string& asset,
+                                                             mesh::Mesh* mesh) {
+  const suite::AssetRef ref = suite::resolveAsset(asset);
+  *mesh = mesh::loadObjFile(ref.path);
   mesh->source = ref.shownPath();
   if (std::string reason = technique.checkSupport(*mesh); !reason.empty()) {
-    throw UnsupportedInput(reason);
+    throw techniques::UnsupportedInput(reason);
   }
-  std::unique_ptr<TechniqueInstance> instance =
-      technique.build(TechniqueInput{mesh, nullptr}, technique.variants().front());
+  std::unique_ptr<techniques::TechniqueInstance> instance =
+      technique.build(techniques::TechniqueInput{mesh, nullptr}, technique.variants().front());
   if (instance == nullptr || instance->surface() == nullptr) {
     throw std::logic_error(technique.info().id + ": the instance has no surface");
   }
@@ -109,13 +112,14 @@ PictureOutcome makePicture(const PictureJob& job, const PictureSettings& setting
   entry.level = settings.level;
   entry.error_statistic = kErrorStatistic;
   try {
-    Mesh mesh;
-    const std::unique_ptr<TechniqueInstance> instance =
+    mesh::Mesh mesh;
+    const std::unique_ptr<techniques::TechniqueInstance> instance =
         buildInstance(*job.technique, entry.asset, &mesh);
-    const SurfacePatches& patches = *instance->surface();
-    const ref::LimitSurface limit(patches.controlMesh(), referenceScheme(patches.approximates()));
+    const techniques::SurfacePatches& patches = *instance->surface();
+    const ref::LimitSurface limit(patches.controlMesh(),
+                                  lod::referenceScheme(patches.approximates()));
     const SurfaceErrorMesh surface = tessellateWithError(patches, limit, settings.level);
-    const View view = threeQuarterView(surface.bounds, settings.size_px);
+    const view::View view = threeQuarterView(surface.bounds, settings.size_px);
     std::vector<uint32_t> ids;
     {
       const std::lock_guard lock(target_mutex);
@@ -148,7 +152,7 @@ std::string wireframePicturePath(const std::string& technique, const std::string
   return fileStem(technique, asset) + "--wireframe.png";
 }
 
-PicturesIndex renderRunPictures(const Results& results, const std::string& device_name,
+PicturesIndex renderRunPictures(const results::Results& results, const std::string& device_name,
                                 const WriteFileFn& write, const PictureSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   gpu::ContextOptions options;
@@ -163,7 +167,7 @@ PicturesIndex renderRunPictures(const Results& results, const std::string& devic
   return index;
 }
 
-PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
+PicturesIndex renderRunPictures(const results::Results& results, gpu::Context* context,
                                 const std::string& unavailable_reason, const WriteFileFn& write,
                                 const PictureSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
@@ -198,4 +202,4 @@ PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
   return index;
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -11,7 +11,7 @@
 #include "harness/pictures/surface_picture.h"
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::pictures {
 
 // Writes one file of the run folder: a path relative to it ("pictures/x.png") and the bytes.
 using WriteFileFn = std::function<void(const std::string& relative_path, const std::string& bytes)>;
@@ -33,13 +33,13 @@ std::string wireframePicturePath(const std::string& technique, const std::string
 // so the files are byte-identical whatever the thread count.
 // Cost on lavapipe, the default suite's 89 pairs at level 8 and 320 px: 3.5 processor
 // seconds over every thread, 2.2 MB of PNG (bench/pictures_bench.cpp; docs/ARCHITECTURE.md §4).
-PicturesIndex renderRunPictures(const Results& results, const std::string& device_name,
+PicturesIndex renderRunPictures(const results::Results& results, const std::string& device_name,
                                 const WriteFileFn& write, const PictureSettings& settings = {});
 
 // The same with a device the caller opened; `context` null: skipped with
 // `unavailable_reason`.
-PicturesIndex renderRunPictures(const Results& results, gpu::Context* context,
+PicturesIndex renderRunPictures(const results::Results& results, gpu::Context* context,
                                 const std::string& unavailable_reason, const WriteFileFn& write,
                                 const PictureSettings& settings = {});
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -12,26 +12,27 @@
 #include "harness/measures/error/error.h"
 #include "reference/triangle_mesh_ref.h"
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 constexpr double kNoError = std::numeric_limits<double>::quiet_NaN();
 
 // gl_TessCoord as the technique takes it (techniques/batch_eval.h): quads (u, v, 0),
 // triangles the barycentric weights of corners 0, 1, 2.
-DomainCoord domainCoord(PatchDomain domain, const tess::DomainPoint& p) {
-  return domain == PatchDomain::kQuad ? DomainCoord{p[0], p[1], 0} : DomainCoord{p[0], p[1], p[2]};
+techniques::DomainCoord domainCoord(techniques::PatchDomain domain, const tess::DomainPoint& p) {
+  return domain == techniques::PatchDomain::kQuad ? techniques::DomainCoord{p[0], p[1], 0}
+                                                  : techniques::DomainCoord{p[0], p[1], p[2]};
 }
 
 }  // namespace
 
-SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                                     int level) {
+SurfaceErrorMesh tessellateWithError(const techniques::SurfacePatches& patches,
+                                     const ref::LimitSurface& limit, int level) {
   if (level < 1 || level > 64) {
     throw std::invalid_argument("tessellateWithError: level " + std::to_string(level) +
                                 " outside 1..64");
   }
-  const osd::Scheme scheme = referenceScheme(patches.approximates());
+  const osd::Scheme scheme = lod::referenceScheme(patches.approximates());
   tess::Levels levels;
   levels.outer = {float(level), float(level), float(level), float(level)};
   levels.inner = {float(level), float(level)};
@@ -39,7 +40,7 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
       tess::tessellate(tess::Domain::kTriangle, tess::Spacing::kInteger, levels),
       tess::tessellate(tess::Domain::kQuad, tess::Spacing::kInteger, levels)};
   auto patternOf = [&](size_t p) -> const tess::Tessellation& {
-    return patterns[patches.patchDomain(p) == PatchDomain::kQuad ? 1 : 0];
+    return patterns[patches.patchDomain(p) == techniques::PatchDomain::kQuad ? 1 : 0];
   };
 
   // Where each patch's vertices and triangles start, so patches fill fixed slots.
@@ -56,7 +57,7 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
   const double diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);
   const double scale = diagonal > 0 ? 1 / diagonal : 0;
   tbb::parallel_for(size_t(0), patch_count, [&](size_t p) {
-    const PatchDomain domain = patches.patchDomain(p);
+    const techniques::PatchDomain domain = patches.patchDomain(p);
     const tess::Tessellation& pattern = patternOf(p);
     const bool has_limit = limit.hasLimitSurface(p);
     for (size_t k = 0; k < pattern.points.size(); ++k) {
@@ -67,7 +68,8 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
       const ref::LimitFace face = limit.face(p);
       for (size_t k = 0; k < pattern.points.size(); ++k) {
         mesh.vertex_error[first_vertex[p] + k] =
-            parametricErrorAt(patches, face, scheme, p, domainCoord(domain, pattern.points[k])) *
+            measures::parametricErrorAt(patches, face, scheme, p,
+                                        domainCoord(domain, pattern.points[k])) *
             scale;
       }
     } else {
@@ -96,7 +98,7 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
   }
   if (!mesh.positions.empty()) {
     mesh.bounds = {mesh.positions.front(), mesh.positions.front()};
-    for (const Vec3d& q : mesh.positions) {
+    for (const mesh::Vec3d& q : mesh.positions) {
       for (int i = 0; i < 3; ++i) {
         mesh.bounds.min[i] = std::min(mesh.bounds.min[i], q[i]);
         mesh.bounds.max[i] = std::max(mesh.bounds.max[i], q[i]);
@@ -106,4 +108,4 @@ SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::L
   return mesh;
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -12,12 +12,12 @@
 #include "reference/limit_surface.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::pictures {
 
 struct SurfaceErrorMesh {
   // Every patch's tessellation vertices, patch by patch, in world units (positions from
   // the double evaluator, patches.evaluate).
-  std::vector<Vec3d> positions;
+  std::vector<mesh::Vec3d> positions;
   // Per vertex: |S - limit| at the same parameter (harness/measures/error/error.h,
   // parametricErrorAt), a fraction of the control mesh's bounding-box diagonal. NaN on
   // patches whose face has no limit surface (holes).
@@ -30,7 +30,7 @@ struct SurfaceErrorMesh {
   std::vector<double> triangle_error;
   double error_max = 0;  // over every vertex with a limit; fraction of the diagonal
   size_t patches_without_limit = 0;
-  Aabb bounds;  // of the tessellated positions, world units
+  mesh::Aabb bounds;  // of the tessellated positions, world units
 };
 
 // Tessellates every patch with the CPU tessellator (core/tess, bit-exact with lavapipe)
@@ -41,7 +41,7 @@ struct SurfaceErrorMesh {
 // measureSurfaceError for a patch domain the limit cannot be mapped to.
 // Cost: one double evaluation and one limit evaluation per vertex ((level + 1)^2 on a quad
 // patch, 61 on a triangle patch at level 8).
-SurfaceErrorMesh tessellateWithError(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                                     int level);
+SurfaceErrorMesh tessellateWithError(const techniques::SurfacePatches& patches,
+                                     const ref::LimitSurface& limit, int level);
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -10,7 +10,7 @@
 #include "harness/measures/error/error.h"
 #include "harness/pictures/heat_map.h"
 
-namespace tb {
+namespace tb::pictures {
 namespace {
 
 constexpr double kFieldOfViewRad = 30.0 * std::numbers::pi / 180.0;
@@ -21,23 +21,23 @@ constexpr double kNoLimitGrey = 170;  // error picture, a patch without limit su
 constexpr double kAmbient = 0.45;
 
 // Light from the eye's side, a little above and to the left, in world units.
-Vec3d lightDirection(const View& view, const Aabb& bounds) {
-  const Vec3d centre = 0.5 * (bounds.min + bounds.max);
-  const Vec3d eye{view.eye[0], view.eye[1], view.eye[2]};
-  const Vec3d to_eye = normalize(eye - centre);
-  const Vec3d up{0, 1, 0};
-  const Vec3d right = normalize(cross(-1.0 * to_eye, up));
+mesh::Vec3d lightDirection(const view::View& view, const mesh::Aabb& bounds) {
+  const mesh::Vec3d centre = 0.5 * (bounds.min + bounds.max);
+  const mesh::Vec3d eye{view.eye[0], view.eye[1], view.eye[2]};
+  const mesh::Vec3d to_eye = normalize(eye - centre);
+  const mesh::Vec3d up{0, 1, 0};
+  const mesh::Vec3d right = normalize(cross(-1.0 * to_eye, up));
   return normalize(to_eye + 0.5 * up - 0.3 * right);
 }
 
 // Per triangle, kAmbient + (1 - kAmbient) |n . light|: two-sided, since open meshes show
 // their back faces. A degenerate triangle is lit fully.
-std::vector<double> triangleShading(const SurfaceErrorMesh& mesh, const Vec3d& light) {
+std::vector<double> triangleShading(const SurfaceErrorMesh& mesh, const mesh::Vec3d& light) {
   std::vector<double> shade(mesh.triangles.size(), 1.0);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
-    const Vec3d& a = mesh.positions[tri[0]];
-    const Vec3d n = cross(mesh.positions[tri[1]] - a, mesh.positions[tri[2]] - a);
+    const mesh::Vec3d& a = mesh.positions[tri[0]];
+    const mesh::Vec3d n = cross(mesh.positions[tri[1]] - a, mesh.positions[tri[2]] - a);
     const double len = length(n);
     if (len > 0) shade[t] = kAmbient + (1 - kAmbient) * std::abs(dot(n, light)) / len;
   }
@@ -54,31 +54,31 @@ Rgb shaded(Rgb colour, double factor) {
 
 }  // namespace
 
-View threeQuarterView(const Aabb& bounds, uint32_t size_px) {
-  const double diagonal = diagonalOf(bounds);
+view::View threeQuarterView(const mesh::Aabb& bounds, uint32_t size_px) {
+  const double diagonal = mesh::diagonalOf(bounds);
   if (!(diagonal > 0) || !std::isfinite(diagonal)) {
     throw std::invalid_argument("threeQuarterView: the bounding box has no positive diagonal");
   }
   const double radius = diagonal / 2;
   const double distance = 1.02 * radius / std::sin(kFieldOfViewRad / 2);
-  PerspectiveCamera camera;
+  view::PerspectiveCamera camera;
   camera.target = 0.5 * (bounds.min + bounds.max);
-  camera.eye = camera.target + distance * normalize(Vec3d{1, 0.7, 1.4});
+  camera.eye = camera.target + distance * normalize(mesh::Vec3d{1, 0.7, 1.4});
   camera.up = {0, 1, 0};
   camera.fov_y_rad = kFieldOfViewRad;
   camera.width_px = camera.height_px = size_px;
   camera.near_plane = std::max(distance - 1.05 * radius, 1e-3 * radius);
   camera.far_plane = distance + 1.05 * radius;
-  return perspectiveView(camera);
+  return view::perspectiveView(camera);
 }
 
 std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const SurfaceErrorMesh& mesh,
-                                        const View& view) {
+                                        const view::View& view) {
   std::vector<std::array<float, 4>> clip;
   clip.reserve(mesh.triangles.size() * 3);
   for (const auto& tri : mesh.triangles) {
     for (uint32_t v : tri) {
-      const Vec3d& p = mesh.positions[v];
+      const mesh::Vec3d& p = mesh.positions[v];
       const std::array<double, 4> c = view.view_projection.transform({p.x, p.y, p.z, 1.0});
       clip.push_back({float(c[0]), float(c[1]), float(c[2]), float(c[3])});
     }
@@ -92,7 +92,7 @@ std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const Surface
   return {rendered.begin(), rendered.end()};
 }
 
-SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View& view,
+SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const view::View& view,
                                        uint32_t size_px, std::vector<uint32_t> triangle_ids) {
   if (size_px < kMinimumPictureSizePx || triangle_ids.size() != size_t(size_px) * size_px) {
     throw std::invalid_argument(
@@ -136,14 +136,16 @@ SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View&
   return pictures;
 }
 
-SurfacePictures renderSurfacePictures(gpu::Context& context, const SurfacePatches& patches,
+SurfacePictures renderSurfacePictures(gpu::Context& context,
+                                      const techniques::SurfacePatches& patches,
                                       const PictureSettings& settings) {
-  const ref::LimitSurface limit(patches.controlMesh(), referenceScheme(patches.approximates()));
+  const ref::LimitSurface limit(patches.controlMesh(),
+                                lod::referenceScheme(patches.approximates()));
   const SurfaceErrorMesh mesh = tessellateWithError(patches, limit, settings.level);
-  const View view = threeQuarterView(mesh.bounds, settings.size_px);
+  const view::View view = threeQuarterView(mesh.bounds, settings.size_px);
   gpu::RenderTarget target(context, settings.size_px, settings.size_px);
   return composeSurfacePictures(mesh, view, settings.size_px,
                                 renderTriangleIds(target, mesh, view));
 }
 
-}  // namespace tb
+}  // namespace tb::pictures

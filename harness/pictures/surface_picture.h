@@ -17,12 +17,12 @@
 #include "harness/pictures/rgb_image.h"
 #include "harness/pictures/surface_error_mesh.h"
 
-namespace tb {
-
-namespace gpu {
+namespace tb::gpu {
 class Context;
 class RenderTarget;
-}  // namespace gpu
+}  // namespace tb::gpu
+
+namespace tb::pictures {
 
 struct PictureSettings {
   int level = 8;           // uniform integer tessellation level of every patch (1..64)
@@ -48,7 +48,7 @@ inline constexpr double kMinimumScaleMax = 1e-6;
 // The fixed camera: looking at the box's centre from the direction (1, 0.7, 1.4) (a 3/4 view
 // from above, y up), 30 degree vertical field of view, far enough that the box's bounding
 // sphere fits the square image. The box must have a positive diagonal.
-View threeQuarterView(const Aabb& bounds, uint32_t size_px);
+view::View threeQuarterView(const mesh::Aabb& bounds, uint32_t size_px);
 
 struct SurfacePictures {
   RgbImage error;
@@ -66,18 +66,19 @@ struct SurfacePictures {
 // view's size) and returns the ID buffer. Thread-unsafe on `target`; the device queue is
 // shared safely through gpu::Context.
 std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const SurfaceErrorMesh& mesh,
-                                        const View& view);
+                                        const view::View& view);
 
 // Composes both pictures from an ID buffer of renderTriangleIds (size_px^2 entries, size_px
 // >= kMinimumPictureSizePx; std::invalid_argument otherwise).
-SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const View& view,
+SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const view::View& view,
                                        uint32_t size_px, std::vector<uint32_t> triangle_ids);
 
 // All of it for one surface: the limit of patches.controlMesh() under the scheme it
 // approximates (as the error measure builds it), tessellateWithError at settings.level,
 // a render target of settings.size_px, the render and the composition. Throws InputError
 // when the reference cannot represent the mesh, gpu::GpuError for a device failure.
-SurfacePictures renderSurfacePictures(gpu::Context& context, const SurfacePatches& patches,
+SurfacePictures renderSurfacePictures(gpu::Context& context,
+                                      const techniques::SurfacePatches& patches,
                                       const PictureSettings& settings);
 
-}  // namespace tb
+}  // namespace tb::pictures

@@ -11,7 +11,7 @@
 
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 
 const char* const kAdviceRankingRule =
     "candidates that meet every constraint given come first, ordered by error ascending, then "
@@ -46,7 +46,7 @@ constexpr const char* kCracksUnpaired = "unpaired_points";
 using LineKey = std::pair<std::string, std::string>;  // technique, variant
 
 // One measure's per-asset summary lines of `asset`, by technique and variant.
-std::map<LineKey, SummaryLine> linesOf(const Results& results, const std::string& measure,
+std::map<LineKey, SummaryLine> linesOf(const results::Results& results, const std::string& measure,
                                        const std::string& asset,
                                        const std::vector<std::string>& metrics) {
   std::map<LineKey, SummaryLine> lines;
@@ -77,7 +77,7 @@ std::string missingReason(const SummaryLine* line, const std::string& figure,
 }
 
 // The worst value of one metric of a line, or the reason there is none.
-std::optional<double> worstFigure(const Results& results, const SummaryLine* line,
+std::optional<double> worstFigure(const results::Results& results, const SummaryLine* line,
                                   const std::string& figure, const std::string& measure,
                                   const std::string& metric, std::string* missing) {
   const MetricStats* stats = line != nullptr ? line->find(metric) : nullptr;
@@ -245,7 +245,7 @@ std::string formatAdviceNumber(double value) {
   return fmt::format("{:.4g}", value);
 }
 
-Advice rankCandidates(const Results& results, const std::string& asset,
+Advice rankCandidates(const results::Results& results, const std::string& asset,
                       const AdviceConstraints& constraints) {
   Advice advice;
   advice.asset = asset;
@@ -260,7 +260,7 @@ Advice rankCandidates(const Results& results, const std::string& asset,
     if (!t.variants.empty()) default_variant[t.technique] = t.variants.front();
   }
 
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     if (record.asset != asset || !selected(constraints, record.technique)) continue;
     const bool seen = std::any_of(advice.ranked.begin(), advice.ranked.end(), [&](const Candidate& c) {
       return c.technique == record.technique && c.variant == record.variant;
@@ -303,7 +303,7 @@ Advice rankCandidates(const Results& results, const std::string& asset,
                    [](const Candidate& a, const Candidate& b) { return rankKey(a) < rankKey(b); });
   writeVerdicts(&advice.ranked);
 
-  for (const Skip& skip : results.skipped) {
+  for (const results::Skip& skip : results.skipped) {
     if (skip.asset == asset && selected(constraints, skip.technique)) {
       advice.unsupported.push_back({skip.technique, skip.reason});
     }
@@ -367,4 +367,4 @@ std::string renderAdviceMarkdown(const Advice& advice, const AdviceConstraints& 
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -10,7 +10,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 // What the reader asked for; an absent bound is no constraint.
 struct AdviceConstraints {
@@ -70,7 +70,7 @@ struct Advice {
   bool anyPasses() const { return !ranked.empty() && ranked.front().passes; }
 };
 
-Advice rankCandidates(const Results& results, const std::string& asset,
+Advice rankCandidates(const results::Results& results, const std::string& asset,
                       const AdviceConstraints& constraints);
 
 // A Markdown list: the constraints, the rule, the units, then one line per candidate and one
@@ -80,4 +80,4 @@ std::string renderAdviceMarkdown(const Advice& advice, const AdviceConstraints& 
 // Numbers as advice prints them: 4 significant digits, integers without a fraction.
 std::string formatAdviceNumber(double value);
 
-}  // namespace tb
+}  // namespace tb::report

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-namespace tb {
+namespace tb::report {
 
 std::string base64Encode(std::string_view bytes) {
   static constexpr char kAlphabet[] =
@@ -23,4 +23,4 @@ std::string base64Encode(std::string_view bytes) {
   return text;
 }
 
-}  // namespace tb
+}  // namespace tb::report

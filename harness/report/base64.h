@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-namespace tb {
+namespace tb::report {
 
 // 3 bytes become 4 characters; the result is 4 * ceil(n / 3) characters long.
 std::string base64Encode(std::string_view bytes);
 
-}  // namespace tb
+}  // namespace tb::report

@@ -8,7 +8,7 @@
 
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 void appendLine(const std::vector<std::string>& cells, std::string* out) {
@@ -21,22 +21,22 @@ void appendLine(const std::vector<std::string>& cells, std::string* out) {
 
 // The measure's metric names: declared ones in declaration order, then undeclared ones in
 // order of appearance.
-std::vector<std::string> metricNames(const Results& results, const std::string& measure) {
+std::vector<std::string> metricNames(const results::Results& results, const std::string& measure) {
   std::vector<std::string> seen;
   std::set<std::string> emitted;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
-      for (const MetricRow& row : m.rows) {
-        for (const Metric& metric : row.metrics) {
+      for (const results::MetricRow& row : m.rows) {
+        for (const results::Metric& metric : row.metrics) {
           if (emitted.insert(metric.name).second) seen.push_back(metric.name);
         }
       }
     }
   }
   std::vector<std::string> names;
-  if (const MeasureDeclaration* declaration = results.findMeasure(measure)) {
-    for (const MetricSpec& spec : declaration->metrics) {
+  if (const results::MeasureDeclaration* declaration = results.findMeasure(measure)) {
+    for (const results::MetricSpec& spec : declaration->metrics) {
       if (emitted.contains(spec.name)) names.push_back(spec.name);
     }
   }
@@ -46,12 +46,12 @@ std::vector<std::string> metricNames(const Results& results, const std::string& 
   return names;
 }
 
-std::string measureCsv(const Results& results, const std::string& measure) {
+std::string measureCsv(const results::Results& results, const std::string& measure) {
   std::set<std::string> key_set;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         for (const auto& [key, value] : row.keys) key_set.insert(key);
       }
     }
@@ -68,11 +68,11 @@ std::string measureCsv(const Results& results, const std::string& measure) {
   }
   std::string out;
   appendLine(header, &out);
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
       const std::vector<std::string> record_cells{record.technique, record.variant, record.asset};
-      if (m.status != MeasureStatus::kOk) {
+      if (m.status != results::MeasureStatus::kOk) {
         std::vector<std::string> cells = record_cells;
         cells.resize(cells.size() + keys.size());
         cells.push_back(toString(m.status));
@@ -81,7 +81,7 @@ std::string measureCsv(const Results& results, const std::string& measure) {
         appendLine(cells, &out);
         continue;
       }
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         std::vector<std::string> cells = record_cells;
         for (const std::string& key : keys) {
           const auto it = row.keys.find(key);
@@ -91,7 +91,7 @@ std::string measureCsv(const Results& results, const std::string& measure) {
         cells.push_back(row.reason);
         for (const std::string& metric : metrics) {
           const auto it = std::find_if(row.metrics.begin(), row.metrics.end(),
-                                       [&](const Metric& x) { return x.name == metric; });
+                                       [&](const results::Metric& x) { return x.name == metric; });
           cells.push_back(it == row.metrics.end() ? "" : fmt::format("{}", it->value));
         }
         appendLine(cells, &out);
@@ -113,19 +113,19 @@ std::string csvCell(const std::string& text) {
   return quoted + "\"";
 }
 
-std::vector<std::pair<std::string, std::string>> renderCsvTables(const Results& results) {
+std::vector<std::pair<std::string, std::string>> renderCsvTables(const results::Results& results) {
   std::vector<std::pair<std::string, std::string>> files;
   for (const std::string& measure : measureIds(results)) {
     files.emplace_back("tables/" + measure + ".csv", measureCsv(results, measure));
   }
   std::string warnings;
   std::string notes;
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     for (const std::string& warning : record.warnings) {
       if (warnings.empty()) appendLine({"technique", "variant", "asset", "warning"}, &warnings);
       appendLine({record.technique, record.variant, record.asset, warning}, &warnings);
     }
-    for (const MeasureResult& m : record.measures) {
+    for (const results::MeasureResult& m : record.measures) {
       for (const std::string& note : m.notes) {
         if (notes.empty()) appendLine({"technique", "variant", "asset", "measure", "note"}, &notes);
         appendLine({record.technique, record.variant, record.asset, m.measure, note}, &notes);
@@ -137,4 +137,4 @@ std::vector<std::pair<std::string, std::string>> renderCsvTables(const Results& 
   return files;
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -8,7 +8,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 // RFC 4180: a cell holding a comma, a quote or a line break is quoted, quotes doubled.
 std::string csvCell(const std::string& text);
@@ -19,6 +19,6 @@ std::string csvCell(const std::string& text);
 // key of the measure (sorted), status, reason, then every metric in declaration order (the
 // unit in the header: "max_gap_world [world]"); a record whose whole measure was skipped
 // or failed is one line with empty keys. Values print in their shortest round-trip form.
-std::vector<std::pair<std::string, std::string>> renderCsvTables(const Results& results);
+std::vector<std::pair<std::string, std::string>> renderCsvTables(const results::Results& results);
 
-}  // namespace tb
+}  // namespace tb::report

@@ -11,7 +11,7 @@
 #include "harness/report/plot_data.h"
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -51,8 +51,8 @@ void contextRow(std::string* out, const std::string& name, const std::string& va
   *out += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escapeHtml(name), escapeHtml(value));
 }
 
-void contextSection(const Results& results, Page* page) {
-  const RunContext& c = results.context;
+void contextSection(const results::Results& results, Page* page) {
+  const results::RunContext& c = results.context;
   std::string rows;
   contextRow(&rows, "run", c.run_id);
   contextRow(&rows, "date (UTC)", c.date);
@@ -79,11 +79,10 @@ void contextSection(const Results& results, Page* page) {
 
 std::string plotNote(const PlotData& data) {
   std::vector<std::string> parts;
-  parts.push_back(
-      fmt::format("{} rows; a point is the {} of {}", data.rows_used,
-                  data.spec.reduce == PlotReduce::kMax ? "largest value" : "median",
-                  data.point_per_variant ? "one technique × variant's rows"
-                                         : "one series' rows at one x"));
+  parts.push_back(fmt::format(
+      "{} rows; a point is the {} of {}", data.rows_used,
+      data.spec.reduce == results::PlotReduce::kMax ? "largest value" : "median",
+      data.point_per_variant ? "one technique × variant's rows" : "one series' rows at one x"));
   if (!data.spec.where.empty()) {
     std::string where;
     for (const auto& [key, value] : data.spec.where)
@@ -174,9 +173,9 @@ void plotSection(const PlotData& data, Page* page) {
   page->body += "</div>\n";
 }
 
-void measureSections(const Results& results, Page* page) {
+void measureSections(const results::Results& results, Page* page) {
   for (const std::string& id : measureIds(results)) {
-    const MeasureDeclaration* declaration = results.findMeasure(id);
+    const results::MeasureDeclaration* declaration = results.findMeasure(id);
     page->body += fmt::format("<section class=\"measure\" id=\"measure-{}\">\n", escapeHtml(id));
     if (declaration == nullptr) {
       page->body += fmt::format(
@@ -190,7 +189,7 @@ void measureSections(const Results& results, Page* page) {
             "<p class=\"note\">The measure declares no plots; its figures are in "
             "report.md.</p>\n";
       }
-      for (const PlotSpec& spec : declaration->plots)
+      for (const results::PlotSpec& spec : declaration->plots)
         plotSection(plotData(results, *declaration, spec), page);
     }
     page->body += "</section>\n";
@@ -224,7 +223,7 @@ void picturesSection(const HtmlAssets& assets, Page* page) {
 
 }  // namespace
 
-std::string renderHtml(const Results& results, const HtmlAssets& assets) {
+std::string renderHtml(const results::Results& results, const HtmlAssets& assets) {
   Page page;
   page.charts_available = !assets.chartjs_source.empty();
   contextSection(results, &page);
@@ -260,4 +259,4 @@ std::string renderHtml(const Results& results, const HtmlAssets& assets) {
   return html;
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -10,7 +10,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 struct HtmlPicture {
   std::string caption;    // "error (0 … 0.0012 rel_diag)"
@@ -35,6 +35,6 @@ struct HtmlAssets {
   std::vector<std::string> picture_notes;
 };
 
-std::string renderHtml(const Results& results, const HtmlAssets& assets);
+std::string renderHtml(const results::Results& results, const HtmlAssets& assets);
 
-}  // namespace tb
+}  // namespace tb::report

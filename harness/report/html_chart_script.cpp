@@ -1,6 +1,6 @@
 #include "harness/report/html_chart_script.h"
 
-namespace tb {
+namespace tb::report {
 
 const char* const kHtmlErrorScript = R"JS(
 (function () {
@@ -128,4 +128,4 @@ const char* const kHtmlChartScript = R"JS(
 })();
 )JS";
 
-}  // namespace tb
+}  // namespace tb::report

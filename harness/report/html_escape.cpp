@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 bool startsWithNoCase(std::string_view text, size_t at, std::string_view prefix) {
@@ -82,4 +82,4 @@ std::string javascriptForScript(std::string_view source) {
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::report

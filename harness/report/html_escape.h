@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace tb {
+namespace tb::report {
 
 // Text and attribute values: & < > " ' as character references.
 std::string escapeHtml(std::string_view text);
@@ -21,4 +21,4 @@ std::string jsonForScript(std::string_view json);
 // the same characters; outside one they do not occur in working code.
 std::string javascriptForScript(std::string_view source);
 
-}  // namespace tb
+}  // namespace tb::report

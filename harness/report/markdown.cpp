@@ -7,14 +7,14 @@
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 
 using namespace markdown_detail;
 
 namespace {
 
-void appendContext(const Results& results, std::string* out) {
-  const RunContext& c = results.context;
+void appendContext(const results::Results& results, std::string* out) {
+  const results::RunContext& c = results.context;
   *out += "## Run context\n\n";
   appendHeader(out, {"field", "value"});
   appendRow(out, {"run id", c.run_id});
@@ -30,7 +30,7 @@ void appendContext(const Results& results, std::string* out) {
     appendRow(out, {"shard", std::to_string(c.shard.index) + " of " +
                                  std::to_string(c.shard.count) + " (numbered from 0)"});
   }
-  for (const ShardSource& source : c.merged_from) {
+  for (const results::ShardSource& source : c.merged_from) {
     appendRow(out, {"merged from shard " + std::to_string(source.shard.index) + "/" +
                         std::to_string(source.shard.count),
                     source.folder + " (run " + source.run_id + ", " + source.date + ", " +
@@ -39,10 +39,10 @@ void appendContext(const Results& results, std::string* out) {
   *out += "\n";
 }
 
-void appendAssets(const Results& results, std::string* out) {
+void appendAssets(const results::Results& results, std::string* out) {
   *out += "## Assets\n\n";
   appendHeader(out, {"asset", "faces", "vertices", "faces are", "normals"});
-  for (const AssetSummary& a : results.assets) {
+  for (const results::AssetSummary& a : results.assets) {
     appendRow(out, {a.name, std::to_string(a.faces), std::to_string(a.vertices), a.face_kinds,
                     a.normals_computed ? "computed (angle-weighted)" : "from file"});
   }
@@ -63,7 +63,7 @@ std::string formatBytes(double bytes) {
   return unit == 0 ? fmt::format("{:.0f} B", bytes) : fmt::format("{:.2f} {}", bytes, kUnits[unit]);
 }
 
-std::string formatMetricValue(const Metric& metric) {
+std::string formatMetricValue(const results::Metric& metric) {
   if (metric.unit == "bytes") return formatBytes(metric.value);
   if (std::isfinite(metric.value) && metric.value == std::floor(metric.value) &&
       std::fabs(metric.value) < 1e15) {
@@ -72,8 +72,8 @@ std::string formatMetricValue(const Metric& metric) {
   return fmt::format("{:.4g}", metric.value);
 }
 
-std::string renderMarkdown(const Results& results) {
-  const RunContext& c = results.context;
+std::string renderMarkdown(const results::Results& results) {
+  const results::RunContext& c = results.context;
   const std::vector<std::string> measures = measureIds(results);
   size_t variants = 0;
   for (const auto& technique : techniquesOf(results)) variants += technique.variants.size();
@@ -101,13 +101,13 @@ std::string renderMarkdown(const Results& results) {
   if (!results.skipped.empty()) {
     out += "## Not measured\n\n";
     appendHeader(&out, {"technique", "asset", "reason"});
-    for (const Skip& skip : results.skipped)
+    for (const results::Skip& skip : results.skipped)
       appendRow(&out, {skip.technique, skip.asset, skip.reason});
     out += "\n";
   }
   size_t warnings = 0;
   size_t records_warned = 0;
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     warnings += record.warnings.size();
     records_warned += record.warnings.empty() ? 0 : 1;
   }
@@ -115,7 +115,7 @@ std::string renderMarkdown(const Results& results) {
     out += "## Warnings\n\n";
     constexpr size_t kWarningsShown = 10;
     if (warnings <= kWarningsShown) {
-      for (const Record& record : results.records) {
+      for (const results::Record& record : results.records) {
         for (const std::string& warning : record.warnings) {
           out += "- " + record.technique + "/" + record.variant + " on " + record.asset + ": " +
                  warning + "\n";
@@ -130,4 +130,4 @@ std::string renderMarkdown(const Results& results) {
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::report

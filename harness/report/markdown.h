@@ -5,13 +5,13 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
-std::string renderMarkdown(const Results& results);
+std::string renderMarkdown(const results::Results& results);
 
 // "1.50 MiB", "812 B": binary units, three significant digits past the integer part.
 std::string formatBytes(double bytes);
 // Integers print without a fraction; other values with 4 significant digits.
-std::string formatMetricValue(const Metric& metric);
+std::string formatMetricValue(const results::Metric& metric);
 
-}  // namespace tb
+}  // namespace tb::report

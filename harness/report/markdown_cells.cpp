@@ -5,7 +5,7 @@
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
-namespace tb::markdown_detail {
+namespace tb::report::markdown_detail {
 namespace {
 
 std::string escapeCell(const std::string& text) {
@@ -41,36 +41,36 @@ void appendHeader(std::string* out, const std::vector<std::string>& cells) {
   *out += "\n";
 }
 
-std::string directionWord(Direction direction) {
+std::string directionWord(results::Direction direction) {
   switch (direction) {
-    case Direction::kLowerIsBetter:
+    case results::Direction::kLowerIsBetter:
       return "lower better";
-    case Direction::kHigherIsBetter:
+    case results::Direction::kHigherIsBetter:
       return "higher better";
-    case Direction::kNone:
+    case results::Direction::kNone:
       return "context";
   }
   return "";
 }
 
 // "hausdorff (rel_diag, lower better)"
-std::string metricHeader(const Results& results, const std::string& measure,
+std::string metricHeader(const results::Results& results, const std::string& measure,
                          const std::string& metric) {
   const std::string unit = unitOf(results, measure, metric);
-  const Direction direction = directionOf(results, measure, metric);
+  const results::Direction direction = directionOf(results, measure, metric);
   std::string header = metric + " (";
   if (!unit.empty()) header += unit + ", ";
   return header + directionWord(direction) + ")";
 }
 
 std::string formatFigure(double value, const std::string& unit) {
-  return formatMetricValue(Metric{"", value, unit});
+  return formatMetricValue(results::Metric{"", value, unit});
 }
 
 // The first headline metric of a measure: what its matrices and job screens show.
-std::string firstHeadline(const Results& results, const std::string& measure) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure);
+std::string firstHeadline(const results::Results& results, const std::string& measure) {
+  const results::MeasureDeclaration* declaration = results.findMeasure(measure);
   if (declaration != nullptr && !declaration->headline.empty()) return declaration->headline[0];
   return "";
 }
-}  // namespace tb::markdown_detail
+}  // namespace tb::report::markdown_detail

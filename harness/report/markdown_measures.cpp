@@ -9,7 +9,7 @@
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
-namespace tb::markdown_detail {
+namespace tb::report::markdown_detail {
 namespace {
 
 // The measure's metric columns: the declared metrics some row emits, in declared order,
@@ -19,32 +19,33 @@ struct Column {
   std::string header;  // "max_gap_world (world, lower better)"
 };
 
-std::string directionLabel(Direction direction) {
+std::string directionLabel(results::Direction direction) {
   switch (direction) {
-    case Direction::kLowerIsBetter:
+    case results::Direction::kLowerIsBetter:
       return ", lower better";
-    case Direction::kHigherIsBetter:
+    case results::Direction::kHigherIsBetter:
       return ", higher better";
-    case Direction::kNone:
+    case results::Direction::kNone:
       return "";
   }
   return "";
 }
 
-using RowFilter = bool (*)(const MetricRow&);
+using RowFilter = bool (*)(const results::MetricRow&);
 
 // The metric columns of the measure's rows that pass `filter`: declared metrics in
 // declaration order, then undeclared ones in order of appearance.
-std::vector<Column> metricColumns(const Results& results, const std::string& measure_id,
-                                  const MeasureDeclaration* declaration, RowFilter filter) {
+std::vector<Column> metricColumns(const results::Results& results, const std::string& measure_id,
+                                  const results::MeasureDeclaration* declaration,
+                                  RowFilter filter) {
   std::vector<std::string> seen;  // emitted names, in order of appearance
   std::map<std::string, std::string> row_unit;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         if (!filter(row)) continue;
-        for (const Metric& metric : row.metrics) {
+        for (const results::Metric& metric : row.metrics) {
           if (row_unit.emplace(metric.name, metric.unit).second) seen.push_back(metric.name);
         }
       }
@@ -52,7 +53,7 @@ std::vector<Column> metricColumns(const Results& results, const std::string& mea
   }
   std::vector<Column> columns;
   if (declaration != nullptr) {
-    for (const MetricSpec& spec : declaration->metrics) {
+    for (const results::MetricSpec& spec : declaration->metrics) {
       if (!row_unit.contains(spec.name)) continue;
       columns.push_back({spec.name, spec.name + " (" + std::string(toString(spec.unit)) +
                                         directionLabel(spec.direction) + ")"});
@@ -67,7 +68,7 @@ std::vector<Column> metricColumns(const Results& results, const std::string& mea
 
 // What the declaration says once for the whole measure: its title, fixed notes, headline
 // metrics and the meaning of the units its columns use.
-void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) {
+void appendDeclaration(const results::MeasureDeclaration& declaration, std::string* out) {
   if (!declaration.title.empty()) *out += "**" + declaration.title + "**";
   if (!declaration.description.empty()) *out += ": " + declaration.description;
   if (!declaration.title.empty() || !declaration.description.empty()) *out += "\n\n";
@@ -80,9 +81,9 @@ void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) 
     *out += "\n";
   }
   // Units whose spelling does not already say it all ("count", "bytes", "ratio" do).
-  std::vector<Unit> units;
-  for (const MetricSpec& spec : declaration.metrics) {
-    if (toString(spec.unit) != describe(spec.unit) &&
+  std::vector<results::Unit> units;
+  for (const results::MetricSpec& spec : declaration.metrics) {
+    if (toString(spec.unit) != results::describe(spec.unit) &&
         std::find(units.begin(), units.end(), spec.unit) == units.end()) {
       units.push_back(spec.unit);
     }
@@ -91,7 +92,7 @@ void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) 
     *out += "- units: ";
     for (size_t i = 0; i < units.size(); ++i) {
       *out += std::string(i > 0 ? "; " : "") + std::string(toString(units[i])) + " = " +
-              std::string(describe(units[i]));
+              std::string(results::describe(units[i]));
     }
     *out += "\n";
   }
@@ -100,10 +101,11 @@ void appendDeclaration(const MeasureDeclaration& declaration, std::string* out) 
 
 // The notes that belong to one record (e.g. how this asset's patches were sampled),
 // each naming its record.
-void appendRecordNotes(const Results& results, const std::string& measure_id, std::string* out) {
+void appendRecordNotes(const results::Results& results, const std::string& measure_id,
+                       std::string* out) {
   bool any = false;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
       for (const std::string& note : m.notes) {
         if (!any) *out += "Notes per record:\n\n";
@@ -118,15 +120,15 @@ void appendRecordNotes(const Results& results, const std::string& measure_id, st
 
 // One table of the measure's rows that pass `filter`: a line per row, a column per key and
 // metric. Records whose measure did not run are listed when `with_status_rows`.
-void appendTable(const Results& results, const std::string& measure_id,
-                 const MeasureDeclaration* declaration, RowFilter filter, bool with_status_rows,
-                 std::string* out) {
+void appendTable(const results::Results& results, const std::string& measure_id,
+                 const results::MeasureDeclaration* declaration, RowFilter filter,
+                 bool with_status_rows, std::string* out) {
   std::vector<std::string> key_names;
   std::set<std::string> seen_keys;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         if (!filter(row)) continue;
         for (const auto& [key, value] : row.keys) {
           if (seen_keys.insert(key).second) key_names.push_back(key);
@@ -140,10 +142,10 @@ void appendTable(const Results& results, const std::string& measure_id,
   header.push_back("status");
   for (const Column& column : columns) header.push_back(column.header);
   appendHeader(out, header);
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
-      if (m.status != MeasureStatus::kOk) {
+      if (m.status != results::MeasureStatus::kOk) {
         if (!with_status_rows) continue;
         std::vector<std::string> cells{record.technique, record.variant, record.asset};
         cells.resize(cells.size() + key_names.size());
@@ -152,14 +154,14 @@ void appendTable(const Results& results, const std::string& measure_id,
         appendRow(out, cells);
         continue;
       }
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         if (!filter(row)) continue;
         std::vector<std::string> cells{record.technique, record.variant, record.asset};
         for (const std::string& key : key_names) {
           auto it = row.keys.find(key);
           cells.push_back(it == row.keys.end() ? "" : it->second);
         }
-        if (row.status != MeasureStatus::kOk) {
+        if (row.status != results::MeasureStatus::kOk) {
           cells.push_back(std::string(toString(row.status)) + ": " + row.reason);
           cells.resize(header.size());
           appendRow(out, cells);
@@ -168,7 +170,7 @@ void appendTable(const Results& results, const std::string& measure_id,
         cells.push_back("ok");
         for (const Column& column : columns) {
           std::string value;
-          for (const Metric& metric : row.metrics) {
+          for (const results::Metric& metric : row.metrics) {
             if (metric.name == column.name) value = formatMetricValue(metric);
           }
           cells.push_back(value);
@@ -180,12 +182,12 @@ void appendTable(const Results& results, const std::string& measure_id,
   *out += "\n";
 }
 
-size_t countRows(const Results& results, const std::string& measure_id, RowFilter filter) {
+size_t countRows(const results::Results& results, const std::string& measure_id, RowFilter filter) {
   size_t count = 0;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure_id) continue;
-      for (const MetricRow& row : m.rows) count += filter(row) ? 1 : 0;
+      for (const results::MetricRow& row : m.rows) count += filter(row) ? 1 : 0;
     }
   }
   return count;
@@ -199,8 +201,9 @@ constexpr size_t kDetailRowsInReport = 40;
 
 // A measure's section: its declaration, then one line per technique × variant over every
 // asset, each headline metric as median / worst; the rows themselves only when few.
-void appendMeasureSection(const Results& results, const std::string& measure, std::string* out) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure);
+void appendMeasureSection(const results::Results& results, const std::string& measure,
+                          std::string* out) {
+  const results::MeasureDeclaration* declaration = results.findMeasure(measure);
   *out += "### " + measure + "\n\n";
   if (declaration != nullptr) appendDeclaration(*declaration, out);
   if (declaration != nullptr && !declaration->summary_scope.empty()) {
@@ -237,13 +240,14 @@ void appendMeasureSection(const Results& results, const std::string& measure, st
     appendRow(out, cells);
   }
   *out += "\n";
-  const size_t rows = countRows(results, measure, [](const MetricRow&) { return true; });
+  const size_t rows = countRows(results, measure, [](const results::MetricRow&) { return true; });
   if (rows <= kDetailRowsInReport) {
-    appendTable(results, measure, declaration, [](const MetricRow&) { return true; }, true, out);
+    appendTable(
+        results, measure, declaration, [](const results::MetricRow&) { return true; }, true, out);
     appendRecordNotes(results, measure, out);
   } else {
     *out += fmt::format("Every row ({}): `tables/{}.csv` and results.json.\n\n", rows, measure);
   }
 }
 
-}  // namespace tb::markdown_detail
+}  // namespace tb::report::markdown_detail

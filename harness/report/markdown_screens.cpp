@@ -9,7 +9,7 @@
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
-namespace tb::markdown_detail {
+namespace tb::report::markdown_detail {
 namespace {
 
 // Rows of every status for one measure, for the regression screen.
@@ -20,25 +20,25 @@ struct StatusCounts {
   size_t failed = 0;
 };
 
-StatusCounts countStatuses(const Results& results, const std::string& measure) {
+StatusCounts countStatuses(const results::Results& results, const std::string& measure) {
   StatusCounts counts;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
       ++counts.records;
-      if (m.status != MeasureStatus::kOk) {
-        (m.status == MeasureStatus::kSkipped ? counts.skipped : counts.failed)++;
+      if (m.status != results::MeasureStatus::kOk) {
+        (m.status == results::MeasureStatus::kSkipped ? counts.skipped : counts.failed)++;
         continue;
       }
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         switch (row.status) {
-          case MeasureStatus::kOk:
+          case results::MeasureStatus::kOk:
             ++counts.ok;
             break;
-          case MeasureStatus::kSkipped:
+          case results::MeasureStatus::kSkipped:
             ++counts.skipped;
             break;
-          case MeasureStatus::kFailed:
+          case results::MeasureStatus::kFailed:
             ++counts.failed;
             break;
         }
@@ -48,8 +48,8 @@ StatusCounts countStatuses(const Results& results, const std::string& measure) {
   return counts;
 }
 
-std::string headlineList(const Results& results, const std::string& measure) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure);
+std::string headlineList(const results::Results& results, const std::string& measure) {
+  const results::MeasureDeclaration* declaration = results.findMeasure(measure);
   std::string text;
   if (declaration == nullptr) return text;
   for (const std::string& metric : declaration->headline) {
@@ -62,8 +62,8 @@ std::string headlineList(const Results& results, const std::string& measure) {
 }  // namespace
 
 // Job 1: is this run clean, and what to compare it with.
-void appendRegressionScreen(const Results& results, const std::vector<std::string>& measures,
-                            std::string* out) {
+void appendRegressionScreen(const results::Results& results,
+                            const std::vector<std::string>& measures, std::string* out) {
   *out += "## Regression tracking\n\n";
   *out += "Every row of every measure, by status. `tessbench compare BASE NEW` lists what changed "
           "against another run (the committed baseline is `results/baseline`), worst first, by "
@@ -79,11 +79,11 @@ void appendRegressionScreen(const Results& results, const std::vector<std::strin
   *out += "\n";
   size_t failed_shown = 0;
   constexpr size_t kFailuresShown = 10;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
-      std::string reason = m.status == MeasureStatus::kFailed ? m.reason : "";
-      for (const MetricRow& row : m.rows) {
-        if (reason.empty() && row.status == MeasureStatus::kFailed) reason = row.reason;
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
+      std::string reason = m.status == results::MeasureStatus::kFailed ? m.reason : "";
+      for (const results::MetricRow& row : m.rows) {
+        if (reason.empty() && row.status == results::MeasureStatus::kFailed) reason = row.reason;
       }
       if (reason.empty()) continue;
       if (failed_shown++ < kFailuresShown) {
@@ -110,16 +110,16 @@ struct Best {
 
 // How many of the run's assets each technique measured, and why it refused the others
 // (the first refusal as the example; every refusal is under "Not measured").
-void appendCoverage(const Results& results, std::string* out) {
+void appendCoverage(const results::Results& results, std::string* out) {
   appendHeader(out, {"technique", "assets measured", "assets refused", "first refusal"});
   for (const auto& technique : techniquesOf(results)) {
     std::set<std::string> measured;
-    for (const Record& record : results.records) {
+    for (const results::Record& record : results.records) {
       if (record.technique == technique.technique) measured.insert(record.asset);
     }
     size_t refused = 0;
     std::string example;
-    for (const Skip& skip : results.skipped) {
+    for (const results::Skip& skip : results.skipped) {
       if (skip.technique != technique.technique) continue;
       if (refused++ == 0) example = skip.asset + ": " + skip.reason;
     }
@@ -133,7 +133,7 @@ void appendCoverage(const Results& results, std::string* out) {
 }  // namespace
 
 // Job 2: per asset, which technique × variant wins each measure's first headline figure.
-void appendChoiceScreen(const Results& results, const std::vector<std::string>& measures,
+void appendChoiceScreen(const results::Results& results, const std::vector<std::string>& measures,
                         std::string* out) {
   *out += "## Choosing a technique per asset\n\n";
   *out += "Which techniques take which assets (every refusal with its reason: \"Not measured\" "
@@ -149,7 +149,7 @@ void appendChoiceScreen(const Results& results, const std::vector<std::string>& 
   for (const std::string& measure : measures) {
     const std::string metric = firstHeadline(results, measure);
     if (metric.empty()) continue;
-    const Direction direction = directionOf(results, measure, metric);
+    const results::Direction direction = directionOf(results, measure, metric);
     const MeasureSummary summary =
         summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
     std::map<std::string, Best> best;
@@ -158,9 +158,9 @@ void appendChoiceScreen(const Results& results, const std::vector<std::string>& 
       if (stats == nullptr) continue;
       const double value = worstOf(*stats, direction);
       Best& current = best[line.asset];
-      const bool better = !current.found ||
-                          (direction == Direction::kHigherIsBetter ? value > current.value
-                                                                   : value < current.value);
+      const bool better = !current.found || (direction == results::Direction::kHigherIsBetter
+                                                 ? value > current.value
+                                                 : value < current.value);
       if (better) current = {line.technique + "/" + line.variant, value, true};
     }
     shown.push_back(measure);
@@ -168,7 +168,7 @@ void appendChoiceScreen(const Results& results, const std::vector<std::string>& 
     best_per_measure.push_back(std::move(best));
   }
   appendHeader(out, header);
-  for (const AssetSummary& asset : results.assets) {
+  for (const results::AssetSummary& asset : results.assets) {
     std::vector<std::string> cells{asset.name};
     for (size_t i = 0; i < shown.size(); ++i) {
       const auto it = best_per_measure[i].find(asset.name);
@@ -186,8 +186,8 @@ void appendChoiceScreen(const Results& results, const std::vector<std::string>& 
 
 // Job 3: one line per technique × variant, each measure's first headline figure over every
 // asset: median (worst).
-void appendPublishingScreen(const Results& results, const std::vector<std::string>& measures,
-                            std::string* out) {
+void appendPublishingScreen(const results::Results& results,
+                            const std::vector<std::string>& measures, std::string* out) {
   *out += "## Publishing tables\n\n";
   *out += "Per technique and variant, each measure's first headline figure over every asset and "
           "row: median (worst). `tessbench table RUN --measure M --format markdown|csv|latex` "
@@ -215,7 +215,8 @@ void appendPublishingScreen(const Results& results, const std::vector<std::strin
           const MetricStats* stats = line.find(metrics[i]);
           if (stats == nullptr) break;
           const std::string unit = unitOf(results, summaries[i].measure, metrics[i]);
-          const Direction direction = directionOf(results, summaries[i].measure, metrics[i]);
+          const results::Direction direction =
+              directionOf(results, summaries[i].measure, metrics[i]);
           cell = formatFigure(stats->median, unit) + " (" +
                  formatFigure(worstOf(*stats, direction), unit) + ")";
           any = true;
@@ -234,19 +235,20 @@ void appendPublishingScreen(const Results& results, const std::vector<std::strin
 // of the measure, or a refusal of an input it ran on, are columns, and only the inputs (assets, then scenarios) where some cell
 // says more than "—" are rows, so a simulation's matrix lists its scenarios and a surface
 // measure's leaves out displaced assets (whose rows its summary scope excludes).
-void appendMatrix(const Results& results, const std::string& measure, std::string* out) {
+void appendMatrix(const results::Results& results, const std::string& measure, std::string* out) {
   const std::string metric = firstHeadline(results, measure);
   if (metric.empty()) return;
-  const Direction direction = directionOf(results, measure, metric);
+  const results::Direction direction = directionOf(results, measure, metric);
   const std::string unit = unitOf(results, measure, metric);
   const MeasureSummary summary =
       summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
   std::set<std::string> measured_by;
   std::vector<std::string> inputs;
-  for (const AssetSummary& asset : results.assets) inputs.push_back(asset.name);
-  for (const Record& record : results.records) {
-    const bool has = std::any_of(record.measures.begin(), record.measures.end(),
-                                 [&](const MeasureResult& m) { return m.measure == measure; });
+  for (const results::AssetSummary& asset : results.assets) inputs.push_back(asset.name);
+  for (const results::Record& record : results.records) {
+    const bool has =
+        std::any_of(record.measures.begin(), record.measures.end(),
+                    [&](const results::MeasureResult& m) { return m.measure == measure; });
     if (!has) continue;
     measured_by.insert(record.technique);
     if (std::find(inputs.begin(), inputs.end(), record.asset) == inputs.end()) {
@@ -255,15 +257,15 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
   }
   // A technique that refused an input the measure ran on stays a column (n/a there).
   std::set<std::string> measured_inputs;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure == measure) measured_inputs.insert(record.asset);
     }
   }
-  for (const Skip& skip : results.skipped) {
+  for (const results::Skip& skip : results.skipped) {
     if (measured_inputs.count(skip.asset) > 0) measured_by.insert(skip.technique);
   }
-  std::vector<RunSelection::TechniqueVariants> techniques;
+  std::vector<results::RunSelection::TechniqueVariants> techniques;
   for (const auto& technique : techniquesOf(results)) {
     if (measured_by.count(technique.technique) > 0) techniques.push_back(technique);
   }
@@ -281,7 +283,7 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
     for (const auto& technique : techniques) {
       std::string cell = "—";
       const bool unsupported = std::any_of(
-          results.skipped.begin(), results.skipped.end(), [&](const Skip& skip) {
+          results.skipped.begin(), results.skipped.end(), [&](const results::Skip& skip) {
             return skip.technique == technique.technique && skip.asset == input;
           });
       if (unsupported) cell = "n/a";
@@ -304,4 +306,4 @@ void appendMatrix(const Results& results, const std::string& measure, std::strin
   *out += "\n";
 }
 
-}  // namespace tb::markdown_detail
+}  // namespace tb::report::markdown_detail

@@ -9,7 +9,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb::markdown_detail {
+namespace tb::report::markdown_detail {
 
 // "| a | b |": a table line, '|' escaped and newlines as spaces.
 void appendRow(std::string* out, const std::vector<std::string>& cells);
@@ -17,27 +17,28 @@ void appendRow(std::string* out, const std::vector<std::string>& cells);
 void appendHeader(std::string* out, const std::vector<std::string>& cells);
 
 // "lower better", "higher better", "context".
-std::string directionWord(Direction direction);
+std::string directionWord(results::Direction direction);
 // "hausdorff (rel_diag, lower better)"
-std::string metricHeader(const Results& results, const std::string& measure,
+std::string metricHeader(const results::Results& results, const std::string& measure,
                          const std::string& metric);
 std::string formatFigure(double value, const std::string& unit);
 // The first headline metric of a measure: what its matrices and job screens show.
-std::string firstHeadline(const Results& results, const std::string& measure);
+std::string firstHeadline(const results::Results& results, const std::string& measure);
 
 // Job 1: is this run clean, and what to compare it with.
-void appendRegressionScreen(const Results& results, const std::vector<std::string>& measures,
-                            std::string* out);
+void appendRegressionScreen(const results::Results& results,
+                            const std::vector<std::string>& measures, std::string* out);
 // Job 2: per asset, which technique × variant wins each measure's first headline figure.
-void appendChoiceScreen(const Results& results, const std::vector<std::string>& measures,
+void appendChoiceScreen(const results::Results& results, const std::vector<std::string>& measures,
                         std::string* out);
 // Job 3: one line per technique × variant, each measure's first headline figure over every
 // asset: median (worst).
-void appendPublishingScreen(const Results& results, const std::vector<std::string>& measures,
-                            std::string* out);
+void appendPublishingScreen(const results::Results& results,
+                            const std::vector<std::string>& measures, std::string* out);
 // A measure's technique × asset matrix of its first headline metric.
-void appendMatrix(const Results& results, const std::string& measure, std::string* out);
+void appendMatrix(const results::Results& results, const std::string& measure, std::string* out);
 // A measure's section: its declaration, its summary, its rows when few.
-void appendMeasureSection(const Results& results, const std::string& measure, std::string* out);
+void appendMeasureSection(const results::Results& results, const std::string& measure,
+                          std::string* out);
 
-}  // namespace tb::markdown_detail
+}  // namespace tb::report::markdown_detail

@@ -8,13 +8,13 @@
 
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 using RecordKey = std::tuple<std::string, std::string, std::string>;  // technique, variant, asset
 
 // "technique", "variant" (technique/variant), "asset", or a row key's value.
-std::optional<std::string> axisText(const Record& record, const MetricRow& row,
+std::optional<std::string> axisText(const results::Record& record, const results::MetricRow& row,
                                     const std::string& name) {
   if (name == "technique") return record.technique;
   if (name == "variant") return record.technique + "/" + record.variant;
@@ -24,8 +24,8 @@ std::optional<std::string> axisText(const Record& record, const MetricRow& row,
   return it->second;
 }
 
-const Metric* findMetric(const MetricRow& row, const std::string& name) {
-  for (const Metric& metric : row.metrics) {
+const results::Metric* findMetric(const results::MetricRow& row, const std::string& name) {
+  for (const results::Metric& metric : row.metrics) {
     if (metric.name == name) return &metric;
   }
   return nullptr;
@@ -45,7 +45,7 @@ struct CrossMeasureX {
   std::map<RecordKey, double> by_record;
 };
 
-std::optional<CrossMeasureX> crossMeasureX(const Results& results, const std::string& x) {
+std::optional<CrossMeasureX> crossMeasureX(const results::Results& results, const std::string& x) {
   const size_t dot = x.find('.');
   if (dot == std::string::npos) return std::nullopt;
   CrossMeasureX cross{x.substr(0, dot), x.substr(dot + 1), {}};
@@ -53,7 +53,7 @@ std::optional<CrossMeasureX> crossMeasureX(const Results& results, const std::st
   if (std::find(ids.begin(), ids.end(), cross.measure) == ids.end()) return std::nullopt;
   const MeasureSummary summary =
       summarizeMeasure(results, cross.measure, SummaryGrouping::kPerAsset, {cross.metric});
-  const Direction direction = directionOf(results, cross.measure, cross.metric);
+  const results::Direction direction = directionOf(results, cross.measure, cross.metric);
   for (const SummaryLine& line : summary.lines) {
     const MetricStats* stats = line.find(cross.metric);
     if (stats == nullptr || stats->rows == 0) continue;
@@ -104,7 +104,7 @@ std::string joinLabels(const std::vector<std::string>& labels) {
   return text;
 }
 
-PlotChart finishChart(ChartValues&& values, bool bar, PlotReduce reduce) {
+PlotChart finishChart(ChartValues&& values, bool bar, results::PlotReduce reduce) {
   PlotChart chart{std::move(values.facet), std::move(values.categories), {}};
   for (SeriesValues& series : values.series) {
     PlotSeries out{std::move(series.name), {}};
@@ -114,8 +114,8 @@ PlotChart finishChart(ChartValues&& values, bool bar, PlotReduce reduce) {
       point.category = std::move(p.category);
       point.label = joinLabels(p.labels);
       point.rows = p.ys.size();
-      point.y = reduce == PlotReduce::kMax ? *std::max_element(p.ys.begin(), p.ys.end())
-                                           : medianOf(std::move(p.ys));
+      point.y = reduce == results::PlotReduce::kMax ? *std::max_element(p.ys.begin(), p.ys.end())
+                                                    : medianOf(std::move(p.ys));
       out.points.push_back(std::move(point));
     }
     std::stable_sort(out.points.begin(), out.points.end(),
@@ -128,13 +128,13 @@ PlotChart finishChart(ChartValues&& values, bool bar, PlotReduce reduce) {
   return chart;
 }
 
-bool hiddenByLog(const PlotSpec& spec, const PlotPoint& point) {
-  const bool bar = spec.kind == PlotKind::kBar;
+bool hiddenByLog(const results::PlotSpec& spec, const PlotPoint& point) {
+  const bool bar = spec.kind == results::PlotKind::kBar;
   return (spec.log_x && !bar && point.x <= 0) || (spec.log_y && point.y <= 0);
 }
 
 // Facets in the order the run lists its assets (results.assets), others after, as met.
-void orderFacets(const Results& results, std::vector<ChartValues>* charts) {
+void orderFacets(const results::Results& results, std::vector<ChartValues>* charts) {
   auto rank = [&](const ChartValues& chart) {
     for (size_t i = 0; i < results.assets.size(); ++i) {
       if (results.assets[i].name == chart.facet) return i;
@@ -163,10 +163,10 @@ std::optional<double> parsePlotNumber(std::string_view text) {
   return value;
 }
 
-void markParetoFront(PlotChart* chart, Direction y_direction) {
+void markParetoFront(PlotChart* chart, results::Direction y_direction) {
   // better(a, b): y value a is strictly better than b.
   auto better = [&](double a, double b) {
-    return y_direction == Direction::kHigherIsBetter ? a > b : a < b;
+    return y_direction == results::Direction::kHigherIsBetter ? a > b : a < b;
   };
   std::vector<PlotPoint*> points;
   for (PlotSeries& series : chart->series) {
@@ -190,15 +190,15 @@ struct RowX {
   XSource source = XSource::kNone;
 };
 
-RowX rowX(const Record& record, const MetricRow& row, const PlotSpec& spec, bool bar,
-          const std::optional<CrossMeasureX>& cross) {
+RowX rowX(const results::Record& record, const results::MetricRow& row,
+          const results::PlotSpec& spec, bool bar, const std::optional<CrossMeasureX>& cross) {
   RowX at;
   if (bar) {
     at.category = axisText(record, row, spec.x);
   } else if (const auto key = row.keys.find(spec.x); key != row.keys.end()) {
     at.x = parsePlotNumber(key->second);
     at.source = XSource::kKey;
-  } else if (const Metric* metric = findMetric(row, spec.x); metric != nullptr) {
+  } else if (const results::Metric* metric = findMetric(row, spec.x); metric != nullptr) {
     if (std::isfinite(metric->value)) at.x = metric->value;
     at.source = XSource::kMetric;
   } else if (cross) {
@@ -210,7 +210,7 @@ RowX rowX(const Record& record, const MetricRow& row, const PlotSpec& spec, bool
 }
 
 // Adds the row's y value to its facet's chart, series and point.
-void addValue(std::vector<ChartValues>* charts, const Record& record, RowX at,
+void addValue(std::vector<ChartValues>* charts, const results::Record& record, RowX at,
               const std::string& facet, const std::string& series, double y) {
   ChartValues& chart = findOrAdd(
       *charts, [&](const ChartValues& c) { return c.facet == facet; },
@@ -241,8 +241,9 @@ void addValue(std::vector<ChartValues>* charts, const Record& record, RowX at,
 }
 
 // The x axis's label, by where the x values came from.
-void labelX(const Results& results, const MeasureDeclaration& measure, const PlotSpec& spec,
-            XSource x_source, const std::optional<CrossMeasureX>& cross, PlotData* data) {
+void labelX(const results::Results& results, const results::MeasureDeclaration& measure,
+            const results::PlotSpec& spec, XSource x_source,
+            const std::optional<CrossMeasureX>& cross, PlotData* data) {
   switch (x_source) {
     case XSource::kMetric:
       data->x_label = withUnit(spec.x, unitOf(results, measure.measure, spec.x));
@@ -259,7 +260,7 @@ void labelX(const Results& results, const MeasureDeclaration& measure, const Plo
 
 // The charts from their values: facets in order, the ones with too few points dropped,
 // the Pareto front marked, the points a log axis hides counted.
-void finishCharts(const Results& results, const PlotSpec& spec, bool bar,
+void finishCharts(const results::Results& results, const results::PlotSpec& spec, bool bar,
                   std::vector<ChartValues> charts, PlotData* data) {
   if (spec.facet == "asset") orderFacets(results, &charts);
   for (ChartValues& values : charts) {
@@ -281,29 +282,32 @@ void finishCharts(const Results& results, const PlotSpec& spec, bool bar,
 
 }  // namespace
 
-PlotData plotData(const Results& results, const MeasureDeclaration& measure, const PlotSpec& spec) {
+PlotData plotData(const results::Results& results, const results::MeasureDeclaration& measure,
+                  const results::PlotSpec& spec) {
   PlotData data;
   data.measure = measure.measure;
   data.spec = spec;
-  const MetricSpec* y_spec = measure.find(spec.y);
-  data.y_direction = y_spec != nullptr ? y_spec->direction : Direction::kNone;
+  const results::MetricSpec* y_spec = measure.find(spec.y);
+  data.y_direction = y_spec != nullptr ? y_spec->direction : results::Direction::kNone;
   data.y_label = withUnit(spec.y, y_spec != nullptr ? std::string(toString(y_spec->unit)) : "");
-  const bool bar = spec.kind == PlotKind::kBar;
+  const bool bar = spec.kind == results::PlotKind::kBar;
   const std::optional<CrossMeasureX> cross = bar ? std::nullopt : crossMeasureX(results, spec.x);
 
   XSource x_source = XSource::kNone;
   std::vector<ChartValues> charts;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& result : record.measures) {
-      if (result.measure != measure.measure || result.status != MeasureStatus::kOk) continue;
-      for (const MetricRow& row : result.rows) {
-        if (row.status != MeasureStatus::kOk || !rowInScope(spec.where, row.keys)) continue;
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& result : record.measures) {
+      if (result.measure != measure.measure || result.status != results::MeasureStatus::kOk)
+        continue;
+      for (const results::MetricRow& row : result.rows) {
+        if (row.status != results::MeasureStatus::kOk || !results::rowInScope(spec.where, row.keys))
+          continue;
         const RowX at = rowX(record, row, spec, bar, cross);
         if (!at.category && !at.x) {
           ++data.rows_without_x;
           continue;
         }
-        const Metric* y = findMetric(row, spec.y);
+        const results::Metric* y = findMetric(row, spec.y);
         if (y == nullptr || !std::isfinite(y->value)) {
           ++data.rows_without_y;
           continue;
@@ -326,4 +330,4 @@ PlotData plotData(const Results& results, const MeasureDeclaration& measure, con
   return data;
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -11,7 +11,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 // One point of a series. Line and scatter charts use x; bar charts use category (x is the
 // category's index). label names the technique/variants the point was reduced from.
@@ -39,10 +39,10 @@ struct PlotChart {
 
 struct PlotData {
   std::string measure;
-  PlotSpec spec;
+  results::PlotSpec spec;
   std::string x_label;  // "level", "hausdorff (rel_diag)", "instructions total (count)"
   std::string y_label;  // "plain_over_technique (ratio)"
-  Direction y_direction = Direction::kNone;
+  results::Direction y_direction = results::Direction::kNone;
   // x is another measure's figure of the record: each technique × variant is its own point.
   bool point_per_variant = false;
   // Facets in asset order; facets with fewer than 2 points and empty charts are dropped.
@@ -71,10 +71,11 @@ std::optional<double> parsePlotNumber(std::string_view text);
 // - pareto_front: a point is on the front when no other point of its chart has x <= its x
 //   and a y at least as good (by the y metric's direction) with one of the two strictly
 //   better; x is a cost (lower is better).
-PlotData plotData(const Results& results, const MeasureDeclaration& measure, const PlotSpec& spec);
+PlotData plotData(const results::Results& results, const results::MeasureDeclaration& measure,
+                  const results::PlotSpec& spec);
 
 // Marks PlotPoint::on_front over every series of `chart` (see plotData). A y without a
 // direction counts as lower is better.
-void markParetoFront(PlotChart* chart, Direction y_direction);
+void markParetoFront(PlotChart* chart, results::Direction y_direction);
 
-}  // namespace tb
+}  // namespace tb::report

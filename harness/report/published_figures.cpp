@@ -2,7 +2,7 @@
 
 #include <regex>
 
-namespace tb {
+namespace tb::report {
 
 const char* const kPublishedMemorySeed = "000";
 
@@ -77,4 +77,4 @@ const std::vector<PublishedMemoryRow>& publishedMemoryTable() {
   return kRows;
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tb {
+namespace tb::report {
 
 struct PublishedSource {
   std::string_view seed;      // the measure rows' key: "000", "001", ...
@@ -44,4 +44,4 @@ extern const char* const kPublishedMemorySeed;
 // patches; memory_measure.cpp's notes derive it): ours are scaled to it per patch.
 constexpr double kPublishedMemoryPatches = 14400;
 
-}  // namespace tb
+}  // namespace tb::report

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 MetricStats statsOf(std::vector<double> values) {
@@ -30,13 +30,13 @@ void noteReason(SummaryLine* line, const std::string& reason) {
 
 }  // namespace
 
-double worstOf(const MetricStats& stats, Direction direction) {
+double worstOf(const MetricStats& stats, results::Direction direction) {
   switch (direction) {
-    case Direction::kLowerIsBetter:
+    case results::Direction::kLowerIsBetter:
       return stats.max;
-    case Direction::kHigherIsBetter:
+    case results::Direction::kHigherIsBetter:
       return stats.min;
-    case Direction::kNone:
+    case results::Direction::kNone:
       return stats.median;
   }
   return stats.median;
@@ -47,7 +47,7 @@ const MetricStats* SummaryLine::find(const std::string& metric) const {
   return it == stats.end() ? nullptr : &it->second;
 }
 
-MeasureSummary summarizeMeasure(const Results& results, const std::string& measure,
+MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
                                 SummaryGrouping grouping, const std::vector<std::string>& metrics) {
   MeasureSummary summary;
   summary.measure = measure;
@@ -57,13 +57,13 @@ MeasureSummary summarizeMeasure(const Results& results, const std::string& measu
     summary.metrics = summary.declaration->headline;
   }
   const bool every_metric = summary.metrics.empty();
-  const RowScope scope =
-      summary.declaration != nullptr ? summary.declaration->summary_scope : RowScope{};
+  const results::RowScope scope =
+      summary.declaration != nullptr ? summary.declaration->summary_scope : results::RowScope{};
 
   std::vector<LineValues> lines;
   std::map<std::tuple<std::string, std::string, std::string>, size_t> line_index;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
       const std::string asset = grouping == SummaryGrouping::kPerAsset ? record.asset : "";
       const auto key = std::make_tuple(record.technique, record.variant, asset);
@@ -75,21 +75,22 @@ MeasureSummary summarizeMeasure(const Results& results, const std::string& measu
         lines.back().line.asset = asset;
       }
       LineValues& target = lines[it->second];
-      if (m.status != MeasureStatus::kOk) {
-        (m.status == MeasureStatus::kSkipped ? target.line.skipped_rows : target.line.failed_rows)++;
+      if (m.status != results::MeasureStatus::kOk) {
+        (m.status == results::MeasureStatus::kSkipped ? target.line.skipped_rows
+                                                      : target.line.failed_rows)++;
         noteReason(&target.line, m.reason);
         continue;
       }
-      for (const MetricRow& row : m.rows) {
-        if (row.status != MeasureStatus::kOk) {
-          (row.status == MeasureStatus::kSkipped ? target.line.skipped_rows
-                                                 : target.line.failed_rows)++;
+      for (const results::MetricRow& row : m.rows) {
+        if (row.status != results::MeasureStatus::kOk) {
+          (row.status == results::MeasureStatus::kSkipped ? target.line.skipped_rows
+                                                          : target.line.failed_rows)++;
           noteReason(&target.line, row.reason);
           continue;
         }
-        if (!rowInScope(scope, row.keys)) continue;
+        if (!results::rowInScope(scope, row.keys)) continue;
         ++target.line.ok_rows;
-        for (const Metric& metric : row.metrics) {
+        for (const results::Metric& metric : row.metrics) {
           const bool listed = std::find(summary.metrics.begin(), summary.metrics.end(),
                                         metric.name) != summary.metrics.end();
           if (!listed && !every_metric) continue;
@@ -106,20 +107,23 @@ MeasureSummary summarizeMeasure(const Results& results, const std::string& measu
   return summary;
 }
 
-std::vector<std::string> measureIds(const Results& results) {
+std::vector<std::string> measureIds(const results::Results& results) {
   std::vector<std::string> ids;
-  for (const MeasureDeclaration& declaration : results.measures) ids.push_back(declaration.measure);
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::MeasureDeclaration& declaration : results.measures)
+    ids.push_back(declaration.measure);
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       if (std::find(ids.begin(), ids.end(), m.measure) == ids.end()) ids.push_back(m.measure);
     }
   }
   return ids;
 }
 
-std::vector<RunSelection::TechniqueVariants> techniquesOf(const Results& results) {
-  std::vector<RunSelection::TechniqueVariants> techniques = results.context.selection.techniques;
-  for (const Record& record : results.records) {
+std::vector<results::RunSelection::TechniqueVariants> techniquesOf(
+    const results::Results& results) {
+  std::vector<results::RunSelection::TechniqueVariants> techniques =
+      results.context.selection.techniques;
+  for (const results::Record& record : results.records) {
     auto it = std::find_if(techniques.begin(), techniques.end(),
                            [&](const auto& t) { return t.technique == record.technique; });
     if (it == techniques.end()) {
@@ -133,17 +137,18 @@ std::vector<RunSelection::TechniqueVariants> techniquesOf(const Results& results
   return techniques;
 }
 
-Direction directionOf(const Results& results, const std::string& measure,
-                      const std::string& metric) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure);
-  const MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
-  return spec != nullptr ? spec->direction : Direction::kNone;
+results::Direction directionOf(const results::Results& results, const std::string& measure,
+                               const std::string& metric) {
+  const results::MeasureDeclaration* declaration = results.findMeasure(measure);
+  const results::MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
+  return spec != nullptr ? spec->direction : results::Direction::kNone;
 }
 
-std::string unitOf(const Results& results, const std::string& measure, const std::string& metric) {
-  const MeasureDeclaration* declaration = results.findMeasure(measure);
-  const MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
+std::string unitOf(const results::Results& results, const std::string& measure,
+                   const std::string& metric) {
+  const results::MeasureDeclaration* declaration = results.findMeasure(measure);
+  const results::MetricSpec* spec = declaration != nullptr ? declaration->find(metric) : nullptr;
   return spec != nullptr ? std::string(toString(spec->unit)) : std::string();
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -13,7 +13,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 // min / median / max of one metric over the rows a summary line aggregates. median is the
 // middle value, or the mean of the two middle ones.
@@ -26,7 +26,7 @@ struct MetricStats {
 
 // The value a reader can count on: max when lower is better, min when higher is better,
 // the median for a metric with no direction.
-double worstOf(const MetricStats& stats, Direction direction);
+double worstOf(const MetricStats& stats, results::Direction direction);
 
 // One technique × variant (× asset) of one measure.
 struct SummaryLine {
@@ -43,7 +43,7 @@ struct SummaryLine {
 
 struct MeasureSummary {
   std::string measure;
-  const MeasureDeclaration* declaration = nullptr;  // null for undeclared results
+  const results::MeasureDeclaration* declaration = nullptr;  // null for undeclared results
   std::vector<std::string> metrics;                 // the metrics summarised, in order
   std::vector<SummaryLine> lines;                   // in record order
 };
@@ -55,22 +55,23 @@ enum class SummaryGrouping {
 
 // Summarises `measure` over the rows in its declaration's summary scope. `metrics` empty:
 // the declared headline metrics (every emitted metric when the declaration has none).
-MeasureSummary summarizeMeasure(const Results& results, const std::string& measure,
+MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
                                 SummaryGrouping grouping,
                                 const std::vector<std::string>& metrics = {});
 
 // The measure ids of the run, in the order results.json declares them (sorted), then any
 // undeclared one in order of appearance.
-std::vector<std::string> measureIds(const Results& results);
+std::vector<std::string> measureIds(const results::Results& results);
 
 // The techniques of the run in selection order (records' order when the selection is
 // empty), each with its variants; the first variant is the technique's default.
-std::vector<RunSelection::TechniqueVariants> techniquesOf(const Results& results);
+std::vector<results::RunSelection::TechniqueVariants> techniquesOf(const results::Results& results);
 
 // The direction of a declared metric; kNone when undeclared.
-Direction directionOf(const Results& results, const std::string& measure,
-                      const std::string& metric);
+results::Direction directionOf(const results::Results& results, const std::string& measure,
+                               const std::string& metric);
 // The unit spelling of a declared metric ("rel_diag"); empty when undeclared.
-std::string unitOf(const Results& results, const std::string& measure, const std::string& metric);
+std::string unitOf(const results::Results& results, const std::string& measure,
+                   const std::string& metric);
 
-}  // namespace tb
+}  // namespace tb::report

@@ -10,7 +10,7 @@
 #include "harness/report/published_figures.h"
 #include "harness/report/summary.h"
 
-namespace tb {
+namespace tb::report {
 namespace {
 
 // 4 significant digits; integers without a fraction.
@@ -40,8 +40,8 @@ std::optional<TableFormat> parseTableFormat(std::string_view text) {
   return std::nullopt;
 }
 
-std::vector<std::string> runContextFootnote(const Results& results) {
-  const RunContext& c = results.context;
+std::vector<std::string> runContextFootnote(const results::Results& results) {
+  const results::RunContext& c = results.context;
   std::vector<std::string> lines;
   lines.push_back(fmt::format("Run {} ({}), git {}, Vulkan device: {}, suite: {}.",
                               orNone(c.run_id, "unnamed"), orNone(c.date, "undated"),
@@ -55,7 +55,7 @@ std::vector<std::string> runContextFootnote(const Results& results) {
   return lines;
 }
 
-TextTable summaryTable(const Results& results, const SummaryTableOptions& options) {
+TextTable summaryTable(const results::Results& results, const SummaryTableOptions& options) {
   const MeasureSummary summary = summarizeMeasure(
       results, options.measure,
       options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
@@ -101,7 +101,7 @@ namespace {
 
 // Ours beside the talk's memory table: per technique x variant and level, the median over the
 // run's assets of bytes per patch scaled to the talk's patch count, and the ratio.
-TextTable publishedMemory(const Results& results) {
+TextTable publishedMemory(const results::Results& results) {
   TextTable table;
   table.title = "Memory against plain triangle meshes, published and ours";
   table.header = {"source", "technique/variant", "level", "plain mesh (MB)",
@@ -113,16 +113,16 @@ TextTable publishedMemory(const Results& results) {
   };
   std::map<std::pair<std::string, int>, Values> ours;
   std::vector<std::string> order;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
-      if (m.measure != "memory" || m.status != MeasureStatus::kOk) continue;
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
+      if (m.measure != "memory" || m.status != results::MeasureStatus::kOk) continue;
       const std::string who = record.technique + "/" + record.variant;
       if (std::find(order.begin(), order.end(), who) == order.end()) order.push_back(who);
-      for (const MetricRow& row : m.rows) {
+      for (const results::MetricRow& row : m.rows) {
         const auto level = row.keys.find("level");
-        if (row.status != MeasureStatus::kOk || level == row.keys.end()) continue;
+        if (row.status != results::MeasureStatus::kOk || level == row.keys.end()) continue;
         std::map<std::string, double> v;
-        for (const Metric& metric : row.metrics) v[metric.name] = metric.value;
+        for (const results::Metric& metric : row.metrics) v[metric.name] = metric.value;
         if (!v.contains("patches") || v["patches"] <= 0) continue;
         Values& values = ours[{who, std::atoi(level->second.c_str())}];
         const double scale = kPublishedMemoryPatches / v["patches"] / 1e6;
@@ -156,7 +156,7 @@ TextTable publishedMemory(const Results& results) {
 }
 
 // The published_figures rows: the published shader costs and ours for the same stage.
-TextTable publishedInstructions(const Results& results) {
+TextTable publishedInstructions(const results::Results& results) {
   TextTable table;
   table.title = "Shader costs, published and ours";
   table.header = {"source",
@@ -169,11 +169,11 @@ TextTable publishedInstructions(const Results& results) {
                   "ours loads (count)"};
   table.numeric = {false, false, false, true, true, true, true, true};
   std::vector<std::string> sources;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
-      if (m.measure != "published_figures" || m.status != MeasureStatus::kOk) continue;
-      for (const MetricRow& row : m.rows) {
-        if (row.status != MeasureStatus::kOk) continue;
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
+      if (m.measure != "published_figures" || m.status != results::MeasureStatus::kOk) continue;
+      for (const results::MetricRow& row : m.rows) {
+        if (row.status != results::MeasureStatus::kOk) continue;
         const auto source = row.keys.find("source");
         const auto what = row.keys.find("what");
         const std::string source_name = source != row.keys.end() ? source->second : "";
@@ -181,7 +181,7 @@ TextTable publishedInstructions(const Results& results) {
           sources.push_back(source_name);
         }
         std::map<std::string, std::string> v;
-        for (const Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
+        for (const results::Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
         // published_loads 0: not published (the measure's notes).
         if (v["published_loads"] == "0") v["published_loads"] = "";
         table.rows.push_back(
@@ -209,7 +209,7 @@ bool hasPublishedTable(const std::string& measure) {
   return measure == "memory" || measure == "published_figures";
 }
 
-TextTable publishedTable(const Results& results, const std::string& measure) {
+TextTable publishedTable(const results::Results& results, const std::string& measure) {
   if (measure == "memory") return publishedMemory(results);
   if (measure == "published_figures") return publishedInstructions(results);
   return {};
@@ -334,4 +334,4 @@ std::string renderTable(const TextTable& table, TableFormat format) {
   return {};
 }
 
-}  // namespace tb
+}  // namespace tb::report

@@ -9,7 +9,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::report {
 
 enum class TableFormat { kMarkdown, kCsv, kLatex };
 // "markdown" | "csv" | "latex"; nullopt for anything else.
@@ -33,18 +33,18 @@ struct SummaryTableOptions {
 // technique, variant (asset), then per metric its median and worst ("hausdorff median
 // (rel_diag)"), over the rows of the measure's summary scope; footnote: the declaration's
 // title and the run's context.
-TextTable summaryTable(const Results& results, const SummaryTableOptions& options);
+TextTable summaryTable(const results::Results& results, const SummaryTableOptions& options);
 
 // The measures with a published table: "memory" (NVIDIA's displacement subdivision surfaces
 // talk's memory table) and "published_figures" (its Bezier instruction counts and the DirectX SDK
 // SubD10 sample's ACC shader costs).
 bool hasPublishedTable(const std::string& measure);
 // The published figures beside ours from the same run; rows empty when the run has none.
-TextTable publishedTable(const Results& results, const std::string& measure);
+TextTable publishedTable(const results::Results& results, const std::string& measure);
 
 // The run's context, one line each: run id and date, git sha, Vulkan device, suite; the
 // library versions.
-std::vector<std::string> runContextFootnote(const Results& results);
+std::vector<std::string> runContextFootnote(const results::Results& results);
 
 // Markdown: a pipe table, then the footnote lines. CSV (RFC 4180): the footnote as leading
 // lines starting with "# " (comment lines: pandas comment='#'), then the header and rows,
@@ -57,4 +57,4 @@ std::string renderTable(const TextTable& table, TableFormat format);
 std::string latexEscape(std::string_view text);
 std::string csvField(std::string_view text);
 
-}  // namespace tb
+}  // namespace tb::report

@@ -8,7 +8,7 @@
 
 #include "harness/results/timing_compare.h"
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 std::string recordName(const Record& record) {
@@ -289,4 +289,4 @@ std::string renderComparison(const Comparison& comparison, size_t limit) {
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::results

@@ -18,7 +18,7 @@
 #include "harness/results/results_model.h"
 #include "harness/results/timings_json.h"
 
-namespace tb {
+namespace tb::results {
 
 struct CompareOptions {
   // A change counts when |new − base| > threshold × max(|base|, |new|): relative, so 0 vs
@@ -97,4 +97,4 @@ const char* toString(ChangeKind kind);
 // table of at most `limit` changes, worst first (the count of those left out is said).
 std::string renderComparison(const Comparison& comparison, size_t limit);
 
-}  // namespace tb
+}  // namespace tb::results

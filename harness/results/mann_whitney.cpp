@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 // Mid-ranks (1-based) of the pooled sample x ++ y, and Σ (t³ − t) over its groups of t tied
@@ -93,4 +93,4 @@ MannWhitneyResult mannWhitneyU(const std::vector<double>& x, const std::vector<d
   return result;
 }
 
-}  // namespace tb
+}  // namespace tb::results

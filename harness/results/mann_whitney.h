@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace tb {
+namespace tb::results {
 
 struct MannWhitneyResult {
   // U of the first sample: R1 − n1 (n1 + 1) / 2 with R1 the sum of its (mid-)ranks in the
@@ -30,4 +30,4 @@ MannWhitneyResult mannWhitneyU(const std::vector<double>& x, const std::vector<d
 // number of ways to place n1 values among n1 + n2 with U ≥ u, over C(n1 + n2, n1).
 double mannWhitneyExactSf(size_t u, size_t n1, size_t n2);
 
-}  // namespace tb
+}  // namespace tb::results

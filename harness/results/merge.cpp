@@ -7,7 +7,7 @@
 
 #include "harness/results/results_json.h"
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 std::string describe(const ShardId& shard) {
@@ -232,4 +232,4 @@ Results mergeShards(const std::vector<ShardRun>& shards) {
   return merged;
 }
 
-}  // namespace tb
+}  // namespace tb::results

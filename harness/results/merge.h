@@ -14,7 +14,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::results {
 
 // One shard's results and the folder it was read from (named in errors).
 struct ShardRun {
@@ -31,4 +31,4 @@ struct ShardRun {
 // leaves date, run_id and command_line to the caller.
 Results mergeShards(const std::vector<ShardRun>& shards);
 
-}  // namespace tb
+}  // namespace tb::results

@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 struct UnitText {
@@ -146,4 +146,4 @@ const MetricSpec* MeasureDeclaration::find(std::string_view name) const {
   return nullptr;
 }
 
-}  // namespace tb
+}  // namespace tb::results

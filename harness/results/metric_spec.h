@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tb {
+namespace tb::results {
 
 // The closed set of units. A new metric picks one of these; a unit that does not fit is
 // added here (with its spelling in metric_spec.cpp), never written as free text.
@@ -111,4 +111,4 @@ struct MeasureDeclaration {
   const MetricSpec* find(std::string_view name) const;
 };
 
-}  // namespace tb
+}  // namespace tb::results

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -521,4 +521,4 @@ Results readResultsFile(const std::string& path) {
   }
 }
 
-}  // namespace tb
+}  // namespace tb::results

@@ -8,7 +8,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::results {
 
 nlohmann::ordered_json toJson(const Results& results);
 // One measure's declaration as results.json's "measures" array holds it (also what
@@ -27,4 +27,4 @@ std::string recordJsonLine(const Record& record);
 std::string serializeResults(const Results& results);
 Results readResultsFile(const std::string& path);       // throws naming the file
 
-}  // namespace tb
+}  // namespace tb::results

@@ -9,7 +9,7 @@
 
 #include "harness/results/metric_spec.h"
 
-namespace tb {
+namespace tb::results {
 
 // Bumped whenever a field changes meaning or is removed.
 // 2: measure declarations (metric units, directions, headline, fixed notes) at the top
@@ -153,4 +153,4 @@ struct Results {
 const char* toString(MeasureStatus status);
 std::optional<MeasureStatus> parseMeasureStatus(const std::string& text);
 
-}  // namespace tb
+}  // namespace tb::results

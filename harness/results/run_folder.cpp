@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 namespace fs = std::filesystem;
@@ -262,4 +262,4 @@ void writeNewFile(const std::string& path, const std::string& contents) {
   if (::close(fd) != 0) throw std::runtime_error(path + ": write failed (" + errnoText() + ")");
 }
 
-}  // namespace tb
+}  // namespace tb::results

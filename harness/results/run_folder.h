@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace tb {
+namespace tb::results {
 
 // The marker file of an unfinished run folder and the journal beside it: one JSON line per
 // record, appended as each record is measured.
@@ -70,4 +70,4 @@ void writeNewFile(const std::string& path, const std::string& contents);
 
 std::string utcTimestampIso8601();
 
-}  // namespace tb
+}  // namespace tb::results

@@ -9,7 +9,7 @@
 
 #include "harness/results/mann_whitney.h"
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 using TimingKey = std::tuple<std::string, std::string, std::string, std::string>;
@@ -86,4 +86,4 @@ void compareTimings(const RunTimings& base, const RunTimings& current,
   }
 }
 
-}  // namespace tb
+}  // namespace tb::results

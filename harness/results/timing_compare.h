@@ -8,7 +8,7 @@
 #include "harness/results/compare.h"
 #include "harness/results/timings_json.h"
 
-namespace tb {
+namespace tb::results {
 
 // The median of a non-empty sample (the mean of the middle two for an even count).
 double medianOf(std::vector<double> samples);
@@ -21,4 +21,4 @@ double medianOf(std::vector<double> samples);
 void compareTimings(const RunTimings& base, const RunTimings& current,
                     const CompareOptions& options, Comparison* comparison);
 
-}  // namespace tb
+}  // namespace tb::results

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-namespace tb {
+namespace tb::results {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -70,4 +70,4 @@ RunTimings readTimingsFile(const std::string& path) {
   }
 }
 
-}  // namespace tb
+}  // namespace tb::results

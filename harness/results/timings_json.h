@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace tb {
+namespace tb::results {
 
 struct TimingEntry {
   std::string technique, variant, asset, measure;
@@ -31,4 +31,4 @@ std::string serializeTimings(const RunTimings& timings);  // 1-space indent, fin
 // Throws std::runtime_error naming the file and the field when it cannot be read.
 RunTimings readTimingsFile(const std::string& path);
 
-}  // namespace tb
+}  // namespace tb::results

@@ -10,7 +10,7 @@
 #error "TB_DEFAULT_ASSETS_DIR must be defined by the build"
 #endif
 
-namespace tb {
+namespace tb::suite {
 
 namespace fs = std::filesystem;
 
@@ -64,8 +64,8 @@ AssetRef resolveAsset(const std::string& name_or_path) {
     if (asset.name == name_or_path || stem == name_or_path) return asset;
   }
   if (fs::is_regular_file(name_or_path)) return {name_or_path, name_or_path, ""};
-  throw InputError(name_or_path, "",
-                   "no such file, and not a bundled asset (see `tessbench list assets`)");
+  throw mesh::InputError(name_or_path, "",
+                         "no such file, and not a bundled asset (see `tessbench list assets`)");
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace tb {
+namespace tb::suite {
 
 struct AssetRef {
   std::string name;  // "opensubdiv/catmark_cube" for bundled assets, the path otherwise
@@ -34,4 +34,4 @@ std::vector<AssetRef> suiteAssets(bool full_suite);
 // .obj. Throws InputError naming the argument when it is neither.
 AssetRef resolveAsset(const std::string& name_or_path);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -9,29 +9,30 @@
 #include "core/view/camera.h"
 #include "harness/suite/asset_catalog.h"
 
-namespace tb {
+namespace tb::suite {
 
-CameraPath testOrbitPath(const Aabb& bounds) {
+view::CameraPath testOrbitPath(const mesh::Aabb& bounds) {
   constexpr uint32_t kWidthPx = 640, kHeightPx = 480;
   constexpr double kDegree = std::numbers::pi / 180;
-  const Vec3d centre = 0.5 * (bounds.min + bounds.max);
+  const mesh::Vec3d centre = 0.5 * (bounds.min + bounds.max);
   // At least a small radius, so a flat or point-like asset still gets a valid camera.
   const double radius = std::max(0.5 * length(bounds.max - bounds.min), 1e-3);
   const double distance = 2.5 * radius;
-  CameraPath path{"test_orbit", {}};
+  view::CameraPath path{"test_orbit", {}};
   for (double azimuth_deg : {0.0, 120.0, 240.0}) {
     const double azimuth = azimuth_deg * kDegree, elevation = 20 * kDegree;
-    const Vec3d eye =
-        centre + distance * Vec3d{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                                  std::cos(elevation) * std::cos(azimuth)};
+    const mesh::Vec3d eye =
+        centre + distance * mesh::Vec3d{std::cos(elevation) * std::sin(azimuth),
+                                        std::sin(elevation),
+                                        std::cos(elevation) * std::cos(azimuth)};
     // Near and far planes just outside the bounding sphere (distance is 2.5 radii).
-    path.views.push_back(perspectiveView({.eye = eye,
-                                          .target = centre,
-                                          .fov_y_rad = 60 * kDegree,
-                                          .width_px = kWidthPx,
-                                          .height_px = kHeightPx,
-                                          .near_plane = distance - 1.01 * radius,
-                                          .far_plane = distance + 1.01 * radius}));
+    path.views.push_back(view::perspectiveView({.eye = eye,
+                                                .target = centre,
+                                                .fov_y_rad = 60 * kDegree,
+                                                .width_px = kWidthPx,
+                                                .height_px = kHeightPx,
+                                                .near_plane = distance - 1.01 * radius,
+                                                .far_plane = distance + 1.01 * radius}));
   }
   return path;
 }
@@ -68,8 +69,8 @@ CameraPathSpec resolveCameraPath(const std::string& name_or_path) {
   if (fs::is_regular_file(name_or_path)) return loadCameraPath(name_or_path, name_or_path);
   std::string names;
   for (const std::string& name : bundled) names += (names.empty() ? "" : ", ") + name;
-  throw InputError(name_or_path, "",
-                   "no such file, and not a bundled camera path (bundled: " + names + ")");
+  throw mesh::InputError(name_or_path, "",
+                         "no such file, and not a bundled camera path (bundled: " + names + ")");
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -17,20 +17,20 @@
 #include "core/view/camera_path_views.h"
 #include "core/view/view.h"
 
-namespace tb {
+namespace tb::suite {
 
 // Makes a path for the scene inside `bounds`.
-using CameraPathFn = std::function<CameraPath(const Aabb& bounds)>;
+using CameraPathFn = std::function<view::CameraPath(const mesh::Aabb& bounds)>;
 
 // "test_orbit": 3 views at 0, 120 and 240 degrees around the box's vertical (y) axis,
 // 20 degrees above its centre, at 2.5 box radii, 60 degree vertical field of view,
 // 640 x 480 pixels, 8 pixels per edge. Fixed, for tests and plumbing.
-CameraPath testOrbitPath(const Aabb& bounds);
+view::CameraPath testOrbitPath(const mesh::Aabb& bounds);
 
 // One keyframe of a path file. Positions in the path's space (CameraPathSpec::bounds_space);
 // `up` is a direction (any length > 0), never parallel to eye - target.
 struct CameraKeyframe {
-  Vec3d eye, target, up;
+  mesh::Vec3d eye, target, up;
 };
 
 // A camera path file as read (loadCameraPath): every field validated.
@@ -71,10 +71,10 @@ CameraPathSpec resolveCameraPath(const std::string& name_or_path);
 // interpolation of its distance (d0^(1-t) d1^t); up is interpolated linearly, then
 // normalised. Each view: perspective(fov, W/H, near, far) * lookAt(eye, target, up).
 // Throws InputError when a sampled frame's up is parallel to its view direction.
-CameraPath sampleCameraPath(const CameraPathSpec& spec, const Aabb& bounds,
-                            uint32_t frames_override = 0);
+view::CameraPath sampleCameraPath(const CameraPathSpec& spec, const mesh::Aabb& bounds,
+                                  uint32_t frames_override = 0);
 
 // sampleCameraPath as a CameraPathFn (the suite's form of a path).
 CameraPathFn cameraPathFn(CameraPathSpec spec, uint32_t frames_override = 0);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -15,7 +15,7 @@
 #include "core/mesh/input_error.h"
 #include "harness/suite/camera_path.h"
 
-namespace tb {
+namespace tb::suite {
 namespace {
 
 using Json = nlohmann::json;
@@ -39,7 +39,7 @@ class FieldReader {
   explicit FieldReader(const std::string& shown) : shown_(shown) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& rule) const {
-    throw InputError(shown_, field, rule);
+    throw mesh::InputError(shown_, field, rule);
   }
 
   // Refuses keys other than `known` (a misspelt optional field would be silently ignored).
@@ -84,9 +84,9 @@ class FieldReader {
     fail(field, "expected " + range + ", got " + typeOf(value));
   }
 
-  Vec3d vec3(const Json& value, const std::string& field) const {
+  mesh::Vec3d vec3(const Json& value, const std::string& field) const {
     if (!value.is_array() || value.size() != 3) fail(field, "expected [x, y, z]");
-    Vec3d v;
+    mesh::Vec3d v;
     for (int i = 0; i < 3; ++i)
       v[i] = number(value[size_t(i)], field + "[" + std::to_string(i) + "]");
     return v;
@@ -159,22 +159,22 @@ class FieldPathTracker final : public nlohmann::json_sax<Json> {
 };
 
 Json parseFile(const std::string& file, const std::string& shown) {
-  if (!std::filesystem::is_regular_file(file)) throw InputError(shown, "", "no such file");
+  if (!std::filesystem::is_regular_file(file)) throw mesh::InputError(shown, "", "no such file");
   std::ifstream stream(file);
-  if (!stream) throw InputError(shown, "", "cannot be read");
+  if (!stream) throw mesh::InputError(shown, "", "cannot be read");
   const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
   try {
     return Json::parse(text);
   } catch (const Json::exception& error) {
     FieldPathTracker tracker;
     Json::sax_parse(text, &tracker);
-    if (tracker.overflowed()) throw InputError(shown, tracker.path(), "not a finite number");
+    if (tracker.overflowed()) throw mesh::InputError(shown, tracker.path(), "not a finite number");
     // "[json.exception.parse_error.101] parse error at line 2, column 5: ...": one line,
     // without the library's prefix.
     std::string what = error.what();
     if (const size_t end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
     for (char& c : what) c = (c == '\n' || c == '\r') ? ' ' : c;
-    throw InputError(shown, "", "malformed JSON: " + what);
+    throw mesh::InputError(shown, "", "malformed JSON: " + what);
   }
 }
 
@@ -252,8 +252,8 @@ CameraPathSpec loadCameraPath(const std::string& file, const std::string& shown_
   readKeyframes(reader, json, &spec);
   // The geometric rules: a camera at every keyframe and every frame (around a unit box;
   // the box moves and scales a path, never turns it, so any box gives the same verdict).
-  sampleCameraPath(spec, Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}});
+  sampleCameraPath(spec, mesh::Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}});
   return spec;
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -11,7 +11,7 @@
 #include "core/view/camera.h"
 #include "harness/suite/camera_path.h"
 
-namespace tb {
+namespace tb::suite {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
@@ -29,7 +29,7 @@ std::string keyframeField(size_t k, const char* field) {
   return "keyframes[" + std::to_string(k) + "]." + field;
 }
 
-double angleBetween(const Vec3d& a, const Vec3d& b) {  // radians, unit vectors
+double angleBetween(const mesh::Vec3d& a, const mesh::Vec3d& b) {  // radians, unit vectors
   return std::atan2(length(cross(a, b)), dot(a, b));
 }
 
@@ -37,38 +37,39 @@ double angleBetween(const Vec3d& a, const Vec3d& b) {  // radians, unit vectors
 // not opposite. Positions in the path's own space; the rules hold in world space too
 // (a bounds-space path is scaled and moved, never turned).
 void checkKeyframes(const CameraPathSpec& spec) {
-  if (spec.keyframes.empty()) throw InputError(spec.shown_path, "keyframes", "no keyframes");
+  if (spec.keyframes.empty()) throw mesh::InputError(spec.shown_path, "keyframes", "no keyframes");
   for (size_t k = 0; k < spec.keyframes.size(); ++k) {
     const CameraKeyframe& key = spec.keyframes[k];
-    const Vec3d offset = key.eye - key.target;
+    const mesh::Vec3d offset = key.eye - key.target;
     if (!(length(offset) > 0)) {
-      throw InputError(spec.shown_path, keyframeField(k, "eye"),
-                       "equals the target (no view direction)");
+      throw mesh::InputError(spec.shown_path, keyframeField(k, "eye"),
+                             "equals the target (no view direction)");
     }
     if (!std::isfinite(length(offset))) {
-      throw InputError(spec.shown_path, keyframeField(k, "eye"),
-                       "too far from the target (the distance overflows)");
+      throw mesh::InputError(spec.shown_path, keyframeField(k, "eye"),
+                             "too far from the target (the distance overflows)");
     }
     if (!(length(key.up) > 0)) {
-      throw InputError(spec.shown_path, keyframeField(k, "up"), "zero-length vector");
+      throw mesh::InputError(spec.shown_path, keyframeField(k, "up"), "zero-length vector");
     }
     if (length(cross(normalize(key.up), normalize(offset))) < kMinUpSine) {
-      throw InputError(spec.shown_path, keyframeField(k, "up"),
-                       "parallel to the view direction (eye - target)");
+      throw mesh::InputError(spec.shown_path, keyframeField(k, "up"),
+                             "parallel to the view direction (eye - target)");
     }
     if (k == 0) continue;
     const CameraKeyframe& previous = spec.keyframes[k - 1];
     if (angleBetween(normalize(previous.eye - previous.target), normalize(offset)) >
         std::numbers::pi - kMinOppositeGapRad) {
-      throw InputError(spec.shown_path, keyframeField(k, "eye"),
-                       "seen from the target, opposite to keyframes[" + std::to_string(k - 1) +
-                           "] (the turn between them is undefined; add a keyframe between)");
+      throw mesh::InputError(spec.shown_path, keyframeField(k, "eye"),
+                             "seen from the target, opposite to keyframes[" +
+                                 std::to_string(k - 1) +
+                                 "] (the turn between them is undefined; add a keyframe between)");
     }
   }
 }
 
 // Spherical linear interpolation of unit vectors a and b (not opposite), t in [0, 1].
-Vec3d slerp(const Vec3d& a, const Vec3d& b, double t) {
+mesh::Vec3d slerp(const mesh::Vec3d& a, const mesh::Vec3d& b, double t) {
   const double omega = angleBetween(a, b);
   if (omega < kSlerpLinearBelowRad) return normalize((1 - t) * a + t * b);
   const double sin_omega = std::sin(omega);
@@ -91,7 +92,7 @@ PathPoint pathPoint(size_t keyframe_count, double s) {
 
 // A camera in the path's space; up is interpolated, not yet normalised (it may be zero).
 struct Pose {
-  Vec3d eye, target, up;
+  mesh::Vec3d eye, target, up;
 };
 
 Pose poseAt(const CameraPathSpec& spec, const PathPoint& at) {
@@ -101,7 +102,7 @@ Pose poseAt(const CameraPathSpec& spec, const PathPoint& at) {
   const double t = at.t;
   Pose pose;
   pose.target = (1 - t) * a.target + t * b.target;
-  const Vec3d from_a = a.eye - a.target, from_b = b.eye - b.target;
+  const mesh::Vec3d from_a = a.eye - a.target, from_b = b.eye - b.target;
   const double distance_a = length(from_a), distance_b = length(from_b);
   // Geometric in the distance: equal ratios per equal step (a logarithmic dolly).
   const double distance = distance_a * std::pow(distance_b / distance_a, t);
@@ -112,14 +113,14 @@ Pose poseAt(const CameraPathSpec& spec, const PathPoint& at) {
 
 }  // namespace
 
-CameraPath sampleCameraPath(const CameraPathSpec& spec, const Aabb& bounds,
-                            uint32_t frames_override) {
+view::CameraPath sampleCameraPath(const CameraPathSpec& spec, const mesh::Aabb& bounds,
+                                  uint32_t frames_override) {
   checkKeyframes(spec);
   const uint32_t frames = frames_override > 0 ? frames_override : spec.frames;
   assert(frames > 0 && spec.width_px > 0 && spec.height_px > 0);
   // Path space to world: x -> centre + scale x (bounds) or x (world). A box of no extent
   // (a single point) counts as 1 unit across, so it still gets cameras.
-  Vec3d centre{0, 0, 0};
+  mesh::Vec3d centre{0, 0, 0};
   double scale = 1;
   if (spec.bounds_space) {
     centre = 0.5 * (bounds.min + bounds.max);
@@ -128,26 +129,26 @@ CameraPath sampleCameraPath(const CameraPathSpec& spec, const Aabb& bounds,
   }
   const double fov_y_rad = spec.fov_y_deg * kDegree;
   const double near_world = scale * spec.near_plane, far_world = scale * spec.far_plane;
-  const Mat4 projection =
-      perspective(fov_y_rad, double(spec.width_px) / double(spec.height_px), near_world, far_world);
-  CameraPath path{spec.name, {}};
+  const view::Mat4 projection = view::perspective(
+      fov_y_rad, double(spec.width_px) / double(spec.height_px), near_world, far_world);
+  view::CameraPath path{spec.name, {}};
   path.views.reserve(frames);
   for (uint32_t i = 0; i < frames; ++i) {
     const double s = frames == 1 ? 0 : double(i) / double(frames - 1);
     const PathPoint at = pathPoint(spec.keyframes.size(), s);
     const Pose pose = poseAt(spec, at);
-    const Vec3d up = normalize(pose.up);
+    const mesh::Vec3d up = normalize(pose.up);
     const bool up_zero = !(length(pose.up) > 0);
     if (up_zero || length(cross(up, normalize(pose.eye - pose.target))) < kMinUpSine) {
-      throw InputError(spec.shown_path,
-                       "frame " + std::to_string(i) + " of " + std::to_string(frames) +
-                           " (after keyframes[" + std::to_string(at.k) + "]).up",
-                       up_zero ? "interpolates to a zero-length vector"
-                               : "parallel to the view direction (eye - target)");
+      throw mesh::InputError(spec.shown_path,
+                             "frame " + std::to_string(i) + " of " + std::to_string(frames) +
+                                 " (after keyframes[" + std::to_string(at.k) + "]).up",
+                             up_zero ? "interpolates to a zero-length vector"
+                                     : "parallel to the view direction (eye - target)");
     }
-    const Vec3d eye = centre + scale * pose.eye, target = centre + scale * pose.target;
-    View view;
-    view.view_projection = projection * lookAt(eye, target, up);
+    const mesh::Vec3d eye = centre + scale * pose.eye, target = centre + scale * pose.target;
+    view::View view;
+    view.view_projection = projection * view::lookAt(eye, target, up);
     view.viewport_width_px = spec.width_px;
     view.viewport_height_px = spec.height_px;
     view.target_pixels_per_edge = spec.target_pixels_per_edge;
@@ -160,9 +161,9 @@ CameraPath sampleCameraPath(const CameraPathSpec& spec, const Aabb& bounds,
 }
 
 CameraPathFn cameraPathFn(CameraPathSpec spec, uint32_t frames_override) {
-  return [spec = std::move(spec), frames_override](const Aabb& bounds) {
+  return [spec = std::move(spec), frames_override](const mesh::Aabb& bounds) {
     return sampleCameraPath(spec, bounds, frames_override);
   };
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -11,20 +11,20 @@
 #include "harness/measures/displaced_input.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::suite {
 
 // Reads FILE.exr and FILE.exr.json. Throws InputError (one line naming the file and the
 // problem) for a bad EXR (core/displacement/exr_io.h), a missing or malformed sidecar, a
 // sidecar that disagrees with the EXR (kind, size, tiles), or a layout other than tiles.
-DisplacedInput loadDisplacementFile(const std::string& path);
+measures::DisplacedInput loadDisplacementFile(const std::string& path);
 
 // The bundled maps, assets/displacement/*.exr, sorted by name, loaded.
-std::vector<DisplacedInput> bundledDisplacements();
+std::vector<measures::DisplacedInput> bundledDisplacements();
 
 // The target of `input` for a surface built on its asset: the analytic target (the asset's
 // limit displaced by the closed-form h, rebuilt at the sidecar's rate) or the target OBJ.
 // Throws InputError when the OBJ cannot be read or the limit cannot be built.
-std::shared_ptr<const DisplacementTarget> rebuildTarget(const DisplacedInput& input,
-                                                        const SurfacePatches& undisplaced);
+std::shared_ptr<const measures::DisplacementTarget> rebuildTarget(
+    const measures::DisplacedInput& input, const techniques::SurfacePatches& undisplaced);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -5,7 +5,7 @@
 #include "harness/measures/measure.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::suite {
 
 // Which capabilities an instance has (or, before it is built, will have).
 struct Capabilities {
@@ -19,8 +19,8 @@ struct Capabilities {
 // Before building: what the technique's family promises (a surface technique builds
 // surfaces, a simulation technique simulations), to avoid building instances no measure
 // would use.
-Capabilities expectedCapabilities(const Technique& technique);
-Capabilities capabilitiesOf(const TechniqueInstance& instance);
+Capabilities expectedCapabilities(const techniques::Technique& technique);
+Capabilities capabilitiesOf(const techniques::TechniqueInstance& instance);
 
 // Where the variant stands on the asset.
 struct VariantStanding {
@@ -38,7 +38,8 @@ struct VariantStanding {
 // passes the requirement's filter, and the variant policy admits the variant. kView,
 // kCameraPath and kGpu never stop a measure: the suite supplies views and camera paths,
 // and a measure without a device reports its GPU parts skipped.
-bool measureRuns(const MeasureRequirements& requirements, const Technique& technique,
-                 const Capabilities& capabilities, const VariantStanding& standing);
+bool measureRuns(const measures::MeasureRequirements& requirements,
+                 const techniques::Technique& technique, const Capabilities& capabilities,
+                 const VariantStanding& standing);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -10,7 +10,7 @@
 #include "core/mesh/input_error.h"
 #include "harness/suite/asset_catalog.h"
 
-namespace tb {
+namespace tb::suite {
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,9 +19,9 @@ using Json = nlohmann::json;
 constexpr const char* kFormat = "tessbench-scenario-1";
 
 Json parseScenarioText(const std::string& path, const std::string& shown) {
-  if (!fs::is_regular_file(path)) throw InputError(shown, "", "no such file");
+  if (!fs::is_regular_file(path)) throw mesh::InputError(shown, "", "no such file");
   std::ifstream stream(path);
-  if (!stream) throw InputError(shown, "", "cannot be read");
+  if (!stream) throw mesh::InputError(shown, "", "cannot be read");
   const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
   try {
     return Json::parse(text);
@@ -31,8 +31,8 @@ Json parseScenarioText(const std::string& path, const std::string& shown) {
     if (const size_t end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
     for (char& c : what) c = (c == '\n' || c == '\r') ? ' ' : c;
     // A number beyond double's range (1e999) is how a file writes infinity.
-    if (error.id == 406) throw InputError(shown, "", "not a finite number: " + what);
-    throw InputError(shown, "", "malformed JSON: " + what);
+    if (error.id == 406) throw mesh::InputError(shown, "", "not a finite number: " + what);
+    throw mesh::InputError(shown, "", "malformed JSON: " + what);
   }
 }
 
@@ -46,56 +46,58 @@ std::string shownKey(const std::string& key) {
 
 double finiteNumber(const Json& value, const std::string& shown, const std::string& field) {
   if (!value.is_number()) {
-    throw InputError(shown, field, std::string("expected a number, got ") + value.type_name());
+    throw mesh::InputError(shown, field,
+                           std::string("expected a number, got ") + value.type_name());
   }
   const double number = value.get<double>();
-  if (!std::isfinite(number)) throw InputError(shown, field, "not a finite number");
+  if (!std::isfinite(number)) throw mesh::InputError(shown, field, "not a finite number");
   return number;
 }
 
 std::string text(const Json& value, const std::string& shown, const std::string& field) {
   if (!value.is_string()) {
-    throw InputError(shown, field, std::string("expected a string, got ") + value.type_name());
+    throw mesh::InputError(shown, field,
+                           std::string("expected a string, got ") + value.type_name());
   }
   return value.get<std::string>();
 }
 
 const Json& required(const Json& object, const std::string& shown, const char* key) {
-  if (!object.contains(key)) throw InputError(shown, key, "missing");
+  if (!object.contains(key)) throw mesh::InputError(shown, key, "missing");
   return object.at(key);
 }
 
 std::string resolveMesh(const std::string& mesh, const std::string& path,
                         const std::string& shown) {
-  if (mesh.empty()) throw InputError(shown, "mesh", "empty");
+  if (mesh.empty()) throw mesh::InputError(shown, "mesh", "empty");
   const fs::path relative = fs::path(path).parent_path() / mesh;
   if (fs::is_regular_file(relative)) return fs::absolute(relative).lexically_normal().string();
   try {
     return fs::absolute(resolveAsset(mesh).path).lexically_normal().string();
-  } catch (const InputError&) {
-    throw InputError(shown, "mesh",
-                     "'" + mesh + "' is neither a file beside the scenario nor a bundled asset");
+  } catch (const mesh::InputError&) {
+    throw mesh::InputError(
+        shown, "mesh", "'" + mesh + "' is neither a file beside the scenario nor a bundled asset");
   }
 }
 
 }  // namespace
 
-Scenario loadScenarioFile(const std::string& path, const std::string& shown_path) {
+techniques::Scenario loadScenarioFile(const std::string& path, const std::string& shown_path) {
   const std::string& shown = shown_path.empty() ? path : shown_path;
   const Json json = parseScenarioText(path, shown);
-  if (!json.is_object()) throw InputError(shown, "", "expected a JSON object");
+  if (!json.is_object()) throw mesh::InputError(shown, "", "expected a JSON object");
   if (text(required(json, shown, "format"), shown, "format") != kFormat) {
-    throw InputError(shown, "format", std::string("expected \"") + kFormat + "\"");
+    throw mesh::InputError(shown, "format", std::string("expected \"") + kFormat + "\"");
   }
-  Scenario scenario;
+  techniques::Scenario scenario;
   scenario.path = fs::absolute(path).lexically_normal().string();
   scenario.name = text(required(json, shown, "name"), shown, "name");
-  if (scenario.name.empty()) throw InputError(shown, "name", "empty");
+  if (scenario.name.empty()) throw mesh::InputError(shown, "name", "empty");
   scenario.time_step_s = finiteNumber(required(json, shown, "time_step_s"), shown, "time_step_s");
-  if (!(scenario.time_step_s > 0)) throw InputError(shown, "time_step_s", "must be > 0");
+  if (!(scenario.time_step_s > 0)) throw mesh::InputError(shown, "time_step_s", "must be > 0");
   scenario.duration_s = finiteNumber(required(json, shown, "duration_s"), shown, "duration_s");
   if (!(scenario.duration_s >= scenario.time_step_s)) {
-    throw InputError(shown, "duration_s", "must be >= time_step_s");
+    throw mesh::InputError(shown, "duration_s", "must be >= time_step_s");
   }
   for (const auto& item : json.items()) {
     const std::string& key = item.key();
@@ -106,7 +108,7 @@ Scenario loadScenarioFile(const std::string& path, const std::string& shown_path
     } else if (key == "mesh") {
       scenario.mesh_path = resolveMesh(text(value, shown, key), path, shown);
     } else if (key == "parameters") {
-      if (!value.is_object()) throw InputError(shown, key, "expected an object of numbers");
+      if (!value.is_object()) throw mesh::InputError(shown, key, "expected an object of numbers");
       for (const auto& parameter : value.items()) {
         const std::string field = "parameters." + shownKey(parameter.key());
         scenario.parameters[parameter.key()] = finiteNumber(parameter.value(), shown, field);
@@ -114,9 +116,10 @@ Scenario loadScenarioFile(const std::string& path, const std::string& shown_path
     } else if (value.is_object()) {
       scenario.sections[key] = value.dump();
     } else {
-      throw InputError(shown, shownKey(key),
-                       "unknown field (known: format, name, technique, time_step_s, duration_s, "
-                       "parameters, mesh, and technique sections as objects)");
+      throw mesh::InputError(
+          shown, shownKey(key),
+          "unknown field (known: format, name, technique, time_step_s, duration_s, "
+          "parameters, mesh, and technique sections as objects)");
     }
   }
   return scenario;
@@ -137,15 +140,16 @@ std::vector<std::string> bundledScenarioNames() {
   return names;
 }
 
-std::vector<Scenario> bundledScenarios() {
-  std::vector<Scenario> scenarios;
+std::vector<techniques::Scenario> bundledScenarios() {
+  std::vector<techniques::Scenario> scenarios;
   for (const std::string& name : bundledScenarioNames()) scenarios.push_back(resolveScenario(name));
-  std::sort(scenarios.begin(), scenarios.end(),
-            [](const Scenario& a, const Scenario& b) { return a.name < b.name; });
+  std::sort(
+      scenarios.begin(), scenarios.end(),
+      [](const techniques::Scenario& a, const techniques::Scenario& b) { return a.name < b.name; });
   return scenarios;
 }
 
-Scenario resolveScenario(const std::string& name_or_path) {
+techniques::Scenario resolveScenario(const std::string& name_or_path) {
   const std::vector<std::string> bundled = bundledScenarioNames();
   if (std::find(bundled.begin(), bundled.end(), name_or_path) != bundled.end()) {
     // Named relative to the assets folder, so messages do not depend on the checkout.
@@ -155,8 +159,8 @@ Scenario resolveScenario(const std::string& name_or_path) {
   if (fs::is_regular_file(name_or_path)) return loadScenarioFile(name_or_path, name_or_path);
   std::string names;
   for (const std::string& name : bundled) names += (names.empty() ? "" : ", ") + name;
-  throw InputError(name_or_path, "",
-                   "no such file, and not a bundled scenario (bundled: " + names + ")");
+  throw mesh::InputError(name_or_path, "",
+                         "no such file, and not a bundled scenario (bundled: " + names + ")");
 }
 
-}  // namespace tb
+}  // namespace tb::suite

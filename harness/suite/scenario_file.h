@@ -9,7 +9,7 @@
 
 #include "techniques/simulation.h"
 
-namespace tb {
+namespace tb::suite {
 
 // Reads one scenario file. `shown_path` is how messages name the file (the path as given,
 // or "assets/scenarios/<name>.json" for a bundled one); empty: `path`. Fields:
@@ -25,7 +25,7 @@ namespace tb {
 //   any other object-valued field                 a technique section, kept verbatim
 //                                                 (dumped JSON) in Scenario::sections
 // Any other field (a string or number the format does not know) is refused.
-Scenario loadScenarioFile(const std::string& path, const std::string& shown_path = "");
+techniques::Scenario loadScenarioFile(const std::string& path, const std::string& shown_path = "");
 
 // The scenarios folder: <assetsDirectory()>/scenarios.
 std::string scenariosDirectory();
@@ -34,10 +34,10 @@ std::string scenariosDirectory();
 std::vector<std::string> bundledScenarioNames();
 
 // Every bundled scenario, loaded, sorted by name. Throws InputError when one is bad.
-std::vector<Scenario> bundledScenarios();
+std::vector<techniques::Scenario> bundledScenarios();
 
 // A bundled scenario name or a path to a scenario file. Throws InputError naming the
 // argument when it is neither.
-Scenario resolveScenario(const std::string& name_or_path);
+techniques::Scenario resolveScenario(const std::string& name_or_path);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -6,7 +6,7 @@
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
 
-namespace tb {
+namespace tb::suite {
 namespace {
 
 bool ownsKey(const ShardSpec& shard, const std::string& key) {
@@ -28,12 +28,13 @@ ShardSpec parseShard(const std::string& text) {
   const std::string_view view(text);
   if (slash == std::string::npos || !parseCount(view.substr(0, slash), &shard.index) ||
       !parseCount(view.substr(slash + 1), &shard.count)) {
-    throw InputError("--shard", text, "expected I/N, e.g. 0/3 (shard I of N, numbered from 0)");
+    throw mesh::InputError("--shard", text,
+                           "expected I/N, e.g. 0/3 (shard I of N, numbered from 0)");
   }
   if (shard.count == 0 || shard.index >= shard.count) {
-    throw InputError("--shard", text,
-                     "needs 0 <= I < N (shards are numbered from 0, like a Kubernetes "
-                     "Indexed Job's completion index)");
+    throw mesh::InputError("--shard", text,
+                           "needs 0 <= I < N (shards are numbered from 0, like a Kubernetes "
+                           "Indexed Job's completion index)");
   }
   return shard;
 }
@@ -56,26 +57,29 @@ bool ownsSkip(const ShardSpec& shard, const std::string& technique, const std::s
   return ownsKey(shard, technique + "//" + asset);
 }
 
-ShardId toShardId(const ShardSpec& shard) { return {shard.index, shard.count}; }
+results::ShardId toShardId(const ShardSpec& shard) { return {shard.index, shard.count}; }
 
-RunSelection describeSelection(const SuiteSelection& selection, const Results& results) {
-  RunSelection described;
-  std::vector<const Technique*> techniques = selection.techniques;
-  if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
-  for (const Technique* technique : techniques) {
+results::RunSelection describeSelection(const SuiteSelection& selection,
+                                        const results::Results& results) {
+  results::RunSelection described;
+  std::vector<const techniques::Technique*> techniques = selection.techniques;
+  if (techniques.empty()) techniques = techniques::TechniqueRegistry::instance().all();
+  for (const techniques::Technique* technique : techniques) {
     described.techniques.push_back({technique->info().id, {}});
-    for (const VariantInfo& variant : technique->variants()) {
-      if (variant.full_suite_only && selection.suite != SuiteMode::kFull) continue;
+    for (const techniques::VariantInfo& variant : technique->variants()) {
+      if (variant.full_suite_only && selection.suite != measures::SuiteMode::kFull) continue;
       described.techniques.back().variants.push_back(variant.name);
     }
   }
-  for (const AssetSummary& asset : results.assets) described.assets.push_back(asset.name);
-  for (const Scenario& scenario : selection.scenarios) described.assets.push_back(scenario.name);
-  std::vector<const Measure*> measures = selection.measures;
-  if (measures.empty()) measures = MeasureRegistry::instance().all();
-  for (const Measure* measure : measures) described.measures.push_back(measure->info().id);
+  for (const results::AssetSummary& asset : results.assets) described.assets.push_back(asset.name);
+  for (const techniques::Scenario& scenario : selection.scenarios)
+    described.assets.push_back(scenario.name);
+  std::vector<const measures::Measure*> measures = selection.measures;
+  if (measures.empty()) measures = measures::MeasureRegistry::instance().all();
+  for (const measures::Measure* measure : measures)
+    described.measures.push_back(measure->info().id);
   described.suite = toString(selection.suite);
   return described;
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -17,7 +17,7 @@
 
 #include "harness/results/results_model.h"
 
-namespace tb {
+namespace tb::suite {
 
 struct ShardSpec {
   size_t index = 0;  // 0 ≤ index < count (a Kubernetes Indexed Job's completion index)
@@ -38,7 +38,7 @@ bool ownsMeasure(const ShardSpec& shard, const std::string& technique, const std
 // measure key equals: a measure key's second field, the variant, is never empty).
 bool ownsSkip(const ShardSpec& shard, const std::string& technique, const std::string& asset);
 
-ShardId toShardId(const ShardSpec& shard);
+results::ShardId toShardId(const ShardSpec& shard);
 
 struct SuiteSelection;
 
@@ -47,6 +47,7 @@ struct SuiteSelection;
 // scenarios) and its suite mode: what a run's context records so that `merge` can order
 // shard records and refuse shards of different runs. The --camera files are the caller's
 // to add (SuiteSelection holds the paths as functions).
-RunSelection describeSelection(const SuiteSelection& selection, const Results& results);
+results::RunSelection describeSelection(const SuiteSelection& selection,
+                                        const results::Results& results);
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -14,13 +14,13 @@
 #include "harness/suite/suite_step.h"
 #include "techniques/registry.h"
 
-namespace tb {
+namespace tb::suite {
 
 using namespace suite_detail;
 
 namespace {
 
-std::string describeFaceKinds(const Mesh& mesh) {
+std::string describeFaceKinds(const mesh::Mesh& mesh) {
   if (mesh.allFacesOfSize(3)) return "triangles";
   if (mesh.allFacesOfSize(4)) return "quads";
   return "mixed (max " + std::to_string(mesh.maxFaceSize()) + " vertices)";
@@ -40,10 +40,10 @@ void openDevice(const std::string& device_name, SuiteRun* run) {
 }
 
 // Loads every asset (InputError aborts the run) and lists it in results->assets.
-std::vector<Mesh> loadAssets(const std::vector<AssetRef>& refs, Results* results) {
-  std::vector<Mesh> meshes;
+std::vector<mesh::Mesh> loadAssets(const std::vector<AssetRef>& refs, results::Results* results) {
+  std::vector<mesh::Mesh> meshes;
   for (const AssetRef& ref : refs) {
-    Mesh mesh = loadObjFile(ref.path);
+    mesh::Mesh mesh = mesh::loadObjFile(ref.path);
     mesh.source = ref.shownPath();  // what warnings and skip reasons name
     results->assets.push_back({ref.name, ref.shownPath(), mesh.faceCount(), mesh.positions.size(),
                                describeFaceKinds(mesh), mesh.normals_computed});
@@ -53,22 +53,23 @@ std::vector<Mesh> loadAssets(const std::vector<AssetRef>& refs, Results* results
 }
 
 // The record's asset name of a displaced asset: "<asset>+<map file stem>".
-std::string displacedAssetName(const DisplacedInput& input) {
+std::string displacedAssetName(const measures::DisplacedInput& input) {
   const std::string stem = input.name.substr(0, input.name.rfind('.'));
   return input.asset + "+" + stem;
 }
 
 // The inputs a technique runs on: the assets for a surface technique (then the displaced
 // assets baked for it), the scenarios for a simulation.
-std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<AssetRef>& refs,
-                                  const std::vector<Mesh>& meshes,
-                                  const std::vector<Scenario>& scenarios,
-                                  const std::vector<DisplacedInput>& displacements,
-                                  const std::vector<const Mesh*>& displacement_meshes) {
-  static const Mesh kNoMesh;
+std::vector<SuiteInput> inputsFor(const techniques::Technique& technique,
+                                  const std::vector<AssetRef>& refs,
+                                  const std::vector<mesh::Mesh>& meshes,
+                                  const std::vector<techniques::Scenario>& scenarios,
+                                  const std::vector<measures::DisplacedInput>& displacements,
+                                  const std::vector<const mesh::Mesh*>& displacement_meshes) {
+  static const mesh::Mesh kNoMesh;
   std::vector<SuiteInput> inputs;
-  if (technique.info().family == TechniqueFamily::kSimulation) {
-    for (const Scenario& scenario : scenarios) {
+  if (technique.info().family == techniques::TechniqueFamily::kSimulation) {
+    for (const techniques::Scenario& scenario : scenarios) {
       if (scenario.technique.empty() || scenario.technique == technique.info().id) {
         inputs.push_back({scenario.name, &kNoMesh, &scenario});
       }
@@ -86,25 +87,25 @@ std::vector<SuiteInput> inputsFor(const Technique& technique, const std::vector<
 
 // The measures of the run, the camera paths they walk, and their declarations
 // (results->measures, by id).
-void setUpMeasures(const SuiteSelection& selection, SuiteRun* run, Results* results) {
+void setUpMeasures(const SuiteSelection& selection, SuiteRun* run, results::Results* results) {
   run->measures = selection.measures;
-  if (run->measures.empty()) run->measures = MeasureRegistry::instance().all();
+  if (run->measures.empty()) run->measures = measures::MeasureRegistry::instance().all();
   run->suite = selection.suite;
   run->view_paths = selection.camera_paths;
   if (run->view_paths.empty()) run->view_paths = {testOrbitPath};
   const bool whole_paths_needed =
-      std::any_of(run->measures.begin(), run->measures.end(), [](const Measure* measure) {
-        return measure->requirements().has(MeasureNeed::kCameraPath);
+      std::any_of(run->measures.begin(), run->measures.end(), [](const measures::Measure* measure) {
+        return measure->requirements().has(measures::MeasureNeed::kCameraPath);
       });
   // Read only when a measure takes them, so a run without one never needs the files.
   if (whole_paths_needed) {
     run->whole_paths = selection.camera_paths;
     if (run->whole_paths.empty()) run->whole_paths = suiteCameraPaths(selection.suite);
-    if (selection.camera_paths.empty() && selection.suite == SuiteMode::kDefault) {
-      for (const Measure* measure : run->measures) {
+    if (selection.camera_paths.empty() && selection.suite == measures::SuiteMode::kDefault) {
+      for (const measures::Measure* measure : run->measures) {
         for (const auto& [name, frames] : measure->defaultSuitePaths()) {
           const CameraPathSpec spec = resolveCameraPath(name);
-          sampleCameraPath(spec, Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, frames);
+          sampleCameraPath(spec, mesh::Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, frames);
           run->measure_paths[measure].push_back(cameraPathFn(spec, frames));
         }
       }
@@ -112,11 +113,11 @@ void setUpMeasures(const SuiteSelection& selection, SuiteRun* run, Results* resu
   }
   run->shard = selection.shard;
   run->repetitions = selection.repetitions;
-  for (const Measure* measure : run->measures) {
-    results->measures.push_back(declarationOf(measure->info()));
+  for (const measures::Measure* measure : run->measures) {
+    results->measures.push_back(measures::declarationOf(measure->info()));
   }
   std::sort(results->measures.begin(), results->measures.end(),
-            [](const MeasureDeclaration& a, const MeasureDeclaration& b) {
+            [](const results::MeasureDeclaration& a, const results::MeasureDeclaration& b) {
               return a.measure < b.measure;
             });
 }
@@ -124,27 +125,27 @@ void setUpMeasures(const SuiteSelection& selection, SuiteRun* run, Results* resu
 // The meshes of the displaced assets, one per map: the run's own mesh of the asset each
 // map was baked on, or one loaded again into `extra` (reserved, so the pointers hold).
 struct DisplacedMeshes {
-  std::vector<Mesh> extra;
-  std::vector<const Mesh*> meshes;
+  std::vector<mesh::Mesh> extra;
+  std::vector<const mesh::Mesh*> meshes;
 };
 
 // Displaced assets: the asset each map was baked on (loaded again when the run does not
 // measure it undisplaced), listed after the assets.
 void loadDisplacedAssets(const SuiteSelection& selection, const std::vector<AssetRef>& refs,
-                         const std::vector<Mesh>& meshes, SuiteRun* run, Results* results,
-                         DisplacedMeshes* displaced) {
-  std::vector<Mesh>& extra_meshes = displaced->extra;
+                         const std::vector<mesh::Mesh>& meshes, SuiteRun* run,
+                         results::Results* results, DisplacedMeshes* displaced) {
+  std::vector<mesh::Mesh>& extra_meshes = displaced->extra;
   extra_meshes.reserve(selection.displacements.size());
-  std::vector<const Mesh*>& displacement_meshes = displaced->meshes;
-  for (const DisplacedInput& input : selection.displacements) {
+  std::vector<const mesh::Mesh*>& displacement_meshes = displaced->meshes;
+  for (const measures::DisplacedInput& input : selection.displacements) {
     const auto same = std::find_if(refs.begin(), refs.end(),
                                    [&](const AssetRef& ref) { return ref.name == input.asset; });
-    const Mesh* mesh = nullptr;
+    const mesh::Mesh* mesh = nullptr;
     if (same != refs.end()) {
       mesh = &meshes[size_t(same - refs.begin())];
     } else {
       const AssetRef ref = resolveAsset(input.asset);
-      extra_meshes.push_back(loadObjFile(ref.path));
+      extra_meshes.push_back(mesh::loadObjFile(ref.path));
       extra_meshes.back().source = ref.shownPath();
       mesh = &extra_meshes.back();
     }
@@ -152,7 +153,7 @@ void loadDisplacedAssets(const SuiteSelection& selection, const std::vector<Asse
     results->assets.push_back({displacedAssetName(input), input.path, mesh->faceCount(),
                                mesh->positions.size(),
                                describeFaceKinds(*mesh) + ", displaced by " + input.name + " (" +
-                                   std::string(kindName(input.map->kind)) + ", " +
+                                   std::string(displacement::kindName(input.map->kind)) + ", " +
                                    std::to_string(input.resolution) + " texels a patch side)",
                                mesh->normals_computed});
     run->targets.emplace(&input, std::make_unique<SuiteRun::TargetSlot>());
@@ -161,12 +162,12 @@ void loadDisplacedAssets(const SuiteSelection& selection, const std::vector<Asse
 
 // The selected scenarios; none selected: every bundled one, read only when a technique is
 // a simulation.
-std::vector<Scenario> scenariosFor(const SuiteSelection& selection,
-                                   const std::vector<const Technique*>& techniques) {
-  std::vector<Scenario> scenarios = selection.scenarios;
+std::vector<techniques::Scenario> scenariosFor(
+    const SuiteSelection& selection, const std::vector<const techniques::Technique*>& techniques) {
+  std::vector<techniques::Scenario> scenarios = selection.scenarios;
   const bool any_simulation =
-      std::any_of(techniques.begin(), techniques.end(), [](const Technique* technique) {
-        return technique->info().family == TechniqueFamily::kSimulation;
+      std::any_of(techniques.begin(), techniques.end(), [](const techniques::Technique* technique) {
+        return technique->info().family == techniques::TechniqueFamily::kSimulation;
       });
   if (scenarios.empty() && any_simulation) scenarios = bundledScenarios();
   return scenarios;
@@ -175,8 +176,8 @@ std::vector<Scenario> scenariosFor(const SuiteSelection& selection,
 // One group per technique × input: its variants run in order (default first), groups in
 // parallel. Outcomes go to slots in the serial order technique, variant, input.
 struct Group {
-  const Technique* technique;
-  std::vector<VariantInfo> variants;
+  const techniques::Technique* technique;
+  std::vector<techniques::VariantInfo> variants;
   SuiteInput input;
   size_t input_index, input_count, first_slot;
 };
@@ -189,19 +190,19 @@ struct GroupPlan {
 // What the suite's inputs are, for the groups.
 struct SuiteInputs {
   const std::vector<AssetRef>& refs;
-  const std::vector<Mesh>& meshes;
-  const std::vector<Scenario>& scenarios;
-  const std::vector<DisplacedInput>& displacements;
-  const std::vector<const Mesh*>& displacement_meshes;
+  const std::vector<mesh::Mesh>& meshes;
+  const std::vector<techniques::Scenario>& scenarios;
+  const std::vector<measures::DisplacedInput>& displacements;
+  const std::vector<const mesh::Mesh*>& displacement_meshes;
 };
 
-GroupPlan planGroups(const std::vector<const Technique*>& techniques, SuiteMode suite,
-                     const SuiteInputs& all) {
+GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques,
+                     measures::SuiteMode suite, const SuiteInputs& all) {
   GroupPlan plan;
-  for (const Technique* technique : techniques) {
-    std::vector<VariantInfo> variants = technique->variants();
-    if (suite != SuiteMode::kFull) {
-      std::erase_if(variants, [](const VariantInfo& v) { return v.full_suite_only; });
+  for (const techniques::Technique* technique : techniques) {
+    std::vector<techniques::VariantInfo> variants = technique->variants();
+    if (suite != measures::SuiteMode::kFull) {
+      std::erase_if(variants, [](const techniques::VariantInfo& v) { return v.full_suite_only; });
     }
     const std::vector<SuiteInput> inputs = inputsFor(*technique, all.refs, all.meshes,
                                                      all.scenarios, all.displacements,
@@ -225,7 +226,7 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
   tbb::parallel_for(size_t(0), groups.size(), [&](size_t g) {
     const Group& group = groups[g];
     // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
-    std::optional<DataFootprint> default_footprint;
+    std::optional<techniques::DataFootprint> default_footprint;
     for (size_t v = 0; v < group.variants.size(); ++v) {
       if (progress) {
         const std::lock_guard<std::mutex> lock(progress_mutex);
@@ -246,7 +247,7 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
 }
 
 // The outcomes into results (skips, records) and timings, in the serial order.
-void collectOutcomes(std::vector<StepOutcome>* outcomes, Results* results,
+void collectOutcomes(std::vector<StepOutcome>* outcomes, results::Results* results,
                      SuiteTimings* timings) {
   for (StepOutcome& outcome : *outcomes) {
     if (outcome.skip) results->skipped.push_back(std::move(*outcome.skip));
@@ -259,12 +260,13 @@ void collectOutcomes(std::vector<StepOutcome>* outcomes, Results* results,
 
 }  // namespace
 
-std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode) {
-  if (mode == SuiteMode::kDefault) {
+std::vector<CameraPathFn> suiteCameraPaths(measures::SuiteMode mode) {
+  if (mode == measures::SuiteMode::kDefault) {
     const CameraPathSpec orbit = resolveCameraPath("orbit");
     // Read at its own frame count; sampled once more at the suite's, so a path that has no
     // camera there fails here, before any measure runs.
-    sampleCameraPath(orbit, Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, kDefaultSuiteOrbitFrames);
+    sampleCameraPath(orbit, mesh::Aabb{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}},
+                     kDefaultSuiteOrbitFrames);
     return {cameraPathFn(orbit, kDefaultSuiteOrbitFrames)};
   }
   std::vector<CameraPathFn> paths;
@@ -274,23 +276,23 @@ std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode) {
   return paths;
 }
 
-void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
-              SuiteTimings* timings, const RecordFn& on_record) {
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
+              results::Results* results, SuiteTimings* timings, const RecordFn& on_record) {
   const auto run_start = std::chrono::steady_clock::now();
   const int threads =
       selection.threads > 0 ? selection.threads : tbb::info::default_concurrency();
   tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-  std::vector<const Technique*> techniques = selection.techniques;
-  if (techniques.empty()) techniques = TechniqueRegistry::instance().all();
+  std::vector<const techniques::Technique*> techniques = selection.techniques;
+  if (techniques.empty()) techniques = techniques::TechniqueRegistry::instance().all();
   SuiteRun run;
   setUpMeasures(selection, &run, results);
   std::vector<AssetRef> refs = selection.assets;
-  if (refs.empty()) refs = suiteAssets(selection.suite == SuiteMode::kFull);
+  if (refs.empty()) refs = suiteAssets(selection.suite == measures::SuiteMode::kFull);
   openDevice(selection.device_name, &run);
-  const std::vector<Mesh> meshes = loadAssets(refs, results);
+  const std::vector<mesh::Mesh> meshes = loadAssets(refs, results);
   DisplacedMeshes displaced;
   loadDisplacedAssets(selection, refs, meshes, &run, results, &displaced);
-  const std::vector<Scenario> scenarios = scenariosFor(selection, techniques);
+  const std::vector<techniques::Scenario> scenarios = scenariosFor(selection, techniques);
   const GroupPlan plan = planGroups(
       techniques, selection.suite,
       {refs, meshes, scenarios, selection.displacements, displaced.meshes});
@@ -304,4 +306,4 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Resul
   }
 }
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -14,29 +14,29 @@
 #include "harness/suite/shard.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::suite {
 
 struct SuiteSelection {
-  std::vector<const Technique*> techniques;  // empty: every registered technique
+  std::vector<const techniques::Technique*> techniques;  // empty: every registered technique
   std::vector<AssetRef> assets;              // empty: every bundled asset
-  std::vector<const Measure*> measures;      // empty: every registered measure
+  std::vector<const measures::Measure*> measures;  // empty: every registered measure
   std::string device_name;                   // --device substring; empty: best device
   // The inputs of simulation techniques (one record per scenario, in place of the assets).
   // Empty: every bundled scenario (assets/scenarios, scenario_file.h), read only when a
   // selected technique is a simulation. A technique runs only on the scenarios whose
   // `technique` is its id or empty.
-  std::vector<Scenario> scenarios;
+  std::vector<techniques::Scenario> scenarios;
   // Displacement maps (harness/suite/displacement_file.h): each adds a displaced asset, its
   // sidecar's asset displaced by the map, run by its technique and variant with the measures
   // that run on displaced surfaces (cracks, error, memory).
-  std::vector<DisplacedInput> displacements;
+  std::vector<measures::DisplacedInput> displacements;
   // The paths view-dependent measures run along, around each asset's bounding box, for
   // kView and kCameraPath measures alike (`run --camera`). Empty: kView measures get the
   // fixed test orbit (testOrbitPath), kCameraPath measures suiteCameraPaths(suite).
   std::vector<CameraPathFn> camera_paths;
   // Which grid measures run (`run --suite`), and which paths kCameraPath measures get when
   // camera_paths is empty.
-  SuiteMode suite = SuiteMode::kDefault;
+  measures::SuiteMode suite = measures::SuiteMode::kDefault;
   // Worker threads for the run (TBB): 0 = every core. Results are byte-identical
   // whatever the count: records are assembled in the serial order.
   int threads = 0;
@@ -56,7 +56,7 @@ constexpr uint32_t kDefaultSuiteOrbitFrames = 4;
 // default suite, the bundled "orbit" at kDefaultSuiteOrbitFrames frames; the full suite,
 // "orbit", "dolly" and "flyby" at their own frame counts. Throws InputError when a bundled
 // file is missing or bad.
-std::vector<CameraPathFn> suiteCameraPaths(SuiteMode mode);
+std::vector<CameraPathFn> suiteCameraPaths(measures::SuiteMode mode);
 
 // Wall time of one measure on one record (seconds; best 0). Timings vary run to run, so
 // they never enter results.json (which is byte-stable); the CLI writes them beside it.
@@ -82,7 +82,7 @@ using ProgressFn = std::function<void(size_t, size_t, const std::string&)>;
 // Called with each record as soon as its measures are done, in completion order (not the
 // serial order of results.records); calls are serialised. An exception it throws stops the
 // run and leaves runSuite.
-using RecordFn = std::function<void(const Record&)>;
+using RecordFn = std::function<void(const results::Record&)>;
 
 // Fills assets, records, skipped and the selected measures' declarations of `results`
 // (never the context). An asset
@@ -91,7 +91,8 @@ using RecordFn = std::function<void(const Record&)>;
 // its reason. Which measures run where is decided by measureRuns (measure_rule.h).
 // Independent technique × input groups run in parallel (the variants of one group in
 // order, since a variant's measures may depend on the default variant's patch data).
-void runSuite(const SuiteSelection& selection, const ProgressFn& progress, Results* results,
-              SuiteTimings* timings = nullptr, const RecordFn& on_record = {});
+void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
+              results::Results* results, SuiteTimings* timings = nullptr,
+              const RecordFn& on_record = {});
 
-}  // namespace tb
+}  // namespace tb::suite

@@ -11,27 +11,27 @@
 #include "harness/suite/scenario_file.h"
 #include "harness/suite/suite.h"
 
-namespace tb::suite_detail {
+namespace tb::suite::suite_detail {
 
 // What one technique runs on: a loaded asset (surface techniques) or a scenario
 // (simulations). `mesh` is empty for a scenario.
 struct SuiteInput {
   std::string name;  // the record's asset column
-  const Mesh* mesh = nullptr;
-  const Scenario* scenario = nullptr;
+  const mesh::Mesh* mesh = nullptr;
+  const techniques::Scenario* scenario = nullptr;
   // A displaced asset: `mesh` displaced by this map (for its technique and variant only).
-  const DisplacedInput* displacement = nullptr;
+  const measures::DisplacedInput* displacement = nullptr;
   bool is_asset() const { return scenario == nullptr; }
 };
 
 // Everything a technique × variant × input step shares with the others of the run.
 struct SuiteRun {
-  std::vector<const Measure*> measures;
+  std::vector<const measures::Measure*> measures;
   std::vector<CameraPathFn> view_paths;   // walked view by view by kView measures
   std::vector<CameraPathFn> whole_paths;  // given whole to kCameraPath measures
   // The default suite's paths of measures that declare their own (default_suite_paths).
-  std::map<const Measure*, std::vector<CameraPathFn>> measure_paths;
-  SuiteMode suite = SuiteMode::kDefault;
+  std::map<const measures::Measure*, std::vector<CameraPathFn>> measure_paths;
+  measures::SuiteMode suite = measures::SuiteMode::kDefault;
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
   ShardSpec shard;
@@ -39,17 +39,17 @@ struct SuiteRun {
   // Each displacement map's target, rebuilt once (by the first record that needs it).
   struct TargetSlot {
     std::once_flag once;
-    std::shared_ptr<const DisplacementTarget> target;
+    std::shared_ptr<const measures::DisplacementTarget> target;
     std::string unavailable;
   };
-  std::map<const DisplacedInput*, std::unique_ptr<TargetSlot>> targets;
+  std::map<const measures::DisplacedInput*, std::unique_ptr<TargetSlot>> targets;
 };
 
 // What one technique × variant × input step produced; steps run in parallel and their
 // outcomes are put in the serial order afterwards.
 struct StepOutcome {
-  std::optional<Record> record;
-  std::optional<Skip> skip;
+  std::optional<results::Record> record;
+  std::optional<results::Skip> skip;
   std::vector<MeasureTiming> timings;
 };
 
@@ -60,8 +60,9 @@ inline double secondsSince(std::chrono::steady_clock::time_point start) {
 // Builds the technique on one input and variant, and runs every measure the rule admits
 // into one record. `default_footprint` is the default variant's patch data on this input:
 // set by the default variant's step, read by the others.
-StepOutcome runStep(const SuiteRun& run, const Technique& technique, const VariantInfo& variant,
-                    bool is_default, const SuiteInput& input,
-                    std::optional<DataFootprint>* default_footprint);
+StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
+                    const techniques::VariantInfo& variant, bool is_default,
+                    const SuiteInput& input,
+                    std::optional<techniques::DataFootprint>* default_footprint);
 
-}  // namespace tb::suite_detail
+}  // namespace tb::suite::suite_detail

@@ -65,37 +65,44 @@ using ClassKey = std::array<KindKey, 4>;
 
 // Checks the input (quads, manifold edges) and what the crease preparation cannot
 // represent; throws UnsupportedInput.
-void validate(const Mesh& mesh) {
-  requireManifoldQuads(mesh, "acc", "ACC needs quads", "ACC needs a manifold mesh");
+void validate(const mesh::Mesh& mesh) {
+  techniques::requireManifoldQuads(mesh, "acc", "ACC needs quads", "ACC needs a manifold mesh");
 }
 
-void validateCreases(const CreasePreparation& creases) {
+void validateCreases(const techniques::CreasePreparation& creases) {
   for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
-    if (creases.vertex_kind[v] == SharpVertexKind::kCone) {
-      throw UnsupportedInput("acc: " + describeVertex(creases.control, uint32_t(v)) +
-                             " is an infinitely sharp corner with fewer than two sharp edges "
-                             "(a cone point); ACC patches cannot represent it");
+    if (creases.vertex_kind[v] == techniques::SharpVertexKind::kCone) {
+      throw techniques::UnsupportedInput(
+          "acc: " + techniques::describeVertex(creases.control, uint32_t(v)) +
+          " is an infinitely sharp corner with fewer than two sharp edges "
+          "(a cone point); ACC patches cannot represent it");
     }
   }
   if (creases.patch_faces == 0) {
-    throw UnsupportedInput("acc: " + creases.control.source + " has no face with a limit surface");
+    throw techniques::UnsupportedInput("acc: " + creases.control.source +
+                                       " has no face with a limit surface");
   }
 }
 
 // The crease preparation of a mesh for acc (validate first).
-CreasePreparation prepare(const Mesh& mesh, size_t face_budget) {
-  CreasePreparation creases = prepareCreases(mesh, "acc", face_budget);
+techniques::CreasePreparation prepare(const mesh::Mesh& mesh, size_t face_budget) {
+  techniques::CreasePreparation creases = techniques::prepareCreases(mesh, "acc", face_budget);
   validateCreases(creases);
   return creases;
 }
 
-class AccPatches final : public SurfacePatches {
+class AccPatches final : public techniques::SurfacePatches {
  public:
-  AccPatches(CreasePreparation creases, BezierOrder order, bool tangent_patches)
-      : creases_(std::move(creases)), mesh_(creases_.control), order_(order), tangent_(tangent_patches) {
-    rings_ = buildQuadRings(mesh_, "acc", kMaxValence, &creases_);
+  AccPatches(techniques::CreasePreparation creases, techniques::BezierOrder order,
+             bool tangent_patches)
+      : creases_(std::move(creases)),
+        mesh_(creases_.control),
+        order_(order),
+        tangent_(tangent_patches) {
+    rings_ = techniques::buildQuadRings(mesh_, "acc", kMaxValence, &creases_);
     // Ring r's centre position (an extra sector repeats its vertex's position).
-    for (const VertexRing& ring : rings_.rings) ring_positions_.push_back(mesh_.positions[ring.vertex]);
+    for (const techniques::VertexRing& ring : rings_.rings)
+      ring_positions_.push_back(mesh_.positions[ring.vertex]);
     const size_t patches = creases_.patch_faces;
     corners_.resize(patches);
     class_of_.resize(patches);
@@ -105,7 +112,7 @@ class AccPatches final : public SurfacePatches {
       ClassKey key;
       for (int k = 0; k < 4; ++k) {
         const uint32_t ring_index = rings_.face_rings[p][k];
-        const VertexRing& ring = rings_.rings[ring_index];
+        const techniques::VertexRing& ring = rings_.rings[ring_index];
         const KindKey kind{ring.valence, ring.boundary, ring.corner};
         key[k] = kind;
         auto [it, inserted] = weights_.try_emplace(kind);
@@ -145,66 +152,74 @@ class AccPatches final : public SurfacePatches {
                         " topology combinations (corner valence and boundary, up to rotation)");
   }
 
-  PatchDomain patchDomain(size_t) const override { return PatchDomain::kQuad; }
+  techniques::PatchDomain patchDomain(size_t) const override {
+    return techniques::PatchDomain::kQuad;
+  }
   size_t patchCount() const override { return creases_.patch_faces; }
   // The input, or the input refined until its semi-sharp creases have decayed, with its
   // holes last: face p is patch p for p < patchCount().
-  const Mesh& controlMesh() const override { return mesh_; }
+  const mesh::Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = mesh_.facePositions(patch);
     return {face[0], face[1], face[2], face[3]};
   }
   uint32_t sourceFace(size_t patch) const override { return creases_.source_face[patch]; }
 
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
     const AccControlPoints<double>& p = points_d_[patch];
     const double u = coord[0], v = coord[1];
-    const Vec3d tu = evaluateTangentU(p.tu, u, v), tv = evaluateTangentV(p.tv, u, v);
-    return {evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+    const mesh::Vec3d tu = techniques::evaluateTangentU(p.tu, u, v),
+                      tv = techniques::evaluateTangentV(p.tv, u, v);
+    return {techniques::evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
   }
 
-  std::unique_ptr<BatchPattern> makeBatchPattern(PatchDomain domain,
-                                                 std::vector<DomainCoord> coords,
-                                                 BatchOutput output) const override {
-    if (domain != PatchDomain::kQuad) {  // fits no acc patch; evaluateBatch refuses it
-      return SurfacePatches::makeBatchPattern(domain, std::move(coords), output);
+  std::unique_ptr<techniques::BatchPattern> makeBatchPattern(
+      techniques::PatchDomain domain, std::vector<techniques::DomainCoord> coords,
+      techniques::BatchOutput output) const override {
+    if (domain != techniques::PatchDomain::kQuad) {  // fits no acc patch; evaluateBatch refuses it
+      return techniques::SurfacePatches::makeBatchPattern(domain, std::move(coords), output);
     }
     return std::make_unique<AccBatchPattern>(std::move(coords), output);
   }
 
-  void evaluateBatch(size_t patch, const BatchPattern& pattern, BatchPoints& out) const override {
+  void evaluateBatch(size_t patch, const techniques::BatchPattern& pattern,
+                     techniques::BatchPoints& out) const override {
     const auto* acc = dynamic_cast<const AccBatchPattern*>(&pattern);
     if (acc == nullptr) return evaluateBatchPointByPoint(patch, pattern, out);
     acc->evaluate(points_d_[patch], out);
   }
 
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch,
+                                          const tess::DomainPoint& coord) const override {
     const AccControlPoints<float>& p = points_f_[patch];
     const float u = coord[0], v = coord[1];
-    const Vec3f tu = evaluateTangentU(p.tu, u, v), tv = evaluateTangentV(p.tv, u, v);
-    return {evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+    const mesh::Vec3f tu = techniques::evaluateTangentU(p.tu, u, v),
+                      tv = techniques::evaluateTangentV(p.tv, u, v);
+    return {techniques::evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
   }
 
-  std::optional<OperationProfile> operationProfile(size_t patch) const override {
-    using C = CountingScalar<float>;
+  std::optional<techniques::OperationProfile> operationProfile(size_t patch) const override {
+    using C = techniques::CountingScalar<float>;
     const auto position = [&](uint32_t i) {
-      const Vec3d& q = ring_positions_[i];
-      return Vec3T<C>{C(float(q.x)), C(float(q.y)), C(float(q.z))};
+      const mesh::Vec3d& q = ring_positions_[i];
+      return mesh::Vec3T<C>{C(float(q.x)), C(float(q.y)), C(float(q.z))};
     };
-    OperationProfile profile;
-    resetOperationCounts();
+    techniques::OperationProfile profile;
+    techniques::resetOperationCounts();
     const AccControlPoints<C> p = accControlPoints<C>(rings_, corners_[patch], tangent_, position);
-    profile.per_patch_setup = operationCounts();
-    resetOperationCounts();
+    profile.per_patch_setup = techniques::operationCounts();
+    techniques::resetOperationCounts();
     const C u(0.3f), v(0.6f);
-    const Vec3T<C> position_uv = evaluateBicubic(p.b, u, v, order_);
-    const Vec3T<C> normal = normalize(cross(evaluateTangentU(p.tu, u, v), evaluateTangentV(p.tv, u, v)));
+    const mesh::Vec3T<C> position_uv = techniques::evaluateBicubic(p.b, u, v, order_);
+    const mesh::Vec3T<C> normal = normalize(
+        cross(techniques::evaluateTangentU(p.tu, u, v), techniques::evaluateTangentV(p.tv, u, v)));
     (void)position_uv;
     (void)normal;
-    profile.per_vertex = operationCounts();
+    profile.per_vertex = techniques::operationCounts();
     bool regular = true;
     for (const PatchCorner& c : corners_[patch]) {
-      const VertexRing& ring = rings_.rings[c.vertex];
+      const techniques::VertexRing& ring = rings_.rings[c.vertex];
       regular = regular && !ring.boundary && ring.valence == 4;
     }
     profile.note = std::string(regular ? "regular" : "irregular") + " patch, " +
@@ -217,15 +232,16 @@ class AccPatches final : public SurfacePatches {
   // give shading normals only. The domain runs (0,0), (1,0), (1,1), (0,1) through face
   // corners 0, 1, 2, 3 (kCornerPoint), the face's own winding, so p_u x p_v faces the
   // front as it is.
-  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
-    const std::array<Vec3d, 16>& b = points_d_[patch].b;
-    return PatchCullBounds{{b.begin(), b.end()}, withoutZeros(bicubicNormalPatch(b))};
+  std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
+    const std::array<mesh::Vec3d, 16>& b = points_d_[patch].b;
+    return techniques::PatchCullBounds{{b.begin(), b.end()},
+                                       techniques::withoutZeros(techniques::bicubicNormalPatch(b))};
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;
 
-  DataFootprint footprint() const override {
-    DataFootprint f;
+  techniques::DataFootprint footprint() const override {
+    techniques::DataFootprint f;
     // GPU layout of gpuPrograms(): vec4 positions; per vertex a 16-byte ring header
     // and 8 bytes per ring slot; 48 bytes per patch; the stencil table.
     f.control_mesh_bytes = 16ull * mesh_.positions.size();
@@ -246,12 +262,12 @@ class AccPatches final : public SurfacePatches {
     return classes_.size() * 4 * kCornerWeightFloats + masks;
   }
 
-  CreasePreparation creases_;
-  const Mesh& mesh_;  // creases_.control
-  std::vector<Vec3d> ring_positions_;
-  BezierOrder order_;
+  techniques::CreasePreparation creases_;
+  const mesh::Mesh& mesh_;  // creases_.control
+  std::vector<mesh::Vec3d> ring_positions_;
+  techniques::BezierOrder order_;
   bool tangent_;
-  QuadRings rings_;
+  techniques::QuadRings rings_;
   std::map<KindKey, CornerWeights> weights_;
   std::map<uint32_t, std::vector<double>> masks_;
   std::vector<std::array<PatchCorner, 4>> corners_;
@@ -272,7 +288,7 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
   program.patch_count = uint32_t(patchCount());
   program.input_vertices_per_patch = 1;
   std::vector<uint32_t> positions, headers, slots, patches, stencils;
-  for (const Vec3d& p : ring_positions_) {
+  for (const mesh::Vec3d& p : ring_positions_) {
     for (double x : {p.x, p.y, p.z, 0.0}) positions.push_back(floatBits(x));
   }
   // Stencil table: per class 4 corners x kCornerWeightFloats, then the tangent masks.
@@ -289,7 +305,7 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
     mask_offset[valence] = uint32_t(stencils.size());
     for (double x : mask) stencils.push_back(floatBits(x));
   }
-  for (const VertexRing& ring : rings_.rings) {
+  for (const techniques::VertexRing& ring : rings_.rings) {
     const auto m = mask_offset.find(ring.valence);
     headers.insert(headers.end(), {ring.offset, ring.valence, ring.boundary ? 1u : 0u,
                                    ring.boundary || m == mask_offset.end() ? 0u : m->second});
@@ -311,9 +327,9 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
 
 }  // namespace
 
-const TechniqueInfo& AccTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "acc", TechniqueFamily::kSurface,
+const techniques::TechniqueInfo& AccTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "acc", techniques::TechniqueFamily::kSurface,
       "Approximate Catmull-Clark (bicubic geometry + tangent patches)",
       "Loop & Schaefer, Approximating Catmull-Clark Subdivision Surfaces with Bicubic Patches, "
       "ACM TOG 27(1) 2008",
@@ -323,66 +339,73 @@ const TechniqueInfo& AccTechnique::info() const {
   return kInfo;
 }
 
-std::vector<VariantInfo> AccTechnique::variants() const {
+std::vector<techniques::VariantInfo> AccTechnique::variants() const {
   // Every variant but default and no_tangent only reorders the float evaluation of the
   // default's patches (VariantInfo::evaluation_order_only).
-  const auto make = [](std::string name, std::string text, BezierOrder order, bool tangent) {
-    const bool reorders = order != BezierOrder::kSymmetricFma;
-    return VariantInfo{std::move(name), std::move(text),
-                       {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}},
-                       reorders};
+  const auto make = [](std::string name, std::string text, techniques::BezierOrder order,
+                       bool tangent) {
+    const bool reorders = order != techniques::BezierOrder::kSymmetricFma;
+    return techniques::VariantInfo{
+        std::move(name),
+        std::move(text),
+        {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}},
+        reorders};
   };
   return {
-      make("default", "tangent patches; symmetric FMA Bézier order", BezierOrder::kSymmetricFma, true),
+      make("default", "tangent patches; symmetric FMA Bézier order",
+           techniques::BezierOrder::kSymmetricFma, true),
       make("no_tangent", "normal from the geometry patch's derivatives; symmetric FMA order",
-           BezierOrder::kSymmetricFma, false),
+           techniques::BezierOrder::kSymmetricFma, false),
       make("asymmetric", "tangent patches; FMA chain along u then v (not watertight)",
-           BezierOrder::kAsymmetric, true),
+           techniques::BezierOrder::kAsymmetric, true),
       make("symmetric_nofma", "tangent patches; symmetric order without FMA",
-           BezierOrder::kSymmetricNoFma, true),
+           techniques::BezierOrder::kSymmetricNoFma, true),
       make("symmetric_edges", "tangent patches; symmetric FMA order on the edge rows only",
-           BezierOrder::kSymmetricEdges, true),
+           techniques::BezierOrder::kSymmetricEdges, true),
       make("symmetric_imprecise",
            "symmetric order without FMA, written without `precise` (the compiler may "
            "reassociate it)",
-           BezierOrder::kSymmetricNoFmaImprecise, true),
+           techniques::BezierOrder::kSymmetricNoFmaImprecise, true),
   };
 }
 
-BezierOrder variantOrder(const VariantInfo& variant) {
-  return paramOr<BezierOrder>(AccTechnique().info(), variant, "order", BezierOrder::kSymmetricFma);
+techniques::BezierOrder variantOrder(const techniques::VariantInfo& variant) {
+  return techniques::paramOr<techniques::BezierOrder>(AccTechnique().info(), variant, "order",
+                                                      techniques::BezierOrder::kSymmetricFma);
 }
 
-bool variantTangentPatches(const VariantInfo& variant) {
-  return paramOr<bool>(AccTechnique().info(), variant, "tangent", true);
+bool variantTangentPatches(const techniques::VariantInfo& variant) {
+  return techniques::paramOr<bool>(AccTechnique().info(), variant, "tangent", true);
 }
 
-size_t variantCreaseFaceBudget(const VariantInfo& variant) {
-  return size_t(std::max(1.0, paramOr<double>(AccTechnique().info(), variant, "crease_face_budget",
-                                              double(kDefaultCreaseFaceBudget))));
+size_t variantCreaseFaceBudget(const techniques::VariantInfo& variant) {
+  return size_t(std::max(
+      1.0, techniques::paramOr<double>(AccTechnique().info(), variant, "crease_face_budget",
+                                       double(techniques::kDefaultCreaseFaceBudget))));
 }
 
-std::string AccTechnique::checkSupport(const Mesh& mesh) const {
+std::string AccTechnique::checkSupport(const mesh::Mesh& mesh) const {
   try {
     validate(mesh);
-    const CreasePreparation creases = prepare(mesh, kDefaultCreaseFaceBudget);
-    buildQuadRings(creases.control, "acc", kMaxValence, &creases);
-  } catch (const UnsupportedInput& error) {
+    const techniques::CreasePreparation creases =
+        prepare(mesh, techniques::kDefaultCreaseFaceBudget);
+    techniques::buildQuadRings(creases.control, "acc", kMaxValence, &creases);
+  } catch (const techniques::UnsupportedInput& error) {
     return error.what();
   }
   return {};
 }
 
-std::unique_ptr<TechniqueInstance> AccTechnique::build(const TechniqueInput& input,
-                                                       const VariantInfo& variant) const {
-  const Mesh& mesh = requireMesh(info(), input);
+std::unique_ptr<techniques::TechniqueInstance> AccTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
+  const mesh::Mesh& mesh = techniques::requireMesh(info(), input);
   validate(mesh);
-  return std::make_unique<SurfaceInstance>(std::make_unique<AccPatches>(
-      prepare(mesh, variantCreaseFaceBudget(variant)), variantOrder(variant),
-      variantTangentPatches(variant)));
+  return std::make_unique<techniques::SurfaceInstance>(
+      std::make_unique<AccPatches>(prepare(mesh, variantCreaseFaceBudget(variant)),
+                                   variantOrder(variant), variantTangentPatches(variant)));
 }
 
-size_t topologyCombinationCount(const SurfacePatches& patches) {
+size_t topologyCombinationCount(const techniques::SurfacePatches& patches) {
   const auto* acc = dynamic_cast<const AccPatches*>(&patches);
   return acc == nullptr ? 0 : acc->combinationCount();
 }

@@ -18,29 +18,30 @@ namespace tb::acc {
 // and 64 on the GPU (assets/full_suite/pole64.obj).
 inline constexpr uint32_t kMaxValence = 256;
 
-class AccTechnique final : public Technique {
+class AccTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
+  const techniques::TechniqueInfo& info() const override;
   // "default" (tangent patches, symmetric FMA order), "no_tangent" (normal from the
   // geometry patch's derivatives), and the other evaluation orders with tangent
   // patches: "asymmetric", "symmetric_nofma", "symmetric_edges".
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
 };
 
 // Parameters of a variant: "order" (BezierOrder as a number), "tangent" (0/1) and
 // "crease_face_budget" (faces the refinement of semi-sharp creases may reach;
 // kDefaultCreaseFaceBudget in techniques/common/crease_refinement.h when absent).
-BezierOrder variantOrder(const VariantInfo& variant);
-bool variantTangentPatches(const VariantInfo& variant);
-size_t variantCreaseFaceBudget(const VariantInfo& variant);
+techniques::BezierOrder variantOrder(const techniques::VariantInfo& variant);
+bool variantTangentPatches(const techniques::VariantInfo& variant);
+size_t variantCreaseFaceBudget(const techniques::VariantInfo& variant);
 
 }  // namespace tb::acc
 
 namespace tb::acc {
 // Distinct corner (valence, boundary) tuples up to rotation among the patches: the
 // stencil table holds one entry per combination. 0 for patches not built by acc.
-size_t topologyCombinationCount(const SurfacePatches& patches);
+size_t topologyCombinationCount(const techniques::SurfacePatches& patches);
 }  // namespace tb::acc

@@ -17,16 +17,16 @@
 
 namespace tb::acc {
 
-class AccBatchPattern final : public BatchPattern {
+class AccBatchPattern final : public techniques::BatchPattern {
  public:
   // Quad domain points (u, v, unused).
-  AccBatchPattern(std::vector<DomainCoord> coords, BatchOutput output);
+  AccBatchPattern(std::vector<techniques::DomainCoord> coords, techniques::BatchOutput output);
   double multiplyAddsPerPoint() const override { return 3.0 * (16 + 12 + 12); }
   // Every point of the pattern on the patch with these control points.
-  void evaluate(const AccControlPoints<double>& patch, BatchPoints& out) const;
+  void evaluate(const AccControlPoints<double>& patch, techniques::BatchPoints& out) const;
 
  private:
-  BasisTable geometry_, tangent_u_, tangent_v_;
+  techniques::BasisTable geometry_, tangent_u_, tangent_v_;
 };
 
 }  // namespace tb::acc

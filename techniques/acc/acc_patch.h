@@ -76,9 +76,9 @@ inline constexpr std::array<int, 4> kCornerPoint = {0, 3, 15, 12};
 
 template <class T>
 struct AccControlPoints {
-  std::array<Vec3T<T>, 16> b;   // geometry patch, b[i + 4 j]
-  std::array<Vec3T<T>, 12> tu;  // ∂/∂u tangent patch, tu[i + 3 j], degree 2 in u
-  std::array<Vec3T<T>, 12> tv;  // ∂/∂v tangent patch, tv[i + 4 j], degree 2 in v
+  std::array<mesh::Vec3T<T>, 16> b;   // geometry patch, b[i + 4 j]
+  std::array<mesh::Vec3T<T>, 12> tu;  // ∂/∂u tangent patch, tu[i + 3 j], degree 2 in u
+  std::array<mesh::Vec3T<T>, 12> tv;  // ∂/∂v tangent patch, tv[i + 4 j], degree 2 in v
 };
 
 // One patch corner as the builder sees it.
@@ -90,17 +90,17 @@ struct PatchCorner {
 };
 
 template <class T, class Position>
-Vec3T<T> accControlPoint(const QuadRings& rings, const PatchCorner& c, PointRole role,
-                         const Position& position) {
-  const VertexRing& ring = rings.rings[c.vertex];
+mesh::Vec3T<T> accControlPoint(const techniques::QuadRings& rings, const PatchCorner& c,
+                               PointRole role, const Position& position) {
+  const techniques::VertexRing& ring = rings.rings[c.vertex];
   const CornerWeights& w = *c.weights;
   const uint32_t n = ring.valence;
-  const Vec3T<T> v = position(c.vertex);
+  const mesh::Vec3T<T> v = position(c.vertex);
   const auto e = [&](uint32_t i) { return position(rings.e(c.vertex, i)); };
   const auto f = [&](uint32_t i) { return position(rings.f(c.vertex, i)); };
   switch (role) {
     case PointRole::kCorner: {
-      Vec3T<T> acc = v * T(w.cv);
+      mesh::Vec3T<T> acc = v * T(w.cv);
       // (e_0 + e_{n-1}) adds commutatively: the two sectors of a crease vertex list its
       // crease neighbours in opposite orders and still compute the same bits.
       if (ring.boundary) return acc + (e(0) + e(n - 1)) * T(w.ce);
@@ -123,11 +123,11 @@ Vec3T<T> accControlPoint(const QuadRings& rings, const PatchCorner& c, PointRole
 
 // Limit tangent of an interior corner along e_i (mask rotated by i).
 template <class T, class Position>
-Vec3T<T> accCornerTangent(const QuadRings& rings, const PatchCorner& c, uint32_t i,
-                          const Position& position) {
+mesh::Vec3T<T> accCornerTangent(const techniques::QuadRings& rings, const PatchCorner& c,
+                                uint32_t i, const Position& position) {
   const uint32_t n = rings.rings[c.vertex].valence;
   const std::vector<double>& mask = *c.mask;
-  Vec3T<T> acc{};
+  mesh::Vec3T<T> acc{};
   for (uint32_t j = 0; j < n; ++j) {
     const uint32_t r = (j + n - i % n) % n;
     acc = acc + position(rings.e(c.vertex, j)) * T(mask[r]) +
@@ -138,27 +138,29 @@ Vec3T<T> accCornerTangent(const QuadRings& rings, const PatchCorner& c, uint32_t
 
 // Cross tangents next to the corners of the edge A -> B (see the header comment).
 template <class T>
-void accCrossTangents(T c_a, T c_b, const Vec3T<T>& a0, const Vec3T<T>& a1, const Vec3T<T>& a2,
-                      const Vec3T<T>& d1, const Vec3T<T>& d2, Vec3T<T>& x1, Vec3T<T>& x2) {
+void accCrossTangents(T c_a, T c_b, const mesh::Vec3T<T>& a0, const mesh::Vec3T<T>& a1,
+                      const mesh::Vec3T<T>& a2, const mesh::Vec3T<T>& d1, const mesh::Vec3T<T>& d2,
+                      mesh::Vec3T<T>& x1, mesh::Vec3T<T>& x2) {
   const T third = T(1) / T(3);
   x1 = (a1 * (T(2) * c_a) - a0 * c_b) * third + d1;
   x2 = (a2 * c_a - a1 * (T(2) * c_b)) * third + d2;
 }
 
 template <class T, class Position>
-AccControlPoints<T> accControlPoints(const QuadRings& rings, const std::array<PatchCorner, 4>& corners,
+AccControlPoints<T> accControlPoints(const techniques::QuadRings& rings,
+                                     const std::array<PatchCorner, 4>& corners,
                                      bool tangent_patches, const Position& position) {
   AccControlPoints<T> p;
   for (int j = 0; j < 16; ++j) {
     p.b[j] = accControlPoint<T>(rings, corners[kPointOwner[j].corner], kPointOwner[j].role, position);
   }
-  bicubicDerivativePatches(p.b, p.tu, p.tv);
+  techniques::bicubicDerivativePatches(p.b, p.tu, p.tv);
   if (!tangent_patches) return p;
   const auto& b = p.b;
   auto& tu = p.tu;
   auto& tv = p.tv;
   // Corner tangents along the next (e_slot) and previous (e_slot+1) edges.
-  std::array<Vec3T<T>, 4> next, prev;
+  std::array<mesh::Vec3T<T>, 4> next, prev;
   std::array<T, 4> c;
   for (int k = 0; k < 4; ++k) {
     const PatchCorner& corner = corners[k];
@@ -168,8 +170,9 @@ AccControlPoints<T> accControlPoints(const QuadRings& rings, const std::array<Pa
     prev[k] = accCornerTangent<T>(rings, corner, corner.slot + 1, position);
   }
   const T zero(0);
-  const auto set = [&](int k, Vec3T<T>& slot, const Vec3T<T>& value, bool negate) {
-    if (corners[k].mask != nullptr) slot = negate ? Vec3T<T>{zero, zero, zero} - value : value;
+  const auto set = [&](int k, mesh::Vec3T<T>& slot, const mesh::Vec3T<T>& value, bool negate) {
+    if (corners[k].mask != nullptr)
+      slot = negate ? mesh::Vec3T<T>{zero, zero, zero} - value : value;
   };
   set(0, tu[0], next[0], false);
   set(0, tv[0], prev[0], false);
@@ -180,19 +183,19 @@ AccControlPoints<T> accControlPoints(const QuadRings& rings, const std::array<Pa
   set(3, tu[9], prev[3], false);
   set(3, tv[8], next[3], true);
   const T three(3);
-  Vec3T<T> x1, x2;
+  mesh::Vec3T<T> x1, x2;
   // v = 0, c0 -> c1: inward cross tangent is tv.
   accCrossTangents(c[0], c[1], tu[0], tu[1], tu[2], (b[5] - b[1]) * three, (b[6] - b[2]) * three, x1, x2);
   tv[1] = x1;
   tv[2] = x2;
   // u = 1, c1 -> c2: inward is -tu.
   accCrossTangents(c[1], c[2], tv[3], tv[7], tv[11], (b[6] - b[7]) * three, (b[10] - b[11]) * three, x1, x2);
-  tu[5] = Vec3T<T>{zero, zero, zero} - x1;
-  tu[8] = Vec3T<T>{zero, zero, zero} - x2;
+  tu[5] = mesh::Vec3T<T>{zero, zero, zero} - x1;
+  tu[8] = mesh::Vec3T<T>{zero, zero, zero} - x2;
   // v = 1, c3 -> c2: inward is -tv.
   accCrossTangents(c[3], c[2], tu[9], tu[10], tu[11], (b[9] - b[13]) * three, (b[10] - b[14]) * three, x1, x2);
-  tv[9] = Vec3T<T>{zero, zero, zero} - x1;
-  tv[10] = Vec3T<T>{zero, zero, zero} - x2;
+  tv[9] = mesh::Vec3T<T>{zero, zero, zero} - x1;
+  tv[10] = mesh::Vec3T<T>{zero, zero, zero} - x2;
   // u = 0, c0 -> c3: inward is tu.
   accCrossTangents(c[0], c[3], tv[0], tv[4], tv[8], (b[5] - b[4]) * three, (b[9] - b[8]) * three, x1, x2);
   tu[3] = x1;

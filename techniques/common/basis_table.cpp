@@ -20,7 +20,7 @@
 #define TB_X86_KERNELS 0
 #endif
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
 // Arguments shared by every combine kernel.
@@ -28,7 +28,7 @@ struct CombineArgs {
   const double* weights;  // BasisTable::data()
   size_t control_points;
   size_t blocks;
-  const Vec3d* control;
+  const mesh::Vec3d* control;
   double* out[3];
 };
 
@@ -252,7 +252,7 @@ const char* toString(BatchKernel kernel) {
   return "?";
 }
 
-void combineControlPoints(const BasisTable& basis, const Vec3d* control,
+void combineControlPoints(const BasisTable& basis, const mesh::Vec3d* control,
                           std::array<AlignedDoubles, 3>& out, BatchKernel kernel) {
   assert(batchKernelSupported(kernel));
   for (const AlignedDoubles& axis : out) {
@@ -299,4 +299,4 @@ void normalsFromTangents(const std::array<AlignedDoubles, 3>& du,
   }
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -15,7 +15,7 @@
 #include "core/mesh/vec.h"
 #include "techniques/batch_eval.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // Weights of `control_points` control points at `points` domain points. Stored in blocks
 // of kBatchLanes points, block-major: weight of control point k at point i is at
@@ -59,7 +59,7 @@ const char* toString(BatchKernel kernel);  // "portable", "avx2_fma", "avx512"
 // out[c][i] = Σ_k basis.at(i, k) · control[k][c] for every point of the table, padding
 // included (it comes out 0); `out` arrays hold basis.blocks() * kBatchLanes values.
 // Cost: 3 basis.controlPoints() multiply-adds per point.
-void combineControlPoints(const BasisTable& basis, const Vec3d* control,
+void combineControlPoints(const BasisTable& basis, const mesh::Vec3d* control,
                           std::array<AlignedDoubles, 3>& out,
                           BatchKernel kernel = fastestBatchKernel());
 
@@ -70,4 +70,4 @@ void normalsFromTangents(const std::array<AlignedDoubles, 3>& du,
                          std::array<AlignedDoubles, 3>& normal, size_t count,
                          BatchKernel kernel = fastestBatchKernel());
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
 // n! for n <= kMaxFactorial, exact in double up to 22!.
@@ -57,16 +57,16 @@ TrianglePoly<double> linear(double f0, double f1, double f2) {
   return r;
 }
 
-QuadPoly<Vec3d> times(const QuadPoly<double>& a, const Vec3d& v) {
-  QuadPoly<Vec3d> r(a.deg_u, a.deg_v);
+QuadPoly<mesh::Vec3d> times(const QuadPoly<double>& a, const mesh::Vec3d& v) {
+  QuadPoly<mesh::Vec3d> r(a.deg_u, a.deg_v);
   for (size_t s = 0; s < a.c.size(); ++s) r.c[s] = v * a.c[s];
   return r;
 }
 
-TrianglePoly<Vec3d> times(const TrianglePoly<double>& a, const Vec3d& v) {
-  TrianglePoly<Vec3d> r(a.degree);
+TrianglePoly<mesh::Vec3d> times(const TrianglePoly<double>& a, const mesh::Vec3d& v) {
+  TrianglePoly<mesh::Vec3d> r(a.degree);
   for (size_t s = 0; s < a.c.size(); ++s) r.c[s] = v * a.c[s];
   return r;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

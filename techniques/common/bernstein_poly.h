@@ -15,7 +15,7 @@
 
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::techniques {
 
 double binomialCoefficient(int n, int k);
 // (i + j + k)! / (i! j! k!)
@@ -28,9 +28,11 @@ constexpr int triangleNetSlot(int degree, int i, int j) {
 
 // Products of coefficients: scalar x scalar, scalar x vector, vector x vector (cross).
 inline double coefficientProduct(double a, double b) { return a * b; }
-inline Vec3d coefficientProduct(double a, const Vec3d& b) { return b * a; }
-inline Vec3d coefficientProduct(const Vec3d& a, double b) { return a * b; }
-inline Vec3d coefficientProduct(const Vec3d& a, const Vec3d& b) { return cross(a, b); }
+inline mesh::Vec3d coefficientProduct(double a, const mesh::Vec3d& b) { return b * a; }
+inline mesh::Vec3d coefficientProduct(const mesh::Vec3d& a, double b) { return a * b; }
+inline mesh::Vec3d coefficientProduct(const mesh::Vec3d& a, const mesh::Vec3d& b) {
+  return cross(a, b);
+}
 
 template <class V>
 struct QuadPoly {
@@ -108,8 +110,8 @@ auto operator*(const TrianglePoly<A>& a, const TrianglePoly<B>& b)
 }
 
 // A scalar polynomial times a constant vector.
-QuadPoly<Vec3d> times(const QuadPoly<double>& a, const Vec3d& v);
-TrianglePoly<Vec3d> times(const TrianglePoly<double>& a, const Vec3d& v);
+QuadPoly<mesh::Vec3d> times(const QuadPoly<double>& a, const mesh::Vec3d& v);
+TrianglePoly<mesh::Vec3d> times(const TrianglePoly<double>& a, const mesh::Vec3d& v);
 
 // Degree raised to (m, n) >= the polynomial's own, the same function.
 template <class V>
@@ -223,4 +225,4 @@ TrianglePoly<V> derivativeToward(const TrianglePoly<V>& a, int corner) {
   return r;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

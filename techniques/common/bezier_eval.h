@@ -22,7 +22,7 @@
 #include "core/mesh/vec.h"
 #include "techniques/counting_scalar.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // kSymmetricNoFmaImprecise is kSymmetricNoFma written without `precise` in the shader:
 // the same arithmetic on the CPU, but the GPU compiler may reassociate it (NIR folds
@@ -49,7 +49,7 @@ CountingScalar<T> fusedMulAdd(CountingScalar<T> a, CountingScalar<T> b, Counting
 }
 
 template <class T>
-Vec3T<T> fusedMulAdd(const Vec3T<T>& p, T w, const Vec3T<T>& c) {
+mesh::Vec3T<T> fusedMulAdd(const mesh::Vec3T<T>& p, T w, const mesh::Vec3T<T>& c) {
   return {fusedMulAdd(p.x, w, c.x), fusedMulAdd(p.y, w, c.y), fusedMulAdd(p.z, w, c.z)};
 }
 
@@ -70,8 +70,9 @@ std::array<T, 3> quadraticBasis(T t) {
 enum class BezierSum { kChain, kSymmetricNoFma, kSymmetricFma };
 
 template <class T>
-Vec3T<T> bezierSum4(const Vec3T<T>& p0, const Vec3T<T>& p1, const Vec3T<T>& p2,
-                    const Vec3T<T>& p3, const std::array<T, 4>& b, BezierSum sum) {
+mesh::Vec3T<T> bezierSum4(const mesh::Vec3T<T>& p0, const mesh::Vec3T<T>& p1,
+                          const mesh::Vec3T<T>& p2, const mesh::Vec3T<T>& p3,
+                          const std::array<T, 4>& b, BezierSum sum) {
   switch (sum) {
     case BezierSum::kChain:
       return fusedMulAdd(p3, b[3], fusedMulAdd(p2, b[2], fusedMulAdd(p1, b[1], p0 * b[0])));
@@ -84,7 +85,8 @@ Vec3T<T> bezierSum4(const Vec3T<T>& p0, const Vec3T<T>& p1, const Vec3T<T>& p2,
 }
 
 template <class T>
-Vec3T<T> evaluateBicubic(const std::array<Vec3T<T>, 16>& b, T u, T v, BezierOrder order) {
+mesh::Vec3T<T> evaluateBicubic(const std::array<mesh::Vec3T<T>, 16>& b, T u, T v,
+                               BezierOrder order) {
   const std::array<T, 4> bu = cubicBasis(u);
   const std::array<T, 4> bv = cubicBasis(v);
   BezierSum outer_rows = BezierSum::kSymmetricFma, inner_rows = BezierSum::kSymmetricFma;
@@ -103,7 +105,7 @@ Vec3T<T> evaluateBicubic(const std::array<Vec3T<T>, 16>& b, T u, T v, BezierOrde
       inner_rows = BezierSum::kChain;
       break;
   }
-  std::array<Vec3T<T>, 4> w;
+  std::array<mesh::Vec3T<T>, 4> w;
   for (int j = 0; j < 4; ++j) {
     w[j] = bezierSum4(b[4 * j], b[4 * j + 1], b[4 * j + 2], b[4 * j + 3], bu,
                       j == 0 || j == 3 ? outer_rows : inner_rows);
@@ -115,25 +117,25 @@ Vec3T<T> evaluateBicubic(const std::array<Vec3T<T>, 16>& b, T u, T v, BezierOrde
 // used for tangent fields: tu[i + 3 j] (degree 2 in u, 3 in v) and tv[i + 4 j]
 // (degree 3 in u, 2 in v). Plain sums: normals need no bitwise symmetry.
 template <class T>
-Vec3T<T> evaluateTangentU(const std::array<Vec3T<T>, 12>& tu, T u, T v) {
+mesh::Vec3T<T> evaluateTangentU(const std::array<mesh::Vec3T<T>, 12>& tu, T u, T v) {
   const std::array<T, 3> qu = quadraticBasis(u);
   const std::array<T, 4> bv = cubicBasis(v);
-  Vec3T<T> result{};
+  mesh::Vec3T<T> result{};
   for (int j = 0; j < 4; ++j) {
-    const Vec3T<T> row = tu[3 * j] * qu[0] + tu[3 * j + 1] * qu[1] + tu[3 * j + 2] * qu[2];
+    const mesh::Vec3T<T> row = tu[3 * j] * qu[0] + tu[3 * j + 1] * qu[1] + tu[3 * j + 2] * qu[2];
     result = j == 0 ? row * bv[0] : result + row * bv[j];
   }
   return result;
 }
 
 template <class T>
-Vec3T<T> evaluateTangentV(const std::array<Vec3T<T>, 12>& tv, T u, T v) {
+mesh::Vec3T<T> evaluateTangentV(const std::array<mesh::Vec3T<T>, 12>& tv, T u, T v) {
   const std::array<T, 4> bu = cubicBasis(u);
   const std::array<T, 3> qv = quadraticBasis(v);
-  Vec3T<T> result{};
+  mesh::Vec3T<T> result{};
   for (int j = 0; j < 3; ++j) {
-    const Vec3T<T> row = tv[4 * j] * bu[0] + tv[4 * j + 1] * bu[1] + tv[4 * j + 2] * bu[2] +
-                         tv[4 * j + 3] * bu[3];
+    const mesh::Vec3T<T> row =
+        tv[4 * j] * bu[0] + tv[4 * j + 1] * bu[1] + tv[4 * j + 2] * bu[2] + tv[4 * j + 3] * bu[3];
     result = j == 0 ? row * qv[0] : result + row * qv[j];
   }
   return result;
@@ -142,8 +144,9 @@ Vec3T<T> evaluateTangentV(const std::array<Vec3T<T>, 12>& tv, T u, T v) {
 // Derivative patches of a bicubic (the tangent fields of the geometry itself):
 // tu = 3 (b[i+1, j] - b[i, j]), tv = 3 (b[i, j+1] - b[i, j]).
 template <class T>
-void bicubicDerivativePatches(const std::array<Vec3T<T>, 16>& b, std::array<Vec3T<T>, 12>& tu,
-                              std::array<Vec3T<T>, 12>& tv) {
+void bicubicDerivativePatches(const std::array<mesh::Vec3T<T>, 16>& b,
+                              std::array<mesh::Vec3T<T>, 12>& tu,
+                              std::array<mesh::Vec3T<T>, 12>& tv) {
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 3; ++i) tu[3 * j + i] = (b[4 * j + i + 1] - b[4 * j + i]) * T(3);
   }
@@ -152,4 +155,4 @@ void bicubicDerivativePatches(const std::array<Vec3T<T>, 16>& b, std::array<Vec3
   }
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -12,7 +12,7 @@
 #include "core/osd/topology_refiner_builder.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
 namespace Far = OpenSubdiv::Far;
@@ -21,8 +21,8 @@ const float kInfinite = OpenSubdiv::Sdc::Crease::SHARPNESS_INFINITE;  // 10
 
 // A point for Far::PrimvarRefinerReal<double>.
 struct RefinedPoint {
-  Vec3d p{};
-  void Clear(void* = nullptr) { p = Vec3d{}; }
+  mesh::Vec3d p{};
+  void Clear(void* = nullptr) { p = mesh::Vec3d{}; }
   void AddWithWeight(const RefinedPoint& src, double weight) { p = p + src.p * weight; }
 };
 
@@ -41,24 +41,25 @@ float largestFiniteSharpness(const Far::TopologyLevel& level) {
 }
 
 // Faces after `levels` uniform steps: every n-gon becomes n quads, then 4 per step.
-size_t facesAfter(const Mesh& mesh, int levels) {
+size_t facesAfter(const mesh::Mesh& mesh, int levels) {
   if (levels == 0) return mesh.faceCount();
   size_t faces = mesh.face_offsets.back();
   for (int l = 1; l < levels; ++l) faces *= 4;
   return faces;
 }
 
-std::unique_ptr<Far::TopologyRefiner> buildRefiner(const Mesh& mesh, const std::string& technique) {
+std::unique_ptr<Far::TopologyRefiner> buildRefiner(const mesh::Mesh& mesh,
+                                                   const std::string& technique) {
   try {
     return osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     throw UnsupportedInput(technique + ": OpenSubdiv refuses " + mesh.source + ": " + error.what());
   }
 }
 
 // Refines `levels` uniform steps (full topology at the last) and returns the last level's
 // positions: the input's when `levels` is 0.
-std::vector<RefinedPoint> refinePositions(Far::TopologyRefiner& refiner, const Mesh& mesh,
+std::vector<RefinedPoint> refinePositions(Far::TopologyRefiner& refiner, const mesh::Mesh& mesh,
                                           int levels) {
   std::vector<RefinedPoint> points(mesh.positions.size());
   for (size_t v = 0; v < mesh.positions.size(); ++v) points[v].p = mesh.positions[v];
@@ -90,11 +91,11 @@ std::vector<uint32_t> inputFaces(const Far::TopologyRefiner& refiner, int levels
 }
 
 // The control mesh: faces with a limit surface first, then the holes.
-void buildControlMesh(const Mesh& mesh, const Far::TopologyLevel& last,
+void buildControlMesh(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
                       const std::vector<RefinedPoint>& points,
                       const std::vector<uint32_t>& source_of, CreasePreparation& out) {
   const int face_count = last.GetNumFaces();
-  Mesh& control = out.control;
+  mesh::Mesh& control = out.control;
   control.source = mesh.source;
   for (const RefinedPoint& p : points) control.positions.push_back(p.p);
   if (out.levels == 0) {
@@ -134,10 +135,10 @@ void buildControlMesh(const Mesh& mesh, const Far::TopologyLevel& last,
 
 // The last level's edges: crease tags (true values, for the reference) and the sharp edges
 // the patches honour (finite leftovers rounded). Returns the sharp edges at each vertex.
-std::vector<uint32_t> tagEdges(const Mesh& mesh, const Far::TopologyLevel& last,
+std::vector<uint32_t> tagEdges(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
                                CreasePreparation& out) {
-  Mesh& control = out.control;
-  const bool boundary_sharp = mesh.tags.boundary != BoundaryInterpolation::kNone;
+  mesh::Mesh& control = out.control;
+  const bool boundary_sharp = mesh.tags.boundary != mesh::BoundaryInterpolation::kNone;
   std::vector<uint32_t> sharp_count(control.positions.size(), 0);
   for (int e = 0; e < last.GetNumEdges(); ++e) {
     const Far::ConstIndexArray ends = last.GetEdgeVertices(e);
@@ -156,9 +157,9 @@ std::vector<uint32_t> tagEdges(const Mesh& mesh, const Far::TopologyLevel& last,
 }
 
 // The last level's vertices: corner tags and each vertex's kind as the patches see it.
-void tagVertices(const Mesh& mesh, const Far::TopologyLevel& last,
+void tagVertices(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
                  const std::vector<uint32_t>& sharp_count, CreasePreparation& out) {
-  Mesh& control = out.control;
+  mesh::Mesh& control = out.control;
   out.vertex_kind.assign(control.positions.size(), SharpVertexKind::kSmooth);
   for (int v = 0; v < last.GetNumVertices(); ++v) {
     const float sharpness = last.GetVertexSharpness(v);
@@ -171,7 +172,8 @@ void tagVertices(const Mesh& mesh, const Far::TopologyLevel& last,
     // represents a cone point, and the tag would have decayed in a few more levels.
     bool sharp_vertex = sharpness >= kInfinite || (sharpness >= 0.5f && count >= 2);
     // Edge-and-corner interpolation makes a boundary vertex of one face a corner.
-    if (boundary && faces == 1 && mesh.tags.boundary == BoundaryInterpolation::kEdgeAndCorner) {
+    if (boundary && faces == 1 &&
+        mesh.tags.boundary == mesh::BoundaryInterpolation::kEdgeAndCorner) {
       sharp_vertex = true;
     }
     SharpVertexKind kind = SharpVertexKind::kSmooth;
@@ -190,7 +192,7 @@ void tagVertices(const Mesh& mesh, const Far::TopologyLevel& last,
 
 // The instance's warnings: levels refined against the budget, sharpness rounded, holes.
 void addNotes(size_t max_faces, CreasePreparation& out) {
-  const Mesh& control = out.control;
+  const mesh::Mesh& control = out.control;
   if (out.levels > 0 && out.levels_needed > 0) {
     char line[200];
     std::snprintf(line, sizeof line,
@@ -214,8 +216,8 @@ void addNotes(size_t max_faces, CreasePreparation& out) {
 
 }  // namespace
 
-CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
-                                 int min_levels) {
+CreasePreparation prepareCreases(const mesh::Mesh& mesh, const std::string& technique,
+                                 size_t max_faces, int min_levels) {
   std::unique_ptr<Far::TopologyRefiner> refiner = buildRefiner(mesh, technique);
   CreasePreparation out;
   const float largest = largestFiniteSharpness(refiner->GetLevel(0));
@@ -235,4 +237,4 @@ CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique,
   return out;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -31,7 +31,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::techniques {
 
 enum class SharpVertexKind : uint8_t {
   kSmooth,  // no sharp edge
@@ -45,7 +45,7 @@ enum class SharpVertexKind : uint8_t {
 struct CreasePreparation {
   // Faces [0, patch_faces) carry patches, in input order; the faces after them have no
   // limit surface (holes). Positions: the input's, or the refined level's.
-  Mesh control;
+  mesh::Mesh control;
   size_t patch_faces = 0;
   std::vector<uint32_t> source_face;  // per control face: the input face it refines
   int levels = 0;                     // refinement steps applied
@@ -68,11 +68,11 @@ struct CreasePreparation {
 // UnsupportedInput "<technique>: ..." when OpenSubdiv refuses the mesh's topology or tags.
 // `min_levels` steps are applied whatever the budget (gregory_acc: 1 for a mesh whose
 // non-quad faces it cannot patch next to sharp features; acc passes none).
-CreasePreparation prepareCreases(const Mesh& mesh, const std::string& technique, size_t max_faces,
-                                 int min_levels = 0);
+CreasePreparation prepareCreases(const mesh::Mesh& mesh, const std::string& technique,
+                                 size_t max_faces, int min_levels = 0);
 
 // The default face budget of refinement for creases: acc and gregory_acc refine at most
 // until the control mesh has this many faces (a variant parameter may raise it).
 inline constexpr size_t kDefaultCreaseFaceBudget = 256;
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -9,7 +9,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/topology.h"
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
 uint32_t cornerCountOf(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
@@ -36,7 +36,7 @@ const char* samplingName(DisplacementSampling sampling) {
   return sampling == DisplacementSampling::kNaive ? "naive" : "watertight";
 }
 
-TileGeometry tileGeometryOf(const DisplacementMap& map) {
+TileGeometry tileGeometryOf(const displacement::DisplacementMap& map) {
   return {map.tiles.tile_size - 2 * map.tiles.border, map.tiles.border, map.tiles.tile_size,
           map.tiles.tiles_per_row};
 }
@@ -45,7 +45,7 @@ std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches) {
   const size_t count = patches.patchCount();
   std::vector<BoundaryOwners> owners(count);
   // Positions with identical coordinates are one vertex (as the crack measure pairs them).
-  const Welding welding = weldByPosition(patches.controlMesh());
+  const mesh::Welding welding = mesh::weldByPosition(patches.controlMesh());
   std::map<uint32_t, BoundaryOwners::Corner> corner_owner;  // position -> lowest patch
   // (lower position, higher position) -> the lowest patch's edge and its direction.
   struct EdgeOwner {
@@ -69,28 +69,29 @@ std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches) {
 }
 
 DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
-                                   std::shared_ptr<const DisplacementMap> map,
+                                   std::shared_ptr<const displacement::DisplacementMap> map,
                                    DisplacementSampling sampling, std::string map_name)
     : inner_(inner),
       map_(std::move(map)),
       sampling_(sampling),
       frame_(inner),
       warnings_(inner.warnings()) {
-  if (map_->layout != DisplacementLayout::kTiles) {
-    throw InputError(map_name, "", "a uv-layout map cannot displace patches (tiles only)");
+  if (map_->layout != displacement::DisplacementLayout::kTiles) {
+    throw mesh::InputError(map_name, "", "a uv-layout map cannot displace patches (tiles only)");
   }
   if (map_->tiles.tile_count != inner.patchCount()) {
-    throw InputError(map_name, "",
-                     "the map has " + std::to_string(map_->tiles.tile_count) +
-                         " tiles but the surface has " + std::to_string(inner.patchCount()) +
-                         " patches (baked for another technique or asset?)");
+    throw mesh::InputError(map_name, "",
+                           "the map has " + std::to_string(map_->tiles.tile_count) +
+                               " tiles but the surface has " + std::to_string(inner.patchCount()) +
+                               " patches (baked for another technique or asset?)");
   }
   if (map_->tiles.tile_size < 2 * map_->tiles.border + 1 || map_->tiles.tile_size < 2) {
-    throw InputError(map_name, "", "tiles of " + std::to_string(map_->tiles.tile_size) +
-                                       " texels are too small to sample");
+    throw mesh::InputError(
+        map_name, "",
+        "tiles of " + std::to_string(map_->tiles.tile_size) + " texels are too small to sample");
   }
   geometry_ = tileGeometryOf(*map_);
-  const uint32_t channels = channelCount(map_->kind);
+  const uint32_t channels = displacement::channelCount(map_->kind);
   for (size_t i = 0; i < map_->texels.size(); i += channels) {
     double squared = 0;
     for (uint32_t c = 0; c < channels; ++c) squared += double(map_->texels[i + c]) * map_->texels[i + c];
@@ -121,15 +122,16 @@ DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
     }
     tile_max_[p] = largest;
   }
-  warnings_.push_back("displaced by " + map_name + " (" + std::string(kindName(map_->kind)) + ", " +
+  warnings_.push_back("displaced by " + map_name + " (" +
+                      std::string(displacement::kindName(map_->kind)) + ", " +
                       samplingName(sampling) + " sampling)");
 }
 
 DisplacementFrame::DisplacementFrame(const SurfacePatches& patches)
     : patches_(patches), owners_(boundaryOwners(patches)) {
   const size_t count = patches.patchCount();
-  const Welding welding = weldByPosition(patches.controlMesh());
-  std::map<uint32_t, Vec3d> position_dir;
+  const mesh::Welding welding = mesh::weldByPosition(patches.controlMesh());
+  std::map<uint32_t, mesh::Vec3d> position_dir;
   corner_dirs_.resize(count);
   corner_dirs_float_.resize(count);
   for (size_t p = 0; p < count; ++p) {
@@ -147,7 +149,7 @@ DisplacementFrame::DisplacementFrame(const SurfacePatches& patches)
   }
 }
 
-Vec3d DisplacementFrame::direction(size_t patch, const DomainCoord& coord) const {
+mesh::Vec3d DisplacementFrame::direction(size_t patch, const DomainCoord& coord) const {
   return displacementDirection(patches_.patchDomain(patch), owners_[patch], corner_dirs_[patch],
                                coordArray<double>(coord));
 }
@@ -160,11 +162,11 @@ SurfacePoint DisplacedPatches::evaluate(size_t patch, const DomainCoord& coord) 
       lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
                   [this](uint32_t q) { return inner_.patchDomain(q); });
   double h[3] = {0, 0, 0};
-  sampleTile(*map_, geometry_, at.tile, at.u, at.v, channelCount(map_->kind), h);
-  if (map_->kind == DisplacementKind::kScalar) {
+  sampleTile(*map_, geometry_, at.tile, at.u, at.v, displacement::channelCount(map_->kind), h);
+  if (map_->kind == displacement::DisplacementKind::kScalar) {
     point.position = point.position + frame_.direction(patch, coord) * h[0];
   } else {
-    point.position = point.position + Vec3d{h[0], h[1], h[2]};
+    point.position = point.position + mesh::Vec3d{h[0], h[1], h[2]};
   }
   return point;
 }
@@ -177,13 +179,13 @@ SurfacePointF DisplacedPatches::evaluateFloat(size_t patch, const tess::DomainPo
       lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
                   [this](uint32_t q) { return inner_.patchDomain(q); });
   float h[3] = {0, 0, 0};
-  sampleTile(*map_, geometry_, at.tile, at.u, at.v, channelCount(map_->kind), h);
-  if (map_->kind == DisplacementKind::kScalar) {
-    const Vec3f dir = displacementDirection(domain, frame_.owners(patch),
-                                            frame_.cornerDirectionsFloat(patch), c);
+  sampleTile(*map_, geometry_, at.tile, at.u, at.v, displacement::channelCount(map_->kind), h);
+  if (map_->kind == displacement::DisplacementKind::kScalar) {
+    const mesh::Vec3f dir =
+        displacementDirection(domain, frame_.owners(patch), frame_.cornerDirectionsFloat(patch), c);
     point.position = point.position + dir * h[0];
   } else {
-    point.position = point.position + Vec3f{h[0], h[1], h[2]};
+    point.position = point.position + mesh::Vec3f{h[0], h[1], h[2]};
   }
   return point;
 }
@@ -193,10 +195,10 @@ std::optional<PatchCullBounds> DisplacedPatches::cullBounds(size_t patch) const 
   if (!inner) return std::nullopt;
   const double r = tile_max_[patch];
   PatchCullBounds grown;
-  for (const Vec3d& point : inner->hull) {
+  for (const mesh::Vec3d& point : inner->hull) {
     for (int corner = 0; corner < 8; ++corner) {
-      grown.hull.push_back(point + Vec3d{corner & 1 ? r : -r, corner & 2 ? r : -r,
-                                         corner & 4 ? r : -r});
+      grown.hull.push_back(
+          point + mesh::Vec3d{corner & 1 ? r : -r, corner & 2 ? r : -r, corner & 4 ? r : -r});
     }
   }
   return grown;
@@ -204,7 +206,7 @@ std::optional<PatchCullBounds> DisplacedPatches::cullBounds(size_t patch) const 
 
 DataFootprint DisplacedPatches::footprint() const {
   DataFootprint footprint = inner_.footprint();
-  footprint.displacement_map_bytes = gpuResidentBytes(*map_);
+  footprint.displacement_map_bytes = displacement::gpuResidentBytes(*map_);
   // The per-patch owner and direction words the displaced TES reads.
   footprint.patch_data_bytes += uint64_t(patchCount()) * kDisplacePatchWords * 4;
   return footprint;
@@ -213,15 +215,16 @@ DataFootprint DisplacedPatches::footprint() const {
 std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
   std::vector<gpu::GpuPatchProgram> programs = inner_.gpuPrograms();
   if (programs.empty()) return programs;
-  auto texels = std::make_shared<const std::vector<std::byte>>(gpuTexelBytes(*map_));
+  auto texels = std::make_shared<const std::vector<std::byte>>(displacement::gpuTexelBytes(*map_));
   for (gpu::GpuPatchProgram& program : programs) {
     auto displacement = std::make_shared<gpu::GpuDisplacement>();
     displacement->width = map_->width;
     displacement->height = map_->height;
-    displacement->channels = map_->kind == DisplacementKind::kScalar ? 1 : 4;
-    displacement->bytes_per_channel = map_->pixel_type == DisplacementPixelType::kHalf ? 2 : 4;
+    displacement->channels = map_->kind == displacement::DisplacementKind::kScalar ? 1 : 4;
+    displacement->bytes_per_channel =
+        map_->pixel_type == displacement::DisplacementPixelType::kHalf ? 2 : 4;
     displacement->texels = texels;
-    displacement->kind = map_->kind == DisplacementKind::kScalar ? 1 : 2;
+    displacement->kind = map_->kind == displacement::DisplacementKind::kScalar ? 1 : 2;
     displacement->sampling = sampling_ == DisplacementSampling::kNaive ? 0 : 1;
     std::vector<uint32_t>& words = displacement->patch_words;
     words = {geometry_.resolution, geometry_.border, geometry_.tile_size, geometry_.tiles_per_row};
@@ -241,7 +244,7 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
         words.push_back(edge.edge | triangleBit(edge.patch));
         words.push_back(edge.reversed ? 1u : 0u);
       }
-      for (const Vec3f& dir : frame_.cornerDirectionsFloat(p)) {
+      for (const mesh::Vec3f& dir : frame_.cornerDirectionsFloat(p)) {
         for (int k = 0; k < 3; ++k) words.push_back(std::bit_cast<uint32_t>(dir[k]));
       }
     }
@@ -251,4 +254,4 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
   return programs;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

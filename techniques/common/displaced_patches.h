@@ -14,7 +14,7 @@
 #include "techniques/common/displacement_sampling.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // The GPU words of one program patch in TbDisplacePatches (shaders/common/displace.glsl),
 // after a 4-word header (resolution, border, tile_size, tiles_per_row): own tile, 4 corners
@@ -32,30 +32,31 @@ class DisplacementFrame {
  public:
   explicit DisplacementFrame(const SurfacePatches& patches);
   const BoundaryOwners& owners(size_t patch) const { return owners_[patch]; }
-  const std::array<Vec3f, 4>& cornerDirectionsFloat(size_t patch) const {
+  const std::array<mesh::Vec3f, 4>& cornerDirectionsFloat(size_t patch) const {
     return corner_dirs_float_[patch];
   }
   // The unit direction of patch `patch` at `coord`, double.
-  Vec3d direction(size_t patch, const DomainCoord& coord) const;
+  mesh::Vec3d direction(size_t patch, const DomainCoord& coord) const;
 
  private:
   const SurfacePatches& patches_;
   std::vector<BoundaryOwners> owners_;                   // per patch
-  std::vector<std::array<Vec3d, 4>> corner_dirs_;        // per patch, unit, double
-  std::vector<std::array<Vec3f, 4>> corner_dirs_float_;  // the same rounded to float
+  std::vector<std::array<mesh::Vec3d, 4>> corner_dirs_;  // per patch, unit, double
+  std::vector<std::array<mesh::Vec3f, 4>> corner_dirs_float_;  // the same rounded to float
 };
 
 class DisplacedPatches final : public SurfacePatches {
  public:
   // Throws InputError (naming `map_name`) when the map is not a per-patch tile atlas with
   // one tile per patch of `inner`.
-  DisplacedPatches(const SurfacePatches& inner, std::shared_ptr<const DisplacementMap> map,
+  DisplacedPatches(const SurfacePatches& inner,
+                   std::shared_ptr<const displacement::DisplacementMap> map,
                    DisplacementSampling sampling, std::string map_name);
 
   PatchDomain patchDomain(size_t patch) const override { return inner_.patchDomain(patch); }
   LimitScheme approximates() const override { return inner_.approximates(); }
   size_t patchCount() const override { return inner_.patchCount(); }
-  const Mesh& controlMesh() const override { return inner_.controlMesh(); }
+  const mesh::Mesh& controlMesh() const override { return inner_.controlMesh(); }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     return inner_.patchCorners(patch);
   }
@@ -79,7 +80,7 @@ class DisplacedPatches final : public SurfacePatches {
   double tileMaxDisplacement(size_t patch) const { return tile_max_[patch]; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
-  const DisplacementMap& map() const { return *map_; }
+  const displacement::DisplacementMap& map() const { return *map_; }
   DisplacementSampling sampling() const { return sampling_; }
   const DisplacementFrame& frame() const { return frame_; }
   // The largest |displacement| the map holds (world units): a scalar map's largest |h|, a
@@ -88,7 +89,7 @@ class DisplacedPatches final : public SurfacePatches {
 
  private:
   const SurfacePatches& inner_;
-  std::shared_ptr<const DisplacementMap> map_;
+  std::shared_ptr<const displacement::DisplacementMap> map_;
   DisplacementSampling sampling_;
   DisplacementFrame frame_;
   TileGeometry geometry_;
@@ -100,4 +101,4 @@ class DisplacedPatches final : public SurfacePatches {
 // Builds the owner of every shared corner and edge of `patches` (BoundaryOwners).
 std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches);
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -12,7 +12,7 @@
 #include "core/mesh/vec.h"
 #include "techniques/batch_eval.h"
 
-namespace tb {
+namespace tb::techniques {
 
 enum class DisplacementSampling {
   kNaive,       // bilinear at the patch's own (u, v) in its own tile
@@ -44,7 +44,7 @@ struct TileGeometry {
   uint32_t tile_size = 0;
   uint32_t tiles_per_row = 0;
 };
-TileGeometry tileGeometryOf(const DisplacementMap& map);
+TileGeometry tileGeometryOf(const displacement::DisplacementMap& map);
 
 // A point of one patch's domain in the tile's (u, v): quads (u, v) = gl_TessCoord.xy, the
 // baker's convention; triangles (u, v) = the weights of corners 0 and 1.
@@ -124,8 +124,8 @@ void edgeUv(PatchDomain domain, uint32_t edge, T t, T* u, T* v) {
 // x = u (r - 1) + border, y = (tile_size - 1 - border) - v (r - 1), then bilinear between the
 // four texels around (x, y) (clamped to the tile). Returns channel values in out[0..channels).
 template <class T>
-void sampleTile(const DisplacementMap& map, const TileGeometry& g, uint32_t tile, T u, T v,
-                uint32_t channels, T* out) {
+void sampleTile(const displacement::DisplacementMap& map, const TileGeometry& g, uint32_t tile, T u,
+                T v, uint32_t channels, T* out) {
   const T step = T(g.resolution) - T(1);
   const T left = T(g.border);
   const T top = (T(g.tile_size) - T(1)) - T(g.border);
@@ -180,29 +180,29 @@ TileCoord<T> lookupCoord(uint32_t patch, PatchDomain domain, const BoundaryOwner
 // shared edge compute it with the same operands in the same order; inside, bilinear (quads)
 // or barycentric (triangles).
 template <class T>
-Vec3T<T> displacementDirection(PatchDomain domain, const BoundaryOwners& owners,
-                               const std::array<Vec3T<T>, 4>& corner_dirs,
-                               const std::array<T, 3>& coord) {
+mesh::Vec3T<T> displacementDirection(PatchDomain domain, const BoundaryOwners& owners,
+                                     const std::array<mesh::Vec3T<T>, 4>& corner_dirs,
+                                     const std::array<T, 3>& coord) {
   if (const int k = domainCorner(domain, coord); k >= 0) return corner_dirs[k];
   const uint32_t corners = domain == PatchDomain::kQuad ? 4 : 3;
   T t{};
   if (const int e = domainEdge(domain, coord, &t); e >= 0) {
     const BoundaryOwners::Edge& owner = owners.edges[e];
-    const Vec3T<T>& from = corner_dirs[e];
-    const Vec3T<T>& to = corner_dirs[(e + 1) % corners];
+    const mesh::Vec3T<T>& from = corner_dirs[e];
+    const mesh::Vec3T<T>& to = corner_dirs[(e + 1) % corners];
     const T s = owner.reversed ? T(1) - t : t;
-    const Vec3T<T>& start = owner.reversed ? to : from;
-    const Vec3T<T>& end = owner.reversed ? from : to;
+    const mesh::Vec3T<T>& start = owner.reversed ? to : from;
+    const mesh::Vec3T<T>& end = owner.reversed ? from : to;
     return normalize(start * (T(1) - s) + end * s);
   }
   if (domain == PatchDomain::kQuad) {
     const T u = coord[0], v = coord[1];
-    const Vec3T<T> lower = corner_dirs[0] * (T(1) - u) + corner_dirs[1] * u;
-    const Vec3T<T> upper = corner_dirs[3] * (T(1) - u) + corner_dirs[2] * u;
+    const mesh::Vec3T<T> lower = corner_dirs[0] * (T(1) - u) + corner_dirs[1] * u;
+    const mesh::Vec3T<T> upper = corner_dirs[3] * (T(1) - u) + corner_dirs[2] * u;
     return normalize(lower * (T(1) - v) + upper * v);
   }
   return normalize((corner_dirs[0] * coord[0] + corner_dirs[1] * coord[1]) +
                    corner_dirs[2] * coord[2]);
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -4,39 +4,39 @@
 #include <stdexcept>
 #include <string>
 
-namespace tb {
+namespace tb::techniques {
 
-std::array<Vec3d, 36> bicubicNormalPatch(const std::array<Vec3d, 16>& b) {
-  QuadPoly<Vec3d> patch(3, 3);
+std::array<mesh::Vec3d, 36> bicubicNormalPatch(const std::array<mesh::Vec3d, 16>& b) {
+  QuadPoly<mesh::Vec3d> patch(3, 3);
   patch.c.assign(b.begin(), b.end());
-  const QuadPoly<Vec3d> normal = derivativeU(patch) * derivativeV(patch);  // cross products
-  std::array<Vec3d, 36> n;
+  const QuadPoly<mesh::Vec3d> normal = derivativeU(patch) * derivativeV(patch);  // cross products
+  std::array<mesh::Vec3d, 36> n;
   std::copy(normal.c.begin(), normal.c.end(), n.begin());
   return n;
 }
 
-std::vector<Vec3d> triangleNormalPatch(int degree, std::span<const Vec3d> net) {
+std::vector<mesh::Vec3d> triangleNormalPatch(int degree, std::span<const mesh::Vec3d> net) {
   if (degree < 1 || int(net.size()) != triangleNetSize(degree)) {
     throw std::invalid_argument("triangleNormalPatch: a degree " + std::to_string(degree) +
                                 " net has " + std::to_string(triangleNetSize(degree)) +
                                 " points, got " + std::to_string(net.size()));
   }
-  TrianglePoly<Vec3d> patch(degree);
+  TrianglePoly<mesh::Vec3d> patch(degree);
   patch.c.assign(net.begin(), net.end());
   return (derivativeToward(patch, 1) * derivativeToward(patch, 2)).c;
 }
 
-std::vector<Vec3d> withoutZeros(std::span<const Vec3d> vectors) {
-  std::vector<Vec3d> out;
-  for (const Vec3d& v : vectors) {
+std::vector<mesh::Vec3d> withoutZeros(std::span<const mesh::Vec3d> vectors) {
+  std::vector<mesh::Vec3d> out;
+  for (const mesh::Vec3d& v : vectors) {
     if (!(v.x == 0 && v.y == 0 && v.z == 0)) out.push_back(v);
   }
   return out;
 }
 
-std::vector<Vec3d> negated(std::vector<Vec3d> vectors) {
-  for (Vec3d& v : vectors) v = Vec3d{} - v;
+std::vector<mesh::Vec3d> negated(std::vector<mesh::Vec3d> vectors) {
+  for (mesh::Vec3d& v : vectors) v = mesh::Vec3d{} - v;
   return vectors;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -20,24 +20,24 @@
 #include "core/mesh/vec.h"
 #include "techniques/common/bernstein_poly.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // Control points N[m + 6 n] (m along u, n along v; bi-degree 5 x 5) of the normal patch
 // p_u x p_v of the bicubic Bézier patch b[i + 4 j] (i along u).
-std::array<Vec3d, 36> bicubicNormalPatch(const std::array<Vec3d, 16>& b);
+std::array<mesh::Vec3d, 36> bicubicNormalPatch(const std::array<mesh::Vec3d, 16>& b);
 
 // Control points, in bernstein_poly.h's triangle net order, of the degree 2n - 2 normal
 // patch D_1 x D_2 of the degree-n triangle patch `net` (n >= 1): D_1 = d/dv - d/du is the
 // derivative toward corner 1 with corner 2's weight fixed, D_2 = d/dw - d/du toward
 // corner 2. For corners 0, 1, 2 counter-clockwise seen from the front, the normals point
 // to the front.
-std::vector<Vec3d> triangleNormalPatch(int degree, std::span<const Vec3d> net);
+std::vector<mesh::Vec3d> triangleNormalPatch(int degree, std::span<const mesh::Vec3d> net);
 
 // `vectors` without its exact zeros.
-std::vector<Vec3d> withoutZeros(std::span<const Vec3d> vectors);
+std::vector<mesh::Vec3d> withoutZeros(std::span<const mesh::Vec3d> vectors);
 
 // Each vector negated: the generators of a patch whose parameterisation is mirrored
 // against its control face's winding.
-std::vector<Vec3d> negated(std::vector<Vec3d> vectors);
+std::vector<mesh::Vec3d> negated(std::vector<mesh::Vec3d> vectors);
 
-}  // namespace tb
+}  // namespace tb::techniques

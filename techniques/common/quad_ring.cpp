@@ -7,7 +7,7 @@
 #include "techniques/common/crease_refinement.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
 uint64_t directedKey(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
@@ -27,7 +27,7 @@ struct CornerIndex {
   std::vector<std::vector<CornerRef>> corners_of;
 };
 
-CornerIndex indexCorners(const Mesh& mesh, const std::string& technique) {
+CornerIndex indexCorners(const mesh::Mesh& mesh, const std::string& technique) {
   const auto fail = [&](const std::string& what) { failInput(technique, what); };
   const size_t face_count = mesh.faceCount();
   CornerIndex index;
@@ -36,20 +36,22 @@ CornerIndex indexCorners(const Mesh& mesh, const std::string& technique) {
   index.corners_of.resize(mesh.positions.size());
   for (uint32_t f = 0; f < face_count; ++f) {
     if (mesh.faceSize(f) != 4) {
-      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
+      fail(mesh::describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
            " vertices; needs quads");
     }
     const auto c = mesh.facePositions(f);
     for (uint32_t k = 0; k < 4; ++k) {
       for (uint32_t j = k + 1; j < 4; ++j) {
-        if (c[k] == c[j]) fail(describeFace(mesh, f) + " repeats a vertex; needs proper quads");
+        if (c[k] == c[j])
+          fail(mesh::describeFace(mesh, f) + " repeats a vertex; needs proper quads");
       }
     }
     for (uint32_t k = 0; k < 4; ++k) {
       const auto [it, inserted] = outgoing.emplace(directedKey(c[k], c[(k + 1) % 4]), CornerRef{f, k});
       if (!inserted) {
         fail("edge " + std::to_string(c[k]) + "-" + std::to_string(c[(k + 1) % 4]) + " of " +
-             describeFace(mesh, f) + " is also used by " + describeFace(mesh, it->second.face) +
+             mesh::describeFace(mesh, f) + " is also used by " +
+             mesh::describeFace(mesh, it->second.face) +
              " in the same direction (non-manifold or inconsistently oriented)");
       }
       index.corners_of[c[k]].push_back({f, k});
@@ -61,10 +63,14 @@ CornerIndex indexCorners(const Mesh& mesh, const std::string& technique) {
 // Walks the faces around each vertex, one ring per sector, into `rings`.
 class RingWalker {
  public:
-  RingWalker(const Mesh& mesh, const std::string& technique, uint32_t max_valence,
+  RingWalker(const mesh::Mesh& mesh, const std::string& technique, uint32_t max_valence,
              const CreasePreparation* creases, const CornerIndex& index, QuadRings& rings)
-      : mesh_(mesh), technique_(technique), max_valence_(max_valence), creases_(creases),
-        outgoing_(index.outgoing), rings_(rings) {}
+      : mesh_(mesh),
+        technique_(technique),
+        max_valence_(max_valence),
+        creases_(creases),
+        outgoing_(index.outgoing),
+        rings_(rings) {}
 
   void walkVertex(uint32_t v, const std::vector<CornerRef>& corners) {
     // Sector starts: the corners whose e_i edge ends a sector (no face on the other side,
@@ -151,7 +157,7 @@ class RingWalker {
     return ring;
   }
 
-  const Mesh& mesh_;
+  const mesh::Mesh& mesh_;
   const std::string& technique_;
   uint32_t max_valence_;
   const CreasePreparation* creases_;
@@ -161,17 +167,17 @@ class RingWalker {
 
 }  // namespace
 
-void requireManifoldQuads(const Mesh& mesh, const std::string& technique,
+void requireManifoldQuads(const mesh::Mesh& mesh, const std::string& technique,
                           const std::string& why_quads, const std::string& why_manifold) {
   const auto fail = [&](const std::string& what) { throw UnsupportedInput(technique + ": " + what); };
   if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) != 4) {
-      fail(describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) + " vertices; " +
-           why_quads);
+      fail(mesh::describeFace(mesh, f) + " has " + std::to_string(mesh.faceSize(f)) +
+           " vertices; " + why_quads);
     }
   }
-  for (const MeshEdge& edge : buildTopology(mesh).edges) {
+  for (const mesh::MeshEdge& edge : mesh::buildTopology(mesh).edges) {
     if (edge.face_count > 2) {
       fail("edge " + std::to_string(edge.v0) + "-" + std::to_string(edge.v1) + " is shared by " +
            std::to_string(edge.face_count) + " faces; " + why_manifold);
@@ -179,17 +185,17 @@ void requireManifoldQuads(const Mesh& mesh, const std::string& technique,
   }
 }
 
-std::string describeVertex(const Mesh& mesh, uint32_t vertex) {
+std::string describeVertex(const mesh::Mesh& mesh, uint32_t vertex) {
   std::ostringstream text;
   text << "vertex " << vertex;
   if (vertex < mesh.positions.size()) {
-    const Vec3d& p = mesh.positions[vertex];
+    const mesh::Vec3d& p = mesh.positions[vertex];
     text << " (" << p.x << ", " << p.y << ", " << p.z << ")";
   }
   return text.str();
 }
 
-QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence,
+QuadRings buildQuadRings(const mesh::Mesh& mesh, const std::string& technique, uint32_t max_valence,
                          const CreasePreparation* creases) {
   const size_t face_count = mesh.faceCount();
   const CornerIndex index = indexCorners(mesh, technique);
@@ -206,4 +212,4 @@ QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_
   return rings;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -19,7 +19,7 @@
 
 #include "core/mesh/mesh.h"
 
-namespace tb {
+namespace tb::techniques {
 
 struct CreasePreparation;
 
@@ -59,16 +59,16 @@ struct QuadRings {
 // than one fan, valence above max_valence. With `creases`, built over creases->control:
 // rings split at its sharp edges and corners marked from its vertex kinds; without, a
 // boundary vertex of one face is a corner (edge-and-corner interpolation).
-QuadRings buildQuadRings(const Mesh& mesh, const std::string& technique, uint32_t max_valence,
+QuadRings buildQuadRings(const mesh::Mesh& mesh, const std::string& technique, uint32_t max_valence,
                          const CreasePreparation* creases = nullptr);
 
 // Throws UnsupportedInput "<technique>: ..." for a mesh without faces, its first face that is
 // not a quad ("face 3 (line 12) has 5 vertices; <why_quads>") and its first edge shared by
 // three or more faces ("edge 4-7 is shared by 3 faces; <why_manifold>").
-void requireManifoldQuads(const Mesh& mesh, const std::string& technique,
+void requireManifoldQuads(const mesh::Mesh& mesh, const std::string& technique,
                           const std::string& why_quads, const std::string& why_manifold);
 
 // "vertex 12 (0.5, 1, 0)" for error messages.
-std::string describeVertex(const Mesh& mesh, uint32_t vertex);
+std::string describeVertex(const mesh::Mesh& mesh, uint32_t vertex);
 
-}  // namespace tb
+}  // namespace tb::techniques

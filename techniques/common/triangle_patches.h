@@ -12,16 +12,16 @@
 #include "core/mesh/triangulate.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::techniques {
 
 class TrianglePatchesBase : public SurfacePatches {
  public:
-  explicit TrianglePatchesBase(Triangulation triangulation)
-      : tri_(std::move(triangulation)), warnings_(triangulationWarnings(tri_)) {}
+  explicit TrianglePatchesBase(mesh::Triangulation triangulation)
+      : tri_(std::move(triangulation)), warnings_(mesh::triangulationWarnings(tri_)) {}
 
   PatchDomain patchDomain(size_t) const override { return PatchDomain::kTriangle; }
   size_t patchCount() const override { return tri_.mesh.faceCount(); }
-  const Mesh& controlMesh() const override { return tri_.mesh; }
+  const mesh::Mesh& controlMesh() const override { return tri_.mesh; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = tri_.mesh.facePositions(patch);
     return {face[0], face[1], face[2], UINT32_MAX};
@@ -30,8 +30,8 @@ class TrianglePatchesBase : public SurfacePatches {
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
  protected:
-  Triangulation tri_;
+  mesh::Triangulation tri_;
   std::vector<std::string> warnings_;
 };
 
-}  // namespace tb
+}  // namespace tb::techniques

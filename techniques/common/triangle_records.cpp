@@ -8,10 +8,10 @@
 
 #include "core/mesh/topology.h"
 
-namespace tb {
+namespace tb::techniques {
 namespace {
 
-bool lexLess(const Vec3d& a, const Vec3d& b) {
+bool lexLess(const mesh::Vec3d& a, const mesh::Vec3d& b) {
   for (int k = 0; k < 3; ++k) {
     if (a[k] != b[k]) return a[k] < b[k];
   }
@@ -21,12 +21,12 @@ bool lexLess(const Vec3d& a, const Vec3d& b) {
 // Face corner indices sorted by position (then position index): both faces of a
 // shared edge see its two ends in the same order, because welded positions are
 // bitwise equal.
-std::array<uint32_t, 3> canonicalOrder(const Mesh& mesh, size_t face) {
+std::array<uint32_t, 3> canonicalOrder(const mesh::Mesh& mesh, size_t face) {
   const auto pos = mesh.facePositions(face);
   std::array<uint32_t, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    const Vec3d& pa = mesh.positions[pos[a]];
-    const Vec3d& pb = mesh.positions[pos[b]];
+    const mesh::Vec3d& pa = mesh.positions[pos[a]];
+    const mesh::Vec3d& pb = mesh.positions[pos[b]];
     if (lexLess(pa, pb)) return true;
     if (lexLess(pb, pa)) return false;
     return pos[a] < pos[b];
@@ -43,15 +43,15 @@ using EdgeKey = std::pair<uint32_t, uint32_t>;  // welded positions, lower first
 
 // The mesh seen through its welding: corners by welded position, normals by index.
 struct WeldedMesh {
-  const Mesh& mesh;
-  Welding weld;
+  const mesh::Mesh& mesh;
+  mesh::Welding weld;
   uint32_t weldedAt(size_t face, uint32_t corner) const {
     return weld.canonical[mesh.corner_positions[mesh.face_offsets[face] + corner]];
   }
   uint32_t normalAt(size_t face, uint32_t corner) const {
     return uint32_t(mesh.corner_normals[mesh.face_offsets[face] + corner]);
   }
-  Vec3d unitNormal(uint32_t index) const { return normalize(mesh.normals[index]); }
+  mesh::Vec3d unitNormal(uint32_t index) const { return normalize(mesh.normals[index]); }
 };
 
 // Every edge by welded position pair, whether it is split (its faces disagree on the unit
@@ -95,11 +95,11 @@ EdgeTable collectEdges(const WeldedMesh& w, TriangleRecords* build) {
 // and renormalised; the same value for every face at that position. Appends them to
 // build->normals and returns each welded position's index there (UINT32_MAX: unused).
 std::vector<uint32_t> appendGeometryNormals(const WeldedMesh& w, TriangleRecords* build) {
-  std::vector<std::vector<Vec3d>> distinct(w.mesh.positions.size());
+  std::vector<std::vector<mesh::Vec3d>> distinct(w.mesh.positions.size());
   for (size_t f = 0; f < w.mesh.faceCount(); ++f) {
     for (uint32_t k = 0; k < 3; ++k) {
       auto& list = distinct[w.weldedAt(f, k)];
-      const Vec3d n = w.unitNormal(w.normalAt(f, k));
+      const mesh::Vec3d n = w.unitNormal(w.normalAt(f, k));
       if (std::find(list.begin(), list.end(), n) == list.end()) list.push_back(n);
     }
   }
@@ -107,8 +107,8 @@ std::vector<uint32_t> appendGeometryNormals(const WeldedMesh& w, TriangleRecords
   for (size_t v = 0; v < distinct.size(); ++v) {
     if (distinct[v].empty()) continue;
     std::sort(distinct[v].begin(), distinct[v].end(), lexLess);
-    Vec3d sum{};
-    for (const Vec3d& n : distinct[v]) sum = sum + n;
+    mesh::Vec3d sum{};
+    for (const mesh::Vec3d& n : distinct[v]) sum = sum + n;
     geometry_index[v] = uint32_t(build->normals.size());
     build->normals.push_back(normalize(sum));
     ++build->geometry_normal_count;
@@ -122,9 +122,9 @@ double roundingScale(const WeldedMesh& w, const TriangleRecords& build,
                      const TriangleRecordOptions& options, const TriangleRecord& r, int e,
                      bool flagged, const EdgeKey& key, double mean_edge) {
   if (options.rounding <= 0) return 1.0;
-  const Vec3d na = normalize(
+  const mesh::Vec3d na = normalize(
       build.normals[flagged ? r.geometry_normal[kEdgeEnds[e][0]] : r.normal[kEdgeEnds[e][0]]]);
-  const Vec3d nb = normalize(
+  const mesh::Vec3d nb = normalize(
       build.normals[flagged ? r.geometry_normal[kEdgeEnds[e][1]] : r.normal[kEdgeEnds[e][1]]]);
   const double len = length(w.mesh.positions[key.second] - w.mesh.positions[key.first]);
   const double c = options.rounding * mean_edge;
@@ -180,10 +180,10 @@ TriangleRecord buildRecord(const WeldedMesh& w, const EdgeTable& edges,
 
 }  // namespace
 
-TriangleRecords buildTriangleRecords(const Mesh& mesh, const TriangleRecordOptions& options) {
+TriangleRecords buildTriangleRecords(const mesh::Mesh& mesh, const TriangleRecordOptions& options) {
   TriangleRecords build;
   build.normals = mesh.normals;
-  const WeldedMesh welded{mesh, weldByPosition(mesh)};
+  const WeldedMesh welded{mesh, mesh::weldByPosition(mesh)};
   const EdgeTable edges = collectEdges(welded, &build);
   const std::vector<uint32_t> geometry_index = appendGeometryNormals(welded, &build);
   build.records.resize(mesh.faceCount());
@@ -193,4 +193,4 @@ TriangleRecords buildTriangleRecords(const Mesh& mesh, const TriangleRecordOptio
   return build;
 }
 
-}  // namespace tb
+}  // namespace tb::techniques

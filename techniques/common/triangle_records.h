@@ -12,7 +12,7 @@
 #include "core/mesh/mesh.h"
 #include "core/mesh/vec.h"
 
-namespace tb {
+namespace tb::techniques {
 
 // Edges in canonical order: edge e joins labels kEdgeEnds[e][0] < kEdgeEnds[e][1].
 inline constexpr int kEdgeEnds[3][2] = {{0, 1}, {0, 2}, {1, 2}};
@@ -57,7 +57,7 @@ enum TriangleRecordWord : uint32_t {
 };
 
 struct TriangleRecords {
-  std::vector<Vec3d> normals;  // the mesh's normals as read, then the geometry normals (unit)
+  std::vector<mesh::Vec3d> normals;  // the mesh's normals as read, then the geometry normals (unit)
   std::vector<TriangleRecord> records;  // one per triangle
   size_t split_edges = 0;               // shared edges whose faces disagree on a normal
   size_t boundary_edges = 0;            // edges with one face after welding by position
@@ -65,6 +65,6 @@ struct TriangleRecords {
 };
 
 // `mesh` must be all triangles with normals on every corner.
-TriangleRecords buildTriangleRecords(const Mesh& mesh, const TriangleRecordOptions& options);
+TriangleRecords buildTriangleRecords(const mesh::Mesh& mesh, const TriangleRecordOptions& options);
 
-}  // namespace tb
+}  // namespace tb::techniques

@@ -18,9 +18,9 @@ constexpr uint64_t kStencilEntryBytes = 8;      // uvec2 (vertex index, float we
 constexpr uint64_t kStencilOffsetBytes = 4;     // uint per stencil + 1
 constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control point
 
-class GregoryPatches final : public SurfacePatches {
+class GregoryPatches final : public techniques::SurfacePatches {
  public:
-  GregoryPatches(const Mesh& mesh, bool symmetric_edges, TangentMask mask,
+  GregoryPatches(const mesh::Mesh& mesh, bool symmetric_edges, TangentMask mask,
                  NonQuadFaces non_quads, size_t crease_face_budget)
       : build_(buildGregory(mesh, mask, non_quads, crease_face_budget)),
         positions_(build_.creases.control.positions),
@@ -37,11 +37,11 @@ class GregoryPatches final : public SurfacePatches {
           " quad Gregory patches built on the refined mesh");
     }
     for (size_t p = 0; p < patchCount(); ++p) {
-      (patchDomain(p) == PatchDomain::kQuad ? quad_patches_ : triangle_patches_)
+      (patchDomain(p) == techniques::PatchDomain::kQuad ? quad_patches_ : triangle_patches_)
           .push_back(uint32_t(p));
     }
     positions_f_.reserve(positions_.size());
-    for (const Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
+    for (const mesh::Vec3d& p : positions_) positions_f_.push_back(vecCast<float>(p));
     weights_f_.reserve(stencils_.weights.size());
     for (double w : stencils_.weights) weights_f_.push_back(float(w));
     // The control points of every patch, once (what the TCS computes per draw).
@@ -59,12 +59,15 @@ class GregoryPatches final : public SurfacePatches {
 
   // Quads, and (unless the mesh was refined) triangles: patch p is face p; the faces
   // after patchCount() are holes.
-  PatchDomain patchDomain(size_t patch) const override {
-    return build_.control.faceSize(patch) == 3 ? PatchDomain::kTriangle : PatchDomain::kQuad;
+  techniques::PatchDomain patchDomain(size_t patch) const override {
+    return build_.control.faceSize(patch) == 3 ? techniques::PatchDomain::kTriangle
+                                               : techniques::PatchDomain::kQuad;
   }
-  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
+  techniques::LimitScheme approximates() const override {
+    return techniques::LimitScheme::kCatmullClark;
+  }
   size_t patchCount() const override { return build_.patch_count; }
-  const Mesh& controlMesh() const override { return build_.control; }
+  const mesh::Mesh& controlMesh() const override { return build_.control; }
 
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = build_.control.facePositions(patch);
@@ -73,21 +76,23 @@ class GregoryPatches final : public SurfacePatches {
 
   uint32_t sourceFace(size_t patch) const override { return build_.source_face[patch]; }
 
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
     const GregoryPoint<double> point = evaluatePatch(points_d_[patch], patch, coord);
     return {point.position, point.normal};
   }
 
-  std::unique_ptr<BatchPattern> makeBatchPattern(PatchDomain domain,
-                                                 std::vector<DomainCoord> coords,
-                                                 BatchOutput output) const override {
+  std::unique_ptr<techniques::BatchPattern> makeBatchPattern(
+      techniques::PatchDomain domain, std::vector<techniques::DomainCoord> coords,
+      techniques::BatchOutput output) const override {
     return std::make_unique<GregoryBatchPattern>(domain, std::move(coords), output,
                                                  symmetric_edges_);
   }
 
   // Patterns made by another gregory_acc surface are used as they are when their edge
   // rule is this one's; anything else goes point by point.
-  void evaluateBatch(size_t patch, const BatchPattern& pattern, BatchPoints& out) const override {
+  void evaluateBatch(size_t patch, const techniques::BatchPattern& pattern,
+                     techniques::BatchPoints& out) const override {
     const auto* gregory = dynamic_cast<const GregoryBatchPattern*>(&pattern);
     if (gregory == nullptr || gregory->symmetricEdges() != symmetric_edges_ ||
         gregory->domain() != patchDomain(patch)) {
@@ -96,15 +101,17 @@ class GregoryPatches final : public SurfacePatches {
     gregory->evaluate(points_d_[patch], out);
   }
 
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch,
+                                          const tess::DomainPoint& coord) const override {
     const GregoryPoint<float> point = evaluatePatch(points_f_[patch], patch, coord);
     return {point.position, point.normal};
   }
 
   // gregory_bounds.h: the control points, and the cone of the rational patch's normals.
-  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
-    return patchDomain(patch) == PatchDomain::kTriangle ? gregoryTriangleCullBounds(points_d_[patch])
-                                                         : gregoryQuadCullBounds(points_d_[patch]);
+  std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
+    return patchDomain(patch) == techniques::PatchDomain::kTriangle
+               ? gregoryTriangleCullBounds(points_d_[patch])
+               : gregoryQuadCullBounds(points_d_[patch]);
   }
 
   // One program per domain present: the quads' (20 control points per patch) and the
@@ -140,7 +147,7 @@ class GregoryPatches final : public SurfacePatches {
   gpu::GpuPatchProgram sharedBuffersProgram() const {
     gpu::GpuPatchProgram program;
     std::vector<uint32_t> vertices;
-    for (const Vec3f& p : positions_f_) {
+    for (const mesh::Vec3f& p : positions_f_) {
       for (float x : {p.x, p.y, p.z, 1.0f}) vertices.push_back(std::bit_cast<uint32_t>(x));
     }
     std::vector<uint32_t> entries;
@@ -156,7 +163,7 @@ class GregoryPatches final : public SurfacePatches {
   template <class T>
   GregoryPoint<T> evaluatePatch(const GregoryPoints<T>& cp, size_t patch,
                                 const auto& coord) const {
-    if (patchDomain(patch) == PatchDomain::kTriangle) {
+    if (patchDomain(patch) == techniques::PatchDomain::kTriangle) {
       return evaluateGregoryTriangle(cp, T(coord[0]), T(coord[1]), T(coord[2]),
                                      symmetric_edges_);
     }
@@ -164,28 +171,27 @@ class GregoryPatches final : public SurfacePatches {
   }
 
  public:
-
-  std::optional<OperationProfile> operationProfile(size_t patch) const override {
-    using C = CountingScalar<float>;
-    OperationProfile profile;
-    resetOperationCounts();
+  std::optional<techniques::OperationProfile> operationProfile(size_t patch) const override {
+    using C = techniques::CountingScalar<float>;
+    techniques::OperationProfile profile;
+    techniques::resetOperationCounts();
     const GregoryPoints<C> cp = controlPoints<C>(
         patch,
         [this](uint32_t i) {
-          const Vec3f& p = positions_f_[i];
-          return Vec3T<C>{p.x, p.y, p.z};
+          const mesh::Vec3f& p = positions_f_[i];
+          return mesh::Vec3T<C>{p.x, p.y, p.z};
         },
         [this](uint32_t k) { return C(weights_f_[k]); });
-    profile.per_patch_setup = operationCounts();
-    resetOperationCounts();
-    const bool triangle = patchDomain(patch) == PatchDomain::kTriangle;
+    profile.per_patch_setup = techniques::operationCounts();
+    techniques::resetOperationCounts();
+    const bool triangle = patchDomain(patch) == techniques::PatchDomain::kTriangle;
     if (triangle) {
       evaluateGregoryTriangle(cp, C(0.25f), C(0.375f), C(0.375f), symmetric_edges_);
     } else {
       evaluateGregory(cp, C(0.3f), C(0.6f), symmetric_edges_);
     }
-    profile.per_vertex = operationCounts();
-    resetOperationCounts();
+    profile.per_vertex = techniques::operationCounts();
+    techniques::resetOperationCounts();
     profile.note = std::string(triangle ? "15 stencil sums per triangle patch (TCS); "
                                         : "20 stencil sums per quad patch (TCS); ") +
                    "interior point, " + (symmetric_edges_ ? "edge_symmetric" : "asymmetric") +
@@ -193,8 +199,8 @@ class GregoryPatches final : public SurfacePatches {
     return profile;
   }
 
-  DataFootprint footprint() const override {
-    DataFootprint footprint;
+  techniques::DataFootprint footprint() const override {
+    techniques::DataFootprint footprint;
     footprint.control_mesh_bytes = positions_.size() * kGpuVertexBytes;
     footprint.patch_data_bytes =
         (quad_patches_.size() * kPointsPerPatch + triangle_patches_.size() * kPointsPerTriangle) *
@@ -212,7 +218,7 @@ class GregoryPatches final : public SurfacePatches {
                                  const WeightAt& weight) const {
     GregoryPoints<T> cp{};
     const uint32_t points =
-        patchDomain(patch) == PatchDomain::kQuad ? kPointsPerPatch : kPointsPerTriangle;
+        patchDomain(patch) == techniques::PatchDomain::kQuad ? kPointsPerPatch : kPointsPerTriangle;
     for (uint32_t i = 0; i < points; ++i) {
       cp[i] = stencilPoint<T>(stencils_, stencils_.patch_points[patch][i], position, weight);
     }
@@ -220,10 +226,10 @@ class GregoryPatches final : public SurfacePatches {
   }
 
   GregoryBuild build_;
-  std::vector<Vec3d> positions_;  // build_.creases.control's, which every stencil reads
+  std::vector<mesh::Vec3d> positions_;  // build_.creases.control's, which every stencil reads
   const GregoryStencils& stencils_;
   bool symmetric_edges_;
-  std::vector<Vec3f> positions_f_;
+  std::vector<mesh::Vec3f> positions_f_;
   std::vector<float> weights_f_;
   std::vector<GregoryPoints<double>> points_d_;
   std::vector<GregoryPoints<float>> points_f_;
@@ -233,9 +239,10 @@ class GregoryPatches final : public SurfacePatches {
 
 }  // namespace
 
-const TechniqueInfo& GregoryAccTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "gregory_acc", TechniqueFamily::kSurface, "Gregory ACC (quad and triangle Gregory patches)",
+const techniques::TechniqueInfo& GregoryAccTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "gregory_acc", techniques::TechniqueFamily::kSurface,
+      "Gregory ACC (quad and triangle Gregory patches)",
       "Loop, Schaefer, Ni & Castaño, Approximating Subdivision Surfaces with Gregory Patches "
       "for Hardware Tessellation, ACM TOG 28(5) (SIGGRAPH Asia 2009)",
       "manifold Catmull-Clark meshes, valence 3..256, face size 3..32; creases, corners, holes "
@@ -246,7 +253,7 @@ const TechniqueInfo& GregoryAccTechnique::info() const {
   return kInfo;
 }
 
-std::vector<VariantInfo> GregoryAccTechnique::variants() const {
+std::vector<techniques::VariantInfo> GregoryAccTechnique::variants() const {
   return {
       {"edge_symmetric",
        "tensor-product Bernstein inside; domain-boundary points from the shared edge curve "
@@ -271,28 +278,28 @@ std::vector<VariantInfo> GregoryAccTechnique::variants() const {
   };
 }
 
-std::string GregoryAccTechnique::checkSupport(const Mesh& mesh) const {
+std::string GregoryAccTechnique::checkSupport(const mesh::Mesh& mesh) const {
   return checkGregorySupport(mesh);
 }
 
-std::unique_ptr<TechniqueInstance> GregoryAccTechnique::build(const TechniqueInput& input,
-                                                              const VariantInfo& variant) const {
-  const Mesh& mesh = requireMesh(info(), input);
-  const bool symmetric_edges = paramOr<bool>(info(), variant, "symmetric_edges", true);
-  const TangentMask mask = paramOr<bool>(info(), variant, "exact_tangents", false)
+std::unique_ptr<techniques::TechniqueInstance> GregoryAccTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
+  const mesh::Mesh& mesh = techniques::requireMesh(info(), input);
+  const bool symmetric_edges = techniques::paramOr<bool>(info(), variant, "symmetric_edges", true);
+  const TangentMask mask = techniques::paramOr<bool>(info(), variant, "exact_tangents", false)
                                ? TangentMask::kExactLimit
                                : TangentMask::kPaper;
-  const NonQuadFaces non_quads = paramOr<bool>(info(), variant, "quads_only", false)
+  const NonQuadFaces non_quads = techniques::paramOr<bool>(info(), variant, "quads_only", false)
                                      ? NonQuadFaces::kRefineOnce
                                      : NonQuadFaces::kTrianglePatches;
-  return std::make_unique<SurfaceInstance>(std::make_unique<GregoryPatches>(
+  return std::make_unique<techniques::SurfaceInstance>(std::make_unique<GregoryPatches>(
       mesh, symmetric_edges, mask, non_quads, variantCreaseFaceBudget(variant)));
 }
 
-size_t variantCreaseFaceBudget(const VariantInfo& variant) {
-  return size_t(std::max(1.0, paramOr<double>(GregoryAccTechnique().info(), variant,
-                                              "crease_face_budget",
-                                              double(kDefaultCreaseFaceBudget))));
+size_t variantCreaseFaceBudget(const techniques::VariantInfo& variant) {
+  return size_t(std::max(
+      1.0, techniques::paramOr<double>(GregoryAccTechnique().info(), variant, "crease_face_budget",
+                                       double(techniques::kDefaultCreaseFaceBudget))));
 }
 
 TB_REGISTER_TECHNIQUE(GregoryAccTechnique);

@@ -10,17 +10,18 @@
 
 namespace tb::gregory_acc {
 
-class GregoryAccTechnique final : public Technique {
+class GregoryAccTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
+  const techniques::TechniqueInfo& info() const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
 };
 
 // Parameter "crease_face_budget" of a variant: faces the refinement of semi-sharp creases
 // may reach (kDefaultCreaseFaceBudget in techniques/common/crease_refinement.h when absent).
-size_t variantCreaseFaceBudget(const VariantInfo& variant);
+size_t variantCreaseFaceBudget(const techniques::VariantInfo& variant);
 
 }  // namespace tb::gregory_acc

@@ -19,19 +19,19 @@
 
 namespace tb::gregory_acc {
 
-class GregoryBatchPattern final : public BatchPattern {
+class GregoryBatchPattern final : public techniques::BatchPattern {
  public:
-  GregoryBatchPattern(PatchDomain domain, std::vector<DomainCoord> coords, BatchOutput output,
-                      bool symmetric_edges);
+  GregoryBatchPattern(techniques::PatchDomain domain, std::vector<techniques::DomainCoord> coords,
+                      techniques::BatchOutput output, bool symmetric_edges);
   double multiplyAddsPerPoint() const override { return 9.0 * double(controlPoints()); }
   bool symmetricEdges() const { return symmetric_edges_; }
   // Every point of the pattern on the patch with these control points.
-  void evaluate(const GregoryPoints<double>& patch, BatchPoints& out) const;
+  void evaluate(const GregoryPoints<double>& patch, techniques::BatchPoints& out) const;
 
  private:
   size_t controlPoints() const { return position_.controlPoints(); }
   bool symmetric_edges_;
-  BasisTable position_, tangent_u_, tangent_v_;
+  techniques::BasisTable position_, tangent_u_, tangent_v_;
 };
 
 }  // namespace tb::gregory_acc

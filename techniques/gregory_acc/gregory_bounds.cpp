@@ -18,16 +18,20 @@ struct Blend {
 
 // Quad: corner 0 blends (u, v), 1 (v, 1-u), 2 (1-u, 1-v), 3 (1-v, u); bilinear() takes
 // values at (0,0), (1,0), (0,1), (1,1).
-std::array<Blend<QuadPoly<double>>, 4> quadBlends() {
-  const QuadPoly<double> u = bilinear(0, 1, 0, 1), v = bilinear(0, 0, 1, 1);
-  const QuadPoly<double> iu = bilinear(1, 0, 1, 0), iv = bilinear(1, 1, 0, 0);
+std::array<Blend<techniques::QuadPoly<double>>, 4> quadBlends() {
+  const techniques::QuadPoly<double> u = techniques::bilinear(0, 1, 0, 1),
+                                     v = techniques::bilinear(0, 0, 1, 1);
+  const techniques::QuadPoly<double> iu = techniques::bilinear(1, 0, 1, 0),
+                                     iv = techniques::bilinear(1, 1, 0, 0);
   return {{{u, v}, {v, iu}, {iu, iv}, {iv, u}}};
 }
 
 // Triangle: corner 0 blends (v, w), 1 (w, u), 2 (u, v); linear() takes values at corners
 // 0, 1, 2.
-std::array<Blend<TrianglePoly<double>>, 3> triangleBlends() {
-  const TrianglePoly<double> u = linear(1, 0, 0), v = linear(0, 1, 0), w = linear(0, 0, 1);
+std::array<Blend<techniques::TrianglePoly<double>>, 3> triangleBlends() {
+  const techniques::TrianglePoly<double> u = techniques::linear(1, 0, 0),
+                                         v = techniques::linear(0, 1, 0),
+                                         w = techniques::linear(0, 0, 1);
   return {{{v, w}, {w, u}, {u, v}}};
 }
 
@@ -66,69 +70,73 @@ VectorPoly scaledDerivative(const VectorPoly& frozen, const std::array<ScalarPol
                             const Along& along) {
   VectorPoly x = squaredDenominators(blends, -1, one) * along(frozen);
   for (size_t c = 0; c < N; ++c) {
-    const Vec3d& fp = cp[c * 5 + kFp];
-    const Vec3d& fm = cp[c * 5 + kFm];
+    const mesh::Vec3d& fp = cp[c * 5 + kFp];
+    const mesh::Vec3d& fm = cp[c * 5 + kFm];
     const ScalarPoly& a = blends[c].a;
     const ScalarPoly& b = blends[c].b;
     const ScalarPoly others = squaredDenominators(blends, int(c), one);
-    const VectorPoly n = times(a, fp) + times(b, fm);
+    const VectorPoly n = techniques::times(a, fp) + techniques::times(b, fm);
     const ScalarPoly slope = along(a) * b + scaled(along(b) * a, -1.0);  // a_t b - b_t a
     x = x + (others * (along(basis[c]) * (a + b))) * n;
-    x = x + times(others * (basis[c] * slope), fp - fm);
+    x = x + techniques::times(others * (basis[c] * slope), fp - fm);
   }
   return x;
 }
 
 }  // namespace
 
-PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp) {
-  std::array<std::array<Vec3d, 4>, 4> net{};
+techniques::PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp) {
+  std::array<std::array<mesh::Vec3d, 4>, 4> net{};
   setQuadBoundaryNet(cp, net);
-  QuadPoly<Vec3d> frozen(3, 3);
+  techniques::QuadPoly<mesh::Vec3d> frozen(3, 3);
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) frozen.at(i, j) = net[j][i];
   }
-  std::array<QuadPoly<double>, 4> basis;
+  std::array<techniques::QuadPoly<double>, 4> basis;
   for (const QuadNetInterior& slot : kQuadNetInterior) {
-    frozen.at(slot.column, slot.row) = Vec3d{};
-    basis[slot.corner] = QuadPoly<double>(3, 3);
+    frozen.at(slot.column, slot.row) = mesh::Vec3d{};
+    basis[slot.corner] = techniques::QuadPoly<double>(3, 3);
     basis[slot.corner].at(slot.column, slot.row) = 1;
   }
   const auto blends = quadBlends();
-  const QuadPoly<double> one = constant(QuadPoly<double>(0, 0));
-  const auto along_u = [](const auto& p) { return derivativeU(p); };
-  const auto along_v = [](const auto& p) { return derivativeV(p); };
-  const QuadPoly<Vec3d> x_u = scaledDerivative(frozen, basis, blends, cp, one, along_u);
-  const QuadPoly<Vec3d> x_v = scaledDerivative(frozen, basis, blends, cp, one, along_v);
+  const techniques::QuadPoly<double> one = constant(techniques::QuadPoly<double>(0, 0));
+  const auto along_u = [](const auto& p) { return techniques::derivativeU(p); };
+  const auto along_v = [](const auto& p) { return techniques::derivativeV(p); };
+  const techniques::QuadPoly<mesh::Vec3d> x_u =
+      scaledDerivative(frozen, basis, blends, cp, one, along_u);
+  const techniques::QuadPoly<mesh::Vec3d> x_v =
+      scaledDerivative(frozen, basis, blends, cp, one, along_v);
 
-  PatchCullBounds bounds;
+  techniques::PatchCullBounds bounds;
   bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerPatch);
-  bounds.normal_generators = withoutZeros((x_u * x_v).c);
+  bounds.normal_generators = techniques::withoutZeros((x_u * x_v).c);
   return bounds;
 }
 
-PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double>& cp) {
-  std::array<Vec3d, 15> net{};
+techniques::PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double>& cp) {
+  std::array<mesh::Vec3d, 15> net{};
   setTriangleBoundaryNet(cp, net);
   // gregory_eval.h's quarticSlot and bernstein_poly.h's triangleNetSlot order b_ijk alike.
-  TrianglePoly<Vec3d> frozen(4);
+  techniques::TrianglePoly<mesh::Vec3d> frozen(4);
   frozen.c.assign(net.begin(), net.end());
-  std::array<TrianglePoly<double>, 3> basis;
+  std::array<techniques::TrianglePoly<double>, 3> basis;
   for (const TriangleNetInterior& slot : kTriangleNetInterior) {
-    frozen.at(slot.i, slot.j) = Vec3d{};
-    basis[slot.corner] = TrianglePoly<double>(4);
+    frozen.at(slot.i, slot.j) = mesh::Vec3d{};
+    basis[slot.corner] = techniques::TrianglePoly<double>(4);
     basis[slot.corner].at(slot.i, slot.j) = 1;
   }
   const auto blends = triangleBlends();
-  const TrianglePoly<double> one = constant(TrianglePoly<double>(0));
-  const auto toward1 = [](const auto& p) { return derivativeToward(p, 1); };
-  const auto toward2 = [](const auto& p) { return derivativeToward(p, 2); };
-  const TrianglePoly<Vec3d> x_1 = scaledDerivative(frozen, basis, blends, cp, one, toward1);
-  const TrianglePoly<Vec3d> x_2 = scaledDerivative(frozen, basis, blends, cp, one, toward2);
+  const techniques::TrianglePoly<double> one = constant(techniques::TrianglePoly<double>(0));
+  const auto toward1 = [](const auto& p) { return techniques::derivativeToward(p, 1); };
+  const auto toward2 = [](const auto& p) { return techniques::derivativeToward(p, 2); };
+  const techniques::TrianglePoly<mesh::Vec3d> x_1 =
+      scaledDerivative(frozen, basis, blends, cp, one, toward1);
+  const techniques::TrianglePoly<mesh::Vec3d> x_2 =
+      scaledDerivative(frozen, basis, blends, cp, one, toward2);
 
-  PatchCullBounds bounds;
+  techniques::PatchCullBounds bounds;
   bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerTriangle);
-  bounds.normal_generators = withoutZeros((x_1 * x_2).c);
+  bounds.normal_generators = techniques::withoutZeros((x_1 * x_2).c);
   return bounds;
 }
 

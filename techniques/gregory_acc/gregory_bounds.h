@@ -40,7 +40,7 @@
 
 namespace tb::gregory_acc {
 
-PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp);
-PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double>& cp);
+techniques::PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp);
+techniques::PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double>& cp);
 
 }  // namespace tb::gregory_acc

@@ -11,12 +11,12 @@
 namespace tb::gregory_acc {
 
 template <class T>
-using GregoryPoints = std::array<Vec3T<T>, kPointsPerPatch>;  // corner * 5 + Slot
+using GregoryPoints = std::array<mesh::Vec3T<T>, kPointsPerPatch>;  // corner * 5 + Slot
 
 template <class T>
 struct GregoryPoint {
-  Vec3T<T> position;
-  Vec3T<T> normal;
+  mesh::Vec3T<T> position;
+  mesh::Vec3T<T> normal;
 };
 
 // Position and the two tangents whose cross product is the normal: ∂/∂u and ∂/∂v on a
@@ -24,17 +24,17 @@ struct GregoryPoint {
 // Linear in the control points for a fixed domain point (gregory_batch.h relies on it).
 template <class T>
 struct GregoryFrame {
-  Vec3T<T> position;
-  Vec3T<T> tangent_u;
-  Vec3T<T> tangent_v;
+  mesh::Vec3T<T> position;
+  mesh::Vec3T<T> tangent_u;
+  mesh::Vec3T<T> tangent_v;
 };
 
 // One control point as its stencil's weighted sum, ascending vertex index, from zero
 // (the TCS loop).
 template <class T, class PositionAt>
-Vec3T<T> stencilPoint(const GregoryStencils& stencils, uint32_t s, const PositionAt& position,
-                      const auto& weight) {
-  Vec3T<T> sum{T(0), T(0), T(0)};
+mesh::Vec3T<T> stencilPoint(const GregoryStencils& stencils, uint32_t s, const PositionAt& position,
+                            const auto& weight) {
+  mesh::Vec3T<T> sum{T(0), T(0), T(0)};
   for (uint32_t k = stencils.offsets[s]; k < stencils.offsets[s + 1]; ++k) {
     sum = sum + position(stencils.indices[k]) * weight(k);
   }
@@ -46,14 +46,14 @@ Vec3T<T> stencilPoint(const GregoryStencils& stencils, uint32_t s, const Positio
 // halves and float addition commutes, so both patches of an edge get the same bits
 // (seed 000's symmetric evaluation; docs/ARCHITECTURE.md §5 rule 2).
 template <class T>
-Vec3T<T> halfEdge(const Vec3T<T>& p, const Vec3T<T>& e, T x, T y) {
+mesh::Vec3T<T> halfEdge(const mesh::Vec3T<T>& p, const mesh::Vec3T<T>& e, T x, T y) {
   const T x2 = x * x;
   return p * (x2 * x) + e * ((T(3) * x2) * y);
 }
 
 template <class T>
-Vec3T<T> symmetricEdge(const Vec3T<T>& a, const Vec3T<T>& ea, const Vec3T<T>& eb,
-                       const Vec3T<T>& b, T t) {
+mesh::Vec3T<T> symmetricEdge(const mesh::Vec3T<T>& a, const mesh::Vec3T<T>& ea,
+                             const mesh::Vec3T<T>& eb, const mesh::Vec3T<T>& b, T t) {
   const T s = T(1) - t;
   return halfEdge(a, ea, s, t) + halfEdge(b, eb, t, s);
 }
@@ -70,17 +70,17 @@ void bernstein3(T t, std::array<T, 4>& b, std::array<T, 4>& d) {
 // derivatives of a and b (Loop et al. 2009 eq. 2). At the patch corner a + b = 0: the
 // point's Bernstein weight and derivative weight are zero there, so the mean is used.
 template <class T>
-void blendFace(const Vec3T<T>& fp, const Vec3T<T>& fm, T a, T b, T a_u, T b_u, T a_v, T b_v,
-               Vec3T<T>& q, Vec3T<T>& q_u, Vec3T<T>& q_v) {
+void blendFace(const mesh::Vec3T<T>& fp, const mesh::Vec3T<T>& fm, T a, T b, T a_u, T b_u, T a_v,
+               T b_v, mesh::Vec3T<T>& q, mesh::Vec3T<T>& q_u, mesh::Vec3T<T>& q_v) {
   const T sum = a + b;
   if (sum == T(0)) {
     q = (fp + fm) * T(0.5);
-    q_u = q_v = Vec3T<T>{T(0), T(0), T(0)};
+    q_u = q_v = mesh::Vec3T<T>{T(0), T(0), T(0)};
     return;
   }
   const T inv = T(1) / sum;
   q = (fp * a + fm * b) * inv;
-  const Vec3T<T> diff = (fp - fm) * (inv * inv);
+  const mesh::Vec3T<T> diff = (fp - fm) * (inv * inv);
   q_u = diff * (a_u * b - b_u * a);
   q_v = diff * (a_v * b - b_v * a);
 }
@@ -96,7 +96,8 @@ inline constexpr std::array<QuadNetInterior, 4> kQuadNetInterior{
     {{1, 1, 0}, {1, 2, 1}, {2, 2, 2}, {2, 1, 3}}};
 
 template <class T>
-void setQuadBoundaryNet(const GregoryPoints<T>& cp, std::array<std::array<Vec3T<T>, 4>, 4>& q) {
+void setQuadBoundaryNet(const GregoryPoints<T>& cp,
+                        std::array<std::array<mesh::Vec3T<T>, 4>, 4>& q) {
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
   q[0] = {at(0, kP), at(0, kEp), at(1, kEm), at(1, kP)};
   q[3] = {at(3, kP), at(3, kEm), at(2, kEp), at(2, kP)};
@@ -115,8 +116,8 @@ GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool 
   // 4x4 Bézier net q[j][i] (row j along v, column i along u); the four interior points
   // depend on (u, v). Corner c's interior point blends Fp (next to the edge to corner
   // c + 1) and Fm (next to the edge to corner c - 1), each taking over on its own edge.
-  std::array<std::array<Vec3T<T>, 4>, 4> q;
-  std::array<std::array<Vec3T<T>, 4>, 4> q_u{}, q_v{};
+  std::array<std::array<mesh::Vec3T<T>, 4>, 4> q;
+  std::array<std::array<mesh::Vec3T<T>, 4>, 4> q_u{}, q_v{};
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
   setQuadBoundaryNet(cp, q);
   blendFace(at(0, kFp), at(0, kFm), u, v, one, zero, zero, one, q[1][1], q_u[1][1], q_v[1][1]);
@@ -128,9 +129,9 @@ GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool 
   std::array<T, 4> bu, du, bv, dv;
   bernstein3(u, bu, du);
   bernstein3(v, bv, dv);
-  Vec3T<T> position{zero, zero, zero}, tangent_u = position, tangent_v = position;
+  mesh::Vec3T<T> position{zero, zero, zero}, tangent_u = position, tangent_v = position;
   for (int j = 0; j < 4; ++j) {
-    Vec3T<T> row{zero, zero, zero}, row_u = row;
+    mesh::Vec3T<T> row{zero, zero, zero}, row_u = row;
     for (int i = 0; i < 4; ++i) {
       row = row + q[j][i] * bu[i];
       row_u = row_u + q[j][i] * du[i];
@@ -204,11 +205,13 @@ inline constexpr std::array<TriangleNetInterior, 3> kTriangleNetInterior{
     {{2, 1, 1, 0}, {1, 2, 1, 1}, {1, 1, 2, 2}}};
 
 template <class T>
-void setTriangleBoundaryNet(const GregoryPoints<T>& cp, std::array<Vec3T<T>, 15>& b) {
+void setTriangleBoundaryNet(const GregoryPoints<T>& cp, std::array<mesh::Vec3T<T>, 15>& b) {
   const T quarter(0.25), half(0.5), three(3);
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
-  auto set = [&b](int i, int j, int k, const Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
-  auto nearEnd = [&](const Vec3T<T>& p, const Vec3T<T>& e) { return (p + e * three) * quarter; };
+  auto set = [&b](int i, int j, int k, const mesh::Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
+  auto nearEnd = [&](const mesh::Vec3T<T>& p, const mesh::Vec3T<T>& e) {
+    return (p + e * three) * quarter;
+  };
   set(4, 0, 0, at(0, kP));
   set(0, 4, 0, at(1, kP));
   set(0, 0, 4, at(2, kP));
@@ -242,12 +245,12 @@ GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T 
                                              bool symmetric_edges) {
   const T one(1), zero(0), four(4);
   auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
-  std::array<Vec3T<T>, 15> b;
-  auto set = [&b](int i, int j, int k, const Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
+  std::array<mesh::Vec3T<T>, 15> b;
+  auto set = [&b](int i, int j, int k, const mesh::Vec3T<T>& p) { b[quarticSlot(i, j, k)] = p; };
   setTriangleBoundaryNet(cp, b);
   // Interior blends with derivatives along a = d/dv - d/du and c = d/dw - d/du.
-  Vec3T<T> q_a[3], q_c[3];
-  Vec3T<T> q0, q1, q2;
+  mesh::Vec3T<T> q_a[3], q_c[3];
+  mesh::Vec3T<T> q0, q1, q2;
   blendFace(at(0, kFp), at(0, kFm), v, w, one, zero, zero, one, q0, q_a[0], q_c[0]);
   blendFace(at(1, kFp), at(1, kFm), w, u, zero, -one, one, -one, q1, q_a[1], q_c[1]);
   blendFace(at(2, kFp), at(2, kFm), u, v, -one, one, -one, zero, q2, q_a[2], q_c[2]);
@@ -261,14 +264,14 @@ GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T 
   auto basis = [&](const NetIndex& n) {
     return T(n.multinomial) * ((up[n.i] * vp[n.j]) * wp[n.k]);
   };
-  Vec3T<T> position{zero, zero, zero};
+  mesh::Vec3T<T> position{zero, zero, zero};
   for (const NetIndex& n : kQuarticNet) position = position + b[quarticSlot(n.i, n.j, n.k)] * basis(n);
   // Tangents: 4 sum over the cubic net of B3_ijk (b_i,j+1,k - b_i+1,j,k) (toward corner 1)
   // and (b_i,j,k+1 - b_i+1,j,k) (toward corner 2).
-  Vec3T<T> tangent_a{zero, zero, zero}, tangent_c = tangent_a;
+  mesh::Vec3T<T> tangent_a{zero, zero, zero}, tangent_c = tangent_a;
   for (const NetIndex& n : kCubicNet) {
     const T weight = basis(n);
-    const Vec3T<T>& base = b[quarticSlot(n.i + 1, n.j, n.k)];
+    const mesh::Vec3T<T>& base = b[quarticSlot(n.i + 1, n.j, n.k)];
     tangent_a = tangent_a + (b[quarticSlot(n.i, n.j + 1, n.k)] - base) * weight;
     tangent_c = tangent_c + (b[quarticSlot(n.i, n.j, n.k + 1)] - base) * weight;
   }

@@ -14,7 +14,7 @@ uint64_t edgeKey(uint32_t a, uint32_t b) {
 
 }  // namespace
 
-RefinedMesh refineOnce(const Mesh& mesh) {
+RefinedMesh refineOnce(const mesh::Mesh& mesh) {
   const uint32_t vertex_count = uint32_t(mesh.positions.size());
   RefinedMesh out;
   out.mesh.source = mesh.source;
@@ -89,7 +89,7 @@ RefinedMesh refineOnce(const Mesh& mesh) {
   out.stencils.insert(out.stencils.end(), edge_point.begin(), edge_point.end());
   out.stencils.insert(out.stencils.end(), face_point.begin(), face_point.end());
   for (const Stencil& s : out.stencils) {
-    Vec3d p{};
+    mesh::Vec3d p{};
     for (const auto& [index, weight] : s) p = p + mesh.positions[index] * weight;
     out.mesh.positions.push_back(p);
   }

@@ -21,7 +21,7 @@ struct RefinedMesh {
   // Positions: the input's vertex points first (same indices), then one edge point per
   // edge, then one face point per face. Face k of face f of the input is the quad
   // (vertex point k, edge point (k, k+1), face point, edge point (k-1, k)).
-  Mesh mesh;
+  mesh::Mesh mesh;
   std::vector<Stencil> stencils;      // per refined position, over input positions
   std::vector<uint32_t> source_face;  // input face of each refined face
   // Refined position of the edge point of input edge (a, b), either direction.
@@ -33,6 +33,6 @@ struct RefinedMesh {
 
 // Boundary edges are infinitely sharp and one-face boundary vertices are corners
 // (Sdc EDGE_AND_CORNER). Precondition: checkGregorySupport(mesh) is empty.
-RefinedMesh refineOnce(const Mesh& mesh);
+RefinedMesh refineOnce(const mesh::Mesh& mesh);
 
 }  // namespace tb::gregory_acc

@@ -98,7 +98,7 @@ Stencil twist(const Ring& ring, uint32_t i) {
   return r;
 }
 
-std::string prefix(const Mesh& mesh) { return "gregory_acc: " + mesh.source + ": "; }
+std::string prefix(const mesh::Mesh& mesh) { return "gregory_acc: " + mesh.source + ": "; }
 
 Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double scale) {
   Stencil out;
@@ -137,7 +137,7 @@ Stencil faceDiagonal(std::span<const uint32_t> fv, uint32_t k) {
   return d;
 }
 
-Rings buildRings(const Mesh& mesh) {
+Rings buildRings(const mesh::Mesh& mesh) {
   Rings out;
   out.rings.resize(mesh.positions.size());
   std::unordered_map<uint64_t, uint32_t> face_of_directed;  // (a -> b) -> face
@@ -148,7 +148,7 @@ Rings buildRings(const Mesh& mesh) {
       const uint32_t a = fv[k], b = fv[(k + 1) % fv.size()];
       if (!face_of_directed.emplace(directedKey(a, b), uint32_t(f)).second) {
         out.error = prefix(mesh) + "edge (" + std::to_string(a) + ", " + std::to_string(b) +
-                    ") is used twice in the same direction (" + describeFace(mesh, f) +
+                    ") is used twice in the same direction (" + mesh::describeFace(mesh, f) +
                     "); faces must be consistently oriented";
         return out;
       }
@@ -208,9 +208,11 @@ Rings buildRings(const Mesh& mesh) {
   return out;
 }
 
-std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole, const CreasePreparation& creases) {
-  const SharpVertexKind kind = creases.vertex_kind[v];
-  if (kind != SharpVertexKind::kCrease && kind != SharpVertexKind::kCorner) return {whole};
+std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole,
+                            const techniques::CreasePreparation& creases) {
+  const techniques::SharpVertexKind kind = creases.vertex_kind[v];
+  if (kind != techniques::SharpVertexKind::kCrease && kind != techniques::SharpVertexKind::kCorner)
+    return {whole};
   const uint32_t n = whole.valence();
   std::vector<uint32_t> cuts;  // neighbour indices where a sector starts or ends, ascending
   for (uint32_t i = 0; i < n; ++i) {
@@ -232,7 +234,7 @@ std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole, const CreasePreparati
   for (size_t s = 0; s + 1 < cuts.size(); ++s) {
     Ring sector;
     sector.boundary = true;
-    sector.corner = kind == SharpVertexKind::kCorner;
+    sector.corner = kind == techniques::SharpVertexKind::kCorner;
     sector.quads_only = whole.quads_only;
     sector.neighbour.assign(ring.neighbour.begin() + cuts[s], ring.neighbour.begin() + cuts[s + 1] + 1);
     sector.diagonal.assign(ring.diagonal.begin() + cuts[s], ring.diagonal.begin() + cuts[s + 1]);

@@ -87,7 +87,7 @@ VertexFrame boundaryFrame(uint32_t v, const Ring& ring);
 Stencil twist(const Ring& ring, uint32_t i);
 
 // "gregory_acc: <file>: ", the start of every message.
-std::string prefix(const Mesh& mesh);
+std::string prefix(const mesh::Mesh& mesh);
 
 // A stencil over refineOnce's positions as one over the input's, times `scale`.
 Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double scale);
@@ -112,13 +112,14 @@ struct Rings {
 
 // Walks every vertex's faces counter-clockwise; reports a vertex whose faces do not form
 // one closed fan (non-manifold vertex) or whose valence is out of range.
-Rings buildRings(const Mesh& mesh);
+Rings buildRings(const mesh::Mesh& mesh);
 
 // The rings of vertex v as the patches use them (Kovacs et al. 2009: a sharp edge is a
 // boundary for patch construction). Smooth vertices and darts keep their whole ring (a
 // dart: smooth rules); crease and corner vertices get one open ring per sector, cut at
 // their sharp edges (and, on a mesh boundary, at its two ends).
-std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole, const CreasePreparation& creases);
+std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole,
+                            const techniques::CreasePreparation& creases);
 
 // Corner sector (interpolated vertex v; its two sharp edges end at b0 = neighbour[0] and
 // b1 = neighbour[k]): the edge points along the sharp edges are the B-spline end rule

@@ -15,7 +15,7 @@
 namespace tb::gregory_acc {
 namespace {
 
-bool nativeFaces(const Mesh& mesh, NonQuadFaces non_quads) {
+bool nativeFaces(const mesh::Mesh& mesh, NonQuadFaces non_quads) {
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const uint32_t size = mesh.faceSize(f);
     if (size != 4 && (size != 3 || non_quads != NonQuadFaces::kTrianglePatches)) return false;
@@ -26,20 +26,20 @@ bool nativeFaces(const Mesh& mesh, NonQuadFaces non_quads) {
 // What the plain rings (buildRings, refineOnce) do not represent: creases, corner tags,
 // holes, a boundary with an interpolation other than edge-and-corner (a closed mesh's
 // boundary tag changes nothing).
-bool hasSharpFeatures(const Mesh& mesh) {
-  for (const Crease& crease : mesh.tags.creases) {
+bool hasSharpFeatures(const mesh::Mesh& mesh) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     if (crease.sharpness > 0) return true;
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     if (corner.sharpness > 0) return true;
   }
   if (!mesh.tags.holes.empty()) return true;
-  return mesh.tags.boundary != BoundaryInterpolation::kEdgeAndCorner &&
-         buildTopology(mesh).boundaryEdgeCount() > 0;
+  return mesh.tags.boundary != mesh::BoundaryInterpolation::kEdgeAndCorner &&
+         mesh::buildTopology(mesh).boundaryEdgeCount() > 0;
 }
 
 // The input rules that need no crease preparation.
-std::string checkInput(const Mesh& mesh) {
+std::string checkInput(const mesh::Mesh& mesh) {
   if (mesh.faceCount() == 0) return prefix(mesh) + "has no faces";
   if (mesh.tags.smooth_triangles) {
     return prefix(mesh) + "`t smoothtriangles` is not supported (plain Catmull-Clark only)";
@@ -47,20 +47,21 @@ std::string checkInput(const Mesh& mesh) {
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const uint32_t size = mesh.faceSize(f);
     if (size < 3 || size > kMaxFaceSize) {
-      return prefix(mesh) + describeFace(mesh, f) + " has " + std::to_string(size) +
+      return prefix(mesh) + mesh::describeFace(mesh, f) + " has " + std::to_string(size) +
              " vertices; gregory_acc needs 3.." + std::to_string(kMaxFaceSize);
     }
     const auto fv = mesh.facePositions(f);
     for (uint32_t a = 0; a < size; ++a) {
       for (uint32_t b = a + 1; b < size; ++b) {
         if (fv[a] == fv[b]) {
-          return prefix(mesh) + describeFace(mesh, f) + " repeats vertex " + std::to_string(fv[a]);
+          return prefix(mesh) + mesh::describeFace(mesh, f) + " repeats vertex " +
+                 std::to_string(fv[a]);
         }
       }
     }
   }
-  const Topology topology = buildTopology(mesh);
-  for (const MeshEdge& edge : topology.edges) {
+  const mesh::Topology topology = mesh::buildTopology(mesh);
+  for (const mesh::MeshEdge& edge : topology.edges) {
     if (edge.face_count > 2) {
       return prefix(mesh) + "edge (" + std::to_string(edge.v0) + ", " + std::to_string(edge.v1) +
              ") is non-manifold (" + std::to_string(edge.face_count) + " faces)";
@@ -74,19 +75,22 @@ std::string checkInput(const Mesh& mesh) {
 // and sharp features is refined once by OpenSubdiv, since refineOnce knows only smooth
 // rules and edge-and-corner boundaries. Throws UnsupportedInput for a cone point and for a
 // mesh with no face that has a limit surface.
-CreasePreparation prepareGregoryCreases(const Mesh& mesh, NonQuadFaces non_quads,
-                                        size_t face_budget) {
+techniques::CreasePreparation prepareGregoryCreases(const mesh::Mesh& mesh, NonQuadFaces non_quads,
+                                                    size_t face_budget) {
   const bool refine = !nativeFaces(mesh, non_quads) && hasSharpFeatures(mesh);
-  CreasePreparation creases = prepareCreases(mesh, "gregory_acc", face_budget, refine ? 1 : 0);
+  techniques::CreasePreparation creases =
+      techniques::prepareCreases(mesh, "gregory_acc", face_budget, refine ? 1 : 0);
   for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
-    if (creases.vertex_kind[v] == SharpVertexKind::kCone) {
-      throw UnsupportedInput(prefix(mesh) + describeVertex(creases.control, uint32_t(v)) +
-                             " is an infinitely sharp corner with fewer than two sharp edges "
-                             "(a cone point); Gregory patches cannot represent it");
+    if (creases.vertex_kind[v] == techniques::SharpVertexKind::kCone) {
+      throw techniques::UnsupportedInput(
+          prefix(mesh) + techniques::describeVertex(creases.control, uint32_t(v)) +
+          " is an infinitely sharp corner with fewer than two sharp edges "
+          "(a cone point); Gregory patches cannot represent it");
     }
   }
   if (creases.patch_faces == 0) {
-    throw UnsupportedInput(prefix(mesh) + "no face has a limit surface (all are holes)");
+    throw techniques::UnsupportedInput(prefix(mesh) +
+                                       "no face has a limit surface (all are holes)");
   }
   if (refine && creases.levels_needed == 0) {
     creases.notes.push_back(
@@ -94,18 +98,19 @@ CreasePreparation prepareGregoryCreases(const Mesh& mesh, NonQuadFaces non_quads
         "was refined once (OpenSubdiv) and patched with quads");
   }
   if (std::string error = buildRings(creases.control).error; !error.empty()) {
-    throw UnsupportedInput(error);
+    throw techniques::UnsupportedInput(error);
   }
   return creases;
 }
 
 }  // namespace
 
-std::string checkGregorySupport(const Mesh& mesh) {
+std::string checkGregorySupport(const mesh::Mesh& mesh) {
   if (std::string error = checkInput(mesh); !error.empty()) return error;
   try {
-    prepareGregoryCreases(mesh, NonQuadFaces::kTrianglePatches, kDefaultCreaseFaceBudget);
-  } catch (const UnsupportedInput& error) {
+    prepareGregoryCreases(mesh, NonQuadFaces::kTrianglePatches,
+                          techniques::kDefaultCreaseFaceBudget);
+  } catch (const techniques::UnsupportedInput& error) {
     return error.what();
   }
   return {};
@@ -122,7 +127,7 @@ namespace {
 // every such sector and required to come out identical before it is shared.
 class StencilBuilder {
  public:
-  StencilBuilder(const CreasePreparation& creases, TangentMask mask)
+  StencilBuilder(const techniques::CreasePreparation& creases, TangentMask mask)
       : mesh_(creases.control), creases_(creases), mask_(mask) {
     const std::vector<Ring> whole = buildRings(mesh_).rings;
     sectors_.resize(whole.size());
@@ -349,8 +354,8 @@ class StencilBuilder {
     }
   }
 
-  const Mesh& mesh_;
-  const CreasePreparation& creases_;
+  const mesh::Mesh& mesh_;
+  const techniques::CreasePreparation& creases_;
   const TangentMask mask_;
   std::vector<std::vector<Ring>> sectors_;  // per position: its whole ring or its sectors
   std::optional<RefinedMesh> refined_;
@@ -363,15 +368,16 @@ class StencilBuilder {
 
 // The plain rules' preparation of a mesh that has no sharp features beyond its
 // edge-and-corner boundary (refineOnce's output, buildGregoryStencils' input): never refined.
-CreasePreparation plainPreparation(const Mesh& mesh) {
-  return prepareCreases(mesh, "gregory_acc", 0);
+techniques::CreasePreparation plainPreparation(const mesh::Mesh& mesh) {
+  return techniques::prepareCreases(mesh, "gregory_acc", 0);
 }
 
-GregoryStencils stencilsOver(const CreasePreparation& creases, TangentMask mask) {
+GregoryStencils stencilsOver(const techniques::CreasePreparation& creases, TangentMask mask) {
   for (size_t f = 0; f < creases.control.faceCount(); ++f) {
     if (creases.control.faceSize(f) != 3 && creases.control.faceSize(f) != 4) {
-      throw UnsupportedInput(prefix(creases.control) + describeFace(creases.control, f) +
-                             ": buildGregoryStencils needs quads and triangles only");
+      throw techniques::UnsupportedInput(prefix(creases.control) +
+                                         mesh::describeFace(creases.control, f) +
+                                         ": buildGregoryStencils needs quads and triangles only");
     }
   }
   return StencilBuilder(creases, mask).build();
@@ -379,17 +385,19 @@ GregoryStencils stencilsOver(const CreasePreparation& creases, TangentMask mask)
 
 }  // namespace
 
-GregoryStencils buildGregoryStencils(const Mesh& mesh, TangentMask mask) {
-  if (std::string reason = checkInput(mesh); !reason.empty()) throw UnsupportedInput(reason);
+GregoryStencils buildGregoryStencils(const mesh::Mesh& mesh, TangentMask mask) {
+  if (std::string reason = checkInput(mesh); !reason.empty())
+    throw techniques::UnsupportedInput(reason);
   return stencilsOver(plainPreparation(mesh), mask);
 }
 
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask, NonQuadFaces non_quads,
+GregoryBuild buildGregory(const mesh::Mesh& mesh, TangentMask mask, NonQuadFaces non_quads,
                           size_t crease_face_budget) {
-  if (std::string reason = checkInput(mesh); !reason.empty()) throw UnsupportedInput(reason);
+  if (std::string reason = checkInput(mesh); !reason.empty())
+    throw techniques::UnsupportedInput(reason);
   GregoryBuild out;
   out.creases = prepareGregoryCreases(mesh, non_quads, crease_face_budget);
-  const Mesh& base = out.creases.control;
+  const mesh::Mesh& base = out.creases.control;
   if (nativeFaces(base, non_quads)) {
     out.control = base;
     out.stencils = stencilsOver(out.creases, mask);

@@ -75,7 +75,7 @@ struct GregoryStencils {
 // Empty when the mesh is supported; otherwise one line naming the first offending
 // element and the rule ("gregory_acc: <file>: face 3 (line 12) has 3 vertices; ...").
 // Checked with the default crease face budget.
-std::string checkGregorySupport(const Mesh& mesh);
+std::string checkGregorySupport(const mesh::Mesh& mesh);
 
 // Which tangent mask places the edge points (see vertexFrame in gregory_rings.cpp).
 enum class TangentMask {
@@ -89,7 +89,7 @@ enum class TangentMask {
 // tags as prepareCreases sees them without refining (a finite sharpness is rounded); patch
 // p is face p of that preparation's control mesh (the mesh's faces, holes moved last).
 // Throws tb::UnsupportedInput for an unsupported mesh.
-GregoryStencils buildGregoryStencils(const Mesh& mesh,
+GregoryStencils buildGregoryStencils(const mesh::Mesh& mesh,
                                      TangentMask mask = TangentMask::kPaper);
 
 // What becomes of faces that are not quads.
@@ -103,11 +103,11 @@ struct GregoryBuild {
   // The input prepared for creases: refined by OpenSubdiv while semi-sharp sharpness
   // remains (within the face budget), and once more when it has faces the patches do not
   // take natively next to sharp features; holes last. The stencils read its positions.
-  CreasePreparation creases;
+  techniques::CreasePreparation creases;
   // The mesh the patches are built over (patch p = its face p for p < patch_count):
   // creases.control when all its faces are quads (or quads and triangles, with
   // kTrianglePatches); otherwise creases.control refined once (refineOnce), all quads.
-  Mesh control;
+  mesh::Mesh control;
   bool refined = false;                // by refineOnce
   size_t patch_count = 0;              // faces of `control` with a patch (the rest: holes)
   std::vector<uint32_t> source_face;   // input face of each patch
@@ -116,8 +116,8 @@ struct GregoryBuild {
 
 // Throws tb::UnsupportedInput with checkGregorySupport's message. `crease_face_budget`:
 // prepareCreases' max_faces.
-GregoryBuild buildGregory(const Mesh& mesh, TangentMask mask = TangentMask::kPaper,
+GregoryBuild buildGregory(const mesh::Mesh& mesh, TangentMask mask = TangentMask::kPaper,
                           NonQuadFaces non_quads = NonQuadFaces::kTrianglePatches,
-                          size_t crease_face_budget = kDefaultCreaseFaceBudget);
+                          size_t crease_face_budget = techniques::kDefaultCreaseFaceBudget);
 
 }  // namespace tb::gregory_acc

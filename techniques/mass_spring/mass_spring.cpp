@@ -24,19 +24,19 @@ double hashUnit(uint64_t v, uint64_t axis) {
 // fraction of the mean spring length.
 constexpr double kConvergenceJitter = 0.3;
 
-Vec3f toFloat(const Vec3d& v) { return vecCast<float>(v); }
-Vec3d toDouble(const Vec3f& v) { return vecCast<double>(v); }
+mesh::Vec3f toFloat(const mesh::Vec3d& v) { return vecCast<float>(v); }
+mesh::Vec3d toDouble(const mesh::Vec3f& v) { return vecCast<double>(v); }
 
-std::vector<Vec3d> toDouble(const std::vector<Vec3f>& v) {
-  std::vector<Vec3d> out(v.size());
+std::vector<mesh::Vec3d> toDouble(const std::vector<mesh::Vec3f>& v) {
+  std::vector<mesh::Vec3d> out(v.size());
   for (size_t i = 0; i < v.size(); ++i) out[i] = toDouble(v[i]);
   return out;
 }
 
-Vec3d boundingBoxCentre(const std::vector<Vec3d>& points) {
+mesh::Vec3d boundingBoxCentre(const std::vector<mesh::Vec3d>& points) {
   if (points.empty()) return {0, 0, 0};
-  Vec3d lo = points[0], hi = points[0];
-  for (const Vec3d& p : points) {
+  mesh::Vec3d lo = points[0], hi = points[0];
+  for (const mesh::Vec3d& p : points) {
     for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
   }
   return 0.5 * (lo + hi);
@@ -44,8 +44,8 @@ Vec3d boundingBoxCentre(const std::vector<Vec3d>& points) {
 
 }  // namespace
 
-MassSpringSimulation::MassSpringSimulation(const Scenario& scenario, const SolverSettings& settings,
-                                           bool goal_springs)
+MassSpringSimulation::MassSpringSimulation(const techniques::Scenario& scenario,
+                                           const SolverSettings& settings, bool goal_springs)
     : scenario_(scenario),
       input_(std::make_unique<SoftBodyInput>(parseSoftBody(scenario))),
       rig_(*input_, boundingBoxCentre(input_->skin.positions)),
@@ -80,13 +80,13 @@ float MassSpringSimulation::stompSine(size_t s, size_t j, double dt_s) const {
       std::sin(2 * std::numbers::pi * input_->stomps[s].frequency_hz * (double(j) * dt_s)));
 }
 
-std::vector<Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const {
+std::vector<mesh::Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const {
   const size_t n = system_.vertex_count, stomps = input_->stomps.size();
   std::vector<float> sines(stomps);
   for (size_t s = 0; s < stomps; ++s) sines[s] = stompSine(s, j, dt_s);
-  std::vector<Vec3f> anchors(system_.anchor_count);
+  std::vector<mesh::Vec3f> anchors(system_.anchor_count);
   for (size_t v = 0; v < n; ++v) {
-    Vec3f offset{0, 0, 0};
+    mesh::Vec3f offset{0, 0, 0};
     for (size_t s = 0; s < stomps; ++s)
       offset = offset + stomp_amplitude_[v * stomps + s] * sines[s];
     anchors[v] = bone_f_[v] + offset;
@@ -95,10 +95,10 @@ std::vector<Vec3f> MassSpringSimulation::anchorsAt(size_t j, double dt_s) const 
   return anchors;
 }
 
-std::vector<Vec3f> MassSpringSimulation::convergenceStart() const {
-  std::vector<Vec3f> x(system_.vertex_count);
+std::vector<mesh::Vec3f> MassSpringSimulation::convergenceStart() const {
+  std::vector<mesh::Vec3f> x(system_.vertex_count);
   for (size_t v = 0; v < x.size(); ++v) {
-    Vec3d p = toDouble(rest_f_[v]);
+    mesh::Vec3d p = toDouble(rest_f_[v]);
     for (int i = 0; i < 3; ++i)
       p[i] += kConvergenceJitter * system_.length_scale_m * hashUnit(v, i);
     x[v] = toFloat(p);
@@ -114,18 +114,18 @@ void MassSpringSimulation::step(double dt_s) {
   // Verlet (seed 003): x' = x + (1 - damping) (x - x_prev) + g dt^2 (+ a blast's kick), in
   // the float operations of shaders/mass_spring/verlet.comp.
   const float keep = float(1 - input_->damping);
-  const Vec3f gravity_step = toFloat((dt_s * dt_s) * input_->gravity_m_per_s2);
+  const mesh::Vec3f gravity_step = toFloat((dt_s * dt_s) * input_->gravity_m_per_s2);
   const float dt = float(dt_s);
-  std::vector<Vec3f> kick(n, Vec3f{0, 0, 0});
+  std::vector<mesh::Vec3f> kick(n, mesh::Vec3f{0, 0, 0});
   for (const Blast& blast : input_->blasts) {
     // A blast fires on the first step that reaches its time.
     if (!(t1 >= blast.time_s) || (steps_done_ > 0 && double(steps_done_) * dt_s >= blast.time_s)) {
       continue;
     }
-    const Vec3f centre = toFloat(blast.center_m - origin_);
+    const mesh::Vec3f centre = toFloat(blast.center_m - origin_);
     const float radius = float(blast.radius_m), speed0 = float(blast.speed_m_per_s);
     for (size_t v = 0; v < n; ++v) {
-      const Vec3f away = state_.x[v] - centre;
+      const mesh::Vec3f away = state_.x[v] - centre;
       const float distance = std::sqrt(away.x * away.x + away.y * away.y + away.z * away.z);
       if (!(distance < radius) || !(distance > 0.0f)) continue;
       const float speed = speed0 * (1.0f - distance / radius);
@@ -133,10 +133,10 @@ void MassSpringSimulation::step(double dt_s) {
     }
   }
   for (size_t v = 0; v < n; ++v) {
-    const Vec3f x = state_.x[v], p = x_previous_[v];
-    const Vec3f next{x.x + keep * (x.x - p.x) + gravity_step.x + kick[v].x,
-                     x.y + keep * (x.y - p.y) + gravity_step.y + kick[v].y,
-                     x.z + keep * (x.z - p.z) + gravity_step.z + kick[v].z};
+    const mesh::Vec3f x = state_.x[v], p = x_previous_[v];
+    const mesh::Vec3f next{x.x + keep * (x.x - p.x) + gravity_step.x + kick[v].x,
+                           x.y + keep * (x.y - p.y) + gravity_step.y + kick[v].y,
+                           x.z + keep * (x.z - p.z) + gravity_step.z + kick[v].z};
     x_previous_[v] = x;
     state_.x[v] = next;
   }
@@ -148,15 +148,15 @@ void MassSpringSimulation::step(double dt_s) {
   ++steps_done_;
 }
 
-SimulationState MassSpringSimulation::state() const {
-  SimulationState s;
+techniques::SimulationState MassSpringSimulation::state() const {
+  techniques::SimulationState s;
   s.time_s = time_s_;
   s.element_count = system_.vertex_count;
-  StateChannel position{"position", "m", 3, {}}, velocity{"velocity", "m/s", 3, {}};
+  techniques::StateChannel position{"position", "m", 3, {}}, velocity{"velocity", "m/s", 3, {}};
   for (size_t v = 0; v < system_.vertex_count; ++v) {
-    const Vec3d x = toDouble(state_.x[v]) + origin_;
-    const Vec3f dx{state_.x[v].x - x_previous_[v].x, state_.x[v].y - x_previous_[v].y,
-                   state_.x[v].z - x_previous_[v].z};
+    const mesh::Vec3d x = toDouble(state_.x[v]) + origin_;
+    const mesh::Vec3f dx{state_.x[v].x - x_previous_[v].x, state_.x[v].y - x_previous_[v].y,
+                         state_.x[v].z - x_previous_[v].z};
     const double inv_dt = last_dt_s_ > 0 ? 1 / last_dt_s_ : 0;
     for (int i = 0; i < 3; ++i) {
       position.values.push_back(float(x[i]));
@@ -167,8 +167,8 @@ SimulationState MassSpringSimulation::state() const {
   return s;
 }
 
-SolverCounts MassSpringSimulation::counts() const {
-  SolverCounts c;
+techniques::SolverCounts MassSpringSimulation::counts() const {
+  techniques::SolverCounts c;
   const SolverKind kind = solver_.settings().kind;
   const bool gauss_seidel =
       kind == SolverKind::kGaussSeidelSerial || kind == SolverKind::kGaussSeidelColoured;
@@ -213,21 +213,21 @@ double MassSpringSimulation::residual() const {
   return measureStretch(system_, toDouble(state_.x), toDouble(state_.anchors)).rms;
 }
 
-std::vector<Vec3d> MassSpringSimulation::positions() const {
-  std::vector<Vec3d> out = toDouble(state_.x);
-  for (Vec3d& x : out) x = x + origin_;
+std::vector<mesh::Vec3d> MassSpringSimulation::positions() const {
+  std::vector<mesh::Vec3d> out = toDouble(state_.x);
+  for (mesh::Vec3d& x : out) x = x + origin_;
   return out;
 }
 
-ReferenceSolution MassSpringSimulation::referenceSolution(double relative_tolerance,
-                                                          size_t max_iterations) const {
+techniques::ReferenceSolution MassSpringSimulation::referenceSolution(double relative_tolerance,
+                                                                      size_t max_iterations) const {
   // The same start as setConvergenceFrame (the float values, widened), solved in double.
   SolverState<double> state;
   state.x = toDouble(convergenceStart());
   state.anchors = toDouble(anchorsAt(0, scenario_.time_step_s));
   const SpringSolver<double> solver(system_, SolverSettings{});
   const double r0 = measureStretch(system_, state.x, state.anchors).rms;
-  ReferenceSolution reference;
+  techniques::ReferenceSolution reference;
   double r = r0;
   while (r0 > 0 && reference.iterations < max_iterations && r / r0 > relative_tolerance) {
     solver.iterate(state, 1);
@@ -237,23 +237,23 @@ ReferenceSolution MassSpringSimulation::referenceSolution(double relative_tolera
   reference.relative_residual = r0 > 0 ? r / r0 : 0;
   reference.converged = reference.relative_residual <= relative_tolerance;
   reference.positions = state.x;
-  for (Vec3d& x : reference.positions) x = x + origin_;
+  for (mesh::Vec3d& x : reference.positions) x = x + origin_;
   return reference;
 }
 
-StepDiagnostics MassSpringSimulation::diagnostics() const {
-  StepDiagnostics d;
+techniques::StepDiagnostics MassSpringSimulation::diagnostics() const {
+  techniques::StepDiagnostics d;
   const size_t n = system_.vertex_count;
-  const std::vector<Vec3d> x = toDouble(state_.x);
+  const std::vector<mesh::Vec3d> x = toDouble(state_.x);
   double energy = 0;
   for (size_t v = 0; v < n; ++v) {
     if (!std::isfinite(x[v].x) || !std::isfinite(x[v].y) || !std::isfinite(x[v].z))
       d.finite = false;
     if (last_dt_s_ > 0) {
-      const Vec3d velocity = (1 / last_dt_s_) * (x[v] - toDouble(x_previous_[v]));
-      const Vec3d goal_velocity =
+      const mesh::Vec3d velocity = (1 / last_dt_s_) * (x[v] - toDouble(x_previous_[v]));
+      const mesh::Vec3d goal_velocity =
           (1 / last_dt_s_) * (toDouble(state_.anchors[n + v]) - goal_previous_[v]);
-      const Vec3d relative = velocity - goal_velocity;
+      const mesh::Vec3d relative = velocity - goal_velocity;
       energy += 0.5 * dot(relative, relative);
     }
   }
@@ -265,8 +265,8 @@ StepDiagnostics MassSpringSimulation::diagnostics() const {
   return d;
 }
 
-std::vector<Vec3f> MassSpringSimulation::renderPositionsFloat() const {
-  std::vector<Vec3f> out;
+std::vector<mesh::Vec3f> MassSpringSimulation::renderPositionsFloat() const {
+  std::vector<mesh::Vec3f> out;
   out.reserve(render_mesh_.bindings.size());
   for (const TetBinding& binding : render_mesh_.bindings) {
     out.push_back(drawVertexFloat(binding, state_.x));
@@ -274,9 +274,9 @@ std::vector<Vec3f> MassSpringSimulation::renderPositionsFloat() const {
   return out;
 }
 
-std::vector<Vec3d> MassSpringSimulation::renderPositions() const {
-  const std::vector<Vec3d> x = positions();
-  std::vector<Vec3d> out;
+std::vector<mesh::Vec3d> MassSpringSimulation::renderPositions() const {
+  const std::vector<mesh::Vec3d> x = positions();
+  std::vector<mesh::Vec3d> out;
   out.reserve(render_mesh_.bindings.size());
   for (const TetBinding& binding : render_mesh_.bindings) out.push_back(drawVertex(binding, x));
   return out;
@@ -284,7 +284,8 @@ std::vector<Vec3d> MassSpringSimulation::renderPositions() const {
 
 // ---------------------------------------------------------------------------------------
 
-SolverSettings settingsOf(const TechniqueInfo& info, const VariantInfo& variant) {
+SolverSettings settingsOf(const techniques::TechniqueInfo& info,
+                          const techniques::VariantInfo& variant) {
   SolverSettings settings;
   if (variant.name.rfind("gs_serial", 0) == 0) {
     settings.kind = SolverKind::kGaussSeidelSerial;
@@ -295,31 +296,32 @@ SolverSettings settingsOf(const TechniqueInfo& info, const VariantInfo& variant)
   } else if (variant.name.rfind("jacobi", 0) == 0) {
     settings.kind = SolverKind::kJacobi;
   } else {
-    throw UnsupportedInput(info.id + ": unknown variant \"" + variant.name + "\"");
+    throw techniques::UnsupportedInput(info.id + ": unknown variant \"" + variant.name + "\"");
   }
-  settings.colour_major = paramOr<bool>(info, variant, "colour_major", false);
-  settings.omega = paramOr<double>(info, variant, "omega", 1.0);
-  settings.rho = paramOr<double>(info, variant, "rho", settings.rho);
-  settings.delay = paramOr<size_t>(info, variant, "delay", settings.delay);
-  settings.tiled = paramOr<bool>(info, variant, "tiled", settings.tiled);
+  settings.colour_major = techniques::paramOr<bool>(info, variant, "colour_major", false);
+  settings.omega = techniques::paramOr<double>(info, variant, "omega", 1.0);
+  settings.rho = techniques::paramOr<double>(info, variant, "rho", settings.rho);
+  settings.delay = techniques::paramOr<size_t>(info, variant, "delay", settings.delay);
+  settings.tiled = techniques::paramOr<bool>(info, variant, "tiled", settings.tiled);
   if (!(settings.omega > 0 && settings.omega < 2)) {
-    throw UnsupportedInput(info.id + "/" + variant.name + ": omega must be in (0, 2)");
+    throw techniques::UnsupportedInput(info.id + "/" + variant.name + ": omega must be in (0, 2)");
   }
   if (!(settings.rho > 0 && settings.rho < 1)) {
-    throw UnsupportedInput(info.id + "/" + variant.name + ": rho must be in (0, 1)");
+    throw techniques::UnsupportedInput(info.id + "/" + variant.name + ": rho must be in (0, 1)");
   }
   return settings;
 }
 
-const TechniqueInfo& MassSpringTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "mass_spring", TechniqueFamily::kSimulation, "Mass-spring soft body (Verlet, position-based)",
+const techniques::TechniqueInfo& MassSpringTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "mass_spring", techniques::TechniqueFamily::kSimulation,
+      "Mass-spring soft body (Verlet, position-based)",
       "CAPCOM, Lost Planet 2 DirectX 11 talk (soft-body boss skin); Wang, SIGGRAPH Asia 2015",
       "a mass_spring scenario: a skin mesh, a bone chain and its animation"};
   return kInfo;
 }
 
-std::vector<VariantInfo> MassSpringTechnique::variants() const {
+std::vector<techniques::VariantInfo> MassSpringTechnique::variants() const {
   return {
       {"gs_serial", "Gauss-Seidel, one spring at a time in index order (the reference order)", {}},
       {"gs_colored",
@@ -335,18 +337,18 @@ std::vector<VariantInfo> MassSpringTechnique::variants() const {
   };
 }
 
-std::string MassSpringTechnique::checkSupport(const Mesh&) const {
+std::string MassSpringTechnique::checkSupport(const mesh::Mesh&) const {
   return "mass_spring: runs on mass_spring scenarios, not on mesh assets";
 }
 
-std::unique_ptr<TechniqueInstance> MassSpringTechnique::build(const TechniqueInput& input,
-                                                              const VariantInfo& variant) const {
+std::unique_ptr<techniques::TechniqueInstance> MassSpringTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
   if (input.scenario == nullptr) {
-    throw UnsupportedInput("mass_spring: needs a mass_spring scenario as input");
+    throw techniques::UnsupportedInput("mass_spring: needs a mass_spring scenario as input");
   }
   const SolverSettings settings = settingsOf(info(), variant);
-  const bool goal_springs = paramOr<bool>(info(), variant, "goal_springs", true);
-  return std::make_unique<SimulationInstance>(
+  const bool goal_springs = techniques::paramOr<bool>(info(), variant, "goal_springs", true);
+  return std::make_unique<techniques::SimulationInstance>(
       std::make_unique<MassSpringSimulation>(*input.scenario, settings, goal_springs));
 }
 

@@ -22,32 +22,34 @@ namespace tb::mass_spring {
 // tet_binding.h); the apex height of its virtual tetrahedra is the mean spring length.
 inline constexpr uint32_t kRenderLevel = 3;
 
-class MassSpringSimulation final : public Simulation, public ConstraintSolver {
+class MassSpringSimulation final : public techniques::Simulation,
+                                   public techniques::ConstraintSolver {
  public:
-  MassSpringSimulation(const Scenario& scenario, const SolverSettings& settings, bool goal_springs);
+  MassSpringSimulation(const techniques::Scenario& scenario, const SolverSettings& settings,
+                       bool goal_springs);
 
   // Simulation
-  const Scenario& scenario() const override { return scenario_; }
+  const techniques::Scenario& scenario() const override { return scenario_; }
   void step(double dt_s) override;
-  SimulationState state() const override;
+  techniques::SimulationState state() const override;
   std::vector<gpu::GpuComputeProgram> gpuPrograms() const override;
-  SimulationFootprint footprint() const override;
-  ConstraintSolver* constraintSolver() override { return this; }
+  techniques::SimulationFootprint footprint() const override;
+  techniques::ConstraintSolver* constraintSolver() override { return this; }
 
   // ConstraintSolver
-  SolverCounts counts() const override;
+  techniques::SolverCounts counts() const override;
   void setConvergenceFrame() override;
   void iterate(size_t iterations) override;
   double residual() const override;
-  std::vector<Vec3d> positions() const override;
+  std::vector<mesh::Vec3d> positions() const override;
   double lengthScale() const override { return system_.length_scale_m; }
-  ReferenceSolution referenceSolution(double relative_tolerance,
-                                      size_t max_iterations) const override;
+  techniques::ReferenceSolution referenceSolution(double relative_tolerance,
+                                                  size_t max_iterations) const override;
   void iterateDispatches(size_t dispatches) override {
     solver_.iterateDispatches(state_, dispatches);
   }
   void setDispatchesPerStep(size_t dispatches) override { dispatches_per_step_ = dispatches; }
-  StepDiagnostics diagnostics() const override;
+  techniques::StepDiagnostics diagnostics() const override;
 
   const SpringSystem& springs() const { return system_; }
   const SolverSettings& settings() const { return solver_.settings(); }
@@ -57,7 +59,7 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   SolverState<float>& solverState() { return state_; }
   // Simulated positions are stored relative to this point (the skin's bounding-box centre)
   // so float resolves the springs' lengths; positions() adds it back.
-  const Vec3d& origin() const { return origin_; }
+  const mesh::Vec3d& origin() const { return origin_; }
   const RenderMesh& renderMesh() const { return render_mesh_; }
   // The solver alone on Vulkan compute (mass_spring_gpu.cpp): programs whose one runner
   // step is one solver iteration from the current state (positions and anchors), for the
@@ -65,15 +67,15 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   // positions are in buffer solverPositionBuffer() as vec4 per vertex (decodePositions).
   std::vector<gpu::GpuComputeProgram> solverPrograms() const;
   static std::string solverPositionBuffer() { return "positions"; }
-  static std::vector<Vec3f> decodePositions(const std::vector<uint32_t>& words, size_t count);
+  static std::vector<mesh::Vec3f> decodePositions(const std::vector<uint32_t>& words, size_t count);
   // gpuPrograms(): one step (verlet.comp, then the solver's dispatches_per_step dispatches),
   // from the state at time 0; the positions after N steps are in "positions" (gs_serial:
   // none, it has no GPU path).
   // The render vertices for the current simulated positions (DrawVertex, in double).
-  std::vector<Vec3d> renderPositions() const;
+  std::vector<mesh::Vec3d> renderPositions() const;
   // The same in float relative to origin(), as gpuPrograms()' render pass writes
   // "render_positions" (drawVertexFloat).
-  std::vector<Vec3f> renderPositionsFloat() const;
+  std::vector<mesh::Vec3f> renderPositionsFloat() const;
 
  private:
   // Anchors at time j dt (j = steps done; 0: the rest pose), in the float operations of
@@ -87,46 +89,48 @@ class MassSpringSimulation final : public Simulation, public ConstraintSolver {
   // The step's last pass: render vertices from the simulated ones (render.comp).
   gpu::GpuComputePass renderPass() const;
   void setAnchors(size_t j, double dt_s);
-  std::vector<Vec3f> anchorsAt(size_t j, double dt_s) const;
+  std::vector<mesh::Vec3f> anchorsAt(size_t j, double dt_s) const;
   // float(sin(2 pi f_s j dt)): stomp s's phase at time index j (the GPU's table holds these).
   float stompSine(size_t s, size_t j, double dt_s) const;
   // The convergence frame's start: rest positions displaced by a hashed jitter.
-  std::vector<Vec3f> convergenceStart() const;
+  std::vector<mesh::Vec3f> convergenceStart() const;
 
-  Scenario scenario_;
+  techniques::Scenario scenario_;
   std::unique_ptr<SoftBodyInput> input_;  // stable address: rig_ refers to it
   SoftBodyRig rig_;
   SpringSystem system_;
   SpringSolver<float> solver_;
   SolverState<float> state_;
-  std::vector<Vec3f> x_previous_;     // Verlet: positions of the step before
-  std::vector<Vec3d> goal_previous_;  // goal anchors of the step before (diagnostics)
-  Vec3d origin_{0, 0, 0};
+  std::vector<mesh::Vec3f> x_previous_;     // Verlet: positions of the step before
+  std::vector<mesh::Vec3d> goal_previous_;  // goal anchors of the step before (diagnostics)
+  mesh::Vec3d origin_{0, 0, 0};
   RenderMesh render_mesh_;
   double time_s_ = 0;
   double last_dt_s_ = 0;
   size_t steps_done_ = 0;
-  std::vector<Vec3f> rest_f_, bone_f_;  // rest positions and bone points (float, local)
-  std::vector<Vec3f> stomp_amplitude_;  // [v * stomps + s]: rig_.stompAmplitude in float
+  std::vector<mesh::Vec3f> rest_f_, bone_f_;  // rest positions and bone points (float, local)
+  std::vector<mesh::Vec3f> stomp_amplitude_;  // [v * stomps + s]: rig_.stompAmplitude in float
   size_t dispatches_per_step_ = 8;
   bool goal_springs_ = true;
 };
 
-class MassSpringTechnique final : public Technique {
+class MassSpringTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
+  const techniques::TechniqueInfo& info() const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
   // Variant parameters: "goal_springs" (1 default, 0 without), "omega", "rho", "delay",
   // "colour_major" (gs_serial's order).
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
-  SimulationCapabilities simulationCapabilities() const override {
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
+  techniques::SimulationCapabilities simulationCapabilities() const override {
     return {.constraint_solver = true, .wave_field = false};
   }
 };
 
 // The solver settings a variant names (its name picks the solver, its parameters the rest).
-SolverSettings settingsOf(const TechniqueInfo& info, const VariantInfo& variant);
+SolverSettings settingsOf(const techniques::TechniqueInfo& info,
+                          const techniques::VariantInfo& variant);
 
 }  // namespace tb::mass_spring

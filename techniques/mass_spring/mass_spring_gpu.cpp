@@ -21,10 +21,11 @@ constexpr size_t kSineTableLength = 10;
 
 uint32_t word(float f) { return std::bit_cast<uint32_t>(f); }
 
-std::vector<uint32_t> vec4Words(const std::vector<Vec3f>& points) {
+std::vector<uint32_t> vec4Words(const std::vector<mesh::Vec3f>& points) {
   std::vector<uint32_t> words;
   words.reserve(points.size() * 4);
-  for (const Vec3f& p : points) words.insert(words.end(), {word(p.x), word(p.y), word(p.z), 0u});
+  for (const mesh::Vec3f& p : points)
+    words.insert(words.end(), {word(p.x), word(p.y), word(p.z), 0u});
   return words;
 }
 
@@ -42,14 +43,14 @@ gpu::GpuComputeBuffer buffer(uint32_t binding, std::string name, std::vector<uin
 uint32_t groups(size_t threads) { return uint32_t((threads + kGroupSize - 1) / kGroupSize); }
 
 // The blasts for verlet.comp: centre, radius, speed and the step each fires on.
-std::vector<uint32_t> blastWords(const std::vector<Blast>& input_blasts, const Vec3d& origin,
+std::vector<uint32_t> blastWords(const std::vector<Blast>& input_blasts, const mesh::Vec3d& origin,
                                  double dt, size_t rows) {
   std::vector<uint32_t> blasts;
   for (const Blast& blast : input_blasts) {
     // The step it fires on (mass_spring.cpp, step()): the first whose end reaches time_s.
     size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
     while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
-    const Vec3f centre = vecCast<float>(blast.center_m - origin);
+    const mesh::Vec3f centre = vecCast<float>(blast.center_m - origin);
     blasts.insert(blasts.end(),
                   {word(centre.x), word(centre.y), word(centre.z), 0u, word(float(blast.radius_m)),
                    word(float(blast.speed_m_per_s)), k < rows ? uint32_t(k) : 0xffffffffu, 0u});
@@ -59,7 +60,7 @@ std::vector<uint32_t> blastWords(const std::vector<Blast>& input_blasts, const V
 
 // Gauss-Seidel: `budget` coloured sweeps per step (gs_colour_step.comp).
 void appendGaussSeidelSteps(const SpringSystem& system, const std::vector<uint32_t>& positions,
-                            const std::vector<Vec3f>& anchors, uint32_t budget,
+                            const std::vector<mesh::Vec3f>& anchors, uint32_t budget,
                             gpu::GpuComputeProgram& program) {
   std::vector<uint32_t> springs;
   for (uint32_t s : system.colour_order) {
@@ -87,10 +88,11 @@ void appendGaussSeidelSteps(const SpringSystem& system, const std::vector<uint32
 // Jacobi (Chebyshev or not): `budget` ping-pong iterations per step (jacobi.comp), then a
 // copy back into "positions" after an odd count.
 void appendJacobiSteps(size_t n, const std::vector<uint32_t>& positions,
-                       const std::vector<Vec3f>& anchors, const std::vector<uint32_t>& end_start,
-                       const std::vector<uint32_t>& ends, const std::vector<uint32_t>& scale,
-                       const std::vector<uint32_t>& weights, bool chebyshev, bool tiled,
-                       uint32_t budget, gpu::GpuComputeProgram& program) {
+                       const std::vector<mesh::Vec3f>& anchors,
+                       const std::vector<uint32_t>& end_start, const std::vector<uint32_t>& ends,
+                       const std::vector<uint32_t>& scale, const std::vector<uint32_t>& weights,
+                       bool chebyshev, bool tiled, uint32_t budget,
+                       gpu::GpuComputeProgram& program) {
   for (uint32_t d = 0; d < budget; ++d) {
     const bool even = d % 2 == 0;
     gpu::GpuComputePass pass;
@@ -120,9 +122,9 @@ void appendJacobiSteps(size_t n, const std::vector<uint32_t>& positions,
 
 }  // namespace
 
-std::vector<Vec3f> MassSpringSimulation::decodePositions(const std::vector<uint32_t>& words,
-                                                         size_t count) {
-  std::vector<Vec3f> out(count);
+std::vector<mesh::Vec3f> MassSpringSimulation::decodePositions(const std::vector<uint32_t>& words,
+                                                               size_t count) {
+  std::vector<mesh::Vec3f> out(count);
   for (size_t v = 0; v < count && 4 * v + 2 < words.size(); ++v) {
     out[v] = {std::bit_cast<float>(words[4 * v]), std::bit_cast<float>(words[4 * v + 1]),
               std::bit_cast<float>(words[4 * v + 2])};
@@ -207,7 +209,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::gpuPrograms() const {
   return stepPrograms(solver_.settings().kind);
 }
 
-SimulationFootprint MassSpringSimulation::footprint() const {
+techniques::SimulationFootprint MassSpringSimulation::footprint() const {
   // The buffers the compute runner allocates for the step programs (one per name, the
   // largest size declared); gs_serial, with no GPU path, as its coloured twin would.
   const SolverKind kind = solver_.settings().kind == SolverKind::kGaussSeidelSerial
@@ -221,7 +223,7 @@ SimulationFootprint MassSpringSimulation::footprint() const {
       }
     }
   }
-  SimulationFootprint footprint;
+  techniques::SimulationFootprint footprint;
   for (const auto& [name, bytes] : sizes) {
     const bool state =
         name == "positions" || name == "previous_positions" || name == "positions_other";
@@ -262,7 +264,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::stepPrograms(SolverKin
   }
   std::vector<uint32_t> amplitudes = vec4Words(stomp_amplitude_);
   std::vector<uint32_t> blasts = blastWords(input_->blasts, origin_, dt, rows);
-  const Vec3f gravity_step = vecCast<float>((dt * dt) * input_->gravity_m_per_s2);
+  const mesh::Vec3f gravity_step = vecCast<float>((dt * dt) * input_->gravity_m_per_s2);
   gpu::GpuComputePass verlet;
   verlet.shader = "mass_spring/verlet.comp";
   verlet.buffers = {

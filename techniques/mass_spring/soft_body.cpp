@@ -19,7 +19,7 @@ class SectionReader {
  public:
   explicit SectionReader(std::string file) : file_(std::move(file)) {}
   [[noreturn]] void fail(const std::string& field, const std::string& rule) const {
-    throw InputError(file_, "mass_spring." + field, rule);
+    throw mesh::InputError(file_, "mass_spring." + field, rule);
   }
   double number(const Json& object, const std::string& key, const std::string& field, double lo,
                 double hi, std::optional<double> fallback = std::nullopt) const {
@@ -34,9 +34,9 @@ class SectionReader {
     }
     return value.get<double>();
   }
-  Vec3d vec3(const Json& value, const std::string& field) const {
+  mesh::Vec3d vec3(const Json& value, const std::string& field) const {
     if (!value.is_array() || value.size() != 3) fail(field, "must be an array of 3 numbers");
-    Vec3d v;
+    mesh::Vec3d v;
     for (int i = 0; i < 3; ++i) {
       if (!value[i].is_number() || !std::isfinite(value[i].get<double>())) {
         fail(field, "must be an array of 3 finite numbers");
@@ -61,15 +61,15 @@ class SectionReader {
 };
 
 // The closest point of segment [p, q] to x: its parameter in [0, 1].
-double closestParameter(const Vec3d& p, const Vec3d& q, const Vec3d& x) {
-  const Vec3d d = q - p;
+double closestParameter(const mesh::Vec3d& p, const mesh::Vec3d& q, const mesh::Vec3d& x) {
+  const mesh::Vec3d d = q - p;
   const double dd = dot(d, d);
   if (!(dd > 0)) return 0;
   return std::clamp(dot(x - p, d) / dd, 0.0, 1.0);
 }
 
 // The scenario's "mass_spring" section as a JSON object.
-Json sectionOf(const Scenario& scenario, const SectionReader& read) {
+Json sectionOf(const techniques::Scenario& scenario, const SectionReader& read) {
   const auto section_it = scenario.sections.find("mass_spring");
   if (section_it == scenario.sections.end())
     read.fail("", "the scenario has no \"mass_spring\" section");
@@ -155,7 +155,7 @@ void readAnimation(const Json& section, const SectionReader& read, SoftBodyInput
 
 }  // namespace
 
-SoftBodyInput parseSoftBody(const Scenario& scenario) {
+SoftBodyInput parseSoftBody(const techniques::Scenario& scenario) {
   const std::string file = scenario.path.empty() ? scenario.name : scenario.path;
   const SectionReader read(file);
   SoftBodyInput input;
@@ -184,29 +184,31 @@ SoftBodyInput parseSoftBody(const Scenario& scenario) {
   if (const auto it = scenario.parameters.find("dispatches_per_step");
       it != scenario.parameters.end()) {
     if (!(it->second >= 1 && it->second <= 4096)) {
-      throw InputError(file, "parameters.dispatches_per_step", "must be in [1, 4096]");
+      throw mesh::InputError(file, "parameters.dispatches_per_step", "must be in [1, 4096]");
     }
     input.dispatches_per_step = size_t(it->second);
   }
   if (scenario.mesh_path.empty()) {
-    throw InputError(file, "mesh", "a mass_spring scenario needs a skin mesh");
+    throw mesh::InputError(file, "mesh", "a mass_spring scenario needs a skin mesh");
   }
-  input.skin = loadObjFile(scenario.mesh_path);
+  input.skin = mesh::loadObjFile(scenario.mesh_path);
   return input;
 }
 
-SoftBodyRig::SoftBodyRig(const SoftBodyInput& input, const Vec3d& origin)
+SoftBodyRig::SoftBodyRig(const SoftBodyInput& input, const mesh::Vec3d& origin)
     : input_(input), origin_(origin) {
   const auto& joints = input.bone_joints_m;
-  auto local = [&](const Vec3d& world) { return vecCast<double>(vecCast<float>(world - origin)); };
-  for (const Vec3d& x : input.skin.positions) {
+  auto local = [&](const mesh::Vec3d& world) {
+    return vecCast<double>(vecCast<float>(world - origin));
+  };
+  for (const mesh::Vec3d& x : input.skin.positions) {
     rest_.push_back(local(x));
     double best = INFINITY;
     uint32_t best_segment = 0;
     double best_u = 0;
     for (size_t s = 0; s + 1 < joints.size(); ++s) {
       const double u = closestParameter(joints[s], joints[s + 1], x);
-      const Vec3d p = joints[s] + u * (joints[s + 1] - joints[s]);
+      const mesh::Vec3d p = joints[s] + u * (joints[s + 1] - joints[s]);
       const double d = length(x - p);
       if (d < best) best = d, best_segment = uint32_t(s), best_u = u;
     }
@@ -223,7 +225,7 @@ SoftBodyRig::SoftBodyRig(const SoftBodyInput& input, const Vec3d& origin)
   }
 }
 
-Vec3d SoftBodyRig::stompAmplitude(size_t v, size_t s) const {
+mesh::Vec3d SoftBodyRig::stompAmplitude(size_t v, size_t s) const {
   const Stomp& stomp = input_.stomps[s];
   const uint32_t segment = bone_segment_[v];
   const double u = bone_parameter_[v];
@@ -238,7 +240,7 @@ SpringSystem buildSpringSystem(const SoftBodyInput& input, const SoftBodyRig& ri
   const size_t n = rig.vertexCount();
   system.vertex_count = n;
   system.anchor_count = 2 * n;
-  const std::vector<Vec3d>& rest = rig.restPositions();
+  const std::vector<mesh::Vec3d>& rest = rig.restPositions();
   std::map<std::pair<uint32_t, uint32_t>, bool> seen;
   double total_length = 0;
   for (size_t f = 0; f < input.skin.faceCount(); ++f) {
@@ -248,8 +250,8 @@ SpringSystem buildSpringSystem(const SoftBodyInput& input, const SoftBodyRig& ri
       if (a == b || !seen.emplace(std::minmax(a, b), true).second) continue;
       const double length_m = length(rest[b] - rest[a]);
       if (!(length_m > 0)) {
-        throw InputError(input.skin.source, describeFace(input.skin, f),
-                         "an edge of zero length cannot be a spring");
+        throw mesh::InputError(input.skin.source, mesh::describeFace(input.skin, f),
+                               "an edge of zero length cannot be a spring");
       }
       system.springs.push_back(
           {a, b, length_m, 0.5 * input.surface_stiffness, SpringKind::kSurface});
@@ -257,7 +259,7 @@ SpringSystem buildSpringSystem(const SoftBodyInput& input, const SoftBodyRig& ri
     }
   }
   if (system.springs.empty()) {
-    throw InputError(input.skin.source, "mesh", "has no edges to make surface springs of");
+    throw mesh::InputError(input.skin.source, "mesh", "has no edges to make surface springs of");
   }
   system.length_scale_m = total_length / double(system.springs.size());
   if (input.inner_stiffness > 0) {

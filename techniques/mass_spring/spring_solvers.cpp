@@ -70,10 +70,10 @@ void SpringSolver<Real>::jacobi(SolverState<Real>& state) const {
     const Real wr = Real(w);
     // x_{k+1} = x_{k-1} + w (y - x_{k-1}); x_k becomes the previous.
     for (size_t v = 0; v < n; ++v) {
-      const Vec3T<Real>& p = state.previous[v];
-      const Vec3T<Real>& y = state.scratch[v];
-      const Vec3T<Real> next{p.x + wr * (y.x - p.x), p.y + wr * (y.y - p.y),
-                             p.z + wr * (y.z - p.z)};
+      const mesh::Vec3T<Real>& p = state.previous[v];
+      const mesh::Vec3T<Real>& y = state.scratch[v];
+      const mesh::Vec3T<Real> next{p.x + wr * (y.x - p.x), p.y + wr * (y.y - p.y),
+                                   p.z + wr * (y.z - p.z)};
       state.previous[v] = state.x[v];
       state.x[v] = next;
     }
@@ -125,14 +125,14 @@ void SpringSolver<Real>::iterateDispatches(SolverState<Real>& state, size_t disp
   }
 }
 
-StretchFigures measureStretch(const SpringSystem& system, const std::vector<Vec3d>& x,
-                              const std::vector<Vec3d>& anchors, bool surface_only) {
+StretchFigures measureStretch(const SpringSystem& system, const std::vector<mesh::Vec3d>& x,
+                              const std::vector<mesh::Vec3d>& anchors, bool surface_only) {
   StretchFigures figures;
   double sum = 0;
   for (const Spring& spring : system.springs) {
     if (surface_only && spring.kind != SpringKind::kSurface) continue;
-    const Vec3d& other = spring.anchored() ? anchors[spring.anchor()] : x[spring.b];
-    const double length = tb::length(other - x[spring.a]);
+    const mesh::Vec3d& other = spring.anchored() ? anchors[spring.anchor()] : x[spring.b];
+    const double length = tb::mesh::length(other - x[spring.a]);
     const double e = spring.rest_m > 0 ? (length - spring.rest_m) / spring.rest_m
                                        : length / system.length_scale_m;
     sum += e * e;

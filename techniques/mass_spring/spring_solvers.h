@@ -43,8 +43,8 @@ struct SolverSettings {
 // The correction a spring end at `self` takes towards `other` (operation order fixed: the
 // GLSL in shaders/mass_spring/springs.glsl is the same).
 template <class Real>
-inline Vec3T<Real> springCorrection(const Vec3T<Real>& self, const Vec3T<Real>& other, Real rest,
-                                    Real weight) {
+inline mesh::Vec3T<Real> springCorrection(const mesh::Vec3T<Real>& self,
+                                          const mesh::Vec3T<Real>& other, Real rest, Real weight) {
   const Real dx = other.x - self.x, dy = other.y - self.y, dz = other.z - self.z;
   const Real length = std::sqrt(dx * dx + dy * dy + dz * dz);
   if (!(length > Real(0))) return {Real(0), Real(0), Real(0)};
@@ -64,10 +64,10 @@ inline double chebyshevWeight(size_t k, double previous, double rho, size_t dela
 // Positions and anchors of one solve, and the solver's running state.
 template <class Real>
 struct SolverState {
-  std::vector<Vec3T<Real>> x;         // vertex positions, metres
-  std::vector<Vec3T<Real>> anchors;   // kinematic anchor positions, metres
-  std::vector<Vec3T<Real>> previous;  // Chebyshev: x of the iteration before
-  std::vector<Vec3T<Real>> scratch;   // Jacobi output
+  std::vector<mesh::Vec3T<Real>> x;         // vertex positions, metres
+  std::vector<mesh::Vec3T<Real>> anchors;   // kinematic anchor positions, metres
+  std::vector<mesh::Vec3T<Real>> previous;  // Chebyshev: x of the iteration before
+  std::vector<mesh::Vec3T<Real>> scratch;   // Jacobi output
   size_t iteration = 0;               // iterations since the frame started
   double chebyshev_weight = 1;        // the last Chebyshev weight
   // Coloured Gauss-Seidel under a dispatch budget (iterateDispatches): the colour the cut
@@ -92,18 +92,18 @@ class SpringSolver {
   // One Gauss-Seidel projection of spring s.
   void project(SolverState<Real>& state, uint32_t s) const {
     const uint32_t a = a_[s], b = b_[s];
-    const Vec3T<Real>& other = (b & kAnchorBit) ? state.anchors[b & ~kAnchorBit] : state.x[b];
-    const Vec3T<Real> c = springCorrection(state.x[a], other, rest_[s], weight_[s]);
+    const mesh::Vec3T<Real>& other = (b & kAnchorBit) ? state.anchors[b & ~kAnchorBit] : state.x[b];
+    const mesh::Vec3T<Real> c = springCorrection(state.x[a], other, rest_[s], weight_[s]);
     state.x[a] = state.x[a] + c;
     if (!(b & kAnchorBit)) state.x[b] = state.x[b] - c;
   }
   // Jacobi's new position of vertex v from `in`.
-  Vec3T<Real> gather(const SolverState<Real>& state, const std::vector<Vec3T<Real>>& in,
-                     size_t v) const {
-    Vec3T<Real> sum{Real(0), Real(0), Real(0)};
+  mesh::Vec3T<Real> gather(const SolverState<Real>& state, const std::vector<mesh::Vec3T<Real>>& in,
+                           size_t v) const {
+    mesh::Vec3T<Real> sum{Real(0), Real(0), Real(0)};
     for (uint32_t e = end_start_[v]; e < end_start_[v + 1]; ++e) {
       const uint32_t o = end_other_[e];
-      const Vec3T<Real>& other = (o & kAnchorBit) ? state.anchors[o & ~kAnchorBit] : in[o];
+      const mesh::Vec3T<Real>& other = (o & kAnchorBit) ? state.anchors[o & ~kAnchorBit] : in[o];
       sum = sum + springCorrection(in[v], other, end_rest_[e], end_weight_[e]);
     }
     const Real s = vertex_scale_[v];
@@ -131,8 +131,8 @@ struct StretchFigures {
   double max_abs = 0;  // largest |relative stretch|
   size_t springs = 0;
 };
-StretchFigures measureStretch(const SpringSystem& system, const std::vector<Vec3d>& x,
-                              const std::vector<Vec3d>& anchors, bool surface_only = false);
+StretchFigures measureStretch(const SpringSystem& system, const std::vector<mesh::Vec3d>& x,
+                              const std::vector<mesh::Vec3d>& anchors, bool surface_only = false);
 
 extern template class SpringSolver<float>;
 extern template class SpringSolver<double>;

@@ -5,25 +5,26 @@
 
 namespace tb::mass_spring {
 
-Vec3d virtualApex(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, double volume) {
-  const Vec3d c = (1.0 / 3.0) * (p0 + p1 + p2);
-  const Vec3d n = cross(p1 - p0, p2 - p0);  // |n| = 2 area
+mesh::Vec3d virtualApex(const mesh::Vec3d& p0, const mesh::Vec3d& p1, const mesh::Vec3d& p2,
+                        double volume) {
+  const mesh::Vec3d c = (1.0 / 3.0) * (p0 + p1 + p2);
+  const mesh::Vec3d n = cross(p1 - p0, p2 - p0);  // |n| = 2 area
   const double nn = dot(n, n);
   if (!(nn > 0)) return c;
   // height = 3V / area = 6V / |n|, along n / |n|: c + n * 6V / |n|^2.
   return c + (6 * volume / nn) * n;
 }
 
-TetBinding bindToTriangle(const std::vector<Vec3d>& rest, uint32_t v0, uint32_t v1, uint32_t v2,
-                          const Vec3d& q, double apex_height) {
+TetBinding bindToTriangle(const std::vector<mesh::Vec3d>& rest, uint32_t v0, uint32_t v1,
+                          uint32_t v2, const mesh::Vec3d& q, double apex_height) {
   TetBinding binding{v0, v1, v2, 0, 0, 0, 0};
-  const Vec3d &p0 = rest[v0], &p1 = rest[v1], &p2 = rest[v2];
+  const mesh::Vec3d &p0 = rest[v0], &p1 = rest[v1], &p2 = rest[v2];
   const double area = 0.5 * length(cross(p1 - p0, p2 - p0));
   if (!(area > 0)) throw std::invalid_argument("bindToTriangle: degenerate triangle");
   binding.volume = area * apex_height / 3;
-  const Vec3d p3 = virtualApex(p0, p1, p2, binding.volume);
+  const mesh::Vec3d p3 = virtualApex(p0, p1, p2, binding.volume);
   // q - p3 = w0 (p0 - p3) + w1 (p1 - p3) + w2 (p2 - p3): Cramer's rule.
-  const Vec3d a = p0 - p3, b = p1 - p3, c = p2 - p3, r = q - p3;
+  const mesh::Vec3d a = p0 - p3, b = p1 - p3, c = p2 - p3, r = q - p3;
   const double det = dot(a, cross(b, c));
   binding.w0 = dot(r, cross(b, c)) / det;
   binding.w1 = dot(a, cross(r, c)) / det;
@@ -31,37 +32,40 @@ TetBinding bindToTriangle(const std::vector<Vec3d>& rest, uint32_t v0, uint32_t 
   return binding;
 }
 
-Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions) {
-  const Vec3d &p0 = positions[binding.v0], &p1 = positions[binding.v1], &p2 = positions[binding.v2];
-  const Vec3d p3 = virtualApex(p0, p1, p2, binding.volume);
+mesh::Vec3d drawVertex(const TetBinding& binding, const std::vector<mesh::Vec3d>& positions) {
+  const mesh::Vec3d &p0 = positions[binding.v0], &p1 = positions[binding.v1],
+                    &p2 = positions[binding.v2];
+  const mesh::Vec3d p3 = virtualApex(p0, p1, p2, binding.volume);
   return binding.w0 * p0 + binding.w1 * p1 + binding.w2 * p2 +
          (1 - binding.w0 - binding.w1 - binding.w2) * p3;
 }
 
-Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<Vec3f>& positions) {
-  const Vec3f &p0 = positions[binding.v0], &p1 = positions[binding.v1], &p2 = positions[binding.v2];
+mesh::Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<mesh::Vec3f>& positions) {
+  const mesh::Vec3f &p0 = positions[binding.v0], &p1 = positions[binding.v1],
+                    &p2 = positions[binding.v2];
   const float third = 1.0f / 3.0f;  // 0.333333343, as the shader's constant
   const float w0 = float(binding.w0), w1 = float(binding.w1), w2 = float(binding.w2);
   const float volume = float(binding.volume);
-  const Vec3f c{(p0.x + p1.x + p2.x) * third, (p0.y + p1.y + p2.y) * third,
-                (p0.z + p1.z + p2.z) * third};
-  const Vec3f e1{p1.x - p0.x, p1.y - p0.y, p1.z - p0.z};
-  const Vec3f e2{p2.x - p0.x, p2.y - p0.y, p2.z - p0.z};
-  const Vec3f n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+  const mesh::Vec3f c{(p0.x + p1.x + p2.x) * third, (p0.y + p1.y + p2.y) * third,
+                      (p0.z + p1.z + p2.z) * third};
+  const mesh::Vec3f e1{p1.x - p0.x, p1.y - p0.y, p1.z - p0.z};
+  const mesh::Vec3f e2{p2.x - p0.x, p2.y - p0.y, p2.z - p0.z};
+  const mesh::Vec3f n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z,
+                      e1.x * e2.y - e1.y * e2.x};
   const float nn = n.x * n.x + n.y * n.y + n.z * n.z;
   const float s = nn > 0.0f ? (6.0f * volume) / nn : 0.0f;
-  const Vec3f p3{c.x + n.x * s, c.y + n.y * s, c.z + n.z * s};
+  const mesh::Vec3f p3{c.x + n.x * s, c.y + n.y * s, c.z + n.z * s};
   const float w3 = 1.0f - w0 - w1 - w2;
   return {p0.x * w0 + p1.x * w1 + p2.x * w2 + p3.x * w3,
           p0.y * w0 + p1.y * w1 + p2.y * w2 + p3.y * w3,
           p0.z * w0 + p1.z * w1 + p2.z * w2 + p3.z * w3};
 }
 
-RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_height) {
+RenderMesh tessellateForRendering(const mesh::Mesh& mesh, uint32_t level, double apex_height) {
   if (level < 1) throw std::invalid_argument("tessellateForRendering: level must be >= 1");
   RenderMesh out;
-  const std::vector<Vec3d>& rest = mesh.positions;
-  auto add = [&](uint32_t v0, uint32_t v1, uint32_t v2, const Vec3d& q) {
+  const std::vector<mesh::Vec3d>& rest = mesh.positions;
+  auto add = [&](uint32_t v0, uint32_t v1, uint32_t v2, const mesh::Vec3d& q) {
     out.bindings.push_back(bindToTriangle(rest, v0, v1, v2, q, apex_height));
     out.rest_positions.push_back(q);
     return uint32_t(out.bindings.size() - 1);
@@ -74,8 +78,8 @@ RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_
       for (uint32_t j = 0; j <= level; ++j) {
         for (uint32_t i = 0; i <= level; ++i) {
           const double u = double(i) / level, v = double(j) / level;
-          const Vec3d q = (1 - v) * ((1 - u) * rest[face[0]] + u * rest[face[1]]) +
-                          v * ((1 - u) * rest[face[3]] + u * rest[face[2]]);
+          const mesh::Vec3d q = (1 - v) * ((1 - u) * rest[face[0]] + u * rest[face[1]]) +
+                                v * ((1 - u) * rest[face[3]] + u * rest[face[2]]);
           grid[j * (level + 1) + i] =
               j <= i ? add(face[0], face[1], face[2], q) : add(face[0], face[2], face[3], q);
         }
@@ -98,7 +102,7 @@ RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_
         row_start.push_back(uint32_t(ids.size()));
         for (uint32_t i = 0; i + j <= level; ++i) {
           const double b1 = double(i) / level, b2 = double(j) / level;
-          const Vec3d q = (1 - b1 - b2) * rest[t[0]] + b1 * rest[t[1]] + b2 * rest[t[2]];
+          const mesh::Vec3d q = (1 - b1 - b2) * rest[t[0]] + b1 * rest[t[1]] + b2 * rest[t[2]];
           ids.push_back(add(t[0], t[1], t[2], q));
         }
       }

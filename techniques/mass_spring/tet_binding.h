@@ -23,27 +23,28 @@ struct TetBinding {
 };
 
 // The virtual apex of triangle p0 p1 p2 for a tetrahedron of `volume`.
-Vec3d virtualApex(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, double volume);
+mesh::Vec3d virtualApex(const mesh::Vec3d& p0, const mesh::Vec3d& p1, const mesh::Vec3d& p2,
+                        double volume);
 
 // Binds the point q to triangle (v0, v1, v2) of `rest`, with a rest apex at height
 // `apex_height` above the centroid (the tetrahedron's volume is area * height / 3).
-TetBinding bindToTriangle(const std::vector<Vec3d>& rest, uint32_t v0, uint32_t v1, uint32_t v2,
-                          const Vec3d& q, double apex_height);
+TetBinding bindToTriangle(const std::vector<mesh::Vec3d>& rest, uint32_t v0, uint32_t v1,
+                          uint32_t v2, const mesh::Vec3d& q, double apex_height);
 
 // DrawVertex of `binding` over the current simulated positions.
-Vec3d drawVertex(const TetBinding& binding, const std::vector<Vec3d>& positions);
+mesh::Vec3d drawVertex(const TetBinding& binding, const std::vector<mesh::Vec3d>& positions);
 // The same in float, in the operation order of shaders/mass_spring/render.comp (the weights
 // and volume rounded to float, as the GPU holds them).
-Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<Vec3f>& positions);
+mesh::Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<mesh::Vec3f>& positions);
 
 // A rendered mesh: the simulated mesh's faces tessellated uniformly at `level` (bilinear
 // on quads, linear on triangles, fan triangles on larger polygons), each point bound to the
 // fan triangle of its face that contains it, with an apex at `apex_height` metres.
 struct RenderMesh {
   std::vector<TetBinding> bindings;   // one per render vertex (points on shared edges repeat)
-  std::vector<Vec3d> rest_positions;  // the render vertices at rest
+  std::vector<mesh::Vec3d> rest_positions;  // the render vertices at rest
   std::vector<uint32_t> triangles;    // 3 indices per triangle into bindings
 };
-RenderMesh tessellateForRendering(const Mesh& mesh, uint32_t level, double apex_height);
+RenderMesh tessellateForRendering(const mesh::Mesh& mesh, uint32_t level, double apex_height);
 
 }  // namespace tb::mass_spring

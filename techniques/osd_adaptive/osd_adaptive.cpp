@@ -31,31 +31,34 @@ constexpr int kMaxPatchPoints = kMaxSubPatchPoints;
 
 // A refined or local point for Far's interpolation templates, in double.
 struct Point3 {
-  Vec3d p{};
-  void Clear(void* = nullptr) { p = Vec3d{}; }
+  mesh::Vec3d p{};
+  void Clear(void* = nullptr) { p = mesh::Vec3d{}; }
   void AddWithWeight(const Point3& src, double weight) { p = p + src.p * weight; }
 };
 
-[[noreturn]] void fail(const std::string& what) { throw UnsupportedInput("osd_adaptive: " + what); }
+[[noreturn]] void fail(const std::string& what) {
+  throw techniques::UnsupportedInput("osd_adaptive: " + what);
+}
 
 // Rules the per-base-face parameterisation needs (OpenSubdiv itself refuses less): quads
 // only, a manifold mesh, no holes.
-void validate(const Mesh& mesh) {
-  requireManifoldQuads(mesh, "osd_adaptive", "this baseline samples quad base faces only",
-                       "needs a manifold mesh");
+void validate(const mesh::Mesh& mesh) {
+  techniques::requireManifoldQuads(
+      mesh, "osd_adaptive", "this baseline samples quad base faces only", "needs a manifold mesh");
   if (!mesh.tags.holes.empty()) {
-    fail(describeFace(mesh, mesh.tags.holes[0]) + " is tagged as a hole; holes are not supported");
+    fail(mesh::describeFace(mesh, mesh.tags.holes[0]) +
+         " is tagged as a hole; holes are not supported");
   }
 }
 
-class OsdAdaptivePatches final : public SurfacePatches {
+class OsdAdaptivePatches final : public techniques::SurfacePatches {
  public:
-  OsdAdaptivePatches(const Mesh& mesh, int isolation, EndCap end_cap)
+  OsdAdaptivePatches(const mesh::Mesh& mesh, int isolation, EndCap end_cap)
       : mesh_(mesh), isolation_(isolation), end_cap_(end_cap) {
     validate(mesh_);
     try {
       refiner_ = osd::buildTopologyRefiner(mesh_, osd::Scheme::kCatmullClark);
-    } catch (const InputError& error) {
+    } catch (const mesh::InputError& error) {
       fail(std::string("OpenSubdiv refuses ") + mesh_.source + ": " + error.what());
     }
     Far::TopologyRefiner::AdaptiveOptions adaptive(isolation_);
@@ -137,24 +140,29 @@ class OsdAdaptivePatches final : public SurfacePatches {
   // One SurfacePatches patch per base face: the Far patches of the face are its pieces,
   // found by Far::PatchMap from the face's own (u, v), which is also Bfr's parameter, so
   // the parametric error measure compares the same point.
-  PatchDomain patchDomain(size_t) const override { return PatchDomain::kQuad; }
-  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
+  techniques::PatchDomain patchDomain(size_t) const override {
+    return techniques::PatchDomain::kQuad;
+  }
+  techniques::LimitScheme approximates() const override {
+    return techniques::LimitScheme::kCatmullClark;
+  }
   size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
+  const mesh::Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = mesh_.facePositions(patch);
     return {face[0], face[1], face[2], face[3]};
   }
   uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
 
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
     const Far::PatchTable::PatchHandle& handle = find(patch, coord[0], coord[1]);
     double w[kMaxPatchPoints], wu[kMaxPatchPoints], wv[kMaxPatchPoints];
     table_->EvaluateBasis(handle, coord[0], coord[1], w, wu, wv);
     const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
-    Vec3d p{}, du{}, dv{};
+    mesh::Vec3d p{}, du{}, dv{};
     for (int k = 0; k < cvs.size(); ++k) {
-      const Vec3d& q = points_d_[size_t(cvs[k])];
+      const mesh::Vec3d& q = points_d_[size_t(cvs[k])];
       p = p + q * w[k];
       du = du + q * wu[k];
       dv = dv + q * wv[k];
@@ -164,15 +172,16 @@ class OsdAdaptivePatches final : public SurfacePatches {
 
   // The CPU twin of osd_adaptive.tese: the same sub-patch search, osd_basis.h's weights in
   // float, and the sums in control-point order from zero.
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch,
+                                          const tess::DomainPoint& coord) const override {
     const float u = std::clamp(coord[0], 0.0f, 1.0f), v = std::clamp(coord[1], 0.0f, 1.0f);
     const SubPatchWords& sub = findSubPatch(patch, u, v);
-    const Vec2T<float> local = subPatchLocal(sub.packed, u, v);
+    const mesh::Vec2T<float> local = subPatchLocal(sub.packed, u, v);
     float w[kMaxPatchPoints], ws[kMaxPatchPoints], wt[kMaxPatchPoints];
     const int count = subPatchWeights(sub.packed, local.x, local.y, w, ws, wt);
-    Vec3f p{}, ds{}, dt{};
+    mesh::Vec3f p{}, ds{}, dt{};
     for (int k = 0; k < count; ++k) {
-      const Vec3f& q = points_f_[point_indices_[sub.first_index + uint32_t(k)]];
+      const mesh::Vec3f& q = points_f_[point_indices_[sub.first_index + uint32_t(k)]];
       p = p + q * w[k];
       ds = ds + q * ws[k];
       dt = dt + q * wt[k];
@@ -182,16 +191,16 @@ class OsdAdaptivePatches final : public SurfacePatches {
 
   // osd_basis.h's weights in double over the double points (Far's PatchMap and basis left
   // out): evaluate()'s twin, for the tests of the basis.
-  SurfacePoint evaluateOwnBasis(size_t face, double u, double v) const {
+  techniques::SurfacePoint evaluateOwnBasis(size_t face, double u, double v) const {
     u = std::clamp(u, 0.0, 1.0);
     v = std::clamp(v, 0.0, 1.0);
     const SubPatchWords& sub = findSubPatch(face, u, v);
-    const Vec2d local = subPatchLocal(sub.packed, u, v);
+    const mesh::Vec2d local = subPatchLocal(sub.packed, u, v);
     double w[kMaxPatchPoints], ws[kMaxPatchPoints], wt[kMaxPatchPoints];
     const int count = subPatchWeights(sub.packed, local.x, local.y, w, ws, wt);
-    Vec3d p{}, ds{}, dt{};
+    mesh::Vec3d p{}, ds{}, dt{};
     for (int k = 0; k < count; ++k) {
-      const Vec3d& q = points_d_[point_indices_[sub.first_index + uint32_t(k)]];
+      const mesh::Vec3d& q = points_d_[point_indices_[sub.first_index + uint32_t(k)]];
       p = p + q * w[k];
       ds = ds + q * ws[k];
       dt = dt + q * wt[k];
@@ -208,7 +217,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
     program.input_vertices_per_patch = 1;
     std::vector<uint32_t> points, ranges, subs;
     points.reserve(4 * points_f_.size());
-    for (const Vec3f& p : points_f_) {
+    for (const mesh::Vec3f& p : points_f_) {
       for (float x : {p.x, p.y, p.z, 0.0f}) points.push_back(std::bit_cast<uint32_t>(x));
     }
     for (const auto& [first, count] : face_ranges_) ranges.insert(ranges.end(), {first, count});
@@ -222,8 +231,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
 
   // Every control point of the face's Far patches: B-spline and Gregory basis patches lie in
   // the convex hull of their control points. No normal bound.
-  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
-    PatchCullBounds bounds;
+  std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
+    techniques::PatchCullBounds bounds;
     for (const auto& [array, index] : face_patches_[patch]) {
       const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, index);
       for (int k = 0; k < cvs.size(); ++k) bounds.hull.push_back(points_d_[size_t(cvs[k])]);
@@ -231,8 +240,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
     return bounds;
   }
 
-  DataFootprint footprint() const override {
-    DataFootprint f;
+  techniques::DataFootprint footprint() const override {
+    techniques::DataFootprint f;
     // The GPU layout of gpuPrograms(): every refined level's points and the end caps' local
     // points as vec4 (16 bytes each; the control mesh's own vertices are the first of
     // them); per base face its sub-patch range (8 bytes), per Far patch 8 bytes (as Far's
@@ -259,13 +268,13 @@ class OsdAdaptivePatches final : public SurfacePatches {
   }
 
  private:
-  static Vec3d normalizeOrZero(const Vec3d& n) {
+  static mesh::Vec3d normalizeOrZero(const mesh::Vec3d& n) {
     const double l = length(n);
-    return l > 0 ? n * (1 / l) : Vec3d{};
+    return l > 0 ? n * (1 / l) : mesh::Vec3d{};
   }
-  static Vec3f normalizeOrZero(const Vec3f& n) {
+  static mesh::Vec3f normalizeOrZero(const mesh::Vec3f& n) {
     const float l = length(n);
-    return l > 0 ? n * (1 / l) : Vec3f{};
+    return l > 0 ? n * (1 / l) : mesh::Vec3f{};
   }
 
   // Far's patches in the GPU's form: per face a range of sub_patches_, in patch table order.
@@ -273,7 +282,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
     face_ranges_.assign(mesh_.faceCount(), {0u, 0u});
     for (size_t f = 0; f < mesh_.faceCount(); ++f) {
       if (face_patches_[f].empty()) {
-        fail(describeFace(mesh_, f) +
+        fail(mesh::describeFace(mesh_, f) +
              " has no limit patch (a boundary face without boundary "
              "interpolation?)");
       }
@@ -284,19 +293,20 @@ class OsdAdaptivePatches final : public SurfacePatches {
         const bool gregory =
             table_->GetPatchArrayDescriptor(array).GetType() == Far::PatchDescriptor::GREGORY_BASIS;
         if (param.NonQuadRoot() || param.GetDepth() > 10) {
-          fail("a Far patch of " + describeFace(mesh_, f) + " has an unexpected parameterisation");
+          fail("a Far patch of " + mesh::describeFace(mesh_, f) +
+               " has an unexpected parameterisation");
         }
         const uint32_t packed = packSubPatch(param.GetU(), param.GetV(), param.GetDepth(),
                                              param.GetBoundary(), gregory);
         const Far::ConstIndexArray cvs = table_->GetPatchVertices(array, index);
         if (cvs.size() != subPatchPointCount(packed)) {
-          fail("a Far patch of " + describeFace(mesh_, f) + " has " + std::to_string(cvs.size()) +
-               " points");
+          fail("a Far patch of " + mesh::describeFace(mesh_, f) + " has " +
+               std::to_string(cvs.size()) + " points");
         }
         sub_patches_.push_back({packed, uint32_t(point_indices_.size())});
         for (int k = 0; k < cvs.size(); ++k) {
           if (cvs[k] < 0 || size_t(cvs[k]) >= points_f_.size()) {
-            fail("a Far patch of " + describeFace(mesh_, f) + " names point " +
+            fail("a Far patch of " + mesh::describeFace(mesh_, f) + " names point " +
                  std::to_string(cvs[k]));
           }
           point_indices_.push_back(uint32_t(cvs[k]));
@@ -304,7 +314,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
         area += std::ldexp(1.0, -2 * int(param.GetDepth()));
       }
       if (area != 1.0) {
-        fail("the Far patches of " + describeFace(mesh_, f) + " do not tile its domain");
+        fail("the Far patches of " + mesh::describeFace(mesh_, f) + " do not tile its domain");
       }
     }
   }
@@ -330,7 +340,7 @@ class OsdAdaptivePatches final : public SurfacePatches {
     return *handle;
   }
 
-  Mesh mesh_;
+  mesh::Mesh mesh_;
   int isolation_;
   EndCap end_cap_;
   std::unique_ptr<Far::TopologyRefiner> refiner_;
@@ -338,8 +348,8 @@ class OsdAdaptivePatches final : public SurfacePatches {
   std::unique_ptr<Far::PatchMap> map_;
   size_t refined_count_ = 0;
   size_t patch_indices_ = 0;
-  std::vector<Vec3d> points_d_;
-  std::vector<Vec3f> points_f_;
+  std::vector<mesh::Vec3d> points_d_;
+  std::vector<mesh::Vec3f> points_f_;
   std::vector<std::vector<std::pair<int, int>>> face_patches_;
   // The GPU's form (gpuPrograms()): per face (first sub-patch, count), the sub-patches, and
   // their control-point indices into points_f_.
@@ -352,9 +362,9 @@ class OsdAdaptivePatches final : public SurfacePatches {
 
 }  // namespace
 
-const TechniqueInfo& OsdAdaptiveTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "osd_adaptive", TechniqueFamily::kSurface,
+const techniques::TechniqueInfo& OsdAdaptiveTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "osd_adaptive", techniques::TechniqueFamily::kSurface,
       "OpenSubdiv feature-adaptive patch table (baseline)",
       "Nießner, Loop, Meyer & DeRose, Feature-Adaptive GPU Rendering of Catmull-Clark "
       "Subdivision Surfaces, ACM TOG 31(1) 2012; OpenSubdiv Far",
@@ -363,15 +373,16 @@ const TechniqueInfo& OsdAdaptiveTechnique::info() const {
   return kInfo;
 }
 
-std::vector<VariantInfo> OsdAdaptiveTechnique::variants() const {
+std::vector<techniques::VariantInfo> OsdAdaptiveTechnique::variants() const {
   const auto make = [](int isolation, EndCap cap, bool full_suite_only) {
     const bool gregory = cap == EndCap::kGregoryBasis;
-    return VariantInfo{"iso" + std::to_string(isolation) + (gregory ? "_gregory" : "_bspline"),
-                       "isolation level " + std::to_string(isolation) + ", " +
-                           (gregory ? "Gregory basis" : "B-spline basis") + " end caps",
-                       {{"isolation", double(isolation)}, {"endcap", double(int(cap))}},
-                       false,
-                       full_suite_only};
+    return techniques::VariantInfo{
+        "iso" + std::to_string(isolation) + (gregory ? "_gregory" : "_bspline"),
+        "isolation level " + std::to_string(isolation) + ", " +
+            (gregory ? "Gregory basis" : "B-spline basis") + " end caps",
+        {{"isolation", double(isolation)}, {"endcap", double(int(cap))}},
+        false,
+        full_suite_only};
   };
   // The default suite runs iso2_gregory only: every variant runs every per-variant measure,
   // and with the GPU program (culling, cracks and adaptivity on the device) a second one took
@@ -382,46 +393,47 @@ std::vector<VariantInfo> OsdAdaptiveTechnique::variants() const {
           make(2, EndCap::kBSplineBasis, true)};
 }
 
-int variantIsolation(const VariantInfo& variant) {
-  return std::clamp(paramOr<int>(OsdAdaptiveTechnique().info(), variant, "isolation", 2), 0, 10);
+int variantIsolation(const techniques::VariantInfo& variant) {
+  return std::clamp(
+      techniques::paramOr<int>(OsdAdaptiveTechnique().info(), variant, "isolation", 2), 0, 10);
 }
 
-EndCap variantEndCap(const VariantInfo& variant) {
-  return paramOr<int>(OsdAdaptiveTechnique().info(), variant, "endcap", 0) == 1
+EndCap variantEndCap(const techniques::VariantInfo& variant) {
+  return techniques::paramOr<int>(OsdAdaptiveTechnique().info(), variant, "endcap", 0) == 1
              ? EndCap::kBSplineBasis
              : EndCap::kGregoryBasis;
 }
 
-std::string OsdAdaptiveTechnique::checkSupport(const Mesh& mesh) const {
+std::string OsdAdaptiveTechnique::checkSupport(const mesh::Mesh& mesh) const {
   try {
     validate(mesh);
     osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
-  } catch (const UnsupportedInput& error) {
+  } catch (const techniques::UnsupportedInput& error) {
     return error.what();
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     return std::string("osd_adaptive: OpenSubdiv refuses ") + mesh.source + ": " + error.what();
   }
   return {};
 }
 
-std::unique_ptr<TechniqueInstance> OsdAdaptiveTechnique::build(const TechniqueInput& input,
-                                                               const VariantInfo& variant) const {
-  return std::make_unique<SurfaceInstance>(std::make_unique<OsdAdaptivePatches>(
-      requireMesh(info(), input), variantIsolation(variant), variantEndCap(variant)));
+std::unique_ptr<techniques::TechniqueInstance> OsdAdaptiveTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
+  return std::make_unique<techniques::SurfaceInstance>(std::make_unique<OsdAdaptivePatches>(
+      techniques::requireMesh(info(), input), variantIsolation(variant), variantEndCap(variant)));
 }
 
-PatchTableCounts patchTableCounts(const SurfacePatches& patches) {
+PatchTableCounts patchTableCounts(const techniques::SurfacePatches& patches) {
   const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
   return osd == nullptr ? PatchTableCounts{} : osd->counts();
 }
 
-bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v) {
+bool isRegularAt(const techniques::SurfacePatches& patches, size_t face, double u, double v) {
   const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
   return osd != nullptr && osd->regularAt(face, u, v);
 }
 
-std::optional<SurfacePoint> evaluateOwnBasis(const SurfacePatches& patches, size_t face, double u,
-                                             double v) {
+std::optional<techniques::SurfacePoint> evaluateOwnBasis(const techniques::SurfacePatches& patches,
+                                                         size_t face, double u, double v) {
   const auto* osd = dynamic_cast<const OsdAdaptivePatches*>(&patches);
   if (osd == nullptr) return std::nullopt;
   return osd->evaluateOwnBasis(face, u, v);

@@ -17,21 +17,22 @@ namespace tb::osd_adaptive {
 
 enum class EndCap { kGregoryBasis = 0, kBSplineBasis = 1 };
 
-class OsdAdaptiveTechnique final : public Technique {
+class OsdAdaptiveTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
+  const techniques::TechniqueInfo& info() const override;
   // "iso2_gregory" only (the default suite's budget); parameters "isolation" and "endcap"
   // give any other level and B-spline basis end caps.
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
 };
 
 // Parameters of a variant: "isolation" (Far adaptive isolation level, 0..10) and
 // "endcap" (EndCap as a number).
-int variantIsolation(const VariantInfo& variant);
-EndCap variantEndCap(const VariantInfo& variant);
+int variantIsolation(const techniques::VariantInfo& variant);
+EndCap variantEndCap(const techniques::VariantInfo& variant);
 
 // What the patch table of one built instance holds (for tests and the report): 0 for
 // patches not built by osd_adaptive.
@@ -43,16 +44,16 @@ struct PatchTableCounts {
   size_t refined_vertices = 0;  // vertices of every refinement level, base level included
   size_t local_points = 0;      // end-cap points computed by the local point stencils
 };
-PatchTableCounts patchTableCounts(const SurfacePatches& patches);
+PatchTableCounts patchTableCounts(const techniques::SurfacePatches& patches);
 
 // True when the Far patch that covers (u, v) of base face `face` is a regular B-spline patch
 // (not an end cap). False for patches not built by osd_adaptive.
-bool isRegularAt(const SurfacePatches& patches, size_t face, double u, double v);
+bool isRegularAt(const techniques::SurfacePatches& patches, size_t face, double u, double v);
 
 // Base face `face` at (u, v) with osd_basis.h's weights in double (the GPU's sub-patch
 // search and basis, evaluateFloat's in double) instead of Far's PatchMap and EvaluateBasis:
 // for tests of the basis against evaluate(). Nullopt for patches not built by osd_adaptive.
-std::optional<SurfacePoint> evaluateOwnBasis(const SurfacePatches& patches, size_t face, double u,
-                                             double v);
+std::optional<techniques::SurfacePoint> evaluateOwnBasis(const techniques::SurfacePatches& patches,
+                                                         size_t face, double u, double v);
 
 }  // namespace tb::osd_adaptive

@@ -66,7 +66,7 @@ bool subPatchCovers(uint32_t packed, T u, T v) {
 
 // Local (s, t) of base-face (u, v) in the sub-patch: exact in float and double.
 template <class T>
-Vec2T<T> subPatchLocal(uint32_t packed, T u, T v) {
+mesh::Vec2T<T> subPatchLocal(uint32_t packed, T u, T v) {
   const T scale = T(uint32_t(1) << subPatchDepth(packed));
   return {u * scale - T(subPatchU(packed)), v * scale - T(subPatchV(packed))};
 }

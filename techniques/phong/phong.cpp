@@ -21,24 +21,25 @@ constexpr uint32_t kPhongRecordWords = 15;
 // The `edge` variant borrows pn_triangles' per-patch records: the canonical corner order
 // by position, seed 003's geometry normals and edge flags (a flagged, i.e. split, edge
 // uses the geometry normals at its ends; other edges the shading normals).
-TriangleRecordOptions edgeOptions() {
-  TriangleRecordOptions options;
+techniques::TriangleRecordOptions edgeOptions() {
+  techniques::TriangleRecordOptions options;
   options.geometry_normals = true;
   return options;
 }
 
-class PhongPatches final : public TrianglePatchesBase {
+class PhongPatches final : public techniques::TrianglePatchesBase {
  public:
-  PhongPatches(Triangulation triangulation, double alpha, bool edge)
-      : TrianglePatchesBase(std::move(triangulation)), alpha_(alpha), edge_(edge) {
-    if (edge_) edge_build_ = buildTriangleRecords(tri_.mesh, edgeOptions());
+  PhongPatches(mesh::Triangulation triangulation, double alpha, bool edge)
+      : techniques::TrianglePatchesBase(std::move(triangulation)), alpha_(alpha), edge_(edge) {
+    if (edge_) edge_build_ = techniques::buildTriangleRecords(tri_.mesh, edgeOptions());
   }
 
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
     if (edge_) {
       const auto& perm = edge_build_.records[patch].perm;
       const PhongPoint<double> point =
-          evaluatePhongEdge(edgeTriangle<double>(patch, [](const Vec3d& v) { return v; }),
+          evaluatePhongEdge(edgeTriangle<double>(patch, [](const mesh::Vec3d& v) { return v; }),
                             {coord[perm[0]], coord[perm[1]], coord[perm[2]]}, alpha_);
       return {point.position, point.normal};
     }
@@ -47,15 +48,16 @@ class PhongPatches final : public TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch,
+                                          const tess::DomainPoint& coord) const override {
     if (edge_) {
       const auto& perm = edge_build_.records[patch].perm;
       const PhongPoint<float> point = evaluatePhongEdge(
-          edgeTriangle<float>(patch, [](const Vec3d& v) { return vecCast<float>(v); }),
+          edgeTriangle<float>(patch, [](const mesh::Vec3d& v) { return vecCast<float>(v); }),
           {coord[perm[0]], coord[perm[1]], coord[perm[2]]}, float(alpha_));
       return {point.position, point.normal};
     }
-    const Mesh& mesh = tri_.mesh;
+    const mesh::Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     PhongTriangle<float> tri;
     for (int i = 0; i < 3; ++i) {
@@ -70,10 +72,10 @@ class PhongPatches final : public TrianglePatchesBase {
   // phong_bounds.h. Plain Phong: the net of the face's corners in face order, whose
   // weights are gl_TessCoord's components, so the normals face the front as they are.
   // The edge variant's hull does not depend on the corner order.
-  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
+  std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
     if (edge_) {
-      return phongEdgeCullBounds(edgeTriangle<double>(patch, [](const Vec3d& v) { return v; }),
-                                 alpha_);
+      return phongEdgeCullBounds(
+          edgeTriangle<double>(patch, [](const mesh::Vec3d& v) { return v; }), alpha_);
     }
     return phongCullBounds(faceTriangle(patch), alpha_);
   }
@@ -85,16 +87,16 @@ class PhongPatches final : public TrianglePatchesBase {
     program.domain = tess::Domain::kTriangle;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;
-    const std::vector<Vec3d>& normals = edge_ ? edge_build_.normals : tri_.mesh.normals;
+    const std::vector<mesh::Vec3d>& normals = edge_ ? edge_build_.normals : tri_.mesh.normals;
     std::vector<uint32_t> records;
     records.reserve(patchCount() * kPhongRecordWords);
     for (size_t p = 0; p < patchCount(); ++p) {
       const PatchRecord r = record(p);
       records.insert(records.end(), r.begin(), r.end());
     }
-    auto vec4s = [](const std::vector<Vec3d>& values) {
+    auto vec4s = [](const std::vector<mesh::Vec3d>& values) {
       std::vector<uint32_t> words;
-      for (const Vec3d& v : values) {
+      for (const mesh::Vec3d& v : values) {
         for (float x : {float(v.x), float(v.y), float(v.z), 1.0f}) {
           words.push_back(std::bit_cast<uint32_t>(x));
         }
@@ -106,42 +108,44 @@ class PhongPatches final : public TrianglePatchesBase {
     return {program};
   }
 
-  std::optional<OperationProfile> operationProfile(size_t patch) const override {
-    using C = CountingScalar<float>;
-    auto cast = [](const Vec3d& v) { return Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))}; };
+  std::optional<techniques::OperationProfile> operationProfile(size_t patch) const override {
+    using C = techniques::CountingScalar<float>;
+    auto cast = [](const mesh::Vec3d& v) {
+      return mesh::Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))};
+    };
     const C third(1.0f / 3.0f);
     const std::array<C, 3> weight{third, third, C(1.0f / 3.0f)};
-    OperationProfile profile;
-    resetOperationCounts();
+    techniques::OperationProfile profile;
+    techniques::resetOperationCounts();
     if (edge_) {
       const PhongEdgeTriangle<C> tri = edgeTriangle<C>(patch, cast);
-      profile.per_patch_setup = operationCounts();
-      resetOperationCounts();
+      profile.per_patch_setup = techniques::operationCounts();
+      techniques::resetOperationCounts();
       (void)evaluatePhongEdge(tri, weight, C(float(alpha_)));
       profile.note = "float, shader order: TCS normalises 3 + 6 normals; TES per-edge offsets";
     } else {
-      const Mesh& mesh = tri_.mesh;
+      const mesh::Mesh& mesh = tri_.mesh;
       const uint32_t first = mesh.face_offsets[patch];
       PhongTriangle<C> tri;
       for (int i = 0; i < 3; ++i) {
         tri.position[i] = cast(mesh.positions[mesh.corner_positions[first + i]]);
         tri.normal[i] = normalize(cast(mesh.normals[mesh.corner_normals[first + i]]));
       }
-      profile.per_patch_setup = operationCounts();
-      resetOperationCounts();
+      profile.per_patch_setup = techniques::operationCounts();
+      techniques::resetOperationCounts();
       (void)evaluatePhongInOrder(tri, weight, C(float(alpha_)));
       profile.note = "float, shader order: TCS normalises 3 normals (corner order sorted on the "
                      "host); TES eq. 3-4";
     }
-    profile.per_vertex = operationCounts();
+    profile.per_vertex = techniques::operationCounts();
     return profile;
   }
 
-  DataFootprint footprint() const override {
+  techniques::DataFootprint footprint() const override {
     // Phong needs nothing beyond the vertex buffer and index buffer; the edge variant adds
     // a geometry normal per position and 4 bytes of edge flags per vertex (seed 003).
-    if (!edge_) return {triangleControlMeshBytes(tri_.mesh), 0, 0};
-    return {triangleControlMeshBytes(tri_.mesh),
+    if (!edge_) return {mesh::triangleControlMeshBytes(tri_.mesh), 0, 0};
+    return {mesh::triangleControlMeshBytes(tri_.mesh),
             uint64_t(edge_build_.geometry_normal_count) * 12 + patchCount() * 3 * 4, 0};
   }
 
@@ -152,10 +156,10 @@ class PhongPatches final : public TrianglePatchesBase {
   // as evaluateFloat sorts them; pn_triangles' order for the edge variant) and indices.
   PatchRecord record(size_t patch) const {
     PatchRecord r{};
-    const Mesh& mesh = tri_.mesh;
+    const mesh::Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     if (edge_) {
-      const TriangleRecord& pr = edge_build_.records[patch];
+      const techniques::TriangleRecord& pr = edge_build_.records[patch];
       for (int i = 0; i < 3; ++i) {
         r[i] = pr.perm[i];
         r[3 + i] = pr.position[i];
@@ -183,7 +187,7 @@ class PhongPatches final : public TrianglePatchesBase {
 
   // Patch p's corners in face order, double, unit normals.
   PhongTriangle<double> faceTriangle(size_t patch) const {
-    const Mesh& mesh = tri_.mesh;
+    const mesh::Mesh& mesh = tri_.mesh;
     const uint32_t first = mesh.face_offsets[patch];
     PhongTriangle<double> tri;
     for (int i = 0; i < 3; ++i) {
@@ -193,7 +197,7 @@ class PhongPatches final : public TrianglePatchesBase {
     return tri;
   }
 
-  static uint32_t edgeNormalIndex(const TriangleRecord& r, int e, int end) {
+  static uint32_t edgeNormalIndex(const techniques::TriangleRecord& r, int e, int end) {
     const int a = kPhongEdgeEnds[e][0], b = kPhongEdgeEnds[e][1];
     const int label = kPhongEdgeEnds[e][end];
     const bool flagged = ((r.flags[a] & r.flags[b]) & (1u << e)) != 0;
@@ -202,7 +206,7 @@ class PhongPatches final : public TrianglePatchesBase {
 
   template <class T, class Cast>
   PhongEdgeTriangle<T> edgeTriangle(size_t patch, Cast cast) const {
-    const TriangleRecord& r = edge_build_.records[patch];
+    const techniques::TriangleRecord& r = edge_build_.records[patch];
     PhongEdgeTriangle<T> tri;
     for (int i = 0; i < 3; ++i) {
       tri.position[i] = cast(tri_.mesh.positions[r.position[i]]);
@@ -218,21 +222,21 @@ class PhongPatches final : public TrianglePatchesBase {
 
   double alpha_;
   bool edge_;
-  TriangleRecords edge_build_;
+  techniques::TriangleRecords edge_build_;
 };
 
 }  // namespace
 
-const TechniqueInfo& PhongTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "phong", TechniqueFamily::kSurface, "Phong tessellation",
+const techniques::TechniqueInfo& PhongTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "phong", techniques::TechniqueFamily::kSurface, "Phong tessellation",
       "Boubekeur & Alexa, Phong Tessellation, ACM TOG 27(5) (SIGGRAPH Asia 2008)",
       "triangle meshes with vertex normals; polygons are fan-triangulated; missing normals are "
       "computed"};
   return kInfo;
 }
 
-std::vector<VariantInfo> PhongTechnique::variants() const {
+std::vector<techniques::VariantInfo> PhongTechnique::variants() const {
   // Default first: the paper's α = 3/4.
   return {
       {"alpha0.75", "shape factor 0.75 (the paper's choice)", {{"alpha", 0.75}}},
@@ -246,19 +250,21 @@ std::vector<VariantInfo> PhongTechnique::variants() const {
   };
 }
 
-std::string PhongTechnique::checkSupport(const Mesh& mesh) const {
+std::string PhongTechnique::checkSupport(const mesh::Mesh& mesh) const {
   if (mesh.faceCount() == 0) return "phong: " + mesh.source + " has no faces";
   if (!mesh.hasNormals()) return "phong: " + mesh.source + " has no normals (load computes them)";
   return {};
 }
 
-std::unique_ptr<TechniqueInstance> PhongTechnique::build(const TechniqueInput& input,
-                                                         const VariantInfo& variant) const {
-  const Mesh& mesh = requireMesh(info(), input);
-  if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
-  return std::make_unique<SurfaceInstance>(std::make_unique<PhongPatches>(
-      fanTriangulate(mesh), paramOr<double>(info(), variant, "alpha", kDefaultAlpha),
-      paramOr<bool>(info(), variant, "edge", false)));
+std::unique_ptr<techniques::TechniqueInstance> PhongTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
+  const mesh::Mesh& mesh = techniques::requireMesh(info(), input);
+  if (std::string reason = checkSupport(mesh); !reason.empty())
+    throw techniques::UnsupportedInput(reason);
+  return std::make_unique<techniques::SurfaceInstance>(std::make_unique<PhongPatches>(
+      mesh::fanTriangulate(mesh),
+      techniques::paramOr<double>(info(), variant, "alpha", kDefaultAlpha),
+      techniques::paramOr<bool>(info(), variant, "edge", false)));
 }
 
 TB_REGISTER_TECHNIQUE(PhongTechnique);

@@ -7,13 +7,14 @@ namespace tb::phong {
 
 constexpr double kDefaultAlpha = 0.75;  // the paper's recommended shape factor
 
-class PhongTechnique final : public Technique {
+class PhongTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
+  const techniques::TechniqueInfo& info() const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
 };
 
 }  // namespace tb::phong

@@ -25,12 +25,12 @@ namespace tb::phong {
 
 // b_200, b_110, b_101, b_020, b_011, b_002 of the corners in the given order (the net
 // order of techniques/common/patch_bounds.h).
-std::vector<Vec3d> phongQuadraticNet(const PhongTriangle<double>& tri, double alpha);
+std::vector<mesh::Vec3d> phongQuadraticNet(const PhongTriangle<double>& tri, double alpha);
 
 // Hull and generators, oriented as the corners' order: front-facing for the face's order.
-PatchCullBounds phongCullBounds(const PhongTriangle<double>& tri, double alpha);
+techniques::PatchCullBounds phongCullBounds(const PhongTriangle<double>& tri, double alpha);
 
 // The per-edge variant's hull (24 points), no generators.
-PatchCullBounds phongEdgeCullBounds(const PhongEdgeTriangle<double>& tri, double alpha);
+techniques::PatchCullBounds phongEdgeCullBounds(const PhongEdgeTriangle<double>& tri, double alpha);
 
 }  // namespace tb::phong

@@ -12,14 +12,14 @@ namespace tb::phong {
 
 template <class T>
 struct PhongTriangle {
-  std::array<Vec3T<T>, 3> position;  // corner positions p_i
-  std::array<Vec3T<T>, 3> normal;    // unit corner normals n_i
+  std::array<mesh::Vec3T<T>, 3> position;  // corner positions p_i
+  std::array<mesh::Vec3T<T>, 3> normal;    // unit corner normals n_i
 };
 
 template <class T>
 struct PhongPoint {
-  Vec3T<T> position;
-  Vec3T<T> normal;  // normalised linear interpolation of the corner normals (paper §3)
+  mesh::Vec3T<T> position;
+  mesh::Vec3T<T> normal;  // normalised linear interpolation of the corner normals (paper §3)
 };
 
 // Paper eq. (3)-(4): p* = (1 - α) p + α Σ w_i π_i(p), with p = Σ w_i p_i the flat
@@ -34,9 +34,9 @@ struct PhongPoint {
 template <class T>
 PhongPoint<T> evaluatePhongInOrder(const PhongTriangle<T>& tri, const std::array<T, 3>& weight,
                                    T alpha) {
-  const Vec3T<T> flat =
+  const mesh::Vec3T<T> flat =
       tri.position[0] * weight[0] + tri.position[1] * weight[1] + tri.position[2] * weight[2];
-  Vec3T<T> offset{};
+  mesh::Vec3T<T> offset{};
   for (int i = 0; i < 3; ++i) {
     const T height = dot(flat - tri.position[i], tri.normal[i]);
     offset = offset + tri.normal[i] * (weight[i] * height);

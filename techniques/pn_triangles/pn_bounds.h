@@ -13,9 +13,11 @@ namespace tb::pn_triangles {
 // b_ijk in patch_bounds.h's net order, i, j, k the powers of canonical labels 0, 1, 2's
 // weights: the corners, the edge points of canonical edges (0,1), (0,2), (1,2) near their
 // first and second end (evaluateControl's terms), the centre b111.
-inline std::vector<Vec3d> cubicNet(const PnControl<double>& c) {
-  std::vector<Vec3d> net(triangleNetSize(3));
-  const auto set = [&net](int i, int j, const Vec3d& p) { net[triangleNetSlot(3, i, j)] = p; };
+inline std::vector<mesh::Vec3d> cubicNet(const PnControl<double>& c) {
+  std::vector<mesh::Vec3d> net(techniques::triangleNetSize(3));
+  const auto set = [&net](int i, int j, const mesh::Vec3d& p) {
+    net[techniques::triangleNetSlot(3, i, j)] = p;
+  };
   set(3, 0, c.corner[0]);
   set(0, 3, c.corner[1]);
   set(0, 0, c.corner[2]);

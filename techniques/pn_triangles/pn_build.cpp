@@ -4,23 +4,23 @@
 
 namespace tb::pn_triangles {
 
-PnInput<float> recordInputFloat(const Mesh& mesh, const TriangleRecords& build,
-                                const TriangleRecordOptions& options, size_t patch) {
+PnInput<float> recordInputFloat(const mesh::Mesh& mesh, const techniques::TriangleRecords& build,
+                                const techniques::TriangleRecordOptions& options, size_t patch) {
   return recordInput<float>(mesh, build, options, patch,
-                            [](const Vec3d& v) { return vecCast<float>(v); });
+                            [](const mesh::Vec3d& v) { return vecCast<float>(v); });
 }
 
-PnInput<double> recordInputDouble(const Mesh& mesh, const TriangleRecords& build,
-                                  const TriangleRecordOptions& options, size_t patch) {
-  return recordInput<double>(mesh, build, options, patch, [](const Vec3d& v) { return v; });
+PnInput<double> recordInputDouble(const mesh::Mesh& mesh, const techniques::TriangleRecords& build,
+                                  const techniques::TriangleRecordOptions& options, size_t patch) {
+  return recordInput<double>(mesh, build, options, patch, [](const mesh::Vec3d& v) { return v; });
 }
 
-std::vector<std::vector<uint32_t>> pnStorageBuffers(const Mesh& mesh,
-                                                    const TriangleRecords& build) {
-  auto vec4s = [](const std::vector<Vec3d>& values) {
+std::vector<std::vector<uint32_t>> pnStorageBuffers(const mesh::Mesh& mesh,
+                                                    const techniques::TriangleRecords& build) {
+  auto vec4s = [](const std::vector<mesh::Vec3d>& values) {
     std::vector<uint32_t> words;
     words.reserve(values.size() * 4 + 4);
-    for (const Vec3d& v : values) {
+    for (const mesh::Vec3d& v : values) {
       for (float x : {float(v.x), float(v.y), float(v.z), 1.0f}) {
         words.push_back(std::bit_cast<uint32_t>(x));
       }
@@ -29,8 +29,8 @@ std::vector<std::vector<uint32_t>> pnStorageBuffers(const Mesh& mesh,
     return words;
   };
   std::vector<uint32_t> records;
-  records.reserve(build.records.size() * kRecordWords);
-  for (const TriangleRecord& r : build.records) {
+  records.reserve(build.records.size() * techniques::kRecordWords);
+  for (const techniques::TriangleRecord& r : build.records) {
     for (uint32_t x : r.perm) records.push_back(x);
     for (uint32_t x : r.position) records.push_back(x);
     for (uint32_t x : r.normal) records.push_back(x);

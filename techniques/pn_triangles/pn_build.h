@@ -16,19 +16,19 @@ namespace tb::pn_triangles {
 // The evaluator input of patch p in scalar T; cast turns a Vec3d into Vec3T<T>. Reads
 // exactly what shaders/pn_triangles/pn.tesc reads, and normalises the same normals.
 template <class T, class Cast>
-PnInput<T> recordInput(const Mesh& mesh, const TriangleRecords& build,
-                       const TriangleRecordOptions& options, size_t patch, Cast cast) {
-  const TriangleRecord& r = build.records[patch];
+PnInput<T> recordInput(const mesh::Mesh& mesh, const techniques::TriangleRecords& build,
+                       const techniques::TriangleRecordOptions& options, size_t patch, Cast cast) {
+  const techniques::TriangleRecord& r = build.records[patch];
   PnInput<T> in;
   for (int i = 0; i < 3; ++i) {
     in.position[i] = cast(mesh.positions[r.position[i]]);
     in.normal[i] = normalizeInOrder(cast(build.normals[r.normal[i]]));
   }
   for (int e = 0; e < 3; ++e) {
-    const int a = kEdgeEnds[e][0], b = kEdgeEnds[e][1];
+    const int a = techniques::kEdgeEnds[e][0], b = techniques::kEdgeEnds[e][1];
     const bool flagged = ((r.flags[a] & r.flags[b]) & (1u << e)) != 0;
     for (int end = 0; end < 2; ++end) {
-      const int label = kEdgeEnds[e][end];
+      const int label = techniques::kEdgeEnds[e][end];
       in.edge_own[e][end] = flagged
                                 ? normalizeInOrder(cast(build.normals[r.geometry_normal[label]]))
                                 : in.normal[label];
@@ -45,12 +45,13 @@ PnInput<T> recordInput(const Mesh& mesh, const TriangleRecords& build,
 }
 
 // The evaluator input of patch p, with the float or double data of `build`.
-PnInput<float> recordInputFloat(const Mesh& mesh, const TriangleRecords& build,
-                                const TriangleRecordOptions& options, size_t patch);
-PnInput<double> recordInputDouble(const Mesh& mesh, const TriangleRecords& build,
-                                  const TriangleRecordOptions& options, size_t patch);
+PnInput<float> recordInputFloat(const mesh::Mesh& mesh, const techniques::TriangleRecords& build,
+                                const techniques::TriangleRecordOptions& options, size_t patch);
+PnInput<double> recordInputDouble(const mesh::Mesh& mesh, const techniques::TriangleRecords& build,
+                                  const techniques::TriangleRecordOptions& options, size_t patch);
 
 // GPU storage buffers 1..3: positions (vec4), normals (vec4), records (24 words each).
-std::vector<std::vector<uint32_t>> pnStorageBuffers(const Mesh& mesh, const TriangleRecords& build);
+std::vector<std::vector<uint32_t>> pnStorageBuffers(const mesh::Mesh& mesh,
+                                                    const techniques::TriangleRecords& build);
 
 }  // namespace tb::pn_triangles

@@ -12,12 +12,12 @@
 namespace tb::pn_triangles {
 namespace {
 
-class PnPatches final : public TrianglePatchesBase {
+class PnPatches final : public techniques::TrianglePatchesBase {
  public:
-  PnPatches(Triangulation triangulation, const TriangleRecordOptions& options)
-      : TrianglePatchesBase(std::move(triangulation)),
+  PnPatches(mesh::Triangulation triangulation, const techniques::TriangleRecordOptions& options)
+      : techniques::TrianglePatchesBase(std::move(triangulation)),
         options_(options),
-        build_(buildTriangleRecords(tri_.mesh, options_)) {
+        build_(techniques::buildTriangleRecords(tri_.mesh, options_)) {
     // The double control nets, once per patch (what every evaluate() would recompute).
     controls_.reserve(patchCount());
     for (size_t p = 0; p < patchCount(); ++p) {
@@ -25,7 +25,8 @@ class PnPatches final : public TrianglePatchesBase {
     }
   }
 
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
     const PnControl<double>& control = controls_.at(patch);
     const auto& perm = build_.records[patch].perm;
     const PnPoint<double> point =
@@ -33,7 +34,8 @@ class PnPatches final : public TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& coord) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch,
+                                          const tess::DomainPoint& coord) const override {
     const PnControl<float> control =
         computeControl(recordInputFloat(tri_.mesh, build_, options_, patch));
     const auto& perm = build_.records[patch].perm;
@@ -46,12 +48,14 @@ class PnPatches final : public TrianglePatchesBase {
   // shading normals only. The net is in label order (labels sorted by position), so its
   // normals face the front when the labels run in the face's winding (perm a rotation of
   // 0, 1, 2) and the back otherwise: then they are negated.
-  std::optional<PatchCullBounds> cullBounds(size_t patch) const override {
-    const std::vector<Vec3d> net = cubicNet(controls_.at(patch));
-    std::vector<Vec3d> normals = withoutZeros(triangleNormalPatch(3, net));
+  std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
+    const std::vector<mesh::Vec3d> net = cubicNet(controls_.at(patch));
+    std::vector<mesh::Vec3d> normals =
+        techniques::withoutZeros(techniques::triangleNormalPatch(3, net));
     const auto& perm = build_.records[patch].perm;
     const bool mirrored = (perm[1] + 3 - perm[0]) % 3 != 1;
-    return PatchCullBounds{net, mirrored ? negated(std::move(normals)) : std::move(normals)};
+    return techniques::PatchCullBounds{
+        net, mirrored ? techniques::negated(std::move(normals)) : std::move(normals)};
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
@@ -67,19 +71,20 @@ class PnPatches final : public TrianglePatchesBase {
     return {program};
   }
 
-  std::optional<OperationProfile> operationProfile(size_t patch) const override {
-    using C = CountingScalar<float>;
-    OperationProfile profile;
-    resetOperationCounts();
-    const PnInput<C> input = recordInput<C>(tri_.mesh, build_, options_, patch, [](const Vec3d& v) {
-      return Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))};
-    });
+  std::optional<techniques::OperationProfile> operationProfile(size_t patch) const override {
+    using C = techniques::CountingScalar<float>;
+    techniques::OperationProfile profile;
+    techniques::resetOperationCounts();
+    const PnInput<C> input =
+        recordInput<C>(tri_.mesh, build_, options_, patch, [](const mesh::Vec3d& v) {
+          return mesh::Vec3T<C>{C(float(v.x)), C(float(v.y)), C(float(v.z))};
+        });
     const PnControl<C> control = computeControl(input);
-    profile.per_patch_setup = operationCounts();
-    resetOperationCounts();
+    profile.per_patch_setup = techniques::operationCounts();
+    techniques::resetOperationCounts();
     const C third(1.0f / 3.0f);
     (void)evaluateControl(control, {third, third, C(1.0f) - third - third});
-    profile.per_vertex = operationCounts();
+    profile.per_vertex = techniques::operationCounts();
     // The evaluation's arguments above are not part of the TES work.
     profile.per_vertex.add -= 2;
     profile.note =
@@ -88,33 +93,34 @@ class PnPatches final : public TrianglePatchesBase {
     return profile;
   }
 
-  DataFootprint footprint() const override {
+  techniques::DataFootprint footprint() const override {
     // Geometry normals add one normal per position; the records are 24 words per patch.
-    return {triangleControlMeshBytes(tri_.mesh),
+    return {mesh::triangleControlMeshBytes(tri_.mesh),
             uint64_t(build_.geometry_normal_count) * 12 +
-                uint64_t(build_.records.size()) * kRecordWords * 4,
+                uint64_t(build_.records.size()) * techniques::kRecordWords * 4,
             0};
   }
 
  private:
-  TriangleRecordOptions options_;
-  TriangleRecords build_;
+  techniques::TriangleRecordOptions options_;
+  techniques::TriangleRecords build_;
   std::vector<PnControl<double>> controls_;  // per patch, built once
 };
 
 }  // namespace
 
-const TechniqueInfo& PnTrianglesTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "pn_triangles", TechniqueFamily::kSurface, "Curved PN triangles",
+const techniques::TechniqueInfo& PnTrianglesTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "pn_triangles", techniques::TechniqueFamily::kSurface, "Curved PN triangles",
       "Vlachos, Peters, Boyd, Mitchell, Curved PN Triangles, I3D 2001; crack fixes from "
-      "CAPCOM's \"Lost Planet 2: DirectX 11 Features\" talk; PN-AEN: McDonald & Kilgard, NVIDIA 2010",
+      "CAPCOM's \"Lost Planet 2: DirectX 11 Features\" talk; PN-AEN: McDonald & Kilgard, NVIDIA "
+      "2010",
       "triangle meshes with vertex normals; polygons are fan-triangulated; missing normals are "
       "computed"};
   return kInfo;
 }
 
-std::vector<VariantInfo> PnTrianglesTechnique::variants() const {
+std::vector<techniques::VariantInfo> PnTrianglesTechnique::variants() const {
   return {
       {"pn", "plain PN triangles (shading normals build the geometry)", {}},
       {"geometry_normals",
@@ -125,13 +131,14 @@ std::vector<VariantInfo> PnTrianglesTechnique::variants() const {
        {{"geometry_normals", 1}, {"boundary_flags", 1}}},
       {"aen", "PN-AEN: edge points averaged with the adjacent face's normals", {{"aen", 1}}},
       {"rounding",
-       "geometry_normals + the Lost Planet 2 talk's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C / L), "
+       "geometry_normals + the Lost Planet 2 talk's rounding: w_ij scaled by min(1, (1 - Ni.Nj) C "
+       "/ L), "
        "C = 4 mean edge lengths",
-       {{"geometry_normals", 1}, {"rounding", kDefaultRounding}}},
+       {{"geometry_normals", 1}, {"rounding", techniques::kDefaultRounding}}},
   };
 }
 
-std::string PnTrianglesTechnique::checkSupport(const Mesh& mesh) const {
+std::string PnTrianglesTechnique::checkSupport(const mesh::Mesh& mesh) const {
   if (mesh.faceCount() == 0) return "pn_triangles: " + mesh.source + " has no faces";
   if (!mesh.hasNormals()) {
     return "pn_triangles: " + mesh.source + " has no normals (load computes them)";
@@ -145,18 +152,19 @@ std::string PnTrianglesTechnique::checkSupport(const Mesh& mesh) const {
   return {};
 }
 
-std::unique_ptr<TechniqueInstance> PnTrianglesTechnique::build(const TechniqueInput& input,
-                                                               const VariantInfo& variant) const {
-  const Mesh& mesh = requireMesh(info(), input);
-  if (std::string reason = checkSupport(mesh); !reason.empty()) throw UnsupportedInput(reason);
+std::unique_ptr<techniques::TechniqueInstance> PnTrianglesTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
+  const mesh::Mesh& mesh = techniques::requireMesh(info(), input);
+  if (std::string reason = checkSupport(mesh); !reason.empty())
+    throw techniques::UnsupportedInput(reason);
   // Every switch is off and rounding is 0 unless the variant sets it.
-  TriangleRecordOptions options;
-  options.geometry_normals = paramOr<bool>(info(), variant, "geometry_normals", false);
-  options.boundary_flags = paramOr<bool>(info(), variant, "boundary_flags", false);
-  options.aen = paramOr<bool>(info(), variant, "aen", false);
-  options.rounding = paramOr<double>(info(), variant, "rounding", 0.0);
-  return std::make_unique<SurfaceInstance>(
-      std::make_unique<PnPatches>(fanTriangulate(mesh), options));
+  techniques::TriangleRecordOptions options;
+  options.geometry_normals = techniques::paramOr<bool>(info(), variant, "geometry_normals", false);
+  options.boundary_flags = techniques::paramOr<bool>(info(), variant, "boundary_flags", false);
+  options.aen = techniques::paramOr<bool>(info(), variant, "aen", false);
+  options.rounding = techniques::paramOr<double>(info(), variant, "rounding", 0.0);
+  return std::make_unique<techniques::SurfaceInstance>(
+      std::make_unique<PnPatches>(mesh::fanTriangulate(mesh), options));
 }
 
 TB_REGISTER_TECHNIQUE(PnTrianglesTechnique);

@@ -34,7 +34,8 @@ uint32_t fullCapacity(const WaveScene& scene, double duration_s) {
 
 }  // namespace
 
-WaveParticleSimulation::WaveParticleSimulation(const Scenario& scenario, Variant variant)
+WaveParticleSimulation::WaveParticleSimulation(const techniques::Scenario& scenario,
+                                               Variant variant)
     : scenario_(scenario), scene_(parseWaveScene(scenario)) {
   const double dt = scenario.time_step_s;
   settings_.dt_s = float(dt);
@@ -106,11 +107,11 @@ void WaveParticleSimulation::step(double dt_s) {
   time_s_ += dt_s;
 }
 
-SimulationState WaveParticleSimulation::state() const {
-  SimulationState state;
+techniques::SimulationState WaveParticleSimulation::state() const {
+  techniques::SimulationState state;
   state.time_s = time_s_;
   state.element_count = particles_.size();
-  StateChannel origin{"origin", "m", 2, {}}, direction{"direction", "1", 2, {}},
+  techniques::StateChannel origin{"origin", "m", 2, {}}, direction{"direction", "1", 2, {}},
       position{"position", "m", 2, {}}, age{"age", "s", 1, {}}, lifetime{"lifetime", "s", 1, {}},
       amplitude{"amplitude", "m", 1, {}}, dispersion{"dispersion", "rad", 1, {}},
       radius{"radius", "m", 1, {}};
@@ -130,8 +131,8 @@ SimulationState WaveParticleSimulation::state() const {
   return state;
 }
 
-SimulationFootprint WaveParticleSimulation::footprint() const {
-  SimulationFootprint footprint;
+techniques::SimulationFootprint WaveParticleSimulation::footprint() const {
+  techniques::SimulationFootprint footprint;
   // Both ping-pong buffers at full capacity.
   footprint.state_bytes = 2 * uint64_t(settings_.capacity) * sizeof(Particle);
   footprint.auxiliary_bytes = 2 * 16                                 // the two counters
@@ -184,8 +185,8 @@ double WaveParticleSimulation::heightAt(double x_m, double y_m) const {
   return particleHeightAt(particles_, settings_.speed_m_per_s, x_m, y_m);
 }
 
-WaveFieldScene WaveParticleSimulation::waveScene() const {
-  WaveFieldScene out;
+techniques::WaveFieldScene WaveParticleSimulation::waveScene() const {
+  techniques::WaveFieldScene out;
   out.domain_size_m = scene_.domain_size_m;
   out.wave_speed_m_per_s = scene_.wave_speed_m_per_s;
   out.packet_radius_m = scene_.particle_radius_m;
@@ -199,7 +200,7 @@ WaveFieldScene WaveParticleSimulation::waveScene() const {
   return out;
 }
 
-WaveHeightGrid WaveParticleSimulation::heightGrid() const {
+techniques::WaveHeightGrid WaveParticleSimulation::heightGrid() const {
   HeightField field = heightField();
   return {field.origin_m, field.spacing_m, field.nodes, std::move(field.height_m)};
 }
@@ -215,16 +216,16 @@ std::vector<std::array<float, 2>> WaveParticleSimulation::packetPositions() cons
   return positions;
 }
 
-const TechniqueInfo& WaveParticlesTechnique::info() const {
-  static const TechniqueInfo kInfo{
-      "wave_particles", TechniqueFamily::kSimulation, "Wave particles",
+const techniques::TechniqueInfo& WaveParticlesTechnique::info() const {
+  static const techniques::TechniqueInfo kInfo{
+      "wave_particles", techniques::TechniqueFamily::kSimulation, "Wave particles",
       "Yuksel, House and Keyser, Wave Particles, ACM TOG 26(3) (SIGGRAPH 2007)",
       "a scenario (tessbench-scenario-1) with a \"wave_particles\" section: point sources, "
       "wall segments, probes"};
   return kInfo;
 }
 
-std::vector<VariantInfo> WaveParticlesTechnique::variants() const {
+std::vector<techniques::VariantInfo> WaveParticlesTechnique::variants() const {
   return {
       {"full",
        "the paper's method: constant speed, subdivision into three, wall reflection, amplitude "
@@ -238,17 +239,19 @@ std::vector<VariantInfo> WaveParticlesTechnique::variants() const {
   };
 }
 
-std::string WaveParticlesTechnique::checkSupport(const Mesh&) const {
+std::string WaveParticlesTechnique::checkSupport(const mesh::Mesh&) const {
   return "wave_particles: a simulation; it takes a scenario, not a mesh";
 }
 
-std::unique_ptr<TechniqueInstance> WaveParticlesTechnique::build(const TechniqueInput& input,
-                                                                 const VariantInfo& variant) const {
+std::unique_ptr<techniques::TechniqueInstance> WaveParticlesTechnique::build(
+    const techniques::TechniqueInput& input, const techniques::VariantInfo& variant) const {
   if (input.scenario == nullptr) {
-    throw UnsupportedInput("wave_particles: needs a scenario (tessbench run --scenario)");
+    throw techniques::UnsupportedInput(
+        "wave_particles: needs a scenario (tessbench run --scenario)");
   }
-  const Variant v = paramOr<bool>(info(), variant, "lp2", false) ? Variant::kLp2 : Variant::kFull;
-  return std::make_unique<SimulationInstance>(
+  const Variant v =
+      techniques::paramOr<bool>(info(), variant, "lp2", false) ? Variant::kLp2 : Variant::kFull;
+  return std::make_unique<techniques::SimulationInstance>(
       std::make_unique<WaveParticleSimulation>(*input.scenario, v));
 }
 

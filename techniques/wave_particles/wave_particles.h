@@ -24,21 +24,21 @@ namespace tb::wave_particles {
 // Levels of subdivision the `full` table holds (2*pi/N / 3^12 is far below any radius).
 constexpr int kSubdivisionLevels = 12;
 
-class WaveParticleSimulation final : public Simulation, public WaveField {
+class WaveParticleSimulation final : public techniques::Simulation, public techniques::WaveField {
  public:
-  WaveParticleSimulation(const Scenario& scenario, Variant variant);
+  WaveParticleSimulation(const techniques::Scenario& scenario, Variant variant);
 
-  const Scenario& scenario() const override { return scenario_; }
+  const techniques::Scenario& scenario() const override { return scenario_; }
   // Advances by dt_s; the GPU programs use scenario().time_step_s.
   void step(double dt_s) override;
-  SimulationState state() const override;
+  techniques::SimulationState state() const override;
   std::vector<gpu::GpuComputeProgram> gpuPrograms() const override;
-  SimulationFootprint footprint() const override;
-  const WaveField* waveField() const override { return this; }
+  techniques::SimulationFootprint footprint() const override;
+  const techniques::WaveField* waveField() const override { return this; }
 
   // WaveField (the scene, packets and height field, for the wave_error measure)
-  WaveFieldScene waveScene() const override;
-  WaveHeightGrid heightGrid() const override;
+  techniques::WaveFieldScene waveScene() const override;
+  techniques::WaveHeightGrid heightGrid() const override;
   std::vector<std::array<float, 2>> packetPositions() const override;
 
   const WaveScene& scene() const { return scene_; }
@@ -73,7 +73,7 @@ class WaveParticleSimulation final : public Simulation, public WaveField {
   void emitPending(uint32_t step, std::vector<Particle>* out);
   gpu::GpuComputeProgram heightFieldProgram(size_t initial_count) const;
 
-  Scenario scenario_;
+  techniques::Scenario scenario_;
   WaveScene scene_;
   StepSettings settings_;
   std::vector<WallSegment> walls_;
@@ -86,14 +86,15 @@ class WaveParticleSimulation final : public Simulation, public WaveField {
   uint64_t dropped_ = 0;
 };
 
-class WaveParticlesTechnique final : public Technique {
+class WaveParticlesTechnique final : public techniques::Technique {
  public:
-  const TechniqueInfo& info() const override;
-  std::vector<VariantInfo> variants() const override;
-  std::string checkSupport(const Mesh& mesh) const override;
-  std::unique_ptr<TechniqueInstance> build(const TechniqueInput& input,
-                                           const VariantInfo& variant) const override;
-  SimulationCapabilities simulationCapabilities() const override {
+  const techniques::TechniqueInfo& info() const override;
+  std::vector<techniques::VariantInfo> variants() const override;
+  std::string checkSupport(const mesh::Mesh& mesh) const override;
+  std::unique_ptr<techniques::TechniqueInstance> build(
+      const techniques::TechniqueInput& input,
+      const techniques::VariantInfo& variant) const override;
+  techniques::SimulationCapabilities simulationCapabilities() const override {
     return {.constraint_solver = false, .wave_field = true};
   }
 };

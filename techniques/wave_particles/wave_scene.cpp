@@ -15,11 +15,11 @@ using Json = nlohmann::json;
 
 class Reader {
  public:
-  explicit Reader(const Scenario& scenario)
+  explicit Reader(const techniques::Scenario& scenario)
       : scenario_(scenario), file_(scenario.path.empty() ? scenario.name : scenario.path) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& rule) const {
-    throw InputError(file_, field, rule);
+    throw mesh::InputError(file_, field, rule);
   }
   double parameter(const char* name, double fallback, bool required = false) const {
     auto found = scenario_.parameters.find(name);
@@ -59,7 +59,7 @@ class Reader {
   const std::string& file() const { return file_; }
 
  private:
-  const Scenario& scenario_;
+  const techniques::Scenario& scenario_;
   std::string file_;
 };
 
@@ -81,12 +81,12 @@ std::vector<WaveWall> WaveScene::allWalls() const {
   return all;
 }
 
-WaveScene parseWaveScene(const Scenario& scenario) {
+WaveScene parseWaveScene(const techniques::Scenario& scenario) {
   const Reader reader(scenario);
   auto section = scenario.sections.find("wave_particles");
   if (section == scenario.sections.end()) {
-    throw UnsupportedInput("wave_particles: scenario " + scenario.name +
-                           " has no \"wave_particles\" section");
+    throw techniques::UnsupportedInput("wave_particles: scenario " + scenario.name +
+                                       " has no \"wave_particles\" section");
   }
   const Json json = Json::parse(section->second);  // written by the loader: valid JSON
   WaveScene scene;
@@ -124,8 +124,8 @@ WaveScene parseWaveScene(const Scenario& scenario) {
       }
     }
     if (sources[i].contains("velocity_m_per_s")) {
-      throw UnsupportedInput("wave_particles: " + reader.file() + ": " + field +
-                             ".velocity_m_per_s: moving sources are not supported");
+      throw techniques::UnsupportedInput("wave_particles: " + reader.file() + ": " + field +
+                                         ".velocity_m_per_s: moving sources are not supported");
     }
     scene.sources.push_back(source);
   }

@@ -50,6 +50,6 @@ struct WaveScene {
 //   height_field_spacing_m (0.05), reference_spacing_m (0.025)
 // Section: {"sources": [{"position_m": [x, y], "time_s": t, "amplitude_m": a}],
 //           "walls": [{"from_m": [x, y], "to_m": [x, y]}], "probes_m": [[x, y], ...]}
-WaveScene parseWaveScene(const Scenario& scenario);
+WaveScene parseWaveScene(const techniques::Scenario& scenario);
 
 }  // namespace tb::wave_particles

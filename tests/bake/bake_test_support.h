@@ -13,8 +13,8 @@ namespace tb::testing {
 // max(|S_uu|, |S_vv|) + |S_uv| from central differences (step 1e-3: truncation ~1e-6
 // relative, round-off ~1e-10), over a 7 x 7 grid of every face (a Loop face's samples with
 // u + v <= 0.95 only: its domain is the triangle).
-inline double secondDerivativeBound(const Mesh& mesh, osd::Scheme scheme,
-                                    const AnalyticDisplacement& h) {
+inline double secondDerivativeBound(const mesh::Mesh& mesh, osd::Scheme scheme,
+                                    const bake::AnalyticDisplacement& h) {
   const ref::LimitSurface limit(mesh, scheme);
   auto displaced = [&](size_t face, double u, double v) {
     const ref::LimitPoint p = limit.evaluate(face, u, v);
@@ -28,14 +28,14 @@ inline double secondDerivativeBound(const Mesh& mesh, osd::Scheme scheme,
       for (int j = 0; j < 7; ++j) {
         const double u = 0.05 + 0.15 * i, v = 0.05 + 0.15 * j;
         if (scheme == osd::Scheme::kLoop && u + v > 0.95) continue;
-        const Vec3d c = displaced(face, u, v);
-        const Vec3d uu =
+        const mesh::Vec3d c = displaced(face, u, v);
+        const mesh::Vec3d uu =
             (displaced(face, u + d, v) - 2.0 * c + displaced(face, u - d, v)) * (1 / (d * d));
-        const Vec3d vv =
+        const mesh::Vec3d vv =
             (displaced(face, u, v + d) - 2.0 * c + displaced(face, u, v - d)) * (1 / (d * d));
-        const Vec3d uv = (displaced(face, u + d, v + d) - displaced(face, u + d, v - d) -
-                          displaced(face, u - d, v + d) + displaced(face, u - d, v - d)) *
-                         (1 / (4 * d * d));
+        const mesh::Vec3d uv = (displaced(face, u + d, v + d) - displaced(face, u + d, v - d) -
+                                displaced(face, u - d, v + d) + displaced(face, u - d, v - d)) *
+                               (1 / (4 * d * d));
         bound = std::max(bound, std::max(length(uu), length(vv)) + length(uv));
       }
     }

@@ -27,35 +27,36 @@ namespace tb {
 namespace {
 
 struct Fixture {
-  Mesh mesh;
-  BuiltSurface patches;
+  mesh::Mesh mesh;
+  techniques::BuiltSurface patches;
 };
 
 Fixture build(const std::string& technique_id, const std::string& asset) {
   Fixture f;
-  f.mesh = loadObjFile(testing::assetPath(asset));
-  const Technique* technique = TechniqueRegistry::instance().find(technique_id);
+  f.mesh = mesh::loadObjFile(testing::assetPath(asset));
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(technique_id);
   EXPECT_NE(technique, nullptr);
-  f.patches = buildSurface(*technique, f.mesh, technique->variants().front());
+  f.patches = techniques::buildSurface(*technique, f.mesh, technique->variants().front());
   return f;
 }
 
-osd::Scheme schemeOf(const SurfacePatches& patches) {
-  return referenceScheme(patches.approximates());
+osd::Scheme schemeOf(const techniques::SurfacePatches& patches) {
+  return lod::referenceScheme(patches.approximates());
 }
 
 // Max |texel - h(S(u, v))| over the interior texels of every tile.
-double maxOracleError(const SurfacePatches& patches, const BakeResult& result,
-                      const BakeSettings& settings, const AnalyticDisplacement& h) {
-  const DisplacementMap& map = result.map;
+double maxOracleError(const techniques::SurfacePatches& patches, const bake::BakeResult& result,
+                      const bake::BakeSettings& settings, const bake::AnalyticDisplacement& h) {
+  const displacement::DisplacementMap& map = result.map;
   double worst = 0;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const uint32_t x0 = uint32_t(p % map.tiles.tiles_per_row) * map.tiles.tile_size;
     const uint32_t y0 = uint32_t(p / map.tiles.tiles_per_row) * map.tiles.tile_size;
     for (uint32_t y = settings.border; y < settings.border + settings.resolution; ++y) {
       for (uint32_t x = settings.border; x < settings.border + settings.resolution; ++x) {
-        const TexelParameter t = texelParameter(x, y, settings);
-        const SurfacePoint s = patches.evaluate(p, {t.u, t.v, 0});
+        const bake::TexelParameter t = bake::texelParameter(x, y, settings);
+        const techniques::SurfacePoint s = patches.evaluate(p, {t.u, t.v, 0});
         worst = std::max(worst, std::abs(map.at(x0 + x, y0 + y, 0) - h.height(s.position)));
       }
     }
@@ -71,18 +72,18 @@ TEST(BakerOracle, AccScalarTexelsEqualTheAnalyticHeightWithinTheTessellationBoun
   // error divided by the cosine between the ray and S_d's normal (slope <= 0.08, cos > 0.99);
   // bound = 1.5 M / (4 n^2) leaves room for the sampled M and the cosine.
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
-  const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(f.patches->controlMesh());
   const osd::Scheme scheme = schemeOf(*f.patches);
   const double m = testing::secondDerivativeBound(f.patches->controlMesh(), scheme, h);
   // Texel centres k / 7 fall on the target's grid vertices (multiples of 1/8), where the
   // interpolant is exact and the check could not fail, only at k = 0 and 7.
-  BakeSettings settings;
+  bake::BakeSettings settings;
   settings.resolution = 8;
   double previous = 0;
   for (int rate : {8, 16, 32}) {
     const ref::LimitTessellation target =
-        analyticTargetMesh(f.patches->controlMesh(), scheme, rate, h);
-    const BakeResult result = bakeDisplacement(*f.patches, target.view(), settings);
+        bake::analyticTargetMesh(f.patches->controlMesh(), scheme, rate, h);
+    const bake::BakeResult result = bake::bakeDisplacement(*f.patches, target.view(), settings);
     EXPECT_EQ(result.rays_missed, 0u);
     const double error = maxOracleError(*f.patches, result, settings, h);
     const double bound = 1.5 * m / (4.0 * rate * rate);
@@ -101,30 +102,30 @@ TEST(BakerOracle, AccVectorTexelsHaveLengthHAndPointAlongTheNormal) {
   // limit (|grad h| / (1 - |h| k) < 0.082 rad here), so |d| = |h| to within |h|(1 - cos 0.082)
   // (< 0.004 A) plus the tessellation bound, and d is within 0.1 rad of +-n.
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
-  const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(f.patches->controlMesh());
   const ref::LimitTessellation target =
-      analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 32, h);
-  BakeSettings settings;
-  settings.kind = DisplacementKind::kVector;
+      bake::analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 32, h);
+  bake::BakeSettings settings;
+  settings.kind = displacement::DisplacementKind::kVector;
   settings.resolution = 6;
-  const BakeResult result = bakeDisplacement(*f.patches, target.view(), settings);
+  const bake::BakeResult result = bake::bakeDisplacement(*f.patches, target.view(), settings);
   EXPECT_EQ(result.rays_missed, 0u);
-  const DisplacementMap& map = result.map;
+  const displacement::DisplacementMap& map = result.map;
   size_t checked_direction = 0;
   for (size_t p = 0; p < f.patches->patchCount(); ++p) {
     const uint32_t x0 = uint32_t(p % map.tiles.tiles_per_row) * map.tiles.tile_size;
     const uint32_t y0 = uint32_t(p / map.tiles.tiles_per_row) * map.tiles.tile_size;
     for (uint32_t y = 1; y <= settings.resolution; ++y) {
       for (uint32_t x = 1; x <= settings.resolution; ++x) {
-        const TexelParameter t = texelParameter(x, y, settings);
-        const SurfacePoint s = f.patches->evaluate(p, {t.u, t.v, 0});
+        const bake::TexelParameter t = bake::texelParameter(x, y, settings);
+        const techniques::SurfacePoint s = f.patches->evaluate(p, {t.u, t.v, 0});
         const double expected = h.height(s.position);
-        const Vec3d d{map.at(x0 + x, y0 + y, 0), map.at(x0 + x, y0 + y, 1),
-                      map.at(x0 + x, y0 + y, 2)};
+        const mesh::Vec3d d{map.at(x0 + x, y0 + y, 0), map.at(x0 + x, y0 + y, 1),
+                            map.at(x0 + x, y0 + y, 2)};
         EXPECT_NEAR(length(d), std::abs(expected), 0.01 * h.amplitude) << "patch " << p;
         if (std::abs(expected) > 0.2 * h.amplitude) {
           ++checked_direction;
-          const Vec3d along = normalize(d) * (expected > 0 ? 1.0 : -1.0);
+          const mesh::Vec3d along = normalize(d) * (expected > 0 ? 1.0 : -1.0);
           EXPECT_GT(dot(along, s.normal), std::cos(0.1)) << "patch " << p;
         }
       }
@@ -135,19 +136,20 @@ TEST(BakerOracle, AccVectorTexelsHaveLengthHAndPointAlongTheNormal) {
 
 TEST(BakerOracle, TriangleTechniqueOnALoopTargetBakesWithoutMisses) {
   const Fixture f = build("pn_triangles", "tessbench/tri_torus.obj");
-  const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(f.patches->controlMesh());
   const osd::Scheme scheme = schemeOf(*f.patches);
   EXPECT_EQ(scheme, osd::Scheme::kLoop);
-  const ref::LimitTessellation target = analyticTargetMesh(f.patches->controlMesh(), scheme, 16, h);
-  BakeSettings settings;
+  const ref::LimitTessellation target =
+      bake::analyticTargetMesh(f.patches->controlMesh(), scheme, 16, h);
+  bake::BakeSettings settings;
   settings.resolution = 8;
-  const BakeResult result = bakeDisplacement(*f.patches, target.view(), settings);
+  const bake::BakeResult result = bake::bakeDisplacement(*f.patches, target.view(), settings);
   EXPECT_EQ(result.rays_missed, 0u);
   // Texels with u + v <= 1 + 1/7 of a 10 x 10 tile (border 1, texel step 1/7).
   size_t per_tile = 0;
   for (uint32_t y = 0; y < 10; ++y) {
     for (uint32_t x = 0; x < 10; ++x) {
-      const TexelParameter t = texelParameter(x, y, settings);
+      const bake::TexelParameter t = bake::texelParameter(x, y, settings);
       per_tile += t.u + t.v <= 1 + 1.0 / 7;
     }
   }
@@ -158,48 +160,51 @@ TEST(BakerOracle, TriangleTechniqueOnALoopTargetBakesWithoutMisses) {
 
 TEST(Baker, TwoBakesWriteByteIdenticalFiles) {
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
-  const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(f.patches->controlMesh());
   const ref::LimitTessellation target =
-      analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 8, h);
+      bake::analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 8, h);
   const auto dir = testing::scratchDirectory("bake_determinism");
-  for (DisplacementKind kind : {DisplacementKind::kScalar, DisplacementKind::kVector}) {
-    BakeSettings settings;
+  for (displacement::DisplacementKind kind :
+       {displacement::DisplacementKind::kScalar, displacement::DisplacementKind::kVector}) {
+    bake::BakeSettings settings;
     settings.kind = kind;
     settings.resolution = 5;
     std::string bytes[2];
     for (int i = 0; i < 2; ++i) {
-      const std::string path = (dir / (std::string(kindName(kind)) + std::to_string(i) + ".exr"));
-      writeDisplacementExr(path, bakeDisplacement(*f.patches, target.view(), settings).map);
+      const std::string path =
+          (dir / (std::string(displacement::kindName(kind)) + std::to_string(i) + ".exr"));
+      displacement::writeDisplacementExr(
+          path, bake::bakeDisplacement(*f.patches, target.view(), settings).map);
       std::ifstream file(path, std::ios::binary);
       bytes[i].assign(std::istreambuf_iterator<char>(file), {});
     }
     EXPECT_FALSE(bytes[0].empty());
-    EXPECT_EQ(bytes[0], bytes[1]) << kindName(kind);
+    EXPECT_EQ(bytes[0], bytes[1]) << displacement::kindName(kind);
   }
   std::filesystem::remove_all(dir);
 }
 
 TEST(Baker, RefusesBadSettings) {
   const Fixture f = build("acc", "opensubdiv/catmark_torus.obj");
-  const AnalyticDisplacement h = analyticDisplacementFor(f.patches->controlMesh());
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(f.patches->controlMesh());
   const ref::LimitTessellation target =
-      analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 2, h);
-  BakeSettings settings;
+      bake::analyticTargetMesh(f.patches->controlMesh(), schemeOf(*f.patches), 2, h);
+  bake::BakeSettings settings;
   settings.resolution = 1;
-  EXPECT_THROW(bakeDisplacement(*f.patches, target.view(), settings), InputError);
-  settings.resolution = kMaxBakeResolution + 1;
-  EXPECT_THROW(bakeDisplacement(*f.patches, target.view(), settings), InputError);
+  EXPECT_THROW(bake::bakeDisplacement(*f.patches, target.view(), settings), mesh::InputError);
+  settings.resolution = bake::kMaxBakeResolution + 1;
+  EXPECT_THROW(bake::bakeDisplacement(*f.patches, target.view(), settings), mesh::InputError);
   settings.resolution = 4;
-  settings.layout = DisplacementLayout::kUv;
-  EXPECT_THROW(bakeDisplacement(*f.patches, target.view(), settings), InputError);
+  settings.layout = displacement::DisplacementLayout::kUv;
+  EXPECT_THROW(bake::bakeDisplacement(*f.patches, target.view(), settings), mesh::InputError);
 }
 
 TEST(AnalyticTarget, HeightIsBoundedByTheAmplitudeAndNotConstant) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
-  const AnalyticDisplacement h = analyticDisplacementFor(mesh);
-  EXPECT_NEAR(h.amplitude, kAnalyticAmplitudeFraction * h.diagonal, 1e-15);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(mesh);
+  EXPECT_NEAR(h.amplitude, bake::kAnalyticAmplitudeFraction * h.diagonal, 1e-15);
   double lo = 0, hi = 0;
-  for (const Vec3d& p : mesh.positions) {
+  for (const mesh::Vec3d& p : mesh.positions) {
     lo = std::min(lo, h.height(p));
     hi = std::max(hi, h.height(p));
     EXPECT_LE(std::abs(h.height(p)), h.amplitude);

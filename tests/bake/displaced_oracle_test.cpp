@@ -36,12 +36,12 @@ namespace tb {
 namespace {
 
 // Lattice points of a patch: a quad's (i/n, j/n), a triangle's barycentric (i/n, j/n, rest).
-std::vector<DomainCoord> lattice(PatchDomain domain, int n) {
-  std::vector<DomainCoord> points;
+std::vector<techniques::DomainCoord> lattice(techniques::PatchDomain domain, int n) {
+  std::vector<techniques::DomainCoord> points;
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
       const double u = double(i) / n, v = double(j) / n;
-      if (domain == PatchDomain::kQuad) {
+      if (domain == techniques::PatchDomain::kQuad) {
         points.push_back({u, v, 0});
       } else if (i + j <= n) {
         points.push_back({u, v, std::max(0.0, 1 - u - v)});
@@ -53,12 +53,13 @@ std::vector<DomainCoord> lattice(PatchDomain domain, int n) {
 
 // Max distance from `patches` (sampled on lattice(13), off the texel centres of r = 4..16)
 // to `target`.
-double maxDistance(const SurfacePatches& patches, const ref::TriangleDistanceField& target) {
+double maxDistance(const techniques::SurfacePatches& patches,
+                   const ref::TriangleDistanceField& target) {
   double worst = 0;
   uint32_t hint = ref::kNoTriangle;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
-    for (const DomainCoord& c : lattice(patches.patchDomain(p), 13)) {
-      const Vec3d point = patches.evaluate(p, c).position;
+    for (const techniques::DomainCoord& c : lattice(patches.patchDomain(p), 13)) {
+      const mesh::Vec3d point = patches.evaluate(p, c).position;
       const ref::ClosestPoint hit = target.closest(point, hint);
       hint = hit.triangle;
       worst = std::max(worst, length(hit.point - point));
@@ -82,30 +83,33 @@ TEST(DisplacedOracle, BakedAnalyticTargetIsReproducedWithinTheTexelBoundAndConve
   constexpr int kTargetRate = 40;
   for (const OracleCase& c : cases) {
     SCOPED_TRACE(std::string(c.technique) + " on " + c.asset);
-    const Technique& technique = *TechniqueRegistry::instance().find(c.technique);
-    const Mesh mesh = loadObjFile(testing::assetPath(c.asset));
-    const BuiltSurface surface = buildSurface(technique, mesh, technique.variants().front());
-    const osd::Scheme scheme = referenceScheme(surface->approximates());
-    const Mesh& control = surface->controlMesh();
-    const AnalyticDisplacement h = analyticDisplacementFor(control);
-    const ref::LimitTessellation target = analyticTargetMesh(control, scheme, kTargetRate, h);
+    const techniques::Technique& technique =
+        *techniques::TechniqueRegistry::instance().find(c.technique);
+    const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(c.asset));
+    const techniques::BuiltSurface surface =
+        techniques::buildSurface(technique, mesh, technique.variants().front());
+    const osd::Scheme scheme = lod::referenceScheme(surface->approximates());
+    const mesh::Mesh& control = surface->controlMesh();
+    const bake::AnalyticDisplacement h = bake::analyticDisplacementFor(control);
+    const ref::LimitTessellation target = bake::analyticTargetMesh(control, scheme, kTargetRate, h);
     const ref::TriangleDistanceField target_field(target.view(), "analytic target");
     // e_target: the target's interpolation error, M_target / (4 n^2) (baker_test.cpp), and
     // e_tech: the undisplaced technique's distance to its undisplaced limit.
     const double m = testing::secondDerivativeBound(control, scheme, h);
     const double e_target = 1.5 * m / (4.0 * kTargetRate * kTargetRate);
-    const ref::LimitTessellation limit =
-        analyticTargetMesh(control, scheme, kTargetRate, AnalyticDisplacement{h.centre, h.diagonal, 0, 1});
+    const ref::LimitTessellation limit = bake::analyticTargetMesh(
+        control, scheme, kTargetRate, bake::AnalyticDisplacement{h.centre, h.diagonal, 0, 1});
     const double e_tech =
         maxDistance(*surface, ref::TriangleDistanceField(limit.view(), "limit")) + e_target;
     double previous = 0;
     for (uint32_t resolution : {4u, 8u, 16u}) {
-      BakeSettings settings;
+      bake::BakeSettings settings;
       settings.resolution = resolution;
-      const BakeResult baked = bakeDisplacement(*surface, target.view(), settings);
+      const bake::BakeResult baked = bake::bakeDisplacement(*surface, target.view(), settings);
       EXPECT_EQ(baked.rays_missed, 0u);
-      const auto map = std::make_shared<DisplacementMap>(baked.map);
-      const DisplacedPatches displaced(*surface, map, DisplacementSampling::kWatertight, "baked");
+      const auto map = std::make_shared<displacement::DisplacementMap>(baked.map);
+      const techniques::DisplacedPatches displaced(
+          *surface, map, techniques::DisplacementSampling::kWatertight, "baked");
       const double error = maxDistance(displaced, target_field);
       const double bound =
           1.5 * (m / (4.0 * resolution * resolution) + 2 * e_tech) + 2 * e_target;

@@ -118,7 +118,7 @@ TEST(CompareAcceptance, RepeatedTimingsAreFlaggedOnlyWhenClearlySlower) {
   const nlohmann::json timings = nlohmann::json::parse(readFile(fs::path(base) / "timings.json"));
   EXPECT_EQ(timings.at("repetitions"), 5);
   EXPECT_EQ(timings.at("measures").at(0).at("samples").size(), 5u);
-  for (const Record& record : readResultsFile(base + "/results.json").records) {
+  for (const results::Record& record : results::readResultsFile(base + "/results.json").records) {
     EXPECT_TRUE(record.warnings.empty()) << record.warnings.front();
   }
   writeSamples(base, {1.0, 1.1, 1.2, 1.3, 1.4});
@@ -150,9 +150,11 @@ TEST(Repetitions, ARepeatThatDiffersIsARecordWarning) {
       "error --repetitions 2 --out " + (dir / "out").string() + " --run-id r";
   const SplitResult r = runTessbenchSplit(run_arguments, kNoDevice);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  const Results results = readResultsFile((dir / "out" / "r" / "results.json").string());
+  const results::Results results =
+      results::readResultsFile((dir / "out" / "r" / "results.json").string());
   std::map<std::string, std::vector<std::string>> warnings;
-  for (const Record& record : results.records) warnings[record.technique] = record.warnings;
+  for (const results::Record& record : results.records)
+    warnings[record.technique] = record.warnings;
   EXPECT_EQ(warnings["regress_flaky"],
             std::vector<std::string>{"measure error is not deterministic across repetitions"});
   EXPECT_TRUE(warnings["regress"].empty());

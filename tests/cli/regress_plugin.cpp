@@ -21,66 +21,77 @@ double liftOf(size_t patch) { return 0.02 * double(patch % 3); }
 double liftOf(size_t) { return 0; }
 #endif
 
-class RegressPatches final : public tb::SurfacePatches {
+class RegressPatches final : public tb::techniques::SurfacePatches {
  public:
-  RegressPatches(const tb::Mesh& mesh, bool flaky) : mesh_(mesh), flaky_(flaky) {}
-  tb::PatchDomain patchDomain(size_t) const override { return tb::PatchDomain::kTriangle; }
+  RegressPatches(const tb::mesh::Mesh& mesh, bool flaky) : mesh_(mesh), flaky_(flaky) {}
+  tb::techniques::PatchDomain patchDomain(size_t) const override {
+    return tb::techniques::PatchDomain::kTriangle;
+  }
   size_t patchCount() const override { return mesh_.faceCount(); }
-  const tb::Mesh& controlMesh() const override { return mesh_; }
+  const tb::mesh::Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = mesh_.facePositions(patch);
     return {face[0], face[1], face[2], UINT32_MAX};
   }
   uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
-  tb::SurfacePoint evaluate(size_t patch, const tb::DomainCoord& w) const override {
+  tb::techniques::SurfacePoint evaluate(size_t patch,
+                                        const tb::techniques::DomainCoord& w) const override {
     const auto face = mesh_.facePositions(patch);
-    const tb::Vec3d& a = mesh_.positions[face[0]];
-    const tb::Vec3d& b = mesh_.positions[face[1]];
-    const tb::Vec3d& c = mesh_.positions[face[2]];
-    const tb::Vec3d p = a * w[0] + b * w[1] + c * w[2] + tb::Vec3d{0, 0, liftOf(patch) + drift()};
-    return {p, tb::normalize(tb::cross(b - a, c - a))};
+    const tb::mesh::Vec3d& a = mesh_.positions[face[0]];
+    const tb::mesh::Vec3d& b = mesh_.positions[face[1]];
+    const tb::mesh::Vec3d& c = mesh_.positions[face[2]];
+    const tb::mesh::Vec3d p =
+        a * w[0] + b * w[1] + c * w[2] + tb::mesh::Vec3d{0, 0, liftOf(patch) + drift()};
+    return {p, tb::mesh::normalize(tb::mesh::cross(b - a, c - a))};
   }
-  tb::SurfacePointF evaluateFloat(size_t patch, const tb::tess::DomainPoint& w) const override {
+  tb::techniques::SurfacePointF evaluateFloat(size_t patch,
+                                              const tb::tess::DomainPoint& w) const override {
     const auto face = mesh_.facePositions(patch);
-    auto f = [&](int i) { return tb::vecCast<float>(mesh_.positions[face[i]]); };
-    const tb::Vec3f lift{0, 0, float(liftOf(patch) + drift())};
-    const tb::Vec3f a = f(0), b = f(1), c = f(2);
-    return {a * w[0] + b * w[1] + c * w[2] + lift, tb::normalize(tb::cross(b - a, c - a))};
+    auto f = [&](int i) { return tb::mesh::vecCast<float>(mesh_.positions[face[i]]); };
+    const tb::mesh::Vec3f lift{0, 0, float(liftOf(patch) + drift())};
+    const tb::mesh::Vec3f a = f(0), b = f(1), c = f(2);
+    return {a * w[0] + b * w[1] + c * w[2] + lift,
+            tb::mesh::normalize(tb::mesh::cross(b - a, c - a))};
   }
-  tb::DataFootprint footprint() const override { return {}; }
+  tb::techniques::DataFootprint footprint() const override { return {}; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
  private:
   // 0 unless flaky; then 1e-4 world units times an ever-growing count of evaluations.
   double drift() const { return flaky_ ? 1e-4 * double(evaluations_++ % 1000) : 0.0; }
 
-  tb::Mesh mesh_;
+  tb::mesh::Mesh mesh_;
   bool flaky_;
   mutable std::atomic<uint64_t> evaluations_{0};
   std::vector<std::string> warnings_;
 };
 
-class RegressTechnique final : public tb::Technique {
+class RegressTechnique final : public tb::techniques::Technique {
  public:
   explicit RegressTechnique(bool flaky)
       : flaky_(flaky),
-        info_{flaky ? "regress_flaky" : "regress", tb::TechniqueFamily::kSurface,
+        info_{flaky ? "regress_flaky" : "regress", tb::techniques::TechniqueFamily::kSurface,
               "Flat triangles (compare's acceptance tests)", "none", "triangle meshes"} {}
-  const tb::TechniqueInfo& info() const override { return info_; }
-  std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
-  std::string checkSupport(const tb::Mesh& mesh) const override {
+  const tb::techniques::TechniqueInfo& info() const override { return info_; }
+  std::vector<tb::techniques::VariantInfo> variants() const override {
+    return {{"default", "flat", {}}};
+  }
+  std::string checkSupport(const tb::mesh::Mesh& mesh) const override {
     return mesh.allFacesOfSize(3) ? "" : "regress: triangles only";
   }
-  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput& input,
-                                               const tb::VariantInfo&) const override {
-    const tb::Mesh& mesh = tb::requireMesh(info(), input);
-    if (std::string reason = checkSupport(mesh); !reason.empty()) throw tb::UnsupportedInput(reason);
-    return std::make_unique<tb::SurfaceInstance>(std::make_unique<RegressPatches>(mesh, flaky_));
+  std::unique_ptr<tb::techniques::TechniqueInstance> build(
+      const tb::techniques::TechniqueInput& input,
+      const tb::techniques::VariantInfo&) const override {
+    const tb::mesh::Mesh& mesh = tb::techniques::requireMesh(info(), input);
+    if (std::string reason = checkSupport(mesh); !reason.empty())
+      throw tb::techniques::UnsupportedInput(reason);
+    return std::make_unique<tb::techniques::SurfaceInstance>(
+        std::make_unique<RegressPatches>(mesh, flaky_));
   }
 
  private:
   bool flaky_;
-  tb::TechniqueInfo info_;
+  tb::techniques::TechniqueInfo info_;
 };
 
 }  // namespace

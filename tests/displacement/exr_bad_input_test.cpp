@@ -55,7 +55,7 @@ std::string writeRawExr(const std::filesystem::path& path, const std::vector<con
   return path.string();
 }
 
-const std::map<std::string, std::string> kUv = {{kExrLayoutAttribute, "uv"}};
+const std::map<std::string, std::string> kUv = {{displacement::kExrLayoutAttribute, "uv"}};
 
 class ExrBadInput : public ::testing::Test {
  protected:
@@ -65,8 +65,9 @@ class ExrBadInput : public ::testing::Test {
   }
   std::string good(const std::string& name) {
     const std::string path = (dir_ / name).string();
-    writeDisplacementExr(path,
-                         makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 9, 7));
+    displacement::writeDisplacementExr(path,
+                                       makeMap(displacement::DisplacementKind::kVector,
+                                               displacement::DisplacementPixelType::kFloat, 9, 7));
     return path;
   }
   std::filesystem::path dir_;
@@ -117,7 +118,7 @@ TEST_F(ExrBadInput, TwoChannels) {
 
 TEST_F(ExrBadInput, VectorWhereScalarExpected) {
   const std::string path = good("vector.exr");
-  expectMessage(readError(path, DisplacementKind::kScalar), path,
+  expectMessage(readError(path, displacement::DisplacementKind::kScalar), path,
                 "a vector map where a scalar map is expected");
 }
 
@@ -143,7 +144,8 @@ TEST_F(ExrBadInput, ZeroWidthDataWindowOnRead) {
 
 TEST_F(ExrBadInput, ZeroResolutionOnWrite) {
   const std::string path = (dir_ / "zero.exr").string();
-  DisplacementMap map = makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 0, 4);
+  displacement::DisplacementMap map = makeMap(displacement::DisplacementKind::kScalar,
+                                              displacement::DisplacementPixelType::kFloat, 0, 4);
   expectMessage(writeError(path, map), path,
                 "resolution 0 x 4: width and height must be at least 1");
   EXPECT_FALSE(std::filesystem::exists(path));
@@ -165,7 +167,8 @@ TEST_F(ExrBadInput, NanAndInfiniteTexelsOnWrite) {
   for (const float bad :
        {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
     const std::string path = (dir_ / "bad_texel.exr").string();
-    DisplacementMap map = makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 3, 3);
+    displacement::DisplacementMap map = makeMap(displacement::DisplacementKind::kVector,
+                                                displacement::DisplacementPixelType::kFloat, 3, 3);
     map.texels[3 * 4 + 2] = bad;  // texel (1, 1), channel 2
     expectMessage(writeError(path, map), path, "texel (1, 1) channel 2: not finite");
     EXPECT_FALSE(std::filesystem::exists(path));
@@ -174,7 +177,8 @@ TEST_F(ExrBadInput, NanAndInfiniteTexelsOnWrite) {
 
 TEST_F(ExrBadInput, TexelCountMismatchOnWrite) {
   const std::string path = (dir_ / "count.exr").string();
-  DisplacementMap map = makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 3, 3);
+  displacement::DisplacementMap map = makeMap(displacement::DisplacementKind::kVector,
+                                              displacement::DisplacementPixelType::kFloat, 3, 3);
   map.texels.pop_back();
   expectMessage(writeError(path, map), path, "26 values, expected 27");
 }
@@ -186,50 +190,51 @@ TEST_F(ExrBadInput, MissingLayoutAttribute) {
 
 TEST_F(ExrBadInput, UnknownLayout) {
   const std::string path =
-      writeRawExr(dir_ / "ptex.exr", {"Y"}, 0.25f, {{kExrLayoutAttribute, "ptex"}});
+      writeRawExr(dir_ / "ptex.exr", {"Y"}, 0.25f, {{displacement::kExrLayoutAttribute, "ptex"}});
   expectMessage(readError(path), path, "'ptex', expected tiles or uv");
 }
 
 TEST_F(ExrBadInput, MissingTileAttribute) {
   const std::string path = writeRawExr(dir_ / "no_count.exr", {"Y"}, 0.25f,
-                                       {{kExrLayoutAttribute, "tiles"},
-                                        {kExrTileSizeAttribute, "2"},
-                                        {kExrTileBorderAttribute, "0"},
-                                        {kExrTilesPerRowAttribute, "2"}});
+                                       {{displacement::kExrLayoutAttribute, "tiles"},
+                                        {displacement::kExrTileSizeAttribute, "2"},
+                                        {displacement::kExrTileBorderAttribute, "0"},
+                                        {displacement::kExrTilesPerRowAttribute, "2"}});
   expectMessage(readError(path), path, "header attribute 'tessbench.tile_count': missing");
 }
 
 TEST_F(ExrBadInput, TileAttributeNotANumber) {
   const std::string path = writeRawExr(dir_ / "nan_size.exr", {"Y"}, 0.25f,
-                                       {{kExrLayoutAttribute, "tiles"},
-                                        {kExrTileSizeAttribute, "2x"},
-                                        {kExrTileBorderAttribute, "0"},
-                                        {kExrTilesPerRowAttribute, "2"},
-                                        {kExrTileCountAttribute, "2"}});
+                                       {{displacement::kExrLayoutAttribute, "tiles"},
+                                        {displacement::kExrTileSizeAttribute, "2x"},
+                                        {displacement::kExrTileBorderAttribute, "0"},
+                                        {displacement::kExrTilesPerRowAttribute, "2"},
+                                        {displacement::kExrTileCountAttribute, "2"}});
   expectMessage(readError(path), path, "'2x' is not a whole number");
 }
 
 // The map is 4 x 3: three 2-texel tiles per row need 6 texels.
 TEST_F(ExrBadInput, TilesWiderThanMapOnRead) {
   const std::string path = writeRawExr(dir_ / "wide.exr", {"Y"}, 0.25f,
-                                       {{kExrLayoutAttribute, "tiles"},
-                                        {kExrTileSizeAttribute, "2"},
-                                        {kExrTileBorderAttribute, "0"},
-                                        {kExrTilesPerRowAttribute, "3"},
-                                        {kExrTileCountAttribute, "3"}});
+                                       {{displacement::kExrLayoutAttribute, "tiles"},
+                                        {displacement::kExrTileSizeAttribute, "2"},
+                                        {displacement::kExrTileBorderAttribute, "0"},
+                                        {displacement::kExrTilesPerRowAttribute, "3"},
+                                        {displacement::kExrTileCountAttribute, "3"}});
   expectMessage(readError(path), path, "the tiles do not fit the 4 x 3 atlas");
 }
 
 TEST_F(ExrBadInput, TileAttributeOnUvMap) {
-  const std::string path = writeRawExr(dir_ / "uv_tiles.exr", {"Y"}, 0.25f,
-                                       {{kExrLayoutAttribute, "uv"}, {kExrTileSizeAttribute, "2"}});
+  const std::string path = writeRawExr(
+      dir_ / "uv_tiles.exr", {"Y"}, 0.25f,
+      {{displacement::kExrLayoutAttribute, "uv"}, {displacement::kExrTileSizeAttribute, "2"}});
   expectMessage(readError(path), path, "present on a uv map");
 }
 
 TEST_F(ExrBadInput, InconsistentTilesOnWrite) {
   const std::string path = (dir_ / "tiles.exr").string();
-  DisplacementMap map =
-      testing::makeTilesMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat);
+  displacement::DisplacementMap map = testing::makeTilesMap(
+      displacement::DisplacementKind::kScalar, displacement::DisplacementPixelType::kFloat);
   map.tiles.tile_count = 7;  // 3 rows of 8 texels in a 16-texel-high atlas
   expectMessage(writeError(path, map), path, "the tiles do not fit the 24 x 16 atlas");
   map.tiles.tile_count = 5;
@@ -240,9 +245,9 @@ TEST_F(ExrBadInput, InconsistentTilesOnWrite) {
 
 TEST_F(ExrBadInput, UnwritablePathNamesTheFile) {
   const std::string path = (dir_ / "no_such_folder" / "map.exr").string();
-  expectMessage(
-      writeError(path, makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 2, 2)),
-      path, "cannot write the OpenEXR file");
+  expectMessage(writeError(path, makeMap(displacement::DisplacementKind::kScalar,
+                                         displacement::DisplacementPixelType::kFloat, 2, 2)),
+                path, "cannot write the OpenEXR file");
 }
 
 // Never a crash and never another exception: every prefix of a good file, random garbage
@@ -253,8 +258,8 @@ TEST_F(ExrBadInput, GarbageAndPrefixesNeverCrash) {
   const auto readsOrRefuses = [&](const std::vector<char>& bytes) {
     testing::writeBytes(path, bytes);
     try {
-      readDisplacementExr(path);
-    } catch (const InputError&) {
+      displacement::readDisplacementExr(path);
+    } catch (const mesh::InputError&) {
     }
   };
   for (std::size_t size = 0; size < whole.size(); size += 7) {

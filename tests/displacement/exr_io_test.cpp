@@ -15,10 +15,10 @@ using testing::makeMap;
 using testing::makeTilesMap;
 using testing::texelBits;
 
-void expectRoundTrip(const DisplacementMap& map, const std::string& name) {
+void expectRoundTrip(const displacement::DisplacementMap& map, const std::string& name) {
   const std::string path = (testing::scratchDirectory("exr_round_trip") / (name + ".exr")).string();
-  writeDisplacementExr(path, map);
-  const DisplacementMap read = readDisplacementExr(path, map.kind);
+  displacement::writeDisplacementExr(path, map);
+  const displacement::DisplacementMap read = displacement::readDisplacementExr(path, map.kind);
   EXPECT_EQ(read.kind, map.kind);
   EXPECT_EQ(read.pixel_type, map.pixel_type);
   EXPECT_EQ(read.width, map.width);
@@ -32,34 +32,47 @@ void expectRoundTrip(const DisplacementMap& map, const std::string& name) {
 }
 
 TEST(ExrIo, RoundTripScalarHalfUv) {
-  expectRoundTrip(makeMap(DisplacementKind::kScalar, DisplacementPixelType::kHalf, 13, 7), "sh");
+  expectRoundTrip(makeMap(displacement::DisplacementKind::kScalar,
+                          displacement::DisplacementPixelType::kHalf, 13, 7),
+                  "sh");
 }
 
 TEST(ExrIo, RoundTripScalarFloatUv) {
-  expectRoundTrip(makeMap(DisplacementKind::kScalar, DisplacementPixelType::kFloat, 13, 7), "sf");
+  expectRoundTrip(makeMap(displacement::DisplacementKind::kScalar,
+                          displacement::DisplacementPixelType::kFloat, 13, 7),
+                  "sf");
 }
 
 TEST(ExrIo, RoundTripVectorHalfUv) {
-  expectRoundTrip(makeMap(DisplacementKind::kVector, DisplacementPixelType::kHalf, 5, 11), "vh");
+  expectRoundTrip(makeMap(displacement::DisplacementKind::kVector,
+                          displacement::DisplacementPixelType::kHalf, 5, 11),
+                  "vh");
 }
 
 TEST(ExrIo, RoundTripVectorFloatUv) {
-  expectRoundTrip(makeMap(DisplacementKind::kVector, DisplacementPixelType::kFloat, 5, 11), "vf");
+  expectRoundTrip(makeMap(displacement::DisplacementKind::kVector,
+                          displacement::DisplacementPixelType::kFloat, 5, 11),
+                  "vf");
 }
 
 TEST(ExrIo, RoundTripScalarHalfTiles) {
-  expectRoundTrip(makeTilesMap(DisplacementKind::kScalar, DisplacementPixelType::kHalf), "sht");
+  expectRoundTrip(makeTilesMap(displacement::DisplacementKind::kScalar,
+                               displacement::DisplacementPixelType::kHalf),
+                  "sht");
 }
 
 TEST(ExrIo, RoundTripVectorFloatTiles) {
-  expectRoundTrip(makeTilesMap(DisplacementKind::kVector, DisplacementPixelType::kFloat), "vft");
+  expectRoundTrip(makeTilesMap(displacement::DisplacementKind::kVector,
+                               displacement::DisplacementPixelType::kFloat),
+                  "vft");
 }
 
 TEST(ExrIo, RoundTripKeepsSignedZeroSubnormalsAndExtremes) {
-  for (const DisplacementPixelType type :
-       {DisplacementPixelType::kHalf, DisplacementPixelType::kFloat}) {
-    DisplacementMap map = makeMap(DisplacementKind::kScalar, type, 6, 1);
-    const bool half = type == DisplacementPixelType::kHalf;
+  for (const displacement::DisplacementPixelType type :
+       {displacement::DisplacementPixelType::kHalf, displacement::DisplacementPixelType::kFloat}) {
+    displacement::DisplacementMap map =
+        makeMap(displacement::DisplacementKind::kScalar, type, 6, 1);
+    const bool half = type == displacement::DisplacementPixelType::kHalf;
     map.texels = {-0.0f,
                   0.0f,
                   half ? 5.9604645e-8f : std::numeric_limits<float>::denorm_min(),
@@ -71,15 +84,19 @@ TEST(ExrIo, RoundTripKeepsSignedZeroSubnormalsAndExtremes) {
 }
 
 TEST(ExrIo, OneTexelMapRoundTrips) {
-  expectRoundTrip(makeMap(DisplacementKind::kVector, DisplacementPixelType::kHalf, 1, 1), "one");
+  expectRoundTrip(makeMap(displacement::DisplacementKind::kVector,
+                          displacement::DisplacementPixelType::kHalf, 1, 1),
+                  "one");
 }
 
 TEST(ExrIo, ReadWithoutExpectedKindAcceptsEither) {
   const auto dir = testing::scratchDirectory("exr_any_kind");
-  for (const DisplacementKind kind : {DisplacementKind::kScalar, DisplacementKind::kVector}) {
-    const std::string path = (dir / (std::string(kindName(kind)) + ".exr")).string();
-    writeDisplacementExr(path, makeMap(kind, DisplacementPixelType::kFloat, 3, 2));
-    EXPECT_EQ(readDisplacementExr(path).kind, kind);
+  for (const displacement::DisplacementKind kind :
+       {displacement::DisplacementKind::kScalar, displacement::DisplacementKind::kVector}) {
+    const std::string path = (dir / (std::string(displacement::kindName(kind)) + ".exr")).string();
+    displacement::writeDisplacementExr(
+        path, makeMap(kind, displacement::DisplacementPixelType::kFloat, 3, 2));
+    EXPECT_EQ(displacement::readDisplacementExr(path).kind, kind);
   }
 }
 
@@ -89,7 +106,8 @@ TEST(ExrIo, ReadWithoutExpectedKindAcceptsEither) {
 TEST(ExrIo, HalfMapRefusesInexactTexelUntilRounded) {
   const auto dir = testing::scratchDirectory("exr_half_rounding");
   const std::string path = (dir / "inexact.exr").string();
-  DisplacementMap map = makeMap(DisplacementKind::kScalar, DisplacementPixelType::kHalf, 2, 2);
+  displacement::DisplacementMap map = makeMap(displacement::DisplacementKind::kScalar,
+                                              displacement::DisplacementPixelType::kHalf, 2, 2);
   map.texels[3] = 0.1f;  // 0.1 is not a half; its nearest half is 0.0999755859375
   const std::string message = testing::writeError(path, map);
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -97,23 +115,25 @@ TEST(ExrIo, HalfMapRefusesInexactTexelUntilRounded) {
   EXPECT_NE(message.find("not representable as half"), std::string::npos) << message;
   EXPECT_FALSE(std::filesystem::exists(path));
 
-  roundTexelsToHalf(map);
+  displacement::roundTexelsToHalf(map);
   EXPECT_EQ(map.texels[3], 0.0999755859375f);
-  writeDisplacementExr(path, map);
-  EXPECT_EQ(readDisplacementExr(path).texels[3], 0.0999755859375f);
+  displacement::writeDisplacementExr(path, map);
+  EXPECT_EQ(displacement::readDisplacementExr(path).texels[3], 0.0999755859375f);
 }
 
 TEST(ExrIo, RoundToHalfMatchesHalfRounding) {
-  EXPECT_EQ(roundToHalf(1.0f), 1.0f);
-  EXPECT_EQ(roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);                   // a tie: rounds to even
-  EXPECT_EQ(roundToHalf(1.0f + 3.0f / 2048.0f), 1.0f + 2.0f / 1024.0f);  // a tie, to even
-  EXPECT_TRUE(std::isinf(roundToHalf(70000.0f)));                        // past the half range
+  EXPECT_EQ(displacement::roundToHalf(1.0f), 1.0f);
+  EXPECT_EQ(displacement::roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);  // a tie: rounds to even
+  EXPECT_EQ(displacement::roundToHalf(1.0f + 3.0f / 2048.0f),
+            1.0f + 2.0f / 1024.0f);                              // a tie, to even
+  EXPECT_TRUE(std::isinf(displacement::roundToHalf(70000.0f)));  // past the half range
 }
 
 // A float that overflows half is refused as not representable, not written as infinity.
 TEST(ExrIo, HalfMapRefusesTexelBeyondHalfRange) {
   const std::string path = (testing::scratchDirectory("exr_half_range") / "overflow.exr").string();
-  DisplacementMap map = makeMap(DisplacementKind::kScalar, DisplacementPixelType::kHalf, 2, 1);
+  displacement::DisplacementMap map = makeMap(displacement::DisplacementKind::kScalar,
+                                              displacement::DisplacementPixelType::kHalf, 2, 1);
   map.texels[0] = 70000.0f;
   EXPECT_NE(testing::writeError(path, map).find("not representable as half"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path));

@@ -18,25 +18,29 @@ namespace tb::testing {
 
 // A width x height map whose texels are distinct, non-trivial values (negative, tiny,
 // large), exact halves when the map is half.
-inline DisplacementMap makeMap(DisplacementKind kind, DisplacementPixelType type,
-                               std::uint32_t width, std::uint32_t height) {
-  DisplacementMap map;
+inline displacement::DisplacementMap makeMap(displacement::DisplacementKind kind,
+                                             displacement::DisplacementPixelType type,
+                                             std::uint32_t width, std::uint32_t height) {
+  displacement::DisplacementMap map;
   map.kind = kind;
   map.pixel_type = type;
   map.width = width;
   map.height = height;
-  const std::size_t count = std::size_t{width} * height * channelCount(kind);
+  const std::size_t count = std::size_t{width} * height * displacement::channelCount(kind);
   for (std::size_t i = 0; i < count; ++i) {
     const float value =
         (static_cast<float>(i % 97) - 48.0f) * 0.0137f + 1e-5f * static_cast<float>(i);
-    map.texels.push_back(type == DisplacementPixelType::kHalf ? roundToHalf(value) : value);
+    map.texels.push_back(type == displacement::DisplacementPixelType::kHalf
+                             ? displacement::roundToHalf(value)
+                             : value);
   }
   return map;
 }
 
-inline DisplacementMap makeTilesMap(DisplacementKind kind, DisplacementPixelType type) {
-  DisplacementMap map = makeMap(kind, type, 24, 16);
-  map.layout = DisplacementLayout::kTiles;
+inline displacement::DisplacementMap makeTilesMap(displacement::DisplacementKind kind,
+                                                  displacement::DisplacementPixelType type) {
+  displacement::DisplacementMap map = makeMap(kind, type, 24, 16);
+  map.layout = displacement::DisplacementLayout::kTiles;
   map.tiles = {.tile_size = 8, .border = 1, .tiles_per_row = 3, .tile_count = 5};
   return map;
 }
@@ -59,20 +63,21 @@ inline std::string writeBytes(const std::filesystem::path& path, const std::vect
 }
 
 // The message of the InputError that reading path throws, or "" when it reads.
-inline std::string readError(const std::string& path,
-                             std::optional<DisplacementKind> expected = std::nullopt) {
+inline std::string readError(
+    const std::string& path,
+    std::optional<displacement::DisplacementKind> expected = std::nullopt) {
   try {
-    readDisplacementExr(path, expected);
-  } catch (const InputError& error) {
+    displacement::readDisplacementExr(path, expected);
+  } catch (const mesh::InputError& error) {
     return error.what();
   }
   return "";
 }
 
-inline std::string writeError(const std::string& path, const DisplacementMap& map) {
+inline std::string writeError(const std::string& path, const displacement::DisplacementMap& map) {
   try {
-    writeDisplacementExr(path, map);
-  } catch (const InputError& error) {
+    displacement::writeDisplacementExr(path, map);
+  } catch (const mesh::InputError& error) {
     return error.what();
   }
   return "";

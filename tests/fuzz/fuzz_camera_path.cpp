@@ -16,7 +16,7 @@ namespace {
 using tb::fuzz::require;
 
 // What loadCameraPath promises of a spec it returns (camera_path.h: every field validated).
-void checkSpec(const tb::CameraPathSpec& spec) {
+void checkSpec(const tb::suite::CameraPathSpec& spec) {
   require(!spec.name.empty(), "a path has a name");
   require(spec.width_px >= 1 && spec.height_px >= 1, "the viewport is at least 1 x 1 pixel");
   require(spec.fov_y_deg > 0 && spec.fov_y_deg < 180, "the field of view is in (0, 180)");
@@ -30,10 +30,10 @@ void checkSpec(const tb::CameraPathSpec& spec) {
 
 // The views of a path the suite runs measures under: one per frame, each with a finite
 // matrix, the spec's viewport, and a positive near plane.
-void checkPath(const tb::CameraPathSpec& spec, const tb::CameraPath& path) {
+void checkPath(const tb::suite::CameraPathSpec& spec, const tb::view::CameraPath& path) {
   require(path.name == spec.name, "the sampled path keeps the spec's name");
   require(path.views.size() == spec.frames, "one view per frame");
-  for (const tb::View& view : path.views) {
+  for (const tb::view::View& view : path.views) {
     for (const auto& column : view.view_projection.m) {
       for (double value : column) require(!std::isnan(value), "view-projection has no NaN");
     }
@@ -51,12 +51,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static tb::fuzz::ScratchFile file(".json");
   const std::string& path = file.write(data, size);
   try {
-    const tb::CameraPathSpec spec = tb::loadCameraPath(path, "fuzz_path.json");
+    const tb::suite::CameraPathSpec spec = tb::suite::loadCameraPath(path, "fuzz_path.json");
     checkSpec(spec);
     // An asset's box, off-centre and not a cube, as the suite passes (boundsOf(mesh)).
-    const tb::Aabb bounds{{-1.5, 0.25, -4}, {2.5, 3, 1}};
-    checkPath(spec, tb::sampleCameraPath(spec, bounds));
-  } catch (const tb::InputError& error) {
+    const tb::mesh::Aabb bounds{{-1.5, 0.25, -4}, {2.5, 3, 1}};
+    checkPath(spec, tb::suite::sampleCameraPath(spec, bounds));
+  } catch (const tb::mesh::InputError& error) {
     const std::string message = error.what();
     require(message.find('\n') == std::string::npos, "an InputError's message is one line");
   }

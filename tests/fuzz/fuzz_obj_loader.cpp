@@ -20,7 +20,7 @@ namespace {
 
 using tb::fuzz::require;
 
-bool finite(const tb::Vec3d& v) {
+bool finite(const tb::mesh::Vec3d& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
@@ -31,7 +31,7 @@ bool attributeIndexOk(int32_t index, size_t count) {
 
 // What obj_loader.h promises of a mesh it returns: finite coordinates, faces of >= 3
 // corners whose indices are in range, tags naming existing vertices and faces.
-void checkLoadedMesh(const tb::Mesh& mesh) {
+void checkLoadedMesh(const tb::mesh::Mesh& mesh) {
   require(mesh.faceCount() > 0, "a loaded mesh has faces");
   require(mesh.face_offsets.front() == 0 &&
               mesh.face_offsets.back() == mesh.corner_positions.size() &&
@@ -43,9 +43,9 @@ void checkLoadedMesh(const tb::Mesh& mesh) {
     require(mesh.face_offsets[f] < mesh.face_offsets[f + 1] && mesh.faceSize(f) >= 3,
             "every face has at least 3 corners");
   }
-  for (const tb::Vec3d& p : mesh.positions) require(finite(p), "positions are finite");
-  for (const tb::Vec3d& n : mesh.normals) require(finite(n), "normals are finite");
-  for (const tb::Vec2d& uv : mesh.uvs) {
+  for (const tb::mesh::Vec3d& p : mesh.positions) require(finite(p), "positions are finite");
+  for (const tb::mesh::Vec3d& n : mesh.normals) require(finite(n), "normals are finite");
+  for (const tb::mesh::Vec2d& uv : mesh.uvs) {
     require(std::isfinite(uv.x) && std::isfinite(uv.y), "texture coordinates are finite");
   }
   for (size_t c = 0; c < mesh.corner_positions.size(); ++c) {
@@ -56,12 +56,12 @@ void checkLoadedMesh(const tb::Mesh& mesh) {
     // The default LoadOptions compute normals for a mesh that lacks any.
     require(mesh.corner_normals[c] >= 0, "every corner has a normal (read or computed)");
   }
-  for (const tb::Crease& crease : mesh.tags.creases) {
+  for (const tb::mesh::Crease& crease : mesh.tags.creases) {
     require(crease.v0 < mesh.positions.size() && crease.v1 < mesh.positions.size(),
             "crease tags name existing vertices");
     require(std::isfinite(crease.sharpness), "crease sharpness is finite");
   }
-  for (const tb::Corner& corner : mesh.tags.corners) {
+  for (const tb::mesh::Corner& corner : mesh.tags.corners) {
     require(corner.vertex < mesh.positions.size(), "corner tags name existing vertices");
     require(std::isfinite(corner.sharpness), "corner sharpness is finite");
   }
@@ -72,8 +72,8 @@ void checkLoadedMesh(const tb::Mesh& mesh) {
 
 // The tb_mesh work a run does with an asset (the suite's listing, the techniques' and
 // measures' topology, welding and triangulation), with their own consistency checks.
-void useMesh(const tb::Mesh& mesh) {
-  const tb::Topology topology = tb::buildTopology(mesh);
+void useMesh(const tb::mesh::Mesh& mesh) {
+  const tb::mesh::Topology topology = tb::mesh::buildTopology(mesh);
   require(topology.corner_edges.size() == mesh.corner_positions.size(), "one edge per face corner");
   for (uint32_t edge : topology.corner_edges) {
     require(edge < topology.edges.size(), "corner edges in range");
@@ -85,11 +85,11 @@ void useMesh(const tb::Mesh& mesh) {
   (void)topology.nonManifoldEdgeCount();
   (void)topology.extraordinaryVertices(mesh.allFacesOfSize(3) ? 6 : 4);
   if (!topology.edges.empty()) {
-    const tb::MeshEdge& first = topology.edges.front();
+    const tb::mesh::MeshEdge& first = topology.edges.front();
     require(topology.findEdge(first.v1, first.v0) == 0, "findEdge finds an edge either way");
   }
 
-  const tb::Welding welding = tb::weldByPosition(mesh);
+  const tb::mesh::Welding welding = tb::mesh::weldByPosition(mesh);
   require(welding.canonical.size() == mesh.positions.size() &&
               welding.unique_count <= mesh.positions.size(),
           "welding maps every position");
@@ -97,29 +97,29 @@ void useMesh(const tb::Mesh& mesh) {
     require(welding.canonical[v] <= v, "a position welds to itself or an earlier one");
   }
 
-  const tb::Aabb bounds = tb::boundsOf(mesh);
-  require(!std::isnan(tb::diagonalOf(bounds)), "the bounding box has a diagonal");
-  (void)tb::describeFace(mesh, mesh.faceCount() - 1);
+  const tb::mesh::Aabb bounds = tb::mesh::boundsOf(mesh);
+  require(!std::isnan(tb::mesh::diagonalOf(bounds)), "the bounding box has a diagonal");
+  (void)tb::mesh::describeFace(mesh, mesh.faceCount() - 1);
   (void)mesh.maxFaceSize();
 
-  const tb::Triangulation triangles = tb::fanTriangulate(mesh);
+  const tb::mesh::Triangulation triangles = tb::mesh::fanTriangulate(mesh);
   require(triangles.mesh.allFacesOfSize(3) &&
               triangles.source_face.size() == triangles.mesh.faceCount(),
           "fan triangulation gives triangles, each with its source face");
-  (void)tb::triangulationWarnings(triangles);
-  const tb::RenderVertices render = tb::buildRenderVertices(mesh);
+  (void)tb::mesh::triangulationWarnings(triangles);
+  const tb::mesh::RenderVertices render = tb::mesh::buildRenderVertices(mesh);
   require(render.vertex_count <= mesh.corner_positions.size(), "render vertices <= corners");
-  (void)tb::triangleControlMeshBytes(triangles.mesh);
+  (void)tb::mesh::triangleControlMeshBytes(triangles.mesh);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  tb::Mesh mesh;
+  tb::mesh::Mesh mesh;
   try {
-    mesh = tb::loadObjText(text, "fuzz.obj");
-  } catch (const tb::InputError& error) {
+    mesh = tb::mesh::loadObjText(text, "fuzz.obj");
+  } catch (const tb::mesh::InputError& error) {
     const std::string_view message = error.what();
     require(message.find('\n') == std::string_view::npos, "an InputError's message is one line");
     return 0;

@@ -94,13 +94,13 @@ TEST(RenderTarget, BackFaceCullingDropsClockwiseTrianglesOnly) {
 // normal (v1 - v0) x (v2 - v0) towards the eye) is front-facing; its mirror is culled.
 TEST(RenderTarget, WorldTriangleFacingTheEyeIsFrontFacing) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Mat4 view_projection =
-      perspective(1.0, 1.0, 0.1, 10.0) * lookAt({0.3, -0.2, 4}, {0, 0, 0}, {0, 1, 0});
-  auto clip = [&](const Vec3d& p) {
+  const view::Mat4 view_projection =
+      view::perspective(1.0, 1.0, 0.1, 10.0) * view::lookAt({0.3, -0.2, 4}, {0, 0, 0}, {0, 1, 0});
+  auto clip = [&](const mesh::Vec3d& p) {
     const auto c = view_projection.transform({p.x, p.y, p.z, 1});
     return std::array<float, 4>{float(c[0]), float(c[1]), float(c[2]), float(c[3])};
   };
-  const Vec3d a{-1, -1, 0}, b{1, -1, 0}, c{0, 1, 0};  // normal +z, towards the eye
+  const mesh::Vec3d a{-1, -1, 0}, b{1, -1, 0}, c{0, 1, 0};  // normal +z, towards the eye
   ASSERT_GT(cross(b - a, c - a).z, 0);
   RenderTarget target(context, kSize, kSize);
   RenderTarget::DrawOptions cull;

@@ -28,20 +28,23 @@ std::ostream& operator<<(std::ostream& out, const Case& c) {
   return out << c.technique << "/" << c.variant << " on " << c.asset;
 }
 
-BuiltSurface build(const Case& c) {
-  const Technique* technique = TechniqueRegistry::instance().find(c.technique);
+techniques::BuiltSurface build(const Case& c) {
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(c.technique);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
-  for (const VariantInfo& variant : technique->variants()) {
+  for (const techniques::VariantInfo& variant : technique->variants()) {
     if (variant.name == c.variant) {
-      return buildSurface(*technique, loadObjFile(testing::assetPath(c.asset)), variant);
+      return techniques::buildSurface(*technique, mesh::loadObjFile(testing::assetPath(c.asset)),
+                                      variant);
     }
   }
   throw std::runtime_error(std::string("no variant ") + c.variant);
 }
 
-std::vector<View> pathViews(const char* name, const SurfacePatches& patches,
-                            uint32_t frames = 0) {
-  return sampleCameraPath(resolveCameraPath(name), boundsOf(patches.controlMesh()), frames)
+std::vector<view::View> pathViews(const char* name, const techniques::SurfacePatches& patches,
+                                  uint32_t frames = 0) {
+  return suite::sampleCameraPath(suite::resolveCameraPath(name),
+                                 mesh::boundsOf(patches.controlMesh()), frames)
       .views;
 }
 
@@ -58,22 +61,22 @@ class AdaptiveSymmetricVariants : public ::testing::TestWithParam<Case> {};
 // Acceptance 2 and 3: every crack-safe policy and spacing, every frame of orbit and dolly.
 TEST_P(AdaptiveSymmetricVariants, AreCrackFreeUnderEveryPolicyAlongOrbitAndDolly) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const BuiltSurface patches = build(GetParam());
-  AdaptivityRun run(*patches, &context, "", nullptr);
+  const techniques::BuiltSurface patches = build(GetParam());
+  measures::AdaptivityRun run(*patches, &context, "", nullptr);
   ASSERT_TRUE(run.gpuSkipReason().empty()) << run.gpuSkipReason();
   for (const char* path : {"orbit", "dolly"}) {
     // Both paths at 24 frames here (dolly's file has 120; --suite full runs them all).
-    const std::vector<View> views = pathViews(path, *patches, kCrackCheckFrames);
+    const std::vector<view::View> views = pathViews(path, *patches, kCrackCheckFrames);
     ASSERT_EQ(views.size(), kCrackCheckFrames);
     for (const char* name : kSafePolicies) {
       for (tess::Spacing spacing : kSpacings) {
-        std::vector<AdaptivityFrame> frames;
+        std::vector<measures::AdaptivityFrame> frames;
         try {
-          frames = run.frames(*parseFactorPolicy(name), spacing, views, {.screen = false});
+          frames = run.frames(*lod::parseFactorPolicy(name), spacing, views, {.screen = false});
         } catch (const std::exception& error) {
           FAIL() << path << " " << name << " " << tess::toString(spacing) << ": " << error.what();
         }
-        for (const AdaptivityFrame& f : frames) {
+        for (const measures::AdaptivityFrame& f : frames) {
           const std::string where = std::string(path) + " frame " + std::to_string(f.frame) +
                                     " " + name + " " + std::string(tess::toString(spacing));
           ASSERT_TRUE(f.gpu_measured) << where;
@@ -117,15 +120,15 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
                         {"pn_triangles", "pn", "tessbench/tri_torus.obj"},
                         {"phong", "alpha0.75", "tessbench/cylinder_seam.obj"}};
   for (const Case& c : cases) {
-    const BuiltSurface patches = build(c);
-    AdaptivityRun run(*patches, &context, "", nullptr);
+    const techniques::BuiltSurface patches = build(c);
+    measures::AdaptivityRun run(*patches, &context, "", nullptr);
     size_t frames = 0;
     for (const char* path : {"orbit", "dolly", "flyby"}) {
-      const std::vector<View> views = pathViews(path, *patches);
+      const std::vector<view::View> views = pathViews(path, *patches);
       for (const char* name : {"sphere_diameter", "lp2_edge_silhouette"}) {
-        for (const AdaptivityFrame& f : run.frames(*parseFactorPolicy(name),
-                                                   tess::Spacing::kFractionalOdd, views,
-                                                   {.screen = false, .cracks = false})) {
+        for (const measures::AdaptivityFrame& f :
+             run.frames(*lod::parseFactorPolicy(name), tess::Spacing::kFractionalOdd, views,
+                        {.screen = false, .cracks = false})) {
           ASSERT_TRUE(f.gpu_measured);
           EXPECT_EQ(f.twin_level_mismatches, 0u) << c << " " << path << " frame " << f.frame;
           EXPECT_EQ(f.gpu_tes_invocations, f.domain_points) << c << " " << path;
@@ -140,11 +143,12 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
 // The control: endpoints in patch order make the two sides of some shared edges differ.
 TEST(Adaptivity, OrderDependentPolicyGivesSharedEdgesTwoFactors) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const BuiltSurface patches = build({"acc", "default", "opensubdiv/catmark_torus.obj"});
-  AdaptivityRun run(*patches, &context, "", nullptr);
+  const techniques::BuiltSurface patches =
+      build({"acc", "default", "opensubdiv/catmark_torus.obj"});
+  measures::AdaptivityRun run(*patches, &context, "", nullptr);
   uint64_t cpu = 0, gpu = 0, unpaired = 0;
-  for (const AdaptivityFrame& f :
-       run.frames(*parseFactorPolicy("sphere_diameter_order_dependent"),
+  for (const measures::AdaptivityFrame& f :
+       run.frames(*lod::parseFactorPolicy("sphere_diameter_order_dependent"),
                   tess::Spacing::kFractionalOdd, pathViews("orbit", *patches))) {
     cpu += f.factor_mismatches_cpu;
     gpu += f.factor_mismatches_gpu;
@@ -161,14 +165,15 @@ TEST(Adaptivity, OrderDependentPolicyGivesSharedEdgesTwoFactors) {
 // Acceptance 6: along the dolly (120 frames, no factor changing by more than 1 a frame),
 // integer spacing pops (a whole segment appears at once), fractional_odd moves smoothly.
 TEST(Adaptivity, IntegerSpacingPopsMoreThanFractionalOddAlongTheDolly) {
-  const BuiltSurface patches = build({"acc", "default", "opensubdiv/catmark_torus.obj"});
-  AdaptivityRun run(*patches, nullptr, "not used", nullptr);
-  const std::vector<View> views = pathViews("dolly", *patches);
+  const techniques::BuiltSurface patches =
+      build({"acc", "default", "opensubdiv/catmark_torus.obj"});
+  measures::AdaptivityRun run(*patches, nullptr, "not used", nullptr);
+  const std::vector<view::View> views = pathViews("dolly", *patches);
   ASSERT_GE(views.size(), 120u);
-  const FactorPolicy policy = *parseFactorPolicy("sphere_diameter");
+  const lod::FactorPolicy policy = *lod::parseFactorPolicy("sphere_diameter");
   auto maxPop = [&](tess::Spacing spacing) {
     double pop = 0;
-    for (const AdaptivityFrame& f : run.frames(policy, spacing, views)) {
+    for (const measures::AdaptivityFrame& f : run.frames(policy, spacing, views)) {
       pop = std::max(pop, f.pop.max_px);
     }
     return pop;
@@ -185,21 +190,23 @@ TEST(Adaptivity, IntegerSpacingPopsMoreThanFractionalOddAlongTheDolly) {
 // tessellation error within 1 px, and the uniform level is the lowest that does (one
 // level less exceeds it on some frame).
 TEST(Adaptivity, SummaryFindsTheLowestUniformLevelAndATargetWithinOnePixel) {
-  const BuiltSurface patches = build({"acc", "default", "opensubdiv/catmark_torus.obj"});
-  AdaptivityRun run(*patches, nullptr, "not used", nullptr);
-  const std::vector<View> views = pathViews("dolly", *patches, 12);
-  const AdaptivitySummary s = run.summarise(*parseFactorPolicy("sphere_diameter"),
-                                            tess::Spacing::kFractionalOdd, views, 1.0);
+  const techniques::BuiltSurface patches =
+      build({"acc", "default", "opensubdiv/catmark_torus.obj"});
+  measures::AdaptivityRun run(*patches, nullptr, "not used", nullptr);
+  const std::vector<view::View> views = pathViews("dolly", *patches, 12);
+  const measures::AdaptivitySummary s = run.summarise(*lod::parseFactorPolicy("sphere_diameter"),
+                                                      tess::Spacing::kFractionalOdd, views, 1.0);
   ASSERT_TRUE(s.reached);
   ASSERT_TRUE(s.uniform_reached);
   EXPECT_LE(s.max_error_px, 1.0);
   EXPECT_GT(s.max_error_px, 0.5);  // the coarsest target within 1 px is close to it
   EXPECT_LE(s.uniform_max_error_px, 1.0);
   ASSERT_GT(s.uniform_level, 1u);
-  FactorPolicy below = *parseFactorPolicy("uniform");
+  lod::FactorPolicy below = *lod::parseFactorPolicy("uniform");
   below.target = s.uniform_level - 1;
   double worst = 0;
-  for (const AdaptivityFrame& f : run.frames(below, tess::Spacing::kFractionalOdd, views)) {
+  for (const measures::AdaptivityFrame& f :
+       run.frames(below, tess::Spacing::kFractionalOdd, views)) {
     worst = std::max(worst, f.screen.tessellation_error.max_px);
   }
   EXPECT_GT(worst, 1.0);

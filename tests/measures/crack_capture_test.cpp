@@ -50,13 +50,14 @@ tess::Levels levels(std::array<float, 4> outer, std::array<float, 2> inner) {
 }
 
 TEST(CrackBoundaries, HoldExactlyTheTessellatorsBoundaryPointsInEdgeOrder) {
-  for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
+  for (techniques::PatchDomain domain :
+       {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
     const tess::Domain d =
-        domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+        domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
     for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
                                   tess::Spacing::kFractionalEven, tess::Spacing::kPow2}) {
       const tess::Levels l = levels({5.5f, 9, 2.25f, 13}, {7.5f, 3});
-      const auto b = boundaryTessellation(domain, spacing, l);
+      const auto b = measures::boundaryTessellation(domain, spacing, l);
       std::set<Bits> got;
       for (const tess::DomainPoint& p : b->points) {
         got.insert({std::bit_cast<uint32_t>(p[0]), std::bit_cast<uint32_t>(p[1]),
@@ -66,31 +67,33 @@ TEST(CrackBoundaries, HoldExactlyTheTessellatorsBoundaryPointsInEdgeOrder) {
       EXPECT_EQ(got, boundarySet(d, spacing, l)) << tess::toString(spacing);
       for (uint32_t e = 0; e + 1 < b->edge_begin.size(); ++e) {
         for (uint32_t k = b->edge_begin[e]; k < b->edge_begin[e + 1]; ++k) {
-          EXPECT_EQ(domainEdgeParameter(domain, e, b->points[k]), b->edge_t[k]);
+          EXPECT_EQ(measures::domainEdgeParameter(domain, e, b->points[k]), b->edge_t[k]);
           if (k > b->edge_begin[e]) {
             EXPECT_LT(b->edge_t[k - 1], b->edge_t[k]);
           }
           EXPECT_EQ(b->indexOf(domain, b->points[k]), int64_t(k));
         }
       }
-      EXPECT_EQ(boundaryTessellation(domain, spacing, l), b);  // one shared entry
+      EXPECT_EQ(measures::boundaryTessellation(domain, spacing, l), b);  // one shared entry
     }
   }
 }
 
 TEST(CrackBoundaries, CaptureLevelsKeepTheBoundaryWithFewerInteriorPoints) {
   const tess::Levels l64 = levels({64, 64, 64, 64}, {64, 64});
-  const auto quad = boundaryTessellation(PatchDomain::kQuad, tess::Spacing::kInteger, l64);
+  const auto quad =
+      measures::boundaryTessellation(techniques::PatchDomain::kQuad, tess::Spacing::kInteger, l64);
   EXPECT_EQ(quad->tessellated_points, 65u * 65u);
   EXPECT_EQ(quad->capture_levels.inner[0], 1.0f);
   EXPECT_LT(quad->capture_points * 10, quad->tessellated_points);
   for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
                                 tess::Spacing::kFractionalEven, tess::Spacing::kPow2}) {
-    for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
+    for (techniques::PatchDomain domain :
+         {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
       const tess::Domain d =
-          domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+          domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
       for (const tess::Levels& l : {l64, levels({7.3f, 12, 3, 40}, {20, 33.5f})}) {
-        const auto b = boundaryTessellation(domain, spacing, l);
+        const auto b = measures::boundaryTessellation(domain, spacing, l);
         EXPECT_EQ(boundarySet(d, spacing, b->capture_levels), boundarySet(d, spacing, l))
             << tess::toString(spacing);
         EXPECT_LT(b->capture_points, b->tessellated_points) << tess::toString(spacing);
@@ -105,16 +108,18 @@ TEST(CrackBoundaries, CaptureLevelsKeepTheBoundaryWithFewerInteriorPoints) {
   lowered.inner = {0.49f, 3};
   ASSERT_NE(boundarySet(tess::Domain::kQuad, tess::Spacing::kFractionalOdd, lowered),
             boundarySet(tess::Domain::kQuad, tess::Spacing::kFractionalOdd, degenerate));
-  const auto kept =
-      boundaryTessellation(PatchDomain::kQuad, tess::Spacing::kFractionalOdd, degenerate);
+  const auto kept = measures::boundaryTessellation(techniques::PatchDomain::kQuad,
+                                                   tess::Spacing::kFractionalOdd, degenerate);
   EXPECT_EQ(tess::levelsBits(kept->capture_levels), tess::levelsBits(degenerate));
   EXPECT_EQ(kept->capture_points, kept->tessellated_points);
 }
 
-BuiltSurface defaultPatches(const char* technique_id, const char* asset) {
-  const Technique* technique = TechniqueRegistry::instance().find(technique_id);
+techniques::BuiltSurface defaultPatches(const char* technique_id, const char* asset) {
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(technique_id);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + technique_id);
-  return buildSurface(*technique, loadObjFile(testing::assetPath(asset)), technique->variants()[0]);
+  return techniques::buildSurface(*technique, mesh::loadObjFile(testing::assetPath(asset)),
+                                  technique->variants()[0]);
 }
 
 // Lowered inner levels capture every boundary point with the positions the patches' own
@@ -125,7 +130,7 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
   // gregory_acc on the pyramid: a quad and a triangle program.
   for (const auto& [id, asset] : {std::pair{"gregory_acc", "opensubdiv/catmark_pyramid.obj"},
                                   std::pair{"phong", "opensubdiv/loop_icosahedron.obj"}}) {
-    const BuiltSurface patches = defaultPatches(id, asset);
+    const techniques::BuiltSurface patches = defaultPatches(id, asset);
     const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
     ASSERT_FALSE(programs.empty());
     for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
@@ -135,18 +140,19 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
                      std::to_string(level));
         const std::vector<tess::Levels> patch_levels(
             patches->patchCount(), levels({level, level, level, level}, {level, level}));
-        const PatchBoundaries boundaries = patchBoundaries(*patches, spacing, patch_levels);
-        CrackCaptureOptions full_options;
+        const measures::PatchBoundaries boundaries =
+            measures::patchBoundaries(*patches, spacing, patch_levels);
+        measures::CrackCaptureOptions full_options;
         full_options.lower_inner_levels = false;
-        const BoundaryCapture full = captureBoundaryPositions(
+        const measures::BoundaryCapture full = measures::captureBoundaryPositions(
             *patches, programs, boundaries, spacing, patch_levels, context, full_options);
-        const BoundaryCapture lowered = captureBoundaryPositions(*patches, programs, boundaries,
-                                                                 spacing, patch_levels, context);
+        const measures::BoundaryCapture lowered = measures::captureBoundaryPositions(
+            *patches, programs, boundaries, spacing, patch_levels, context);
         EXPECT_EQ(full.points_captured, boundaries.size());
         EXPECT_EQ(lowered.points_captured, boundaries.size());
         ASSERT_EQ(lowered.positions.size(), full.positions.size());
         EXPECT_EQ(std::memcmp(lowered.positions.data(), full.positions.data(),
-                              full.positions.size() * sizeof(Vec3f)),
+                              full.positions.size() * sizeof(mesh::Vec3f)),
                   0);
         EXPECT_LE(lowered.tes_invocations, full.tes_invocations);
         if (level == 64.0f) {
@@ -176,25 +182,27 @@ TEST(CrackCapture, LoweredInnerLevelsCaptureTheSamePositions) {
 // and changes nothing else (oracle: the capture in one call).
 TEST(CrackCapture, ChunksOfPatchesCaptureWhatOneCallDoes) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const BuiltSurface patches = defaultPatches("gregory_acc", "opensubdiv/catmark_pyramid.obj");
+  const techniques::BuiltSurface patches =
+      defaultPatches("gregory_acc", "opensubdiv/catmark_pyramid.obj");
   const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
   const tess::Spacing spacing = tess::Spacing::kFractionalOdd;
   const std::vector<tess::Levels> patch_levels(patches->patchCount(),
                                                levels({9.5f, 9.5f, 9.5f, 9.5f}, {9.5f, 9.5f}));
-  const PatchBoundaries boundaries = patchBoundaries(*patches, spacing, patch_levels);
-  const BoundaryCapture one =
-      captureBoundaryPositions(*patches, programs, boundaries, spacing, patch_levels, context);
-  CrackCaptureOptions small;
+  const measures::PatchBoundaries boundaries =
+      measures::patchBoundaries(*patches, spacing, patch_levels);
+  const measures::BoundaryCapture one = measures::captureBoundaryPositions(
+      *patches, programs, boundaries, spacing, patch_levels, context);
+  measures::CrackCaptureOptions small;
   small.max_vertices_per_call = 1;  // one patch per call
-  const BoundaryCapture chunked = captureBoundaryPositions(*patches, programs, boundaries, spacing,
-                                                           patch_levels, context, small);
+  const measures::BoundaryCapture chunked = measures::captureBoundaryPositions(
+      *patches, programs, boundaries, spacing, patch_levels, context, small);
   EXPECT_EQ(one.calls, uint32_t(programs.size()));
   EXPECT_EQ(chunked.calls, uint32_t(patches->patchCount()));
   EXPECT_EQ(chunked.points_captured, one.points_captured);
   EXPECT_EQ(chunked.tes_invocations, one.tes_invocations);
   ASSERT_EQ(chunked.positions.size(), one.positions.size());
   EXPECT_EQ(std::memcmp(chunked.positions.data(), one.positions.data(),
-                        one.positions.size() * sizeof(Vec3f)),
+                        one.positions.size() * sizeof(mesh::Vec3f)),
             0);
 }
 

@@ -22,7 +22,7 @@ namespace {
 
 // A (cells+1)² grid of positions with irrational-looking coordinates, so float
 // arithmetic rounds on nearly every operation.
-Mesh gridMesh(int cells, bool triangles) {
+mesh::Mesh gridMesh(int cells, bool triangles) {
   std::string obj;
   for (int j = 0; j <= cells; ++j) {
     for (int i = 0; i <= cells; ++i) {
@@ -45,7 +45,7 @@ Mesh gridMesh(int cells, bool triangles) {
       }
     }
   }
-  return loadObjText(obj, triangles ? "tri_grid.obj" : "quad_grid.obj");
+  return mesh::loadObjText(obj, triangles ? "tri_grid.obj" : "quad_grid.obj");
 }
 
 // Patch p is face p of the mesh, flat: bilinear on quads, linear on triangles.
@@ -55,30 +55,31 @@ enum class Order { kSymmetric, kNaive };
 
 class FlatPatches final : public testing::FacePatches {
  public:
-  FlatPatches(Mesh mesh, Order order) : FacePatches(std::move(mesh)), order_(order) {}
-  SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const override {
-    const SurfacePointF f =
+  FlatPatches(mesh::Mesh mesh, Order order) : FacePatches(std::move(mesh)), order_(order) {}
+  techniques::SurfacePoint evaluate(size_t patch,
+                                    const techniques::DomainCoord& coord) const override {
+    const techniques::SurfacePointF f =
         evaluateFloat(patch, {float(coord[0]), float(coord[1]), float(coord[2])});
     return {vecCast<double>(f.position), {0, 0, 1}};
   }
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
-    const Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
-    if (patchDomain(0) == PatchDomain::kTriangle) {
+  techniques::SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
+    const mesh::Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
+    if (patchDomain(0) == techniques::PatchDomain::kTriangle) {
       if (order_ == Order::kNaive) return {p0 + (p1 - p0) * c[1] + (p2 - p0) * c[2], {0, 0, 1}};
       return {p0 * c[0] + p1 * c[1] + p2 * c[2], {0, 0, 1}};
     }
-    const Vec3f p3 = cornerF(patch, 3);
+    const mesh::Vec3f p3 = cornerF(patch, 3);
     const float u = c[0], v = c[1];
     if (order_ == Order::kNaive) {  // shaders/gpu/test_naive_bilinear.tese
-      const Vec3f bottom = p0 + (p1 - p0) * u, top = p3 + (p2 - p3) * u;
+      const mesh::Vec3f bottom = p0 + (p1 - p0) * u, top = p3 + (p2 - p3) * u;
       return {bottom + (top - bottom) * v, {0, 0, 1}};
     }
     // shaders/gpu/test_bilinear.tese with scale 1
-    const Vec3f bottom = p0 * (1 - u) + p1 * u, top = p3 * (1 - u) + p2 * u;
+    const mesh::Vec3f bottom = p0 * (1 - u) + p1 * u, top = p3 * (1 - u) + p2 * u;
     return {(bottom * (1 - v) + top * v) * 1.0f, {0, 0, 1}};
   }
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
-    if (patchDomain(0) != PatchDomain::kQuad) return {};
+    if (patchDomain(0) != techniques::PatchDomain::kQuad) return {};
     gpu::GpuPatchProgram program;
     program.control_shader = "gpu/test_bilinear.tesc";
     program.evaluation_shader =
@@ -88,7 +89,7 @@ class FlatPatches final : public testing::FacePatches {
     std::vector<uint32_t> corners;
     for (size_t p = 0; p < patchCount(); ++p) {
       for (int k = 0; k < 4; ++k) {
-        const Vec3f c = cornerF(p, uint32_t(k));
+        const mesh::Vec3f c = cornerF(p, uint32_t(k));
         for (float x : {c.x, c.y, c.z, 1.0f}) corners.push_back(std::bit_cast<uint32_t>(x));
       }
     }
@@ -106,19 +107,19 @@ constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::k
 constexpr float kLevels[] = {1.0f, 7.3f, 16.0f, 64.0f};
 
 TEST(Cracks, UlpDistanceCountsRepresentableFloats) {
-  EXPECT_EQ(ulpDistance(1.0f, std::nextafter(1.0f, 2.0f)), 1u);
-  EXPECT_EQ(ulpDistance(-0.0f, 0.0f), 0u);
+  EXPECT_EQ(mesh::ulpDistance(1.0f, std::nextafter(1.0f, 2.0f)), 1u);
+  EXPECT_EQ(mesh::ulpDistance(-0.0f, 0.0f), 0u);
   const float tiny = std::numeric_limits<float>::denorm_min();
-  EXPECT_EQ(ulpDistance(-tiny, tiny), 2u);
-  EXPECT_EQ(ulpDistance(2.0f, 1.0f), 1u << 23);
+  EXPECT_EQ(mesh::ulpDistance(-tiny, tiny), 2u);
+  EXPECT_EQ(mesh::ulpDistance(2.0f, 1.0f), 1u << 23);
 }
 
 TEST(Cracks, SharedEdgesAndCornersOfAQuadGridMatchAHandCount) {
   const FlatPatches patches(gridMesh(3, false), Order::kSymmetric);
-  const SharedBoundaries shared = findSharedBoundaries(patches);
+  const measures::SharedBoundaries shared = measures::findSharedBoundaries(patches);
   EXPECT_EQ(shared.edges.size(), 12u);    // 2 directions × 3 rows × 2 interior lines
   EXPECT_EQ(shared.corners.size(), 12u);  // 4 interior + 8 boundary non-corner vertices
-  for (const SharedEdge& e : shared.edges) {
+  for (const measures::SharedEdge& e : shared.edges) {
     ASSERT_EQ(e.sides.size(), 2u);
     // Consistently oriented faces run a shared edge in opposite directions.
     EXPECT_NE(e.sides[0].reversed, e.sides[1].reversed);
@@ -127,8 +128,8 @@ TEST(Cracks, SharedEdgesAndCornersOfAQuadGridMatchAHandCount) {
   // Integer level n: n - 1 interior points per edge; corners: 4 interior vertices of
   // 4 patches (3 comparisons each) and 8 boundary vertices of 2 patches (1 each).
   for (uint32_t n : {1u, 5u, 16u}) {
-    const CrackFigures f =
-        measureCracks(patches, tess::Spacing::kInteger, float(n), CrackBackend::kCpuFloat);
+    const measures::CrackFigures f = measures::measureCracks(
+        patches, tess::Spacing::kInteger, float(n), measures::CrackBackend::kCpuFloat);
     EXPECT_EQ(f.points_compared, 12u * (n - 1) + 4 * 3 + 8) << "level " << n;
     EXPECT_EQ(f.unpaired_points, 0u);
   }
@@ -139,7 +140,8 @@ TEST(Cracks, SymmetricEvaluationIsBitwiseWatertightOnTheCpuUnderEverySpacing) {
     const FlatPatches patches(gridMesh(3, triangles), Order::kSymmetric);
     for (tess::Spacing spacing : kSpacings) {
       for (float level : kLevels) {
-        const CrackFigures f = measureCracks(patches, spacing, level, CrackBackend::kCpuFloat);
+        const measures::CrackFigures f =
+            measures::measureCracks(patches, spacing, level, measures::CrackBackend::kCpuFloat);
         SCOPED_TRACE(std::string(tess::toString(spacing)) + " level " + std::to_string(level) +
                      (triangles ? " triangles" : " quads"));
         ASSERT_TRUE(f.measured);
@@ -158,8 +160,8 @@ TEST(Cracks, SymmetricEvaluationIsBitwiseWatertightOnTheCpuUnderEverySpacing) {
 TEST(Cracks, NaiveEvaluationOpensGapsOfAFewUlps) {
   for (bool triangles : {false, true}) {
     const FlatPatches patches(gridMesh(3, triangles), Order::kNaive);
-    const CrackFigures f =
-        measureCracks(patches, tess::Spacing::kFractionalOdd, 16, CrackBackend::kCpuFloat);
+    const measures::CrackFigures f = measures::measureCracks(patches, tess::Spacing::kFractionalOdd,
+                                                             16, measures::CrackBackend::kCpuFloat);
     SCOPED_TRACE(triangles ? "triangles" : "quads");
     EXPECT_GT(f.points_not_equal, f.points_compared / 10);
     EXPECT_GE(f.max_gap_ulp, 1u);
@@ -180,11 +182,11 @@ TEST(Cracks, NaiveEvaluationOpensGapsOfAFewUlps) {
 TEST(Cracks, PositionsDuplicatedAtASeamAreWeldedIntoASharedEdge) {
   // Two triangles over the same square whose shared diagonal uses distinct position
   // indices with identical coordinates (as an exporter writes a UV seam).
-  const Mesh mesh = loadObjText(
+  const mesh::Mesh mesh = mesh::loadObjText(
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nv 1 1 0\nf 1 2 3\nf 5 6 4\n", "seam.obj");
   const FlatPatches patches(mesh, Order::kSymmetric);
-  const CrackFigures f =
-      measureCracks(patches, tess::Spacing::kInteger, 4, CrackBackend::kCpuFloat);
+  const measures::CrackFigures f = measures::measureCracks(patches, tess::Spacing::kInteger, 4,
+                                                           measures::CrackBackend::kCpuFloat);
   EXPECT_EQ(f.shared_edges, 1u);
   EXPECT_EQ(f.seam_edges, 1u);
   EXPECT_EQ(f.shared_corners, 2u);
@@ -194,13 +196,13 @@ TEST(Cracks, PositionsDuplicatedAtASeamAreWeldedIntoASharedEdge) {
 
 TEST(Cracks, GpuBackendIsSkippedWithAReasonWithoutAProgramOrDevice) {
   const FlatPatches triangles(gridMesh(2, true), Order::kSymmetric);
-  const CrackFigures no_program =
-      measureCracks(triangles, tess::Spacing::kInteger, 4, CrackBackend::kGpu, nullptr);
+  const measures::CrackFigures no_program = measures::measureCracks(
+      triangles, tess::Spacing::kInteger, 4, measures::CrackBackend::kGpu, nullptr);
   EXPECT_FALSE(no_program.measured);
   EXPECT_NE(no_program.skipped_reason.find("no GPU program"), std::string::npos);
   const FlatPatches quads(gridMesh(2, false), Order::kSymmetric);
-  const CrackFigures no_device =
-      measureCracks(quads, tess::Spacing::kInteger, 4, CrackBackend::kGpu, nullptr);
+  const measures::CrackFigures no_device = measures::measureCracks(
+      quads, tess::Spacing::kInteger, 4, measures::CrackBackend::kGpu, nullptr);
   EXPECT_FALSE(no_device.measured);
   EXPECT_NE(no_device.skipped_reason.find("Vulkan"), std::string::npos);
 }
@@ -213,9 +215,10 @@ TEST(Cracks, GpuCaptureMatchesTheCpuModelAndShowsTheSameCracks) {
       for (float level : {1.0f, 7.3f, 16.0f}) {
         SCOPED_TRACE(std::string(order == Order::kNaive ? "naive " : "symmetric ") +
                      std::string(tess::toString(spacing)) + " level " + std::to_string(level));
-        const CrackFigures cpu = measureCracks(patches, spacing, level, CrackBackend::kCpuFloat);
-        const CrackFigures gpu =
-            measureCracks(patches, spacing, level, CrackBackend::kGpu, &context);
+        const measures::CrackFigures cpu =
+            measures::measureCracks(patches, spacing, level, measures::CrackBackend::kCpuFloat);
+        const measures::CrackFigures gpu = measures::measureCracks(
+            patches, spacing, level, measures::CrackBackend::kGpu, &context);
         ASSERT_TRUE(gpu.measured) << gpu.skipped_reason;
         // Oracle: the CPU tessellator's points on the quad's boundary (what the device
         // captures), times the patches.
@@ -236,20 +239,20 @@ TEST(Cracks, GpuCaptureMatchesTheCpuModelAndShowsTheSameCracks) {
       }
     }
     if (order == Order::kNaive) {
-      const CrackFigures gpu =
-          measureCracks(patches, tess::Spacing::kInteger, 16, CrackBackend::kGpu, &context);
+      const measures::CrackFigures gpu = measures::measureCracks(
+          patches, tess::Spacing::kInteger, 16, measures::CrackBackend::kGpu, &context);
       EXPECT_GT(gpu.points_not_equal, 0u);
     }
   }
 }
 
 TEST(Cracks, PhongOnTheCpuComparesEverySharedPointOfTheIcosahedron) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
   ASSERT_NE(phong, nullptr);
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
-  const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
-  const CrackFigures f =
-      measureCracks(*patches, tess::Spacing::kInteger, 8, CrackBackend::kCpuFloat);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const auto patches = techniques::buildSurface(*phong, mesh, phong->variants()[0]);
+  const measures::CrackFigures f = measures::measureCracks(*patches, tess::Spacing::kInteger, 8,
+                                                           measures::CrackBackend::kCpuFloat);
   // Closed icosahedron: 30 edges × 7 interior points; 12 vertices × 5 triangles.
   EXPECT_EQ(f.shared_edges, 30u);
   EXPECT_EQ(f.shared_corners, 12u);
@@ -259,18 +262,18 @@ TEST(Cracks, PhongOnTheCpuComparesEverySharedPointOfTheIcosahedron) {
 
 TEST(Cracks, PhongOnTheDeviceAgreesWithItsCpuModel) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
   ASSERT_NE(phong, nullptr);
   // catmark_cube, fan-triangulated, has a normal per face corner (the two sides of a cube
   // edge project onto different planes); loop_icosahedron has shared normals.
   for (const char* asset : {"opensubdiv/catmark_cube.obj", "opensubdiv/loop_icosahedron.obj"}) {
-    const Mesh mesh = loadObjFile(testing::assetPath(asset));
-    const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
+    const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(asset));
+    const auto patches = techniques::buildSurface(*phong, mesh, phong->variants()[0]);
     if (patches->gpuPrograms().empty()) GTEST_SKIP() << "phong has no GPU program on this branch";
-    const CrackFigures cpu =
-        measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kCpuFloat);
-    const CrackFigures gpu =
-        measureCracks(*patches, tess::Spacing::kFractionalOdd, 7.3f, CrackBackend::kGpu, &context);
+    const measures::CrackFigures cpu = measures::measureCracks(
+        *patches, tess::Spacing::kFractionalOdd, 7.3f, measures::CrackBackend::kCpuFloat);
+    const measures::CrackFigures gpu = measures::measureCracks(
+        *patches, tess::Spacing::kFractionalOdd, 7.3f, measures::CrackBackend::kGpu, &context);
     SCOPED_TRACE(asset);
     ASSERT_TRUE(gpu.measured) << gpu.skipped_reason;
     EXPECT_GT(gpu.device_points, 0u);

@@ -22,14 +22,19 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-View viewFrom(const Vec3d& eye, const Vec3d& target, double near_plane, double far_plane) {
-  return perspectiveView({.eye = eye, .target = target, .width_px = 1920, .height_px = 1080,
-                          .near_plane = near_plane, .far_plane = far_plane});
+view::View viewFrom(const mesh::Vec3d& eye, const mesh::Vec3d& target, double near_plane,
+                    double far_plane) {
+  return view::perspectiveView({.eye = eye,
+                                .target = target,
+                                .width_px = 1920,
+                                .height_px = 1080,
+                                .near_plane = near_plane,
+                                .far_plane = far_plane});
 }
 
 // One flat quad patch in the plane z = 0 facing +z, corners (-1,-1), (1,-1), (1,1), (-1,1).
-CullPatchBounds flatQuad(double offset_x = 0) {
-  CullPatchBounds patch;
+lod::CullPatchBounds flatQuad(double offset_x = 0) {
+  lod::CullPatchBounds patch;
   const double xy[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   for (int c = 0; c < 4; ++c) {
     patch.corner_position[c] = {float(xy[c][0] + offset_x), float(xy[c][1]), 0};
@@ -41,80 +46,86 @@ CullPatchBounds flatQuad(double offset_x = 0) {
   return patch;
 }
 
-CullBounds boundsOfOne(const CullPatchBounds& patch) {
-  CullBounds bounds;
+lod::CullBounds boundsOfOne(const lod::CullPatchBounds& patch) {
+  lod::CullBounds bounds;
   bounds.patches = {patch};
   bounds.global_margin = 0.1f;
   return bounds;
 }
 
 TEST(CullPolicy, NamesRoundTripAndOnlyHullAndConeAreConservative) {
-  ASSERT_EQ(allCullPolicies().size(), 7u);
-  EXPECT_EQ(allCullPolicies().front(), CullPolicy::kNone);
-  for (CullPolicy policy : allCullPolicies()) {
-    EXPECT_EQ(parseCullPolicy(cullPolicyName(policy)), policy);
-    EXPECT_FALSE(cullPolicyDescription(policy).empty());
+  ASSERT_EQ(lod::allCullPolicies().size(), 7u);
+  EXPECT_EQ(lod::allCullPolicies().front(), lod::CullPolicy::kNone);
+  for (lod::CullPolicy policy : lod::allCullPolicies()) {
+    EXPECT_EQ(lod::parseCullPolicy(lod::cullPolicyName(policy)), policy);
+    EXPECT_FALSE(lod::cullPolicyDescription(policy).empty());
   }
-  EXPECT_FALSE(parseCullPolicy("frustum"));
-  EXPECT_TRUE(isConservative(CullPolicy::kCone));
-  EXPECT_FALSE(isConservative(CullPolicy::kBackfaceLp2));
+  EXPECT_FALSE(lod::parseCullPolicy("frustum"));
+  EXPECT_TRUE(lod::isConservative(lod::CullPolicy::kCone));
+  EXPECT_FALSE(lod::isConservative(lod::CullPolicy::kBackfaceLp2));
 }
 
 // A flat quad facing +z: seen from the front nothing culls it; from behind, every back-face
 // policy does and no frustum policy does; moved off screen, every frustum policy does.
 TEST(CullPolicy, FlatQuadFrontBackAndOffScreen) {
-  const CullBounds bounds = boundsOfOne(flatQuad());
-  const View front = viewFrom({0, 0.5, 10}, {0, 0, 0}, 0.1, 100);
-  const View back = viewFrom({0, 0.5, -10}, {0, 0, 0}, 0.1, 100);
-  for (CullPolicy policy : allCullPolicies()) {
-    EXPECT_FALSE(cullsPatch(cullParams(policy, front, bounds), bounds.patches[0]))
-        << cullPolicyName(policy);
+  const lod::CullBounds bounds = boundsOfOne(flatQuad());
+  const view::View front = viewFrom({0, 0.5, 10}, {0, 0, 0}, 0.1, 100);
+  const view::View back = viewFrom({0, 0.5, -10}, {0, 0, 0}, 0.1, 100);
+  for (lod::CullPolicy policy : lod::allCullPolicies()) {
+    EXPECT_FALSE(lod::cullsPatch(lod::cullParams(policy, front, bounds), bounds.patches[0]))
+        << lod::cullPolicyName(policy);
   }
-  auto culledFromBack = [&](CullPolicy policy) {
-    return cullsPatch(cullParams(policy, back, bounds), bounds.patches[0]);
+  auto culledFromBack = [&](lod::CullPolicy policy) {
+    return lod::cullsPatch(lod::cullParams(policy, back, bounds), bounds.patches[0]);
   };
-  EXPECT_TRUE(culledFromBack(CullPolicy::kBackfaceLp2));
-  EXPECT_TRUE(culledFromBack(CullPolicy::kCone));
-  EXPECT_TRUE(culledFromBack(CullPolicy::kCombined));
-  EXPECT_FALSE(culledFromBack(CullPolicy::kFrustumHull));
-  EXPECT_FALSE(culledFromBack(CullPolicy::kFrustumLp2Global));
+  EXPECT_TRUE(culledFromBack(lod::CullPolicy::kBackfaceLp2));
+  EXPECT_TRUE(culledFromBack(lod::CullPolicy::kCone));
+  EXPECT_TRUE(culledFromBack(lod::CullPolicy::kCombined));
+  EXPECT_FALSE(culledFromBack(lod::CullPolicy::kFrustumHull));
+  EXPECT_FALSE(culledFromBack(lod::CullPolicy::kFrustumLp2Global));
 
   // 45 units to the side at 10 units' distance: far outside a 45 degree field of view.
-  const CullBounds aside = boundsOfOne(flatQuad(45));
-  for (CullPolicy policy : {CullPolicy::kFrustumLp2Global, CullPolicy::kFrustumLp2Exact,
-                            CullPolicy::kFrustumHull, CullPolicy::kCombined}) {
-    EXPECT_TRUE(cullsPatch(cullParams(policy, front, aside), aside.patches[0]))
-        << cullPolicyName(policy);
+  const lod::CullBounds aside = boundsOfOne(flatQuad(45));
+  for (lod::CullPolicy policy :
+       {lod::CullPolicy::kFrustumLp2Global, lod::CullPolicy::kFrustumLp2Exact,
+        lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCombined}) {
+    EXPECT_TRUE(lod::cullsPatch(lod::cullParams(policy, front, aside), aside.patches[0]))
+        << lod::cullPolicyName(policy);
   }
 }
 
 // Grazing: the eye in the quad's plane sees it edge-on; the cone of a flat patch (half angle
 // 0) does not cull it, nor does a cone wider than the angle to the eye.
 TEST(CullPolicy, ConeKeepsAPatchSeenEdgeOnOrWithinItsHalfAngle) {
-  CullPatchBounds patch = flatQuad();
-  const View edge_on = viewFrom({0, -20, 0}, {0, 0, 0}, 0.1, 100);
-  CullBounds bounds = boundsOfOne(patch);
-  EXPECT_FALSE(cullsPatch(cullParams(CullPolicy::kCone, edge_on, bounds), bounds.patches[0]));
+  lod::CullPatchBounds patch = flatQuad();
+  const view::View edge_on = viewFrom({0, -20, 0}, {0, 0, 0}, 0.1, 100);
+  lod::CullBounds bounds = boundsOfOne(patch);
+  EXPECT_FALSE(
+      lod::cullsPatch(lod::cullParams(lod::CullPolicy::kCone, edge_on, bounds), bounds.patches[0]));
   // The eye behind the plane at 30 degrees below it: a 20 degree cone culls, a 40 one keeps.
   const double a = 30 * kPi / 180;
-  const View below = viewFrom({0, -20 * std::cos(a), -20 * std::sin(a)}, {0, 0, 0}, 0.1, 100);
+  const view::View below = viewFrom({0, -20 * std::cos(a), -20 * std::sin(a)}, {0, 0, 0}, 0.1, 100);
   patch.cone_sine = float(std::sin(20 * kPi / 180));
   bounds = boundsOfOne(patch);
-  EXPECT_TRUE(cullsPatch(cullParams(CullPolicy::kCone, below, bounds), bounds.patches[0]));
+  EXPECT_TRUE(
+      lod::cullsPatch(lod::cullParams(lod::CullPolicy::kCone, below, bounds), bounds.patches[0]));
   patch.cone_sine = float(std::sin(40 * kPi / 180));
   bounds = boundsOfOne(patch);
-  EXPECT_FALSE(cullsPatch(cullParams(CullPolicy::kCone, below, bounds), bounds.patches[0]));
+  EXPECT_FALSE(
+      lod::cullsPatch(lod::cullParams(lod::CullPolicy::kCone, below, bounds), bounds.patches[0]));
   // No cone (sine > 1): never culled.
   patch.cone_sine = 2;
   bounds = boundsOfOne(patch);
-  EXPECT_FALSE(cullsPatch(cullParams(CullPolicy::kCone, below, bounds), bounds.patches[0]));
+  EXPECT_FALSE(
+      lod::cullsPatch(lod::cullParams(lod::CullPolicy::kCone, below, bounds), bounds.patches[0]));
 }
 
 // The frustum planes are unit-normal and contain what the view sees: the target point is
 // inside all six, a point behind the eye is outside the near plane.
 TEST(CullPolicy, FrustumPlanesAreUnitAndBoundTheView) {
-  const View view = viewFrom({3, 2, 10}, {0, 0, 0}, 0.5, 50);
-  const CullParams params = cullParams(CullPolicy::kFrustumHull, view, boundsOfOne(flatQuad()));
+  const view::View view = viewFrom({3, 2, 10}, {0, 0, 0}, 0.5, 50);
+  const lod::CullParams params =
+      lod::cullParams(lod::CullPolicy::kFrustumHull, view, boundsOfOne(flatQuad()));
   for (const auto& plane : params.planes) {
     EXPECT_NEAR(std::hypot(plane[0], plane[1], plane[2]), 1.0, 1e-6);
     EXPECT_GT(plane[0] * 0 + plane[1] * 0 + plane[2] * 0 + plane[3], 0);  // the target
@@ -133,27 +144,29 @@ TEST(CullPolicyGpu, TwinEqualsEveryTechniqueTcsOnEveryFrameOfTheBundledPaths) {
       {"pn_triangles", "tessbench/tri_torus.obj"},
       {"phong", "tessbench/cylinder_seam.obj"}};
   for (const auto& [technique_id, asset] : cases) {
-    const Technique* technique = TechniqueRegistry::instance().find(technique_id);
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(technique_id);
     ASSERT_NE(technique, nullptr);
-    const BuiltSurface surface = buildSurface(*technique, loadObjFile(testing::assetPath(asset)),
-                                              technique->variants().front());
-    const Aabb box = boundsOf(surface->controlMesh());
-    const CullBounds bounds =
-        cullBounds(*surface, factorCorners(*surface), length(box.max - box.min));
+    const techniques::BuiltSurface surface = techniques::buildSurface(
+        *technique, mesh::loadObjFile(testing::assetPath(asset)), technique->variants().front());
+    const mesh::Aabb box = mesh::boundsOf(surface->controlMesh());
+    const lod::CullBounds bounds =
+        lod::cullBounds(*surface, lod::factorCorners(*surface), length(box.max - box.min));
     const std::vector<gpu::GpuPatchProgram> programs = surface->gpuPrograms();
     ASSERT_FALSE(programs.empty()) << technique_id;
     const tess::Levels level_one{};
-    std::map<CullPolicy, std::pair<size_t, size_t>> culled_and_compared;
+    std::map<lod::CullPolicy, std::pair<size_t, size_t>> culled_and_compared;
     size_t differing = 0;
     for (const char* path : {"orbit", "dolly", "flyby"}) {
-      const CameraPath sampled = sampleCameraPath(resolveCameraPath(path), box, 0);
+      const view::CameraPath sampled =
+          suite::sampleCameraPath(suite::resolveCameraPath(path), box, 0);
       for (size_t f = 0; f < sampled.views.size(); ++f) {
-        for (CullPolicy policy : allCullPolicies()) {
-          if (policy == CullPolicy::kNone) continue;
-          const CullParams params = cullParams(policy, sampled.views[f], bounds);
-          const std::vector<uint8_t> twin = cullDecisions(params, bounds);
+        for (lod::CullPolicy policy : lod::allCullPolicies()) {
+          if (policy == lod::CullPolicy::kNone) continue;
+          const lod::CullParams params = lod::cullParams(policy, sampled.views[f], bounds);
+          const std::vector<uint8_t> twin = lod::cullDecisions(params, bounds);
           for (const gpu::GpuPatchProgram& program : programs) {
-            const gpu::TcsCullPolicy device_policy = tcsCullPolicy(params, bounds, program);
+            const gpu::TcsCullPolicy device_policy = lod::tcsCullPolicy(params, bounds, program);
             const gpu::PatchProgramCapture capture = gpu::runPatchProgram(
                 context, program, level_one,
                 {.patches_per_draw = 256, .capture = false, .statistics = false,
@@ -166,9 +179,9 @@ TEST(CullPolicyGpu, TwinEqualsEveryTechniqueTcsOnEveryFrameOfTheBundledPaths) {
               ++compared;
               culled += twin[patch];
               if (device_culled != (twin[patch] != 0) && ++differing <= 5) {
-                ADD_FAILURE() << technique_id << " " << cullPolicyName(policy) << " " << path
-                              << " frame " << f << " patch " << patch << ": TCS "
-                              << device_culled << ", twin " << int(twin[patch]);
+                ADD_FAILURE() << technique_id << " " << lod::cullPolicyName(policy) << " " << path
+                              << " frame " << f << " patch " << patch << ": TCS " << device_culled
+                              << ", twin " << int(twin[patch]);
               }
             }
           }
@@ -178,8 +191,8 @@ TEST(CullPolicyGpu, TwinEqualsEveryTechniqueTcsOnEveryFrameOfTheBundledPaths) {
     EXPECT_EQ(differing, 0u) << technique_id;
     // Non-trivial decisions: every policy culls some patches somewhere and keeps others.
     for (const auto& [policy, counts] : culled_and_compared) {
-      EXPECT_GT(counts.first, 0u) << technique_id << " " << cullPolicyName(policy);
-      EXPECT_LT(counts.first, counts.second) << technique_id << " " << cullPolicyName(policy);
+      EXPECT_GT(counts.first, 0u) << technique_id << " " << lod::cullPolicyName(policy);
+      EXPECT_LT(counts.first, counts.second) << technique_id << " " << lod::cullPolicyName(policy);
     }
   }
 }

@@ -25,39 +25,46 @@ namespace tb {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr CullPolicy kConservative[] = {CullPolicy::kFrustumHull, CullPolicy::kCone,
-                                        CullPolicy::kCombined};
+constexpr lod::CullPolicy kConservative[] = {lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCone,
+                                             lod::CullPolicy::kCombined};
 
-BuiltSurface buildDefault(const char* technique_id, const Mesh& mesh) {
-  const Technique* technique = TechniqueRegistry::instance().find(technique_id);
+techniques::BuiltSurface buildDefault(const char* technique_id, const mesh::Mesh& mesh) {
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(technique_id);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + technique_id);
-  return buildSurface(*technique, mesh, technique->variants().front());
+  return techniques::buildSurface(*technique, mesh, technique->variants().front());
 }
 
-View viewFrom(const Vec3d& eye, const Vec3d& target, double near_plane, double far_plane) {
-  return perspectiveView({.eye = eye, .target = target, .width_px = 960, .height_px = 540,
-                          .near_plane = near_plane, .far_plane = far_plane});
+view::View viewFrom(const mesh::Vec3d& eye, const mesh::Vec3d& target, double near_plane,
+                    double far_plane) {
+  return view::perspectiveView({.eye = eye,
+                                .target = target,
+                                .width_px = 960,
+                                .height_px = 540,
+                                .near_plane = near_plane,
+                                .far_plane = far_plane});
 }
 
 // Views of `mesh` from `diameters` bounding-box diagonals away, from six scattered directions.
-std::vector<View> viewsFromAfar(const Mesh& mesh, double diameters) {
-  const Aabb box = boundsOf(mesh);
-  const Vec3d centre = 0.5 * (box.min + box.max);
+std::vector<view::View> viewsFromAfar(const mesh::Mesh& mesh, double diameters) {
+  const mesh::Aabb box = mesh::boundsOf(mesh);
+  const mesh::Vec3d centre = 0.5 * (box.min + box.max);
   const double diagonal = length(box.max - box.min);
-  std::vector<View> views;
+  std::vector<view::View> views;
   for (int i = 0; i < 6; ++i) {
     const double azimuth = 0.4 + 1.1 * i, elevation = 0.6 - 0.25 * i;
-    const Vec3d direction{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                          std::cos(elevation) * std::cos(azimuth)};
+    const mesh::Vec3d direction{std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                                std::cos(elevation) * std::cos(azimuth)};
     views.push_back(viewFrom(centre + diameters * diagonal * direction, centre, 0.01 * diagonal,
                              100 * diagonal));
   }
   return views;
 }
 
-Mesh refinedConvex(const char* asset, osd::Scheme scheme, int levels) {
-  Mesh mesh = osd::refineUniform(loadObjFile(testing::assetPath(asset)), scheme, levels);
-  assignAngleWeightedNormals(&mesh);
+mesh::Mesh refinedConvex(const char* asset, osd::Scheme scheme, int levels) {
+  mesh::Mesh mesh =
+      osd::refineUniform(mesh::loadObjFile(testing::assetPath(asset)), scheme, levels);
+  mesh::assignAngleWeightedNormals(&mesh);
   return mesh;
 }
 
@@ -67,21 +74,22 @@ Mesh refinedConvex(const char* asset, osd::Scheme scheme, int levels) {
 // and for PN and Phong on a Loop-refined icosahedron (1280 triangles).
 TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
+  const mesh::Mesh cube =
+      refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
   ASSERT_EQ(cube.faceCount(), 384u);
-  const Mesh icosahedron =
+  const mesh::Mesh icosahedron =
       refinedConvex("opensubdiv/loop_icosahedron.obj", osd::Scheme::kLoop, 3);
-  const std::pair<const char*, const Mesh*> cases[] = {{"acc", &cube},
-                                                       {"gregory_acc", &cube},
-                                                       {"pn_triangles", &icosahedron},
-                                                       {"phong", &icosahedron}};
-  const CullPolicy cone[] = {CullPolicy::kCone};
+  const std::pair<const char*, const mesh::Mesh*> cases[] = {{"acc", &cube},
+                                                             {"gregory_acc", &cube},
+                                                             {"pn_triangles", &icosahedron},
+                                                             {"phong", &icosahedron}};
+  const lod::CullPolicy cone[] = {lod::CullPolicy::kCone};
   for (const auto& [technique_id, mesh] : cases) {
-    const BuiltSurface patches = buildDefault(technique_id, *mesh);
-    CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 1});
-    const std::vector<View> views = viewsFromAfar(*mesh, 10);
-    const std::vector<CullingFrame> frames = run.frames(cone, views)[0];
-    for (const CullingFrame& f : frames) {
+    const techniques::BuiltSurface patches = buildDefault(technique_id, *mesh);
+    measures::CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 1});
+    const std::vector<view::View> views = viewsFromAfar(*mesh, 10);
+    const std::vector<measures::CullingFrame> frames = run.frames(cone, views)[0];
+    for (const measures::CullingFrame& f : frames) {
       ASSERT_TRUE(f.oracle_measured && f.gpu_measured) << run.gpuSkipReason();
       const double fraction = double(f.culled_patches) / double(f.patches);
       EXPECT_GE(fraction, 0.35) << technique_id << " frame " << f.frame;
@@ -97,27 +105,29 @@ TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) 
 // Acceptance 3, second half: patches whose own normals face the eye somewhere and away
 // somewhere (they straddle the silhouette) are never culled by the conservative policies.
 TEST(Culling, PatchesStraddlingTheSilhouetteAreNeverConservativelyCulled) {
-  const Mesh cube = refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
-  const Mesh torus = loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const mesh::Mesh cube =
+      refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
+  const mesh::Mesh torus = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
   size_t straddling_seen = 0;
-  for (const Mesh* mesh : {&cube, &torus}) {
+  for (const mesh::Mesh* mesh : {&cube, &torus}) {
     for (const char* technique_id : {"acc", "gregory_acc"}) {
-      const BuiltSurface patches = buildDefault(technique_id, *mesh);
-      CullingRun run(*patches, nullptr, "not used", {});
-      for (const View& view : viewsFromAfar(*mesh, 3)) {
-        const Vec3d eye{view.eye[0], view.eye[1], view.eye[2]};
+      const techniques::BuiltSurface patches = buildDefault(technique_id, *mesh);
+      measures::CullingRun run(*patches, nullptr, "not used", {});
+      for (const view::View& view : viewsFromAfar(*mesh, 3)) {
+        const mesh::Vec3d eye{view.eye[0], view.eye[1], view.eye[2]};
         for (size_t p = 0; p < patches->patchCount(); ++p) {
           // The geometric normal dp/du x dp/dv by central differences (not the shading
           // normal: the cone bounds the geometry).
           bool front = false, back = false;
           constexpr double h = 1e-5;
           auto at = [&](double u, double v) {
-            return patches->evaluate(p, DomainCoord{u, v, 0}).position;
+            return patches->evaluate(p, techniques::DomainCoord{u, v, 0}).position;
           };
           for (int i = 1; i < 8; ++i) {
             for (int j = 1; j < 8; ++j) {
               const double u = i / 8.0, v = j / 8.0;
-              const Vec3d normal = cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h));
+              const mesh::Vec3d normal =
+                  cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h));
               const double facing = dot(normal, eye - at(u, v));
               front = front || facing > 0;
               back = back || facing < 0;
@@ -125,9 +135,10 @@ TEST(Culling, PatchesStraddlingTheSilhouetteAreNeverConservativelyCulled) {
           }
           if (!(front && back)) continue;
           ++straddling_seen;
-          for (CullPolicy policy : kConservative) {
-            EXPECT_FALSE(cullsPatch(cullParams(policy, view, run.bounds()), run.bounds().patches[p]))
-                << technique_id << " patch " << p << " " << cullPolicyName(policy);
+          for (lod::CullPolicy policy : kConservative) {
+            EXPECT_FALSE(lod::cullsPatch(lod::cullParams(policy, view, run.bounds()),
+                                         run.bounds().patches[p]))
+                << technique_id << " patch " << p << " " << lod::cullPolicyName(policy);
           }
         }
       }
@@ -164,30 +175,31 @@ TEST(Culling, ConservativePoliciesMakeNoFalseCullOnAnyBundledAssetAndPath) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   size_t runs = 0, culled = 0;
   for (const AssetCase& c : everyBundledAsset()) {
-    const Technique* technique = TechniqueRegistry::instance().find(c.technique);
-    const Mesh mesh = loadObjFile(c.asset);
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(c.technique);
+    const mesh::Mesh mesh = mesh::loadObjFile(c.asset);
     if (!technique->checkSupport(mesh).empty()) continue;
-    BuiltSurface patches;
+    techniques::BuiltSurface patches;
     try {
-      patches = buildSurface(*technique, mesh, technique->variants().front());
-    } catch (const UnsupportedInput&) {
+      patches = techniques::buildSurface(*technique, mesh, technique->variants().front());
+    } catch (const techniques::UnsupportedInput&) {
       continue;
     }
-    CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 0.5});
-    const Aabb box = boundsOf(patches->controlMesh());
+    measures::CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 0.5});
+    const mesh::Aabb box = mesh::boundsOf(patches->controlMesh());
     for (const char* path : {"orbit", "dolly", "flyby"}) {
-      const CameraPath sampled = sampleCameraPath(resolveCameraPath(path), box, 0);
-      std::vector<View> views;
+      const view::CameraPath sampled =
+          suite::sampleCameraPath(suite::resolveCameraPath(path), box, 0);
+      std::vector<view::View> views;
       const size_t step = std::string(path) == "orbit" ? 1 : 3;
       for (size_t f = 0; f < sampled.views.size(); f += step) views.push_back(sampled.views[f]);
       const auto frames = run.frames(kConservative, views);
       for (size_t k = 0; k < std::size(kConservative); ++k) {
-        for (const CullingFrame& f : frames[k]) {
+        for (const measures::CullingFrame& f : frames[k]) {
           ASSERT_TRUE(f.oracle_measured) << run.gpuSkipReason();
-          EXPECT_EQ(f.false_culls, 0u) << c.technique << " " << c.asset << " " << path
-                                       << " frame " << f.frame * step << " "
-                                       << cullPolicyName(kConservative[k]) << ": "
-                                       << f.false_cull_pixels << " px";
+          EXPECT_EQ(f.false_culls, 0u)
+              << c.technique << " " << c.asset << " " << path << " frame " << f.frame * step << " "
+              << lod::cullPolicyName(kConservative[k]) << ": " << f.false_cull_pixels << " px";
           EXPECT_EQ(f.twin_mismatches, 0u) << c.technique << " " << c.asset;
           EXPECT_FALSE(f.gpu_tes_invocations != f.tes_invocations) << c.technique << " " << c.asset;
           culled += f.culled_patches;

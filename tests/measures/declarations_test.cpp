@@ -34,72 +34,73 @@ bool isSnakeCase(const std::string& name) {
 }
 
 TEST(Declarations, EveryRegisteredMeasureDeclaresEachMetricOnce) {
-  const std::vector<const Measure*> measures = MeasureRegistry::instance().all();
+  const std::vector<const measures::Measure*> measures =
+      measures::MeasureRegistry::instance().all();
   ASSERT_GE(measures.size(), 5u);  // cracks, error, instructions, memory, published_figures
-  for (const Measure* measure : measures) {
-    const MeasureInfo& info = measure->info();
+  for (const measures::Measure* measure : measures) {
+    const measures::MeasureInfo& info = measure->info();
     SCOPED_TRACE(info.id);
     EXPECT_FALSE(info.title.empty());
     EXPECT_FALSE(info.description.empty());
     ASSERT_FALSE(info.metrics.empty());
     std::set<std::string> names;
-    for (const MetricSpec& spec : info.metrics) {
+    for (const results::MetricSpec& spec : info.metrics) {
       SCOPED_TRACE(spec.name);
       EXPECT_TRUE(isSnakeCase(spec.name));
       EXPECT_TRUE(names.insert(spec.name).second) << "declared twice";
       // A unit of the closed set, spelled and read back the same.
-      EXPECT_EQ(parseUnit(toString(spec.unit)), spec.unit);
-      EXPECT_NE(describe(spec.unit), "");
-      EXPECT_EQ(parseDirection(toString(spec.direction)), spec.direction);
+      EXPECT_EQ(results::parseUnit(toString(spec.unit)), spec.unit);
+      EXPECT_NE(results::describe(spec.unit), "");
+      EXPECT_EQ(results::parseDirection(toString(spec.direction)), spec.direction);
     }
     ASSERT_FALSE(info.headline.empty()) << "a measure names what a summary shows first";
     std::set<std::string> headline;
-    const MeasureDeclaration declaration = declarationOf(info);
+    const results::MeasureDeclaration declaration = measures::declarationOf(info);
     for (const std::string& name : info.headline) {
       EXPECT_TRUE(names.contains(name)) << name << " is a headline but not declared";
       EXPECT_TRUE(headline.insert(name).second) << name << " is a headline twice";
       // A summary's first figure has a direction: it ranks techniques.
-      const MetricSpec* spec = declaration.find(name);
+      const results::MetricSpec* spec = declaration.find(name);
       ASSERT_NE(spec, nullptr);
-      EXPECT_NE(spec->direction, Direction::kNone) << name;
+      EXPECT_NE(spec->direction, results::Direction::kNone) << name;
     }
   }
 }
 
 TEST(Declarations, TheRunCarriesTheSelectedMeasuresDeclarations) {
-  SuiteSelection selection;
-  selection.techniques = {TechniqueRegistry::instance().find("phong")};
-  selection.assets = {resolveAsset("catmark_cube")};
-  selection.measures = {MeasureRegistry::instance().find("memory"),
-                        MeasureRegistry::instance().find("error")};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  suite::SuiteSelection selection;
+  selection.techniques = {techniques::TechniqueRegistry::instance().find("phong")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
+  selection.measures = {measures::MeasureRegistry::instance().find("memory"),
+                        measures::MeasureRegistry::instance().find("error")};
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_EQ(results.measures.size(), 2u);
   EXPECT_EQ(results.measures[0].measure, "error");  // sorted by id
   EXPECT_EQ(results.measures[1].measure, "memory");
   ASSERT_NE(results.findMeasure("memory"), nullptr);
   EXPECT_EQ(results.findMeasure("memory")->metrics,
-            MeasureRegistry::instance().find("memory")->info().metrics);
+            measures::MeasureRegistry::instance().find("memory")->info().metrics);
 }
 
 // Runs every measure on every technique that takes three small bundled assets (quads;
 // quads and triangles mixed; triangles) and checks each emitted metric against its declaration.
 TEST(Declarations, EveryEmittedMetricIsDeclaredWithItsUnit) {
-  SuiteSelection selection;
-  selection.assets = {resolveAsset("catmark_cube"), resolveAsset("catmark_pyramid"),
-                      resolveAsset("loop_cube")};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  suite::SuiteSelection selection;
+  selection.assets = {suite::resolveAsset("catmark_cube"), suite::resolveAsset("catmark_pyramid"),
+                      suite::resolveAsset("loop_cube")};
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_FALSE(results.records.empty());
   std::set<std::pair<std::string, std::string>> emitted;  // (measure, metric)
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) {
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
       SCOPED_TRACE(record.technique + "/" + record.variant + " " + record.asset + " " + m.measure);
-      const MeasureDeclaration* declaration = results.findMeasure(m.measure);
+      const results::MeasureDeclaration* declaration = results.findMeasure(m.measure);
       ASSERT_NE(declaration, nullptr) << "no declaration in the results";
-      for (const MetricRow& row : m.rows) {
-        for (const Metric& metric : row.metrics) {
-          const MetricSpec* spec = declaration->find(metric.name);
+      for (const results::MetricRow& row : m.rows) {
+        for (const results::Metric& metric : row.metrics) {
+          const results::MetricSpec* spec = declaration->find(metric.name);
           ASSERT_NE(spec, nullptr) << metric.name << " is emitted but not declared";
           EXPECT_EQ(metric.unit, toString(spec->unit)) << metric.name;
           emitted.insert({m.measure, metric.name});
@@ -108,7 +109,7 @@ TEST(Declarations, EveryEmittedMetricIsDeclaredWithItsUnit) {
     }
   }
   // Each measure that ran emits its headline somewhere.
-  for (const MeasureDeclaration& declaration : results.measures) {
+  for (const results::MeasureDeclaration& declaration : results.measures) {
     for (const std::string& name : declaration.headline) {
       bool ran = false;
       for (const auto& [measure, metric] : emitted) ran |= measure == declaration.measure;
@@ -131,21 +132,22 @@ struct Sample {
 };
 
 TEST(MetricTable, GivesSpecsAndValuesInOneOrderAndLeavesAbsentValuesOut) {
-  const MetricTable<Sample> table{
-      {"length", Unit::kWorld, Direction::kLowerIsBetter, &Sample::length},
-      {"count", Unit::kCount, Direction::kNone, &Sample::count},
-      {"extra", Unit::kRatio, Direction::kHigherIsBetter,
+  const measures::MetricTable<Sample> table{
+      {"length", results::Unit::kWorld, results::Direction::kLowerIsBetter, &Sample::length},
+      {"count", results::Unit::kCount, results::Direction::kNone, &Sample::count},
+      {"extra", results::Unit::kRatio, results::Direction::kHigherIsBetter,
        [](const Sample& s) -> std::optional<double> {
          if (!s.has_extra) return std::nullopt;
          return 2 * s.length;
        }},
   };
-  const std::vector<MetricSpec> specs = table.specs();
+  const std::vector<results::MetricSpec> specs = table.specs();
   ASSERT_EQ(specs.size(), 3u);
-  EXPECT_EQ(specs[0], (MetricSpec{"length", Unit::kWorld, Direction::kLowerIsBetter}));
-  EXPECT_EQ(specs[2].direction, Direction::kHigherIsBetter);
+  EXPECT_EQ(specs[0], (results::MetricSpec{"length", results::Unit::kWorld,
+                                           results::Direction::kLowerIsBetter}));
+  EXPECT_EQ(specs[2].direction, results::Direction::kHigherIsBetter);
 
-  std::vector<Metric> row = table.metrics({1.5, 7, false});
+  std::vector<results::Metric> row = table.metrics({1.5, 7, false});
   ASSERT_EQ(row.size(), 2u);
   EXPECT_EQ(row[0].name, "length");
   EXPECT_EQ(row[0].value, 1.5);

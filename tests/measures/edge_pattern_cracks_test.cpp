@@ -33,12 +33,14 @@ struct Case {
   const char* asset;
 };
 
-BuiltSurface build(const Case& c) {
-  const Technique* technique = TechniqueRegistry::instance().find(c.technique);
+techniques::BuiltSurface build(const Case& c) {
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(c.technique);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
-  for (const VariantInfo& v : technique->variants()) {
+  for (const techniques::VariantInfo& v : technique->variants()) {
     if (v.name == c.variant) {
-      return buildSurface(*technique, loadObjFile(testing::assetPath(c.asset)), v);
+      return techniques::buildSurface(*technique, mesh::loadObjFile(testing::assetPath(c.asset)),
+                                      v);
     }
   }
   throw std::runtime_error(std::string("no variant ") + c.variant);
@@ -49,7 +51,7 @@ std::string name(const Case& c, tess::Spacing spacing) {
          std::string(tess::toString(spacing));
 }
 
-void print(const Case& c, tess::Spacing spacing, const CrackFigures& f) {
+void print(const Case& c, tess::Spacing spacing, const measures::CrackFigures& f) {
   std::printf(
       "[edge_pattern] %s %s: points %llu, not equal %llu, unpaired %llu, device points "
       "%llu differing %llu max ulp %llu\n",
@@ -60,25 +62,25 @@ void print(const Case& c, tess::Spacing spacing, const CrackFigures& f) {
 }
 
 // gl_TessLevelOuter index of local edge k (corner k to k + 1).
-size_t outerIndex(PatchDomain domain, uint32_t k) {
-  return domain == PatchDomain::kQuad ? (k + 1) % 4 : (k + 2) % 3;
+size_t outerIndex(techniques::PatchDomain domain, uint32_t k) {
+  return domain == techniques::PatchDomain::kQuad ? (k + 1) % 4 : (k + 2) % 3;
 }
 
 TEST(EdgePatternLevels, SharedEdgesGetOneLevelAndEdgesDiffer) {
   // catmark_pyramid under gregory_acc: quads and triangles share edges.
   const auto patches = build({"gregory_acc", "edge_symmetric", "opensubdiv/catmark_pyramid.obj"});
   for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd}) {
-    const std::vector<tess::Levels> levels = edgePatternLevels(*patches, spacing, kBase);
+    const std::vector<tess::Levels> levels = lod::edgePatternLevels(*patches, spacing, kBase);
     ASSERT_EQ(levels.size(), patches->patchCount());
-    const SharedBoundaries shared = findSharedBoundaries(*patches);
+    const measures::SharedBoundaries shared = measures::findSharedBoundaries(*patches);
     ASSERT_FALSE(shared.edges.empty());
     std::set<float> distinct;
-    for (const SharedEdge& edge : shared.edges) {
-      const PatchSide& a = edge.sides[0];
+    for (const measures::SharedEdge& edge : shared.edges) {
+      const measures::PatchSide& a = edge.sides[0];
       const float level_a =
           levels[a.patch].outer[outerIndex(patches->patchDomain(a.patch), a.local)];
       distinct.insert(level_a);
-      for (const PatchSide& b : edge.sides) {
+      for (const measures::PatchSide& b : edge.sides) {
         EXPECT_EQ(level_a,
                   levels[b.patch].outer[outerIndex(patches->patchDomain(b.patch), b.local)])
             << "edge " << edge.v0 << "-" << edge.v1;
@@ -88,7 +90,8 @@ TEST(EdgePatternLevels, SharedEdgesGetOneLevelAndEdgesDiffer) {
   }
   // Fractional spacing keeps the fractional edge levels.
   bool fractional = false;
-  for (const tess::Levels& l : edgePatternLevels(*patches, tess::Spacing::kFractionalOdd, kBase)) {
+  for (const tess::Levels& l :
+       lod::edgePatternLevels(*patches, tess::Spacing::kFractionalOdd, kBase)) {
     for (float o : l.outer) fractional |= o != float(int(o));
   }
   EXPECT_TRUE(fractional);
@@ -97,7 +100,7 @@ TEST(EdgePatternLevels, SharedEdgesGetOneLevelAndEdgesDiffer) {
 TEST(EdgePatternLevels, ScaleIndexIgnoresVertexOrder) {
   for (uint32_t a = 0; a < 50; ++a) {
     for (uint32_t b = 0; b < 50; ++b) {
-      EXPECT_EQ(edgePatternScaleIndex(a, b), edgePatternScaleIndex(b, a));
+      EXPECT_EQ(lod::edgePatternScaleIndex(a, b), lod::edgePatternScaleIndex(b, a));
     }
   }
 }
@@ -123,8 +126,9 @@ TEST(EdgePatternCracks, SymmetricVariantsAreBitwiseWatertightOnCpuFloat) {
   for (const Case& c : kSymmetric) {
     const auto patches = build(c);
     for (tess::Spacing spacing : kSpacings) {
-      const CrackFigures f = measureCracks(
-          *patches, spacing, edgePatternLevels(*patches, spacing, kBase), CrackBackend::kCpuFloat);
+      const measures::CrackFigures f = measures::measureCracks(
+          *patches, spacing, lod::edgePatternLevels(*patches, spacing, kBase),
+          measures::CrackBackend::kCpuFloat);
       print(c, spacing, f);
       ASSERT_TRUE(f.measured) << f.skipped_reason;
       EXPECT_GT(f.points_compared, 0u) << name(c, spacing);
@@ -139,9 +143,9 @@ TEST(EdgePatternCracks, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCaptur
   for (const Case& c : kSymmetric) {
     const auto patches = build(c);
     for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd}) {
-      const CrackFigures f =
-          measureCracks(*patches, spacing, edgePatternLevels(*patches, spacing, kBase),
-                        CrackBackend::kGpu, &context);
+      const measures::CrackFigures f = measures::measureCracks(
+          *patches, spacing, lod::edgePatternLevels(*patches, spacing, kBase),
+          measures::CrackBackend::kGpu, &context);
       print(c, spacing, f);
       ASSERT_TRUE(f.measured) << f.skipped_reason;
       EXPECT_GT(f.points_compared, 0u) << name(c, spacing);
@@ -166,8 +170,9 @@ TEST(EdgePatternCracks, CrackingVariantsStillOpenGapsOnCpuFloat) {
   for (const Case& c : kCracking) {
     const auto patches = build(c);
     const tess::Spacing spacing = tess::Spacing::kFractionalOdd;
-    const CrackFigures f = measureCracks(
-        *patches, spacing, edgePatternLevels(*patches, spacing, kBase), CrackBackend::kCpuFloat);
+    const measures::CrackFigures f =
+        measures::measureCracks(*patches, spacing, lod::edgePatternLevels(*patches, spacing, kBase),
+                                measures::CrackBackend::kCpuFloat);
     print(c, spacing, f);
     EXPECT_GT(f.points_not_equal, 0u) << name(c, spacing);
     EXPECT_EQ(f.unpaired_points, 0u) << name(c, spacing);
@@ -179,9 +184,9 @@ TEST(EdgePatternCracks, CrackingVariantsStillOpenGapsInTheLavapipeCapture) {
   for (const Case& c : kCracking) {
     const auto patches = build(c);
     const tess::Spacing spacing = tess::Spacing::kFractionalOdd;
-    const CrackFigures f =
-        measureCracks(*patches, spacing, edgePatternLevels(*patches, spacing, kBase),
-                      CrackBackend::kGpu, &context);
+    const measures::CrackFigures f =
+        measures::measureCracks(*patches, spacing, lod::edgePatternLevels(*patches, spacing, kBase),
+                                measures::CrackBackend::kGpu, &context);
     print(c, spacing, f);
     EXPECT_GT(f.points_not_equal, 0u) << name(c, spacing);
     EXPECT_EQ(f.unpaired_points, 0u) << name(c, spacing);
@@ -193,13 +198,14 @@ TEST(EdgePatternCracks, CrackingVariantsStillOpenGapsInTheLavapipeCapture) {
 // another level and its points no longer pair (so a broken pattern would show).
 TEST(EdgePatternCracks, ALevelThatDiffersAcrossASharedEdgeLeavesUnpairedPoints) {
   const auto patches = build({"acc", "default", "opensubdiv/catmark_cube.obj"});
-  std::vector<tess::Levels> levels = edgePatternLevels(*patches, tess::Spacing::kInteger, kBase);
-  const SharedBoundaries shared = findSharedBoundaries(*patches);
+  std::vector<tess::Levels> levels =
+      lod::edgePatternLevels(*patches, tess::Spacing::kInteger, kBase);
+  const measures::SharedBoundaries shared = measures::findSharedBoundaries(*patches);
   ASSERT_FALSE(shared.edges.empty());
-  const PatchSide& side = shared.edges[0].sides[0];
-  levels[side.patch].outer[outerIndex(PatchDomain::kQuad, side.local)] += 1;
-  const CrackFigures f =
-      measureCracks(*patches, tess::Spacing::kInteger, levels, CrackBackend::kCpuFloat);
+  const measures::PatchSide& side = shared.edges[0].sides[0];
+  levels[side.patch].outer[outerIndex(techniques::PatchDomain::kQuad, side.local)] += 1;
+  const measures::CrackFigures f = measures::measureCracks(
+      *patches, tess::Spacing::kInteger, levels, measures::CrackBackend::kCpuFloat);
   EXPECT_GT(f.unpaired_points, 0u);
 }
 
@@ -207,20 +213,20 @@ TEST(EdgePatternCracks, ALevelThatDiffersAcrossASharedEdgeLeavesUnpairedPoints) 
 // backends), apart from the uniform rows, which keep their keys (no levels key), and no
 // two rows share keys.
 TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
-  const Technique* acc = TechniqueRegistry::instance().find("acc");
-  const Measure* measure = MeasureRegistry::instance().find("cracks");
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  const measures::Measure* measure = measures::MeasureRegistry::instance().find("cracks");
   ASSERT_NE(acc, nullptr);
   ASSERT_NE(measure, nullptr);
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const VariantInfo variant = acc->variants()[0];
-  const auto patches = buildSurface(*acc, mesh, variant);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const techniques::VariantInfo variant = acc->variants()[0];
+  const auto patches = techniques::buildSurface(*acc, mesh, variant);
   std::string reason;
   gpu::Context* context = gpu::testing::sharedContext(&reason);
-  const MeasureResult result = measure->run(
+  const results::MeasureResult result = measure->run(
       {*acc, variant, "catmark_cube", mesh, patches.get(), context, context ? "" : reason});
   std::set<std::map<std::string, std::string>> keys;
   size_t pattern_rows = 0, uniform_rows = 0;
-  for (const MetricRow& row : result.rows) {
+  for (const results::MetricRow& row : result.rows) {
     EXPECT_TRUE(keys.insert(row.keys).second) << "duplicate row keys";
     if (!row.keys.contains("levels")) {
       uniform_rows += row.keys.contains("level") ? 1 : 0;
@@ -229,8 +235,8 @@ TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
     ++pattern_rows;
     EXPECT_EQ(row.keys.at("levels"), "edge_pattern");
     EXPECT_EQ(row.keys.at("level"), "7");
-    EXPECT_EQ(row.status, MeasureStatus::kOk) << row.reason;
-    for (const Metric& metric : row.metrics) {
+    EXPECT_EQ(row.status, results::MeasureStatus::kOk) << row.reason;
+    for (const results::Metric& metric : row.metrics) {
       if (metric.name == "points_not_equal" || metric.name == "unpaired_points") {
         EXPECT_EQ(metric.value, 0) << metric.name;
       }

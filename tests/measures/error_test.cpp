@@ -19,27 +19,27 @@ namespace {
 // Test double of a technique: the exact Loop limit, optionally offset.
 class LimitPatches final : public testing::FacePatches {
  public:
-  LimitPatches(const Mesh& mesh, Vec3d offset)
+  LimitPatches(const mesh::Mesh& mesh, mesh::Vec3d offset)
       : FacePatches(mesh), limit_(mesh, osd::Scheme::kLoop), offset_(offset) {}
-  SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
+  techniques::SurfacePoint evaluate(size_t p, const techniques::DomainCoord& c) const override {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position + offset_, point.normal};
   }
-  SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
-    const SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
+  techniques::SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
+    const techniques::SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
     return {vecCast<float>(point.position), vecCast<float>(point.normal)};
   }
 
  private:
   ref::LimitSurface limit_;
-  Vec3d offset_;
+  mesh::Vec3d offset_;
 };
 
 TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const LimitPatches patches(mesh, {0, 0, 0});
   const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
-  const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
+  const measures::SurfaceErrorFigures f = measures::measureSurfaceError(patches, limit);
   EXPECT_EQ(f.parametric_max, 0.0);
   EXPECT_LT(f.normal_max_deg, 1e-6);
   // Only the chords of the two tessellations separate them.
@@ -49,11 +49,11 @@ TEST(SurfaceError, TheLimitItselfHasNoParametricError) {
 }
 
 TEST(SurfaceError, AKnownOffsetIsMeasuredExactly) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
   const double offset = 0.01;
   const LimitPatches patches(mesh, {offset, 0, 0});
-  const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
+  const measures::SurfaceErrorFigures f = measures::measureSurfaceError(patches, limit);
   EXPECT_NEAR(f.parametric_max * f.bbox_diagonal, offset, 1e-12);
   EXPECT_NEAR(f.parametric_rms * f.bbox_diagonal, offset, 1e-12);
   // A shifted closed surface is at most `offset` away, and somewhere a good part of it.
@@ -65,14 +65,15 @@ TEST(SurfaceError, PhongBulgesAwayFromTheShrunkenLoopLimitOfTheIcosahedron) {
   // The Loop limit of a convex control mesh lies inside its triangles, while Phong
   // tessellation bulges outwards by an amount growing with α: the distance to the
   // limit must therefore grow strictly with α (0 is the flat triangle).
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
   std::map<double, double> rms_by_alpha;
-  for (const VariantInfo& variant : phong->variants()) {
+  for (const techniques::VariantInfo& variant : phong->variants()) {
     if (variant.parameters.count("edge") != 0) continue;  // same α as alpha0.75
-    const auto patches = buildSurface(*phong, mesh, variant);
+    const auto patches = techniques::buildSurface(*phong, mesh, variant);
     const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kLoop);
-    rms_by_alpha[variant.parameters.at("alpha")] = measureSurfaceError(*patches, limit).rms_distance;
+    rms_by_alpha[variant.parameters.at("alpha")] =
+        measures::measureSurfaceError(*patches, limit).rms_distance;
   }
   ASSERT_EQ(rms_by_alpha.size(), 4u);
   double previous = 0;

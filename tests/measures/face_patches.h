@@ -15,14 +15,15 @@
 
 namespace tb::testing {
 
-class FacePatches : public SurfacePatches {
+class FacePatches : public techniques::SurfacePatches {
  public:
-  explicit FacePatches(Mesh mesh) : mesh_(std::move(mesh)) {}
-  PatchDomain patchDomain(size_t patch) const override {
-    return mesh_.faceSize(patch) == 4 ? PatchDomain::kQuad : PatchDomain::kTriangle;
+  explicit FacePatches(mesh::Mesh mesh) : mesh_(std::move(mesh)) {}
+  techniques::PatchDomain patchDomain(size_t patch) const override {
+    return mesh_.faceSize(patch) == 4 ? techniques::PatchDomain::kQuad
+                                      : techniques::PatchDomain::kTriangle;
   }
   size_t patchCount() const override { return mesh_.faceCount(); }
-  const Mesh& controlMesh() const override { return mesh_; }
+  const mesh::Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     std::array<uint32_t, 4> corners{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
     const auto face = mesh_.facePositions(patch);
@@ -30,15 +31,15 @@ class FacePatches : public SurfacePatches {
     return corners;
   }
   uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
-  DataFootprint footprint() const override { return {}; }
+  techniques::DataFootprint footprint() const override { return {}; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
  protected:
   // Corner k of patch p in float, as the test shaders read it.
-  Vec3f cornerF(size_t patch, uint32_t k) const {
+  mesh::Vec3f cornerF(size_t patch, uint32_t k) const {
     return vecCast<float>(mesh_.positions[mesh_.facePositions(patch)[k]]);
   }
-  Mesh mesh_;
+  mesh::Mesh mesh_;
 
  private:
   std::vector<std::string> warnings_;

@@ -20,7 +20,7 @@ namespace {
 
 // Bernstein form of a bicubic Bézier patch (Farin, Curves and Surfaces for CAGD, ch. 14).
 template <class S>
-Vec3T<S> bicubicBezier(const Vec3T<S> (&control)[4][4], S u, S v) {
+mesh::Vec3T<S> bicubicBezier(const mesh::Vec3T<S> (&control)[4][4], S u, S v) {
   auto basis = [](S t, S(&b)[4]) {
     const S s = S(1) - t;
     b[0] = s * s * s;
@@ -31,7 +31,7 @@ Vec3T<S> bicubicBezier(const Vec3T<S> (&control)[4][4], S u, S v) {
   S bu[4], bv[4];
   basis(u, bu);
   basis(v, bv);
-  Vec3T<S> p{S(0), S(0), S(0)};
+  mesh::Vec3T<S> p{S(0), S(0), S(0)};
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
       const S w = bu[i] * bv[j];
@@ -42,14 +42,14 @@ Vec3T<S> bicubicBezier(const Vec3T<S> (&control)[4][4], S u, S v) {
 }
 
 TEST(Instructions, CountingScalarMatchesAHandCountOfABicubicBezierPatch) {
-  using C = CountingScalar<float>;
-  Vec3T<C> control[4][4];
+  using C = techniques::CountingScalar<float>;
+  mesh::Vec3T<C> control[4][4];
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) control[j][i] = {C(float(i)), C(float(j)), C(float(i * j) * 0.1f)};
   }
-  resetOperationCounts();
-  const Vec3T<C> p = bicubicBezier(control, C(0.25f), C(0.5f));
-  const OperationCounts counts = operationCounts();
+  techniques::resetOperationCounts();
+  const mesh::Vec3T<C> p = bicubicBezier(control, C(0.25f), C(0.5f));
+  const techniques::OperationCounts counts = techniques::operationCounts();
   // Hand count. Basis per direction: 1 subtraction, 2 + 3 + 3 + 2 = 10 multiplications.
   // Sum: 16 terms of 1 weight product + 3 scalings (4 mul) and 3 additions.
   EXPECT_EQ(counts.add, 2u * 1 + 16u * 3);
@@ -63,8 +63,8 @@ TEST(Instructions, CountingScalarMatchesAHandCountOfABicubicBezierPatch) {
 }
 
 TEST(Instructions, StaticCountOfTheBilinearTestShaderMatchesAHandCount) {
-  const StageInstructionCounts counts =
-      countEmbeddedShader("gpu/test_bilinear.tese", {std::bit_cast<uint32_t>(2.0f)});
+  const measures::StageInstructionCounts counts =
+      measures::countEmbeddedShader("gpu/test_bilinear.tese", {std::bit_cast<uint32_t>(2.0f)});
   // Hand count of test_bilinear.tese after common-subexpression elimination:
   //   1 - u (once, used twice), 1 - v                          2 FSub (scalar)
   //   bottom, top: 2 × (2 vec3 × scalar + 1 vec3 add)           4 mul, 2 add
@@ -84,8 +84,10 @@ TEST(Instructions, StaticCountOfTheBilinearTestShaderMatchesAHandCount) {
 TEST(Instructions, SpecialisationIsFrozenBeforeCounting) {
   // shaders/gpu/test_spec_switch.tese: constant 0 guards one normalize(vec3) (one
   // GLSL.std.450 call, float_other) and its branch; frozen to 0 the branch is dead code.
-  const StageInstructionCounts off = countEmbeddedShader("gpu/test_spec_switch.tese", {0});
-  const StageInstructionCounts on = countEmbeddedShader("gpu/test_spec_switch.tese", {1});
+  const measures::StageInstructionCounts off =
+      measures::countEmbeddedShader("gpu/test_spec_switch.tese", {0});
+  const measures::StageInstructionCounts on =
+      measures::countEmbeddedShader("gpu/test_spec_switch.tese", {1});
   EXPECT_EQ(off.vector.float_other, 3u);                          // three mix() calls
   EXPECT_EQ(on.vector.float_other, 4u);                           // and normalize
   EXPECT_EQ(on.scalar.float_other - off.scalar.float_other, 3u);  // a vec3 result
@@ -95,14 +97,15 @@ TEST(Instructions, SpecialisationIsFrozenBeforeCounting) {
 TEST(Instructions, OptimisationRemovesWorkAndRejectsGarbage) {
   const auto words = gpu::embeddedShader("gpu/test_bilinear.tese");
   ASSERT_FALSE(words.empty());
-  const InstructionCounts raw = countSpirvInstructions(words, false);
-  const InstructionCounts optimized = countSpirvInstructions(optimizeSpirv(words, {}), false);
+  const measures::InstructionCounts raw = measures::countSpirvInstructions(words, false);
+  const measures::InstructionCounts optimized =
+      measures::countSpirvInstructions(measures::optimizeSpirv(words, {}), false);
   // glslang's unoptimised output goes through function calls and local variables.
   EXPECT_GT(raw.load_store, optimized.load_store);
   EXPECT_LT(optimized.total(), raw.total());
   const std::vector<uint32_t> garbage{1, 2, 3, 4, 5, 6};
-  EXPECT_THROW(countSpirvInstructions(garbage, false), std::runtime_error);
-  EXPECT_THROW(countEmbeddedShader("gpu/no_such.tese", {}), std::runtime_error);
+  EXPECT_THROW(measures::countSpirvInstructions(garbage, false), std::runtime_error);
+  EXPECT_THROW(measures::countEmbeddedShader("gpu/no_such.tese", {}), std::runtime_error);
 }
 
 // Patches whose operation counts differ per patch: patch p costs 10 + (p * 7) % 5
@@ -110,10 +113,14 @@ TEST(Instructions, OptimisationRemovesWorkAndRejectsGarbage) {
 class ProfiledPatches final : public testing::FacePatches {
  public:
   using FacePatches::FacePatches;
-  SurfacePoint evaluate(size_t, const DomainCoord&) const override { return {}; }
-  SurfacePointF evaluateFloat(size_t, const tess::DomainPoint&) const override { return {}; }
-  std::optional<OperationProfile> operationProfile(size_t p) const override {
-    OperationProfile profile;
+  techniques::SurfacePoint evaluate(size_t, const techniques::DomainCoord&) const override {
+    return {};
+  }
+  techniques::SurfacePointF evaluateFloat(size_t, const tess::DomainPoint&) const override {
+    return {};
+  }
+  std::optional<techniques::OperationProfile> operationProfile(size_t p) const override {
+    techniques::OperationProfile profile;
     profile.per_vertex.mul = 10 + (p * 7) % 5;
     profile.per_vertex.add = 4;
     profile.per_patch_setup.div = 1;
@@ -121,25 +128,25 @@ class ProfiledPatches final : public testing::FacePatches {
   }
 };
 
-double metricOf(const MetricRow& row, const std::string& name) {
-  for (const Metric& metric : row.metrics) {
+double metricOf(const results::MetricRow& row, const std::string& name) {
+  for (const results::Metric& metric : row.metrics) {
     if (metric.name == name) return metric.value;
   }
   return -1;
 }
 
 TEST(Instructions, MeasureReportsTheCheapestAndDearestPatchProfile) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const Measure* measure = MeasureRegistry::instance().find("instructions");
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const measures::Measure* measure = measures::MeasureRegistry::instance().find("instructions");
   ASSERT_NE(phong, nullptr);
   ASSERT_NE(measure, nullptr);
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const ProfiledPatches patches(mesh);
-  const VariantInfo variant = phong->variants()[0];
-  const MeasureResult result =
+  const techniques::VariantInfo variant = phong->variants()[0];
+  const results::MeasureResult result =
       measure->run({*phong, variant, "loop_icosahedron", mesh, &patches, nullptr, "none"});
   std::map<std::string, double> mul_per_vertex;
-  for (const MetricRow& row : result.rows) {
+  for (const results::MetricRow& row : result.rows) {
     if (row.keys.at("source") != "counting_scalar" || row.keys.at("stage") != "per_vertex")
       continue;
     mul_per_vertex[row.keys.at("patch")] = metricOf(row, "mul");

@@ -8,30 +8,32 @@
 namespace tb {
 namespace {
 
-StabilityFigures runStability(const Scenario& scenario, const std::string& variant) {
+measures::StabilityFigures runStability(const techniques::Scenario& scenario,
+                                        const std::string& variant) {
   auto instance = testing::buildMassSpring(scenario, variant);
   auto& simulation = testing::massSpringOf(*instance);
-  StabilitySettings settings;
+  measures::StabilitySettings settings;
   settings.steps = scenario.stepCount();
-  return measureStability(simulation, simulation, settings);
+  return measures::measureStability(simulation, simulation, settings);
 }
 
 // Oracle: the rest state. Without animation and gravity every spring is at its rest length
 // and no vertex moves: energy 0 and a stretch of float rounding only (rest lengths are
 // computed in double from the float rest pose).
 TEST(MassSpringStability, TheRestStateStaysAtRest) {
-  Scenario scenario = testing::massSpringScenario("[]", "rest");
+  techniques::Scenario scenario = testing::massSpringScenario("[]", "rest");
   std::string& section = scenario.sections["mass_spring"];
   section.replace(section.find("[0, 0, -9.81]"), 13, "[0, 0, 0]");
   for (const char* variant : {"gs_serial", "gs_colored", "jacobi", "jacobi_chebyshev"}) {
-    const StabilityFigures f = runStability(scenario, variant);
+    const measures::StabilityFigures f = runStability(scenario, variant);
     EXPECT_TRUE(f.finite) << variant;
     EXPECT_LT(f.energy_peak, 1e-10) << variant;
     EXPECT_LT(f.max_stretch, 1e-5) << variant;
     EXPECT_EQ(f.steps, 60u);
   }
   // The check can fail: with gravity the skin sags and moves.
-  const StabilityFigures sagging = runStability(testing::massSpringScenario("[]", "sag"), "jacobi");
+  const measures::StabilityFigures sagging =
+      runStability(testing::massSpringScenario("[]", "sag"), "jacobi");
   EXPECT_GT(sagging.energy_peak, 1e-6);
   EXPECT_GT(sagging.max_stretch, 1e-3);
 }
@@ -39,9 +41,10 @@ TEST(MassSpringStability, TheRestStateStaysAtRest) {
 // A blast kicks the skin once; with goal springs every solver brings it back, so the second
 // half of the run holds less energy than the first (drift < 1).
 TEST(MassSpringStability, ABlastsEnergyDecays) {
-  const Scenario scenario = testing::massSpringScenario(testing::kBlastAnimation, "blast");
+  const techniques::Scenario scenario =
+      testing::massSpringScenario(testing::kBlastAnimation, "blast");
   for (const char* variant : {"gs_serial", "gs_colored", "jacobi", "jacobi_chebyshev"}) {
-    const StabilityFigures f = runStability(scenario, variant);
+    const measures::StabilityFigures f = runStability(scenario, variant);
     EXPECT_TRUE(f.finite) << variant;
     EXPECT_LT(f.energy_drift, 1.0) << variant;
     EXPECT_GT(f.energy_peak, 0.0) << variant;

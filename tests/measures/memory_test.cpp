@@ -22,27 +22,27 @@
 namespace tb {
 namespace {
 
-BuiltSurface phongPatches(const Mesh& mesh) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  return buildSurface(*phong, mesh, phong->variants()[0]);
+techniques::BuiltSurface phongPatches(const mesh::Mesh& mesh) {
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  return techniques::buildSurface(*phong, mesh, phong->variants()[0]);
 }
 
 TEST(Memory, ClosedSeamlessMeshObeysEuler) {
   // loop_cube has no normals in the file (computed per position); dropping its
   // UVs removes the only seams.
-  Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
+  mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
   std::fill(mesh.corner_uvs.begin(), mesh.corner_uvs.end(), -1);
   const auto patches = phongPatches(mesh);
-  for (uint32_t level : kMemoryLevels) {
-    const MemoryFigures m = measureMemory(*patches, level);
+  for (uint32_t level : measures::kMemoryLevels) {
+    const measures::MemoryFigures m = measures::measureMemory(*patches, level);
     EXPECT_EQ(m.plain_vertices, m.plain_triangles / 2 + 2) << "level " << level;
   }
 }
 
 TEST(Memory, SingleTriangleMatchesTheTessellatorCounts) {
-  const Mesh mesh = loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "tri.obj");
+  const mesh::Mesh mesh = mesh::loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "tri.obj");
   const auto patches = phongPatches(mesh);
-  const MemoryFigures m = measureMemory(*patches, 8);
+  const measures::MemoryFigures m = measures::measureMemory(*patches, 8);
   EXPECT_EQ(m.plain_vertices, tess::trianglePointCount(8));
   EXPECT_EQ(m.plain_triangles, 96u);  // floor(3 * 64 / 2)
   EXPECT_EQ(m.plain_bytes, m.plain_vertices * 32 + 96u * 12);
@@ -54,40 +54,42 @@ TEST(Memory, SingleTriangleMatchesTheTessellatorCounts) {
 TEST(Memory, SplitNormalsDuplicateEdgePoints) {
   // catmark_cube, fan-triangulated, has a separate normal per face corner: every
   // cube edge is stored once per side, the 6 diagonals once.
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const auto patches = phongPatches(mesh);
   const uint32_t n = 16;
-  const MemoryFigures m = measureMemory(*patches, n);
+  const measures::MemoryFigures m = measures::measureMemory(*patches, n);
   const uint64_t interior = tess::trianglePointCount(n) - 3 * n;
   EXPECT_EQ(m.plain_vertices, 24 + (24 + 6) * (n - 1) + 12 * interior);
   // Plain bytes grow with the level; the technique's own data does not.
-  EXPECT_GT(measureMemory(*patches, 64).plain_bytes, 15 * measureMemory(*patches, 16).plain_bytes);
-  EXPECT_EQ(measureMemory(*patches, 64).technique.total(), m.technique.total());
+  EXPECT_GT(measures::measureMemory(*patches, 64).plain_bytes,
+            15 * measures::measureMemory(*patches, 16).plain_bytes);
+  EXPECT_EQ(measures::measureMemory(*patches, 64).technique.total(), m.technique.total());
 }
 
 TEST(Memory, BuiltMeshHasTheClosedFormCountsAndCompressesLosslessly) {
   // catmark_cube: split normals duplicate the cube edges; loop_cube: no seams once
   // its uvs are dropped; catmark_pyramid: a quad-and-triangle mesh, fan-triangulated.
-  Mesh seamless = loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
+  mesh::Mesh seamless = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
   std::fill(seamless.corner_uvs.begin(), seamless.corner_uvs.end(), -1);
-  const std::vector<Mesh> meshes{loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj")),
-                                 seamless,
-                                 loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj"))};
-  for (const Mesh& mesh : meshes) {
+  const std::vector<mesh::Mesh> meshes{
+      mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj")), seamless,
+      mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj"))};
+  for (const mesh::Mesh& mesh : meshes) {
     const auto patches = phongPatches(mesh);
     for (uint32_t level : {1u, 8u, 16u}) {
       SCOPED_TRACE(mesh.source + " level " + std::to_string(level));
-      const MemoryFigures m = measureMemory(*patches, level);
-      TessellatedMesh built = buildTessellatedMesh(*patches, level);
+      const measures::MemoryFigures m = measures::measureMemory(*patches, level);
+      measures::TessellatedMesh built = measures::buildTessellatedMesh(*patches, level);
       EXPECT_EQ(built.vertexCount(), m.plain_vertices);
       EXPECT_EQ(built.indices.size(), 3 * m.plain_triangles);
-      EXPECT_EQ(built.vertexCount() * kRenderVertexBytes + built.indices.size() * kIndexBytes,
-                m.plain_bytes);
+      EXPECT_EQ(
+          built.vertexCount() * mesh::kRenderVertexBytes + built.indices.size() * mesh::kIndexBytes,
+          m.plain_bytes);
       EXPECT_LT(*std::max_element(built.indices.begin(), built.indices.end()), built.vertexCount());
-      const CompressedMesh compressed = compressMesh(&built);
+      const measures::CompressedMesh compressed = measures::compressMesh(&built);
       // Every vertex is referenced, so fetch optimisation keeps them all.
       EXPECT_EQ(built.vertexCount(), m.plain_vertices);
-      EXPECT_TRUE(decodesTo(compressed, built));
+      EXPECT_TRUE(measures::decodesTo(compressed, built));
       EXPECT_LT(compressed.bytes(), m.plain_bytes);
       EXPECT_GT(compressed.bytes(), 0u);
     }
@@ -97,35 +99,36 @@ TEST(Memory, BuiltMeshHasTheClosedFormCountsAndCompressesLosslessly) {
 // Oracle: compressMesh on the whole mesh (one chunk), and on each chunk built by hand
 // (several); the chunks' meshes together hold every triangle once.
 TEST(Memory, CompressedSizeIsTheSumOverChunksOfPatches) {
-  const Mesh one = loadObjFile(testing::assetPath("opensubdiv/loop_xord_interior.obj"));
+  const mesh::Mesh one = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_xord_interior.obj"));
   const auto small = phongPatches(one);
-  ASSERT_LE(small->patchCount(), kCompressChunkPatches);
-  TessellatedMesh whole = buildTessellatedMesh(*small, 8);
-  const CompressedMesh whole_compressed = compressMesh(&whole);
-  const CompressedSize small_size = compressedSize(*small, 8);
+  ASSERT_LE(small->patchCount(), measures::kCompressChunkPatches);
+  measures::TessellatedMesh whole = measures::buildTessellatedMesh(*small, 8);
+  const measures::CompressedMesh whole_compressed = measures::compressMesh(&whole);
+  const measures::CompressedSize small_size = measures::compressedSize(*small, 8);
   EXPECT_EQ(small_size.chunks, 1u);
   EXPECT_EQ(small_size.vertex_bytes, whole_compressed.vertex_data.size());
   EXPECT_EQ(small_size.index_bytes, whole_compressed.index_data.size());
 
-  const auto large = phongPatches(translatedCopies(one, 5));
-  ASSERT_GT(large->patchCount(), kCompressChunkPatches);
-  const RenderVertices render = buildRenderVertices(large->controlMesh());
-  CompressedSize by_hand;
+  const auto large = phongPatches(mesh::translatedCopies(one, 5));
+  ASSERT_GT(large->patchCount(), measures::kCompressChunkPatches);
+  const mesh::RenderVertices render = mesh::buildRenderVertices(large->controlMesh());
+  measures::CompressedSize by_hand;
   uint64_t triangles = 0;
-  for (size_t first = 0; first < large->patchCount(); first += kCompressChunkPatches) {
-    TessellatedMesh chunk = buildTessellatedMesh(
-        *large, 8, render, first, std::min(large->patchCount(), first + kCompressChunkPatches));
+  for (size_t first = 0; first < large->patchCount(); first += measures::kCompressChunkPatches) {
+    measures::TessellatedMesh chunk = measures::buildTessellatedMesh(
+        *large, 8, render, first,
+        std::min(large->patchCount(), first + measures::kCompressChunkPatches));
     triangles += chunk.indices.size() / 3;
-    const CompressedMesh compressed = compressMesh(&chunk);
-    EXPECT_TRUE(decodesTo(compressed, chunk));
+    const measures::CompressedMesh compressed = measures::compressMesh(&chunk);
+    EXPECT_TRUE(measures::decodesTo(compressed, chunk));
     by_hand.vertex_bytes += compressed.vertex_data.size();
     by_hand.index_bytes += compressed.index_data.size();
     ++by_hand.chunks;
   }
-  EXPECT_EQ(triangles, measureMemory(*large, 8).plain_triangles);
+  EXPECT_EQ(triangles, measures::measureMemory(*large, 8).plain_triangles);
   for (int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    const CompressedSize size = compressedSize(*large, 8);
+    const measures::CompressedSize size = measures::compressedSize(*large, 8);
     EXPECT_EQ(size.chunks, by_hand.chunks);
     EXPECT_EQ(size.vertex_bytes, by_hand.vertex_bytes) << threads << " threads";
     EXPECT_EQ(size.index_bytes, by_hand.index_bytes) << threads << " threads";
@@ -133,20 +136,20 @@ TEST(Memory, CompressedSizeIsTheSumOverChunksOfPatches) {
 }
 
 TEST(Memory, CorruptedCompressedDataDoesNotDecodeToTheMesh) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const auto patches = phongPatches(mesh);
-  TessellatedMesh built = buildTessellatedMesh(*patches, 4);
-  CompressedMesh compressed = compressMesh(&built);
-  ASSERT_TRUE(decodesTo(compressed, built));
+  measures::TessellatedMesh built = measures::buildTessellatedMesh(*patches, 4);
+  measures::CompressedMesh compressed = measures::compressMesh(&built);
+  ASSERT_TRUE(measures::decodesTo(compressed, built));
   compressed.vertex_data[compressed.vertex_data.size() / 2] ^= 0x5a;
-  EXPECT_FALSE(decodesTo(compressed, built));
+  EXPECT_FALSE(measures::decodesTo(compressed, built));
 }
 
 TEST(Memory, VectorDisplacementIsThreeScalarMaps) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const auto patches = phongPatches(mesh);
-  for (uint32_t level : kMemoryLevels) {
-    const MemoryFigures m = measureMemory(*patches, level);
+  for (uint32_t level : measures::kMemoryLevels) {
+    const measures::MemoryFigures m = measures::measureMemory(*patches, level);
     EXPECT_EQ(m.vector_displacement_bytes, 3 * m.displacement_bytes);
     EXPECT_EQ(m.technique_with_vector_displacement_bytes,
               m.technique.total() + m.vector_displacement_bytes);
@@ -157,19 +160,19 @@ TEST(Memory, VectorDisplacementIsThreeScalarMaps) {
 // Oracle: the run itself, repeated. The crack, instruction and memory figures hold no
 // timings, so two runs must serialise to the same bytes.
 TEST(MeasuresDeterminism, TwoRunsGiveIdenticalJson) {
-  SuiteSelection selection;
-  selection.techniques = {TechniqueRegistry::instance().find("phong")};
+  suite::SuiteSelection selection;
+  selection.techniques = {techniques::TechniqueRegistry::instance().find("phong")};
   for (const char* id : {"cracks", "instructions", "memory"}) {
-    const Measure* measure = MeasureRegistry::instance().find(id);
+    const measures::Measure* measure = measures::MeasureRegistry::instance().find(id);
     ASSERT_NE(measure, nullptr) << id;
     selection.measures.push_back(measure);
   }
-  selection.assets = {resolveAsset("catmark_cube"), resolveAsset("tri_torus")};
-  Results first, second;
-  runSuite(selection, nullptr, &first);
-  runSuite(selection, nullptr, &second);
+  selection.assets = {suite::resolveAsset("catmark_cube"), suite::resolveAsset("tri_torus")};
+  results::Results first, second;
+  suite::runSuite(selection, nullptr, &first);
+  suite::runSuite(selection, nullptr, &second);
   ASSERT_FALSE(first.records.empty());
-  EXPECT_EQ(serializeResults(first), serializeResults(second));
+  EXPECT_EQ(results::serializeResults(first), results::serializeResults(second));
 }
 
 }  // namespace

@@ -27,17 +27,23 @@
 namespace tb {
 namespace {
 
-Mesh pyramid() { return loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj")); }
+mesh::Mesh pyramid() {
+  return mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_pyramid.obj"));
+}
 
 // Patch p is face p of a Catmull-Clark mesh, in the face's own domain. Subclasses give
 // the surface.
 class MixedPatches : public testing::FacePatches {
  public:
   using FacePatches::FacePatches;
-  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
+  techniques::LimitScheme approximates() const override {
+    return techniques::LimitScheme::kCatmullClark;
+  }
 };
 
-Vec3f lerp(const Vec3f& a, const Vec3f& b, float t) { return a * (1 - t) + b * t; }
+mesh::Vec3f lerp(const mesh::Vec3f& a, const mesh::Vec3f& b, float t) {
+  return a * (1 - t) + b * t;
+}
 
 // Flat patches: bilinear quads, linear triangles. On an edge both kinds evaluate
 // lerp(corner e, corner e + 1, t) with t the edge parameter (from the other side t is
@@ -45,18 +51,20 @@ Vec3f lerp(const Vec3f& a, const Vec3f& b, float t) { return a * (1 - t) + b * t
 // moves every boundary point of the triangle patches one float step in x.
 class FlatMixedPatches final : public MixedPatches {
  public:
-  FlatMixedPatches(Mesh mesh, bool perturb) : MixedPatches(std::move(mesh)), perturb_(perturb) {}
-  SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
-    const SurfacePointF f = evaluateFloat(patch, {float(c[0]), float(c[1]), float(c[2])});
+  FlatMixedPatches(mesh::Mesh mesh, bool perturb)
+      : MixedPatches(std::move(mesh)), perturb_(perturb) {}
+  techniques::SurfacePoint evaluate(size_t patch, const techniques::DomainCoord& c) const override {
+    const techniques::SurfacePointF f =
+        evaluateFloat(patch, {float(c[0]), float(c[1]), float(c[2])});
     return {vecCast<double>(f.position), {0, 0, 1}};
   }
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
-    const Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
-    if (patchDomain(patch) == PatchDomain::kQuad) {
-      const Vec3f p3 = cornerF(patch, 3);
+  techniques::SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
+    const mesh::Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2);
+    if (patchDomain(patch) == techniques::PatchDomain::kQuad) {
+      const mesh::Vec3f p3 = cornerF(patch, 3);
       return {lerp(lerp(p0, p1, c[0]), lerp(p3, p2, c[0]), c[1]), {0, 0, 1}};
     }
-    Vec3f p;
+    mesh::Vec3f p;
     if (c[2] == 0) {
       p = lerp(p0, p1, c[1]);
     } else if (c[0] == 0) {
@@ -93,16 +101,16 @@ uint64_t edgeInteriorPoints(tess::Domain domain, tess::Spacing spacing, float le
 
 TEST(MixedDomains, PyramidSharesItsEightEdgesAndFiveCornersAcrossQuadAndTriangles) {
   const FlatMixedPatches patches(pyramid(), false);
-  const SharedBoundaries shared = findSharedBoundaries(patches);
+  const measures::SharedBoundaries shared = measures::findSharedBoundaries(patches);
   ASSERT_EQ(shared.edges.size(), 8u);  // 4 slanted edges (tri-tri), 4 base edges (tri-quad)
   ASSERT_EQ(shared.corners.size(), 5u);
   int quad_triangle_edges = 0;
-  for (const SharedEdge& edge : shared.edges) {
+  for (const measures::SharedEdge& edge : shared.edges) {
     ASSERT_EQ(edge.sides.size(), 2u);
     quad_triangle_edges += edge.sides[1].patch == 4;  // the quad is the last face
   }
   EXPECT_EQ(quad_triangle_edges, 4);
-  for (const SharedCorner& corner : shared.corners) {
+  for (const measures::SharedCorner& corner : shared.corners) {
     // The apex (position 0) is on 4 triangles; each base vertex on 2 triangles and the quad.
     EXPECT_EQ(corner.sides.size(), corner.vertex == 0 ? 4u : 3u);
   }
@@ -113,7 +121,8 @@ TEST(MixedDomains, EdgeSymmetricPatchesAreBitwiseWatertightUnderEverySpacing) {
   for (tess::Spacing spacing : kSpacings) {
     for (float level : kLevels) {
       SCOPED_TRACE(std::string(tess::toString(spacing)) + " level " + std::to_string(level));
-      const CrackFigures f = measureCracks(patches, spacing, level, CrackBackend::kCpuFloat);
+      const measures::CrackFigures f =
+          measures::measureCracks(patches, spacing, level, measures::CrackBackend::kCpuFloat);
       ASSERT_TRUE(f.measured) << f.skipped_reason;
       // Both domains split an edge alike, so every point of an edge has its mirror.
       const uint64_t per_edge = edgeInteriorPoints(tess::Domain::kQuad, spacing, level);
@@ -129,8 +138,8 @@ TEST(MixedDomains, EdgeSymmetricPatchesAreBitwiseWatertightUnderEverySpacing) {
 TEST(MixedDomains, APerturbedTriangleSideShowsUpAsUnequalPoints) {
   const FlatMixedPatches patches(pyramid(), true);
   const float level = 7.3f;
-  const CrackFigures f =
-      measureCracks(patches, tess::Spacing::kFractionalOdd, level, CrackBackend::kCpuFloat);
+  const measures::CrackFigures f = measures::measureCracks(
+      patches, tess::Spacing::kFractionalOdd, level, measures::CrackBackend::kCpuFloat);
   ASSERT_TRUE(f.measured);
   EXPECT_EQ(f.unpaired_points, 0u);
   // Tri-quad edges and corners where a triangle meets the quad differ by one float step;
@@ -145,14 +154,14 @@ TEST(MixedDomains, APerturbedTriangleSideShowsUpAsUnequalPoints) {
 // --- memory ---------------------------------------------------------------------------
 
 TEST(MixedDomains, ClosedFormMatchesTheWeldedMeshAndEuler) {
-  Mesh mesh = pyramid();
+  mesh::Mesh mesh = pyramid();
   for (bool uvs : {true, false}) {
     if (!uvs) std::fill(mesh.corner_uvs.begin(), mesh.corner_uvs.end(), -1);
     const FlatMixedPatches patches(mesh, false);
     for (uint32_t level : {1u, 2u, 5u, 8u}) {
       SCOPED_TRACE("uvs " + std::to_string(uvs) + " level " + std::to_string(level));
-      const MemoryFigures m = measureMemory(patches, level);
-      const TessellatedMesh built = buildTessellatedMesh(patches, level);
+      const measures::MemoryFigures m = measures::measureMemory(patches, level);
+      const measures::TessellatedMesh built = measures::buildTessellatedMesh(patches, level);
       EXPECT_EQ(m.plain_vertices, built.vertexCount());
       EXPECT_EQ(m.plain_triangles, built.indices.size() / 3);
       // Per-domain sums: 4 triangle patches and one quad patch.
@@ -174,7 +183,7 @@ TEST(MixedDomains, ClosedFormMatchesTheWeldedMeshAndEuler) {
 // inverse of the bilinear map through corner k, the midpoint of edge k, the centroid and
 // the midpoint of edge k-1. With x = w[k+1], y = w[k-1] the map is x = s (3 - t) / 6,
 // y = t (3 - s) / 6; eliminating s gives t^2 - (3 + 2y - 2x) t + 6y = 0, smaller root.
-ref::SubFacePoint invertSubFaceMap(const DomainCoord& w) {
+ref::SubFacePoint invertSubFaceMap(const techniques::DomainCoord& w) {
   int k = 0;
   for (int c = 1; c < 3; ++c) {
     if (w[c] > w[k]) k = c;
@@ -189,37 +198,37 @@ ref::SubFacePoint invertSubFaceMap(const DomainCoord& w) {
 // at the face (u,v) of invertSubFaceMap's sub-face point.
 class ExactLimitPatches final : public MixedPatches {
  public:
-  ExactLimitPatches(Mesh mesh, Vec3d offset)
+  ExactLimitPatches(mesh::Mesh mesh, mesh::Vec3d offset)
       : MixedPatches(std::move(mesh)), limit_(mesh_, osd::Scheme::kCatmullClark), offset_(offset) {}
-  SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
-    Vec2d uv{c[0], c[1]};
-    if (patchDomain(patch) == PatchDomain::kTriangle) {
+  techniques::SurfacePoint evaluate(size_t patch, const techniques::DomainCoord& c) const override {
+    mesh::Vec2d uv{c[0], c[1]};
+    if (patchDomain(patch) == techniques::PatchDomain::kTriangle) {
       const ref::SubFacePoint sub = invertSubFaceMap(c);
       uv = ref::subFaceToFaceUv(osd::Scheme::kCatmullClark, 3, sub.sub_face, sub.st);
     }
     const ref::LimitPoint point = limit_.evaluate(patch, uv.x, uv.y);
     return {point.position + offset_, point.normal};
   }
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
-    const SurfacePoint point = evaluate(patch, {c[0], c[1], c[2]});
+  techniques::SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
+    const techniques::SurfacePoint point = evaluate(patch, {c[0], c[1], c[2]});
     return {vecCast<float>(point.position), vecCast<float>(point.normal)};
   }
 
  private:
   ref::LimitSurface limit_;
-  Vec3d offset_;
+  mesh::Vec3d offset_;
 };
 
 TEST(MixedDomains, TheCatmullClarkLimitThroughTheSubFaceMapHasNoParametricError) {
   for (const char* asset : {"opensubdiv/catmark_pyramid.obj", "opensubdiv/loop_icosahedron.obj"}) {
     SCOPED_TRACE(asset);
-    const Mesh mesh = loadObjFile(testing::assetPath(asset));
+    const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(asset));
     const ExactLimitPatches patches(mesh, {0, 0, 0});
     const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-    const SurfaceErrorFigures f = measureSurfaceError(patches, limit);
+    const measures::SurfaceErrorFigures f = measures::measureSurfaceError(patches, limit);
     size_t triangles = 0, quads = 0;
     for (size_t p = 0; p < patches.patchCount(); ++p) {
-      (patches.patchDomain(p) == PatchDomain::kQuad ? quads : triangles) += 1;
+      (patches.patchDomain(p) == techniques::PatchDomain::kQuad ? quads : triangles) += 1;
     }
     EXPECT_EQ(f.patches_through_sub_faces, triangles);
     EXPECT_EQ(f.samples, triangles * 3 * 25 + quads * 81);
@@ -231,30 +240,31 @@ TEST(MixedDomains, TheCatmullClarkLimitThroughTheSubFaceMapHasNoParametricError)
 }
 
 TEST(MixedDomains, AnOffsetAndFlatPatchesAreMeasuredOnMixedPatches) {
-  const Mesh mesh = pyramid();
+  const mesh::Mesh mesh = pyramid();
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const double offset = 0.01;
-  const SurfaceErrorFigures shifted =
-      measureSurfaceError(ExactLimitPatches(mesh, {0, 0, offset}), limit);
+  const measures::SurfaceErrorFigures shifted =
+      measures::measureSurfaceError(ExactLimitPatches(mesh, {0, 0, offset}), limit);
   EXPECT_NEAR(shifted.parametric_max * shifted.bbox_diagonal, offset, 1e-12);
   EXPECT_NEAR(shifted.parametric_rms * shifted.bbox_diagonal, offset, 1e-12);
   // The control pyramid is far outside its shrunken limit surface.
-  const SurfaceErrorFigures flat = measureSurfaceError(FlatMixedPatches(mesh, false), limit);
+  const measures::SurfaceErrorFigures flat =
+      measures::measureSurfaceError(FlatMixedPatches(mesh, false), limit);
   EXPECT_GT(flat.parametric_max, 1e-2);
   EXPECT_GT(flat.hausdorff, 1e-2);
 }
 
 TEST(MixedDomains, TheSchemeComesFromApproximatesAndMismatchesThrow) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj"));
   const ExactLimitPatches patches(mesh, {0, 0, 0});  // triangles approximating Catmull-Clark
   const ref::LimitSurface loop(mesh, osd::Scheme::kLoop);
-  EXPECT_THROW(measureSurfaceError(patches, loop), std::logic_error);
+  EXPECT_THROW(measures::measureSurfaceError(patches, loop), std::logic_error);
 
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const Measure* measure = MeasureRegistry::instance().find("error");
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const measures::Measure* measure = measures::MeasureRegistry::instance().find("error");
   ASSERT_NE(measure, nullptr);
-  const VariantInfo variant = phong->variants()[0];
-  const MeasureResult result =
+  const techniques::VariantInfo variant = phong->variants()[0];
+  const results::MeasureResult result =
       measure->run({*phong, variant, "loop_icosahedron", mesh, &patches, nullptr, "none"});
   ASSERT_EQ(result.rows.size(), 1u);
   EXPECT_EQ(result.rows[0].keys.at("reference"), "catmull_clark_limit");
@@ -271,8 +281,12 @@ TEST(MixedDomains, TheSchemeComesFromApproximatesAndMismatchesThrow) {
 class ProfiledMixedPatches final : public MixedPatches {
  public:
   using MixedPatches::MixedPatches;
-  SurfacePoint evaluate(size_t, const DomainCoord&) const override { return {}; }
-  SurfacePointF evaluateFloat(size_t, const tess::DomainPoint&) const override { return {}; }
+  techniques::SurfacePoint evaluate(size_t, const techniques::DomainCoord&) const override {
+    return {};
+  }
+  techniques::SurfacePointF evaluateFloat(size_t, const tess::DomainPoint&) const override {
+    return {};
+  }
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
     gpu::GpuPatchProgram quads, triangles;
     quads.control_shader = "gpu/test_bilinear.tesc";
@@ -283,32 +297,33 @@ class ProfiledMixedPatches final : public MixedPatches {
     triangles.domain = tess::Domain::kTriangle;
     return {quads, triangles};
   }
-  std::optional<OperationProfile> operationProfile(size_t patch) const override {
-    OperationProfile profile;
+  std::optional<techniques::OperationProfile> operationProfile(size_t patch) const override {
+    techniques::OperationProfile profile;
     // Quads 100 multiplies; triangle p: 10 + p.
-    profile.per_vertex.mul = patchDomain(patch) == PatchDomain::kQuad ? 100 : 10 + patch;
+    profile.per_vertex.mul =
+        patchDomain(patch) == techniques::PatchDomain::kQuad ? 100 : 10 + patch;
     return profile;
   }
 };
 
 TEST(MixedDomains, InstructionRowsAreKeyedByProgramDomain) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const Measure* measure = MeasureRegistry::instance().find("instructions");
-  const Mesh mesh = pyramid();
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const measures::Measure* measure = measures::MeasureRegistry::instance().find("instructions");
+  const mesh::Mesh mesh = pyramid();
   const ProfiledMixedPatches patches(mesh);
-  const VariantInfo variant = phong->variants()[0];
-  const MeasureResult result =
+  const techniques::VariantInfo variant = phong->variants()[0];
+  const results::MeasureResult result =
       measure->run({*phong, variant, "catmark_pyramid", mesh, &patches, nullptr, "none"});
   std::map<std::string, int> static_rows;
   std::map<std::string, double> mul;
-  for (const MetricRow& row : result.rows) {
+  for (const results::MetricRow& row : result.rows) {
     ASSERT_TRUE(row.keys.contains("program"));
     const std::string key = row.keys.at("program") + " " + row.keys.at("stage");
     if (row.keys.at("source") == "spirv_O") {
-      EXPECT_EQ(row.status, MeasureStatus::kOk) << row.reason;
+      EXPECT_EQ(row.status, results::MeasureStatus::kOk) << row.reason;
       ++static_rows[key];
     } else if (row.keys.at("stage") == "per_vertex") {
-      for (const Metric& m : row.metrics) {
+      for (const results::Metric& m : row.metrics) {
         if (m.name == "mul") mul[row.keys.at("program") + " " + row.keys.at("patch")] = m.value;
       }
     }
@@ -331,17 +346,18 @@ TEST(MixedDomains, InstructionRowsAreKeyedByProgramDomain) {
 // patches, GpuPatchProgram::patch_ids) must capture what one program over all does.
 class SplitQuadPatches final : public MixedPatches {
  public:
-  SplitQuadPatches(Mesh mesh, bool split) : MixedPatches(std::move(mesh)), split_(split) {}
-  SurfacePoint evaluate(size_t patch, const DomainCoord& c) const override {
-    const SurfacePointF f = evaluateFloat(patch, {float(c[0]), float(c[1]), float(c[2])});
+  SplitQuadPatches(mesh::Mesh mesh, bool split) : MixedPatches(std::move(mesh)), split_(split) {}
+  techniques::SurfacePoint evaluate(size_t patch, const techniques::DomainCoord& c) const override {
+    const techniques::SurfacePointF f =
+        evaluateFloat(patch, {float(c[0]), float(c[1]), float(c[2])});
     return {vecCast<double>(f.position), {0, 0, 1}};
   }
-  SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
+  techniques::SurfacePointF evaluateFloat(size_t patch, const tess::DomainPoint& c) const override {
     // shaders/gpu/test_bilinear.tese with scale 1
-    const Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2),
-                p3 = cornerF(patch, 3);
+    const mesh::Vec3f p0 = cornerF(patch, 0), p1 = cornerF(patch, 1), p2 = cornerF(patch, 2),
+                      p3 = cornerF(patch, 3);
     const float u = c[0], v = c[1];
-    const Vec3f bottom = p0 * (1 - u) + p1 * u, top = p3 * (1 - u) + p2 * u;
+    const mesh::Vec3f bottom = p0 * (1 - u) + p1 * u, top = p3 * (1 - u) + p2 * u;
     return {(bottom * (1 - v) + top * v) * 1.0f, {0, 0, 1}};
   }
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {
@@ -356,7 +372,7 @@ class SplitQuadPatches final : public MixedPatches {
         if (split_ && p % 2 != parity) continue;
         if (split_) program.patch_ids.push_back(p);
         for (uint32_t k = 0; k < 4; ++k) {
-          const Vec3f c = cornerF(p, k);
+          const mesh::Vec3f c = cornerF(p, k);
           for (float x : {c.x, c.y, c.z, 1.0f}) corners.push_back(std::bit_cast<uint32_t>(x));
         }
       }
@@ -371,7 +387,7 @@ class SplitQuadPatches final : public MixedPatches {
   bool split_;
 };
 
-Mesh quadGrid(int cells) {
+mesh::Mesh quadGrid(int cells) {
   std::string obj;
   for (int j = 0; j <= cells; ++j) {
     for (int i = 0; i <= cells; ++i) {
@@ -386,7 +402,7 @@ Mesh quadGrid(int cells) {
           "f " + id(i, j) + " " + id(i + 1, j) + " " + id(i + 1, j + 1) + " " + id(i, j + 1) + "\n";
     }
   }
-  return loadObjText(obj, "quad_grid.obj");
+  return mesh::loadObjText(obj, "quad_grid.obj");
 }
 
 TEST(MixedDomains, TwoGpuProgramsCaptureWhatOneDoes) {
@@ -394,10 +410,10 @@ TEST(MixedDomains, TwoGpuProgramsCaptureWhatOneDoes) {
   const SplitQuadPatches one(quadGrid(3), false), two(quadGrid(3), true);
   ASSERT_EQ(two.gpuPrograms().size(), 2u);
   for (float level : {1.0f, 7.3f}) {
-    const CrackFigures a =
-        measureCracks(one, tess::Spacing::kFractionalOdd, level, CrackBackend::kGpu, &context);
-    const CrackFigures b =
-        measureCracks(two, tess::Spacing::kFractionalOdd, level, CrackBackend::kGpu, &context);
+    const measures::CrackFigures a = measures::measureCracks(
+        one, tess::Spacing::kFractionalOdd, level, measures::CrackBackend::kGpu, &context);
+    const measures::CrackFigures b = measures::measureCracks(
+        two, tess::Spacing::kFractionalOdd, level, measures::CrackBackend::kGpu, &context);
     ASSERT_TRUE(a.measured && b.measured) << a.skipped_reason << b.skipped_reason;
     EXPECT_EQ(b.device_points, a.device_points);
     EXPECT_EQ(b.device_points_differing, 0u);

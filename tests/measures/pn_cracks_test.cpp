@@ -19,21 +19,23 @@
 namespace tb {
 namespace {
 
-VariantInfo variantOf(const Technique& technique, const std::string& name) {
-  for (const VariantInfo& v : technique.variants()) {
+techniques::VariantInfo variantOf(const techniques::Technique& technique, const std::string& name) {
+  for (const techniques::VariantInfo& v : technique.variants()) {
     if (v.name == name) return v;
   }
   ADD_FAILURE() << technique.info().id << " has no variant " << name;
   return {};
 }
 
-CrackFigures measure(const std::string& technique_id, const std::string& variant,
-                     const std::string& asset, tess::Spacing spacing, float level,
-                     CrackBackend backend, gpu::Context* context) {
-  const Technique& technique = *TechniqueRegistry::instance().find(technique_id);
-  const auto patches = buildSurface(technique, loadObjFile(testing::assetPath(asset)),
-                                    variantOf(technique, variant));
-  const CrackFigures f = measureCracks(*patches, spacing, level, backend, context);
+measures::CrackFigures measure(const std::string& technique_id, const std::string& variant,
+                               const std::string& asset, tess::Spacing spacing, float level,
+                               measures::CrackBackend backend, gpu::Context* context) {
+  const techniques::Technique& technique =
+      *techniques::TechniqueRegistry::instance().find(technique_id);
+  const auto patches = techniques::buildSurface(
+      technique, mesh::loadObjFile(testing::assetPath(asset)), variantOf(technique, variant));
+  const measures::CrackFigures f =
+      measures::measureCracks(*patches, spacing, level, backend, context);
   std::printf(
       "[cracks] %s/%s %s level %.1f %s: shared edges %llu, points %llu, not bitwise "
       "%llu, unpaired %llu, max gap %.3g world (%.3g scale ulp)\n",
@@ -55,9 +57,10 @@ TEST(PnCracks, PlainPnOpensGapsAtTheCylindersHardCaps) {
   // an arc from the side (radial normals): a gap of the order of the arc's sagitta.
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const Level& l : kLevels) {
-    for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-      const CrackFigures f = measure("pn_triangles", "pn", "tessbench/cylinder_seam.obj", l.spacing,
-                                     l.level, backend, &context);
+    for (measures::CrackBackend backend :
+         {measures::CrackBackend::kCpuFloat, measures::CrackBackend::kGpu}) {
+      const measures::CrackFigures f = measure("pn_triangles", "pn", "tessbench/cylinder_seam.obj",
+                                               l.spacing, l.level, backend, &context);
       ASSERT_TRUE(f.measured) << f.skipped_reason;
       EXPECT_EQ(f.unpaired_points, 0u);
       EXPECT_GT(f.max_gap_world, 1e-3);
@@ -68,9 +71,10 @@ TEST(PnCracks, PlainPnOpensGapsAtTheCylindersHardCaps) {
 
 TEST(PnCracks, FlatCubeIsWatertightAndFlatUnderPlainPn) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-    const CrackFigures f = measure("pn_triangles", "pn", "tessbench/flat_cube.obj",
-                                   tess::Spacing::kInteger, 16.0f, backend, &context);
+  for (measures::CrackBackend backend :
+       {measures::CrackBackend::kCpuFloat, measures::CrackBackend::kGpu}) {
+    const measures::CrackFigures f = measure("pn_triangles", "pn", "tessbench/flat_cube.obj",
+                                             tess::Spacing::kInteger, 16.0f, backend, &context);
     ASSERT_TRUE(f.measured) << f.skipped_reason;
     EXPECT_EQ(f.shared_edges, 18u);  // 12 cube edges + 6 face diagonals
     EXPECT_EQ(f.points_not_equal, 0u);
@@ -82,15 +86,16 @@ TEST(PnCracks, GeometryNormalsAndAenCloseThemBitwise) {
   for (const char* asset : {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj"}) {
     for (const char* variant : {"geometry_normals", "aen", "boundary_flags", "rounding"}) {
       for (const Level& l : kLevels) {
-        for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-          const CrackFigures f =
+        for (measures::CrackBackend backend :
+             {measures::CrackBackend::kCpuFloat, measures::CrackBackend::kGpu}) {
+          const measures::CrackFigures f =
               measure("pn_triangles", variant, asset, l.spacing, l.level, backend, &context);
           ASSERT_TRUE(f.measured) << f.skipped_reason;
           EXPECT_GT(f.points_compared, 0u);
           EXPECT_EQ(f.unpaired_points, 0u);
           EXPECT_EQ(f.points_not_equal, 0u) << variant << " " << toString(backend);
           EXPECT_EQ(f.max_gap_world, 0.0) << variant << " " << toString(backend);
-          if (backend == CrackBackend::kGpu) {
+          if (backend == measures::CrackBackend::kGpu) {
             EXPECT_EQ(f.device_points_differing, 0u);
           }
         }
@@ -103,11 +108,11 @@ TEST(PnCracks, SmoothSharedNormalsAreWatertightInEveryVariant) {
   // Oracle: where both faces share the normals (tri_torus, computed smooth normals), the
   // canonical order alone must make the edges bitwise equal.
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Technique& pn = *TechniqueRegistry::instance().find("pn_triangles");
-  for (const VariantInfo& v : pn.variants()) {
-    const CrackFigures f =
+  const techniques::Technique& pn = *techniques::TechniqueRegistry::instance().find("pn_triangles");
+  for (const techniques::VariantInfo& v : pn.variants()) {
+    const measures::CrackFigures f =
         measure("pn_triangles", v.name, "tessbench/tri_torus.obj", tess::Spacing::kFractionalOdd,
-                7.3f, CrackBackend::kGpu, &context);
+                7.3f, measures::CrackBackend::kGpu, &context);
     ASSERT_TRUE(f.measured) << f.skipped_reason;
     EXPECT_EQ(f.points_not_equal, 0u) << v.name;
   }
@@ -118,14 +123,16 @@ TEST(PhongCracks, EdgeVariantClosesTheCapGapsOfPlainPhong) {
   // normals; seed 003's per-edge variant uses the shared geometry normals on split edges.
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const Level& l : kLevels) {
-    for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-      const CrackFigures plain = measure("phong", "alpha0.75", "tessbench/cylinder_seam.obj",
-                                         l.spacing, l.level, backend, &context);
+    for (measures::CrackBackend backend :
+         {measures::CrackBackend::kCpuFloat, measures::CrackBackend::kGpu}) {
+      const measures::CrackFigures plain =
+          measure("phong", "alpha0.75", "tessbench/cylinder_seam.obj", l.spacing, l.level, backend,
+                  &context);
       ASSERT_TRUE(plain.measured) << plain.skipped_reason;
       EXPECT_GT(plain.max_gap_world, 1e-3);
       for (const char* asset :
            {"tessbench/cylinder_seam.obj", "tessbench/flat_cube.obj", "tessbench/tri_torus.obj"}) {
-        const CrackFigures edge =
+        const measures::CrackFigures edge =
             measure("phong", "edge", asset, l.spacing, l.level, backend, &context);
         ASSERT_TRUE(edge.measured) << edge.skipped_reason;
         EXPECT_GT(edge.points_compared, 0u);

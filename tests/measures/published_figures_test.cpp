@@ -10,13 +10,15 @@
 namespace tb {
 namespace {
 
-double alu(const InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
+double alu(const measures::InstructionCounts& c) { return double(c.floatArithmetic() + c.fma); }
 
 TEST(PublishedFigures, BezierOrderIncrementsMatchSeed000) {
   const double seed[4] = {60, 105, 75, 69};  // asymmetric, symmetric_nofma, _fma, _edges
-  const double asymmetric = alu(countEmbeddedShader("acc/bezier_position.tese", {0}).scalar);
+  const double asymmetric =
+      alu(measures::countEmbeddedShader("acc/bezier_position.tese", {0}).scalar);
   for (uint32_t order = 1; order < 4; ++order) {
-    const double ours = alu(countEmbeddedShader("acc/bezier_position.tese", {order}).scalar);
+    const double ours =
+        alu(measures::countEmbeddedShader("acc/bezier_position.tese", {order}).scalar);
     EXPECT_EQ(ours - asymmetric, seed[order] - seed[0]) << "order " << order;
   }
 }
@@ -24,8 +26,8 @@ TEST(PublishedFigures, BezierOrderIncrementsMatchSeed000) {
 TEST(PublishedFigures, TheOrdersAreNotAllTheSameShader) {
   // Guards the test above: specialisation must reach the probe, or every order would
   // count the same and only a coincidence could pass.
-  const double fma = alu(countEmbeddedShader("acc/bezier_position.tese", {2}).scalar);
-  const double nofma = alu(countEmbeddedShader("acc/bezier_position.tese", {1}).scalar);
+  const double fma = alu(measures::countEmbeddedShader("acc/bezier_position.tese", {2}).scalar);
+  const double nofma = alu(measures::countEmbeddedShader("acc/bezier_position.tese", {1}).scalar);
   EXPECT_NE(fma, nofma);
 }
 

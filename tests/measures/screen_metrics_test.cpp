@@ -25,41 +25,45 @@ namespace {
 
 constexpr double kFovYRad = 60 * std::numbers::pi / 180;
 
-View makeView(const Vec3d& eye, const Vec3d& target, uint32_t width_px, uint32_t height_px,
-              double near_plane, double far_plane) {
-  return perspectiveView({.eye = eye, .target = target, .fov_y_rad = kFovYRad,
-                          .width_px = width_px, .height_px = height_px, .near_plane = near_plane,
-                          .far_plane = far_plane});
+view::View makeView(const mesh::Vec3d& eye, const mesh::Vec3d& target, uint32_t width_px,
+                    uint32_t height_px, double near_plane, double far_plane) {
+  return view::perspectiveView({.eye = eye,
+                                .target = target,
+                                .fov_y_rad = kFovYRad,
+                                .width_px = width_px,
+                                .height_px = height_px,
+                                .near_plane = near_plane,
+                                .far_plane = far_plane});
 }
 
 // A 1920 x 1080 view of the mesh's bounding sphere from above and aside, the sphere's
 // diameter about half the screen height (2 r f / d = 1/2 of NDC's height of 2).
-View halfScreenView(const Mesh& mesh) {
-  const Aabb box = boundsOf(mesh);
-  const Vec3d centre = 0.5 * (box.min + box.max);
+view::View halfScreenView(const mesh::Mesh& mesh) {
+  const mesh::Aabb box = mesh::boundsOf(mesh);
+  const mesh::Vec3d centre = 0.5 * (box.min + box.max);
   const double radius = 0.5 * length(box.max - box.min);
   const double distance = 2 * radius / std::tan(kFovYRad / 2);
-  const Vec3d eye = centre + distance * normalize(Vec3d{0.6, 0.5, 0.8});
+  const mesh::Vec3d eye = centre + distance * normalize(mesh::Vec3d{0.6, 0.5, 0.8});
   return makeView(eye, centre, 1920, 1080, distance - 1.5 * radius, distance + 1.5 * radius);
 }
 
 tess::Levels uniformLevels(float level) { return {{level, level, level, level}, {level, level}}; }
 
-std::vector<tess::Levels> uniform(const SurfacePatches& patches, float level) {
+std::vector<tess::Levels> uniform(const techniques::SurfacePatches& patches, float level) {
   return std::vector<tess::Levels>(patches.patchCount(), uniformLevels(level));
 }
 
-BuiltSurface build(const std::string& technique, const Mesh& mesh) {
-  const Technique* t = TechniqueRegistry::instance().find(technique);
-  return buildSurface(*t, mesh, t->variants()[0]);
+techniques::BuiltSurface build(const std::string& technique, const mesh::Mesh& mesh) {
+  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(technique);
+  return techniques::buildSurface(*t, mesh, t->variants()[0]);
 }
 
-Mesh asset(const std::string& name) { return loadObjFile(testing::assetPath(name)); }
+mesh::Mesh asset(const std::string& name) { return mesh::loadObjFile(testing::assetPath(name)); }
 
 // The bundled pawn without its crease tags, which acc refuses (a smooth Catmull-Clark
 // mesh with extraordinary vertices and boundaries).
-Mesh smoothPawn() {
-  Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
+mesh::Mesh smoothPawn() {
+  mesh::Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
   mesh.tags.creases.clear();
   mesh.tags.corners.clear();
   return mesh;
@@ -70,8 +74,10 @@ Mesh smoothPawn() {
 class FlatFaces final : public testing::FacePatches {
  public:
   using FacePatches::FacePatches;
-  LimitScheme approximates() const override { return LimitScheme::kCatmullClark; }
-  SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
+  techniques::LimitScheme approximates() const override {
+    return techniques::LimitScheme::kCatmullClark;
+  }
+  techniques::SurfacePoint evaluate(size_t p, const techniques::DomainCoord& c) const override {
     const auto f = mesh_.facePositions(p);
     const auto& x = mesh_.positions;
     if (f.size() == 3) return {c[0] * x[f[0]] + c[1] * x[f[1]] + c[2] * x[f[2]], {0, 0, 1}};
@@ -80,8 +86,8 @@ class FlatFaces final : public testing::FacePatches {
                 (1 - u) * v * x[f[3]],
             {0, 0, 1}};
   }
-  SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
-    const SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
+  techniques::SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
+    const techniques::SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
     return {vecCast<float>(point.position), vecCast<float>(point.normal)};
   }
 };
@@ -90,14 +96,14 @@ class FlatFaces final : public testing::FacePatches {
 // triangle patch's barycentric (u, v, w) to: Bfr's (u, v) = (v, w).
 class LoopLimitPatches final : public testing::FacePatches {
  public:
-  explicit LoopLimitPatches(const Mesh& mesh)
+  explicit LoopLimitPatches(const mesh::Mesh& mesh)
       : FacePatches(mesh), limit_(mesh, osd::Scheme::kLoop) {}
-  SurfacePoint evaluate(size_t p, const DomainCoord& c) const override {
+  techniques::SurfacePoint evaluate(size_t p, const techniques::DomainCoord& c) const override {
     const ref::LimitPoint point = limit_.evaluate(p, c[1], c[2]);
     return {point.position, point.normal};
   }
-  SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
-    const SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
+  techniques::SurfacePointF evaluateFloat(size_t p, const tess::DomainPoint& c) const override {
+    const techniques::SurfacePoint point = evaluate(p, {c[0], c[1], c[2]});
     return {vecCast<float>(point.position), vecCast<float>(point.normal)};
   }
 
@@ -135,14 +141,14 @@ f 7 12 11
 TEST(ScreenMetrics, AFlatSurfaceHasNoTessellationError) {
   // Phong and PN triangles reproduce a plane with flat normals affinely in the
   // barycentric coordinates, so the tessellation is the surface (1e-9 px: rounding).
-  const Mesh mesh = loadObjText(kFlatTriangles, "flat.obj");
-  const View view = makeView({1.5, -2, 3}, {1.5, 1, 0.3}, 1920, 1080, 0.5, 20);
+  const mesh::Mesh mesh = mesh::loadObjText(kFlatTriangles, "flat.obj");
+  const view::View view = makeView({1.5, -2, 3}, {1.5, 1, 0.3}, 1920, 1080, 0.5, 20);
   for (const char* technique : {"phong", "pn_triangles"}) {
-    const BuiltSurface patches = build(technique, mesh);
-    ScreenMetrics metrics(*patches, nullptr);
+    const techniques::BuiltSurface patches = build(technique, mesh);
+    lod::ScreenMetrics metrics(*patches, nullptr);
     for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd}) {
       for (float level : {1.0f, 3.0f, 6.5f, 17.0f}) {
-        const ScreenErrorFigures f =
+        const lod::ScreenErrorFigures f =
             metrics.frame(spacing, uniform(*patches, level), view).tessellation_error;
         EXPECT_GT(f.samples, 0u) << technique << " level " << level;
         EXPECT_LE(f.max_px, 1e-9) << technique << " level " << level;
@@ -155,13 +161,13 @@ TEST(ScreenMetrics, TessellationErrorFallsWithTheSquareOfTheLevel) {
   // The chord error of a smooth surface is its sagitta, ~ curvature * (edge length)^2 / 8:
   // doubling the level quarters it. 0.15..0.40 allows for the projection and the
   // boundaries of the sampled regions.
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = build("acc", mesh);
-  ScreenMetrics metrics(*patches, nullptr);
-  const View view = halfScreenView(mesh);
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  lod::ScreenMetrics metrics(*patches, nullptr);
+  const view::View view = halfScreenView(mesh);
   double previous_max = 0, previous_rms = 0;
   for (float level : {2.0f, 4.0f, 8.0f, 16.0f}) {
-    const ScreenErrorFigures f =
+    const lod::ScreenErrorFigures f =
         metrics.tessellationError(tess::Spacing::kInteger, uniform(*patches, level), view);
     ASSERT_GT(f.samples, 0u);
     EXPECT_GT(f.max_px, 0.0);
@@ -182,14 +188,14 @@ TEST(ScreenMetrics, EdgesOfASquareFacingTheCameraHaveTheLengthComputedByHand) {
   // i.e. (1/n) * H * projection_y_scale / (2 d) pixels. Of the 2n(n+1) axis-parallel
   // edges and n^2 diagonals (sqrt(2) longer), the axis-parallel ones are the majority.
   // Powers of two, so that 1/n is exact in the tessellator's 16.16 fixed point.
-  const Mesh mesh = loadObjText(
+  const mesh::Mesh mesh = mesh::loadObjText(
       "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3 4\n", "square.obj");
   const FlatFaces patches(mesh);
   const double distance = 3;
-  const View view = makeView({0, 0, distance}, {0, 0, 0}, 800, 600, 1, 10);
-  ScreenMetrics metrics(patches, nullptr);
+  const view::View view = makeView({0, 0, distance}, {0, 0, 0}, 800, 600, 1, 10);
+  lod::ScreenMetrics metrics(patches, nullptr);
   for (uint32_t n : {1u, 4u, 8u}) {
-    const FrameScreenFigures f =
+    const lod::FrameScreenFigures f =
         metrics.frame(tess::Spacing::kInteger, uniform(patches, float(n)), view);
     const double expected_px = 1.0 / n * 600 * view.projection_y_scale / (2 * distance);
     EXPECT_EQ(f.patches, 1u);
@@ -211,15 +217,15 @@ TEST(ScreenMetrics, EdgesOfASquareFacingTheCameraHaveTheLengthComputedByHand) {
 }
 
 TEST(ScreenMetrics, NothingIsVisibleBehindTheCameraOrOutsideTheViewport) {
-  const Mesh mesh = loadObjText(
+  const mesh::Mesh mesh = mesh::loadObjText(
       "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3 4\n", "square.obj");
   const FlatFaces patches(mesh);
-  ScreenMetrics metrics(patches, nullptr);
+  lod::ScreenMetrics metrics(patches, nullptr);
   const std::vector<tess::Levels> levels = uniform(patches, 4);
   // Looking away from the square, then at it from beside, far out of the field of view.
-  for (const View& view : {makeView({0, 0, 3}, {0, 0, 6}, 800, 600, 1, 10),
-                           makeView({20, 0, 3}, {20, 0, 0}, 800, 600, 1, 10)}) {
-    const FrameScreenFigures f = metrics.frame(tess::Spacing::kInteger, levels, view);
+  for (const view::View& view : {makeView({0, 0, 3}, {0, 0, 6}, 800, 600, 1, 10),
+                                 makeView({20, 0, 3}, {20, 0, 0}, 800, 600, 1, 10)}) {
+    const lod::FrameScreenFigures f = metrics.frame(tess::Spacing::kInteger, levels, view);
     EXPECT_EQ(f.patches, 1u);
     EXPECT_EQ(f.edges.edges, 0u);
     EXPECT_EQ(f.tessellation_error.samples, 0u);
@@ -228,14 +234,14 @@ TEST(ScreenMetrics, NothingIsVisibleBehindTheCameraOrOutsideTheViewport) {
 }
 
 TEST(ScreenMetrics, CulledPatchesContributeNothing) {
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = build("acc", mesh);
-  ScreenMetrics metrics(*patches, nullptr);
-  const View view = halfScreenView(mesh);
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  lod::ScreenMetrics metrics(*patches, nullptr);
+  const view::View view = halfScreenView(mesh);
   std::vector<tess::Levels> levels = uniform(*patches, 5);
-  const FrameScreenFigures all = metrics.frame(tess::Spacing::kInteger, levels, view);
+  const lod::FrameScreenFigures all = metrics.frame(tess::Spacing::kInteger, levels, view);
   levels[3].outer[1] = 0;  // culls patch 3
-  const FrameScreenFigures culled = metrics.frame(tess::Spacing::kInteger, levels, view);
+  const lod::FrameScreenFigures culled = metrics.frame(tess::Spacing::kInteger, levels, view);
   EXPECT_EQ(culled.patches, all.patches - 1);
   EXPECT_EQ(culled.triangles, all.triangles - 50);
   EXPECT_EQ(culled.domain_points, all.domain_points - 36);
@@ -247,20 +253,20 @@ TEST(ScreenMetrics, CulledPatchesContributeNothing) {
 TEST(ScreenMetrics, EachPatchAloneAddsUpToTheWholeSurface) {
   // Distinct high levels per patch split the torus into several chunks of patterns; each
   // patch measured alone (every other patch culled) must give the same samples and max.
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = build("acc", mesh);
-  ScreenMetrics metrics(*patches, nullptr);
-  const View view = halfScreenView(mesh);
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  lod::ScreenMetrics metrics(*patches, nullptr);
+  const view::View view = halfScreenView(mesh);
   std::vector<tess::Levels> levels;
   for (size_t p = 0; p < patches->patchCount(); ++p) levels.push_back(uniformLevels(40.0f + p));
-  const ScreenErrorFigures whole =
+  const lod::ScreenErrorFigures whole =
       metrics.tessellationError(tess::Spacing::kFractionalEven, levels, view);
   uint64_t samples = 0;
   double max_px = 0, squares = 0;
   for (size_t p = 0; p < patches->patchCount(); ++p) {
     std::vector<tess::Levels> alone(levels.size(), tess::Levels{{0, 0, 0, 0}, {0, 0}});
     alone[p] = levels[p];
-    const ScreenErrorFigures f =
+    const lod::ScreenErrorFigures f =
         metrics.tessellationError(tess::Spacing::kFractionalEven, alone, view);
     samples += f.samples;
     max_px = std::max(max_px, f.max_px);
@@ -277,17 +283,17 @@ TEST(ScreenMetrics, EachPatchAloneAddsUpToTheWholeSurface) {
 TEST(ScreenMetrics, PopIsZeroForUnchangedLevelsAndSmallForAFractionalStep) {
   // Integer spacing moves every vertex when the level steps from 3 to 4; fractional_odd
   // from 3.0 to 3.2 only slides the new vertex pair out of the old ones.
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = build("acc", mesh);
-  ScreenMetrics metrics(*patches, nullptr);
-  const View view = halfScreenView(mesh);
-  const ScreenErrorFigures same =
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  lod::ScreenMetrics metrics(*patches, nullptr);
+  const view::View view = halfScreenView(mesh);
+  const lod::ScreenErrorFigures same =
       metrics.pop(tess::Spacing::kInteger, uniform(*patches, 3), uniform(*patches, 3), view);
   EXPECT_GT(same.samples, 0u);
   EXPECT_EQ(same.max_px, 0.0);
-  const ScreenErrorFigures integer =
+  const lod::ScreenErrorFigures integer =
       metrics.pop(tess::Spacing::kInteger, uniform(*patches, 3), uniform(*patches, 4), view);
-  const ScreenErrorFigures fractional = metrics.pop(
+  const lod::ScreenErrorFigures fractional = metrics.pop(
       tess::Spacing::kFractionalOdd, uniform(*patches, 3.0f), uniform(*patches, 3.2f), view);
   EXPECT_EQ(integer.samples, same.samples);
   EXPECT_GT(fractional.max_px, 0.0);
@@ -296,7 +302,7 @@ TEST(ScreenMetrics, PopIsZeroForUnchangedLevelsAndSmallForAFractionalStep) {
 }
 
 // Per-patch levels that vary, with one culled patch and fractional values.
-std::vector<tess::Levels> mixedLevels(const SurfacePatches& patches, float shift) {
+std::vector<tess::Levels> mixedLevels(const techniques::SurfacePatches& patches, float shift) {
   std::vector<tess::Levels> levels;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     const float base = 1.5f + float(p % 7) + shift;
@@ -306,27 +312,28 @@ std::vector<tess::Levels> mixedLevels(const SurfacePatches& patches, float shift
   return levels;
 }
 
-void expectEqual(const ScreenErrorFigures& a, const ScreenErrorFigures& b) {
+void expectEqual(const lod::ScreenErrorFigures& a, const lod::ScreenErrorFigures& b) {
   EXPECT_EQ(a.samples, b.samples);
   EXPECT_EQ(a.max_px, b.max_px);
   EXPECT_EQ(a.rms_px, b.rms_px);
 }
 
 TEST(ScreenMetrics, FiguresDoNotDependOnTheThreadCount) {
-  const Mesh mesh = smoothPawn();
-  const BuiltSurface patches = build("acc", mesh);
+  const mesh::Mesh mesh = smoothPawn();
+  const techniques::BuiltSurface patches = build("acc", mesh);
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-  const View view = halfScreenView(mesh);
+  const view::View view = halfScreenView(mesh);
   const std::vector<tess::Levels> before = mixedLevels(*patches, 0),
                                   after = mixedLevels(*patches, 0.3f);
-  auto run = [&](FrameScreenFigures* frame, ScreenErrorFigures* error, ScreenErrorFigures* pop) {
-    ScreenMetrics metrics(*patches, &limit);
+  auto run = [&](lod::FrameScreenFigures* frame, lod::ScreenErrorFigures* error,
+                 lod::ScreenErrorFigures* pop) {
+    lod::ScreenMetrics metrics(*patches, &limit);
     *frame = metrics.frame(tess::Spacing::kFractionalEven, before, view);
     *error = metrics.tessellationError(tess::Spacing::kFractionalEven, after, view);
     *pop = metrics.pop(tess::Spacing::kFractionalEven, before, after, view);
   };
-  FrameScreenFigures frame_1, frame_n;
-  ScreenErrorFigures error_1, error_n, pop_1, pop_n;
+  lod::FrameScreenFigures frame_1, frame_n;
+  lod::ScreenErrorFigures error_1, error_n, pop_1, pop_n;
   {
     const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
     run(&frame_1, &error_1, &pop_1);
@@ -352,15 +359,15 @@ TEST(ScreenMetrics, FiguresDoNotDependOnTheThreadCount) {
 TEST(ScreenMetrics, CachedPatternsDoNotChangeTheFigures) {
   // A pattern first built for pop (vertices and lattice only) gains its samples later; the
   // figures must equal those of a fresh object with an empty cache.
-  const Mesh mesh = smoothPawn();
-  const BuiltSurface patches = build("acc", mesh);
-  const View view = halfScreenView(mesh);
+  const mesh::Mesh mesh = smoothPawn();
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  const view::View view = halfScreenView(mesh);
   const std::vector<tess::Levels> before = mixedLevels(*patches, 0),
                                   after = mixedLevels(*patches, 1);
-  ScreenMetrics used(*patches, nullptr), fresh(*patches, nullptr);
+  lod::ScreenMetrics used(*patches, nullptr), fresh(*patches, nullptr);
   EXPECT_GT(used.pop(tess::Spacing::kFractionalOdd, before, after, view).samples, 0u);
-  const FrameScreenFigures a = used.frame(tess::Spacing::kFractionalOdd, after, view);
-  const FrameScreenFigures b = fresh.frame(tess::Spacing::kFractionalOdd, after, view);
+  const lod::FrameScreenFigures a = used.frame(tess::Spacing::kFractionalOdd, after, view);
+  const lod::FrameScreenFigures b = fresh.frame(tess::Spacing::kFractionalOdd, after, view);
   EXPECT_EQ(a.triangles, b.triangles);
   EXPECT_EQ(a.edges.edges, b.edges.edges);
   EXPECT_EQ(a.edges.median_px, b.edges.median_px);
@@ -374,11 +381,11 @@ TEST(ScreenMetrics, AccMatchesTheLimitOnARegularMeshOnly) {
   // Catmull-Clark limit (Bfr, the oracle): ~0 px. The cube's valence-3 corners are not.
   for (const auto& [name, regular] :
        {std::pair{"opensubdiv/catmark_torus.obj", true}, {"opensubdiv/catmark_cube.obj", false}}) {
-    const Mesh mesh = asset(name);
-    const BuiltSurface patches = build("acc", mesh);
+    const mesh::Mesh mesh = asset(name);
+    const techniques::BuiltSurface patches = build("acc", mesh);
     const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-    ScreenMetrics metrics(*patches, &limit);
-    const FrameScreenFigures f =
+    lod::ScreenMetrics metrics(*patches, &limit);
+    const lod::FrameScreenFigures f =
         metrics.frame(tess::Spacing::kInteger, uniform(*patches, 6), halfScreenView(mesh));
     EXPECT_TRUE(f.reference_measured);
     EXPECT_EQ(f.patches_without_reference, 0u);
@@ -393,11 +400,11 @@ TEST(ScreenMetrics, AccMatchesTheLimitOnARegularMeshOnly) {
 
 TEST(ScreenMetrics, TheLoopLimitItselfHasNoReferenceError) {
   // Oracle: Bfr against itself, so only a wrong parameter map gives an error.
-  const Mesh mesh = asset("opensubdiv/loop_icosahedron.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/loop_icosahedron.obj");
   const LoopLimitPatches patches(mesh);
   const ref::LimitSurface limit(mesh, osd::Scheme::kLoop);
-  ScreenMetrics metrics(patches, &limit);
-  const FrameScreenFigures f =
+  lod::ScreenMetrics metrics(patches, &limit);
+  const lod::FrameScreenFigures f =
       metrics.frame(tess::Spacing::kFractionalOdd, uniform(patches, 4.5f), halfScreenView(mesh));
   EXPECT_EQ(f.patches_without_reference, 0u);
   EXPECT_GT(f.reference_error.samples, 0u);
@@ -408,11 +415,11 @@ TEST(ScreenMetrics, TheLoopLimitItselfHasNoReferenceError) {
 TEST(ScreenMetrics, TrianglesOnACatmullClarkMeshAreLeftOutOfTheReference) {
   // The pyramid's four triangles are split into quad sub-faces by Catmull-Clark; its
   // square base is a quad patch on a quad face and is measured.
-  const Mesh mesh = asset("opensubdiv/catmark_pyramid.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_pyramid.obj");
   const FlatFaces patches(mesh);
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-  ScreenMetrics metrics(patches, &limit);
-  const FrameScreenFigures f =
+  lod::ScreenMetrics metrics(patches, &limit);
+  const lod::FrameScreenFigures f =
       metrics.frame(tess::Spacing::kInteger, uniform(patches, 4), halfScreenView(mesh));
   EXPECT_EQ(f.patches, 5u);
   EXPECT_EQ(f.patches_without_reference, 4u);
@@ -422,11 +429,11 @@ TEST(ScreenMetrics, TrianglesOnACatmullClarkMeshAreLeftOutOfTheReference) {
 }
 
 TEST(ScreenMetrics, ALimitOfAnotherSchemeIsRefused) {
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = build("acc", mesh);
-  const Mesh loop_mesh = asset("opensubdiv/loop_icosahedron.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = build("acc", mesh);
+  const mesh::Mesh loop_mesh = asset("opensubdiv/loop_icosahedron.obj");
   const ref::LimitSurface loop(loop_mesh, osd::Scheme::kLoop);
-  EXPECT_THROW(ScreenMetrics(*patches, &loop), std::logic_error);
+  EXPECT_THROW(lod::ScreenMetrics(*patches, &loop), std::logic_error);
 }
 
 }  // namespace

@@ -12,20 +12,20 @@ namespace {
 
 // Grows by one element a step from 5; two programs: (1 pass, 1 repeat + 1 pass, 3 repeats)
 // and (1 pass, 2 repeats), each adding 1 to a counter per dispatch.
-class GrowingDouble final : public Simulation {
+class GrowingDouble final : public techniques::Simulation {
  public:
   GrowingDouble() {
     scenario_.name = "test/growing";
     scenario_.time_step_s = 0.5;
     scenario_.duration_s = 4.0;  // 8 steps
   }
-  const Scenario& scenario() const override { return scenario_; }
+  const techniques::Scenario& scenario() const override { return scenario_; }
   void step(double dt_s) override {
     time_s_ += dt_s;
     ++elements_;
   }
-  SimulationState state() const override {
-    SimulationState state;
+  techniques::SimulationState state() const override {
+    techniques::SimulationState state;
     state.time_s = time_s_;
     state.element_count = elements_;
     return state;
@@ -40,17 +40,18 @@ class GrowingDouble final : public Simulation {
     };
     return {{"first", {pass(1), pass(3)}}, {"second", {pass(2)}}};
   }
-  SimulationFootprint footprint() const override { return {400, 24, 0, ""}; }
+  techniques::SimulationFootprint footprint() const override { return {400, 24, 0, ""}; }
 
  private:
-  Scenario scenario_;
+  techniques::Scenario scenario_;
   double time_s_ = 0;
   uint64_t elements_ = 5;
 };
 
 TEST(SimCost, ElementsPeakAndDispatchesAreTheHandCountedOnes) {
   GrowingDouble simulation;
-  const SimCostFigures figures = measureSimCost(simulation, 4, nullptr, "no device here", 100);
+  const measures::SimCostFigures figures =
+      measures::measureSimCost(simulation, 4, nullptr, "no device here", 100);
   EXPECT_EQ(figures.steps, 8u);
   ASSERT_EQ(figures.samples.size(), 4u);
   // Steps 2, 4, 6, 8: 5 + step elements at 0.5 s a step.
@@ -69,7 +70,7 @@ TEST(SimCost, ElementsPeakAndDispatchesAreTheHandCountedOnes) {
 TEST(SimCost, TheDeviceRunDispatchesAsDeclared) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   GrowingDouble simulation;
-  const SimCostFigures figures = measureSimCost(simulation, 2, &context, "", 3);
+  const measures::SimCostFigures figures = measures::measureSimCost(simulation, 2, &context, "", 3);
   ASSERT_TRUE(figures.gpu_steps.has_value());
   EXPECT_EQ(*figures.gpu_steps, 3u) << "limited to 3 of the 8 steps";
   EXPECT_EQ(*figures.gpu_resident_bytes, 16u) << "one buffer, 'total', at the 16-byte minimum";

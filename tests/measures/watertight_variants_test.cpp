@@ -26,10 +26,11 @@ struct Case {
   const char* variant;
 };
 
-const VariantInfo& findVariant(const Technique& technique, const std::string& name,
-                               std::vector<VariantInfo>* storage) {
+const techniques::VariantInfo& findVariant(const techniques::Technique& technique,
+                                           const std::string& name,
+                                           std::vector<techniques::VariantInfo>* storage) {
   *storage = technique.variants();
-  for (const VariantInfo& v : *storage) {
+  for (const techniques::VariantInfo& v : *storage) {
     if (v.name == name) return v;
   }
   throw std::runtime_error("no variant " + name);
@@ -38,18 +39,19 @@ const VariantInfo& findVariant(const Technique& technique, const std::string& na
 // Calls fn(asset name, patches) for every bundled asset the technique variant supports.
 template <class Fn>
 void forSupportedAssets(const Case& c, Fn fn) {
-  const Technique* technique = TechniqueRegistry::instance().find(c.technique);
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(c.technique);
   ASSERT_NE(technique, nullptr);
-  std::vector<VariantInfo> variants;
-  const VariantInfo& variant = findVariant(*technique, c.variant, &variants);
+  std::vector<techniques::VariantInfo> variants;
+  const techniques::VariantInfo& variant = findVariant(*technique, c.variant, &variants);
   size_t supported = 0;
-  for (const AssetRef& asset : bundledAssets()) {
-    const Mesh mesh = loadObjFile(asset.path);
+  for (const suite::AssetRef& asset : suite::bundledAssets()) {
+    const mesh::Mesh mesh = mesh::loadObjFile(asset.path);
     if (!technique->checkSupport(mesh).empty()) continue;
-    BuiltSurface patches;
+    techniques::BuiltSurface patches;
     try {
-      patches = buildSurface(*technique, mesh, variant);
-    } catch (const UnsupportedInput&) {
+      patches = techniques::buildSurface(*technique, mesh, variant);
+    } catch (const techniques::UnsupportedInput&) {
       continue;
     }
     ++supported;
@@ -62,10 +64,12 @@ void forSupportedAssets(const Case& c, Fn fn) {
 class SymmetricVariants : public ::testing::TestWithParam<Case> {};
 
 TEST_P(SymmetricVariants, AreBitwiseWatertightOnCpuFloat) {
-  forSupportedAssets(GetParam(), [](const std::string& asset, const SurfacePatches& patches) {
+  forSupportedAssets(GetParam(), [](const std::string& asset,
+                                    const techniques::SurfacePatches& patches) {
     for (tess::Spacing spacing : kSpacings) {
       for (float level : kLevels) {
-        const CrackFigures f = measureCracks(patches, spacing, level, CrackBackend::kCpuFloat);
+        const measures::CrackFigures f =
+            measures::measureCracks(patches, spacing, level, measures::CrackBackend::kCpuFloat);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
         EXPECT_EQ(f.points_not_equal, 0u)
             << asset << " " << tess::toString(spacing) << " level " << level
@@ -78,11 +82,12 @@ TEST_P(SymmetricVariants, AreBitwiseWatertightOnCpuFloat) {
 
 TEST_P(SymmetricVariants, AreBitwiseWatertightInTheLavapipeCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  forSupportedAssets(GetParam(), [&](const std::string& asset, const SurfacePatches& patches) {
+  forSupportedAssets(GetParam(), [&](const std::string& asset,
+                                     const techniques::SurfacePatches& patches) {
     for (tess::Spacing spacing : kSpacings) {
       for (float level : kLevels) {
-        const CrackFigures f =
-            measureCracks(patches, spacing, level, CrackBackend::kGpu, &context);
+        const measures::CrackFigures f = measures::measureCracks(
+            patches, spacing, level, measures::CrackBackend::kGpu, &context);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
         EXPECT_EQ(f.points_not_equal, 0u)
             << asset << " " << tess::toString(spacing) << " level " << level;
@@ -104,9 +109,9 @@ INSTANTIATE_TEST_SUITE_P(Techniques, SymmetricVariants,
 TEST(AsymmetricVariant, OpensGapsSoTheMeasureCanFail) {
   size_t unequal = 0;
   forSupportedAssets({"acc", "asymmetric"},
-                     [&](const std::string&, const SurfacePatches& patches) {
-                       unequal += measureCracks(patches, tess::Spacing::kInteger, 16.0f,
-                                                CrackBackend::kCpuFloat)
+                     [&](const std::string&, const techniques::SurfacePatches& patches) {
+                       unequal += measures::measureCracks(patches, tess::Spacing::kInteger, 16.0f,
+                                                          measures::CrackBackend::kCpuFloat)
                                       .points_not_equal;
                      });
   EXPECT_GT(unequal, 0u);
@@ -118,16 +123,17 @@ TEST(AsymmetricVariant, OpensGapsSoTheMeasureCanFail) {
 TEST(ImpreciseVariant, WithoutPreciseTheDriverBreaksSymmetry) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   uint64_t gpu_unequal = 0, cpu_unequal = 0, device_ulp = 0;
-  forSupportedAssets({"acc", "symmetric_imprecise"}, [&](const std::string&,
-                                                         const SurfacePatches& patches) {
-    const CrackFigures gpu =
-        measureCracks(patches, tess::Spacing::kInteger, 16, CrackBackend::kGpu, &context);
-    const CrackFigures cpu =
-        measureCracks(patches, tess::Spacing::kInteger, 16, CrackBackend::kCpuFloat);
-    gpu_unequal += gpu.points_not_equal;
-    cpu_unequal += cpu.points_not_equal;
-    device_ulp = std::max(device_ulp, gpu.device_max_ulp);
-  });
+  forSupportedAssets({"acc", "symmetric_imprecise"},
+                     [&](const std::string&, const techniques::SurfacePatches& patches) {
+                       const measures::CrackFigures gpu =
+                           measures::measureCracks(patches, tess::Spacing::kInteger, 16,
+                                                   measures::CrackBackend::kGpu, &context);
+                       const measures::CrackFigures cpu = measures::measureCracks(
+                           patches, tess::Spacing::kInteger, 16, measures::CrackBackend::kCpuFloat);
+                       gpu_unequal += gpu.points_not_equal;
+                       cpu_unequal += cpu.points_not_equal;
+                       device_ulp = std::max(device_ulp, gpu.device_max_ulp);
+                     });
   std::printf("symmetric without precise, level 16: %llu shared points not bitwise equal on "
               "lavapipe, %llu on the CPU; capture up to %llu ulp from the CPU twin\n",
               (unsigned long long)gpu_unequal, (unsigned long long)cpu_unequal,

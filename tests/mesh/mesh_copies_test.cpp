@@ -13,31 +13,33 @@ namespace tb {
 namespace {
 
 TEST(MeshCopies, TopologyAndTagsRepeatOncePerCopy) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_single_crease.obj"));
+  const mesh::Mesh mesh =
+      mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_single_crease.obj"));
   ASSERT_FALSE(mesh.tags.creases.empty());
-  const Topology one = buildTopology(mesh);
+  const mesh::Topology one = mesh::buildTopology(mesh);
   for (int copies : {1, 4, 7}) {
-    const Mesh many = translatedCopies(mesh, copies);
-    const Topology topology = buildTopology(many);
+    const mesh::Mesh many = mesh::translatedCopies(mesh, copies);
+    const mesh::Topology topology = mesh::buildTopology(many);
     EXPECT_EQ(many.faceCount(), copies * mesh.faceCount());
     EXPECT_EQ(topology.edges.size(), copies * one.edges.size());
     EXPECT_EQ(topology.boundaryEdgeCount(), copies * one.boundaryEdgeCount());
     EXPECT_EQ(topology.component_count, copies * one.component_count);
     ASSERT_EQ(many.tags.creases.size(), copies * mesh.tags.creases.size());
     // The last copy's creases sit on its own edges, with the original sharpness.
-    const Crease& last = many.tags.creases.back();
+    const mesh::Crease& last = many.tags.creases.back();
     EXPECT_GE(topology.findEdge(last.v0, last.v1), 0);
     EXPECT_EQ(last.sharpness, mesh.tags.creases.back().sharpness);
   }
 }
 
 TEST(MeshCopies, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const int copies = 5;
-  const Mesh many = translatedCopies(mesh, copies);
+  const mesh::Mesh many = mesh::translatedCopies(mesh, copies);
   const size_t n = mesh.positions.size();
   for (size_t i = 0; i < n; ++i) EXPECT_EQ(many.positions[i].x, mesh.positions[i].x);
-  std::vector<Vec3d> lo(copies, Vec3d{1e300, 1e300, 1e300}), hi(copies, Vec3d{-1e300, -1e300, -1e300});
+  std::vector<mesh::Vec3d> lo(copies, mesh::Vec3d{1e300, 1e300, 1e300}),
+      hi(copies, mesh::Vec3d{-1e300, -1e300, -1e300});
   for (size_t i = 0; i < many.positions.size(); ++i) {
     const size_t c = i / n;
     for (int k = 0; k < 3; ++k) {
@@ -52,7 +54,7 @@ TEST(MeshCopies, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
       EXPECT_TRUE(separated) << "copies " << a << " and " << b << " overlap";
     }
   }
-  EXPECT_THROW(translatedCopies(mesh, 0), std::invalid_argument);
+  EXPECT_THROW(mesh::translatedCopies(mesh, 0), std::invalid_argument);
 }
 
 }  // namespace

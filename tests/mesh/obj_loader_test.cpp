@@ -13,15 +13,15 @@ namespace {
 
 std::string errorOf(const std::string& text) {
   try {
-    loadObjText(text, "test.obj");
-  } catch (const InputError& error) {
+    mesh::loadObjText(text, "test.obj");
+  } catch (const mesh::InputError& error) {
     return error.what();
   }
   return "";
 }
 
 TEST(ObjLoader, LoadsCubeCountsAndSplitNormals) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   EXPECT_EQ(mesh.positions.size(), 8u);
   EXPECT_EQ(mesh.faceCount(), 6u);
   EXPECT_TRUE(mesh.allFacesOfSize(4));
@@ -32,7 +32,8 @@ TEST(ObjLoader, LoadsCubeCountsAndSplitNormals) {
 }
 
 TEST(ObjLoader, ReadsCreaseTagsAndBoundaryMapping) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
+  const mesh::Mesh mesh =
+      mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
   ASSERT_EQ(mesh.tags.creases.size(), 12u);
   EXPECT_EQ(mesh.tags.creases[0].v0, 0u);
   EXPECT_EQ(mesh.tags.creases[0].v1, 1u);
@@ -40,27 +41,28 @@ TEST(ObjLoader, ReadsCreaseTagsAndBoundaryMapping) {
   EXPECT_EQ(mesh.tags.creases[0].sharpness, 5.0);
   EXPECT_EQ(mesh.tags.creases[11].sharpness, double(0.1f));
   // OBJ value 2 is edge-only (the reverse of Sdc's enum order).
-  EXPECT_EQ(mesh.tags.boundary, BoundaryInterpolation::kEdgeOnly);
+  EXPECT_EQ(mesh.tags.boundary, mesh::BoundaryInterpolation::kEdgeOnly);
   EXPECT_TRUE(mesh.tags.boundary_from_tag);
 }
 
 TEST(ObjLoader, BoundaryTagOneIsEdgeAndCorner) {
-  const Mesh mesh = loadObjText(
+  const mesh::Mesh mesh = mesh::loadObjText(
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt interpolateboundary 1/0/0 1\n", "tag.obj");
-  EXPECT_EQ(mesh.tags.boundary, BoundaryInterpolation::kEdgeAndCorner);
+  EXPECT_EQ(mesh.tags.boundary, mesh::BoundaryInterpolation::kEdgeAndCorner);
 }
 
 TEST(ObjLoader, ReadsCornerTags) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube_corner3.obj"));
+  const mesh::Mesh mesh =
+      mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube_corner3.obj"));
   ASSERT_FALSE(mesh.tags.corners.empty());
   EXPECT_GT(mesh.tags.corners[0].sharpness, 0.0);
 }
 
 TEST(ObjLoader, ComputesNormalsWhenAbsent) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/loop_cube.obj"));
   EXPECT_TRUE(mesh.normals_computed);
   ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
-  for (const Vec3d& n : mesh.normals) EXPECT_NEAR(length(n), 1.0, 1e-12);
+  for (const mesh::Vec3d& n : mesh.normals) EXPECT_NEAR(length(n), 1.0, 1e-12);
 }
 
 TEST(ObjLoader, AngleWeightedNormalOfCubeCornerIsTheDiagonal) {
@@ -68,8 +70,8 @@ TEST(ObjLoader, AngleWeightedNormalOfCubeCornerIsTheDiagonal) {
   const std::string cube =
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
       "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
-  const Mesh mesh = loadObjText(cube, "cube.obj");
-  const Vec3d n = mesh.normals[6];
+  const mesh::Mesh mesh = mesh::loadObjText(cube, "cube.obj");
+  const mesh::Vec3d n = mesh.normals[6];
   const double k = 1.0 / std::sqrt(3.0);
   EXPECT_NEAR(n.x, k, 1e-12);
   EXPECT_NEAR(n.y, k, 1e-12);
@@ -77,7 +79,7 @@ TEST(ObjLoader, AngleWeightedNormalOfCubeCornerIsTheDiagonal) {
 }
 
 TEST(ObjLoader, NegativeIndicesAreRelative) {
-  const Mesh mesh = loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", "rel.obj");
+  const mesh::Mesh mesh = mesh::loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", "rel.obj");
   ASSERT_EQ(mesh.faceCount(), 1u);
   EXPECT_EQ(mesh.facePositions(0)[0], 0u);
   EXPECT_EQ(mesh.facePositions(0)[2], 2u);
@@ -85,9 +87,9 @@ TEST(ObjLoader, NegativeIndicesAreRelative) {
 
 TEST(ObjLoader, MissingFileNamesTheFile) {
   try {
-    loadObjFile("/nonexistent/dir/mesh.obj");
+    mesh::loadObjFile("/nonexistent/dir/mesh.obj");
     FAIL() << "expected InputError";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_EQ(error.file(), "/nonexistent/dir/mesh.obj");
     EXPECT_NE(std::string(error.what()).find("cannot open"), std::string::npos);
   }
@@ -97,9 +99,9 @@ TEST(ObjLoader, EmptyFileIsRejected) {
   const auto dir = testing::scratchDirectory("empty_obj");
   const std::string path = testing::writeTextFile(dir / "empty.obj", "\n\n");
   try {
-    loadObjFile(path);
+    mesh::loadObjFile(path);
     FAIL() << "expected InputError";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("empty"), std::string::npos);
   }
 }
@@ -186,7 +188,7 @@ TEST(ObjLoader, CoordinateTinyobjloaderReadsAsInfinityIsRejected) {
 // so the scan saw one face "f 1 2 3" where tinyobjloader read "f 1 2 9" (9 > 3 positions),
 // and computing normals read past the positions.
 TEST(ObjLoader, LoneCarriageReturnEndsALineAsInTinyobjloader) {
-  const Mesh mesh = loadObjText("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", "cr.obj");
+  const mesh::Mesh mesh = mesh::loadObjText("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", "cr.obj");
   EXPECT_EQ(mesh.positions.size(), 3u);
   ASSERT_EQ(mesh.faceCount(), 1u);
   EXPECT_EQ(mesh.face_lines[0], 4u);
@@ -194,8 +196,9 @@ TEST(ObjLoader, LoneCarriageReturnEndsALineAsInTinyobjloader) {
   EXPECT_NE(error.find("line 4"), std::string::npos) << error;
   EXPECT_NE(error.find("vertex index 9 is out of range"), std::string::npos) << error;
   // \r\n is one line end, not two.
-  EXPECT_EQ(loadObjText("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n", "crlf.obj").face_lines[0],
-            4u);
+  EXPECT_EQ(
+      mesh::loadObjText("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n", "crlf.obj").face_lines[0],
+      4u);
 }
 
 // Found by tests/fuzz: for "2/" tinyobjloader reads the next corner's number as the

@@ -13,7 +13,7 @@ namespace tb {
 namespace {
 
 // Decodes PNG bytes to 8-bit RGB with libpng, or fails the test.
-RgbImage decodePng(const std::string& bytes) {
+pictures::RgbImage decodePng(const std::string& bytes) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
@@ -21,7 +21,7 @@ RgbImage decodePng(const std::string& bytes) {
     return {};
   }
   image.format = PNG_FORMAT_RGB;
-  RgbImage decoded(image.width, image.height);
+  pictures::RgbImage decoded(image.width, image.height);
   if (!png_image_finish_read(&image, nullptr, decoded.rgb.data(), 0, nullptr)) {
     ADD_FAILURE() << "libpng cannot read the pixels: " << image.message;
   }
@@ -29,8 +29,8 @@ RgbImage decodePng(const std::string& bytes) {
 }
 
 // A picture with every kind of content: gradients, noise (a fixed LCG) and flat areas.
-RgbImage testImage(uint32_t width, uint32_t height) {
-  RgbImage image(width, height);
+pictures::RgbImage testImage(uint32_t width, uint32_t height) {
+  pictures::RgbImage image(width, height);
   uint32_t state = 12345;
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
@@ -48,11 +48,11 @@ RgbImage testImage(uint32_t width, uint32_t height) {
 TEST(PngWriter, RoundTripsThroughLibpngsReader) {
   for (const auto& [width, height] :
        {std::pair{37u, 23u}, std::pair{1u, 1u}, std::pair{320u, 354u}}) {
-    const RgbImage original = testImage(width, height);
-    const std::string bytes = encodePng(original);
+    const pictures::RgbImage original = testImage(width, height);
+    const std::string bytes = pictures::encodePng(original);
     ASSERT_GT(bytes.size(), 8u);
     EXPECT_EQ(bytes.substr(1, 3), "PNG");
-    const RgbImage decoded = decodePng(bytes);
+    const pictures::RgbImage decoded = decodePng(bytes);
     EXPECT_EQ(decoded.width_px, width);
     EXPECT_EQ(decoded.height_px, height);
     EXPECT_EQ(decoded.rgb, original.rgb);
@@ -60,22 +60,22 @@ TEST(PngWriter, RoundTripsThroughLibpngsReader) {
 }
 
 TEST(PngWriter, IsDeterministicAndCarriesNoTime) {
-  const RgbImage image = testImage(64, 48);
-  const std::string first = encodePng(image);
-  EXPECT_EQ(encodePng(image), first);
+  const pictures::RgbImage image = testImage(64, 48);
+  const std::string first = pictures::encodePng(image);
+  EXPECT_EQ(pictures::encodePng(image), first);
   EXPECT_EQ(first.find("tIME"), std::string::npos);
   EXPECT_EQ(first.find("tEXt"), std::string::npos);
   // A one-pixel change changes the file.
-  RgbImage changed = image;
+  pictures::RgbImage changed = image;
   changed.set(10, 40, {1, 2, 3});
-  EXPECT_NE(encodePng(changed), first);
+  EXPECT_NE(pictures::encodePng(changed), first);
 }
 
 TEST(PngWriter, RefusesAnImageWhosePixelsDoNotFitItsSize) {
-  RgbImage broken(4, 4);
+  pictures::RgbImage broken(4, 4);
   broken.rgb.pop_back();
-  EXPECT_THROW(encodePng(broken), std::invalid_argument);
-  EXPECT_THROW(encodePng(RgbImage{}), std::invalid_argument);
+  EXPECT_THROW(pictures::encodePng(broken), std::invalid_argument);
+  EXPECT_THROW(pictures::encodePng(pictures::RgbImage{}), std::invalid_argument);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ namespace {
 
 using Files = std::map<std::string, std::string>;
 
-WriteFileFn collectInto(Files* files) {
+pictures::WriteFileFn collectInto(Files* files) {
   return [files](const std::string& path, const std::string& bytes) {
     EXPECT_TRUE(files->emplace(path, bytes).second) << path << " written twice";
   };
@@ -29,69 +29,71 @@ WriteFileFn collectInto(Files* files) {
 
 // A small run: the error measure of acc and pn_triangles (every variant) on a quad torus
 // and a triangle cube (acc skips the cube).
-const Results& smallRun() {
-  static const Results results = [] {
-    SuiteSelection selection;
-    selection.techniques = {TechniqueRegistry::instance().find("acc"),
-                            TechniqueRegistry::instance().find("pn_triangles")};
-    selection.assets = {resolveAsset("opensubdiv/catmark_torus"),
-                        resolveAsset("opensubdiv/loop_cube")};
-    selection.measures = {MeasureRegistry::instance().find("error")};
-    Results r;
-    runSuite(selection, {}, &r);
+const results::Results& smallRun() {
+  static const results::Results results = [] {
+    suite::SuiteSelection selection;
+    selection.techniques = {techniques::TechniqueRegistry::instance().find("acc"),
+                            techniques::TechniqueRegistry::instance().find("pn_triangles")};
+    selection.assets = {suite::resolveAsset("opensubdiv/catmark_torus"),
+                        suite::resolveAsset("opensubdiv/loop_cube")};
+    selection.measures = {measures::MeasureRegistry::instance().find("error")};
+    results::Results r;
+    suite::runSuite(selection, {}, &r);
     return r;
   }();
   return results;
 }
 
 TEST(RunPictures, FileNamesFollowTechniqueAndAsset) {
-  EXPECT_EQ(errorPicturePath("acc", "opensubdiv/catmark_torus"),
+  EXPECT_EQ(pictures::errorPicturePath("acc", "opensubdiv/catmark_torus"),
             "pictures/acc--opensubdiv--catmark_torus--error.png");
-  EXPECT_EQ(wireframePicturePath("pn_triangles", "my dir/x+y.obj"),
+  EXPECT_EQ(pictures::wireframePicturePath("pn_triangles", "my dir/x+y.obj"),
             "pictures/pn_triangles--my_dir--x_y.obj--wireframe.png");
 }
 
 TEST(RunPictures, WithoutADeviceTheIndexSaysSkipped) {
   Files files;
-  const PicturesIndex index =
-      renderRunPictures(smallRun(), nullptr, "no ICD found", collectInto(&files));
+  const pictures::PicturesIndex index =
+      pictures::renderRunPictures(smallRun(), nullptr, "no ICD found", collectInto(&files));
   EXPECT_EQ(index.status, "skipped");
   EXPECT_NE(index.reason.find("no ICD found"), std::string::npos);
   EXPECT_TRUE(index.pictures.empty());
   ASSERT_EQ(files.size(), 1u);
-  const auto json = nlohmann::json::parse(files.at(kPicturesIndexPath));
+  const auto json = nlohmann::json::parse(files.at(pictures::kPicturesIndexPath));
   EXPECT_EQ(json.at("status"), "skipped");
   EXPECT_TRUE(json.at("pictures").empty());
   // A device name that matches no device is the same skip, never a crash.
   Files by_name;
-  const PicturesIndex unnamed =
-      renderRunPictures(smallRun(), "no-such-device-7f3a", collectInto(&by_name));
+  const pictures::PicturesIndex unnamed =
+      pictures::renderRunPictures(smallRun(), "no-such-device-7f3a", collectInto(&by_name));
   EXPECT_EQ(unnamed.status, "skipped");
   EXPECT_EQ(by_name.size(), 1u);
 }
 
 TEST(RunPictures, OnePairPerDefaultVariantRecordWithAnErrorResult) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Results& results = smallRun();
+  const results::Results& results = smallRun();
   // Expected from the records themselves.
   std::vector<std::pair<std::string, std::string>> expected;
-  for (const Record& record : results.records) {
-    const Technique* technique = TechniqueRegistry::instance().find(record.technique);
+  for (const results::Record& record : results.records) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(record.technique);
     if (record.variant != technique->variants().front().name) continue;
-    for (const MeasureResult& m : record.measures) {
-      if (m.measure == "error" && m.status == MeasureStatus::kOk) {
+    for (const results::MeasureResult& m : record.measures) {
+      if (m.measure == "error" && m.status == results::MeasureStatus::kOk) {
         expected.push_back({record.technique, record.asset});
       }
     }
   }
   ASSERT_GE(expected.size(), 3u);  // acc torus, pn torus, pn cube
   Files files;
-  const PicturesIndex index = renderRunPictures(results, &context, "", collectInto(&files));
+  const pictures::PicturesIndex index =
+      pictures::renderRunPictures(results, &context, "", collectInto(&files));
   EXPECT_EQ(index.status, "ok");
   ASSERT_EQ(index.pictures.size(), expected.size());
   EXPECT_EQ(files.size(), 2 * expected.size() + 1);
   for (size_t i = 0; i < expected.size(); ++i) {
-    const PictureEntry& entry = index.pictures[i];
+    const pictures::PictureEntry& entry = index.pictures[i];
     EXPECT_EQ(entry.status, "ok") << entry.reason;
     EXPECT_EQ(entry.technique, expected[i].first);
     EXPECT_EQ(entry.asset, expected[i].second);
@@ -110,7 +112,7 @@ TEST(RunPictures, OnePairPerDefaultVariantRecordWithAnErrorResult) {
       png_image_free(&image);
     }
   }
-  const auto json = nlohmann::json::parse(files.at(kPicturesIndexPath));
+  const auto json = nlohmann::json::parse(files.at(pictures::kPicturesIndexPath));
   EXPECT_EQ(json.at("status"), "ok");
   ASSERT_EQ(json.at("pictures").size(), expected.size());
   EXPECT_EQ(json.at("pictures")[0].at("error_png"), index.pictures[0].error_png);
@@ -118,29 +120,31 @@ TEST(RunPictures, OnePairPerDefaultVariantRecordWithAnErrorResult) {
 
   // The same run again: the same bytes.
   Files again;
-  renderRunPictures(results, &context, "", collectInto(&again));
+  pictures::renderRunPictures(results, &context, "", collectInto(&again));
   EXPECT_EQ(again, files);
 }
 
 TEST(RunPictures, NoPictureWithoutAnOkErrorResult) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  Results results = smallRun();
+  results::Results results = smallRun();
   size_t before = 0;
   {
     Files files;
-    before = renderRunPictures(results, &context, "", collectInto(&files)).pictures.size();
+    before =
+        pictures::renderRunPictures(results, &context, "", collectInto(&files)).pictures.size();
   }
   ASSERT_GT(before, 0u);
   // The first picture's record loses its error result's ok status.
   const std::string technique = results.records.front().technique;
   const std::string asset = results.records.front().asset;
-  for (MeasureResult& m : results.records.front().measures) {
-    if (m.measure == "error") m.status = MeasureStatus::kSkipped;
+  for (results::MeasureResult& m : results.records.front().measures) {
+    if (m.measure == "error") m.status = results::MeasureStatus::kSkipped;
   }
   Files files;
-  const PicturesIndex index = renderRunPictures(results, &context, "", collectInto(&files));
+  const pictures::PicturesIndex index =
+      pictures::renderRunPictures(results, &context, "", collectInto(&files));
   EXPECT_EQ(index.pictures.size(), before - 1);
-  for (const PictureEntry& entry : index.pictures) {
+  for (const pictures::PictureEntry& entry : index.pictures) {
     EXPECT_FALSE(entry.technique == technique && entry.asset == asset);
   }
 }

@@ -19,14 +19,14 @@ namespace {
 using testing::loadShape;
 
 // Runs `action`, expects an InputError and returns it (an empty one when none came).
-InputError expectInputError(const std::function<void()>& action) {
+mesh::InputError expectInputError(const std::function<void()>& action) {
   try {
     action();
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     return error;
   }
   ADD_FAILURE() << "no InputError thrown";
-  return InputError("", "", "");
+  return mesh::InputError("", "", "");
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -34,10 +34,11 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 TEST(BadInput, ApproxLevelAboveTenIsRejected) {
-  const Mesh mesh = loadShape("catmark_cube.obj");
+  const mesh::Mesh mesh = loadShape("catmark_cube.obj");
   LimitOptions options;
   options.approx_level_smooth = 11;
-  InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark, options); });
+  mesh::InputError error =
+      expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark, options); });
   EXPECT_EQ(error.element(), "option 'approx_level_smooth'");
   EXPECT_TRUE(contains(error.file(), "catmark_cube.obj"));
   EXPECT_TRUE(contains(error.rule(), "11"));
@@ -61,7 +62,7 @@ TEST(BadInput, FaceIndexOutOfRangeNamesTheFace) {
   for (const auto& call : std::vector<std::function<void()>>{
            [&] { surface.evaluate(6, 0.5, 0.5); }, [&] { surface.face(6); },
            [&] { surface.hasLimitSurface(6); }, [&] { surface.isRegular(6); }}) {
-    const InputError error = expectInputError(call);
+    const mesh::InputError error = expectInputError(call);
     EXPECT_EQ(error.element(), "face 6");
     EXPECT_TRUE(contains(error.rule(), "out of range"));
   }
@@ -70,7 +71,7 @@ TEST(BadInput, FaceIndexOutOfRangeNamesTheFace) {
 }
 
 TEST(BadInput, LoopSurfaceFromQuadMeshIsRejected) {
-  const InputError error =
+  const mesh::InputError error =
       expectInputError([] { LimitSurface(loadShape("catmark_cube.obj"), osd::Scheme::kLoop); });
   EXPECT_TRUE(contains(error.element(), "face 0"));
   EXPECT_TRUE(contains(error.rule(), "Loop"));
@@ -78,17 +79,17 @@ TEST(BadInput, LoopSurfaceFromQuadMeshIsRejected) {
 }
 
 TEST(BadInput, HoleFaceHasNoLimitToEvaluate) {
-  Mesh mesh = loadShape("catmark_torus.obj");
+  mesh::Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {2};
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
-  const InputError error = expectInputError([&] { surface.evaluate(2, 0.5, 0.5); });
+  const mesh::InputError error = expectInputError([&] { surface.evaluate(2, 0.5, 0.5); });
   EXPECT_TRUE(contains(error.element(), "face 2"));
   EXPECT_TRUE(contains(error.rule(), "hole"));
 }
 
 TEST(BadInput, BoundaryFaceWithoutInterpolationHasNoLimit) {
-  Mesh mesh = loadShape("catmark_edgecorner.obj");
-  mesh.tags.boundary = BoundaryInterpolation::kNone;
+  mesh::Mesh mesh = loadShape("catmark_edgecorner.obj");
+  mesh.tags.boundary = mesh::BoundaryInterpolation::kNone;
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   size_t without = 0;
   for (size_t f = 0; f < surface.faceCount(); ++f) {
@@ -108,7 +109,7 @@ TEST(BadInput, ParameterOutsideTheFaceDomain) {
 }
 
 TEST(BadInput, NonFiniteCoordinateIsRejected) {
-  Mesh mesh = loadShape("catmark_cube.obj");
+  mesh::Mesh mesh = loadShape("catmark_cube.obj");
   mesh.positions[3].y = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark); }).element(),
             "vertex 3");
@@ -116,10 +117,11 @@ TEST(BadInput, NonFiniteCoordinateIsRejected) {
 }
 
 TEST(BadInput, MeshWithoutFacesIsRejected) {
-  Mesh mesh;
+  mesh::Mesh mesh;
   mesh.source = "empty.obj";
   mesh.positions = {{0, 0, 0}};
-  const InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark); });
+  const mesh::InputError error =
+      expectInputError([&] { LimitSurface(mesh, osd::Scheme::kCatmullClark); });
   EXPECT_EQ(error.file(), "empty.obj");
   EXPECT_TRUE(contains(error.rule(), "no faces"));
 }
@@ -128,7 +130,7 @@ TEST(BadInput, MeshWithoutFacesIsRejected) {
 // the reason OpenSubdiv prints goes into the InputError.
 TEST(BadInput, TopologyOpenSubdivRejectsCarriesItsReason) {
   constexpr uint32_t kFan = 65536;
-  Mesh mesh;
+  mesh::Mesh mesh;
   mesh.source = "fan.obj";
   mesh.positions.push_back({0, 0, 0});
   for (uint32_t i = 0; i < kFan; ++i) {
@@ -138,7 +140,7 @@ TEST(BadInput, TopologyOpenSubdivRejectsCarriesItsReason) {
     const uint32_t corners[3] = {0, 1 + i, 1 + (i + 1) % kFan};
     mesh.addFace(corners, {}, {}, 0);
   }
-  const InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kLoop); });
+  const mesh::InputError error = expectInputError([&] { LimitSurface(mesh, osd::Scheme::kLoop); });
   EXPECT_EQ(error.element(), "mesh topology");
   EXPECT_TRUE(contains(error.rule(), "valence 65536")) << error.rule();
 }
@@ -151,7 +153,7 @@ TEST(BadInput, FaceTooLargeForEmbree) {
   }
   text += "f";
   for (int i = 1; i <= 16; ++i) text.append(" ").append(std::to_string(i));
-  const Mesh mesh = loadObjText(text + "\n", "hexadecagon.obj");
+  const mesh::Mesh mesh = mesh::loadObjText(text + "\n", "hexadecagon.obj");
   EXPECT_TRUE(contains(expectInputError([&] { EmbreeSubdivision{mesh}; }).rule(), "15"));
   EXPECT_TRUE(contains(crossCheckIneligibility(mesh, osd::Scheme::kCatmullClark), "15"));
   EXPECT_NO_THROW(LimitSurface(mesh, osd::Scheme::kCatmullClark));  // Bfr takes any N

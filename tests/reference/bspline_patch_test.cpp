@@ -20,7 +20,7 @@ constexpr int kN = 7;  // grid vertices per direction (periodic in both)
 
 // Control point (i, j) of a bumpy torus; deliberately irregular so that no symmetry
 // can hide an index mistake.
-Vec3d controlPoint(int i, int j) {
+mesh::Vec3d controlPoint(int i, int j) {
   const double a = 2 * 3.14159265358979 * i / kN, b = 2 * 3.14159265358979 * j / kN;
   const double r = 1 + 0.07 * std::sin(3.0 * i + 5.0 * j) + 0.03 * i;
   return {(3 + r * std::cos(b)) * std::cos(a), (3 + r * std::cos(b)) * std::sin(a),
@@ -29,11 +29,11 @@ Vec3d controlPoint(int i, int j) {
 
 int wrap(int i) { return ((i % kN) + kN) % kN; }
 
-Mesh periodicGrid() {
+mesh::Mesh periodicGrid() {
   std::string text;
   for (int j = 0; j < kN; ++j) {
     for (int i = 0; i < kN; ++i) {
-      const Vec3d p = controlPoint(i, j);
+      const mesh::Vec3d p = controlPoint(i, j);
       text +=
           "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
     }
@@ -46,7 +46,7 @@ Mesh periodicGrid() {
           "f " + id(i, j) + " " + id(i + 1, j) + " " + id(i + 1, j + 1) + " " + id(i, j + 1) + "\n";
     }
   }
-  return loadObjText(text, "periodic_grid.obj");
+  return mesh::loadObjText(text, "periodic_grid.obj");
 }
 
 // Uniform cubic B-spline basis and its derivative at t in [0,1].
@@ -61,7 +61,7 @@ std::array<double, 4> basisDerivative(double t) {
 }
 
 TEST(BSplinePatch, RegularFacesEqualTheHandBuiltBicubicPatch) {
-  const Mesh mesh = periodicGrid();
+  const mesh::Mesh mesh = periodicGrid();
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   // Control points as read back from the mesh (the OBJ text rounds them).
@@ -76,10 +76,10 @@ TEST(BSplinePatch, RegularFacesEqualTheHandBuiltBicubicPatch) {
         for (int b = 0; b <= 10; ++b) {
           const double u = a / 10.0, v = b / 10.0;
           const auto bu = basis(u), bv = basis(v), du = basisDerivative(u), dv = basisDerivative(v);
-          Vec3d p, pu, pv;
+          mesh::Vec3d p, pu, pv;
           for (int r = 0; r < 4; ++r) {
             for (int s = 0; s < 4; ++s) {
-              const Vec3d c = cp(fi - 1 + r, fj - 1 + s);
+              const mesh::Vec3d c = cp(fi - 1 + r, fj - 1 + s);
               p = p + c * (bu[size_t(r)] * bv[size_t(s)]);
               pu = pu + c * (du[size_t(r)] * bv[size_t(s)]);
               pv = pv + c * (bu[size_t(r)] * dv[size_t(s)]);

@@ -21,15 +21,16 @@
 namespace tb::ref {
 namespace {
 
-Vec3d segmentClosest(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
-  const Vec3d d = b - a;
+mesh::Vec3d segmentClosest(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b) {
+  const mesh::Vec3d d = b - a;
   const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
   return a + d * t;
 }
 
-double oracleDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d n = cross(b - a, c - a);
-  const Vec3d q = p - n * (dot(p - a, n) / dot(n, n));
+double oracleDistance(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b,
+                      const mesh::Vec3d& c) {
+  const mesh::Vec3d n = cross(b - a, c - a);
+  const mesh::Vec3d q = p - n * (dot(p - a, n) / dot(n, n));
   const double wa = dot(cross(c - b, q - b), n), wb = dot(cross(a - c, q - c), n),
                wc = dot(cross(b - a, q - a), n);
   if (wa >= 0 && wb >= 0 && wc >= 0) return length(p - q);
@@ -37,7 +38,7 @@ double oracleDistance(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3
                    length(p - segmentClosest(p, c, a))});
 }
 
-Vec3d randomPoint(std::mt19937_64& rng, double scale) {
+mesh::Vec3d randomPoint(std::mt19937_64& rng, double scale) {
   std::uniform_real_distribution<double> u(-scale, scale);
   return {u(rng), u(rng), u(rng)};
 }
@@ -46,14 +47,15 @@ TEST(ClosestPoint, EricsonMatchesProjectionOracle) {
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 20000; ++trial) {
     // Every fourth triangle is a sliver, to reach the edge regions from inside.
-    const Vec3d a = randomPoint(rng, 1), b = randomPoint(rng, 1);
-    const Vec3d c = trial % 4 ? randomPoint(rng, 1) : a + (b - a) * 0.3 + randomPoint(rng, 1e-3);
-    const Vec3d p = randomPoint(rng, 2);
+    const mesh::Vec3d a = randomPoint(rng, 1), b = randomPoint(rng, 1);
+    const mesh::Vec3d c =
+        trial % 4 ? randomPoint(rng, 1) : a + (b - a) * 0.3 + randomPoint(rng, 1e-3);
+    const mesh::Vec3d p = randomPoint(rng, 2);
     const TrianglePoint hit = closestPointOnTriangle(p, a, b, c);
     const double expected = oracleDistance(p, a, b, c);
     EXPECT_NEAR(length(hit.point - p), expected, 1e-12 * (1 + expected)) << trial;
     // The barycentrics reproduce the point and lie in the triangle.
-    const Vec3d from_weights =
+    const mesh::Vec3d from_weights =
         a * hit.barycentric.x + b * hit.barycentric.y + c * hit.barycentric.z;
     EXPECT_LT(length(from_weights - hit.point), 1e-12) << trial;
     for (int k = 0; k < 3; ++k) EXPECT_GE(hit.barycentric[k], -1e-12) << trial;
@@ -62,7 +64,7 @@ TEST(ClosestPoint, EricsonMatchesProjectionOracle) {
 }
 
 TEST(ClosestPoint, DegenerateTriangleIsItsLongestEdge) {
-  const Vec3d a{0, 0, 0}, b{2, 0, 0}, c{1, 0, 0};  // collinear
+  const mesh::Vec3d a{0, 0, 0}, b{2, 0, 0}, c{1, 0, 0};  // collinear
   const TrianglePoint hit = closestPointOnTriangle({1.5, 1, 0}, a, b, c);
   EXPECT_NEAR(hit.point.x, 1.5, 1e-15);
   EXPECT_NEAR(hit.point.y, 0.0, 1e-15);
@@ -82,9 +84,9 @@ TEST(TriangleDistanceField, MatchesBruteForceOnRandomQueries) {
   double worst = 0;
   for (int q = 0; q < 1000; ++q) {
     // Half the queries far and wide, half just off the surface where triangles crowd.
-    const Vec3d query = q % 2
-                            ? randomPoint(rng, 0.8 * diagonal)
-                            : tessellation.positions[pick(rng)] + randomPoint(rng, 1e-3 * diagonal);
+    const mesh::Vec3d query =
+        q % 2 ? randomPoint(rng, 0.8 * diagonal)
+              : tessellation.positions[pick(rng)] + randomPoint(rng, 1e-3 * diagonal);
     double brute = std::numeric_limits<double>::infinity();
     for (const Triangle& t : tessellation.triangles) {
       const auto& p = tessellation.positions;
@@ -95,9 +97,9 @@ TEST(TriangleDistanceField, MatchesBruteForceOnRandomQueries) {
     EXPECT_NEAR(hit.distance, brute, 1e-6 * brute) << q;
     worst = std::max(worst, std::abs(hit.distance - brute) / brute);
     const Triangle& t = tessellation.triangles[hit.triangle];
-    const Vec3d from_weights = tessellation.positions[t[0]] * hit.barycentric.x +
-                               tessellation.positions[t[1]] * hit.barycentric.y +
-                               tessellation.positions[t[2]] * hit.barycentric.z;
+    const mesh::Vec3d from_weights = tessellation.positions[t[0]] * hit.barycentric.x +
+                                     tessellation.positions[t[1]] * hit.barycentric.y +
+                                     tessellation.positions[t[2]] * hit.barycentric.z;
     EXPECT_LT(length(from_weights - hit.point), 1e-12 * diagonal);
     EXPECT_NEAR(length(hit.point - query), hit.distance, 1e-15 * diagonal);
   }
@@ -105,18 +107,18 @@ TEST(TriangleDistanceField, MatchesBruteForceOnRandomQueries) {
 }
 
 TEST(TriangleDistanceField, EmptyMeshIsInfinitelyFar) {
-  const TriangleDistanceField field(std::span<const Vec3d>{}, std::span<const Triangle>{});
+  const TriangleDistanceField field(std::span<const mesh::Vec3d>{}, std::span<const Triangle>{});
   EXPECT_EQ(field.closest({1, 2, 3}).distance, std::numeric_limits<double>::infinity());
   EXPECT_EQ(field.closest({1, 2, 3}).triangle, kNoTriangle);
 }
 
 TEST(TriangleDistanceField, RejectsOutOfRangeCorners) {
-  const std::vector<Vec3d> positions{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<mesh::Vec3d> positions{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const std::vector<Triangle> triangles{{0, 1, 2}, {0, 2, 3}};
   try {
     TriangleDistanceField field(positions, triangles, "soup");
     FAIL() << "expected InputError";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_EQ(error.file(), "soup");
     EXPECT_EQ(error.element(), "triangle 1");
   }

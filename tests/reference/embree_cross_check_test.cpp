@@ -44,9 +44,10 @@ struct Agreement {
 
 // Corners of the sub-face where the control mesh is extraordinary: a vertex of valence
 // other than 4 (3 on a boundary), and the centre of an N-gon (valence N).
-std::vector<Vec2d> extraordinaryCorners(const Mesh& mesh, const Topology& topology, size_t f,
-                                        int sub_face) {
-  std::vector<Vec2d> corners;
+std::vector<mesh::Vec2d> extraordinaryCorners(const mesh::Mesh& mesh,
+                                              const mesh::Topology& topology, size_t f,
+                                              int sub_face) {
+  std::vector<mesh::Vec2d> corners;
   const int size = int(mesh.faceSize(f));
   const uint32_t v = mesh.facePositions(f)[size_t(sub_face)];
   const uint32_t regular = topology.on_boundary[v] ? 3 : 4;
@@ -64,10 +65,10 @@ std::vector<Vec2d> extraordinaryCorners(const Mesh& mesh, const Topology& topolo
   return corners;
 }
 
-Agreement compareShape(const Mesh& mesh) {
+Agreement compareShape(const mesh::Mesh& mesh) {
   const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
-  const Topology topology = buildTopology(mesh);
+  const mesh::Topology topology = mesh::buildTopology(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   size_t sub_faces = 0;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -80,17 +81,18 @@ Agreement compareShape(const Mesh& mesh) {
     const LimitFace face = bfr.face(f);
     const int size = face.faceSize();
     for (int k = 0; k < face.subFaceCount(); ++k) {
-      const std::vector<Vec2d> singular = extraordinaryCorners(mesh, topology, f, k);
-      for (const Vec2d& st : clusteredSubFacePoints(g)) {
-        const Vec2d uv = subFaceToFaceUv(osd::Scheme::kCatmullClark, size, k, st);
+      const std::vector<mesh::Vec2d> singular = extraordinaryCorners(mesh, topology, f, k);
+      for (const mesh::Vec2d& st : clusteredSubFacePoints(g)) {
+        const mesh::Vec2d uv = subFaceToFaceUv(osd::Scheme::kCatmullClark, size, k, st);
         const LimitPoint a = face.evaluate(uv.x, uv.y);
         const LimitPoint b = embree.evaluate(f, uv.x, uv.y);
         agreement.position =
             std::max(agreement.position, length(a.position - b.position) / diagonal);
         ++agreement.points;
-        const bool near_singular = std::any_of(singular.begin(), singular.end(), [&](Vec2d c) {
-          return std::max(std::abs(st.x - c.x), std::abs(st.y - c.y)) < kExtraordinaryExclusion;
-        });
+        const bool near_singular =
+            std::any_of(singular.begin(), singular.end(), [&](mesh::Vec2d c) {
+              return std::max(std::abs(st.x - c.x), std::abs(st.y - c.y)) < kExtraordinaryExclusion;
+            });
         if (near_singular) continue;
         agreement.derivative =
             std::max({agreement.derivative, length(a.du - b.du) / std::max(length(a.du), diagonal),
@@ -106,7 +108,7 @@ TEST(EmbreeCrossCheck, BfrMatchesEmbreeOnEveryEligibleCatmarkShape) {
   std::ostringstream skipped, measured;
   int compared = 0;
   for (const std::string& name : bundledShapes("catmark_")) {
-    const Mesh mesh = loadShape(name);
+    const mesh::Mesh mesh = loadShape(name);
     const std::string reason = crossCheckIneligibility(mesh, osd::Scheme::kCatmullClark);
     if (!reason.empty()) {
       skipped << "  " << name << ": " << reason << "\n";
@@ -129,7 +131,7 @@ TEST(EmbreeCrossCheck, BfrMatchesEmbreeOnEveryEligibleCatmarkShape) {
 }
 
 // An open tube: boundary vertices of valence 3 only, no corners.
-Mesh openTube() {
+mesh::Mesh openTube() {
   constexpr int kAround = 8, kRings = 4;
   std::string text;
   for (int j = 0; j < kRings; ++j) {
@@ -146,7 +148,7 @@ Mesh openTube() {
               std::to_string(b + kAround) + " " + std::to_string(a + kAround) + "\n";
     }
   }
-  return loadObjText(text, "tube.obj");
+  return mesh::loadObjText(text, "tube.obj");
 }
 
 // Oracle: Embree again, on open meshes under each boundary mode: EDGE_AND_CORNER ->
@@ -154,13 +156,13 @@ Mesh openTube() {
 // limit surface skipped). EDGE_ONLY at valence-2 corners is the one known mismatch.
 TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
   struct Case {
-    Mesh mesh;
-    BoundaryInterpolation boundary;
+    mesh::Mesh mesh;
+    mesh::BoundaryInterpolation boundary;
   };
   std::vector<Case> cases;
-  for (BoundaryInterpolation boundary :
-       {BoundaryInterpolation::kEdgeAndCorner, BoundaryInterpolation::kEdgeOnly,
-        BoundaryInterpolation::kNone}) {
+  for (mesh::BoundaryInterpolation boundary :
+       {mesh::BoundaryInterpolation::kEdgeAndCorner, mesh::BoundaryInterpolation::kEdgeOnly,
+        mesh::BoundaryInterpolation::kNone}) {
     cases.push_back({loadShape("catmark_edgecorner.obj"), boundary});
     cases.push_back({openTube(), boundary});
   }
@@ -168,7 +170,7 @@ TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
     c.mesh.tags.boundary = c.boundary;
     const std::string label = c.mesh.source + " mode " + std::to_string(int(c.boundary));
     const std::string reason = crossCheckIneligibility(c.mesh, osd::Scheme::kCatmullClark);
-    if (c.boundary == BoundaryInterpolation::kEdgeOnly && c.mesh.source != "tube.obj") {
+    if (c.boundary == mesh::BoundaryInterpolation::kEdgeOnly && c.mesh.source != "tube.obj") {
       EXPECT_NE(reason.find("valence-2 corner"), std::string::npos) << label;
       continue;
     }
@@ -186,12 +188,12 @@ TEST(EmbreeCrossCheck, BoundaryModesMapToEmbreeSubdivisionModes) {
 // Oracle: the documented conventions, held against Embree. Quads: Bfr (u,v) is
 // Embree (u,v); swapping u and v must not agree, so the comparison above has teeth.
 TEST(EmbreeCrossCheck, QuadOrientationIsOneToOne) {
-  const Mesh mesh = loadShape("catmark_cube.obj");
+  const mesh::Mesh mesh = loadShape("catmark_cube.obj");
   const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    const Vec3d p = bfr.evaluate(f, 0.2, 0.7).position;
+    const mesh::Vec3d p = bfr.evaluate(f, 0.2, 0.7).position;
     EXPECT_LT(length(p - embree.evaluateNative(f, 0.2f, 0.7f).position), 1e-6 * diagonal);
     EXPECT_GT(length(p - embree.evaluateNative(f, 0.7f, 0.2f).position), 1e-2 * diagonal);
   }
@@ -201,7 +203,7 @@ TEST(EmbreeCrossCheck, QuadOrientationIsOneToOne) {
 // Bfr's sub-faces: sub-face k at (s,t) is U = 2(k%4) + s + 0.5, V = 2(k/4) + t + 0.5.
 // The transposed (s,t) must disagree.
 TEST(EmbreeCrossCheck, NgonSubFacesMapToEmbreeSubPatches) {
-  const Mesh mesh = loadShape("catmark_nonquads.obj");
+  const mesh::Mesh mesh = loadShape("catmark_nonquads.obj");
   const LimitSurface bfr(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
@@ -211,7 +213,7 @@ TEST(EmbreeCrossCheck, NgonSubFacesMapToEmbreeSubPatches) {
     if (size == 4) continue;
     ++ngons;
     for (int k = 0; k < size; ++k) {
-      const Vec3d p = bfr.face(f).evaluateSubFace(k, 0.3, 0.8).position;
+      const mesh::Vec3d p = bfr.face(f).evaluateSubFace(k, 0.3, 0.8).position;
       const float u = float(2 * (k % 4) + 0.3 + 0.5), v = float(2 * (k / 4) + 0.8 + 0.5);
       EXPECT_LT(length(p - embree.evaluateNative(f, u, v).position), 1e-6 * diagonal)
           << "face " << f << " sub-face " << k;
@@ -223,7 +225,7 @@ TEST(EmbreeCrossCheck, NgonSubFacesMapToEmbreeSubPatches) {
   EXPECT_GE(ngons, 3);
 }
 
-Mesh gridWithTags(const std::string& tags) {
+mesh::Mesh gridWithTags(const std::string& tags) {
   // 4x4 quads over a 5x5 vertex grid (vertex index = 5 y + x, 0-based in tags).
   std::string text;
   for (int y = 0; y < 5; ++y) {
@@ -239,7 +241,7 @@ Mesh gridWithTags(const std::string& tags) {
               " " + std::to_string(a + 5) + "\n";
     }
   }
-  return loadObjText(text + tags, "grid.obj");
+  return mesh::loadObjText(text + tags, "grid.obj");
 }
 
 // Oracle: the rule list in cross_check_eligibility.h, one small mesh per rule.
@@ -277,7 +279,8 @@ TEST(EmbreeCrossCheck, IneligibilityNamesTheReason) {
             "interior valence-2 vertex 1");
   const std::string non_manifold =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  EXPECT_NE(crossCheckIneligibility(loadObjText(non_manifold, "fin.obj"), osd::Scheme::kCatmullClark)
+  EXPECT_NE(crossCheckIneligibility(mesh::loadObjText(non_manifold, "fin.obj"),
+                                    osd::Scheme::kCatmullClark)
                 .find("non-manifold"),
             std::string::npos);
 }

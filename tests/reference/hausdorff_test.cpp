@@ -25,7 +25,7 @@ namespace tb::ref {
 namespace {
 
 struct Soup {
-  std::vector<Vec3d> positions;
+  std::vector<mesh::Vec3d> positions;
   std::vector<Triangle> triangles;
   TriangleMeshRef view() const { return {positions, triangles}; }
 };
@@ -56,7 +56,7 @@ Soup icosphere(int levels, double radius) {
     }
     s.triangles = std::move(finer);
   }
-  for (Vec3d& p : s.positions) p = normalize(p) * radius;
+  for (mesh::Vec3d& p : s.positions) p = normalize(p) * radius;
   return s;
 }
 
@@ -76,7 +76,7 @@ TEST(Hausdorff, SphereAgainstScaledSphereIsOnePercentOfRadius) {
   constexpr double kRadius = 2.0;
   const Soup a = icosphere(3, kRadius);  // 1280 triangles
   Soup b = a;
-  for (Vec3d& p : b.positions) p = p * 1.01;
+  for (mesh::Vec3d& p : b.positions) p = p * 1.01;
   const HausdorffResult result = hausdorff(a.view(), b.view());
   const double known = 0.01 * kRadius;
   // Round-off of a few operations on coordinates of size ~2: 1e-12 relative is ample.

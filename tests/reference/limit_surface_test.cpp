@@ -30,16 +30,16 @@ constexpr double kPi = std::numbers::pi;
 // e_{i+1}.
 struct VertexRing {
   uint32_t vertex = 0;
-  std::vector<Vec3d> e, f;
+  std::vector<mesh::Vec3d> e, f;
   size_t face = 0;  // one incident face, and v's corner in it
   int corner = 0;
 };
 
-std::vector<VertexRing> untaggedInteriorRings(const Mesh& mesh, uint32_t face_size) {
-  const Topology topology = buildTopology(mesh);
+std::vector<VertexRing> untaggedInteriorRings(const mesh::Mesh& mesh, uint32_t face_size) {
+  const mesh::Topology topology = mesh::buildTopology(mesh);
   std::set<uint32_t> tagged;
-  for (const Crease& c : mesh.tags.creases) tagged.insert({c.v0, c.v1});
-  for (const Corner& c : mesh.tags.corners) tagged.insert(c.vertex);
+  for (const mesh::Crease& c : mesh.tags.creases) tagged.insert({c.v0, c.v1});
+  for (const mesh::Corner& c : mesh.tags.corners) tagged.insert(c.vertex);
   std::vector<std::vector<std::pair<size_t, int>>> incident(mesh.positions.size());
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto corners = mesh.facePositions(f);
@@ -71,16 +71,16 @@ std::vector<VertexRing> untaggedInteriorRings(const Mesh& mesh, uint32_t face_si
   return rings;
 }
 
-Vec2d quadCornerUv(int k) { return {double(k == 1 || k == 2), double(k >= 2)}; }
-Vec2d triangleCornerUv(int k) { return {double(k == 1), double(k == 2)}; }
+mesh::Vec2d quadCornerUv(int k) { return {double(k == 1 || k == 2), double(k >= 2)}; }
+mesh::Vec2d triangleCornerUv(int k) { return {double(k == 1), double(k == 2)}; }
 
 struct MaskResult {
-  Vec3d position, normal;
+  mesh::Vec3d position, normal;
 };
 
-MaskResult catmullClarkMask(const VertexRing& ring, const Vec3d& v) {
+MaskResult catmullClarkMask(const VertexRing& ring, const mesh::Vec3d& v) {
   const int n = int(ring.e.size());
-  Vec3d sum_e, sum_f, t1, t2;
+  mesh::Vec3d sum_e, sum_f, t1, t2;
   const double a =
       1 + std::cos(2 * kPi / n) + std::cos(kPi / n) * std::sqrt(2 * (9 + std::cos(2 * kPi / n)));
   for (int i = 0; i < n; ++i) {
@@ -95,12 +95,12 @@ MaskResult catmullClarkMask(const VertexRing& ring, const Vec3d& v) {
           normalize(cross(t1, t2))};
 }
 
-MaskResult loopMask(const VertexRing& ring, const Vec3d& v) {
+MaskResult loopMask(const VertexRing& ring, const mesh::Vec3d& v) {
   const int n = int(ring.e.size());
   const double inner = 3.0 / 8 + std::cos(2 * kPi / n) / 4;
   const double beta = (5.0 / 8 - inner * inner) / n;
   const double chi = 1 / (n + 3 / (8 * beta));
-  Vec3d sum_e, t1, t2;
+  mesh::Vec3d sum_e, t1, t2;
   for (int i = 0; i < n; ++i) {
     sum_e = sum_e + ring.e[size_t(i)];
     t1 = t1 + ring.e[size_t(i)] * std::cos(2 * kPi * i / n);
@@ -112,15 +112,15 @@ MaskResult loopMask(const VertexRing& ring, const Vec3d& v) {
 // Compares Bfr at every qualifying control vertex of the shape with the mask;
 // returns how many vertices were checked and of which valences.
 std::set<size_t> checkVertexLimits(const std::string& name, osd::Scheme scheme) {
-  const Mesh mesh = loadShape(name);
+  const mesh::Mesh mesh = loadShape(name);
   const LimitSurface surface(mesh, scheme);
   const double diagonal = boundingBoxDiagonal(mesh.positions);
   const uint32_t face_size = scheme == osd::Scheme::kLoop ? 3 : 4;
   std::set<size_t> valences;
   for (const VertexRing& ring : untaggedInteriorRings(mesh, face_size)) {
-    const Vec3d& v = mesh.positions[ring.vertex];
+    const mesh::Vec3d& v = mesh.positions[ring.vertex];
     const MaskResult mask = scheme == osd::Scheme::kLoop ? loopMask(ring, v) : catmullClarkMask(ring, v);
-    const Vec2d uv =
+    const mesh::Vec2d uv =
         scheme == osd::Scheme::kLoop ? triangleCornerUv(ring.corner) : quadCornerUv(ring.corner);
     const LimitPoint bfr = surface.evaluate(ring.face, uv.x, uv.y);
     EXPECT_LT(length(bfr.position - mask.position), 1e-12 * diagonal)
@@ -160,7 +160,7 @@ TEST(LimitSurface, LoopVertexLimitsMatchLoopMasks) {
 // the same centre at (1,1), and sub-face k's (0,0) is the limit of corner k as seen
 // from the neighbouring quad.
 TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
-  const Mesh mesh = loadShape("catmark_nonquads.obj");
+  const mesh::Mesh mesh = loadShape("catmark_nonquads.obj");
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const double tolerance = 1e-12 * boundingBoxDiagonal(mesh.positions);
   int ngons = 0;
@@ -170,7 +170,7 @@ TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
     ++ngons;
     const LimitFace face = surface.face(f);
     ASSERT_EQ(face.subFaceCount(), n);
-    const Vec3d centre = face.evaluateSubFace(0, 1, 1).position;
+    const mesh::Vec3d centre = face.evaluateSubFace(0, 1, 1).position;
     for (int k = 0; k < n; ++k) {
       const int next = (k + 1) % n;
       EXPECT_LT(length(face.evaluateSubFace(k, 1, 1).position - centre), tolerance);
@@ -189,12 +189,12 @@ TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
     if (n == 4) continue;
     for (int k = 0; k < n; ++k) {
       const uint32_t v = mesh.facePositions(f)[size_t(k)];
-      const Vec3d p = surface.face(f).evaluateSubFace(k, 0, 0).position;
+      const mesh::Vec3d p = surface.face(f).evaluateSubFace(k, 0, 0).position;
       for (size_t g = 0; g < mesh.faceCount(); ++g) {
         const auto corners = mesh.facePositions(g);
         for (int j = 0; j < int(corners.size()); ++j) {
           if (corners[size_t(j)] != v || corners.size() != 4) continue;
-          const Vec2d uv = quadCornerUv(j);
+          const mesh::Vec2d uv = quadCornerUv(j);
           EXPECT_LT(length(surface.evaluate(g, uv.x, uv.y).position - p), tolerance);
         }
       }
@@ -207,10 +207,10 @@ TEST(LimitSurface, NgonSubFacesFollowTheDocumentedConvention) {
 // control face's centroid, with the normal along that ray, pointing out of the
 // counter-clockwise faces.
 TEST(LimitSurface, CubeFaceCentresAndNormalsFollowSymmetry) {
-  const Mesh mesh = loadShape("catmark_cube.obj");
+  const mesh::Mesh mesh = loadShape("catmark_cube.obj");
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    Vec3d centroid;
+    mesh::Vec3d centroid;
     for (uint32_t v : mesh.facePositions(f)) centroid = centroid + mesh.positions[v] * 0.25;
     const LimitPoint p = surface.evaluate(f, 0.5, 0.5);
     EXPECT_NEAR(length(p.normal), 1.0, 1e-15);
@@ -225,13 +225,13 @@ TEST(LimitSurface, CubeFaceCentresAndNormalsFollowSymmetry) {
 // has a tangent plane: everywhere but the corner vertices themselves, which are cone
 // points.
 TEST(LimitSurface, NormalsStayUnitAtSharpFeatures) {
-  Mesh mesh = loadShape("catmark_cube.obj");
+  mesh::Mesh mesh = loadShape("catmark_cube.obj");
   for (uint32_t v = 0; v < 8; ++v) mesh.tags.corners.push_back({v, 10.0});
   const uint32_t first = mesh.facePositions(0)[0], second = mesh.facePositions(0)[1];
   mesh.tags.creases.push_back({first, second, 10.0});
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    for (const Vec2d& uv : testing::clusteredFacePoints(osd::Scheme::kCatmullClark, 4, 6)) {
+    for (const mesh::Vec2d& uv : testing::clusteredFacePoints(osd::Scheme::kCatmullClark, 4, 6)) {
       const LimitPoint p = surface.evaluate(f, uv.x, uv.y);
       EXPECT_NEAR(length(p.normal), 1.0, 1e-12) << f << " " << uv.x << " " << uv.y;
       const bool cone_point = (uv.x == 0 || uv.x == 1) && (uv.y == 0 || uv.y == 1);
@@ -245,7 +245,8 @@ TEST(LimitSurface, NormalsStayUnitAtSharpFeatures) {
 // counter-clockwise faces. Collapsing an edge makes dP/du vanish along it, and the
 // normal there is taken just inside the face rather than left undefined.
 TEST(LimitSurface, NormalIsTakenBesideACollapsedEdge) {
-  const Mesh mesh = loadObjText("v 0 0 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "collapsed.obj");
+  const mesh::Mesh mesh =
+      mesh::loadObjText("v 0 0 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", "collapsed.obj");
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   const LimitPoint corner = surface.evaluate(0, 0.5, 0.0);
   EXPECT_LT(length(corner.du), 1e-12);  // the degenerate case is really reached
@@ -256,7 +257,7 @@ TEST(LimitSurface, NormalIsTakenBesideACollapsedEdge) {
 }
 
 TEST(LimitSurface, TorusFacesAreRegularPatches) {
-  const Mesh mesh = loadShape("catmark_torus.obj");
+  const mesh::Mesh mesh = loadShape("catmark_torus.obj");
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_TRUE(surface.isRegular(f)) << f;
 }
@@ -264,7 +265,7 @@ TEST(LimitSurface, TorusFacesAreRegularPatches) {
 // Oracle: the limit passes through no hole. A hole face has no limit surface, its
 // neighbours keep theirs.
 TEST(LimitSurface, HoleFacesHaveNoLimitSurface) {
-  Mesh mesh = loadShape("catmark_torus.obj");
+  mesh::Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {3};
   const LimitSurface surface(mesh, osd::Scheme::kCatmullClark);
   for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_EQ(surface.hasLimitSurface(f), f != 3) << f;

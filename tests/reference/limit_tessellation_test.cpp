@@ -84,8 +84,8 @@ TEST(LimitTessellation, ClosedControlMeshGivesClosedSurface) {
                                      std::pair{"catmark_torus.obj", osd::Scheme::kCatmullClark},
                                      std::pair{"catmark_toroidal_tet.obj", osd::Scheme::kCatmullClark},
                                      std::pair{"loop_icosahedron.obj", osd::Scheme::kLoop}}) {
-    const Mesh mesh = loadShape(name);
-    const Topology topology = buildTopology(mesh);
+    const mesh::Mesh mesh = loadShape(name);
+    const mesh::Topology topology = mesh::buildTopology(mesh);
     ASSERT_EQ(topology.boundaryEdgeCount(), 0u) << name;
     const long control_euler =
         long(mesh.positions.size()) - long(topology.edges.size()) + long(mesh.faceCount());
@@ -102,9 +102,9 @@ TEST(LimitTessellation, TrianglesFaceAlongTheLimitNormal) {
     const LimitTessellation t = tessellateLimit(surface, 4);
     size_t against = 0;
     for (const Triangle& tri : t.triangles) {
-      const Vec3d n = cross(t.positions[tri[1]] - t.positions[tri[0]],
-                            t.positions[tri[2]] - t.positions[tri[0]]);
-      const Vec3d limit = t.normals[tri[0]] + t.normals[tri[1]] + t.normals[tri[2]];
+      const mesh::Vec3d n = cross(t.positions[tri[1]] - t.positions[tri[0]],
+                                  t.positions[tri[2]] - t.positions[tri[0]]);
+      const mesh::Vec3d limit = t.normals[tri[0]] + t.normals[tri[1]] + t.normals[tri[2]];
       against += dot(n, limit) <= 0;
     }
     EXPECT_EQ(against, 0u) << name;
@@ -124,7 +124,7 @@ TEST(LimitTessellation, VerticesRecordWhereTheyWereEvaluated) {
 }
 
 TEST(LimitTessellation, SkipsFacesWithoutLimitSurface) {
-  Mesh mesh = loadShape("catmark_torus.obj");
+  mesh::Mesh mesh = loadShape("catmark_torus.obj");
   mesh.tags.holes = {0, 5};
   const LimitTessellation t = tessellateLimit(LimitSurface(mesh, osd::Scheme::kCatmullClark), 2);
   EXPECT_EQ(t.faces_skipped, 2u);

@@ -25,8 +25,8 @@ inline std::vector<std::string> bundledShapes(const std::string& prefix) {
   return names;
 }
 
-inline Mesh loadShape(const std::string& name) {
-  return loadObjFile(tb::testing::assetPath("opensubdiv/" + name));
+inline mesh::Mesh loadShape(const std::string& name) {
+  return mesh::loadObjFile(tb::testing::assetPath("opensubdiv/" + name));
 }
 
 // x in [0,1] -> [0,1], cubic clustering at both ends: 4x^3 below 1/2, mirrored above.
@@ -36,8 +36,8 @@ inline double clusterTowardEnds(double x) {
 
 // A g x g grid over [0,1]^2 in normalised (sub-)face coordinates, clustered towards
 // the corners.
-inline std::vector<Vec2d> clusteredSubFacePoints(int g) {
-  std::vector<Vec2d> points;
+inline std::vector<mesh::Vec2d> clusteredSubFacePoints(int g) {
+  std::vector<mesh::Vec2d> points;
   for (int j = 0; j < g; ++j) {
     for (int i = 0; i < g; ++i) {
       points.push_back(
@@ -49,10 +49,10 @@ inline std::vector<Vec2d> clusteredSubFacePoints(int g) {
 
 // clusteredSubFacePoints on every sub-face, as face (u,v); Loop triangles keep the
 // points with s + t <= 1.
-inline std::vector<Vec2d> clusteredFacePoints(osd::Scheme scheme, int face_size, int g) {
-  std::vector<Vec2d> points;
+inline std::vector<mesh::Vec2d> clusteredFacePoints(osd::Scheme scheme, int face_size, int g) {
+  std::vector<mesh::Vec2d> points;
   for (int k = 0; k < subFaceCount(scheme, face_size); ++k) {
-    for (const Vec2d& st : clusteredSubFacePoints(g)) {
+    for (const mesh::Vec2d& st : clusteredSubFacePoints(g)) {
       if (scheme == osd::Scheme::kLoop && st.x + st.y > 1) continue;
       points.push_back(subFaceToFaceUv(scheme, face_size, k, st));
     }

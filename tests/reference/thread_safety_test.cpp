@@ -24,13 +24,13 @@ constexpr int kThreads = 8;
 
 struct Sample {
   size_t face;
-  Vec2d uv;
+  mesh::Vec2d uv;
 };
 
-std::vector<Sample> samplesOf(const Mesh& mesh, osd::Scheme scheme) {
+std::vector<Sample> samplesOf(const mesh::Mesh& mesh, osd::Scheme scheme) {
   std::vector<Sample> samples;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
-    for (const Vec2d& uv : clusteredFacePoints(scheme, int(mesh.faceSize(f)), 4))
+    for (const mesh::Vec2d& uv : clusteredFacePoints(scheme, int(mesh.faceSize(f)), 4))
       samples.push_back({f, uv});
   }
   return samples;
@@ -56,7 +56,7 @@ TEST(ThreadSafety, ParallelLimitEvaluationEqualsSerial) {
   for (const auto& [name, scheme] : {std::pair{"catmark_pawn.obj", osd::Scheme::kCatmullClark},
                                      std::pair{"catmark_xord_interior.obj", osd::Scheme::kCatmullClark},
                                      std::pair{"loop_xord_interior.obj", osd::Scheme::kLoop}}) {
-    const Mesh mesh = loadShape(name);
+    const mesh::Mesh mesh = loadShape(name);
     const std::vector<Sample> samples = samplesOf(mesh, scheme);
     std::vector<LimitPoint> serial(samples.size()), parallel(samples.size());
     {
@@ -76,7 +76,7 @@ TEST(ThreadSafety, ParallelLimitEvaluationEqualsSerial) {
 }
 
 TEST(ThreadSafety, ParallelEmbreeAndDistanceQueriesEqualSerial) {
-  const Mesh mesh = loadShape("catmark_pawn.obj");
+  const mesh::Mesh mesh = loadShape("catmark_pawn.obj");
   const std::vector<Sample> samples = samplesOf(mesh, osd::Scheme::kCatmullClark);
   const EmbreeSubdivision embree(mesh);
   const std::vector<Triangle> triangles = fanTriangles(mesh);

@@ -6,33 +6,33 @@ namespace tb {
 namespace {
 
 TEST(CsvTables, QuotesOnlyWhatNeedsIt) {
-  EXPECT_EQ(csvCell("plain"), "plain");
-  EXPECT_EQ(csvCell("a,b"), "\"a,b\"");
-  EXPECT_EQ(csvCell("say \"hi\""), "\"say \"\"hi\"\"\"");
-  EXPECT_EQ(csvCell("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(report::csvCell("plain"), "plain");
+  EXPECT_EQ(report::csvCell("a,b"), "\"a,b\"");
+  EXPECT_EQ(report::csvCell("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(report::csvCell("two\nlines"), "\"two\nlines\"");
 }
 
 // Every row of a measure is a line: keys, status, reason, then the declared metrics with
 // units in the header; a record whose measure did not run is one line with its status.
 TEST(CsvTables, OneFilePerMeasureWithEveryRow) {
-  Results results;
-  MeasureDeclaration cracks{"cracks", "Cracks", "d", {}, {"points_not_equal"}, {}};
-  cracks.metrics = {{"points_not_equal", Unit::kCount, Direction::kLowerIsBetter},
-                    {"max_gap_world", Unit::kWorld, Direction::kLowerIsBetter}};
+  results::Results results;
+  results::MeasureDeclaration cracks{"cracks", "Cracks", "d", {}, {"points_not_equal"}, {}};
+  cracks.metrics = {{"points_not_equal", results::Unit::kCount, results::Direction::kLowerIsBetter},
+                    {"max_gap_world", results::Unit::kWorld, results::Direction::kLowerIsBetter}};
   results.measures.push_back(cracks);
-  Record record{"acc", "default", "cube", {}, {"a, warning"}, {}};
-  MeasureResult m{"cracks", MeasureStatus::kOk, "", {}, {}};
+  results::Record record{"acc", "default", "cube", {}, {"a, warning"}, {}};
+  results::MeasureResult m{"cracks", results::MeasureStatus::kOk, "", {}, {}};
   m.rows.push_back({{{"backend", "cpu_float"}, {"level", "2"}},
                     {{"max_gap_world", 0.125, "world"}, {"points_not_equal", 3, "count"}}});
-  m.rows.push_back(unmeasuredRow({{"backend", "gpu"}, {"level", "2"}}, MeasureStatus::kSkipped,
-                                 "no Vulkan device"));
+  m.rows.push_back(results::unmeasuredRow({{"backend", "gpu"}, {"level", "2"}},
+                                          results::MeasureStatus::kSkipped, "no Vulkan device"));
   record.measures.push_back(m);
   results.records.push_back(record);
-  Record other{"pn", "pn", "cube", {}, {}, {}};
-  other.measures.push_back({"cracks", MeasureStatus::kFailed, "device lost", {}, {}});
+  results::Record other{"pn", "pn", "cube", {}, {}, {}};
+  other.measures.push_back({"cracks", results::MeasureStatus::kFailed, "device lost", {}, {}});
   results.records.push_back(other);
 
-  const auto files = renderCsvTables(results);
+  const auto files = report::renderCsvTables(results);
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[0].first, "tables/cracks.csv");
   EXPECT_EQ(files[0].second,

@@ -6,17 +6,18 @@ namespace tb {
 namespace {
 
 TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
-  Results results;
+  results::Results results;
   results.context.run_id = "r";
-  Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {}, {"12 polygons split"}, {}};
-  MeasureResult memory;
+  results::Record record{"phong", "alpha0.75",           "opensubdiv/catmark_cube",
+                         {},      {"12 polygons split"}, {}};
+  results::MeasureResult memory;
   memory.measure = "memory";
   memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
   memory.rows.push_back({{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
   record.measures.push_back(memory);
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
-  const std::string md = renderMarkdown(results);
+  const std::string md = report::renderMarkdown(results);
   EXPECT_NE(md.find("### memory"), std::string::npos);
   // A small measure also shows its rows.
   EXPECT_NE(md.find("| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
@@ -31,11 +32,11 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
 
 // A run's figures for the summary tests: `assets` × {acc/default, acc/fast}, a measure
 // "error" with 3 rows per record (levels), hausdorff = base × (level index + 1).
-Results summaryResults(size_t assets, size_t levels) {
-  Results results;
-  MeasureDeclaration error{"error", "Error", "d", {}, {"hausdorff"}, {"a fixed note"}};
-  error.metrics = {{"hausdorff", Unit::kDiagonal, Direction::kLowerIsBetter},
-                   {"samples", Unit::kCount, Direction::kNone}};
+results::Results summaryResults(size_t assets, size_t levels) {
+  results::Results results;
+  results::MeasureDeclaration error{"error", "Error", "d", {}, {"hausdorff"}, {"a fixed note"}};
+  error.metrics = {{"hausdorff", results::Unit::kDiagonal, results::Direction::kLowerIsBetter},
+                   {"samples", results::Unit::kCount, results::Direction::kNone}};
   results.measures.push_back(error);
   results.context.selection.techniques = {{"acc", {"default", "fast"}}, {"pn", {"pn"}}};
   for (size_t a = 0; a < assets; ++a) {
@@ -43,8 +44,8 @@ Results summaryResults(size_t assets, size_t levels) {
     results.assets.push_back({asset, "", 1, 4, "quads", false});
     results.skipped.push_back({"pn", asset, "pn: needs triangles"});
     for (const char* variant : {"default", "fast"}) {
-      Record record{"acc", variant, asset, {}, {}, {}};
-      MeasureResult m;
+      results::Record record{"acc", variant, asset, {}, {}, {}};
+      results::MeasureResult m;
       m.measure = "error";
       const double base = std::string(variant) == "fast" ? 0.5 : 0.25;
       for (size_t level = 0; level < levels; ++level) {
@@ -62,7 +63,7 @@ Results summaryResults(size_t assets, size_t levels) {
 // report.md opens with the three jobs (regression, choice, publishing), then the matrices,
 // then the measures; the run context and assets come last.
 TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
-  const std::string md = renderMarkdown(summaryResults(2, 3));
+  const std::string md = report::renderMarkdown(summaryResults(2, 3));
   const size_t regression = md.find("## Regression tracking");
   const size_t choice = md.find("## Choosing a technique per asset");
   const size_t publishing = md.find("## Publishing tables");
@@ -91,37 +92,38 @@ TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
 // A measure with many rows leaves them to tables/<measure>.csv; report.md stays short
 // however many rows there are.
 TEST(Markdown, ManyRowsGoToCsvNotToTheReport) {
-  const Results small = summaryResults(2, 3);
-  const Results large = summaryResults(2, 400);
+  const results::Results small = summaryResults(2, 3);
+  const results::Results large = summaryResults(2, 400);
   const auto lines = [](const std::string& text) {
     return std::count(text.begin(), text.end(), '\n');
   };
-  EXPECT_NE(renderMarkdown(small).find("| acc | default | asset0 | 2 | ok |"), std::string::npos);
-  const std::string md = renderMarkdown(large);
+  EXPECT_NE(report::renderMarkdown(small).find("| acc | default | asset0 | 2 | ok |"),
+            std::string::npos);
+  const std::string md = report::renderMarkdown(large);
   EXPECT_EQ(md.find("| acc | default | asset0 | 2 | ok |"), std::string::npos);
   EXPECT_NE(md.find("Every row (1600): `tables/error.csv`"), std::string::npos) << md;
   EXPECT_LT(lines(md), 100) << md;
 }
 
 TEST(Markdown, SkippedMeasureShowsItsReason) {
-  Results results;
-  Record record{"phong", "alpha0.75", "a", {}, {}, {}};
-  record.measures.push_back({"gpu", MeasureStatus::kSkipped, "no Vulkan device", {}, {}});
+  results::Results results;
+  results::Record record{"phong", "alpha0.75", "a", {}, {}, {}};
+  record.measures.push_back({"gpu", results::MeasureStatus::kSkipped, "no Vulkan device", {}, {}});
   results.records.push_back(record);
-  EXPECT_NE(renderMarkdown(results).find("skipped: no Vulkan device"), std::string::npos);
+  EXPECT_NE(report::renderMarkdown(results).find("skipped: no Vulkan device"), std::string::npos);
 }
 
 // A row that could not run shows its status and reason in the status column, not figures.
 TEST(Markdown, SkippedRowShowsItsStatusAndReason) {
-  Results results;
-  Record record{"acc", "default", "a", {}, {}, {}};
-  MeasureResult cracks{"cracks", MeasureStatus::kOk, "", {}, {}};
+  results::Results results;
+  results::Record record{"acc", "default", "a", {}, {}, {}};
+  results::MeasureResult cracks{"cracks", results::MeasureStatus::kOk, "", {}, {}};
   cracks.rows.push_back({{{"backend", "cpu_float"}}, {{"points_not_equal", 0, "count"}}});
-  cracks.rows.push_back(
-      unmeasuredRow({{"backend", "gpu"}}, MeasureStatus::kSkipped, "no Vulkan device"));
+  cracks.rows.push_back(results::unmeasuredRow(
+      {{"backend", "gpu"}}, results::MeasureStatus::kSkipped, "no Vulkan device"));
   record.measures.push_back(cracks);
   results.records.push_back(record);
-  const std::string md = renderMarkdown(results);
+  const std::string md = report::renderMarkdown(results);
   EXPECT_NE(md.find("| acc | default | a | cpu_float | ok | 0 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"),
             std::string::npos)
@@ -131,16 +133,17 @@ TEST(Markdown, SkippedRowShowsItsStatusAndReason) {
 // Fixed notes come from the declaration, once; a record's own notes follow the table,
 // each naming its record, whichever record has them (not only the first).
 TEST(Markdown, RendersFixedNotesOnceAndEachRecordsOwnNotes) {
-  Results results;
-  MeasureDeclaration error{"error",       "Error against the limit",
-                           "distances",   {},
-                           {"hausdorff"}, {"distances are fractions of the bounding-box diagonal"}};
-  error.metrics = {{"hausdorff", Unit::kDiagonal, Direction::kLowerIsBetter},
-                   {"samples", Unit::kCount, Direction::kNone}};
+  results::Results results;
+  results::MeasureDeclaration error{
+      "error",       "Error against the limit",
+      "distances",   {},
+      {"hausdorff"}, {"distances are fractions of the bounding-box diagonal"}};
+  error.metrics = {{"hausdorff", results::Unit::kDiagonal, results::Direction::kLowerIsBetter},
+                   {"samples", results::Unit::kCount, results::Direction::kNone}};
   results.measures.push_back(error);
   for (const char* asset : {"opensubdiv/catmark_cube", "opensubdiv/catmark_pyramid"}) {
-    Record record{"gregory_acc", "edge_symmetric", asset, {}, {}, {}};
-    MeasureResult m;
+    results::Record record{"gregory_acc", "edge_symmetric", asset, {}, {}, {}};
+    results::MeasureResult m;
     m.measure = "error";
     m.rows.push_back({{}, {{"hausdorff", 0.25, "rel_diag"}, {"samples", 81, "count"}}});
     if (std::string(asset).ends_with("pyramid")) {
@@ -149,7 +152,7 @@ TEST(Markdown, RendersFixedNotesOnceAndEachRecordsOwnNotes) {
     record.measures.push_back(m);
     results.records.push_back(record);
   }
-  const std::string md = renderMarkdown(results);
+  const std::string md = report::renderMarkdown(results);
   const std::string note = "distances are fractions of the bounding-box diagonal";
   const size_t fixed = md.find("- " + note);
   EXPECT_NE(fixed, std::string::npos) << md;
@@ -166,11 +169,11 @@ TEST(Markdown, RendersFixedNotesOnceAndEachRecordsOwnNotes) {
 }
 
 TEST(Markdown, FormatsBytesAndValues) {
-  EXPECT_EQ(formatBytes(812), "812 B");
-  EXPECT_EQ(formatBytes(1536), "1.50 KiB");
-  EXPECT_EQ(formatBytes(3.0 * 1024 * 1024), "3.00 MiB");
-  EXPECT_EQ(formatMetricValue({"n", 42, "count"}), "42");
-  EXPECT_EQ(formatMetricValue({"r", 0.123456, "ratio"}), "0.1235");
+  EXPECT_EQ(report::formatBytes(812), "812 B");
+  EXPECT_EQ(report::formatBytes(1536), "1.50 KiB");
+  EXPECT_EQ(report::formatBytes(3.0 * 1024 * 1024), "3.00 MiB");
+  EXPECT_EQ(report::formatMetricValue({"n", 42, "count"}), "42");
+  EXPECT_EQ(report::formatMetricValue({"r", 0.123456, "ratio"}), "0.1235");
 }
 
 }  // namespace
@@ -183,18 +186,18 @@ namespace {
 // simulation measure's matrix has its scenario and not the mesh assets, and a surface
 // measure's leaves out the scenario.
 TEST(Markdown, MatricesListOnlyTheInputsAndTechniquesOfTheirMeasure) {
-  Results results = summaryResults(2, 1);
-  MeasureDeclaration wave{"wave", "Wave", "d", {}, {"rms"}, {}};
-  wave.metrics = {{"rms", Unit::kRatio, Direction::kLowerIsBetter}};
+  results::Results results = summaryResults(2, 1);
+  results::MeasureDeclaration wave{"wave", "Wave", "d", {}, {"rms"}, {}};
+  wave.metrics = {{"rms", results::Unit::kRatio, results::Direction::kLowerIsBetter}};
   results.measures.push_back(wave);
   results.context.selection.techniques.push_back({"sim", {"full"}});
-  Record record{"sim", "full", "scenario_a", {}, {}, {}};
-  MeasureResult m;
+  results::Record record{"sim", "full", "scenario_a", {}, {}, {}};
+  results::MeasureResult m;
   m.measure = "wave";
   m.rows.push_back({{{"time", "1"}}, {{"rms", 0.125, "ratio"}}});
   record.measures.push_back(m);
   results.records.push_back(record);
-  const std::string md = renderMarkdown(results);
+  const std::string md = report::renderMarkdown(results);
   const size_t wave_matrix = md.find("### wave: rms");
   const size_t error_matrix = md.find("### error: hausdorff");
   ASSERT_NE(wave_matrix, std::string::npos) << md;

@@ -10,16 +10,16 @@
 
 namespace tb::testing {
 
-inline MeasureResult measureResult(const char* id) {
-  MeasureResult m;
+inline results::MeasureResult measureResult(const char* id) {
+  results::MeasureResult m;
   m.measure = id;
   return m;
 }
 
 // An ok row with `keys` and unit-less metrics (the declaration gives units).
-inline MetricRow row(std::map<std::string, std::string> keys,
-                     std::vector<std::pair<std::string, double>> metrics) {
-  MetricRow r;
+inline results::MetricRow row(std::map<std::string, std::string> keys,
+                              std::vector<std::pair<std::string, double>> metrics) {
+  results::MetricRow r;
   r.keys = std::move(keys);
   for (const auto& [name, value] : metrics) r.metrics.push_back({name, value, ""});
   return r;

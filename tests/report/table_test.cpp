@@ -22,35 +22,37 @@ namespace {
 using testing::measureResult;
 using testing::row;
 
-Results sampleResults() {
-  Results r;
+results::Results sampleResults() {
+  results::Results r;
   r.context.run_id = "run_42";
   r.context.date = "2024-01-02T03:04:05Z";
   r.context.git_sha = "abc1234def";
   r.context.vulkan_device = "llvmpipe (LLVM 15.0.7, 256 bits)";
   r.context.libraries = {{"opensubdiv", "3.5.0"}, {"embree", "3.13"}};
-  MeasureDeclaration error;
+  results::MeasureDeclaration error;
   error.measure = "error";
   error.title = "Error against the limit surface";
-  error.metrics = {{"hausdorff", Unit::kDiagonal, Direction::kLowerIsBetter},
-                   {"normal_max", Unit::kDegrees, Direction::kLowerIsBetter}};
+  error.metrics = {{"hausdorff", results::Unit::kDiagonal, results::Direction::kLowerIsBetter},
+                   {"normal_max", results::Unit::kDegrees, results::Direction::kLowerIsBetter}};
   error.headline = {"hausdorff", "normal_max"};
-  MeasureDeclaration memory;
+  results::MeasureDeclaration memory;
   memory.measure = "memory";
   memory.title = "Memory footprint against plain triangle meshes";
-  memory.metrics = {{"plain_bytes", Unit::kBytes, Direction::kNone},
-                    {"technique_with_displacement_bytes", Unit::kBytes, Direction::kLowerIsBetter},
-                    {"plain_over_technique", Unit::kRatio, Direction::kHigherIsBetter},
-                    {"patches", Unit::kCount, Direction::kNone}};
+  memory.metrics = {
+      {"plain_bytes", results::Unit::kBytes, results::Direction::kNone},
+      {"technique_with_displacement_bytes", results::Unit::kBytes,
+       results::Direction::kLowerIsBetter},
+      {"plain_over_technique", results::Unit::kRatio, results::Direction::kHigherIsBetter},
+      {"patches", results::Unit::kCount, results::Direction::kNone}};
   memory.headline = {"plain_over_technique"};
-  MeasureDeclaration seed;
+  results::MeasureDeclaration seed;
   seed.measure = "published_figures";
   seed.title = "Shader costs beside published figures";
-  seed.metrics = {{"published_alu", Unit::kCount, Direction::kNone},
-                  {"published_loads", Unit::kCount, Direction::kNone},
-                  {"ours_alu_vector", Unit::kCount, Direction::kLowerIsBetter},
-                  {"ours_alu_scalar", Unit::kCount, Direction::kLowerIsBetter},
-                  {"ours_loads", Unit::kCount, Direction::kLowerIsBetter}};
+  seed.metrics = {{"published_alu", results::Unit::kCount, results::Direction::kNone},
+                  {"published_loads", results::Unit::kCount, results::Direction::kNone},
+                  {"ours_alu_vector", results::Unit::kCount, results::Direction::kLowerIsBetter},
+                  {"ours_alu_scalar", results::Unit::kCount, results::Direction::kLowerIsBetter},
+                  {"ours_loads", results::Unit::kCount, results::Direction::kLowerIsBetter}};
   seed.headline = {"ours_alu_vector"};
   r.measures = {error, memory, seed};
 
@@ -58,14 +60,14 @@ Results sampleResults() {
   for (const auto& [technique, variant] :
        {std::pair{"acc", "sym_fma"}, std::pair{"pn", "50% & {alpha}"}}) {
     for (const char* asset : {"a/one", "a/two"}) {
-      Record record;
+      results::Record record;
       record.technique = technique;
       record.variant = variant;
       record.asset = asset;
-      MeasureResult e = measureResult("error");
+      results::MeasureResult e = measureResult("error");
       e.rows = {row({{"level", "4"}}, {{"hausdorff", 1e-3}, {"normal_max", 2}}),
                 row({{"level", "8"}}, {{"hausdorff", 3e-3}, {"normal_max", 1}})};
-      MeasureResult m = measureResult("memory");
+      results::MeasureResult m = measureResult("memory");
       for (int level : {8, 16, 32, 64}) {
         const double plain = 56.0 * level * level * 6;
         m.rows.push_back(row({{"level", std::to_string(level)}},
@@ -76,7 +78,7 @@ Results sampleResults() {
       }
       record.measures = {e, m};
       if (std::string(technique) == "acc" && std::string(asset) == "a/one") {
-        MeasureResult s = measureResult("published_figures");
+        results::MeasureResult s = measureResult("published_figures");
         s.rows = {row({{"source", "NVIDIA's displacement subdivision surfaces talk"},
                            {"what", "bezier position, asymmetric"}},
                       {{"published_alu", 60}, {"published_loads", 0}, {"ours_alu_vector", 70},
@@ -190,23 +192,24 @@ std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
 }
 
 TEST(Table, LatexIsABooktabsFragmentWithEveryCellEscaped) {
-  const Results r = sampleResults();
+  const results::Results r = sampleResults();
   for (bool per_asset : {false, true}) {
-    const TextTable table = summaryTable(r, {"error", {}, per_asset});
-    const std::string latex = renderTable(table, TableFormat::kLatex);
+    const report::TextTable table = report::summaryTable(r, {"error", {}, per_asset});
+    const std::string latex = report::renderTable(table, report::TableFormat::kLatex);
     expectLatexStructure(latex, table.header.size());
     EXPECT_NE(latex.find("sym\\_fma"), std::string::npos) << latex;
     EXPECT_NE(latex.find("50\\% \\& \\{alpha\\}"), std::string::npos) << latex;
     EXPECT_NE(latex.find("hausdorff median (rel\\_diag)"), std::string::npos) << latex;
   }
   for (const char* measure : {"memory", "published_figures"}) {
-    const TextTable table = publishedTable(r, measure);
-    expectLatexStructure(renderTable(table, TableFormat::kLatex), table.header.size());
+    const report::TextTable table = report::publishedTable(r, measure);
+    expectLatexStructure(report::renderTable(table, report::TableFormat::kLatex),
+                         table.header.size());
   }
 }
 
 TEST(Table, LatexEscapesEverySpecialCharacter) {
-  EXPECT_EQ(latexEscape("&%$#_{}~^\\"),
+  EXPECT_EQ(report::latexEscape("&%$#_{}~^\\"),
             "\\&\\%\\$\\#\\_\\{\\}\\textasciitilde{}\\textasciicircum{}\\textbackslash{}");
 }
 
@@ -214,11 +217,13 @@ TEST(Table, LatexCompilesWhenPdflatexIsInstalled) {
   if (std::system("command -v pdflatex >/dev/null 2>&1") != 0) GTEST_SKIP() << "no pdflatex";
   const auto dir = std::filesystem::temp_directory_path() / "tessbench_table_latex";
   std::filesystem::create_directories(dir);
-  const Results r = sampleResults();
+  const results::Results r = sampleResults();
   std::ofstream(dir / "t.tex") << "\\documentclass{article}\\usepackage{booktabs}"
                                   "\\begin{document}\n"
-                               << renderTable(summaryTable(r, {"error", {}, true}), TableFormat::kLatex)
-                               << renderTable(publishedTable(r, "memory"), TableFormat::kLatex)
+                               << report::renderTable(report::summaryTable(r, {"error", {}, true}),
+                                                      report::TableFormat::kLatex)
+                               << report::renderTable(report::publishedTable(r, "memory"),
+                                                      report::TableFormat::kLatex)
                                << "\\end{document}\n";
   const std::string command = "cd " + dir.string() +
                               " && pdflatex -interaction=nonstopmode -halt-on-error t.tex "
@@ -227,49 +232,50 @@ TEST(Table, LatexCompilesWhenPdflatexIsInstalled) {
 }
 
 TEST(Table, CsvParsesBackWithTheSameCellCountOnEveryLine) {
-  const Results r = sampleResults();
-  for (const TextTable& table : {summaryTable(r, {"error", {}, true}), publishedTable(r, "memory"),
-                                 publishedTable(r, "published_figures")}) {
-    const std::string csv = renderTable(table, TableFormat::kCsv);
+  const results::Results r = sampleResults();
+  for (const report::TextTable& table :
+       {report::summaryTable(r, {"error", {}, true}), report::publishedTable(r, "memory"),
+        report::publishedTable(r, "published_figures")}) {
+    const std::string csv = report::renderTable(table, report::TableFormat::kCsv);
     EXPECT_EQ(csv.rfind("# ", 0), 0u) << "the footnote leads as comment lines";
     const auto records = parseCsv(csv);
     ASSERT_EQ(records.size(), table.rows.size() + 1) << csv;
     for (const auto& record : records) EXPECT_EQ(record.size(), table.header.size()) << csv;
     EXPECT_EQ(records[0], table.header);
   }
-  EXPECT_EQ(csvField("50% & {alpha}"), "50% & {alpha}");
-  EXPECT_EQ(csvField("a,\"b\""), "\"a,\"\"b\"\"\"");
+  EXPECT_EQ(report::csvField("50% & {alpha}"), "50% & {alpha}");
+  EXPECT_EQ(report::csvField("a,\"b\""), "\"a,\"\"b\"\"\"");
 }
 
 TEST(Table, MarkdownHeaderCarriesUnitsAndFootnoteTheRunContext) {
-  const Results r = sampleResults();
-  const TextTable table = summaryTable(r, {"error", {}, false});
+  const results::Results r = sampleResults();
+  const report::TextTable table = report::summaryTable(r, {"error", {}, false});
   ASSERT_EQ(table.rows.size(), 2u);  // one line per technique x variant, over both assets
-  const std::string md = renderTable(table, TableFormat::kMarkdown);
+  const std::string md = report::renderTable(table, report::TableFormat::kMarkdown);
   EXPECT_NE(md.find("| technique | variant | hausdorff median (rel_diag) | hausdorff worst "
                     "(rel_diag) | normal_max median (deg) | normal_max worst (deg) |"),
             std::string::npos)
       << md;
   // Median over four rows (1e-3, 3e-3 on each asset) and the worst (largest).
   EXPECT_NE(md.find("| acc | sym_fma | 0.002 | 0.003 | 1.5 | 2 |"), std::string::npos) << md;
-  for (const std::string& text : {md, renderTable(table, TableFormat::kCsv),
-                                  renderTable(table, TableFormat::kLatex)}) {
+  for (const std::string& text : {md, report::renderTable(table, report::TableFormat::kCsv),
+                                  report::renderTable(table, report::TableFormat::kLatex)}) {
     EXPECT_NE(text.find("abc1234def"), std::string::npos) << text;
     EXPECT_NE(text.find("llvmpipe (LLVM 15.0.7, 256 bits)"), std::string::npos) << text;
     EXPECT_NE(text.find("run"), std::string::npos);
     EXPECT_NE(text.find("opensubdiv 3.5.0"), std::string::npos);
     EXPECT_NE(text.find("Error against the limit surface"), std::string::npos);
   }
-  const std::string chosen = renderTable(summaryTable(r, {"error", {"normal_max"}, false}),
-                                         TableFormat::kMarkdown);
+  const std::string chosen = report::renderTable(
+      report::summaryTable(r, {"error", {"normal_max"}, false}), report::TableFormat::kMarkdown);
   EXPECT_EQ(chosen.find("hausdorff"), std::string::npos);
 }
 
 TEST(Table, PublishedTablesSetTheTalksFiguresBesideOursCitedByTitle) {
-  const Results r = sampleResults();
-  const TextTable memory = publishedTable(r, "memory");
+  const results::Results r = sampleResults();
+  const report::TextTable memory = report::publishedTable(r, "memory");
   // Per level: the talk's row, then ours for each technique x variant.
-  ASSERT_EQ(memory.rows.size(), publishedMemoryTable().size() * 3);
+  ASSERT_EQ(memory.rows.size(), report::publishedMemoryTable().size() * 3);
   EXPECT_EQ(memory.rows[9][0], "NVIDIA's displacement subdivision surfaces talk");
   EXPECT_EQ(memory.rows[9][2], "64");
   EXPECT_EQ(memory.rows[9][3], "943");
@@ -279,7 +285,7 @@ TEST(Table, PublishedTablesSetTheTalksFiguresBesideOursCitedByTitle) {
   // 56 B x 64^2 per patch x 14,400 patches.
   EXPECT_EQ(memory.rows[10][3], "3303");
 
-  const TextTable seed = publishedTable(r, "published_figures");
+  const report::TextTable seed = report::publishedTable(r, "published_figures");
   ASSERT_EQ(seed.rows.size(), 2u);
   EXPECT_EQ(seed.rows[0][0], "NVIDIA's displacement subdivision surfaces talk");
   EXPECT_EQ(seed.rows[0][3], "60");
@@ -287,22 +293,24 @@ TEST(Table, PublishedTablesSetTheTalksFiguresBesideOursCitedByTitle) {
   EXPECT_EQ(seed.rows[1][0], "the DirectX SDK SubD10 sample");
   EXPECT_EQ(seed.rows[1][2], "regular patch, acc/acc.tese");
 
-  for (const TextTable& table : {memory, seed, summaryTable(r, {"published_figures", {}, true})}) {
-    for (TableFormat format : {TableFormat::kMarkdown, TableFormat::kCsv, TableFormat::kLatex}) {
-      const std::string text = renderTable(table, format);
+  for (const report::TextTable& table :
+       {memory, seed, report::summaryTable(r, {"published_figures", {}, true})}) {
+    for (report::TableFormat format :
+         {report::TableFormat::kMarkdown, report::TableFormat::kCsv, report::TableFormat::kLatex}) {
+      const std::string text = report::renderTable(table, format);
       EXPECT_EQ(text.find("seed 0"), std::string::npos) << text;
     }
   }
-  EXPECT_EQ(citeSources("seed 000's table, seed 003"),
+  EXPECT_EQ(report::citeSources("seed 000's table, seed 003"),
             "NVIDIA's displacement subdivision surfaces talk's table, CAPCOM's \"Lost Planet 2: "
             "DirectX 11 Features\" talk");
 }
 
 TEST(Table, FormatsParse) {
-  EXPECT_EQ(parseTableFormat("latex"), TableFormat::kLatex);
-  EXPECT_EQ(parseTableFormat("csv"), TableFormat::kCsv);
-  EXPECT_EQ(parseTableFormat("markdown"), TableFormat::kMarkdown);
-  EXPECT_FALSE(parseTableFormat("html").has_value());
+  EXPECT_EQ(report::parseTableFormat("latex"), report::TableFormat::kLatex);
+  EXPECT_EQ(report::parseTableFormat("csv"), report::TableFormat::kCsv);
+  EXPECT_EQ(report::parseTableFormat("markdown"), report::TableFormat::kMarkdown);
+  EXPECT_FALSE(report::parseTableFormat("html").has_value());
 }
 
 }  // namespace

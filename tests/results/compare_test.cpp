@@ -6,100 +6,108 @@ namespace tb {
 namespace {
 
 // One record with a cracks-like measure: a CPU row and a GPU row, and the declarations.
-Results runWith(double cpu_gap, double gpu_gap, double shared_edges, bool gpu_skipped = false) {
-  Results results;
+results::Results runWith(double cpu_gap, double gpu_gap, double shared_edges,
+                         bool gpu_skipped = false) {
+  results::Results results;
   results.context.vulkan_device = gpu_skipped ? "none: no driver" : "llvmpipe";
-  Record record{"acc", "default", "cube", {}, {}, {}};
-  MeasureResult cracks{"cracks", MeasureStatus::kOk, "", {}, {}};
+  results::Record record{"acc", "default", "cube", {}, {}, {}};
+  results::MeasureResult cracks{"cracks", results::MeasureStatus::kOk, "", {}, {}};
   cracks.rows.push_back({{{"backend", "cpu_float"}},
                          {{"max_gap_world", cpu_gap, "world"}, {"shared_edges", shared_edges, "count"}}});
   if (gpu_skipped) {
-    cracks.rows.push_back(
-        unmeasuredRow({{"backend", "gpu"}}, MeasureStatus::kSkipped, "no Vulkan device"));
+    cracks.rows.push_back(results::unmeasuredRow(
+        {{"backend", "gpu"}}, results::MeasureStatus::kSkipped, "no Vulkan device"));
   } else {
     cracks.rows.push_back({{{"backend", "gpu"}}, {{"max_gap_world", gpu_gap, "world"}}});
   }
   record.measures.push_back(cracks);
   results.records.push_back(record);
-  results.measures.push_back({"cracks",
-                              "Cracks",
-                              "",
-                              {{"max_gap_world", Unit::kWorld, Direction::kLowerIsBetter},
-                               {"shared_edges", Unit::kCount, Direction::kNone}},
-                              {"max_gap_world"},
-                              {}});
+  results.measures.push_back(
+      {"cracks",
+       "Cracks",
+       "",
+       {{"max_gap_world", results::Unit::kWorld, results::Direction::kLowerIsBetter},
+        {"shared_edges", results::Unit::kCount, results::Direction::kNone}},
+       {"max_gap_world"},
+       {}});
   return results;
 }
 
 TEST(Compare, IdenticalRunsPass) {
-  const Comparison c = compareResults(runWith(0, 0, 12), runWith(0, 0, 12), {});
+  const results::Comparison c = results::compareResults(runWith(0, 0, 12), runWith(0, 0, 12), {});
   EXPECT_FALSE(c.failed());
   EXPECT_TRUE(c.changes.empty());
   EXPECT_EQ(c.figures_compared, 3u);
-  EXPECT_NE(renderComparison(c, 10).find("PASS"), std::string::npos);
+  EXPECT_NE(results::renderComparison(c, 10).find("PASS"), std::string::npos);
 }
 
 // A gap that grows is a regression (lower is better); one that shrinks an improvement; a
 // figure without a direction that changes is listed but fails nothing.
 TEST(Compare, DirectionDecidesRegressionAndImprovement) {
-  const Comparison worse = compareResults(runWith(0, 1e-7, 12), runWith(0, 2e-7, 12), {});
+  const results::Comparison worse =
+      results::compareResults(runWith(0, 1e-7, 12), runWith(0, 2e-7, 12), {});
   ASSERT_EQ(worse.changes.size(), 1u);
-  EXPECT_EQ(worse.changes[0].kind, ChangeKind::kRegression);
+  EXPECT_EQ(worse.changes[0].kind, results::ChangeKind::kRegression);
   EXPECT_EQ(worse.changes[0].row, "backend=gpu");
   EXPECT_TRUE(worse.failed());
-  const Comparison better = compareResults(runWith(0, 2e-7, 12), runWith(0, 1e-7, 12), {});
-  EXPECT_EQ(better.changes[0].kind, ChangeKind::kImprovement);
+  const results::Comparison better =
+      results::compareResults(runWith(0, 2e-7, 12), runWith(0, 1e-7, 12), {});
+  EXPECT_EQ(better.changes[0].kind, results::ChangeKind::kImprovement);
   EXPECT_FALSE(better.failed());
-  const Comparison neutral = compareResults(runWith(0, 0, 12), runWith(0, 0, 13), {});
-  EXPECT_EQ(neutral.changes[0].kind, ChangeKind::kChanged);
+  const results::Comparison neutral =
+      results::compareResults(runWith(0, 0, 12), runWith(0, 0, 13), {});
+  EXPECT_EQ(neutral.changes[0].kind, results::ChangeKind::kChanged);
   EXPECT_FALSE(neutral.failed());
   // From 0 any change counts, whatever the relative threshold.
-  const Comparison from_zero = compareResults(runWith(0, 0, 12), runWith(1e-30, 0, 12), {});
-  EXPECT_EQ(from_zero.changes[0].kind, ChangeKind::kRegression);
+  const results::Comparison from_zero =
+      results::compareResults(runWith(0, 0, 12), runWith(1e-30, 0, 12), {});
+  EXPECT_EQ(from_zero.changes[0].kind, results::ChangeKind::kRegression);
 }
 
 TEST(Compare, ThresholdsAreRelativeAndPerMetric) {
-  const Results base = runWith(0, 1.0, 12), current = runWith(0, 1.001, 12);
-  EXPECT_TRUE(compareResults(base, current, {}).failed());
-  EXPECT_FALSE(compareResults(base, current, {0.01, {}}).failed());
-  EXPECT_TRUE(compareResults(base, current, {0.01, {{"max_gap_world", 1e-6}}}).failed());
+  const results::Results base = runWith(0, 1.0, 12), current = runWith(0, 1.001, 12);
+  EXPECT_TRUE(results::compareResults(base, current, {}).failed());
+  EXPECT_FALSE(results::compareResults(base, current, {0.01, {}}).failed());
+  EXPECT_TRUE(results::compareResults(base, current, {0.01, {{"max_gap_world", 1e-6}}}).failed());
 }
 
 // The no-device case: the new run skipped the GPU row. Its figures are missing with the
 // reason, and the comparison fails rather than passes. The reverse is "added".
 TEST(Compare, SkippedRowsInTheNewRunAreMissingNotPassed) {
-  const Comparison c = compareResults(runWith(0, 0, 12), runWith(0, 0, 12, true), {});
-  ASSERT_EQ(c.count(ChangeKind::kMissing), 1u);
+  const results::Comparison c =
+      results::compareResults(runWith(0, 0, 12), runWith(0, 0, 12, true), {});
+  ASSERT_EQ(c.count(results::ChangeKind::kMissing), 1u);
   EXPECT_TRUE(c.failed());
   EXPECT_EQ(c.changes[0].why, "skipped: no Vulkan device");
   EXPECT_EQ(c.context_notes.size(), 1u) << "the devices differ";
-  const std::string text = renderComparison(c, 10);
+  const std::string text = results::renderComparison(c, 10);
   EXPECT_NE(text.find("| missing | acc/default cube | cracks | backend=gpu | (all) |"),
             std::string::npos)
       << text;
-  const Comparison back = compareResults(runWith(0, 0, 12, true), runWith(0, 0, 12), {});
+  const results::Comparison back =
+      results::compareResults(runWith(0, 0, 12, true), runWith(0, 0, 12), {});
   EXPECT_FALSE(back.failed());
-  EXPECT_EQ(back.count(ChangeKind::kAdded), 1u);
+  EXPECT_EQ(back.count(results::ChangeKind::kAdded), 1u);
 }
 
 TEST(Compare, AMissingRecordOrMetricFails) {
-  Results without_record = runWith(0, 0, 12);
+  results::Results without_record = runWith(0, 0, 12);
   without_record.records.clear();
-  EXPECT_TRUE(compareResults(runWith(0, 0, 12), without_record, {}).failed());
-  Results without_metric = runWith(0, 0, 12);
+  EXPECT_TRUE(results::compareResults(runWith(0, 0, 12), without_record, {}).failed());
+  results::Results without_metric = runWith(0, 0, 12);
   without_metric.records[0].measures[0].rows[0].metrics.pop_back();
-  const Comparison c = compareResults(runWith(0, 0, 12), without_metric, {});
-  ASSERT_EQ(c.count(ChangeKind::kMissing), 1u);
+  const results::Comparison c = results::compareResults(runWith(0, 0, 12), without_metric, {});
+  ASSERT_EQ(c.count(results::ChangeKind::kMissing), 1u);
   EXPECT_EQ(c.changes[0].metric, "shared_edges");
 }
 
 // Worst first: missing, then regressions by relative size; the table is cut at the limit.
 TEST(Compare, ChangesAreOrderedWorstFirstAndLimited) {
-  Results base = runWith(1, 1, 12), current = runWith(1.5, 3, 12, false);
-  const Comparison c = compareResults(base, current, {});
+  results::Results base = runWith(1, 1, 12), current = runWith(1.5, 3, 12, false);
+  const results::Comparison c = results::compareResults(base, current, {});
   ASSERT_EQ(c.changes.size(), 2u);
   EXPECT_EQ(c.changes[0].row, "backend=gpu");  // +200% before +50%
-  const std::string text = renderComparison(c, 1);
+  const std::string text = results::renderComparison(c, 1);
   EXPECT_NE(text.find("1 more changes not shown"), std::string::npos) << text;
 }
 

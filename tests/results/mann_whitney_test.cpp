@@ -56,7 +56,7 @@ std::vector<ScipyCase> scipyCases() {
 
 TEST(MannWhitney, MatchesScipyOnExactAndAsymptoticCases) {
   for (const ScipyCase& c : scipyCases()) {
-    const MannWhitneyResult r = mannWhitneyU(c.x, c.y);
+    const results::MannWhitneyResult r = results::mannWhitneyU(c.x, c.y);
     EXPECT_DOUBLE_EQ(r.u1, c.u1) << c.name;
     EXPECT_NEAR(r.p_value, c.p, 1e-12 * c.p) << c.name;
     EXPECT_EQ(r.exact, c.exact) << c.name;
@@ -67,25 +67,28 @@ TEST(MannWhitney, MatchesScipyOnExactAndAsymptoticCases) {
 // placements give U = 0, 1, 2, 2, 3, 4, so P(U ≥ 2) = 4/6 and P(U ≥ 4) = 1/6. It is
 // symmetric in the sample sizes and in U ↔ n1 n2 − U.
 TEST(MannWhitney, ExactDistributionAgainstEnumeration) {
-  EXPECT_DOUBLE_EQ(mannWhitneyExactSf(2, 2, 2), 4.0 / 6);
-  EXPECT_DOUBLE_EQ(mannWhitneyExactSf(4, 2, 2), 1.0 / 6);
-  EXPECT_DOUBLE_EQ(mannWhitneyExactSf(0, 3, 5), 1.0);
-  EXPECT_DOUBLE_EQ(mannWhitneyExactSf(16, 3, 5), 0.0);
-  EXPECT_DOUBLE_EQ(mannWhitneyExactSf(15, 3, 5), 1.0 / 56);  // C(8, 3) placements
+  EXPECT_DOUBLE_EQ(results::mannWhitneyExactSf(2, 2, 2), 4.0 / 6);
+  EXPECT_DOUBLE_EQ(results::mannWhitneyExactSf(4, 2, 2), 1.0 / 6);
+  EXPECT_DOUBLE_EQ(results::mannWhitneyExactSf(0, 3, 5), 1.0);
+  EXPECT_DOUBLE_EQ(results::mannWhitneyExactSf(16, 3, 5), 0.0);
+  EXPECT_DOUBLE_EQ(results::mannWhitneyExactSf(15, 3, 5), 1.0 / 56);  // C(8, 3) placements
   for (size_t u = 0; u <= 24; ++u) {
-    EXPECT_NEAR(mannWhitneyExactSf(u, 4, 6), mannWhitneyExactSf(u, 6, 4), 1e-15) << u;
+    EXPECT_NEAR(results::mannWhitneyExactSf(u, 4, 6), results::mannWhitneyExactSf(u, 6, 4), 1e-15)
+        << u;
     // P(U ≥ u) = P(U ≤ 24 − u) = 1 − P(U ≥ 25 − u)
-    EXPECT_NEAR(mannWhitneyExactSf(u, 4, 6), 1 - mannWhitneyExactSf(25 - u, 4, 6), 1e-14) << u;
+    EXPECT_NEAR(results::mannWhitneyExactSf(u, 4, 6), 1 - results::mannWhitneyExactSf(25 - u, 4, 6),
+                1e-14)
+        << u;
   }
 }
 
 // The test is symmetric in its samples, and every value equal is no evidence: p = 1.
 TEST(MannWhitney, SymmetricAndAllEqualIsOne) {
   for (const ScipyCase& c : scipyCases()) {
-    EXPECT_NEAR(mannWhitneyU(c.y, c.x).p_value, c.p, 1e-12 * c.p) << c.name;
+    EXPECT_NEAR(results::mannWhitneyU(c.y, c.x).p_value, c.p, 1e-12 * c.p) << c.name;
   }
-  EXPECT_EQ(mannWhitneyU({1, 1, 1}, {1, 1, 1, 1}).p_value, 1.0);
-  EXPECT_EQ(mannWhitneyU({2}, {2}).p_value, 1.0);
+  EXPECT_EQ(results::mannWhitneyU({1, 1, 1}, {1, 1, 1, 1}).p_value, 1.0);
+  EXPECT_EQ(results::mannWhitneyU({2}, {2}).p_value, 1.0);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ int main() {
       }
     }
     if (samples[0].empty() || samples[1].empty()) return 2;
-    const tb::MannWhitneyResult r = tb::mannWhitneyU(samples[0], samples[1]);
+    const tb::results::MannWhitneyResult r = tb::results::mannWhitneyU(samples[0], samples[1]);
     std::printf("%.17g %.17g %d\n", r.u1, r.p_value, r.exact ? 1 : 0);
   }
   return 0;

@@ -13,26 +13,27 @@ namespace tb {
 namespace {
 
 // Two techniques (not in id order), two assets, two measures (not in id order).
-RunSelection selection() {
+results::RunSelection selection() {
   return {{{"zeta", {"v0", "v1"}}, {"alpha", {"only"}}}, {"cube", "ball"}, {"memory", "error"}};
 }
 
-MeasureResult measure(const std::string& id, double value) {
-  MeasureResult result;
+results::MeasureResult measure(const std::string& id, double value) {
+  results::MeasureResult result;
   result.measure = id;
   result.rows.push_back({{{"level", "8"}}, {{"x", value, "ratio"}}});
   return result;
 }
 
-Record record(const std::string& technique, const std::string& variant, const std::string& asset,
-              std::vector<MeasureResult> measures) {
+results::Record record(const std::string& technique, const std::string& variant,
+                       const std::string& asset, std::vector<results::MeasureResult> measures) {
   return {technique, variant, asset, {{"alpha", "0.5"}}, {"a warning"}, std::move(measures)};
 }
 
-ShardRun shard(size_t index, size_t count, std::vector<Record> records, std::vector<Skip> skips) {
-  ShardRun run;
+results::ShardRun shard(size_t index, size_t count, std::vector<results::Record> records,
+                        std::vector<results::Skip> skips) {
+  results::ShardRun run;
   run.folder = "results/s" + std::to_string(index);
-  Results& r = run.results;
+  results::Results& r = run.results;
   r.context.run_id = "s" + std::to_string(index);
   r.context.git_sha = "abc";
   r.context.host = index == 0 ? "node-a" : "node-b";
@@ -48,14 +49,14 @@ ShardRun shard(size_t index, size_t count, std::vector<Record> records, std::vec
 }
 
 // What the unsharded run would hold, in its order.
-std::vector<Record> unshardedRecords() {
+std::vector<results::Record> unshardedRecords() {
   return {record("zeta", "v0", "cube", {measure("memory", 1), measure("error", 2)}),
           record("zeta", "v0", "ball", {measure("memory", 3)}),
           record("zeta", "v1", "cube", {measure("error", 4)}),
           record("alpha", "only", "cube", {measure("memory", 5), measure("error", 6)})};
 }
 
-std::vector<ShardRun> threeShards() {
+std::vector<results::ShardRun> threeShards() {
   return {shard(1, 3,
                 {record("zeta", "v1", "cube", {measure("error", 4)}),
                  record("zeta", "v0", "cube", {measure("error", 2)})},
@@ -70,14 +71,14 @@ std::vector<ShardRun> threeShards() {
                 {})};
 }
 
-std::string recordsJson(const std::vector<Record>& records) {
-  Results results;
+std::string recordsJson(const std::vector<results::Record>& records) {
+  results::Results results;
   results.records = records;
-  return toJson(results)["records"].dump(2);
+  return results::toJson(results)["records"].dump(2);
 }
 
 TEST(Merge, RecordsAndMeasuresComeBackInTheUnshardedOrder) {
-  const Results merged = mergeShards(threeShards());
+  const results::Results merged = results::mergeShards(threeShards());
   EXPECT_EQ(recordsJson(merged.records), recordsJson(unshardedRecords()));
   ASSERT_EQ(merged.skipped.size(), 1u);
   EXPECT_EQ(merged.skipped[0].technique, "alpha");
@@ -90,9 +91,9 @@ TEST(Merge, RecordsAndMeasuresComeBackInTheUnshardedOrder) {
   EXPECT_TRUE(merged.context.date.empty());
 }
 
-void expectRefusal(const std::vector<ShardRun>& shards, const std::string& rule) {
+void expectRefusal(const std::vector<results::ShardRun>& shards, const std::string& rule) {
   try {
-    mergeShards(shards);
+    results::mergeShards(shards);
     FAIL() << "merged; expected a refusal: " << rule;
   } catch (const std::runtime_error& error) {
     const std::string message = error.what();
@@ -102,83 +103,84 @@ void expectRefusal(const std::vector<ShardRun>& shards, const std::string& rule)
 }
 
 TEST(Merge, RefusesShardsThatDoNotFitTogether) {
-  std::vector<ShardRun> shards = threeShards();
+  std::vector<results::ShardRun> shards = threeShards();
   expectRefusal({shards[0], shards[1]}, "missing shard 2/3");
   expectRefusal({shards[0], shards[1], shards[2], shards[1]}, "given twice");
 
-  std::vector<ShardRun> other_n = threeShards();
+  std::vector<results::ShardRun> other_n = threeShards();
   other_n[2].results.context.shard = {2, 4};
   expectRefusal(other_n, "same N");
 
-  std::vector<ShardRun> other_build = threeShards();
+  std::vector<results::ShardRun> other_build = threeShards();
   other_build[1].results.context.git_sha = "def";
   expectRefusal(other_build, "git sha");
 
-  std::vector<ShardRun> other_device = threeShards();
+  std::vector<results::ShardRun> other_device = threeShards();
   other_device[1].results.context.vulkan_device = "NVIDIA";
   expectRefusal(other_device, "Vulkan device");
 
-  std::vector<ShardRun> other_selection = threeShards();
+  std::vector<results::ShardRun> other_selection = threeShards();
   other_selection[1].results.context.selection.measures = {"error", "memory"};
   expectRefusal(other_selection, "selection differs");
 
-  std::vector<ShardRun> other_suite = threeShards();
+  std::vector<results::ShardRun> other_suite = threeShards();
   other_suite[2].results.context.selection.suite = "full";
   expectRefusal(other_suite, "selection differs");
 
-  std::vector<ShardRun> other_cameras = threeShards();
+  std::vector<results::ShardRun> other_cameras = threeShards();
   other_cameras[1].results.context.selection.camera_paths = {"assets/cameras/dolly.json"};
   expectRefusal(other_cameras, "selection differs");
 
-  std::vector<ShardRun> other_assets = threeShards();
+  std::vector<results::ShardRun> other_assets = threeShards();
   other_assets[1].results.assets[0].faces = 7;
   expectRefusal(other_assets, "assets differ");
 
-  std::vector<ShardRun> unsharded = threeShards();
+  std::vector<results::ShardRun> unsharded = threeShards();
   unsharded[0].results.context.shard = {};
   expectRefusal(unsharded, "not a shard run");
 }
 
 TEST(Merge, RefusesRecordsThatDisagree) {
-  std::vector<ShardRun> twice = threeShards();
+  std::vector<results::ShardRun> twice = threeShards();
   twice[1].results.records.push_back(record("zeta", "v1", "cube", {measure("error", 4)}));
   expectRefusal(twice, "was also measured in results/s0");
 
-  std::vector<ShardRun> warnings = threeShards();
+  std::vector<results::ShardRun> warnings = threeShards();
   warnings[1].results.records[0].warnings.clear();
   expectRefusal(warnings, "parameters or warnings");
 
-  std::vector<ShardRun> skipped_twice = threeShards();
+  std::vector<results::ShardRun> skipped_twice = threeShards();
   skipped_twice[2].results.skipped.push_back({"alpha", "ball", "alpha: no triangles"});
   expectRefusal(skipped_twice, "also recorded in");
 
-  std::vector<ShardRun> unknown = threeShards();
+  std::vector<results::ShardRun> unknown = threeShards();
   unknown[2].results.records.push_back(record("zeta", "v9", "cube", {measure("error", 4)}));
   expectRefusal(unknown, "not in the run's selection");
 }
 
 TEST(Merge, ContextRoundTripsThroughResultsJson) {
-  const Results merged = mergeShards(threeShards());
-  const Results parsed = resultsFromJson(toJson(merged));
+  const results::Results merged = results::mergeShards(threeShards());
+  const results::Results parsed = results::resultsFromJson(results::toJson(merged));
   EXPECT_EQ(parsed.context.selection, selection());
   ASSERT_EQ(parsed.context.merged_from.size(), 3u);
-  EXPECT_EQ(parsed.context.merged_from[1].shard, (ShardId{1, 3}));
-  EXPECT_EQ(serializeResults(parsed), serializeResults(merged));
+  EXPECT_EQ(parsed.context.merged_from[1].shard, (results::ShardId{1, 3}));
+  EXPECT_EQ(results::serializeResults(parsed), results::serializeResults(merged));
   // The suite mode and --camera files round-trip; results written before them read as
   // the default suite with the suite's own paths.
-  Results full = merged;
+  results::Results full = merged;
   full.context.selection.suite = "full";
   full.context.selection.camera_paths = {"assets/cameras/orbit.json", "my/path.json"};
-  EXPECT_EQ(resultsFromJson(toJson(full)).context.selection, full.context.selection);
-  auto before_suite = toJson(merged);
+  EXPECT_EQ(results::resultsFromJson(results::toJson(full)).context.selection,
+            full.context.selection);
+  auto before_suite = results::toJson(merged);
   before_suite["context"]["selection"].erase("suite");
-  EXPECT_EQ(resultsFromJson(before_suite).context.selection.suite, "default");
-  EXPECT_FALSE(toJson(merged)["context"]["selection"].contains("camera_paths"));
+  EXPECT_EQ(results::resultsFromJson(before_suite).context.selection.suite, "default");
+  EXPECT_FALSE(results::toJson(merged)["context"]["selection"].contains("camera_paths"));
   // Results written before sharding (no selection, shard or merged_from) still read.
-  auto old = toJson(merged);
+  auto old = results::toJson(merged);
   old["context"].erase("selection");
   old["context"].erase("merged_from");
-  EXPECT_NO_THROW(resultsFromJson(old));
+  EXPECT_NO_THROW(results::resultsFromJson(old));
 }
 
 }  // namespace

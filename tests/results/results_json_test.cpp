@@ -8,53 +8,56 @@
 namespace tb {
 namespace {
 
-Results sampleResults() {
-  Results results;
+results::Results sampleResults() {
+  results::Results results;
   results.context.date = "2026-11-22T00:00:00Z";
   results.context.run_id = "r1";
   results.context.libraries = {{"OpenSubdiv", "v3_5_0"}};
   results.assets.push_back({"opensubdiv/catmark_cube", "assets/x.obj", 6, 8, "quads", false});
-  Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {{"alpha", "0.75"}}, {"w"}, {}};
-  MeasureResult memory;
+  results::Record record{"phong", "alpha0.75", "opensubdiv/catmark_cube", {{"alpha", "0.75"}},
+                         {"w"},   {}};
+  results::MeasureResult memory;
   memory.measure = "memory";
   memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 1234, "bytes"}, {"ratio", 0.1, "ratio"}}});
-  memory.rows.push_back(
-      unmeasuredRow({{"level", "16"}}, MeasureStatus::kFailed, "device lost at level 16"));
+  memory.rows.push_back(results::unmeasuredRow({{"level", "16"}}, results::MeasureStatus::kFailed,
+                                               "device lost at level 16"));
   record.measures.push_back(memory);
-  MeasureResult skipped{"gpu", MeasureStatus::kSkipped, "no Vulkan device", {}, {}};
+  results::MeasureResult skipped{
+      "gpu", results::MeasureStatus::kSkipped, "no Vulkan device", {}, {}};
   record.measures.push_back(skipped);
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
-  results.measures.push_back({"memory",
-                              "Memory",
-                              "bytes",
-                              {{"plain_bytes", Unit::kBytes, Direction::kNone},
-                               {"ratio", Unit::kRatio, Direction::kHigherIsBetter}},
-                              {"ratio"},
-                              {"a fixed note"}});
+  results.measures.push_back(
+      {"memory",
+       "Memory",
+       "bytes",
+       {{"plain_bytes", results::Unit::kBytes, results::Direction::kNone},
+        {"ratio", results::Unit::kRatio, results::Direction::kHigherIsBetter}},
+       {"ratio"},
+       {"a fixed note"}});
   results.measures.back().summary_scope = {{"level", "1*"}};
-  PlotSpec plot;
+  results::PlotSpec plot;
   plot.title = "Ratio against level";
-  plot.kind = PlotKind::kLine;
+  plot.kind = results::PlotKind::kLine;
   plot.x = "level";
   plot.y = "ratio";
   plot.where = {{"level", "*"}};
   plot.log_y = true;
-  plot.reduce = PlotReduce::kMax;
+  plot.reduce = results::PlotReduce::kMax;
   results.measures.back().plots.push_back(plot);
   return results;
 }
 
 TEST(ResultsJson, RoundTripsEveryField) {
-  const Results original = sampleResults();
-  const std::string text = serializeResults(original);
-  const Results parsed = resultsFromJson(nlohmann::ordered_json::parse(text));
-  EXPECT_EQ(serializeResults(parsed), text);
-  EXPECT_EQ(parsed.records[0].measures[1].status, MeasureStatus::kSkipped);
+  const results::Results original = sampleResults();
+  const std::string text = results::serializeResults(original);
+  const results::Results parsed = results::resultsFromJson(nlohmann::ordered_json::parse(text));
+  EXPECT_EQ(results::serializeResults(parsed), text);
+  EXPECT_EQ(parsed.records[0].measures[1].status, results::MeasureStatus::kSkipped);
   EXPECT_EQ(parsed.records[0].measures[0].rows[0].metrics[1].value, 0.1);
   EXPECT_EQ(parsed.skipped[0].reason, original.skipped[0].reason);
-  const MetricRow& failed = parsed.records[0].measures[0].rows[1];
-  EXPECT_EQ(failed.status, MeasureStatus::kFailed);
+  const results::MetricRow& failed = parsed.records[0].measures[0].rows[1];
+  EXPECT_EQ(failed.status, results::MeasureStatus::kFailed);
   EXPECT_EQ(failed.reason, "device lost at level 16");
   EXPECT_TRUE(failed.metrics.empty());
   EXPECT_EQ(parsed.measures[0].summary_scope, original.measures[0].summary_scope);
@@ -62,17 +65,17 @@ TEST(ResultsJson, RoundTripsEveryField) {
 }
 
 TEST(ResultsJson, RowScopeMatchesExactlyOrByGlob) {
-  EXPECT_TRUE(rowInScope({}, {{"stage", "acc/acc.tese"}}));
-  EXPECT_TRUE(rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tese"}}));
-  EXPECT_FALSE(rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tesc"}}));
-  EXPECT_TRUE(rowInScope({{"stage", "acc/*.te*"}}, {{"stage", "acc/acc.tese"}}));
-  EXPECT_FALSE(rowInScope({{"source", "spirv_O"}}, {{"stage", "acc/acc.tese"}}));
-  EXPECT_FALSE(rowInScope({{"source", "spirv_O"}}, {{"source", "spirv_O2"}}));
+  EXPECT_TRUE(results::rowInScope({}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_TRUE(results::rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(results::rowInScope({{"stage", "*.tese"}}, {{"stage", "acc/acc.tesc"}}));
+  EXPECT_TRUE(results::rowInScope({{"stage", "acc/*.te*"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(results::rowInScope({{"source", "spirv_O"}}, {{"stage", "acc/acc.tese"}}));
+  EXPECT_FALSE(results::rowInScope({{"source", "spirv_O"}}, {{"source", "spirv_O2"}}));
 }
 
 // A skip or failure is a status a reader can filter on; an ok row spends no bytes on it.
 TEST(ResultsJson, RowStatusIsWrittenOnlyWhenNotOk) {
-  const auto json = toJson(sampleResults());
+  const auto json = results::toJson(sampleResults());
   const auto& rows = json["records"][0]["measures"][0]["rows"];
   // Schema 4: [[keys], [metrics]] for an ok row, then status and reason for the others.
   EXPECT_EQ(rows[0].size(), 2u);
@@ -81,13 +84,13 @@ TEST(ResultsJson, RowStatusIsWrittenOnlyWhenNotOk) {
   EXPECT_EQ(rows[1][3], "device lost at level 16");
   auto broken = json;
   broken["records"][0]["measures"][0]["rows"][1][2] = "maybe";
-  EXPECT_THROW(resultsFromJson(broken), std::runtime_error);
+  EXPECT_THROW(results::resultsFromJson(broken), std::runtime_error);
 }
 
 TEST(ResultsJson, RowsAreOneLineEachWithUnitsFromTheDeclaration) {
-  const Results results = sampleResults();
-  const std::string text = serializeResults(results);
-  const Results read = resultsFromJson(nlohmann::ordered_json::parse(text));
+  const results::Results results = sampleResults();
+  const std::string text = results::serializeResults(results);
+  const results::Results read = results::resultsFromJson(nlohmann::ordered_json::parse(text));
   ASSERT_EQ(read.records.size(), results.records.size());
   const auto& rows = results.records[0].measures[0].rows;
   const auto& read_rows = read.records[0].measures[0].rows;
@@ -111,15 +114,15 @@ TEST(ResultsJson, RowsAreOneLineEachWithUnitsFromTheDeclaration) {
     if (next != std::string::npos && text.compare(next, 2, "[[") == 0) ++row_lines;
   }
   size_t all_rows = 0;
-  for (const Record& record : results.records) {
-    for (const MeasureResult& m : record.measures) all_rows += m.rows.size();
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) all_rows += m.rows.size();
   }
   EXPECT_EQ(row_lines, all_rows);
   // A row with the wrong number of metric values is refused, naming the row.
-  auto broken = toJson(results);
+  auto broken = results::toJson(results);
   broken["records"][0]["measures"][0]["rows"][0][1].push_back(1);
   try {
-    resultsFromJson(broken);
+    results::resultsFromJson(broken);
     FAIL();
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("rows[0]"), std::string::npos) << error.what();
@@ -127,20 +130,20 @@ TEST(ResultsJson, RowsAreOneLineEachWithUnitsFromTheDeclaration) {
 }
 
 TEST(ResultsJson, SerialisationIsByteStable) {
-  EXPECT_EQ(serializeResults(sampleResults()), serializeResults(sampleResults()));
-  const auto json = toJson(sampleResults());
+  EXPECT_EQ(results::serializeResults(sampleResults()), results::serializeResults(sampleResults()));
+  const auto json = results::toJson(sampleResults());
   EXPECT_EQ(json.begin().key(), "schema_version");
-  EXPECT_EQ(json["schema_version"], kResultsSchemaVersion);
+  EXPECT_EQ(json["schema_version"], results::kResultsSchemaVersion);
 }
 
 TEST(ResultsJson, RejectsAnotherSchemaVersionAndMissingFields) {
-  auto json = toJson(sampleResults());
-  json["schema_version"] = kResultsSchemaVersion + 1;
-  EXPECT_THROW(resultsFromJson(json), std::runtime_error);
-  auto broken = toJson(sampleResults());
+  auto json = results::toJson(sampleResults());
+  json["schema_version"] = results::kResultsSchemaVersion + 1;
+  EXPECT_THROW(results::resultsFromJson(json), std::runtime_error);
+  auto broken = results::toJson(sampleResults());
   broken["records"][0].erase("asset");
   try {
-    resultsFromJson(broken);
+    results::resultsFromJson(broken);
     FAIL();
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("records[0]: missing field 'asset'"), std::string::npos)
@@ -149,33 +152,34 @@ TEST(ResultsJson, RejectsAnotherSchemaVersionAndMissingFields) {
 }
 
 TEST(ResultsJson, RoundTripsMeasureDeclarationsAndRejectsUnknownUnits) {
-  const Results original = sampleResults();
-  const Results parsed = resultsFromJson(toJson(original));
+  const results::Results original = sampleResults();
+  const results::Results parsed = results::resultsFromJson(results::toJson(original));
   ASSERT_EQ(parsed.measures.size(), 1u);
-  const MeasureDeclaration& memory = *parsed.findMeasure("memory");
+  const results::MeasureDeclaration& memory = *parsed.findMeasure("memory");
   EXPECT_EQ(memory.metrics, original.measures[0].metrics);
   EXPECT_EQ(memory.headline, std::vector<std::string>{"ratio"});
   EXPECT_EQ(memory.notes, std::vector<std::string>{"a fixed note"});
-  auto json = toJson(original);
+  auto json = results::toJson(original);
   EXPECT_EQ(json["measures"][0]["metrics"][1]["unit"], "ratio");
   EXPECT_EQ(json["measures"][0]["metrics"][1]["direction"], "higher");
   json["measures"][0]["metrics"][1]["unit"] = "furlongs";
-  EXPECT_THROW(resultsFromJson(json), std::runtime_error);
+  EXPECT_THROW(results::resultsFromJson(json), std::runtime_error);
 }
 
 TEST(MetricSpec, EveryUnitAndDirectionHasOneSpelling) {
   std::set<std::string_view> spellings;
-  for (Unit unit : allUnits()) {
+  for (results::Unit unit : results::allUnits()) {
     EXPECT_TRUE(spellings.insert(toString(unit)).second) << toString(unit);
-    EXPECT_EQ(parseUnit(toString(unit)), unit);
-    EXPECT_FALSE(describe(unit).empty());
+    EXPECT_EQ(results::parseUnit(toString(unit)), unit);
+    EXPECT_FALSE(results::describe(unit).empty());
   }
-  EXPECT_EQ(parseUnit("ulp of scale"), std::nullopt);
-  for (Direction direction :
-       {Direction::kLowerIsBetter, Direction::kHigherIsBetter, Direction::kNone}) {
-    EXPECT_EQ(parseDirection(toString(direction)), direction);
+  EXPECT_EQ(results::parseUnit("ulp of scale"), std::nullopt);
+  for (results::Direction direction :
+       {results::Direction::kLowerIsBetter, results::Direction::kHigherIsBetter,
+        results::Direction::kNone}) {
+    EXPECT_EQ(results::parseDirection(toString(direction)), direction);
   }
-  EXPECT_EQ(parseDirection("sideways"), std::nullopt);
+  EXPECT_EQ(results::parseDirection("sideways"), std::nullopt);
 }
 
 }  // namespace

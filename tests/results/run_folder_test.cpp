@@ -33,10 +33,10 @@ std::string errorOf(const std::function<void()>& action) {
 // leaves exactly the files written, under `<id>`.
 TEST(RunFolder, PendingFolderIsRenamedIntoPlaceWhenFinished) {
   const auto root = testing::scratchDirectory("run_folder_finish");
-  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "baseline");
+  results::PendingRunFolder folder = results::PendingRunFolder::forRun(root.string(), "baseline");
   EXPECT_EQ(folder.runId(), "baseline");
   EXPECT_EQ(folder.pendingPath(), (root / "baseline.incomplete").string());
-  EXPECT_TRUE(fs::is_regular_file(root / "baseline.incomplete" / kIncompleteMarker));
+  EXPECT_TRUE(fs::is_regular_file(root / "baseline.incomplete" / results::kIncompleteMarker));
   EXPECT_FALSE(fs::exists(root / "baseline"));
   folder.journal(R"({"technique":"acc"})");
   folder.writeFile("results.json", "{}\n");
@@ -47,23 +47,24 @@ TEST(RunFolder, PendingFolderIsRenamedIntoPlaceWhenFinished) {
     files.push_back(entry.path().filename().string());
   }
   EXPECT_EQ(files, std::vector<std::string>{"results.json"});
-  EXPECT_NO_THROW(requireFinishedRunFolder((root / "baseline").string()));
+  EXPECT_NO_THROW(results::requireFinishedRunFolder((root / "baseline").string()));
 }
 
 TEST(RunFolder, ExplicitRunIdIsNeverReusedFinishedOrNot) {
   const auto root = testing::scratchDirectory("run_folder_explicit");
-  PendingRunFolder::forRun(root.string(), "baseline").finish();
-  EXPECT_NE(errorOf([&] { PendingRunFolder::forRun(root.string(), "baseline"); })
-                .find("run folder already exists"),
+  results::PendingRunFolder::forRun(root.string(), "baseline").finish();
+  EXPECT_NE(errorOf([&] {
+              results::PendingRunFolder::forRun(root.string(), "baseline");
+            }).find("run folder already exists"),
             std::string::npos);
-  PendingRunFolder running = PendingRunFolder::forRun(root.string(), "running");
-  EXPECT_THROW(PendingRunFolder::forRun(root.string(), "running"), std::runtime_error);
+  results::PendingRunFolder running = results::PendingRunFolder::forRun(root.string(), "running");
+  EXPECT_THROW(results::PendingRunFolder::forRun(root.string(), "running"), std::runtime_error);
 }
 
 TEST(RunFolder, TimestampedRunsGetDistinctFolders) {
   const auto root = testing::scratchDirectory("run_folder_auto");
-  PendingRunFolder a = PendingRunFolder::forRun(root.string(), "");
-  PendingRunFolder b = PendingRunFolder::forRun(root.string(), "");
+  results::PendingRunFolder a = results::PendingRunFolder::forRun(root.string(), "");
+  results::PendingRunFolder b = results::PendingRunFolder::forRun(root.string(), "");
   EXPECT_NE(a.runId(), b.runId());
   EXPECT_NE(a.finish(), b.finish());
 }
@@ -73,12 +74,13 @@ TEST(RunFolder, TimestampedRunsGetDistinctFolders) {
 TEST(RunFolder, AbandonedRunLeavesNothingBehind) {
   const auto root = testing::scratchDirectory("run_folder_abandon");
   {
-    PendingRunFolder folder = PendingRunFolder::forRun((root / "new" / "results").string(), "r");
+    results::PendingRunFolder folder =
+        results::PendingRunFolder::forRun((root / "new" / "results").string(), "r");
     folder.journal("{}");
   }
   EXPECT_TRUE(fs::is_empty(root)) << "the run's folder and the parents it made are gone";
-  PendingRunFolder::forRun(root.string(), "kept").finish();
-  { PendingRunFolder failed = PendingRunFolder::forRun(root.string(), "failed"); }
+  results::PendingRunFolder::forRun(root.string(), "kept").finish();
+  { results::PendingRunFolder failed = results::PendingRunFolder::forRun(root.string(), "failed"); }
   EXPECT_TRUE(fs::is_directory(root / "kept"));
   EXPECT_FALSE(fs::exists(root / "failed.incomplete"));
 }
@@ -86,24 +88,25 @@ TEST(RunFolder, AbandonedRunLeavesNothingBehind) {
 // What a killed run leaves is refused by name or by marker, with the records it journaled.
 TEST(RunFolder, UnfinishedFolderIsRefusedWithOneLine) {
   const auto root = testing::scratchDirectory("run_folder_unfinished");
-  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "killed");
+  results::PendingRunFolder folder = results::PendingRunFolder::forRun(root.string(), "killed");
   folder.journal("{}");
   folder.journal("{}");
-  const std::string message = errorOf([&] { requireFinishedRunFolder(folder.pendingPath()); });
+  const std::string message =
+      errorOf([&] { results::requireFinishedRunFolder(folder.pendingPath()); });
   EXPECT_NE(message.find("killed.incomplete: unfinished run"), std::string::npos) << message;
   EXPECT_NE(message.find("2 records journaled"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos);
   // Renamed by hand, the marker still says so.
   fs::rename(folder.pendingPath(), root / "renamed");
-  EXPECT_THROW(requireFinishedRunFolder((root / "renamed").string()), std::runtime_error);
-  EXPECT_NE(readFile(root / "renamed" / kIncompleteMarker).find("did not finish"),
+  EXPECT_THROW(results::requireFinishedRunFolder((root / "renamed").string()), std::runtime_error);
+  EXPECT_NE(readFile(root / "renamed" / results::kIncompleteMarker).find("did not finish"),
             std::string::npos);
 }
 
 // A folder that appears under the final name while the run measures is never replaced.
 TEST(RunFolder, FinishRefusesToReplaceAFolderThatAppeared) {
   const auto root = testing::scratchDirectory("run_folder_race");
-  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "r");
+  results::PendingRunFolder folder = results::PendingRunFolder::forRun(root.string(), "r");
   fs::create_directories(root / "r");
   testing::writeTextFile(root / "r" / "results.json", "other\n");
   folder.writeFile("results.json", "{}\n");
@@ -118,29 +121,29 @@ TEST(RunFolder, UnwritableRootIsOneLineNamingIt) {
   const auto root = testing::scratchDirectory("run_folder_unwritable");
   const std::string file = testing::writeTextFile(root / "plain_file", "x");
   const std::string message =
-      errorOf([&] { PendingRunFolder::forRun(file + "/results", ""); });
+      errorOf([&] { results::PendingRunFolder::forRun(file + "/results", ""); });
   EXPECT_NE(message.find(file + "/results: cannot create results folder"), std::string::npos)
       << message;
   EXPECT_EQ(message.find('\n'), std::string::npos);
-  EXPECT_THROW(PendingRunFolder::at(file + "/merged"), std::runtime_error);
+  EXPECT_THROW(results::PendingRunFolder::at(file + "/merged"), std::runtime_error);
 }
 
 TEST(RunFolder, MergeFolderIsCreatedOnceWithItsParents) {
   const auto root = testing::scratchDirectory("run_folder_new");
   const std::string path = (root / "merged" / "all").string();
-  PendingRunFolder folder = PendingRunFolder::at(path + "/");
+  results::PendingRunFolder folder = results::PendingRunFolder::at(path + "/");
   EXPECT_EQ(folder.runId(), "all");
   folder.finish();
   EXPECT_TRUE(fs::is_directory(path));
-  EXPECT_THROW(PendingRunFolder::at(path), std::runtime_error);
-  EXPECT_THROW(PendingRunFolder::at(path + "/"), std::runtime_error);
+  EXPECT_THROW(results::PendingRunFolder::at(path), std::runtime_error);
+  EXPECT_THROW(results::PendingRunFolder::at(path + "/"), std::runtime_error);
 }
 
 TEST(RunFolder, WriteNewFileRefusesToOverwrite) {
   const auto root = testing::scratchDirectory("run_folder_write");
   const std::string path = (root / "results.json").string();
-  writeNewFile(path, "{}\n");
-  EXPECT_THROW(writeNewFile(path, "other\n"), std::runtime_error);
+  results::writeNewFile(path, "{}\n");
+  EXPECT_THROW(results::writeNewFile(path, "other\n"), std::runtime_error);
   EXPECT_EQ(readFile(path), "{}\n");
 }
 
@@ -155,8 +158,8 @@ TEST(RunFolder, WriteFailureNamesTheFileAndTheCause) {
   small.rlim_cur = 1024;
   ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
   const std::string path = (root / "results.json").string();
-  const std::string message = errorOf([&] { writeNewFile(path, std::string(4096, 'x')); });
-  PendingRunFolder folder = PendingRunFolder::forRun(root.string(), "r");
+  const std::string message = errorOf([&] { results::writeNewFile(path, std::string(4096, 'x')); });
+  results::PendingRunFolder folder = results::PendingRunFolder::forRun(root.string(), "r");
   const std::string journal_message =
       errorOf([&] { folder.journal(std::string(4096, 'x')); });
   ::setrlimit(RLIMIT_FSIZE, &saved);

@@ -19,33 +19,36 @@ namespace {
 using testing::SurfaceDoubleTechnique;
 
 // One row per frame of the path it is given, keyed "frame"; counts its calls.
-class WholePathMeasure final : public Measure {
+class WholePathMeasure final : public measures::Measure {
  public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_whole_path",
-                                   "whole path",
-                                   "frames of the path",
-                                   {{"frames", Unit::kCount, Direction::kNone},
-                                    {"eye_x", Unit::kWorld, Direction::kNone},
-                                    {"full_suite", Unit::kCount, Direction::kNone}},
-                                   {},
-                                   {}};
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        "test_whole_path",
+        "whole path",
+        "frames of the path",
+        {{"frames", results::Unit::kCount, results::Direction::kNone},
+         {"eye_x", results::Unit::kWorld, results::Direction::kNone},
+         {"full_suite", results::Unit::kCount, results::Direction::kNone}},
+        {},
+        {}};
     return kInfo;
   }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface, MeasureNeed::kCameraPath}, VariantPolicy::kDefaultOnly, {}};
+  measures::MeasureRequirements requirements() const override {
+    return {{measures::MeasureNeed::kSurface, measures::MeasureNeed::kCameraPath},
+            measures::VariantPolicy::kDefaultOnly,
+            {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
     ++calls;
-    MeasureResult result;
+    results::MeasureResult result;
     result.measure = info().id;
-    const CameraPath& path = *input.camera_path;
+    const view::CameraPath& path = *input.camera_path;
     for (size_t f = 0; f < path.views.size(); ++f) {
       result.rows.push_back(
           {{{"frame", std::to_string(f)}},
            {{"frames", double(path.views.size()), "count"},
             {"eye_x", path.views[f].eye[0], "world"},
-            {"full_suite", input.suite == SuiteMode::kFull ? 1.0 : 0.0, "count"}}});
+            {"full_suite", input.suite == measures::SuiteMode::kFull ? 1.0 : 0.0, "count"}}});
     }
     return result;
   }
@@ -53,22 +56,25 @@ class WholePathMeasure final : public Measure {
 };
 
 // Needs a view: one row per view (the suite keys it).
-class OneViewMeasure final : public Measure {
+class OneViewMeasure final : public measures::Measure {
  public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_one_view",
-                                   "one view",
-                                   "viewport width",
-                                   {{"width", Unit::kPixels, Direction::kNone}},
-                                   {},
-                                   {}};
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        "test_one_view",
+        "one view",
+        "viewport width",
+        {{"width", results::Unit::kPixels, results::Direction::kNone}},
+        {},
+        {}};
     return kInfo;
   }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface, MeasureNeed::kView}, VariantPolicy::kDefaultOnly, {}};
+  measures::MeasureRequirements requirements() const override {
+    return {{measures::MeasureNeed::kSurface, measures::MeasureNeed::kView},
+            measures::VariantPolicy::kDefaultOnly,
+            {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     result.rows.push_back({{}, {{"width", double(input.view->viewport_width_px), "px"}}});
     return result;
@@ -76,9 +82,9 @@ class OneViewMeasure final : public Measure {
 };
 
 // Rows per camera_path key, in order of first appearance.
-std::vector<std::pair<std::string, size_t>> rowsPerPath(const MeasureResult& result) {
+std::vector<std::pair<std::string, size_t>> rowsPerPath(const results::MeasureResult& result) {
   std::vector<std::pair<std::string, size_t>> counts;
-  for (const MetricRow& row : result.rows) {
+  for (const results::MetricRow& row : result.rows) {
     const std::string& path = row.keys.at("camera_path");
     if (counts.empty() || counts.back().first != path) counts.emplace_back(path, 0);
     ++counts.back().second;
@@ -86,50 +92,51 @@ std::vector<std::pair<std::string, size_t>> rowsPerPath(const MeasureResult& res
   return counts;
 }
 
-const MeasureResult& resultOf(const Results& results, const std::string& measure) {
-  for (const MeasureResult& result : results.records.at(0).measures) {
+const results::MeasureResult& resultOf(const results::Results& results,
+                                       const std::string& measure) {
+  for (const results::MeasureResult& result : results.records.at(0).measures) {
     if (result.measure == measure) return result;
   }
   throw std::runtime_error("no result of " + measure);
 }
 
-Results runWith(const Measure& a, const Measure* b, SuiteMode mode,
-                std::vector<CameraPathFn> paths = {}) {
+results::Results runWith(const measures::Measure& a, const measures::Measure* b,
+                         measures::SuiteMode mode, std::vector<suite::CameraPathFn> paths = {}) {
   static const SurfaceDoubleTechnique surface;
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&surface};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.measures = {&a};
   if (b) selection.measures.push_back(b);
   selection.suite = mode;
   selection.camera_paths = std::move(paths);
-  Results results;
-  runSuite(selection, nullptr, &results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   return results;
 }
 
 TEST(CameraPathSuite, TheDefaultSuiteRunsTheMeasureOnceWithTheOrbitAtFourFrames) {
   const WholePathMeasure measure;
-  const Results results = runWith(measure, nullptr, SuiteMode::kDefault);
+  const results::Results results = runWith(measure, nullptr, measures::SuiteMode::kDefault);
   ASSERT_EQ(results.records.size(), 1u);  // kDefaultOnly
-  const MeasureResult& result = resultOf(results, "test_whole_path");
-  EXPECT_EQ(result.status, MeasureStatus::kOk);
+  const results::MeasureResult& result = resultOf(results, "test_whole_path");
+  EXPECT_EQ(result.status, results::MeasureStatus::kOk);
   EXPECT_EQ(measure.calls, 1);
-  ASSERT_EQ(result.rows.size(), size_t(kDefaultSuiteOrbitFrames));
+  ASSERT_EQ(result.rows.size(), size_t(suite::kDefaultSuiteOrbitFrames));
   for (size_t f = 0; f < result.rows.size(); ++f) {
     // The suite adds only "camera_path"; the measure keyed the frame.
     const std::map<std::string, std::string> keys{{"camera_path", "orbit"},
                                                   {"frame", std::to_string(f)}};
     EXPECT_EQ(result.rows[f].keys, keys);
-    EXPECT_EQ(result.rows[f].metrics[0].value, kDefaultSuiteOrbitFrames);
+    EXPECT_EQ(result.rows[f].metrics[0].value, suite::kDefaultSuiteOrbitFrames);
     EXPECT_EQ(result.rows[f].metrics[2].value, 0);  // the measure sees the default suite
   }
 }
 
 TEST(CameraPathSuite, TheFullSuiteRunsItOncePerBundledPathAtItsOwnFrameCount) {
   const WholePathMeasure measure;
-  const Results results = runWith(measure, nullptr, SuiteMode::kFull);
-  const MeasureResult& result = resultOf(results, "test_whole_path");
+  const results::Results results = runWith(measure, nullptr, measures::SuiteMode::kFull);
+  const results::MeasureResult& result = resultOf(results, "test_whole_path");
   EXPECT_EQ(measure.calls, 3);
   const std::vector<std::pair<std::string, size_t>> expected{
       {"orbit", 24}, {"dolly", 120}, {"flyby", 48}};
@@ -142,7 +149,7 @@ TEST(CameraPathSuite, SelectedPathsServeBothKindsAndViewMeasuresKeepTheTestOrbit
   {
     const WholePathMeasure whole;
     const OneViewMeasure one_view;
-    const Results results = runWith(whole, &one_view, SuiteMode::kDefault);
+    const results::Results results = runWith(whole, &one_view, measures::SuiteMode::kDefault);
     const std::vector<std::pair<std::string, size_t>> test_orbit{{"test_orbit", 3}};
     EXPECT_EQ(rowsPerPath(resultOf(results, "test_one_view")), test_orbit);
     EXPECT_EQ(rowsPerPath(resultOf(results, "test_whole_path")),
@@ -151,11 +158,12 @@ TEST(CameraPathSuite, SelectedPathsServeBothKindsAndViewMeasuresKeepTheTestOrbit
   // Selected paths (`run --camera`): both measures take them, at their own frame counts.
   const WholePathMeasure whole;
   const OneViewMeasure one_view;
-  const CameraPathFn two_views = [](const Aabb&) {
-    return CameraPath{"two_views", {View{}, View{}}};
+  const suite::CameraPathFn two_views = [](const mesh::Aabb&) {
+    return view::CameraPath{"two_views", {view::View{}, view::View{}}};
   };
-  const Results results = runWith(whole, &one_view, SuiteMode::kFull,
-                                  {cameraPathFn(resolveCameraPath("flyby")), two_views});
+  const results::Results results =
+      runWith(whole, &one_view, measures::SuiteMode::kFull,
+              {suite::cameraPathFn(suite::resolveCameraPath("flyby")), two_views});
   EXPECT_EQ(whole.calls, 2);
   const std::vector<std::pair<std::string, size_t>> selected{{"flyby", 48}, {"two_views", 2}};
   EXPECT_EQ(rowsPerPath(resultOf(results, "test_whole_path")), selected);
@@ -165,14 +173,16 @@ TEST(CameraPathSuite, SelectedPathsServeBothKindsAndViewMeasuresKeepTheTestOrbit
 
 TEST(CameraPathSuite, ACameraPathNeedNeverStopsAMeasureAndTheSuiteModeIsRecorded) {
   const SurfaceDoubleTechnique surface;
-  EXPECT_TRUE(measureRuns(
-      {{MeasureNeed::kSurface, MeasureNeed::kCameraPath}, VariantPolicy::kEveryVariant, {}},
-      surface, {true, false}, {true, true}));
-  SuiteSelection selection;
+  EXPECT_TRUE(
+      suite::measureRuns({{measures::MeasureNeed::kSurface, measures::MeasureNeed::kCameraPath},
+                          measures::VariantPolicy::kEveryVariant,
+                          {}},
+                         surface, {true, false}, {true, true}));
+  suite::SuiteSelection selection;
   selection.techniques = {&surface};
-  EXPECT_EQ(describeSelection(selection, {}).suite, "default");
-  selection.suite = SuiteMode::kFull;
-  EXPECT_EQ(describeSelection(selection, {}).suite, "full");
+  EXPECT_EQ(suite::describeSelection(selection, {}).suite, "default");
+  selection.suite = measures::SuiteMode::kFull;
+  EXPECT_EQ(suite::describeSelection(selection, {}).suite, "full");
 }
 
 }  // namespace

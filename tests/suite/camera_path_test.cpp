@@ -18,20 +18,20 @@ namespace tb {
 namespace {
 
 // Not a cube, not at the origin: both the centre and the diagonal matter.
-const Aabb kBox{{-1, -2, -3}, {3, 2, 1}};
-const Vec3d kCentre{1, 0, -1};
+const mesh::Aabb kBox{{-1, -2, -3}, {3, 2, 1}};
+const mesh::Vec3d kCentre{1, 0, -1};
 const double kDiagonal = std::sqrt(48.0);
 
-Vec3d eyeOf(const View& view) { return {view.eye[0], view.eye[1], view.eye[2]}; }
+mesh::Vec3d eyeOf(const view::View& view) { return {view.eye[0], view.eye[1], view.eye[2]}; }
 
 // The camera's forward axis (unit): clip w = dot(forward, p - eye) under lookAt and a
 // perspective projection, so the matrix's w row is forward.
-Vec3d forwardOf(const View& view) {
-  const Mat4& m = view.view_projection;
+mesh::Vec3d forwardOf(const view::View& view) {
+  const view::Mat4& m = view.view_projection;
   return {m.m[0][3], m.m[1][3], m.m[2][3]};
 }
 
-bool inside(const Aabb& box, const Vec3d& p) {
+bool inside(const mesh::Aabb& box, const mesh::Vec3d& p) {
   for (int i = 0; i < 3; ++i) {
     if (p[i] < box.min[i] || p[i] > box.max[i]) return false;
   }
@@ -39,26 +39,26 @@ bool inside(const Aabb& box, const Vec3d& p) {
 }
 
 TEST(CameraPath, BundledPathsAreOrbitDollyAndFlybyNamedRelativeToTheAssetsFolder) {
-  EXPECT_EQ(bundledCameraPaths(), (std::vector<std::string>{"dolly", "flyby", "orbit"}));
-  const CameraPathSpec orbit = resolveCameraPath("orbit");
+  EXPECT_EQ(suite::bundledCameraPaths(), (std::vector<std::string>{"dolly", "flyby", "orbit"}));
+  const suite::CameraPathSpec orbit = suite::resolveCameraPath("orbit");
   EXPECT_EQ(orbit.name, "orbit");
   EXPECT_EQ(orbit.shown_path, "assets/cameras/orbit.json");
   EXPECT_EQ(orbit.frames, 24u);
   EXPECT_EQ(orbit.keyframes.size(), 5u);
-  EXPECT_EQ(resolveCameraPath("dolly").frames, 120u);
-  EXPECT_EQ(resolveCameraPath("flyby").frames, 48u);
-  EXPECT_THROW(resolveCameraPath("not_a_camera_path"), InputError);
+  EXPECT_EQ(suite::resolveCameraPath("dolly").frames, 120u);
+  EXPECT_EQ(suite::resolveCameraPath("flyby").frames, 48u);
+  EXPECT_THROW(suite::resolveCameraPath("not_a_camera_path"), mesh::InputError);
   // A path given as a file is named as given.
   const std::string file = testing::assetPath("cameras/dolly.json");
-  EXPECT_EQ(resolveCameraPath(file).shown_path, file);
+  EXPECT_EQ(suite::resolveCameraPath(file).shown_path, file);
 }
 
 TEST(CameraPath, OrbitFramesAreAllTwoDiagonalsFromTheCentre) {
-  const CameraPath path = sampleCameraPath(resolveCameraPath("orbit"), kBox);
+  const view::CameraPath path = suite::sampleCameraPath(suite::resolveCameraPath("orbit"), kBox);
   EXPECT_EQ(path.name, "orbit");
   ASSERT_EQ(path.views.size(), 24u);
-  for (const View& view : path.views) {
-    EXPECT_NEAR(length(eyeOf(view) - kCentre) / kDiagonal, 2, 2e-9);
+  for (const view::View& view : path.views) {
+    EXPECT_NEAR(mesh::length(eyeOf(view) - kCentre) / kDiagonal, 2, 2e-9);
     // A horizontal circle 0.25 diagonals above the centre.
     EXPECT_NEAR(view.eye[1], kCentre.y + 0.25 * kDiagonal, 1e-12 * kDiagonal);
   }
@@ -71,21 +71,22 @@ TEST(CameraPath, OrbitFramesAreAllTwoDiagonalsFromTheCentre) {
 
 TEST(CameraPath, OrbitFramesAt45And90DegreesAreOnTheCircle) {
   // 9 frames: every 45 degrees, so frame 2 is keyframe 1 and frame 1 is halfway (slerp).
-  const CameraPath path = sampleCameraPath(resolveCameraPath("orbit"), kBox, 9);
+  const view::CameraPath path = suite::sampleCameraPath(suite::resolveCameraPath("orbit"), kBox, 9);
   ASSERT_EQ(path.views.size(), 9u);
   const double radius = std::sqrt(3.9375);  // horizontal radius: sqrt(2^2 - 0.25^2) diagonals
-  const Vec3d at_90 = kCentre + kDiagonal * Vec3d{radius, 0.25, 0};
-  const Vec3d at_45 =
-      kCentre + kDiagonal * Vec3d{radius * std::sqrt(0.5), 0.25, radius * std::sqrt(0.5)};
-  EXPECT_LT(length(eyeOf(path.views[2]) - at_90), 1e-12 * kDiagonal);
-  EXPECT_LT(length(eyeOf(path.views[1]) - at_45), 1e-12 * kDiagonal);
+  const mesh::Vec3d at_90 = kCentre + kDiagonal * mesh::Vec3d{radius, 0.25, 0};
+  const mesh::Vec3d at_45 =
+      kCentre + kDiagonal * mesh::Vec3d{radius * std::sqrt(0.5), 0.25, radius * std::sqrt(0.5)};
+  EXPECT_LT(mesh::length(eyeOf(path.views[2]) - at_90), 1e-12 * kDiagonal);
+  EXPECT_LT(mesh::length(eyeOf(path.views[1]) - at_45), 1e-12 * kDiagonal);
 }
 
 TEST(CameraPath, DollyDistancesAreGeometric) {
-  const CameraPath path = sampleCameraPath(resolveCameraPath("dolly"), kBox);
+  const view::CameraPath path = suite::sampleCameraPath(suite::resolveCameraPath("dolly"), kBox);
   ASSERT_EQ(path.views.size(), 120u);
   std::vector<double> distances;
-  for (const View& view : path.views) distances.push_back(length(eyeOf(view) - kCentre));
+  for (const view::View& view : path.views)
+    distances.push_back(mesh::length(eyeOf(view) - kCentre));
   EXPECT_NEAR(distances.front() / kDiagonal, 20, 1e-12);
   EXPECT_NEAR(distances.back() / kDiagonal, 0.3, 1e-12);
   const double ratio = std::pow(0.3 / 20, 1.0 / 119);  // about 0.965: 3.5 % closer a frame
@@ -93,17 +94,17 @@ TEST(CameraPath, DollyDistancesAreGeometric) {
     EXPECT_NEAR(distances[i] / distances[i - 1], ratio, 1e-12) << i;
   }
   // One direction all along.
-  const Vec3d first = normalize(eyeOf(path.views.front()) - kCentre);
-  EXPECT_LT(length(normalize(eyeOf(path.views.back()) - kCentre) - first), 1e-12);
+  const mesh::Vec3d first = mesh::normalize(eyeOf(path.views.front()) - kCentre);
+  EXPECT_LT(mesh::length(mesh::normalize(eyeOf(path.views.back()) - kCentre) - first), 1e-12);
 }
 
 TEST(CameraPath, FlybyNearPlaneEntersTheBoundingBox) {
-  const Aabb cube{{-1, -1, -1}, {1, 1, 1}};
-  const CameraPath path = sampleCameraPath(resolveCameraPath("flyby"), cube);
+  const mesh::Aabb cube{{-1, -1, -1}, {1, 1, 1}};
+  const view::CameraPath path = suite::sampleCameraPath(suite::resolveCameraPath("flyby"), cube);
   ASSERT_EQ(path.views.size(), 48u);
   size_t frames_inside = 0;
-  for (const View& view : path.views) {
-    const Vec3d near_point = eyeOf(view) + view.near_plane * forwardOf(view);
+  for (const view::View& view : path.views) {
+    const mesh::Vec3d near_point = eyeOf(view) + view.near_plane * forwardOf(view);
     // The point is on the near plane: clip depth 0 (Vulkan depth in [0, 1]).
     const auto clip = view.view_projection.transform({near_point.x, near_point.y, near_point.z, 1});
     EXPECT_NEAR(clip[2] / clip[3], 0, 1e-9);
@@ -115,11 +116,11 @@ TEST(CameraPath, FlybyNearPlaneEntersTheBoundingBox) {
 }
 
 TEST(CameraPath, TheTargetProjectsToTheViewportCentreOnEveryFrame) {
-  const CameraPathSpec orbit = resolveCameraPath("orbit");
-  const CameraPath path = sampleCameraPath(orbit, kBox);
-  const Vec3d target = kCentre + kDiagonal * Vec3d{0, 0.25, 0};
-  for (const View& view : path.views) {
-    const ProjectedPoint p = projectToPixels(view, target.x, target.y, target.z);
+  const suite::CameraPathSpec orbit = suite::resolveCameraPath("orbit");
+  const view::CameraPath path = suite::sampleCameraPath(orbit, kBox);
+  const mesh::Vec3d target = kCentre + kDiagonal * mesh::Vec3d{0, 0.25, 0};
+  for (const view::View& view : path.views) {
+    const view::ProjectedPoint p = view::projectToPixels(view, target.x, target.y, target.z);
     EXPECT_GT(p.clip_w, 0);
     EXPECT_NEAR(p.x_px, 960, 1e-6);
     EXPECT_NEAR(p.y_px, 540, 1e-6);
@@ -140,21 +141,21 @@ TEST(CameraPath, WorldSpaceAndASingleKeyframe) {
       R"({"resolution": [640, 480], "fov_y_deg": 60, "frames": 3, "space": "world",
           "near": 0.5, "far": 50, "target_pixels_per_edge": 4,
           "keyframes": [{"eye": [0, 0, 10], "target": [1, 2, 3], "up": [0, 1, 0]}]})");
-  const CameraPathSpec spec = loadCameraPath(file, "still.json");
+  const suite::CameraPathSpec spec = suite::loadCameraPath(file, "still.json");
   EXPECT_EQ(spec.name, "still");  // the file's stem
   EXPECT_FALSE(spec.bounds_space);
-  const CameraPath path = sampleCameraPath(spec, kBox);
+  const view::CameraPath path = suite::sampleCameraPath(spec, kBox);
   ASSERT_EQ(path.views.size(), 3u);
-  for (const View& view : path.views) {
+  for (const view::View& view : path.views) {
     EXPECT_EQ(view.view_projection, path.views[0].view_projection);
-    EXPECT_EQ(eyeOf(view), (Vec3d{0, 0, 10}));
+    EXPECT_EQ(eyeOf(view), (mesh::Vec3d{0, 0, 10}));
     EXPECT_EQ(view.near_plane, 0.5);
     EXPECT_EQ(view.target_pixels_per_edge, 4);
-    const ProjectedPoint p = projectToPixels(view, 1, 2, 3);
+    const view::ProjectedPoint p = view::projectToPixels(view, 1, 2, 3);
     EXPECT_NEAR(p.x_px, 320, 1e-9);
     EXPECT_NEAR(p.y_px, 240, 1e-9);
   }
-  EXPECT_EQ(sampleCameraPath(spec, kBox, 7).views.size(), 7u);  // frames_override
+  EXPECT_EQ(suite::sampleCameraPath(spec, kBox, 7).views.size(), 7u);  // frames_override
 }
 
 using Fields = std::vector<std::pair<std::string, std::string>>;
@@ -196,8 +197,8 @@ std::string loadError(const std::string& text) {
   const auto dir = testing::scratchDirectory("camera_bad");
   const std::string file = testing::writeTextFile(dir / "bad.json", text);
   try {
-    loadCameraPath(file, "assets/cameras/bad.json");
-  } catch (const InputError& error) {
+    suite::loadCameraPath(file, "assets/cameras/bad.json");
+  } catch (const mesh::InputError& error) {
     return error.what();
   }
   return "";
@@ -275,22 +276,22 @@ TEST(CameraPath, UpIsCheckedAtEverySampledFrame) {
   const auto dir = testing::scratchDirectory("camera_frames");
   const std::string file = testing::writeTextFile(
       dir / "four.json", pathWithAll({{"keyframes", over_the_top}, {"frames", "4"}}));
-  const CameraPathSpec four = loadCameraPath(file, "four.json");
-  EXPECT_EQ(sampleCameraPath(four, kBox).views.size(), 4u);
-  EXPECT_THROW(sampleCameraPath(four, kBox, 5), InputError);
+  const suite::CameraPathSpec four = suite::loadCameraPath(file, "four.json");
+  EXPECT_EQ(suite::sampleCameraPath(four, kBox).views.size(), 4u);
+  EXPECT_THROW(suite::sampleCameraPath(four, kBox, 5), mesh::InputError);
 }
 
 TEST(CameraPath, AMissingFileNamesTheFile) {
   try {
-    loadCameraPath("/does/not/exist.json", "assets/cameras/exist.json");
+    suite::loadCameraPath("/does/not/exist.json", "assets/cameras/exist.json");
     FAIL() << "no error";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_STREQ(error.what(), "assets/cameras/exist.json: no such file");
   }
   try {
-    resolveCameraPath("does/not/exist.json");
+    suite::resolveCameraPath("does/not/exist.json");
     FAIL() << "no error";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_EQ(std::string(error.what()).rfind("does/not/exist.json: no such file", 0), 0u)
         << error.what();
   }

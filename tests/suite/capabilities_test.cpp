@@ -16,22 +16,23 @@ using testing::SimulationDoubleTechnique;
 using testing::SurfaceDoubleTechnique;
 
 // Needs a surface: one row with the patch count.
-class SurfaceCountMeasure final : public Measure {
+class SurfaceCountMeasure final : public measures::Measure {
  public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_surface_count",
-                                   "patches",
-                                   "patch count",
-                                   {{"patches", Unit::kCount, Direction::kNone}},
-                                   {},
-                                   {}};
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        "test_surface_count",
+        "patches",
+        "patch count",
+        {{"patches", results::Unit::kCount, results::Direction::kNone}},
+        {},
+        {}};
     return kInfo;
   }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kEveryVariant, {}};
+  measures::MeasureRequirements requirements() const override {
+    return {{measures::MeasureNeed::kSurface}, measures::VariantPolicy::kEveryVariant, {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     result.rows.push_back({{}, {{"patches", double(input.patches->patchCount()), "count"}}});
     return result;
@@ -39,33 +40,34 @@ class SurfaceCountMeasure final : public Measure {
 };
 
 // Needs a simulation: steps it through the scenario and reads the state back.
-class SimulationStepMeasure final : public Measure {
+class SimulationStepMeasure final : public measures::Measure {
  public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_simulation_steps",
-                                   "steps",
-                                   "state after the scenario",
-                                   {{"start_time", Unit::kSeconds, Direction::kNone},
-                                    {"time", Unit::kSeconds, Direction::kNone},
-                                    {"elements", Unit::kCount, Direction::kNone},
-                                    {"last_position", Unit::kWorld, Direction::kNone},
-                                    {"state_bytes", Unit::kBytes, Direction::kLowerIsBetter}},
-                                   {"state_bytes"},
-                                   {}};
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        "test_simulation_steps",
+        "steps",
+        "state after the scenario",
+        {{"start_time", results::Unit::kSeconds, results::Direction::kNone},
+         {"time", results::Unit::kSeconds, results::Direction::kNone},
+         {"elements", results::Unit::kCount, results::Direction::kNone},
+         {"last_position", results::Unit::kWorld, results::Direction::kNone},
+         {"state_bytes", results::Unit::kBytes, results::Direction::kLowerIsBetter}},
+        {"state_bytes"},
+        {}};
     return kInfo;
   }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSimulation}, VariantPolicy::kDefaultOnly, {}};
+  measures::MeasureRequirements requirements() const override {
+    return {{measures::MeasureNeed::kSimulation}, measures::VariantPolicy::kDefaultOnly, {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    Simulation& simulation = *input.simulation;
+    techniques::Simulation& simulation = *input.simulation;
     const double start_s = simulation.state().time_s;
     const size_t steps = simulation.scenario().stepCount();
     for (size_t i = 0; i < steps; ++i) simulation.step(simulation.scenario().time_step_s);
-    const SimulationState state = simulation.state();
-    const StateChannel* position = state.find("position");
+    const techniques::SimulationState state = simulation.state();
+    const techniques::StateChannel* position = state.find("position");
     result.rows.push_back({{},
                            {{"start_time", start_s, "s"},
                             {"time", state.time_s, "s"},
@@ -77,27 +79,30 @@ class SimulationStepMeasure final : public Measure {
 };
 
 // Needs a surface and a view: the pixel the asset's first vertex projects to.
-class ViewMeasure final : public Measure {
+class ViewMeasure final : public measures::Measure {
  public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{"test_view",
-                                   "view",
-                                   "projected first vertex",
-                                   {{"x", Unit::kPixels, Direction::kNone},
-                                    {"y", Unit::kPixels, Direction::kNone},
-                                    {"width", Unit::kPixels, Direction::kNone}},
-                                   {},
-                                   {}};
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        "test_view",
+        "view",
+        "projected first vertex",
+        {{"x", results::Unit::kPixels, results::Direction::kNone},
+         {"y", results::Unit::kPixels, results::Direction::kNone},
+         {"width", results::Unit::kPixels, results::Direction::kNone}},
+        {},
+        {}};
     return kInfo;
   }
-  MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface, MeasureNeed::kView}, VariantPolicy::kDefaultOnly, {}};
+  measures::MeasureRequirements requirements() const override {
+    return {{measures::MeasureNeed::kSurface, measures::MeasureNeed::kView},
+            measures::VariantPolicy::kDefaultOnly,
+            {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    const Vec3d p = input.patches->controlMesh().positions[0];
-    const ProjectedPoint px = projectToPixels(*input.view, p.x, p.y, p.z);
+    const mesh::Vec3d p = input.patches->controlMesh().positions[0];
+    const view::ProjectedPoint px = view::projectToPixels(*input.view, p.x, p.y, p.z);
     result.rows.push_back({{{"level", "1"}},
                            {{"x", px.x_px, "px"},
                             {"y", px.y_px, "px"},
@@ -106,8 +111,8 @@ class ViewMeasure final : public Measure {
   }
 };
 
-const Metric& metric(const MetricRow& row, const std::string& name) {
-  for (const Metric& m : row.metrics) {
+const results::Metric& metric(const results::MetricRow& row, const std::string& name) {
+  for (const results::Metric& m : row.metrics) {
     if (m.name == name) return m;
   }
   throw std::runtime_error("no metric " + name);
@@ -118,19 +123,19 @@ TEST(Capabilities, SurfaceAndSimulationDoublesRunThroughTheSuiteWithTheMeasuresT
   const SimulationDoubleTechnique chain;
   const SurfaceCountMeasure surface_measure;
   const SimulationStepMeasure simulation_measure;
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&surface, &chain};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.scenarios = {testing::chainScenario()};
   selection.measures = {&simulation_measure, &surface_measure};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   EXPECT_TRUE(results.skipped.empty());
   ASSERT_EQ(results.records.size(), 3u);  // the surface's two variants, the chain's one
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     ASSERT_EQ(record.measures.size(), 1u) << record.technique;
     ASSERT_EQ(record.measures[0].rows.size(), 1u);
-    const MetricRow& row = record.measures[0].rows[0];
+    const results::MetricRow& row = record.measures[0].rows[0];
     if (record.technique == "test_flat_faces") {
       EXPECT_EQ(record.asset, "opensubdiv/catmark_cube");
       EXPECT_EQ(record.measures[0].measure, "test_surface_count");
@@ -153,15 +158,15 @@ TEST(Capabilities, EachSimulationMeasureGetsAFreshSimulation) {
   const SimulationDoubleTechnique chain;
   const SimulationStepMeasure simulation_measure;
   const ViewMeasure view_measure;  // needs a surface: never runs on the chain
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&chain};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.scenarios = {testing::chainScenario(), testing::chainScenario()};
   selection.measures = {&simulation_measure, &view_measure};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_EQ(results.records.size(), 2u);
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     ASSERT_EQ(record.measures.size(), 1u);
     EXPECT_EQ(metric(record.measures[0].rows[0], "start_time").value, 0);
   }
@@ -169,25 +174,28 @@ TEST(Capabilities, EachSimulationMeasureGetsAFreshSimulation) {
 
 TEST(Capabilities, OnASimulationOnlyTheMeasuresForSimulationsRun) {
   const SimulationDoubleTechnique chain;
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&chain};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.scenarios = {testing::chainScenario()};
-  Results results;
-  runSuite(selection, nullptr, &results);  // every registered measure, published_figures included
+  results::Results results;
+  suite::runSuite(selection, nullptr,
+                  &results);  // every registered measure, published_figures included
   EXPECT_TRUE(results.skipped.empty());
   ASSERT_EQ(results.records.size(), 1u);
   std::vector<std::string> ids;
-  for (const MeasureResult& measure : results.records[0].measures) ids.push_back(measure.measure);
+  for (const results::MeasureResult& measure : results.records[0].measures)
+    ids.push_back(measure.measure);
   // wave_error is for wave particles only; the surface measures need a surface.
   EXPECT_EQ(ids, (std::vector<std::string>{"instructions", "memory", "sim_cost"}));
-  for (const MeasureResult& measure : results.records[0].measures) {
-    EXPECT_EQ(measure.status, MeasureStatus::kOk) << measure.measure << ": " << measure.reason;
+  for (const results::MeasureResult& measure : results.records[0].measures) {
+    EXPECT_EQ(measure.status, results::MeasureStatus::kOk)
+        << measure.measure << ": " << measure.reason;
   }
   // The chain has no GPU path and no shaders: those parts are skips with their reason.
-  const MeasureResult& instructions = results.records[0].measures[0];
+  const results::MeasureResult& instructions = results.records[0].measures[0];
   ASSERT_EQ(instructions.rows.size(), 1u);
-  EXPECT_EQ(instructions.rows[0].status, MeasureStatus::kSkipped);
+  EXPECT_EQ(instructions.rows[0].status, results::MeasureStatus::kSkipped);
   // 4 masses x (position + velocity) in float: 32 bytes, as SpringChain::footprint says.
   EXPECT_EQ(metric(results.records[0].measures[1].rows.at(0), "state_bytes").value, 32);
 }
@@ -195,37 +203,37 @@ TEST(Capabilities, OnASimulationOnlyTheMeasuresForSimulationsRun) {
 TEST(Capabilities, ASimulationRunsOnlyOnTheScenariosWrittenForIt) {
   const SimulationDoubleTechnique chain;
   const SimulationStepMeasure simulation_measure;
-  Scenario mine = testing::chainScenario(), any = testing::chainScenario(),
-           other = testing::chainScenario();
+  techniques::Scenario mine = testing::chainScenario(), any = testing::chainScenario(),
+                       other = testing::chainScenario();
   mine.name = "mine";
   mine.technique = "test_spring_chain";
   any.name = "any";
   other.name = "other";
   other.technique = "wave_particles";
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&chain};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.scenarios = {mine, any, other};
   selection.measures = {&simulation_measure};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   std::vector<std::string> assets;
-  for (const Record& record : results.records) assets.push_back(record.asset);
+  for (const results::Record& record : results.records) assets.push_back(record.asset);
   EXPECT_EQ(assets, (std::vector<std::string>{"mine", "any"}));
 }
 
 TEST(Capabilities, AViewMeasureRunsOncePerViewOfTheTestPathWithTheViewAsRowKeys) {
   const SurfaceDoubleTechnique surface;
   const ViewMeasure view_measure;
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&surface};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.measures = {&view_measure};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_EQ(results.records.size(), 1u);  // kDefaultOnly
-  const MeasureResult& result = results.records[0].measures.at(0);
-  EXPECT_EQ(result.status, MeasureStatus::kOk);
+  const results::MeasureResult& result = results.records[0].measures.at(0);
+  EXPECT_EQ(result.status, results::MeasureStatus::kOk);
   ASSERT_EQ(result.rows.size(), 3u);
   for (size_t v = 0; v < 3; ++v) {
     const std::map<std::string, std::string> keys{
@@ -245,33 +253,34 @@ TEST(Capabilities, AViewMeasureRunsOncePerViewOfTheTestPathWithTheViewAsRowKeys)
 TEST(Capabilities, EveryCameraPathOfTheSelectionIsWalked) {
   const SurfaceDoubleTechnique surface;
   const ViewMeasure view_measure;
-  SuiteSelection selection;
+  suite::SuiteSelection selection;
   selection.techniques = {&surface};
-  selection.assets = {resolveAsset("catmark_cube")};
+  selection.assets = {suite::resolveAsset("catmark_cube")};
   selection.measures = {&view_measure};
-  selection.camera_paths = {testOrbitPath, [](const Aabb&) {
-                              return CameraPath{"two_identity_views", {View{}, View{}}};
-                            }};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  selection.camera_paths = {
+      suite::testOrbitPath, [](const mesh::Aabb&) {
+        return view::CameraPath{"two_identity_views", {view::View{}, view::View{}}};
+      }};
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_EQ(results.records.size(), 1u);
-  const std::vector<MetricRow>& rows = results.records[0].measures.at(0).rows;
+  const std::vector<results::MetricRow>& rows = results.records[0].measures.at(0).rows;
   ASSERT_EQ(rows.size(), 5u);
   EXPECT_EQ(rows[3].keys.at("camera_path"), "two_identity_views");
   EXPECT_EQ(rows[4].keys.at("view"), "1");
 }
 
 TEST(CameraPath, TestOrbitLooksAtTheBoxCentreInVulkanConventions) {
-  const Aabb box{{-1, -2, -3}, {3, 2, 1}};
-  const CameraPath path = testOrbitPath(box);
+  const mesh::Aabb box{{-1, -2, -3}, {3, 2, 1}};
+  const view::CameraPath path = suite::testOrbitPath(box);
   ASSERT_EQ(path.views.size(), 3u);
-  for (const View& view : path.views) {
-    const ProjectedPoint centre = projectToPixels(view, 1, 0, -1);
+  for (const view::View& view : path.views) {
+    const view::ProjectedPoint centre = view::projectToPixels(view, 1, 0, -1);
     EXPECT_GT(centre.clip_w, 0);
     EXPECT_NEAR(centre.x_px, 320, 1e-9);
     EXPECT_NEAR(centre.y_px, 240, 1e-9);
     // Vulkan clip space: y down, so a point above the centre has a smaller pixel y.
-    EXPECT_LT(projectToPixels(view, 1, 1, -1).y_px, 240);
+    EXPECT_LT(view::projectToPixels(view, 1, 1, -1).y_px, 240);
     // Depth in [0, 1] for the centre (between the near and far planes).
     const auto clip = view.view_projection.transform({1, 0, -1, 1});
     EXPECT_GT(clip[2] / clip[3], 0);
@@ -284,47 +293,51 @@ TEST(CameraPath, TestOrbitLooksAtTheBoxCentreInVulkanConventions) {
 // patch data and this variant's differ.
 TEST(MeasureRule, VariantPoliciesMatchTheFormerBooleans) {
   const SurfaceDoubleTechnique surface;
-  const Capabilities caps{true, false};
+  const suite::Capabilities caps{true, false};
   struct Case {
-    VariantPolicy policy;
+    measures::VariantPolicy policy;
     bool depends_on_variant, depends_on_patch_data;
   };
-  for (const Case& c : {Case{VariantPolicy::kDefaultOnly, false, false},
-                        Case{VariantPolicy::kEveryVariant, true, false},
-                        Case{VariantPolicy::kWhenPatchDataDiffers, false, true}}) {
+  for (const Case& c : {Case{measures::VariantPolicy::kDefaultOnly, false, false},
+                        Case{measures::VariantPolicy::kEveryVariant, true, false},
+                        Case{measures::VariantPolicy::kWhenPatchDataDiffers, false, true}}) {
     for (bool is_default : {false, true}) {
       for (bool own : {false, true}) {
         const bool former = is_default || c.depends_on_variant || (c.depends_on_patch_data && own);
-        EXPECT_EQ(
-            measureRuns({{MeasureNeed::kSurface}, c.policy, {}}, surface, caps, {is_default, own}),
-            former);
+        EXPECT_EQ(suite::measureRuns({{measures::MeasureNeed::kSurface}, c.policy, {}}, surface,
+                                     caps, {is_default, own}),
+                  former);
       }
     }
   }
   // Needs decide before the policy; kView and kGpu never stop a measure.
-  EXPECT_FALSE(measureRuns({{MeasureNeed::kSimulation}, VariantPolicy::kEveryVariant, {}}, surface,
-                           caps, {true, true}));
-  EXPECT_TRUE(measureRuns({{MeasureNeed::kSurface, MeasureNeed::kView, MeasureNeed::kGpu},
-                           VariantPolicy::kEveryVariant,
-                           {}},
-                          surface, caps, {true, true}));
-  EXPECT_FALSE(measureRuns({{MeasureNeed::kSurface},
-                            VariantPolicy::kEveryVariant,
-                            [](const Technique&) { return false; }},
-                           surface, caps, {true, true}));
+  EXPECT_FALSE(suite::measureRuns(
+      {{measures::MeasureNeed::kSimulation}, measures::VariantPolicy::kEveryVariant, {}}, surface,
+      caps, {true, true}));
+  EXPECT_TRUE(suite::measureRuns(
+      {{measures::MeasureNeed::kSurface, measures::MeasureNeed::kView, measures::MeasureNeed::kGpu},
+       measures::VariantPolicy::kEveryVariant,
+       {}},
+      surface, caps, {true, true}));
+  EXPECT_FALSE(suite::measureRuns({{measures::MeasureNeed::kSurface},
+                                   measures::VariantPolicy::kEveryVariant,
+                                   [](const techniques::Technique&) { return false; }},
+                                  surface, caps, {true, true}));
 }
 
 // kEveryDistinctSurface: the default variant, every variant in --suite full, and otherwise only
 // variants that are not the default's surface in another float order.
 TEST(MeasureRule, EveryDistinctSurfaceSkipsEvaluationOrderVariantsInTheDefaultSuite) {
   const SurfaceDoubleTechnique surface;
-  const Capabilities caps{true, false};
-  const MeasureRequirements r{{MeasureNeed::kSurface}, VariantPolicy::kEveryDistinctSurface, {}};
+  const suite::Capabilities caps{true, false};
+  const measures::MeasureRequirements r{
+      {measures::MeasureNeed::kSurface}, measures::VariantPolicy::kEveryDistinctSurface, {}};
   for (bool is_default : {false, true}) {
     for (bool full : {false, true}) {
       for (bool same_surface : {false, true}) {
         const bool expected = is_default || full || !same_surface;
-        EXPECT_EQ(measureRuns(r, surface, caps, {is_default, false, full, same_surface}), expected)
+        EXPECT_EQ(suite::measureRuns(r, surface, caps, {is_default, false, full, same_surface}),
+                  expected)
             << is_default << full << same_surface;
       }
     }
@@ -333,25 +346,25 @@ TEST(MeasureRule, EveryDistinctSurfaceSkipsEvaluationOrderVariantsInTheDefaultSu
 
 TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   const auto requirements = [](const char* id) {
-    return MeasureRegistry::instance().find(id)->requirements();
+    return measures::MeasureRegistry::instance().find(id)->requirements();
   };
-  EXPECT_EQ(requirements("memory").variants, VariantPolicy::kWhenPatchDataDiffers);
-  EXPECT_EQ(requirements("cracks").variants, VariantPolicy::kEveryVariant);
-  EXPECT_EQ(requirements("instructions").variants, VariantPolicy::kEveryVariant);
+  EXPECT_EQ(requirements("memory").variants, measures::VariantPolicy::kWhenPatchDataDiffers);
+  EXPECT_EQ(requirements("cracks").variants, measures::VariantPolicy::kEveryVariant);
+  EXPECT_EQ(requirements("instructions").variants, measures::VariantPolicy::kEveryVariant);
   // Since issue 16: a variant that only reorders the float evaluation is graded once.
-  EXPECT_EQ(requirements("error").variants, VariantPolicy::kEveryDistinctSurface);
-  EXPECT_EQ(requirements("published_figures").variants, VariantPolicy::kDefaultOnly);
+  EXPECT_EQ(requirements("error").variants, measures::VariantPolicy::kEveryDistinctSurface);
+  EXPECT_EQ(requirements("published_figures").variants, measures::VariantPolicy::kDefaultOnly);
   // Which family each measure applies to (memory and instructions: both).
-  for (const Measure* measure : MeasureRegistry::instance().all()) {
-    const MeasureRequirements r = measure->requirements();
+  for (const measures::Measure* measure : measures::MeasureRegistry::instance().all()) {
+    const measures::MeasureRequirements r = measure->requirements();
     const std::string id = measure->info().id;
     if (id == "memory" || id == "instructions") {
-      EXPECT_TRUE(r.has(MeasureNeed::kSurfaceOrSimulation)) << id;
+      EXPECT_TRUE(r.has(measures::MeasureNeed::kSurfaceOrSimulation)) << id;
     } else if (id == "sim_cost" || id == "wave_error" || id == "convergence" ||
                id == "stability") {
-      EXPECT_TRUE(r.has(MeasureNeed::kSimulation)) << id;
+      EXPECT_TRUE(r.has(measures::MeasureNeed::kSimulation)) << id;
     } else {
-      EXPECT_TRUE(r.has(MeasureNeed::kSurface)) << id;
+      EXPECT_TRUE(r.has(measures::MeasureNeed::kSurface)) << id;
     }
   }
   // published_figures: only the technique with the probe shader.

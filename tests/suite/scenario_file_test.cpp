@@ -27,8 +27,8 @@ std::string loadError(const std::string& text) {
   const auto dir = testing::scratchDirectory("scenario_bad");
   const std::string file = testing::writeTextFile(dir / "bad.json", text);
   try {
-    loadScenarioFile(file, "scenarios/bad.json");
-  } catch (const InputError& error) {
+    suite::loadScenarioFile(file, "scenarios/bad.json");
+  } catch (const mesh::InputError& error) {
     return error.what();
   }
   return "";
@@ -45,7 +45,7 @@ std::string validWith(const std::string& from, const std::string& to) {
 TEST(ScenarioFile, FieldsAndSectionsAreReadBack) {
   const auto dir = testing::scratchDirectory("scenario_ok");
   const std::string file = testing::writeTextFile(dir / "ok.json", kValid);
-  const Scenario scenario = loadScenarioFile(file);
+  const techniques::Scenario scenario = suite::loadScenarioFile(file);
   EXPECT_EQ(scenario.name, "ok");
   EXPECT_EQ(scenario.technique, "wave_particles");
   EXPECT_EQ(scenario.time_step_s, 0.01);
@@ -65,10 +65,10 @@ TEST(ScenarioFile, AMeshResolvesBesideTheFileOrAsABundledAsset) {
   testing::writeTextFile(dir / "skin.obj", "v 0 0 0\n");
   const std::string beside = testing::writeTextFile(
       dir / "a.json", validWith(R"("name": "ok")", R"("name": "ok", "mesh": "skin.obj")"));
-  EXPECT_EQ(loadScenarioFile(beside).mesh_path, (dir / "skin.obj").string());
+  EXPECT_EQ(suite::loadScenarioFile(beside).mesh_path, (dir / "skin.obj").string());
   const std::string bundled = testing::writeTextFile(
       dir / "b.json", validWith(R"("name": "ok")", R"("name": "ok", "mesh": "catmark_cube")"));
-  const std::string mesh = loadScenarioFile(bundled).mesh_path;
+  const std::string mesh = suite::loadScenarioFile(bundled).mesh_path;
   EXPECT_TRUE(std::filesystem::path(mesh).is_absolute()) << mesh;
   EXPECT_TRUE(std::filesystem::is_regular_file(mesh)) << mesh;
 }
@@ -109,19 +109,19 @@ TEST(ScenarioFile, EveryBadInputIsOneLineNamingTheFileAndTheField) {
 }
 
 TEST(ScenarioFile, AMissingFileAndAnUnknownNameAreInputErrors) {
-  EXPECT_THROW(loadScenarioFile("/no/such/scenario.json"), InputError);
-  EXPECT_THROW(resolveScenario("not_a_scenario"), InputError);
+  EXPECT_THROW(suite::loadScenarioFile("/no/such/scenario.json"), mesh::InputError);
+  EXPECT_THROW(suite::resolveScenario("not_a_scenario"), mesh::InputError);
 }
 
 TEST(ScenarioFile, TheBundledScenariosLoadSortedAndNamedAfterTheirFiles) {
-  const std::vector<std::string> names = bundledScenarioNames();
+  const std::vector<std::string> names = suite::bundledScenarioNames();
   ASSERT_GE(names.size(), 2u);
   EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
-  const std::vector<Scenario> scenarios = bundledScenarios();
+  const std::vector<techniques::Scenario> scenarios = suite::bundledScenarios();
   ASSERT_EQ(scenarios.size(), names.size());
   for (size_t i = 0; i < names.size(); ++i) EXPECT_EQ(scenarios[i].name, names[i]);
-  EXPECT_EQ(resolveScenario("wave_point_impulse").technique, "wave_particles");
-  EXPECT_EQ(resolveScenario("wave_straight_wall").name, "wave_straight_wall");
+  EXPECT_EQ(suite::resolveScenario("wave_point_impulse").technique, "wave_particles");
+  EXPECT_EQ(suite::resolveScenario("wave_straight_wall").name, "wave_straight_wall");
 }
 
 }  // namespace

@@ -14,20 +14,20 @@ namespace {
 
 // Oracle: the published FNV-1a 64-bit test vectors (Fowler, Noll, Vo).
 TEST(Shard, HashIsFnv1a64) {
-  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ull);
-  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cull);
-  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ull);
+  EXPECT_EQ(suite::fnv1a64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(suite::fnv1a64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(suite::fnv1a64("foobar"), 0x85944171f73967e8ull);
 }
 
 TEST(Shard, ParsesIndexOfCountFromZero) {
-  const ShardSpec shard = parseShard("2/3");
+  const suite::ShardSpec shard = suite::parseShard("2/3");
   EXPECT_EQ(shard.index, 2u);
   EXPECT_EQ(shard.count, 3u);
   EXPECT_TRUE(shard.sharded());
-  EXPECT_FALSE(parseShard("0/1").sharded());
+  EXPECT_FALSE(suite::parseShard("0/1").sharded());
   for (const char* bad : {"3/3", "0/0", "", "3", "/3", "1/", "a/3", "-1/3", " 1/3", "1/3 ", "1/+3",
                           "1//3", "99999999999999999999999/3"}) {
-    EXPECT_THROW(parseShard(bad), InputError) << bad;
+    EXPECT_THROW(suite::parseShard(bad), mesh::InputError) << bad;
   }
 }
 
@@ -36,11 +36,11 @@ TEST(Shard, ParsesIndexOfCountFromZero) {
 TEST(Shard, ShardsPartitionTheDefaultWorkList) {
   std::vector<std::vector<std::string>> measure_items;
   std::vector<std::vector<std::string>> skip_items;
-  for (const Technique* technique : TechniqueRegistry::instance().all()) {
-    for (const AssetRef& asset : bundledAssets()) {
+  for (const techniques::Technique* technique : techniques::TechniqueRegistry::instance().all()) {
+    for (const suite::AssetRef& asset : suite::bundledAssets()) {
       skip_items.push_back({technique->info().id, asset.name});
-      for (const VariantInfo& variant : technique->variants()) {
-        for (const Measure* measure : MeasureRegistry::instance().all()) {
+      for (const techniques::VariantInfo& variant : technique->variants()) {
+        for (const measures::Measure* measure : measures::MeasureRegistry::instance().all()) {
           measure_items.push_back(
               {technique->info().id, variant.name, asset.name, measure->info().id});
         }
@@ -53,7 +53,7 @@ TEST(Shard, ShardsPartitionTheDefaultWorkList) {
     for (const auto& item : measure_items) {
       size_t owners = 0;
       for (size_t i = 0; i < count; ++i) {
-        if (ownsMeasure({i, count}, item[0], item[1], item[2], item[3])) {
+        if (suite::ownsMeasure({i, count}, item[0], item[1], item[2], item[3])) {
           ++owners;
           ++per_shard[i];
         }
@@ -62,7 +62,7 @@ TEST(Shard, ShardsPartitionTheDefaultWorkList) {
     }
     for (const auto& item : skip_items) {
       size_t owners = 0;
-      for (size_t i = 0; i < count; ++i) owners += ownsSkip({i, count}, item[0], item[1]);
+      for (size_t i = 0; i < count; ++i) owners += suite::ownsSkip({i, count}, item[0], item[1]);
       ASSERT_EQ(owners, 1u) << item[0] << " " << item[1];
     }
     // Evenly spread by count: every shard within a quarter of the mean (a hash, not a
@@ -75,24 +75,25 @@ TEST(Shard, ShardsPartitionTheDefaultWorkList) {
 }
 
 TEST(Shard, SelectionIsDescribedInRunOrder) {
-  SuiteSelection selection;
-  selection.techniques = {TechniqueRegistry::instance().find("phong")};
-  selection.measures = {MeasureRegistry::instance().find("memory"),
-                        MeasureRegistry::instance().find("error")};
-  Results results;
+  suite::SuiteSelection selection;
+  selection.techniques = {techniques::TechniqueRegistry::instance().find("phong")};
+  selection.measures = {measures::MeasureRegistry::instance().find("memory"),
+                        measures::MeasureRegistry::instance().find("error")};
+  results::Results results;
   results.assets.push_back({"opensubdiv/catmark_cube", "", 6, 8, "quads", false});
-  const RunSelection described = describeSelection(selection, results);
+  const results::RunSelection described = suite::describeSelection(selection, results);
   ASSERT_EQ(described.techniques.size(), 1u);
   EXPECT_EQ(described.techniques[0].technique, "phong");
   std::vector<std::string> variants;
-  for (const VariantInfo& v : selection.techniques[0]->variants()) variants.push_back(v.name);
+  for (const techniques::VariantInfo& v : selection.techniques[0]->variants())
+    variants.push_back(v.name);
   EXPECT_EQ(described.techniques[0].variants, variants);
   EXPECT_EQ(described.assets, (std::vector<std::string>{"opensubdiv/catmark_cube"}));
   EXPECT_EQ(described.measures, (std::vector<std::string>{"memory", "error"}));
   // No techniques or measures named: all of them, in registry order.
-  const RunSelection all = describeSelection(SuiteSelection{}, results);
-  EXPECT_EQ(all.techniques.size(), TechniqueRegistry::instance().all().size());
-  EXPECT_EQ(all.measures.size(), MeasureRegistry::instance().all().size());
+  const results::RunSelection all = suite::describeSelection(suite::SuiteSelection{}, results);
+  EXPECT_EQ(all.techniques.size(), techniques::TechniqueRegistry::instance().all().size());
+  EXPECT_EQ(all.measures.size(), measures::MeasureRegistry::instance().all().size());
 }
 
 }  // namespace

@@ -19,15 +19,15 @@ namespace tb {
 namespace {
 
 TEST(Suite, PhongMemoryOnOneAssetGivesOneRecordPerMeasuredVariant) {
-  SuiteSelection selection;
-  selection.assets = {resolveAsset("catmark_cube")};
-  selection.measures = {MeasureRegistry::instance().find("memory")};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  suite::SuiteSelection selection;
+  selection.assets = {suite::resolveAsset("catmark_cube")};
+  selection.measures = {measures::MeasureRegistry::instance().find("memory")};
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   ASSERT_EQ(results.assets.size(), 1u);
   EXPECT_EQ(results.assets[0].name, "opensubdiv/catmark_cube");
   std::vector<std::string> phong_variants;
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     if (record.technique != "phong") continue;
     phong_variants.push_back(record.variant);
     ASSERT_EQ(record.measures.size(), 1u);
@@ -43,18 +43,18 @@ TEST(Suite, PhongMemoryOnOneAssetGivesOneRecordPerMeasuredVariant) {
 // into quads (16 patches instead of 4 triangles + 1 quad) and is measured; the evaluation
 // orders share the default's patch data and are not (quads_only: a --suite full variant).
 TEST(Suite, VariantsWithTheirOwnPatchDataGetTheirOwnMemoryRecord) {
-  SuiteSelection selection;
-  selection.suite = SuiteMode::kFull;
-  selection.techniques = {TechniqueRegistry::instance().find("gregory_acc")};
-  selection.assets = {resolveAsset("catmark_pyramid")};
-  selection.measures = {MeasureRegistry::instance().find("memory")};
-  Results results;
-  runSuite(selection, nullptr, &results);
+  suite::SuiteSelection selection;
+  selection.suite = measures::SuiteMode::kFull;
+  selection.techniques = {techniques::TechniqueRegistry::instance().find("gregory_acc")};
+  selection.assets = {suite::resolveAsset("catmark_pyramid")};
+  selection.measures = {measures::MeasureRegistry::instance().find("memory")};
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results);
   std::map<std::string, double> patches_by_variant;
-  for (const Record& record : results.records) {
+  for (const results::Record& record : results.records) {
     ASSERT_EQ(record.measures.size(), 1u);
     ASSERT_FALSE(record.measures[0].rows.empty());
-    for (const Metric& m : record.measures[0].rows[0].metrics) {
+    for (const results::Metric& m : record.measures[0].rows[0].metrics) {
       if (m.name == "patches") patches_by_variant[record.variant] = m.value;
     }
   }
@@ -63,52 +63,53 @@ TEST(Suite, VariantsWithTheirOwnPatchDataGetTheirOwnMemoryRecord) {
 }
 
 TEST(Suite, UnknownAssetIsAnInputError) {
-  EXPECT_THROW(resolveAsset("definitely_not_an_asset"), std::exception);
-  EXPECT_EQ(resolveAsset("opensubdiv/loop_cube").name, "opensubdiv/loop_cube");
+  EXPECT_THROW(suite::resolveAsset("definitely_not_an_asset"), std::exception);
+  EXPECT_EQ(suite::resolveAsset("opensubdiv/loop_cube").name, "opensubdiv/loop_cube");
 }
 
 TEST(Suite, BundledAssetsAreSortedAndComplete) {
-  const auto assets = bundledAssets();
+  const auto assets = suite::bundledAssets();
   EXPECT_GE(assets.size(), 27u);  // the 27 OpenSubdiv shapes, plus any added later
-  EXPECT_TRUE(std::any_of(assets.begin(), assets.end(),
-                          [](const AssetRef& a) { return a.name == "opensubdiv/catmark_cube"; }));
+  EXPECT_TRUE(std::any_of(assets.begin(), assets.end(), [](const suite::AssetRef& a) {
+    return a.name == "opensubdiv/catmark_cube";
+  }));
   for (size_t i = 1; i < assets.size(); ++i) EXPECT_LT(assets[i - 1].name, assets[i].name);
 }
 
 // The default suite leaves the full-suite folder out (assets/full_suite/README.md); the full
 // suite and a named asset reach it.
 TEST(Suite, FullSuiteAssetsRunOnlyInTheFullSuiteOrWhenNamed) {
-  auto names = [](const std::vector<AssetRef>& assets) {
+  auto names = [](const std::vector<suite::AssetRef>& assets) {
     std::vector<std::string> out;
-    for (const AssetRef& asset : assets) out.push_back(asset.name);
+    for (const suite::AssetRef& asset : assets) out.push_back(asset.name);
     return out;
   };
-  const std::vector<std::string> all = names(bundledAssets());
-  const std::vector<std::string> full = names(suiteAssets(true));
-  const std::vector<std::string> fast = names(suiteAssets(false));
+  const std::vector<std::string> all = names(suite::bundledAssets());
+  const std::vector<std::string> full = names(suite::suiteAssets(true));
+  const std::vector<std::string> fast = names(suite::suiteAssets(false));
   EXPECT_EQ(full, all);
   ASSERT_NE(std::find(all.begin(), all.end(), "full_suite/pole64"), all.end());
   EXPECT_EQ(std::find(fast.begin(), fast.end(), "full_suite/pole64"), fast.end());
   EXPECT_EQ(fast.size() + 1, all.size());
-  EXPECT_EQ(resolveAsset("pole64").name, "full_suite/pole64");
+  EXPECT_EQ(suite::resolveAsset("pole64").name, "full_suite/pole64");
 }
 
 // A variant marked full_suite_only (osd_adaptive's iso4_gregory) runs in --suite full only.
 TEST(Suite, FullSuiteOnlyVariantsRunOnlyInTheFullSuite) {
-  const auto variants_run = [](SuiteMode mode) {
-    SuiteSelection selection;
-    selection.techniques = {TechniqueRegistry::instance().find("osd_adaptive")};
-    selection.assets = {resolveAsset("catmark_cube")};
-    selection.measures = {MeasureRegistry::instance().find("memory")};
+  const auto variants_run = [](measures::SuiteMode mode) {
+    suite::SuiteSelection selection;
+    selection.techniques = {techniques::TechniqueRegistry::instance().find("osd_adaptive")};
+    selection.assets = {suite::resolveAsset("catmark_cube")};
+    selection.measures = {measures::MeasureRegistry::instance().find("memory")};
     selection.suite = mode;
-    Results results;
-    runSuite(selection, nullptr, &results);
+    results::Results results;
+    suite::runSuite(selection, nullptr, &results);
     std::set<std::string> names;
-    for (const Record& record : results.records) names.insert(record.variant);
+    for (const results::Record& record : results.records) names.insert(record.variant);
     return names;
   };
-  const std::set<std::string> fast = variants_run(SuiteMode::kDefault);
-  const std::set<std::string> full = variants_run(SuiteMode::kFull);
+  const std::set<std::string> fast = variants_run(measures::SuiteMode::kDefault);
+  const std::set<std::string> full = variants_run(measures::SuiteMode::kFull);
   EXPECT_EQ(fast, (std::set<std::string>{"iso2_gregory"}));
   EXPECT_TRUE(full.count("iso2_gregory") && full.count("iso4_gregory") && full.count("iso2_bspline"))
       << full.size();
@@ -119,13 +120,14 @@ TEST(Suite, FullSuiteOnlyVariantsRunOnlyInTheFullSuite) {
 // checkouts, or two shards on two machines, give the same JSON.
 TEST(Suite, ResultsDoNotDependOnWhereTheAssetsFolderIs) {
   const auto run = [] {
-    SuiteSelection selection;
+    suite::SuiteSelection selection;
     // catmark_smoothtris0 is skipped by gregory_acc with a reason that names the file.
-    selection.assets = {resolveAsset("catmark_smoothtris0"), resolveAsset("catmark_cube")};
-    selection.measures = {MeasureRegistry::instance().find("memory")};
-    Results results;
-    runSuite(selection, nullptr, &results);
-    return serializeResults(results);
+    selection.assets = {suite::resolveAsset("catmark_smoothtris0"),
+                        suite::resolveAsset("catmark_cube")};
+    selection.measures = {measures::MeasureRegistry::instance().find("memory")};
+    results::Results results;
+    suite::runSuite(selection, nullptr, &results);
+    return results::serializeResults(results);
   };
   const std::string here = run();
   const std::filesystem::path copy = testing::scratchDirectory("assets_copy");

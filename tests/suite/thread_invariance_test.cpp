@@ -12,19 +12,20 @@
 namespace tb {
 namespace {
 
-std::string runWithThreads(int threads, SuiteTimings* timings) {
-  SuiteSelection selection;
+std::string runWithThreads(int threads, suite::SuiteTimings* timings) {
+  suite::SuiteSelection selection;
   // A quad-and-triangle mesh and a triangle mesh: every technique runs on one of them,
   // and every measure on some technique.
-  selection.assets = {resolveAsset("catmark_pyramid"), resolveAsset("loop_icosahedron")};
+  selection.assets = {suite::resolveAsset("catmark_pyramid"),
+                      suite::resolveAsset("loop_icosahedron")};
   selection.threads = threads;
-  Results results;
-  runSuite(selection, nullptr, &results, timings);
-  return serializeResults(results);
+  results::Results results;
+  suite::runSuite(selection, nullptr, &results, timings);
+  return results::serializeResults(results);
 }
 
 TEST(ThreadInvariance, ResultsAreByteIdenticalOnOneAndTwoThreads) {
-  SuiteTimings one_thread, two_threads;
+  suite::SuiteTimings one_thread, two_threads;
   const std::string serial = runWithThreads(1, &one_thread);
   const std::string parallel = runWithThreads(2, &two_threads);
   EXPECT_EQ(one_thread.threads, 1);
@@ -35,17 +36,17 @@ TEST(ThreadInvariance, ResultsAreByteIdenticalOnOneAndTwoThreads) {
 }
 
 TEST(ThreadInvariance, TimingsCoverEveryMeasureOfEveryRecord) {
-  SuiteSelection selection;
-  selection.assets = {resolveAsset("loop_icosahedron")};
+  suite::SuiteSelection selection;
+  selection.assets = {suite::resolveAsset("loop_icosahedron")};
   selection.threads = 2;
-  Results results;
-  SuiteTimings timings;
-  runSuite(selection, nullptr, &results, &timings);
+  results::Results results;
+  suite::SuiteTimings timings;
+  suite::runSuite(selection, nullptr, &results, &timings);
   size_t measured = 0;
-  for (const Record& record : results.records) measured += record.measures.size();
+  for (const results::Record& record : results.records) measured += record.measures.size();
   EXPECT_EQ(timings.measures.size(), measured);
   double sum = 0;
-  for (const MeasureTiming& t : timings.measures) sum += t.seconds;
+  for (const suite::MeasureTiming& t : timings.measures) sum += t.seconds;
   EXPECT_GT(timings.wall_seconds, 0);
   EXPECT_GT(sum, 0);
 }

@@ -23,15 +23,15 @@
 namespace tb::acc {
 namespace {
 
-double diagonalOf(const Mesh& mesh) { return tb::diagonalOf(boundsOf(mesh)); }
+double diagonalOf(const mesh::Mesh& mesh) { return tb::mesh::diagonalOf(mesh::boundsOf(mesh)); }
 
-Mesh bundled(const std::string& name) {
-  return loadObjFile(tb::testing::assetPath("opensubdiv") + "/" + name + ".obj");
+mesh::Mesh bundled(const std::string& name) {
+  return mesh::loadObjFile(tb::testing::assetPath("opensubdiv") + "/" + name + ".obj");
 }
 
 // catmark_cube with every edge infinitely sharp: every vertex a corner of three creases.
-Mesh sharpCube() {
-  Mesh mesh = bundled("catmark_cube");
+mesh::Mesh sharpCube() {
+  mesh::Mesh mesh = bundled("catmark_cube");
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto c = mesh.facePositions(f);
     for (int k = 0; k < 4; ++k) {
@@ -44,7 +44,7 @@ Mesh sharpCube() {
 // A 6 x 6 grid of unit quads in z = 0 lifted by a bump, with an infinitely sharp crease
 // along the row y = 3 from x = 1 to x = 5 (darts at both ends: the crease vertices in
 // between are regular crease vertices).
-Mesh creasedGrid() {
+mesh::Mesh creasedGrid() {
   std::string obj;
   for (int y = 0; y <= 6; ++y) {
     for (int x = 0; x <= 6; ++x) {
@@ -62,11 +62,11 @@ Mesh creasedGrid() {
     // OBJ tag vertex indices are 0-based.
     obj += "t crease 2/1/0 " + std::to_string(x + 7 * 3) + " " + std::to_string(x + 1 + 7 * 3) + " 10\n";
   }
-  return loadObjText(obj, "creased_grid.obj");
+  return mesh::loadObjText(obj, "creased_grid.obj");
 }
 
 // An n x n grid of unit quads, bumped so no patch is planar, with a boundary rule.
-Mesh bumpyGrid(int n, int boundary_tag) {
+mesh::Mesh bumpyGrid(int n, int boundary_tag) {
   std::string obj;
   for (int y = 0; y <= n; ++y) {
     for (int x = 0; x <= n; ++x) {
@@ -81,7 +81,7 @@ Mesh bumpyGrid(int n, int boundary_tag) {
     }
   }
   obj += "t interpolateboundary 1/0/0 " + std::to_string(boundary_tag) + "\n";
-  return loadObjText(obj, "grid.obj");
+  return mesh::loadObjText(obj, "grid.obj");
 }
 
 struct CurveFigures {
@@ -93,30 +93,33 @@ struct CurveFigures {
 // boundary) whose two ends are crease or corner vertices untouched by a finite sharpness
 // (where the budget rounded a leftover sharpness the limit is not the crease curve), sampled
 // at 17 points.
-CurveFigures creaseCurveError(const Mesh& mesh) {
-  const auto patches = buildSurface(AccTechnique(), mesh, {});
-  const Mesh& control = patches->controlMesh();
-  const CreasePreparation creases = prepareCreases(mesh, "acc", kDefaultCreaseFaceBudget);
+CurveFigures creaseCurveError(const mesh::Mesh& mesh) {
+  const auto patches = techniques::buildSurface(AccTechnique(), mesh, {});
+  const mesh::Mesh& control = patches->controlMesh();
+  const techniques::CreasePreparation creases =
+      techniques::prepareCreases(mesh, "acc", techniques::kDefaultCreaseFaceBudget);
   const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
   std::set<uint64_t> infinitely_sharp;
-  for (const Crease& c : control.tags.creases) {
-    if (c.sharpness >= 10) infinitely_sharp.insert(CreasePreparation::sharpEdgeKey(c.v0, c.v1));
+  for (const mesh::Crease& c : control.tags.creases) {
+    if (c.sharpness >= 10)
+      infinitely_sharp.insert(techniques::CreasePreparation::sharpEdgeKey(c.v0, c.v1));
   }
   std::set<uint32_t> finite_sharp;
-  for (const Crease& c : control.tags.creases) {
+  for (const mesh::Crease& c : control.tags.creases) {
     if (c.sharpness > 0 && c.sharpness < 10) finite_sharp.insert({c.v0, c.v1});
   }
-  for (const Corner& c : control.tags.corners) {
+  for (const mesh::Corner& c : control.tags.corners) {
     if (c.sharpness > 0 && c.sharpness < 10) finite_sharp.insert(c.vertex);
   }
   std::map<uint64_t, int> edge_faces;
   for (size_t f = 0; f < control.faceCount(); ++f) {
     const auto c = control.facePositions(f);
-    for (size_t k = 0; k < c.size(); ++k) ++edge_faces[CreasePreparation::sharpEdgeKey(c[k], c[(k + 1) % c.size()])];
+    for (size_t k = 0; k < c.size(); ++k)
+      ++edge_faces[techniques::CreasePreparation::sharpEdgeKey(c[k], c[(k + 1) % c.size()])];
   }
   const auto crease_end = [&](uint32_t v) {
-    return (creases.vertex_kind[v] == SharpVertexKind::kCrease ||
-            creases.vertex_kind[v] == SharpVertexKind::kCorner) &&
+    return (creases.vertex_kind[v] == techniques::SharpVertexKind::kCrease ||
+            creases.vertex_kind[v] == techniques::SharpVertexKind::kCorner) &&
            !finite_sharp.count(v);
   };
   const double diagonal = diagonalOf(control);
@@ -126,14 +129,15 @@ CurveFigures creaseCurveError(const Mesh& mesh) {
     const ref::LimitFace face = limit.face(p);
     for (int k = 0; k < 4; ++k) {
       const uint32_t a = c[k], b = c[(k + 1) % 4];
-      const uint64_t key = CreasePreparation::sharpEdgeKey(a, b);
-      const bool boundary = edge_faces[key] == 1 && control.tags.boundary != BoundaryInterpolation::kNone;
+      const uint64_t key = techniques::CreasePreparation::sharpEdgeKey(a, b);
+      const bool boundary =
+          edge_faces[key] == 1 && control.tags.boundary != mesh::BoundaryInterpolation::kNone;
       if (!(infinitely_sharp.count(key) || boundary) || !crease_end(a) || !crease_end(b)) continue;
       ++figures.edges;
       for (int i = 0; i <= 16; ++i) {
         const auto uv = testing::edgeUv(k, i / 16.0);
-        const Vec3d ours = patches->evaluate(p, {uv[0], uv[1], 0}).position;
-        const Vec3d exact = face.evaluate(uv[0], uv[1]).position;
+        const mesh::Vec3d ours = patches->evaluate(p, {uv[0], uv[1], 0}).position;
+        const mesh::Vec3d exact = face.evaluate(uv[0], uv[1]).position;
         figures.worst = std::max(figures.worst, length(ours - exact) / diagonal);
       }
     }
@@ -143,13 +147,12 @@ CurveFigures creaseCurveError(const Mesh& mesh) {
 
 TEST(AccCreases, InfinitelySharpCreaseCurvesEqualTheLimit) {
   size_t edges = 0;
-  for (const auto& [name, mesh] :
-       {std::pair<std::string, Mesh>{"sharp cube", sharpCube()},
-        {"creased grid", creasedGrid()},
-        {"catmark_single_crease", bundled("catmark_single_crease")},
-        {"catmark_edgecorner", bundled("catmark_edgecorner")},
-        {"catmark_tent_creases1", bundled("catmark_tent_creases1")},
-        {"grid, edge-only boundary", bumpyGrid(4, 2)}}) {
+  for (const auto& [name, mesh] : {std::pair<std::string, mesh::Mesh>{"sharp cube", sharpCube()},
+                                   {"creased grid", creasedGrid()},
+                                   {"catmark_single_crease", bundled("catmark_single_crease")},
+                                   {"catmark_edgecorner", bundled("catmark_edgecorner")},
+                                   {"catmark_tent_creases1", bundled("catmark_tent_creases1")},
+                                   {"grid, edge-only boundary", bumpyGrid(4, 2)}}) {
     const CurveFigures f = creaseCurveError(mesh);
     std::printf("%-24s %4zu sharp patch edges between crease/corner vertices: max |acc - limit| "
                 "/ diagonal %.2e\n",
@@ -164,8 +167,8 @@ TEST(AccCreases, InfinitelySharpCreaseCurvesEqualTheLimit) {
 // boundary vertex; acc patches exactly those (the inner 2 x 2 of a 4 x 4 grid, regular: exact
 // B-spline patches over the rings that run through the boundary faces), in input order.
 TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
-  const Mesh mesh = bumpyGrid(4, 0);
-  const auto patches = buildSurface(AccTechnique(), mesh, {});
+  const mesh::Mesh mesh = bumpyGrid(4, 0);
+  const auto patches = techniques::buildSurface(AccTechnique(), mesh, {});
   ASSERT_EQ(patches->patchCount(), 4u);
   EXPECT_EQ(patches->controlMesh().faceCount(), 16u);
   const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
@@ -175,7 +178,7 @@ TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
     const ref::LimitFace face = limit.face(p);
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; j <= 8; ++j) {
-        const Vec3d ours = patches->evaluate(p, {i / 8.0, j / 8.0, 0}).position;
+        const mesh::Vec3d ours = patches->evaluate(p, {i / 8.0, j / 8.0, 0}).position;
         worst = std::max(worst, length(ours - face.evaluate(i / 8.0, j / 8.0).position));
       }
     }
@@ -192,8 +195,8 @@ TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
 // the crease keeps its normal jump: the two sides' normals differ along a sharp edge between
 // two crease vertices (towards a dart, where the crease fades, they meet).
 TEST(AccCreases, SharpEdgesKeepTheirNormalJump) {
-  const Mesh mesh = creasedGrid();
-  const auto patches = buildSurface(AccTechnique(), mesh, {});
+  const mesh::Mesh mesh = creasedGrid();
+  const auto patches = techniques::buildSurface(AccTechnique(), mesh, {});
   std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
   double worst_gap = 0, smallest_jump = 1e9;
   size_t sharp_edges = 0;
@@ -213,8 +216,9 @@ TEST(AccCreases, SharpEdgesKeepTheirNormalJump) {
       for (int i = 1; i < 16; ++i) {
         const auto ua = testing::edgeUv(k, i / 16.0);
         const auto ub = testing::edgeUv(other->second.second, 1 - i / 16.0);
-        const SurfacePoint a = patches->evaluate(p, {ua[0], ua[1], 0});
-        const SurfacePoint b = patches->evaluate(other->second.first, {ub[0], ub[1], 0});
+        const techniques::SurfacePoint a = patches->evaluate(p, {ua[0], ua[1], 0});
+        const techniques::SurfacePoint b =
+            patches->evaluate(other->second.first, {ub[0], ub[1], 0});
         worst_gap = std::max(worst_gap, length(a.position - b.position));
         if (between_creases) smallest_jump = std::min(smallest_jump, length(a.normal - b.normal));
       }
@@ -236,12 +240,12 @@ TEST(AccCreases, SharpEdgesKeepTheirNormalJump) {
 // order of magnitude. The crease faces are graded against the limit over the control mesh,
 // which keeps the true leftover sharpness.
 TEST(AccCreases, RefiningEveryLevelOfASemiSharpCreaseRemovesTheRoundingError) {
-  const Mesh mesh = bundled("catmark_cube_creases1");
+  const mesh::Mesh mesh = bundled("catmark_cube_creases1");
   std::vector<double> errors;
   for (double budget : {6.0, 24.0, 96.0, 384.0, 1536.0, 6144.0}) {
-    VariantInfo variant{"budget", "", {{"crease_face_budget", budget}}};
-    const auto patches = buildSurface(AccTechnique(), mesh, variant);
-    const Mesh& control = patches->controlMesh();
+    techniques::VariantInfo variant{"budget", "", {{"crease_face_budget", budget}}};
+    const auto patches = techniques::buildSurface(AccTechnique(), mesh, variant);
+    const mesh::Mesh& control = patches->controlMesh();
     const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
     const double diagonal = diagonalOf(control);
     double worst = 0;
@@ -250,7 +254,7 @@ TEST(AccCreases, RefiningEveryLevelOfASemiSharpCreaseRemovesTheRoundingError) {
       for (int i = 0; i <= 8; ++i) {
         for (int j = 0; j <= 8; ++j) {
           const double u = i / 8.0, v = j / 8.0;
-          const Vec3d ours = patches->evaluate(p, {u, v, 0}).position;
+          const mesh::Vec3d ours = patches->evaluate(p, {u, v, 0}).position;
           worst = std::max(worst, length(ours - face.evaluate(u, v).position) / diagonal);
         }
       }

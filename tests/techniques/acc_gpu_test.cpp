@@ -26,7 +26,7 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const auto assets = testing::supportedAssets();
   ASSERT_FALSE(assets.empty());
-  for (const VariantInfo& variant : AccTechnique().variants()) {
+  for (const techniques::VariantInfo& variant : AccTechnique().variants()) {
     // symmetric_imprecise is the counter-example: symmetric as written, but without
     // `precise` the driver may reassociate it, so neither bitwise symmetry nor agreement
     // with the CPU twin is promised; tests/measures/watertight_variants_test.cpp pins
@@ -37,7 +37,7 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
     double worst_normal = 0;
     size_t vertices = 0, shared = 0, differing = 0;
     for (const auto& asset : assets) {
-      const auto patches = buildSurface(AccTechnique(), asset.mesh, variant);
+      const auto patches = techniques::buildSurface(AccTechnique(), asset.mesh, variant);
       const auto programs = patches->gpuPrograms();
       ASSERT_EQ(programs.size(), 1u);
       const gpu::GpuPatchProgram* program = &programs.front();
@@ -56,10 +56,10 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
             tess::tessellate(tess::Domain::kQuad, lc.spacing, levels).points.size();
         ASSERT_EQ(capture.vertices.size(), expected_points * patches->patchCount())
             << asset.name << " " << variant.name;
-        std::map<testing::EdgeKey, Vec3f> seen;
+        std::map<testing::EdgeKey, mesh::Vec3f> seen;
         for (const gpu::CapturedVertex& v : capture.vertices) {
-          const SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
-          const uint64_t ulp = maxUlpDistance(cpu.position, v.position);
+          const techniques::SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
+          const uint64_t ulp = mesh::maxUlpDistance(cpu.position, v.position);
           worst_ulp = std::max(worst_ulp, ulp);
           EXPECT_LE(ulp, 4u) << asset.name << " " << variant.name << " patch " << v.patch << " at "
                             << v.coord[0] << "," << v.coord[1];

@@ -24,9 +24,9 @@ namespace {
 using testing::supportedAssets;
 using testing::variantNamed;
 
-double diagonal(const Mesh& mesh) {
-  Vec3d lo = mesh.positions[0], hi = lo;
-  for (const Vec3d& p : mesh.positions) {
+double diagonal(const mesh::Mesh& mesh) {
+  mesh::Vec3d lo = mesh.positions[0], hi = lo;
+  for (const mesh::Vec3d& p : mesh.positions) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
@@ -53,7 +53,8 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
   const auto points = domainPoints();
   size_t checked_faces = 0;
   for (const auto& asset : supportedAssets()) {
-    const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
+    const auto patches =
+        techniques::buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
     // Over the control mesh: a creased input is refined there (techniques/common/
     // crease_refinement.h), with the same limit surface.
     const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
@@ -66,8 +67,8 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
       const ref::LimitFace face = limit.face(f);
       for (const tess::DomainPoint& d : points) {
         const ref::LimitPoint exact = face.evaluate(d[0], d[1]);
-        const SurfacePoint p = patches->evaluate(f, {d[0], d[1], 0});
-        const SurfacePointF q = patches->evaluateFloat(f, d);
+        const techniques::SurfacePoint p = patches->evaluate(f, {d[0], d[1], 0});
+        const techniques::SurfacePointF q = patches->evaluateFloat(f, d);
         worst_d = std::max(worst_d, length(p.position - exact.position) / diag);
         worst_f = std::max(worst_f, length(vecCast<double>(q.position) - exact.position) / diag);
         EXPECT_LT(length(p.normal - exact.normal), 1e-9) << asset.name << " face " << f;
@@ -82,17 +83,17 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
   EXPECT_GT(checked_faces, 50u);
 }
 
-double meanNormalAngleDeg(const Mesh& mesh, const std::string& variant) {
+double meanNormalAngleDeg(const mesh::Mesh& mesh, const std::string& variant) {
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-  const auto patches = buildSurface(AccTechnique(), mesh, variantNamed(variant));
+  const auto patches = techniques::buildSurface(AccTechnique(), mesh, variantNamed(variant));
   const auto points = domainPoints();
   double sum = 0;
   size_t count = 0;
   for (size_t f = 0; f < patches->patchCount(); ++f) {
     const ref::LimitFace face = limit.face(f);
     for (const tess::DomainPoint& d : points) {
-      const Vec3d n = patches->evaluate(f, {d[0], d[1], 0}).normal;
-      const Vec3d m = face.evaluate(d[0], d[1]).normal;
+      const mesh::Vec3d n = patches->evaluate(f, {d[0], d[1], 0}).normal;
+      const mesh::Vec3d m = face.evaluate(d[0], d[1]).normal;
       sum += std::acos(std::clamp(dot(n, m), -1.0, 1.0)) * 180 / std::numbers::pi;
       ++count;
     }
@@ -103,7 +104,8 @@ double meanNormalAngleDeg(const Mesh& mesh, const std::string& variant) {
 // Oracle: Bfr limit normals; §3.2's tangent patches exist to make normals smooth.
 TEST(Acc, TangentPatchesBringNormalsCloserToTheLimit) {
   for (const char* name : {"catmark_cube.obj", "catmark_toroidal_tet.obj"}) {
-    const Mesh mesh = loadObjFile(tb::testing::assetPath(std::string("opensubdiv/") + name));
+    const mesh::Mesh mesh =
+        mesh::loadObjFile(tb::testing::assetPath(std::string("opensubdiv/") + name));
     const double with = meanNormalAngleDeg(mesh, "default");
     const double without = meanNormalAngleDeg(mesh, "no_tangent");
     std::printf("%s mean normal deviation: tangent patches %.4f deg, geometry %.4f deg\n", name,
@@ -115,7 +117,8 @@ TEST(Acc, TangentPatchesBringNormalsCloserToTheLimit) {
 // Oracle: the neighbouring patch evaluated at the same edge point.
 TEST(Acc, SharedEdgesAreC0InDouble) {
   for (const auto& asset : supportedAssets()) {
-    const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
+    const auto patches =
+        techniques::buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
     const double diag = diagonal(asset.mesh);
     std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
     double worst = 0;
@@ -134,8 +137,8 @@ TEST(Acc, SharedEdgesAreC0InDouble) {
           const double s = i / 16.0;
           const auto a = testing::edgeUv(k, s);
           const auto b = testing::edgeUv(other->second.second, 1 - s);
-          const Vec3d pa = patches->evaluate(p, {a[0], a[1], 0}).position;
-          const Vec3d pb = patches->evaluate(other->second.first, {b[0], b[1], 0}).position;
+          const mesh::Vec3d pa = patches->evaluate(p, {a[0], a[1], 0}).position;
+          const mesh::Vec3d pb = patches->evaluate(other->second.first, {b[0], b[1], 0}).position;
           worst = std::max(worst, length(pa - pb) / diag);
         }
       }
@@ -152,13 +155,14 @@ TEST(Acc, SymmetricOrdersAreBitwiseWatertightInFloat) {
   for (const char* variant : {"default", "symmetric_nofma", "symmetric_edges", "asymmetric"}) {
     size_t shared = 0, differing = 0;
     for (const auto& asset : supportedAssets()) {
-      const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
-      std::map<testing::EdgeKey, Vec3f> seen;
+      const auto patches =
+          techniques::buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
+      std::map<testing::EdgeKey, mesh::Vec3f> seen;
       for (size_t p = 0; p < patches->patchCount(); ++p) {
         for (const tess::DomainPoint& d : points) {
           const auto keys = testing::edgeKeys(patches->patchCorners(p), d[0], d[1]);
           if (keys.empty()) continue;
-          const Vec3f q = patches->evaluateFloat(p, d).position;
+          const mesh::Vec3f q = patches->evaluateFloat(p, d).position;
           for (const auto& key : keys) {
             const auto [it, inserted] = seen.emplace(key, q);
             if (inserted) continue;
@@ -180,24 +184,26 @@ TEST(Acc, SymmetricOrdersAreBitwiseWatertightInFloat) {
 // Oracle: a hand count. Basis: 1 sub + 10 mul per parameter. Each of the 5 four-term
 // sums (4 rows, 1 column) is 4 mul + 3 add per component (fma = mul + add): 60 + 45.
 TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
-  using C = CountingScalar<float>;
-  std::array<Vec3T<C>, 16> b{};
-  for (BezierOrder order : {BezierOrder::kAsymmetric, BezierOrder::kSymmetricNoFma,
-                            BezierOrder::kSymmetricFma, BezierOrder::kSymmetricEdges}) {
-    resetOperationCounts();
-    (void)evaluateBicubic(b, C(0.25f), C(0.5f), order);
-    EXPECT_EQ(operationCounts().mul, 80u);
-    EXPECT_EQ(operationCounts().add, 47u);
+  using C = techniques::CountingScalar<float>;
+  std::array<mesh::Vec3T<C>, 16> b{};
+  for (techniques::BezierOrder order :
+       {techniques::BezierOrder::kAsymmetric, techniques::BezierOrder::kSymmetricNoFma,
+        techniques::BezierOrder::kSymmetricFma, techniques::BezierOrder::kSymmetricEdges}) {
+    techniques::resetOperationCounts();
+    (void)techniques::evaluateBicubic(b, C(0.25f), C(0.5f), order);
+    EXPECT_EQ(techniques::operationCounts().mul, 80u);
+    EXPECT_EQ(techniques::operationCounts().add, 47u);
   }
-  const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = buildSurface(AccTechnique(), cube, variantNamed("default"));
+  const mesh::Mesh cube = mesh::loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const auto patches = techniques::buildSurface(AccTechnique(), cube, variantNamed("default"));
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   EXPECT_GT(profile->per_patch_setup.total(), profile->per_vertex.total());
   EXPECT_EQ(profile->per_vertex.sqrt, 1u);
-  const Mesh torus = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const mesh::Mesh torus =
+      mesh::loadObjFile(tb::testing::assetPath("opensubdiv/catmark_torus.obj"));
   const auto regular =
-      buildSurface(AccTechnique(), torus, variantNamed("default"))->operationProfile(0);
+      techniques::buildSurface(AccTechnique(), torus, variantNamed("default"))->operationProfile(0);
   ASSERT_TRUE(regular.has_value());
   // Valence 3 rings are smaller than valence 4 ones: the cube's set-up is cheaper.
   EXPECT_LT(profile->per_patch_setup.total(), regular->per_patch_setup.total());
@@ -216,17 +222,17 @@ TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
 
 // Oracle: hand count of corner (valence, boundary) tuples up to rotation.
 TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
-  const Mesh cube = loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
-  EXPECT_EQ(topologyCombinationCount(*buildSurface(AccTechnique(), cube, {})), 1u);
+  const mesh::Mesh cube = mesh::loadObjFile(tb::testing::assetPath("opensubdiv/catmark_cube.obj"));
+  EXPECT_EQ(topologyCombinationCount(*techniques::buildSurface(AccTechnique(), cube, {})), 1u);
   // A 2x1 strip: both quads have corners (2 boundary, 3 boundary, 3 boundary, 2 boundary)
   // in rotated order, so one combination.
-  const Mesh strip = loadObjText(
+  const mesh::Mesh strip = mesh::loadObjText(
       "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n", "strip");
-  const auto patches = buildSurface(AccTechnique(), strip, {});
+  const auto patches = techniques::buildSurface(AccTechnique(), strip, {});
   EXPECT_EQ(topologyCombinationCount(*patches), 1u);
   EXPECT_GT(patches->footprint().stencil_bytes, 0u);
   for (const auto& asset : supportedAssets()) {
-    const auto p = buildSurface(AccTechnique(), asset.mesh, {});
+    const auto p = techniques::buildSurface(AccTechnique(), asset.mesh, {});
     std::printf("%-28s %5zu patches, %3zu topology combinations, stencil %llu bytes\n",
                 asset.name.c_str(), p->patchCount(), topologyCombinationCount(*p),
                 (unsigned long long)p->footprint().stencil_bytes);
@@ -238,9 +244,10 @@ TEST(Acc, TopologyCombinationsAreCountedUpToRotation) {
 
 std::string rejection(const std::string& obj) {
   try {
-    buildSurface(AccTechnique(), loadObjText(obj, "test.obj"), {});
-  } catch (const UnsupportedInput& error) {
-    EXPECT_EQ(std::string(error.what()), AccTechnique().checkSupport(loadObjText(obj, "test.obj")));
+    techniques::buildSurface(AccTechnique(), mesh::loadObjText(obj, "test.obj"), {});
+  } catch (const techniques::UnsupportedInput& error) {
+    EXPECT_EQ(std::string(error.what()),
+              AccTechnique().checkSupport(mesh::loadObjText(obj, "test.obj")));
     return error.what();
   }
   return "accepted";
@@ -287,8 +294,8 @@ TEST(AccTags, HolesCreasesCornersAndBoundaryRulesAreAccepted) {
 // A hole has no patch; the other faces keep theirs, in input order, and still use the
 // hole's vertices (its corner points are those of the full ring).
 TEST(AccTags, HoleFacesGetNoPatch) {
-  const Mesh mesh = loadObjText(std::string(kGrid) + "t hole 1/0/0 2\n", "hole.obj");
-  const auto patches = buildSurface(AccTechnique(), mesh, {});
+  const mesh::Mesh mesh = mesh::loadObjText(std::string(kGrid) + "t hole 1/0/0 2\n", "hole.obj");
+  const auto patches = techniques::buildSurface(AccTechnique(), mesh, {});
   ASSERT_EQ(patches->patchCount(), 3u);
   EXPECT_EQ(patches->controlMesh().faceCount(), 4u);
   EXPECT_EQ(patches->sourceFace(0), 0u);
@@ -331,9 +338,9 @@ namespace {
 // Oracle: the faces' own corner order, which defines e_i, f_i and e_{i+1} of every slot.
 TEST(QuadRings, EverySlotMatchesItsFacesCornerOrder) {
   for (const auto& asset : acc::testing::supportedAssets()) {
-    const Mesh& mesh = asset.mesh;
-    const QuadRings rings = buildQuadRings(mesh, "acc", acc::kMaxValence);
-    const Topology topology = buildTopology(mesh);
+    const mesh::Mesh& mesh = asset.mesh;
+    const techniques::QuadRings rings = techniques::buildQuadRings(mesh, "acc", acc::kMaxValence);
+    const mesh::Topology topology = mesh::buildTopology(mesh);
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
       const auto c = mesh.facePositions(f);
       for (uint32_t k = 0; k < 4; ++k) {
@@ -366,17 +373,21 @@ TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
     double worst = 0;
     size_t edges = 0;
     for (const auto& asset : testing::supportedAssets()) {
-      const CreasePreparation creases = prepareCreases(asset.mesh, "acc", kDefaultCreaseFaceBudget);
-      const QuadRings rings = buildQuadRings(creases.control, "acc", kMaxValence, &creases);
+      const techniques::CreasePreparation creases =
+          techniques::prepareCreases(asset.mesh, "acc", techniques::kDefaultCreaseFaceBudget);
+      const techniques::QuadRings rings =
+          techniques::buildQuadRings(creases.control, "acc", kMaxValence, &creases);
       // Boundary, crease and corner vertices keep the geometry tangents (a regular boundary
       // or crease sector, valence 3, still matches its neighbour), and a sharp edge is meant
       // to break the normal.
       const auto keeps_geometry = [&](uint32_t v) {
-        const SharpVertexKind kind = creases.vertex_kind[v];
+        const techniques::SharpVertexKind kind = creases.vertex_kind[v];
         return (rings.rings[v].boundary && rings.rings[v].valence != 3) ||
-               kind == SharpVertexKind::kCrease || kind == SharpVertexKind::kCorner;
+               kind == techniques::SharpVertexKind::kCrease ||
+               kind == techniques::SharpVertexKind::kCorner;
       };
-      const auto patches = buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
+      const auto patches =
+          techniques::buildSurface(AccTechnique(), asset.mesh, variantNamed(variant));
       std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
       for (size_t p = 0; p < patches->patchCount(); ++p) {
         const auto c = patches->patchCorners(p);
@@ -392,8 +403,8 @@ TEST(Acc, TangentPatchesMakeNormalsContinuousAcrossEdges) {
           for (int i = 1; i < 16; ++i) {
             const auto ua = testing::edgeUv(k, i / 16.0);
             const auto ub = testing::edgeUv(other->second.second, 1 - i / 16.0);
-            const Vec3d na = patches->evaluate(p, {ua[0], ua[1], 0}).normal;
-            const Vec3d nb = patches->evaluate(other->second.first, {ub[0], ub[1], 0}).normal;
+            const mesh::Vec3d na = patches->evaluate(p, {ua[0], ua[1], 0}).normal;
+            const mesh::Vec3d nb = patches->evaluate(other->second.first, {ub[0], ub[1], 0}).normal;
             worst = std::max(worst, length(na - nb));
           }
         }

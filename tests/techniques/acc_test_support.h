@@ -16,7 +16,7 @@ namespace tb::acc::testing {
 
 struct Asset {
   std::string name;
-  Mesh mesh;
+  mesh::Mesh mesh;
 };
 
 // Every bundled Catmull-Clark asset acc accepts (checkSupport empty), by file name.
@@ -34,7 +34,7 @@ inline std::vector<Asset> supportedAssets(std::vector<std::string>* rejected = n
   for (const std::string& file : files) {
     const std::string name = std::filesystem::path(file).filename().string();
     if (name.rfind("loop_", 0) == 0) continue;
-    Mesh mesh = loadObjFile(file);
+    mesh::Mesh mesh = mesh::loadObjFile(file);
     const std::string reason = technique.checkSupport(mesh);
     if (reason.empty()) {
       assets.push_back({name, std::move(mesh)});
@@ -45,8 +45,8 @@ inline std::vector<Asset> supportedAssets(std::vector<std::string>* rejected = n
   return assets;
 }
 
-inline VariantInfo variantNamed(const std::string& name) {
-  for (const VariantInfo& v : AccTechnique().variants()) {
+inline techniques::VariantInfo variantNamed(const std::string& name) {
+  for (const techniques::VariantInfo& v : AccTechnique().variants()) {
     if (v.name == name) return v;
   }
   return {};

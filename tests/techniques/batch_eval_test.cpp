@@ -31,49 +31,49 @@ const std::vector<std::string> kAssets = {
 constexpr double kPositionTolerance = 1e-12;  // of the bounding-box diagonal
 constexpr double kNormalTolerance = 1e-11;    // unit normals, absolute
 
-Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
+mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
 
-double diagonal(const Mesh& mesh) {
-  Vec3d lo = mesh.positions[0], hi = lo;
-  for (const Vec3d& p : mesh.positions) {
+double diagonal(const mesh::Mesh& mesh) {
+  mesh::Vec3d lo = mesh.positions[0], hi = lo;
+  for (const mesh::Vec3d& p : mesh.positions) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
   return length(hi - lo);
 }
 
-std::vector<const Technique*> surfaceTechniques() {
-  std::vector<const Technique*> techniques;
-  for (const Technique* t : TechniqueRegistry::instance().all()) {
-    if (t->info().family == TechniqueFamily::kSurface) techniques.push_back(t);
+std::vector<const techniques::Technique*> surfaceTechniques() {
+  std::vector<const techniques::Technique*> techniques;
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+    if (t->info().family == techniques::TechniqueFamily::kSurface) techniques.push_back(t);
   }
   return techniques;
 }
 
-const Technique& technique(const std::string& id) {
-  const Technique* t = TechniqueRegistry::instance().find(id);
+const techniques::Technique& technique(const std::string& id) {
+  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(id);
   if (t == nullptr) throw std::logic_error("no technique " + id);
   return *t;
 }
 
-VariantInfo variant(const Technique& t, const std::string& name) {
-  for (const VariantInfo& v : t.variants()) {
+techniques::VariantInfo variant(const techniques::Technique& t, const std::string& name) {
+  for (const techniques::VariantInfo& v : t.variants()) {
     if (v.name == name) return v;
   }
   throw std::logic_error(t.info().id + " has no variant " + name);
 }
 
 // A lattice (exact corners and edges) and the tessellator's fractional-odd points.
-std::vector<std::vector<DomainCoord>> patterns(PatchDomain domain) {
+std::vector<std::vector<techniques::DomainCoord>> patterns(techniques::PatchDomain domain) {
   tess::Levels levels;
   levels.outer = {5.3f, 5.3f, 5.3f, 5.3f};
   levels.inner = {5.3f, 5.3f};
   const tess::Tessellation t = tess::tessellate(
-      domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+      domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
       tess::Spacing::kFractionalOdd, levels);
-  std::vector<DomainCoord> tessellator;
+  std::vector<techniques::DomainCoord> tessellator;
   for (const tess::DomainPoint& d : t.points) tessellator.push_back({d[0], d[1], d[2]});
-  return {latticeCoords(domain, 7), tessellator};
+  return {techniques::latticeCoords(domain, 7), tessellator};
 }
 
 struct Coverage {
@@ -81,30 +81,34 @@ struct Coverage {
 };
 
 // Every point of every patch of `surface` through evaluateBatch against evaluate().
-void expectBatchEqualsPerPoint(const SurfacePatches& surface, const std::string& what,
+void expectBatchEqualsPerPoint(const techniques::SurfacePatches& surface, const std::string& what,
                                Coverage& coverage) {
   const double tolerance = kPositionTolerance * diagonal(surface.controlMesh());
-  for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
-    for (const std::vector<DomainCoord>& coords : patterns(domain)) {
-      const auto pattern = surface.makeBatchPattern(domain, coords, BatchOutput::kWithNormals);
-      BatchPoints out;
+  for (techniques::PatchDomain domain :
+       {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
+    for (const std::vector<techniques::DomainCoord>& coords : patterns(domain)) {
+      const auto pattern =
+          surface.makeBatchPattern(domain, coords, techniques::BatchOutput::kWithNormals);
+      techniques::BatchPoints out;
       for (size_t p = 0; p < surface.patchCount(); ++p) {
         if (surface.patchDomain(p) != domain) continue;
         surface.evaluateBatch(p, *pattern, out);
         ASSERT_EQ(out.count, coords.size()) << what;
         ASSERT_TRUE(out.has_normals) << what;
         (out.has_derivatives ? coverage.batched_patches : coverage.default_patches)++;
-        if (domain == PatchDomain::kTriangle && out.has_derivatives) ++coverage.triangle_patches;
+        if (domain == techniques::PatchDomain::kTriangle && out.has_derivatives)
+          ++coverage.triangle_patches;
         double worst_position = 0, worst_normal = 0, worst_cross = 0;
         for (size_t i = 0; i < coords.size(); ++i) {
-          const SurfacePoint expected = surface.evaluate(p, coords[i]);
-          worst_position = std::max(
-              worst_position, length(BatchPoints::at(out.position, i) - expected.position));
-          worst_normal =
-              std::max(worst_normal, length(BatchPoints::at(out.normal, i) - expected.normal));
+          const techniques::SurfacePoint expected = surface.evaluate(p, coords[i]);
+          worst_position =
+              std::max(worst_position,
+                       length(techniques::BatchPoints::at(out.position, i) - expected.position));
+          worst_normal = std::max(
+              worst_normal, length(techniques::BatchPoints::at(out.normal, i) - expected.normal));
           if (out.has_derivatives) {
-            const Vec3d n =
-                normalize(cross(BatchPoints::at(out.du, i), BatchPoints::at(out.dv, i)));
+            const mesh::Vec3d n = normalize(cross(techniques::BatchPoints::at(out.du, i),
+                                                  techniques::BatchPoints::at(out.dv, i)));
             worst_cross = std::max(worst_cross, length(n - expected.normal));
           }
         }
@@ -118,12 +122,12 @@ void expectBatchEqualsPerPoint(const SurfacePatches& surface, const std::string&
 
 TEST(BatchEval, EqualsPerPointEvaluateForEveryTechniqueAndVariant) {
   Coverage coverage;
-  for (const Technique* t : surfaceTechniques()) {
+  for (const techniques::Technique* t : surfaceTechniques()) {
     for (const std::string& name : kAssets) {
-      const Mesh mesh = load(name);
+      const mesh::Mesh mesh = load(name);
       if (!t->checkSupport(mesh).empty()) continue;
-      for (const VariantInfo& v : t->variants()) {
-        expectBatchEqualsPerPoint(*buildSurface(*t, mesh, v),
+      for (const techniques::VariantInfo& v : t->variants()) {
+        expectBatchEqualsPerPoint(*techniques::buildSurface(*t, mesh, v),
                                   t->info().id + "/" + v.name + " on " + name, coverage);
       }
     }
@@ -136,12 +140,15 @@ TEST(BatchEval, EqualsPerPointEvaluateForEveryTechniqueAndVariant) {
 }
 
 TEST(BatchEval, ThePositionAndDerivativeOutputLeavesNormalsOut) {
-  const Mesh mesh = load("opensubdiv/catmark_xord_interior.obj");
+  const mesh::Mesh mesh = load("opensubdiv/catmark_xord_interior.obj");
   for (const char* id : {"acc", "gregory_acc"}) {
-    const BuiltSurface surface = buildSurface(technique(id), mesh, technique(id).variants()[0]);
-    const auto pattern = surface->makeBatchPattern(
-        PatchDomain::kQuad, latticeCoords(PatchDomain::kQuad, 4), BatchOutput::kPositionAndDerivatives);
-    BatchPoints out;
+    const techniques::BuiltSurface surface =
+        techniques::buildSurface(technique(id), mesh, technique(id).variants()[0]);
+    const auto pattern =
+        surface->makeBatchPattern(techniques::PatchDomain::kQuad,
+                                  techniques::latticeCoords(techniques::PatchDomain::kQuad, 4),
+                                  techniques::BatchOutput::kPositionAndDerivatives);
+    techniques::BatchPoints out;
     surface->evaluateBatch(0, *pattern, out);
     EXPECT_TRUE(out.has_derivatives) << id;
     EXPECT_FALSE(out.has_normals) << id;
@@ -152,22 +159,26 @@ TEST(BatchEval, ThePositionAndDerivativeOutputLeavesNormalsOut) {
 // A pattern the technique did not make goes point by point; a pattern of the other domain
 // is refused.
 TEST(BatchEval, ForeignPatternsFallBackAndWrongDomainsThrow) {
-  const Mesh mesh = load("opensubdiv/catmark_pyramid.obj");
-  const BuiltSurface surface =
-      buildSurface(technique("gregory_acc"), mesh, technique("gregory_acc").variants()[0]);
-  const std::vector<DomainCoord> coords = latticeCoords(PatchDomain::kQuad, 3);
-  const BatchPattern plain(PatchDomain::kQuad, coords, BatchOutput::kPositionAndDerivatives);
+  const mesh::Mesh mesh = load("opensubdiv/catmark_pyramid.obj");
+  const techniques::BuiltSurface surface = techniques::buildSurface(
+      technique("gregory_acc"), mesh, technique("gregory_acc").variants()[0]);
+  const std::vector<techniques::DomainCoord> coords =
+      techniques::latticeCoords(techniques::PatchDomain::kQuad, 3);
+  const techniques::BatchPattern plain(techniques::PatchDomain::kQuad, coords,
+                                       techniques::BatchOutput::kPositionAndDerivatives);
   size_t quad = 0, triangle = 0;
-  while (surface->patchDomain(quad) != PatchDomain::kQuad) ++quad;
-  while (surface->patchDomain(triangle) != PatchDomain::kTriangle) ++triangle;
-  BatchPoints out;
+  while (surface->patchDomain(quad) != techniques::PatchDomain::kQuad) ++quad;
+  while (surface->patchDomain(triangle) != techniques::PatchDomain::kTriangle) ++triangle;
+  techniques::BatchPoints out;
   surface->evaluateBatch(quad, plain, out);
   EXPECT_FALSE(out.has_derivatives);
   for (size_t i = 0; i < coords.size(); ++i) {
-    EXPECT_EQ(BatchPoints::at(out.position, i), surface->evaluate(quad, coords[i]).position);
+    EXPECT_EQ(techniques::BatchPoints::at(out.position, i),
+              surface->evaluate(quad, coords[i]).position);
   }
   EXPECT_THROW(surface->evaluateBatch(triangle, plain, out), std::invalid_argument);
-  const auto own = surface->makeBatchPattern(PatchDomain::kQuad, coords, BatchOutput::kWithNormals);
+  const auto own = surface->makeBatchPattern(techniques::PatchDomain::kQuad, coords,
+                                             techniques::BatchOutput::kWithNormals);
   EXPECT_THROW(surface->evaluateBatch(triangle, *own, out), std::invalid_argument);
 }
 
@@ -178,15 +189,17 @@ TEST(BatchEval, DerivativesEqualTheBfrLimitOnRegularFaces) {
   for (const char* id : {"acc", "gregory_acc"}) {
     for (const char* name : {"opensubdiv/catmark_xord_interior.obj",
                              "opensubdiv/catmark_edgecorner.obj", "opensubdiv/catmark_torus.obj"}) {
-      const Mesh mesh = load(name);
+      const mesh::Mesh mesh = load(name);
       if (!technique(id).checkSupport(mesh).empty()) continue;
-      const BuiltSurface surface = buildSurface(technique(id), mesh, technique(id).variants()[0]);
+      const techniques::BuiltSurface surface =
+          techniques::buildSurface(technique(id), mesh, technique(id).variants()[0]);
       const ref::LimitSurface limit(surface->controlMesh(), osd::Scheme::kCatmullClark);
       const double tolerance = 1e-12 * diagonal(mesh);
-      const std::vector<DomainCoord> coords = latticeCoords(PatchDomain::kQuad, 6);
-      const auto pattern = surface->makeBatchPattern(PatchDomain::kQuad, coords,
-                                                     BatchOutput::kPositionAndDerivatives);
-      BatchPoints out;
+      const std::vector<techniques::DomainCoord> coords =
+          techniques::latticeCoords(techniques::PatchDomain::kQuad, 6);
+      const auto pattern = surface->makeBatchPattern(
+          techniques::PatchDomain::kQuad, coords, techniques::BatchOutput::kPositionAndDerivatives);
+      techniques::BatchPoints out;
       for (size_t p = 0; p < surface->patchCount(); ++p) {
         if (!limit.isRegular(surface->sourceFace(p))) continue;
         ++faces;
@@ -194,11 +207,12 @@ TEST(BatchEval, DerivativesEqualTheBfrLimitOnRegularFaces) {
         const ref::LimitFace face = limit.face(surface->sourceFace(p));
         for (size_t i = 0; i < coords.size(); ++i) {
           const ref::LimitPoint exact = face.evaluate(coords[i][0], coords[i][1]);
-          EXPECT_LE(length(BatchPoints::at(out.position, i) - exact.position), tolerance)
+          EXPECT_LE(length(techniques::BatchPoints::at(out.position, i) - exact.position),
+                    tolerance)
               << id << " " << name << " patch " << p;
-          EXPECT_LE(length(BatchPoints::at(out.du, i) - exact.du), tolerance)
+          EXPECT_LE(length(techniques::BatchPoints::at(out.du, i) - exact.du), tolerance)
               << id << " " << name << " patch " << p;
-          EXPECT_LE(length(BatchPoints::at(out.dv, i) - exact.dv), tolerance)
+          EXPECT_LE(length(techniques::BatchPoints::at(out.dv, i) - exact.dv), tolerance)
               << id << " " << name << " patch " << p;
         }
       }
@@ -219,42 +233,46 @@ TEST(BatchEval, DerivativesAreFiniteDifferencesOfThePosition) {
                                                         {"acc", "no_tangent"}}) {
     for (const char* name : {"opensubdiv/catmark_xord_interior.obj",
                              "opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_edgecorner.obj"}) {
-      const Mesh mesh = load(name);
-      const Technique& t = technique(id);
+      const mesh::Mesh mesh = load(name);
+      const techniques::Technique& t = technique(id);
       if (!t.checkSupport(mesh).empty()) continue;
-      const BuiltSurface surface = buildSurface(t, mesh, variant(t, variant_name));
+      const techniques::BuiltSurface surface =
+          techniques::buildSurface(t, mesh, variant(t, variant_name));
       const double tolerance = 1e-7 * diagonal(mesh);
-      for (PatchDomain domain : {PatchDomain::kQuad, PatchDomain::kTriangle}) {
-        std::vector<DomainCoord> coords;  // the lattice's points off the domain boundary
-        for (const DomainCoord& d : latticeCoords(domain, 6)) {
-          const bool inside = domain == PatchDomain::kQuad
+      for (techniques::PatchDomain domain :
+           {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
+        std::vector<techniques::DomainCoord>
+            coords;  // the lattice's points off the domain boundary
+        for (const techniques::DomainCoord& d : techniques::latticeCoords(domain, 6)) {
+          const bool inside = domain == techniques::PatchDomain::kQuad
                                   ? d[0] > 0 && d[0] < 1 && d[1] > 0 && d[1] < 1
                                   : d[0] > 0 && d[1] > 0 && d[2] > 0;
           if (inside) coords.push_back(d);
         }
-        const auto pattern =
-            surface->makeBatchPattern(domain, coords, BatchOutput::kPositionAndDerivatives);
-        BatchPoints out;
+        const auto pattern = surface->makeBatchPattern(
+            domain, coords, techniques::BatchOutput::kPositionAndDerivatives);
+        techniques::BatchPoints out;
         for (size_t p = 0; p < surface->patchCount(); ++p) {
           if (surface->patchDomain(p) != domain) continue;
           surface->evaluateBatch(p, *pattern, out);
           ASSERT_TRUE(out.has_derivatives);
-          if (domain == PatchDomain::kTriangle) ++triangles;
+          if (domain == techniques::PatchDomain::kTriangle) ++triangles;
           for (size_t i = 0; i < coords.size(); ++i) {
-            const DomainCoord& d = coords[i];
+            const techniques::DomainCoord& d = coords[i];
             // Quads move (u, v); triangles move weight from corner 0 to corner 1 or 2.
             const auto at = [&](double step_u, double step_v) {
-              const DomainCoord moved =
-                  domain == PatchDomain::kQuad
-                      ? DomainCoord{d[0] + step_u, d[1] + step_v, 0}
-                      : DomainCoord{d[0] - step_u - step_v, d[1] + step_u, d[2] + step_v};
+              const techniques::DomainCoord moved =
+                  domain == techniques::PatchDomain::kQuad
+                      ? techniques::DomainCoord{d[0] + step_u, d[1] + step_v, 0}
+                      : techniques::DomainCoord{d[0] - step_u - step_v, d[1] + step_u,
+                                                d[2] + step_v};
               return surface->evaluate(p, moved).position;
             };
-            const Vec3d du = (at(h, 0) - at(-h, 0)) * (0.5 / h);
-            const Vec3d dv = (at(0, h) - at(0, -h)) * (0.5 / h);
-            EXPECT_LE(length(BatchPoints::at(out.du, i) - du), tolerance)
+            const mesh::Vec3d du = (at(h, 0) - at(-h, 0)) * (0.5 / h);
+            const mesh::Vec3d dv = (at(0, h) - at(0, -h)) * (0.5 / h);
+            EXPECT_LE(length(techniques::BatchPoints::at(out.du, i) - du), tolerance)
                 << id << "/" << variant_name << " " << name << " patch " << p;
-            EXPECT_LE(length(BatchPoints::at(out.dv, i) - dv), tolerance)
+            EXPECT_LE(length(techniques::BatchPoints::at(out.dv, i) - dv), tolerance)
                 << id << "/" << variant_name << " " << name << " patch " << p;
           }
         }

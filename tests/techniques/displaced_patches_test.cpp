@@ -24,25 +24,28 @@ namespace {
 
 // A tile atlas for `patches` patches, `resolution` interior texels a side, 1-texel border,
 // texels uniform in [-amplitude, amplitude] (exact halves when `half`).
-std::shared_ptr<DisplacementMap> randomMap(size_t patches, uint32_t resolution, double amplitude,
-                                           DisplacementKind kind, bool half, uint32_t seed) {
-  auto map = std::make_shared<DisplacementMap>();
+std::shared_ptr<displacement::DisplacementMap> randomMap(size_t patches, uint32_t resolution,
+                                                         double amplitude,
+                                                         displacement::DisplacementKind kind,
+                                                         bool half, uint32_t seed) {
+  auto map = std::make_shared<displacement::DisplacementMap>();
   map->kind = kind;
-  map->pixel_type = half ? DisplacementPixelType::kHalf : DisplacementPixelType::kFloat;
-  map->layout = DisplacementLayout::kTiles;
+  map->pixel_type = half ? displacement::DisplacementPixelType::kHalf
+                         : displacement::DisplacementPixelType::kFloat;
+  map->layout = displacement::DisplacementLayout::kTiles;
   const uint32_t tile = resolution + 2;
   const auto per_row = uint32_t(std::ceil(std::sqrt(double(patches))));
   map->tiles = {tile, 1, per_row, uint32_t(patches)};
   map->width = per_row * tile;
   map->height = uint32_t((patches + per_row - 1) / per_row) * tile;
-  map->texels.resize(size_t(map->width) * map->height * channelCount(kind));
+  map->texels.resize(size_t(map->width) * map->height * displacement::channelCount(kind));
   uint64_t state = seed * 2654435761ull + 1;
   for (float& texel : map->texels) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     const double unit = double(state >> 11) / double(1ull << 53);
     texel = float((2 * unit - 1) * amplitude);
   }
-  if (half) roundTexelsToHalf(*map);
+  if (half) displacement::roundTexelsToHalf(*map);
   return map;
 }
 
@@ -61,26 +64,30 @@ const Case kCases[] = {
     {"phong", "alpha0.75", "tessbench/tri_torus.obj"},
 };
 
-BuiltSurface build(const Case& c) {
-  const Technique& technique = *TechniqueRegistry::instance().find(c.technique);
-  VariantInfo variant = technique.variants().front();
-  for (const VariantInfo& v : technique.variants()) {
+techniques::BuiltSurface build(const Case& c) {
+  const techniques::Technique& technique =
+      *techniques::TechniqueRegistry::instance().find(c.technique);
+  techniques::VariantInfo variant = technique.variants().front();
+  for (const techniques::VariantInfo& v : technique.variants()) {
     if (v.name == c.variant) variant = v;
   }
-  return buildSurface(technique, loadObjFile(testing::assetPath(c.asset)), variant);
+  return techniques::buildSurface(technique, mesh::loadObjFile(testing::assetPath(c.asset)),
+                                  variant);
 }
 
-double diagonalOf(const Mesh& mesh) {
-  Vec3d lo = mesh.positions.front(), hi = lo;
-  for (const Vec3d& p : mesh.positions) {
+double diagonalOf(const mesh::Mesh& mesh) {
+  mesh::Vec3d lo = mesh.positions.front(), hi = lo;
+  for (const mesh::Vec3d& p : mesh.positions) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   return length(hi - lo);
 }
 
-CrackFigures cracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
-                    CrackBackend backend, gpu::Context* context, const char* label) {
-  const CrackFigures f = measureCracks(patches, spacing, level, backend, context);
+measures::CrackFigures cracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
+                              float level, measures::CrackBackend backend, gpu::Context* context,
+                              const char* label) {
+  const measures::CrackFigures f =
+      measures::measureCracks(patches, spacing, level, backend, context);
   std::printf("[displaced cracks] %s %s level %.1f %s: points %llu, not bitwise %llu, max gap "
               "%.3g, device differing %llu\n",
               label, std::string(tess::toString(spacing)).c_str(), level, toString(backend),
@@ -91,24 +98,30 @@ CrackFigures cracks(const SurfacePatches& patches, tess::Spacing spacing, float 
 
 TEST(DisplacedPatches, WatertightSamplingIsBitwiseWatertightOnTheCpuTwin) {
   for (const Case& c : kCases) {
-    const BuiltSurface surface = build(c);
+    const techniques::BuiltSurface surface = build(c);
     const double amplitude = 0.02 * diagonalOf(surface->controlMesh());
-    for (DisplacementKind kind : {DisplacementKind::kScalar, DisplacementKind::kVector}) {
+    for (displacement::DisplacementKind kind :
+         {displacement::DisplacementKind::kScalar, displacement::DisplacementKind::kVector}) {
       const auto map = randomMap(surface->patchCount(), 6, amplitude, kind, true, 7);
-      const DisplacedPatches watertight(*surface, map, DisplacementSampling::kWatertight, "random");
-      const DisplacedPatches naive(*surface, map, DisplacementSampling::kNaive, "random");
-      const std::string label = std::string(c.technique) + " " + std::string(kindName(kind));
+      const techniques::DisplacedPatches watertight(
+          *surface, map, techniques::DisplacementSampling::kWatertight, "random");
+      const techniques::DisplacedPatches naive(*surface, map,
+                                               techniques::DisplacementSampling::kNaive, "random");
+      const std::string label =
+          std::string(c.technique) + " " + std::string(displacement::kindName(kind));
       for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd}) {
         for (float level : {1.0f, 5.0f, 7.3f, 16.0f}) {
-          const CrackFigures w = cracks(watertight, spacing, level, CrackBackend::kCpuFloat,
-                                        nullptr, (label + " watertight").c_str());
+          const measures::CrackFigures w =
+              cracks(watertight, spacing, level, measures::CrackBackend::kCpuFloat, nullptr,
+                     (label + " watertight").c_str());
           ASSERT_TRUE(w.measured);
           EXPECT_GT(w.points_compared, 0u);
           EXPECT_EQ(w.unpaired_points, 0u);
           EXPECT_EQ(w.points_not_equal, 0u) << label;
         }
-        const CrackFigures n = cracks(naive, spacing, 7.3f, CrackBackend::kCpuFloat, nullptr,
-                                      (label + " naive").c_str());
+        const measures::CrackFigures n =
+            cracks(naive, spacing, 7.3f, measures::CrackBackend::kCpuFloat, nullptr,
+                   (label + " naive").c_str());
         // Independent tile borders: the two sides read different texels.
         EXPECT_GT(n.points_not_equal, n.points_compared / 4) << label;
         EXPECT_GT(n.max_gap_world, 0.01 * amplitude) << label;
@@ -120,22 +133,26 @@ TEST(DisplacedPatches, WatertightSamplingIsBitwiseWatertightOnTheCpuTwin) {
 TEST(DisplacedPatches, LavapipeCaptureEqualsTheTwinAndStaysWatertight) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const Case& c : kCases) {
-    const BuiltSurface surface = build(c);
+    const techniques::BuiltSurface surface = build(c);
     const double amplitude = 0.02 * diagonalOf(surface->controlMesh());
     for (bool half : {true, false}) {
-      for (DisplacementKind kind : {DisplacementKind::kScalar, DisplacementKind::kVector}) {
+      for (displacement::DisplacementKind kind :
+           {displacement::DisplacementKind::kScalar, displacement::DisplacementKind::kVector}) {
         const auto map = randomMap(surface->patchCount(), 5, amplitude, kind, half, 11);
-        for (DisplacementSampling sampling :
-             {DisplacementSampling::kWatertight, DisplacementSampling::kNaive}) {
-          const DisplacedPatches displaced(*surface, map, sampling, "random");
-          const std::string label = std::string(c.technique) + " " + std::string(kindName(kind)) +
-                                    (half ? " half " : " float ") + samplingName(sampling);
-          const CrackFigures f = cracks(displaced, tess::Spacing::kFractionalEven, 6.6f,
-                                        CrackBackend::kGpu, &context, label.c_str());
+        for (techniques::DisplacementSampling sampling :
+             {techniques::DisplacementSampling::kWatertight,
+              techniques::DisplacementSampling::kNaive}) {
+          const techniques::DisplacedPatches displaced(*surface, map, sampling, "random");
+          const std::string label =
+              std::string(c.technique) + " " + std::string(displacement::kindName(kind)) +
+              (half ? " half " : " float ") + techniques::samplingName(sampling);
+          const measures::CrackFigures f =
+              cracks(displaced, tess::Spacing::kFractionalEven, 6.6f, measures::CrackBackend::kGpu,
+                     &context, label.c_str());
           ASSERT_TRUE(f.measured) << f.skipped_reason;
           EXPECT_GT(f.device_points, 0u);
           EXPECT_EQ(f.device_points_differing, 0u) << label;
-          if (sampling == DisplacementSampling::kWatertight) {
+          if (sampling == techniques::DisplacementSampling::kWatertight) {
             EXPECT_EQ(f.points_not_equal, 0u) << label;
           } else {
             EXPECT_GT(f.points_not_equal, 0u) << label;
@@ -151,31 +168,32 @@ TEST(DisplacedPatches, LavapipeCaptureEqualsTheTwinAndStaysWatertight) {
 // hull's cube corners span exactly, and the bound must not be loose by more than 2 r.
 TEST(DisplacedPatches, CullBoundsContainEveryDisplacedPoint) {
   for (const Case& c : kCases) {
-    const BuiltSurface surface = build(c);
+    const techniques::BuiltSurface surface = build(c);
     const double amplitude = 0.05 * diagonalOf(surface->controlMesh());
-    const auto map = randomMap(surface->patchCount(), 6, amplitude, DisplacementKind::kVector,
-                               false, 3);
-    const DisplacedPatches displaced(*surface, map, DisplacementSampling::kWatertight, "random");
+    const auto map = randomMap(surface->patchCount(), 6, amplitude,
+                               displacement::DisplacementKind::kVector, false, 3);
+    const techniques::DisplacedPatches displaced(
+        *surface, map, techniques::DisplacementSampling::kWatertight, "random");
     for (size_t p = 0; p < displaced.patchCount(); ++p) {
-      const std::optional<PatchCullBounds> bounds = displaced.cullBounds(p);
+      const std::optional<techniques::PatchCullBounds> bounds = displaced.cullBounds(p);
       if (!surface->cullBounds(p)) {
         EXPECT_FALSE(bounds);
         continue;
       }
       ASSERT_TRUE(bounds);
       EXPECT_TRUE(bounds->normal_generators.empty());
-      Vec3d lo = bounds->hull.front(), hi = lo;
-      for (const Vec3d& q : bounds->hull) {
+      mesh::Vec3d lo = bounds->hull.front(), hi = lo;
+      for (const mesh::Vec3d& q : bounds->hull) {
         for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
       }
       for (int i = 0; i <= 8; ++i) {
         for (int j = 0; j <= 8; ++j) {
-          DomainCoord coord{i / 8.0, j / 8.0, 0};
-          if (displaced.patchDomain(p) == PatchDomain::kTriangle) {
+          techniques::DomainCoord coord{i / 8.0, j / 8.0, 0};
+          if (displaced.patchDomain(p) == techniques::PatchDomain::kTriangle) {
             if (i + j > 8) continue;
             coord[2] = 1 - coord[0] - coord[1];
           }
-          const Vec3d q = displaced.evaluate(p, coord).position;
+          const mesh::Vec3d q = displaced.evaluate(p, coord).position;
           for (int k = 0; k < 3; ++k) {
             EXPECT_GE(q[k], lo[k] - 1e-12) << c.technique << " patch " << p;
             EXPECT_LE(q[k], hi[k] + 1e-12) << c.technique << " patch " << p;
@@ -187,12 +205,14 @@ TEST(DisplacedPatches, CullBoundsContainEveryDisplacedPoint) {
 }
 
 TEST(DisplacedPatches, RefusesAMapWithAnotherTileCount) {
-  const BuiltSurface surface = build(kCases[0]);
-  const auto map = randomMap(surface->patchCount() + 1, 4, 0.1, DisplacementKind::kScalar, false, 1);
+  const techniques::BuiltSurface surface = build(kCases[0]);
+  const auto map = randomMap(surface->patchCount() + 1, 4, 0.1,
+                             displacement::DisplacementKind::kScalar, false, 1);
   try {
-    DisplacedPatches displaced(*surface, map, DisplacementSampling::kNaive, "wrong.exr");
+    techniques::DisplacedPatches displaced(*surface, map, techniques::DisplacementSampling::kNaive,
+                                           "wrong.exr");
     FAIL() << "accepted a map of another tile count";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("wrong.exr"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("tiles"), std::string::npos) << error.what();
   }

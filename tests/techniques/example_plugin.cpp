@@ -5,45 +5,52 @@
 
 namespace {
 
-class FlatTechnique final : public tb::Technique {
+class FlatTechnique final : public tb::techniques::Technique {
  public:
-  const tb::TechniqueInfo& info() const override {
-    static const tb::TechniqueInfo kInfo{"example_flat", tb::TechniqueFamily::kSurface,
-                                         "Flat triangles (example plug-in)", "none", "triangles"};
+  const tb::techniques::TechniqueInfo& info() const override {
+    static const tb::techniques::TechniqueInfo kInfo{
+        "example_flat", tb::techniques::TechniqueFamily::kSurface,
+        "Flat triangles (example plug-in)", "none", "triangles"};
     return kInfo;
   }
-  std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
-  std::string checkSupport(const tb::Mesh&) const override { return ""; }
+  std::vector<tb::techniques::VariantInfo> variants() const override {
+    return {{"default", "flat", {}}};
+  }
+  std::string checkSupport(const tb::mesh::Mesh&) const override { return ""; }
   // A technique that throws while building: the suite records the error for its records and
   // completes the others (tests/cli/reliability_test.cpp).
-  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput&,
-                                               const tb::VariantInfo&) const override {
+  std::unique_ptr<tb::techniques::TechniqueInstance> build(
+      const tb::techniques::TechniqueInput&, const tb::techniques::VariantInfo&) const override {
     throw std::runtime_error("example_flat: deliberately fails to build its patches");
   }
 };
 
 // Flat triangles whose GPU program names a shader the plug-in never registered: the GPU
 // parts of each measure fail naming it; the CPU parts are measured.
-class NoShaderPatches final : public tb::SurfacePatches {
+class NoShaderPatches final : public tb::techniques::SurfacePatches {
  public:
-  explicit NoShaderPatches(const tb::Mesh& mesh) : mesh_(mesh) {}
-  tb::PatchDomain patchDomain(size_t) const override { return tb::PatchDomain::kTriangle; }
+  explicit NoShaderPatches(const tb::mesh::Mesh& mesh) : mesh_(mesh) {}
+  tb::techniques::PatchDomain patchDomain(size_t) const override {
+    return tb::techniques::PatchDomain::kTriangle;
+  }
   size_t patchCount() const override { return mesh_.faceCount(); }
-  const tb::Mesh& controlMesh() const override { return mesh_; }
+  const tb::mesh::Mesh& controlMesh() const override { return mesh_; }
   std::array<uint32_t, 4> patchCorners(size_t patch) const override {
     const auto face = mesh_.facePositions(patch);
     return {face[0], face[1], face[2], UINT32_MAX};
   }
   uint32_t sourceFace(size_t patch) const override { return uint32_t(patch); }
-  tb::SurfacePoint evaluate(size_t patch, const tb::DomainCoord& w) const override {
+  tb::techniques::SurfacePoint evaluate(size_t patch,
+                                        const tb::techniques::DomainCoord& w) const override {
     const auto face = mesh_.facePositions(patch);
-    const tb::Vec3d p = mesh_.positions[face[0]] * w[0] + mesh_.positions[face[1]] * w[1] +
-                        mesh_.positions[face[2]] * w[2];
+    const tb::mesh::Vec3d p = mesh_.positions[face[0]] * w[0] + mesh_.positions[face[1]] * w[1] +
+                              mesh_.positions[face[2]] * w[2];
     return {p, {0, 0, 1}};
   }
-  tb::SurfacePointF evaluateFloat(size_t patch, const tb::tess::DomainPoint& w) const override {
+  tb::techniques::SurfacePointF evaluateFloat(size_t patch,
+                                              const tb::tess::DomainPoint& w) const override {
     const auto face = mesh_.facePositions(patch);
-    auto f = [&](int i) { return tb::vecCast<float>(mesh_.positions[face[i]]); };
+    auto f = [&](int i) { return tb::mesh::vecCast<float>(mesh_.positions[face[i]]); };
     return {f(0) * w[0] + f(1) * w[1] + f(2) * w[2], {0, 0, 1}};
   }
   std::vector<tb::gpu::GpuPatchProgram> gpuPrograms() const override {
@@ -54,31 +61,36 @@ class NoShaderPatches final : public tb::SurfacePatches {
     program.patch_count = uint32_t(patchCount());
     return {program};
   }
-  tb::DataFootprint footprint() const override { return {}; }
+  tb::techniques::DataFootprint footprint() const override { return {}; }
   const std::vector<std::string>& warnings() const override { return warnings_; }
 
  private:
-  tb::Mesh mesh_;
+  tb::mesh::Mesh mesh_;
   std::vector<std::string> warnings_;
 };
 
-class NoShaderTechnique final : public tb::Technique {
+class NoShaderTechnique final : public tb::techniques::Technique {
  public:
-  const tb::TechniqueInfo& info() const override {
-    static const tb::TechniqueInfo kInfo{"example_no_shader", tb::TechniqueFamily::kSurface,
-                                         "Flat triangles naming a shader never shipped", "none",
-                                         "triangle meshes"};
+  const tb::techniques::TechniqueInfo& info() const override {
+    static const tb::techniques::TechniqueInfo kInfo{
+        "example_no_shader", tb::techniques::TechniqueFamily::kSurface,
+        "Flat triangles naming a shader never shipped", "none", "triangle meshes"};
     return kInfo;
   }
-  std::vector<tb::VariantInfo> variants() const override { return {{"default", "flat", {}}}; }
-  std::string checkSupport(const tb::Mesh& mesh) const override {
+  std::vector<tb::techniques::VariantInfo> variants() const override {
+    return {{"default", "flat", {}}};
+  }
+  std::string checkSupport(const tb::mesh::Mesh& mesh) const override {
     return mesh.allFacesOfSize(3) ? "" : "example_no_shader: triangles only";
   }
-  std::unique_ptr<tb::TechniqueInstance> build(const tb::TechniqueInput& input,
-                                               const tb::VariantInfo&) const override {
-    const tb::Mesh& mesh = tb::requireMesh(info(), input);
-    if (std::string reason = checkSupport(mesh); !reason.empty()) throw tb::UnsupportedInput(reason);
-    return std::make_unique<tb::SurfaceInstance>(std::make_unique<NoShaderPatches>(mesh));
+  std::unique_ptr<tb::techniques::TechniqueInstance> build(
+      const tb::techniques::TechniqueInput& input,
+      const tb::techniques::VariantInfo&) const override {
+    const tb::mesh::Mesh& mesh = tb::techniques::requireMesh(info(), input);
+    if (std::string reason = checkSupport(mesh); !reason.empty())
+      throw tb::techniques::UnsupportedInput(reason);
+    return std::make_unique<tb::techniques::SurfaceInstance>(
+        std::make_unique<NoShaderPatches>(mesh));
   }
 };
 

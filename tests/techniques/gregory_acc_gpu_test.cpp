@@ -34,7 +34,7 @@ const Case kCases[] = {{1.0f, tess::Spacing::kInteger},
                        {16.0f, tess::Spacing::kInteger}};
 
 // Every program (quads, triangles) of the patches, captures merged.
-gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patches,
+gpu::PatchProgramCapture run(gpu::Context& context, const techniques::SurfacePatches& patches,
                              const Case& c) {
   tess::Levels levels;
   levels.outer = {c.level, c.level, c.level, c.level};
@@ -50,10 +50,10 @@ gpu::PatchProgramCapture run(gpu::Context& context, const SurfacePatches& patche
   return all;
 }
 
-BuiltSurface build(const Mesh& mesh, const std::string& variant) {
+techniques::BuiltSurface build(const mesh::Mesh& mesh, const std::string& variant) {
   GregoryAccTechnique technique;
-  for (const VariantInfo& info : technique.variants()) {
-    if (info.name == variant) return buildSurface(technique, mesh, info);
+  for (const techniques::VariantInfo& info : technique.variants()) {
+    if (info.name == variant) return techniques::buildSurface(technique, mesh, info);
   }
   return nullptr;
 }
@@ -62,7 +62,7 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
     for (const std::string& name : supported()) {
-      const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
+      const mesh::Mesh mesh = mesh::loadObjFile(tb::testing::assetPath(name));
       const auto patches = build(mesh, variant);
       for (const Case& c : kCases) {
         const gpu::PatchProgramCapture capture = run(context, *patches, c);
@@ -70,9 +70,10 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
         uint64_t worst = 0;
         double worst_normal = 0;
         for (const gpu::CapturedVertex& vertex : capture.vertices) {
-          const SurfacePointF expected = patches->evaluateFloat(vertex.patch, vertex.coord);
+          const techniques::SurfacePointF expected =
+              patches->evaluateFloat(vertex.patch, vertex.coord);
           for (int k = 0; k < 3; ++k) {
-            worst = std::max(worst, ulpDistance(vertex.position[k], expected.position[k]));
+            worst = std::max(worst, mesh::ulpDistance(vertex.position[k], expected.position[k]));
           }
           worst_normal = std::max(
               worst_normal,
@@ -91,18 +92,18 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
 TEST(GregoryAccGpu, SharedEdgePointsAreBitwiseEqualInTheCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const std::string& name : supported()) {
-    const Mesh mesh = loadObjFile(tb::testing::assetPath(name));
+    const mesh::Mesh mesh = mesh::loadObjFile(tb::testing::assetPath(name));
     const auto patches = build(mesh, "edge_symmetric");
     const Case c = kCases[1];
     const gpu::PatchProgramCapture capture = run(context, *patches, c);
     // Boundary points keyed by (patch, local edge, edge parameter in 16.16): the crack
     // measure's pairing rule, so quad and triangle sides meet.
     using Key = std::tuple<uint32_t, uint32_t, int64_t>;
-    std::map<Key, Vec3f> by_edge;
+    std::map<Key, mesh::Vec3f> by_edge;
     for (const gpu::CapturedVertex& v : capture.vertices) {
-      const PatchDomain domain = patches->patchDomain(v.patch);
+      const techniques::PatchDomain domain = patches->patchDomain(v.patch);
       for (int corner = 0; corner < testing::cornerCount(domain); ++corner) {
-        const int64_t t = domainEdgeParameter(domain, uint32_t(corner), v.coord);
+        const int64_t t = measures::domainEdgeParameter(domain, uint32_t(corner), v.coord);
         if (t >= 0) by_edge[{v.patch, uint32_t(corner), t}] = v.position;
       }
     }

@@ -25,8 +25,8 @@ struct Point3 {
   }
 };
 
-Vec3d stencilValue(const GregoryStencils& stencils, uint32_t s, const Mesh& mesh) {
-  Vec3d sum{};
+mesh::Vec3d stencilValue(const GregoryStencils& stencils, uint32_t s, const mesh::Mesh& mesh) {
+  mesh::Vec3d sum{};
   for (uint32_t k = stencils.offsets[s]; k < stencils.offsets[s + 1]; ++k) {
     sum = sum + mesh.positions[stencils.indices[k]] * stencils.weights[k];
   }
@@ -39,7 +39,7 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
                            "opensubdiv/catmark_quadstrips.obj",
                            "opensubdiv/catmark_xord_interior.obj",
                            "opensubdiv/catmark_edgecorner.obj"}) {
-    const Mesh mesh = loadObjFile(testing::assetPath(name));
+    const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(name));
     const GregoryStencils stencils = buildGregoryStencils(mesh, TangentMask::kPaper);
     auto refiner = osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
     refiner->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(0));
@@ -72,8 +72,8 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
         for (int i = 0; i < 20; ++i) {
           const Point3& expected =
               cvs[i] < vertex_count ? points[cvs[i]] : local_points[cvs[i] - vertex_count];
-          const Vec3d got = stencilValue(stencils, stencils.patch_points[face][i], mesh);
-          const Vec3d want{expected.p[0], expected.p[1], expected.p[2]};
+          const mesh::Vec3d got = stencilValue(stencils, stencils.patch_points[face][i], mesh);
+          const mesh::Vec3d want{expected.p[0], expected.p[1], expected.p[2]};
           EXPECT_LE(length(got - want), 1e-5 * diagonal)
               << name << " face " << face << " point " << i;
         }

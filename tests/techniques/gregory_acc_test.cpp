@@ -58,11 +58,11 @@ const std::vector<std::string> kSupported = {
     "tessbench/tri_pawn.obj",
     "tessbench/tri_torus.obj"};
 
-Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
+mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
 
-double bboxDiagonal(const Mesh& mesh) {
-  Vec3d lo = mesh.positions[0], hi = lo;
-  for (const Vec3d& p : mesh.positions) {
+double bboxDiagonal(const mesh::Mesh& mesh) {
+  mesh::Vec3d lo = mesh.positions[0], hi = lo;
+  for (const mesh::Vec3d& p : mesh.positions) {
     for (int k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], p[k]);
       hi[k] = std::max(hi[k], p[k]);
@@ -71,10 +71,11 @@ double bboxDiagonal(const Mesh& mesh) {
   return length(hi - lo);
 }
 
-BuiltSurface build(const Mesh& mesh, const std::string& variant = "") {
+techniques::BuiltSurface build(const mesh::Mesh& mesh, const std::string& variant = "") {
   GregoryAccTechnique technique;
-  for (const VariantInfo& info : technique.variants()) {
-    if (variant.empty() || info.name == variant) return buildSurface(technique, mesh, info);
+  for (const techniques::VariantInfo& info : technique.variants()) {
+    if (variant.empty() || info.name == variant)
+      return techniques::buildSurface(technique, mesh, info);
   }
   return nullptr;
 }
@@ -87,16 +88,16 @@ tess::Tessellation quadPoints(float level, tess::Spacing spacing = tess::Spacing
 }
 
 TEST(GregoryAcc, IsRegistered) {
-  EXPECT_NE(TechniqueRegistry::instance().find("gregory_acc"), nullptr);
+  EXPECT_NE(techniques::TechniqueRegistry::instance().find("gregory_acc"), nullptr);
 }
 
 TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
   const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
   size_t regular_faces = 0;
   for (const std::string& name : kSupported) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const auto patches = build(mesh);
-    const Mesh& control = patches->controlMesh();
+    const mesh::Mesh& control = patches->controlMesh();
     // The refined mesh of a mixed input has the same limit; Bfr parameterises its faces.
     const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
     const double diagonal = bboxDiagonal(mesh);
@@ -105,11 +106,11 @@ TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
       if (!limit.hasLimitSurface(f) || !limit.isRegular(f)) continue;
       ++regular_faces;
       for (const tess::DomainPoint& d : domain.points) {
-        const Vec3d expected = limit.evaluate(f, d[0], d[1]).position;
-        const SurfacePoint got = patches->evaluate(f, {d[0], d[1], 0});
+        const mesh::Vec3d expected = limit.evaluate(f, d[0], d[1]).position;
+        const techniques::SurfacePoint got = patches->evaluate(f, {d[0], d[1], 0});
         ASSERT_LE(length(got.position - expected), 1e-12 * diagonal)
             << name << " face " << f << " at " << d[0] << "," << d[1];
-        const SurfacePointF got_f = patches->evaluateFloat(f, d);
+        const techniques::SurfacePointF got_f = patches->evaluateFloat(f, d);
         ASSERT_LE(length(vecCast<double>(got_f.position) - expected), 1e-6 * diagonal)
             << name << " face " << f;
         EXPECT_LE(length(got.normal - limit.evaluate(f, d[0], d[1]).normal), 1e-9);
@@ -124,31 +125,31 @@ using testing::edgeCoord;
 
 TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
   for (const std::string& name : kSupported) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const auto patches = build(mesh, "asymmetric");
-    const Mesh& control = patches->controlMesh();
+    const mesh::Mesh& control = patches->controlMesh();
     const double diagonal = bboxDiagonal(mesh);
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     size_t edges = 0;
     size_t directed_edges = 0;
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      const PatchDomain domain = patches->patchDomain(f);
+      const techniques::PatchDomain domain = patches->patchDomain(f);
       directed_edges += size_t(cornerCount(domain));
       for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];
         if (twin.face < 0) continue;
         ++edges;
-        const PatchDomain other = patches->patchDomain(size_t(twin.face));
+        const techniques::PatchDomain other = patches->patchDomain(size_t(twin.face));
         for (double t : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
-          const Vec3d p = patches->evaluate(f, edgeCoord(domain, c, t)).position;
-          const Vec3d q =
+          const mesh::Vec3d p = patches->evaluate(f, edgeCoord(domain, c, t)).position;
+          const mesh::Vec3d q =
               patches->evaluate(size_t(twin.face), edgeCoord(other, twin.corner, 1 - t)).position;
           ASSERT_LE(length(p - q), 1e-12 * diagonal) << name << " faces " << f << "," << twin.face;
         }
       }
     }
     // Every directed edge but the boundary ones has its twin (oracle: the topology).
-    EXPECT_EQ(edges, directed_edges - buildTopology(control).boundaryEdgeCount()) << name;
+    EXPECT_EQ(edges, directed_edges - mesh::buildTopology(control).boundaryEdgeCount()) << name;
   }
 }
 
@@ -160,18 +161,18 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
   }
   ASSERT_GT(ts.size(), 5u);
   for (const std::string& name : kSupported) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const auto patches = build(mesh, "edge_symmetric");
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      const PatchDomain domain = patches->patchDomain(f);
+      const techniques::PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];
         if (twin.face < 0) continue;
-        const PatchDomain other = patches->patchDomain(size_t(twin.face));
+        const techniques::PatchDomain other = patches->patchDomain(size_t(twin.face));
         for (float t : ts) {
-          const Vec3f p = patches->evaluateFloat(f, edgeCoord(domain, c, t)).position;
-          const Vec3f q =
+          const mesh::Vec3f p = patches->evaluateFloat(f, edgeCoord(domain, c, t)).position;
+          const mesh::Vec3f q =
               patches->evaluateFloat(size_t(twin.face), edgeCoord(other, twin.corner, 1 - t))
                   .position;
           ASSERT_TRUE(p == q) << name << " faces " << f << "," << twin.face << " t " << t;
@@ -184,32 +185,32 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
 TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
   double worst_dart = 0;  // |P - limit| / diagonal at dart vertices
   for (const std::string& name : kSupported) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const auto patches = build(mesh, "exact_tangents");
-    const Mesh& control = patches->controlMesh();
+    const mesh::Mesh& control = patches->controlMesh();
     // The limit the patches approximate: semi-sharp creases left after the face budget
     // are rounded (techniques/common/crease_refinement.h).
-    const CreasePreparation creases = testing::defaultCreases(mesh);
+    const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
     const ref::LimitSurface limit(testing::limitMeshOf(*patches, creases),
                                   osd::Scheme::kCatmullClark);
     const bool kinds_known = creases.control.positions.size() == control.positions.size();
-    const std::vector<uint8_t> on_boundary = buildTopology(control).on_boundary;
+    const std::vector<uint8_t> on_boundary = mesh::buildTopology(control).on_boundary;
     const double diagonal = bboxDiagonal(mesh);
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      const PatchDomain domain = patches->patchDomain(f);
+      const techniques::PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
-        const DomainCoord d = edgeCoord(domain, c, 0.0);
+        const techniques::DomainCoord d = edgeCoord(domain, c, 0.0);
         // Bfr: a Catmull-Clark triangle is 3 quad sub-faces, corner c at (0,0) of sub-face c.
-        const Vec2d uv =
-            domain == PatchDomain::kQuad
-                ? Vec2d{d[0], d[1]}
+        const mesh::Vec2d uv =
+            domain == techniques::PatchDomain::kQuad
+                ? mesh::Vec2d{d[0], d[1]}
                 : ref::subFaceToFaceUv(osd::Scheme::kCatmullClark, 3, c, {0.0, 0.0});
         const ref::LimitPoint exact = limit.evaluate(f, uv.x, uv.y);
         const uint32_t v = control.facePositions(f)[c];
         const double error = length(patches->evaluate(f, d).position - exact.position);
         // A dart (one sharp edge) keeps the smooth rules (Kovacs et al. 2009), whose limit
         // mask is not the dart's: its corner is approximate (measured below).
-        if (kinds_known && creases.vertex_kind[v] == SharpVertexKind::kDart) {
+        if (kinds_known && creases.vertex_kind[v] == techniques::SharpVertexKind::kDart) {
           worst_dart = std::max(worst_dart, error / diagonal);
           continue;
         }
@@ -221,7 +222,7 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
         // Far-compatible mask is off by 1e-2 here, so the bound still separates the two.
         // Sharp vertices (crease, corner, dart) have no exact tangent mask either.
         if (on_boundary[v]) continue;
-        if (kinds_known && creases.vertex_kind[v] != SharpVertexKind::kSmooth) continue;
+        if (kinds_known && creases.vertex_kind[v] != techniques::SharpVertexKind::kSmooth) continue;
         EXPECT_LE(length(patches->evaluate(f, d).normal - exact.normal), 1e-5)
             << name << " face " << f << " corner " << c << " vertex "
             << control.facePositions(f)[c];
@@ -235,12 +236,12 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
 
 std::string rejection(const std::string& obj) {
   GregoryAccTechnique technique;
-  const Mesh mesh = loadObjText(obj, "test.obj");
+  const mesh::Mesh mesh = mesh::loadObjText(obj, "test.obj");
   const std::string reason = technique.checkSupport(mesh);
   try {
-    buildSurface(technique, mesh, technique.variants().front());
+    techniques::buildSurface(technique, mesh, technique.variants().front());
     ADD_FAILURE() << "expected UnsupportedInput for " << reason;
-  } catch (const UnsupportedInput& error) {
+  } catch (const techniques::UnsupportedInput& error) {
     EXPECT_EQ(reason, error.what());
   }
   return reason;
@@ -329,12 +330,13 @@ TEST(GregoryAccRejects, BoundaryVertexWithTooManyFaces) {
 }
 
 TEST(GregoryAccRejects, NoFaces) {
-  Mesh mesh;
+  mesh::Mesh mesh;
   mesh.source = "empty.obj";
   mesh.positions.push_back({0, 0, 0});
   GregoryAccTechnique technique;
   EXPECT_EQ(technique.checkSupport(mesh), "gregory_acc: empty.obj: has no faces");
-  EXPECT_THROW(buildSurface(technique, mesh, technique.variants().front()), UnsupportedInput);
+  EXPECT_THROW(techniques::buildSurface(technique, mesh, technique.variants().front()),
+               techniques::UnsupportedInput);
 }
 
 TEST(GregoryAcc, SupportsExactlyTheManifoldAssetsWithoutSmoothTrianglesOrValenceTwo) {
@@ -356,9 +358,9 @@ TEST(GregoryAcc, SupportsExactlyTheManifoldAssetsWithoutSmoothTrianglesOrValence
 }
 
 TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
-  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const mesh::Mesh mesh = load("opensubdiv/catmark_cube.obj");
   const auto patches = build(mesh);
-  const DataFootprint footprint = patches->footprint();
+  const techniques::DataFootprint footprint = patches->footprint();
   EXPECT_EQ(footprint.control_mesh_bytes, 8u * 16u);
   EXPECT_EQ(footprint.patch_data_bytes, 6u * 20u * 4u);
   // 8 vertex stencils + 24 directed-edge stencils + 6 * 8 face stencils.
@@ -387,19 +389,20 @@ namespace {
 // derivative of the rational face-point blend, which regular faces do not exercise).
 TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
   for (const std::string& name : kSupported) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const auto patches = build(mesh, "asymmetric");
     const double h = 1e-6;
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      if (patches->patchDomain(f) == PatchDomain::kTriangle) {
+      if (patches->patchDomain(f) == techniques::PatchDomain::kTriangle) {
         // Barycentric: tangents toward corner 1 and corner 2, normal (S_1 - S_0) x (S_2 - S_0).
-        for (const DomainCoord& b : {DomainCoord{0.2, 0.3, 0.5}, DomainCoord{0.7, 0.1, 0.2},
-                                     DomainCoord{0.05, 0.9, 0.05}, DomainCoord{0.45, 0.1, 0.45}}) {
+        for (const techniques::DomainCoord& b :
+             {techniques::DomainCoord{0.2, 0.3, 0.5}, techniques::DomainCoord{0.7, 0.1, 0.2},
+              techniques::DomainCoord{0.05, 0.9, 0.05}, techniques::DomainCoord{0.45, 0.1, 0.45}}) {
           auto p = [&](double db, double dc) {
             return patches->evaluate(f, {b[0] - db - dc, b[1] + db, b[2] + dc}).position;
           };
-          const Vec3d da = (p(h, 0) - p(-h, 0)) * (0.5 / h);
-          const Vec3d dc = (p(0, h) - p(0, -h)) * (0.5 / h);
+          const mesh::Vec3d da = (p(h, 0) - p(-h, 0)) * (0.5 / h);
+          const mesh::Vec3d dc = (p(0, h) - p(0, -h)) * (0.5 / h);
           EXPECT_LE(length(patches->evaluate(f, b).normal - normalize(cross(da, dc))), 1e-6)
               << name << " triangle " << f << " at " << b[0] << "," << b[1] << "," << b[2];
         }
@@ -408,9 +411,9 @@ TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
       for (double u : {0.1, 0.37, 0.5, 0.81}) {
         for (double v : {0.05, 0.44, 0.9}) {
           auto p = [&](double a, double b) { return patches->evaluate(f, {a, b, 0}).position; };
-          const Vec3d du = (p(u + h, v) - p(u - h, v)) * (0.5 / h);
-          const Vec3d dv = (p(u, v + h) - p(u, v - h)) * (0.5 / h);
-          const Vec3d expected = normalize(cross(du, dv));
+          const mesh::Vec3d du = (p(u + h, v) - p(u - h, v)) * (0.5 / h);
+          const mesh::Vec3d dv = (p(u, v + h) - p(u, v - h)) * (0.5 / h);
+          const mesh::Vec3d expected = normalize(cross(du, dv));
           EXPECT_LE(length(patches->evaluate(f, {u, v, 0}).normal - expected), 1e-6)
               << name << " face " << f << " at " << u << "," << v;
         }
@@ -439,10 +442,10 @@ namespace {
 //   edge_symmetric: v == 0, u == 1, v == 1, u == 0   4 cmp
 // Set-up: every stencil entry is one vec3 multiply-add: 3 mul + 3 add.
 TEST(GregoryAcc, OperationCountsMatchAHandCount) {
-  const Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const mesh::Mesh mesh = load("opensubdiv/catmark_cube.obj");
   for (const char* variant : {"asymmetric", "edge_symmetric"}) {
     const auto patches = build(mesh, variant);
-    const std::optional<OperationProfile> profile = patches->operationProfile(2);
+    const std::optional<techniques::OperationProfile> profile = patches->operationProfile(2);
     ASSERT_TRUE(profile.has_value());
     EXPECT_EQ(profile->per_vertex.add, 205u);
     EXPECT_EQ(profile->per_vertex.mul, 304u);
@@ -466,18 +469,18 @@ namespace {
 
 // Oracle: the OBJ's own face sizes (catmark_pyramid: 1 quad, 4 triangles).
 TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
-  const Mesh pyramid = load("opensubdiv/catmark_pyramid.obj");
+  const mesh::Mesh pyramid = load("opensubdiv/catmark_pyramid.obj");
   const auto patches = build(pyramid, "edge_symmetric");
   ASSERT_EQ(patches->patchCount(), pyramid.faceCount());
   size_t triangles = 0;
   for (size_t p = 0; p < patches->patchCount(); ++p) {
-    EXPECT_EQ(patches->patchDomain(p), pyramid.faceSize(p) == 3 ? PatchDomain::kTriangle
-                                                                : PatchDomain::kQuad);
+    EXPECT_EQ(patches->patchDomain(p), pyramid.faceSize(p) == 3 ? techniques::PatchDomain::kTriangle
+                                                                : techniques::PatchDomain::kQuad);
     EXPECT_EQ(patches->sourceFace(p), p);
-    triangles += patches->patchDomain(p) == PatchDomain::kTriangle;
+    triangles += patches->patchDomain(p) == techniques::PatchDomain::kTriangle;
   }
   EXPECT_EQ(triangles, 4u);
-  EXPECT_EQ(patches->approximates(), LimitScheme::kCatmullClark);
+  EXPECT_EQ(patches->approximates(), techniques::LimitScheme::kCatmullClark);
   const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
   ASSERT_EQ(programs.size(), 2u);
   EXPECT_EQ(programs[0].domain, tess::Domain::kQuad);
@@ -495,7 +498,7 @@ TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
   // 7 quads, 1 pentagon, 2 hexagons -> 21 + 28 + 5 + 12 quads).
   const auto nonquads = build(load("opensubdiv/catmark_nonquads.obj"), "edge_symmetric");
   EXPECT_EQ(nonquads->patchCount(), 66u);
-  EXPECT_EQ(nonquads->patchDomain(0), PatchDomain::kQuad);
+  EXPECT_EQ(nonquads->patchDomain(0), techniques::PatchDomain::kQuad);
 }
 
 // Triangle patches on Catmull-Clark triangles, graded by the error measure against the
@@ -508,13 +511,13 @@ TEST(GregoryAcc, TrianglePatchesStayCloseToTheCatmullClarkLimit) {
   for (const char* asset : {"opensubdiv/catmark_pyramid.obj", "opensubdiv/loop_cube.obj",
                             "opensubdiv/loop_icosahedron.obj", "tessbench/tri_torus.obj"}) {
     SCOPED_TRACE(asset);
-    const Mesh mesh = load(asset);
+    const mesh::Mesh mesh = load(asset);
     const auto patches = build(mesh, "edge_symmetric");
     const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
-    const SurfaceErrorFigures f = measureSurfaceError(*patches, limit);
+    const measures::SurfaceErrorFigures f = measures::measureSurfaceError(*patches, limit);
     size_t triangles = 0;
     for (size_t p = 0; p < patches->patchCount(); ++p) {
-      triangles += patches->patchDomain(p) == PatchDomain::kTriangle;
+      triangles += patches->patchDomain(p) == techniques::PatchDomain::kTriangle;
     }
     EXPECT_GT(triangles, 0u);
     EXPECT_EQ(f.patches_through_sub_faces, triangles);
@@ -534,20 +537,20 @@ TEST(GregoryAcc, NormalsAgreeAcrossSharedEdgesOfQuadsAndTriangles) {
   for (const char* asset :
        {"opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_cube.obj", "opensubdiv/loop_cube.obj",
         "tessbench/tri_torus.obj", "opensubdiv/catmark_xord_interior.obj"}) {
-    const Mesh mesh = load(asset);
+    const mesh::Mesh mesh = load(asset);
     const auto patches = build(mesh, "edge_symmetric");
-    const Mesh& control = patches->controlMesh();
+    const mesh::Mesh& control = patches->controlMesh();
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     double worst_deg = 0;
     for (size_t f = 0; f < patches->patchCount(); ++f) {
-      const PatchDomain domain = patches->patchDomain(f);
+      const techniques::PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
         const testing::EdgeTwin twin = twins[f * 4 + c];
         if (twin.face < 0) continue;
-        const PatchDomain other = patches->patchDomain(size_t(twin.face));
+        const techniques::PatchDomain other = patches->patchDomain(size_t(twin.face));
         for (double t : {0.125, 0.3, 0.5, 0.77}) {
-          const Vec3d n = patches->evaluate(f, edgeCoord(domain, c, t)).normal;
-          const Vec3d m =
+          const mesh::Vec3d n = patches->evaluate(f, edgeCoord(domain, c, t)).normal;
+          const mesh::Vec3d m =
               patches->evaluate(size_t(twin.face), edgeCoord(other, twin.corner, 1 - t)).normal;
           const double cos_angle = std::clamp(dot(n, m) / (length(n) * length(m)), -1.0, 1.0);
           worst_deg = std::max(worst_deg, std::acos(cos_angle) * 180 / M_PI);

@@ -28,7 +28,7 @@ inline std::vector<std::string> supportedBundledAssets() {
          std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
       if (entry.path().extension() != ".obj") continue;
       const std::string name = std::string(folder) + "/" + entry.path().filename().string();
-      if (technique.checkSupport(loadObjFile(tb::testing::assetPath(name))).empty()) {
+      if (technique.checkSupport(mesh::loadObjFile(tb::testing::assetPath(name))).empty()) {
         names.push_back(name);
       }
     }
@@ -44,7 +44,7 @@ struct EdgeTwin {
 
 // twins[f * 4 + c]: the patch edge sharing edge (c, c + 1) of patch f (a quad or a
 // triangle: patch f is face f of the control mesh).
-inline std::vector<EdgeTwin> edgeTwins(const Mesh& mesh) {
+inline std::vector<EdgeTwin> edgeTwins(const mesh::Mesh& mesh) {
   std::unordered_map<uint64_t, EdgeTwin> by_directed;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     const auto fv = mesh.facePositions(f);
@@ -63,13 +63,15 @@ inline std::vector<EdgeTwin> edgeTwins(const Mesh& mesh) {
   return twins;
 }
 
-inline int cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
+inline int cornerCount(techniques::PatchDomain domain) {
+  return domain == techniques::PatchDomain::kQuad ? 4 : 3;
+}
 
 // The domain point of patch edge (corner, corner + 1) at parameter t from `corner`:
 // quads (u, v, 0) with corners (0,0), (1,0), (1,1), (0,1); triangles barycentric.
 template <class T>
-std::array<T, 3> edgeCoord(PatchDomain domain, int corner, T t) {
-  if (domain == PatchDomain::kTriangle) {
+std::array<T, 3> edgeCoord(techniques::PatchDomain domain, int corner, T t) {
+  if (domain == techniques::PatchDomain::kTriangle) {
     std::array<T, 3> p{T(0), T(0), T(0)};
     p[corner] = T(1) - t;
     p[(corner + 1) % 3] = t;
@@ -85,25 +87,27 @@ std::array<T, 3> edgeCoord(PatchDomain domain, int corner, T t) {
 
 // The crease preparation gregory_acc builds on for `input` with the default face budget
 // (the same call gregory_acc makes for a mesh it does not refine for non-quads).
-inline CreasePreparation defaultCreases(const Mesh& input) {
-  return prepareCreases(input, "gregory_acc", kDefaultCreaseFaceBudget);
+inline techniques::CreasePreparation defaultCreases(const mesh::Mesh& input) {
+  return techniques::prepareCreases(input, "gregory_acc", techniques::kDefaultCreaseFaceBudget);
 }
 
 // The mesh whose limit surface the patches approximate: the patches' control mesh with
 // its true remaining tags when the crease preparation rounded nothing (then its limit is
 // the input's), else with the tags the patches honour: every sharp edge and every corner
 // infinitely sharp, leftover finite sharpness gone.
-inline Mesh limitMeshOf(const SurfacePatches& patches, const CreasePreparation& creases) {
-  const Mesh& control = patches.controlMesh();
+inline mesh::Mesh limitMeshOf(const techniques::SurfacePatches& patches,
+                              const techniques::CreasePreparation& creases) {
+  const mesh::Mesh& control = patches.controlMesh();
   if (creases.rounded_sharpness == 0) return control;
-  Mesh mesh = control;
+  mesh::Mesh mesh = control;
   mesh.tags.creases.clear();
   mesh.tags.corners.clear();
   for (uint64_t key : creases.sharp_edges) {
     mesh.tags.creases.push_back({uint32_t(key >> 32), uint32_t(key & 0xffffffffu), 10.0});
   }
   for (size_t v = 0; v < creases.vertex_kind.size(); ++v) {
-    if (creases.vertex_kind[v] == SharpVertexKind::kCorner) mesh.tags.corners.push_back({uint32_t(v), 10.0});
+    if (creases.vertex_kind[v] == techniques::SharpVertexKind::kCorner)
+      mesh.tags.corners.push_back({uint32_t(v), 10.0});
   }
   return mesh;
 }

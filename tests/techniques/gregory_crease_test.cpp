@@ -38,23 +38,25 @@ const std::vector<std::string> kCreasedAssets = {
 // The variants whose shared edges are evaluated symmetrically (bitwise watertight).
 const char* const kSymmetricVariants[] = {"edge_symmetric", "exact_tangents", "quads_only"};
 
-Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
+mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
 
-double bboxDiagonal(const Mesh& mesh) { return diagonalOf(boundsOf(mesh)); }
+double bboxDiagonal(const mesh::Mesh& mesh) { return mesh::diagonalOf(mesh::boundsOf(mesh)); }
 
-VariantInfo variantNamed(const std::string& name) {
-  for (const VariantInfo& info : GregoryAccTechnique().variants()) {
+techniques::VariantInfo variantNamed(const std::string& name) {
+  for (const techniques::VariantInfo& info : GregoryAccTechnique().variants()) {
     if (info.name == name) return info;
   }
   throw std::runtime_error("no variant " + name);
 }
 
-BuiltSurface build(const Mesh& mesh, const std::string& variant = "edge_symmetric") {
-  return buildSurface(GregoryAccTechnique(), mesh, variantNamed(variant));
+techniques::BuiltSurface build(const mesh::Mesh& mesh,
+                               const std::string& variant = "edge_symmetric") {
+  return techniques::buildSurface(GregoryAccTechnique(), mesh, variantNamed(variant));
 }
 
-bool creaseOrCorner(SharpVertexKind kind) {
-  return kind == SharpVertexKind::kCrease || kind == SharpVertexKind::kCorner;
+bool creaseOrCorner(techniques::SharpVertexKind kind) {
+  return kind == techniques::SharpVertexKind::kCrease ||
+         kind == techniques::SharpVertexKind::kCorner;
 }
 
 // An n x n grid of quads over a curved height field, with `tags` appended.
@@ -93,14 +95,15 @@ struct CurveFigures {
 // Along every sharp edge of the control mesh whose ends are crease or corner vertices,
 // from each patch on it: the patch's boundary curve against Bfr over `limit_mesh`, whose
 // faces are the control mesh's (quads: the same (u, v)).
-CurveFigures creaseCurveError(const SurfacePatches& patches, const CreasePreparation& creases,
-                              const Mesh& limit_mesh, double diagonal) {
-  const Mesh& control = patches.controlMesh();
+CurveFigures creaseCurveError(const techniques::SurfacePatches& patches,
+                              const techniques::CreasePreparation& creases,
+                              const mesh::Mesh& limit_mesh, double diagonal) {
+  const mesh::Mesh& control = patches.controlMesh();
   EXPECT_EQ(control.positions.size(), creases.control.positions.size());
   const ref::LimitSurface limit(limit_mesh, osd::Scheme::kCatmullClark);
   CurveFigures figures;
   for (size_t f = 0; f < patches.patchCount(); ++f) {
-    EXPECT_EQ(patches.patchDomain(f), PatchDomain::kQuad);
+    EXPECT_EQ(patches.patchDomain(f), techniques::PatchDomain::kQuad);
     const auto fv = control.facePositions(f);
     for (int c = 0; c < 4; ++c) {
       const uint32_t a = fv[c], b = fv[(c + 1) % 4];
@@ -110,8 +113,8 @@ CurveFigures creaseCurveError(const SurfacePatches& patches, const CreasePrepara
       }
       ++figures.sides;
       for (double t : {0.0, 0.1, 0.25, 0.4, 0.5, 0.66, 0.9, 1.0}) {
-        const DomainCoord d = testing::edgeCoord(PatchDomain::kQuad, c, t);
-        const Vec3d exact = limit.evaluate(f, d[0], d[1]).position;
+        const techniques::DomainCoord d = testing::edgeCoord(techniques::PatchDomain::kQuad, c, t);
+        const mesh::Vec3d exact = limit.evaluate(f, d[0], d[1]).position;
         figures.worst =
             std::max(figures.worst, length(patches.evaluate(f, d).position - exact) / diagonal);
       }
@@ -123,15 +126,15 @@ CurveFigures creaseCurveError(const SurfacePatches& patches, const CreasePrepara
 TEST(GregoryCrease, EveryBundledCreasedCatmarkAssetIsAccepted) {
   GregoryAccTechnique technique;
   for (const std::string& name : kCreasedAssets) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     EXPECT_EQ(technique.checkSupport(mesh), "") << name;
-    for (const VariantInfo& variant : technique.variants()) {
-      const auto patches = buildSurface(technique, mesh, variant);
+    for (const techniques::VariantInfo& variant : technique.variants()) {
+      const auto patches = techniques::buildSurface(technique, mesh, variant);
       EXPECT_GT(patches->patchCount(), 0u) << name << " " << variant.name;
     }
-    const CreasePreparation creases = testing::defaultCreases(mesh);
+    const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
     size_t kinds[5] = {};
-    for (SharpVertexKind kind : creases.vertex_kind) ++kinds[int(kind)];
+    for (techniques::SharpVertexKind kind : creases.vertex_kind) ++kinds[int(kind)];
     std::printf("[gregory creases] %-40s %4zu patches, %d of %d levels, %3zu sharp edges, "
                 "rounded %.3g; vertices: %zu crease, %zu corner, %zu dart\n",
                 name.c_str(), build(mesh)->patchCount(), creases.levels, creases.levels_needed,
@@ -145,14 +148,14 @@ TEST(GregoryCrease, EveryBundledCreasedCatmarkAssetIsAccepted) {
 // exactly, whatever the faces on either side.
 TEST(GregoryCrease, CreaseCurvesEqualTheBfrLimit) {
   size_t checked = 0;
-  const auto check = [&](const std::string& name, const Mesh& mesh) {
-    const CreasePreparation creases = testing::defaultCreases(mesh);
+  const auto check = [&](const std::string& name, const mesh::Mesh& mesh) {
+    const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
     const double diagonal = bboxDiagonal(mesh);
     for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
       const auto patches = build(mesh, variant);
       // The limit the patches approximate: the control mesh itself, or with the leftover
       // semi-sharp creases rounded as the patches round them.
-      const Mesh limit_mesh = testing::limitMeshOf(*patches, creases);
+      const mesh::Mesh limit_mesh = testing::limitMeshOf(*patches, creases);
       const CurveFigures figures = creaseCurveError(*patches, creases, limit_mesh, diagonal);
       std::printf("[gregory crease curves] %-40s %-14s %4zu edge sides: max |patch - limit| / "
                   "diagonal %.2e (limit over the %s control mesh)\n",
@@ -163,21 +166,24 @@ TEST(GregoryCrease, CreaseCurvesEqualTheBfrLimit) {
     }
   };
   for (const std::string& name : kCreasedAssets) check(name, load(name));
-  check("cube with an infinitely sharp crease loop", loadObjText(std::string(kCube) + kCubeCreaseLoop, "crease_loop.obj"));
-  check("grid, edge-only boundary", loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "edge_only.obj"));
+  check("cube with an infinitely sharp crease loop",
+        mesh::loadObjText(std::string(kCube) + kCubeCreaseLoop, "crease_loop.obj"));
+  check("grid, edge-only boundary",
+        mesh::loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "edge_only.obj"));
   EXPECT_GT(checked, 500u);
 }
 
 // The same limit with nothing rounded: the crease loop cube against Bfr over the control
 // mesh as it is, and a corner patch (vertex 0, three sharp edges) interpolates its vertex.
 TEST(GregoryCrease, InfinitelySharpCreasesNeedNoRounding) {
-  const Mesh mesh = loadObjText(std::string(kCube) + kCubeCreaseLoop, "crease_loop.obj");
-  const CreasePreparation creases = testing::defaultCreases(mesh);
+  const mesh::Mesh mesh =
+      mesh::loadObjText(std::string(kCube) + kCubeCreaseLoop, "crease_loop.obj");
+  const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
   EXPECT_EQ(creases.levels, 0);
   EXPECT_EQ(creases.rounded_sharpness, 0.0);
-  EXPECT_EQ(creases.vertex_kind[0], SharpVertexKind::kCorner);
-  EXPECT_EQ(creases.vertex_kind[1], SharpVertexKind::kCrease);
-  EXPECT_EQ(creases.vertex_kind[6], SharpVertexKind::kDart);
+  EXPECT_EQ(creases.vertex_kind[0], techniques::SharpVertexKind::kCorner);
+  EXPECT_EQ(creases.vertex_kind[1], techniques::SharpVertexKind::kCrease);
+  EXPECT_EQ(creases.vertex_kind[6], techniques::SharpVertexKind::kDart);
   const auto patches = build(mesh);
   const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
   const CurveFigures figures = creaseCurveError(*patches, creases, patches->controlMesh(), 1.0);
@@ -193,9 +199,9 @@ TEST(GregoryCrease, InfinitelySharpCreasesNeedNoRounding) {
 TEST(GregoryCrease, BothSidesOfASharpEdgeShareItsPointStencils) {
   size_t total = 0;
   for (const std::string& name : kCreasedAssets) {
-    const Mesh mesh = load(name);
+    const mesh::Mesh mesh = load(name);
     const GregoryBuild built = buildGregory(mesh);
-    const CreasePreparation& creases = built.creases;
+    const techniques::CreasePreparation& creases = built.creases;
     ASSERT_FALSE(built.refined) << name;
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(built.control);
     size_t shared = 0;
@@ -237,24 +243,25 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
   for (const char* variant : kSymmetricVariants) {
     size_t pairs = 0, unequal = 0;
     for (const std::string& name : kCreasedAssets) {
-      const Mesh mesh = load(name);
+      const mesh::Mesh mesh = load(name);
       const auto patches = build(mesh, variant);
-      const CreasePreparation creases = testing::defaultCreases(mesh);
-      const Mesh& control = patches->controlMesh();
+      const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
+      const mesh::Mesh& control = patches->controlMesh();
       const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
       for (size_t f = 0; f < patches->patchCount(); ++f) {
         const auto fv = control.facePositions(f);
-        const PatchDomain domain = patches->patchDomain(f);
+        const techniques::PatchDomain domain = patches->patchDomain(f);
         for (int c = 0; c < testing::cornerCount(domain); ++c) {
           const testing::EdgeTwin twin = twins[f * 4 + c];
           if (twin.face < 0 || !creases.isSharp(fv[c], fv[(c + 1) % fv.size()])) continue;
-          const PatchDomain other = patches->patchDomain(size_t(twin.face));
+          const techniques::PatchDomain other = patches->patchDomain(size_t(twin.face));
           for (float t : ts) {
-            const Vec3f p = patches->evaluateFloat(f, testing::edgeCoord(domain, c, t)).position;
-            const Vec3f q = patches
-                                ->evaluateFloat(size_t(twin.face),
-                                                testing::edgeCoord(other, twin.corner, 1 - t))
-                                .position;
+            const mesh::Vec3f p =
+                patches->evaluateFloat(f, testing::edgeCoord(domain, c, t)).position;
+            const mesh::Vec3f q = patches
+                                      ->evaluateFloat(size_t(twin.face),
+                                                      testing::edgeCoord(other, twin.corner, 1 - t))
+                                      .position;
             ++pairs;
             unequal += !(p == q);
           }
@@ -275,19 +282,24 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
 // capture, and the capture against evaluateFloat.
 TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  std::vector<std::pair<std::string, Mesh>> meshes;
+  std::vector<std::pair<std::string, mesh::Mesh>> meshes;
   for (const std::string& name : kCreasedAssets) meshes.emplace_back(name, load(name));
-  meshes.emplace_back("holed cube", loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj"));
-  meshes.emplace_back("crease loop cube", loadObjText(std::string(kCube) + kCubeCreaseLoop, "loop.obj"));
-  meshes.emplace_back("edge-only grid", loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "eo.obj"));
-  meshes.emplace_back("none grid", loadObjText(grid(4, "t interpolateboundary 1/0/0 0\n"), "none.obj"));
+  meshes.emplace_back("holed cube",
+                      mesh::loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj"));
+  meshes.emplace_back("crease loop cube",
+                      mesh::loadObjText(std::string(kCube) + kCubeCreaseLoop, "loop.obj"));
+  meshes.emplace_back("edge-only grid",
+                      mesh::loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "eo.obj"));
+  meshes.emplace_back("none grid",
+                      mesh::loadObjText(grid(4, "t interpolateboundary 1/0/0 0\n"), "none.obj"));
   for (const char* variant : kSymmetricVariants) {
     uint64_t pairs = 0, unequal = 0, device_ulp = 0;
     for (const auto& [name, mesh] : meshes) {
       const auto patches = build(mesh, variant);
       for (const auto& [level, spacing] : {std::pair{7.3f, tess::Spacing::kFractionalOdd},
                                            std::pair{16.0f, tess::Spacing::kInteger}}) {
-        const CrackFigures f = measureCracks(*patches, spacing, level, CrackBackend::kGpu, &context);
+        const measures::CrackFigures f = measures::measureCracks(
+            *patches, spacing, level, measures::CrackBackend::kGpu, &context);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
         EXPECT_EQ(f.points_not_equal, 0u) << name << " " << variant << " level " << level;
         EXPECT_EQ(f.unpaired_points, 0u) << name;
@@ -307,8 +319,8 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCapture) {
 // A hole gets no patch; the other faces' patches are those of the mesh without the tag
 // (the rings still include the hole's face).
 TEST(GregoryCrease, HoleFacesGetNoPatchButShapeTheirNeighbours) {
-  const Mesh whole = loadObjText(kCube, "cube.obj");
-  const Mesh holed = loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj");
+  const mesh::Mesh whole = mesh::loadObjText(kCube, "cube.obj");
+  const mesh::Mesh holed = mesh::loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj");
   EXPECT_EQ(GregoryAccTechnique().checkSupport(holed), "");
   const auto with_hole = build(holed);
   const auto without = build(whole);
@@ -317,8 +329,9 @@ TEST(GregoryCrease, HoleFacesGetNoPatchButShapeTheirNeighbours) {
   const std::vector<uint32_t> sources = {0, 1, 3, 4, 5};
   for (size_t p = 0; p < 5; ++p) {
     EXPECT_EQ(with_hole->sourceFace(p), sources[p]);
-    for (const DomainCoord& d : {DomainCoord{0, 0, 0}, DomainCoord{0.3, 0.8, 0},
-                                 DomainCoord{1, 0.45, 0}, DomainCoord{0.5, 0.5, 0}}) {
+    for (const techniques::DomainCoord& d :
+         {techniques::DomainCoord{0, 0, 0}, techniques::DomainCoord{0.3, 0.8, 0},
+          techniques::DomainCoord{1, 0.45, 0}, techniques::DomainCoord{0.5, 0.5, 0}}) {
       // The rings start at other faces (the hole moved last): rounding differs, 1 ulp.
       EXPECT_LE(length(with_hole->evaluate(p, d).position - without->evaluate(sources[p], d).position),
                 1e-15);
@@ -333,7 +346,7 @@ TEST(GregoryCrease, HoleFacesGetNoPatchButShapeTheirNeighbours) {
 // Boundary interpolation none: the faces at the boundary have no limit surface (holes);
 // the middle face of a 3 x 3 grid is a regular B-spline patch, which gregory_acc is.
 TEST(GregoryCrease, BoundaryInterpolationNoneKeepsOnlyTheInteriorFace) {
-  const Mesh mesh = loadObjText(grid(3, "t interpolateboundary 1/0/0 0\n"), "none.obj");
+  const mesh::Mesh mesh = mesh::loadObjText(grid(3, "t interpolateboundary 1/0/0 0\n"), "none.obj");
   const auto patches = build(mesh);
   ASSERT_EQ(patches->patchCount(), 1u);
   EXPECT_EQ(patches->sourceFace(0), 4u);
@@ -350,10 +363,14 @@ TEST(GregoryCrease, BoundaryInterpolationNoneKeepsOnlyTheInteriorFace) {
 // Edge-only: a one-face boundary vertex is a crease vertex, not a corner: the boundary
 // curve does not pass through the grid's corner vertex (edge-and-corner's does).
 TEST(GregoryCrease, EdgeOnlyBoundaryCornersAreCreaseVertices) {
-  const Mesh edge_only = loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "edge_only.obj");
-  const Mesh edge_and_corner = loadObjText(grid(3, "t interpolateboundary 1/0/0 1\n"), "eac.obj");
-  EXPECT_EQ(testing::defaultCreases(edge_only).vertex_kind[0], SharpVertexKind::kCrease);
-  EXPECT_EQ(testing::defaultCreases(edge_and_corner).vertex_kind[0], SharpVertexKind::kCorner);
+  const mesh::Mesh edge_only =
+      mesh::loadObjText(grid(3, "t interpolateboundary 1/0/0 2\n"), "edge_only.obj");
+  const mesh::Mesh edge_and_corner =
+      mesh::loadObjText(grid(3, "t interpolateboundary 1/0/0 1\n"), "eac.obj");
+  EXPECT_EQ(testing::defaultCreases(edge_only).vertex_kind[0],
+            techniques::SharpVertexKind::kCrease);
+  EXPECT_EQ(testing::defaultCreases(edge_and_corner).vertex_kind[0],
+            techniques::SharpVertexKind::kCorner);
   const auto a = build(edge_only), b = build(edge_and_corner);
   ASSERT_EQ(a->patchCount(), 9u);
   EXPECT_EQ(b->evaluate(0, {0, 0, 0}).position, edge_and_corner.positions[0]);
@@ -363,7 +380,8 @@ TEST(GregoryCrease, EdgeOnlyBoundaryCornersAreCreaseVertices) {
 }
 
 TEST(GregoryCrease, ConePointsAreRefusedWithTheirVertex) {
-  const Mesh mesh = loadObjText(std::string(kCube) + "t corner 1/1/0 3 10\n", "cone.obj");
+  const mesh::Mesh mesh =
+      mesh::loadObjText(std::string(kCube) + "t corner 1/1/0 3 10\n", "cone.obj");
   const std::string expected =
       "gregory_acc: cone.obj: vertex 3 (1, 1, 1) is an infinitely sharp corner with fewer than "
       "two sharp edges (a cone point); Gregory patches cannot represent it";
@@ -371,7 +389,7 @@ TEST(GregoryCrease, ConePointsAreRefusedWithTheirVertex) {
   try {
     build(mesh);
     ADD_FAILURE() << "expected UnsupportedInput";
-  } catch (const UnsupportedInput& error) {
+  } catch (const techniques::UnsupportedInput& error) {
     EXPECT_EQ(std::string(error.what()), expected);
   }
 }
@@ -398,12 +416,12 @@ TEST(GregoryCrease, NGonsNextToCreasesAreRefinedByOpenSubdiv) {
   for (int i = 0; i < 5; ++i) {
     obj += "t crease 2/1/0 " + std::to_string(5 + i) + " " + std::to_string(5 + (i + 1) % 5) + " 10\n";
   }
-  const Mesh mesh = loadObjText(obj, "prism.obj");
+  const mesh::Mesh mesh = mesh::loadObjText(obj, "prism.obj");
   for (const char* variant : {"edge_symmetric", "quads_only"}) {
     const auto patches = build(mesh, variant);
     EXPECT_EQ(patches->patchCount(), 30u);  // 2 x 5 + 5 x 4 quads
-    const CreasePreparation creases =
-        prepareCreases(mesh, "gregory_acc", kDefaultCreaseFaceBudget, 1);
+    const techniques::CreasePreparation creases =
+        techniques::prepareCreases(mesh, "gregory_acc", techniques::kDefaultCreaseFaceBudget, 1);
     const CurveFigures figures =
         creaseCurveError(*patches, creases, patches->controlMesh(), bboxDiagonal(mesh));
     EXPECT_EQ(figures.sides, 20u);  // 5 crease edges, 2 halves each, 2 sides
@@ -412,12 +430,12 @@ TEST(GregoryCrease, NGonsNextToCreasesAreRefinedByOpenSubdiv) {
 }
 
 TEST(GregoryCrease, TheCreaseFaceBudgetIsAVariantParameter) {
-  const Mesh mesh = load("opensubdiv/catmark_cube_creases1.obj");  // sharpness 5: 5 levels
+  const mesh::Mesh mesh = load("opensubdiv/catmark_cube_creases1.obj");  // sharpness 5: 5 levels
   EXPECT_EQ(build(mesh)->patchCount(), 96u);                       // 256 faces: 2 levels
-  VariantInfo variant = variantNamed("edge_symmetric");
+  techniques::VariantInfo variant = variantNamed("edge_symmetric");
   variant.parameters["crease_face_budget"] = 1536.0;
   EXPECT_EQ(variantCreaseFaceBudget(variant), 1536u);
-  EXPECT_EQ(buildSurface(GregoryAccTechnique(), mesh, variant)->patchCount(), 1536u);
+  EXPECT_EQ(techniques::buildSurface(GregoryAccTechnique(), mesh, variant)->patchCount(), 1536u);
 }
 
 }  // namespace
@@ -429,8 +447,8 @@ namespace {
 // loop_icosahedron is closed but tagged edge-only: nothing sharp, so quads_only keeps the
 // stencils over its own 12 vertices (refineOnce), as before creases were supported.
 TEST(GregoryCrease, AClosedMeshsBoundaryTagForcesNoOpenSubdivRefinement) {
-  const Mesh mesh = load("opensubdiv/loop_icosahedron.obj");
-  ASSERT_EQ(mesh.tags.boundary, BoundaryInterpolation::kEdgeOnly);
+  const mesh::Mesh mesh = load("opensubdiv/loop_icosahedron.obj");
+  ASSERT_EQ(mesh.tags.boundary, mesh::BoundaryInterpolation::kEdgeOnly);
   const auto patches = build(mesh, "quads_only");
   EXPECT_EQ(patches->footprint().control_mesh_bytes, 12u * 16u);  // vec4 per input vertex
   EXPECT_EQ(patches->patchCount(), 60u);                          // 20 triangles x 3 quads

@@ -13,7 +13,7 @@
 namespace tb::gregory_acc {
 namespace {
 
-using Cubic = std::array<std::array<Vec3d, 4>, 4>;  // c[i][j], k = 3 - i - j
+using Cubic = std::array<std::array<mesh::Vec3d, 4>, 4>;  // c[i][j], k = 3 - i - j
 
 Cubic randomCubic(uint32_t seed) {
   std::mt19937 rng(seed);
@@ -25,9 +25,9 @@ Cubic randomCubic(uint32_t seed) {
   return c;
 }
 
-Vec3d cubicAt(const Cubic& c, double u, double v, double w) {
+mesh::Vec3d cubicAt(const Cubic& c, double u, double v, double w) {
   const int fact[4] = {1, 1, 2, 6};
-  Vec3d sum{};
+  mesh::Vec3d sum{};
   for (int i = 0; i <= 3; ++i) {
     for (int j = 0; i + j <= 3; ++j) {
       const int k = 3 - i - j;
@@ -43,7 +43,7 @@ Vec3d cubicAt(const Cubic& c, double u, double v, double w) {
 // points of corner c its degree-raised interior point (b211 = (2 c111 + c201 + c210)/4).
 GregoryPoints<double> fromCubic(const Cubic& c) {
   GregoryPoints<double> cp{};
-  auto set = [&cp](int corner, Slot slot, const Vec3d& p) { cp[corner * 5 + slot] = p; };
+  auto set = [&cp](int corner, Slot slot, const mesh::Vec3d& p) { cp[corner * 5 + slot] = p; };
   set(0, kP, c[3][0]);
   set(1, kP, c[0][3]);
   set(2, kP, c[0][0]);
@@ -53,10 +53,10 @@ GregoryPoints<double> fromCubic(const Cubic& c) {
   set(1, kEm, c[1][2]);  // c120, toward corner 0
   set(2, kEp, c[1][0]);  // c102, toward corner 0
   set(2, kEm, c[0][1]);  // c012, toward corner 1
-  const Vec3d& c111 = c[1][1];
-  const Vec3d b211 = (c111 * 2.0 + c[2][0] + c[2][1]) * 0.25;
-  const Vec3d b121 = (c111 * 2.0 + c[0][2] + c[1][2]) * 0.25;  // (2 c111 + c021 + c120) / 4
-  const Vec3d b112 = (c111 * 2.0 + c[1][0] + c[0][1]) * 0.25;  // (2 c111 + c102 + c012) / 4
+  const mesh::Vec3d& c111 = c[1][1];
+  const mesh::Vec3d b211 = (c111 * 2.0 + c[2][0] + c[2][1]) * 0.25;
+  const mesh::Vec3d b121 = (c111 * 2.0 + c[0][2] + c[1][2]) * 0.25;  // (2 c111 + c021 + c120) / 4
+  const mesh::Vec3d b112 = (c111 * 2.0 + c[1][0] + c[0][1]) * 0.25;  // (2 c111 + c102 + c012) / 4
   for (Slot s : {kFp, kFm}) {
     set(0, s, b211);
     set(1, s, b121);
@@ -82,8 +82,10 @@ TEST(GregoryTriangle, EqualsTheCubicBezierTriangleWhenCornerPointsAgree) {
         EXPECT_LE(length(got.position - cubicAt(c, u, v, w)), 1e-14) << seed << " " << u << "," << v;
         // Normal: the cubic's finite-difference tangents toward corners 1 and 2.
         const double h = 1e-6;
-        const Vec3d ta = (cubicAt(c, u - h, v + h, w) - cubicAt(c, u + h, v - h, w)) * (0.5 / h);
-        const Vec3d tc = (cubicAt(c, u - h, v, w + h) - cubicAt(c, u + h, v, w - h)) * (0.5 / h);
+        const mesh::Vec3d ta =
+            (cubicAt(c, u - h, v + h, w) - cubicAt(c, u + h, v - h, w)) * (0.5 / h);
+        const mesh::Vec3d tc =
+            (cubicAt(c, u - h, v, w + h) - cubicAt(c, u + h, v, w - h)) * (0.5 / h);
         EXPECT_LE(length(got.normal - normalize(cross(ta, tc))), 1e-7) << seed;
       }
     }
@@ -93,12 +95,12 @@ TEST(GregoryTriangle, EqualsTheCubicBezierTriangleWhenCornerPointsAgree) {
 TEST(GregoryTriangle, FloatEvaluationFollowsTheDoubleOne) {
   const Cubic c = randomCubic(11);
   GregoryPoints<double> cp = fromCubic(c);
-  cp[0 * 5 + kFm] = cp[0 * 5 + kFm] + Vec3d{0.1, -0.2, 0.05};  // a true Gregory patch
+  cp[0 * 5 + kFm] = cp[0 * 5 + kFm] + mesh::Vec3d{0.1, -0.2, 0.05};  // a true Gregory patch
   GregoryPoints<float> cpf;
   for (size_t i = 0; i < cp.size(); ++i) cpf[i] = vecCast<float>(cp[i]);
   for (const auto& [u, v, w] : kPoints) {
-    const Vec3d d = evaluateGregoryTriangle(cp, u, v, w, true).position;
-    const Vec3f f = evaluateGregoryTriangle(cpf, float(u), float(v), float(w), true).position;
+    const mesh::Vec3d d = evaluateGregoryTriangle(cp, u, v, w, true).position;
+    const mesh::Vec3f f = evaluateGregoryTriangle(cpf, float(u), float(v), float(w), true).position;
     EXPECT_LE(length(vecCast<double>(f) - d), 1e-6);
   }
 }
@@ -110,16 +112,16 @@ TEST(GregoryTriangle, EachEdgeSeesOnlyItsOwnInteriorPoints) {
   const GregoryPoints<double> base = fromCubic(c);
   GregoryPoints<double> moved = base;
   for (int index : {0 * 5 + kFm, 1 * 5 + kFp, 2 * 5 + kFp, 2 * 5 + kFm}) {
-    moved[index] = moved[index] + Vec3d{0.3, 0.1, -0.4};
+    moved[index] = moved[index] + mesh::Vec3d{0.3, 0.1, -0.4};
   }
   GregoryPoints<double> own = base;
-  own[0 * 5 + kFp] = own[0 * 5 + kFp] + Vec3d{0.3, 0.1, -0.4};
+  own[0 * 5 + kFp] = own[0 * 5 + kFp] + mesh::Vec3d{0.3, 0.1, -0.4};
   const double h = 1e-6;
   for (double t : {0.1, 0.35, 0.5, 0.8}) {
     auto towardCorner2 = [&](const GregoryPoints<double>& cp) {
       // One-sided difference into the patch from (1 - t, t, 0).
-      const Vec3d inside = evaluateGregoryTriangle(cp, 1 - t - h, t, h, false).position;
-      const Vec3d edge = evaluateGregoryTriangle(cp, 1 - t, t, 0.0, false).position;
+      const mesh::Vec3d inside = evaluateGregoryTriangle(cp, 1 - t - h, t, h, false).position;
+      const mesh::Vec3d edge = evaluateGregoryTriangle(cp, 1 - t, t, 0.0, false).position;
       return (inside - edge) * (1 / h);
     };
     EXPECT_LE(length(evaluateGregoryTriangle(moved, 1 - t, t, 0.0, false).position -

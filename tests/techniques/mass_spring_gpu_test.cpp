@@ -22,10 +22,11 @@ constexpr uint32_t kIterations = 50;
 // order or a race between batches shows as thousands of ulp.
 constexpr int64_t kUlpBound = 4;
 
-int64_t maxUlp(const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
+int64_t maxUlp(const std::vector<mesh::Vec3f>& a, const std::vector<mesh::Vec3f>& b) {
   int64_t worst = 0;
   for (size_t v = 0; v < a.size(); ++v) {
-    for (int i = 0; i < 3; ++i) worst = std::max(worst, int64_t(ulpDistance(a[v][i], b[v][i])));
+    for (int i = 0; i < 3; ++i)
+      worst = std::max(worst, int64_t(mesh::ulpDistance(a[v][i], b[v][i])));
   }
   return worst;
 }
@@ -39,9 +40,9 @@ int64_t compare(gpu::Context& context, const std::string& variant, bool goal,
   simulation.setConvergenceFrame();
   gpu::ComputeRunner runner(context, simulation.solverPrograms());
   runner.run(kIterations);
-  const std::vector<Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
+  const std::vector<mesh::Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
       runner.read(MassSpringSimulation::solverPositionBuffer()), simulation.springs().vertex_count);
-  const std::vector<Vec3f> start = simulation.solverState().x;
+  const std::vector<mesh::Vec3f> start = simulation.solverState().x;
   simulation.iterate(kIterations);
   const int64_t ulp = maxUlp(gpu_positions, simulation.solverState().x);
   // The comparison is not vacuous: the solver moved every coordinate far from its start.
@@ -80,7 +81,7 @@ TEST(MassSpringGpu, WholeStepsAgreeWithTheCpuTwinWithinTheUlpBound) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   constexpr uint32_t kSteps = 60;
   for (const char* animation : {testing::kStompAnimation, testing::kBlastAnimation}) {
-    const Scenario scenario = testing::massSpringScenario(animation);
+    const techniques::Scenario scenario = testing::massSpringScenario(animation);
     for (const char* variant : {"gs_colored", "jacobi", "jacobi_chebyshev"}) {
       auto instance = testing::buildMassSpring(scenario, variant);
       MassSpringSimulation& simulation = testing::massSpringOf(*instance);
@@ -88,15 +89,15 @@ TEST(MassSpringGpu, WholeStepsAgreeWithTheCpuTwinWithinTheUlpBound) {
       runner.run(kSteps);
       // The footprint counts the buffers the runner allocates.
       EXPECT_EQ(simulation.footprint().total(), runner.residentBytes()) << variant;
-      const std::vector<Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
+      const std::vector<mesh::Vec3f> gpu_positions = MassSpringSimulation::decodePositions(
           runner.read("positions"), simulation.springs().vertex_count);
-      const std::vector<Vec3f> start = simulation.solverState().x;
+      const std::vector<mesh::Vec3f> start = simulation.solverState().x;
       for (uint32_t k = 0; k < kSteps; ++k) simulation.step(scenario.time_step_s);
       EXPECT_GT(maxUlp(start, simulation.solverState().x), 1000) << variant;
       const int64_t ulp = maxUlp(gpu_positions, simulation.solverState().x);
       // The render vertices the step's last pass wrote (seed 003's vertex buffer update).
-      const std::vector<Vec3f> cpu_render = simulation.renderPositionsFloat();
-      const std::vector<Vec3f> gpu_render =
+      const std::vector<mesh::Vec3f> cpu_render = simulation.renderPositionsFloat();
+      const std::vector<mesh::Vec3f> gpu_render =
           MassSpringSimulation::decodePositions(runner.read("render_positions"), cpu_render.size());
       EXPECT_LE(maxUlp(gpu_render, cpu_render), kUlpBound) << variant;
       std::printf("%s, %s: max %lld ulp after %u steps\n", variant,

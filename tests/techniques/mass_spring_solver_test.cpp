@@ -90,16 +90,16 @@ TEST(MassSpringSolver, HangingChainMatchesHandComputationAfterOneSweep) {
 TEST(MassSpringSolver, HangingChainSettlesToTheAnalyticRestState) {
   const SpringSystem system = chain();
   const double dt = 0.01, damping = 0.05;
-  const Vec3d gravity{0, 0, -9.81};
+  const mesh::Vec3d gravity{0, 0, -9.81};
   for (const SolverKind kind : kAllSolvers) {
     const SpringSolver<double> solver(system, {.kind = kind, .rho = 0.5, .delay = 2});
     SolverState<double> state;
     state.x = {{1.5, 0, 0}, {3, 0, 0}, {4.5, 0, 0}};
     state.anchors = {{0, 0, 0}};
-    std::vector<Vec3d> previous = state.x;
+    std::vector<mesh::Vec3d> previous = state.x;
     for (int step = 0; step < 4000; ++step) {
       for (size_t v = 0; v < 3; ++v) {
-        const Vec3d next =
+        const mesh::Vec3d next =
             state.x[v] + (1 - damping) * (state.x[v] - previous[v]) + dt * dt * gravity;
         previous[v] = state.x[v];
         state.x[v] = next;
@@ -144,9 +144,9 @@ TEST(MassSpringColouring, NoBatchHoldsTwoSpringsSharingAVertex) {
   }
 }
 
-std::vector<Vec3f> solveFromConvergenceFrame(const std::string& variant,
-                                             const std::map<std::string, double>& extra,
-                                             size_t iterations) {
+std::vector<mesh::Vec3f> solveFromConvergenceFrame(const std::string& variant,
+                                                   const std::map<std::string, double>& extra,
+                                                   size_t iterations) {
   auto instance = buildMassSpring(massSpringScenario(), variant, extra);
   MassSpringSimulation& simulation = massSpringOf(*instance);
   simulation.setConvergenceFrame();
@@ -154,8 +154,9 @@ std::vector<Vec3f> solveFromConvergenceFrame(const std::string& variant,
   return simulation.solverState().x;
 }
 
-bool bitwiseEqual(const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0;
+bool bitwiseEqual(const std::vector<mesh::Vec3f>& a, const std::vector<mesh::Vec3f>& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(mesh::Vec3f)) == 0;
 }
 
 // Oracle: the serial sweep in colour-major order (amendment to acceptance 2: bitwise),
@@ -165,7 +166,7 @@ TEST(MassSpringColouring, ColouredGaussSeidelEqualsSerialColourMajorBitwise) {
     const std::map<std::string, double> extra{{"goal_springs", goal}};
     const auto serial =
         solveFromConvergenceFrame("gs_serial", {{"goal_springs", goal}, {"colour_major", 1}}, 20);
-    std::vector<Vec3f> coloured;
+    std::vector<mesh::Vec3f> coloured;
     {
       tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
       coloured = solveFromConvergenceFrame("gs_colored", extra, 20);
@@ -200,21 +201,21 @@ TEST(MassSpringColouring, ADispatchBudgetGoesOnWhereTheLastStopped) {
 }
 
 TEST(MassSpringScenario, BadFieldsNameTheFileAndTheField) {
-  Scenario scenario = massSpringScenario();
+  techniques::Scenario scenario = massSpringScenario();
   scenario.path = "stomp.json";
   scenario.sections["mass_spring"] =
       R"({"bone_chain_m": [[0,0,0],[0,0,1]], "stiffness": {"surface": 1.5, "inner": 0, "goal": 0}})";
   try {
     buildMassSpring(scenario, "jacobi");
     FAIL() << "no InputError";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_EQ(error.file(), "stomp.json");
     EXPECT_EQ(error.element(), "mass_spring.stiffness.surface");
   }
   scenario.sections["mass_spring"] = R"({"bone_chain_m": [[0,0,0]]})";
-  EXPECT_THROW(buildMassSpring(scenario, "jacobi"), InputError);
+  EXPECT_THROW(buildMassSpring(scenario, "jacobi"), mesh::InputError);
   scenario.sections.clear();
-  EXPECT_THROW(buildMassSpring(scenario, "jacobi"), InputError);
+  EXPECT_THROW(buildMassSpring(scenario, "jacobi"), mesh::InputError);
 }
 
 }  // namespace

@@ -32,9 +32,9 @@ inline const char* kBlastAnimation =
     R"([{"kind": "blast", "time_s": 0.1, "center_m": [1.95, -1.2749, 0.30], "radius_m": 0.2,
          "speed_m_per_s": 1.0}])";
 
-inline Scenario massSpringScenario(const std::string& animation = kStompAnimation,
-                                   const std::string& name = "mass_spring_stomp") {
-  Scenario scenario;
+inline techniques::Scenario massSpringScenario(const std::string& animation = kStompAnimation,
+                                               const std::string& name = "mass_spring_stomp") {
+  techniques::Scenario scenario;
   scenario.name = name;
   scenario.time_step_s = 1.0 / 60;
   scenario.duration_s = 1.0;
@@ -46,11 +46,12 @@ inline Scenario massSpringScenario(const std::string& animation = kStompAnimatio
 }
 
 // A built simulation of the registered technique's variant `name`, with extra parameters.
-inline std::unique_ptr<TechniqueInstance> buildMassSpring(
-    const Scenario& scenario, const std::string& name,
+inline std::unique_ptr<techniques::TechniqueInstance> buildMassSpring(
+    const techniques::Scenario& scenario, const std::string& name,
     const std::map<std::string, double>& extra = {}) {
-  const Technique* technique = TechniqueRegistry::instance().find("mass_spring");
-  for (VariantInfo variant : technique->variants()) {
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find("mass_spring");
+  for (techniques::VariantInfo variant : technique->variants()) {
     if (variant.name != name) continue;
     for (const auto& [key, value] : extra) variant.parameters[key] = value;
     return technique->build({nullptr, &scenario}, variant);
@@ -58,7 +59,7 @@ inline std::unique_ptr<TechniqueInstance> buildMassSpring(
   return nullptr;
 }
 
-inline mass_spring::MassSpringSimulation& massSpringOf(TechniqueInstance& instance) {
+inline mass_spring::MassSpringSimulation& massSpringOf(techniques::TechniqueInstance& instance) {
   return dynamic_cast<mass_spring::MassSpringSimulation&>(*instance.simulation());
 }
 

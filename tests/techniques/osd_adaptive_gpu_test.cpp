@@ -46,14 +46,14 @@ TEST(OsdAdaptiveGpu, CaptureEqualsTheCpuFloatTwin) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const OsdAdaptiveTechnique technique;
   for (const VariantCase& vc : kVariants) {
-    const VariantInfo variant{
+    const techniques::VariantInfo variant{
         vc.name,
         vc.name,
         {{"isolation", double(vc.isolation)}, {"endcap", double(int(vc.end_cap))}}};
     size_t variant_end_cap_vertices = 0;
     for (const char* name : kAssets) {
-      const Mesh mesh = loadObjFile(testing::assetPath(name));
-      const BuiltSurface patches = buildSurface(technique, mesh, variant);
+      const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(name));
+      const techniques::BuiltSurface patches = techniques::buildSurface(technique, mesh, variant);
       const std::vector<gpu::GpuPatchProgram> programs = patches->gpuPrograms();
       ASSERT_EQ(programs.size(), 1u);
       ASSERT_EQ(programs[0].patch_count, patches->patchCount());
@@ -71,8 +71,8 @@ TEST(OsdAdaptiveGpu, CaptureEqualsTheCpuFloatTwin) {
         double worst_normal = 0;
         size_t end_cap_vertices = 0;
         for (const gpu::CapturedVertex& v : capture.vertices) {
-          const SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
-          worst = std::max(worst, maxUlpDistance(cpu.position, v.position));
+          const techniques::SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
+          worst = std::max(worst, mesh::maxUlpDistance(cpu.position, v.position));
           worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
           end_cap_vertices += !isRegularAt(*patches, v.patch, v.coord[0], v.coord[1]);
         }

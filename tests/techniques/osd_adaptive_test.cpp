@@ -23,21 +23,22 @@
 namespace tb::osd_adaptive {
 namespace {
 
-const Technique& technique() {
-  const Technique* found = TechniqueRegistry::instance().find("osd_adaptive");
+const techniques::Technique& technique() {
+  const techniques::Technique* found =
+      techniques::TechniqueRegistry::instance().find("osd_adaptive");
   if (found == nullptr) throw std::logic_error("osd_adaptive is not registered");
   return *found;
 }
 
-VariantInfo variant(int isolation, EndCap cap = EndCap::kGregoryBasis) {
+techniques::VariantInfo variant(int isolation, EndCap cap = EndCap::kGregoryBasis) {
   return {"test", "test", {{"isolation", double(isolation)}, {"endcap", double(int(cap))}}};
 }
 
-Mesh asset(const char* name) { return loadObjFile(testing::assetPath(name)); }
+mesh::Mesh asset(const char* name) { return mesh::loadObjFile(testing::assetPath(name)); }
 
 TEST(OsdAdaptive, IsRegisteredWithItsVariants) {
-  const Technique& osd = technique();
-  EXPECT_EQ(osd.info().family, TechniqueFamily::kSurface);
+  const techniques::Technique& osd = technique();
+  EXPECT_EQ(osd.info().family, techniques::TechniqueFamily::kSurface);
   const auto variants = osd.variants();
   ASSERT_FALSE(variants.empty());
   EXPECT_EQ(variants[0].name, "iso2_gregory");
@@ -48,15 +49,15 @@ TEST(OsdAdaptive, IsRegisteredWithItsVariants) {
 // Max |osd - Bfr| (world units) over a 9x9 lattice of every base face, at the samples whose
 // Far patch is a regular B-spline patch (end caps left out). Best 0; the regular patches are
 // the exact limit, so only rounding (~1e-15) remains. Counts the samples compared.
-double maxRegularDifference(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                            size_t& compared) {
+double maxRegularDifference(const techniques::SurfacePatches& patches,
+                            const ref::LimitSurface& limit, size_t& compared) {
   double worst = 0;
   for (size_t f = 0; f < patches.patchCount(); ++f) {
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; j <= 8; ++j) {
         const double u = i / 8.0, v = j / 8.0;
         if (!isRegularAt(patches, f, u, v)) continue;
-        const SurfacePoint osd = patches.evaluate(f, {u, v, 0});
+        const techniques::SurfacePoint osd = patches.evaluate(f, {u, v, 0});
         const ref::LimitPoint exact = limit.evaluate(f, u, v);
         worst = std::max(worst, length(osd.position - exact.position));
         ++compared;
@@ -69,12 +70,12 @@ double maxRegularDifference(const SurfacePatches& patches, const ref::LimitSurfa
 // Far truncates semi-sharp creases at the isolation level (a crease of sharpness s is exact
 // only once the level reaches ceil(s)); the smallest level at which every crease and corner
 // of `mesh` is exact, at least 2.
-int exactCreaseLevel(const Mesh& mesh) {
+int exactCreaseLevel(const mesh::Mesh& mesh) {
   double sharpest = 0;
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     sharpest = std::max(sharpest, double(crease.sharpness));
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     sharpest = std::max(sharpest, double(corner.sharpness));
   }
   return std::clamp(int(std::ceil(sharpest)), 2, 10);
@@ -83,11 +84,12 @@ int exactCreaseLevel(const Mesh& mesh) {
 TEST(OsdAdaptive, RegularPatchesEqualBfrLimit) {
   for (const char* name : {"opensubdiv/catmark_torus.obj", "opensubdiv/catmark_cube.obj",
                            "opensubdiv/catmark_pawn.obj", "opensubdiv/catmark_cube_creases1.obj"}) {
-    const Mesh mesh = asset(name);
+    const mesh::Mesh mesh = asset(name);
     const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     const int exact = exactCreaseLevel(mesh);
     for (int isolation : {exact, exact + 2}) {
-      const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
+      const techniques::BuiltSurface patches =
+          techniques::buildSurface(technique(), mesh, variant(isolation));
       size_t compared = 0;
       const double worst = maxRegularDifference(*patches, limit, compared);
       std::printf("%s iso%d: max |osd - Bfr| on regular patches %.3g over %zu samples\n", name,
@@ -102,11 +104,12 @@ TEST(OsdAdaptive, RegularPatchesEqualBfrLimit) {
 // sharp, so the pawn's (sharpness 6) regular patches differ from Bfr there; the difference
 // falls with the level.
 TEST(OsdAdaptive, SemiSharpCreasesAreApproximatedBelowTheirSharpness) {
-  const Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   double previous = INFINITY;
   for (int isolation : {2, 4}) {
-    const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation));
+    const techniques::BuiltSurface patches =
+        techniques::buildSurface(technique(), mesh, variant(isolation));
     size_t compared = 0;
     const double worst = maxRegularDifference(*patches, limit, compared);
     std::printf("catmark_pawn iso%d: max |osd - Bfr| on regular patches %.3g\n", isolation, worst);
@@ -117,8 +120,8 @@ TEST(OsdAdaptive, SemiSharpCreasesAreApproximatedBelowTheirSharpness) {
 }
 
 TEST(OsdAdaptive, TorusIsOneRegularPatchPerFace) {
-  const Mesh mesh = asset("opensubdiv/catmark_torus.obj");
-  const BuiltSurface patches = buildSurface(technique(), mesh, variant(4));
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_torus.obj");
+  const techniques::BuiltSurface patches = techniques::buildSurface(technique(), mesh, variant(4));
   const PatchTableCounts counts = patchTableCounts(*patches);
   EXPECT_EQ(counts.patches, mesh.faceCount());
   EXPECT_EQ(counts.regular_patches, mesh.faceCount());
@@ -143,7 +146,8 @@ std::vector<double> graded() {
 
 // Max parametric error |osd(f, u, v) - Bfr(f, u, v)| over the graded lattice of every face,
 // as a fraction of the bounding-box diagonal (best 0).
-double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface& limit) {
+double maxParametricError(const techniques::SurfacePatches& patches,
+                          const ref::LimitSurface& limit) {
   const std::vector<double> values = graded();
   const double diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);
   double worst = 0;
@@ -151,9 +155,9 @@ double maxParametricError(const SurfacePatches& patches, const ref::LimitSurface
     const ref::LimitFace face = limit.face(f);
     for (double u : values) {
       for (double v : values) {
-        worst = std::max(
-            worst,
-            parametricErrorAt(patches, face, osd::Scheme::kCatmullClark, f, {u, v, 0}) / diagonal);
+        worst = std::max(worst, measures::parametricErrorAt(
+                                    patches, face, osd::Scheme::kCatmullClark, f, {u, v, 0}) /
+                                    diagonal);
       }
     }
   }
@@ -168,7 +172,7 @@ const char* const kBasisAssets[] = {
     "opensubdiv/catmark_pawn.obj"};
 
 // Isolation levels 2 and 4 with Gregory basis end caps, level 2 with B-spline basis ones.
-std::vector<VariantInfo> basisVariants() {
+std::vector<techniques::VariantInfo> basisVariants() {
   return {variant(2), variant(4), variant(2, EndCap::kBSplineBasis)};
 }
 
@@ -180,18 +184,18 @@ std::vector<VariantInfo> basisVariants() {
 TEST(OsdAdaptive, OwnBasisEqualsFarsBasisInDouble) {
   const std::vector<double> values = graded();
   for (const char* name : kBasisAssets) {
-    const Mesh mesh = asset(name);
+    const mesh::Mesh mesh = asset(name);
     const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
-    for (const VariantInfo& info : basisVariants()) {
+    for (const techniques::VariantInfo& info : basisVariants()) {
       const bool gregory = variantEndCap(info) == EndCap::kGregoryBasis;
-      const BuiltSurface patches = buildSurface(technique(), mesh, info);
+      const techniques::BuiltSurface patches = techniques::buildSurface(technique(), mesh, info);
       double worst = 0, worst_normal = 0;
       size_t normals = 0;
       for (size_t f = 0; f < patches->patchCount(); ++f) {
         for (double u : values) {
           for (double v : values) {
-            const SurfacePoint far = patches->evaluate(f, {u, v, 0});
-            const std::optional<SurfacePoint> own = evaluateOwnBasis(*patches, f, u, v);
+            const techniques::SurfacePoint far = patches->evaluate(f, {u, v, 0});
+            const std::optional<techniques::SurfacePoint> own = evaluateOwnBasis(*patches, f, u, v);
             ASSERT_TRUE(own.has_value());
             worst = std::max(worst, length(own->position - far.position) / diagonal);
             if (gregory && !isRegularAt(*patches, f, u, v)) continue;
@@ -217,8 +221,8 @@ TEST(OsdAdaptive, OwnBasisEqualsFarsBasisInDouble) {
 // differences of Far's positions (step 1e-6 of the base face: error ~1e-10). Far's
 // EvaluateBasis leaves those terms out; its normals there are printed for comparison.
 TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
-  const Mesh mesh = asset("opensubdiv/catmark_cube.obj");
-  const BuiltSurface patches = buildSurface(technique(), mesh, variant(2));
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_cube.obj");
+  const techniques::BuiltSurface patches = techniques::buildSurface(technique(), mesh, variant(2));
   const double h = 1e-6;
   double worst_own = 0, worst_far = 0;
   size_t compared = 0;
@@ -229,7 +233,8 @@ TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
         const auto at = [&](double x, double y) {
           return patches->evaluate(f, {x, y, 0}).position;
         };
-        const Vec3d n = normalize(cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h)));
+        const mesh::Vec3d n =
+            normalize(cross(at(u + h, v) - at(u - h, v), at(u, v + h) - at(u, v - h)));
         worst_own = std::max(worst_own, length(evaluateOwnBasis(*patches, f, u, v)->normal - n));
         worst_far = std::max(worst_far, length(patches->evaluate(f, {u, v, 0}).normal - n));
         ++compared;
@@ -250,17 +255,17 @@ TEST(OsdAdaptive, GregoryEndCapNormalsAreTheSurfaceNormal) {
 TEST(OsdAdaptive, FloatTwinAgreesWithDoubleEvaluate) {
   const std::vector<double> values = graded();
   for (const char* name : kBasisAssets) {
-    const Mesh mesh = asset(name);
+    const mesh::Mesh mesh = asset(name);
     const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
-    for (const VariantInfo& info : basisVariants()) {
-      const BuiltSurface patches = buildSurface(technique(), mesh, info);
+    for (const techniques::VariantInfo& info : basisVariants()) {
+      const techniques::BuiltSurface patches = techniques::buildSurface(technique(), mesh, info);
       double worst = 0, worst_normal = 0;
       for (size_t f = 0; f < patches->patchCount(); ++f) {
         for (double u : values) {
           for (double v : values) {
             const tess::DomainPoint at{float(u), float(v), 0};
-            const SurfacePointF single = patches->evaluateFloat(f, at);
-            const SurfacePoint exact = patches->evaluate(f, {u, v, 0});
+            const techniques::SurfacePointF single = patches->evaluateFloat(f, at);
+            const techniques::SurfacePoint exact = patches->evaluate(f, {u, v, 0});
             worst = std::max(worst,
                              length(vecCast<double>(single.position) - exact.position) / diagonal);
             worst_normal =
@@ -288,12 +293,13 @@ TEST(OsdAdaptive, FloatTwinAgreesWithDoubleEvaluate) {
 // extraordinary vertices.
 TEST(OsdAdaptive, ErrorFallsWithIsolationLevel) {
   for (const char* name : {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj"}) {
-    const Mesh mesh = asset(name);
+    const mesh::Mesh mesh = asset(name);
     const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
     for (EndCap cap : {EndCap::kGregoryBasis, EndCap::kBSplineBasis}) {
       double previous = INFINITY;
       for (int isolation : {1, 2, 3, 4, 5, 6}) {
-        const BuiltSurface patches = buildSurface(technique(), mesh, variant(isolation, cap));
+        const techniques::BuiltSurface patches =
+            techniques::buildSurface(technique(), mesh, variant(isolation, cap));
         const double error = maxParametricError(*patches, limit);
         const PatchTableCounts counts = patchTableCounts(*patches);
         std::printf("%s %s iso%d: parametric max %.3e of the diagonal; %.2f patches per face\n",
@@ -309,10 +315,10 @@ TEST(OsdAdaptive, ErrorFallsWithIsolationLevel) {
 
 // The error measure itself runs on osd_adaptive's patches (one per base face).
 TEST(OsdAdaptive, ErrorMeasureRuns) {
-  const Mesh mesh = asset("opensubdiv/catmark_cube.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_cube.obj");
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-  const BuiltSurface patches = buildSurface(technique(), mesh, variant(2));
-  const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
+  const techniques::BuiltSurface patches = techniques::buildSurface(technique(), mesh, variant(2));
+  const measures::SurfaceErrorFigures figures = measures::measureSurfaceError(*patches, limit);
   EXPECT_EQ(figures.samples, 6u * 81u);
   EXPECT_GT(figures.parametric_max, 1e-4);  // level-2 end caps: ~1.7e-3
   EXPECT_LT(figures.parametric_max, 1e-2);
@@ -323,14 +329,15 @@ TEST(OsdAdaptive, AcceptsCreasedAssets) {
        {"opensubdiv/catmark_cube_creases1.obj", "opensubdiv/catmark_single_crease.obj",
         "opensubdiv/catmark_cube_corner3.obj", "opensubdiv/catmark_edgecorner.obj",
         "opensubdiv/catmark_tent_creases1.obj"}) {
-    const Mesh mesh = asset(name);
+    const mesh::Mesh mesh = asset(name);
     if (!technique().checkSupport(mesh).empty()) {
       ADD_FAILURE() << name << ": " << technique().checkSupport(mesh);
       continue;
     }
     const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-    const BuiltSurface patches = buildSurface(technique(), mesh, variant(4));
-    const SurfaceErrorFigures figures = measureSurfaceError(*patches, limit);
+    const techniques::BuiltSurface patches =
+        techniques::buildSurface(technique(), mesh, variant(4));
+    const measures::SurfaceErrorFigures figures = measures::measureSurfaceError(*patches, limit);
     std::printf("%s iso4: parametric max %.3e\n", name, figures.parametric_max);
     EXPECT_LT(figures.parametric_max, 1e-2) << name;
     EXPECT_TRUE(std::isfinite(figures.hausdorff)) << name;
@@ -338,27 +345,28 @@ TEST(OsdAdaptive, AcceptsCreasedAssets) {
 }
 
 TEST(OsdAdaptive, RefusesNonQuadMeshesWithAReason) {
-  const Mesh mesh = asset("opensubdiv/catmark_nonquads.obj");
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_nonquads.obj");
   const std::string reason = technique().checkSupport(mesh);
   EXPECT_NE(reason.find("osd_adaptive: face"), std::string::npos) << reason;
-  EXPECT_THROW(buildSurface(technique(), mesh, variant(2)), UnsupportedInput);
+  EXPECT_THROW(techniques::buildSurface(technique(), mesh, variant(2)),
+               techniques::UnsupportedInput);
 }
 
 TEST(OsdAdaptive, FloatEvaluationIsDeterministicAndCloseToDouble) {
-  const Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
-  const BuiltSurface a = buildSurface(technique(), mesh, variant(2));
-  const BuiltSurface b = buildSurface(technique(), mesh, variant(2));
+  const mesh::Mesh mesh = asset("opensubdiv/catmark_pawn.obj");
+  const techniques::BuiltSurface a = techniques::buildSurface(technique(), mesh, variant(2));
+  const techniques::BuiltSurface b = techniques::buildSurface(technique(), mesh, variant(2));
   const double diagonal = ref::boundingBoxDiagonal(mesh.positions);
   double worst = 0;
   for (size_t f = 0; f < a->patchCount(); ++f) {
     for (int i = 0; i <= 4; ++i) {
       for (int j = 0; j <= 4; ++j) {
         const tess::DomainPoint at{float(i) / 4, float(j) / 4, 0};
-        const SurfacePointF x = a->evaluateFloat(f, at), y = b->evaluateFloat(f, at);
+        const techniques::SurfacePointF x = a->evaluateFloat(f, at), y = b->evaluateFloat(f, at);
         for (int k = 0; k < 3; ++k) {
           ASSERT_EQ(std::bit_cast<uint32_t>(x.position[k]), std::bit_cast<uint32_t>(y.position[k]));
         }
-        const SurfacePoint d = a->evaluate(f, {double(at[0]), double(at[1]), 0});
+        const techniques::SurfacePoint d = a->evaluate(f, {double(at[0]), double(at[1]), 0});
         worst = std::max(worst, length(vecCast<double>(x.position) - d.position) / diagonal);
       }
     }

@@ -54,41 +54,42 @@ constexpr double kStep = 1e-5;           // central-difference step, domain unit
 constexpr double kMargin = 1e-4;         // lattice pulled inside the domain by this
 constexpr double kDegenerate = 1e-8;     // |n| below this times the box diagonal squared
 
-Mesh load(const std::string& name) { return loadObjFile(tb::testing::assetPath(name)); }
+mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
 
-const Technique& technique(const std::string& id) {
-  const Technique* t = TechniqueRegistry::instance().find(id);
+const techniques::Technique& technique(const std::string& id) {
+  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(id);
   if (t == nullptr) throw std::logic_error("no technique " + id);
   return *t;
 }
 
-std::vector<const Technique*> surfaceTechniques() {
-  std::vector<const Technique*> techniques;
-  for (const Technique* t : TechniqueRegistry::instance().all()) {
-    if (t->info().family == TechniqueFamily::kSurface) techniques.push_back(t);
+std::vector<const techniques::Technique*> surfaceTechniques() {
+  std::vector<const techniques::Technique*> techniques;
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+    if (t->info().family == techniques::TechniqueFamily::kSurface) techniques.push_back(t);
   }
   return techniques;
 }
 
-std::vector<DomainCoord> lattice(PatchDomain domain) {
-  std::vector<DomainCoord> coords;
+std::vector<techniques::DomainCoord> lattice(techniques::PatchDomain domain) {
+  std::vector<techniques::DomainCoord> coords;
   for (int j = 0; j <= kLattice; ++j) {
-    for (int i = 0; i <= (domain == PatchDomain::kQuad ? kLattice : kLattice - j); ++i) {
+    for (int i = 0; i <= (domain == techniques::PatchDomain::kQuad ? kLattice : kLattice - j);
+         ++i) {
       const double u = double(i) / kLattice, v = double(j) / kLattice;
-      coords.push_back({u, v, domain == PatchDomain::kQuad ? 0.0 : 1 - u - v});
+      coords.push_back({u, v, domain == techniques::PatchDomain::kQuad ? 0.0 : 1 - u - v});
     }
   }
   return coords;
 }
 
-Vec3d randomUnit(std::mt19937& rng) {
+mesh::Vec3d randomUnit(std::mt19937& rng) {
   std::normal_distribution<double> n(0, 1);
-  return normalize(Vec3d{n(rng), n(rng), n(rng)});
+  return normalize(mesh::Vec3d{n(rng), n(rng), n(rng)});
 }
 
-double boxDiagonal(const std::vector<Vec3d>& points) {
-  Vec3d lo = points.at(0), hi = lo;
-  for (const Vec3d& p : points) {
+double boxDiagonal(const std::vector<mesh::Vec3d>& points) {
+  mesh::Vec3d lo = points.at(0), hi = lo;
+  for (const mesh::Vec3d& p : points) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   return length(hi - lo);
@@ -96,40 +97,41 @@ double boxDiagonal(const std::vector<Vec3d>& points) {
 
 // The geometric normal at `c`, moved kMargin inside the domain: p_u x p_v on a quad; on a
 // triangle the derivatives toward corners 1 and 2 (weights of corners 0, 1, 2 = c).
-Vec3d differenceNormal(const SurfacePatches& s, size_t patch, DomainCoord c) {
-  const auto at = [&](const DomainCoord& d) { return s.evaluate(patch, d).position; };
+mesh::Vec3d differenceNormal(const techniques::SurfacePatches& s, size_t patch,
+                             techniques::DomainCoord c) {
+  const auto at = [&](const techniques::DomainCoord& d) { return s.evaluate(patch, d).position; };
   const double h = kStep, scale = 0.5 / kStep;
-  if (s.patchDomain(patch) == PatchDomain::kQuad) {
+  if (s.patchDomain(patch) == techniques::PatchDomain::kQuad) {
     for (int k = 0; k < 2; ++k) c[k] = kMargin + (1 - 2 * kMargin) * c[k];
-    const Vec3d du = (at({c[0] + h, c[1], 0}) - at({c[0] - h, c[1], 0})) * scale;
-    const Vec3d dv = (at({c[0], c[1] + h, 0}) - at({c[0], c[1] - h, 0})) * scale;
+    const mesh::Vec3d du = (at({c[0] + h, c[1], 0}) - at({c[0] - h, c[1], 0})) * scale;
+    const mesh::Vec3d dv = (at({c[0], c[1] + h, 0}) - at({c[0], c[1] - h, 0})) * scale;
     return cross(du, dv);
   }
   for (int k = 0; k < 3; ++k) c[k] = kMargin + (1 - 3 * kMargin) * c[k];
-  const Vec3d d1 = (at({c[0] - h, c[1] + h, c[2]}) - at({c[0] + h, c[1] - h, c[2]})) * scale;
-  const Vec3d d2 = (at({c[0] - h, c[1], c[2] + h}) - at({c[0] + h, c[1], c[2] - h})) * scale;
+  const mesh::Vec3d d1 = (at({c[0] - h, c[1] + h, c[2]}) - at({c[0] + h, c[1] - h, c[2]})) * scale;
+  const mesh::Vec3d d2 = (at({c[0] - h, c[1], c[2] + h}) - at({c[0] + h, c[1], c[2] - h})) * scale;
   return cross(d1, d2);
 }
 
 // How many of `points` lie outside `hull`'s box or above its support function in 16
 // random directions.
-size_t hullViolations(const std::vector<Vec3d>& hull, const std::vector<Vec3d>& points,
+size_t hullViolations(const std::vector<mesh::Vec3d>& hull, const std::vector<mesh::Vec3d>& points,
                       std::mt19937& rng) {
   const double tolerance = kHullTolerance * std::max(boxDiagonal(hull), 1e-300);
-  Vec3d lo = hull[0], hi = lo;
-  for (const Vec3d& p : hull) {
+  mesh::Vec3d lo = hull[0], hi = lo;
+  for (const mesh::Vec3d& p : hull) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
-  std::vector<Vec3d> directions;
+  std::vector<mesh::Vec3d> directions;
   for (int k = 0; k < 16; ++k) directions.push_back(randomUnit(rng));
   size_t violations = 0;
-  for (const Vec3d& p : points) {
+  for (const mesh::Vec3d& p : points) {
     bool inside = true;
     for (int k = 0; k < 3; ++k)
       inside = inside && p[k] >= lo[k] - tolerance && p[k] <= hi[k] + tolerance;
-    for (const Vec3d& d : directions) {
+    for (const mesh::Vec3d& d : directions) {
       double support = -1e300;
-      for (const Vec3d& h : hull) support = std::max(support, dot(d, h));
+      for (const mesh::Vec3d& h : hull) support = std::max(support, dot(d, h));
       inside = inside && dot(d, p) <= support + tolerance;
     }
     if (!inside) ++violations;
@@ -143,27 +145,27 @@ struct ConeResult {
   bool pointed = false;   // the mean direction separates: the cone is less than a half-space
 };
 
-Vec3d meanDirection(const std::vector<Vec3d>& generators) {
-  Vec3d sum{};
-  for (const Vec3d& g : generators) sum = sum + normalize(g);
+mesh::Vec3d meanDirection(const std::vector<mesh::Vec3d>& generators) {
+  mesh::Vec3d sum{};
+  for (const mesh::Vec3d& g : generators) sum = sum + normalize(g);
   return normalize(sum);
 }
 
-ConeResult checkCone(const std::vector<Vec3d>& generators, const std::vector<Vec3d>& normals,
-                     std::mt19937& rng) {
+ConeResult checkCone(const std::vector<mesh::Vec3d>& generators,
+                     const std::vector<mesh::Vec3d>& normals, std::mt19937& rng) {
   ConeResult result;
-  const Vec3d mean = meanDirection(generators);
-  std::vector<Vec3d> directions = {mean};
+  const mesh::Vec3d mean = meanDirection(generators);
+  std::vector<mesh::Vec3d> directions = {mean};
   for (int k = 0; k < 30; ++k) directions.push_back(randomUnit(rng));
   for (int k = 0; k < 30; ++k) directions.push_back(normalize(mean + randomUnit(rng) * 0.6));
   for (size_t k = 0; k < directions.size(); ++k) {
-    const Vec3d& d = directions[k];
+    const mesh::Vec3d& d = directions[k];
     double lowest = 1e300;
-    for (const Vec3d& g : generators) lowest = std::min(lowest, dot(d, normalize(g)));
+    for (const mesh::Vec3d& g : generators) lowest = std::min(lowest, dot(d, normalize(g)));
     if (!(lowest > 0)) continue;
     ++result.separating;
     if (k == 0) result.pointed = true;
-    for (const Vec3d& n : normals) {
+    for (const mesh::Vec3d& n : normals) {
       if (dot(d, n) < -kConeTolerance * length(n)) ++result.violations;
     }
   }
@@ -172,14 +174,14 @@ ConeResult checkCone(const std::vector<Vec3d>& generators, const std::vector<Vec
 
 // Surface points and geometric normals of one patch on the lattice.
 struct PatchSamples {
-  std::vector<Vec3d> points, normals;
+  std::vector<mesh::Vec3d> points, normals;
 };
 
-PatchSamples sample(const SurfacePatches& s, size_t patch, double size) {
+PatchSamples sample(const techniques::SurfacePatches& s, size_t patch, double size) {
   PatchSamples samples;
-  for (const DomainCoord& c : lattice(s.patchDomain(patch))) {
+  for (const techniques::DomainCoord& c : lattice(s.patchDomain(patch))) {
     samples.points.push_back(s.evaluate(patch, c).position);
-    const Vec3d n = differenceNormal(s, patch, c);
+    const mesh::Vec3d n = differenceNormal(s, patch, c);
     if (length(n) > kDegenerate * size * size) samples.normals.push_back(n);
   }
   return samples;
@@ -187,10 +189,10 @@ PatchSamples sample(const SurfacePatches& s, size_t patch, double size) {
 
 // Half the opening of a cone: the largest angle between the generators' mean direction and
 // a generator, in degrees.
-double halfOpeningDegrees(const std::vector<Vec3d>& generators) {
-  const Vec3d mean = meanDirection(generators);
+double halfOpeningDegrees(const std::vector<mesh::Vec3d>& generators) {
+  const mesh::Vec3d mean = meanDirection(generators);
   double lowest = 1;
-  for (const Vec3d& g : generators) lowest = std::min(lowest, dot(mean, normalize(g)));
+  for (const mesh::Vec3d& g : generators) lowest = std::min(lowest, dot(mean, normalize(g)));
   return std::acos(std::clamp(lowest, -1.0, 1.0)) * 180 / 3.141592653589793;
 }
 
@@ -200,20 +202,21 @@ struct Tally {
   std::map<std::string, std::pair<size_t, size_t>> generator_range;  // per domain: min, max
 };
 
-void checkSurface(const SurfacePatches& s, const std::string& what, Tally& tally) {
+void checkSurface(const techniques::SurfacePatches& s, const std::string& what, Tally& tally) {
   std::mt19937 rng(1);
   for (size_t p = 0; p < s.patchCount(); ++p) {
-    const std::optional<PatchCullBounds> bounds = s.cullBounds(p);
+    const std::optional<techniques::PatchCullBounds> bounds = s.cullBounds(p);
     ASSERT_TRUE(bounds.has_value()) << what << " patch " << p;
     ASSERT_FALSE(bounds->hull.empty()) << what << " patch " << p;
     const double size = boxDiagonal(bounds->hull);
     const PatchSamples samples = sample(s, p, size);
     EXPECT_EQ(hullViolations(bounds->hull, samples.points, rng), 0u) << what << " patch " << p;
     ++tally.patches;
-    const std::vector<Vec3d>& generators = bounds->normal_generators;
+    const std::vector<mesh::Vec3d>& generators = bounds->normal_generators;
     if (generators.empty()) continue;
     ++tally.with_generators;
-    for (const Vec3d& g : generators) ASSERT_FALSE(g == Vec3d{}) << what << " patch " << p;
+    for (const mesh::Vec3d& g : generators)
+      ASSERT_FALSE(g == mesh::Vec3d{}) << what << " patch " << p;
     auto [range, fresh] = tally.generator_range.try_emplace(toString(s.patchDomain(p)),
                                                             generators.size(), generators.size());
     range->second.first = std::min(range->second.first, generators.size());
@@ -229,12 +232,13 @@ void checkSurface(const SurfacePatches& s, const std::string& what, Tally& tally
 TEST(PatchCullBounds, HullAndNormalConeContainEveryPatchOfEveryTechnique) {
   std::map<std::string, Tally> by_technique;
   for (const std::string& name : kAssets) {
-    const Mesh mesh = load(name);
-    for (const Technique* t : surfaceTechniques()) {
+    const mesh::Mesh mesh = load(name);
+    for (const techniques::Technique* t : surfaceTechniques()) {
       if (!t->checkSupport(mesh).empty()) continue;
-      for (const VariantInfo& v : t->variants()) {
+      for (const techniques::VariantInfo& v : t->variants()) {
         const std::string what = t->info().id + "/" + v.name + " on " + name;
-        checkSurface(*buildSurface(*t, mesh, v), what, by_technique[t->info().id + "/" + v.name]);
+        checkSurface(*techniques::buildSurface(*t, mesh, v), what,
+                     by_technique[t->info().id + "/" + v.name]);
       }
     }
   }
@@ -251,7 +255,7 @@ TEST(PatchCullBounds, HullAndNormalConeContainEveryPatchOfEveryTechnique) {
   }
   // Every technique's default variant was checked on several assets, and the cone check
   // had directions to test with.
-  for (const Technique* t : surfaceTechniques()) {
+  for (const techniques::Technique* t : surfaceTechniques()) {
     const std::string id = t->info().id + "/" + t->variants()[0].name;
     ASSERT_TRUE(by_technique.count(id)) << id;
     EXPECT_GT(by_technique[id].patches, 50u) << id;
@@ -280,17 +284,17 @@ TEST(PatchCullBounds, GeneratorsFaceOutwardOnClosedConvexMeshes) {
       {"phong", "opensubdiv/loop_cube.obj"},
       {"phong", "opensubdiv/loop_icosahedron.obj"}};
   for (const auto& [id, name] : cases) {
-    const Technique& t = technique(id);
-    const BuiltSurface s = buildSurface(t, load(name), t.variants()[0]);
-    Vec3d centre{};
-    for (const Vec3d& p : s->controlMesh().positions) centre = centre + p;
+    const techniques::Technique& t = technique(id);
+    const techniques::BuiltSurface s = techniques::buildSurface(t, load(name), t.variants()[0]);
+    mesh::Vec3d centre{};
+    for (const mesh::Vec3d& p : s->controlMesh().positions) centre = centre + p;
     centre = centre * (1.0 / double(s->controlMesh().positions.size()));
     for (size_t p = 0; p < s->patchCount(); ++p) {
-      const bool quad = s->patchDomain(p) == PatchDomain::kQuad;
-      const DomainCoord middle =
-          quad ? DomainCoord{0.5, 0.5, 0} : DomainCoord{1. / 3, 1. / 3, 1. / 3};
-      const Vec3d outward = s->evaluate(p, middle).position - centre;
-      const std::vector<Vec3d> generators = s->cullBounds(p)->normal_generators;
+      const bool quad = s->patchDomain(p) == techniques::PatchDomain::kQuad;
+      const techniques::DomainCoord middle = quad ? techniques::DomainCoord{0.5, 0.5, 0}
+                                                  : techniques::DomainCoord{1. / 3, 1. / 3, 1. / 3};
+      const mesh::Vec3d outward = s->evaluate(p, middle).position - centre;
+      const std::vector<mesh::Vec3d> generators = s->cullBounds(p)->normal_generators;
       ASSERT_FALSE(generators.empty()) << id << " on " << name << " patch " << p;
       EXPECT_GT(dot(meanDirection(generators), normalize(outward)), 0.5)
           << id << " on " << name << " patch " << p;
@@ -302,25 +306,25 @@ TEST(PatchCullBounds, GeneratorsFaceOutwardOnClosedConvexMeshes) {
 // hull shrunk toward its centroid leaves surface points outside.
 TEST(PatchCullBounds, TheChecksRejectFlippedGeneratorsAndAShrunkenHull) {
   for (const char* id : {"acc", "gregory_acc", "pn_triangles", "phong"}) {
-    const Technique& t = technique(id);
+    const techniques::Technique& t = technique(id);
     const bool quads = std::string(id) == "acc" || std::string(id) == "gregory_acc";
-    const BuiltSurface s =
-        buildSurface(t, load(quads ? "opensubdiv/catmark_torus.obj" : "tessbench/tri_torus.obj"),
-                     t.variants()[0]);
+    const techniques::BuiltSurface s = techniques::buildSurface(
+        t, load(quads ? "opensubdiv/catmark_torus.obj" : "tessbench/tri_torus.obj"),
+        t.variants()[0]);
     std::mt19937 rng(2);
     size_t flipped_rejected = 0, shrunk_rejected = 0;
     for (size_t p = 0; p < s->patchCount(); ++p) {
-      PatchCullBounds bounds = *s->cullBounds(p);
+      techniques::PatchCullBounds bounds = *s->cullBounds(p);
       const double size = boxDiagonal(bounds.hull);
       const PatchSamples samples = sample(*s, p, size);
       ASSERT_EQ(checkCone(bounds.normal_generators, samples.normals, rng).violations, 0u);
-      for (Vec3d& g : bounds.normal_generators) g = Vec3d{} - g;
+      for (mesh::Vec3d& g : bounds.normal_generators) g = mesh::Vec3d{} - g;
       if (checkCone(bounds.normal_generators, samples.normals, rng).violations > 0)
         ++flipped_rejected;
-      Vec3d centroid{};
-      for (const Vec3d& h : bounds.hull) centroid = centroid + h;
+      mesh::Vec3d centroid{};
+      for (const mesh::Vec3d& h : bounds.hull) centroid = centroid + h;
       centroid = centroid * (1.0 / double(bounds.hull.size()));
-      for (Vec3d& h : bounds.hull) h = centroid + (h - centroid) * 0.5;
+      for (mesh::Vec3d& h : bounds.hull) h = centroid + (h - centroid) * 0.5;
       if (hullViolations(bounds.hull, samples.points, rng) > 0) ++shrunk_rejected;
     }
     EXPECT_EQ(flipped_rejected, s->patchCount()) << id;

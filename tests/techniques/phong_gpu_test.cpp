@@ -17,10 +17,12 @@
 namespace tb::phong {
 namespace {
 
-const Technique& phong() { return *TechniqueRegistry::instance().find("phong"); }
+const techniques::Technique& phong() {
+  return *techniques::TechniqueRegistry::instance().find("phong");
+}
 
-VariantInfo variant(const std::string& name) {
-  for (const VariantInfo& v : phong().variants()) {
+techniques::VariantInfo variant(const std::string& name) {
+  for (const techniques::VariantInfo& v : phong().variants()) {
     if (v.name == name) return v;
   }
   ADD_FAILURE() << "no variant " << name;
@@ -33,7 +35,7 @@ PhongEdgeTriangle<T> randomEdgeTriangle(std::mt19937& rng) {
   PhongEdgeTriangle<T> tri;
   for (int i = 0; i < 3; ++i) {
     tri.position[i] = {T(coord(rng)), T(coord(rng)), T(coord(rng))};
-    tri.normal[i] = normalize(Vec3T<T>{T(coord(rng)), T(coord(rng)), T(coord(rng))});
+    tri.normal[i] = normalize(mesh::Vec3T<T>{T(coord(rng)), T(coord(rng)), T(coord(rng))});
   }
   for (int e = 0; e < 3; ++e) {
     for (int end = 0; end < 2; ++end) tri.edge_normal[e][end] = tri.normal[kPhongEdgeEnds[e][end]];
@@ -48,7 +50,8 @@ TEST(PhongEdge, AlphaZeroIsLinearAndCornersInterpolate) {
     const auto tri = randomEdgeTriangle<double>(rng);
     const double u = unit(rng), v = unit(rng) * (1 - u);
     const std::array<double, 3> w{u, v, 1 - u - v};
-    const Vec3d flat = tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
+    const mesh::Vec3d flat =
+        tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
     EXPECT_EQ(evaluatePhongEdge(tri, w, 0.0).position, flat);
     for (int corner = 0; corner < 3; ++corner) {
       std::array<double, 3> c{0, 0, 0};
@@ -73,22 +76,23 @@ TEST(PhongEdge, OnEdgesItIsThePapersPhongCurve) {
       std::array<double, 3> w{0, 0, 0};
       w[kPhongEdgeEnds[e][0]] = t;
       w[kPhongEdgeEnds[e][1]] = 1 - t;
-      const Vec3d a = evaluatePhongEdge(tri, w, 0.75).position;
-      const Vec3d b = evaluatePhongInOrder(plain, w, 0.75).position;
+      const mesh::Vec3d a = evaluatePhongEdge(tri, w, 0.75).position;
+      const mesh::Vec3d b = evaluatePhongInOrder(plain, w, 0.75).position;
       EXPECT_LT(length(a - b), 1e-14);
     }
   }
 }
 
 TEST(PhongEdge, TechniqueVariantAlphaZeroMatchesLinearInterpolation) {
-  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
-  VariantInfo flat = variant("edge");
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
+  techniques::VariantInfo flat = variant("edge");
   flat.parameters["alpha"] = 0.0;
-  const auto patches = buildSurface(phong(), mesh, flat);
+  const auto patches = techniques::buildSurface(phong(), mesh, flat);
   for (size_t p = 0; p < patches->patchCount(); p += 7) {
     const auto corners = patches->patchCorners(p);
-    const Vec3d expected = (mesh.positions[corners[0]] * 0.2 + mesh.positions[corners[1]] * 0.3) +
-                           mesh.positions[corners[2]] * 0.5;
+    const mesh::Vec3d expected =
+        (mesh.positions[corners[0]] * 0.2 + mesh.positions[corners[1]] * 0.3) +
+        mesh.positions[corners[2]] * 0.5;
     EXPECT_LT(length(patches->evaluate(p, {0.2, 0.3, 0.5}).position - expected), 1e-14);
   }
 }
@@ -99,8 +103,8 @@ TEST_P(PhongGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
   // Oracle: evaluateFloat at the captured gl_TessCoord bits; the CPU tessellator's counts.
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const std::string& asset : testing::triangleAssets()) {
-    const auto patches =
-        buildSurface(phong(), loadObjFile(testing::assetPath(asset)), variant(GetParam()));
+    const auto patches = techniques::buildSurface(
+        phong(), mesh::loadObjFile(testing::assetPath(asset)), variant(GetParam()));
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {
@@ -126,9 +130,9 @@ TEST(PhongOperations, PlainPhongCountsMatchAHandCount) {
   // Hand count of evaluatePhongInOrder: flat point 9 mul 6 add; per corner: p - p_i 3 add,
   // dot 3 mul 2 add, w·h 1 mul, n·s 3 mul, offset += 3 add => 3 × (7 mul, 8 add); result
   // 3 mul 3 add; normal 9 mul 6 add + normalise (3 mul 2 add, sqrt, div, 3 mul, compare).
-  const auto patches =
-      buildSurface(phong(), loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj")),
-                   variant("alpha0.75"));
+  const auto patches = techniques::buildSurface(
+      phong(), mesh::loadObjFile(testing::assetPath("opensubdiv/loop_icosahedron.obj")),
+      variant("alpha0.75"));
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   EXPECT_EQ(profile->per_vertex.mul, 9u + 21u + 3u + 9u + 6u);
@@ -143,9 +147,10 @@ TEST(PhongOperations, PlainPhongCountsMatchAHandCount) {
 TEST(PhongOperations, EdgeVariantCostsMorePerVertexThanPlainPhong) {
   // Oracle: seed 003 names the cost of the per-edge extension, more shader instructions;
   // the counts are printed for the report.
-  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
-  const auto plain = buildSurface(phong(), mesh, variant("alpha0.75"))->operationProfile(0);
-  const auto edge = buildSurface(phong(), mesh, variant("edge"))->operationProfile(0);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("tessbench/cylinder_seam.obj"));
+  const auto plain =
+      techniques::buildSurface(phong(), mesh, variant("alpha0.75"))->operationProfile(0);
+  const auto edge = techniques::buildSurface(phong(), mesh, variant("edge"))->operationProfile(0);
   ASSERT_TRUE(plain.has_value() && edge.has_value());
   for (const auto& [name, p] : {std::pair{"alpha0.75", *plain}, std::pair{"edge", *edge}}) {
     std::printf(

@@ -22,7 +22,7 @@ PhongTriangle<T> randomTriangle(std::mt19937& rng) {
   PhongTriangle<T> tri;
   for (int i = 0; i < 3; ++i) {
     tri.position[i] = {T(coord(rng)), T(coord(rng)), T(coord(rng))};
-    tri.normal[i] = normalize(Vec3T<T>{T(coord(rng)), T(coord(rng)), T(coord(rng))});
+    tri.normal[i] = normalize(mesh::Vec3T<T>{T(coord(rng)), T(coord(rng)), T(coord(rng))});
   }
   return tri;
 }
@@ -51,7 +51,8 @@ TEST(PhongEval, AlphaZeroIsTheFlatTriangle) {
     double u = unit(rng), v = unit(rng) * (1 - u);
     const std::array<double, 3> w{u, v, 1 - u - v};
     const auto p = evaluatePhong(tri, w, 0.0);
-    const Vec3d flat = tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
+    const mesh::Vec3d flat =
+        tri.position[0] * w[0] + tri.position[1] * w[1] + tri.position[2] * w[2];
     // Equal up to the rounding of a differently ordered three-term sum.
     EXPECT_LT(length(p.position - flat), 1e-15);
   }
@@ -106,16 +107,16 @@ TEST(PhongPatches, RotationOfTheFaceGivesBitwiseEqualPoints) {
   // The technique sums in ascending vertex order, so a rotated face is exact.
   const char* kA = "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 1//1 2//2 3//3\n";
   const char* kB = "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const VariantInfo variant = phong->variants()[0];
-  const auto a = buildSurface(*phong, loadObjText(kA, "a.obj"), variant);
-  const auto b = buildSurface(*phong, loadObjText(kB, "b.obj"), variant);
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const techniques::VariantInfo variant = phong->variants()[0];
+  const auto a = techniques::buildSurface(*phong, mesh::loadObjText(kA, "a.obj"), variant);
+  const auto b = techniques::buildSurface(*phong, mesh::loadObjText(kB, "b.obj"), variant);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> unit(0, 1);
   for (int trial = 0; trial < 500; ++trial) {
     const double u = unit(rng), v = unit(rng) * (1 - u), w = 1 - u - v;
-    const SurfacePoint pa = a->evaluate(0, {u, v, w});
-    const SurfacePoint pb = b->evaluate(0, {v, w, u});
+    const techniques::SurfacePoint pa = a->evaluate(0, {u, v, w});
+    const techniques::SurfacePoint pb = b->evaluate(0, {v, w, u});
     EXPECT_EQ(pa.position, pb.position);
   }
 }
@@ -125,25 +126,25 @@ TEST(PhongPatches, CurvesTowardTheSphereItApproximates) {
   // must lie closer to the sphere than the flat triangle at every interior point.
   const char* kOctant =
       "v 1 0 0\nv 0 1 0\nv 0 0 1\nvn 1 0 0\nvn 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//3\n";
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const auto patches =
-      buildSurface(*phong, loadObjText(kOctant, "octant.obj"), phong->variants()[0]);
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const auto patches = techniques::buildSurface(*phong, mesh::loadObjText(kOctant, "octant.obj"),
+                                                phong->variants()[0]);
   for (int i = 1; i < 10; ++i) {
     for (int j = 1; i + j < 10; ++j) {
       const double u = i / 10.0, v = j / 10.0, w = 1 - u - v;
       const double curved = std::fabs(length(patches->evaluate(0, {u, v, w}).position) - 1);
-      const double flat = std::fabs(length(Vec3d{u, v, w}) - 1);
+      const double flat = std::fabs(length(mesh::Vec3d{u, v, w}) - 1);
       EXPECT_LT(curved, flat) << u << " " << v;
     }
   }
 }
 
 TEST(PhongPatches, PolygonsAreFanTriangulatedWithAWarning) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = buildSurface(*phong, mesh, phong->variants()[0]);
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const auto patches = techniques::buildSurface(*phong, mesh, phong->variants()[0]);
   EXPECT_EQ(patches->patchCount(), 12u);
-  EXPECT_EQ(patches->patchDomain(0), PatchDomain::kTriangle);
+  EXPECT_EQ(patches->patchDomain(0), techniques::PatchDomain::kTriangle);
   ASSERT_FALSE(patches->warnings().empty());
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
   EXPECT_EQ(patches->sourceFace(11), 5u);
@@ -163,7 +164,7 @@ TEST(PhongEval, CountingScalarGivesTheSameResultAndExactOperationCounts) {
   //   offset*α (3 mul), flat - offset (3 add)
   //   normal: 3 vec3 scalings (9 mul), 2 vec3 adds (6 add), normalize:
   //           dot (3 mul, 2 add), sqrt, 1 compare, 1 div, vec3 scale (3 mul)
-  using C = CountingScalar<float>;
+  using C = techniques::CountingScalar<float>;
   PhongTriangle<C> tri;
   PhongTriangle<float> plain;
   const float pos[3][3] = {{0, 0, 0}, {1, 0, 0.2f}, {0, 1, 0.1f}};
@@ -176,9 +177,9 @@ TEST(PhongEval, CountingScalarGivesTheSameResultAndExactOperationCounts) {
       plain.normal[i][k] = nrm[i][k];
     }
   }
-  resetOperationCounts();
+  techniques::resetOperationCounts();
   const auto counted = evaluatePhongInOrder<C>(tri, {C(0.2f), C(0.3f), C(0.5f)}, C(0.75f));
-  const OperationCounts ops = operationCounts();
+  const techniques::OperationCounts ops = techniques::operationCounts();
   const auto reference = evaluatePhongInOrder<float>(plain, {0.2f, 0.3f, 0.5f}, 0.75f);
   for (int k = 0; k < 3; ++k) EXPECT_EQ(counted.position[k].value(), reference.position[k]);
   EXPECT_EQ(ops.mul, 9u + 3 * 7 + 3 + 9 + 3 + 3);

@@ -25,7 +25,8 @@ struct GpuAgreement {
   size_t positions_not_bitwise = 0;  // +0 and -0 count as equal
 };
 
-inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatches& patches,
+inline GpuAgreement compareGpuWithFloat(gpu::Context& context,
+                                        const techniques::SurfacePatches& patches,
                                         tess::Spacing spacing, float level) {
   const auto programs = patches.gpuPrograms();
   const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front();
@@ -44,15 +45,15 @@ inline GpuAgreement compareGpuWithFloat(gpu::Context& context, const SurfacePatc
       patches.patchCount() *
       tess::tessellate(tess::Domain::kTriangle, cpu_spacing, levels).points.size();
   for (const gpu::CapturedVertex& v : capture.vertices) {
-    const SurfacePointF cpu = patches.evaluateFloat(v.patch, v.coord);
+    const techniques::SurfacePointF cpu = patches.evaluateFloat(v.patch, v.coord);
     ++result.vertices;
     bool equal = true;
     for (int k = 0; k < 3; ++k) {
       result.max_position_ulp =
-          std::max(result.max_position_ulp, ulpDistance(v.position[k], cpu.position[k]));
+          std::max(result.max_position_ulp, mesh::ulpDistance(v.position[k], cpu.position[k]));
       result.max_normal_ulp =
-          std::max(result.max_normal_ulp, ulpDistance(v.normal[k], cpu.normal[k]));
-      equal = equal && ulpDistance(v.position[k], cpu.position[k]) == 0;
+          std::max(result.max_normal_ulp, mesh::ulpDistance(v.normal[k], cpu.normal[k]));
+      equal = equal && mesh::ulpDistance(v.position[k], cpu.position[k]) == 0;
     }
     result.positions_not_bitwise += equal ? 0 : 1;
   }

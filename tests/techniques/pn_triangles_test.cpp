@@ -19,10 +19,12 @@
 namespace tb::pn_triangles {
 namespace {
 
-const Technique& pn() { return *TechniqueRegistry::instance().find("pn_triangles"); }
+const techniques::Technique& pn() {
+  return *techniques::TechniqueRegistry::instance().find("pn_triangles");
+}
 
-VariantInfo variant(const std::string& name) {
-  for (const VariantInfo& v : pn().variants()) {
+techniques::VariantInfo variant(const std::string& name) {
+  for (const techniques::VariantInfo& v : pn().variants()) {
     if (v.name == name) return v;
   }
   ADD_FAILURE() << "no variant " << name;
@@ -34,25 +36,25 @@ const char* kCurved =
 
 TEST(PnTriangles, VariantsInTheIssueOrder) {
   std::vector<std::string> names;
-  for (const VariantInfo& v : pn().variants()) names.push_back(v.name);
+  for (const techniques::VariantInfo& v : pn().variants()) names.push_back(v.name);
   EXPECT_EQ(names, (std::vector<std::string>{"pn", "geometry_normals", "boundary_flags", "aen",
                                              "rounding"}));
 }
 
 TEST(PnTriangles, InterpolatesCornersAndCornerNormalsExactly) {
   // Oracle: paper §3, b300 = P1 and n200 = N1.
-  const Mesh mesh = loadObjText(kCurved, "curved.obj");
-  for (const VariantInfo& v : pn().variants()) {
-    const auto patches = buildSurface(pn(), mesh, v);
+  const mesh::Mesh mesh = mesh::loadObjText(kCurved, "curved.obj");
+  for (const techniques::VariantInfo& v : pn().variants()) {
+    const auto patches = techniques::buildSurface(pn(), mesh, v);
     for (int corner = 0; corner < 3; ++corner) {
-      DomainCoord coord{0, 0, 0};
+      techniques::DomainCoord coord{0, 0, 0};
       coord[corner] = 1;
       tess::DomainPoint coord_f{0, 0, 0};
       coord_f[corner] = 1;
-      const SurfacePoint p = patches->evaluate(0, coord);
-      const SurfacePointF pf = patches->evaluateFloat(0, coord_f);
-      const Vec3d expected = mesh.positions[mesh.corner_positions[corner]];
-      const Vec3d normal = normalize(mesh.normals[mesh.corner_normals[corner]]);
+      const techniques::SurfacePoint p = patches->evaluate(0, coord);
+      const techniques::SurfacePointF pf = patches->evaluateFloat(0, coord_f);
+      const mesh::Vec3d expected = mesh.positions[mesh.corner_positions[corner]];
+      const mesh::Vec3d normal = normalize(mesh.normals[mesh.corner_normals[corner]]);
       EXPECT_EQ(p.position, expected) << v.name;
       EXPECT_EQ(pf.position, vecCast<float>(expected)) << v.name;
       EXPECT_LT(length(p.normal - normal), 1e-15) << v.name;
@@ -64,16 +66,16 @@ TEST(PnTriangles, InterpolatesCornersAndCornerNormalsExactly) {
 TEST(PnTriangles, FlatTriangleWithEqualNormalsStaysFlat) {
   // Oracle: w_ij = 0 when every normal is the plane's, so all control points lie in it
   // (paper §3.1) and the patch is a reparametrisation of the flat triangle.
-  const Mesh mesh = loadObjText(
+  const mesh::Mesh mesh = mesh::loadObjText(
       "v 0 0 0.5\nv 2 0 0.5\nv 0.25 1.75 0.5\nvn 0 0 1\nf 1//1 2//1 3//1\n", "flat.obj");
-  for (const VariantInfo& v : pn().variants()) {
-    const auto patches = buildSurface(pn(), mesh, v);
+  for (const techniques::VariantInfo& v : pn().variants()) {
+    const auto patches = techniques::buildSurface(pn(), mesh, v);
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; i + j <= 8; ++j) {
         const double u = i / 8.0, w = j / 8.0;
-        const SurfacePoint p = patches->evaluate(0, {u, w, 1 - u - w});
+        const techniques::SurfacePoint p = patches->evaluate(0, {u, w, 1 - u - w});
         EXPECT_NEAR(p.position.z, 0.5, 1e-15) << v.name;
-        EXPECT_NEAR(length(p.normal - Vec3d{0, 0, 1}), 0, 1e-15) << v.name;
+        EXPECT_NEAR(length(p.normal - mesh::Vec3d{0, 0, 1}), 0, 1e-15) << v.name;
         // Inside the triangle: barycentric coordinates of the point are all >= 0.
         const double y = p.position.y, x = p.position.x;
         EXPECT_GE(y, -1e-12);
@@ -88,15 +90,15 @@ TEST(PnTriangles, CurvedEdgeBulgesByTheHandComputedControlPoints) {
   // Oracle: the edge midpoint of a cubic Bézier is (b300 + 3 b210 + 3 b120 + b030) / 8, with
   // b210 = (2 P1 + P2 - w12 N1) / 3 computed by hand: P1 = 0, P2 = (1,0,0), N1 = (0,0,1),
   // N2 = (3, 0, 4) / 5 => w12 = 0, w21 = -3/5 => b120 = (2 P2 + P1 - w21 N2) / 3.
-  const Mesh mesh =
-      loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
-  const auto patches = buildSurface(pn(), mesh, pn().variants()[0]);
-  const Vec3d b210{1.0 / 3, 0, 0};
-  const Vec3d n2 = normalize(Vec3d{3, 0, 4});
-  const double w21 = dot(Vec3d{-1, 0, 0}, n2);
-  const Vec3d b120 = (Vec3d{2, 0, 0} - n2 * w21) * (1.0 / 3);
-  const Vec3d expected = (b210 * 3.0 + b120 * 3.0 + Vec3d{1, 0, 0}) * (1.0 / 8);
-  const SurfacePoint p = patches->evaluate(0, {0.5, 0.5, 0});
+  const mesh::Mesh mesh = mesh::loadObjText(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 3 0 4\nf 1//1 2//2 3//1\n", "edge.obj");
+  const auto patches = techniques::buildSurface(pn(), mesh, pn().variants()[0]);
+  const mesh::Vec3d b210{1.0 / 3, 0, 0};
+  const mesh::Vec3d n2 = normalize(mesh::Vec3d{3, 0, 4});
+  const double w21 = dot(mesh::Vec3d{-1, 0, 0}, n2);
+  const mesh::Vec3d b120 = (mesh::Vec3d{2, 0, 0} - n2 * w21) * (1.0 / 3);
+  const mesh::Vec3d expected = (b210 * 3.0 + b120 * 3.0 + mesh::Vec3d{1, 0, 0}) * (1.0 / 8);
+  const techniques::SurfacePoint p = patches->evaluate(0, {0.5, 0.5, 0});
   EXPECT_LT(length(p.position - expected), 1e-15);
   EXPECT_GT(p.position.z, 0.01);
 }
@@ -106,8 +108,9 @@ TEST(PnTriangles, RotatingTheFaceGivesBitwiseEqualFloatPoints) {
   // set; the same face written from another corner must give the same bits.
   const char* kB =
       "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
-  const auto a = buildSurface(pn(), loadObjText(kCurved, "a.obj"), pn().variants()[0]);
-  const auto b = buildSurface(pn(), loadObjText(kB, "b.obj"), pn().variants()[0]);
+  const auto a =
+      techniques::buildSurface(pn(), mesh::loadObjText(kCurved, "a.obj"), pn().variants()[0]);
+  const auto b = techniques::buildSurface(pn(), mesh::loadObjText(kB, "b.obj"), pn().variants()[0]);
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(0, 1);
   for (int trial = 0; trial < 500; ++trial) {
@@ -118,11 +121,12 @@ TEST(PnTriangles, RotatingTheFaceGivesBitwiseEqualFloatPoints) {
 
 TEST(PnTriangles, FloatFollowsDouble) {
   // Oracle: the double evaluation of the same records; float differs by rounding only.
-  const auto patches = buildSurface(pn(), loadObjText(kCurved, "c.obj"), variant("aen"));
+  const auto patches =
+      techniques::buildSurface(pn(), mesh::loadObjText(kCurved, "c.obj"), variant("aen"));
   for (int i = 0; i <= 10; ++i) {
     const float u = i / 10.0f, v = (1 - u) / 2, w = 1 - u - v;
-    const SurfacePoint d = patches->evaluate(0, {u, v, w});
-    const SurfacePointF f = patches->evaluateFloat(0, {u, v, w});
+    const techniques::SurfacePoint d = patches->evaluate(0, {u, v, w});
+    const techniques::SurfacePointF f = patches->evaluateFloat(0, {u, v, w});
     EXPECT_LT(length(vecCast<double>(f.position) - d.position), 1e-6);
     EXPECT_LT(length(vecCast<double>(f.normal) - d.normal), 1e-6);
   }
@@ -131,10 +135,10 @@ TEST(PnTriangles, FloatFollowsDouble) {
 TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
   // Hand count: a cube has 12 hard edges (split normals) and 6 face diagonals (normals
   // agree); every corner's geometry normal is (±1, ±1, ±1)/√3.
-  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
-  TriangleRecordOptions options;
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
+  techniques::TriangleRecordOptions options;
   options.geometry_normals = true;
-  const TriangleRecords build = buildTriangleRecords(mesh, options);
+  const techniques::TriangleRecords build = techniques::buildTriangleRecords(mesh, options);
   EXPECT_EQ(build.split_edges, 12u);
   EXPECT_EQ(build.boundary_edges, 0u);
   EXPECT_EQ(build.geometry_normal_count, 8u);
@@ -143,9 +147,10 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
       EXPECT_NEAR(std::fabs(build.normals[i][k]), 1 / std::sqrt(3.0), 1e-15);
   }
   size_t flagged_edges = 0;
-  for (const TriangleRecord& r : build.records) {
+  for (const techniques::TriangleRecord& r : build.records) {
     for (int e = 0; e < 3; ++e) {
-      flagged_edges += ((r.flags[kEdgeEnds[e][0]] & r.flags[kEdgeEnds[e][1]]) >> e) & 1u;
+      flagged_edges +=
+          ((r.flags[techniques::kEdgeEnds[e][0]] & r.flags[techniques::kEdgeEnds[e][1]]) >> e) & 1u;
     }
   }
   EXPECT_EQ(flagged_edges, 24u);  // 12 edges, seen from both faces
@@ -153,11 +158,13 @@ TEST(PnTriangles, FlatCubeFlagsEverySplitEdgeAndMergesNormals) {
 
 TEST(PnTriangles, BoundaryFlagsStraightenUnsharedEdges) {
   // Oracle: seed 003, an unshared edge with boundary flags is the straight segment.
-  const auto patches = buildSurface(pn(), loadObjText(kCurved, "b.obj"), variant("boundary_flags"));
-  const auto plain = buildSurface(pn(), loadObjText(kCurved, "b.obj"), variant("pn"));
-  const SurfacePoint p = patches->evaluate(0, {0.25, 0.75, 0});
-  const Mesh mesh = loadObjText(kCurved, "b.obj");
-  const Vec3d linear = mesh.positions[0] * 0.25 + mesh.positions[1] * 0.75;
+  const auto patches = techniques::buildSurface(pn(), mesh::loadObjText(kCurved, "b.obj"),
+                                                variant("boundary_flags"));
+  const auto plain =
+      techniques::buildSurface(pn(), mesh::loadObjText(kCurved, "b.obj"), variant("pn"));
+  const techniques::SurfacePoint p = patches->evaluate(0, {0.25, 0.75, 0});
+  const mesh::Mesh mesh = mesh::loadObjText(kCurved, "b.obj");
+  const mesh::Vec3d linear = mesh.positions[0] * 0.25 + mesh.positions[1] * 0.75;
   EXPECT_LT(length(p.position - linear), 1e-15);
   EXPECT_GT(length(plain->evaluate(0, {0.25, 0.75, 0}).position - linear), 1e-3);
 }
@@ -171,10 +178,10 @@ TEST(PnTriangles, BoundaryFlagsPutTheTJunctionVertexOnTheLongEdge) {
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0.5 0\nv 2 0 0\nv 2 1 0\n"
       "vn -1 -0.5 2\nvn 0 -0.5 2\nvn 0 0.5 2\nvn -1 0.5 2\nvn 0 0 1\nvn 1 -0.5 2\nvn 1 0.5 2\n"
       "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\nf 2//2 6//6 5//5\nf 5//5 6//6 7//7\nf 5//5 7//7 3//3\n";
-  const Mesh mesh = loadObjText(kTJunction, "tjunction.obj");
-  const Vec3d t_vertex = mesh.positions[4];
-  const auto flagged = buildSurface(pn(), mesh, variant("boundary_flags"));
-  const auto plain = buildSurface(pn(), mesh, variant("pn"));
+  const mesh::Mesh mesh = mesh::loadObjText(kTJunction, "tjunction.obj");
+  const mesh::Vec3d t_vertex = mesh.positions[4];
+  const auto flagged = techniques::buildSurface(pn(), mesh, variant("boundary_flags"));
+  const auto plain = techniques::buildSurface(pn(), mesh, variant("pn"));
   // Face 0 = (v1, v2, v3): edge 2-3 is corners 1-2.
   EXPECT_LT(length(flagged->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 1e-15);
   EXPECT_GT(length(plain->evaluate(0, {0, 0.5, 0.5}).position - t_vertex), 0.01);
@@ -185,16 +192,17 @@ TEST(PnTriangles, BoundaryFlagsPutTheTJunctionVertexOnTheLongEdge) {
 TEST(PnTriangles, RoundingOnlyFlattensEdges) {
   // Seed 003's rounding scales w_ij by a factor in [0, 1]: every edge point moves toward
   // the straight edge, none away, and the nearly flat edges of this triangle move.
-  const Mesh mesh = loadObjText(kCurved, "r.obj");
-  const auto rounded = buildSurface(pn(), mesh, variant("rounding"));
-  const auto full = buildSurface(pn(), mesh, variant("geometry_normals"));
+  const mesh::Mesh mesh = mesh::loadObjText(kCurved, "r.obj");
+  const auto rounded = techniques::buildSurface(pn(), mesh, variant("rounding"));
+  const auto full = techniques::buildSurface(pn(), mesh, variant("geometry_normals"));
   double moved = 0;
   for (int e = 0; e < 3; ++e) {
     for (int i = 1; i < 8; ++i) {
-      DomainCoord c{0, 0, 0};
+      techniques::DomainCoord c{0, 0, 0};
       c[e] = i / 8.0;
       c[(e + 1) % 3] = 1 - i / 8.0;
-      const Vec3d linear = mesh.positions[e] * c[e] + mesh.positions[(e + 1) % 3] * c[(e + 1) % 3];
+      const mesh::Vec3d linear =
+          mesh.positions[e] * c[e] + mesh.positions[(e + 1) % 3] * c[(e + 1) % 3];
       const double d_rounded = length(rounded->evaluate(0, c).position - linear);
       const double d_full = length(full->evaluate(0, c).position - linear);
       EXPECT_LE(d_rounded, d_full + 1e-15);
@@ -205,27 +213,30 @@ TEST(PnTriangles, RoundingOnlyFlattensEdges) {
 }
 
 TEST(PnTriangles, PolygonsAreFanTriangulatedAndMissingNormalsComputed) {
-  const Mesh mesh = loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
-  const auto patches = buildSurface(pn(), mesh, pn().variants()[0]);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
+  const auto patches = techniques::buildSurface(pn(), mesh, pn().variants()[0]);
   EXPECT_EQ(patches->patchCount(), 12u);
   ASSERT_EQ(patches->warnings().size(), 1u);  // catmark_cube.obj has its own normals
   EXPECT_NE(patches->warnings()[0].find("fan-triangulated"), std::string::npos);
-  const auto torus = buildSurface(pn(), loadObjFile(testing::assetPath("tessbench/tri_torus.obj")),
-                                  pn().variants()[0]);
+  const auto torus = techniques::buildSurface(
+      pn(), mesh::loadObjFile(testing::assetPath("tessbench/tri_torus.obj")), pn().variants()[0]);
   ASSERT_EQ(torus->warnings().size(), 1u);
   EXPECT_NE(torus->warnings()[0].find("normals were computed"), std::string::npos);
 }
 
 TEST(PnTriangles, MeshWithoutNormalsIsRejectedWithAReason) {
-  LoadOptions options;
+  mesh::LoadOptions options;
   options.compute_missing_normals = false;
-  const Mesh mesh = loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bare.obj", options);
-  EXPECT_THROW(buildSurface(pn(), mesh, pn().variants()[0]), UnsupportedInput);
+  const mesh::Mesh mesh =
+      mesh::loadObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bare.obj", options);
+  EXPECT_THROW(techniques::buildSurface(pn(), mesh, pn().variants()[0]),
+               techniques::UnsupportedInput);
 }
 
 TEST(PnTriangles, OperationCountsMatchAHandCount) {
   // Hand count of pn_eval.h evaluateControl (the TES).
-  const auto patches = buildSurface(pn(), loadObjText(kCurved, "c.obj"), pn().variants()[0]);
+  const auto patches =
+      techniques::buildSurface(pn(), mesh::loadObjText(kCurved, "c.obj"), pn().variants()[0]);
   const auto profile = patches->operationProfile(0);
   ASSERT_TRUE(profile.has_value());
   // Position: 6 (weights) + corners (3 + 9 mul, 6 add) + edges 3 × (6 + 1 + 3 mul, 6 add)
@@ -243,10 +254,10 @@ TEST(PnTriangles, VariantsCostOnlyInTheSetUp) {
   // Oracle: the variants change how the control points are built (TCS), never the patch
   // evaluation (TES); PN-AEN builds every edge point twice, so its set-up costs more.
   // flat_cube face 0 has two hard (flagged) edges out of three.
-  const Mesh mesh = loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
-  std::map<std::string, OperationProfile> profiles;
-  for (const VariantInfo& v : pn().variants()) {
-    const auto profile = buildSurface(pn(), mesh, v)->operationProfile(0);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("tessbench/flat_cube.obj"));
+  std::map<std::string, techniques::OperationProfile> profiles;
+  for (const techniques::VariantInfo& v : pn().variants()) {
+    const auto profile = techniques::buildSurface(pn(), mesh, v)->operationProfile(0);
     ASSERT_TRUE(profile.has_value());
     profiles[v.name] = *profile;
     std::printf(
@@ -283,8 +294,8 @@ TEST_P(PnGpu, MatchesEvaluateFloatWithin4UlpOnEveryTriangleAsset) {
   // point count.
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const std::string& asset : testing::triangleAssets()) {
-    const Mesh mesh = loadObjFile(testing::assetPath(asset));
-    const auto patches = buildSurface(pn(), mesh, variant(GetParam()));
+    const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(asset));
+    const auto patches = techniques::buildSurface(pn(), mesh, variant(GetParam()));
     for (const auto& [spacing, level] :
          {std::pair{tess::Spacing::kInteger, 1.0f}, std::pair{tess::Spacing::kFractionalOdd, 7.3f},
           std::pair{tess::Spacing::kInteger, 16.0f}}) {

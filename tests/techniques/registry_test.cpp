@@ -7,45 +7,47 @@ namespace tb {
 namespace {
 
 TEST(Registry, PhongRegistersItselfWithCompleteInfo) {
-  const Technique* phong = TechniqueRegistry::instance().find("phong");
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
   ASSERT_NE(phong, nullptr);
-  EXPECT_EQ(phong->info().family, TechniqueFamily::kSurface);
+  EXPECT_EQ(phong->info().family, techniques::TechniqueFamily::kSurface);
   EXPECT_FALSE(phong->info().title.empty());
   EXPECT_NE(phong->info().citation.find("Boubekeur"), std::string::npos);
   EXPECT_EQ(phong->variants().size(), 5u);  // four α values and `edge`
-  EXPECT_EQ(TechniqueRegistry::instance().find("no_such_technique"), nullptr);
+  EXPECT_EQ(techniques::TechniqueRegistry::instance().find("no_such_technique"), nullptr);
 }
 
 TEST(Registry, ListingIsSortedAndDuplicatesAreRefused) {
-  const auto all = TechniqueRegistry::instance().all();
+  const auto all = techniques::TechniqueRegistry::instance().all();
   for (size_t i = 1; i < all.size(); ++i) EXPECT_LT(all[i - 1]->info().id, all[i]->info().id);
-  class Dummy final : public Technique {
+  class Dummy final : public techniques::Technique {
    public:
-    const TechniqueInfo& info() const override {
-      static const TechniqueInfo kInfo{"phong", TechniqueFamily::kSurface, "", "", ""};
+    const techniques::TechniqueInfo& info() const override {
+      static const techniques::TechniqueInfo kInfo{"phong", techniques::TechniqueFamily::kSurface,
+                                                   "", "", ""};
       return kInfo;
     }
-    std::vector<VariantInfo> variants() const override { return {}; }
-    std::string checkSupport(const Mesh&) const override { return {}; }
-    std::unique_ptr<TechniqueInstance> build(const TechniqueInput&,
-                                             const VariantInfo&) const override {
+    std::vector<techniques::VariantInfo> variants() const override { return {}; }
+    std::string checkSupport(const mesh::Mesh&) const override { return {}; }
+    std::unique_ptr<techniques::TechniqueInstance> build(
+        const techniques::TechniqueInput&, const techniques::VariantInfo&) const override {
       return nullptr;
     }
   };
-  EXPECT_FALSE(TechniqueRegistry::instance().add(std::make_unique<Dummy>()));
+  EXPECT_FALSE(techniques::TechniqueRegistry::instance().add(std::make_unique<Dummy>()));
 }
 
 TEST(Registry, LoadsAnOutOfTreePlugin) {
-  ASSERT_EQ(TechniqueRegistry::instance().find("example_flat"), nullptr);
-  loadPlugin(TB_EXAMPLE_PLUGIN);
-  const Technique* flat = TechniqueRegistry::instance().find("example_flat");
+  ASSERT_EQ(techniques::TechniqueRegistry::instance().find("example_flat"), nullptr);
+  techniques::loadPlugin(TB_EXAMPLE_PLUGIN);
+  const techniques::Technique* flat =
+      techniques::TechniqueRegistry::instance().find("example_flat");
   ASSERT_NE(flat, nullptr);
   EXPECT_EQ(flat->info().title, "Flat triangles (example plug-in)");
 }
 
 std::vector<std::string> registeredIds() {
   std::vector<std::string> ids;
-  for (const Technique* technique : TechniqueRegistry::instance().all()) {
+  for (const techniques::Technique* technique : techniques::TechniqueRegistry::instance().all()) {
     ids.push_back(technique->info().id);
   }
   return ids;
@@ -53,7 +55,7 @@ std::vector<std::string> registeredIds() {
 
 std::string loadError(const std::string& path) {
   try {
-    loadPlugin(path);
+    techniques::loadPlugin(path);
   } catch (const std::runtime_error& error) {
     return error.what();
   }
@@ -87,7 +89,8 @@ TEST(Registry, ALibraryWithoutTheEntryPointsIsNotAPlugin) {
 
 // Loading the same plug-in twice: the second finds its id taken and adds nothing.
 TEST(Registry, APluginWhoseIdIsTakenAddsNothing) {
-  if (TechniqueRegistry::instance().find("example_flat") == nullptr) loadPlugin(TB_EXAMPLE_PLUGIN);
+  if (techniques::TechniqueRegistry::instance().find("example_flat") == nullptr)
+    techniques::loadPlugin(TB_EXAMPLE_PLUGIN);
   const std::vector<std::string> before = registeredIds();
   const std::string error = loadError(TB_EXAMPLE_PLUGIN);
   EXPECT_NE(error.find("technique id 'example_flat' is already registered; nothing was registered"),
@@ -98,7 +101,7 @@ TEST(Registry, APluginWhoseIdIsTakenAddsNothing) {
 
 TEST(Registry, BadPluginPathNamesTheFile) {
   try {
-    loadPlugin("/nonexistent/plugin.so");
+    techniques::loadPlugin("/nonexistent/plugin.so");
     FAIL() << "expected an error";
   } catch (const std::runtime_error& error) {
     EXPECT_EQ(std::string(error.what()).rfind("/nonexistent/plugin.so: ", 0), 0u) << error.what();

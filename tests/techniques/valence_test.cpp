@@ -45,31 +45,31 @@ std::string domeObj(int valence) {
   return obj;
 }
 
-Mesh pole64() { return loadObjFile(testing::assetPath("full_suite/pole64.obj")); }
+mesh::Mesh pole64() { return mesh::loadObjFile(testing::assetPath("full_suite/pole64.obj")); }
 
-VariantInfo variantOf(const Technique& technique, const std::string& name) {
-  for (const VariantInfo& v : technique.variants()) {
+techniques::VariantInfo variantOf(const techniques::Technique& technique, const std::string& name) {
+  for (const techniques::VariantInfo& v : technique.variants()) {
     if (v.name == name) return v;
   }
   ADD_FAILURE() << technique.info().id << " has no variant " << name;
   return {};
 }
 
-double diagonal(const Mesh& mesh) {
-  Vec3d lo = mesh.positions.front(), hi = lo;
-  for (const Vec3d& p : mesh.positions) {
+double diagonal(const mesh::Mesh& mesh) {
+  mesh::Vec3d lo = mesh.positions.front(), hi = lo;
+  for (const mesh::Vec3d& p : mesh.positions) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   return length(hi - lo);
 }
 
 TEST(Valence, Pole64AssetHasOnePoleOfValence64) {
-  const Mesh mesh = pole64();
-  const Topology topology = buildTopology(mesh);
+  const mesh::Mesh mesh = pole64();
+  const mesh::Topology topology = mesh::buildTopology(mesh);
   EXPECT_EQ(mesh.faceCount(), 64u);
   EXPECT_EQ(topology.valence[0], 64u);
   // domeObj is the same construction (the asset is printed with 6 decimals).
-  const Mesh dome = loadObjText(domeObj(64), "dome64.obj");
+  const mesh::Mesh dome = mesh::loadObjText(domeObj(64), "dome64.obj");
   ASSERT_EQ(dome.positions.size(), mesh.positions.size());
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
     EXPECT_LT(length(dome.positions[v] - mesh.positions[v]), 1e-6) << "vertex " << v;
@@ -94,16 +94,17 @@ struct PoleFigures {
   size_t patches = 0;
 };
 
-PoleFigures nearThePole(const Technique& technique, const std::string& variant, const Mesh& mesh) {
+PoleFigures nearThePole(const techniques::Technique& technique, const std::string& variant,
+                        const mesh::Mesh& mesh) {
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
-  const auto patches = buildSurface(technique, mesh, variantOf(technique, variant));
+  const auto patches = techniques::buildSurface(technique, mesh, variantOf(technique, variant));
   const double diag = diagonal(mesh);
   std::vector<size_t> caps;  // in order around the pole (the file's order)
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.facePositions(f)[0] == 0) caps.push_back(f);
   }
   constexpr int kSamples = 65;
-  std::vector<std::vector<Vec3d>> samples(caps.size());
+  std::vector<std::vector<mesh::Vec3d>> samples(caps.size());
   for (size_t c = 0; c < caps.size(); ++c) {
     const ref::LimitFace face = limit.face(caps[c]);
     for (int i = 0; i < kSamples; ++i) {
@@ -120,8 +121,8 @@ PoleFigures nearThePole(const Technique& technique, const std::string& variant, 
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; j <= 8; ++j) {
         const double u = i / 8.0, v = j / 8.0;
-        const SurfacePoint p = patches->evaluate(f, {u, v, 0});
-        const SurfacePointF q = patches->evaluateFloat(f, {float(u), float(v)});
+        const techniques::SurfacePoint p = patches->evaluate(f, {u, v, 0});
+        const techniques::SurfacePointF q = patches->evaluateFloat(f, {float(u), float(v)});
         EXPECT_TRUE(std::isfinite(p.position.x) && std::isfinite(p.position.y) &&
                     std::isfinite(p.position.z) && std::isfinite(p.normal.x))
             << technique.info().id << " face " << f;
@@ -131,7 +132,8 @@ PoleFigures nearThePole(const Technique& technique, const std::string& variant, 
             std::max(out.float_vs_double, length(vecCast<double>(q.position) - p.position) / diag);
         double nearest = INFINITY;
         for (size_t n : {(c + caps.size() - 1) % caps.size(), c, (c + 1) % caps.size()}) {
-          for (const Vec3d& s : samples[n]) nearest = std::min(nearest, length(s - p.position));
+          for (const mesh::Vec3d& s : samples[n])
+            nearest = std::min(nearest, length(s - p.position));
         }
         out.geometric = std::max(out.geometric, nearest / diag);
       }
@@ -145,16 +147,16 @@ PoleFigures nearThePole(const Technique& technique, const std::string& variant, 
 TEST(Valence, Valence64And256BuildAndStayNearTheBfrLimitAtThePole) {
   struct Case {
     const char* label;
-    Mesh mesh;
+    mesh::Mesh mesh;
     double geometric_bound;  // of the diagonal; measured 7.3e-3 / 8.6e-3 and 1.2e-2 / 1.2e-2
   };
   const Case cases[] = {{"pole64.obj", pole64(), 1.5e-2},
-                        {"dome256", loadObjText(domeObj(256), "dome256.obj"), 2.5e-2}};
+                        {"dome256", mesh::loadObjText(domeObj(256), "dome256.obj"), 2.5e-2}};
   const acc::AccTechnique acc_technique;
   const gregory_acc::GregoryAccTechnique gregory;
   for (const Case& c : cases) {
     for (const auto& [technique, variant] :
-         {std::pair<const Technique*, const char*>{&acc_technique, "default"},
+         {std::pair<const techniques::Technique*, const char*>{&acc_technique, "default"},
           {&gregory, "edge_symmetric"}}) {
       const PoleFigures f = nearThePole(*technique, variant, c.mesh);
       std::printf("[valence] %-10s %-11s %3zu pole patches: max / diagonal: geometric %.3e, "
@@ -182,16 +184,16 @@ constexpr LevelCase kLevels[] = {{1.0f, tess::Spacing::kInteger},
 // Every GPU program's capture against evaluateFloat at the captured coordinates.
 TEST(ValenceGpu, Pole64CaptureEqualsTheCpuFloatTwin) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const Mesh mesh = pole64();
+  const mesh::Mesh mesh = pole64();
   const acc::AccTechnique acc_technique;
   const gregory_acc::GregoryAccTechnique gregory;
   for (const auto& [technique, variant] :
-       {std::pair<const Technique*, const char*>{&acc_technique, "default"},
+       {std::pair<const techniques::Technique*, const char*>{&acc_technique, "default"},
         {&acc_technique, "symmetric_nofma"},
         {&acc_technique, "no_tangent"},
         {&gregory, "edge_symmetric"},
         {&gregory, "exact_tangents"}}) {
-    const auto patches = buildSurface(*technique, mesh, variantOf(*technique, variant));
+    const auto patches = techniques::buildSurface(*technique, mesh, variantOf(*technique, variant));
     uint64_t worst = 0;
     double worst_normal = 0;
     size_t vertices = 0;
@@ -206,8 +208,8 @@ TEST(ValenceGpu, Pole64CaptureEqualsTheCpuFloatTwin) {
         const gpu::PatchProgramCapture capture =
             gpu::runPatchProgram(context, program, levels, options);
         for (const gpu::CapturedVertex& v : capture.vertices) {
-          const SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
-          worst = std::max(worst, maxUlpDistance(cpu.position, v.position));
+          const techniques::SurfacePointF cpu = patches->evaluateFloat(v.patch, v.coord);
+          worst = std::max(worst, mesh::maxUlpDistance(cpu.position, v.position));
           worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
           ++vertices;
         }
@@ -228,21 +230,23 @@ TEST(ValenceGpu, Pole64CaptureEqualsTheCpuFloatTwin) {
 // Symmetric variants: bitwise watertight on the CPU float twin and on the device,
 // around both poles and everywhere else on the asset.
 TEST(ValenceGpu, SymmetricVariantsStayBitwiseWatertightAroundThePole) {
-  const Mesh mesh = pole64();
+  const mesh::Mesh mesh = pole64();
   const acc::AccTechnique acc_technique;
   const gregory_acc::GregoryAccTechnique gregory;
   std::string skip;
   gpu::Context* context = gpu::testing::sharedContext(&skip);
   for (const auto& [technique, variant] :
-       {std::pair<const Technique*, const char*>{&acc_technique, "default"},
+       {std::pair<const techniques::Technique*, const char*>{&acc_technique, "default"},
         {&acc_technique, "symmetric_nofma"},
         {&acc_technique, "symmetric_edges"},
         {&gregory, "edge_symmetric"}}) {
-    const auto patches = buildSurface(*technique, mesh, variantOf(*technique, variant));
+    const auto patches = techniques::buildSurface(*technique, mesh, variantOf(*technique, variant));
     for (const LevelCase& lc : kLevels) {
-      for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
-        if (backend == CrackBackend::kGpu && context == nullptr) continue;
-        const CrackFigures f = measureCracks(*patches, lc.spacing, lc.level, backend, context);
+      for (measures::CrackBackend backend :
+           {measures::CrackBackend::kCpuFloat, measures::CrackBackend::kGpu}) {
+        if (backend == measures::CrackBackend::kGpu && context == nullptr) continue;
+        const measures::CrackFigures f =
+            measures::measureCracks(*patches, lc.spacing, lc.level, backend, context);
         std::printf("[valence cracks] pole64 %-11s %-15s level %4.1f %-9s: %llu pairs, %llu not "
                     "bitwise, max gap %.3g, device max %llu ulp\n",
                     technique->info().id.c_str(), variant, lc.level, toString(backend),

@@ -33,7 +33,7 @@ double crestRadius(const HeightField& field, double angle) {
 }
 
 TEST(WaveParticlesCpu, FullWavefrontRadiusIsSpeedTimesTimeWithinOneRadius) {
-  const Scenario scenario = resolveScenario("wave_point_impulse");
+  const techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   WaveParticleSimulation simulation(scenario, Variant::kFull);
   const double r = simulation.scene().particle_radius_m, c = simulation.scene().wave_speed_m_per_s;
   double worst = 0;
@@ -51,11 +51,11 @@ TEST(WaveParticlesCpu, FullWavefrontRadiusIsSpeedTimesTimeWithinOneRadius) {
 }
 
 TEST(WaveParticlesCpu, FullArrivalAtProbesMatchesTheReferenceWithinTheTolerance) {
-  const Scenario scenario = resolveScenario("wave_point_impulse");
+  const techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   WaveParticleSimulation simulation(scenario, Variant::kFull);
-  const WaveErrorFigures figures = measureWaveError(simulation, 4);
+  const measures::WaveErrorFigures figures = measures::measureWaveError(simulation, 4);
   ASSERT_FALSE(figures.probes.empty());
-  for (const WaveProbeFigures& probe : figures.probes) {
+  for (const measures::WaveProbeFigures& probe : figures.probes) {
     ASSERT_TRUE(probe.arrivalError().has_value()) << probe.x_m << ", " << probe.y_m;
     std::printf(
         "probe (%.2f, %.2f) at %.2f m: reference %.3f s, particles %.3f s, error %+.3f s "
@@ -64,7 +64,7 @@ TEST(WaveParticlesCpu, FullArrivalAtProbesMatchesTheReferenceWithinTheTolerance)
         *probe.particle_arrival_s, *probe.arrivalError(), figures.arrival_tolerance_s);
     EXPECT_LE(std::abs(*probe.arrivalError()), figures.arrival_tolerance_s);
   }
-  for (const WaveTimeFigures& row : figures.times) {
+  for (const measures::WaveTimeFigures& row : figures.times) {
     std::printf(
         "t = %.2f s: rms %.4f, max %.4f (of the amplitude), coverage %.3f, %llu particles\n",
         row.time_s, row.rms_error, row.max_error, row.coverage.value_or(-1),
@@ -73,15 +73,15 @@ TEST(WaveParticlesCpu, FullArrivalAtProbesMatchesTheReferenceWithinTheTolerance)
 }
 
 TEST(WaveParticlesCpu, AStraightWallReflectsLikeTheMirrorImageSource) {
-  const Scenario walled = resolveScenario("wave_straight_wall");
+  const techniques::Scenario walled = suite::resolveScenario("wave_straight_wall");
   // The oracle: the open domain with the source mirrored across the wall (x = 1).
-  Scenario images = walled;
+  techniques::Scenario images = walled;
   images.sections["wave_particles"] =
       R"({"sources": [{"position_m": [0.0, 0.0], "amplitude_m": 0.1},
                       {"position_m": [2.0, 0.0], "amplitude_m": 0.1}]})";
   for (Variant variant : {Variant::kFull, Variant::kLp2}) {
     WaveParticleSimulation a(walled, variant);
-    Scenario oracle = images;
+    techniques::Scenario oracle = images;
     oracle.parameters["max_particles"] = 64;
     WaveParticleSimulation b(oracle, variant);
     for (size_t step = 0; step < walled.stepCount(); ++step) {
@@ -118,9 +118,10 @@ TEST(WaveParticlesCpu, AStraightWallReflectsLikeTheMirrorImageSource) {
 }
 
 TEST(WaveParticlesCpu, Lp2CoverageFallsBelowFullWithDistance) {
-  const Scenario scenario = resolveScenario("wave_point_impulse");
+  const techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   WaveParticleSimulation full(scenario, Variant::kFull), lp2(scenario, Variant::kLp2);
-  const WaveErrorFigures f = measureWaveError(full, 6), l = measureWaveError(lp2, 6);
+  const measures::WaveErrorFigures f = measures::measureWaveError(full, 6),
+                                   l = measures::measureWaveError(lp2, 6);
   ASSERT_EQ(f.times.size(), l.times.size());
   for (size_t k = 0; k < f.times.size(); ++k) {
     std::printf("coverage at %.2f m: full %.3f, lp2 %.3f (%llu vs %llu particles)\n",
@@ -196,7 +197,7 @@ TEST(WaveParticlesCpu, Lp2TreeReflectsExactlyLikeTheLinearSearch) {
 }
 
 TEST(WaveParticlesCpu, Lp2ExpiresAtTheLifetimeAndKeepsItsBuffer) {
-  Scenario scenario = resolveScenario("wave_point_impulse");
+  techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   scenario.parameters["particle_lifetime_s"] = 1.0;
   WaveParticleSimulation lp2(scenario, Variant::kLp2);
   EXPECT_EQ(lp2.capacity(), 32u);
@@ -209,21 +210,21 @@ TEST(WaveParticlesCpu, Lp2ExpiresAtTheLifetimeAndKeepsItsBuffer) {
 }
 
 TEST(WaveParticlesCpu, BadScenarioSectionsAreOneLineInputErrors) {
-  Scenario scenario = resolveScenario("wave_point_impulse");
+  techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   scenario.sections["wave_particles"] =
       R"({"sources": [{"position_m": [9, 0], "amplitude_m": 1}]})";
   try {
     WaveParticleSimulation simulation(scenario, Variant::kFull);
     FAIL() << "accepted a source outside the domain";
-  } catch (const InputError& error) {
+  } catch (const mesh::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("wave_particles.sources[0].position_m: outside"),
               std::string::npos)
         << error.what();
   }
   scenario.sections["wave_particles"] = R"({"sources": []})";
-  EXPECT_THROW(WaveParticleSimulation(scenario, Variant::kFull), InputError);
+  EXPECT_THROW(WaveParticleSimulation(scenario, Variant::kFull), mesh::InputError);
   scenario.sections.erase("wave_particles");
-  EXPECT_THROW(WaveParticleSimulation(scenario, Variant::kFull), UnsupportedInput);
+  EXPECT_THROW(WaveParticleSimulation(scenario, Variant::kFull), techniques::UnsupportedInput);
 }
 
 }  // namespace

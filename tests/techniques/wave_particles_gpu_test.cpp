@@ -41,7 +41,8 @@ int64_t maxUlp(const std::vector<Particle>& a, const std::vector<Particle>& b) {
     const float fb[] = {b[i].origin[0],    b[i].origin[1],      b[i].direction[0],
                         b[i].direction[1], b[i].age_s,          b[i].lifetime_s,
                         b[i].amplitude_m,  b[i].dispersion_rad, b[i].radius_m};
-    for (size_t k = 0; k < std::size(fa); ++k) worst = std::max(worst, int64_t(ulpDistance(fa[k], fb[k])));
+    for (size_t k = 0; k < std::size(fa); ++k)
+      worst = std::max(worst, int64_t(mesh::ulpDistance(fa[k], fb[k])));
   }
   return worst;
 }
@@ -52,7 +53,7 @@ struct Compared {
   bool ids_match = false;
 };
 
-Compared runBoth(gpu::Context& context, const Scenario& scenario, Variant variant) {
+Compared runBoth(gpu::Context& context, const techniques::Scenario& scenario, Variant variant) {
   WaveParticleSimulation cpu(scenario, variant);
   const std::vector<gpu::GpuComputeProgram> programs = cpu.gpuPrograms();
   gpu::ComputeRunner runner(context, programs);
@@ -77,7 +78,7 @@ Compared runBoth(gpu::Context& context, const Scenario& scenario, Variant varian
 
 TEST(WaveParticlesGpu, CpuAndGpuStatesAgreeAfter100StepsOfEachBundledScenario) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  for (const Scenario& scenario : bundledScenarios()) {
+  for (const techniques::Scenario& scenario : suite::bundledScenarios()) {
     if (scenario.technique != "wave_particles") continue;
     for (Variant variant : {Variant::kFull, Variant::kLp2}) {
       const Compared c = runBoth(context, scenario, variant);
@@ -94,7 +95,7 @@ TEST(WaveParticlesGpu, CpuAndGpuStatesAgreeAfter100StepsOfEachBundledScenario) {
 
 TEST(WaveParticlesGpu, LaterEmissionsAndTheGpuCounterFollowTheCpu) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  Scenario scenario = resolveScenario("wave_straight_wall");
+  techniques::Scenario scenario = suite::resolveScenario("wave_straight_wall");
   scenario.sections["wave_particles"] =
       R"({"sources": [{"position_m": [0.0, 0.0], "amplitude_m": 0.1},
                       {"position_m": [-1.0, 0.5], "time_s": 0.5, "amplitude_m": 0.05}],
@@ -112,7 +113,7 @@ TEST(WaveParticlesGpu, LaterEmissionsAndTheGpuCounterFollowTheCpu) {
 TEST(WaveParticlesGpu, TheGpuHeightMapMatchesTheCpuSplatAndFilter) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const char* name : {"wave_point_impulse", "wave_straight_wall"}) {
-    const Scenario scenario = resolveScenario(name);
+    const techniques::Scenario scenario = suite::resolveScenario(name);
     WaveParticleSimulation cpu(scenario, Variant::kFull);
     gpu::ComputeRunner runner(context, cpu.gpuPrograms());
     runner.run(kSteps);
@@ -150,7 +151,7 @@ TEST(WaveParticlesGpu, TheGpuHeightMapMatchesTheCpuSplatAndFilter) {
 }
 
 TEST(WaveParticlesGpu, TheUpdateIsSizedByAnIndirectDispatchFromTheCounter) {
-  const Scenario scenario = resolveScenario("wave_point_impulse");
+  const techniques::Scenario scenario = suite::resolveScenario("wave_point_impulse");
   const WaveParticleSimulation simulation(scenario, Variant::kLp2);
   const std::vector<gpu::GpuComputeProgram> programs = simulation.gpuPrograms();
   ASSERT_EQ(programs.size(), 2u);  // the step, then the height field

@@ -9,6 +9,7 @@ extern "C" __attribute__((visibility("default"))) int tessbench_plugin_abi() {
   return kTessbenchPluginAbi + 1;
 }
 
-extern "C" __attribute__((visibility("default"))) void tessbench_register_plugin(tb::PluginHost*) {
+extern "C" __attribute__((visibility("default"))) void tessbench_register_plugin(
+    tb::techniques::PluginHost*) {
   std::abort();
 }

@@ -8,7 +8,7 @@
 #include "core/gpu/patch_program.h"
 #include "core/mesh/bounds.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // lavapipe tessellates on one thread and slows with many patches per draw (ARCHITECTURE
@@ -20,23 +20,23 @@ constexpr uint32_t kMaxPatchesPerDraw = 256;
 struct TargetRange {
   double coarse, fine;
 };
-TargetRange targetRange(FactorPolicyKind kind) {
+TargetRange targetRange(lod::FactorPolicyKind kind) {
   switch (kind) {
-    case FactorPolicyKind::kDistance:
+    case lod::FactorPolicyKind::kDistance:
       return {0.25, 4096};  // level at one diagonal
-    case FactorPolicyKind::kSphereDiameter:
+    case lod::FactorPolicyKind::kSphereDiameter:
       return {128, 0.25};  // pixels per edge
-    case FactorPolicyKind::kLp2Edge:
+    case lod::FactorPolicyKind::kLp2Edge:
       return {0.002, 20};  // C
-    case FactorPolicyKind::kUniform:
+    case lod::FactorPolicyKind::kUniform:
       break;
   }
   return {1, 64};
 }
 
 // gl_TessLevelOuter index of local edge k (corner k to k + 1), technique.h.
-size_t outerIndex(PatchDomain domain, uint32_t local_edge) {
-  return domain == PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
+size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge) {
+  return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
 }
 
 uint32_t patchesPerDraw(std::span<const tess::Levels> levels) {
@@ -58,7 +58,7 @@ tess::Levels levelsFromBits(const tess::LevelsBits& bits) {
 
 }  // namespace
 
-uint64_t factorMismatches(const SurfacePatches& patches, const SharedBoundaries& shared,
+uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,
                           const std::vector<tess::Levels>& levels) {
   uint64_t mismatches = 0;
   for (const SharedEdge& edge : shared.edges) {
@@ -74,45 +74,45 @@ uint64_t factorMismatches(const SurfacePatches& patches, const SharedBoundaries&
   return mismatches;
 }
 
-AdaptivityRun::AdaptivityRun(const SurfacePatches& patches, gpu::Context* context,
+AdaptivityRun::AdaptivityRun(const techniques::SurfacePatches& patches, gpu::Context* context,
                              std::string gpu_unavailable, const ref::LimitSurface* limit)
     : patches_(patches),
       context_(context),
       programs_(patches.gpuPrograms()),
-      corners_(factorCorners(patches)),
+      corners_(lod::factorCorners(patches)),
       shared_(findSharedBoundaries(patches)),
       cracks_(std::make_unique<CrackSession>(patches)),
-      screen_(std::make_unique<ScreenMetrics>(patches, limit)) {
+      screen_(std::make_unique<lod::ScreenMetrics>(patches, limit)) {
   if (programs_.empty()) {
     gpu_skip_ = "the technique has no GPU program";
   } else if (context_ == nullptr) {
     gpu_skip_ = "no Vulkan device (" + gpu_unavailable + ")";
   }
   if (!patches.controlMesh().positions.empty()) {
-    diagonal_ = diagonalOf(boundsOf(patches.controlMesh()));
+    diagonal_ = mesh::diagonalOf(mesh::boundsOf(patches.controlMesh()));
   }
 }
 
 AdaptivityRun::~AdaptivityRun() = default;
 
-std::vector<tess::Levels> AdaptivityRun::twinLevels(const FactorPolicy& policy,
+std::vector<tess::Levels> AdaptivityRun::twinLevels(const lod::FactorPolicy& policy,
                                                     tess::Spacing spacing,
-                                                    const View& view) const {
-  return policyLevels(factorParams(policy, view, spacing, diagonal_), corners_);
+                                                    const view::View& view) const {
+  return lod::policyLevels(lod::factorParams(policy, view, spacing, diagonal_), corners_);
 }
 
-void AdaptivityRun::runDevice(const FactorPolicy& policy, tess::Spacing spacing,
-                              const View& view, const std::vector<tess::Levels>& twin,
+void AdaptivityRun::runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                              const view::View& view, const std::vector<tess::Levels>& twin,
                               bool cracks, AdaptivityFrame* frame) {
   if (!gpu_skip_.empty()) return;
-  const FactorParams params = factorParams(policy, view, spacing, diagonal_);
+  const lod::FactorParams params = lod::factorParams(policy, view, spacing, diagonal_);
   std::vector<tess::Levels> device(twin.size());
   for (const gpu::GpuPatchProgram& program : programs_) {
     std::vector<tess::Levels> expected(program.patch_count);
     for (uint32_t i = 0; i < program.patch_count; ++i) {
       expected[i] = twin[program.patch_ids.empty() ? i : program.patch_ids[i]];
     }
-    const gpu::TcsFactorPolicy device_policy = tcsFactorPolicy(params, corners_, program);
+    const gpu::TcsFactorPolicy device_policy = lod::tcsFactorPolicy(params, corners_, program);
     gpu::PatchProgramOptions options;
     options.spacing = spacing;
     options.capture = false;
@@ -140,14 +140,15 @@ void AdaptivityRun::runDevice(const FactorPolicy& policy, tess::Spacing spacing,
 void AdaptivityRun::countTessellations(tess::Spacing spacing,
                                        const std::vector<tess::Levels>& levels,
                                        AdaptivityFrame* frame) const {
-  std::map<std::pair<PatchDomain, tess::LevelsBits>, std::pair<uint64_t, uint64_t>> counted;
+  std::map<std::pair<techniques::PatchDomain, tess::LevelsBits>, std::pair<uint64_t, uint64_t>>
+      counted;
   for (size_t p = 0; p < levels.size(); ++p) {
-    const PatchDomain domain = patches_.patchDomain(p);
+    const techniques::PatchDomain domain = patches_.patchDomain(p);
     auto [it, fresh] = counted.try_emplace({domain, tess::levelsBits(levels[p])});
     if (fresh) {
       const tess::Tessellation t = tess::tessellate(
-          domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle, spacing,
-          levels[p]);
+          domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+          spacing, levels[p]);
       it->second = {t.points.size(), t.triangles.size()};
       if (t.culled) it->second = {0, 0};
     }
@@ -157,9 +158,9 @@ void AdaptivityRun::countTessellations(tess::Spacing spacing,
   }
 }
 
-std::vector<AdaptivityFrame> AdaptivityRun::frames(const FactorPolicy& policy,
+std::vector<AdaptivityFrame> AdaptivityRun::frames(const lod::FactorPolicy& policy,
                                                    tess::Spacing spacing,
-                                                   const std::vector<View>& views,
+                                                   const std::vector<view::View>& views,
                                                    const AdaptivityParts& parts) {
   std::vector<AdaptivityFrame> frames;
   std::vector<tess::Levels> previous;
@@ -185,14 +186,14 @@ std::vector<AdaptivityFrame> AdaptivityRun::frames(const FactorPolicy& policy,
   return frames;
 }
 
-AdaptivityRun::PathError AdaptivityRun::pathError(const FactorPolicy& policy,
+AdaptivityRun::PathError AdaptivityRun::pathError(const lod::FactorPolicy& policy,
                                                   tess::Spacing spacing,
-                                                  const std::vector<View>& views) {
+                                                  const std::vector<view::View>& views) {
   PathError error;
   uint64_t triangles = 0;
-  for (const View& view : views) {
+  for (const view::View& view : views) {
     uint64_t frame_triangles = 0;
-    const ScreenErrorFigures e = screen_->tessellationError(
+    const lod::ScreenErrorFigures e = screen_->tessellationError(
         spacing, twinLevels(policy, spacing, view), view, &frame_triangles);
     error.max_px = std::max(error.max_px, e.max_px);
     triangles += frame_triangles;
@@ -201,8 +202,8 @@ AdaptivityRun::PathError AdaptivityRun::pathError(const FactorPolicy& policy,
   return error;
 }
 
-AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spacing spacing,
-                                           const std::vector<View>& views,
+AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                                           const std::vector<view::View>& views,
                                            double error_target_px, int search_steps) {
   AdaptivitySummary summary;
   summary.error_target_px = error_target_px;
@@ -214,7 +215,7 @@ AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spa
                     fineness * (std::log(range.fine) - std::log(range.coarse)));
   };
   auto errorAt = [&](double fineness) {
-    FactorPolicy p = policy;
+    lod::FactorPolicy p = policy;
     p.target = targetAt(fineness);
     ++summary.evaluations;
     return pathError(p, spacing, views);
@@ -251,8 +252,8 @@ AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spa
 
   // Uniform: the lowest integer level within the target, by doubling from 1 and then
   // bisecting between the last level that failed and the first that passed.
-  FactorPolicy uniform;
-  uniform.kind = FactorPolicyKind::kUniform;
+  lod::FactorPolicy uniform;
+  uniform.kind = lod::FactorPolicyKind::kUniform;
   uniform.reduction = policy.reduction;
   const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
   auto uniformAt = [&](uint32_t level) {
@@ -290,4 +291,4 @@ AdaptivitySummary AdaptivityRun::summarise(const FactorPolicy& policy, tess::Spa
   return summary;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -29,11 +29,11 @@
 #include "harness/measures/common/cracks/cracks.h"
 #include "techniques/technique.h"
 
-namespace tb {
-
-namespace ref {
+namespace tb::ref {
 class LimitSurface;
-}
+}  // namespace tb::ref
+
+namespace tb::measures {
 
 struct AdaptivityFrame {
   uint32_t frame = 0;
@@ -43,10 +43,10 @@ struct AdaptivityFrame {
   // > 0 means the policy is not crack-safe).
   uint64_t factor_mismatches_cpu = 0;
   CrackFigures cracks_cpu;  // shared points under the frame's levels, CPU float
-  FrameScreenFigures screen;
+  lod::FrameScreenFigures screen;
   // Largest screen movement of the tessellated surface since the previous frame due to the
   // factor change alone (px; 0 on frame 0).
-  ScreenErrorFigures pop;
+  lod::ScreenErrorFigures pop;
 
   // The device (absent without one, or without a GPU program).
   bool gpu_measured = false;
@@ -85,21 +85,21 @@ class AdaptivityRun {
  public:
   // context: null when no device is usable (gpu_unavailable says why); limit: the
   // reference limit of patches.controlMesh(), or null.
-  AdaptivityRun(const SurfacePatches& patches, gpu::Context* context,
+  AdaptivityRun(const techniques::SurfacePatches& patches, gpu::Context* context,
                 std::string gpu_unavailable, const ref::LimitSurface* limit);
   ~AdaptivityRun();
 
   // Every frame of `views` under `policy` and `spacing`.
-  std::vector<AdaptivityFrame> frames(const FactorPolicy& policy, tess::Spacing spacing,
-                                      const std::vector<View>& views,
+  std::vector<AdaptivityFrame> frames(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                                      const std::vector<view::View>& views,
                                       const AdaptivityParts& parts = {});
 
   // Searches the policy's target for the coarsest one whose tessellation error stays under
   // error_target_px on every frame, and the lowest uniform level that does.
   // search_steps: bisection steps on the log-scale target range (7: targets within ~5%
   // of the coarsest that passes for sphere_diameter's 0.25..128 px; 5: within ~20%).
-  AdaptivitySummary summarise(const FactorPolicy& policy, tess::Spacing spacing,
-                              const std::vector<View>& views, double error_target_px,
+  AdaptivitySummary summarise(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                              const std::vector<view::View>& views, double error_target_px,
                               int search_steps = 7);
 
   // Why the device parts are absent; empty when they ran.
@@ -107,33 +107,33 @@ class AdaptivityRun {
   double diagonal() const { return diagonal_; }
 
  private:
-  std::vector<tess::Levels> twinLevels(const FactorPolicy& policy, tess::Spacing spacing,
-                                       const View& view) const;
+  std::vector<tess::Levels> twinLevels(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                                       const view::View& view) const;
   // The max tessellation error over the path and the mean triangles per frame.
   struct PathError {
     double max_px = 0;
     double triangles_per_frame = 0;
   };
-  PathError pathError(const FactorPolicy& policy, tess::Spacing spacing,
-                      const std::vector<View>& views);
-  void runDevice(const FactorPolicy& policy, tess::Spacing spacing, const View& view,
+  PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
+                      const std::vector<view::View>& views);
+  void runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing, const view::View& view,
                  const std::vector<tess::Levels>& twin, bool cracks, AdaptivityFrame* frame);
   void countTessellations(tess::Spacing spacing, const std::vector<tess::Levels>& levels,
                           AdaptivityFrame* frame) const;
 
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   gpu::Context* context_;
   std::string gpu_skip_;
   std::vector<gpu::GpuPatchProgram> programs_;
-  FactorCorners corners_;
+  lod::FactorCorners corners_;
   SharedBoundaries shared_;
   double diagonal_ = 0;
   std::unique_ptr<CrackSession> cracks_;
-  std::unique_ptr<ScreenMetrics> screen_;
+  std::unique_ptr<lod::ScreenMetrics> screen_;
 };
 
 // Shared edges (of `shared`) whose sides' outer levels differ bitwise under `levels`.
-uint64_t factorMismatches(const SurfacePatches& patches, const SharedBoundaries& shared,
+uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,
                           const std::vector<tess::Levels>& levels);
 
-}  // namespace tb
+}  // namespace tb::measures

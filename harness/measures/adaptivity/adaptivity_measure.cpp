@@ -15,7 +15,7 @@
 #include "harness/measures/metric_table.h"
 #include "reference/limit_surface.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr double kErrorTargetPx = 1.0;
@@ -32,19 +32,20 @@ struct Grid {
   int search_steps = 7;
 };
 
-Grid gridFor(SuiteMode suite, const SurfacePatches& patches) {
+Grid gridFor(SuiteMode suite, const techniques::SurfacePatches& patches) {
   Grid grid;
   if (suite == SuiteMode::kFull) {
     grid.policies = {"uniform",  "distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
     // Roundness scales by how the vertex normals turn: the surfaces built from them
     // (PN triangles, Phong tessellation: the techniques graded against Loop).
-    if (patches.approximates() == LimitScheme::kLoop) grid.policies.push_back("lp2_edge_roundness");
+    if (patches.approximates() == techniques::LimitScheme::kLoop)
+      grid.policies.push_back("lp2_edge_roundness");
     grid.policies.push_back("sphere_diameter_order_dependent");
     grid.policies.push_back("distance_order_dependent");
     grid.spacings = {tess::Spacing::kInteger, tess::Spacing::kPow2, tess::Spacing::kFractionalOdd,
                      tess::Spacing::kFractionalEven};
     grid.summary_policies = {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
-    if (patches.approximates() == LimitScheme::kLoop) {
+    if (patches.approximates() == techniques::LimitScheme::kLoop) {
       grid.summary_policies.push_back("lp2_edge_roundness");
     }
     grid.summary_spacings = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd};
@@ -85,29 +86,28 @@ constexpr auto frameReference = [](auto member) {
 // Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
 // edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
 const MetricTable<AdaptivityFrame>& frameTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = AdaptivityFrame;
   static const MetricTable<F> kTable{
       // patches: count; context
-      {"patches", Unit::kCount, D::kNone, &F::patches},
+      {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // triangles: count; 0 (best), unbounded (worst); the CPU tessellator under the twin's levels
-      {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      {"triangles", results::Unit::kCount, D::kLowerIsBetter, &F::triangles},
       // domain_points: count; 0 (best), unbounded (worst)
-      {"domain_points", Unit::kCount, D::kLowerIsBetter, &F::domain_points},
+      {"domain_points", results::Unit::kCount, D::kLowerIsBetter, &F::domain_points},
       // gpu_tcs_patches: count; context: lavapipe's pipeline statistics
-      {"gpu_tcs_patches", Unit::kCount, D::kNone, frameGpu(&F::gpu_tcs_patches)},
+      {"gpu_tcs_patches", results::Unit::kCount, D::kNone, frameGpu(&F::gpu_tcs_patches)},
       // gpu_tes_invocations: count; context
-      {"gpu_tes_invocations", Unit::kCount, D::kNone, frameGpu(&F::gpu_tes_invocations)},
+      {"gpu_tes_invocations", results::Unit::kCount, D::kNone, frameGpu(&F::gpu_tes_invocations)},
       // gpu_triangles: count; context
-      {"gpu_triangles", Unit::kCount, D::kNone,
+      {"gpu_triangles", results::Unit::kCount, D::kNone,
        [](const F& f) -> std::optional<double> {
-         return f.gpu_measured && f.gpu_triangles_counted
-                    ? std::optional<double>(double(f.gpu_triangles))
-                    : std::nullopt;
+         if (!f.gpu_measured || !f.gpu_triangles_counted) return std::nullopt;
+         return double(f.gpu_triangles);
        }},
       // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
       //   (worst)
-      {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
+      {"gpu_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          if (!f.gpu_measured) return std::nullopt;
          const bool differ = f.gpu_tes_invocations != f.domain_points ||
@@ -117,61 +117,68 @@ const MetricTable<AdaptivityFrame>& frameTable() {
        }},
       // twin_level_mismatches: count; 0 when the TCS levels equal the twin's bitwise (best), up to
       //   patches (worst)
-      {"twin_level_mismatches", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::twin_level_mismatches)},
+      {"twin_level_mismatches", results::Unit::kCount, D::kLowerIsBetter,
+       frameGpu(&F::twin_level_mismatches)},
       // factor_mismatches_cpu: count; 0 when shared edges agree (best), up to the shared edges
       //   (worst)
-      {"factor_mismatches_cpu", Unit::kCount, D::kLowerIsBetter, &F::factor_mismatches_cpu},
+      {"factor_mismatches_cpu", results::Unit::kCount, D::kLowerIsBetter,
+       &F::factor_mismatches_cpu},
       // factor_mismatches_gpu: count; 0 (best), up to the shared edges (worst)
-      {"factor_mismatches_gpu", Unit::kCount, D::kLowerIsBetter, frameGpu(&F::factor_mismatches_gpu)},
+      {"factor_mismatches_gpu", results::Unit::kCount, D::kLowerIsBetter,
+       frameGpu(&F::factor_mismatches_gpu)},
       // crack_points_not_equal_cpu: count; 0 when watertight (best), up to the points compared
       //   (worst)
-      {"crack_points_not_equal_cpu", Unit::kCount, D::kLowerIsBetter,
+      {"crack_points_not_equal_cpu", results::Unit::kCount, D::kLowerIsBetter,
        frameCpuCrack(&CrackFigures::points_not_equal)},
       // crack_unpaired_points_cpu: count; 0 (best), up to the edge points (worst)
-      {"crack_unpaired_points_cpu", Unit::kCount, D::kLowerIsBetter,
+      {"crack_unpaired_points_cpu", results::Unit::kCount, D::kLowerIsBetter,
        frameCpuCrack(&CrackFigures::unpaired_points)},
       // crack_max_gap_world_cpu: world units; 0 when watertight (best), unbounded (worst)
-      {"crack_max_gap_world_cpu", Unit::kWorld, D::kLowerIsBetter,
+      {"crack_max_gap_world_cpu", results::Unit::kWorld, D::kLowerIsBetter,
        frameCpuCrack(&CrackFigures::max_gap_world)},
       // crack_points_not_equal_gpu: count; 0 when watertight (best), up to the points compared
       //   (worst)
-      {"crack_points_not_equal_gpu", Unit::kCount, D::kLowerIsBetter,
+      {"crack_points_not_equal_gpu", results::Unit::kCount, D::kLowerIsBetter,
        frameGpuCrack(&CrackFigures::points_not_equal)},
       // crack_unpaired_points_gpu: count; 0 (best), up to the edge points (worst)
-      {"crack_unpaired_points_gpu", Unit::kCount, D::kLowerIsBetter,
+      {"crack_unpaired_points_gpu", results::Unit::kCount, D::kLowerIsBetter,
        frameGpuCrack(&CrackFigures::unpaired_points)},
       // crack_max_gap_world_gpu: world units; 0 when watertight (best), unbounded (worst)
-      {"crack_max_gap_world_gpu", Unit::kWorld, D::kLowerIsBetter,
+      {"crack_max_gap_world_gpu", results::Unit::kWorld, D::kLowerIsBetter,
        frameGpuCrack(&CrackFigures::max_gap_world)},
       // visible_edges: count; context: tessellated edges with an end in the viewport
-      {"visible_edges", Unit::kCount, D::kNone, [](const F& f) { return double(f.screen.edges.edges); }},
+      {"visible_edges", results::Unit::kCount, D::kNone,
+       [](const F& f) { return double(f.screen.edges.edges); }},
       // edge_px_median: pixels; context (the band around the target is what counts)
-      {"edge_px_median", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.median_px; }},
+      {"edge_px_median", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.median_px; }},
       // edge_px_p05: pixels; context
-      {"edge_px_p05", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p05_px; }},
+      {"edge_px_p05", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.p05_px; }},
       // edge_px_p95: pixels; context
-      {"edge_px_p95", Unit::kPixels, D::kNone, [](const F& f) { return f.screen.edges.p95_px; }},
+      {"edge_px_p95", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.p95_px; }},
       // edge_fraction_in_band: ratio; 1 when every edge is within [0.5, 2] x target (best), 0
       //   (worst)
-      {"edge_fraction_in_band", Unit::kRatio, D::kHigherIsBetter,
+      {"edge_fraction_in_band", results::Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) { return f.screen.edges.fraction_in_band; }},
       // error_samples: count; context
-      {"error_samples", Unit::kCount, D::kNone,
+      {"error_samples", results::Unit::kCount, D::kNone,
        [](const F& f) { return double(f.screen.tessellation_error.samples); }},
       // tess_error_max_px: pixels; 0 (best), unbounded (worst); 1 px is the criterion
-      {"tess_error_max_px", Unit::kPixels, D::kLowerIsBetter,
+      {"tess_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) { return f.screen.tessellation_error.max_px; }},
       // tess_error_rms_px: pixels; 0 (best), unbounded (worst)
-      {"tess_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
+      {"tess_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) { return f.screen.tessellation_error.rms_px; }},
       // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
-      {"reference_error_max_px", Unit::kPixels, D::kLowerIsBetter,
-       frameReference(&ScreenErrorFigures::max_px)},
+      {"reference_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&lod::ScreenErrorFigures::max_px)},
       // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
-      {"reference_error_rms_px", Unit::kPixels, D::kLowerIsBetter,
-       frameReference(&ScreenErrorFigures::rms_px)},
+      {"reference_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&lod::ScreenErrorFigures::rms_px)},
       // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
-      {"pop_max_px", Unit::kPixels, D::kLowerIsBetter,
+      {"pop_max_px", results::Unit::kPixels, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
        }},
@@ -181,46 +188,47 @@ const MetricTable<AdaptivityFrame>& frameTable() {
 
 // Summary rows: the number to choose by.
 const MetricTable<AdaptivitySummary>& summaryTable() {
-  using D = Direction;
+  using D = results::Direction;
   using S = AdaptivitySummary;
   static const MetricTable<S> kTable{
       // triangle_ratio_vs_uniform: ratio; towards 0 (best), 1 as uniform, above 1 (worse than
       //   uniform)
-      {"triangle_ratio_vs_uniform", Unit::kRatio, D::kLowerIsBetter,
+      {"triangle_ratio_vs_uniform", results::Unit::kRatio, D::kLowerIsBetter,
        [](const S& s) -> std::optional<double> {
          return s.reached && s.uniform_reached ? std::optional<double>(s.triangle_ratio_vs_uniform)
                                                : std::nullopt;
        }},
       // triangles_per_frame_at_target: count; 0 (best), unbounded (worst)
-      {"triangles_per_frame_at_target", Unit::kCount, D::kLowerIsBetter,
+      {"triangles_per_frame_at_target", results::Unit::kCount, D::kLowerIsBetter,
        &S::triangles_per_frame},
       // uniform_triangles_per_frame: count; context
-      {"uniform_triangles_per_frame", Unit::kCount, D::kNone, &S::uniform_triangles_per_frame},
+      {"uniform_triangles_per_frame", results::Unit::kCount, D::kNone,
+       &S::uniform_triangles_per_frame},
       // uniform_level: level; context
-      {"uniform_level", Unit::kCount, D::kNone, &S::uniform_level},
+      {"uniform_level", results::Unit::kCount, D::kNone, &S::uniform_level},
       // error_target_px: pixels; context
-      {"error_target_px", Unit::kPixels, D::kNone, &S::error_target_px},
+      {"error_target_px", results::Unit::kPixels, D::kNone, &S::error_target_px},
       // target_reached: flag; 1 (best), 0 (worst)
-      {"target_reached", Unit::kFlag, D::kHigherIsBetter,
+      {"target_reached", results::Unit::kFlag, D::kHigherIsBetter,
        [](const S& s) { return s.reached ? 1.0 : 0.0; }},
       // policy_target: the policy's own unit; context
-      {"policy_target", Unit::kRatio, D::kNone, &S::target},
+      {"policy_target", results::Unit::kRatio, D::kNone, &S::target},
       // path_max_error_px: pixels; context: at the target found
-      {"path_max_error_px", Unit::kPixels, D::kNone, &S::max_error_px},
+      {"path_max_error_px", results::Unit::kPixels, D::kNone, &S::max_error_px},
       // uniform_reached: flag; context
-      {"uniform_reached", Unit::kFlag, D::kNone,
+      {"uniform_reached", results::Unit::kFlag, D::kNone,
        [](const S& s) { return s.uniform_reached ? 1.0 : 0.0; }},
       // uniform_path_max_error_px: pixels; context
-      {"uniform_path_max_error_px", Unit::kPixels, D::kNone, &S::uniform_max_error_px},
+      {"uniform_path_max_error_px", results::Unit::kPixels, D::kNone, &S::uniform_max_error_px},
       // search_passes: count; context
-      {"search_passes", Unit::kCount, D::kNone, &S::evaluations},
+      {"search_passes", results::Unit::kCount, D::kNone, &S::evaluations},
   };
   return kTable;
 }
 
-std::vector<MetricSpec> allSpecs() {
-  std::vector<MetricSpec> specs = summaryTable().specs();
-  for (const MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
+std::vector<results::MetricSpec> allSpecs() {
+  std::vector<results::MetricSpec> specs = summaryTable().specs();
+  for (const results::MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
   return specs;
 }
 
@@ -235,9 +243,11 @@ class AdaptivityMeasure final : public Measure {
         "triangles a policy needs for a 1 px tessellation error against uniform levels",
         allSpecs(),
         {"triangle_ratio_vs_uniform", "factor_mismatches_cpu", "tess_error_max_px"},
-        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter): for each policy, the coarsest target whose "
+        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter): "
+         "for each policy, the coarsest target whose "
          "tessellation error stays within 1 px on every frame of the path (bisection on a log "
-         "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the lowest uniform level "
+         "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the "
+         "lowest uniform level "
          "(integer, binary search) that does the same; triangle_ratio_vs_uniform = the two "
          "triangle counts' ratio (0.25: a quarter of uniform's triangles); policy_target is "
          "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
@@ -277,15 +287,15 @@ class AdaptivityMeasure final : public Measure {
         {},
         // The per-frame trade-off of each policy: triangles drawn against the largest
         // on-screen tessellation error, one chart per asset (every technique's frames).
-        {PlotSpec{.title = "Triangles against tessellation error in pixels, per frame",
-                  .kind = PlotKind::kScatter,
-                  .x = "tess_error_max_px",
-                  .y = "triangles",
-                  .series = "policy",
-                  .facet = "asset",
-                  .where = {{"frame", "*"}},
-                  .log_x = true,
-                  .log_y = true}}};
+        {results::PlotSpec{.title = "Triangles against tessellation error in pixels, per frame",
+                           .kind = results::PlotKind::kScatter,
+                           .x = "tess_error_max_px",
+                           .y = "triangles",
+                           .series = "policy",
+                           .facet = "asset",
+                           .where = {{"frame", "*"}},
+                           .log_x = true,
+                           .log_y = true}}};
     return kInfo;
   }
 
@@ -295,33 +305,33 @@ class AdaptivityMeasure final : public Measure {
             {}};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    const SurfacePatches& patches = *input.patches;
-    const CameraPath& path = *input.camera_path;
+    const techniques::SurfacePatches& patches = *input.patches;
+    const view::CameraPath& path = *input.camera_path;
 
     std::unique_ptr<ref::LimitSurface> limit;
     try {
       limit = std::make_unique<ref::LimitSurface>(patches.controlMesh(),
-                                                  referenceScheme(patches.approximates()));
-    } catch (const InputError& error) {
+                                                  lod::referenceScheme(patches.approximates()));
+    } catch (const mesh::InputError& error) {
       // The per-frame rows then lack reference_error_*; this row says why.
-      result.rows.push_back(unmeasuredRow({{"part", "reference_error"}}, MeasureStatus::kSkipped,
-                                          error.what()));
+      result.rows.push_back(results::unmeasuredRow({{"part", "reference_error"}},
+                                                   results::MeasureStatus::kSkipped, error.what()));
     }
     AdaptivityRun run(patches, input.gpu, input.gpu_unavailable, limit.get());
     if (!run.gpuSkipReason().empty()) {
       // The gpu_* and *_gpu figures live in the per-frame rows; without them, this row says why.
-      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
-                                          run.gpuSkipReason()));
+      result.rows.push_back(results::unmeasuredRow(
+          {{"part", "gpu"}}, results::MeasureStatus::kSkipped, run.gpuSkipReason()));
     }
     const Grid grid = gridFor(input.suite, patches);
 
     for (const std::string& name : grid.summary_policies) {
-      const FactorPolicy policy = *parseFactorPolicy(name);
+      const lod::FactorPolicy policy = *lod::parseFactorPolicy(name);
       for (tess::Spacing spacing : grid.summary_spacings) {
-        MetricRow row;
+        results::MetricRow row;
         row.keys["policy"] = name;
         row.keys["spacing"] = std::string(tess::toString(spacing));
         row.keys["summary"] = kSummaryKey;
@@ -331,10 +341,10 @@ class AdaptivityMeasure final : public Measure {
       }
     }
     for (const std::string& name : grid.policies) {
-      const FactorPolicy policy = *parseFactorPolicy(name);
+      const lod::FactorPolicy policy = *lod::parseFactorPolicy(name);
       for (tess::Spacing spacing : grid.spacings) {
         for (const AdaptivityFrame& frame : run.frames(policy, spacing, path.views)) {
-          MetricRow row;
+          results::MetricRow row;
           row.keys["policy"] = name;
           row.keys["spacing"] = std::string(tess::toString(spacing));
           row.keys["frame"] = std::to_string(frame.frame);
@@ -350,4 +360,4 @@ class AdaptivityMeasure final : public Measure {
 TB_REGISTER_MEASURE(AdaptivityMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

@@ -3,24 +3,25 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tb {
+namespace tb::measures {
 
-double rmsDistance(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b, double scale) {
+double rmsDistance(const std::vector<mesh::Vec3d>& a, const std::vector<mesh::Vec3d>& b,
+                   double scale) {
   if (a.empty() || a.size() != b.size()) return NAN;
   double sum = 0;
   for (size_t i = 0; i < a.size(); ++i) {
-    const Vec3d d = a[i] - b[i];
+    const mesh::Vec3d d = a[i] - b[i];
     sum += dot(d, d);
   }
   return std::sqrt(sum / double(a.size())) / scale;
 }
 
-ConvergenceFigures measureConvergence(ConstraintSolver& solver,
+ConvergenceFigures measureConvergence(techniques::ConstraintSolver& solver,
                                       const ConvergenceSettings& settings) {
   ConvergenceFigures figures;
   figures.counts = solver.counts();
   figures.iteration_budget = settings.max_iterations;
-  const ReferenceSolution reference =
+  const techniques::ReferenceSolution reference =
       solver.referenceSolution(settings.reference_tolerance, settings.reference_max_iterations);
   figures.reference_iterations = reference.iterations;
   figures.reference_relative_residual = reference.relative_residual;
@@ -58,4 +59,4 @@ ConvergenceFigures measureConvergence(ConstraintSolver& solver,
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -12,7 +12,7 @@
 
 #include "techniques/constraint_solver.h"
 
-namespace tb {
+namespace tb::measures {
 
 struct ConvergenceSettings {
   size_t rows = 32;                    // iterations reported one by one (k = 1..rows)
@@ -33,7 +33,7 @@ struct ConvergenceIteration {
 };
 
 struct ConvergenceFigures {
-  SolverCounts counts;
+  techniques::SolverCounts counts;
   double initial_residual = 0;                   // residual of the frame's start (1)
   std::vector<ConvergenceIteration> iterations;  // k = 1..rows
   // Iterations until residual / initial <= 1e-3 and 1e-5; nullopt: not reached within
@@ -53,10 +53,11 @@ struct ConvergenceFigures {
 };
 
 // Runs `solver` on its convergence frame. It resets the frame itself.
-ConvergenceFigures measureConvergence(ConstraintSolver& solver,
+ConvergenceFigures measureConvergence(techniques::ConstraintSolver& solver,
                                       const ConvergenceSettings& settings);
 
 // RMS of |a_i - b_i| over `scale`.
-double rmsDistance(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b, double scale);
+double rmsDistance(const std::vector<mesh::Vec3d>& a, const std::vector<mesh::Vec3d>& b,
+                   double scale);
 
-}  // namespace tb
+}  // namespace tb::measures

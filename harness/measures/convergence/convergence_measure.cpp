@@ -12,7 +12,7 @@
 #include "harness/measures/metric_table.h"
 #include "techniques/constraint_solver.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr size_t kDispatchBudget = 8;
@@ -45,7 +45,7 @@ auto budgetResidual(bool goal) {
 }
 
 const MetricTable<ConvergenceRowFigures>& convergenceTable() {
-  using D = Direction;
+  using D = results::Direction;
   using R = ConvergenceRowFigures;
   using O = std::optional<double>;
   using F = ConvergenceFigures;
@@ -53,87 +53,88 @@ const MetricTable<ConvergenceRowFigures>& convergenceTable() {
       // kind = iteration
       // residual: ratio (RMS relative stretch); 0 when every constraint is met (best), unbounded
       //   (worst)
-      {"residual", Unit::kRatio, D::kLowerIsBetter, perIteration(&ConvergenceIteration::residual)},
+      {"residual", results::Unit::kRatio, D::kLowerIsBetter,
+       perIteration(&ConvergenceIteration::residual)},
       // residual_ratio: ratio to the initial residual; 0 (best), above 1 diverging (worst)
-      {"residual_ratio", Unit::kRatio, D::kLowerIsBetter,
+      {"residual_ratio", results::Unit::kRatio, D::kLowerIsBetter,
        perIteration(&ConvergenceIteration::residual_ratio)},
       // position_error: ratio of the mean spring length; 0 at the converged reference (best),
       //   unbounded (worst)
-      {"position_error", Unit::kRatio, D::kLowerIsBetter,
+      {"position_error", results::Unit::kRatio, D::kLowerIsBetter,
        perIteration(&ConvergenceIteration::position_error)},
       // kind = summary
       // residual_at_8_dispatches_no_goal_springs: ratio to the initial residual; 0 (best),
       //   unbounded (worst)
-      {"residual_at_8_dispatches_no_goal_springs", Unit::kRatio, D::kLowerIsBetter,
+      {"residual_at_8_dispatches_no_goal_springs", results::Unit::kRatio, D::kLowerIsBetter,
        budgetResidual(false)},
       // residual_at_8_dispatches_goal_springs: ratio to the initial residual; 0 (best), unbounded
       //   (worst)
-      {"residual_at_8_dispatches_goal_springs", Unit::kRatio, D::kLowerIsBetter,
+      {"residual_at_8_dispatches_goal_springs", results::Unit::kRatio, D::kLowerIsBetter,
        budgetResidual(true)},
       // iterations_to_1e-3: count; 1 (best), up to the iteration budget (worst; absent when not
       //   reached)
-      {"iterations_to_1e-3", Unit::kCount, D::kLowerIsBetter,
+      {"iterations_to_1e-3", results::Unit::kCount, D::kLowerIsBetter,
        [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e3) return std::nullopt;
          return double(*r.figures->iterations_to_1e3);
        }},
       // iterations_to_1e-5: count; 1 (best), up to the iteration budget (worst; absent when not
       //   reached)
-      {"iterations_to_1e-5", Unit::kCount, D::kLowerIsBetter,
+      {"iterations_to_1e-5", results::Unit::kCount, D::kLowerIsBetter,
        [](const R& r) -> O {
          if (r.iteration != nullptr || !r.figures->iterations_to_1e5) return std::nullopt;
          return double(*r.figures->iterations_to_1e5);
        }},
       // reached_1e-3: flag; 1 when reached within the budget (best), 0 (worst)
-      {"reached_1e-3", Unit::kFlag, D::kHigherIsBetter,
+      {"reached_1e-3", results::Unit::kFlag, D::kHigherIsBetter,
        summaryFigure([](const F& f) { return f.iterations_to_1e3 ? 1.0 : 0.0; })},
       // reached_1e-5: flag; 1 when reached within the budget (best), 0 (worst)
-      {"reached_1e-5", Unit::kFlag, D::kHigherIsBetter,
+      {"reached_1e-5", results::Unit::kFlag, D::kHigherIsBetter,
        summaryFigure([](const F& f) { return f.iterations_to_1e5 ? 1.0 : 0.0; })},
       // iteration_budget: count; context
-      {"iteration_budget", Unit::kCount, D::kNone,
+      {"iteration_budget", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.iteration_budget); })},
       // dispatches_per_iteration: count; 1 for Jacobi (best), the colour count for Gauss-Seidel,
       //   unbounded (worst)
-      {"dispatches_per_iteration", Unit::kCount, D::kLowerIsBetter,
+      {"dispatches_per_iteration", results::Unit::kCount, D::kLowerIsBetter,
        summaryFigure([](const F& f) { return double(f.counts.dispatches_per_iteration); })},
       // iterations_at_8_dispatches: ratio; context: iterations 8 dispatches buy (below 1: a partial
       //   sweep)
-      {"iterations_at_8_dispatches", Unit::kRatio, D::kNone,
+      {"iterations_at_8_dispatches", results::Unit::kRatio, D::kNone,
        summaryFigure([](const F& f) { return double(f.budget_iterations); })},
       // colours: count; context: independent constraint batches, 0 when not coloured
-      {"colours", Unit::kCount, D::kNone,
+      {"colours", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.counts.colours); })},
       // colours_surface: count; context
-      {"colours_surface", Unit::kCount, D::kNone,
+      {"colours_surface", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.counts.colours_surface); })},
       // colours_surface_goal: count; context
-      {"colours_surface_goal", Unit::kCount, D::kNone,
+      {"colours_surface_goal", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.counts.colours_surface_goal); })},
       // tile_local_fraction: ratio; context: 1 when every gather read is in-tile, 0 for a solver
       //   without tiles
-      {"tile_local_fraction", Unit::kRatio, D::kNone,
+      {"tile_local_fraction", results::Unit::kRatio, D::kNone,
        summaryFigure([](const F& f) { return f.counts.tile_local_fraction; })},
       // constraints: count; context
-      {"constraints", Unit::kCount, D::kNone,
+      {"constraints", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.counts.constraints); })},
       // constraint_ends: count; context
-      {"constraint_ends", Unit::kCount, D::kNone,
+      {"constraint_ends", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.counts.constraint_ends); })},
       // initial_residual: ratio; context: the convergence frame's starting residual
-      {"initial_residual", Unit::kRatio, D::kNone,
+      {"initial_residual", results::Unit::kRatio, D::kNone,
        summaryFigure([](const F& f) { return f.initial_residual; })},
       // final_residual_ratio: ratio to the initial residual; 0 (best), unbounded (worst)
-      {"final_residual_ratio", Unit::kRatio, D::kLowerIsBetter,
+      {"final_residual_ratio", results::Unit::kRatio, D::kLowerIsBetter,
        summaryFigure([](const F& f) { return f.final_residual_ratio; })},
       // final_position_error: ratio of the mean spring length; 0 (best), unbounded (worst)
-      {"final_position_error", Unit::kRatio, D::kLowerIsBetter,
+      {"final_position_error", results::Unit::kRatio, D::kLowerIsBetter,
        summaryFigure([](const F& f) { return f.final_position_error; })},
       // reference_iterations: count; context: sweeps the double reference took
-      {"reference_iterations", Unit::kCount, D::kNone,
+      {"reference_iterations", results::Unit::kCount, D::kNone,
        summaryFigure([](const F& f) { return double(f.reference_iterations); })},
       // reference_converged: flag; context: 1 when the reference reached its tolerance
-      {"reference_converged", Unit::kFlag, D::kNone,
+      {"reference_converged", results::Unit::kFlag, D::kNone,
        summaryFigure([](const F& f) { return f.reference_converged ? 1.0 : 0.0; })},
   };
   return kTable;
@@ -188,14 +189,14 @@ class ConvergenceMeasure final : public Measure {
          "(surface and goal springs only); every count is at least the largest valence",
          "solvers run in float, as the GPU; the reference in double"},
         {{"kind", "summary"}},
-        {PlotSpec{.title = "Residual against solver iterations",
-                  .kind = PlotKind::kLine,
-                  .x = "iteration",
-                  .y = "residual",
-                  .series = "variant",
-                  .facet = "goal_springs",
-                  .where = {{"kind", "iteration"}},
-                  .log_y = true}}};
+        {results::PlotSpec{.title = "Residual against solver iterations",
+                           .kind = results::PlotKind::kLine,
+                           .x = "iteration",
+                           .y = "residual",
+                           .series = "variant",
+                           .facet = "goal_springs",
+                           .where = {{"kind", "iteration"}},
+                           .log_y = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -204,31 +205,31 @@ class ConvergenceMeasure final : public Measure {
             {}};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     const ConvergenceSettings settings = settingsFor(input.suite);
     for (const bool goal : {true, false}) {
-      VariantInfo variant = input.variant;
+      techniques::VariantInfo variant = input.variant;
       variant.parameters["goal_springs"] = goal ? 1 : 0;
-      const std::unique_ptr<TechniqueInstance> instance =
+      const std::unique_ptr<techniques::TechniqueInstance> instance =
           input.technique.build({nullptr, &input.simulation->scenario()}, variant);
-      Simulation* simulation = instance->simulation();
-      ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
+      techniques::Simulation* simulation = instance->simulation();
+      techniques::ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
       const std::string goal_key = goal ? "true" : "false";
       if (solver == nullptr) {
-        result.rows.push_back(unmeasuredRow({{"goal_springs", goal_key}, {"kind", "summary"}},
-                                            MeasureStatus::kSkipped,
-                                            "the simulation has no constraint solver"));
+        result.rows.push_back(results::unmeasuredRow(
+            {{"goal_springs", goal_key}, {"kind", "summary"}}, results::MeasureStatus::kSkipped,
+            "the simulation has no constraint solver"));
         continue;
       }
       const ConvergenceFigures figures = measureConvergence(*solver, settings);
-      MetricRow summary;
+      results::MetricRow summary;
       summary.keys = {{"goal_springs", goal_key}, {"kind", "summary"}};
       summary.metrics = convergenceTable().metrics({&figures, nullptr, goal});
       result.rows.push_back(std::move(summary));
       for (const ConvergenceIteration& iteration : figures.iterations) {
-        MetricRow row;
+        results::MetricRow row;
         row.keys = {{"goal_springs", goal_key},
                     {"kind", "iteration"},
                     {"iteration", std::to_string(iteration.k)}};
@@ -243,4 +244,4 @@ class ConvergenceMeasure final : public Measure {
 TB_REGISTER_MEASURE(ConvergenceMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

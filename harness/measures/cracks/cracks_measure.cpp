@@ -9,7 +9,7 @@
 #include "harness/measures/measure.h"
 #include "harness/measures/metric_table.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 struct LevelChoice {
@@ -32,7 +32,7 @@ constexpr const char* kEdgePatternKey = "edge_pattern";
 // Best case of every gap figure is 0 (watertight); worst_* locate the largest world gap
 // and are context. points_compared, shared_* and seam_edges describe the asset.
 const MetricTable<CrackFigures>& crackTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = CrackFigures;
   // The worst pair's location, -1 when no pair was compared.
   auto where = [](uint32_t CrackLocation::*member) {
@@ -40,50 +40,50 @@ const MetricTable<CrackFigures>& crackTable() {
   };
   static const MetricTable<F> kTable{
       // shared_edges: count; context (no best or worst): edges two or more patches share
-      {"shared_edges", Unit::kCount, D::kNone, &F::shared_edges},
+      {"shared_edges", results::Unit::kCount, D::kNone, &F::shared_edges},
       // seam_edges: count; context: of shared_edges, shared only through welding
-      {"seam_edges", Unit::kCount, D::kNone, &F::seam_edges},
+      {"seam_edges", results::Unit::kCount, D::kNone, &F::seam_edges},
       // shared_corners: count; context: welded vertices at corners of two or more patches
-      {"shared_corners", Unit::kCount, D::kNone, &F::shared_corners},
+      {"shared_corners", results::Unit::kCount, D::kNone, &F::shared_corners},
       // points_compared: count; context: side pairs compared at shared tessellated points
-      {"points_compared", Unit::kCount, D::kNone, &F::points_compared},
+      {"points_compared", results::Unit::kCount, D::kNone, &F::points_compared},
       // points_not_equal: count; 0 when watertight (best), up to points_compared (worst)
-      {"points_not_equal", Unit::kCount, D::kLowerIsBetter, &F::points_not_equal},
+      {"points_not_equal", results::Unit::kCount, D::kLowerIsBetter, &F::points_not_equal},
       // unpaired_points: count; 0 when every edge point has its mirror (best), up to the edge
       //   points (worst)
-      {"unpaired_points", Unit::kCount, D::kLowerIsBetter, &F::unpaired_points},
+      {"unpaired_points", results::Unit::kCount, D::kLowerIsBetter, &F::unpaired_points},
       // max_gap_world: world units; 0 when watertight (best), unbounded (worst)
-      {"max_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::max_gap_world},
+      {"max_gap_world", results::Unit::kWorld, D::kLowerIsBetter, &F::max_gap_world},
       // mean_gap_world: world units; 0 when watertight (best), up to max_gap_world (worst)
-      {"mean_gap_world", Unit::kWorld, D::kLowerIsBetter, &F::mean_gap_world},
+      {"mean_gap_world", results::Unit::kWorld, D::kLowerIsBetter, &F::mean_gap_world},
       // max_gap_ulp: float ulps; 0 when bitwise equal (best), up to ~2^32 (worst: a sign or
       //   exponent apart)
-      {"max_gap_ulp", Unit::kUlp, D::kLowerIsBetter, &F::max_gap_ulp},
+      {"max_gap_ulp", results::Unit::kUlp, D::kLowerIsBetter, &F::max_gap_ulp},
       // max_gap_scale_ulp: ulps of the asset scale; 0 (best), 1 is one rounding step of the largest
       //   coordinate, unbounded (worst)
-      {"max_gap_scale_ulp", Unit::kScaleUlp, D::kLowerIsBetter, &F::max_gap_scale_ulp},
+      {"max_gap_scale_ulp", results::Unit::kScaleUlp, D::kLowerIsBetter, &F::max_gap_scale_ulp},
       // worst_patch_a: patch id; context: side a of the pair with the largest world gap
-      {"worst_patch_a", Unit::kId, D::kNone, where(&CrackLocation::patch_a)},
+      {"worst_patch_a", results::Unit::kId, D::kNone, where(&CrackLocation::patch_a)},
       // worst_patch_b: patch id; context: side b of that pair
-      {"worst_patch_b", Unit::kId, D::kNone, where(&CrackLocation::patch_b)},
+      {"worst_patch_b", results::Unit::kId, D::kNone, where(&CrackLocation::patch_b)},
       // worst_is_corner: flag; context: 1 when the worst pair sits at a shared corner, 0 on an edge
-      {"worst_is_corner", Unit::kFlag, D::kNone,
+      {"worst_is_corner", results::Unit::kFlag, D::kNone,
        [](const F& f) { return f.worst.found && f.worst.corner ? 1.0 : 0.0; }},
       // worst_local_a: local edge or corner id; context: on side a
-      {"worst_local_a", Unit::kId, D::kNone, where(&CrackLocation::local_a)},
+      {"worst_local_a", results::Unit::kId, D::kNone, where(&CrackLocation::local_a)},
       // worst_local_b: local edge or corner id; context: on side b
-      {"worst_local_b", Unit::kId, D::kNone, where(&CrackLocation::local_b)},
+      {"worst_local_b", results::Unit::kId, D::kNone, where(&CrackLocation::local_b)},
       // worst_t: edge parameter in [0, 1]; context: where on side a's edge the worst gap is
-      {"worst_t", Unit::kEdgeParameter, D::kNone, [](const F& f) { return f.worst.t; }},
+      {"worst_t", results::Unit::kEdgeParameter, D::kNone, [](const F& f) { return f.worst.t; }},
       // vs_cpu_float_points: count; context: captured GPU boundary points compared with the CPU
       //   float model
-      {"vs_cpu_float_points", Unit::kCount, D::kNone, &F::device_points},
+      {"vs_cpu_float_points", results::Unit::kCount, D::kNone, &F::device_points},
       // vs_cpu_float_points_differing: count; 0 when the device agrees with the CPU float model
       //   (best), up to vs_cpu_float_points (worst)
-      {"vs_cpu_float_points_differing", Unit::kCount, D::kLowerIsBetter,
+      {"vs_cpu_float_points_differing", results::Unit::kCount, D::kLowerIsBetter,
        &F::device_points_differing},
       // vs_cpu_float_max_ulp: float ulps; 0 (best), up to ~2^32 (worst)
-      {"vs_cpu_float_max_ulp", Unit::kUlp, D::kLowerIsBetter, &F::device_max_ulp},
+      {"vs_cpu_float_max_ulp", results::Unit::kUlp, D::kLowerIsBetter, &F::device_max_ulp},
   };
   return kTable;
 }
@@ -129,26 +129,28 @@ class CracksMeasure final : public Measure {
          "summaries leave these rows out, the chart below shows them"},
         {{"displacement", ""}},
         // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
-        {PlotSpec{.title = "Points where two patches differ, per variant (the largest count over "
-                           "assets, spacings and levels; no bar: 0, watertight)",
-                  .kind = PlotKind::kBar,
-                  .x = "variant",
-                  .y = "points_not_equal",
-                  .series = "backend",
-                  .facet = "",
-                  .where = {{"displacement", ""}},
-                  .log_y = true,
-                  .reduce = PlotReduce::kMax},
-         PlotSpec{.title = "Displaced surfaces: points where two patches differ, per sampling "
-                           "(largest count over maps, spacings and levels; no bar: watertight)",
-                  .kind = PlotKind::kBar,
-                  .x = "sampling",
-                  .y = "points_not_equal",
-                  .series = "backend",
-                  .facet = "",
-                  .where = {{"displacement", "*"}},
-                  .log_y = true,
-                  .reduce = PlotReduce::kMax}}};
+        {results::PlotSpec{
+             .title = "Points where two patches differ, per variant (the largest count over "
+                      "assets, spacings and levels; no bar: 0, watertight)",
+             .kind = results::PlotKind::kBar,
+             .x = "variant",
+             .y = "points_not_equal",
+             .series = "backend",
+             .facet = "",
+             .where = {{"displacement", ""}},
+             .log_y = true,
+             .reduce = results::PlotReduce::kMax},
+         results::PlotSpec{.title =
+                               "Displaced surfaces: points where two patches differ, per sampling "
+                               "(largest count over maps, spacings and levels; no bar: watertight)",
+                           .kind = results::PlotKind::kBar,
+                           .x = "sampling",
+                           .y = "points_not_equal",
+                           .series = "backend",
+                           .facet = "",
+                           .where = {{"displacement", "*"}},
+                           .log_y = true,
+                           .reduce = results::PlotReduce::kMax}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -158,10 +160,10 @@ class CracksMeasure final : public Measure {
     return requirements;
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    const SurfacePatches& patches = *input.patches;
+    const techniques::SurfacePatches& patches = *input.patches;
     // Why the GPU rows cannot run here; they are then rows with status skipped and this
     // reason, under the keys a run with a device measures them by.
     std::string gpu_reason;
@@ -192,7 +194,7 @@ class CracksMeasure final : public Measure {
     // The per-edge pattern rows come last so the uniform rows keep their places.
     for (tess::Spacing spacing : spacings) {
       const std::vector<tess::Levels> levels =
-          edgePatternLevels(patches, spacing, kEdgePatternBase.level);
+          lod::edgePatternLevels(patches, spacing, kEdgePatternBase.level);
       for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
         result.rows.push_back(
             crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey, gpu_reason,
@@ -207,26 +209,29 @@ class CracksMeasure final : public Measure {
   // figures, or status skipped or failed with the reason there are none. A GPU row is
   // skipped with gpu_reason when that is set; a GPU failure is a failed row, a CPU one throws.
   template <class MeasureFn>
-  static MetricRow crackRow(tess::Spacing spacing, const char* level, CrackBackend backend,
-                            const char* levels_key, const std::string& gpu_reason,
-                            MeasureFn measure) {
-    MetricRow row;
+  static results::MetricRow crackRow(tess::Spacing spacing, const char* level, CrackBackend backend,
+                                     const char* levels_key, const std::string& gpu_reason,
+                                     MeasureFn measure) {
+    results::MetricRow row;
     row.keys["spacing"] = std::string(tess::toString(spacing));
     row.keys["level"] = std::string(level);
     row.keys["backend"] = toString(backend);
     if (levels_key != nullptr) row.keys["levels"] = std::string(levels_key);
     if (backend == CrackBackend::kGpu && !gpu_reason.empty()) {
-      return unmeasuredRow(std::move(row.keys), MeasureStatus::kSkipped, gpu_reason);
+      return results::unmeasuredRow(std::move(row.keys), results::MeasureStatus::kSkipped,
+                                    gpu_reason);
     }
     try {
       const CrackFigures f = measure();
       if (!f.measured) {
-        return unmeasuredRow(std::move(row.keys), MeasureStatus::kSkipped, f.skipped_reason);
+        return results::unmeasuredRow(std::move(row.keys), results::MeasureStatus::kSkipped,
+                                      f.skipped_reason);
       }
       row.metrics = crackTable().metrics(f);
     } catch (const std::exception& error) {
       if (backend == CrackBackend::kCpuFloat) throw;
-      return unmeasuredRow(std::move(row.keys), MeasureStatus::kFailed, error.what());
+      return results::unmeasuredRow(std::move(row.keys), results::MeasureStatus::kFailed,
+                                    error.what());
     }
     return row;
   }
@@ -235,4 +240,4 @@ class CracksMeasure final : public Measure {
 TB_REGISTER_MEASURE(CracksMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

@@ -11,7 +11,7 @@
 #include "core/gpu/patch_program.h"
 #include "core/gpu/render_target.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // TES invocations a draw aims for (lavapipe's tessellator slows down with many patches
@@ -32,14 +32,14 @@ std::string describe(const tess::DomainPoint& p) {
 
 // The device positions of one patch's tessellation points: `captured` is that patch's
 // vertices sorted by coordinate bits, exactly one per point of `tessellation`.
-std::vector<Vec3f> positionsAtPoints(uint32_t patch, const tess::Tessellation& tessellation,
-                                     std::span<const gpu::CapturedVertex> captured) {
+std::vector<mesh::Vec3f> positionsAtPoints(uint32_t patch, const tess::Tessellation& tessellation,
+                                           std::span<const gpu::CapturedVertex> captured) {
   if (captured.size() != tessellation.points.size()) {
     throw gpu::GpuError("tessellateOnDevice: patch " + std::to_string(patch) + " has " +
                         std::to_string(captured.size()) + " device points, the tessellator " +
                         std::to_string(tessellation.points.size()));
   }
-  std::vector<Vec3f> positions(tessellation.points.size());
+  std::vector<mesh::Vec3f> positions(tessellation.points.size());
   for (size_t k = 0; k < tessellation.points.size(); ++k) {
     const CoordKey key = coordKey(tessellation.points[k]);
     const auto found = std::lower_bound(captured.begin(), captured.end(), key,
@@ -76,14 +76,14 @@ double clipDeterminant(const std::array<float, 4>& a, const std::array<float, 4>
 
 }  // namespace
 
-DeviceSurface tessellateOnDevice(gpu::Context& context, const SurfacePatches& patches,
+DeviceSurface tessellateOnDevice(gpu::Context& context, const techniques::SurfacePatches& patches,
                                  tess::Spacing spacing, const tess::Levels& levels) {
   const std::vector<gpu::GpuPatchProgram> programs = patches.gpuPrograms();
   if (programs.empty()) {
     throw gpu::GpuError("tessellateOnDevice: the technique has no GPU program");
   }
   // Per patch, its triangles; emitted in patch order at the end.
-  std::vector<std::vector<std::array<Vec3f, 3>>> per_patch(patches.patchCount());
+  std::vector<std::vector<std::array<mesh::Vec3f, 3>>> per_patch(patches.patchCount());
   for (const gpu::GpuPatchProgram& program : programs) {
     const tess::Tessellation tessellation = tess::tessellate(program.domain, spacing, levels);
     gpu::PatchProgramOptions options;
@@ -101,7 +101,8 @@ DeviceSurface tessellateOnDevice(gpu::Context& context, const SurfacePatches& pa
       const auto by_patch = [](const gpu::CapturedVertex& v, uint32_t p) { return v.patch < p; };
       const auto begin = std::lower_bound(all.begin(), all.end(), patch, by_patch);
       const auto end = std::lower_bound(begin, all.end(), patch + 1, by_patch);
-      const std::vector<Vec3f> positions = positionsAtPoints(patch, tessellation, {begin, end});
+      const std::vector<mesh::Vec3f> positions =
+          positionsAtPoints(patch, tessellation, {begin, end});
       auto& out = per_patch.at(patch);
       out.reserve(tessellation.triangles.size());
       for (const std::array<uint32_t, 3>& t : tessellation.triangles) {
@@ -137,9 +138,9 @@ VisibilityOracle::VisibilityOracle(gpu::Context& context, const DeviceSurface& s
 
 VisibilityOracle::~VisibilityOracle() = default;
 
-std::vector<uint8_t> VisibilityOracle::transformAndClassify(const View& view) {
-  const Mat4& m = view.view_projection;
-  auto toClip = [&](const Vec3f& p) {
+std::vector<uint8_t> VisibilityOracle::transformAndClassify(const view::View& view) {
+  const view::Mat4& m = view.view_projection;
+  auto toClip = [&](const mesh::Vec3f& p) {
     const std::array<double, 4> c = m.transform({double(p.x), double(p.y), double(p.z), 1.0});
     return std::array<float, 4>{float(c[0]), float(c[1]), float(c[2]), float(c[3])};
   };
@@ -155,7 +156,7 @@ std::vector<uint8_t> VisibilityOracle::transformAndClassify(const View& view) {
   return cullable;
 }
 
-PatchVisibility VisibilityOracle::visibility(const View& view) {
+PatchVisibility VisibilityOracle::visibility(const view::View& view) {
   PatchVisibility result;
   result.ideally_cullable = transformAndClassify(view);
   if (!target_ || target_->width() != view.viewport_width_px ||
@@ -176,4 +177,4 @@ PatchVisibility VisibilityOracle::visibility(const View& view) {
   return result;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

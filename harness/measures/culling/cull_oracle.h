@@ -26,19 +26,19 @@
 #include "core/view/view.h"
 #include "techniques/technique.h"
 
-namespace tb {
-
-namespace gpu {
+namespace tb::gpu {
 class Context;
 class RenderTarget;
-}  // namespace gpu
+}  // namespace tb::gpu
+
+namespace tb::measures {
 
 // Every patch's tessellated surface as the technique's own TCS/TES computed it on the device.
 struct DeviceSurface {
   size_t patch_count = 0;
   // World positions (controlMesh() units), winding front-facing per the convention above:
   // (v1 - v0) x (v2 - v0) points out of a closed surface.
-  std::vector<std::array<Vec3f, 3>> triangles;
+  std::vector<std::array<mesh::Vec3f, 3>> triangles;
   std::vector<uint32_t> triangle_patch;  // SurfacePatches patch of each triangle
 };
 
@@ -50,7 +50,7 @@ struct DeviceSurface {
 // a patch are not exactly the tessellator's (a point missing or extra).
 // Cost: one capture of every TES invocation plus a sort; catmark_torus with acc at level 8
 // (32 patches, 4096 triangles) takes ~0.03 s on lavapipe, most of it the pipeline's first use.
-DeviceSurface tessellateOnDevice(gpu::Context& context, const SurfacePatches& patches,
+DeviceSurface tessellateOnDevice(gpu::Context& context, const techniques::SurfacePatches& patches,
                                  tess::Spacing spacing, const tess::Levels& levels);
 
 struct PatchVisibility {
@@ -82,18 +82,18 @@ class VisibilityOracle {
   VisibilityOracle(const VisibilityOracle&) = delete;
   VisibilityOracle& operator=(const VisibilityOracle&) = delete;
 
-  PatchVisibility visibility(const View& view);
+  PatchVisibility visibility(const view::View& view);
 
  private:
   // Fills clip_ and returns ideally_cullable per patch.
-  std::vector<uint8_t> transformAndClassify(const View& view);
+  std::vector<uint8_t> transformAndClassify(const view::View& view);
 
   gpu::Context& context_;
   size_t patch_count_;
-  std::vector<std::array<Vec3f, 3>> triangles_;
+  std::vector<std::array<mesh::Vec3f, 3>> triangles_;
   std::vector<uint32_t> triangle_patch_;
   std::vector<std::array<float, 4>> clip_;  // 3 per triangle, reused between calls
   std::unique_ptr<gpu::RenderTarget> target_;
 };
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -12,7 +12,7 @@
 #include "harness/lod/factor_policy.h"
 #include "harness/measures/culling/cull_oracle.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // Patches per draw: lavapipe's tessellator slows down with many patches in one draw; at the
@@ -24,8 +24,8 @@ tess::Levels uniformLevels(uint32_t level) {
   return {{l, l, l, l}, {l, l}};
 }
 
-View scaledView(const View& view, double scale) {
-  View scaled = view;
+view::View scaledView(const view::View& view, double scale) {
+  view::View scaled = view;
   scaled.viewport_width_px = std::max<uint32_t>(1, uint32_t(std::lround(view.viewport_width_px * scale)));
   scaled.viewport_height_px =
       std::max<uint32_t>(1, uint32_t(std::lround(view.viewport_height_px * scale)));
@@ -64,22 +64,24 @@ CullingSummary summarise(std::span<const CullingFrame> frames) {
   return s;
 }
 
-CullingRun::CullingRun(const SurfacePatches& patches, gpu::Context* context,
+CullingRun::CullingRun(const techniques::SurfacePatches& patches, gpu::Context* context,
                        std::string gpu_unavailable, const CullingOptions& options)
     : patches_(patches), programs_(patches.gpuPrograms()), context_(context), options_(options) {
-  bounds_ = cullBounds(patches, factorCorners(patches), diagonalOf(boundsOf(patches.controlMesh())));
+  bounds_ = lod::cullBounds(patches, lod::factorCorners(patches),
+                            mesh::diagonalOf(mesh::boundsOf(patches.controlMesh())));
   const tess::Levels levels = uniformLevels(options.level);
   const tess::Tessellation quad =
       tess::tessellate(tess::Domain::kQuad, tess::Spacing::kInteger, levels);
   const tess::Tessellation triangle =
       tess::tessellate(tess::Domain::kTriangle, tess::Spacing::kInteger, levels);
   for (size_t p = 0; p < patches.patchCount(); ++p) {
-    const tess::Tessellation& t = patches.patchDomain(p) == PatchDomain::kQuad ? quad : triangle;
+    const tess::Tessellation& t =
+        patches.patchDomain(p) == techniques::PatchDomain::kQuad ? quad : triangle;
     patch_points_.push_back(t.points.size());
     patch_triangles_.push_back(t.triangles.size());
   }
   for (const gpu::GpuPatchProgram& program : programs_) {
-    device_policies_.push_back({{}, cullPatchWords(bounds_, program)});
+    device_policies_.push_back({{}, lod::cullPatchWords(bounds_, program)});
   }
   if (programs_.empty()) {
     gpu_skip_reason_ = "the technique has no GPU program";
@@ -103,7 +105,7 @@ void CullingRun::prepareDevice() {
   }
 }
 
-CullingRun::DeviceCounts CullingRun::runOnDevice(const CullParams* params) {
+CullingRun::DeviceCounts CullingRun::runOnDevice(const lod::CullParams* params) {
   DeviceCounts counts;
   counts.culled.assign(patches_.patchCount(), 0);
   counts.primitives_counted = true;
@@ -116,7 +118,7 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const CullParams* params) {
     run_options.statistics = true;
     run_options.patches_per_draw = kPatchesPerDraw;
     if (params != nullptr) {
-      device_policies_[k].param_words = cullParamWords(*params);
+      device_policies_[k].param_words = lod::cullParamWords(*params);
       run_options.cull_policy = &device_policies_[k];
     }
     const gpu::PatchProgramCapture run =
@@ -133,8 +135,8 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const CullParams* params) {
   return counts;
 }
 
-std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const CullPolicy> policies,
-                                                          std::span<const View> views) {
+std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const lod::CullPolicy> policies,
+                                                          std::span<const view::View> views) {
   prepareDevice();
   std::vector<std::vector<CullingFrame>> result(policies.size());
   uint64_t all_points = 0, all_triangles = 0;
@@ -144,7 +146,7 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const CullPo
   }
   for (size_t f = 0; f < views.size(); ++f) {
     std::optional<PatchVisibility> visibility;
-    const View render_view = scaledView(views[f], options_.render_scale);
+    const view::View render_view = scaledView(views[f], options_.render_scale);
     if (oracle_ != nullptr) {
       try {
         visibility = oracle_->visibility(render_view);
@@ -159,8 +161,8 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const CullPo
       frame.patches = patches_.patchCount();
       frame.tes_invocations_unculled = all_points;
       frame.triangles_unculled = all_triangles;
-      const CullParams params = cullParams(policies[k], views[f], bounds_);
-      const std::vector<uint8_t> culled = cullDecisions(params, bounds_);
+      const lod::CullParams params = lod::cullParams(policies[k], views[f], bounds_);
+      const std::vector<uint8_t> culled = lod::cullDecisions(params, bounds_);
       for (size_t p = 0; p < culled.size(); ++p) {
         if (culled[p]) {
           ++frame.culled_patches;
@@ -171,12 +173,11 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const CullPo
       }
       if (unculled_ && gpu_skip_reason_.empty()) {
         try {
-          const DeviceCounts device = policies[k] == CullPolicy::kNone
-                                          ? DeviceCounts{std::vector<uint8_t>(culled.size(), 0),
-                                                         unculled_->tes_invocations,
-                                                         unculled_->primitives_counted,
-                                                         unculled_->primitives}
-                                          : runOnDevice(&params);
+          const DeviceCounts device =
+              policies[k] == lod::CullPolicy::kNone
+                  ? DeviceCounts{std::vector<uint8_t>(culled.size(), 0), unculled_->tes_invocations,
+                                 unculled_->primitives_counted, unculled_->primitives}
+                  : runOnDevice(&params);
           frame.gpu_measured = true;
           frame.gpu_tes_invocations = device.tes_invocations;
           frame.gpu_tes_invocations_unculled = unculled_->tes_invocations;
@@ -213,4 +214,4 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const CullPo
   return result;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -20,7 +20,7 @@
 #include "harness/lod/cull_policy.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 class VisibilityOracle;
 struct DeviceSurface;
@@ -78,15 +78,15 @@ struct CullingOptions {
 class CullingRun {
  public:
   // `context` null: CPU twin and counts only; gpu_unavailable says why.
-  CullingRun(const SurfacePatches& patches, gpu::Context* context, std::string gpu_unavailable,
-             const CullingOptions& options);
+  CullingRun(const techniques::SurfacePatches& patches, gpu::Context* context,
+             std::string gpu_unavailable, const CullingOptions& options);
   ~CullingRun();
 
   // Per policy (in `policies` order), one CullingFrame per view.
-  std::vector<std::vector<CullingFrame>> frames(std::span<const CullPolicy> policies,
-                                                std::span<const View> views);
+  std::vector<std::vector<CullingFrame>> frames(std::span<const lod::CullPolicy> policies,
+                                                std::span<const view::View> views);
 
-  const CullBounds& bounds() const { return bounds_; }
+  const lod::CullBounds& bounds() const { return bounds_; }
   // Why the device figures (gpu_*, oracle) are missing; empty when they were measured.
   const std::string& gpuSkipReason() const { return gpu_skip_reason_; }
 
@@ -97,17 +97,17 @@ class CullingRun {
     bool primitives_counted = false;
     uint64_t primitives = 0;
   };
-  DeviceCounts runOnDevice(const CullParams* params);
+  DeviceCounts runOnDevice(const lod::CullParams* params);
   void prepareDevice();
 
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   std::vector<gpu::GpuPatchProgram> programs_;
   // Per program, the packed bounds (patch_words, once) and the frame's view (param_words).
   std::vector<gpu::TcsCullPolicy> device_policies_;
   gpu::Context* context_;
   std::string gpu_skip_reason_;
   CullingOptions options_;
-  CullBounds bounds_;
+  lod::CullBounds bounds_;
   std::vector<uint64_t> patch_points_, patch_triangles_;
   bool device_ready_ = false;
   std::optional<DeviceCounts> unculled_;
@@ -115,4 +115,4 @@ class CullingRun {
   std::unique_ptr<VisibilityOracle> oracle_;
 };
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -9,7 +9,7 @@
 #include "harness/measures/measure.h"
 #include "harness/measures/metric_table.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr const char* kSummaryKey = "path";
@@ -24,7 +24,7 @@ CullingOptions optionsFor(SuiteMode suite) {
 // Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
 // as many patches as show no pixel; worst: a visible patch culled (a hole in the image).
 const MetricTable<CullingFrame>& frameTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = CullingFrame;
   auto gpu = [](auto member) {
     return [member](const F& f) -> std::optional<double> {
@@ -38,42 +38,45 @@ const MetricTable<CullingFrame>& frameTable() {
   };
   static const MetricTable<F> kTable{
       // patches: count; context
-      {"patches", Unit::kCount, D::kNone, &F::patches},
+      {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // culled_patches: count; context (see culled_fraction)
-      {"culled_patches", Unit::kCount, D::kNone, &F::culled_patches},
+      {"culled_patches", results::Unit::kCount, D::kNone, &F::culled_patches},
       // culled_fraction: ratio; up to cullable / patches with no false cull (best), 0 (worst:
       //   nothing culled)
-      {"culled_fraction", Unit::kRatio, D::kHigherIsBetter,
-       [](const F& f) { return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0; }},
+      {"culled_fraction", results::Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) {
+         return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0;
+       }},
       // tes_invocations: count; 0 (best), tes_invocations_unculled (worst: no saving)
-      {"tes_invocations", Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
+      {"tes_invocations", results::Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
       // tes_invocations_unculled: count; context
-      {"tes_invocations_unculled", Unit::kCount, D::kNone, &F::tes_invocations_unculled},
+      {"tes_invocations_unculled", results::Unit::kCount, D::kNone, &F::tes_invocations_unculled},
       // tes_saving: ratio 1 - TES invocations / unculled; 1 (best), 0 (worst)
-      {"tes_saving", Unit::kRatio, D::kHigherIsBetter,
+      {"tes_saving", results::Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) {
          return f.tes_invocations_unculled > 0
                     ? 1 - double(f.tes_invocations) / double(f.tes_invocations_unculled)
                     : 0.0;
        }},
       // triangles: count; 0 (best), the unculled triangles (worst)
-      {"triangles", Unit::kCount, D::kLowerIsBetter, &F::triangles},
+      {"triangles", results::Unit::kCount, D::kLowerIsBetter, &F::triangles},
       // gpu_culled_patches: count; context: the device's pipeline statistics
-      {"gpu_culled_patches", Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
+      {"gpu_culled_patches", results::Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
       // gpu_tes_invocations: count; 0 (best), gpu_tes_invocations_unculled (worst)
-      {"gpu_tes_invocations", Unit::kCount, D::kLowerIsBetter, gpu(&F::gpu_tes_invocations)},
+      {"gpu_tes_invocations", results::Unit::kCount, D::kLowerIsBetter,
+       gpu(&F::gpu_tes_invocations)},
       // gpu_tes_invocations_unculled: count; context
-      {"gpu_tes_invocations_unculled", Unit::kCount, D::kNone,
+      {"gpu_tes_invocations_unculled", results::Unit::kCount, D::kNone,
        gpu(&F::gpu_tes_invocations_unculled)},
       // gpu_primitives: count; 0 (best), gpu_primitives_unculled (worst)
-      {"gpu_primitives", Unit::kCount, D::kLowerIsBetter,
+      {"gpu_primitives", results::Unit::kCount, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          return f.gpu_measured && f.gpu_primitives_counted
                     ? std::optional<double>(double(f.gpu_primitives))
                     : std::nullopt;
        }},
       // gpu_primitives_unculled: count; context
-      {"gpu_primitives_unculled", Unit::kCount, D::kNone,
+      {"gpu_primitives_unculled", results::Unit::kCount, D::kNone,
        [](const F& f) -> std::optional<double> {
          return f.gpu_measured && f.gpu_primitives_counted
                     ? std::optional<double>(double(f.gpu_primitives_unculled))
@@ -81,7 +84,7 @@ const MetricTable<CullingFrame>& frameTable() {
        }},
       // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
       //   (worst)
-      {"gpu_counts_differ", Unit::kFlag, D::kLowerIsBetter,
+      {"gpu_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
        [](const F& f) -> std::optional<double> {
          if (!f.gpu_measured) return std::nullopt;
          const bool differ = f.gpu_tes_invocations != f.tes_invocations ||
@@ -90,28 +93,29 @@ const MetricTable<CullingFrame>& frameTable() {
        }},
       // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
       //   (worst)
-      {"twin_mismatches", Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
+      {"twin_mismatches", results::Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
       // visible_patches: count; context: patches with a pixel in the unculled render
-      {"visible_patches", Unit::kCount, D::kNone, oracle(&F::visible_patches)},
+      {"visible_patches", results::Unit::kCount, D::kNone, oracle(&F::visible_patches)},
       // cullable_patches: count; context: what an ideal back-face + frustum culler removes
-      {"cullable_patches", Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
+      {"cullable_patches", results::Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
       // false_culls: count; 0 (best), up to visible_patches (worst)
-      {"false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
+      {"false_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
       // false_cull_pixels: pixels; 0 (best), up to the render's pixels (worst)
-      {"false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&F::false_cull_pixels)},
+      {"false_cull_pixels", results::Unit::kPixels, D::kLowerIsBetter,
+       oracle(&F::false_cull_pixels)},
       // missed_culls: count; 0 (best), up to cullable_patches (worst)
-      {"missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
+      {"missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
       // render_width_px: pixels; context
-      {"render_width_px", Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
+      {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
       // render_height_px: pixels; context
-      {"render_height_px", Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
+      {"render_height_px", results::Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
   };
   return kTable;
 }
 
 // Summary rows, one per policy over the path: the numbers to choose a policy by.
 const MetricTable<CullingSummary>& summaryTable() {
-  using D = Direction;
+  using D = results::Direction;
   using S = CullingSummary;
   auto oracle = [](auto member) {
     return [member](const S& s) -> std::optional<double> {
@@ -120,31 +124,33 @@ const MetricTable<CullingSummary>& summaryTable() {
   };
   static const MetricTable<S> kTable{
       // mean_culled_fraction: ratio, mean over frames; as culled_fraction
-      {"mean_culled_fraction", Unit::kRatio, D::kHigherIsBetter, &S::mean_culled_fraction},
+      {"mean_culled_fraction", results::Unit::kRatio, D::kHigherIsBetter, &S::mean_culled_fraction},
       // mean_tes_saving: ratio, mean over frames; 1 (best), 0 (worst)
-      {"mean_tes_saving", Unit::kRatio, D::kHigherIsBetter, &S::mean_tes_saving},
+      {"mean_tes_saving", results::Unit::kRatio, D::kHigherIsBetter, &S::mean_tes_saving},
       // total_false_culls: count over frames; 0 (best), unbounded (worst)
-      {"total_false_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::false_culls)},
+      {"total_false_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&S::false_culls)},
       // total_false_cull_pixels: pixels over frames; 0 (best), unbounded (worst)
-      {"total_false_cull_pixels", Unit::kPixels, D::kLowerIsBetter, oracle(&S::false_cull_pixels)},
+      {"total_false_cull_pixels", results::Unit::kPixels, D::kLowerIsBetter,
+       oracle(&S::false_cull_pixels)},
       // total_missed_culls: count over frames; 0 (best), unbounded (worst)
-      {"total_missed_culls", Unit::kCount, D::kLowerIsBetter, oracle(&S::missed_culls)},
+      {"total_missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&S::missed_culls)},
       // mean_cullable_fraction: ratio; context: the ideal culler's share
-      {"mean_cullable_fraction", Unit::kRatio, D::kNone, oracle(&S::mean_cullable_fraction)},
+      {"mean_cullable_fraction", results::Unit::kRatio, D::kNone,
+       oracle(&S::mean_cullable_fraction)},
       // total_twin_mismatches: count over frames; 0 (best), unbounded (worst)
-      {"total_twin_mismatches", Unit::kCount, D::kLowerIsBetter,
+      {"total_twin_mismatches", results::Unit::kCount, D::kLowerIsBetter,
        [](const S& s) -> std::optional<double> {
          return s.gpu_measured ? std::optional<double>(double(s.twin_mismatches)) : std::nullopt;
        }},
       // frames: count; context
-      {"frames", Unit::kCount, D::kNone, &S::frames},
+      {"frames", results::Unit::kCount, D::kNone, &S::frames},
   };
   return kTable;
 }
 
-std::vector<MetricSpec> allSpecs() {
-  std::vector<MetricSpec> specs = summaryTable().specs();
-  for (const MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
+std::vector<results::MetricSpec> allSpecs() {
+  std::vector<results::MetricSpec> specs = summaryTable().specs();
+  for (const results::MetricSpec& spec : frameTable().specs()) specs.push_back(spec);
   return specs;
 }
 
@@ -152,11 +158,11 @@ std::vector<std::string> policyNotes() {
   std::string text = "policies (shaders/common/cull.glsl, run in every technique's own TCS, which "
                      "writes outer level 0 for a culled patch; CPU twin "
                      "harness/lod/cull_policy.h):";
-  for (CullPolicy policy : allCullPolicies()) {
+  for (lod::CullPolicy policy : lod::allCullPolicies()) {
     text += " ";
-    text += cullPolicyName(policy);
+    text += lod::cullPolicyName(policy);
     text += " = ";
-    text += cullPolicyDescription(policy);
+    text += lod::cullPolicyDescription(policy);
     text += ";";
   }
   return {text};
@@ -197,13 +203,13 @@ class CullingMeasure final : public Measure {
       for (std::string& note : policyNotes()) info.notes.push_back(std::move(note));
       // The share of TES work each policy removes (its path summary rows; median over
       // assets and camera paths).
-      info.plots = {PlotSpec{.title = "TES invocations saved per culling policy",
-                             .kind = PlotKind::kBar,
-                             .x = "policy",
-                             .y = "mean_tes_saving",
-                             .series = "technique",
-                             .facet = "",
-                             .where = {{"summary", kSummaryKey}}}};
+      info.plots = {results::PlotSpec{.title = "TES invocations saved per culling policy",
+                                      .kind = results::PlotKind::kBar,
+                                      .x = "policy",
+                                      .y = "mean_tes_saving",
+                                      .series = "technique",
+                                      .facet = "",
+                                      .where = {{"summary", kSummaryKey}}}};
       return info;
     }();
     return kInfo;
@@ -221,20 +227,20 @@ class CullingMeasure final : public Measure {
     return {{"orbit", 4}, {"dolly", 8}, {"flyby", 8}};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    const CameraPath& path = *input.camera_path;
+    const view::CameraPath& path = *input.camera_path;
     CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, optionsFor(input.suite));
-    const std::span<const CullPolicy> policies = allCullPolicies();
+    const std::span<const lod::CullPolicy> policies = lod::allCullPolicies();
     const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);
     if (!run.gpuSkipReason().empty()) {
       // gpu_*, twin_mismatches and the oracle's figures live in the per-frame rows; without
       // them, this row says why.
-      result.rows.push_back(unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped,
-                                          run.gpuSkipReason()));
+      result.rows.push_back(results::unmeasuredRow(
+          {{"part", "gpu"}}, results::MeasureStatus::kSkipped, run.gpuSkipReason()));
     }
-    const CullBounds& bounds = run.bounds();
+    const lod::CullBounds& bounds = run.bounds();
     if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {
       result.notes.push_back(std::to_string(bounds.patches_without_cone) + " of " +
                              std::to_string(bounds.patches.size()) +
@@ -244,16 +250,16 @@ class CullingMeasure final : public Measure {
                              " have no control hull (their corners stand in)");
     }
     for (size_t k = 0; k < policies.size(); ++k) {
-      MetricRow row;
-      row.keys["policy"] = std::string(cullPolicyName(policies[k]));
+      results::MetricRow row;
+      row.keys["policy"] = std::string(lod::cullPolicyName(policies[k]));
       row.keys["summary"] = kSummaryKey;
       row.metrics = summaryTable().metrics(summarise(frames[k]));
       result.rows.push_back(std::move(row));
     }
     for (size_t k = 0; k < policies.size(); ++k) {
       for (const CullingFrame& frame : frames[k]) {
-        MetricRow row;
-        row.keys["policy"] = std::string(cullPolicyName(policies[k]));
+        results::MetricRow row;
+        row.keys["policy"] = std::string(lod::cullPolicyName(policies[k]));
         row.keys["frame"] = std::to_string(frame.frame);
         row.metrics = frameTable().metrics(frame);
         result.rows.push_back(std::move(row));
@@ -266,4 +272,4 @@ class CullingMeasure final : public Measure {
 TB_REGISTER_MEASURE(CullingMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

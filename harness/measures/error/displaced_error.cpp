@@ -9,20 +9,20 @@
 #include "reference/triangle_distance_field.h"
 #include "reference/triangle_mesh_ref.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // The lattice of one patch: level + 1 points a side (quads) or the triangle's
 // (level + 1)(level + 2) / 2, and its triangles (counter-clockwise in the domain).
 struct Lattice {
-  std::vector<DomainCoord> points;
+  std::vector<techniques::DomainCoord> points;
   std::vector<ref::Triangle> triangles;
 };
 
-Lattice latticeOf(PatchDomain domain, int level) {
+Lattice latticeOf(techniques::PatchDomain domain, int level) {
   Lattice lattice;
   const double step = 1.0 / level;
-  if (domain == PatchDomain::kQuad) {
+  if (domain == techniques::PatchDomain::kQuad) {
     for (int j = 0; j <= level; ++j) {
       for (int i = 0; i <= level; ++i) lattice.points.push_back({i * step, j * step, 0});
     }
@@ -56,27 +56,27 @@ Lattice latticeOf(PatchDomain domain, int level) {
 
 }  // namespace
 
-DisplacedErrorFigures measureDisplacedError(const SurfacePatches& displaced,
+DisplacedErrorFigures measureDisplacedError(const techniques::SurfacePatches& displaced,
                                             const DisplacementTarget& target, int level,
                                             uint32_t map_texels_per_side) {
   DisplacedErrorFigures figures;
   figures.map_texels_per_side = map_texels_per_side;
   figures.bbox_diagonal = ref::boundingBoxDiagonal(displaced.controlMesh().positions);
   const size_t patches = displaced.patchCount();
-  const Lattice lattices[2] = {latticeOf(PatchDomain::kTriangle, level),
-                               latticeOf(PatchDomain::kQuad, level)};
+  const Lattice lattices[2] = {latticeOf(techniques::PatchDomain::kTriangle, level),
+                               latticeOf(techniques::PatchDomain::kQuad, level)};
   auto latticeFor = [&](size_t p) -> const Lattice& {
-    return lattices[displaced.patchDomain(p) == PatchDomain::kQuad ? 1 : 0];
+    return lattices[displaced.patchDomain(p) == techniques::PatchDomain::kQuad ? 1 : 0];
   };
   std::vector<size_t> first(patches + 1, 0);
   for (size_t p = 0; p < patches; ++p) first[p + 1] = first[p] + latticeFor(p).points.size();
-  std::vector<Vec3d> points(first.back());
+  std::vector<mesh::Vec3d> points(first.back());
   std::vector<double> distance(first.back());
   tbb::parallel_for(size_t(0), patches, [&](size_t p) {
     uint32_t hint = ref::kNoTriangle;
     const Lattice& lattice = latticeFor(p);
     for (size_t k = 0; k < lattice.points.size(); ++k) {
-      const Vec3d point = displaced.evaluate(p, lattice.points[k]).position;
+      const mesh::Vec3d point = displaced.evaluate(p, lattice.points[k]).position;
       const ref::ClosestPoint hit = target.field->closest(point, hint);
       hint = hit.triangle;
       points[first[p] + k] = point;
@@ -113,4 +113,4 @@ DisplacedErrorFigures measureDisplacedError(const SurfacePatches& displaced,
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -8,7 +8,7 @@
 #include "harness/measures/displaced_input.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 struct DisplacedErrorFigures {
   // Two-sided Hausdorff distance between the displaced surface tessellated at `level` and
@@ -31,8 +31,8 @@ struct DisplacedErrorFigures {
 
 // `displaced`: the technique's surface with the map applied (DisplacedPatches); `level`:
 // segments per patch edge of the lattice (>= 1).
-DisplacedErrorFigures measureDisplacedError(const SurfacePatches& displaced,
+DisplacedErrorFigures measureDisplacedError(const techniques::SurfacePatches& displaced,
                                             const DisplacementTarget& target, int level,
                                             uint32_t map_texels_per_side);
 
-}  // namespace tb
+}  // namespace tb::measures

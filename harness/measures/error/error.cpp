@@ -15,11 +15,11 @@
 #include "reference/limit_tessellation.h"
 #include "reference/triangle_mesh_ref.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 struct PatchSample {
-  DomainCoord coord;                    // as the technique takes it
+  techniques::DomainCoord coord;        // as the technique takes it
   int sub_face = -1;                    // >= 0: (u, v) are the (s, t) of this Bfr sub-face
   double u, v;                          // the limit face's parameter at the same point
   std::array<double, 4> corner_weight;  // weight of each patch corner
@@ -45,14 +45,14 @@ void appendGridTriangles(int level, uint32_t base, std::vector<ref::Triangle>* t
 
 // Barycentric lattice (triangles) or grid (quads) of `level` segments per edge, where the
 // patch and the limit face share their parameterisation.
-PatchSampling patchSampling(PatchDomain domain, int level) {
+PatchSampling patchSampling(techniques::PatchDomain domain, int level) {
   PatchSampling sampling;
   std::vector<PatchSample>& samples = sampling.samples;
   for (int i = 0; i <= level; ++i) {
-    const int j_end = domain == PatchDomain::kQuad ? level : level - i;
+    const int j_end = domain == techniques::PatchDomain::kQuad ? level : level - i;
     for (int j = 0; j <= j_end; ++j) {
       const double a = double(i) / level, b = double(j) / level;
-      if (domain == PatchDomain::kTriangle) {
+      if (domain == techniques::PatchDomain::kTriangle) {
         // Bfr's triangle has corners (0,0), (1,0), (0,1): weights (1-u-v, u, v).
         samples.push_back({{1 - a - b, a, b}, -1, a, b, {1 - a - b, a, b, 0}});
       } else {
@@ -61,7 +61,7 @@ PatchSampling patchSampling(PatchDomain domain, int level) {
       }
     }
   }
-  if (domain == PatchDomain::kQuad) {
+  if (domain == techniques::PatchDomain::kQuad) {
     appendGridTriangles(level, 0, &sampling.triangles);
     return sampling;
   }
@@ -103,7 +103,7 @@ PatchSampling subFaceSampling(int level) {
       for (int j = 0; j <= level; ++j) {
         const double s = double(i) / level, t = double(j) / level;
         const double w[4] = {(1 - s) * (1 - t), s * (1 - t), s * t, (1 - s) * t};
-        DomainCoord coord{0, 0, 0};
+        techniques::DomainCoord coord{0, 0, 0};
         for (int q = 0; q < 4; ++q) {
           for (int c = 0; c < 3; ++c) coord[c] += w[q] * quad[q][c];
         }
@@ -114,8 +114,8 @@ PatchSampling subFaceSampling(int level) {
   return sampling;
 }
 
-[[noreturn]] void throwUnmappedDomain(PatchDomain domain, osd::Scheme scheme, size_t face,
-                                      uint32_t face_size) {
+[[noreturn]] void throwUnmappedDomain(techniques::PatchDomain domain, osd::Scheme scheme,
+                                      size_t face, uint32_t face_size) {
   throw std::logic_error("error: patch over face " + std::to_string(face) + " is a " +
                          toString(domain) + " patch, but the face has " +
                          std::to_string(face_size) + " corners under " +
@@ -126,16 +126,18 @@ PatchSampling subFaceSampling(int level) {
 
 // The sampling of patch p over its limit face; throws std::logic_error for a patch
 // domain the face's parameterisation cannot be mapped to.
-const PatchSampling& samplingFor(PatchDomain domain, osd::Scheme scheme, size_t face,
+const PatchSampling& samplingFor(techniques::PatchDomain domain, osd::Scheme scheme, size_t face,
                                  uint32_t face_size,
                                  const std::array<PatchSampling, 3>& samplings) {
-  if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) return samplings[0];
-  if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) return samplings[1];
-  if (domain == PatchDomain::kTriangle && face_size == 3) return samplings[2];
+  if (domain == techniques::PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark)
+    return samplings[0];
+  if (domain == techniques::PatchDomain::kTriangle && scheme == osd::Scheme::kLoop)
+    return samplings[1];
+  if (domain == techniques::PatchDomain::kTriangle && face_size == 3) return samplings[2];
   throwUnmappedDomain(domain, scheme, face, face_size);
 }
 
-double angleDegrees(const Vec3d& a, const Vec3d& b) {
+double angleDegrees(const mesh::Vec3d& a, const mesh::Vec3d& b) {
   const double la = length(a), lb = length(b);
   if (!(la > 0) || !(lb > 0)) return 0;
   return std::acos(std::clamp(dot(a, b) / (la * lb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
@@ -146,7 +148,7 @@ double angleDegrees(const Vec3d& a, const Vec3d& b) {
 // weights of corners k+1 and k+2, the map is a = s (3 - t) / 6, b = t (3 - s) / 6, so
 // s - t = 2 (a - b) = d and t is the root in [0, 1] of t^2 + (d - 3) t + 6 b = 0, taken in the
 // form without cancellation (12 b / ((3 - d) + sqrt(disc))).
-LimitParameter subFaceParameter(const DomainCoord& coord) {
+LimitParameter subFaceParameter(const techniques::DomainCoord& coord) {
   int k = 0;
   for (int c = 1; c < 3; ++c) {
     if (coord[c] > coord[k]) k = c;
@@ -160,20 +162,21 @@ LimitParameter subFaceParameter(const DomainCoord& coord) {
 
 }  // namespace
 
-LimitParameter limitParameterOf(PatchDomain domain, osd::Scheme scheme, size_t face,
-                                uint32_t face_size, const DomainCoord& coord) {
-  if (domain == PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
+LimitParameter limitParameterOf(techniques::PatchDomain domain, osd::Scheme scheme, size_t face,
+                                uint32_t face_size, const techniques::DomainCoord& coord) {
+  if (domain == techniques::PatchDomain::kQuad && scheme == osd::Scheme::kCatmullClark) {
     return {-1, coord[0], coord[1]};
   }
-  if (domain == PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
+  if (domain == techniques::PatchDomain::kTriangle && scheme == osd::Scheme::kLoop) {
     return {-1, coord[1], coord[2]};
   }
-  if (domain == PatchDomain::kTriangle && face_size == 3) return subFaceParameter(coord);
+  if (domain == techniques::PatchDomain::kTriangle && face_size == 3)
+    return subFaceParameter(coord);
   throwUnmappedDomain(domain, scheme, face, face_size);
 }
 
-double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
-                         osd::Scheme scheme, size_t patch, const DomainCoord& coord) {
+double parametricErrorAt(const techniques::SurfacePatches& patches, const ref::LimitFace& face,
+                         osd::Scheme scheme, size_t patch, const techniques::DomainCoord& coord) {
   const LimitParameter at = limitParameterOf(patches.patchDomain(patch), scheme, patch,
                                              patches.controlMesh().faceSize(patch), coord);
   const ref::LimitPoint exact =
@@ -181,15 +184,15 @@ double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& fa
   return length(patches.evaluate(patch, coord).position - exact.position);
 }
 
-std::vector<uint8_t> facesTouchingCreases(const Mesh& mesh) {
+std::vector<uint8_t> facesTouchingCreases(const mesh::Mesh& mesh) {
   std::vector<uint8_t> creased_vertex(mesh.positions.size(), 0);
-  for (const Crease& crease : mesh.tags.creases) {
+  for (const mesh::Crease& crease : mesh.tags.creases) {
     if (crease.sharpness <= 0) continue;
     for (uint32_t v : {crease.v0, crease.v1}) {
       if (v < creased_vertex.size()) creased_vertex[v] = 1;
     }
   }
-  for (const Corner& corner : mesh.tags.corners) {
+  for (const mesh::Corner& corner : mesh.tags.corners) {
     if (corner.sharpness > 0 && corner.vertex < creased_vertex.size()) creased_vertex[corner.vertex] = 1;
   }
   std::vector<uint8_t> touching(mesh.faceCount(), 0);
@@ -210,10 +213,10 @@ struct SamplePlan {
   size_t sampleCount() const { return first_sample.back(); }
 };
 
-SamplePlan planSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
+SamplePlan planSamples(const techniques::SurfacePatches& patches, const ref::LimitSurface& limit,
                        osd::Scheme scheme, const std::array<PatchSampling, 3>& samplings,
                        SurfaceErrorFigures* figures) {
-  const Mesh& control = patches.controlMesh();
+  const mesh::Mesh& control = patches.controlMesh();
   const size_t patch_count = patches.patchCount();
   SamplePlan plan{std::vector<const PatchSampling*>(patch_count, nullptr),
                   std::vector<size_t>(patch_count + 1, 0)};
@@ -234,19 +237,20 @@ SamplePlan planSamples(const SurfacePatches& patches, const ref::LimitSurface& l
 // Per sample, in plan order: the technique's point, its parametric error (world units),
 // the normal angle (degrees), and whether it is near an extraordinary vertex.
 struct SampleValues {
-  std::vector<Vec3d> technique_points;
+  std::vector<mesh::Vec3d> technique_points;
   std::vector<double> errors, angles;
   std::vector<uint8_t> near_xord;
 };
 
-SampleValues evaluateSamples(const SurfacePatches& patches, const ref::LimitSurface& limit,
-                             osd::Scheme scheme, const SamplePlan& plan) {
-  const Topology topology = buildTopology(patches.controlMesh());
+SampleValues evaluateSamples(const techniques::SurfacePatches& patches,
+                             const ref::LimitSurface& limit, osd::Scheme scheme,
+                             const SamplePlan& plan) {
+  const mesh::Topology topology = mesh::buildTopology(patches.controlMesh());
   const uint32_t regular_valence = scheme == osd::Scheme::kCatmullClark ? 4 : 6;
   std::vector<uint8_t> extraordinary(patches.controlMesh().positions.size(), 0);
   for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
   const size_t sample_count = plan.sampleCount();
-  SampleValues values{std::vector<Vec3d>(sample_count), std::vector<double>(sample_count),
+  SampleValues values{std::vector<mesh::Vec3d>(sample_count), std::vector<double>(sample_count),
                       std::vector<double>(sample_count), std::vector<uint8_t>(sample_count)};
   tbb::parallel_for(size_t(0), patches.patchCount(), [&](size_t p) {
     if (plan.sampling_of[p] == nullptr) return;
@@ -254,7 +258,7 @@ SampleValues evaluateSamples(const SurfacePatches& patches, const ref::LimitSurf
     const auto corners = patches.patchCorners(p);
     size_t i = plan.first_sample[p];
     for (const PatchSample& sample : plan.sampling_of[p]->samples) {
-      const SurfacePoint point = patches.evaluate(p, sample.coord);
+      const techniques::SurfacePoint point = patches.evaluate(p, sample.coord);
       const ref::LimitPoint exact = sample.sub_face < 0
                                         ? face.evaluate(sample.u, sample.v)
                                         : face.evaluateSubFace(sample.sub_face, sample.u, sample.v);
@@ -288,8 +292,8 @@ std::vector<ref::Triangle> techniqueTriangles(const SamplePlan& plan) {
 }
 
 // 1 for each sample of a patch whose input face touches a crease.
-std::vector<uint8_t> creasedSamples(const SurfacePatches& patches, const Mesh* input,
-                                    const SamplePlan& plan) {
+std::vector<uint8_t> creasedSamples(const techniques::SurfacePatches& patches,
+                                    const mesh::Mesh* input, const SamplePlan& plan) {
   const std::vector<uint8_t> creased_face =
       facesTouchingCreases(input ? *input : patches.controlMesh());
   const auto nearCrease = [&](size_t p) {
@@ -348,9 +352,9 @@ void scaleByDiagonal(SurfaceErrorFigures* figures) {
 
 }  // namespace
 
-SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
-                                        const ref::LimitSurface& limit, const Mesh* input) {
-  const osd::Scheme scheme = referenceScheme(patches.approximates());
+SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patches,
+                                        const ref::LimitSurface& limit, const mesh::Mesh* input) {
+  const osd::Scheme scheme = lod::referenceScheme(patches.approximates());
   if (limit.scheme() != scheme) {
     throw std::logic_error("error: the patches approximate " +
                            std::string(osd::schemeName(scheme)) + " but the limit surface is " +
@@ -359,8 +363,8 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   SurfaceErrorFigures figures;
   figures.bbox_diagonal = ref::boundingBoxDiagonal(patches.controlMesh().positions);
   const std::array<PatchSampling, 3> samplings = {
-      patchSampling(PatchDomain::kQuad, kErrorSampleLevel),
-      patchSampling(PatchDomain::kTriangle, kErrorSampleLevel),
+      patchSampling(techniques::PatchDomain::kQuad, kErrorSampleLevel),
+      patchSampling(techniques::PatchDomain::kTriangle, kErrorSampleLevel),
       subFaceSampling(kErrorSubFaceSampleLevel)};
   const SamplePlan plan = planSamples(patches, limit, scheme, samplings, &figures);
   const SampleValues values = evaluateSamples(patches, limit, scheme, plan);
@@ -379,4 +383,4 @@ SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

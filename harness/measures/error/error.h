@@ -10,7 +10,7 @@
 #include "reference/limit_surface.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 // Every distance is a fraction of the control mesh's bounding-box diagonal
 // (best case 0; a visible error on a 1000-pixel-wide object starts near 1e-3).
@@ -69,13 +69,13 @@ constexpr double kNearExtraordinary = 0.75;
 // combination.
 // `input`: the mesh the technique was built from, whose tags say which samples are near a
 // crease; null: the control mesh's own tags.
-SurfaceErrorFigures measureSurfaceError(const SurfacePatches& patches,
+SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patches,
                                         const ref::LimitSurface& limit,
-                                        const Mesh* input = nullptr);
+                                        const mesh::Mesh* input = nullptr);
 
 // Per face of `mesh`: 1 when the face touches a crease (an edge of crease sharpness > 0 or a
 // vertex of corner sharpness > 0).
-std::vector<uint8_t> facesTouchingCreases(const Mesh& mesh);
+std::vector<uint8_t> facesTouchingCreases(const mesh::Mesh& mesh);
 
 // The point of the limit face (face_domain.h) at which a patch's domain coordinate is
 // graded: the same parameter for quads on Catmull-Clark faces ((u, v) = coord[0], coord[1])
@@ -90,15 +90,15 @@ struct LimitParameter {
 
 // Throws std::logic_error, as measureSurfaceError does, for a domain the face's
 // parameterisation cannot be mapped to. `face_size`: corners of control face `face`.
-LimitParameter limitParameterOf(PatchDomain domain, osd::Scheme scheme, size_t face,
-                                uint32_t face_size, const DomainCoord& coord);
+LimitParameter limitParameterOf(techniques::PatchDomain domain, osd::Scheme scheme, size_t face,
+                                uint32_t face_size, const techniques::DomainCoord& coord);
 
 // One parametric-error sample of patch p at `coord`, in world units (divide by the
 // bounding-box diagonal for the figures' unit): |S(p, coord) - limit(face(p), same point)|,
 // S from patches.evaluate (double), the point from limitParameterOf. Best case 0 (acc on a
 // regular face: ~1e-16 of the diagonal). `face` is limit.face(p) of a LimitSurface built as
 // for measureSurfaceError.
-double parametricErrorAt(const SurfacePatches& patches, const ref::LimitFace& face,
-                         osd::Scheme scheme, size_t patch, const DomainCoord& coord);
+double parametricErrorAt(const techniques::SurfacePatches& patches, const ref::LimitFace& face,
+                         osd::Scheme scheme, size_t patch, const techniques::DomainCoord& coord);
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -11,65 +11,65 @@
 #include "harness/measures/measure.h"
 #include "harness/measures/metric_table.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // Every distance and angle is best at 0; the sample counts, holes left out and the
 // diagonal that scales the distances are context.
 const MetricTable<SurfaceErrorFigures>& errorTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = SurfaceErrorFigures;
   static const MetricTable<F> kTable{
       // parametric_max: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
       //   (worst; visible near 1e-3)
-      {"parametric_max", Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_max},
+      {"parametric_max", results::Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_max},
       // parametric_rms: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
       //   (worst; visible near 1e-3)
-      {"parametric_rms", Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_rms},
+      {"parametric_rms", results::Unit::kDiagonal, D::kLowerIsBetter, &F::parametric_rms},
       // parametric_max_near_xord: fraction of the control mesh's bounding-box diagonal; 0 (best),
       //   unbounded (worst; visible near 1e-3); samples near an extraordinary vertex
-      {"parametric_max_near_xord", Unit::kDiagonal, D::kLowerIsBetter,
+      {"parametric_max_near_xord", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_near_xord},
       // parametric_max_elsewhere: fraction of the control mesh's bounding-box diagonal; 0 (best),
       //   unbounded (worst; visible near 1e-3); the other samples
-      {"parametric_max_elsewhere", Unit::kDiagonal, D::kLowerIsBetter,
+      {"parametric_max_elsewhere", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_elsewhere},
       // parametric_max_near_crease: fraction of the control mesh's bounding-box diagonal; 0 (best),
       //   unbounded (worst; visible near 1e-3); patches touching a crease
-      {"parametric_max_near_crease", Unit::kDiagonal, D::kLowerIsBetter,
+      {"parametric_max_near_crease", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_near_crease},
       // parametric_max_away_from_crease: fraction of the control mesh's bounding-box diagonal; 0
       //   (best), unbounded (worst; visible near 1e-3); the other patches
-      {"parametric_max_away_from_crease", Unit::kDiagonal, D::kLowerIsBetter,
+      {"parametric_max_away_from_crease", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::parametric_max_away_from_crease},
       // hausdorff: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
       //   (worst; visible near 1e-3); two-sided
-      {"hausdorff", Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
+      {"hausdorff", results::Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
       // hausdorff_tech_to_limit: fraction of the control mesh's bounding-box diagonal; 0 (best),
       //   unbounded (worst; visible near 1e-3)
-      {"hausdorff_tech_to_limit", Unit::kDiagonal, D::kLowerIsBetter,
+      {"hausdorff_tech_to_limit", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_technique_to_limit},
       // hausdorff_limit_to_tech: fraction of the control mesh's bounding-box diagonal; 0 (best),
       //   unbounded (worst; visible near 1e-3)
-      {"hausdorff_limit_to_tech", Unit::kDiagonal, D::kLowerIsBetter,
+      {"hausdorff_limit_to_tech", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_limit_to_technique},
       // rms_distance: fraction of the control mesh's bounding-box diagonal; 0 (best), unbounded
       //   (worst; visible near 1e-3)
-      {"rms_distance", Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
+      {"rms_distance", results::Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
       // normal_max: degrees; 0 (best), 180 (worst)
-      {"normal_max", Unit::kDegrees, D::kLowerIsBetter, &F::normal_max_deg},
+      {"normal_max", results::Unit::kDegrees, D::kLowerIsBetter, &F::normal_max_deg},
       // normal_mean: degrees; 0 (best), 180 (worst)
-      {"normal_mean", Unit::kDegrees, D::kLowerIsBetter, &F::normal_mean_deg},
+      {"normal_mean", results::Unit::kDegrees, D::kLowerIsBetter, &F::normal_mean_deg},
       // samples: count; context: parametric samples taken
-      {"samples", Unit::kCount, D::kNone, &F::samples},
+      {"samples", results::Unit::kCount, D::kNone, &F::samples},
       // samples_near_xord: count; context
-      {"samples_near_xord", Unit::kCount, D::kNone, &F::samples_near_xord},
+      {"samples_near_xord", results::Unit::kCount, D::kNone, &F::samples_near_xord},
       // samples_near_crease: count; context
-      {"samples_near_crease", Unit::kCount, D::kNone, &F::samples_near_crease},
+      {"samples_near_crease", results::Unit::kCount, D::kNone, &F::samples_near_crease},
       // patches_without_limit: count; context: patches left out (hole faces)
-      {"patches_without_limit", Unit::kCount, D::kNone, &F::patches_without_limit},
+      {"patches_without_limit", results::Unit::kCount, D::kNone, &F::patches_without_limit},
       // bbox_diagonal: world units; context: the unit of the other figures
-      {"bbox_diagonal", Unit::kWorld, D::kNone, &F::bbox_diagonal},
+      {"bbox_diagonal", results::Unit::kWorld, D::kNone, &F::bbox_diagonal},
   };
   return kTable;
 }
@@ -78,38 +78,38 @@ const MetricTable<SurfaceErrorFigures>& errorTable() {
 // per tessellation level. hausdorff, rms_distance, samples and bbox_diagonal mean what they
 // mean above, with the target in place of the limit.
 const MetricTable<DisplacedErrorFigures>& displacedErrorTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = DisplacedErrorFigures;
   static const MetricTable<F> kTable{
       // hausdorff: fraction of the bounding-box diagonal; 0 (best), unbounded (worst); two-sided,
       //   against the displaced target
-      {"hausdorff", Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
+      {"hausdorff", results::Unit::kDiagonal, D::kLowerIsBetter, &F::hausdorff},
       // hausdorff_tech_to_target: fraction of the bounding-box diagonal; 0 (best), unbounded
       //   (worst)
-      {"hausdorff_tech_to_target", Unit::kDiagonal, D::kLowerIsBetter,
+      {"hausdorff_tech_to_target", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_tech_to_target},
       // hausdorff_target_to_tech: fraction of the bounding-box diagonal; 0 (best), unbounded
       //   (worst)
-      {"hausdorff_target_to_tech", Unit::kDiagonal, D::kLowerIsBetter,
+      {"hausdorff_target_to_tech", results::Unit::kDiagonal, D::kLowerIsBetter,
        &F::hausdorff_target_to_tech},
       // rms_distance: fraction of the bounding-box diagonal; 0 (best), unbounded (worst)
-      {"rms_distance", Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
+      {"rms_distance", results::Unit::kDiagonal, D::kLowerIsBetter, &F::rms_distance},
       // samples: count; context
-      {"samples", Unit::kCount, D::kNone, &F::samples},
+      {"samples", results::Unit::kCount, D::kNone, &F::samples},
       // bbox_diagonal: world units; context: the unit of the other figures
-      {"bbox_diagonal", Unit::kWorld, D::kNone, &F::bbox_diagonal},
+      {"bbox_diagonal", results::Unit::kWorld, D::kNone, &F::bbox_diagonal},
       // map_texels_per_side: count; context: the displacement map's resolution
-      {"map_texels_per_side", Unit::kCount, D::kNone, &F::map_texels_per_side},
+      {"map_texels_per_side", results::Unit::kCount, D::kNone, &F::map_texels_per_side},
   };
   return kTable;
 }
 
 // Both tables' metrics, each name once, in emission order.
-std::vector<MetricSpec> errorSpecs() {
-  std::vector<MetricSpec> specs = errorTable().specs();
-  for (const MetricSpec& spec : displacedErrorTable().specs()) {
+std::vector<results::MetricSpec> errorSpecs() {
+  std::vector<results::MetricSpec> specs = errorTable().specs();
+  for (const results::MetricSpec& spec : displacedErrorTable().specs()) {
     if (std::none_of(specs.begin(), specs.end(),
-                     [&](const MetricSpec& s) { return s.name == spec.name; })) {
+                     [&](const results::MetricSpec& s) { return s.name == spec.name; })) {
       specs.push_back(spec);
     }
   }
@@ -150,27 +150,28 @@ class ErrorMeasure final : public Measure {
         // What a technique's accuracy costs: its worst TES instruction count (the
         // instructions measure's summary scope) against its Hausdorff error, one chart per
         // asset, each technique × variant a point.
-        {PlotSpec{.title = "Hausdorff error against TES instructions",
-                  .kind = PlotKind::kScatter,
-                  .x = "instructions.total",
-                  .y = "hausdorff",
-                  .series = "technique",
-                  .facet = "asset",
-                  .where = {{"displacement", ""}},
-                  .log_y = true,
-                  .pareto_front = true},
+        {results::PlotSpec{.title = "Hausdorff error against TES instructions",
+                           .kind = results::PlotKind::kScatter,
+                           .x = "instructions.total",
+                           .y = "hausdorff",
+                           .series = "technique",
+                           .facet = "asset",
+                           .where = {{"displacement", ""}},
+                           .log_y = true,
+                           .pareto_front = true},
          // Displaced surfaces: error against the target by tessellation level, one line per
          // map (its resolution in the row) and sampling.
-         PlotSpec{.title = "Displaced surfaces: Hausdorff distance to the baked target against "
-                           "tessellation level",
-                  .kind = PlotKind::kLine,
-                  .x = "level",
-                  .y = "hausdorff",
-                  .series = "displacement",
-                  .facet = "sampling",
-                  .where = {{"displacement", "*"}},
-                  .log_x = true,
-                  .log_y = true}}};
+         results::PlotSpec{.title =
+                               "Displaced surfaces: Hausdorff distance to the baked target against "
+                               "tessellation level",
+                           .kind = results::PlotKind::kLine,
+                           .x = "level",
+                           .y = "hausdorff",
+                           .series = "displacement",
+                           .facet = "sampling",
+                           .where = {{"displacement", "*"}},
+                           .log_x = true,
+                           .log_y = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -182,11 +183,11 @@ class ErrorMeasure final : public Measure {
     return requirements;
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
+  results::MeasureResult run(const MeasureInput& input) const override {
     if (input.displacement) return runDisplaced(input);
-    MeasureResult result;
+    results::MeasureResult result;
     result.measure = info().id;
-    const osd::Scheme scheme = referenceScheme(input.patches->approximates());
+    const osd::Scheme scheme = lod::referenceScheme(input.patches->approximates());
     try {
       const ref::LimitSurface limit(input.patches->controlMesh(), scheme);
       const SurfaceErrorFigures f = measureSurfaceError(*input.patches, limit, &input.mesh);
@@ -202,20 +203,20 @@ class ErrorMeasure final : public Measure {
             "corner, edge midpoints, centroid) to the patch's barycentric domain; their "
             "parametric error therefore depends on that map, their Hausdorff distance does not");
       }
-      MetricRow row;
+      results::MetricRow row;
       row.keys["reference"] = scheme == osd::Scheme::kLoop ? "loop_limit" : "catmull_clark_limit";
       row.metrics = errorTable().metrics(f);
       result.rows.push_back(std::move(row));
-    } catch (const InputError& error) {
-      result.status = MeasureStatus::kSkipped;
+    } catch (const mesh::InputError& error) {
+      result.status = results::MeasureStatus::kSkipped;
       result.reason = std::string("reference cannot represent the mesh: ") + error.what();
     }
     return result;
   }
 
  private:
-  MeasureResult runDisplaced(const MeasureInput& input) const {
-    MeasureResult result;
+  results::MeasureResult runDisplaced(const MeasureInput& input) const {
+    results::MeasureResult result;
     result.measure = info().id;
     const DisplacementRun& displacement = *input.displacement;
     const std::span<const int> levels = input.suite == SuiteMode::kFull
@@ -225,12 +226,12 @@ class ErrorMeasure final : public Measure {
       std::map<std::string, std::string> keys{{"reference", "baked_target"},
                                               {"level", std::to_string(level)}};
       if (!displacement.target) {
-        result.rows.push_back(unmeasuredRow(std::move(keys), MeasureStatus::kSkipped,
-                                            "the target cannot be rebuilt: " +
-                                                displacement.target_unavailable));
+        result.rows.push_back(results::unmeasuredRow(
+            std::move(keys), results::MeasureStatus::kSkipped,
+            "the target cannot be rebuilt: " + displacement.target_unavailable));
         continue;
       }
-      MetricRow row;
+      results::MetricRow row;
       row.keys = std::move(keys);
       row.metrics = displacedErrorTable().metrics(measureDisplacedError(
           *input.patches, *displacement.target, level, displacement.input->resolution));
@@ -244,4 +245,4 @@ class ErrorMeasure final : public Measure {
 TB_REGISTER_MEASURE(ErrorMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

@@ -13,55 +13,56 @@
 #include "harness/measures/metric_table.h"
 #include "shaders/embedded_shaders.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // Fewer instructions is better for every category; best case 0 (an empty stage).
 const MetricTable<InstructionCounts>& countTable() {
   using C = InstructionCounts;
-  constexpr Direction kLower = Direction::kLowerIsBetter;
+  constexpr results::Direction kLower = results::Direction::kLowerIsBetter;
   static const MetricTable<C> kTable{
       // add: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); OpFAdd,
       //   OpFSub
-      {"add", Unit::kCount, kLower, &C::add},
+      {"add", results::Unit::kCount, kLower, &C::add},
       // mul: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); float
       //   multiplies
-      {"mul", Unit::kCount, kLower, &C::mul},
+      {"mul", results::Unit::kCount, kLower, &C::mul},
       // div: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); OpFDiv,
       //   OpFRem, OpFMod
-      {"div", Unit::kCount, kLower, &C::div},
+      {"div", results::Unit::kCount, kLower, &C::div},
       // sqrt: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); Sqrt,
       //   InverseSqrt
-      {"sqrt", Unit::kCount, kLower, &C::sqrt},
+      {"sqrt", results::Unit::kCount, kLower, &C::sqrt},
       // compare: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   float comparisons
-      {"compare", Unit::kCount, kLower, &C::compare},
+      {"compare", results::Unit::kCount, kLower, &C::compare},
       // float_other: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   OpDot, OpFNegate, other float functions
-      {"float_other", Unit::kCount, kLower, &C::float_other},
+      {"float_other", results::Unit::kCount, kLower, &C::float_other},
       // float_arith: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   add + mul + div + sqrt + compare + float_other
-      {"float_arith", Unit::kCount, kLower, [](const C& c) { return double(c.floatArithmetic()); }},
+      {"float_arith", results::Unit::kCount, kLower,
+       [](const C& c) { return double(c.floatArithmetic()); }},
       // fma: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   GLSL.std.450 Fma
-      {"fma", Unit::kCount, kLower, &C::fma},
+      {"fma", results::Unit::kCount, kLower, &C::fma},
       // load_store: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   loads, stores, atomics
-      {"load_store", Unit::kCount, kLower, &C::load_store},
+      {"load_store", results::Unit::kCount, kLower, &C::load_store},
       // control_flow: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   branches, switch, return, kill, calls
-      {"control_flow", Unit::kCount, kLower, &C::control_flow},
+      {"control_flow", results::Unit::kCount, kLower, &C::control_flow},
       // other: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst);
       //   integer, conversion, composite, access chain, phi
-      {"other", Unit::kCount, kLower, &C::other},
+      {"other", results::Unit::kCount, kLower, &C::other},
       // total: count of SPIR-V instructions after spirv-opt -O; 0 (best), unbounded (worst); every
       //   category
-      {"total", Unit::kCount, kLower, [](const C& c) { return double(c.total()); }},
+      {"total", results::Unit::kCount, kLower, [](const C& c) { return double(c.total()); }},
   };
   return kTable;
 }
 
-InstructionCounts fromOperations(const OperationCounts& o) {
+InstructionCounts fromOperations(const techniques::OperationCounts& o) {
   InstructionCounts c;
   c.add = o.add;
   c.mul = o.mul;
@@ -71,7 +72,7 @@ InstructionCounts fromOperations(const OperationCounts& o) {
   return c;
 }
 
-bool mixesDomains(const SurfacePatches& patches) {
+bool mixesDomains(const techniques::SurfacePatches& patches) {
   for (size_t p = 1; p < patches.patchCount(); ++p) {
     if (patches.patchDomain(p) != patches.patchDomain(0)) return true;
   }
@@ -114,8 +115,8 @@ class InstructionsMeasure final : public Measure {
     return {{MeasureNeed::kSurfaceOrSimulation}, VariantPolicy::kEveryVariant, {}};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     if (input.patches == nullptr) {  // a simulation: its compute passes, no counting scalar
       staticRows(input, &result);
@@ -156,8 +157,9 @@ class InstructionsMeasure final : public Measure {
     }
     const std::vector<gpu::GpuPatchProgram> programs = input.patches->gpuPrograms();
     for (const gpu::GpuPatchProgram& program : programs) {
-      const PatchDomain domain =
-          program.domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
+      const techniques::PatchDomain domain = program.domain == tess::Domain::kQuad
+                                                 ? techniques::PatchDomain::kQuad
+                                                 : techniques::PatchDomain::kTriangle;
       sets.push_back({programs.size() > 1 ? toString(domain) : "",
                       {program.control_shader, program.evaluation_shader},
                       program.specialization});
@@ -173,11 +175,12 @@ class InstructionsMeasure final : public Measure {
     return sets;
   }
 
-  static void staticRows(const MeasureInput& input, MeasureResult* result) {
+  static void staticRows(const MeasureInput& input, results::MeasureResult* result) {
     const std::vector<ShaderSet> sets = shaderSets(input);
     if (sets.empty()) {
-      result->rows.push_back(unmeasuredRow({{"source", "spirv_O"}}, MeasureStatus::kSkipped,
-                                           "the technique has no shaders"));
+      result->rows.push_back(results::unmeasuredRow({{"source", "spirv_O"}},
+                                                    results::MeasureStatus::kSkipped,
+                                                    "the technique has no shaders"));
       return;
     }
     for (const ShaderSet& set : sets) {
@@ -188,12 +191,12 @@ class InstructionsMeasure final : public Measure {
         } catch (const std::exception& error) {
           std::map<std::string, std::string> keys{{"source", "spirv_O"}, {"stage", shader}};
           if (!set.program.empty()) keys["program"] = set.program;
-          result->rows.push_back(unmeasuredRow(std::move(keys), MeasureStatus::kFailed,
-                                               error.what()));
+          result->rows.push_back(results::unmeasuredRow(
+              std::move(keys), results::MeasureStatus::kFailed, error.what()));
           continue;
         }
         for (bool scalar : {false, true}) {
-          MetricRow row;
+          results::MetricRow row;
           row.keys["source"] = "spirv_O";
           if (!set.program.empty()) row.keys["program"] = set.program;
           row.keys["stage"] = shader;
@@ -207,33 +210,34 @@ class InstructionsMeasure final : public Measure {
 
   // The cheapest and the costliest patch by per-vertex total, per patch domain (keyed by
   // the domain when the patches mix them).
-  static void dynamicRows(const SurfacePatches& patches, MeasureResult* result) {
+  static void dynamicRows(const techniques::SurfacePatches& patches,
+                          results::MeasureResult* result) {
     struct Extremes {
-      std::optional<OperationProfile> least, most;
+      std::optional<techniques::OperationProfile> least, most;
       size_t least_patch = 0, most_patch = 0;
     };
-    std::map<PatchDomain, Extremes> by_domain;
-    auto cost = [](const OperationProfile& p) {
+    std::map<techniques::PatchDomain, Extremes> by_domain;
+    auto cost = [](const techniques::OperationProfile& p) {
       return std::make_pair(p.per_vertex.total(), p.per_patch_setup.total());
     };
     for (size_t p = 0; p < patches.patchCount(); ++p) {
-      std::optional<OperationProfile> profile = patches.operationProfile(p);
+      std::optional<techniques::OperationProfile> profile = patches.operationProfile(p);
       if (!profile) break;
       Extremes& e = by_domain[patches.patchDomain(p)];
       if (!e.least || cost(*profile) < cost(*e.least)) e.least = profile, e.least_patch = p;
       if (!e.most || cost(*profile) > cost(*e.most)) e.most = profile, e.most_patch = p;
     }
     if (by_domain.empty()) {
-      result->rows.push_back(unmeasuredRow({{"source", "counting_scalar"}},
-                                           MeasureStatus::kSkipped,
-                                           "the technique does not count operations"));
+      result->rows.push_back(results::unmeasuredRow({{"source", "counting_scalar"}},
+                                                    results::MeasureStatus::kSkipped,
+                                                    "the technique does not count operations"));
       return;
     }
     for (const auto& [domain, e] : by_domain) {
       for (const auto& [which, profile, patch] :
            {std::tuple{"min", *e.least, e.least_patch}, std::tuple{"max", *e.most, e.most_patch}}) {
         for (bool per_vertex : {true, false}) {
-          MetricRow row;
+          results::MetricRow row;
           row.keys["source"] = "counting_scalar";
           if (by_domain.size() > 1) row.keys["program"] = toString(domain);
           row.keys["stage"] = per_vertex ? "per_vertex" : "per_patch_setup";
@@ -251,4 +255,4 @@ class InstructionsMeasure final : public Measure {
 TB_REGISTER_MEASURE(InstructionsMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

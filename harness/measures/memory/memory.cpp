@@ -13,39 +13,39 @@
 #include "core/tess/tessellator.h"
 #include "harness/measures/common/cracks/cracks.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr uint64_t kDisplacementTexelBytes = 2;        // 16-bit scalar
 constexpr uint64_t kVectorDisplacementTexelBytes = 6;  // 3 × 16 bits
 constexpr int64_t kFixedOne = 1 << 16;                 // the tessellator's 16.16 fixed point
-constexpr size_t kFloatsPerVertex = kRenderVertexBytes / sizeof(float);
+constexpr size_t kFloatsPerVertex = mesh::kRenderVertexBytes / sizeof(float);
 
 // Points strictly inside one patch at uniform integer level n (not on its edges).
-uint64_t interiorPointCount(PatchDomain domain, uint32_t n) {
-  if (domain == PatchDomain::kQuad) return uint64_t(n - 1) * (n - 1);
+uint64_t interiorPointCount(techniques::PatchDomain domain, uint32_t n) {
+  if (domain == techniques::PatchDomain::kQuad) return uint64_t(n - 1) * (n - 1);
   return tess::trianglePointCount(n) - 3ull * n;
 }
 
-uint64_t displacementTexels(PatchDomain domain, uint32_t n) {
-  if (domain == PatchDomain::kQuad) return uint64_t(n + 1) * (n + 1);
+uint64_t displacementTexels(techniques::PatchDomain domain, uint32_t n) {
+  if (domain == techniques::PatchDomain::kQuad) return uint64_t(n + 1) * (n + 1);
   return uint64_t(n + 1) * (n + 2) / 2;
 }
 
 }  // namespace
 
-MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
-  const Mesh& control = patches.controlMesh();
-  const RenderVertices render = buildRenderVertices(control);
+MemoryFigures measureMemory(const techniques::SurfacePatches& patches, uint32_t level) {
+  const mesh::Mesh& control = patches.controlMesh();
+  const mesh::RenderVertices render = mesh::buildRenderVertices(control);
 
   // Points on edges are shared through the render mesh's edges; the rest is per patch,
   // in the patch's own domain.
   uint64_t interior_points = 0, triangles = 0, texels = 0;
   for (size_t p = 0; p < patches.patchCount(); ++p) {
-    const PatchDomain domain = patches.patchDomain(p);
+    const techniques::PatchDomain domain = patches.patchDomain(p);
     interior_points += interiorPointCount(domain, level);
-    triangles += domain == PatchDomain::kQuad ? tess::quadTriangleCount(level)
-                                              : tess::triangleTriangleCount(level);
+    triangles += domain == techniques::PatchDomain::kQuad ? tess::quadTriangleCount(level)
+                                                          : tess::triangleTriangleCount(level);
     texels += displacementTexels(domain, level);
   }
 
@@ -54,7 +54,8 @@ MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level) {
   m.plain_vertices =
       render.vertex_count + uint64_t(render.edge_count) * (level - 1) + interior_points;
   m.plain_triangles = triangles;
-  m.plain_bytes = m.plain_vertices * kRenderVertexBytes + m.plain_triangles * 3 * kIndexBytes;
+  m.plain_bytes =
+      m.plain_vertices * mesh::kRenderVertexBytes + m.plain_triangles * 3 * mesh::kIndexBytes;
   m.technique = patches.footprint();
   if (m.technique.displacement_map_bytes > 0) {
     // A displaced surface carries its real map (already in technique.total()): its GPU bytes
@@ -86,19 +87,20 @@ struct ClassifiedTessellation {
     int corner = -1, edge = -1;
     int64_t t = 0;
   };
-  PatchDomain domain;
+  techniques::PatchDomain domain;
   uint32_t corners;
   tess::Tessellation t;
   std::vector<PointClass> classes;
 };
 
-ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level) {
+ClassifiedTessellation classifiedTessellation(techniques::PatchDomain domain, uint32_t level) {
   const float n = float(level);
   ClassifiedTessellation c{
       domain,
-      domain == PatchDomain::kQuad ? 4u : 3u,
-      tess::tessellate(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
-                       tess::Spacing::kInteger, {{n, n, n, n}, {n, n}}),
+      domain == techniques::PatchDomain::kQuad ? 4u : 3u,
+      tess::tessellate(
+          domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+          tess::Spacing::kInteger, {{n, n, n, n}, {n, n}}),
       {}};
   c.classes.resize(c.t.points.size());
   for (size_t i = 0; i < c.t.points.size(); ++i) {
@@ -115,15 +117,15 @@ ClassifiedTessellation classifiedTessellation(PatchDomain domain, uint32_t level
 
 }  // namespace
 
-TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level) {
-  return buildTessellatedMesh(patches, level, buildRenderVertices(patches.controlMesh()), 0,
+TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level) {
+  return buildTessellatedMesh(patches, level, mesh::buildRenderVertices(patches.controlMesh()), 0,
                               patches.patchCount());
 }
 
-TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level,
-                                     const RenderVertices& render, size_t first_patch,
+TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level,
+                                     const mesh::RenderVertices& render, size_t first_patch,
                                      size_t end_patch) {
-  const Mesh& control = patches.controlMesh();
+  const mesh::Mesh& control = patches.controlMesh();
   std::array<std::optional<ClassifiedTessellation>, 2> by_domain;  // quad, triangle
 
   TessellatedMesh mesh;
@@ -131,8 +133,9 @@ TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t lev
   std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
   std::vector<uint32_t> local;
   for (size_t p = first_patch; p < end_patch; ++p) {
-    const PatchDomain domain = patches.patchDomain(p);
-    std::optional<ClassifiedTessellation>& slot = by_domain[domain == PatchDomain::kQuad ? 0 : 1];
+    const techniques::PatchDomain domain = patches.patchDomain(p);
+    std::optional<ClassifiedTessellation>& slot =
+        by_domain[domain == techniques::PatchDomain::kQuad ? 0 : 1];
     if (!slot) slot = classifiedTessellation(domain, level);
     const ClassifiedTessellation& c = *slot;
     const uint32_t corners = c.corners;
@@ -158,10 +161,10 @@ TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t lev
       if (*id == UINT32_MAX) {
         *id = uint32_t(mesh.vertexCount());
         const tess::DomainPoint& d = c.t.points[i];
-        const SurfacePointF s = patches.evaluateFloat(p, d);
+        const techniques::SurfacePointF s = patches.evaluateFloat(p, d);
         // Corner weights of the uv interpolation, in the domain's corner order.
         float w[4] = {d[0], d[1], d[2], 0};
-        if (domain == PatchDomain::kQuad) {
+        if (domain == techniques::PatchDomain::kQuad) {
           w[0] = (1 - d[0]) * (1 - d[1]), w[1] = d[0] * (1 - d[1]);
           w[2] = d[0] * d[1], w[3] = (1 - d[0]) * d[1];
         }
@@ -193,7 +196,7 @@ CompressedMesh compressMesh(TessellatedMesh* mesh) {
   std::vector<float> fetched(mesh->vertices.size());
   const size_t used =
       meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
-                                  mesh->vertices.data(), vertex_count, kRenderVertexBytes);
+                                  mesh->vertices.data(), vertex_count, mesh::kRenderVertexBytes);
   fetched.resize(used * kFloatsPerVertex);
   mesh->vertices = std::move(fetched);
 
@@ -201,15 +204,15 @@ CompressedMesh compressMesh(TessellatedMesh* mesh) {
   out.index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
   out.index_data.resize(meshopt_encodeIndexBuffer(out.index_data.data(), out.index_data.size(),
                                                   indices.data(), indices.size()));
-  out.vertex_data.resize(meshopt_encodeVertexBufferBound(used, kRenderVertexBytes));
+  out.vertex_data.resize(meshopt_encodeVertexBufferBound(used, mesh::kRenderVertexBytes));
   out.vertex_data.resize(meshopt_encodeVertexBuffer(out.vertex_data.data(), out.vertex_data.size(),
                                                     mesh->vertices.data(), used,
-                                                    kRenderVertexBytes));
+                                                    mesh::kRenderVertexBytes));
   return out;
 }
 
-CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level) {
-  const RenderVertices render = buildRenderVertices(patches.controlMesh());
+CompressedSize compressedSize(const techniques::SurfacePatches& patches, uint32_t level) {
+  const mesh::RenderVertices render = mesh::buildRenderVertices(patches.controlMesh());
   const size_t patch_count = patches.patchCount();
   const size_t chunks = (patch_count + kCompressChunkPatches - 1) / kCompressChunkPatches;
   std::vector<CompressedSize> per_chunk(chunks);
@@ -232,7 +235,7 @@ CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level) {
 bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {
   std::vector<float> vertices(like.vertices.size());
   std::vector<uint32_t> indices(like.indices.size());
-  if (meshopt_decodeVertexBuffer(vertices.data(), like.vertexCount(), kRenderVertexBytes,
+  if (meshopt_decodeVertexBuffer(vertices.data(), like.vertexCount(), mesh::kRenderVertexBytes,
                                  compressed.vertex_data.data(),
                                  compressed.vertex_data.size()) != 0 ||
       meshopt_decodeIndexBuffer(indices.data(), indices.size(), sizeof(uint32_t),
@@ -253,4 +256,4 @@ bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like) {
          std::memcmp(vertices.data(), like.vertices.data(), vertices.size() * sizeof(float)) == 0;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -7,7 +7,7 @@
 #include "core/mesh/render_vertices.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 inline const std::vector<uint32_t> kMemoryLevels{8, 16, 32, 64};
 
@@ -22,7 +22,7 @@ struct MemoryFigures {
   uint64_t plain_bytes = 0;
   // The technique's own data (control mesh + patch data + stencils), independent
   // of the level.
-  DataFootprint technique;
+  techniques::DataFootprint technique;
   // A 16-bit scalar displacement map sized for the level: one texel per
   // tessellated point of each patch, (n+1)^2 per quad, (n+1)(n+2)/2 per triangle
   // (two triangles share a square tile), no mip chain.
@@ -39,7 +39,7 @@ struct MemoryFigures {
 
 // Closed form from the tessellator's counts, summed over the patches in their own
 // patchDomain (quads and triangles may mix).
-MemoryFigures measureMemory(const SurfacePatches& patches, uint32_t level);
+MemoryFigures measureMemory(const techniques::SurfacePatches& patches, uint32_t level);
 
 // The equivalent plain triangle mesh itself: the technique evaluated (evaluateFloat) at
 // the CPU tessellator's points of every patch (in its own patchDomain) at uniform integer
@@ -53,11 +53,11 @@ struct TessellatedMesh {
   std::vector<uint32_t> indices;  // 3 per triangle
   size_t vertexCount() const { return vertices.size() / 8; }
 };
-TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level);
+TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level);
 // The same over patches [first_patch, end_patch) only, welded among themselves; `render`
 // is buildRenderVertices(patches.controlMesh()), built once by the caller.
-TessellatedMesh buildTessellatedMesh(const SurfacePatches& patches, uint32_t level,
-                                     const RenderVertices& render, size_t first_patch,
+TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level,
+                                     const mesh::RenderVertices& render, size_t first_patch,
                                      size_t end_patch);
 
 // meshoptimizer's codecs on a mesh (docs/ARCHITECTURE.md §3, memory): vertex-cache
@@ -86,10 +86,10 @@ struct CompressedSize {
   uint64_t chunks = 0;
   uint64_t bytes() const { return vertex_bytes + index_bytes; }
 };
-CompressedSize compressedSize(const SurfacePatches& patches, uint32_t level);
+CompressedSize compressedSize(const techniques::SurfacePatches& patches, uint32_t level);
 
 // Decodes `compressed` into buffers the size of `like`; true when they equal it (each
 // triangle up to rotation, which the index codec may apply; winding is kept).
 bool decodesTo(const CompressedMesh& compressed, const TessellatedMesh& like);
 
-}  // namespace tb
+}  // namespace tb::measures

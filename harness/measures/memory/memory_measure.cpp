@@ -9,7 +9,7 @@
 #include "harness/measures/memory/memory.h"
 #include "harness/measures/metric_table.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // One row: the level's figures, the patch count, and the compressed baseline.
@@ -26,77 +26,78 @@ struct MemoryRowFigures {
 // are better lower; plain_over_* and compressed_over_technique above 1 mean the technique
 // is the smaller, so higher is better.
 const MetricTable<MemoryRowFigures>& memoryTable() {
-  using D = Direction;
+  using D = results::Direction;
   using R = MemoryRowFigures;
   auto field = [](auto MemoryFigures::*member) {
     return [member](const R& r) { return double(r.memory.*member); };
   };
-  auto footprint = [](uint64_t DataFootprint::*member) {
+  auto footprint = [](uint64_t techniques::DataFootprint::*member) {
     return [member](const R& r) { return double(r.memory.technique.*member); };
   };
   static const MetricTable<R> kTable{
       // plain_vertices: count; context: the welded plain mesh's vertices at the level
-      {"plain_vertices", Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
+      {"plain_vertices", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
       // plain_triangles: count; context
-      {"plain_triangles", Unit::kCount, D::kNone, field(&MemoryFigures::plain_triangles)},
+      {"plain_triangles", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_triangles)},
       // plain_bytes: bytes; context: the plain mesh (32 B vertices, 32-bit indices)
-      {"plain_bytes", Unit::kBytes, D::kNone, field(&MemoryFigures::plain_bytes)},
+      {"plain_bytes", results::Unit::kBytes, D::kNone, field(&MemoryFigures::plain_bytes)},
       // control_mesh_bytes: bytes; 0 (best), unbounded (worst)
-      {"control_mesh_bytes", Unit::kBytes, D::kLowerIsBetter,
-       footprint(&DataFootprint::control_mesh_bytes)},
+      {"control_mesh_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       footprint(&techniques::DataFootprint::control_mesh_bytes)},
       // patch_data_bytes: bytes; 0 (best), unbounded (worst)
-      {"patch_data_bytes", Unit::kBytes, D::kLowerIsBetter,
-       footprint(&DataFootprint::patch_data_bytes)},
+      {"patch_data_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       footprint(&techniques::DataFootprint::patch_data_bytes)},
       // stencil_bytes: bytes; 0 (best), unbounded (worst)
-      {"stencil_bytes", Unit::kBytes, D::kLowerIsBetter, footprint(&DataFootprint::stencil_bytes)},
+      {"stencil_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       footprint(&techniques::DataFootprint::stencil_bytes)},
       // topology_combinations: count; 1 (best) when every patch shares one weight table, 0 without
       //   classes, up to patches (worst)
-      {"topology_combinations", Unit::kCount, D::kLowerIsBetter,
-       footprint(&DataFootprint::topology_combinations)},
+      {"topology_combinations", results::Unit::kCount, D::kLowerIsBetter,
+       footprint(&techniques::DataFootprint::topology_combinations)},
       // patches: count; context
-      {"patches", Unit::kCount, D::kNone, &R::patches},
+      {"patches", results::Unit::kCount, D::kNone, &R::patches},
       // displacement_bytes: bytes; 0 (best), unbounded (worst); a 16-bit scalar map sized for the
       //   level
-      {"displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::displacement_bytes)},
       // technique_with_displacement_bytes: bytes; 0 (best), unbounded (worst)
-      {"technique_with_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"technique_with_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::technique_with_displacement_bytes)},
       // plain_over_technique: ratio; above 1 the technique is smaller (better, unbounded), towards
       //   0 (worst)
-      {"plain_over_technique", Unit::kRatio, D::kHigherIsBetter,
+      {"plain_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique)},
       // vector_displacement_bytes: bytes; 0 (best), unbounded (worst); 3 x 16 bits per texel
-      {"vector_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::vector_displacement_bytes)},
       // technique_with_vector_displacement_bytes: bytes; 0 (best), unbounded (worst)
-      {"technique_with_vector_displacement_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"technique_with_vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        field(&MemoryFigures::technique_with_vector_displacement_bytes)},
       // plain_over_technique_vector: ratio; above 1 the technique is smaller (better, unbounded),
       //   towards 0 (worst)
-      {"plain_over_technique_vector", Unit::kRatio, D::kHigherIsBetter,
+      {"plain_over_technique_vector", results::Unit::kRatio, D::kHigherIsBetter,
        field(&MemoryFigures::plain_over_technique_vector)},
       // compressed_vertex_bytes: bytes; context: the meshoptimizer-compressed plain mesh's vertices
-      {"compressed_vertex_bytes", Unit::kBytes, D::kNone,
+      {"compressed_vertex_bytes", results::Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->vertex_bytes);
        }},
       // compressed_index_bytes: bytes; context
-      {"compressed_index_bytes", Unit::kBytes, D::kNone,
+      {"compressed_index_bytes", results::Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->index_bytes);
        }},
       // compressed_bytes: bytes; context
-      {"compressed_bytes", Unit::kBytes, D::kNone,
+      {"compressed_bytes", results::Unit::kBytes, D::kNone,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->bytes());
        }},
       // compressed_over_technique: ratio; above 1 the technique is smaller (better, unbounded),
       //   towards 0 (worst)
-      {"compressed_over_technique", Unit::kRatio, D::kHigherIsBetter,
+      {"compressed_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
        [](const R& r) -> std::optional<double> {
          if (!r.compressed) return std::nullopt;
          return double(r.compressed->bytes()) /
@@ -104,7 +105,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
        }},
       // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
       // map_file_bytes: bytes; 0 (best), unbounded (worst); the map as an OpenEXR file
-      {"map_file_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"map_file_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        [](const R& r) -> std::optional<double> {
          if (!r.map_file_bytes) return std::nullopt;
          return double(*r.map_file_bytes);
@@ -116,26 +117,26 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
 // Simulations: the bytes they keep resident (Simulation::footprint) against the alternative
 // a user would pick for the same scenario (wave particles: a height-field grid solver at the
 // output's resolution). alternative_over_simulation above 1: the simulation is the smaller.
-const MetricTable<SimulationFootprint>& simulationTable() {
-  using D = Direction;
-  using F = SimulationFootprint;
+const MetricTable<techniques::SimulationFootprint>& simulationTable() {
+  using D = results::Direction;
+  using F = techniques::SimulationFootprint;
   static const MetricTable<F> kTable{
       // state_bytes: bytes; 0 (best), unbounded (worst)
-      {"state_bytes", Unit::kBytes, D::kLowerIsBetter, &F::state_bytes},
+      {"state_bytes", results::Unit::kBytes, D::kLowerIsBetter, &F::state_bytes},
       // auxiliary_bytes: bytes; 0 (best), unbounded (worst)
-      {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter, &F::auxiliary_bytes},
+      {"auxiliary_bytes", results::Unit::kBytes, D::kLowerIsBetter, &F::auxiliary_bytes},
       // simulation_bytes: bytes; 0 (best), unbounded (worst)
-      {"simulation_bytes", Unit::kBytes, D::kLowerIsBetter,
+      {"simulation_bytes", results::Unit::kBytes, D::kLowerIsBetter,
        [](const F& f) { return double(f.total()); }},
       // alternative_bytes: bytes; context: the alternative a user would pick
-      {"alternative_bytes", Unit::kBytes, D::kNone,
+      {"alternative_bytes", results::Unit::kBytes, D::kNone,
        [](const F& f) -> std::optional<double> {
          if (f.alternative_bytes == 0) return std::nullopt;
          return double(f.alternative_bytes);
        }},
       // alternative_over_simulation: ratio; above 1 the simulation is smaller (better, unbounded),
       //   towards 0 (worst)
-      {"alternative_over_simulation", Unit::kRatio, D::kHigherIsBetter,
+      {"alternative_over_simulation", results::Unit::kRatio, D::kHigherIsBetter,
        [](const F& f) -> std::optional<double> {
          if (f.alternative_bytes == 0 || f.total() == 0) return std::nullopt;
          return double(f.alternative_bytes) / double(f.total());
@@ -144,9 +145,9 @@ const MetricTable<SimulationFootprint>& simulationTable() {
   return kTable;
 }
 
-std::vector<MetricSpec> memorySpecs() {
-  std::vector<MetricSpec> specs = memoryTable().specs();
-  for (const MetricSpec& spec : simulationTable().specs()) specs.push_back(spec);
+std::vector<results::MetricSpec> memorySpecs() {
+  std::vector<results::MetricSpec> specs = memoryTable().specs();
+  for (const results::MetricSpec& spec : simulationTable().specs()) specs.push_back(spec);
   return specs;
 }
 
@@ -173,7 +174,8 @@ class MemoryMeasure final : public Measure {
              std::to_string(kCompressChunkPatches) +
              " patches in patch order (the whole mesh below that; points on an edge between "
              "chunks stored in each), sizes summed",
-         "NVIDIA's displacement subdivision surfaces talk's table (16/59/236/943 MB against 1.9/7.5/30/118 MB at levels 8..64, x8) fits "
+         "NVIDIA's displacement subdivision surfaces talk's table (16/59/236/943 MB against "
+         "1.9/7.5/30/118 MB at levels 8..64, x8) fits "
          "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
          "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
          "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
@@ -192,14 +194,14 @@ class MemoryMeasure final : public Measure {
         {{"displacement", ""}},
         // One line per technique/variant: how the saving grows with the level (median over
         // the assets; levels double, so a log x spaces them evenly).
-        {PlotSpec{.title = "Plain mesh over technique bytes against tessellation level",
-                  .kind = PlotKind::kLine,
-                  .x = "level",
-                  .y = "plain_over_technique",
-                  .series = "variant",
-                  .facet = "",
-                  .where = {{"displacement", ""}},
-                  .log_x = true}}};
+        {results::PlotSpec{.title = "Plain mesh over technique bytes against tessellation level",
+                           .kind = results::PlotKind::kLine,
+                           .x = "level",
+                           .y = "plain_over_technique",
+                           .series = "variant",
+                           .facet = "",
+                           .where = {{"displacement", ""}},
+                           .log_x = true}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
@@ -209,12 +211,12 @@ class MemoryMeasure final : public Measure {
     return requirements;
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     if (input.patches == nullptr && input.simulation != nullptr) {
-      const SimulationFootprint footprint = input.simulation->footprint();
-      MetricRow row;
+      const techniques::SimulationFootprint footprint = input.simulation->footprint();
+      results::MetricRow row;
       row.keys["state"] = "resident";
       row.metrics = simulationTable().metrics(footprint);
       result.rows.push_back(std::move(row));
@@ -231,7 +233,7 @@ class MemoryMeasure final : public Measure {
       } else {
         figures.compressed = compressedSize(*input.patches, level);
       }
-      MetricRow row;
+      results::MetricRow row;
       row.keys["level"] = std::to_string(level);
       row.metrics = memoryTable().metrics(figures);
       result.rows.push_back(std::move(row));
@@ -243,4 +245,4 @@ class MemoryMeasure final : public Measure {
 TB_REGISTER_MEASURE(MemoryMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

@@ -19,7 +19,7 @@
 #include "harness/measures/metric_table.h"
 #include "shaders/embedded_shaders.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 struct PublishedOrder {
@@ -52,29 +52,29 @@ struct PublishedComparison {
 
 // The published figures are context; ours are instruction counts, better lower.
 const MetricTable<PublishedComparison>& comparisonTable() {
-  using D = Direction;
+  using D = results::Direction;
   using S = PublishedComparison;
   static const MetricTable<S> kTable{
       // published_alu: instructions; context: the published ALU count
-      {"published_alu", Unit::kCount, D::kNone, &S::published_alu},
+      {"published_alu", results::Unit::kCount, D::kNone, &S::published_alu},
       // published_loads: instructions; context: the published loads, 0 when not published
-      {"published_loads", Unit::kCount, D::kNone, &S::published_loads},
+      {"published_loads", results::Unit::kCount, D::kNone, &S::published_loads},
       // ours_alu_vector: instructions; 0 (best), unbounded (worst); vector float arithmetic + fma
       //   after spirv-opt -O
-      {"ours_alu_vector", Unit::kCount, D::kLowerIsBetter,
+      {"ours_alu_vector", results::Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return alu(s.ours.vector); }},
       // ours_alu_scalar: instructions; 0 (best), unbounded (worst); the same counted per scalar
       //   component
-      {"ours_alu_scalar", Unit::kCount, D::kLowerIsBetter,
+      {"ours_alu_scalar", results::Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return alu(s.ours.scalar); }},
       // ours_loads: instructions; 0 (best), unbounded (worst); vector loads and stores
-      {"ours_loads", Unit::kCount, D::kLowerIsBetter,
+      {"ours_loads", results::Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return double(s.ours.vector.load_store); }},
   };
   return kTable;
 }
 
-std::string probePath(const Technique& technique) {
+std::string probePath(const techniques::Technique& technique) {
   return technique.info().id + "/bezier_position.tese";
 }
 
@@ -108,19 +108,21 @@ class PublishedFiguresMeasure final : public Measure {
   }
   // Only techniques that ship the probe shader (acc); it reads their GPU program.
   MeasureRequirements requirements() const override {
-    return {{MeasureNeed::kSurface}, VariantPolicy::kDefaultOnly, [](const Technique& technique) {
+    return {{MeasureNeed::kSurface},
+            VariantPolicy::kDefaultOnly,
+            [](const techniques::Technique& technique) {
               return !gpu::embeddedShader(probePath(technique)).empty();
             }};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     const std::string probe = probePath(input.technique);
     try {
       for (const PublishedOrder& order : kNvidiaTalkOrders) {
         const StageInstructionCounts counts = cachedEmbeddedShaderCounts(probe, {order.order});
-        MetricRow row;
+        results::MetricRow row;
         row.keys["source"] = kNvidiaTalk;
         row.keys["what"] = std::string("bezier position, ") + order.name;
         row.metrics = comparisonTable().metrics({order.published_instructions, 0, counts});
@@ -134,7 +136,7 @@ class PublishedFiguresMeasure final : public Measure {
         for (const auto& [what, published_loads, published_alu] :
              {std::tuple{"regular patch", 16.0, 73.0},
               std::tuple{"extraordinary patch", 24.0, 120.0}}) {
-          MetricRow row;
+          results::MetricRow row;
           row.keys["source"] = kSubD10;
           row.keys["what"] = std::string(what) + ", " + program->evaluation_shader;
           row.metrics = comparisonTable().metrics({published_alu, published_loads, tes});
@@ -142,7 +144,7 @@ class PublishedFiguresMeasure final : public Measure {
         }
       }
     } catch (const std::exception& error) {
-      result.status = MeasureStatus::kFailed;
+      result.status = results::MeasureStatus::kFailed;
       result.reason = error.what();
     }
     return result;
@@ -152,4 +154,4 @@ class PublishedFiguresMeasure final : public Measure {
 TB_REGISTER_MEASURE(PublishedFiguresMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

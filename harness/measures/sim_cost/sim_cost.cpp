@@ -6,12 +6,13 @@
 
 #include "core/gpu/compute_runner.h"
 
-namespace tb {
+namespace tb::measures {
 
-SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu::Context* gpu,
-                              const std::string& gpu_unavailable, uint64_t gpu_step_limit) {
+SimCostFigures measureSimCost(techniques::Simulation& simulation, uint32_t sample_count,
+                              gpu::Context* gpu, const std::string& gpu_unavailable,
+                              uint64_t gpu_step_limit) {
   SimCostFigures figures;
-  const Scenario& scenario = simulation.scenario();
+  const techniques::Scenario& scenario = simulation.scenario();
   figures.footprint = simulation.footprint();
   const std::vector<gpu::GpuComputeProgram> programs = simulation.gpuPrograms();
   for (const gpu::GpuComputeProgram& program : programs) {
@@ -30,7 +31,7 @@ SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu
   const auto start = std::chrono::steady_clock::now();
   for (size_t step = 1; step <= steps; ++step) {
     simulation.step(scenario.time_step_s);
-    const SimulationState state = simulation.state();
+    const techniques::SimulationState state = simulation.state();
     figures.peak_elements = std::max<uint64_t>(figures.peak_elements, state.element_count);
     if (std::find(sample_steps.begin(), sample_steps.end(), step) != sample_steps.end()) {
       figures.samples.push_back({state.time_s, state.element_count});
@@ -60,4 +61,4 @@ SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

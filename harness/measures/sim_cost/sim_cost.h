@@ -13,7 +13,7 @@
 #include "core/gpu/context.h"
 #include "techniques/simulation.h"
 
-namespace tb {
+namespace tb::measures {
 
 struct SimCostSample {
   double time_s = 0;
@@ -24,7 +24,7 @@ struct SimCostFigures {
   std::vector<SimCostSample> samples;  // evenly spaced, the last at the end of the scenario
   uint64_t steps = 0;                  // CPU steps run (the scenario's step count)
   uint64_t peak_elements = 0;          // over every CPU step; best: what the scenario needs
-  SimulationFootprint footprint;       // at the start (buffers are sized for the whole run)
+  techniques::SimulationFootprint footprint;  // at the start (buffers are sized for the whole run)
   uint64_t compute_passes = 0;         // passes of one step, over its programs
   uint64_t dispatches_per_step = 0;    // sum over passes of repeats_per_step; 0: no GPU path
   // The device run (absent without a device or a GPU path): steps run in one submission,
@@ -39,7 +39,8 @@ struct SimCostFigures {
 // Steps `simulation` through its scenario on the CPU, sampling `sample_count` times, then
 // (when `gpu` is non-null and the simulation has programs) runs min(steps, gpu_step_limit)
 // steps of its programs through core/gpu/compute_runner.h.
-SimCostFigures measureSimCost(Simulation& simulation, uint32_t sample_count, gpu::Context* gpu,
-                              const std::string& gpu_unavailable, uint64_t gpu_step_limit);
+SimCostFigures measureSimCost(techniques::Simulation& simulation, uint32_t sample_count,
+                              gpu::Context* gpu, const std::string& gpu_unavailable,
+                              uint64_t gpu_step_limit);
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -9,7 +9,7 @@
 #include "harness/measures/metric_table.h"
 #include "harness/measures/sim_cost/sim_cost.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr uint32_t kDefaultSamples = 4;
@@ -24,37 +24,37 @@ std::string shortNumber(double value) {
   return text;
 }
 
-std::vector<MetricSpec> specs() {
-  using D = Direction;
+std::vector<results::MetricSpec> specs() {
+  using D = results::Direction;
   return {
       // Context: how many elements the scenario has alive at the row's time.
       // elements: count; context (no best or worst)
-      {"elements", Unit::kCount, D::kNone},
+      {"elements", results::Unit::kCount, D::kNone},
       // The most alive at once; lower is cheaper (lp2's fixed buffer caps it).
       // peak_elements: count; 0 (best), unbounded (worst)
-      {"peak_elements", Unit::kCount, D::kLowerIsBetter},
+      {"peak_elements", results::Unit::kCount, D::kLowerIsBetter},
       // steps: count; context: steps the run took
-      {"steps", Unit::kCount, D::kNone},
+      {"steps", results::Unit::kCount, D::kNone},
       // Buffers sized for the whole run (both ping-pong copies) and the rest
       // (Simulation::footprint).
       // state_bytes: bytes; 0 (best), unbounded (worst)
-      {"state_bytes", Unit::kBytes, D::kLowerIsBetter},
+      {"state_bytes", results::Unit::kBytes, D::kLowerIsBetter},
       // auxiliary_bytes: bytes; 0 (best), unbounded (worst)
-      {"auxiliary_bytes", Unit::kBytes, D::kLowerIsBetter},
+      {"auxiliary_bytes", results::Unit::kBytes, D::kLowerIsBetter},
       // Passes of one step and their dispatches (passes x repeats_per_step); best 1.
       // compute_passes: count; 1 (best), unbounded (worst)
-      {"compute_passes", Unit::kCount, D::kLowerIsBetter},
+      {"compute_passes", results::Unit::kCount, D::kLowerIsBetter},
       // dispatches_per_step: count; 1 (best), unbounded (worst)
-      {"dispatches_per_step", Unit::kCount, D::kLowerIsBetter},
+      {"dispatches_per_step", results::Unit::kCount, D::kLowerIsBetter},
       // gpu_steps: count; context: steps run on the device
-      {"gpu_steps", Unit::kCount, D::kNone},
+      {"gpu_steps", results::Unit::kCount, D::kNone},
       // Every buffer the compute runner allocated for the programs.
       // gpu_resident_bytes: bytes; 0 (best), unbounded (worst)
-      {"gpu_resident_bytes", Unit::kBytes, D::kLowerIsBetter},
+      {"gpu_resident_bytes", results::Unit::kBytes, D::kLowerIsBetter},
   };
 }
 
-Metric metric(const char* name, double value, Unit unit) {
+results::Metric metric(const char* name, double value, results::Unit unit) {
   return {name, value, std::string(toString(unit))};
 }
 
@@ -77,51 +77,53 @@ class SimCostMeasure final : public Measure {
          "times per step (CPU twin, device) are measured but, like every timing, kept out of "
          "results.json; the suite's timings.json has the measure's wall time"},
         {},
-        {PlotSpec{.title = "Elements alive over time",
-                  .kind = PlotKind::kLine,
-                  .x = "time",
-                  .y = "elements",
-                  .series = "variant",
-                  .facet = "",
-                  .where = {},
-                  .log_x = false}}};
+        {results::PlotSpec{.title = "Elements alive over time",
+                           .kind = results::PlotKind::kLine,
+                           .x = "time",
+                           .y = "elements",
+                           .series = "variant",
+                           .facet = "",
+                           .where = {},
+                           .log_x = false}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
     return {{MeasureNeed::kSimulation, MeasureNeed::kGpu}, VariantPolicy::kEveryVariant, {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     const bool full = input.suite == SuiteMode::kFull;
     const SimCostFigures figures =
         measureSimCost(*input.simulation, full ? kFullSamples : kDefaultSamples, input.gpu,
                        input.gpu_unavailable, full ? UINT64_MAX : kDefaultGpuSteps);
     for (const SimCostSample& sample : figures.samples) {
-      MetricRow row;
+      results::MetricRow row;
       row.keys["time"] = shortNumber(sample.time_s);
-      row.metrics = {metric("elements", double(sample.elements), Unit::kCount)};
+      row.metrics = {metric("elements", double(sample.elements), results::Unit::kCount)};
       result.rows.push_back(std::move(row));
     }
-    MetricRow cpu;
+    results::MetricRow cpu;
     cpu.keys["part"] = "cpu";
     cpu.metrics = {
-        metric("peak_elements", double(figures.peak_elements), Unit::kCount),
-        metric("steps", double(figures.steps), Unit::kCount),
-        metric("state_bytes", double(figures.footprint.state_bytes), Unit::kBytes),
-        metric("auxiliary_bytes", double(figures.footprint.auxiliary_bytes), Unit::kBytes)};
+        metric("peak_elements", double(figures.peak_elements), results::Unit::kCount),
+        metric("steps", double(figures.steps), results::Unit::kCount),
+        metric("state_bytes", double(figures.footprint.state_bytes), results::Unit::kBytes),
+        metric("auxiliary_bytes", double(figures.footprint.auxiliary_bytes),
+               results::Unit::kBytes)};
     result.rows.push_back(std::move(cpu));
     if (!figures.gpu_steps) {
-      result.rows.push_back(
-          unmeasuredRow({{"part", "gpu"}}, MeasureStatus::kSkipped, figures.gpu_skip_reason));
+      result.rows.push_back(results::unmeasuredRow(
+          {{"part", "gpu"}}, results::MeasureStatus::kSkipped, figures.gpu_skip_reason));
       return result;
     }
-    MetricRow gpu;
+    results::MetricRow gpu;
     gpu.keys["part"] = "gpu";
-    gpu.metrics = {metric("compute_passes", double(figures.compute_passes), Unit::kCount),
-                   metric("dispatches_per_step", double(figures.dispatches_per_step), Unit::kCount),
-                   metric("gpu_steps", double(*figures.gpu_steps), Unit::kCount),
-                   metric("gpu_resident_bytes", double(*figures.gpu_resident_bytes), Unit::kBytes)};
+    gpu.metrics = {
+        metric("compute_passes", double(figures.compute_passes), results::Unit::kCount),
+        metric("dispatches_per_step", double(figures.dispatches_per_step), results::Unit::kCount),
+        metric("gpu_steps", double(*figures.gpu_steps), results::Unit::kCount),
+        metric("gpu_resident_bytes", double(*figures.gpu_resident_bytes), results::Unit::kBytes)};
     result.rows.push_back(std::move(gpu));
     return result;
   }
@@ -130,4 +132,4 @@ class SimCostMeasure final : public Measure {
 TB_REGISTER_MEASURE(SimCostMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

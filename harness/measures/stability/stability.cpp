@@ -4,9 +4,10 @@
 #include <cmath>
 #include <limits>
 
-namespace tb {
+namespace tb::measures {
 
-StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solver,
+StabilityFigures measureStability(techniques::Simulation& simulation,
+                                  techniques::ConstraintSolver& solver,
                                   const StabilitySettings& settings) {
   StabilityFigures figures;
   figures.steps = settings.steps;
@@ -18,7 +19,7 @@ StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solv
   double first = 0, last = 0, stretch_sum = 0;
   for (size_t i = 0; i < settings.steps; ++i) {
     simulation.step(dt);
-    const StepDiagnostics d = solver.diagnostics();
+    const techniques::StepDiagnostics d = solver.diagnostics();
     if (!d.finite) figures.finite = false;
     (i < half ? first : last) += d.relative_kinetic_energy;
     figures.energy_peak = std::max(figures.energy_peak, d.relative_kinetic_energy);
@@ -36,4 +37,4 @@ StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solv
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

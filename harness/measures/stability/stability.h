@@ -8,7 +8,7 @@
 #include "techniques/constraint_solver.h"
 #include "techniques/simulation.h"
 
-namespace tb {
+namespace tb::measures {
 
 struct StabilitySettings {
   size_t steps = 60;           // frames simulated
@@ -37,7 +37,8 @@ struct StabilityFigures {
 };
 
 // Steps `simulation` (at its scenario's time step) `settings.steps` times.
-StabilityFigures measureStability(Simulation& simulation, ConstraintSolver& solver,
+StabilityFigures measureStability(techniques::Simulation& simulation,
+                                  techniques::ConstraintSolver& solver,
                                   const StabilitySettings& settings);
 
-}  // namespace tb
+}  // namespace tb::measures

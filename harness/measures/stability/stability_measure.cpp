@@ -12,14 +12,14 @@
 #include "harness/measures/stability/stability.h"
 #include "techniques/constraint_solver.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr size_t kDispatchBudget = 8;
 constexpr size_t kFullSuiteLength = 10;  // --suite full: this many times the scenario
 
 const MetricTable<StabilityFigures>& stabilityTable() {
-  using D = Direction;
+  using D = results::Direction;
   using F = StabilityFigures;
   using O = std::optional<double>;
   auto finite = [](double F::*member) {
@@ -31,21 +31,22 @@ const MetricTable<StabilityFigures>& stabilityTable() {
   static const MetricTable<F> kTable{
       // energy_drift: ratio; below 1 the motion settles (best), about 1 steady, +inf for a run that
       //   blew up (worst)
-      {"energy_drift", Unit::kRatio, D::kLowerIsBetter, finite(&F::energy_drift)},
+      {"energy_drift", results::Unit::kRatio, D::kLowerIsBetter, finite(&F::energy_drift)},
       // max_stretch: ratio |length - rest| / rest; 0 when no surface spring stretches (best),
       //   unbounded (worst)
-      {"max_stretch", Unit::kRatio, D::kLowerIsBetter, finite(&F::max_stretch)},
+      {"max_stretch", results::Unit::kRatio, D::kLowerIsBetter, finite(&F::max_stretch)},
       // mean_rms_stretch: ratio; 0 (best), unbounded (worst)
-      {"mean_rms_stretch", Unit::kRatio, D::kLowerIsBetter, finite(&F::mean_rms_stretch)},
+      {"mean_rms_stretch", results::Unit::kRatio, D::kLowerIsBetter, finite(&F::mean_rms_stretch)},
       // finite: flag; 1 when every position stayed finite (best), 0 (worst)
-      {"finite", Unit::kFlag, D::kHigherIsBetter, [](const F& f) { return f.finite ? 1.0 : 0.0; }},
+      {"finite", results::Unit::kFlag, D::kHigherIsBetter,
+       [](const F& f) { return f.finite ? 1.0 : 0.0; }},
       // steps: count; context: frames simulated
-      {"steps", Unit::kCount, D::kNone, &F::steps},
+      {"steps", results::Unit::kCount, D::kNone, &F::steps},
       // dispatches_per_step: count; context: the solver's dispatch budget per frame
-      {"dispatches_per_step", Unit::kCount, D::kNone, &F::dispatches_per_step},
+      {"dispatches_per_step", results::Unit::kCount, D::kNone, &F::dispatches_per_step},
       // iterations_per_step: ratio; context: solver iterations the budget buys (below 1: a partial
       //   sweep)
-      {"iterations_per_step", Unit::kRatio, D::kNone, &F::iterations_per_step},
+      {"iterations_per_step", results::Unit::kRatio, D::kNone, &F::iterations_per_step},
   };
   return kTable;
 }
@@ -80,27 +81,28 @@ class StabilityMeasure final : public Measure {
             {}};
   }
 
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
     StabilitySettings settings;
     settings.dispatch_budget = kDispatchBudget;
     settings.steps = input.simulation->scenario().stepCount() *
                      (input.suite == SuiteMode::kFull ? kFullSuiteLength : 1);
     for (const bool goal : {true, false}) {
-      VariantInfo variant = input.variant;
+      techniques::VariantInfo variant = input.variant;
       variant.parameters["goal_springs"] = goal ? 1 : 0;
-      const std::unique_ptr<TechniqueInstance> instance =
+      const std::unique_ptr<techniques::TechniqueInstance> instance =
           input.technique.build({nullptr, &input.simulation->scenario()}, variant);
-      Simulation* simulation = instance->simulation();
-      ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
+      techniques::Simulation* simulation = instance->simulation();
+      techniques::ConstraintSolver* solver = simulation ? simulation->constraintSolver() : nullptr;
       const std::string goal_key = goal ? "true" : "false";
       if (solver == nullptr) {
-        result.rows.push_back(unmeasuredRow({{"goal_springs", goal_key}}, MeasureStatus::kSkipped,
-                                            "the simulation has no constraint solver"));
+        result.rows.push_back(results::unmeasuredRow({{"goal_springs", goal_key}},
+                                                     results::MeasureStatus::kSkipped,
+                                                     "the simulation has no constraint solver"));
         continue;
       }
-      MetricRow row;
+      results::MetricRow row;
       row.keys = {{"goal_springs", goal_key}};
       row.metrics = stabilityTable().metrics(measureStability(*simulation, *solver, settings));
       result.rows.push_back(std::move(row));
@@ -112,4 +114,4 @@ class StabilityMeasure final : public Measure {
 TB_REGISTER_MEASURE(StabilityMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

@@ -5,13 +5,14 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
 // Whether segment p -> q crosses wall w (proper or touching).
-bool blocked(const WavePoint& p, const WavePoint& q, const WaveFieldWall& w) {
+bool blocked(const techniques::WavePoint& p, const techniques::WavePoint& q,
+             const techniques::WaveFieldWall& w) {
   const double rx = q[0] - p[0], ry = q[1] - p[1];
   const double sx = w.to_m[0] - w.from_m[0], sy = w.to_m[1] - w.from_m[1];
   const double den = cross(rx, ry, sx, sy);
@@ -35,40 +36,41 @@ std::optional<double> WaveProbeFigures::arrivalError() const {
   return *particle_arrival_s - *reference_arrival_s;
 }
 
-ref::WaveEquationSetup referenceSetup(const WaveFieldScene& scene) {
+ref::WaveEquationSetup referenceSetup(const techniques::WaveFieldScene& scene) {
   ref::WaveEquationSetup setup;
   setup.domain_size_m = scene.domain_size_m;
   setup.wave_speed_m_per_s = scene.wave_speed_m_per_s;
   setup.spacing_m = scene.reference_spacing_m;
   setup.damping_per_s = scene.damping_per_s;
-  for (const WaveFieldSource& source : scene.sources) {
+  for (const techniques::WaveFieldSource& source : scene.sources) {
     setup.sources.push_back({source.position_m[0], source.position_m[1], source.time_s,
                              source.amplitude_m, scene.packet_radius_m});
   }
-  for (const WaveFieldWall& wall : scene.walls) {
+  for (const techniques::WaveFieldWall& wall : scene.walls) {
     setup.walls.push_back({wall.from_m[0], wall.from_m[1], wall.to_m[0], wall.to_m[1]});
   }
   return setup;
 }
 
-std::optional<double> ringCoverage(const WaveField& field) {
-  const WaveFieldScene scene = field.waveScene();
+std::optional<double> ringCoverage(const techniques::WaveField& field) {
+  const techniques::WaveFieldScene scene = field.waveScene();
   const double r = scene.packet_radius_m, c = scene.wave_speed_m_per_s;
   const double t = field.timeS(), half = scene.domain_size_m / 2;
   const std::vector<std::array<float, 2>> positions = field.packetPositions();
   uint64_t kept = 0, covered = 0;
-  for (const WaveFieldSource& source : scene.sources) {
+  for (const techniques::WaveFieldSource& source : scene.sources) {
     const double radius = c * (t - source.time_s);
     if (!(radius > 2 * r)) continue;  // the front has not left the source yet
     const uint32_t points =
         std::max(64u, uint32_t(std::ceil(2 * std::numbers::pi * radius / (r / 4))));
     for (uint32_t k = 0; k < points; ++k) {
       const double angle = 2 * std::numbers::pi * k / points;
-      const WavePoint q{source.position_m[0] + radius * std::cos(angle),
-                        source.position_m[1] + radius * std::sin(angle)};
+      const techniques::WavePoint q{source.position_m[0] + radius * std::cos(angle),
+                                    source.position_m[1] + radius * std::sin(angle)};
       if (std::abs(q[0]) > half - r || std::abs(q[1]) > half - r) continue;
       bool hidden = false;
-      for (const WaveFieldWall& wall : scene.walls) hidden |= blocked(source.position_m, q, wall);
+      for (const techniques::WaveFieldWall& wall : scene.walls)
+        hidden |= blocked(source.position_m, q, wall);
       if (hidden) continue;
       ++kept;
       for (const auto& p : positions) {
@@ -83,13 +85,13 @@ std::optional<double> ringCoverage(const WaveField& field) {
   return double(covered) / double(kept);
 }
 
-WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count) {
-  const WaveField* field = simulation.waveField();
+WaveErrorFigures measureWaveError(techniques::Simulation& simulation, uint32_t sample_count) {
+  const techniques::WaveField* field = simulation.waveField();
   if (field == nullptr) {
     throw std::invalid_argument("wave_error: the simulation has no wave field");
   }
-  const Scenario& scenario = simulation.scenario();
-  const WaveFieldScene scene = field->waveScene();
+  const techniques::Scenario& scenario = simulation.scenario();
+  const techniques::WaveFieldScene scene = field->waveScene();
   const double dt = scenario.time_step_s;
   const size_t steps = scenario.stepCount();
   ref::WaveEquationSolver reference(referenceSetup(scene), dt);
@@ -107,7 +109,7 @@ WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count)
     simulation.step(dt);
     reference.advance();
     for (size_t p = 0; p < scene.probes_m.size(); ++p) {
-      const WavePoint& probe = scene.probes_m[p];
+      const techniques::WavePoint& probe = scene.probes_m[p];
       particle_trace[p].push_back(field->heightAt(probe[0], probe[1]));
       reference_trace[p].push_back(reference.sample(probe[0], probe[1]));
     }
@@ -116,7 +118,7 @@ WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count)
     row.time_s = field->timeS();
     row.particles = field->packetPositions().size();
     row.front_radius_m = scene.wave_speed_m_per_s * (row.time_s - scene.sources[0].time_s);
-    const WaveHeightGrid grid = field->heightGrid();
+    const techniques::WaveHeightGrid grid = field->heightGrid();
     double sum = 0;
     uint64_t count = 0;
     for (uint32_t j = 0; j < grid.nodes; ++j) {
@@ -139,7 +141,7 @@ WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count)
     probe.x_m = scene.probes_m[p][0];
     probe.y_m = scene.probes_m[p][1];
     probe.distance_m = INFINITY;
-    for (const WaveFieldSource& source : scene.sources) {
+    for (const techniques::WaveFieldSource& source : scene.sources) {
       probe.distance_m = std::min(probe.distance_m, std::hypot(probe.x_m - source.position_m[0],
                                                                probe.y_m - source.position_m[1]));
     }
@@ -155,4 +157,4 @@ WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count)
   return figures;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -14,7 +14,7 @@
 #include "techniques/simulation.h"
 #include "techniques/wave_field.h"
 
-namespace tb {
+namespace tb::measures {
 
 // One sample time.
 struct WaveTimeFigures {
@@ -52,14 +52,14 @@ struct WaveErrorFigures {
 };
 
 // The reference set up from the same scene (sources as the particle-shape blob, walls).
-ref::WaveEquationSetup referenceSetup(const WaveFieldScene& scene);
+ref::WaveEquationSetup referenceSetup(const techniques::WaveFieldScene& scene);
 
 // Steps `simulation` (from its start) and the reference to the scenario's duration,
 // sampling the height field at `sample_count` evenly spaced times (the last at the end).
 // Throws std::invalid_argument when the simulation has no waveField().
-WaveErrorFigures measureWaveError(Simulation& simulation, uint32_t sample_count);
+WaveErrorFigures measureWaveError(techniques::Simulation& simulation, uint32_t sample_count);
 
 // Coverage of the ideal rings at the simulation's current time (see WaveTimeFigures).
-std::optional<double> ringCoverage(const WaveField& field);
+std::optional<double> ringCoverage(const techniques::WaveField& field);
 
-}  // namespace tb
+}  // namespace tb::measures

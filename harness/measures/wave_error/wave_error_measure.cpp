@@ -8,7 +8,7 @@
 #include "harness/measures/metric_table.h"
 #include "harness/measures/wave_error/wave_error.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // Sample times per run: the default suite's few, the full suite's finer time axis.
@@ -22,59 +22,62 @@ std::string shortNumber(double value) {
 }
 
 const MetricTable<WaveTimeFigures>& timeTable() {
-  using D = Direction;
+  using D = results::Direction;
   using R = WaveTimeFigures;
   static const MetricTable<R> kTable{
       // 0 when the particles' height field equals the reference; grows with the model's
       // departures from the wave equation (no 1/sqrt(R) spreading, no wake).
       // rms_error: ratio of the largest source amplitude; 0 when the field equals the reference
       //   (best), unbounded (worst)
-      {"rms_error", Unit::kRatio, D::kLowerIsBetter, &R::rms_error},
+      {"rms_error", results::Unit::kRatio, D::kLowerIsBetter, &R::rms_error},
       // max_error: ratio of the largest source amplitude; 0 (best), unbounded (worst)
-      {"max_error", Unit::kRatio, D::kLowerIsBetter, &R::max_error},
+      {"max_error", results::Unit::kRatio, D::kLowerIsBetter, &R::max_error},
       // coverage: ratio; 1 when the ideal ring is whole (best), 0 when no particle is left on it
       //   (worst)
-      {"coverage", Unit::kRatio, D::kHigherIsBetter, [](const R& r) { return r.coverage; }},
+      {"coverage", results::Unit::kRatio, D::kHigherIsBetter,
+       [](const R& r) { return r.coverage; }},
       // front_radius: world units (m); context: c t for the first source, coverage's distance axis
-      {"front_radius", Unit::kWorld, D::kNone, &R::front_radius_m},
+      {"front_radius", results::Unit::kWorld, D::kNone, &R::front_radius_m},
       // particles: count; context: particles alive at this time
-      {"particles", Unit::kCount, D::kNone, &R::particles},
+      {"particles", results::Unit::kCount, D::kNone, &R::particles},
   };
   return kTable;
 }
 
 const MetricTable<WaveProbeFigures>& probeTable() {
-  using D = Direction;
+  using D = results::Direction;
   using R = WaveProbeFigures;
   static const MetricTable<R> kTable{
       // |particles - reference| arrival.
       // arrival_error_s: seconds; 0 (best), unbounded (worst); acceptance <= arrival_tolerance_s
-      {"arrival_error_s", Unit::kSeconds, D::kLowerIsBetter,
+      {"arrival_error_s", results::Unit::kSeconds, D::kLowerIsBetter,
        [](const R& r) -> std::optional<double> {
          if (auto e = r.arrivalError()) return std::abs(*e);
          return std::nullopt;
        }},
       // arrival_delay_s: seconds, signed; context: positive when the particles arrive late
-      {"arrival_delay_s", Unit::kSeconds, D::kNone, [](const R& r) { return r.arrivalError(); }},
+      {"arrival_delay_s", results::Unit::kSeconds, D::kNone,
+       [](const R& r) { return r.arrivalError(); }},
       // reference_arrival_s: seconds; context: the reference's arrival at the probe
-      {"reference_arrival_s", Unit::kSeconds, D::kNone,
+      {"reference_arrival_s", results::Unit::kSeconds, D::kNone,
        [](const R& r) { return r.reference_arrival_s; }},
       // particle_arrival_s: seconds; context: the particles' arrival at the probe
-      {"particle_arrival_s", Unit::kSeconds, D::kNone,
+      {"particle_arrival_s", results::Unit::kSeconds, D::kNone,
        [](const R& r) { return r.particle_arrival_s; }},
       // probe_distance: world units (m); context: distance to the nearest source
-      {"probe_distance", Unit::kWorld, D::kNone, &R::distance_m},
+      {"probe_distance", results::Unit::kWorld, D::kNone, &R::distance_m},
   };
   return kTable;
 }
 
-std::vector<MetricSpec> allSpecs() {
-  std::vector<MetricSpec> specs = timeTable().specs();
-  for (const MetricSpec& spec : probeTable().specs()) specs.push_back(spec);
+std::vector<results::MetricSpec> allSpecs() {
+  std::vector<results::MetricSpec> specs = timeTable().specs();
+  for (const results::MetricSpec& spec : probeTable().specs()) specs.push_back(spec);
   // arrival_tolerance_s: seconds; context: one time step + particle radius / wave speed.
-  specs.push_back({"arrival_tolerance_s", Unit::kSeconds, Direction::kNone});
+  specs.push_back({"arrival_tolerance_s", results::Unit::kSeconds, results::Direction::kNone});
   // arrival_within_tolerance: flag; 1 when |arrival_error_s| <= the tolerance (best), 0 (worst).
-  specs.push_back({"arrival_within_tolerance", Unit::kFlag, Direction::kHigherIsBetter});
+  specs.push_back(
+      {"arrival_within_tolerance", results::Unit::kFlag, results::Direction::kHigherIsBetter});
   return specs;
 }
 
@@ -103,32 +106,32 @@ class WaveErrorMeasure final : public Measure {
          "inside the domain and in sight of the source, covered within r/2 of a particle; "
          "measured once t > 2r/c"},
         {},
-        {PlotSpec{.title = "Wavefront coverage against distance travelled",
-                  .kind = PlotKind::kLine,
-                  .x = "front_radius",
-                  .y = "coverage",
-                  .series = "variant",
-                  .facet = "",
-                  .where = {},
-                  .log_x = false}}};
+        {results::PlotSpec{.title = "Wavefront coverage against distance travelled",
+                           .kind = results::PlotKind::kLine,
+                           .x = "front_radius",
+                           .y = "coverage",
+                           .series = "variant",
+                           .facet = "",
+                           .where = {},
+                           .log_x = false}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
     return {{MeasureNeed::kSimulation, MeasureNeed::kWaveField}, VariantPolicy::kEveryVariant, {}};
   }
-  MeasureResult run(const MeasureInput& input) const override {
-    MeasureResult result;
+  results::MeasureResult run(const MeasureInput& input) const override {
+    results::MeasureResult result;
     result.measure = info().id;
-    Simulation* simulation = input.simulation;
+    techniques::Simulation* simulation = input.simulation;
     if (simulation == nullptr || simulation->waveField() == nullptr) {
-      result.status = MeasureStatus::kSkipped;
+      result.status = results::MeasureStatus::kSkipped;
       result.reason = "not a wave-particle simulation";
       return result;
     }
     const WaveErrorFigures figures = measureWaveError(
         *simulation, input.suite == SuiteMode::kFull ? kFullSamples : kDefaultSamples);
     for (const WaveTimeFigures& time : figures.times) {
-      MetricRow row;
+      results::MetricRow row;
       row.keys["time"] = shortNumber(time.time_s);
       row.metrics = timeTable().metrics(time);
       result.rows.push_back(std::move(row));
@@ -138,19 +141,19 @@ class WaveErrorMeasure final : public Measure {
       std::map<std::string, std::string> keys{
           {"probe", "(" + shortNumber(probe.x_m) + ", " + shortNumber(probe.y_m) + ")"}};
       if (!probe.reference_arrival_s) {
-        result.rows.push_back(
-            unmeasuredRow(keys, MeasureStatus::kSkipped, "the reference never reaches the probe"));
+        result.rows.push_back(results::unmeasuredRow(keys, results::MeasureStatus::kSkipped,
+                                                     "the reference never reaches the probe"));
         continue;
       }
-      MetricRow row;
+      results::MetricRow row;
       row.keys = keys;
       row.metrics = probeTable().metrics(probe);
       row.metrics.push_back({"arrival_tolerance_s", figures.arrival_tolerance_s,
-                             std::string(toString(Unit::kSeconds))});
+                             std::string(toString(results::Unit::kSeconds))});
       const std::optional<double> error = probe.arrivalError();
       row.metrics.push_back({"arrival_within_tolerance",
                              error && std::abs(*error) <= figures.arrival_tolerance_s ? 1.0 : 0.0,
-                             std::string(toString(Unit::kFlag))});
+                             std::string(toString(results::Unit::kFlag))});
       result.rows.push_back(std::move(row));
     }
     return result;
@@ -160,4 +163,4 @@ class WaveErrorMeasure final : public Measure {
 TB_REGISTER_MEASURE(WaveErrorMeasure);
 
 }  // namespace
-}  // namespace tb
+}  // namespace tb::measures

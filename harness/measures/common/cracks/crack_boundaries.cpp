@@ -11,18 +11,20 @@
 #include <unordered_map>
 #include <utility>
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
-uint32_t cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
+uint32_t cornerCount(techniques::PatchDomain domain) {
+  return domain == techniques::PatchDomain::kQuad ? 4 : 3;
+}
 
-tess::Domain tessDomain(PatchDomain domain) {
-  return domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+tess::Domain tessDomain(techniques::PatchDomain domain) {
+  return domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
 }
 
 // The boundary points of `tessellation` in BoundaryTessellation order (points,
 // edge_begin, edge_t).
-void fillBoundary(PatchDomain domain, const tess::Tessellation& tessellation,
+void fillBoundary(techniques::PatchDomain domain, const tess::Tessellation& tessellation,
                   BoundaryTessellation* b) {
   const uint32_t corners = cornerCount(domain);
   b->points.assign(corners, tess::DomainPoint{});
@@ -76,7 +78,7 @@ float captureInnerCap(tess::Spacing spacing) {
   }
 }
 
-BoundaryTessellation computeBoundary(PatchDomain domain, tess::Spacing spacing,
+BoundaryTessellation computeBoundary(techniques::PatchDomain domain, tess::Spacing spacing,
                                      const tess::Levels& levels) {
   BoundaryTessellation b;
   const tess::Tessellation full = tess::tessellate(tessDomain(domain), spacing, levels);
@@ -103,7 +105,7 @@ BoundaryTessellation computeBoundary(PatchDomain domain, tess::Spacing spacing,
 }
 
 struct CacheKey {
-  PatchDomain domain;
+  techniques::PatchDomain domain;
   tess::Spacing spacing;
   tess::LevelsBits bits;
   bool operator<(const CacheKey& o) const {
@@ -117,9 +119,10 @@ constexpr size_t kMaxCachedTessellations = 1 << 14;
 
 }  // namespace
 
-int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p) {
+int64_t domainEdgeParameter(techniques::PatchDomain domain, uint32_t edge,
+                            const tess::DomainPoint& p) {
   double t = -1;
-  if (domain == PatchDomain::kQuad) {
+  if (domain == techniques::PatchDomain::kQuad) {
     const float u = p[0], v = p[1];
     switch (edge) {
       case 0:
@@ -141,8 +144,8 @@ int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::Domai
   return t < 0 ? -1 : int64_t(std::llround(t * double(kEdgeParameterOne)));
 }
 
-bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
-  if (domain == PatchDomain::kTriangle) return p[corner] == 1;
+bool isDomainCorner(techniques::PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
+  if (domain == techniques::PatchDomain::kTriangle) return p[corner] == 1;
   static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
 }
@@ -154,7 +157,8 @@ int64_t BoundaryTessellation::edgePoint(uint32_t edge, int64_t t) const {
   return it != last && *it == t ? int64_t(it - edge_t.begin()) : -1;
 }
 
-int64_t BoundaryTessellation::indexOf(PatchDomain domain, const tess::DomainPoint& p) const {
+int64_t BoundaryTessellation::indexOf(techniques::PatchDomain domain,
+                                      const tess::DomainPoint& p) const {
   const uint32_t count = corners();
   for (uint32_t c = 0; c < count; ++c) {
     if (isDomainCorner(domain, c, p)) {
@@ -170,7 +174,7 @@ int64_t BoundaryTessellation::indexOf(PatchDomain domain, const tess::DomainPoin
   return -1;
 }
 
-std::shared_ptr<const BoundaryTessellation> boundaryTessellation(PatchDomain domain,
+std::shared_ptr<const BoundaryTessellation> boundaryTessellation(techniques::PatchDomain domain,
                                                                  tess::Spacing spacing,
                                                                  const tess::Levels& levels) {
   static std::mutex mutex;
@@ -188,16 +192,16 @@ std::shared_ptr<const BoundaryTessellation> boundaryTessellation(PatchDomain dom
   return cache.emplace(key, std::move(computed)).first->second;
 }
 
-PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing,
+PatchBoundaries patchBoundaries(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                                 std::span<const tess::Levels> patch_levels) {
   PatchBoundaries b;
   const size_t count = patches.patchCount();
   b.tessellation.resize(count);
   b.domain.resize(count);
   b.offset.assign(count + 1, 0);
-  std::map<std::pair<PatchDomain, tess::LevelsBits>, uint32_t> seen;
+  std::map<std::pair<techniques::PatchDomain, tess::LevelsBits>, uint32_t> seen;
   for (size_t p = 0; p < count; ++p) {
-    const PatchDomain domain = patches.patchDomain(p);
+    const techniques::PatchDomain domain = patches.patchDomain(p);
     b.domain[p] = domain;
     const auto key = std::make_pair(domain, tess::levelsBits(patch_levels[p]));
     auto found = seen.find(key);
@@ -213,4 +217,4 @@ PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spa
   return b;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

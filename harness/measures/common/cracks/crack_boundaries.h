@@ -15,7 +15,7 @@
 #include "core/tess/tessellator.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 // The tessellator's 16.16 fixed point: edge parameters are exact multiples of 2^-16.
 inline constexpr int64_t kEdgeParameterOne = 1 << 16;
@@ -23,9 +23,10 @@ inline constexpr int64_t kEdgeParameterOne = 1 << 16;
 // Edge parameter of domain point `p` on local edge `edge` (from corner edge, t = 0, to
 // corner edge + 1, t = 1) in 16.16 fixed point (exact: tessellator coordinates are
 // multiples of 2^-16), or -1 when `p` is not on that edge.
-int64_t domainEdgeParameter(PatchDomain domain, uint32_t edge, const tess::DomainPoint& p);
+int64_t domainEdgeParameter(techniques::PatchDomain domain, uint32_t edge,
+                            const tess::DomainPoint& p);
 // True when `p` is corner `corner` of the domain.
-bool isDomainCorner(PatchDomain domain, uint32_t corner, const tess::DomainPoint& p);
+bool isDomainCorner(techniques::PatchDomain domain, uint32_t corner, const tess::DomainPoint& p);
 
 // The boundary of one tessellation, in a fixed order: corners first (index = corner),
 // then each local edge's interior points by ascending edge parameter t.
@@ -50,12 +51,12 @@ struct BoundaryTessellation {
   // Index of edge e's interior point at edge parameter t, or -1.
   int64_t edgePoint(uint32_t edge, int64_t t) const;
   // Index of boundary point `p` (a corner or an edge point, bitwise), or -1.
-  int64_t indexOf(PatchDomain domain, const tess::DomainPoint& p) const;
+  int64_t indexOf(techniques::PatchDomain domain, const tess::DomainPoint& p) const;
 };
 
 // The boundary of tessellate(domain, spacing, levels), from the process-wide cache.
 // Thread-safe. Throws std::logic_error when a tessellation lacks one of its corners.
-std::shared_ptr<const BoundaryTessellation> boundaryTessellation(PatchDomain domain,
+std::shared_ptr<const BoundaryTessellation> boundaryTessellation(techniques::PatchDomain domain,
                                                                  tess::Spacing spacing,
                                                                  const tess::Levels& levels);
 
@@ -64,7 +65,7 @@ std::shared_ptr<const BoundaryTessellation> boundaryTessellation(PatchDomain dom
 struct PatchBoundaries {
   std::vector<std::shared_ptr<const BoundaryTessellation>> tessellations;  // distinct ones
   std::vector<uint32_t> tessellation;  // per patch: index into tessellations
-  std::vector<PatchDomain> domain;     // per patch
+  std::vector<techniques::PatchDomain> domain;  // per patch
   std::vector<size_t> offset;          // per patch, then the total
   size_t culled_patches = 0;           // patches whose levels cull them
 
@@ -74,7 +75,7 @@ struct PatchBoundaries {
 };
 
 // patch_levels: one per patch (patch_levels.size() == patches.patchCount()).
-PatchBoundaries patchBoundaries(const SurfacePatches& patches, tess::Spacing spacing,
+PatchBoundaries patchBoundaries(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                                 std::span<const tess::Levels> patch_levels);
 
-}  // namespace tb
+}  // namespace tb::measures

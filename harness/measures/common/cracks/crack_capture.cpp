@@ -7,7 +7,7 @@
 
 #include "core/gpu/patch_program.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 // A draw of about this many TES invocations keeps lavapipe's single-threaded tessellator
@@ -16,8 +16,9 @@ namespace {
 constexpr uint64_t kInvocationsPerDraw = 4096;
 constexpr uint32_t kMaxPatchesPerDraw = 8;
 
-PatchDomain patchDomain(tess::Domain domain) {
-  return domain == tess::Domain::kQuad ? PatchDomain::kQuad : PatchDomain::kTriangle;
+techniques::PatchDomain patchDomain(tess::Domain domain) {
+  return domain == tess::Domain::kQuad ? techniques::PatchDomain::kQuad
+                                       : techniques::PatchDomain::kTriangle;
 }
 
 // Program patch i's SurfacePatches patch.
@@ -27,7 +28,7 @@ uint32_t surfacePatch(const gpu::GpuPatchProgram& program, uint32_t i) {
 
 class ProgramCapture {
  public:
-  ProgramCapture(const SurfacePatches& patches, const PatchBoundaries& boundaries,
+  ProgramCapture(const techniques::SurfacePatches& patches, const PatchBoundaries& boundaries,
                  tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
                  const CrackCaptureOptions& options, BoundaryCapture* capture,
                  std::vector<uint8_t>* filled)
@@ -40,7 +41,7 @@ class ProgramCapture {
         filled_(filled) {}
 
   void run(const gpu::GpuPatchProgram& program, gpu::Context& context) {
-    const PatchDomain domain = patchDomain(program.domain);
+    const techniques::PatchDomain domain = patchDomain(program.domain);
     std::vector<tess::Levels> levels(program.patch_count);
     std::vector<uint64_t> boundary_points(program.patch_count);
     uint64_t max_points = 1;
@@ -76,7 +77,8 @@ class ProgramCapture {
   }
 
  private:
-  void checkPatch(const gpu::GpuPatchProgram& program, uint32_t patch, PatchDomain domain) const {
+  void checkPatch(const gpu::GpuPatchProgram& program, uint32_t patch,
+                  techniques::PatchDomain domain) const {
     if (patch >= patches_.patchCount() || boundaries_.domain[patch] != domain) {
       throw std::runtime_error("cracks: " + program.evaluation_shader + " draws patch " +
                                std::to_string(patch) + ", which is not a patch of its domain");
@@ -84,7 +86,7 @@ class ProgramCapture {
   }
 
   void store(const gpu::GpuPatchProgram& program, const gpu::PatchProgramCapture& run,
-             PatchDomain domain) {
+             techniques::PatchDomain domain) {
     capture_->submit_to_fence_s += run.submit_to_fence_s;
     capture_->draws += run.draws;
     ++capture_->calls;
@@ -106,7 +108,7 @@ class ProgramCapture {
           capture_->positions[slot] = v.position;
           (*filled_)[slot] = 1;
           ++capture_->points_captured;
-        } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(Vec3f)) != 0) {
+        } else if (std::memcmp(&capture_->positions[slot], &v.position, sizeof(mesh::Vec3f)) != 0) {
           // The TES ran twice at one gl_TessCoord (fractional spacing) and disagreed.
           throw std::runtime_error("cracks: " + program.evaluation_shader + " captured patch " +
                                    std::to_string(v.patch) +
@@ -116,7 +118,7 @@ class ProgramCapture {
     }
   }
 
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   const PatchBoundaries& boundaries_;
   tess::Spacing spacing_;
   std::span<const tess::Levels> patch_levels_;
@@ -127,7 +129,7 @@ class ProgramCapture {
 
 }  // namespace
 
-BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
+BoundaryCapture captureBoundaryPositions(const techniques::SurfacePatches& patches,
                                          std::span<const gpu::GpuPatchProgram> programs,
                                          const PatchBoundaries& boundaries, tess::Spacing spacing,
                                          std::span<const tess::Levels> patch_levels,
@@ -154,4 +156,4 @@ BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
   return capture;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

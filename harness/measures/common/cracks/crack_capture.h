@@ -19,7 +19,7 @@
 #include "harness/measures/common/cracks/crack_boundaries.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 struct CrackCaptureOptions {
   // Run the device under each patch's capture_levels; false: under its own levels (the
@@ -31,7 +31,7 @@ struct CrackCaptureOptions {
 };
 
 struct BoundaryCapture {
-  std::vector<Vec3f> positions;  // per boundary point, [boundaries.at(patch, k)]
+  std::vector<mesh::Vec3f> positions;  // per boundary point, [boundaries.at(patch, k)]
   uint64_t points_captured = 0;  // distinct (patch, gl_TessCoord) captured = boundaries.size()
   // Domain points the device tessellated, summed over patches: the CPU tessellator's
   // count under the levels the device ran, which lavapipe's TES invocation statistic
@@ -48,11 +48,11 @@ struct BoundaryCapture {
 // position. `boundaries` must be patchBoundaries(patches, spacing, patch_levels) with no
 // culled patch. Throws gpu::GpuError when the device fails, and std::runtime_error when
 // the capture lacks a boundary point the CPU tessellator emits or holds one it does not.
-BoundaryCapture captureBoundaryPositions(const SurfacePatches& patches,
+BoundaryCapture captureBoundaryPositions(const techniques::SurfacePatches& patches,
                                          std::span<const gpu::GpuPatchProgram> programs,
                                          const PatchBoundaries& boundaries, tess::Spacing spacing,
                                          std::span<const tess::Levels> patch_levels,
                                          gpu::Context& context,
                                          const CrackCaptureOptions& options = {});
 
-}  // namespace tb
+}  // namespace tb::measures

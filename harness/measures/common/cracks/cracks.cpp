@@ -15,10 +15,12 @@
 #include "core/mesh/topology.h"
 #include "harness/measures/common/cracks/crack_capture.h"
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
-uint32_t cornerCount(PatchDomain domain) { return domain == PatchDomain::kQuad ? 4 : 3; }
+uint32_t cornerCount(techniques::PatchDomain domain) {
+  return domain == techniques::PatchDomain::kQuad ? 4 : 3;
+}
 
 tess::Levels uniformLevels(float level) {
   tess::Levels levels;
@@ -28,13 +30,14 @@ tess::Levels uniformLevels(float level) {
 }
 
 // Positions at every boundary point of every patch: [boundaries.at(patch, k)].
-using BoundaryPositions = std::vector<Vec3f>;
+using BoundaryPositions = std::vector<mesh::Vec3f>;
 
 // Boundary points per parallel task: below this, waking a worker costs more than it saves.
 constexpr size_t kPointsPerTask = 4096;
 
 // evaluateFloat at every boundary point, patches in parallel (each writes its own slots).
-BoundaryPositions cpuPositions(const SurfacePatches& patches, const PatchBoundaries& boundaries) {
+BoundaryPositions cpuPositions(const techniques::SurfacePatches& patches,
+                               const PatchBoundaries& boundaries) {
   BoundaryPositions positions(boundaries.size());
   const size_t count = patches.patchCount();
   const size_t per_patch = std::max<size_t>(boundaries.size() / std::max<size_t>(count, 1), 1);
@@ -60,13 +63,14 @@ struct PairBlock {
   CrackLocation worst;       // first pair with the block's largest gap
   std::vector<double> gaps;  // every pair's gap, in order (summed in order across blocks)
 
-  void add(const Vec3f& a, const Vec3f& b, double scale_ulp, const CrackLocation& where) {
+  void add(const mesh::Vec3f& a, const mesh::Vec3f& b, double scale_ulp,
+           const CrackLocation& where) {
     ++compared;
     if (!(a == b)) ++not_equal;
     const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
     const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
     gaps.push_back(gap);
-    max_ulp = std::max(max_ulp, maxUlpDistance(a, b));
+    max_ulp = std::max(max_ulp, mesh::maxUlpDistance(a, b));
     const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
     max_scale_ulp = std::max(max_scale_ulp, component / scale_ulp);
     if (!worst.found || gap > max_gap) {
@@ -118,7 +122,9 @@ class Pairing {
  private:
   static constexpr size_t kItemsPerBlock = 256;
 
-  const Vec3f& at(uint32_t patch, size_t k) const { return positions_[boundaries_.at(patch, k)]; }
+  const mesh::Vec3f& at(uint32_t patch, size_t k) const {
+    return positions_[boundaries_.at(patch, k)];
+  }
 
   void item(size_t i, PairBlock* block) const {
     if (i < shared_.edges.size()) {
@@ -162,9 +168,9 @@ class Pairing {
 };
 
 // The spacing of floats at the control mesh's largest |coordinate|.
-double scaleUlp(const Mesh& mesh) {
+double scaleUlp(const mesh::Mesh& mesh) {
   float extent = 1e-30f;
-  for (const Vec3d& p : mesh.positions) {
+  for (const mesh::Vec3d& p : mesh.positions) {
     extent =
         std::max({extent, std::fabs(float(p.x)), std::fabs(float(p.y)), std::fabs(float(p.z))});
   }
@@ -176,7 +182,7 @@ void compareWithCpu(const BoundaryPositions& device, const BoundaryPositions& cp
                     CrackFigures* f) {
   for (size_t i = 0; i < device.size(); ++i) {
     if (!(cpu[i] == device[i])) ++f->device_points_differing;
-    f->device_max_ulp = std::max(f->device_max_ulp, maxUlpDistance(cpu[i], device[i]));
+    f->device_max_ulp = std::max(f->device_max_ulp, mesh::maxUlpDistance(cpu[i], device[i]));
   }
 }
 
@@ -193,7 +199,8 @@ void copyPairFigures(const CrackFigures& from, CrackFigures* to) {
 }
 
 bool bitwiseEqual(const BoundaryPositions& a, const BoundaryPositions& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0;
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(mesh::Vec3f)) == 0;
 }
 
 // True when both hold the same boundary points for every patch, bit for bit and in the
@@ -224,8 +231,8 @@ const char* toString(CrackBackend backend) {
   return backend == CrackBackend::kGpu ? "gpu" : "cpu_float";
 }
 
-SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
-  const Welding welding = weldByPosition(patches.controlMesh());
+SharedBoundaries findSharedBoundaries(const techniques::SurfacePatches& patches) {
+  const mesh::Welding welding = mesh::weldByPosition(patches.controlMesh());
   struct EdgeSide {
     PatchSide side;
     uint32_t raw0, raw1;  // unwelded position indices, ascending
@@ -262,7 +269,7 @@ SharedBoundaries findSharedBoundaries(const SurfacePatches& patches) {
   return shared;
 }
 
-CrackSession::CrackSession(const SurfacePatches& patches)
+CrackSession::CrackSession(const techniques::SurfacePatches& patches)
     : patches_(patches),
       programs_(patches.gpuPrograms()),
       shared_(findSharedBoundaries(patches)),
@@ -359,15 +366,15 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   return figures;
 }
 
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
-                           CrackBackend backend, gpu::Context* context) {
+CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
+                           float level, CrackBackend backend, gpu::Context* context) {
   return CrackSession(patches).measure(spacing, level, backend, context);
 }
 
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                            std::span<const tess::Levels> patch_levels, CrackBackend backend,
                            gpu::Context* context) {
   return CrackSession(patches).measure(spacing, patch_levels, backend, context);
 }
 
-}  // namespace tb
+}  // namespace tb::measures

@@ -28,7 +28,7 @@
 #include "harness/measures/common/cracks/crack_boundaries.h"
 #include "techniques/technique.h"
 
-namespace tb {
+namespace tb::measures {
 
 enum class CrackBackend { kCpuFloat, kGpu };
 const char* toString(CrackBackend backend);
@@ -58,7 +58,7 @@ struct SharedBoundaries {
   std::vector<SharedCorner> corners;  // sorted by vertex
 };
 
-SharedBoundaries findSharedBoundaries(const SurfacePatches& patches);
+SharedBoundaries findSharedBoundaries(const techniques::SurfacePatches& patches);
 
 // Where the largest gap is. For an edge, `t` is the edge parameter on side a, from its
 // corner `local_a` (t = 0) towards the next corner (t = 1).
@@ -113,13 +113,13 @@ struct CrackFigures {
 // program or a context the result is not measured and says why, as when some level
 // culls a patch. Throws gpu::GpuError when the device fails and std::invalid_argument
 // when patch_levels.size() != patches.patchCount().
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
+CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                            std::span<const tess::Levels> patch_levels, CrackBackend backend,
                            gpu::Context* context = nullptr);
 
 // Uniform levels: every outer and inner level of every patch = `level`.
-CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing, float level,
-                           CrackBackend backend, gpu::Context* context = nullptr);
+CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
+                           float level, CrackBackend backend, gpu::Context* context = nullptr);
 
 // measureCracks over one asset's patches, many times: the shared edges and corners are
 // found once, and the CPU float positions and pair figures are kept per set of boundary
@@ -129,7 +129,7 @@ CrackFigures measureCracks(const SurfacePatches& patches, tess::Spacing spacing,
 // pair figures. Same figures as measureCracks. One thread at a time (a record's).
 class CrackSession {
  public:
-  explicit CrackSession(const SurfacePatches& patches);
+  explicit CrackSession(const techniques::SurfacePatches& patches);
 
   CrackFigures measure(tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
                        CrackBackend backend, gpu::Context* context = nullptr);
@@ -139,7 +139,7 @@ class CrackSession {
  private:
   // The CPU float side of one set of boundary points.
   struct CpuSide {
-    std::vector<Vec3f> positions;       // per boundary point; empty until evaluated
+    std::vector<mesh::Vec3f> positions;  // per boundary point; empty until evaluated
     std::optional<CrackFigures> pairs;  // pair figures of `positions`, once computed
   };
   struct Evaluated {
@@ -153,7 +153,7 @@ class CrackSession {
   Evaluated& evaluated(tess::Spacing spacing, std::span<const tess::Levels> patch_levels);
   const CrackFigures& cpuPairs(const Evaluated& e);
 
-  const SurfacePatches& patches_;
+  const techniques::SurfacePatches& patches_;
   std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
   SharedBoundaries shared_;
   uint64_t seam_edges_ = 0;
@@ -161,4 +161,4 @@ class CrackSession {
   std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
 };
 
-}  // namespace tb
+}  // namespace tb::measures

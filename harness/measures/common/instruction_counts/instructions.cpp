@@ -13,7 +13,7 @@
 
 #include <glslang/SPIRV/spirv.hpp>
 
-namespace tb {
+namespace tb::measures {
 namespace {
 
 constexpr size_t kHeaderWords = 5;  // magic, version, generator, bound, schema
@@ -234,4 +234,4 @@ StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_pa
   return cache.emplace(key, std::move(counts)).first->second;
 }
 
-}  // namespace tb
+}  // namespace tb::measures

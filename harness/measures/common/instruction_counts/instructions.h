@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tb {
+namespace tb::measures {
 
 // Instructions of a function body by category. Float arithmetic is split like
 // OperationCounts (techniques/counting_scalar.h) so the two can be set side by side.
@@ -61,4 +61,4 @@ StageInstructionCounts countEmbeddedShader(std::string_view embedded_path,
 StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_path,
                                                   const std::vector<uint32_t>& specialization);
 
-}  // namespace tb
+}  // namespace tb::measures
