@@ -38,7 +38,7 @@ void measureOnCopies(benchmark::State& state, const tb::measures::Measure* measu
   tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   static auto context = tb::gpu::Context::create();
   const tb::mesh::Mesh mesh = tb::mesh::translatedCopies(
-      tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path), copies);
+      tb::suite::loadAsset(tb::suite::resolveAsset(asset)), copies);
   const tb::techniques::VariantInfo variant = technique->variants()[0];
   tb::techniques::BuiltSurface patches;
   try {
@@ -57,6 +57,7 @@ void measureOnCopies(benchmark::State& state, const tb::measures::Measure* measu
                                    context ? context.value().get() : nullptr,
                                    context ? std::string() : context.error()};
   input.view = &path.views[0];
+  input.camera_path = &path;
   for (auto _ : state) {
     benchmark::DoNotOptimize(measure->run(input));
   }

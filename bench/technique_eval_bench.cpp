@@ -148,7 +148,7 @@ const OsdSetup kOsdSetups[] = {
 };
 
 void evaluateOpenSubdiv(benchmark::State& state, const OsdSetup& setup, const std::string& asset) {
-  const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path);
+  const tb::mesh::Mesh mesh = tb::suite::loadAsset(tb::suite::resolveAsset(asset));
   const std::vector<tb::mesh::Vec2d> uv = quadLattice();
   std::unique_ptr<tb::bench::OsdEvaluation> evaluation, reference;
   try {
@@ -188,7 +188,7 @@ void fmaPeak(benchmark::State& state) {
 
 bool quadOnlyCatmullClark(const std::string& asset) {
   if (asset.rfind("catmark_", 0) != 0) return false;
-  const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(asset).path);
+  const tb::mesh::Mesh mesh = tb::suite::loadAsset(tb::suite::resolveAsset(asset));
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) != 4) return false;
   }

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     const tb::techniques::Technique* technique =
         tb::techniques::TechniqueRegistry::instance().find(argv[1]);
     if (technique == nullptr) throw std::runtime_error(std::string("unknown technique ") + argv[1]);
-    const tb::mesh::Mesh mesh = tb::mesh::loadObjFile(tb::suite::resolveAsset(argv[2]).path);
+    const tb::mesh::Mesh mesh = tb::suite::loadAsset(tb::suite::resolveAsset(argv[2]));
     tb::techniques::VariantInfo variant = technique->variants()[0];
     for (const tb::techniques::VariantInfo& v : technique->variants()) {
       if (argc > 3 && v.name == argv[3]) variant = v;

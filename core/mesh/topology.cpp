@@ -130,4 +130,20 @@ Welding weldByPosition(const Mesh& mesh) {
   return welding;
 }
 
+std::vector<std::string> connectivityWarnings(const Mesh& mesh, const Topology& topology) {
+  if (mesh.faceCount() < 2) return {};
+  for (const MeshEdge& edge : topology.edges) {
+    if (edge.face_count >= 2) return {};
+  }
+  const Welding welding = weldByPosition(mesh);
+  return {"no two of its " + std::to_string(mesh.faceCount()) +
+          " faces share an edge (a polygon soup): every face is its own surface, so errors "
+          "against the limit read 0 and say nothing" +
+          (welding.unique_count < mesh.positions.size()
+               ? "; " + std::to_string(mesh.positions.size() - welding.unique_count) +
+                     " positions repeat others exactly: weld them (e.g. meshoptimizer's "
+                     "generateVertexRemap) before measuring"
+               : std::string())};
+}
+
 }  // namespace tb::mesh

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/mesh/mesh.h"
@@ -39,6 +40,12 @@ struct Topology {
 };
 
 Topology buildTopology(const Mesh& mesh);
+
+// What a user should know about a mesh's connectivity before trusting its figures, one line
+// each; empty for a mesh whose faces share edges. Today: a polygon soup (more than one face
+// and no edge shared by two faces), where every face is its own surface, so a smooth
+// technique's error against the limit reads 0 and says nothing (weld the duplicates first).
+std::vector<std::string> connectivityWarnings(const Mesh& mesh, const Topology& topology);
 
 // Canonical index per position: positions with bitwise-identical coordinates map
 // to the lowest-numbered one (meshoptimizer's vertex remap). Triangle techniques

@@ -9,8 +9,12 @@
 
 namespace tb::osd {
 
-// Throws InputError as buildTopologyRefiner does. The result has no normals, uvs or tags
-// (creases are applied while refining, then dropped); its faces are the last level's.
+// Throws InputError as buildTopologyRefiner does. The result has no normals or uvs; its faces
+// are the last level's, and its tags those that give it the input's limit surface: interior
+// edges still sharp after `levels` steps (semi-sharp creases lose 1 a step; infinitely sharp
+// ones stay), the input's corners at their child vertices, the children of hole faces, and
+// the input's boundary rule and crease method. So a production-size asset made from a
+// bundled one (asset_catalog.h: `refine`) keeps its creases.
 mesh::Mesh refineUniform(const mesh::Mesh& mesh, Scheme scheme, int levels);
 
 }  // namespace tb::osd

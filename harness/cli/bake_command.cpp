@@ -122,7 +122,7 @@ int runBake(const BakeArgs& args) {
   const techniques::Technique& technique = techniqueNamed(args.technique);
   const techniques::VariantInfo variant = variantNamed(technique, args.variant);
   const suite::AssetRef asset = suite::resolveAsset(args.asset);
-  mesh::Mesh mesh = mesh::loadObjFile(asset.path);
+  mesh::Mesh mesh = suite::loadAsset(asset);
   mesh.source = asset.shownPath();
   if (std::string reason = technique.checkSupport(mesh); !reason.empty()) {
     throw techniques::UnsupportedInput(reason);

@@ -121,8 +121,15 @@ suite::SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>*
   selection.device_name = args.device;
   selection.threads = args.threads;
   selection.repetitions = args.repetitions;
-  for (const std::string& asset : args.assets)
-    selection.assets.push_back(suite::resolveAsset(asset));
+  for (const std::string& asset : args.assets) {
+    suite::AssetRef ref = suite::resolveAsset(asset);
+    selection.assets.push_back(args.refine > 0 ? suite::refinedAsset(std::move(ref), args.refine)
+                                               : std::move(ref));
+  }
+  if (args.refine > 0 && args.assets.empty()) {
+    throw mesh::InputError("--refine", std::to_string(args.refine),
+                           "refines the assets named by --asset; name at least one");
+  }
   for (const std::string& map : args.displacements) {
     selection.displacements.push_back(suite::loadDisplacementFile(map));
   }
@@ -209,6 +216,12 @@ CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
   CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
   run->add_option("--technique", args.techniques, "technique id (repeatable; default all)");
   run->add_option("--asset", args.assets, "bundled asset name or OBJ path (default all)");
+  run->add_option("--refine", args.refine,
+                  "refine every --asset N times with OpenSubdiv at load (Loop for all-triangle "
+                  "meshes, Catmull-Clark otherwise), keeping creases, corners and holes: a "
+                  "production-size input with the same limit surface (4^N times the faces; "
+                  "the asset is named NAME@refineN)")
+      ->check(CLI::Range(0, suite::kMaxRefine));
   run->add_option("--displacement", args.displacements,
                   "a baked map (FILE.exr with its FILE.exr.json from `tessbench bake`): adds its "
                   "asset displaced by it, for the map's technique and variant, to cracks, error "
@@ -283,6 +296,11 @@ int runRun(const RunArgs& args, const std::string& command_line) {
                results.records.size(), results.skipped.size(), finished);
   } else {
     fmt::print("{}\n", finished);
+  }
+  for (const results::AssetSummary& asset : results.assets) {  // even with --quiet
+    for (const std::string& warning : asset.warnings) {
+      fmt::print(stderr, "tessbench: warning: {}: {}\n", asset.path, warning);
+    }
   }
   return printFailures(results) == 0 ? 0 : 1;
 }

@@ -29,6 +29,9 @@ struct RunArgs {
   // --displacement FILE.exr (repeatable): displaced assets from baked maps. None given: the
   // bundled maps (assets/displacement) when the run does not narrow the assets.
   std::vector<std::string> displacements;
+  // --refine N: every --asset refined N times by OpenSubdiv at load, with its creases
+  // (suite::refinedAsset); 0 = as in the file.
+  int refine = 0;
 };
 
 CLI::App* addRunCommand(CLI::App& app, RunArgs& args);

@@ -136,6 +136,11 @@ struct MeasureInput {
   const DisplacementRun* displacement = nullptr;
 };
 
+// Precondition of a kCameraPath measure's run(): the path its needs promise (the suite always sets them;
+// a caller outside the suite, a benchmark or a test, may not). Throws std::invalid_argument
+// naming the missing input, which the suite turns into an error row, instead of a crash.
+const view::CameraPath& requireCameraPath(const MeasureInput& input);
+
 class Measure {
  public:
   virtual ~Measure() = default;

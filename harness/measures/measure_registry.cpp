@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <stdexcept>
 
 #include "harness/measures/measure.h"
 
@@ -7,6 +8,14 @@ namespace tb::measures {
 results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
   return {info.id,       info.title, info.description,   info.metrics,
           info.headline, info.notes, info.summary_scope, info.plots};
+}
+
+const view::CameraPath& requireCameraPath(const MeasureInput& input) {
+  if (input.camera_path == nullptr || input.camera_path->views.empty()) {
+    throw std::invalid_argument("measure input: no camera path (MeasureInput::camera_path is "
+                                "null or has no views)");
+  }
+  return *input.camera_path;
 }
 
 MeasureRegistry& MeasureRegistry::instance() {

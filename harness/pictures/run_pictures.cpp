@@ -87,7 +87,7 @@ std::unique_ptr<techniques::TechniqueInstance> buildInstance(const techniques::T
                                                              const std::string& asset,
                                                              mesh::Mesh* mesh) {
   const suite::AssetRef ref = suite::resolveAsset(asset);
-  *mesh = mesh::loadObjFile(ref.path);
+  *mesh = suite::loadAsset(ref);
   mesh->source = ref.shownPath();
   if (std::string reason = technique.checkSupport(*mesh); !reason.empty()) {
     throw techniques::UnsupportedInput(reason);

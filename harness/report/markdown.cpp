@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "harness/report/markdown_sections.h"
@@ -47,6 +48,13 @@ void appendAssets(const results::Results& results, std::string* out) {
                     a.normals_computed ? "computed (angle-weighted)" : "from file"});
   }
   *out += "\n";
+  for (const results::AssetSummary& a : results.assets) {
+    for (const std::string& warning : a.warnings) *out += "- **" + a.name + "**: " + warning + "\n";
+  }
+  if (std::any_of(results.assets.begin(), results.assets.end(),
+                  [](const results::AssetSummary& a) { return !a.warnings.empty(); })) {
+    *out += "\n";
+  }
 }
 
 std::string shortSha(const std::string& sha) { return sha.substr(0, 12); }

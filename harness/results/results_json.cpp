@@ -369,12 +369,11 @@ Json toJson(const Results& results) {
   shardFieldsToJson(c, &context);
   Json assets = Json::array();
   for (const AssetSummary& a : results.assets) {
-    assets.push_back({{"name", a.name},
-                      {"path", a.path},
-                      {"faces", a.faces},
-                      {"vertices", a.vertices},
-                      {"face_kinds", a.face_kinds},
-                      {"normals_computed", a.normals_computed}});
+    Json asset = {{"name", a.name},         {"path", a.path},
+                  {"faces", a.faces},       {"vertices", a.vertices},
+                  {"face_kinds", a.face_kinds}, {"normals_computed", a.normals_computed}};
+    if (!a.warnings.empty()) asset["warnings"] = a.warnings;
+    assets.push_back(std::move(asset));
   }
   Json records = Json::array();
   for (const Record& record : results.records) records.push_back(recordToJson(record));
@@ -424,6 +423,9 @@ Results resultsFromJson(const Json& document) {
          field<size_t>(assets[i], "faces", at), field<size_t>(assets[i], "vertices", at),
          field<std::string>(assets[i], "face_kinds", at),
          field<bool>(assets[i], "normals_computed", at)});
+    if (assets[i].contains("warnings")) {
+      results.assets.back().warnings = field<std::vector<std::string>>(assets[i], "warnings", at);
+    }
   }
   const Json records = field<Json>(document, "records", "results");
   for (size_t i = 0; i < records.size(); ++i) {

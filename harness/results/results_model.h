@@ -75,6 +75,9 @@ struct AssetSummary {
   size_t vertices = 0;
   std::string face_kinds;  // "triangles", "quads", "mixed (max 5)"
   bool normals_computed = false;
+  // What the user should know before trusting this asset's figures (mesh::connectivityWarnings),
+  // one line each; results.json writes the field only when non-empty.
+  std::vector<std::string> warnings;
 };
 
 // A technique × asset pair the run did not measure, and why.

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/mesh/obj_loader.h"
+#include "core/mesh/topology.h"
 #include "harness/suite/displacement_file.h"
 #include "harness/suite/scenario_file.h"
 #include "harness/suite/suite_step.h"
@@ -43,10 +44,11 @@ void openDevice(const std::string& device_name, SuiteRun* run) {
 std::vector<mesh::Mesh> loadAssets(const std::vector<AssetRef>& refs, results::Results* results) {
   std::vector<mesh::Mesh> meshes;
   for (const AssetRef& ref : refs) {
-    mesh::Mesh mesh = mesh::loadObjFile(ref.path);
+    mesh::Mesh mesh = loadAsset(ref);
     mesh.source = ref.shownPath();  // what warnings and skip reasons name
     results->assets.push_back({ref.name, ref.shownPath(), mesh.faceCount(), mesh.positions.size(),
-                               describeFaceKinds(mesh), mesh.normals_computed});
+                               describeFaceKinds(mesh), mesh.normals_computed,
+                               mesh::connectivityWarnings(mesh, mesh::buildTopology(mesh))});
     meshes.push_back(std::move(mesh));
   }
   return meshes;
@@ -145,7 +147,7 @@ void loadDisplacedAssets(const SuiteSelection& selection, const std::vector<Asse
       mesh = &meshes[size_t(same - refs.begin())];
     } else {
       const AssetRef ref = resolveAsset(input.asset);
-      extra_meshes.push_back(mesh::loadObjFile(ref.path));
+      extra_meshes.push_back(loadAsset(ref));
       extra_meshes.back().source = ref.shownPath();
       mesh = &extra_meshes.back();
     }

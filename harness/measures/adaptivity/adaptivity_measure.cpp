@@ -309,7 +309,7 @@ class AdaptivityMeasure final : public Measure {
     results::MeasureResult result;
     result.measure = info().id;
     const techniques::SurfacePatches& patches = *input.patches;
-    const view::CameraPath& path = *input.camera_path;
+    const view::CameraPath& path = requireCameraPath(input);
 
     std::unique_ptr<ref::LimitSurface> limit;
     try {

@@ -230,7 +230,7 @@ class CullingMeasure final : public Measure {
   results::MeasureResult run(const MeasureInput& input) const override {
     results::MeasureResult result;
     result.measure = info().id;
-    const view::CameraPath& path = *input.camera_path;
+    const view::CameraPath& path = requireCameraPath(input);
     CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, optionsFor(input.suite));
     const std::span<const lod::CullPolicy> policies = lod::allCullPolicies();
     const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);

@@ -1,0 +1,19 @@
+// loadAsset (asset_catalog.h): apart from the catalogue, so the fuzz build's catalogue needs
+// no OpenSubdiv.
+#include "core/mesh/obj_loader.h"
+#include "core/osd/uniform_refinement.h"
+#include "harness/suite/asset_catalog.h"
+
+namespace tb::suite {
+
+mesh::Mesh loadAsset(const AssetRef& asset) {
+  mesh::Mesh mesh = mesh::loadObjFile(asset.path);
+  if (asset.refine == 0) return mesh;
+  const bool triangles = mesh.allFacesOfSize(3);
+  mesh::Mesh refined = osd::refineUniform(
+      mesh, triangles ? osd::Scheme::kLoop : osd::Scheme::kCatmullClark, asset.refine);
+  refined.source = asset.shownPath();
+  return refined;
+}
+
+}  // namespace tb::suite
