@@ -1,5 +1,6 @@
 // loadAsset (asset_catalog.h): apart from the catalogue, so the fuzz build's catalogue needs
 // no OpenSubdiv.
+#include "core/mesh/normals.h"
 #include "core/mesh/obj_loader.h"
 #include "core/osd/uniform_refinement.h"
 #include "harness/suite/asset_catalog.h"
@@ -13,6 +14,9 @@ mesh::Mesh loadAsset(const AssetRef& asset) {
   mesh::Mesh refined = osd::refineUniform(
       mesh, triangles ? osd::Scheme::kLoop : osd::Scheme::kCatmullClark, asset.refine);
   refined.source = asset.shownPath();
+  // As the loader gives a file without normals (the refined mesh has none; the input's
+  // would not fit its new vertices).
+  mesh::assignAngleWeightedNormals(&refined);
   return refined;
 }
 

@@ -135,6 +135,12 @@ void buildControlMesh(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
 
 // The last level's edges: crease tags (true values, for the reference) and the sharp edges
 // the patches honour (finite leftovers rounded). Returns the sharp edges at each vertex.
+// Boundary edges are tagged only under boundary interpolation none (Far reports every
+// boundary edge infinitely sharp): there a face at the boundary has a limit surface only
+// where the boundary edges at its vertices were tagged sharp (Far's holes at level 0, Bfr's
+// FaceHasLimitSurface), and with the tags dropped Bfr over the control mesh would deny a limit
+// to faces the patches cover. With every boundary edge tagged, the faces without a limit are
+// exactly the holes listed; the rules are unchanged (boundary edges are sharp under any rule).
 std::vector<uint32_t> tagEdges(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
                                CreasePreparation& out) {
   mesh::Mesh& control = out.control;
@@ -145,7 +151,8 @@ std::vector<uint32_t> tagEdges(const mesh::Mesh& mesh, const Far::TopologyLevel&
     const uint32_t a = uint32_t(ends[0]), b = uint32_t(ends[1]);
     const float sharpness = last.GetEdgeSharpness(e);
     const bool boundary = last.GetEdgeFaces(e).size() == 1;
-    if (sharpness > 0 && !boundary) control.tags.creases.push_back({a, b, double(sharpness)});
+    if (sharpness > 0 && (!boundary || !boundary_sharp))
+      control.tags.creases.push_back({a, b, double(sharpness)});
     if (finite(sharpness) && !boundary) out.rounded_sharpness = std::max(out.rounded_sharpness, double(sharpness));
     if (sharpness >= 0.5f || (boundary && boundary_sharp)) {
       out.sharp_edges.insert(CreasePreparation::sharpEdgeKey(a, b));

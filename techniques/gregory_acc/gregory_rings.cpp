@@ -109,17 +109,41 @@ Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double
 
 VertexFrame refinedFrame(uint32_t v, const Ring& refined_ring, const RefinedMesh& refined,
                          TangentMask mask) {
-  double scale = 2;
-  VertexFrame local;
-  if (refined_ring.boundary) {
-    local = boundaryFrame(v, refined_ring);
-  } else {
-    local = vertexFrame(v, refined_ring, mask);
-    const double c = cosTurn(1, refined_ring.valence());
-    scale = 16.0 / (5 + c + std::sqrt((c + 9) * (c + 1)));
-  }
+  const VertexFrame local = vertexFrame(v, refined_ring, mask);
+  const double c = cosTurn(1, refined_ring.valence());
+  const double scale = 16.0 / (5 + c + std::sqrt((c + 9) * (c + 1)));
   return {composed(local.position, refined, 1.0), composed(local.e0, refined, scale),
           composed(local.e1, refined, scale)};
+}
+
+VertexFrame refinedCreaseFrame(uint32_t v, const Ring& sector, const Ring& whole_refined,
+                               const RefinedMesh& refined) {
+  const uint32_t b0 = sector.neighbour.front(), b1 = sector.neighbour.back();
+  const uint32_t k = sector.faces();
+  // The sector in the refined ring: from the edge point of (v, b0), k faces counter-clockwise.
+  const uint32_t first = whole_refined.indexOf(refined.edgePoint(v, b0));
+  Ring local;
+  local.boundary = true;
+  for (uint32_t x = 0; x <= k; ++x)
+    local.neighbour.push_back(whole_refined.neighbour[(first + x) % whole_refined.valence()]);
+  for (uint32_t x = 0; x < k; ++x)
+    local.diagonal.push_back(whole_refined.diagonal[(first + x) % whole_refined.faces()]);
+  // The crease rules' refined points over the input's vertices, where refineOnce differs.
+  const std::unordered_map<uint32_t, Stencil> crease_point = {
+      {v, Stencil{{v, 6.0 / 8}, {b0, 1.0 / 8}, {b1, 1.0 / 8}}},
+      {local.neighbour.front(), Stencil{{v, 0.5}, {b0, 0.5}}},
+      {local.neighbour.back(), Stencil{{v, 0.5}, {b1, 0.5}}}};
+  const auto over_input = [&](const Stencil& over_refined, double scale) {
+    Stencil out;
+    for (const auto& [index, weight] : over_refined) {
+      const auto own = crease_point.find(index);
+      add(out, own != crease_point.end() ? own->second : refined.stencils[index], weight * scale);
+    }
+    return out;
+  };
+  // Tangents in the refined faces' half-size parameter: times 1 / lambda = 2 (boundary).
+  const VertexFrame frame = boundaryFrame(v, local);
+  return {over_input(frame.position, 1.0), over_input(frame.e0, 2.0), over_input(frame.e1, 2.0)};
 }
 
 Stencil faceDiagonal(std::span<const uint32_t> fv, uint32_t k) {

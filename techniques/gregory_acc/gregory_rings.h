@@ -92,15 +92,27 @@ std::string prefix(const mesh::Mesh& mesh);
 // A stencil over refineOnce's positions as one over the input's, times `scale`.
 Stencil composed(const Stencil& over_refined, const RefinedMesh& refined, double scale);
 
-// The frame of a vertex with a non-quad face in its ring, through one Catmull-Clark step:
-// the vertex's refined copy has an all-quad ring of the same valence and the same limit
+// The frame of an interior vertex with a non-quad face in its ring, through one Catmull-Clark
+// step: the vertex's refined copy has an all-quad ring of the same valence and the same limit
 // point and tangent plane, so the quad masks there give the exact limit position (and,
 // with kExactLimit, the exact tangent plane). The refined tangents are in the refined
 // faces' half-size parameter; they are scaled back by 1/lambda, lambda the subdominant
-// eigenvalue (exact for an eigenvector mask; 2 on a boundary, where lambda = 1/2).
-// `refined_ring` must start at the edge point of the input ring's neighbour[0].
+// eigenvalue (exact for an eigenvector mask). `refined_ring` must be closed (an interior
+// vertex; boundary rings and crease sectors: refinedCreaseFrame) and start at the edge point
+// of the input ring's neighbour[0].
 VertexFrame refinedFrame(uint32_t v, const Ring& refined_ring, const RefinedMesh& refined,
                          TangentMask mask);
+
+// The frame of one crease sector (Ring::boundary; a crease vertex's sector or a mesh-boundary
+// vertex's ring) with a non-quad face in it, through one Catmull-Clark step as refinedFrame:
+// the sector of v's refined copy is all quads, framed by boundaryFrame there. refineOnce
+// knows only the smooth rules (and makes a one-face boundary vertex a corner), so the points
+// the crease rules place differently are its own here: v' = (b0 + 6 v + b1) / 8 and the
+// midpoints of its two sharp edges (v, b0), (v, b1). P is then the crease B-spline's limit
+// point (4 v + b0 + b1) / 6 and e0 its tangent (b0 - b1) / 6, the same terms from every
+// sector, as the quad sectors' boundaryFrame gives them. `whole_refined` is v's refined ring.
+VertexFrame refinedCreaseFrame(uint32_t v, const Ring& sector, const Ring& whole_refined,
+                               const RefinedMesh& refined);
 
 // Ring::diagonal of the face `fv` seen from its corner k.
 Stencil faceDiagonal(std::span<const uint32_t> fv, uint32_t k);

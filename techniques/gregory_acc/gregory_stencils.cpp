@@ -181,13 +181,17 @@ class StencilBuilder {
     if (ring.quads_only) {
       return ring.boundary ? boundaryFrame(v, ring) : vertexFrame(v, ring, mask_);
     }
-    // A whole ring here (rings with non-quad faces are never cut into sectors).
+    // A crease sector, or a mesh-boundary ring (every boundary vertex is a crease or corner
+    // vertex): its refined sector with the crease rules' points. Framing the whole refined
+    // ring instead gave every sector the smooth limit point and its own rotation of the
+    // smooth tangents, so the sectors disagreed on the edge points along the sharp edges.
+    if (ring.boundary) return refinedCreaseFrame(v, ring, refined_rings_[v], *refined_);
+    // A whole closed ring (a smooth vertex or a dart: smooth rules, as refineOnce has them),
+    // started where the input ring starts.
     Ring local = refined_rings_[v];
-    if (!local.boundary) {  // start where the input ring starts (boundary rings already do)
-      const uint32_t first = local.indexOf(refined_->edgePoint(v, ring.neighbour[0]));
-      std::rotate(local.neighbour.begin(), local.neighbour.begin() + first, local.neighbour.end());
-      std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
-    }
+    const uint32_t first = local.indexOf(refined_->edgePoint(v, ring.neighbour[0]));
+    std::rotate(local.neighbour.begin(), local.neighbour.begin() + first, local.neighbour.end());
+    std::rotate(local.diagonal.begin(), local.diagonal.begin() + first, local.diagonal.end());
     return refinedFrame(v, local, *refined_, mask_);
   }
 

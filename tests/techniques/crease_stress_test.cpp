@@ -41,31 +41,21 @@ namespace {
 
 // Shapes run by default: about 12 s in Release on the 2-core CI machine.
 constexpr uint64_t kDefaultShapes = 600;
-// |patch corner - Bfr limit| / bounding-box diagonal. Every non-dart corner point is the
-// limit position by construction (smooth: the limit mask, on its refined copy next to
-// non-quads; crease: the crease B-spline's limit point; corner: the vertex); Bfr at
-// ApproxLevel 10 agrees to rounding.
-constexpr double kCornerTolerance = 1e-9;
+// |patch - Bfr limit| / bounding-box diagonal at the points limitError compares, which the
+// patches reproduce by construction; Bfr at ApproxLevel 10 agrees to rounding (the worst seen
+// over 20000 shapes: see the report line).
+constexpr double kLimitTolerance = 1e-9;
 
 uint64_t envOr(const char* name, uint64_t fallback) {
   const char* value = std::getenv(name);
   return value != nullptr && *value != '\0' ? std::strtoull(value, nullptr, 10) : fallback;
 }
 
-struct CornerFigures {
-  size_t corners = 0;      // patch corners compared (darts excluded)
-  double worst = 0;        // max |patch corner - limit| / diagonal
-  std::string worst_at;    // "patch 3 corner 1 (vertex 7, crease)"
-};
-
 const char* kindName(SharpVertexKind kind) {
   static const char* const kNames[] = {"smooth", "dart", "crease", "corner", "cone"};
   return kNames[int(kind)];
 }
 
-// The patch corners against Bfr over the mesh the patches honour: the control mesh with its
-// true remaining tags, or, where leftover semi-sharpness was rounded, with the rounded ones.
-// The vertex kinds come from the control mesh's own preparation (nothing left to refine).
 // True when `mesh` has an interior vertex of valence 2 (two faces, closed around it).
 // OpenSubdiv 3.5.0's Bfr crashes or overwrites memory building the irregular patches
 // around some of them (a valence-2 dart; fixed in OpenSubdiv by pull requests 1336 and 1353),
@@ -78,14 +68,66 @@ bool hasInteriorValence2(const mesh::Mesh& mesh) {
   return false;
 }
 
-CornerFigures cornerLimitError(const SurfacePatches& patches, const std::string& technique) {
+// Bfr's (u, v) of the point at fraction t along edge (c, c + 1) of a face of `size` corners
+// (face_domain.h): on an N-gon's sub-faces the crease curve's halves, each at twice the
+// speed (a B-spline curve's subdivision reparameterises it linearly).
+mesh::Vec2d bfrEdgeUv(int size, int c, double t) {
+  if (size == 4) {
+    const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const double* a = corner[c];
+    const double* b = corner[(c + 1) % 4];
+    return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t};
+  }
+  const osd::Scheme scheme = osd::Scheme::kCatmullClark;
+  return t <= 0.5 ? ref::subFaceToFaceUv(scheme, size, c, {2 * t, 0})
+                  : ref::subFaceToFaceUv(scheme, size, (c + 1) % size, {0, 2 * (1 - t)});
+}
+
+struct LimitFigures {
+  size_t corners = 0;      // patch corners compared (darts excluded)
+  size_t curve_sides = 0;  // (patch, sharp edge between crease/corner vertices) pairs
+  double worst = 0;        // max |patch - limit| / diagonal over both
+  std::string worst_at;    // "patch 3 corner 1 (vertex 7, crease)"
+  bool graded = true;      // false: Bfr cannot be trusted on this mesh (hasInteriorValence2)
+};
+
+// The patches against Bfr over the mesh they honour (the control mesh with its true remaining
+// tags, or with the rounded ones where leftover semi-sharpness was rounded: limitMeshOf), as
+// the crease tests (gregory_crease_test.cpp, acc_crease_test.cpp) grade them:
+// - every patch corner but a dart's is the limit position (smooth: the limit mask, on the
+//   refined copy next to non-quads; crease: the crease B-spline's limit point; corner: the
+//   vertex);
+// - along every sharp edge between crease or corner vertices the patch edge is the crease
+//   curve, whatever the faces on either side.
+// Vertex kinds and sharp edges: the control mesh's own preparation (nothing left to refine).
+LimitFigures limitError(const SurfacePatches& patches, const std::string& technique) {
   const mesh::Mesh& control = patches.controlMesh();
-  if (hasInteriorValence2(control)) return {};
+  if (hasInteriorValence2(control)) {
+    LimitFigures ungraded;
+    ungraded.graded = false;
+    return ungraded;
+  }
   const CreasePreparation creases = prepareCreases(control, technique, 0);
   const ref::LimitSurface limit(gregory_acc::testing::limitMeshOf(patches, creases),
                                 osd::Scheme::kCatmullClark);
   const double diagonal = mesh::diagonalOf(mesh::boundsOf(control));
-  CornerFigures figures;
+  const auto crease_end = [&](uint32_t v) {
+    return creases.vertex_kind[v] == SharpVertexKind::kCrease ||
+           creases.vertex_kind[v] == SharpVertexKind::kCorner;
+  };
+  LimitFigures figures;
+  const auto compare = [&](size_t p, int c, double t, const mesh::Vec3d& exact, const char* what) {
+    const PatchDomain domain = patches.patchDomain(p);
+    const mesh::Vec3d ours =
+        patches.evaluate(p, gregory_acc::testing::edgeCoord(domain, c, t)).position;
+    const double error = length(ours - exact) / diagonal;
+    if (error <= figures.worst) return;
+    const uint32_t v = control.facePositions(p)[size_t(c)];
+    figures.worst = error;
+    figures.worst_at = "patch " + std::to_string(p) + " corner " + std::to_string(c) + " " +
+                       what + " t " + std::to_string(t) + " (vertex " + std::to_string(v) + ", " +
+                       kindName(creases.vertex_kind[v]) + ")";
+  };
   for (size_t p = 0; p < patches.patchCount(); ++p) {
     if (!limit.hasLimitSurface(p)) {
       throw std::runtime_error("patch " + std::to_string(p) + " has no limit surface in Bfr");
@@ -93,33 +135,57 @@ CornerFigures cornerLimitError(const SurfacePatches& patches, const std::string&
     const ref::LimitFace face = limit.face(p);
     const auto fv = control.facePositions(p);
     const int size = int(fv.size());
-    const PatchDomain domain = patches.patchDomain(p);
     for (int c = 0; c < size; ++c) {
-      const SharpVertexKind kind = creases.vertex_kind[fv[c]];
-      if (kind == SharpVertexKind::kDart) continue;
-      const mesh::Vec2d uv =
-          ref::subFaceToFaceUv(osd::Scheme::kCatmullClark, size, c, mesh::Vec2d{0, 0});
-      const mesh::Vec2d quad_uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-      const mesh::Vec2d at = size == 4 ? quad_uv[c] : uv;
-      const mesh::Vec3d exact = face.evaluate(at.x, at.y).position;
-      const mesh::Vec3d ours =
-          patches.evaluate(p, gregory_acc::testing::edgeCoord(domain, c, 0.0)).position;
-      const double error = length(ours - exact) / diagonal;
-      ++figures.corners;
-      if (error > figures.worst) {
-        figures.worst = error;
-        figures.worst_at = "patch " + std::to_string(p) + " corner " + std::to_string(c) +
-                           " (vertex " + std::to_string(fv[c]) + ", " + kindName(kind) + ")";
+      const uint32_t a = fv[size_t(c)], b = fv[size_t((c + 1) % size)];
+      if (creases.vertex_kind[a] != SharpVertexKind::kDart) {
+        const mesh::Vec2d uv = bfrEdgeUv(size, c, 0.0);
+        compare(p, c, 0.0, face.evaluate(uv.x, uv.y).position, "position");
+        ++figures.corners;
+      }
+      if (!creases.isSharp(a, b) || !crease_end(a) || !crease_end(b)) continue;
+      ++figures.curve_sides;
+      for (double t : {0.1, 0.25, 0.4, 0.5, 0.66, 0.9}) {
+        const mesh::Vec2d uv = bfrEdgeUv(size, c, t);
+        compare(p, c, t, face.evaluate(uv.x, uv.y).position, "crease curve");
       }
     }
   }
   return figures;
 }
 
+// A message with its numbers and file names taken out: what kind of failure or refusal.
+std::string kindOf(const std::string& message) {
+  std::string kind;
+  for (char ch : std::regex_replace(message, std::regex("[^ ]*stress_[0-9]+\\.obj"), "OBJ")) {
+    const bool digit = std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-';
+    if (!digit) {
+      kind += ch;
+    } else if (kind.empty() || kind.back() != '#') {
+      kind += '#';
+    }
+  }
+  return kind;
+}
+
+// Messages counted by kind, with the first seed of each.
+struct KindCounts {
+  std::map<std::string, std::pair<size_t, uint64_t>> counts;
+  void add(const std::string& message, uint64_t seed) {
+    counts.try_emplace(kindOf(message), 0, seed).first->second.first++;
+  }
+  void print(const char* what) const {
+    for (const auto& [kind, seen] : counts) {
+      std::printf("[crease stress] %s %5zu x (first seed %llu) %s\n", what, seen.first,
+                  (unsigned long long)seen.second, kind.c_str());
+    }
+  }
+};
+
 struct TechniqueTally {
-  size_t built = 0, refused = 0, corners = 0;
+  size_t built = 0, refused = 0, ungraded = 0, corners = 0, curve_sides = 0;
   double worst = 0;
   std::string worst_shape;
+  KindCounts refusals;
 };
 
 // Builds `shape` with `technique` (and `variant`); returns what went wrong, or "".
@@ -141,22 +207,24 @@ std::string runTechnique(const Technique& technique, const VariantInfo& variant,
       return who + "refused without a one-line reason: '" + reason + "'";
     }
     ++tally.refused;
+    tally.refusals.add(reason, shape.seed);
     return "";
   } catch (const std::exception& error) {
     return who + "threw " + error.what();
   }
   ++tally.built;
   try {
-    const CornerFigures figures = cornerLimitError(*surface, technique.info().id);
+    const LimitFigures figures = limitError(*surface, technique.info().id);
+    tally.ungraded += !figures.graded;
     tally.corners += figures.corners;
+    tally.curve_sides += figures.curve_sides;
     if (figures.worst > tally.worst) {
       tally.worst = figures.worst;
       tally.worst_shape = shape.description + ": " + figures.worst_at;
     }
-    if (figures.worst > kCornerTolerance) {
+    if (figures.worst > kLimitTolerance) {
       char line[96];
-      std::snprintf(line, sizeof line, "corner off the limit by %.3e of the diagonal at ",
-                    figures.worst);
+      std::snprintf(line, sizeof line, "off the limit by %.3e of the diagonal at ", figures.worst);
       return who + line + figures.worst_at;
     }
   } catch (const std::exception& error) {
@@ -166,32 +234,21 @@ std::string runTechnique(const Technique& technique, const VariantInfo& variant,
 }
 
 // Failures: the first kMaxReported in full (with the shape's OBJ in a scratch folder), and
-// every one counted by kind (its message with the numbers and file name taken out).
+// every one counted by kind.
 struct FailureLog {
   static constexpr size_t kMaxReported = 20;
   size_t failed = 0;
-  std::map<std::string, std::pair<size_t, uint64_t>> kinds;  // kind -> (count, first seed)
+  KindCounts kinds;
   std::filesystem::path dir;
 
   void add(const testing::StressShape& shape, const std::string& failure) {
     if (failure.empty()) return;
-    std::string kind;
-    for (char ch : std::regex_replace(failure, std::regex("stress_[0-9]+\\.obj"), "OBJ")) {
-      if (!std::isdigit(static_cast<unsigned char>(ch)) || kind.empty() || kind.back() != '#')
-        kind += std::isdigit(static_cast<unsigned char>(ch)) ? '#' : ch;
-    }
-    kinds.try_emplace(kind, 0, shape.seed).first->second.first++;
+    kinds.add(failure, shape.seed);
     if (++failed > kMaxReported) return;
     if (dir.empty()) dir = tb::testing::scratchDirectory("crease_stress");
     const std::string file = tb::testing::writeTextFile(
         dir / ("stress_" + std::to_string(shape.seed) + ".obj"), shape.obj);
     ADD_FAILURE() << shape.description << "\n  " << failure << "\n  OBJ: " << file;
-  }
-  void printKinds() const {
-    for (const auto& [kind, seen] : kinds) {
-      std::printf("[crease stress] %5zu x (first seed %llu) %s\n", seen.first,
-                  (unsigned long long)seen.second, kind.c_str());
-    }
   }
 };
 
@@ -202,7 +259,7 @@ VariantInfo variantOf(const Technique& technique, const std::string& name) {
   throw std::runtime_error("no variant " + name + " of " + technique.info().id);
 }
 
-TEST(CreaseStress, GeneratedShapesBuildOrAreRefusedInOneLineAndMatchTheLimitAtCorners) {
+TEST(CreaseStress, GeneratedShapesBuildOrAreRefusedInOneLineAndMatchTheLimit) {
   const Technique* acc = TechniqueRegistry::instance().find("acc");
   const Technique* gregory = TechniqueRegistry::instance().find("gregory_acc");
   ASSERT_NE(acc, nullptr);
@@ -233,18 +290,24 @@ TEST(CreaseStress, GeneratedShapesBuildOrAreRefusedInOneLineAndMatchTheLimitAtCo
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const auto& [name, tally] : {std::pair{"acc", &acc_tally}, {"gregory_acc", &gregory_tally}}) {
-    std::printf("[crease stress] %-11s %llu shapes: %zu built, %zu refused; %zu patch corners "
-                "against Bfr, worst %.2e of the diagonal (%s)\n",
-                name, (unsigned long long)count, tally->built, tally->refused, tally->corners,
-                tally->worst, tally->worst_shape.c_str());
+    std::printf("[crease stress] %-11s %llu shapes: %zu built (%zu not graded: interior valence "
+                "2), %zu refused; against Bfr: %zu patch corners, %zu crease-curve sides, worst "
+                "%.2e of the diagonal (%s)\n",
+                name, (unsigned long long)count, tally->built, tally->ungraded, tally->refused,
+                tally->corners, tally->curve_sides, tally->worst, tally->worst_shape.c_str());
+    if (verbose) tally->refusals.print(name);
   }
   std::printf("[crease stress] seeds %llu..%llu, %zu failures, %.1f s\n", (unsigned long long)first,
               (unsigned long long)(first + count - 1), log.failed, seconds);
-  log.printKinds();
+  log.kinds.print("failure");
   EXPECT_EQ(log.failed, 0u);
-  // The shapes exercise both outcomes: most build, and the cone points among them are refused.
+  if (obj_file != nullptr) return;
+  // The shapes exercise both outcomes (most build; cone points, and non-quads for acc, are
+  // refused), and the oracle sees corners and crease curves.
   EXPECT_GT(gregory_tally.built, count / 2);
   EXPECT_GT(gregory_tally.refused, 0u);
+  EXPECT_GT(acc_tally.built, count / 3);
+  EXPECT_GT(gregory_tally.curve_sides + acc_tally.curve_sides, count);
 }
 
 }  // namespace

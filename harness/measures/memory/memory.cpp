@@ -1,10 +1,12 @@
 #include "harness/measures/memory/memory.h"
 
 #include <meshoptimizer.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cstring>
 #include <optional>
 #include <unordered_map>
@@ -125,12 +127,31 @@ TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, 
 TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level,
                                      const mesh::RenderVertices& render, size_t first_patch,
                                      size_t end_patch) {
+  TessellatedMesh mesh;
+  buildTessellatedMesh(patches, level, render, first_patch, end_patch, &mesh);
+  return mesh;
+}
+
+void buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t level,
+                          const mesh::RenderVertices& render, size_t first_patch, size_t end_patch,
+                          TessellatedMesh* out) {
   const mesh::Mesh& control = patches.controlMesh();
   std::array<std::optional<ClassifiedTessellation>, 2> by_domain;  // quad, triangle
 
-  TessellatedMesh mesh;
+  TessellatedMesh& mesh = *out;
+  mesh.vertices.clear();
+  mesh.indices.clear();
+  size_t points = 0, triangles = 0;  // upper bounds: every point of every patch
+  for (size_t p = first_patch; p < end_patch; ++p) {
+    const bool quad = patches.patchDomain(p) == techniques::PatchDomain::kQuad;
+    points += quad ? size_t(level + 1) * (level + 1) : tess::trianglePointCount(level);
+    triangles += quad ? tess::quadTriangleCount(level) : tess::triangleTriangleCount(level);
+  }
+  mesh.vertices.reserve(points * kFloatsPerVertex);
+  mesh.indices.reserve(triangles * 3);
   std::vector<uint32_t> corner_ids(render.vertex_count, UINT32_MAX);
   std::unordered_map<uint64_t, uint32_t> edge_ids;  // (render a < b, t from a) -> vertex
+  edge_ids.reserve((end_patch - first_patch) * 2 * (level - 1));
   std::vector<uint32_t> local;
   for (size_t p = first_patch; p < end_patch; ++p) {
     const techniques::PatchDomain domain = patches.patchDomain(p);
@@ -186,48 +207,71 @@ TessellatedMesh buildTessellatedMesh(const techniques::SurfacePatches& patches, 
       for (uint32_t v : tri) mesh.indices.push_back(local[v]);
     }
   }
-  return mesh;
 }
 
 CompressedMesh compressMesh(TessellatedMesh* mesh) {
+  CompressedMesh out;
+  std::vector<float> scratch;
+  compressMesh(mesh, &out, &scratch);
+  return out;
+}
+
+void compressMesh(TessellatedMesh* mesh, CompressedMesh* out, std::vector<float>* scratch) {
   const size_t vertex_count = mesh->vertexCount();
   std::vector<uint32_t>& indices = mesh->indices;
   meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertex_count);
-  std::vector<float> fetched(mesh->vertices.size());
+  std::vector<float>& fetched = *scratch;
+  fetched.resize(mesh->vertices.size());
   const size_t used =
       meshopt_optimizeVertexFetch(fetched.data(), indices.data(), indices.size(),
                                   mesh->vertices.data(), vertex_count, mesh::kRenderVertexBytes);
   fetched.resize(used * kFloatsPerVertex);
-  mesh->vertices = std::move(fetched);
+  std::swap(mesh->vertices, fetched);
 
-  CompressedMesh out;
-  out.index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
-  out.index_data.resize(meshopt_encodeIndexBuffer(out.index_data.data(), out.index_data.size(),
-                                                  indices.data(), indices.size()));
-  out.vertex_data.resize(meshopt_encodeVertexBufferBound(used, mesh::kRenderVertexBytes));
-  out.vertex_data.resize(meshopt_encodeVertexBuffer(out.vertex_data.data(), out.vertex_data.size(),
-                                                    mesh->vertices.data(), used,
-                                                    mesh::kRenderVertexBytes));
-  return out;
+  out->index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
+  out->index_data.resize(meshopt_encodeIndexBuffer(
+      out->index_data.data(), out->index_data.size(), indices.data(), indices.size()));
+  out->vertex_data.resize(meshopt_encodeVertexBufferBound(used, mesh::kRenderVertexBytes));
+  out->vertex_data.resize(meshopt_encodeVertexBuffer(out->vertex_data.data(),
+                                                     out->vertex_data.size(),
+                                                     mesh->vertices.data(), used,
+                                                     mesh::kRenderVertexBytes));
 }
 
-CompressedSize compressedSize(const techniques::SurfacePatches& patches, uint32_t level) {
+CompressedSize compressedSize(const techniques::SurfacePatches& patches, uint32_t level,
+                              size_t sample_chunks) {
+  assert(sample_chunks > 0);
   const mesh::RenderVertices render = mesh::buildRenderVertices(patches.controlMesh());
   const size_t patch_count = patches.patchCount();
   const size_t chunks = (patch_count + kCompressChunkPatches - 1) / kCompressChunkPatches;
-  std::vector<CompressedSize> per_chunk(chunks);
-  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-    const size_t first = c * kCompressChunkPatches;
-    TessellatedMesh mesh = buildTessellatedMesh(
-        patches, level, render, first, std::min(patch_count, first + kCompressChunkPatches));
-    const CompressedMesh compressed = compressMesh(&mesh);
-    per_chunk[c] = {compressed.vertex_data.size(), compressed.index_data.size(), 1};
+  const size_t built = std::min(chunks, sample_chunks);
+  auto chunkOf = [&](size_t i) { return built == chunks ? i : (2 * i + 1) * chunks / (2 * built); };
+  // Per thread: the chunk's buffers, reused from chunk to chunk (a fresh 60 MB a chunk cost
+  // more in page faults and copies than building it).
+  struct Scratch {
+    TessellatedMesh mesh;
+    CompressedMesh compressed;
+    std::vector<float> fetched;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  std::vector<std::array<uint64_t, 3>> per_chunk(built);  // vertex, index bytes, patches
+  tbb::parallel_for(size_t(0), built, [&](size_t i) {
+    const size_t first = chunkOf(i) * kCompressChunkPatches;
+    const size_t end = std::min(patch_count, first + kCompressChunkPatches);
+    Scratch& s = scratch.local();
+    buildTessellatedMesh(patches, level, render, first, end, &s.mesh);
+    compressMesh(&s.mesh, &s.compressed, &s.fetched);
+    per_chunk[i] = {s.compressed.vertex_data.size(), s.compressed.index_data.size(), end - first};
   });
-  CompressedSize total;
-  for (const CompressedSize& chunk : per_chunk) {
-    total.vertex_bytes += chunk.vertex_bytes;
-    total.index_bytes += chunk.index_bytes;
-    total.chunks += chunk.chunks;
+  uint64_t vertex_bytes = 0, index_bytes = 0, sampled_patches = 0;
+  for (const auto& [v, i, p] : per_chunk) vertex_bytes += v, index_bytes += i, sampled_patches += p;
+  CompressedSize total{vertex_bytes, index_bytes, chunks, built};
+  if (built < chunks) {  // scaled to every patch, in integer arithmetic (rounded)
+    auto scaled = [&](uint64_t bytes) {
+      return (bytes * patch_count + sampled_patches / 2) / sampled_patches;
+    };
+    total.vertex_bytes = scaled(vertex_bytes);
+    total.index_bytes = scaled(index_bytes);
   }
   return total;
 }
