@@ -85,7 +85,8 @@ inline constexpr size_t kCompressChunkPatches = 256;
 // 2,048 patches (every bundled one), an evenly spaced sample of a larger one. Building the
 // plain mesh is the measure's whole cost (a 25k-patch asset is 110 million points at level
 // 64), and the bytes per patch of one chunk differ little from another's: on the production
-// assets an 8-chunk sample is within 0.3 % of every chunk at level 8 (tests/measures/memory_test.cpp).
+// assets an 8-chunk sample is within 0.3 % of every chunk at level 8
+// (tests/measures/memory_test.cpp).
 inline constexpr size_t kCompressSampleChunks = 8;
 
 // The compressed baseline of the whole asset at `level`: the plain mesh of each run of
