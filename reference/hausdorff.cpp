@@ -113,11 +113,21 @@ DirectedDistance directedDistance(const TriangleMeshRef& source,
 }
 
 HausdorffResult hausdorff(const TriangleMeshRef& a, const TriangleMeshRef& b, int lattice_level) {
-  const TriangleDistanceField field_a(a, "hausdorff mesh a");
-  const TriangleDistanceField field_b(b, "hausdorff mesh b");
+  return hausdorff(a, a, b, b, lattice_level);
+}
+
+HausdorffResult hausdorff(const TriangleMeshRef& a_part, const TriangleMeshRef& a_around,
+                          const TriangleMeshRef& b_part, const TriangleMeshRef& b_around,
+                          int lattice_level) {
   HausdorffResult result;
-  result.a_to_b = directedDistance(a, field_b, lattice_level);
-  result.b_to_a = directedDistance(b, field_a, lattice_level);
+  {
+    const TriangleDistanceField field_b(b_around, "hausdorff mesh b");
+    result.a_to_b = directedDistance(a_part, field_b, lattice_level);
+  }  // one field at a time: the larger (a dense reference) is freed before the other is built
+  {
+    const TriangleDistanceField field_a(a_around, "hausdorff mesh a");
+    result.b_to_a = directedDistance(b_part, field_a, lattice_level);
+  }
   result.hausdorff = std::max(result.a_to_b.max, result.b_to_a.max);
   const double area = result.a_to_b.area + result.b_to_a.area;
   if (area > 0) {

@@ -46,4 +46,13 @@ DirectedDistance directedDistance(const TriangleMeshRef& source,
 HausdorffResult hausdorff(const TriangleMeshRef& a, const TriangleMeshRef& b,
                           int lattice_level = kDefaultLatticeLevel);
 
+// The same on parts of the two surfaces: samples of `a_part` against `b_around`, samples of
+// `b_part` against `a_around`, where each *_around holds its *_part and the surface around it
+// that a closest point could fall on (a measure that samples patches: the sampled patches and
+// their neighbours). With each part equal to its whole, the same result, bit for bit, as
+// hausdorff(a, b).
+HausdorffResult hausdorff(const TriangleMeshRef& a_part, const TriangleMeshRef& a_around,
+                          const TriangleMeshRef& b_part, const TriangleMeshRef& b_around,
+                          int lattice_level = kDefaultLatticeLevel);
+
 }  // namespace tb::ref

@@ -101,7 +101,8 @@ void writeTriangleGrid(FaceWriter* writer, int n) {
 
 }  // namespace
 
-LimitTessellation tessellateLimit(const LimitSurface& surface, int rate) {
+LimitTessellation tessellateLimit(const LimitSurface& surface, int rate,
+                                  std::span<const uint8_t> faces_wanted) {
   if (rate < 1 || rate > kMaxTessellationRate) {
     throw mesh::InputError(surface.mesh().source, "option 'rate'",
                            "tessellation rate " + std::to_string(rate) + " is outside [1, " +
@@ -112,8 +113,12 @@ LimitTessellation tessellateLimit(const LimitSurface& surface, int rate) {
   std::vector<size_t> first_vertex(faces + 1, 0), first_triangle(faces + 1, 0);
   LimitTessellation out;
   for (size_t f = 0; f < faces; ++f) {
-    grids[f] = faceGrid(surface, f, rate);
-    out.faces_skipped += grids[f].sub_faces == 0;
+    if (!faces_wanted.empty() && faces_wanted[f] == 0) {
+      grids[f].sub_faces = 0;  // left out: no vertices, no triangles, not counted as skipped
+    } else {
+      grids[f] = faceGrid(surface, f, rate);
+      out.faces_skipped += grids[f].sub_faces == 0;
+    }
     first_vertex[f + 1] = first_vertex[f] + (grids[f].sub_faces ? grids[f].vertices() : 0);
     first_triangle[f + 1] = first_triangle[f] + (grids[f].sub_faces ? grids[f].triangles() : 0);
   }

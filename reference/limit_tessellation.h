@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/mesh/vec.h"
@@ -35,6 +36,9 @@ struct LimitTessellation {
 // Vertices are not shared between faces; points on a shared edge agree to round-off.
 // Faces are evaluated in parallel (TBB); the result does not depend on scheduling.
 // Throws InputError naming the option for a rate outside [1, kMaxTessellationRate].
-LimitTessellation tessellateLimit(const LimitSurface& surface, int rate);
+// `faces`: when not empty, one flag per face; only flagged faces are tessellated (the others
+// are left out without counting in faces_skipped).
+LimitTessellation tessellateLimit(const LimitSurface& surface, int rate,
+                                  std::span<const uint8_t> faces = {});
 
 }  // namespace tb::ref

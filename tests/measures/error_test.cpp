@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <map>
 
 #include "core/mesh/obj_loader.h"
+#include "harness/lod/reference_scheme.h"
 #include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
@@ -81,6 +84,45 @@ TEST(SurfaceError, PhongBulgesAwayFromTheShrunkenLoopLimitOfTheIcosahedron) {
     EXPECT_GT(rms, previous) << "alpha " << alpha;
     previous = rms;
   }
+}
+
+
+// Oracle: the full figure (every patch) against the sampled one, with the budget forced down to
+// 16 patches (the feature patches and at most one run of others), on the bundled asset with
+// the most regular patches (catmark_pawn: 588 quads, 1,176 triangles fan-triangulated), for a
+// technique that errs at extraordinary vertices (acc) and one that errs everywhere
+// (pn_triangles). The sample keeps every
+// feature patch, so the sampled Hausdorff distance (the largest over the sample) equals the
+// full one wherever the worst patch is a feature patch, and stays within the stated bound (at
+// least 0.8 of it, never above it) elsewhere. The broken control, the same budget without the
+// feature patches (runs only), must miss that bound, or the rule that keeps them would not be
+// what the bound rests on.
+TEST(SurfaceError, SampledHausdorffStaysWithinItsBoundOfTheFullFigure) {
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_pawn.obj"));
+  bool control_missed = false;
+  for (const char* id : {"acc", "pn_triangles"}) {
+    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
+    const auto patches = techniques::buildSurface(*technique, mesh, technique->variants()[0]);
+    const ref::LimitSurface limit(patches->controlMesh(),
+                                  lod::referenceScheme(patches->approximates()));
+    const size_t budget = 16;  // one run of regular patches at most
+    const measures::SurfaceErrorFigures full =
+        measures::measureSurfaceError(*patches, limit, &mesh, {SIZE_MAX, true});
+    const measures::SurfaceErrorFigures sampled =
+        measures::measureSurfaceError(*patches, limit, &mesh, {budget, true});
+    const measures::SurfaceErrorFigures control =
+        measures::measureSurfaceError(*patches, limit, &mesh, {budget, false});
+    ASSERT_EQ(full.hausdorff_patches, patches->patchCount() - full.patches_without_limit);
+    ASSERT_LT(sampled.hausdorff_patches, full.hausdorff_patches) << id;
+    EXPECT_EQ(sampled.parametric_max, full.parametric_max) << id;
+    EXPECT_LE(sampled.hausdorff, full.hausdorff * (1 + 1e-12)) << id;
+    EXPECT_GE(sampled.hausdorff, 0.8 * full.hausdorff) << id;
+    control_missed |= control.hausdorff < 0.8 * full.hausdorff;
+    std::printf("%s: %zu of %zu patches; hausdorff full %.6g, sampled %.6g, control %.6g\n", id,
+                sampled.hausdorff_patches, full.hausdorff_patches, full.hausdorff,
+                sampled.hausdorff, control.hausdorff);
+  }
+  EXPECT_TRUE(control_missed) << "the sample without feature patches met the bound everywhere";
 }
 
 }  // namespace

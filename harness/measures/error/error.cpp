@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -242,13 +243,18 @@ struct SampleValues {
   std::vector<uint8_t> near_xord;
 };
 
-SampleValues evaluateSamples(const techniques::SurfacePatches& patches,
-                             const ref::LimitSurface& limit, osd::Scheme scheme,
-                             const SamplePlan& plan) {
-  const mesh::Topology topology = mesh::buildTopology(patches.controlMesh());
+// 1 per control-mesh position at an extraordinary vertex of the scheme.
+std::vector<uint8_t> extraordinaryVertices(const mesh::Mesh& control, const mesh::Topology& topology,
+                                           osd::Scheme scheme) {
   const uint32_t regular_valence = scheme == osd::Scheme::kCatmullClark ? 4 : 6;
-  std::vector<uint8_t> extraordinary(patches.controlMesh().positions.size(), 0);
+  std::vector<uint8_t> extraordinary(control.positions.size(), 0);
   for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
+  return extraordinary;
+}
+
+SampleValues evaluateSamples(const techniques::SurfacePatches& patches,
+                             const ref::LimitSurface& limit, const SamplePlan& plan,
+                             const std::vector<uint8_t>& extraordinary) {
   const size_t sample_count = plan.sampleCount();
   SampleValues values{std::vector<mesh::Vec3d>(sample_count), std::vector<double>(sample_count),
                       std::vector<double>(sample_count), std::vector<uint8_t>(sample_count)};
@@ -279,10 +285,11 @@ SampleValues evaluateSamples(const techniques::SurfacePatches& patches,
 
 // The technique's side of the distance: every sampled patch's triangles, indexing the
 // plan's flat sample order.
-std::vector<ref::Triangle> techniqueTriangles(const SamplePlan& plan) {
+std::vector<ref::Triangle> techniqueTriangles(const SamplePlan& plan,
+                                              const std::vector<uint8_t>& patch_in) {
   std::vector<ref::Triangle> triangles;
   for (size_t p = 0; p + 1 < plan.first_sample.size(); ++p) {
-    if (plan.sampling_of[p] == nullptr) continue;
+    if (plan.sampling_of[p] == nullptr || !patch_in[p]) continue;
     const uint32_t base = uint32_t(plan.first_sample[p]);
     for (const ref::Triangle& triangle : plan.sampling_of[p]->triangles) {
       triangles.push_back({base + triangle[0], base + triangle[1], base + triangle[2]});
@@ -292,22 +299,93 @@ std::vector<ref::Triangle> techniqueTriangles(const SamplePlan& plan) {
 }
 
 // 1 for each sample of a patch whose input face touches a crease.
-std::vector<uint8_t> creasedSamples(const techniques::SurfacePatches& patches,
-                                    const mesh::Mesh* input, const SamplePlan& plan) {
+// 1 for each patch whose input face touches a crease.
+std::vector<uint8_t> creasedPatches(const techniques::SurfacePatches& patches,
+                                    const mesh::Mesh* input) {
   const std::vector<uint8_t> creased_face =
       facesTouchingCreases(input ? *input : patches.controlMesh());
-  const auto nearCrease = [&](size_t p) {
+  std::vector<uint8_t> creased(patches.patchCount(), 0);
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
     const size_t face = input ? patches.sourceFace(p) : p;
-    return face < creased_face.size() && creased_face[face] != 0;
-  };
+    creased[p] = face < creased_face.size() && creased_face[face] != 0;
+  }
+  return creased;
+}
+
+std::vector<uint8_t> creasedSamples(const techniques::SurfacePatches& patches,
+                                    const std::vector<uint8_t>& creased, const SamplePlan& plan) {
   std::vector<uint8_t> crease_of_sample(plan.sampleCount(), 0);
   for (size_t p = 0; p < patches.patchCount(); ++p) {
-    if (nearCrease(p)) {
+    if (creased[p]) {
       std::fill(crease_of_sample.begin() + ptrdiff_t(plan.first_sample[p]),
                 crease_of_sample.begin() + ptrdiff_t(plan.first_sample[p + 1]), uint8_t(1));
     }
   }
   return crease_of_sample;
+}
+
+// The patches the Hausdorff figures sample (error.h, kErrorHausdorffPatchBudget): `part`, the
+// sampled patches; `around`, those and every patch sharing a vertex with one (the surface a
+// closest point can fall on); `all` when every patch with a limit is in `part`.
+struct HausdorffPatches {
+  std::vector<uint8_t> part, around;
+  size_t count = 0;
+  bool all = true;
+};
+
+HausdorffPatches hausdorffPatches(const techniques::SurfacePatches& patches, const SamplePlan& plan,
+                                  const mesh::Topology& topology,
+                                  const std::vector<uint8_t>& extraordinary,
+                                  const std::vector<uint8_t>& creased,
+                                  const HausdorffSampling& sampling) {
+  const size_t budget = sampling.patch_budget;
+  const mesh::Mesh& control = patches.controlMesh();
+  const size_t patch_count = patches.patchCount();
+  HausdorffPatches out{std::vector<uint8_t>(patch_count, 0), {}, 0, true};
+  std::vector<uint8_t> next_to_hole(control.positions.size(), 0);
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (plan.sampling_of[p] == nullptr) {
+      for (uint32_t v : control.facePositions(p)) next_to_hole[v] = 1;
+    }
+  }
+  std::vector<size_t> others;  // patches with a limit and no feature
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (plan.sampling_of[p] == nullptr) continue;
+    bool feature = creased[p] != 0;
+    for (uint32_t v : control.facePositions(p)) {
+      feature |= extraordinary[v] || topology.on_boundary[v] || next_to_hole[v];
+    }
+    if (feature && sampling.keep_feature_patches) {
+      out.part[p] = 1, ++out.count;
+    } else {
+      others.push_back(p);
+    }
+  }
+  // Runs of kRun consecutive patches (neighbours on a refined mesh, whose faces come in
+  // patch order per parent face), evenly spaced: the neighbourhood a run needs is about twice
+  // its size, a lone patch's nine times.
+  constexpr size_t kRun = 16;
+  const size_t runs = (others.size() + kRun - 1) / kRun;
+  const size_t room = out.count >= budget ? 0 : budget - out.count;
+  const size_t take = std::min(runs, room / kRun);
+  for (size_t i = 0; i < take; ++i) {
+    const size_t run = take == runs ? i : (2 * i + 1) * runs / (2 * take);
+    for (size_t k = run * kRun; k < std::min(others.size(), (run + 1) * kRun); ++k) {
+      out.part[others[k]] = 1, ++out.count;
+    }
+  }
+  out.all = take == runs && sampling.keep_feature_patches;
+  out.around = out.part;
+  if (out.all) return out;
+  std::vector<uint8_t> touched(control.positions.size(), 0);
+  for (size_t p = 0; p < patch_count; ++p) {
+    if (!out.part[p]) continue;
+    for (uint32_t v : control.facePositions(p)) touched[v] = 1;
+  }
+  for (size_t p = 0; p < patch_count; ++p) {
+    for (uint32_t v : control.facePositions(p)) out.around[p] |= touched[v];
+  }
+  return out;
 }
 
 // The parametric and normal figures (world units), reduced serially in sample order.
@@ -353,7 +431,8 @@ void scaleByDiagonal(SurfaceErrorFigures* figures) {
 }  // namespace
 
 SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patches,
-                                        const ref::LimitSurface& limit, const mesh::Mesh* input) {
+                                        const ref::LimitSurface& limit, const mesh::Mesh* input,
+                                        HausdorffSampling sampling) {
   const osd::Scheme scheme = lod::referenceScheme(patches.approximates());
   if (limit.scheme() != scheme) {
     throw std::logic_error("error: the patches approximate " +
@@ -367,13 +446,28 @@ SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patche
       patchSampling(techniques::PatchDomain::kTriangle, kErrorSampleLevel),
       subFaceSampling(kErrorSubFaceSampleLevel)};
   const SamplePlan plan = planSamples(patches, limit, scheme, samplings, &figures);
-  const SampleValues values = evaluateSamples(patches, limit, scheme, plan);
-  const std::vector<ref::Triangle> technique_triangles = techniqueTriangles(plan);
-  reduceSamples(values, creasedSamples(patches, input, plan), &figures);
+  const mesh::Mesh& control = patches.controlMesh();
+  const mesh::Topology topology = mesh::buildTopology(control);
+  const std::vector<uint8_t> extraordinary = extraordinaryVertices(control, topology, scheme);
+  const std::vector<uint8_t> creased = creasedPatches(patches, input);
+  const SampleValues values = evaluateSamples(patches, limit, plan, extraordinary);
+  reduceSamples(values, creasedSamples(patches, creased, plan), &figures);
   if (figures.samples > 0) {
-    const ref::LimitTessellation dense = ref::tessellateLimit(limit, kErrorReferenceRate);
-    const ref::HausdorffResult distance =
-        ref::hausdorff({values.technique_points, technique_triangles}, dense.view(), 2);
+    const HausdorffPatches part =
+        hausdorffPatches(patches, plan, topology, extraordinary, creased, sampling);
+    figures.hausdorff_patches = part.count;
+    const std::vector<ref::Triangle> technique_part = techniqueTriangles(plan, part.part);
+    const std::vector<ref::Triangle> technique_around = techniqueTriangles(plan, part.around);
+    const ref::LimitTessellation dense = ref::tessellateLimit(
+        limit, kErrorReferenceRate, part.all ? std::span<const uint8_t>() : part.around);
+    std::vector<ref::Triangle> dense_part;
+    for (size_t t = 0; t < dense.triangles.size() && !part.all; ++t) {
+      if (part.part[dense.triangle_face[t]]) dense_part.push_back(dense.triangles[t]);
+    }
+    const ref::HausdorffResult distance = ref::hausdorff(
+        {values.technique_points, technique_part}, {values.technique_points, technique_around},
+        part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part}, dense.view(),
+        2);
     figures.hausdorff = distance.hausdorff;
     figures.hausdorff_technique_to_limit = distance.a_to_b.max;
     figures.hausdorff_limit_to_technique = distance.b_to_a.max;

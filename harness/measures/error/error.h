@@ -44,7 +44,22 @@ struct SurfaceErrorFigures {
   // Triangle patches over Catmull-Clark triangles, sampled through Bfr's quad sub-faces
   // (kErrorSubFaceSampleLevel); 0 for single-scheme techniques.
   size_t patches_through_sub_faces = 0;
+  // Patches whose surfaces the Hausdorff figures sampled: every patch with a limit (exact), or
+  // the sample of kErrorHausdorffPatchBudget on a larger asset.
+  size_t hausdorff_patches = 0;
 };
+
+// Patches with a limit above which the Hausdorff figures (hausdorff*, rms_distance) sample
+// patches; the parametric and normal figures never do. Every bundled asset is below it. The
+// sample: every feature patch (a corner at an extraordinary or boundary vertex or next to a
+// hole, or its input face touching a crease: where techniques err most), then runs of 16
+// consecutive other patches, evenly spaced in patch order, up to the budget. Its distances go to the other surface over
+// the sampled patches and their vertex neighbours (where a closest point falls), so the sampled
+// Hausdorff distance is the largest over the sample: never above the full one, and equal to it
+// when the worst patch is sampled (tests/measures/error_test.cpp bounds it on the bundled
+// assets). A production-size asset's dense reference is then a few million triangles, not
+// tens of millions (a 25k-patch asset at rate 16 is 12.8 million).
+inline constexpr size_t kErrorHausdorffPatchBudget = 2048;
 
 // Lattice level of the technique's sampling (per patch edge) and the rate of the
 // reference tessellation.
@@ -69,9 +84,16 @@ constexpr double kNearExtraordinary = 0.75;
 // combination.
 // `input`: the mesh the technique was built from, whose tags say which samples are near a
 // crease; null: the control mesh's own tags.
+// How the Hausdorff figures sample patches: the measure's rule by default. Tests vary the
+// budget (SIZE_MAX: never sample) and turn the feature patches off for their broken control.
+struct HausdorffSampling {
+  size_t patch_budget = kErrorHausdorffPatchBudget;
+  bool keep_feature_patches = true;  // false: runs only (a control, never the measure's)
+};
 SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patches,
                                         const ref::LimitSurface& limit,
-                                        const mesh::Mesh* input = nullptr);
+                                        const mesh::Mesh* input = nullptr,
+                                        HausdorffSampling sampling = {});
 
 // Per face of `mesh`: 1 when the face touches a crease (an edge of crease sharpness > 0 or a
 // vertex of corner sharpness > 0).

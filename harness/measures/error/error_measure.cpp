@@ -140,6 +140,13 @@ class ErrorMeasure final : public Measure {
              " segments per patch edge; reference tessellated at rate " +
              std::to_string(kErrorReferenceRate) +
              "; near extraordinary (xord): corner weight >= 0.75",
+         "an asset of more than " + std::to_string(kErrorHausdorffPatchBudget) +
+             " patches: the Hausdorff figures sample patches (every patch at an extraordinary "
+             "vertex, a boundary, a hole or a crease, the rest evenly spaced, " +
+             std::to_string(kErrorHausdorffPatchBudget) +
+             " in all), each against the other surface over the sampled patches and their "
+             "neighbours: the largest distance over the sample, never above the full figure "
+             "(the record's note says so)",
          "displaced surfaces (rows with a displacement key, reference baked_target): the "
          "technique displaced by its map against the detailed target the map was baked from, "
          "per tessellation level (lattice of level segments per patch edge; default suite "
@@ -202,6 +209,14 @@ class ErrorMeasure final : public Measure {
             "-segment (s,t) grid on each sub-face, mapped bilinearly through its corners (patch "
             "corner, edge midpoints, centroid) to the patch's barycentric domain; their "
             "parametric error therefore depends on that map, their Hausdorff distance does not");
+      }
+      const size_t with_limit = input.patches->patchCount() - f.patches_without_limit;
+      if (f.hausdorff_patches < with_limit) {
+        result.notes.push_back(
+            "hausdorff* and rms_distance sampled: " + std::to_string(f.hausdorff_patches) +
+            " of " + std::to_string(with_limit) +
+            " patches (every one at an extraordinary, boundary or crease feature, the rest evenly "
+            "spaced); the parametric and normal figures cover every patch");
       }
       results::MetricRow row;
       row.keys["reference"] = scheme == osd::Scheme::kLoop ? "loop_limit" : "catmull_clark_limit";
