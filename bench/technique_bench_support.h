@@ -21,7 +21,7 @@ inline techniques::BuiltSurface defaultVariantPatches(benchmark::State& state,
                                                       const techniques::Technique& technique,
                                                       const std::string& asset) {
   try {
-    const mesh::Mesh mesh = mesh::loadObjFile(suite::resolveAsset(asset).path);
+    const mesh::Mesh mesh = suite::loadAsset(suite::resolveAsset(asset));
     return techniques::buildSurface(technique, mesh, technique.variants()[0]);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());

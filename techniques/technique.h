@@ -51,6 +51,10 @@ struct VariantInfo {
   bool evaluation_order_only = false;
   // Run by --suite full only: a costlier variant the default suite's time budget leaves out.
   bool full_suite_only = false;
+  // Non-empty: a control, a variant made to show a failure (what it shows, one line). It is
+  // measured like any other and never recommended: `advise` and the report's choice section
+  // exclude it (results.json: context.selection.techniques[].controls).
+  std::string control = {};
 };
 
 // Bytes a technique keeps resident to draw one asset, before tessellation.

@@ -16,6 +16,7 @@
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 #include "harness/suite/asset_catalog.h"
+#include "harness/suite/shard.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
 
@@ -49,21 +50,32 @@ std::vector<const techniques::Technique*> techniquesNamed(const std::vector<std:
 }
 
 // The advise measures of every (selected) technique on the one asset, default suite, no
-// run folder, no progress output.
+// run folder: only what the ranking and the constraints read (no control variant, no
+// compressed memory baseline, no cracks with --allow-cracks), progress on stderr.
 results::Results measureInProcess(const AdviseArgs& args, std::string* asset_name) {
   suite::SuiteSelection selection;
   selection.techniques = techniquesNamed(args.techniques);
-  const suite::AssetRef asset = suite::resolveAsset(args.asset);
+  suite::AssetRef asset = suite::resolveAsset(args.asset);
+  if (args.refine > 0) asset = suite::refinedAsset(std::move(asset), args.refine);
   *asset_name = asset.name;
   selection.assets.push_back(asset);
+  selection.skip_controls = true;
+  selection.decision_figures_only = true;
   for (const std::string& id : adviseMeasureIds()) {
+    if (id == "cracks" && args.allow_cracks) continue;  // only the watertight constraint reads it
     const measures::Measure* measure = measures::MeasureRegistry::instance().find(id);
     if (measure == nullptr) throw mesh::InputError("advise", id, "measure not registered");
     selection.measures.push_back(measure);
   }
   results::Results results;
+  const bool quiet = args.json;
   suite::runSuite(
-      selection, [](size_t, size_t, const std::string&) {}, &results);
+      selection,
+      [quiet](size_t done, size_t total, const std::string& label) {
+        if (!quiet) fmt::print(stderr, "advise: [{}/{}] {}\n", done, total, label);
+      },
+      &results);
+  results.context.selection = suite::describeSelection(selection, results);
   return results;
 }
 
@@ -174,8 +186,14 @@ CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args) {
                      "largest worst hausdorff distance, fraction of the bounding-box diagonal");
   advise->add_option("--max-memory-ratio", args.max_memory_ratio,
                      "largest technique bytes (with displacement map) / plain triangle mesh bytes");
-  advise->add_flag("--watertight", args.watertight,
-                   "every cracks row watertight, CPU and device (skipped device rows fail it)");
+  advise->add_flag("--allow-cracks", args.allow_cracks,
+                   "drop the default constraint that every cracks row is watertight, CPU and "
+                   "device (skipped device rows fail it); cracks are then not measured");
+  advise->add_flag("--watertight", args.watertight_flag,
+                   "the default: every cracks row watertight (kept for scripts)");
+  advise->add_option("--refine", args.refine,
+                     "refine the asset N times with OpenSubdiv at load, as `run --refine`")
+      ->check(CLI::Range(0, suite::kMaxRefine));
   advise->add_option("--max-instructions", args.max_instructions,
                      "largest total SPIR-V instructions of the domain (.tese) stage, spirv-opt -O");
   advise->add_option("--technique", args.techniques, "only this technique (repeatable)");
@@ -188,7 +206,10 @@ int runAdvise(const AdviseArgs& args) {
   constraints.max_error = parseBound("--max-error", args.max_error);
   constraints.max_memory_ratio = parseBound("--max-memory-ratio", args.max_memory_ratio);
   constraints.max_instructions = parseBound("--max-instructions", args.max_instructions);
-  constraints.watertight = args.watertight;
+  if (args.allow_cracks && args.watertight_flag) {
+    throw mesh::InputError("advise", "--allow-cracks", "contradicts --watertight; give one");
+  }
+  constraints.watertight = !args.allow_cracks;
   constraints.techniques = args.techniques;
 
   std::string asset = args.asset;

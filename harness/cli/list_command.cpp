@@ -30,13 +30,18 @@ int runList(const ListArgs& args) {
     for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
       const techniques::TechniqueInfo& info = t->info();
       nlohmann::ordered_json variants = nlohmann::ordered_json::array();
-      for (const techniques::VariantInfo& v : t->variants()) variants.push_back(v.name);
+      nlohmann::ordered_json controls = nlohmann::ordered_json::array();
+      for (const techniques::VariantInfo& v : t->variants()) {
+        variants.push_back(v.name);
+        if (!v.control.empty()) controls.push_back({{"variant", v.name}, {"shows", v.control}});
+      }
       items.push_back({{"id", info.id},
                        {"family", toString(info.family)},
                        {"title", info.title},
                        {"citation", info.citation},
                        {"input", info.input},
-                       {"variants", variants}});
+                       {"variants", variants},
+                       {"controls", controls}});
       if (!args.json) fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title, info.citation);
     }
   } else if (args.what == "assets") {

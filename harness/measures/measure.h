@@ -132,6 +132,9 @@ struct MeasureInput {
   const view::CameraPath* camera_path = nullptr;
   // The run's suite: a measure picks its default or full grid by it.
   SuiteMode suite = SuiteMode::kDefault;
+  // Only the figures a decision reads (`advise`): a measure may leave out the context figures
+  // that cost most and decide nothing (memory: the compressed baseline).
+  bool decision_figures_only = false;
   // Non-null when `patches` is displaced by a map (measures with displaced_surfaces only).
   const DisplacementRun* displacement = nullptr;
 };

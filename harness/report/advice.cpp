@@ -18,10 +18,11 @@ const char* const kAdviceRankingRule =
     "instructions ascending, then memory ratio ascending, then technique/variant name (a "
     "missing figure sorts after every present one); excluded candidates follow in the same "
     "order, each with every constraint it fails and by how much. A candidate lacking the figure "
-    "a constraint needs fails that constraint. --watertight needs every cracks row (CPU and "
-    "device backends, every spacing and level) to have points_not_equal = 0 and "
-    "unpaired_points = 0: skipped device rows leave watertightness unverified, which fails it. "
-    "Techniques that refuse the asset are listed last with their reason.";
+    "a constraint needs fails that constraint. Watertightness is a constraint unless "
+    "--allow-cracks: every cracks row (CPU and device backends, every spacing and level) must "
+    "have points_not_equal = 0 and unpaired_points = 0; skipped device rows leave it "
+    "unverified, which fails it. Controls (variants made to show a failure) are never a "
+    "choice. Techniques that refuse the asset are listed last with their reason.";
 
 const char* const kAdviceFigureUnits =
     "each figure is the worst over its measure's summary scope: error = hausdorff (two-sided "
@@ -296,6 +297,9 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
     if (plain_over && *plain_over > 0) f.memory_ratio = 1.0 / *plain_over;
     readWatertightness(findLine(cracks, key), &f);
     c.failures = failuresOf(f, constraints);
+    if (isControl(results, c.technique, c.variant)) {
+      c.failures.insert(c.failures.begin(), "a control: made to show a failure, never a choice");
+    }
     c.passes = c.failures.empty();
     advice.ranked.push_back(std::move(c));
   }

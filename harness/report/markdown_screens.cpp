@@ -141,8 +141,9 @@ void appendChoiceScreen(const results::Results& results, const std::vector<std::
   appendCoverage(results, out);
   *out += "Per asset, the technique/variant with the best value of each measure's first headline "
           "figure, taking each candidate's worst value over its levels, spacings, backends and "
-          "frames (ties: the first in run order). `tessbench advise ASSET` ranks every candidate "
-          "under constraints (error, memory, watertightness, instructions).\n\n";
+          "frames (ties: the first in run order); controls, the variants made to fail, are never "
+          "named. `tessbench advise ASSET` ranks every candidate under constraints (error, "
+          "memory, watertightness, instructions).\n\n";
   std::vector<std::string> shown;
   std::vector<std::string> header{"asset"};
   std::vector<std::map<std::string, Best>> best_per_measure;
@@ -155,7 +156,7 @@ void appendChoiceScreen(const results::Results& results, const std::vector<std::
     std::map<std::string, Best> best;
     for (const SummaryLine& line : summary.lines) {
       const MetricStats* stats = line.find(metric);
-      if (stats == nullptr) continue;
+      if (stats == nullptr || isControl(results, line.technique, line.variant)) continue;
       const double value = worstOf(*stats, direction);
       Best& current = best[line.asset];
       const bool better = !current.found || (direction == results::Direction::kHigherIsBetter

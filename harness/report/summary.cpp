@@ -137,6 +137,16 @@ std::vector<results::RunSelection::TechniqueVariants> techniquesOf(
   return techniques;
 }
 
+bool isControl(const results::Results& results, const std::string& technique,
+               const std::string& variant) {
+  for (const auto& t : results.context.selection.techniques) {
+    if (t.technique == technique) {
+      return std::find(t.controls.begin(), t.controls.end(), variant) != t.controls.end();
+    }
+  }
+  return false;
+}
+
 results::Direction directionOf(const results::Results& results, const std::string& measure,
                                const std::string& metric) {
   const results::MeasureDeclaration* declaration = results.findMeasure(measure);

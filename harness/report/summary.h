@@ -68,6 +68,11 @@ std::vector<std::string> measureIds(const results::Results& results);
 std::vector<results::RunSelection::TechniqueVariants> techniquesOf(const results::Results& results);
 
 // The direction of a declared metric; kNone when undeclared.
+// Whether technique/variant is a control (results::RunSelection::TechniqueVariants::controls):
+// made to show a failure, never a choice.
+bool isControl(const results::Results& results, const std::string& technique,
+               const std::string& variant);
+
 results::Direction directionOf(const results::Results& results, const std::string& measure,
                                const std::string& metric);
 // The unit spelling of a declared metric ("rel_diag"); empty when undeclared.

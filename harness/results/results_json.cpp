@@ -259,7 +259,9 @@ ShardId shardFromJson(const Json& json, const std::string& where) {
 Json selectionToJson(const RunSelection& selection) {
   Json techniques = Json::array();
   for (const auto& technique : selection.techniques) {
-    techniques.push_back({{"technique", technique.technique}, {"variants", technique.variants}});
+    Json entry{{"technique", technique.technique}, {"variants", technique.variants}};
+    if (!technique.controls.empty()) entry["controls"] = technique.controls;
+    techniques.push_back(std::move(entry));
   }
   Json json{{"techniques", techniques},
             {"assets", selection.assets},
@@ -277,6 +279,10 @@ RunSelection selectionFromJson(const Json& json) {
     selection.techniques.push_back(
         {field<std::string>(techniques[i], "technique", at),
          field<std::vector<std::string>>(techniques[i], "variants", at)});
+    if (techniques[i].contains("controls")) {  // absent: none, or results before controls
+      selection.techniques.back().controls =
+          field<std::vector<std::string>>(techniques[i], "controls", at);
+    }
   }
   selection.assets = field<std::vector<std::string>>(json, "assets", "context.selection");
   selection.measures = field<std::vector<std::string>>(json, "measures", "context.selection");

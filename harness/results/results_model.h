@@ -95,6 +95,8 @@ struct RunSelection {
   struct TechniqueVariants {
     std::string technique;
     std::vector<std::string> variants;
+    // The variants made to show a failure (techniques::VariantInfo::control): never a choice.
+    std::vector<std::string> controls = {};
     bool operator==(const TechniqueVariants&) const = default;
   };
   std::vector<TechniqueVariants> techniques;

@@ -68,7 +68,9 @@ results::RunSelection describeSelection(const SuiteSelection& selection,
     described.techniques.push_back({technique->info().id, {}});
     for (const techniques::VariantInfo& variant : technique->variants()) {
       if (variant.full_suite_only && selection.suite != measures::SuiteMode::kFull) continue;
+      if (selection.skip_controls && !variant.control.empty()) continue;
       described.techniques.back().variants.push_back(variant.name);
+      if (!variant.control.empty()) described.techniques.back().controls.push_back(variant.name);
     }
   }
   for (const results::AssetSummary& asset : results.assets) described.assets.push_back(asset.name);

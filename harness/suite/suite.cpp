@@ -93,6 +93,7 @@ void setUpMeasures(const SuiteSelection& selection, SuiteRun* run, results::Resu
   run->measures = selection.measures;
   if (run->measures.empty()) run->measures = measures::MeasureRegistry::instance().all();
   run->suite = selection.suite;
+  run->decision_figures_only = selection.decision_figures_only;
   run->view_paths = selection.camera_paths;
   if (run->view_paths.empty()) run->view_paths = {testOrbitPath};
   const bool whole_paths_needed =
@@ -199,12 +200,15 @@ struct SuiteInputs {
 };
 
 GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques,
-                     measures::SuiteMode suite, const SuiteInputs& all) {
+                     measures::SuiteMode suite, bool skip_controls, const SuiteInputs& all) {
   GroupPlan plan;
   for (const techniques::Technique* technique : techniques) {
     std::vector<techniques::VariantInfo> variants = technique->variants();
     if (suite != measures::SuiteMode::kFull) {
       std::erase_if(variants, [](const techniques::VariantInfo& v) { return v.full_suite_only; });
+    }
+    if (skip_controls) {
+      std::erase_if(variants, [](const techniques::VariantInfo& v) { return !v.control.empty(); });
     }
     const std::vector<SuiteInput> inputs = inputsFor(*technique, all.refs, all.meshes,
                                                      all.scenarios, all.displacements,
@@ -296,7 +300,7 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
   loadDisplacedAssets(selection, refs, meshes, &run, results, &displaced);
   const std::vector<techniques::Scenario> scenarios = scenariosFor(selection, techniques);
   const GroupPlan plan = planGroups(
-      techniques, selection.suite,
+      techniques, selection.suite, selection.skip_controls,
       {refs, meshes, scenarios, selection.displacements, displaced.meshes});
   std::vector<StepOutcome> outcomes = runGroups(run, plan, progress, on_record);
   collectOutcomes(&outcomes, results, timings);

@@ -45,6 +45,10 @@ struct SuiteSelection {
   // the first run's result, and a warning when a later run's differs (a measure must be
   // deterministic); the samples feed compare's U test. At least 1.
   int repetitions = 1;
+  // `advise`: no control variant (techniques::VariantInfo::control) is measured, and measures
+  // compute only the figures a decision reads (MeasureInput::decision_figures_only).
+  bool skip_controls = false;
+  bool decision_figures_only = false;
 };
 
 // Frames the bundled orbit is sampled to for kCameraPath measures in the default suite

@@ -251,6 +251,7 @@ StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
   measures::MeasureInput measure_input{technique, variant,       input.name,         *input.mesh,
                                        patches,   run.gpu.get(), run.gpu_unavailable};
   measure_input.suite = run.suite;
+  measure_input.decision_figures_only = run.decision_figures_only;
   for (const measures::Measure* measure : runnable) {
     MeasureTiming timing{record.technique, record.variant, record.asset, measure->info().id, 0, {}};
     bool deterministic = true;
@@ -354,6 +355,7 @@ StepOutcome runDisplacedStep(const SuiteRun& run, const techniques::Technique& t
         technique,          variant,       input.name,         *input.mesh,
         instance.surface(), run.gpu.get(), run.gpu_unavailable};
     measure_input.suite = run.suite;
+    measure_input.decision_figures_only = run.decision_figures_only;
     measure_input.displacement = &displacement;
     for (size_t m = 0; m < runnable.size(); ++m) {
       const auto start = std::chrono::steady_clock::now();

@@ -32,6 +32,7 @@ struct SuiteRun {
   // The default suite's paths of measures that declare their own (default_suite_paths).
   std::map<const measures::Measure*, std::vector<CameraPathFn>> measure_paths;
   measures::SuiteMode suite = measures::SuiteMode::kDefault;
+  bool decision_figures_only = false;  // SuiteSelection::decision_figures_only
   std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
   std::string gpu_unavailable;        // why, when gpu is null
   ShardSpec shard;

@@ -351,7 +351,7 @@ std::vector<techniques::VariantInfo> AccTechnique::variants() const {
         {{"order", double(int(order))}, {"tangent", tangent ? 1.0 : 0.0}},
         reorders};
   };
-  return {
+  std::vector<techniques::VariantInfo> variants{
       make("default", "tangent patches; symmetric FMA Bézier order",
            techniques::BezierOrder::kSymmetricFma, true),
       make("no_tangent", "normal from the geometry patch's derivatives; symmetric FMA order",
@@ -367,6 +367,9 @@ std::vector<techniques::VariantInfo> AccTechnique::variants() const {
            "reassociate it)",
            techniques::BezierOrder::kSymmetricNoFmaImprecise, true),
   };
+  variants[2].control = "shared edges evaluated in patch order crack in float";
+  variants[5].control = "without `precise` the compiler may reassociate the symmetric order";
+  return variants;
 }
 
 techniques::BezierOrder variantOrder(const techniques::VariantInfo& variant) {

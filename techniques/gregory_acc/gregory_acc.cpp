@@ -262,7 +262,9 @@ std::vector<techniques::VariantInfo> GregoryAccTechnique::variants() const {
       // The default's patches in another float order (VariantInfo::evaluation_order_only).
       {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
        {{"symmetric_edges", 0.0}},
-       true},
+       true,
+       false,
+       "shared edges evaluated by each patch's own tensor product crack in float"},
       {"exact_tangents",
        "edge_symmetric, edge points from the exact Catmull-Clark limit tangent masks "
        "(Halstead et al. 1993) instead of the paper's averaged face points",

@@ -235,7 +235,7 @@ class MemoryMeasure final : public Measure {
                                input.patches->patchCount(), std::nullopt};
       if (input.displacement) {
         figures.map_file_bytes = input.displacement->input->file_bytes;
-      } else {
+      } else if (!input.decision_figures_only) {
         figures.compressed = compressedSize(*input.patches, level);
         if (figures.compressed->sampled_chunks < figures.compressed->chunks &&
             level == kMemoryLevels.front()) {
