@@ -16,8 +16,8 @@ namespace tb::report {
 struct AdviceConstraints {
   std::optional<double> max_error;         // worst hausdorff, fraction of the bbox diagonal
   std::optional<double> max_memory_ratio;  // worst technique bytes / plain mesh bytes
-  // Every cracks row bitwise watertight: the default (`advise --allow-cracks` turns it off).
-  bool watertight = true;
+  // Every cracks row bitwise watertight (`advise` sets it unless --allow-cracks).
+  bool watertight = false;
   std::optional<double> max_instructions;  // worst TES total instructions (spirv_O, vector)
   std::vector<std::string> techniques;     // only these techniques (empty: every one)
 };

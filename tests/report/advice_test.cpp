@@ -177,6 +177,23 @@ TEST(Advice, SkippedDeviceRowsLeaveWatertightnessUnverifiedWhichFailsWatertight)
   EXPECT_NE(advice.ranked[0].failures[0].find("no Vulkan device (test)"), std::string::npos);
 }
 
+// Oracle: the declaration. A control (made to show a failure) with the best figures of all is
+// still never a choice: it ranks after every passing candidate, with the reason; the same
+// variant undeclared (the broken control of this check) would rank first.
+TEST(Advice, AControlIsNeverAChoiceEvenWithTheBestFigures) {
+  results::Results r = emptyResults();
+  addRecord(&r, "a", "default", {.error = 1e-3});
+  addRecord(&r, "a", "asymmetric", {.error = 1e-6});
+  EXPECT_EQ(names(report::rankCandidates(r, kAsset, {})).front(), "a/asymmetric");
+  r.context.selection.techniques = {{"a", {"default", "asymmetric"}, {"asymmetric"}}};
+  const report::Advice advice = report::rankCandidates(r, kAsset, {});
+  ASSERT_EQ(advice.ranked.size(), 2u);
+  EXPECT_EQ(names(advice).front(), "a/default");
+  EXPECT_TRUE(advice.anyPasses());
+  EXPECT_FALSE(advice.ranked[1].passes);
+  EXPECT_EQ(advice.ranked[1].failures.front(), "a control: made to show a failure, never a choice");
+}
+
 TEST(Advice, AMissingFigureFailsTheConstraintThatNeedsIt) {
   results::Results r = emptyResults();
   addRecord(&r, "a", "default", {.with_error = false});
