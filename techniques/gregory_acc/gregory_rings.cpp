@@ -1,6 +1,7 @@
 #include "techniques/gregory_acc/gregory_rings.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <unordered_map>
@@ -122,6 +123,7 @@ VertexFrame refinedCreaseFrame(uint32_t v, const Ring& sector, const Ring& whole
   const uint32_t k = sector.faces();
   // The sector in the refined ring: from the edge point of (v, b0), k faces counter-clockwise.
   const uint32_t first = whole_refined.indexOf(refined.edgePoint(v, b0));
+  assert(first != UINT32_MAX && whole_refined.faces() >= k);
   Ring local;
   local.boundary = true;
   for (uint32_t x = 0; x <= k; ++x)

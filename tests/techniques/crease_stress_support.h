@@ -26,7 +26,8 @@ namespace tb::techniques::testing {
 // splitmix64: the same numbers on every platform and standard library.
 class StressRng {
  public:
-  explicit StressRng(uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull) {}
+  explicit StressRng(uint64_t seed)
+      : state_(seed * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull) {}
   uint64_t next() {
     uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -37,7 +38,9 @@ class StressRng {
   double unit() { return double(next() >> 11) * 0x1p-53; }
   bool chance(double p) { return unit() < p; }
   template <class T>
-  const T& pick(const std::vector<T>& values) { return values[below(values.size())]; }
+  const T& pick(const std::vector<T>& values) {
+    return values[below(values.size())];
+  }
 
  private:
   uint64_t state_;
@@ -139,9 +142,10 @@ inline std::string stressOtherTags(const mesh::Mesh& mesh, const std::vector<uin
   std::string tags;
   const uint32_t corners = rng.chance(0.4) ? rng.below(3) + 1 : 0;
   for (uint32_t c = 0; c < corners; ++c) {
-    const uint32_t v = !ends.empty() && rng.chance(0.7) ? rng.pick(ends)
-                                                        : rng.below(mesh.positions.size());
-    tags += "t corner 1/1/0 " + std::to_string(v) + " " + formatSharpness(stressSharpness(rng, sharp_only)) + "\n";
+    const uint32_t v =
+        !ends.empty() && rng.chance(0.7) ? rng.pick(ends) : rng.below(mesh.positions.size());
+    tags += "t corner 1/1/0 " + std::to_string(v) + " " +
+            formatSharpness(stressSharpness(rng, sharp_only)) + "\n";
   }
   const uint32_t holes = rng.chance(0.3) ? rng.below(3) + 1 : 0;
   for (uint32_t h = 0; h < holes; ++h)
@@ -166,7 +170,8 @@ inline std::string ownTags(const mesh::SubdivisionTags& tags) {
             formatSharpness(c.sharpness) + "\n";
   }
   for (const mesh::Corner& c : tags.corners) {
-    text += "t corner 1/1/0 " + std::to_string(c.vertex) + " " + formatSharpness(c.sharpness) + "\n";
+    text +=
+        "t corner 1/1/0 " + std::to_string(c.vertex) + " " + formatSharpness(c.sharpness) + "\n";
   }
   if (tags.smooth_triangles) text += "t smoothtriangles 0/0/1 catmark\n";
   return text;
@@ -216,7 +221,8 @@ inline StressShape generateStressShape(const std::vector<StressBase>& bases, uin
                      " faces)" + (keep_own ? ", own tags kept" : "") +
                      (sharp_only ? ", infinitely sharp tags" : "");
   std::vector<uint32_t> ends;  // of the generated crease tags, twice per tag
-  std::string tags = (keep_own ? ownTags(shaped.tags) : "") + stressCreaseTags(shaped, rng, sharp_only, ends);
+  std::string tags =
+      (keep_own ? ownTags(shaped.tags) : "") + stressCreaseTags(shaped, rng, sharp_only, ends);
   what += ", " + std::to_string(ends.size() / 2) + " crease tags";
   tags += stressOtherTags(shaped, ends, rng, sharp_only, what);
   shape.obj = objOf(shaped) + tags;
