@@ -422,7 +422,7 @@ TEST(PluginFailure, AThrowWhileBuildingFailsThatRecordOnly) {
     }
   }
   EXPECT_EQ(failed, 2u);
-  EXPECT_GE(ok, 6u) << "phong's variants measured";
+  EXPECT_GE(ok, 2u) << "phong's variants measured";
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
 }
 
