@@ -48,7 +48,9 @@ int runList(const ListArgs& args) {
     // The production assets too: bundled shapes refined at load (their path says so).
     for (const suite::AssetRef& asset : suite::suiteAssets(true)) {
       items.push_back({{"name", asset.name}, {"path", asset.path}, {"refine", asset.refine}});
-      if (!args.json) fmt::print("{:<40} {}\n", asset.name, asset.refine == 0 ? asset.path : asset.label);
+      if (!args.json) {
+        fmt::print("{:<40} {}\n", asset.name, asset.refine == 0 ? asset.path : asset.label);
+      }
     }
   } else if (args.what == "scenarios") {
     for (const techniques::Scenario& scenario : suite::bundledScenarios()) {
