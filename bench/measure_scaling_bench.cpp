@@ -13,7 +13,6 @@
 #include "bench/technique_bench_support.h"
 #include "core/gpu/context.h"
 #include "core/mesh/mesh_copies.h"
-#include "core/mesh/obj_loader.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"

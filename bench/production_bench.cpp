@@ -78,7 +78,8 @@ void measureOnAsset(benchmark::State& state, const tb::measures::Measure& measur
       tb::suite::suiteCameraPaths(tb::measures::SuiteMode::kDefault).front()(
           tb::mesh::boundsOf(s.mesh));
   tb::measures::MeasureInput input{technique, technique.variants()[0], asset,
-                                   s.mesh,    s.patches.get(),          device()};
+                                   s.mesh,    s.patches.get(),          device(),
+                                   {}};
   input.view = &path.views[0];
   input.camera_path = &path;
   double peak = 0;

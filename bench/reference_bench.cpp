@@ -6,7 +6,6 @@
 #include <random>
 
 #include "harness/suite/asset_catalog.h"
-#include "core/mesh/obj_loader.h"
 #include "reference/embree_subdivision.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"

@@ -10,7 +10,6 @@
 #include <string>
 
 #include "harness/suite/asset_catalog.h"
-#include "core/mesh/obj_loader.h"
 #include "techniques/technique.h"
 
 namespace tb::bench {

@@ -14,7 +14,6 @@
 #include "core/gpu/context.h"
 #include "core/gpu/patch_program.h"
 #include "harness/suite/asset_catalog.h"
-#include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
 
 int main(int argc, char** argv) {

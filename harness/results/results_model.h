@@ -77,7 +77,7 @@ struct AssetSummary {
   bool normals_computed = false;
   // What the user should know before trusting this asset's figures (mesh::connectivityWarnings),
   // one line each; results.json writes the field only when non-empty.
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = {};
 };
 
 // A technique × asset pair the run did not measure, and why.

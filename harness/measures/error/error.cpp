@@ -456,8 +456,10 @@ SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patche
     const HausdorffPatches part =
         hausdorffPatches(patches, plan, topology, extraordinary, creased, sampling);
     figures.hausdorff_patches = part.count;
-    const std::vector<ref::Triangle> technique_part = techniqueTriangles(plan, part.part);
+    // With every patch in the sample, part and around are one mesh: built once.
     const std::vector<ref::Triangle> technique_around = techniqueTriangles(plan, part.around);
+    const std::vector<ref::Triangle> technique_part =
+        part.all ? std::vector<ref::Triangle>() : techniqueTriangles(plan, part.part);
     const ref::LimitTessellation dense = ref::tessellateLimit(
         limit, kErrorReferenceRate, part.all ? std::span<const uint8_t>() : part.around);
     std::vector<ref::Triangle> dense_part;
@@ -465,7 +467,8 @@ SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patche
       if (part.part[dense.triangle_face[t]]) dense_part.push_back(dense.triangles[t]);
     }
     const ref::HausdorffResult distance = ref::hausdorff(
-        {values.technique_points, technique_part}, {values.technique_points, technique_around},
+        {values.technique_points, part.all ? technique_around : technique_part},
+        {values.technique_points, technique_around},
         part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part}, dense.view(),
         2);
     figures.hausdorff = distance.hausdorff;
