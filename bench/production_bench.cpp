@@ -74,12 +74,10 @@ void measureOnAsset(benchmark::State& state, const tb::measures::Measure& measur
     state.SkipWithError(s.error.c_str());
     return;
   }
-  const tb::view::CameraPath path =
-      tb::suite::suiteCameraPaths(tb::measures::SuiteMode::kDefault).front()(
-          tb::mesh::boundsOf(s.mesh));
-  tb::measures::MeasureInput input{technique, technique.variants()[0], asset,
-                                   s.mesh,    s.patches.get(),          device(),
-                                   {}};
+  const tb::view::CameraPath path = tb::suite::suiteCameraPaths(tb::measures::SuiteMode::kDefault)
+                                        .front()(tb::mesh::boundsOf(s.mesh));
+  tb::measures::MeasureInput input{
+      technique, technique.variants()[0], asset, s.mesh, s.patches.get(), device(), {}};
   input.view = &path.views[0];
   input.camera_path = &path;
   double peak = 0;
@@ -104,8 +102,8 @@ void registerProductionBenchmarks() {
           continue;
         }
         if (needs.technique_filter && !needs.technique_filter(*technique)) continue;
-        const std::string name = "production/" + measure->info().id + "/" +
-                                 technique->info().id + "/" + asset.name;
+        const std::string name =
+            "production/" + measure->info().id + "/" + technique->info().id + "/" + asset.name;
         benchmark::RegisterBenchmark(name.c_str(),
                                      [measure, technique, asset = asset.name](benchmark::State& s) {
                                        measureOnAsset(s, *measure, *technique, asset);
