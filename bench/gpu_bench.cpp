@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_main.h"
 #include "core/gpu/context.h"
 #include "core/gpu/tess_capture.h"
 
@@ -102,4 +103,4 @@ BENCHMARK(BM_TesCapture)->Apply(levelsPerDomain);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

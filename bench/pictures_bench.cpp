@@ -9,6 +9,7 @@
 
 #include <ctime>
 
+#include "bench/bench_main.h"
 #include "harness/measures/measure.h"
 #include "harness/pictures/run_pictures.h"
 #include "harness/suite/suite.h"
@@ -41,4 +42,4 @@ BENCHMARK(defaultSuitePictures)->Iterations(1)->UseManualTime()->Unit(benchmark:
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

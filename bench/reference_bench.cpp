@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "bench/bench_main.h"
 #include "harness/suite/asset_catalog.h"
 #include "reference/embree_subdivision.h"
 #include "reference/face_domain.h"
@@ -119,4 +120,4 @@ BENCHMARK(BM_ClosestPoint)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_main.h"
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
 #include "harness/lod/screen_metrics.h"
@@ -227,4 +228,4 @@ BENCHMARK_CAPTURE(BM_Pop, pn_tri_pawn, std::string("pn_triangles"))
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

@@ -7,6 +7,7 @@
 
 #include <map>
 
+#include "bench/bench_main.h"
 #include "harness/suite/suite.h"
 
 namespace {
@@ -34,4 +35,4 @@ BENCHMARK(defaultSuite)->ArgName("threads")->Arg(0)->Arg(1)->Iterations(1)->UseM
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "bench/bench_main.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/technique.h"
 
@@ -30,11 +31,7 @@ inline techniques::BuiltSurface defaultVariantPatches(benchmark::State& state,
 
 inline int runAfterRegistering(int argc, char** argv, void (*register_benchmarks)()) {
   register_benchmarks();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return runBenchmarks(argc, argv);
 }
 
 }  // namespace tb::bench

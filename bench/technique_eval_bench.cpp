@@ -276,6 +276,7 @@ class RateKeeper final : public benchmark::BenchmarkReporter {
 
 int main(int argc, char** argv) {
   registerBenchmarks();
+  tb::bench::addDeviceContext();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   RateKeeper reporter(benchmark::CreateDefaultDisplayReporter());

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "bench/bench_main.h"
 #include "core/tess/tessellator.h"
 
 namespace {
@@ -49,4 +50,4 @@ BENCHMARK(BM_Tessellate)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()

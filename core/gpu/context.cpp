@@ -238,4 +238,17 @@ void Context::requireFeatures(const DeviceFeatures& wanted, const char* user) co
   }
 }
 
+std::string describeDevice(const DeviceInfo& info) {
+  return info.device_name + " (" + info.driver_info + ", Vulkan " + info.api_version + ")";
+}
+
+std::string describeDevice(const std::string& device_name) {
+  ContextOptions options;
+  options.device_name = device_name;
+  options.required = {};  // describe whatever device there is; measures check features
+  auto created = Context::create(options);
+  if (!created) return "none: " + created.error();
+  return describeDevice(created.value()->info());
+}
+
 }  // namespace tb::gpu

@@ -34,6 +34,14 @@ struct ContextOptions {
   Validation validation = Validation::kAuto;
 };
 
+// The device a Context with these options would open, as results.json, timings.json and the
+// benchmark JSON name it: "NAME (DRIVER_INFO, Vulkan X.Y.Z)", e.g. "llvmpipe (LLVM 15.0.6,
+// 256 bits) (Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230)"; "none: REASON" when there is none.
+// Figures of two different strings are never compared (the device and its driver are part
+// of a figure's identity).
+std::string describeDevice(const std::string& device_name = {});
+std::string describeDevice(const DeviceInfo& info);
+
 class Context {
  public:
   // Never throws for a missing device or feature: the error is one line naming it.

@@ -10,6 +10,7 @@
 
 #include "core/mesh/input_error.h"
 #include "harness/results/compare.h"
+#include "harness/results/device_identity.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 
@@ -89,6 +90,9 @@ int runCompare(const CompareArgs& args) {
   options.timings = !args.no_timings;
   const results::RunData base = readFinishedRun(args.base, options.timings);
   const results::RunData current = readFinishedRun(args.current, options.timings);
+  if (const auto mismatch = results::deviceMismatch(base.results.context, current.results.context)) {
+    throw mesh::InputError(args.current + "/results.json", "context.vulkan_device", *mismatch);
+  }
   const results::Comparison comparison = results::compareRuns(base, current, options);
   fmt::print("# Compare {} -> {}\n\n{}", args.base, args.current,
              results::renderComparison(comparison, args.limit));

@@ -91,8 +91,8 @@ std::vector<suite::CameraPathFn> selectCameraPaths(const std::vector<std::string
 
 // Wall seconds per record × measure, every repetition's, beside results.json: timings
 // change run to run, the results must not (harness/results/timings_json.h).
-std::string timingsJson(const suite::SuiteTimings& timings) {
-  results::RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, {}};
+std::string timingsJson(const suite::SuiteTimings& timings, const std::string& device) {
+  results::RunTimings run{timings.wall_seconds, timings.threads, timings.repetitions, device, {}};
   for (const suite::MeasureTiming& t : timings.measures) {
     run.measures.push_back({t.technique, t.variant, t.asset, t.measure,
                             t.samples.empty() ? std::vector<double>{t.seconds} : t.samples});
@@ -175,7 +175,7 @@ void writeRunFiles(const RunArgs& args, const results::Results& results,
   folder->writeFile("report.md", report::renderMarkdown(results));
   for (const auto& [name, text] : report::renderCsvTables(results)) folder->writeFile(name, text);
   folder->writeFile("report.html", renderRunHtml(results, folder->pendingPath()));
-  folder->writeFile("timings.json", timingsJson(timings));
+  folder->writeFile("timings.json", timingsJson(timings, results.context.vulkan_device));
   folder->writeFile("results.json", results::serializeResults(results));
 }
 

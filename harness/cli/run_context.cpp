@@ -49,20 +49,10 @@ std::string vulkanLoaderVersion() {
 
 }  // namespace
 
-std::string describeVulkanDevice(const std::string& device_name) {
-  gpu::ContextOptions options;
-  options.device_name = device_name;
-  options.required = {};  // describe whatever device there is; measures check features
-  auto created = gpu::Context::create(options);
-  if (!created) return "none: " + created.error();
-  const gpu::DeviceInfo& info = created.value()->info();
-  return info.device_name + " (" + info.driver_info + ", Vulkan " + info.api_version + ")";
-}
-
 results::RunContext probeRunContext(const std::string& command_line,
                                     const std::string& device_name) {
   results::RunContext context;
-  context.vulkan_device = describeVulkanDevice(device_name);
+  context.vulkan_device = gpu::describeDevice(device_name);
   context.git_sha = TB_GIT_SHA;
   context.host = hostName();
   context.cpu = cpuModel() + " (" + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores)";

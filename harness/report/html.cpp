@@ -10,6 +10,7 @@
 #include "harness/report/html_escape.h"
 #include "harness/report/plot_data.h"
 #include "harness/report/summary.h"
+#include "harness/results/device_identity.h"
 
 namespace tb::report {
 namespace {
@@ -60,6 +61,7 @@ void contextSection(const results::Results& results, Page* page) {
   contextRow(&rows, "suite", c.selection.suite);
   contextRow(&rows, "Vulkan device",
              c.vulkan_device.empty() ? "none (GPU rows skipped)" : c.vulkan_device);
+  contextRow(&rows, "device caveat", results::deviceCaveat(c.vulkan_device));
   contextRow(&rows, "host", c.host);
   contextRow(&rows, "CPU", c.cpu);
   contextRow(&rows, "compiler", c.compiler + (c.build_type.empty() ? "" : ", " + c.build_type));

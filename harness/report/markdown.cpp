@@ -7,6 +7,7 @@
 
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
+#include "harness/results/device_identity.h"
 
 namespace tb::report {
 
@@ -25,6 +26,9 @@ void appendContext(const results::Results& results, std::string* out) {
   appendRow(out, {"CPU", c.cpu});
   appendRow(out, {"compiler", c.compiler + " (" + c.build_type + ")"});
   appendRow(out, {"Vulkan device", c.vulkan_device.empty() ? "none opened" : c.vulkan_device});
+  if (const std::string caveat = results::deviceCaveat(c.vulkan_device); !caveat.empty()) {
+    appendRow(out, {"device caveat", caveat});
+  }
   for (const auto& [name, version] : c.libraries) appendRow(out, {name, version});
   appendRow(out, {"command", "`" + c.command_line + "`"});
   if (c.shard.count > 0) {
@@ -95,6 +99,9 @@ std::string renderMarkdown(const results::Results& results) {
       c.vulkan_device.empty() ? "no Vulkan device" : c.vulkan_device,
       c.selection.suite.empty() ? "default" : c.selection.suite, results.records.size(), variants,
       results.assets.size(), results.skipped.size(), results.schema_version);
+  if (const std::string caveat = results::deviceCaveat(c.vulkan_device); !caveat.empty()) {
+    out += "The device is " + caveat + ".\n\n";
+  }
   appendRegressionScreen(results, measures, &out);
   appendChoiceScreen(results, measures, &out);
   appendPublishingScreen(results, measures, &out);

@@ -46,6 +46,7 @@ std::string serializeTimings(const RunTimings& timings) {
   const Json json{{"wall_seconds", timings.wall_seconds},
                   {"threads", timings.threads},
                   {"repetitions", timings.repetitions},
+                  {"device", timings.device},
                   {"measures", rows}};
   return json.dump(1) + "\n";
 }
@@ -59,6 +60,7 @@ RunTimings readTimingsFile(const std::string& path) {
     timings.wall_seconds = field(document, "wall_seconds").get<double>();
     timings.threads = field(document, "threads").get<int>();
     timings.repetitions = document.value("repetitions", 1);
+    timings.device = document.value("device", std::string());
     for (const Json& item : field(document, "measures")) {
       timings.measures.push_back(entryFromJson(item));
     }

@@ -1,5 +1,7 @@
 #include "harness/results/compare.h"
 
+#include "harness/results/device_identity.h"
+
 #include <gtest/gtest.h>
 
 namespace tb {
@@ -88,6 +90,35 @@ TEST(Compare, SkippedRowsInTheNewRunAreMissingNotPassed) {
       results::compareResults(runWith(0, 0, 12, true), runWith(0, 0, 12), {});
   EXPECT_FALSE(back.failed());
   EXPECT_EQ(back.count(results::ChangeKind::kAdded), 1u);
+}
+
+// A figure's device is part of its identity: two runs on different devices (or drivers) are
+// never joined; the same device, or a run that had none (its GPU rows read as missing), may be.
+TEST(Compare, FiguresOfTwoDevicesAreNeverJoined) {
+  results::RunContext lavapipe, nvidia, nvidia_driver, none;
+  lavapipe.vulkan_device = "llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 22.3.6, Vulkan 1.3.230)";
+  nvidia.vulkan_device = "NVIDIA H100 (NVIDIA 550.54.15, Vulkan 1.3.277)";
+  nvidia_driver.vulkan_device = "NVIDIA H100 (NVIDIA 560.35.03, Vulkan 1.3.280)";
+  none.vulkan_device = "none: no Vulkan driver";
+  const auto mismatch = results::deviceMismatch(lavapipe, nvidia);
+  ASSERT_TRUE(mismatch.has_value());
+  EXPECT_NE(mismatch->find("NVIDIA H100"), std::string::npos) << *mismatch;
+  EXPECT_TRUE(results::deviceMismatch(nvidia, nvidia_driver).has_value()) << "a driver update";
+  EXPECT_FALSE(results::deviceMismatch(lavapipe, lavapipe).has_value()) << "the control";
+  EXPECT_FALSE(results::deviceMismatch(lavapipe, none).has_value());
+  EXPECT_FALSE(results::deviceMismatch(results::RunContext{}, nvidia).has_value());
+}
+
+// Reports say beside a data-centre GPU's timings that they are a lower bound; lavapipe and
+// a gaming GPU get no caveat (the controls), nor does a name that merely contains "h20".
+TEST(Compare, ADataCentreGpuIsNamedAsSuch) {
+  EXPECT_NE(results::deviceCaveat("NVIDIA H100 80GB HBM3 (NVIDIA 550.54.15, Vulkan 1.3.277)")
+                .find("lower bound"),
+            std::string::npos);
+  EXPECT_FALSE(results::deviceCaveat("NVIDIA H200 (NVIDIA 560.35.03, Vulkan 1.3.280)").empty());
+  EXPECT_TRUE(results::deviceCaveat("llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 22.3.6)").empty());
+  EXPECT_TRUE(results::deviceCaveat("NVIDIA GeForce RTX 4090 (NVIDIA 550.54.15)").empty());
+  EXPECT_TRUE(results::deviceCaveat("NVIDIA GeForce GTX H2000X").empty());
 }
 
 TEST(Compare, AMissingRecordOrMetricFails) {
