@@ -195,6 +195,42 @@ std::string_view cullPolicyDescription(CullPolicy policy) {
   return "";
 }
 
+double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& patches) {
+  if (policy == CullPolicy::kNone || patches.empty()) return 0;
+  constexpr double kHeader = 16, kVec4 = 16;
+  double total = 0;
+  for (const CullPatchBounds& patch : patches) {
+    const double corners = patch.corner_count * kVec4, hull = double(patch.hull.size()) * kVec4;
+    switch (policy) {
+      case CullPolicy::kBackfaceLp2: total += kHeader + 2 * corners; break;
+      case CullPolicy::kFrustumLp2Global:
+      case CullPolicy::kFrustumLp2Exact: total += kHeader + corners; break;
+      case CullPolicy::kFrustumHull: total += kHeader + hull; break;
+      case CullPolicy::kCone:
+      case CullPolicy::kCombined: total += kHeader + kVec4 + hull; break;
+      case CullPolicy::kNone: break;
+    }
+  }
+  return total / double(patches.size());
+}
+
+CullPolicyHalves cullPolicyHalves(CullPolicy policy) {
+  switch (policy) {
+    case CullPolicy::kBackfaceLp2:
+    case CullPolicy::kCone:
+      return {policy, CullPolicy::kNone};
+    case CullPolicy::kFrustumLp2Global:
+    case CullPolicy::kFrustumLp2Exact:
+    case CullPolicy::kFrustumHull:
+      return {CullPolicy::kNone, policy};
+    case CullPolicy::kCombined:
+      return {CullPolicy::kCone, CullPolicy::kFrustumHull};
+    case CullPolicy::kNone:
+      break;
+  }
+  return {};
+}
+
 bool isConservative(CullPolicy policy) {
   return policy == CullPolicy::kFrustumHull || policy == CullPolicy::kCone ||
          policy == CullPolicy::kCombined;

@@ -50,6 +50,15 @@ std::string_view cullPolicyDescription(CullPolicy policy);
 // tests): frustum_hull, cone, combined.
 bool isConservative(CullPolicy policy);
 
+// A policy's two halves, judged apart by the culling measure's efficiency by cause: the test
+// that removes back-facing patches and the one that removes patches outside the frustum
+// (kNone where the policy has no such half). combined = {cone, frustum_hull}.
+struct CullPolicyHalves {
+  CullPolicy back_facing = CullPolicy::kNone;
+  CullPolicy outside_frustum = CullPolicy::kNone;
+};
+CullPolicyHalves cullPolicyHalves(CullPolicy policy);
+
 // frustum_lp2_global's margin as a fraction of the asset's bounding-box diagonal.
 inline constexpr double kGlobalMarginOfDiagonal = 0.02;
 inline constexpr size_t kCullHullPoints = 20;  // kTbCullHullPoints
@@ -74,6 +83,13 @@ struct CullBounds {
   size_t patches_without_hull = 0;       // technique gave no bounds: hull = the corners
   size_t patches_without_cone = 0;       // no bounds, or normals spanning 90 degrees or more
 };
+
+// The bytes of per-patch cull data (TbCullPatch) the policy's test reads for one patch, mean
+// over the patches: the header (16) and, per policy, each used corner's position (16) and
+// normal (16), the cone (16) and each used hull point (16). What a user pays per patch for
+// the policy's culls; 0 for none. (The device buffer's stride is 480 bytes whatever the
+// policy: every policy's data in one layout.)
+double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& patches);
 
 // The bounds of every patch: corners from `corners` (factorCorners), hull and cone from
 // SurfacePatches::cullBounds. world_scale: the bounding-box diagonal (the global margin).

@@ -38,6 +38,13 @@ const uint kTbCullCombined = 6u;
 
 const uint kTbCullHullPoints = 20u;  // hull[] capacity per patch
 
+// Harness specialisation constant: 0, no culling; 1, the TCS culls with the policy
+// TbCullParams::policy names (set 1, bindings 4 and 5) by writing outer level 0;
+// kTbCullPolicyFixed + p, policy p fixed at compile time, so one policy's instructions can be
+// counted (the culling measure's tcs_instructions). Frozen at 0 where shaders are counted.
+layout(constant_id = 202) const uint kTbCullPolicy = 0u;
+const uint kTbCullPolicyFixed = 100u;
+
 layout(std430, set = 1, binding = 4) readonly buffer TbCullParamsBlock {
   vec4 planes[6];        // world-space frustum planes, unit xyz: inside when xyz . p + w >= 0
   vec4 eye;              // xyz: camera position, world units
@@ -122,7 +129,8 @@ bool tbCullCone(uint patch_index) {
 
 // True when the policy culls patch `patch_index`.
 bool tbCullPatch(uint patch_index) {
-  const uint policy = tb_cull.policy;
+  const uint policy =
+      kTbCullPolicy >= kTbCullPolicyFixed ? kTbCullPolicy - kTbCullPolicyFixed : tb_cull.policy;
   if (policy == kTbCullBackfaceLp2) return tbCullBackfaceLp2(patch_index);
   if (policy == kTbCullFrustumLp2Global) return tbCullFrustumCorners(patch_index, false);
   if (policy == kTbCullFrustumLp2Exact) return tbCullFrustumCorners(patch_index, true);

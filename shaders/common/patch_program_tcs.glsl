@@ -10,9 +10,7 @@
 // 1, the TCS computes them with the factor policy of tess_factors.glsl (set 1, bindings
 // 1..3). Frozen at 0 where shaders are counted (the instructions measure).
 layout(constant_id = 201) const uint kTbFactorPolicy = 0u;
-// Harness specialisation constant: 1, the TCS culls with the policy of cull.glsl (set 1,
-// bindings 4 and 5) by writing outer level 0. Frozen at 0 where shaders are counted.
-layout(constant_id = 202) const uint kTbCullPolicy = 0u;
+// kTbCullPolicy (constant_id 202), the culling switch, is declared in cull.glsl.
 
 // One patch's levels as float bits, written by the CPU (runPatchProgram's per-patch
 // levels; uniform levels are the same entry for every patch). 32 bytes per patch.

@@ -104,6 +104,12 @@ TEST(CullOracle, HandMadeSceneSeparatesVisibleFromCullable) {
   EXPECT_GT(v.visible_pixels[0], 50u);  // about 1/10 of the 64 x 48 image
   for (size_t p = 1; p < 4; ++p) EXPECT_EQ(v.visible_pixels[p], 0u) << p;
   EXPECT_EQ(v.ideally_cullable, (std::vector<uint8_t>{0, 1, 1, 1}));
+  // By cause: 1 faces away inside the frustum; 2 (behind the eye) and 3 lie outside it.
+  ASSERT_EQ(v.back_facing.size(), 4u);
+  EXPECT_EQ(v.back_facing[0], 0);
+  EXPECT_EQ(v.back_facing[1], 1);
+  EXPECT_EQ(v.back_facing[3], 0);
+  EXPECT_EQ(v.outside_frustum, (std::vector<uint8_t>{0, 0, 1, 1}));
 }
 
 TEST(CullOracle, StraddlingPatchIsVisibleAndOccludedPatchIsNotCullable) {

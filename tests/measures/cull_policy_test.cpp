@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <numbers>
@@ -12,6 +13,8 @@
 #include "core/gpu/patch_program.h"
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
+#include "harness/measures/common/instruction_counts/instructions.h"
+#include "harness/measures/culling/culling_cost.h"
 #include "harness/suite/camera_path.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
@@ -67,6 +70,61 @@ TEST(CullPolicy, NamesRoundTripAndOnlyHullAndConeAreConservative) {
 
 // A flat quad facing +z: seen from the front nothing culls it; from behind, every back-face
 // policy does and no frustum policy does; moved off screen, every frustum policy does.
+// What each policy costs per patch in cull data, from TbCullPatch's layout (cull.glsl): a
+// quad with a 16-point hull; a policy's halves name its back-facing and frustum tests.
+TEST(CullPolicy, BytesPerPatchFollowTheLayoutAndHalvesSplitCombined) {
+  lod::CullPatchBounds quad;
+  quad.corner_count = 4;
+  quad.hull.assign(16, mesh::Vec3f{0, 0, 0});
+  lod::CullPatchBounds triangle = quad;
+  triangle.corner_count = 3;
+  triangle.hull.resize(10);
+  const std::vector<lod::CullPatchBounds> both = {quad, triangle};
+  using P = lod::CullPolicy;
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kNone, both), 0);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kBackfaceLp2, {quad}), 16 + 2 * 64);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kFrustumLp2Exact, {triangle}), 16 + 48);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kFrustumHull, {quad}), 16 + 256);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kCone, both), 16 + 16 + (256 + 160) / 2.0);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kCombined, both), lod::cullBytesPerPatch(P::kCone, both));
+  EXPECT_EQ(lod::cullPolicyHalves(P::kCombined).back_facing, P::kCone);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kCombined).outside_frustum, P::kFrustumHull);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kBackfaceLp2).outside_frustum, P::kNone);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kFrustumLp2Global).back_facing, P::kNone);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kNone).back_facing, P::kNone);
+}
+
+// Each policy's TCS cost, counted with the policy fixed at compile time: none adds nothing,
+// every other policy something, combined at least its two halves' larger; the control, the
+// TCS with the policy read at run time (kTbCullPolicy = 1), carries every policy's code and
+// counts more than any one of them.
+TEST(CullPolicy, EachPolicysTcsCostIsCountedApart) {
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  ASSERT_NE(acc, nullptr);
+  const techniques::BuiltSurface patches =
+      techniques::buildSurface(*acc, mesh, acc->variants().front());
+  const auto policies = lod::allCullPolicies();
+  const std::vector<measures::CullTcsCost> costs = measures::cullTcsCosts(*patches, policies);
+  ASSERT_EQ(costs.size(), policies.size());
+  ASSERT_EQ(policies[0], lod::CullPolicy::kNone);
+  EXPECT_EQ(costs[0].cull_instructions, 0);
+  double cone = 0, hull = 0, combined = 0, largest = 0;
+  for (size_t k = 1; k < costs.size(); ++k) {
+    EXPECT_GT(costs[k].cull_instructions, 10) << lod::cullPolicyName(policies[k]);
+    largest = std::max(largest, costs[k].tcs_instructions);
+    if (policies[k] == lod::CullPolicy::kCone) cone = costs[k].cull_instructions;
+    if (policies[k] == lod::CullPolicy::kFrustumHull) hull = costs[k].cull_instructions;
+    if (policies[k] == lod::CullPolicy::kCombined) combined = costs[k].cull_instructions;
+  }
+  EXPECT_GE(combined, std::max(cone, hull));
+  const gpu::GpuPatchProgram program = patches->gpuPrograms().front();
+  const double runtime = double(
+      measures::countEmbeddedShader(program.control_shader, program.specialization, {{202, 1}})
+          .vector.total());
+  EXPECT_GT(runtime, largest) << "the run-time switch holds every policy";
+}
+
 TEST(CullPolicy, FlatQuadFrontBackAndOffScreen) {
   const lod::CullBounds bounds = boundsOfOne(flatQuad());
   const view::View front = viewFrom({0, 0.5, 10}, {0, 0, 0}, 0.1, 100);

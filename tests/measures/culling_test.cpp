@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -100,6 +101,57 @@ TEST(Culling, ConeCullsAboutHalfOfAConvexMeshFromAfarAndNeverMoreThanTheOracle) 
                      std::to_string(fraction));
     }
   }
+}
+
+// Efficiency by cause: each half of a policy is held to the oracle's patches of its cause.
+// From afar nothing is outside the frustum; from close to one face most of the cube is. The
+// halves never cull more than the oracle's count of their cause, a policy without a half
+// culls nothing of that cause, combined culls at least as many as each of its halves, and
+// the control (`none`) has efficiency 0.
+TEST(Culling, EfficiencyByCauseHoldsEachHalfOfAPolicyToItsCause) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const mesh::Mesh cube =
+      refinedConvex("opensubdiv/catmark_cube.obj", osd::Scheme::kCatmullClark, 3);
+  const techniques::BuiltSurface patches = buildDefault("acc", cube);
+  measures::CullingRun run(*patches, &context, "", {.level = 4, .render_scale = 0.5});
+  std::vector<view::View> views = viewsFromAfar(cube, 10);
+  const mesh::Aabb box = mesh::boundsOf(cube);
+  const mesh::Vec3d centre = 0.5 * (box.min + box.max);
+  const double diagonal = length(box.max - box.min);
+  views.push_back(viewFrom(centre + mesh::Vec3d{0.1, 0.05, 0.55} * diagonal,
+                           centre + mesh::Vec3d{0.35, 0.05, 0.3} * diagonal, 0.01 * diagonal,
+                           100 * diagonal));
+  using P = lod::CullPolicy;
+  const P policies[] = {P::kNone, P::kFrustumHull, P::kCone, P::kCombined};
+  const auto frames = run.frames(policies, views);
+  uint64_t outside = 0, hull_outside = 0, cone_back = 0, back = 0;
+  for (size_t f = 0; f < views.size(); ++f) {
+    for (size_t k = 0; k < std::size(policies); ++k) {
+      const measures::CullingFrame& frame = frames[k][f];
+      ASSERT_TRUE(frame.oracle_measured) << run.gpuSkipReason();
+      EXPECT_LE(frame.culled_cullable_patches, frame.cullable_patches);
+      EXPECT_LE(frame.culled_back_facing_patches, frame.back_facing_patches);
+      EXPECT_LE(frame.culled_outside_frustum_patches, frame.outside_frustum_patches);
+    }
+    EXPECT_EQ(frames[0][f].culled_cullable_patches, 0u) << "the control culls nothing";
+    EXPECT_EQ(frames[1][f].culled_back_facing_patches, 0u) << "frustum_hull has no back half";
+    EXPECT_EQ(frames[2][f].culled_outside_frustum_patches, 0u) << "cone has no frustum half";
+    EXPECT_GE(frames[3][f].culled_cullable_patches,
+              std::max(frames[1][f].culled_cullable_patches, frames[2][f].culled_cullable_patches));
+    outside += frames[1][f].outside_frustum_patches;
+    hull_outside += frames[1][f].culled_outside_frustum_patches;
+    back += frames[2][f].back_facing_patches;
+    cone_back += frames[2][f].culled_back_facing_patches;
+  }
+  EXPECT_GT(outside, 50u) << "the close view leaves most of the cube outside";
+  EXPECT_GT(double(hull_outside) / double(outside), 0.5);
+  EXPECT_GT(double(cone_back) / double(back), 0.5);
+  const measures::CullingSummary none = measures::summarise(frames[0]);
+  const measures::CullingSummary cone = measures::summarise(frames[2]);
+  EXPECT_EQ(none.culled_cullable_patches, 0u);
+  EXPECT_EQ(cone.culled_back_facing_patches, cone_back);
+  RecordProperty("cone_back_facing_efficiency", std::to_string(double(cone_back) / double(back)));
+  RecordProperty("frustum_hull_efficiency", std::to_string(double(hull_outside) / double(outside)));
 }
 
 // Acceptance 3, second half: patches whose own normals face the eye somewhere and away

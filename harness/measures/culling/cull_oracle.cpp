@@ -138,27 +138,31 @@ VisibilityOracle::VisibilityOracle(gpu::Context& context, const DeviceSurface& s
 
 VisibilityOracle::~VisibilityOracle() = default;
 
-std::vector<uint8_t> VisibilityOracle::transformAndClassify(const view::View& view) {
+void VisibilityOracle::transformAndClassify(const view::View& view, PatchVisibility* result) {
   const view::Mat4& m = view.view_projection;
   auto toClip = [&](const mesh::Vec3f& p) {
     const std::array<double, 4> c = m.transform({double(p.x), double(p.y), double(p.z), 1.0});
     return std::array<float, 4>{float(c[0]), float(c[1]), float(c[2]), float(c[3])};
   };
   clip_.resize(triangles_.size() * 3);
-  std::vector<uint8_t> cullable(patch_count_, 1);
+  result->ideally_cullable.assign(patch_count_, 1);
+  result->back_facing.assign(patch_count_, 1);
+  result->outside_frustum.assign(patch_count_, 1);
   for (size_t t = 0; t < triangles_.size(); ++t) {
     std::array<float, 4>* c = &clip_[t * 3];
     for (int k = 0; k < 3; ++k) c[k] = toClip(triangles_[t][k]);
     const bool back_facing = !(clipDeterminant(c[0], c[1], c[2]) < 0);
     const bool outside = (outsidePlanes(c[0]) & outsidePlanes(c[1]) & outsidePlanes(c[2])) != 0;
-    if (!back_facing && !outside) cullable[triangle_patch_[t]] = 0;
+    const uint32_t patch = triangle_patch_[t];
+    if (!back_facing) result->back_facing[patch] = 0;
+    if (!outside) result->outside_frustum[patch] = 0;
+    if (!back_facing && !outside) result->ideally_cullable[patch] = 0;
   }
-  return cullable;
 }
 
 PatchVisibility VisibilityOracle::visibility(const view::View& view) {
   PatchVisibility result;
-  result.ideally_cullable = transformAndClassify(view);
+  transformAndClassify(view, &result);
   if (!target_ || target_->width() != view.viewport_width_px ||
       target_->height() != view.viewport_height_px) {
     target_.reset();  // free the old attachments first

@@ -64,6 +64,11 @@ struct PatchVisibility {
   // has all three clip vertices outside one of the planes x < -w, x > w, y < -w, y > w,
   // z < 0, z > w. Occlusion never makes a patch cullable. A patch with no triangles is 1.
   std::vector<uint8_t> ideally_cullable;
+  // The two causes apart, per patch: 1 when every triangle is back-facing (an ideal back-face
+  // culler removes it), and when every triangle has its clip vertices outside one plane (an
+  // ideal frustum culler removes it). A cullable patch may be neither (some triangles back,
+  // the others outside) or both.
+  std::vector<uint8_t> back_facing, outside_frustum;
   double render_s = 0;  // host seconds, submit to fence, of the render and ID readback
 };
 
@@ -85,8 +90,8 @@ class VisibilityOracle {
   PatchVisibility visibility(const view::View& view);
 
  private:
-  // Fills clip_ and returns ideally_cullable per patch.
-  std::vector<uint8_t> transformAndClassify(const view::View& view);
+  // Fills clip_ and the result's ideally_cullable, back_facing and outside_frustum.
+  void transformAndClassify(const view::View& view, PatchVisibility* result);
 
   gpu::Context& context_;
   size_t patch_count_;

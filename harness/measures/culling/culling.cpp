@@ -53,6 +53,12 @@ CullingSummary summarise(std::span<const CullingFrame> frames) {
     s.false_cull_pixels += f.false_cull_pixels;
     s.missed_culls += f.missed_culls;
     s.twin_mismatches += f.twin_mismatches;
+    s.cullable_patches += f.cullable_patches;
+    s.culled_cullable_patches += f.culled_cullable_patches;
+    s.back_facing_patches += f.back_facing_patches;
+    s.culled_back_facing_patches += f.culled_back_facing_patches;
+    s.outside_frustum_patches += f.outside_frustum_patches;
+    s.culled_outside_frustum_patches += f.culled_outside_frustum_patches;
     s.oracle_measured = s.oracle_measured && f.oracle_measured;
     s.gpu_measured = s.gpu_measured && f.gpu_measured;
   }
@@ -135,6 +141,41 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const lod::CullParams* params) 
   return counts;
 }
 
+CullingRun::HalfDecisions CullingRun::halfDecisions(lod::CullPolicy policy,
+                                                   const view::View& view) const {
+  const lod::CullPolicyHalves halves = lod::cullPolicyHalves(policy);
+  auto decide = [&](lod::CullPolicy half) {
+    return lod::cullDecisions(lod::cullParams(half, view, bounds_), bounds_);  // none: all 0
+  };
+  return {decide(halves.back_facing), decide(halves.outside_frustum)};
+}
+
+void CullingRun::countAgainstOracle(std::span<const uint8_t> culled,
+                                    const PatchVisibility& visibility,
+                                    const HalfDecisions& halves, CullingFrame* frame) {
+  frame->oracle_measured = true;
+  for (size_t p = 0; p < culled.size(); ++p) {
+    const uint64_t pixels = visibility.visible_pixels[p];
+    const bool cullable = visibility.ideally_cullable[p] != 0;
+    if (pixels > 0) ++frame->visible_patches;
+    if (cullable) ++frame->cullable_patches;
+    if (culled[p] && pixels > 0) {
+      ++frame->false_culls;
+      frame->false_cull_pixels += pixels;
+    }
+    if (!culled[p] && cullable) ++frame->missed_culls;
+    if (culled[p] && cullable) ++frame->culled_cullable_patches;
+    if (visibility.back_facing[p] != 0) {
+      ++frame->back_facing_patches;
+      frame->culled_back_facing_patches += halves.back_facing[p];
+    }
+    if (visibility.outside_frustum[p] != 0) {
+      ++frame->outside_frustum_patches;
+      frame->culled_outside_frustum_patches += halves.outside_frustum[p];
+    }
+  }
+}
+
 std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const lod::CullPolicy> policies,
                                                           std::span<const view::View> views) {
   prepareDevice();
@@ -193,20 +234,9 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const lod::C
         }
       }
       if (visibility) {
-        frame.oracle_measured = true;
         frame.render_width_px = render_view.viewport_width_px;
         frame.render_height_px = render_view.viewport_height_px;
-        for (size_t p = 0; p < culled.size(); ++p) {
-          const uint64_t pixels = visibility->visible_pixels[p];
-          const bool cullable = visibility->ideally_cullable[p] != 0;
-          if (pixels > 0) ++frame.visible_patches;
-          if (cullable) ++frame.cullable_patches;
-          if (culled[p] && pixels > 0) {
-            ++frame.false_culls;
-            frame.false_cull_pixels += pixels;
-          }
-          if (!culled[p] && cullable) ++frame.missed_culls;
-        }
+        countAgainstOracle(culled, *visibility, halfDecisions(policies[k], views[f]), &frame);
       }
       result[k].push_back(frame);
     }

@@ -24,6 +24,7 @@ namespace tb::measures {
 
 class VisibilityOracle;
 struct DeviceSurface;
+struct PatchVisibility;
 
 // One policy on one frame.
 struct CullingFrame {
@@ -54,6 +55,13 @@ struct CullingFrame {
   uint64_t false_cull_pixels = 0;  // the pixels those patches cover
   // Cullable patches the policy kept (TES work an ideal culler would save). Best 0.
   uint64_t missed_culls = 0;
+  // The efficiency against the oracle, and by cause (cull_policy.h CullPolicyHalves): the
+  // cullable patches the policy culls; the back-facing ones (every triangle back-facing) its
+  // back-facing half culls; the ones outside the frustum its frustum half culls. Each at most
+  // the oracle's count beside it (best: equal; worst: 0).
+  uint64_t culled_cullable_patches = 0;
+  uint64_t back_facing_patches = 0, culled_back_facing_patches = 0;
+  uint64_t outside_frustum_patches = 0, culled_outside_frustum_patches = 0;
 };
 
 // A policy over a whole path.
@@ -64,8 +72,18 @@ struct CullingSummary {
   double mean_cullable_fraction = 0;  // the ideal culler's share, for comparison
   uint64_t false_culls = 0, false_cull_pixels = 0, missed_culls = 0;
   uint64_t twin_mismatches = 0;
+  // Sums over the frames of CullingFrame's efficiency counts: efficiency over the path is
+  // culled / cullable of these sums (frames with more cullable patches weigh more).
+  uint64_t cullable_patches = 0, culled_cullable_patches = 0;
+  uint64_t back_facing_patches = 0, culled_back_facing_patches = 0;
+  uint64_t outside_frustum_patches = 0, culled_outside_frustum_patches = 0;
   bool oracle_measured = false;  // every frame had the oracle
   bool gpu_measured = false;     // every frame ran on the device
+  // Bytes of per-patch cull data the policy reads (lod::cullBytesPerPatch); set by the
+  // caller, which knows the policy and the bounds.
+  double cull_bytes_per_patch = 0;
+  // The policy's TCS cost (culling_cost.h), set by the caller; absent when not measured.
+  std::optional<double> tcs_instructions, cull_instructions;
 };
 CullingSummary summarise(std::span<const CullingFrame> frames);
 
@@ -98,6 +116,13 @@ class CullingRun {
     uint64_t primitives = 0;
   };
   DeviceCounts runOnDevice(const lod::CullParams* params);
+  // Per patch, 1 when the policy's back-facing half, or its frustum half, culls it (CPU twin).
+  struct HalfDecisions {
+    std::vector<uint8_t> back_facing, outside_frustum;
+  };
+  HalfDecisions halfDecisions(lod::CullPolicy policy, const view::View& view) const;
+  static void countAgainstOracle(std::span<const uint8_t> culled, const PatchVisibility& visibility,
+                                 const HalfDecisions& halves, CullingFrame* frame);
   void prepareDevice();
 
   const techniques::SurfacePatches& patches_;

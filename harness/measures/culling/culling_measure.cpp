@@ -2,10 +2,13 @@
 // (culling.h). Rows keyed policy and frame (camera_path added by the suite), and per policy
 // one summary row (key summary = path) with what a person chooses a policy by: the share of
 // patches and TES work it removes, and the visible patches it wrongly removes.
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "harness/measures/culling/culling.h"
+#include "harness/measures/culling/culling_cost.h"
 #include "harness/measures/measure.h"
 #include "harness/measures/metric_table.h"
 
@@ -21,21 +24,34 @@ CullingOptions optionsFor(SuiteMode suite) {
   return {.level = 4, .render_scale = 0.5};
 }
 
+// A figure of a frame or summary (T: CullingFrame or CullingSummary) present only when the
+// device ran (gpu) or the oracle rendered (oracle).
+template <class T, class M>
+auto gpu(M T::*member) {
+  return [member](const T& t) -> std::optional<double> {
+    return t.gpu_measured ? std::optional<double>(double(t.*member)) : std::nullopt;
+  };
+}
+template <class T, class M>
+auto oracle(M T::*member) {
+  return [member](const T& t) -> std::optional<double> {
+    return t.oracle_measured ? std::optional<double>(double(t.*member)) : std::nullopt;
+  };
+}
+// culled / cullable when the oracle ran and something was cullable; absent otherwise.
+template <class T>
+auto efficiency(uint64_t T::*culled, uint64_t T::*cullable) {
+  return [culled, cullable](const T& t) -> std::optional<double> {
+    if (!t.oracle_measured || t.*cullable == 0) return std::nullopt;
+    return double(t.*culled) / double(t.*cullable);
+  };
+}
+
 // Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
 // as many patches as show no pixel; worst: a visible patch culled (a hole in the image).
 const MetricTable<CullingFrame>& frameTable() {
   using D = results::Direction;
   using F = CullingFrame;
-  auto gpu = [](auto member) {
-    return [member](const F& f) -> std::optional<double> {
-      return f.gpu_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
-    };
-  };
-  auto oracle = [](auto member) {
-    return [member](const F& f) -> std::optional<double> {
-      return f.oracle_measured ? std::optional<double>(double(f.*member)) : std::nullopt;
-    };
-  };
   static const MetricTable<F> kTable{
       // patches: count; context
       {"patches", results::Unit::kCount, D::kNone, &F::patches},
@@ -105,6 +121,23 @@ const MetricTable<CullingFrame>& frameTable() {
        oracle(&F::false_cull_pixels)},
       // missed_culls: count; 0 (best), up to cullable_patches (worst)
       {"missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
+      // frame_cull_efficiency: ratio culled cullable patches / the oracle's cullable patches; 1
+      //   (best: every patch an ideal back-face + frustum culler removes), 0 (worst); absent
+      //   when the frame has no cullable patch
+      {"frame_cull_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&F::culled_cullable_patches, &F::cullable_patches)},
+      // frame_back_facing_efficiency: ratio, the policy's back-facing half over the patches whose
+      //   every triangle faces away; 1 (best), 0 (worst, or no such half); absent when none
+      {"frame_back_facing_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&F::culled_back_facing_patches, &F::back_facing_patches)},
+      // frame_frustum_efficiency: ratio, the policy's frustum half over the patches whose every
+      //   triangle lies outside the frustum; 1 (best), 0 (worst, or no such half)
+      {"frame_frustum_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&F::culled_outside_frustum_patches, &F::outside_frustum_patches)},
+      // back_facing_patches, outside_frustum_patches: count; context (the oracle's, by cause)
+      {"back_facing_patches", results::Unit::kCount, D::kNone, oracle(&F::back_facing_patches)},
+      {"outside_frustum_patches", results::Unit::kCount, D::kNone,
+       oracle(&F::outside_frustum_patches)},
       // render_width_px: pixels; context
       {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
       // render_height_px: pixels; context
@@ -117,11 +150,6 @@ const MetricTable<CullingFrame>& frameTable() {
 const MetricTable<CullingSummary>& summaryTable() {
   using D = results::Direction;
   using S = CullingSummary;
-  auto oracle = [](auto member) {
-    return [member](const S& s) -> std::optional<double> {
-      return s.oracle_measured ? std::optional<double>(double(s.*member)) : std::nullopt;
-    };
-  };
   static const MetricTable<S> kTable{
       // mean_culled_fraction: ratio, mean over frames; as culled_fraction
       {"mean_culled_fraction", results::Unit::kRatio, D::kHigherIsBetter, &S::mean_culled_fraction},
@@ -134,6 +162,15 @@ const MetricTable<CullingSummary>& summaryTable() {
        oracle(&S::false_cull_pixels)},
       // total_missed_culls: count over frames; 0 (best), unbounded (worst)
       {"total_missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&S::missed_culls)},
+      // cull_efficiency: ratio over the path, culled cullable / cullable patches summed over
+      //   the frames; 1 (best: the ideal culler), 0 (worst); back_facing_efficiency and
+      //   frustum_efficiency: the same for each half of the policy and its cause
+      {"cull_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&S::culled_cullable_patches, &S::cullable_patches)},
+      {"back_facing_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&S::culled_back_facing_patches, &S::back_facing_patches)},
+      {"frustum_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+       efficiency(&S::culled_outside_frustum_patches, &S::outside_frustum_patches)},
       // mean_cullable_fraction: ratio; context: the ideal culler's share
       {"mean_cullable_fraction", results::Unit::kRatio, D::kNone,
        oracle(&S::mean_cullable_fraction)},
@@ -142,6 +179,16 @@ const MetricTable<CullingSummary>& summaryTable() {
        [](const S& s) -> std::optional<double> {
          return s.gpu_measured ? std::optional<double>(double(s.twin_mismatches)) : std::nullopt;
        }},
+      // cull_bytes_per_patch: bytes of per-patch cull data the policy's test reads, mean
+      //   over the patches (lod::cullBytesPerPatch); 0 (best: none), 16 + 21 x 16 (worst)
+      {"cull_bytes_per_patch", results::Unit::kBytes, D::kLowerIsBetter, &S::cull_bytes_per_patch},
+      // tcs_instructions: SPIR-V instructions of the technique's TCS with the policy fixed
+      //   (after spirv-opt -O), mean over patches; the unculled TCS's (best), unbounded
+      //   (worst); cull_instructions: the same less the unculled TCS's, 0 for none
+      {"tcs_instructions", results::Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return s.tcs_instructions; }},
+      {"cull_instructions", results::Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return s.cull_instructions; }},
       // frames: count; context
       {"frames", results::Unit::kCount, D::kNone, &S::frames},
   };
@@ -180,8 +227,14 @@ class CullingMeasure final : public Measure {
           "a render of the unculled surface) and missed culls (patches an ideal back-face and "
           "frustum culler would remove)",
           allSpecs(),
-          {"total_false_culls", "mean_tes_saving", "mean_culled_fraction"},
-          {"summary rows (summary = path), one per policy over the camera path: "
+          {"cull_efficiency", "total_false_culls", "mean_tes_saving", "mean_culled_fraction"},
+          {"efficiency: cull_efficiency = the oracle's cullable patches the policy culls / the "
+           "oracle's cullable patches (summed over the path's frames in the summary rows); "
+           "back_facing_efficiency = what the policy's back-facing half (backface_lp2, cone; "
+           "combined: its cone) culls of the patches whose every triangle faces away; "
+           "frustum_efficiency = what its frustum half (frustum_*; combined: frustum_hull) culls "
+           "of the patches whose every triangle lies outside the frustum",
+           "summary rows (summary = path), one per policy over the camera path: "
            "mean_culled_fraction and mean_tes_saving are means over the frames (0.5: half the "
            "patches or TES invocations removed); total_* are sums over the frames",
            "false culls: a patch the policy culls that covers at least one pixel of a render of "
@@ -241,6 +294,7 @@ class CullingMeasure final : public Measure {
           {{"part", "gpu"}}, results::MeasureStatus::kSkipped, run.gpuSkipReason()));
     }
     const lod::CullBounds& bounds = run.bounds();
+    const std::vector<CullTcsCost> costs = cullTcsCosts(*input.patches, policies);
     if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {
       result.notes.push_back(std::to_string(bounds.patches_without_cone) + " of " +
                              std::to_string(bounds.patches.size()) +
@@ -253,7 +307,13 @@ class CullingMeasure final : public Measure {
       results::MetricRow row;
       row.keys["policy"] = std::string(lod::cullPolicyName(policies[k]));
       row.keys["summary"] = kSummaryKey;
-      row.metrics = summaryTable().metrics(summarise(frames[k]));
+      CullingSummary summary = summarise(frames[k]);
+      summary.cull_bytes_per_patch = lod::cullBytesPerPatch(policies[k], bounds.patches);
+      if (costs[k].measured) {
+        summary.tcs_instructions = costs[k].tcs_instructions;
+        summary.cull_instructions = costs[k].cull_instructions;
+      }
+      row.metrics = summaryTable().metrics(summary);
       result.rows.push_back(std::move(row));
     }
     for (size_t k = 0; k < policies.size(); ++k) {

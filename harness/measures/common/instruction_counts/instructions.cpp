@@ -3,6 +3,7 @@
 #include <spirv-tools/optimizer.hpp>
 #include <map>
 #include <mutex>
+#include <tuple>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -182,16 +183,18 @@ InstructionCounts countSpirvInstructions(std::span<const uint32_t> words, bool s
 }
 
 std::vector<uint32_t> optimizeSpirv(std::span<const uint32_t> words,
-                                    const std::vector<uint32_t>& specialization) {
+                                    const std::vector<uint32_t>& specialization,
+                                    const SpecConstantsById& by_id) {
   spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_3);
   std::string messages;
   optimizer.SetMessageConsumer([&messages](spv_message_level_t level, const char*,
                                            const spv_position_t&, const char* message) {
     if (level <= SPV_MSG_ERROR) messages += std::string(message) + "; ";
   });
-  if (!specialization.empty()) {
+  if (!specialization.empty() || !by_id.empty()) {
     std::unordered_map<uint32_t, std::vector<uint32_t>> values;
     for (uint32_t i = 0; i < specialization.size(); ++i) values[i] = {specialization[i]};
+    for (const auto& [id, value] : by_id) values[id] = {value};
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values));
   }
   // Freezing turns OpSpecConstant into OpConstant but leaves the OpSpecConstantOp built on
@@ -207,29 +210,33 @@ std::vector<uint32_t> optimizeSpirv(std::span<const uint32_t> words,
 }
 
 StageInstructionCounts countEmbeddedShader(std::string_view embedded_path,
-                                           const std::vector<uint32_t>& specialization) {
+                                           const std::vector<uint32_t>& specialization,
+                                           const SpecConstantsById& by_id) {
   const std::span<const uint32_t> words = gpu::embeddedShader(embedded_path);
   if (words.empty()) {
     throw std::runtime_error("instructions: shader " + std::string(embedded_path) +
                              " is not embedded");
   }
-  const std::vector<uint32_t> optimized = optimizeSpirv(words, specialization);
+  const std::vector<uint32_t> optimized = optimizeSpirv(words, specialization, by_id);
   return {std::string(embedded_path), countSpirvInstructions(optimized, false),
           countSpirvInstructions(optimized, true)};
 }
 
 StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_path,
-                                                  const std::vector<uint32_t>& specialization) {
+                                                  const std::vector<uint32_t>& specialization,
+                                                  const SpecConstantsById& by_id) {
   static std::mutex mutex;
-  static std::map<std::pair<std::string, std::vector<uint32_t>>, StageInstructionCounts> cache;
-  const auto key = std::make_pair(embedded_path, specialization);
+  static std::map<std::tuple<std::string, std::vector<uint32_t>, SpecConstantsById>,
+                  StageInstructionCounts>
+      cache;
+  const auto key = std::make_tuple(embedded_path, specialization, by_id);
   {
     const std::lock_guard lock(mutex);
     if (auto found = cache.find(key); found != cache.end()) return found->second;
   }
   // Optimised outside the lock, so two threads count different shaders at once; a shader
   // counted twice by a race gives the same counts.
-  StageInstructionCounts counts = countEmbeddedShader(embedded_path, specialization);
+  StageInstructionCounts counts = countEmbeddedShader(embedded_path, specialization, by_id);
   const std::lock_guard lock(mutex);
   return cache.emplace(key, std::move(counts)).first->second;
 }

@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace tb::measures {
@@ -38,11 +39,16 @@ struct InstructionCounts {
 // n-vectors is 2n - 1; a store counts the stored value's components).
 InstructionCounts countSpirvInstructions(std::span<const uint32_t> words, bool scalar);
 
+// Specialisation constants by constant_id: (id, 32-bit bit pattern), e.g. the harness's
+// kTbCullPolicy (202) to count one culling policy's TCS.
+using SpecConstantsById = std::vector<std::pair<uint32_t, uint32_t>>;
+
 // spirv-opt -O (RegisterPerformancePasses, Vulkan 1.3), after setting specialisation
-// constant i to specialization[i] (as 32-bit bit patterns) and freezing the constants.
-// Throws std::runtime_error with the optimiser's message on failure.
+// constant i to specialization[i] (as 32-bit bit patterns), then those of `by_id`, and
+// freezing the constants. Throws std::runtime_error with the optimiser's message on failure.
 std::vector<uint32_t> optimizeSpirv(std::span<const uint32_t> words,
-                                    const std::vector<uint32_t>& specialization);
+                                    const std::vector<uint32_t>& specialization,
+                                    const SpecConstantsById& by_id = {});
 
 struct StageInstructionCounts {
   std::string shader;        // embedded path, e.g. "phong/phong.tese"
@@ -53,12 +59,14 @@ struct StageInstructionCounts {
 // Optimises and counts one embedded shader (shaders/embedded_shaders.h). Throws
 // std::runtime_error when the shader is not embedded or does not optimise.
 StageInstructionCounts countEmbeddedShader(std::string_view embedded_path,
-                                           const std::vector<uint32_t>& specialization);
+                                           const std::vector<uint32_t>& specialization,
+                                           const SpecConstantsById& by_id = {});
 
 // The same, optimised once per (shader, specialisation) for the life of the process: the
 // counts depend on neither the asset nor the variant's patch data. Thread-safe; a shader
 // that throws is not cached (the next call throws again).
 StageInstructionCounts cachedEmbeddedShaderCounts(const std::string& embedded_path,
-                                                  const std::vector<uint32_t>& specialization);
+                                                  const std::vector<uint32_t>& specialization,
+                                                  const SpecConstantsById& by_id = {});
 
 }  // namespace tb::measures
