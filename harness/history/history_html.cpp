@@ -31,9 +31,11 @@ th, td { text-align: left; padding: 0.1rem 0.8rem 0.1rem 0; }
 std::string esc(const std::string& text) { return report::escapeHtml(text); }
 
 std::string yLabel(const Chart& chart) {
-  std::string direction = chart.direction == "lower_is_better"    ? ", lower is better"
-                          : chart.direction == "higher_is_better" ? ", higher is better"
-                                                                  : "";
+  std::string direction =
+      chart.direction == results::toString(results::Direction::kLowerIsBetter) ? ", lower is better"
+      : chart.direction == results::toString(results::Direction::kHigherIsBetter)
+          ? ", higher is better"
+          : "";
   return chart.metric + " (" + chart.unit + direction + ")";
 }
 

@@ -1,5 +1,9 @@
 // Opening, creating and migrating a history database (history_store.h).
+#include <unistd.h>
+
 #include <cassert>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -40,7 +44,7 @@ CREATE TABLE runs(
   commit_time TEXT NOT NULL DEFAULT '',
   UNIQUE(git_sha, run_id, date));
 -- Each measure's declared metrics: unit ("bytes", "rel_diag", ...), direction
--- ("lower_is_better", ...), headline: 1-based place in the headline list, 0 when not one.
+-- ("lower", "higher", "none"), headline: 1-based place in the headline list, 0 when not one.
 CREATE TABLE metrics(
   run INTEGER NOT NULL REFERENCES runs(id), measure TEXT NOT NULL, metric TEXT NOT NULL,
   unit TEXT NOT NULL, direction TEXT NOT NULL, headline INTEGER NOT NULL,
@@ -115,21 +119,34 @@ void migrate(HistoryDb& history) {
   history.version = kHistorySchemaVersion;
 }
 
-void create(Database& db) {
-  db.exec("BEGIN IMMEDIATE");
+// A new database at `path`, whole or not at all: made under a temporary name beside it and
+// linked into place, so a concurrent opener never sees a half-made file; when another
+// process linked its own first, that one stays.
+void createAtomically(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) {
+    std::error_code error;
+    fs::create_directories(parent, error);
+  }
+  const std::string temporary = path + ".creating-" + std::to_string(::getpid());
   try {
-    Statement exists =
-        db.prepare("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'meta'");
-    if (exists.step() && exists.integer(0) == 0) {  // not created by a concurrent process
-      db.exec(kSchema);
-      db.exec(kFiguresView);
-      db.exec("INSERT INTO meta(key, value) VALUES ('schema_version', '" +
-              std::to_string(kHistorySchemaVersion) + "'), ('created_by', 'tessbench history')");
-    }
+    Database db(temporary, Database::Mode::kCreate);
+    db.exec("PRAGMA journal_mode = WAL");
+    db.exec("BEGIN IMMEDIATE");
+    db.exec(kSchema);
+    db.exec(kFiguresView);
+    db.exec("INSERT INTO meta(key, value) VALUES ('schema_version', '" +
+            std::to_string(kHistorySchemaVersion) + "'), ('created_by', 'tessbench history')");
     db.exec("COMMIT");
   } catch (...) {
-    sqlite3_exec(db.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+    ::unlink(temporary.c_str());
     throw;
+  }
+  const bool linked = ::link(temporary.c_str(), path.c_str()) == 0;
+  const int link_error = errno;
+  ::unlink(temporary.c_str());
+  if (!linked && link_error != EEXIST) {
+    throw HistoryError(path + ": cannot create the history database: " + std::strerror(link_error));
   }
 }
 
@@ -139,34 +156,26 @@ HistoryDb openHistory(const std::string& path, bool writable) {
   assert(!path.empty());
   namespace fs = std::filesystem;
   std::error_code error;
-  const bool exists = fs::exists(path, error);
-  if (!exists && !writable) throw HistoryError(path + ": no such history database");
-  if (exists) {
-    if (fs::is_directory(path)) throw HistoryError(path + ": a folder, not a history database");
-    const std::string header = fileHeader(path);
-    if (header.empty()) throw HistoryError(path + ": an empty file, not a history database");
-    if (header != kSqliteHeader) {
-      throw HistoryError(path + ": not a SQLite database (no \"SQLite format 3\" header)");
-    }
-    // Read-only first: a damaged file or another program's database is refused untouched.
-    {
-      Database check(path, Database::Mode::kReadOnly);
-      readVersion(check);
-    }
-  } else if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) {
-    fs::create_directories(parent, error);
+  if (!fs::exists(path, error)) {
+    if (!writable) throw HistoryError(path + ": no such history database");
+    createAtomically(path);
   }
+  if (fs::is_directory(path)) throw HistoryError(path + ": a folder, not a history database");
+  const std::string header = fileHeader(path);
+  if (header.empty()) throw HistoryError(path + ": an empty file, not a history database");
+  if (header != kSqliteHeader) {
+    throw HistoryError(path + ": not a SQLite database (no \"SQLite format 3\" header)");
+  }
+  // Read-only first: a damaged file or another program's database is refused untouched.
   HistoryDb history;
-  history.db = std::make_unique<Database>(path, !writable ? Database::Mode::kReadOnly
-                                                : exists  ? Database::Mode::kReadWrite
-                                                          : Database::Mode::kCreate);
+  history.db = std::make_unique<Database>(path, Database::Mode::kReadOnly);
+  history.version = readVersion(*history.db);
   if (writable) {
+    history.db = std::make_unique<Database>(path, Database::Mode::kReadWrite);
     history.db->exec("PRAGMA journal_mode = WAL");
     history.db->exec("PRAGMA synchronous = NORMAL");
-    if (!exists) create(*history.db);
+    migrate(history);
   }
-  history.version = readVersion(*history.db);
-  if (writable) migrate(history);
   return history;
 }
 

@@ -144,7 +144,8 @@ void timingChart(size_t group, const std::vector<RunContent>& runs, const std::s
           results::medianOf(entry.samples));
     }
   }
-  addChart(group, measure, "seconds", "s", "lower_is_better", lines,
+  addChart(group, measure, "seconds", "s",
+           std::string(results::toString(results::Direction::kLowerIsBetter)), lines,
            results::Direction::kLowerIsBetter, options, view);
 }
 

@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <cassert>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
@@ -64,11 +66,15 @@ class Transaction {
   bool committed_ = false;
 };
 
-// The fault test's hook (tests/history): TESSBENCH_HISTORY_TEST_KILL=records kills this
-// process with SIGKILL once the records are written and before the commit.
-void testKillPoint(const char* point) {
-  const char* wanted = std::getenv("TESSBENCH_HISTORY_TEST_KILL");
-  if (wanted != nullptr && std::string_view(wanted) == point) ::kill(::getpid(), SIGKILL);
+// The concurrency and fault tests' hooks (tests/history), inside an add's transaction once
+// the records are written: TESSBENCH_HISTORY_TEST_PAUSE_MS=N holds the write lock N ms
+// longer (two adds then surely overlap); TESSBENCH_HISTORY_TEST_KILL=records kills this
+// process with SIGKILL before the commit.
+void testHooks() {
+  if (const char* pause = std::getenv("TESSBENCH_HISTORY_TEST_PAUSE_MS"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(pause)));
+  const char* kill_at = std::getenv("TESSBENCH_HISTORY_TEST_KILL");
+  if (kill_at != nullptr && std::string_view(kill_at) == "records") ::kill(::getpid(), SIGKILL);
 }
 
 void insertDeclarations(Database& db, int64_t run, const Json& measures) {
@@ -213,7 +219,7 @@ AddSummary addRun(HistoryDb& history, const std::string& run_dir) {
     insertTimings(db, run.id, *timings);
     summary.timings = timings->measures.size();
   }
-  testKillPoint("records");
+  testHooks();
   transaction.commit();
   return summary;
 }

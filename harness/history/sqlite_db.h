@@ -68,6 +68,7 @@ class Statement {
   double real(int column) const;
   std::string text(int column) const;  // "" for NULL
   bool isNull(int column) const;
+  int columnCount() const { return sqlite3_column_count(statement_); }
 
  private:
   Database* db_;
