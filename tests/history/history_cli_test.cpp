@@ -27,8 +27,9 @@ using testing::readFile;
 using testing::runTessbenchSplit;
 using testing::SplitResult;
 
-constexpr const char* kNoDevice =
-    "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+using testing::between;
+using testing::kNoVulkanDevice;
+using testing::occurrences;
 
 // A run of regress and phong on the Loop cube (error and cracks) with `plugin`, made as if at
 // commit `index` (its context's git sha and commit time rewritten: a run records the build's
@@ -40,7 +41,7 @@ std::string runAtCommit(const fs::path& dir, const char* plugin, int index) {
           " run --quiet --no-pictures --technique regress --technique phong --asset loop_cube "
           "--measure error --measure cracks --out " +
           (dir / "runs").string() + " --run-id " + run_id,
-      kNoDevice);
+      kNoVulkanDevice);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const fs::path file = dir / "runs" / run_id / "results.json";
   results::Results results = results::readResultsFile(file.string());
@@ -52,34 +53,15 @@ std::string runAtCommit(const fs::path& dir, const char* plugin, int index) {
   return (dir / "runs" / run_id).string();
 }
 
-std::string between(const std::string& text, const std::string& open, const std::string& close) {
-  const size_t start = text.find(open);
-  if (start == std::string::npos) return {};
-  const size_t from = start + open.size();
-  const size_t end = text.find(close, from);
-  return end == std::string::npos ? std::string() : text.substr(from, end - from);
-}
-
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t count = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-  return count;
-}
-
 // The page in headless Chromium: every chart drawn with its lines, no script error.
 void expectRendersInChromium(const fs::path& dir, const fs::path& page,
                              const nlohmann::json& charts) {
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0) {
+  if (!testing::chromiumOnPath()) {
     std::printf("chromium is not on PATH: the browser check of history.html is skipped\n");
     return;
   }
   const fs::path dom_file = dir / "dom.html";
-  const std::string command =
-      "timeout 120 chromium --headless=new --no-sandbox --disable-gpu --no-first-run "
-      "--user-data-dir=" +
-      (dir / "profile").string() + " --virtual-time-budget=5000 --dump-dom file://" +
-      page.string() + " >" + dom_file.string() + " 2>/dev/null";
-  ASSERT_EQ(std::system(command.c_str()), 0);
+  ASSERT_EQ(testing::runChromium(dir / "profile", "--dump-dom", page, dom_file), 0);
   const std::string dom = readFile(dom_file);
   ASSERT_NE(dom.find("</html>"), std::string::npos) << "chromium dumped no page";
   EXPECT_EQ(occurrences(dom, "data-rendered=\"true\""), charts.size()) << "a chart was not drawn";

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/cli/cli_support.h"
 #include "tests/history/history_support.h"
 #include "tests/test_support.h"
 
@@ -20,11 +21,6 @@ namespace fs = std::filesystem;
 using history::HistoryError;
 using testing::SyntheticRun;
 using testing::writeSyntheticRun;
-
-std::string bytesOf(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 TEST(HistoryStore, ARunComesBackAsItWentIn) {
   const fs::path dir = testing::scratchDirectory("history_roundtrip");
@@ -38,7 +34,8 @@ TEST(HistoryStore, ARunComesBackAsItWentIn) {
   EXPECT_EQ(added.timings, 4u);
   EXPECT_EQ(added.run.device, run.device);
   const results::RunData back = history::loadRun(db, added.run.id);
-  EXPECT_EQ(results::serializeResults(back.results), bytesOf(fs::path(folder) / "results.json"));
+  EXPECT_EQ(results::serializeResults(back.results),
+            testing::readFile(fs::path(folder) / "results.json"));
   ASSERT_TRUE(back.timings.has_value());
   EXPECT_EQ(back.timings->measures.at(3).samples, run.samples);
   // Units and directions from the declarations, as SQL rows; every figure through the view.
@@ -115,7 +112,7 @@ TEST(HistoryStore, AFileThatIsNotAHistoryIsRefusedUntouched) {
       } catch (const HistoryError& error) {
         EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos) << error.what();
       }
-      EXPECT_EQ(bytesOf(path), contents) << name;
+      EXPECT_EQ(testing::readFile(path), contents) << name;
     }
   }
   // Another program's SQLite database.
@@ -124,9 +121,9 @@ TEST(HistoryStore, AFileThatIsNotAHistoryIsRefusedUntouched) {
     history::Database db(other.string(), history::Database::Mode::kCreate);
     db.exec("CREATE TABLE things(x)");
   }
-  const std::string before = bytesOf(other);
+  const std::string before = testing::readFile(other);
   EXPECT_THROW(history::openHistory(other.string(), true), HistoryError);
-  EXPECT_EQ(bytesOf(other), before);
+  EXPECT_EQ(testing::readFile(other), before);
   EXPECT_THROW(history::openHistory((dir / "none.sqlite").string(), false), HistoryError);
 }
 
