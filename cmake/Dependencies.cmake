@@ -29,6 +29,7 @@ if(NOT TB_FUZZ)
   find_package(fmt CONFIG REQUIRED)
   find_package(TBB CONFIG REQUIRED)
   find_package(PNG REQUIRED)  # CMake's FindPNG: the pictures' PNG files (libpng-dev)
+  find_package(SQLite3 REQUIRED)  # CMake's FindSQLite3: the history database (libsqlite3-dev)
   # The tests and benchmarks need GoogleTest and Google Benchmark, which README command 1
   # (scripts/install_deps.sh --run) does not install: without them this configure builds
   # tessbench and says so; scripts/test.sh installs them first.

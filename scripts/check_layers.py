@@ -42,6 +42,9 @@ LAYERS += [
     ("harness/results", ["harness/results/"], ["core/mesh"]),
     ("harness/lod", ["harness/lod/"], LOWER + ["harness/results"]),
     ("harness/measures", ["harness/measures/"], LOWER + ["harness/results", "harness/lod"]),
+    # The results database across commits: the results model, and report.html's escaping.
+    ("harness/history", ["harness/history/"], ["core/mesh", "harness/results", "harness/report"]),
+    ("harness/report", ["harness/report/"], ["core/mesh", "harness/results"]),
 ]
 # (folder prefix, its namespace); the longest prefix wins. techniques/<id>/ is tb::<id>.
 NAMESPACES = [
@@ -51,7 +54,8 @@ NAMESPACES = [
     ("harness/results/", "tb::results"), ("harness/lod/", "tb::lod"),
     ("harness/measures/", "tb::measures"), ("harness/suite/", "tb::suite"),
     ("harness/pictures/", "tb::pictures"), ("harness/report/", "tb::report"),
-    ("harness/bake/", "tb::bake"), ("harness/cli/", "tb::cli"),
+    ("harness/bake/", "tb::bake"), ("harness/history/", "tb::history"),
+    ("harness/cli/", "tb::cli"),
 ]
 FORWARD_ONLY = re.compile(r"(?:\s*(?:class|struct)\s+\w+\s*;)+\s*\}")
 NAMESPACE = re.compile(r"^\s*namespace\s+([\w:]+)\s*\{", re.M)

@@ -12,7 +12,7 @@ run_packages=(
   glslang-tools glslang-dev spirv-tools
   mesa-vulkan-drivers libvulkan-dev vulkan-tools
   libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libmeshoptimizer-dev libtbb-dev libpng-dev
+  libmeshoptimizer-dev libtbb-dev libpng-dev libsqlite3-dev
   libjs-chart.js
 )
 test_packages=(

@@ -54,6 +54,7 @@ results::RunContext probeRunContext(const std::string& command_line,
   results::RunContext context;
   context.vulkan_device = gpu::describeDevice(device_name);
   context.git_sha = TB_GIT_SHA;
+  context.commit_time = TB_GIT_COMMIT_TIME;
   context.host = hostName();
   context.cpu = cpuModel() + " (" + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores)";
   context.compiler = TB_COMPILER;

@@ -7,6 +7,7 @@
 #include "harness/cli/advise_command.h"
 #include "harness/cli/bake_command.h"
 #include "harness/cli/compare_command.h"
+#include "harness/cli/history_command.h"
 #include "harness/cli/list_command.h"
 #include "harness/cli/merge_command.h"
 #include "harness/cli/report_command.h"
@@ -21,7 +22,8 @@ const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> all{
       kListSubcommand,       kRunSubcommand,    kMergeSubcommand,
       kReportSubcommand,     kCompareSubcommand, kTessellateSubcommand,
-      kAdviseSubcommand,     kTableSubcommand,  kBakeSubcommand};
+      kAdviseSubcommand,     kTableSubcommand,  kBakeSubcommand,
+      kHistorySubcommand};
   return all;
 }
 

@@ -230,6 +230,7 @@ const char* toString(ChangeKind kind) {
 Comparison compareResults(const Results& base, const Results& current,
                           const CompareOptions& options) {
   Comparison comparison = Comparer(base, current, options).run();
+  comparison.missing_fails = !options.only_common;
   sortChanges(&comparison);
   return comparison;
 }
@@ -237,6 +238,7 @@ Comparison compareResults(const Results& base, const Results& current,
 Comparison compareRuns(const RunData& base, const RunData& current,
                        const CompareOptions& options) {
   Comparison comparison = Comparer(base.results, current.results, options).run();
+  comparison.missing_fails = !options.only_common;
   if (!options.timings) {
     comparison.timing_notes.push_back("timings: not compared (--no-timings)");
   } else if (!base.timings || !current.timings) {
@@ -261,7 +263,9 @@ std::string renderComparison(const Comparison& comparison, size_t limit) {
       comparison.count(ChangeKind::kRegression), comparison.count(ChangeKind::kChanged),
       comparison.count(ChangeKind::kImprovement), comparison.count(ChangeKind::kAdded),
       comparison.failed() ? "FAIL: the new run lost or worsened figures of the base."
-                          : "PASS.");
+      : comparison.missing_fails || comparison.count(ChangeKind::kMissing) == 0
+          ? "PASS."
+          : "PASS (--only-common: the missing figures are listed, not failed).");
   for (const std::string& note : comparison.timing_notes) out += note + "\n";
   for (const std::string& note : comparison.context_notes) out += "\nNote: " + note + ".\n";
   if (comparison.changes.empty()) return out;
@@ -285,6 +289,23 @@ std::string renderComparison(const Comparison& comparison, size_t limit) {
   if (shown < comparison.changes.size()) {
     out += fmt::format("\n{} more changes not shown (--limit).\n",
                        comparison.changes.size() - shown);
+  }
+  return out;
+}
+
+std::string renderTimingTable(const Comparison& comparison) {
+  if (comparison.timings.empty()) return "No timing was tested.\n";
+  std::string out =
+      "| timing | record | measure | samples | base median (s) | new median (s) | change | p "
+      "(U test) |\n|---|---|---|---|---|---|---|---|\n";
+  for (const TimingComparison& t : comparison.timings) {
+    out += fmt::format("| {} | {} | {} | {} vs {} | {} | {} | {} | {:.3g} |\n",
+                       t.kind == ChangeKind::kChanged ? "same" : toString(t.kind), t.record,
+                       t.measure, t.base_samples, t.current_samples, formatValue(t.base),
+                       formatValue(t.current),
+                       t.base != 0 ? fmt::format("{:+.3g}%", 100 * (t.current - t.base) / t.base)
+                                   : "from 0",
+                       t.p_value);
   }
   return out;
 }

@@ -32,6 +32,9 @@ struct CompareOptions {
   bool timings = true;
   double alpha = 0.05;
   double time_threshold = 0.05;
+  // Compare the figures both runs have (`compare --only-common`): a figure only the base has
+  // is still listed as missing, but does not fail the comparison.
+  bool only_common = false;
 };
 
 // compare.py's UTEST_MIN_REPETITIONS: fewer samples on either side and a timing is not
@@ -63,6 +66,16 @@ struct MetricChange {
   double relative_change() const;
 };
 
+// One timing put to the U test (every one, flagged or not: `compare --all-timings`).
+struct TimingComparison {
+  std::string record;  // "technique/variant asset"
+  std::string measure;
+  size_t base_samples = 0, current_samples = 0;
+  double base = 0, current = 0;  // median wall seconds of each side's samples, s
+  double p_value = NAN;          // two-sided Mann–Whitney U test
+  ChangeKind kind = ChangeKind::kChanged;  // kRegression, kImprovement, or kChanged: neither
+};
+
 struct Comparison {
   std::vector<MetricChange> changes;  // worst first: missing, regressions, changed, improvements, added
   size_t figures_compared = 0;        // base figures (metric values) looked at
@@ -71,9 +84,14 @@ struct Comparison {
   size_t timings_untested = 0;  // in both runs, but with too few samples on a side
   // One line each: how timings were compared, or why they were not.
   std::vector<std::string> timing_notes;
+  std::vector<TimingComparison> timings;  // every timing tested, in the base run's order
+  bool missing_fails = true;              // false under CompareOptions::only_common
   size_t count(ChangeKind kind) const;
-  // What fails a comparison: a regression or a missing figure.
-  bool failed() const { return count(ChangeKind::kMissing) + count(ChangeKind::kRegression) > 0; }
+  // What fails a comparison: a regression, or a missing figure unless only common figures
+  // are compared.
+  bool failed() const {
+    return count(ChangeKind::kRegression) + (missing_fails ? count(ChangeKind::kMissing) : 0) > 0;
+  }
 };
 
 // The deterministic figures only (no timing is looked at).
@@ -93,8 +111,25 @@ Comparison compareRuns(const RunData& base, const RunData& current,
 
 const char* toString(ChangeKind kind);
 
+// Which records, assets and measures a comparison looks at (`compare --technique/--asset/
+// --measure`); an empty list keeps every one. An asset matches by its full name
+// ("opensubdiv/loop_cube") or the part after the last '/' ("loop_cube").
+struct RunFilter {
+  std::vector<std::string> techniques, assets, measures;
+  bool empty() const { return techniques.empty() && assets.empty() && measures.empty(); }
+};
+// Keeps the records (and timings) the filter selects, and of them the measures it selects.
+void filterRun(const RunFilter& filter, RunData* run);
+// The filter's values that select nothing in any of `runs` (a misspelt name), as
+// "--technique X" one each.
+std::vector<std::string> unmatchedFilterValues(const RunFilter& filter,
+                                               const std::vector<const RunData*>& runs);
+
 // The comparison as markdown: a line of counts, the timing notes, the context notes, and a
 // table of at most `limit` changes, worst first (the count of those left out is said).
 std::string renderComparison(const Comparison& comparison, size_t limit);
+// Every timing tested, flagged or not, as a markdown table (old, new, change, p-value), like
+// Google Benchmark's compare.py lists its benchmarks; one line when none was tested.
+std::string renderTimingTable(const Comparison& comparison);
 
 }  // namespace tb::results

@@ -372,6 +372,7 @@ Json toJson(const Results& results) {
                   {"libraries", libraries},
                   {"vulkan_device", c.vulkan_device},
                   {"command_line", c.command_line}};
+  if (!c.commit_time.empty()) context["commit_time"] = c.commit_time;
   shardFieldsToJson(c, &context);
   Json assets = Json::array();
   for (const AssetSummary& a : results.assets) {
@@ -419,6 +420,8 @@ Results resultsFromJson(const Json& document) {
   c.libraries = field<std::map<std::string, std::string>>(context, "libraries", "context");
   c.vulkan_device = field<std::string>(context, "vulkan_device", "context");
   c.command_line = field<std::string>(context, "command_line", "context");
+  if (context.contains("commit_time"))
+    c.commit_time = field<std::string>(context, "commit_time", "context");
   shardFieldsFromJson(context, &c);
 
   const Json assets = field<Json>(document, "assets", "results");
@@ -458,6 +461,12 @@ const MeasureDeclaration* Results::findMeasure(const std::string& id) const {
     if (declaration.measure == id) return &declaration;
   }
   return nullptr;
+}
+
+Json toJson(const MeasureResult& measure) { return measureToJson(measure); }
+
+MeasureResult measureResultFromJson(const Json& json, const std::string& where) {
+  return measureFromJson(json, where);
 }
 
 std::string recordJsonLine(const Record& record) { return recordToJson(record).dump(); }

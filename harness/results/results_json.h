@@ -18,6 +18,12 @@ nlohmann::ordered_json toJson(const MeasureDeclaration& declaration);
 // the schema (or has another schema_version).
 Results resultsFromJson(const nlohmann::ordered_json& document);
 
+// One measure of a record as results.json's records[].measures[] holds it (rows as a table,
+// no units: those are the declaration's), and back; the reader throws naming `where` and the
+// field. `tessbench history` keeps each one as it is in the file.
+nlohmann::ordered_json toJson(const MeasureResult& measure);
+MeasureResult measureResultFromJson(const nlohmann::ordered_json& json, const std::string& where);
+
 // One record as results.json's "records" array holds it, on one line (the run folder's
 // journal of records measured so far).
 std::string recordJsonLine(const Record& record);

@@ -132,6 +132,10 @@ struct RunContext {
   std::string date;    // ISO 8601 UTC; excluded from determinism checks
   std::string run_id;  // the folder name; excluded from determinism checks
   std::string git_sha;
+  // The commit's committer date, ISO 8601 with its offset (git log --format=%cI); empty in
+  // results written before it was recorded or built outside a git checkout. `tessbench
+  // history` orders runs by it.
+  std::string commit_time = {};
   std::string host;
   std::string cpu;
   std::string compiler;

@@ -47,18 +47,20 @@ void compareTimings(const RunTimings& base, const RunTimings& current,
     const double p = mannWhitneyU(base_entry.samples, current_entry.samples).p_value;
     const double base_median = medianOf(base_entry.samples);
     const double current_median = medianOf(current_entry.samples);
-    if (!(p < options.alpha)) continue;
-    ChangeKind kind;
-    if (current_median > base_median * (1 + options.time_threshold)) {
+    ChangeKind kind = ChangeKind::kChanged;  // not flagged
+    if (p < options.alpha && current_median > base_median * (1 + options.time_threshold)) {
       kind = ChangeKind::kRegression;
-    } else if (current_median < base_median * (1 - options.time_threshold)) {
+    } else if (p < options.alpha && current_median < base_median * (1 - options.time_threshold)) {
       kind = ChangeKind::kImprovement;
-    } else {
-      continue;  // significant, but within the threshold
     }
+    const std::string record =
+        base_entry.technique + "/" + base_entry.variant + " " + base_entry.asset;
+    comparison->timings.push_back({record, base_entry.measure, n_base, n_current, base_median,
+                                   current_median, p, kind});
+    if (kind == ChangeKind::kChanged) continue;  // not significant, or within the threshold
     MetricChange change;
     change.kind = kind;
-    change.record = base_entry.technique + "/" + base_entry.variant + " " + base_entry.asset;
+    change.record = record;
     change.measure = base_entry.measure;
     change.row = fmt::format("timing, {} vs {} samples", n_base, n_current);
     change.metric = "seconds";

@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "tests/test_paths.h"
 
@@ -72,8 +72,8 @@ inline SplitResult runTessbenchSplit(const std::string& arguments,
   const std::filesystem::path err_file =
       std::filesystem::temp_directory_path() /
       ("tessbench_stderr_" + std::to_string(::getpid()) + ".txt");
-  const std::string command = environment + " " + std::string(TB_TESSBENCH_BIN) + " " +
-                              arguments + " 2>" + err_file.string();
+  const std::string command = environment + " " + std::string(TB_TESSBENCH_BIN) + " " + arguments +
+                              " 2>" + err_file.string();
   SplitResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -95,6 +95,41 @@ inline std::string readFile(const std::filesystem::path& path) {
 
 inline size_t lineCount(const std::string& text) {
   return std::count(text.begin(), text.end(), '\n');
+}
+
+// The environment prefix of a run without a Vulkan device (the loader finds no driver).
+inline constexpr const char* kNoVulkanDevice =
+    "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+
+inline size_t occurrences(const std::string& text, const std::string& what) {
+  size_t count = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
+}
+
+// The text after the first `open` up to the next `close`; empty when there is none.
+inline std::string between(const std::string& text, const std::string& open,
+                           const std::string& close) {
+  const size_t start = text.find(open);
+  if (start == std::string::npos) return {};
+  const size_t from = start + open.size();
+  const size_t end = text.find(close, from);
+  return end == std::string::npos ? std::string() : text.substr(from, end - from);
+}
+
+// The pages' browser checks: Debian's chromium, headless (scripts/install_deps.sh installs it).
+inline bool chromiumOnPath() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
+
+// Runs chromium headless on `page` with extra arguments; stdout goes to `out`, stderr (its
+// log noise) is dropped. Returns the exit status.
+inline int runChromium(const std::filesystem::path& profile, const std::string& arguments,
+                       const std::filesystem::path& page, const std::filesystem::path& out) {
+  const std::string command =
+      "timeout 120 chromium --headless=new --no-sandbox --disable-gpu "
+      "--no-first-run --user-data-dir=" +
+      profile.string() + " --virtual-time-budget=5000 " + arguments + " file://" + page.string() +
+      " >" + out.string() + " 2>/dev/null";
+  return std::system(command.c_str());
 }
 
 }  // namespace tb::testing

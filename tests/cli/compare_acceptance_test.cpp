@@ -24,8 +24,7 @@ using testing::readFile;
 using testing::runTessbenchSplit;
 using testing::SplitResult;
 
-constexpr const char* kNoDevice =
-    "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+using testing::kNoVulkanDevice;
 
 // Runs `regress` (from `plugin`) on the Loop cube with the error and cracks measures into
 // `<dir>/out/<run_id>`; returns the folder.
@@ -34,9 +33,9 @@ std::string runRegress(const fs::path& dir, const char* plugin, const std::strin
   const SplitResult r = runTessbenchSplit(
       std::string("--plugin ") + plugin +
           " run --quiet --technique regress --asset loop_cube --measure error --measure cracks "
-          "--repetitions " + std::to_string(repetitions) + " --out " + (dir / "out").string() +
-          " --run-id " + run_id,
-      kNoDevice);
+          "--repetitions " +
+          std::to_string(repetitions) + " --out " + (dir / "out").string() + " --run-id " + run_id,
+      kNoVulkanDevice);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   return (dir / "out" / run_id).string();
 }
@@ -147,8 +146,9 @@ TEST(Repetitions, ARepeatThatDiffersIsARecordWarning) {
   const std::string run_arguments =
       std::string("--plugin ") + testing::regressGood() +
       " run --quiet --technique regress_flaky --technique regress --asset loop_cube --measure "
-      "error --repetitions 2 --out " + (dir / "out").string() + " --run-id r";
-  const SplitResult r = runTessbenchSplit(run_arguments, kNoDevice);
+      "error --repetitions 2 --out " +
+      (dir / "out").string() + " --run-id r";
+  const SplitResult r = runTessbenchSplit(run_arguments, kNoVulkanDevice);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const results::Results results =
       results::readResultsFile((dir / "out" / "r" / "results.json").string());

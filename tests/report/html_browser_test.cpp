@@ -1,6 +1,6 @@
 // report.html in a real browser. Oracle: headless Chromium (Debian's chromium) loads the
-// page a small `tessbench run` wrote, with the pictures it rendered on the device, and its DOM after
-// the scripts ran says what happened: each canvas Chart.js drew carries data-rendered, and
+// page a small `tessbench run` wrote, with the pictures it rendered on the device, and its DOM
+// after the scripts ran says what happened: each canvas Chart.js drew carries data-rendered, and
 // any script error is a list item of #script-errors. A screenshot stays in the build tree
 // (test-artefacts/report_html.png) for a person to look at. Skipped when chromium is not
 // on PATH (scripts/install_deps.sh installs it; CI runs this test).
@@ -18,37 +18,12 @@ namespace tb {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::between;
+using testing::chromiumOnPath;
+using testing::occurrences;
 using testing::readFile;
+using testing::runChromium;
 using testing::runTessbenchSplit;
-
-bool chromiumOnPath() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
-
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t count = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-  return count;
-}
-
-// The text after the first `open` up to the next `close`; empty when there is none.
-std::string between(const std::string& text, const std::string& open, const std::string& close) {
-  const size_t start = text.find(open);
-  if (start == std::string::npos) return {};
-  const size_t from = start + open.size();
-  const size_t end = text.find(close, from);
-  return end == std::string::npos ? std::string() : text.substr(from, end - from);
-}
-
-// Runs chromium headless on `page` with extra arguments; stdout goes to `out`, stderr (its
-// log noise) is dropped. Returns the exit status.
-int runChromium(const fs::path& profile, const std::string& arguments, const fs::path& page,
-                const fs::path& out) {
-  const std::string command =
-      "timeout 120 chromium --headless=new --no-sandbox --disable-gpu "
-      "--no-first-run --user-data-dir=" +
-      profile.string() + " --virtual-time-budget=5000 " + arguments + " file://" + page.string() +
-      " >" + out.string() + " 2>/dev/null";
-  return std::system(command.c_str());
-}
 
 TEST(HtmlBrowser, ChromiumDrawsEveryChartWithoutAScriptError) {
   if (!chromiumOnPath()) {
