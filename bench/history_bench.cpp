@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "bench/bench_main.h"
 #include "harness/history/history_render.h"
 #include "harness/history/history_series.h"
 #include "harness/history/history_store.h"
@@ -123,4 +124,4 @@ BENCHMARK(historyReport50Runs)->Iterations(3)->Unit(benchmark::kSecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+TB_BENCHMARK_MAIN()
