@@ -242,6 +242,21 @@ std::string describeDevice(const DeviceInfo& info) {
   return info.device_name + " (" + info.driver_info + ", Vulkan " + info.api_version + ")";
 }
 
+std::vector<DeviceInfo> listDevices(std::string* reason) {
+  Expected<std::unique_ptr<Instance>> instance = Instance::create(Validation::kOff);
+  if (!instance) {
+    *reason = instance.error();
+    return {};
+  }
+  std::string all_names;
+  std::vector<DeviceInfo> devices;
+  for (Candidate& c : candidates(instance.value()->handle(), "", &all_names)) {
+    devices.push_back(std::move(c.info));
+  }
+  if (devices.empty()) *reason = "no Vulkan device with a graphics+compute queue";
+  return devices;
+}
+
 std::string describeDevice(const std::string& device_name) {
   ContextOptions options;
   options.device_name = device_name;

@@ -42,6 +42,11 @@ struct ContextOptions {
 std::string describeDevice(const std::string& device_name = {});
 std::string describeDevice(const DeviceInfo& info);
 
+// Every Vulkan device with a graphics+compute queue, best first: the order Context::create
+// picks from, so the first is the default and `--device` names one by a substring. Empty,
+// with *reason set, when there is none.
+std::vector<DeviceInfo> listDevices(std::string* reason);
+
 class Context {
  public:
   // Never throws for a missing device or feature: the error is one line naming it.

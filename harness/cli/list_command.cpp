@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "core/gpu/context.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/scenario_file.h"
 #include "harness/measures/measure.h"
@@ -15,11 +16,42 @@
 
 namespace tb::cli {
 
+namespace {
+
+// The Vulkan devices, default first, each with its identity (the string results.json, timings
+// and benchmark JSON name it by) and whether it can run the GPU measures.
+void listDevices(bool json, nlohmann::ordered_json* items) {
+  std::string reason;
+  const std::vector<gpu::DeviceInfo> devices = gpu::listDevices(&reason);
+  if (devices.empty() && !json) fmt::print("no Vulkan device: {}\n", reason);
+  for (size_t i = 0; i < devices.size(); ++i) {
+    const gpu::DeviceInfo& d = devices[i];
+    const std::string missing = gpu::firstMissingFeature(d.features, gpu::tessCaptureFeatures());
+    items->push_back({{"name", d.device_name},
+                      {"type", d.device_type},
+                      {"driver", d.driver_name + " " + d.driver_info},
+                      {"vulkan", d.api_version},
+                      {"identity", gpu::describeDevice(d)},
+                      {"default", i == 0},
+                      {"gpu_measures", missing.empty() ? "yes" : "no: lacks " + missing}});
+    if (!json) {
+      fmt::print("{:<40} {:<15} {} {}, Vulkan {}{}{}\n", d.device_name, d.device_type,
+                 d.driver_name, d.driver_info, d.api_version, i == 0 ? " (default)" : "",
+                 missing.empty() ? "" : "; cannot run the GPU measures: lacks " + missing);
+    }
+  }
+}
+
+}  // namespace
+
 CLI::App* addListCommand(CLI::App& app, ListArgs& args) {
-  CLI::App* list = app.add_subcommand("list", "list techniques, assets, scenarios or measures");
-  list->add_option("what", args.what, "techniques | assets | scenarios | measures")
+  CLI::App* list =
+      app.add_subcommand("list", "list techniques, assets, scenarios, measures or devices");
+  list->add_option("what", args.what,
+                   "techniques | assets | scenarios | measures | devices (the Vulkan devices, "
+                   "default first: what `run --device` names)")
       ->required()
-      ->check(CLI::IsMember({"techniques", "assets", "scenarios", "measures"}));
+      ->check(CLI::IsMember({"techniques", "assets", "scenarios", "measures", "devices"}));
   list->add_flag("--json", args.json, "print JSON");
   return list;
 }
@@ -71,8 +103,11 @@ int runList(const ListArgs& args) {
       items.back().update(item);
       if (!args.json) fmt::print("{:<16} {} — {}\n", info.id, info.title, info.description);
     }
+  } else if (args.what == "devices") {
+    listDevices(args.json, &items);
   } else {
-    throw mesh::InputError("list", args.what, "expected techniques, assets, scenarios or measures");
+    throw mesh::InputError("list", args.what,
+                           "expected techniques, assets, scenarios, measures or devices");
   }
   if (args.json) fmt::print("{}\n", items.dump(2));
   return 0;

@@ -1,4 +1,5 @@
-// `tessbench list WHAT`: the techniques, bundled assets, scenarios or measures, as text or JSON.
+// `tessbench list WHAT`: the techniques, bundled assets, scenarios, measures or Vulkan devices,
+// as text or JSON.
 #pragma once
 
 #include <string>
@@ -8,7 +9,7 @@
 namespace tb::cli {
 
 struct ListArgs {
-  std::string what;  // techniques | assets | scenarios | measures
+  std::string what;  // techniques | assets | scenarios | measures | devices
   bool json = false;
 };
 

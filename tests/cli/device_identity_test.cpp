@@ -46,5 +46,26 @@ TEST(DeviceIdentity, CompareNeverJoinsTheFiguresOfTwoDevices) {
   EXPECT_NE(joined.err.find("NVIDIA H100"), std::string::npos) << joined.err;
 }
 
+// `list devices` names the devices by the identity results.json uses; the default one is the
+// run's. Without a driver it says so in one line and exits 0 (the control).
+TEST(DeviceIdentity, ListDevicesNamesTheRunsDeviceFirst) {
+  const SplitResult listed = runTessbenchSplit("list devices --json");
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  const nlohmann::json devices = nlohmann::json::parse(listed.out);
+  ASSERT_FALSE(devices.empty()) << "lavapipe at least";
+  EXPECT_TRUE(devices[0]["default"].get<bool>());
+  const fs::path dir = testing::scratchDirectory("device_identity_list");
+  ASSERT_EQ(runTessbenchSplit("run --quiet --no-pictures --technique phong --asset catmark_cube "
+                              "--measure instructions --out " + dir.string() + " --run-id r")
+                .exit_code,
+            0);
+  const auto context = nlohmann::json::parse(std::ifstream(dir / "r" / "results.json"))["context"];
+  EXPECT_EQ(devices[0]["identity"], context["vulkan_device"]);
+  const SplitResult none = runTessbenchSplit(
+      "list devices", "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+  EXPECT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_EQ(none.out.rfind("no Vulkan device: ", 0), 0u) << none.out;
+}
+
 }  // namespace
 }  // namespace tb
