@@ -23,6 +23,8 @@
 
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
+// 11: PatchCullBounds gained bezier_net, bezier_degree and bezier_mirrored (the
+//     tangent_plane culling policy).
 // 10: Simulation gained constraintSolver() and waveField() (optional capabilities,
 //     techniques/constraint_solver.h, wave_field.h), Technique simulationCapabilities();
 //     ConstraintSolverTechnique is gone.
@@ -35,7 +37,7 @@
 // techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
 // simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 10;
+inline constexpr int kTessbenchPluginAbi = 11;
 
 namespace tb::techniques {
 

@@ -99,6 +99,16 @@ struct PatchCullBounds {
   // the control points of its normal patch (Sederberg & Meyers 1988; the cone of normals
   // of Shirman & Abi-Ezzi 1993 is built from them). Empty: no bound, so no cone culling.
   std::vector<mesh::Vec3d> normal_generators;
+  // The position patch as a polynomial in Bernstein form, for the tangent_plane policy
+  // (harness/lod/tangent_plane.h); empty when the patch is not polynomial (a Gregory patch
+  // whose face points differ, Phong's edge variant) or the technique gives none. On a quad
+  // patch (bezier_degree + 1)^2 points c[i + (bezier_degree + 1) j], i along u; on a
+  // triangle patch triangleNetSize(bezier_degree) points in techniques/common/
+  // bernstein_poly.h's order. Its p_u x p_v (quad) or D_1 x D_2 (triangle, patch_bounds.h)
+  // faces the front, or the back when bezier_mirrored.
+  std::vector<mesh::Vec3d> bezier_net;
+  int bezier_degree = 0;
+  bool bezier_mirrored = false;
 };
 
 // Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's

@@ -385,12 +385,16 @@ void bindLevelsSet(Context& context, CallResources& resources, const StorageBuff
       context, cull ? std::span(cull->param_words) : no_words, &resources.cull_params);
   const VkDeviceSize cull_patches_range = uploadWords(
       context, cull ? std::span(cull->patch_words) : no_words, &resources.cull_patches);
+  const VkDeviceSize cull_tangent_range = uploadWords(
+      context, cull ? std::span(cull->tangent_words) : no_words, &resources.cull_tangent);
   const VkBuffer levels_handles[kLevelsSetBindings] = {
-      resources.levels.handle(), resources.factor_corners.handle(),
+      resources.levels.handle(),      resources.factor_corners.handle(),
       resources.factor_params.handle(), resources.factor_out.handle(),
-      resources.cull_params.handle(),   resources.cull_patches.handle()};
+      resources.cull_params.handle(), resources.cull_patches.handle(),
+      resources.cull_tangent.handle()};
   const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
-      levels_range, corners_range, params_range, out_range, cull_params_range, cull_patches_range};
+      levels_range,      corners_range,      params_range,      out_range,
+      cull_params_range, cull_patches_range, cull_tangent_range};
   set.bind(context.device(), levels_handles, levels_ranges);
 }
 

@@ -55,11 +55,14 @@ struct TcsFactorPolicy {
 // get outer level 0. Plain words; the CPU twin that packs them is
 // harness/lod/cull_policy.h.
 struct TcsCullPolicy {
-  std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4 (32 words)
+  std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4 (36 words)
   // Per program patch, kTcsCullPatchWords words: TbCullPatches at set 1, binding 5.
   std::vector<uint32_t> patch_words;
+  // The tangent_plane policy's coefficients, 4 words each, that TbCullPatch::tangent
+  // indexes: TbCullTangentPlanes at set 1, binding 6 (may be empty).
+  std::vector<uint32_t> tangent_words;
 };
-inline constexpr size_t kTcsCullPatchWords = 120;  // sizeof(TbCullPatch) / 4
+inline constexpr size_t kTcsCullPatchWords = 128;  // sizeof(TbCullPatch) / 4
 
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's

@@ -35,7 +35,7 @@ constexpr uint32_t kCaptureBoundaryConstantId = 200;
 constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
 // Set 1: the harness levels, then the factor policy's corners, parameters and output, then
 // the culling policy's parameters and per-patch bounds.
-constexpr uint32_t kLevelsSetBindings = 6;
+constexpr uint32_t kLevelsSetBindings = 7;
 constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
 
@@ -70,6 +70,7 @@ struct CallResources {
   Buffer factor_out;      // the levels the TCS wrote, 8 words per patch
   Buffer cull_params;     // TcsCullPolicy::param_words
   Buffer cull_patches;    // TcsCullPolicy::patch_words
+  Buffer cull_tangent;    // TcsCullPolicy::tangent_words
   std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };

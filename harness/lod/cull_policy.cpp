@@ -6,17 +6,18 @@
 #include <limits>
 #include <map>
 
+#include "harness/lod/tangent_plane.h"
+
 namespace tb::lod {
 namespace {
 
-constexpr size_t kParamWords = 32;  // TbCullParamsBlock, std430
 constexpr double kConeSineWidening = 1e-3;  // see cull_policy.h
 constexpr int kConeAxisIterations = 32;
 
 constexpr CullPolicy kAllPolicies[] = {
     CullPolicy::kNone,         CullPolicy::kBackfaceLp2, CullPolicy::kFrustumLp2Global,
     CullPolicy::kFrustumLp2Exact, CullPolicy::kFrustumHull, CullPolicy::kCone,
-    CullPolicy::kCombined,
+    CullPolicy::kCombined,     CullPolicy::kTangentPlane, CullPolicy::kTangentPlaneFrustum,
 };
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
@@ -126,12 +127,27 @@ PositionKey positionKey(const mesh::Vec3f& p) {
           std::bit_cast<uint32_t>(p[2])};
 }
 
-void putFloat(std::vector<uint32_t>& words, float value) {
-  words.push_back(std::bit_cast<uint32_t>(value));
-}
-void putVec(std::vector<uint32_t>& words, const mesh::Vec3f& v, float w) {
-  for (int i = 0; i < 3; ++i) putFloat(words, v[i]);
-  putFloat(words, w);
+// tangent_plane's coefficients about the patch's first corner, rounded to float, and their
+// largest magnitudes rounded up (the margin's scale).
+void setTangentPlane(techniques::PatchDomain domain, const techniques::PatchCullBounds& bounds,
+                     CullPatchBounds& out) {
+  if (out.displacement_bound != 0) return;
+  const std::vector<TangentPlaneCoefficient> coefficients =
+      tangentPlaneCoefficients(domain, bounds, toDouble(out.corner_position[0]));
+  double normal_max = 0, offset_max = 0;
+  for (const TangentPlaneCoefficient& c : coefficients) {
+    out.tangent_plane.push_back({float(c[0]), float(c[1]), float(c[2]), float(c[3])});
+    normal_max = std::max(normal_max, std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+    offset_max = std::max(offset_max, std::abs(c[3]));
+  }
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  out.tangent_normal_max = std::nextafter(float(normal_max), kInf);
+  out.tangent_offset_max = std::nextafter(float(offset_max), kInf);
+  const TangentPlaneChordBound chord =
+      tangentPlaneChordBound(domain, bounds, toDouble(out.corner_position[0]));
+  out.tangent_reach = std::nextafter(float(chord.reach), kInf);
+  out.tangent_first_times_second = std::nextafter(float(chord.first_times_second), kInf);
+  out.tangent_second_squared = std::nextafter(float(chord.second_squared), kInf);
 }
 
 }  // namespace
@@ -154,6 +170,10 @@ std::string_view cullPolicyName(CullPolicy policy) {
       return "cone";
     case CullPolicy::kCombined:
       return "combined";
+    case CullPolicy::kTangentPlane:
+      return "tangent_plane";
+    case CullPolicy::kTangentPlaneFrustum:
+      return "tangent_plane_frustum";
   }
   return "?";
 }
@@ -191,6 +211,17 @@ std::string_view cullPolicyDescription(CullPolicy policy) {
              "outside the cone's back-facing region; conservative";
     case CullPolicy::kCombined:
       return "frustum_hull or cone; conservative";
+    case CullPolicy::kTangentPlane:
+      return "back-patch culling with the parametric tangent plane (Loop, Niessner & Eisenacher, "
+             "\"Effective Back-Patch Culling for Hardware Tessellation\", VMV 2011): culled when "
+             "every Bernstein coefficient of (E - P) . (P_u x P_v) is below minus a chord margin "
+             "(the tessellated triangles' planes are chords of the surface: a margin from the "
+             "net's first and second differences and the level), one dot product per "
+             "coefficient, or when the cone culls it (the cone alone for a patch that is not "
+             "polynomial: Gregory with unequal face points, Phong's edge variant, displaced "
+             "and osd_adaptive patches); conservative";
+    case CullPolicy::kTangentPlaneFrustum:
+      return "frustum_hull or tangent_plane; conservative";
   }
   return "";
 }
@@ -208,6 +239,16 @@ double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& 
       case CullPolicy::kFrustumHull: total += kHeader + hull; break;
       case CullPolicy::kCone:
       case CullPolicy::kCombined: total += kHeader + kVec4 + hull; break;
+      case CullPolicy::kTangentPlane:
+      case CullPolicy::kTangentPlaneFrustum: {
+        // The tangent header, then the chord bound and the coefficients, or the cone.
+        const double tangent = kVec4 + double(patch.tangent_plane.size()) * kVec4;
+        total += kHeader + kVec4 + (patch.tangent_plane.empty() ? kVec4 + hull : tangent);
+        if (policy == CullPolicy::kTangentPlaneFrustum && !patch.tangent_plane.empty()) {
+          total += hull;
+        }
+        break;
+      }
       case CullPolicy::kNone: break;
     }
   }
@@ -225,6 +266,10 @@ CullPolicyHalves cullPolicyHalves(CullPolicy policy) {
       return {CullPolicy::kNone, policy};
     case CullPolicy::kCombined:
       return {CullPolicy::kCone, CullPolicy::kFrustumHull};
+    case CullPolicy::kTangentPlane:
+      return {policy, CullPolicy::kNone};
+    case CullPolicy::kTangentPlaneFrustum:
+      return {CullPolicy::kTangentPlane, CullPolicy::kFrustumHull};
     case CullPolicy::kNone:
       break;
   }
@@ -233,12 +278,19 @@ CullPolicyHalves cullPolicyHalves(CullPolicy policy) {
 
 bool isConservative(CullPolicy policy) {
   return policy == CullPolicy::kFrustumHull || policy == CullPolicy::kCone ||
-         policy == CullPolicy::kCombined;
+         policy == CullPolicy::kCombined || policy == CullPolicy::kTangentPlane ||
+         policy == CullPolicy::kTangentPlaneFrustum;
 }
 
 CullBounds cullBounds(const techniques::SurfacePatches& patches, const FactorCorners& corners,
-                      double world_scale) {
+                      double world_scale, float level) {
   CullBounds result;
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const std::array<double, 2> quad_k = chordFactors(tess::Domain::kQuad, level);
+  const std::array<double, 2> triangle_k = chordFactors(tess::Domain::kTriangle, level);
+  result.chord_factors = {std::nextafter(float(quad_k[0]), kInf), std::nextafter(float(quad_k[1]), kInf),
+                          std::nextafter(float(triangle_k[0]), kInf),
+                          std::nextafter(float(triangle_k[1]), kInf)};
   result.global_margin = float(kGlobalMarginOfDiagonal * world_scale);
   const size_t count = patches.patchCount();
   result.patches.resize(count);
@@ -273,6 +325,8 @@ CullBounds cullBounds(const techniques::SurfacePatches& patches, const FactorCor
     } else {
       ++result.patches_without_cone;
     }
+    if (bounds) setTangentPlane(corners.domains[p], *bounds, out);
+    if (out.tangent_plane.empty()) ++result.patches_without_tangent_plane;
   }
   // Per welded position, the largest bulge of the patches around it.
   std::map<PositionKey, double> vertex_margin;
@@ -296,6 +350,7 @@ CullParams cullParams(CullPolicy policy, const view::View& view, const CullBound
   CullParams params;
   params.policy = policy;
   params.global_margin = bounds.global_margin;
+  params.chord_factors = bounds.chord_factors;
   params.eye = {float(view.eye[0]), float(view.eye[1]), float(view.eye[2])};
   const auto& m = view.view_projection.m;
   auto row = [&](int r) { return std::array<double, 4>{m[0][r], m[1][r], m[2][r], m[3][r]}; };
@@ -361,6 +416,25 @@ bool cullsCone(const CullParams& params, const CullPatchBounds& patch) {
   return true;
 }
 
+// tbCullTangentPlaneHull.
+bool cullsTangentPlaneHull(const CullParams& params, const CullPatchBounds& patch) {
+  if (patch.tangent_plane.empty()) return false;
+  const mesh::Vec3f d = subF(params.eye, patch.corner_position[0]);
+  const float distance = std::sqrt(dotF(d, d));
+  const float reach = distance * patch.tangent_normal_max + patch.tangent_offset_max;
+  const bool quad = patch.corner_count == 4;
+  const float k2 = quad ? params.chord_factors[0] : params.chord_factors[2];
+  const float k3 = quad ? params.chord_factors[1] : params.chord_factors[3];
+  const float chord = (distance + patch.tangent_reach) *
+                      (patch.tangent_first_times_second * k2 + patch.tangent_second_squared * k3);
+  const float tolerance = kTangentPlaneMargin * reach + chord;
+  for (const std::array<float, 4>& c : patch.tangent_plane) {
+    const float f = dotF(d, {c[0], c[1], c[2]}) + c[3];
+    if (!(f < -tolerance)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool cullsPatch(const CullParams& params, const CullPatchBounds& patch) {
@@ -379,6 +453,11 @@ bool cullsPatch(const CullParams& params, const CullPatchBounds& patch) {
       return cullsCone(params, patch);
     case CullPolicy::kCombined:
       return cullsFrustumHull(params, patch) || cullsCone(params, patch);
+    case CullPolicy::kTangentPlane:
+      return cullsCone(params, patch) || cullsTangentPlaneHull(params, patch);
+    case CullPolicy::kTangentPlaneFrustum:
+      return cullsFrustumHull(params, patch) || cullsCone(params, patch) ||
+             cullsTangentPlaneHull(params, patch);
   }
   return false;
 }
@@ -389,46 +468,6 @@ std::vector<uint8_t> cullDecisions(const CullParams& params, const CullBounds& b
     culled[p] = cullsPatch(params, bounds.patches[p]) ? 1 : 0;
   }
   return culled;
-}
-
-gpu::TcsCullPolicy tcsCullPolicy(const CullParams& params, const CullBounds& bounds,
-                                 const gpu::GpuPatchProgram& program) {
-  return {cullParamWords(params), cullPatchWords(bounds, program)};
-}
-
-std::vector<uint32_t> cullParamWords(const CullParams& params) {
-  std::vector<uint32_t> words;
-  words.reserve(kParamWords);
-  for (const std::array<float, 4>& plane : params.planes) {
-    for (float v : plane) putFloat(words, v);
-  }
-  putVec(words, params.eye, 0);
-  putFloat(words, params.global_margin);
-  words.push_back(uint32_t(params.policy));
-  words.push_back(0);
-  words.push_back(0);
-  return words;
-}
-
-std::vector<uint32_t> cullPatchWords(const CullBounds& bounds,
-                                     const gpu::GpuPatchProgram& program) {
-  std::vector<uint32_t> words;
-  words.reserve(size_t(program.patch_count) * gpu::kTcsCullPatchWords);
-  for (uint32_t i = 0; i < program.patch_count; ++i) {
-    const size_t p = program.patch_ids.empty() ? i : program.patch_ids[i];
-    const CullPatchBounds& b = bounds.patches.at(p);
-    for (int c = 0; c < 4; ++c) putVec(words, b.corner_position[c], b.corner_margin[c]);
-    for (int c = 0; c < 4; ++c) putVec(words, b.corner_normal[c], 0);
-    putVec(words, b.cone_axis, b.cone_sine);
-    words.push_back(b.corner_count);
-    words.push_back(uint32_t(b.hull.size()));
-    putFloat(words, b.displacement_bound);
-    words.push_back(0);
-    for (size_t h = 0; h < kCullHullPoints; ++h) {
-      putVec(words, h < b.hull.size() ? b.hull[h] : mesh::Vec3f{0, 0, 0}, 0);
-    }
-  }
-  return words;
 }
 
 }  // namespace tb::lod

@@ -6,6 +6,7 @@
 //
 //   set 1, binding 4   the policy and the view (TbCullParams)
 //   set 1, binding 5   per patch: corners, the cone of normals and the control hull
+//   set 1, binding 6   tangent_plane's Bernstein coefficients, which TbCullPatch::tangent indexes
 //
 // Policies (TbCullParams::policy):
 // - backface_lp2: every corner's normal faces away from the eye, n . (eye - p) < 0 (CAPCOM,
@@ -22,6 +23,15 @@
 //   geometric normals lie within angle t of the axis a; it faces away everywhere when every
 //   hull point q has angle(q - eye, a) < 90 deg - t, i.e. (q - eye) . a > |q - eye| sin t.
 // - combined: frustum_hull or cone.
+// - tangent_plane: back-patch culling with the parametric tangent plane (Loop, Niessner &
+//   Eisenacher, "Effective Back-Patch Culling for Hardware Tessellation", VMV 2011): the
+//   Bernstein coefficients c_k = (eye - O) . n_k + w_k of f = (eye - P) . (P_u x P_v), O the
+//   patch's first corner, precomputed per patch (harness/lod/tangent_plane.h); culled when
+//   every c_k < -(margin (|eye - O| max|n_k| + max|w_k|) + chord margin), the chord margin
+//   (|eye - O| + R) (G1 G2 K2 + G2^2 K3) covering the tessellated triangles, whose planes are
+//   chords of the surface; or the cone culls it (the cone alone for a patch without
+//   coefficients: not polynomial), so it culls at least what the cone culls.
+// - tangent_plane_frustum: frustum_hull or tangent_plane.
 // Each test widens by the patch's displacement bound (world units; 0 until displacement).
 #ifndef TB_CULL_GLSL
 #define TB_CULL_GLSL
@@ -35,8 +45,11 @@ const uint kTbCullFrustumLp2Exact = 3u;
 const uint kTbCullFrustumHull = 4u;
 const uint kTbCullCone = 5u;
 const uint kTbCullCombined = 6u;
+const uint kTbCullTangentPlane = 7u;
+const uint kTbCullTangentPlaneFrustum = 8u;
 
 const uint kTbCullHullPoints = 20u;  // hull[] capacity per patch
+const float kTbCullTangentMargin = 1e-3;  // harness/lod/cull_policy.h kTangentPlaneMargin
 
 // Harness specialisation constant: 0, no culling; 1, the TCS culls with the policy
 // TbCullParams::policy names (set 1, bindings 4 and 5) by writing outer level 0;
@@ -52,6 +65,7 @@ layout(std430, set = 1, binding = 4) readonly buffer TbCullParamsBlock {
   uint policy;
   uint pad0;
   uint pad1;
+  vec4 chord_factors;    // tangent_plane's chord margin: quad K2, K3, triangle K2, K3
 } tb_cull;
 
 struct TbCullPatch {
@@ -59,11 +73,20 @@ struct TbCullPatch {
   vec4 corner_normal[4];    // xyz: the welded position's unit normal
   vec4 cone;                // xyz: unit axis; w: sin of the half angle, > 1 when there is no cone
   uvec4 header;             // x: corners (3 or 4), y: hull points, z: displacement bound bits
+  // x: first coefficient in tb_cull_tangent_planes, y: coefficients (0: none, use the cone),
+  // z: max |n_k| bits, w: max |w_k| bits
+  uvec4 tangent;
+  vec4 tangent_chord;  // x: the net's reach R from O, y: G1 G2, z: G2^2 (chord margin)
   vec4 hull[kTbCullHullPoints];  // xyz
 };
 
 layout(std430, set = 1, binding = 5) readonly buffer TbCullPatches {
   TbCullPatch tb_cull_patches[];
+};
+
+// {n_k, w_k}: world units squared and cubed.
+layout(std430, set = 1, binding = 6) readonly buffer TbCullTangentPlanes {
+  vec4 tb_cull_tangent_planes[];
 };
 
 // Signed distance of p to plane k (positive inside).
@@ -127,6 +150,30 @@ bool tbCullCone(uint patch_index) {
   return true;
 }
 
+bool tbCullTangentPlaneHull(uint patch_index) {
+  const uvec4 tangent = tb_cull_patches[patch_index].tangent;
+  if (tangent.y == 0u) return false;
+  precise vec3 d = tb_cull.eye.xyz - tb_cull_patches[patch_index].corner_position[0].xyz;
+  precise float distance = sqrt(tbDot(d, d));
+  precise float reach = distance * uintBitsToFloat(tangent.z) + uintBitsToFloat(tangent.w);
+  const vec4 bound = tb_cull_patches[patch_index].tangent_chord;
+  const bool quad = tb_cull_patches[patch_index].header.x == 4u;
+  const float k2 = quad ? tb_cull.chord_factors.x : tb_cull.chord_factors.z;
+  const float k3 = quad ? tb_cull.chord_factors.y : tb_cull.chord_factors.w;
+  precise float chord = (distance + bound.x) * (bound.y * k2 + bound.z * k3);
+  precise float tolerance = kTbCullTangentMargin * reach + chord;
+  for (uint k = 0u; k < tangent.y; ++k) {
+    const vec4 c = tb_cull_tangent_planes[tangent.x + k];
+    precise float f = tbDot(d, c.xyz) + c.w;
+    if (!(f < -tolerance)) return false;
+  }
+  return true;
+}
+
+bool tbCullTangentPlane(uint patch_index) {
+  return tbCullCone(patch_index) || tbCullTangentPlaneHull(patch_index);
+}
+
 // True when the policy culls patch `patch_index`.
 bool tbCullPatch(uint patch_index) {
   const uint policy =
@@ -137,6 +184,10 @@ bool tbCullPatch(uint patch_index) {
   if (policy == kTbCullFrustumHull) return tbCullFrustumHull(patch_index);
   if (policy == kTbCullCone) return tbCullCone(patch_index);
   if (policy == kTbCullCombined) return tbCullFrustumHull(patch_index) || tbCullCone(patch_index);
+  if (policy == kTbCullTangentPlane) return tbCullTangentPlane(patch_index);
+  if (policy == kTbCullTangentPlaneFrustum) {
+    return tbCullFrustumHull(patch_index) || tbCullTangentPlane(patch_index);
+  }
   return false;
 }
 

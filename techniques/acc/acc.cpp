@@ -234,8 +234,11 @@ class AccPatches final : public techniques::SurfacePatches {
   // front as it is.
   std::optional<techniques::PatchCullBounds> cullBounds(size_t patch) const override {
     const std::array<mesh::Vec3d, 16>& b = points_d_[patch].b;
-    return techniques::PatchCullBounds{{b.begin(), b.end()},
+    techniques::PatchCullBounds bounds{{b.begin(), b.end()},
                                        techniques::withoutZeros(techniques::bicubicNormalPatch(b))};
+    bounds.bezier_net = bounds.hull;
+    bounds.bezier_degree = 3;
+    return bounds;
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override;

@@ -1,5 +1,6 @@
 #include "techniques/gregory_acc/gregory_bounds.h"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -83,6 +84,26 @@ VectorPoly scaledDerivative(const VectorPoly& frozen, const std::array<ScalarPol
   return x;
 }
 
+// True when every corner's two face points agree within 1e-9 of the control points'
+// extent (a regular neighbourhood): then the patch is the polynomial patch with their
+// midpoints in its interior slots, whose net the tangent_plane policy reads. 1e-9 of the
+// extent moves the surface far less than the policy's 1e-3 margin.
+bool faceFree(const GregoryPoints<double>& cp, size_t corners, size_t points) {
+  mesh::Vec3d lo = cp[0], hi = cp[0];
+  for (size_t i = 0; i < points; ++i) {
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cp[i][a]), hi[a] = std::max(hi[a], cp[i][a]);
+  }
+  const double tolerance = 1e-9 * length(hi - lo);
+  for (size_t c = 0; c < corners; ++c) {
+    if (!(length(cp[c * 5 + kFp] - cp[c * 5 + kFm]) <= tolerance)) return false;
+  }
+  return true;
+}
+
+mesh::Vec3d faceMidpoint(const GregoryPoints<double>& cp, uint32_t corner) {
+  return (cp[corner * 5 + kFp] + cp[corner * 5 + kFm]) * 0.5;
+}
+
 }  // namespace
 
 techniques::PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp) {
@@ -110,6 +131,13 @@ techniques::PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& c
   techniques::PatchCullBounds bounds;
   bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerPatch);
   bounds.normal_generators = techniques::withoutZeros((x_u * x_v).c);
+  if (faceFree(cp, 4, kPointsPerPatch)) {
+    for (const QuadNetInterior& slot : kQuadNetInterior) {
+      frozen.at(slot.column, slot.row) = faceMidpoint(cp, slot.corner);
+    }
+    bounds.bezier_net = frozen.c;
+    bounds.bezier_degree = 3;
+  }
   return bounds;
 }
 
@@ -137,6 +165,13 @@ techniques::PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double
   techniques::PatchCullBounds bounds;
   bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerTriangle);
   bounds.normal_generators = techniques::withoutZeros((x_1 * x_2).c);
+  if (faceFree(cp, 3, kPointsPerTriangle)) {
+    for (const TriangleNetInterior& slot : kTriangleNetInterior) {
+      frozen.at(slot.i, slot.j) = faceMidpoint(cp, slot.corner);
+    }
+    bounds.bezier_net = frozen.c;
+    bounds.bezier_degree = 4;
+  }
   return bounds;
 }
 

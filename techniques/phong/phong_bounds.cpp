@@ -29,6 +29,8 @@ techniques::PatchCullBounds phongCullBounds(const PhongTriangle<double>& tri, do
   bounds.hull = phongQuadraticNet(tri, alpha);
   bounds.normal_generators =
       techniques::withoutZeros(techniques::triangleNormalPatch(2, bounds.hull));
+  bounds.bezier_net = bounds.hull;
+  bounds.bezier_degree = 2;
   return bounds;
 }
 

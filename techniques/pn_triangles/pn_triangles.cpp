@@ -54,8 +54,12 @@ class PnPatches final : public techniques::TrianglePatchesBase {
         techniques::withoutZeros(techniques::triangleNormalPatch(3, net));
     const auto& perm = build_.records[patch].perm;
     const bool mirrored = (perm[1] + 3 - perm[0]) % 3 != 1;
-    return techniques::PatchCullBounds{
+    techniques::PatchCullBounds bounds{
         net, mirrored ? techniques::negated(std::move(normals)) : std::move(normals)};
+    bounds.bezier_net = net;
+    bounds.bezier_degree = 3;
+    bounds.bezier_mirrored = mirrored;
+    return bounds;
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {

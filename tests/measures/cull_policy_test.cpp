@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/gpu/patch_program.h"
@@ -15,6 +16,7 @@
 #include "core/view/camera.h"
 #include "harness/measures/common/instruction_counts/instructions.h"
 #include "harness/measures/culling/culling_cost.h"
+#include "harness/lod/tangent_plane.h"
 #include "harness/suite/camera_path.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
@@ -35,7 +37,8 @@ view::View viewFrom(const mesh::Vec3d& eye, const mesh::Vec3d& target, double ne
                                 .far_plane = far_plane});
 }
 
-// One flat quad patch in the plane z = 0 facing +z, corners (-1,-1), (1,-1), (1,1), (-1,1).
+// One flat quad patch in the plane z = 0 facing +z, corners (-1,-1), (1,-1), (1,1), (-1,1),
+// with its tangent-plane coefficients as a bicubic patch (u along x, v along y).
 lod::CullPatchBounds flatQuad(double offset_x = 0) {
   lod::CullPatchBounds patch;
   const double xy[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
@@ -46,6 +49,18 @@ lod::CullPatchBounds flatQuad(double offset_x = 0) {
   }
   patch.cone_axis = {0, 0, 1};
   patch.cone_sine = 0;
+  techniques::PatchCullBounds net;
+  net.bezier_degree = 3;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) net.bezier_net.push_back({offset_x - 1 + 2 * i / 3.0, -1 + 2 * j / 3.0, 0});
+  }
+  double normal_max = 0;
+  for (const auto& c : lod::tangentPlaneCoefficients(techniques::PatchDomain::kQuad, net,
+                                                     net.bezier_net[0])) {
+    patch.tangent_plane.push_back({float(c[0]), float(c[1]), float(c[2]), float(c[3])});
+    normal_max = std::max(normal_max, std::hypot(c[0], c[1], c[2]));
+  }
+  patch.tangent_normal_max = float(normal_max);
   return patch;
 }
 
@@ -56,8 +71,8 @@ lod::CullBounds boundsOfOne(const lod::CullPatchBounds& patch) {
   return bounds;
 }
 
-TEST(CullPolicy, NamesRoundTripAndOnlyHullAndConeAreConservative) {
-  ASSERT_EQ(lod::allCullPolicies().size(), 7u);
+TEST(CullPolicy, NamesRoundTripAndOnlyHullConeAndTangentPlaneAreConservative) {
+  ASSERT_EQ(lod::allCullPolicies().size(), 9u);
   EXPECT_EQ(lod::allCullPolicies().front(), lod::CullPolicy::kNone);
   for (lod::CullPolicy policy : lod::allCullPolicies()) {
     EXPECT_EQ(lod::parseCullPolicy(lod::cullPolicyName(policy)), policy);
@@ -65,7 +80,10 @@ TEST(CullPolicy, NamesRoundTripAndOnlyHullAndConeAreConservative) {
   }
   EXPECT_FALSE(lod::parseCullPolicy("frustum"));
   EXPECT_TRUE(lod::isConservative(lod::CullPolicy::kCone));
+  EXPECT_TRUE(lod::isConservative(lod::CullPolicy::kTangentPlane));
+  EXPECT_TRUE(lod::isConservative(lod::CullPolicy::kTangentPlaneFrustum));
   EXPECT_FALSE(lod::isConservative(lod::CullPolicy::kBackfaceLp2));
+  EXPECT_FALSE(lod::isConservative(lod::CullPolicy::kFrustumLp2Exact));
 }
 
 // A flat quad facing +z: seen from the front nothing culls it; from behind, every back-face
@@ -92,6 +110,15 @@ TEST(CullPolicy, BytesPerPatchFollowTheLayoutAndHalvesSplitCombined) {
   EXPECT_EQ(lod::cullPolicyHalves(P::kBackfaceLp2).outside_frustum, P::kNone);
   EXPECT_EQ(lod::cullPolicyHalves(P::kFrustumLp2Global).back_facing, P::kNone);
   EXPECT_EQ(lod::cullPolicyHalves(P::kNone).back_facing, P::kNone);
+  // tangent_plane: its header and 81 coefficients where the patch has them, else the cone.
+  lod::CullPatchBounds bicubic = quad;
+  bicubic.tangent_plane.resize(81);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kTangentPlane, {bicubic}), 16 + 16 + 16 + 81 * 16);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kTangentPlane, {quad}), 16 + 16 + 16 + 256);
+  EXPECT_EQ(lod::cullBytesPerPatch(P::kTangentPlaneFrustum, {bicubic}),
+            16 + 16 + 16 + 81 * 16 + 256);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kTangentPlaneFrustum).back_facing, P::kTangentPlane);
+  EXPECT_EQ(lod::cullPolicyHalves(P::kTangentPlaneFrustum).outside_frustum, P::kFrustumHull);
 }
 
 // Each policy's TCS cost, counted with the policy fixed at compile time: none adds nothing,
@@ -139,6 +166,8 @@ TEST(CullPolicy, FlatQuadFrontBackAndOffScreen) {
   EXPECT_TRUE(culledFromBack(lod::CullPolicy::kBackfaceLp2));
   EXPECT_TRUE(culledFromBack(lod::CullPolicy::kCone));
   EXPECT_TRUE(culledFromBack(lod::CullPolicy::kCombined));
+  EXPECT_TRUE(culledFromBack(lod::CullPolicy::kTangentPlane));
+  EXPECT_TRUE(culledFromBack(lod::CullPolicy::kTangentPlaneFrustum));
   EXPECT_FALSE(culledFromBack(lod::CullPolicy::kFrustumHull));
   EXPECT_FALSE(culledFromBack(lod::CullPolicy::kFrustumLp2Global));
 
@@ -146,7 +175,8 @@ TEST(CullPolicy, FlatQuadFrontBackAndOffScreen) {
   const lod::CullBounds aside = boundsOfOne(flatQuad(45));
   for (lod::CullPolicy policy :
        {lod::CullPolicy::kFrustumLp2Global, lod::CullPolicy::kFrustumLp2Exact,
-        lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCombined}) {
+        lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCombined,
+        lod::CullPolicy::kTangentPlaneFrustum}) {
     EXPECT_TRUE(lod::cullsPatch(lod::cullParams(policy, front, aside), aside.patches[0]))
         << lod::cullPolicyName(policy);
   }
@@ -176,6 +206,28 @@ TEST(CullPolicy, ConeKeepsAPatchSeenEdgeOnOrWithinItsHalfAngle) {
   bounds = boundsOfOne(patch);
   EXPECT_FALSE(
       lod::cullsPatch(lod::cullParams(lod::CullPolicy::kCone, below, bounds), bounds.patches[0]));
+}
+
+// The tangent plane of a flat patch seen edge-on is 0 on the whole domain: kept. Slightly
+// below the plane it culls; the same patch with its coefficients' sign flipped (a wrong
+// convention, the control) culls from the front instead and keeps it from behind.
+TEST(CullPolicy, TangentPlaneKeepsAPatchSeenEdgeOnAndFollowsItsSign) {
+  lod::CullPatchBounds patch = flatQuad();
+  patch.cone_sine = 2;  // no cone: the tangent-plane half alone
+  const auto culls = [](const lod::CullPatchBounds& p, const view::View& view) {
+    return lod::cullsPatch(lod::cullParams(lod::CullPolicy::kTangentPlane, view, boundsOfOne(p)), p);
+  };
+  const view::View edge_on = viewFrom({0, -20, 0}, {0, 0, 0}, 0.1, 100);
+  const view::View below = viewFrom({0, -20, -1}, {0, 0, 0}, 0.1, 100);
+  const view::View above = viewFrom({0, -20, 1}, {0, 0, 0}, 0.1, 100);
+  EXPECT_FALSE(culls(patch, edge_on));
+  EXPECT_TRUE(culls(patch, below));
+  EXPECT_FALSE(culls(patch, above));
+  for (auto& c : patch.tangent_plane) {
+    for (float& v : c) v = -v;
+  }
+  EXPECT_TRUE(culls(patch, above));
+  EXPECT_FALSE(culls(patch, below));
 }
 
 // The frustum planes are unit-normal and contain what the view sees: the target point is
@@ -209,7 +261,7 @@ TEST(CullPolicyGpu, TwinEqualsEveryTechniqueTcsOnEveryFrameOfTheBundledPaths) {
         *technique, mesh::loadObjFile(testing::assetPath(asset)), technique->variants().front());
     const mesh::Aabb box = mesh::boundsOf(surface->controlMesh());
     const lod::CullBounds bounds =
-        lod::cullBounds(*surface, lod::factorCorners(*surface), length(box.max - box.min));
+        lod::cullBounds(*surface, lod::factorCorners(*surface), length(box.max - box.min), 16);
     const std::vector<gpu::GpuPatchProgram> programs = surface->gpuPrograms();
     ASSERT_FALSE(programs.empty()) << technique_id;
     const tess::Levels level_one{};

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <span>
 
 #include "core/mesh/normals.h"
 #include "core/mesh/obj_loader.h"
@@ -26,8 +27,14 @@ namespace tb {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr lod::CullPolicy kConservative[] = {lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCone,
-                                             lod::CullPolicy::kCombined};
+constexpr lod::CullPolicy kConservative[] = {
+    lod::CullPolicy::kFrustumHull,  lod::CullPolicy::kCone,
+    lod::CullPolicy::kCombined,     lod::CullPolicy::kTangentPlane,
+    lod::CullPolicy::kTangentPlaneFrustum};
+// The conservative tests apart: combined and tangent_plane_frustum cull exactly what one of
+// their halves culls (checked per frame below), so their false culls are their halves'.
+constexpr lod::CullPolicy kConservativeTests[] = {
+    lod::CullPolicy::kFrustumHull, lod::CullPolicy::kCone, lod::CullPolicy::kTangentPlane};
 
 techniques::BuiltSurface buildDefault(const char* technique_id, const mesh::Mesh& mesh) {
   const techniques::Technique* technique =
@@ -199,6 +206,24 @@ TEST(Culling, PatchesStraddlingTheSilhouetteAreNeverConservativelyCulled) {
   EXPECT_GT(straddling_seen, 20u);
 }
 
+// combined = frustum_hull or cone, tangent_plane_frustum = frustum_hull or tangent_plane,
+// patch by patch on every view (CPU twin; the twin equals the TCS, cull_policy_test.cpp).
+void expectUnionsOfHalves(const lod::CullBounds& bounds, std::span<const view::View> views,
+                          const std::string& label) {
+  using P = lod::CullPolicy;
+  for (const view::View& view : views) {
+    auto decide = [&](P policy) { return lod::cullDecisions(lod::cullParams(policy, view, bounds), bounds); };
+    const std::vector<uint8_t> hull = decide(P::kFrustumHull), cone = decide(P::kCone),
+                               tangent = decide(P::kTangentPlane),
+                               combined = decide(P::kCombined),
+                               tangent_frustum = decide(P::kTangentPlaneFrustum);
+    for (size_t p = 0; p < hull.size(); ++p) {
+      ASSERT_EQ(combined[p], hull[p] | cone[p]) << label << " patch " << p;
+      ASSERT_EQ(tangent_frustum[p], hull[p] | tangent[p]) << label << " patch " << p;
+    }
+  }
+}
+
 struct AssetCase {
   std::string technique;
   std::string asset;
@@ -220,9 +245,10 @@ std::vector<AssetCase> everyBundledAsset() {
   return cases;
 }
 
-// Acceptance 2: frustum_hull, cone and combined make no false cull on any bundled asset a
-// technique accepts, along orbit (every frame), dolly and flyby (every third frame), at
-// level 4 and 960 x 540; the twin equals the TCS throughout.
+// Acceptance 2: frustum_hull, cone and tangent_plane make no false cull on any bundled
+// asset a technique accepts, along orbit (every frame), dolly and flyby (every third frame),
+// at level 4 and 960 x 540; the twin equals the TCS throughout. combined and
+// tangent_plane_frustum cull on each frame exactly the union of their halves' culls.
 TEST(Culling, ConservativePoliciesMakeNoFalseCullOnAnyBundledAssetAndPath) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   size_t runs = 0, culled = 0;
@@ -245,13 +271,14 @@ TEST(Culling, ConservativePoliciesMakeNoFalseCullOnAnyBundledAssetAndPath) {
       std::vector<view::View> views;
       const size_t step = std::string(path) == "orbit" ? 1 : 3;
       for (size_t f = 0; f < sampled.views.size(); f += step) views.push_back(sampled.views[f]);
-      const auto frames = run.frames(kConservative, views);
-      for (size_t k = 0; k < std::size(kConservative); ++k) {
+      const auto frames = run.frames(kConservativeTests, views);
+      expectUnionsOfHalves(run.bounds(), views, c.technique + " " + c.asset);
+      for (size_t k = 0; k < std::size(kConservativeTests); ++k) {
         for (const measures::CullingFrame& f : frames[k]) {
           ASSERT_TRUE(f.oracle_measured) << run.gpuSkipReason();
           EXPECT_EQ(f.false_culls, 0u)
               << c.technique << " " << c.asset << " " << path << " frame " << f.frame * step << " "
-              << lod::cullPolicyName(kConservative[k]) << ": " << f.false_cull_pixels << " px";
+              << lod::cullPolicyName(kConservativeTests[k]) << ": " << f.false_cull_pixels << " px";
           EXPECT_EQ(f.twin_mismatches, 0u) << c.technique << " " << c.asset;
           EXPECT_FALSE(f.gpu_tes_invocations != f.tes_invocations) << c.technique << " " << c.asset;
           culled += f.culled_patches;
@@ -262,6 +289,32 @@ TEST(Culling, ConservativePoliciesMakeNoFalseCullOnAnyBundledAssetAndPath) {
   }
   EXPECT_GT(runs, 60u);
   EXPECT_GT(culled, 0u);
+}
+
+// Acceptance 4, the control: tangent_plane with its coefficients' sign flipped (it culls
+// the patches facing the eye) is caught by the false-cull check above on its first asset.
+TEST(Culling, AFlippedTangentPlaneSignIsCaughtAsFalseCulls) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_torus.obj"));
+  const techniques::BuiltSurface patches = buildDefault("acc", mesh);
+  const std::vector<view::View> views = viewsFromAfar(mesh, 3);
+  const lod::CullPolicy policy[] = {lod::CullPolicy::kTangentPlane};
+  for (bool flip : {false, true}) {
+    measures::CullingRun run(*patches, &context, "",
+                             {.level = 16, .render_scale = 0.25, .flip_tangent_plane = flip});
+    uint64_t false_culls = 0, culled = 0;
+    const std::vector<std::vector<measures::CullingFrame>> frames = run.frames(policy, views);
+    for (const measures::CullingFrame& f : frames[0]) {
+      false_culls += f.false_culls;
+      culled += f.culled_patches;
+    }
+    EXPECT_GT(culled, 0u) << "flip " << flip;
+    if (flip) {
+      EXPECT_GT(false_culls, 0u) << "the flipped sign culls patches facing the eye";
+    } else {
+      EXPECT_EQ(false_culls, 0u);
+    }
+  }
 }
 
 }  // namespace

@@ -74,7 +74,15 @@ CullingRun::CullingRun(const techniques::SurfacePatches& patches, gpu::Context* 
                        std::string gpu_unavailable, const CullingOptions& options)
     : patches_(patches), programs_(patches.gpuPrograms()), context_(context), options_(options) {
   bounds_ = lod::cullBounds(patches, lod::factorCorners(patches),
-                            mesh::diagonalOf(mesh::boundsOf(patches.controlMesh())));
+                            mesh::diagonalOf(mesh::boundsOf(patches.controlMesh())),
+                            float(options.level));
+  if (options.flip_tangent_plane) {
+    for (lod::CullPatchBounds& patch : bounds_.patches) {
+      for (std::array<float, 4>& c : patch.tangent_plane) {
+        for (float& v : c) v = -v;
+      }
+    }
+  }
   const tess::Levels levels = uniformLevels(options.level);
   const tess::Tessellation quad =
       tess::tessellate(tess::Domain::kQuad, tess::Spacing::kInteger, levels);
@@ -87,7 +95,7 @@ CullingRun::CullingRun(const techniques::SurfacePatches& patches, gpu::Context* 
     patch_triangles_.push_back(t.triangles.size());
   }
   for (const gpu::GpuPatchProgram& program : programs_) {
-    device_policies_.push_back({{}, lod::cullPatchWords(bounds_, program)});
+    device_policies_.push_back(lod::cullPatchData(bounds_, program));
   }
   if (programs_.empty()) {
     gpu_skip_reason_ = "the technique has no GPU program";

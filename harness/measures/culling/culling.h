@@ -91,6 +91,9 @@ struct CullingOptions {
   uint32_t level = 8;  // uniform integer tessellation level of every patch
   // The oracle's render size as a fraction of each view's viewport (1: the path's own).
   double render_scale = 1;
+  // Control, for tests (made to fail): every tangent-plane coefficient negated, a wrong sign
+  // convention under which tangent_plane culls the patches that face the eye.
+  bool flip_tangent_plane = false;
 };
 
 class CullingRun {

@@ -303,6 +303,12 @@ class CullingMeasure final : public Measure {
                              std::to_string(bounds.patches_without_hull) +
                              " have no control hull (their corners stand in)");
     }
+    if (bounds.patches_without_tangent_plane > 0) {
+      result.notes.push_back(std::to_string(bounds.patches_without_tangent_plane) + " of " +
+                             std::to_string(bounds.patches.size()) +
+                             " patches have no polynomial Bezier net (rational or displaced "
+                             "patches, or sub-patches): tangent_plane tests them with the cone");
+    }
     for (size_t k = 0; k < policies.size(); ++k) {
       results::MetricRow row;
       row.keys["policy"] = std::string(lod::cullPolicyName(policies[k]));
