@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "harness/report/published_figures.h"
+#include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
 namespace tb::report {
@@ -19,12 +20,6 @@ std::string figure(double value) {
     return fmt::format("{}", static_cast<long long>(value));
   }
   return fmt::format("{:.4g}", value);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 std::string orNone(const std::string& text, const char* none) {
@@ -140,8 +135,8 @@ TextTable publishedMemory(const results::Results& results) {
       const auto it = ours.find({who, published.level});
       if (it == ours.end()) continue;
       const Values& v = it->second;
-      table.rows.push_back({"ours", who, std::to_string(published.level), figure(median(v.plain_mb)),
-                            figure(median(v.technique_mb)), figure(median(v.ratio))});
+      table.rows.push_back({"ours", who, std::to_string(published.level), figure(medianValue(v.plain_mb)),
+                            figure(medianValue(v.technique_mb)), figure(medianValue(v.ratio))});
     }
   }
   table.footnote.push_back("Published: " + sourceCitation(kPublishedMemorySeed) +

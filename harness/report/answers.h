@@ -1,0 +1,30 @@
+// The answers block that opens report.md and report.html: one line per question a user brings
+// to a run (which technique for this asset; did anything crack; what ACC saves against
+// triangles; which culling policy; does a factor policy beat uniform; Gauss-Seidel or Jacobi
+// at 8 dispatches), each with the figure and the measure, metric and rows it comes from.
+// Pure over the results model; a question the run has no rows for says so.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "harness/report/decision.h"
+#include "harness/results/results_model.h"
+
+namespace tb::report {
+
+struct Answer {
+  std::string question;  // "Which technique for this asset?"
+  std::string answer;    // the answer with its figure
+  std::string source;    // "error: hausdorff; adaptivity: ...": where the figure comes from
+};
+
+// The culling policies that never cull a patch covering a pixel (lod::isConservative: the
+// hull and cone tests); tests/report checks the two lists agree.
+const std::vector<std::string>& conservativeCullPolicies();
+
+// The answers, in the order above; `decisions` from decideAssets(results).
+std::vector<Answer> answerQuestions(const results::Results& results,
+                                    const std::vector<AssetDecision>& decisions);
+
+}  // namespace tb::report
