@@ -161,8 +161,13 @@ TextTable publishedInstructions(const results::Results& results) {
                   "published loads (count)",
                   "ours ALU, vector (count)",
                   "ours ALU, scalar (count)",
-                  "ours loads (count)"};
-  table.numeric = {false, false, false, true, true, true, true, true};
+                  "ours loads (count)",
+                  "assets (count)"};
+  table.numeric = {false, false, false, true, true, true, true, true, true};
+  // The figures are the shaders', the same on every asset: one row per distinct figure line,
+  // with the number of assets it was measured on (two lines for one stage would show the
+  // figures differ between assets).
+  std::map<std::vector<std::string>, size_t> seen;
   std::vector<std::string> sources;
   for (const results::Record& record : results.records) {
     for (const results::MeasureResult& m : record.measures) {
@@ -179,11 +184,18 @@ TextTable publishedInstructions(const results::Results& results) {
         for (const results::Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
         // published_loads 0: not published (the measure's notes).
         if (v["published_loads"] == "0") v["published_loads"] = "";
-        table.rows.push_back(
-            {source_name, record.technique + "/" + record.variant,
-             what != row.keys.end() ? what->second : "",
-             v["published_alu"], v["published_loads"], v["ours_alu_vector"], v["ours_alu_scalar"],
-             v["ours_loads"]});
+        std::vector<std::string> line{source_name, record.technique + "/" + record.variant,
+                                      what != row.keys.end() ? what->second : "",
+                                      v["published_alu"], v["published_loads"],
+                                      v["ours_alu_vector"], v["ours_alu_scalar"], v["ours_loads"]};
+        const auto [it, added] = seen.emplace(line, table.rows.size());
+        if (added) {
+          line.push_back("1");
+          table.rows.push_back(std::move(line));
+        } else {
+          std::string& count = table.rows[it->second].back();
+          count = std::to_string(std::stoul(count) + 1);
+        }
       }
     }
   }
