@@ -58,7 +58,8 @@ Answer whichTechnique(const std::vector<AssetDecision>& decisions) {
     a.answer += fmt::format("{}**{}** on {} of {} ({})", a.answer.empty() ? "" : "; ", who,
                             assets.size(), decisions.size(), joined(assets));
   }
-  a.source = std::string("the decision tables below; rule: ") + kDecisionRule;
+  a.source = "decision per surface asset below (error, triangles at 1 px, memory, "
+             "instructions, watertightness), under the rule stated there";
   return a;
 }
 
