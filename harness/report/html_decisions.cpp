@@ -106,7 +106,7 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
   for (const AssetDecision& d : decisions) {
     const auto points = drawable(d);
     if (points.size() < 2) {
-      without.push_back(d.asset);
+      without.push_back(d.asset + ", recommended " + d.recommended());
       continue;
     }
     if (!charts_available) continue;
@@ -119,7 +119,7 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
   if (!boxes.empty()) *body += "<div class=\"charts\">\n" + boxes + "</div>\n";
   if (!without.empty()) {
     std::string list;
-    for (const std::string& asset : without) list += (list.empty() ? "" : ", ") + asset;
+    for (const std::string& asset : without) list += (list.empty() ? "" : "; ") + asset;
     *body += "<p class=\"note\">No chart (fewer than two candidates with both figures; the "
              "decision tables of report.md list them): " +
              escapeHtml(list) + ".</p>\n";

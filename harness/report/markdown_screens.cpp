@@ -297,16 +297,12 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
     if (measured_by.count(technique.technique) > 0) techniques.push_back(technique);
   }
   if (techniques.empty()) return;  // no technique ran it (a run of simulations alone, say)
-  *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
-  std::vector<std::string> header{"asset"};
-  for (const auto& technique : techniques) {
-    header.push_back(technique.technique +
-                     (technique.variants.empty() ? "" : "/" + technique.variants.front()));
-  }
-  appendHeader(out, header);
+  // The grid first, then only the columns and rows with a figure (or a skipped/failed
+  // status): a simulation's column on surface assets, or an asset every technique refused,
+  // says nothing.
+  std::vector<std::vector<std::string>> grid;  // per input: the input, then a cell per technique
   for (const std::string& input : inputs) {
     std::vector<std::string> cells{input};
-    bool informative = false;
     for (const auto& technique : techniques) {
       std::string cell = "—";
       const bool unsupported = std::any_of(
@@ -325,8 +321,31 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
           cell = line.failed_rows > 0 ? "failed" : "skipped";
         }
       }
-      informative |= cell != "—";
       cells.push_back(cell);
+    }
+    grid.push_back(std::move(cells));
+  }
+  const auto says = [](const std::string& cell) { return cell != "—" && cell != "n/a"; };
+  std::vector<size_t> columns;
+  for (size_t c = 1; c <= techniques.size(); ++c) {
+    if (std::any_of(grid.begin(), grid.end(), [&](const auto& row) { return says(row[c]); }))
+      columns.push_back(c);
+  }
+  if (columns.empty()) return;
+  *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
+  std::vector<std::string> header{"asset"};
+  for (size_t c : columns) {
+    const auto& technique = techniques[c - 1];
+    header.push_back(technique.technique +
+                     (technique.variants.empty() ? "" : "/" + technique.variants.front()));
+  }
+  appendHeader(out, header);
+  for (const auto& row : grid) {
+    std::vector<std::string> cells{row[0]};
+    bool informative = false;
+    for (size_t c : columns) {
+      cells.push_back(row[c]);
+      informative |= says(row[c]);
     }
     if (informative) appendRow(out, cells);
   }
