@@ -27,7 +27,8 @@ namespace tb::pictures {
 
 struct PictureSettings {
   int level = 8;           // uniform integer tessellation level of every patch (1..64)
-  uint32_t size_px = 240;  // the render is size_px x size_px; at least kMinimumPictureSizePx
+  uint32_t size_px = 208;  // the render is size_px x size_px; at least kMinimumPictureSizePx (208: report.html
+                           // embeds every error picture and stays under 2 MB)
 };
 
 // Smaller renders leave no room for the colour bar's labels.

@@ -58,8 +58,7 @@ Answer whichTechnique(const std::vector<AssetDecision>& decisions) {
     a.answer += fmt::format("{}**{}** on {} of {} ({})", a.answer.empty() ? "" : "; ", who,
                             assets.size(), decisions.size(), joined(assets));
   }
-  a.source = "decision per surface asset below (error, triangles at 1 px, memory, "
-             "instructions, watertightness), under the rule stated there";
+  a.source = "per asset: the decision below, its rule and figures";
   return a;
 }
 

@@ -94,13 +94,11 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
                           const std::vector<std::string>& technique_order, bool charts_available,
                           std::string* body, Json* charts) {
   *body += "<section id=\"tradeoffs\">\n<h2>Trade-off per asset</h2>\n";
-  *body += "<p class=\"note\">Per surface asset, each technique's default variant: error "
-           "(Hausdorff distance to the limit surface, fraction of the bounding-box diagonal) "
-           "against triangles per frame for a 1 px tessellation error (best factor policy, first "
-           "camera path). Ringed points and the dashed line: the Pareto front; the star: the "
-           "recommendation. Axes are logarithmic when the points span more "
-           "than a decade with at most 3 empty decades, linear otherwise. Rule: " +
-           escapeHtml(kDecisionRule) + ".</p>\n";
+  *body += "<p class=\"note\">Each technique's default variant: error (Hausdorff, fraction "
+           "of the bounding-box diagonal) against triangles per frame for a 1 px tessellation "
+           "error (best factor policy). Ringed points and dashed line: the Pareto front; star: "
+           "the recommendation, by the rule in report.md's decision tables. Log axes only where "
+           "the points span over a decade with at most 3 empty decades.</p>\n";
   std::vector<std::string> without;
   std::string boxes;
   for (const AssetDecision& d : decisions) {
