@@ -101,6 +101,7 @@ void addAssetGroup(const std::string& run_dir, const std::string& asset,
   }
   if (group.pictures.empty()) return;
   if (level) group.note = fmt::format("uniform level {}; ", *level);
+  group.shared_scale = scales.size() == 1;
   group.note += scales.size() == 1
                     ? fmt::format("one colour scale for every picture of the asset: 0 … {:.3g} "
                                   "rel_diag (the largest vertex error among them).",

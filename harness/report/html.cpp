@@ -39,7 +39,8 @@ figure.picture-group { margin: 0 0 1.5rem; background: #fff; border: 1px solid #
 figure.picture-group img { max-width: 100%; display: block; }
 .picture-row { display: flex; flex-wrap: wrap; gap: 0.8rem; }
 .picture-row figure { margin: 0; }
-figcaption { font-size: 13px; color: #444; }
+figcaption { font-size: 13px; color: #444; max-width: 220px; }
+.picture-row .square { width: fit-content; aspect-ratio: 1 / 1; overflow: hidden; }
 ul.answers { font-size: 13px; line-height: 1.3; margin: 0.4rem 0; padding-left: 1.2rem; }
 ul.answers li { margin-bottom: 0.25rem; }
 ul.answers .source { color: #666; font-size: 12px; }
@@ -259,11 +260,14 @@ void picturesSection(const HtmlAssets& assets, Page* page) {
     if (!group.note.empty())
       page->body += fmt::format("<p class=\"note\">{}</p>\n", escapeHtml(group.note));
     page->body += "<div class=\"picture-row\">\n";
-    for (const HtmlPicture& picture : group.pictures) {
+    for (size_t i = 0; i < group.pictures.size(); ++i) {
+      const HtmlPicture& picture = group.pictures[i];
+      const bool crop = group.shared_scale && i > 0;  // the square render, not the bar again
       page->body += fmt::format(
-          "<figure><img alt=\"{0}\" src=\"data:image/png;base64,{1}\"><figcaption>{0}</figcaption>"
-          "</figure>\n",
-          escapeHtml(picture.caption), base64Encode(picture.png_bytes));
+          "<figure>{2}<img alt=\"{0}\" src=\"data:image/png;base64,{1}\">{3}<figcaption>{0}"
+          "</figcaption></figure>\n",
+          escapeHtml(picture.caption), base64Encode(picture.png_bytes),
+          crop ? "<div class=\"square\">" : "", crop ? "</div>" : "");
     }
     page->body += "</div>\n</figure>\n";
   }
