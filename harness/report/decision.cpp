@@ -146,7 +146,8 @@ std::string whySentence(const DecisionCandidate& c, size_t candidates) {
   const DecisionFigures& f = c.figures;
   const char* tier = watertightTier(f) == 0   ? "watertight on the CPU and the device"
                      : watertightTier(f) == 1 ? "watertight on the CPU (device unverified)"
-                                              : "not watertight (no candidate is)";
+                     : f.cpu == Watertightness::kCracked ? "cracked (no candidate is watertight)"
+                                                         : "watertightness not measured";
   const bool within = f.error && *f.error <= kDecisionMaxError;
   std::string text = fmt::format("{} ranks first of {}: {}, error {} rel_diag ({} 1e-3)",
                                  c.name(), candidates, tier, number(f.error),

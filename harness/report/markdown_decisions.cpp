@@ -61,13 +61,17 @@ void appendDecision(const AssetDecision& d, std::string* out) {
   }
   std::vector<std::string> header{"rank", "technique/variant"};
   for (const DecisionColumn& column : columns) header.push_back(column.header);
-  header.push_back("Pareto front");
+  // The front is over error and triangles at 1 px: no column when no candidate has both.
+  const bool front = std::any_of(d.candidates.begin(), d.candidates.end(), [](const auto& c) {
+    return c.figures.error && c.figures.triangles_1px;
+  });
+  if (front) header.push_back("Pareto front");
   appendHeader(out, header);
   for (size_t i = 0; i < d.candidates.size(); ++i) {
     const DecisionCandidate& c = d.candidates[i];
     std::vector<std::string> cells{i == 0 ? "**1 (recommended)**" : std::to_string(i + 1), c.name()};
     for (const DecisionColumn& column : columns) cells.push_back(column.cell(c).value_or("n/a"));
-    cells.push_back(c.on_front ? "yes" : "no");
+    if (front) cells.push_back(c.on_front ? "yes" : "no");
     appendRow(out, cells);
   }
   *out += "\n" + d.why + " " + d.runner_up + "\n\n";
