@@ -37,7 +37,7 @@ std::vector<std::string> textLines(const std::string& text) {
   return out;
 }
 
-TEST(Decision, EveryCandidateIsADefaultNonControlVariantAndTheFirstIsOnTheFrontOrAlone) {
+void everyCandidateIsADefaultNonControlVariantAndWatertightOnesWin() {
   const auto decisions = report::decideAssets(baseline());
   ASSERT_GE(decisions.size(), 30u);
   for (const report::AssetDecision& d : decisions) {
@@ -62,7 +62,7 @@ TEST(Decision, EveryCandidateIsADefaultNonControlVariantAndTheFirstIsOnTheFrontO
 
 // Acceptance 1: the answers block is in the first 40 lines and names, for every surface
 // asset, a technique/variant that is not a control.
-TEST(Decision, AnswersBlockOpensReportMdAndNamesANonControlChoicePerAsset) {
+void answersBlockOpensReportMdAndNamesANonControlChoicePerAsset() {
   const std::vector<std::string> head = textLines(markdown());
   std::string first40;
   for (size_t i = 0; i < std::min<size_t>(40, head.size()); ++i) first40 += head[i] + "\n";
@@ -84,7 +84,7 @@ TEST(Decision, AnswersBlockOpensReportMdAndNamesANonControlChoicePerAsset) {
 }
 
 // Acceptance 2: report.md, report.html and advise name the same recommendation per asset.
-TEST(Decision, ReportMdHtmlAndAdviseAgreeForEveryAsset) {
+void reportMdHtmlAndAdviseAgreeForEveryAsset() {
   const std::string html = report::renderHtml(baseline(), {"/* no chart.js */", "", {}, {}});
   for (const report::AssetDecision& d : report::decideAssets(baseline())) {
     const std::string md_heading = "### " + d.asset + "\n";
@@ -129,7 +129,7 @@ std::vector<std::string> cellsOf(const std::string& line) {
 
 // Acceptance 4: no summary table of report.md (the sections before the per-measure details)
 // has a column or a row without one figure.
-TEST(Decision, NoEmptyColumnOrRowOfDashesInReportMdSummaries) {
+void noEmptyColumnOrRowOfDashesInReportMdSummaries() {
   const std::vector<std::string> all = textLines(markdown());
   std::vector<std::vector<std::string>> table;
   std::string heading;
@@ -156,6 +156,27 @@ TEST(Decision, NoEmptyColumnOrRowOfDashesInReportMdSummaries) {
       check();
       table.clear();
     }
+  }
+}
+
+// One test, so the 8 MB baseline is read once (gtest_discover_tests runs each test in its own
+// process): about 2.5 s in Release.
+TEST(Decision, DefaultRunDecisionsAnswersAgreementAndTables) {
+  {
+    SCOPED_TRACE("everyCandidateIsADefaultNonControlVariantAndWatertightOnesWin");
+    everyCandidateIsADefaultNonControlVariantAndWatertightOnesWin();
+  }
+  {
+    SCOPED_TRACE("answersBlockOpensReportMdAndNamesANonControlChoicePerAsset");
+    answersBlockOpensReportMdAndNamesANonControlChoicePerAsset();
+  }
+  {
+    SCOPED_TRACE("reportMdHtmlAndAdviseAgreeForEveryAsset");
+    reportMdHtmlAndAdviseAgreeForEveryAsset();
+  }
+  {
+    SCOPED_TRACE("noEmptyColumnOrRowOfDashesInReportMdSummaries");
+    noEmptyColumnOrRowOfDashesInReportMdSummaries();
   }
 }
 
