@@ -119,7 +119,9 @@ void appendSimulations(const results::Results& results, std::string* out) {
   std::string body;
   for (const SimulationMeasure& sm : measures) {
     if (results.findMeasure(sm.measure) == nullptr) continue;
-    const MeasureSummary summary = summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
+    MeasureSummary summary = summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
+    std::stable_sort(summary.lines.begin(), summary.lines.end(),
+                     [](const SummaryLine& a, const SummaryLine& b) { return a.asset < b.asset; });
     std::vector<std::string> metrics;
     for (const std::string& metric : sm.metrics) {
       const bool any = std::any_of(summary.lines.begin(), summary.lines.end(),
