@@ -207,6 +207,21 @@ const std::vector<std::string>& conservativeCullPolicies() {
   return kPolicies;
 }
 
+std::function<bool(const results::MetricRow&)> summaryRowsOf(const std::string& measure) {
+  if (measure != "culling") return {};
+  return [](const results::MetricRow& row) {
+    const auto& keep = conservativeCullPolicies();
+    return rowKey(row, "summary") == "path" &&
+           std::find(keep.begin(), keep.end(), rowKey(row, "policy")) != keep.end();
+  };
+}
+
+std::string summaryRowsNote(const std::string& measure) {
+  if (measure != "culling") return "";
+  return "culling: the summary rows (summary = path) of its conservative policies only (" +
+         joined(conservativeCullPolicies()) + ")";
+}
+
 std::vector<Answer> answerQuestions(const results::Results& results,
                                     const std::vector<AssetDecision>& decisions) {
   return {whichTechnique(decisions), didAnythingCrack(results), accMemory(results),

@@ -5,6 +5,7 @@
 // Pure over the results model; a question the run has no rows for says so.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@ struct Answer {
 // The culling policies that never cull a patch covering a pixel (lod::isConservative: the
 // hull and cone tests); tests/report checks the two lists agree.
 const std::vector<std::string>& conservativeCullPolicies();
+// The rows a summary of `measure` reduces over: culling's summary rows of its conservative
+// policies (a worst value over every policy would be "none"'s 0, or a false cull a
+// conservative policy never makes); empty (every row) for any other measure.
+std::function<bool(const results::MetricRow&)> summaryRowsOf(const std::string& measure);
+// What summaryRowsOf keeps, for a table's note: "" when every row.
+std::string summaryRowsNote(const std::string& measure);
 
 // The answers, in the order above; `decisions` from decideAssets(results).
 std::vector<Answer> answerQuestions(const results::Results& results,

@@ -157,17 +157,6 @@ std::vector<results::RunSelection::TechniqueVariants> familyOf(const results::Re
   return family;
 }
 
-// The rows a publishing summary reduces over: the culling measure's conservative policies
-// only (answers.h), every row of any other measure.
-std::function<bool(const results::MetricRow&)> publishingRows(const std::string& measure) {
-  if (measure != "culling") return {};
-  return [](const results::MetricRow& row) {
-    const auto it = row.keys.find("policy");
-    const auto& keep = conservativeCullPolicies();
-    return it != row.keys.end() && std::find(keep.begin(), keep.end(), it->second) != keep.end();
-  };
-}
-
 std::string figureCell(const results::Results& results, const MeasureSummary& summary,
                        const std::string& metric, const std::string& technique,
                        const std::string& variant, std::set<std::string>* assets) {
@@ -197,7 +186,7 @@ void appendFamilyTable(const results::Results& results, const std::vector<std::s
     const std::string metric = firstHeadline(results, measure);
     if (metric.empty()) continue;
     summaries.push_back(summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric},
-                                         publishingRows(measure)));
+                                         summaryRowsOf(measure)));
     metrics.push_back(metric);
   }
   std::vector<bool> used(summaries.size(), false);
@@ -242,14 +231,9 @@ void appendPublishingScreen(const results::Results& results,
   *out += "## Publishing tables\n\n";
   *out += "Per family, technique and variant, each measure's first headline figure over the "
           "assets (or scenarios) the variant was measured on: median (worst); the last column "
-          "says how many, so two medians over different counts are not over the same assets. "
-          "culling reduces over its conservative policies only (" +
-          [] {
-            std::string text;
-            for (const std::string& p : conservativeCullPolicies()) text += (text.empty() ? "" : ", ") + p;
-            return text;
-          }() +
-          "). n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
+          "says how many, so two medians over different counts are not over the same assets. " +
+          summaryRowsNote("culling") +
+          ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
           "--format markdown|csv|latex` renders one measure's summary with units and this run's "
           "context, ready to publish.\n\n";
   appendFamilyTable(results, measures, true, out);
@@ -268,7 +252,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   const results::Direction direction = directionOf(results, measure, metric);
   const std::string unit = unitOf(results, measure, metric);
   const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
+      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric}, summaryRowsOf(measure));
   std::set<std::string> measured_by;
   std::vector<std::string> inputs;
   for (const results::AssetSummary& asset : results.assets) inputs.push_back(asset.name);
@@ -300,6 +284,10 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   // The grid first, then only the columns and rows with a figure (or a skipped/failed
   // status): a simulation's column on surface assets, or an asset every technique refused,
   // says nothing.
+  // A measure of policies (culling) shows the median over its conservative policies' rows: their
+  // worst is 0 wherever a path leaves nothing to one half of a policy.
+  const std::string rows_note = summaryRowsNote(measure);
+  const bool median = !rows_note.empty();
   std::vector<std::vector<std::string>> grid;  // per input: the input, then a cell per technique
   for (const std::string& input : inputs) {
     std::vector<std::string> cells{input};
@@ -316,7 +304,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
           continue;
         }
         if (const MetricStats* stats = line.find(metric)) {
-          cell = formatFigure(worstOf(*stats, direction), unit);
+          cell = formatFigure(median ? stats->median : worstOf(*stats, direction), unit);
         } else if (line.skipped_rows + line.failed_rows > 0) {
           cell = line.failed_rows > 0 ? "failed" : "skipped";
         }
@@ -333,6 +321,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   }
   if (columns.empty()) return;
   *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
+  if (median) *out += "The median (not the worst) over " + rows_note + ".\n\n";
   std::vector<std::string> header{"asset"};
   for (size_t c : columns) {
     const auto& technique = techniques[c - 1];

@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "harness/report/answers.h"
 #include "harness/report/published_figures.h"
 #include "harness/report/row_values.h"
 #include "harness/report/summary.h"
@@ -54,7 +55,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
   const MeasureSummary summary = summarizeMeasure(
       results, options.measure,
       options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
-      options.metrics);
+      options.metrics, summaryRowsOf(options.measure));
   TextTable table;
   table.title = summary.declaration != nullptr ? summary.declaration->title : options.measure;
   table.header = {"technique", "variant"};
@@ -88,6 +89,9 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
       "{} (measure {}): median and worst over the rows of its summary scope{}; worst is the "
       "largest where lower is better, the smallest where higher is better.",
       table.title, options.measure, options.per_asset ? "" : " and every asset"));
+  if (const std::string note = summaryRowsNote(options.measure); !note.empty()) {
+    table.footnote.push_back("Rows: " + note + ".");
+  }
   for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
   return table;
 }
