@@ -8,6 +8,7 @@
 #include "harness/report/base64.h"
 #include "harness/report/html_chart_script.h"
 #include "harness/report/html_decisions.h"
+#include "harness/report/html_per_dispatch.h"
 #include "harness/report/html_escape.h"
 #include "harness/report/plot_data.h"
 #include "harness/report/summary.h"
@@ -207,8 +208,8 @@ std::string perDispatchNote(const results::Results& results, const std::string& 
   if (parts.empty()) return "";
   return "<p class=\"note\">The x axis counts solver iterations, not dispatches: one iteration "
          "costs " + escapeHtml(parts) + " compute dispatches. At a frame's budget of 8 dispatches "
-         "compare residual_at_8_dispatches (the answers above and report.md's simulations "
-         "section), not this chart.</p>\n";
+         "compare the chart per dispatch below (residual_at_8_dispatches: the answers above and "
+         "report.md's simulations section).</p>\n";
 }
 
 void measureSections(const results::Results& results, Page* page) {
@@ -238,7 +239,10 @@ void measureSections(const results::Results& results, Page* page) {
                         ": one chart per asset, coloured by technique/variant (collapsed)</summary>\n";
         }
         plotSection(plotData(results, *declaration, spec), page);
-        if (spec.x == "iteration") page->body += perDispatchNote(results, id);
+        if (spec.x == "iteration") {
+          page->body += perDispatchNote(results, id);
+          appendPerDispatchCharts(results, page->charts_available, &page->body, &page->charts);
+        }
         if (per_asset) page->body += "</details>\n";
       }
     }
