@@ -82,7 +82,8 @@ Answer didAnythingCrack(const results::Results& results) {
   }
   a.answer = rows == 0       ? "not measured in this run."
              : parts.empty() ? fmt::format("no: every default variant is watertight on its {} cracks rows.", rows)
-                             : "yes: " + joined(parts) + ".";
+                             : "yes: " + joined(parts) + " (where: \"Where the default "
+                                                             "variants crack\" below).";
   a.source = "cracks: points_not_equal + unpaired_points > 0 in some row (CPU float and device "
              "capture, every level), default variants; controls crack by design and are left out";
   return a;

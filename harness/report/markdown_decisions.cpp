@@ -9,6 +9,7 @@
 #include "harness/report/answers.h"
 #include "harness/report/decision.h"
 #include "harness/report/markdown_sections.h"
+#include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
 namespace tb::report::markdown_detail {
@@ -86,6 +87,74 @@ void appendAnswers(const results::Results& results, const std::vector<AssetDecis
     *out += "- **" + a.question + "** " + a.answer + " *(" + a.source + ")*\n";
   }
   *out += "\n";
+}
+
+namespace {
+
+// The cracks row with the largest world gap of a record, and how many rows crack.
+struct WorstCrack {
+  const results::MetricRow* row = nullptr;
+  double gap = 0;
+  size_t rows = 0;
+};
+
+WorstCrack worstCrackOf(const results::MeasureResult& m) {
+  WorstCrack worst;
+  for (const results::MetricRow& row : m.rows) {
+    const double points = rowMetric(row, "points_not_equal").value_or(0) +
+                          rowMetric(row, "unpaired_points").value_or(0);
+    if (row.status != results::MeasureStatus::kOk || points <= 0) continue;
+    ++worst.rows;
+    const double gap = rowMetric(row, "max_gap_world").value_or(0);
+    if (worst.row == nullptr || gap > worst.gap) worst = {&row, gap, worst.rows};
+  }
+  return worst;
+}
+
+// "edge between patches 3 and 7 at t = 0.5 of patch 3's edge 1"
+std::string crackPlace(const results::MetricRow& row) {
+  const auto n = [&](const char* name) { return formatAdviceNumber(rowMetric(row, name).value_or(-1)); };
+  if (rowMetric(row, "worst_patch_a").value_or(-1) < 0) return "not located (unpaired points)";
+  if (rowMetric(row, "worst_is_corner").value_or(0) > 0) {
+    return "corner " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " / corner " +
+           n("worst_local_b") + " of patch " + n("worst_patch_b");
+  }
+  return "edge " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " at t = " +
+         n("worst_t") + " / patch " + n("worst_patch_b");
+}
+
+}  // namespace
+
+// Where each default variant cracks: its worst cracks row and the place of the largest gap.
+void appendCrackLocations(const results::Results& results, std::string* out) {
+  std::string body;
+  for (const auto& t : techniquesOf(results)) {
+    if (t.variants.empty() || isControl(results, t.technique, t.variants.front())) continue;
+    for (const results::Record& record : results.records) {
+      if (record.technique != t.technique || record.variant != t.variants.front()) continue;
+      for (const results::MeasureResult& m : record.measures) {
+        if (m.measure != "cracks" || m.status != results::MeasureStatus::kOk) continue;
+        const WorstCrack worst = worstCrackOf(m);
+        if (worst.row == nullptr) continue;
+        const results::MetricRow& row = *worst.row;
+        appendRow(&body, {record.asset, t.technique + "/" + t.variants.front(),
+                          std::to_string(worst.rows),
+                          rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
+                              rowKey(row, "level") +
+                              (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
+                          formatAdviceNumber(rowMetric(row, "points_not_equal").value_or(0)),
+                          formatAdviceNumber(worst.gap), crackPlace(row)});
+      }
+    }
+  }
+  if (body.empty()) return;
+  *out += "## Where the default variants crack\n\n";
+  *out += "Per asset, the cracks rows (backend, spacing, level) where shared points differ and the "
+          "row with the largest gap: where it is, by patch and local edge or corner (the patch "
+          "order of the technique's patch data; t from the edge's first corner).\n\n";
+  appendHeader(out, {"asset", "technique/variant", "rows cracked", "worst row",
+                     "points not equal (count)", "largest gap (world units)", "where"});
+  *out += body + "\n";
 }
 
 void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out) {

@@ -31,6 +31,8 @@ void appendAnswers(const results::Results& results, const std::vector<AssetDecis
                    std::string* out);
 // Per surface asset its decision table (decision.h), the why and the runner-up's trade.
 void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out);
+// Per asset, where each default variant cracks (its worst cracks row and the place).
+void appendCrackLocations(const results::Results& results, std::string* out);
 // The simulation measures per scenario × technique/variant (markdown_decisions.cpp).
 void appendSimulations(const results::Results& results, std::string* out);
 
