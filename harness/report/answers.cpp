@@ -113,7 +113,7 @@ Answer accMemory(const results::Results& results) {
 
 Answer whichCulling(const results::Results& results) {
   Answer a{"Which culling policy?", "", ""};
-  const auto& conservative = conservativeCullPolicies();
+  const std::vector<std::string> conservative = conservativeCullPolicies(results);
   std::map<std::string, std::vector<double>> efficiency;
   std::map<std::string, double> false_culls;
   forDefaultRows(results, "culling", [&](const results::Record&, const results::MetricRow& row) {
@@ -203,24 +203,44 @@ Answer solver(const results::Results& results) {
 
 }  // namespace
 
-const std::vector<std::string>& conservativeCullPolicies() {
-  static const std::vector<std::string> kPolicies{"frustum_hull", "cone", "combined"};
-  return kPolicies;
+std::vector<std::string> conservativeCullPolicies(const results::Results& results) {
+  const results::MeasureDeclaration* culling = results.findMeasure("culling");
+  std::vector<std::string> conservative;
+  if (culling == nullptr) return conservative;
+  for (const std::string& note : culling->notes) {
+    if (note.rfind("policies", 0) != 0) continue;
+    // "NAME = description; [not ]conservative; NEXT = ...": each policy's segment runs to the
+    // next " = " whose name ends a "; " (or the note's ": ").
+    std::vector<std::pair<std::string, size_t>> names;  // name, where its description starts
+    for (size_t at = note.find(" = "); at != std::string::npos; at = note.find(" = ", at + 3)) {
+      const size_t start = note.find_last_of(";:", at);
+      if (start == std::string::npos) continue;
+      std::string name = note.substr(start + 1, at - start - 1);
+      name.erase(0, name.find_first_not_of(' '));
+      if (!name.empty() && name.find(' ') == std::string::npos) names.push_back({name, at});
+    }
+    for (size_t i = 0; i < names.size(); ++i) {
+      const size_t end = i + 1 < names.size() ? names[i + 1].second : note.size();
+      const std::string segment = note.substr(names[i].second, end - names[i].second);
+      if (segment.find("; conservative;") != std::string::npos) conservative.push_back(names[i].first);
+    }
+  }
+  return conservative;
 }
 
-std::function<bool(const results::MetricRow&)> summaryRowsOf(const std::string& measure) {
+std::function<bool(const results::MetricRow&)> summaryRowsOf(const results::Results& results,
+                                                             const std::string& measure) {
   if (measure != "culling") return {};
-  return [](const results::MetricRow& row) {
-    const auto& keep = conservativeCullPolicies();
+  return [keep = conservativeCullPolicies(results)](const results::MetricRow& row) {
     return rowKey(row, "summary") == "path" &&
            std::find(keep.begin(), keep.end(), rowKey(row, "policy")) != keep.end();
   };
 }
 
-std::string summaryRowsNote(const std::string& measure) {
+std::string summaryRowsNote(const results::Results& results, const std::string& measure) {
   if (measure != "culling") return "";
   return "culling: the summary rows (summary = path) of its conservative policies only (" +
-         joined(conservativeCullPolicies()) + ")";
+         joined(conservativeCullPolicies(results)) + ")";
 }
 
 std::vector<Answer> answerQuestions(const results::Results& results,

@@ -20,15 +20,18 @@ struct Answer {
   std::string source;    // "error: hausdorff; adaptivity: ...": where the figure comes from
 };
 
-// The culling policies that never cull a patch covering a pixel (lod::isConservative: the
-// hull and cone tests); tests/report checks the two lists agree.
-const std::vector<std::string>& conservativeCullPolicies();
+// The culling policies that never cull a patch covering a pixel, as the culling measure's
+// declaration states them: its note on the policies says "NAME = ...; conservative;" (the
+// measure's words for lod::isConservative; tests/report checks they agree). Empty when the
+// run has no culling declaration or the note says none.
+std::vector<std::string> conservativeCullPolicies(const results::Results& results);
 // The rows a summary of `measure` reduces over: culling's summary rows of its conservative
 // policies (a worst value over every policy would be "none"'s 0, or a false cull a
 // conservative policy never makes); empty (every row) for any other measure.
-std::function<bool(const results::MetricRow&)> summaryRowsOf(const std::string& measure);
+std::function<bool(const results::MetricRow&)> summaryRowsOf(const results::Results& results,
+                                                             const std::string& measure);
 // What summaryRowsOf keeps, for a table's note: "" when every row.
-std::string summaryRowsNote(const std::string& measure);
+std::string summaryRowsNote(const results::Results& results, const std::string& measure);
 
 // The answers, in the order above; `decisions` from decideAssets(results).
 std::vector<Answer> answerQuestions(const results::Results& results,

@@ -215,8 +215,8 @@ void appendMeasureSection(const results::Results& results, const std::string& me
     *out += "Summaries read the rows with " + scope + ".\n\n";
   }
   const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {}, summaryRowsOf(measure));
-  if (const std::string note = summaryRowsNote(measure); !note.empty()) {
+      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {}, summaryRowsOf(results, measure));
+  if (const std::string note = summaryRowsNote(results, measure); !note.empty()) {
     *out += "The summary below reads " + note + "; every row is in the CSV.\n\n";
   }
   std::vector<std::string> header{"technique", "variant", "rows"};

@@ -186,7 +186,7 @@ void appendFamilyTable(const results::Results& results, const std::vector<std::s
     const std::string metric = firstHeadline(results, measure);
     if (metric.empty()) continue;
     summaries.push_back(summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric},
-                                         summaryRowsOf(measure)));
+                                         summaryRowsOf(results, measure)));
     metrics.push_back(metric);
   }
   std::vector<bool> used(summaries.size(), false);
@@ -232,7 +232,7 @@ void appendPublishingScreen(const results::Results& results,
   *out += "Per family, technique and variant, each measure's first headline figure over the "
           "assets (or scenarios) the variant was measured on: median (worst); the last column "
           "says how many, so two medians over different counts are not over the same assets. " +
-          summaryRowsNote("culling") +
+          summaryRowsNote(results, "culling") +
           ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
           "--format markdown|csv|latex` renders one measure's summary with units and this run's "
           "context, ready to publish.\n\n";
@@ -252,7 +252,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   const results::Direction direction = directionOf(results, measure, metric);
   const std::string unit = unitOf(results, measure, metric);
   const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric}, summaryRowsOf(measure));
+      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric}, summaryRowsOf(results, measure));
   std::set<std::string> measured_by;
   std::vector<std::string> inputs;
   for (const results::AssetSummary& asset : results.assets) inputs.push_back(asset.name);
@@ -286,7 +286,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   // says nothing.
   // A measure of policies (culling) shows the median over its conservative policies' rows: their
   // worst is 0 wherever a path leaves nothing to one half of a policy.
-  const std::string rows_note = summaryRowsNote(measure);
+  const std::string rows_note = summaryRowsNote(results, measure);
   const bool median = !rows_note.empty();
   std::vector<std::vector<std::string>> grid;  // per input: the input, then a cell per technique
   for (const std::string& input : inputs) {

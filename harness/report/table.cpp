@@ -55,7 +55,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
   const MeasureSummary summary = summarizeMeasure(
       results, options.measure,
       options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
-      options.metrics, summaryRowsOf(options.measure));
+      options.metrics, summaryRowsOf(results, options.measure));
   TextTable table;
   table.title = summary.declaration != nullptr ? summary.declaration->title : options.measure;
   table.header = {"technique", "variant"};
@@ -89,7 +89,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
       "{} (measure {}): median and worst over the rows of its summary scope{}; worst is the "
       "largest where lower is better, the smallest where higher is better.",
       table.title, options.measure, options.per_asset ? "" : " and every asset"));
-  if (const std::string note = summaryRowsNote(options.measure); !note.empty()) {
+  if (const std::string note = summaryRowsNote(results, options.measure); !note.empty()) {
     table.footnote.push_back("Rows: " + note + ".");
   }
   for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));

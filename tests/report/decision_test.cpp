@@ -4,9 +4,11 @@
 // results, and the tables' own cells (no column or row without a figure).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
+#include "harness/lod/cull_policy.h"
 #include "harness/report/advice.h"
 #include "harness/report/answers.h"
 #include "harness/report/decision.h"
@@ -159,9 +161,41 @@ void noEmptyColumnOrRowOfDashesInReportMdSummaries() {
   }
 }
 
+// The conservative policies the report reads from the culling declaration's note are the
+// ones lod::isConservative names; the note without its "conservative" words gives none (the
+// check can fail).
+void conservativePoliciesAgreeWithTheCullPolicyCode() {
+  const std::vector<std::string> parsed = report::conservativeCullPolicies(baseline());
+  ASSERT_FALSE(parsed.empty());
+  const results::MeasureDeclaration* culling = baseline().findMeasure("culling");
+  ASSERT_NE(culling, nullptr);
+  std::string note;
+  for (const std::string& n : culling->notes) {
+    if (n.rfind("policies", 0) == 0) note = n;
+  }
+  for (const lod::CullPolicy policy : lod::allCullPolicies()) {
+    const std::string name(lod::cullPolicyName(policy));
+    if (note.find(" " + name + " = ") == std::string::npos) continue;  // not in this run
+    const bool listed = std::find(parsed.begin(), parsed.end(), name) != parsed.end();
+    EXPECT_EQ(listed, lod::isConservative(policy)) << name;
+  }
+  results::Results broken;  // the declarations alone
+  broken.measures = baseline().measures;
+  for (results::MeasureDeclaration& d : broken.measures) {
+    for (std::string& n : d.notes) {
+      for (size_t at; (at = n.find("; conservative;")) != std::string::npos;) n.erase(at, 15);
+    }
+  }
+  EXPECT_TRUE(report::conservativeCullPolicies(broken).empty());
+}
+
 // One test, so the 8 MB baseline is read once (gtest_discover_tests runs each test in its own
 // process): about 2.5 s in Release.
 TEST(Decision, DefaultRunDecisionsAnswersAgreementAndTables) {
+  {
+    SCOPED_TRACE("conservativePoliciesAgreeWithTheCullPolicyCode");
+    conservativePoliciesAgreeWithTheCullPolicyCode();
+  }
   {
     SCOPED_TRACE("everyCandidateIsADefaultNonControlVariantAndWatertightOnesWin");
     everyCandidateIsADefaultNonControlVariantAndWatertightOnesWin();
