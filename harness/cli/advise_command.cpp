@@ -13,6 +13,7 @@
 #include "core/mesh/input_error.h"
 #include "harness/measures/measure.h"
 #include "harness/report/advice.h"
+#include "harness/report/decision.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 #include "harness/suite/asset_catalog.h"
@@ -161,7 +162,12 @@ std::string adviceJson(const report::Advice& advice, const report::AdviceConstra
       {"first_choice", advice.anyPasses()
                            ? nlohmann::ordered_json(advice.ranked.front().technique + "/" +
                                                     advice.ranked.front().variant)
-                           : nlohmann::ordered_json(nullptr)}};
+                           : nlohmann::ordered_json(nullptr)},
+      {"recommendation", advice.recommendation.empty()
+                             ? nlohmann::ordered_json(nullptr)
+                             : nlohmann::ordered_json(advice.recommendation)},
+      {"recommendation_why", advice.recommendation_why},
+      {"recommendation_rule", report::kDecisionRule}};
   return json.dump(2) + "\n";
 }
 

@@ -5,7 +5,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <optional>
+#include <set>
+#include <vector>
 #include <sstream>
 
 namespace tb::cli {
@@ -61,36 +64,50 @@ std::optional<std::string> readPicture(const std::string& run_dir, const std::st
   return png;
 }
 
-// One entry of pictures.json ({technique, variant, asset, level, error_png, wireframe_png,
-// error_max, scale_min, scale_max, error_statistic, [status, reason]}) as a group.
-void addPictureGroup(const std::string& run_dir, const Json& entry, size_t* bytes_used,
-                     report::HtmlAssets* assets) {
-  const std::string name =
-      textOf(entry, "technique") + "/" + textOf(entry, "variant") + " on " + textOf(entry, "asset");
-  if (const std::string status = textOf(entry, "status"); !status.empty() && status != "ok") {
-    assets->picture_notes.push_back(name + ": " + status + ": " + textOf(entry, "reason"));
-    return;
-  }
+// What a picture shows, against the error table's hausdorff.
+constexpr const char* kPictureMeaning =
+    "Each picture: the parametric error |S(u,v) - limit(u,v)| at the vertices of a uniform "
+    "tessellation, a triangle coloured by its largest vertex. It is not the error table's "
+    "hausdorff: that is the two-sided distance between the whole tessellated surface and the "
+    "limit surface (closest points), so a surface exact at its vertices (acc on an all-regular "
+    "mesh, about 1e-16) can still have a hausdorff of 1e-3. The wireframes are in the run "
+    "folder's pictures/ (left out here to keep the page small).";
+
+// The ok entries of pictures.json ({technique, variant, asset, level, error_png, error_max,
+// scale_min, scale_max, error_statistic, [status, reason]}) of one asset as one group: its
+// error pictures side by side under the asset's colour scale, stated once.
+void addAssetGroup(const std::string& run_dir, const std::string& asset,
+                   const std::vector<const Json*>& entries, size_t* bytes_used,
+                   report::HtmlAssets* assets) {
   report::HtmlPictureGroup group;
-  group.title = name;
-  const std::optional<double> level = numberOf(entry, "level");
-  const std::string statistic = textOf(entry, "error_statistic");
-  if (level) group.note = fmt::format("uniform level {}", *level);
-  if (!statistic.empty()) group.note += (group.note.empty() ? "" : "; ") + ("colour: " + statistic);
-  const double scale_min = numberOf(entry, "scale_min").value_or(0);
-  const std::optional<double> scale_max = numberOf(entry, "scale_max");
-  const std::optional<double> error_max = numberOf(entry, "error_max");
-  std::string scale = "error";
-  if (scale_max)
-    scale += fmt::format(", colour scale {:.3g} … {:.3g} rel_diag", scale_min, *scale_max);
-  if (error_max) scale += fmt::format(", largest {:.3g} rel_diag", *error_max);
-  if (auto png = readPicture(run_dir, textOf(entry, "error_png"), bytes_used, assets)) {
-    group.pictures.push_back({scale, std::move(*png)});
+  group.title = asset;
+  std::set<double> scales;
+  std::optional<double> level;
+  for (const Json* entry : entries) {
+    const std::string name = textOf(*entry, "technique") + "/" + textOf(*entry, "variant");
+    if (const std::string status = textOf(*entry, "status"); !status.empty() && status != "ok") {
+      assets->picture_notes.push_back(name + " on " + asset + ": " + status + ": " + textOf(*entry, "reason"));
+      continue;
+    }
+    if (const auto scale = numberOf(*entry, "scale_max")) scales.insert(*scale);
+    if (!level) level = numberOf(*entry, "level");
+    std::string caption = name;
+    if (const auto error_max = numberOf(*entry, "error_max")) {
+      caption += fmt::format(": largest vertex error {:.3g} rel_diag", *error_max);
+    }
+    if (auto png = readPicture(run_dir, textOf(*entry, "error_png"), bytes_used, assets)) {
+      group.pictures.push_back({caption, std::move(*png)});
+    }
   }
-  if (auto png = readPicture(run_dir, textOf(entry, "wireframe_png"), bytes_used, assets)) {
-    group.pictures.push_back({"wireframe", std::move(*png)});
-  }
-  if (!group.pictures.empty()) assets->pictures.push_back(std::move(group));
+  if (group.pictures.empty()) return;
+  if (level) group.note = fmt::format("uniform level {}; ", *level);
+  group.shared_scale = scales.size() == 1;
+  group.note += scales.size() == 1
+                    ? fmt::format("one colour scale for every picture of the asset: 0 … {:.3g} "
+                                  "rel_diag (the largest vertex error among them).",
+                                  *scales.begin())
+                    : std::string("each picture has its own colour scale (its colour bar).");
+  assets->pictures.push_back(std::move(group));
 }
 
 void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
@@ -114,14 +131,20 @@ void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
   }
   size_t bytes_used = 0;
   size_t malformed = 0;
+  std::vector<std::pair<std::string, std::vector<const Json*>>> by_asset;  // in index order
   for (const Json& entry : index["pictures"]) {
     if (!entry.is_object() || textOf(entry, "technique").empty() ||
         textOf(entry, "asset").empty()) {
       ++malformed;
       continue;
     }
-    addPictureGroup(run_dir, entry, &bytes_used, assets);
+    const std::string asset = textOf(entry, "asset");
+    auto it = std::find_if(by_asset.begin(), by_asset.end(), [&](const auto& g) { return g.first == asset; });
+    if (it == by_asset.end()) it = by_asset.insert(by_asset.end(), {asset, {}});
+    it->second.push_back(&entry);
   }
+  if (!by_asset.empty()) assets->picture_notes.push_back(kPictureMeaning);
+  for (const auto& [asset, entries] : by_asset) addAssetGroup(run_dir, asset, entries, &bytes_used, assets);
   if (malformed > 0) {
     assets->picture_notes.push_back(fmt::format(
         "{} entries of pictures/pictures.json without a technique and asset left out.", malformed));

@@ -3,7 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <algorithm>
 #include <exception>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -100,10 +102,19 @@ std::unique_ptr<techniques::TechniqueInstance> buildInstance(const techniques::T
   return instance;
 }
 
-// One job: CPU tessellation and error, the render (the shared target taken in turn), the
-// composition and the PNG encoding.
-PictureOutcome makePicture(const PictureJob& job, const PictureSettings& settings,
-                           gpu::RenderTarget& target, std::mutex& target_mutex) {
+// A job's surface and render, kept until every surface of its asset is graded (the colour
+// scale is the asset's).
+struct RenderedSurface {
+  SurfaceErrorMesh surface;
+  view::View view;
+  std::vector<uint32_t> ids;
+};
+
+// One job's first half: CPU tessellation and error, the render (the shared target taken in
+// turn). The entry says failed when it could not be made.
+PictureOutcome renderSurface(const PictureJob& job, const PictureSettings& settings,
+                             gpu::RenderTarget& target, std::mutex& target_mutex,
+                             std::optional<RenderedSurface>* rendered) {
   PictureOutcome outcome;
   PictureEntry& entry = outcome.entry;
   entry.technique = job.record->technique;
@@ -118,28 +129,39 @@ PictureOutcome makePicture(const PictureJob& job, const PictureSettings& setting
     const techniques::SurfacePatches& patches = *instance->surface();
     const ref::LimitSurface limit(patches.controlMesh(),
                                   lod::referenceScheme(patches.approximates()));
-    const SurfaceErrorMesh surface = tessellateWithError(patches, limit, settings.level);
-    const view::View view = threeQuarterView(surface.bounds, settings.size_px);
-    std::vector<uint32_t> ids;
+    RenderedSurface r{tessellateWithError(patches, limit, settings.level), {}, {}};
+    r.view = threeQuarterView(r.surface.bounds, settings.size_px);
     {
       const std::lock_guard lock(target_mutex);
-      ids = renderTriangleIds(target, surface, view);
+      r.ids = renderTriangleIds(target, r.surface, r.view);
     }
-    const SurfacePictures pictures =
-        composeSurfacePictures(surface, view, settings.size_px, std::move(ids));
-    outcome.error_png = encodePng(pictures.error);
-    outcome.wireframe_png = encodePng(pictures.wireframe);
-    entry.error_png = errorPicturePath(entry.technique, entry.asset);
-    entry.wireframe_png = wireframePicturePath(entry.technique, entry.asset);
-    entry.width_px = pictures.error.width_px;
-    entry.height_px = pictures.error.height_px;
-    entry.error_max = pictures.error_max;
-    entry.scale_max = pictures.scale_max;
+    entry.error_max = r.surface.error_max;
+    *rendered = std::move(r);
   } catch (const std::exception& error) {
     entry.status = "failed";
     entry.reason = error.what();
   }
   return outcome;
+}
+
+// The second half: the composition under the asset's scale and the PNG encoding.
+void composePicture(RenderedSurface rendered, const PictureSettings& settings, double scale_max,
+                    PictureOutcome* outcome) {
+  PictureEntry& entry = outcome->entry;
+  try {
+    const SurfacePictures pictures = composeSurfacePictures(
+        rendered.surface, rendered.view, settings.size_px, std::move(rendered.ids), scale_max);
+    outcome->error_png = encodePng(pictures.error);
+    outcome->wireframe_png = encodePng(pictures.wireframe);
+    entry.error_png = errorPicturePath(entry.technique, entry.asset);
+    entry.wireframe_png = wireframePicturePath(entry.technique, entry.asset);
+    entry.width_px = pictures.error.width_px;
+    entry.height_px = pictures.error.height_px;
+    entry.scale_max = pictures.scale_max;
+  } catch (const std::exception& error) {
+    entry.status = "failed";
+    entry.reason = error.what();
+  }
 }
 
 }  // namespace
@@ -181,14 +203,34 @@ PicturesIndex renderRunPictures(const results::Results& results, gpu::Context* c
   index.device = context->info().device_name;
   const std::vector<PictureJob> jobs = picturesOf(results);
   std::vector<PictureOutcome> outcomes(jobs.size());
+  std::vector<std::optional<RenderedSurface>> rendered(jobs.size());
   if (!jobs.empty()) {
     gpu::RenderTarget target(*context, settings.size_px, settings.size_px);
     std::mutex target_mutex;
     tbb::parallel_for(
         size_t(0), jobs.size(),
-        [&](size_t i) { outcomes[i] = makePicture(jobs[i], settings, target, target_mutex); },
+        [&](size_t i) {
+          outcomes[i] = renderSurface(jobs[i], settings, target, target_mutex, &rendered[i]);
+        },
         tbb::simple_partitioner());
   }
+  // One colour scale per asset: the largest error of its pictures (at least
+  // kMinimumScaleMax), so its techniques' pictures compare colour for colour.
+  std::map<std::string, double> asset_scale;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (!rendered[i]) continue;
+    double& scale = asset_scale[outcomes[i].entry.asset];
+    scale = std::max({scale, kMinimumScaleMax, rendered[i]->surface.error_max});
+  }
+  tbb::parallel_for(
+      size_t(0), jobs.size(),
+      [&](size_t i) {
+        if (!rendered[i]) return;
+        composePicture(std::move(*rendered[i]), settings, asset_scale[outcomes[i].entry.asset],
+                       &outcomes[i]);
+        rendered[i].reset();
+      },
+      tbb::simple_partitioner());
   for (PictureOutcome& outcome : outcomes) {
     if (outcome.entry.status == "ok") {
       write(outcome.entry.error_png, outcome.error_png);

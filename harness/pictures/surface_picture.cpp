@@ -93,14 +93,15 @@ std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const Surface
 }
 
 SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const view::View& view,
-                                       uint32_t size_px, std::vector<uint32_t> triangle_ids) {
+                                       uint32_t size_px, std::vector<uint32_t> triangle_ids,
+                                       std::optional<double> scale_max) {
   if (size_px < kMinimumPictureSizePx || triangle_ids.size() != size_t(size_px) * size_px) {
     throw std::invalid_argument(
         "composeSurfacePictures: the picture is under 64 px or the ID buffer is not size_px^2");
   }
   SurfacePictures pictures;
   pictures.error_max = mesh.error_max;
-  pictures.scale_max = std::max(mesh.error_max, kMinimumScaleMax);
+  pictures.scale_max = std::max({mesh.error_max, kMinimumScaleMax, scale_max.value_or(0)});
   pictures.error = RgbImage(size_px, size_px + kColourBarStripPx);
   pictures.wireframe = RgbImage(size_px, size_px + kColourBarStripPx);
   const std::vector<double> shade = triangleShading(mesh, lightDirection(view, mesh.bounds));

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/view/view.h"
@@ -26,7 +27,8 @@ namespace tb::pictures {
 
 struct PictureSettings {
   int level = 8;           // uniform integer tessellation level of every patch (1..64)
-  uint32_t size_px = 320;  // the render is size_px x size_px; at least kMinimumPictureSizePx
+  uint32_t size_px = 208;  // the render is size_px x size_px; at least kMinimumPictureSizePx (208: report.html
+                           // embeds every error picture and stays under 2 MB)
 };
 
 // Smaller renders leave no room for the colour bar's labels.
@@ -69,9 +71,12 @@ std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const Surface
                                         const view::View& view);
 
 // Composes both pictures from an ID buffer of renderTriangleIds (size_px^2 entries, size_px
-// >= kMinimumPictureSizePx; std::invalid_argument otherwise).
+// >= kMinimumPictureSizePx; std::invalid_argument otherwise). The colour scale's top is
+// `scale_max` when given (one scale shared by several surfaces: at least this one's
+// error_max), else max(mesh.error_max, kMinimumScaleMax).
 SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const view::View& view,
-                                       uint32_t size_px, std::vector<uint32_t> triangle_ids);
+                                       uint32_t size_px, std::vector<uint32_t> triangle_ids,
+                                       std::optional<double> scale_max = std::nullopt);
 
 // All of it for one surface: the limit of patches.controlMesh() under the scheme it
 // approximates (as the error measure builds it), tessellateWithError at settings.level,

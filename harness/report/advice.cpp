@@ -9,6 +9,7 @@
 #include <tuple>
 #include <utility>
 
+#include "harness/report/decision.h"
 #include "harness/report/summary.h"
 
 namespace tb::report {
@@ -307,6 +308,9 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
                    [](const Candidate& a, const Candidate& b) { return rankKey(a) < rankKey(b); });
   writeVerdicts(&advice.ranked);
 
+  const AssetDecision decision = decideAsset(results, asset);
+  advice.recommendation = decision.recommended();
+  advice.recommendation_why = decision.why + " " + decision.runner_up;
   for (const results::Skip& skip : results.skipped) {
     if (skip.asset == asset && selected(constraints, skip.technique)) {
       advice.unsupported.push_back({skip.technique, skip.reason});
@@ -368,6 +372,11 @@ std::string renderAdviceMarkdown(const Advice& advice, const AdviceConstraints& 
   out += advice.anyPasses() ? "\nFirst choice: " + advice.ranked.front().technique + "/" +
                                   advice.ranked.front().variant + "\n"
                             : "\nNo candidate meets every constraint.\n";
+  if (!advice.recommendation.empty()) {
+    out += fmt::format("\nRecommendation (report.md's rule, default variants, no constraints): {}. "
+                       "{}\nRule: {}.\n",
+                       advice.recommendation, advice.recommendation_why, kDecisionRule);
+  }
   return out;
 }
 

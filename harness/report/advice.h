@@ -68,6 +68,9 @@ struct Advice {
   std::string asset;
   std::vector<Candidate> ranked;  // by kAdviceRankingRule: passing first
   std::vector<UnsupportedTechnique> unsupported;
+  // The report's recommendation for the asset (decision.h: default variants, kDecisionRule,
+  // no constraints), its why and what the runner-up trades; empty without candidates.
+  std::string recommendation, recommendation_why;
   bool anyPasses() const { return !ranked.empty() && ranked.front().passes; }
 };
 

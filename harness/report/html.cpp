@@ -7,6 +7,8 @@
 
 #include "harness/report/base64.h"
 #include "harness/report/html_chart_script.h"
+#include "harness/report/html_decisions.h"
+#include "harness/report/html_per_dispatch.h"
 #include "harness/report/html_escape.h"
 #include "harness/report/plot_data.h"
 #include "harness/report/summary.h"
@@ -20,7 +22,8 @@ using Json = nlohmann::ordered_json;
 constexpr const char* kStyle = R"CSS(
 body { font: 15px/1.45 system-ui, sans-serif; margin: 0; color: #222; background: #fafafa; }
 main { max-width: 1400px; margin: 0 auto; padding: 1rem 2rem 3rem; }
-h1 { margin-bottom: 0.2rem; }
+h1 { margin: 0.4rem 0 0.2rem; font-size: 1.6rem; }
+#answers h2, #tradeoffs h2 { margin-top: 0.8rem; }
 h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2rem; margin-top: 2.5rem; }
 table.context { border-collapse: collapse; }
 table.context th { text-align: left; padding: 0.1rem 1rem 0.1rem 0; font-weight: 600; }
@@ -37,7 +40,14 @@ figure.picture-group { margin: 0 0 1.5rem; background: #fff; border: 1px solid #
 figure.picture-group img { max-width: 100%; display: block; }
 .picture-row { display: flex; flex-wrap: wrap; gap: 0.8rem; }
 .picture-row figure { margin: 0; }
-figcaption { font-size: 13px; color: #444; }
+figcaption { font-size: 13px; color: #444; max-width: 220px; }
+.picture-row .square { width: fit-content; aspect-ratio: 1 / 1; overflow: hidden; }
+ul.answers { font-size: 13px; line-height: 1.3; margin: 0.4rem 0; padding-left: 1.2rem; }
+ul.answers li { margin-bottom: 0.25rem; }
+ul.answers .source { color: #666; font-size: 12px; }
+#tradeoffs .charts { grid-template-columns: repeat(auto-fill, minmax(330px, 1fr)); }
+#tradeoffs .chart-box { height: 260px; }
+details.plots > summary { cursor: pointer; font-weight: 600; margin: 0.6rem 0; }
 )CSS";
 
 // The page as it is assembled: markup in order, and the charts' data for the script.
@@ -131,13 +141,22 @@ Json chartJson(const PlotData& data, const PlotChart& chart, const std::string& 
         std::find(series_order.begin(), series_order.end(), s.name) - series_order.begin();
     series.push_back({{"name", s.name}, {"colour", colour}, {"points", std::move(points)}});
   }
+  // The declared log axes, unless the data leave more than kMaxEmptyDecades empty decades.
+  std::vector<double> xs, ys;
+  for (const PlotSeries& s : chart.series) {
+    for (const PlotPoint& p : s.points) {
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+    }
+  }
+  const bool bar = data.spec.kind == results::PlotKind::kBar;
   return Json{{"canvas", canvas},
               {"kind", toString(data.spec.kind)},
               {"title", chart.facet},
               {"x_label", data.x_label},
               {"y_label", data.y_label},
-              {"log_x", data.spec.log_x},
-              {"log_y", data.spec.log_y},
+              {"log_x", data.spec.log_x && !bar && logAxisSuits(xs)},
+              {"log_y", data.spec.log_y && (bar || logAxisSuits(ys))},
               {"pareto", data.spec.pareto_front},
               {"categories", chart.categories},
               {"series", std::move(series)}};
@@ -175,6 +194,24 @@ void plotSection(const PlotData& data, Page* page) {
   page->body += "</div>\n";
 }
 
+// Under a chart per solver iteration: what an iteration costs in dispatches, per variant, so
+// the per-dispatch comparison (a frame's budget is dispatches) is not read off it.
+std::string perDispatchNote(const results::Results& results, const std::string& measure) {
+  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets,
+                                                  {"dispatches_per_iteration"});
+  std::string parts;
+  for (const SummaryLine& line : summary.lines) {
+    const MetricStats* stats = line.find("dispatches_per_iteration");
+    if (stats == nullptr) continue;
+    parts += fmt::format("{}{} {:g}", parts.empty() ? "" : ", ", line.variant, stats->median);
+  }
+  if (parts.empty()) return "";
+  return "<p class=\"note\">The x axis counts solver iterations, not dispatches: one iteration "
+         "costs " + escapeHtml(parts) + " compute dispatches. At a frame's budget of 8 dispatches "
+         "compare the chart per dispatch below (residual_at_8_dispatches: the answers above and "
+         "report.md's simulations section).</p>\n";
+}
+
 void measureSections(const results::Results& results, Page* page) {
   for (const std::string& id : measureIds(results)) {
     const results::MeasureDeclaration* declaration = results.findMeasure(id);
@@ -191,8 +228,23 @@ void measureSections(const results::Results& results, Page* page) {
             "<p class=\"note\">The measure declares no plots; its figures are in "
             "report.md.</p>\n";
       }
-      for (const results::PlotSpec& spec : declaration->plots)
+      for (const results::PlotSpec& declared : declaration->plots) {
+        // A chart per asset (dozens) goes in a collapsed section, a colour per
+        // technique/variant rather than per row key.
+        const bool per_asset = declared.facet == "asset";
+        results::PlotSpec spec = declared;
+        if (per_asset && spec.series != "technique" && spec.series != "variant") spec.series = "variant";
+        if (per_asset) {
+          page->body += "<details class=\"plots\"><summary>" + escapeHtml(spec.title) +
+                        ": one chart per asset, coloured by technique/variant (collapsed)</summary>\n";
+        }
         plotSection(plotData(results, *declaration, spec), page);
+        if (spec.x == "iteration") {
+          page->body += perDispatchNote(results, id);
+          appendPerDispatchCharts(results, page->charts_available, &page->body, &page->charts);
+        }
+        if (per_asset) page->body += "</details>\n";
+      }
     }
     page->body += "</section>\n";
   }
@@ -212,11 +264,14 @@ void picturesSection(const HtmlAssets& assets, Page* page) {
     if (!group.note.empty())
       page->body += fmt::format("<p class=\"note\">{}</p>\n", escapeHtml(group.note));
     page->body += "<div class=\"picture-row\">\n";
-    for (const HtmlPicture& picture : group.pictures) {
+    for (size_t i = 0; i < group.pictures.size(); ++i) {
+      const HtmlPicture& picture = group.pictures[i];
+      const bool crop = group.shared_scale && i > 0;  // the square render, not the bar again
       page->body += fmt::format(
-          "<figure><img alt=\"{0}\" src=\"data:image/png;base64,{1}\"><figcaption>{0}</figcaption>"
-          "</figure>\n",
-          escapeHtml(picture.caption), base64Encode(picture.png_bytes));
+          "<figure>{2}<img alt=\"{0}\" src=\"data:image/png;base64,{1}\">{3}<figcaption>{0}"
+          "</figcaption></figure>\n",
+          escapeHtml(picture.caption), base64Encode(picture.png_bytes),
+          crop ? "<div class=\"square\">" : "", crop ? "</div>" : "");
     }
     page->body += "</div>\n</figure>\n";
   }
@@ -228,6 +283,12 @@ void picturesSection(const HtmlAssets& assets, Page* page) {
 std::string renderHtml(const results::Results& results, const HtmlAssets& assets) {
   Page page;
   page.charts_available = !assets.chartjs_source.empty();
+  const std::vector<AssetDecision> decisions = decideAssets(results);
+  page.body += "<section id=\"answers\">\n<h2>Answers</h2>\n" +
+               answersHtml(answerQuestions(results, decisions)) + "</section>\n";
+  std::vector<std::string> technique_order;
+  for (const auto& t : techniquesOf(results)) technique_order.push_back(t.technique);
+  appendTradeoffCharts(decisions, technique_order, page.charts_available, &page.body, &page.charts);
   contextSection(results, &page);
   measureSections(results, &page);
   picturesSection(assets, &page);

@@ -22,6 +22,9 @@ struct HtmlPictureGroup {
   std::string title;  // "acc/default on opensubdiv/catmark_cube"
   std::string note;   // "uniform level 8; colour: max of the triangle's 3 vertex errors"
   std::vector<HtmlPicture> pictures;
+  // Every picture has the same colour scale: its colour bar (the strip below each square
+  // render) is shown under the first picture only.
+  bool shared_scale = false;
 };
 
 // What the page embeds besides the results (read by the CLI: harness/cli/html_assets.h).

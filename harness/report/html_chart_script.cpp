@@ -64,7 +64,9 @@ const char* const kHtmlChartScript = R"JS(
         showLine: chart.kind === 'line',
         borderColor: colour,
         backgroundColor: colour,
-        pointRadius: s.points.map(function (p) { return p.front ? 6 : 3; }),
+        pointRadius: s.points.map(function (p) { return p.recommended ? 11 : p.front ? 6 : 3; }),
+        pointStyle: s.points.map(function (p) { return p.recommended ? 'star' : 'circle'; }),
+        pointBorderWidth: s.points.map(function (p) { return p.recommended ? 3 : 1; }),
         pointBorderColor: s.points.map(function (p) { return p.front ? '#000' : colour; })
       };
     });
@@ -102,6 +104,7 @@ const char* const kHtmlChartScript = R"JS(
         scales: { x: x, y: y },
         plugins: {
           title: { display: chart.title !== '', text: chart.title },
+          legend: { labels: { boxWidth: 10, font: { size: 10 } } },
           tooltip: {
             callbacks: {
               label: function (context) {

@@ -102,6 +102,11 @@ std::string renderMarkdown(const results::Results& results) {
   if (const std::string caveat = results::deviceCaveat(c.vulkan_device); !caveat.empty()) {
     out += "The device is " + caveat + ".\n\n";
   }
+  const std::vector<AssetDecision> decisions = decideAssets(results);
+  appendAnswers(results, decisions, &out);
+  appendDecisions(decisions, &out);
+  appendCrackLocations(results, &out);
+  appendSimulations(results, &out);
   appendRegressionScreen(results, measures, &out);
   appendChoiceScreen(results, measures, &out);
   appendPublishingScreen(results, measures, &out);

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "harness/report/answers.h"
 #include "harness/report/markdown.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
@@ -213,7 +214,11 @@ void appendMeasureSection(const results::Results& results, const std::string& me
     }
     *out += "Summaries read the rows with " + scope + ".\n\n";
   }
-  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets);
+  const MeasureSummary summary =
+      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {}, summaryRowsOf(results, measure));
+  if (const std::string note = summaryRowsNote(results, measure); !note.empty()) {
+    *out += "The summary below reads " + note + "; every row is in the CSV.\n\n";
+  }
   std::vector<std::string> header{"technique", "variant", "rows"};
   for (const std::string& metric : summary.metrics) {
     header.push_back(metricHeader(results, measure, metric) + " median / worst");

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
+#include "harness/report/answers.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
@@ -101,13 +103,6 @@ void appendRegressionScreen(const results::Results& results,
 
 namespace {
 
-// The best technique × variant of one asset by one metric: its worst value over the rows.
-struct Best {
-  std::string who;
-  double value = 0;
-  bool found = false;
-};
-
 // How many of the run's assets each technique measured, and why it refused the others
 // (the first refusal as the example; every refusal is under "Not measured").
 void appendCoverage(const results::Results& results, std::string* out) {
@@ -133,101 +128,116 @@ void appendCoverage(const results::Results& results, std::string* out) {
 }  // namespace
 
 // Job 2: per asset, which technique × variant wins each measure's first headline figure.
-void appendChoiceScreen(const results::Results& results, const std::vector<std::string>& measures,
+void appendChoiceScreen(const results::Results& results, const std::vector<std::string>&,
                         std::string* out) {
   *out += "## Choosing a technique per asset\n\n";
   *out += "Which techniques take which assets (every refusal with its reason: \"Not measured\" "
           "below):\n\n";
   appendCoverage(results, out);
-  *out += "Per asset, the technique/variant with the best value of each measure's first headline "
-          "figure, taking each candidate's worst value over its levels, spacings, backends and "
-          "frames (ties: the first in run order); controls, the variants made to fail, are never "
-          "named. `tessbench advise ASSET` ranks every candidate under constraints (error, "
-          "memory, watertightness, instructions).\n\n";
-  std::vector<std::string> shown;
-  std::vector<std::string> header{"asset"};
-  std::vector<std::map<std::string, Best>> best_per_measure;
+  *out += "The decision per asset is above (\"Decision per surface asset\"); `tessbench "
+          "advise ASSET` ranks every candidate under constraints (error, memory, "
+          "watertightness, instructions).\n\n";
+}
+
+namespace {
+
+// The techniques of one family: surfaces (a record with an error result) or simulations.
+std::vector<results::RunSelection::TechniqueVariants> familyOf(const results::Results& results,
+                                                               bool surface) {
+  std::set<std::string> surfaces;
+  for (const results::Record& record : results.records) {
+    for (const results::MeasureResult& m : record.measures) {
+      if (m.measure == "error") surfaces.insert(record.technique);
+    }
+  }
+  std::vector<results::RunSelection::TechniqueVariants> family;
+  for (const auto& technique : techniquesOf(results)) {
+    if ((surfaces.count(technique.technique) > 0) == surface) family.push_back(technique);
+  }
+  return family;
+}
+
+std::string figureCell(const results::Results& results, const MeasureSummary& summary,
+                       const std::string& metric, const std::string& technique,
+                       const std::string& variant, std::set<std::string>* assets) {
+  for (const SummaryLine& line : summary.lines) {
+    if (line.technique != technique || line.variant != variant) continue;
+    const MetricStats* stats = line.find(metric);
+    if (stats == nullptr) return "";
+    for (const results::Record& record : results.records) {
+      if (record.technique == technique && record.variant == variant) assets->insert(record.asset);
+    }
+    const std::string unit = unitOf(results, summary.measure, metric);
+    return formatFigure(stats->median, unit) + " (" +
+           formatFigure(worstOf(*stats, directionOf(results, summary.measure, metric)), unit) + ")";
+  }
+  return "";
+}
+
+// One family's publishing table: only the measures with a figure for it, only the variants
+// with a figure; "n/a" where a variant has no rows of a measure.
+void appendFamilyTable(const results::Results& results, const std::vector<std::string>& measures,
+                       bool surface, std::string* out) {
+  const auto family = familyOf(results, surface);
+  std::vector<MeasureSummary> summaries;
+  std::vector<std::string> metrics;
+  std::vector<std::vector<std::string>> rows;  // technique, variant, cells..., assets
   for (const std::string& measure : measures) {
     const std::string metric = firstHeadline(results, measure);
     if (metric.empty()) continue;
-    const results::Direction direction = directionOf(results, measure, metric);
-    const MeasureSummary summary =
-        summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
-    std::map<std::string, Best> best;
-    for (const SummaryLine& line : summary.lines) {
-      const MetricStats* stats = line.find(metric);
-      if (stats == nullptr || isControl(results, line.technique, line.variant)) continue;
-      const double value = worstOf(*stats, direction);
-      Best& current = best[line.asset];
-      const bool better = !current.found || (direction == results::Direction::kHigherIsBetter
-                                                 ? value > current.value
-                                                 : value < current.value);
-      if (better) current = {line.technique + "/" + line.variant, value, true};
-    }
-    shown.push_back(measure);
-    header.push_back(measure + ": " + metricHeader(results, measure, metric));
-    best_per_measure.push_back(std::move(best));
+    summaries.push_back(summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric},
+                                         summaryRowsOf(results, measure)));
+    metrics.push_back(metric);
   }
-  appendHeader(out, header);
-  for (const results::AssetSummary& asset : results.assets) {
-    std::vector<std::string> cells{asset.name};
-    for (size_t i = 0; i < shown.size(); ++i) {
-      const auto it = best_per_measure[i].find(asset.name);
-      if (it == best_per_measure[i].end()) {
-        cells.push_back("—");
-        continue;
+  std::vector<bool> used(summaries.size(), false);
+  for (const auto& technique : family) {
+    for (const std::string& variant : technique.variants) {
+      std::vector<std::string> row{technique.technique, variant};
+      std::set<std::string> assets;
+      for (size_t i = 0; i < summaries.size(); ++i) {
+        row.push_back(figureCell(results, summaries[i], metrics[i], technique.technique, variant, &assets));
+        used[i] = used[i] || !row.back().empty();
       }
-      const std::string unit = unitOf(results, shown[i], firstHeadline(results, shown[i]));
-      cells.push_back(it->second.who + " " + formatFigure(it->second.value, unit));
+      if (assets.empty()) continue;
+      row.push_back(std::to_string(assets.size()));
+      rows.push_back(std::move(row));
     }
+  }
+  if (rows.empty()) return;
+  *out += surface ? "### Surface techniques\n\n" : "### Simulations\n\n";
+  std::vector<std::string> header{"technique", "variant"};
+  for (size_t i = 0; i < summaries.size(); ++i) {
+    if (used[i]) header.push_back(summaries[i].measure + ": " + metricHeader(results, summaries[i].measure, metrics[i]));
+  }
+  header.push_back(surface ? "assets covered" : "scenarios covered");
+  appendHeader(out, header);
+  for (const auto& row : rows) {
+    std::vector<std::string> cells{row[0], row[1]};
+    for (size_t i = 0; i < summaries.size(); ++i) {
+      if (used[i]) cells.push_back(row[2 + i].empty() ? "n/a" : row[2 + i]);
+    }
+    cells.push_back(row.back());
     appendRow(out, cells);
   }
   *out += "\n";
 }
 
-// Job 3: one line per technique × variant, each measure's first headline figure over every
-// asset: median (worst).
+}  // namespace
+
+// Job 3: per family, one line per technique × variant, each measure's first headline figure
+// over every asset: median (worst).
 void appendPublishingScreen(const results::Results& results,
                             const std::vector<std::string>& measures, std::string* out) {
   *out += "## Publishing tables\n\n";
-  *out += "Per technique and variant, each measure's first headline figure over every asset and "
-          "row: median (worst). `tessbench table RUN --measure M --format markdown|csv|latex` "
-          "renders one measure's summary with units and this run's context, ready to publish.\n\n";
-  std::vector<std::string> header{"technique", "variant"};
-  std::vector<MeasureSummary> summaries;
-  std::vector<std::string> metrics;
-  for (const std::string& measure : measures) {
-    const std::string metric = firstHeadline(results, measure);
-    if (metric.empty()) continue;
-    summaries.push_back(
-        summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric}));
-    metrics.push_back(metric);
-    header.push_back(measure + ": " + metricHeader(results, measure, metric));
-  }
-  appendHeader(out, header);
-  for (const auto& technique : techniquesOf(results)) {
-    for (const std::string& variant : technique.variants) {
-      std::vector<std::string> cells{technique.technique, variant};
-      bool any = false;
-      for (size_t i = 0; i < summaries.size(); ++i) {
-        std::string cell = "—";
-        for (const SummaryLine& line : summaries[i].lines) {
-          if (line.technique != technique.technique || line.variant != variant) continue;
-          const MetricStats* stats = line.find(metrics[i]);
-          if (stats == nullptr) break;
-          const std::string unit = unitOf(results, summaries[i].measure, metrics[i]);
-          const results::Direction direction =
-              directionOf(results, summaries[i].measure, metrics[i]);
-          cell = formatFigure(stats->median, unit) + " (" +
-                 formatFigure(worstOf(*stats, direction), unit) + ")";
-          any = true;
-        }
-        cells.push_back(cell);
-      }
-      if (any) appendRow(out, cells);
-    }
-  }
-  *out += "\n";
+  *out += "Per family, technique and variant, each measure's first headline figure over the "
+          "assets (or scenarios) the variant was measured on: median (worst); the last column "
+          "says how many, so two medians over different counts are not over the same assets. " +
+          summaryRowsNote(results, "culling") +
+          ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
+          "--format markdown|csv|latex` renders one measure's summary with units and this run's "
+          "context, ready to publish.\n\n";
+  appendFamilyTable(results, measures, true, out);
+  appendFamilyTable(results, measures, false, out);
 }
 
 // A measure's technique × asset matrix: each technique's default variant (its first), the
@@ -242,7 +252,7 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
   const results::Direction direction = directionOf(results, measure, metric);
   const std::string unit = unitOf(results, measure, metric);
   const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric});
+      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric}, summaryRowsOf(results, measure));
   std::set<std::string> measured_by;
   std::vector<std::string> inputs;
   for (const results::AssetSummary& asset : results.assets) inputs.push_back(asset.name);
@@ -271,16 +281,16 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
     if (measured_by.count(technique.technique) > 0) techniques.push_back(technique);
   }
   if (techniques.empty()) return;  // no technique ran it (a run of simulations alone, say)
-  *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
-  std::vector<std::string> header{"asset"};
-  for (const auto& technique : techniques) {
-    header.push_back(technique.technique +
-                     (technique.variants.empty() ? "" : "/" + technique.variants.front()));
-  }
-  appendHeader(out, header);
+  // The grid first, then only the columns and rows with a figure (or a skipped/failed
+  // status): a simulation's column on surface assets, or an asset every technique refused,
+  // says nothing.
+  // A measure of policies (culling) shows the median over its conservative policies' rows: their
+  // worst is 0 wherever a path leaves nothing to one half of a policy.
+  const std::string rows_note = summaryRowsNote(results, measure);
+  const bool median = !rows_note.empty();
+  std::vector<std::vector<std::string>> grid;  // per input: the input, then a cell per technique
   for (const std::string& input : inputs) {
     std::vector<std::string> cells{input};
-    bool informative = false;
     for (const auto& technique : techniques) {
       std::string cell = "—";
       const bool unsupported = std::any_of(
@@ -294,13 +304,37 @@ void appendMatrix(const results::Results& results, const std::string& measure, s
           continue;
         }
         if (const MetricStats* stats = line.find(metric)) {
-          cell = formatFigure(worstOf(*stats, direction), unit);
+          cell = formatFigure(median ? stats->median : worstOf(*stats, direction), unit);
         } else if (line.skipped_rows + line.failed_rows > 0) {
           cell = line.failed_rows > 0 ? "failed" : "skipped";
         }
       }
-      informative |= cell != "—";
       cells.push_back(cell);
+    }
+    grid.push_back(std::move(cells));
+  }
+  const auto says = [](const std::string& cell) { return cell != "—" && cell != "n/a"; };
+  std::vector<size_t> columns;
+  for (size_t c = 1; c <= techniques.size(); ++c) {
+    if (std::any_of(grid.begin(), grid.end(), [&](const auto& row) { return says(row[c]); }))
+      columns.push_back(c);
+  }
+  if (columns.empty()) return;
+  *out += "### " + measure + ": " + metricHeader(results, measure, metric) + "\n\n";
+  if (median) *out += "The median (not the worst) over " + rows_note + ".\n\n";
+  std::vector<std::string> header{"asset"};
+  for (size_t c : columns) {
+    const auto& technique = techniques[c - 1];
+    header.push_back(technique.technique +
+                     (technique.variants.empty() ? "" : "/" + technique.variants.front()));
+  }
+  appendHeader(out, header);
+  for (const auto& row : grid) {
+    std::vector<std::string> cells{row[0]};
+    bool informative = false;
+    for (size_t c : columns) {
+      cells.push_back(row[c]);
+      informative |= says(row[c]);
     }
     if (informative) appendRow(out, cells);
   }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/report/decision.h"
 #include "harness/results/results_model.h"
 
 namespace tb::report::markdown_detail {
@@ -24,6 +25,16 @@ std::string metricHeader(const results::Results& results, const std::string& mea
 std::string formatFigure(double value, const std::string& unit);
 // The first headline metric of a measure: what its matrices and job screens show.
 std::string firstHeadline(const results::Results& results, const std::string& measure);
+
+// The answers block (answers.h): one line per question, its figure and source.
+void appendAnswers(const results::Results& results, const std::vector<AssetDecision>& decisions,
+                   std::string* out);
+// Per surface asset its decision table (decision.h), the why and the runner-up's trade.
+void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out);
+// Per asset, where each default variant cracks (its worst cracks row and the place).
+void appendCrackLocations(const results::Results& results, std::string* out);
+// The simulation measures per scenario × technique/variant (markdown_decisions.cpp).
+void appendSimulations(const results::Results& results, std::string* out);
 
 // Job 1: is this run clean, and what to compare it with.
 void appendRegressionScreen(const results::Results& results,

@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
 namespace tb::report {
@@ -90,12 +91,6 @@ T& findOrAdd(std::vector<T>& items, Pred matches, T fresh) {
   return items.back();
 }
 
-double medianOf(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
-
 std::string joinLabels(const std::vector<std::string>& labels) {
   constexpr size_t kShown = 4;
   std::string text;
@@ -115,7 +110,7 @@ PlotChart finishChart(ChartValues&& values, bool bar, results::PlotReduce reduce
       point.label = joinLabels(p.labels);
       point.rows = p.ys.size();
       point.y = reduce == results::PlotReduce::kMax ? *std::max_element(p.ys.begin(), p.ys.end())
-                                                    : medianOf(std::move(p.ys));
+                                                    : medianValue(std::move(p.ys));
       out.points.push_back(std::move(point));
     }
     std::stable_sort(out.points.begin(), out.points.end(),

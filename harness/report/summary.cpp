@@ -48,7 +48,8 @@ const MetricStats* SummaryLine::find(const std::string& metric) const {
 }
 
 MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
-                                SummaryGrouping grouping, const std::vector<std::string>& metrics) {
+                                SummaryGrouping grouping, const std::vector<std::string>& metrics,
+                                const std::function<bool(const results::MetricRow&)>& keep) {
   MeasureSummary summary;
   summary.measure = measure;
   summary.declaration = results.findMeasure(measure);
@@ -88,7 +89,7 @@ MeasureSummary summarizeMeasure(const results::Results& results, const std::stri
           noteReason(&target.line, row.reason);
           continue;
         }
-        if (!results::rowInScope(scope, row.keys)) continue;
+        if (!results::rowInScope(scope, row.keys) || (keep && !keep(row))) continue;
         ++target.line.ok_rows;
         for (const results::Metric& metric : row.metrics) {
           const bool listed = std::find(summary.metrics.begin(), summary.metrics.end(),

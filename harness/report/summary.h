@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -55,9 +56,11 @@ enum class SummaryGrouping {
 
 // Summarises `measure` over the rows in its declaration's summary scope. `metrics` empty:
 // the declared headline metrics (every emitted metric when the declaration has none).
+// `keep`, when given, further selects the rows (e.g. the conservative culling policies).
 MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
                                 SummaryGrouping grouping,
-                                const std::vector<std::string>& metrics = {});
+                                const std::vector<std::string>& metrics = {},
+                                const std::function<bool(const results::MetricRow&)>& keep = {});
 
 // The measure ids of the run, in the order results.json declares them (sorted), then any
 // undeclared one in order of appearance.

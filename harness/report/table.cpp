@@ -7,7 +7,9 @@
 #include <map>
 #include <tuple>
 
+#include "harness/report/answers.h"
 #include "harness/report/published_figures.h"
+#include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
 namespace tb::report {
@@ -19,12 +21,6 @@ std::string figure(double value) {
     return fmt::format("{}", static_cast<long long>(value));
   }
   return fmt::format("{:.4g}", value);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 std::string orNone(const std::string& text, const char* none) {
@@ -59,7 +55,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
   const MeasureSummary summary = summarizeMeasure(
       results, options.measure,
       options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
-      options.metrics);
+      options.metrics, summaryRowsOf(results, options.measure));
   TextTable table;
   table.title = summary.declaration != nullptr ? summary.declaration->title : options.measure;
   table.header = {"technique", "variant"};
@@ -93,6 +89,9 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
       "{} (measure {}): median and worst over the rows of its summary scope{}; worst is the "
       "largest where lower is better, the smallest where higher is better.",
       table.title, options.measure, options.per_asset ? "" : " and every asset"));
+  if (const std::string note = summaryRowsNote(results, options.measure); !note.empty()) {
+    table.footnote.push_back("Rows: " + note + ".");
+  }
   for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
   return table;
 }
@@ -140,8 +139,8 @@ TextTable publishedMemory(const results::Results& results) {
       const auto it = ours.find({who, published.level});
       if (it == ours.end()) continue;
       const Values& v = it->second;
-      table.rows.push_back({"ours", who, std::to_string(published.level), figure(median(v.plain_mb)),
-                            figure(median(v.technique_mb)), figure(median(v.ratio))});
+      table.rows.push_back({"ours", who, std::to_string(published.level), figure(medianValue(v.plain_mb)),
+                            figure(medianValue(v.technique_mb)), figure(medianValue(v.ratio))});
     }
   }
   table.footnote.push_back("Published: " + sourceCitation(kPublishedMemorySeed) +
@@ -166,8 +165,13 @@ TextTable publishedInstructions(const results::Results& results) {
                   "published loads (count)",
                   "ours ALU, vector (count)",
                   "ours ALU, scalar (count)",
-                  "ours loads (count)"};
-  table.numeric = {false, false, false, true, true, true, true, true};
+                  "ours loads (count)",
+                  "assets (count)"};
+  table.numeric = {false, false, false, true, true, true, true, true, true};
+  // The figures are the shaders', the same on every asset: one row per distinct figure line,
+  // with the number of assets it was measured on (two lines for one stage would show the
+  // figures differ between assets).
+  std::map<std::vector<std::string>, size_t> seen;
   std::vector<std::string> sources;
   for (const results::Record& record : results.records) {
     for (const results::MeasureResult& m : record.measures) {
@@ -184,11 +188,18 @@ TextTable publishedInstructions(const results::Results& results) {
         for (const results::Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
         // published_loads 0: not published (the measure's notes).
         if (v["published_loads"] == "0") v["published_loads"] = "";
-        table.rows.push_back(
-            {source_name, record.technique + "/" + record.variant,
-             what != row.keys.end() ? what->second : "",
-             v["published_alu"], v["published_loads"], v["ours_alu_vector"], v["ours_alu_scalar"],
-             v["ours_loads"]});
+        std::vector<std::string> line{source_name, record.technique + "/" + record.variant,
+                                      what != row.keys.end() ? what->second : "",
+                                      v["published_alu"], v["published_loads"],
+                                      v["ours_alu_vector"], v["ours_alu_scalar"], v["ours_loads"]};
+        const auto [it, added] = seen.emplace(line, table.rows.size());
+        if (added) {
+          line.push_back("1");
+          table.rows.push_back(std::move(line));
+        } else {
+          std::string& count = table.rows[it->second].back();
+          count = std::to_string(std::stoul(count) + 1);
+        }
       }
     }
   }

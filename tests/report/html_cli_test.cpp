@@ -28,8 +28,9 @@ fs::path smallRun(const std::string& name) {
 }
 
 // A run that measured error renders its pictures on the device (lavapipe) and report.html
-// embeds them: the heat map and the wireframe of each technique x asset, as PNG data: URIs.
-TEST(HtmlCli, RunEmbedsTheHeatMapAndWireframePictures) {
+// embeds the heat map of each technique x asset as a PNG data: URI (the wireframes stay in
+// the run folder), under one colour scale for the asset, stated once.
+TEST(HtmlCli, RunEmbedsTheHeatMapsUnderOneScalePerAsset) {
   const fs::path dir = testing::scratchDirectory("html_cli_real_pictures");
   const testing::SplitResult run = runTessbenchSplit(
       "run --quiet --technique phong --technique gregory_acc --asset catmark_cube --measure "
@@ -45,7 +46,9 @@ TEST(HtmlCli, RunEmbedsTheHeatMapAndWireframePictures) {
        at = page.find("src=\"data:image/png;base64,iVBORw0KGgo", at + 1)) {
     ++images;
   }
-  EXPECT_EQ(images, 4u) << "2 techniques x (error, wireframe)";
+  EXPECT_EQ(images, 2u) << "2 techniques x error heat map";
+  EXPECT_NE(page.find("one colour scale for every picture of the asset"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--wireframe.png"));
   EXPECT_TRUE(fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--error.png"));
   fs::remove_all(dir);
 }

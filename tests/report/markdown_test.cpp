@@ -60,11 +60,16 @@ results::Results summaryResults(size_t assets, size_t levels) {
   return results;
 }
 
-// report.md opens with the three jobs (regression, choice, publishing), then the matrices,
-// then the measures; the run context and assets come last.
+// report.md opens with the answers and the decision per asset, then the three jobs
+// (regression, choice, publishing), then the matrices, then the measures; the run context and
+// assets come last.
 TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
   const std::string md = report::renderMarkdown(summaryResults(2, 3));
+  const size_t answers = md.find("## Answers");
+  const size_t decisions = md.find("## Decision per surface asset");
   const size_t regression = md.find("## Regression tracking");
+  EXPECT_LT(answers, decisions);
+  EXPECT_LT(decisions, regression);
   const size_t choice = md.find("## Choosing a technique per asset");
   const size_t publishing = md.find("## Publishing tables");
   const size_t matrices = md.find("## Technique × asset matrices");
@@ -76,12 +81,19 @@ TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
   EXPECT_LT(publishing, matrices);
   EXPECT_LT(matrices, measures);
   EXPECT_LT(measures, context);
-  // Choice: the lower-is-better winner with its worst value over the levels (0.25 × 3).
-  EXPECT_NE(md.find("| asset0 | acc/default 0.75 |"), std::string::npos) << md;
+  // Decision: the only default variant with its worst error over the levels (0.25 × 3); no
+  // column for the figures the run lacks.
+  EXPECT_NE(md.find("### asset0\n\n| rank | technique/variant | error (hausdorff, rel_diag) |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| **1 (recommended)** | acc/default | 0.75 |"), std::string::npos) << md;
   // Publishing: median (worst) over assets and levels of each variant.
   EXPECT_NE(md.find("| acc | fast | 1 (1.5) |"), std::string::npos) << md;
-  // Matrix: the default variant; n/a where the technique does not take the asset.
-  EXPECT_NE(md.find("| asset1 | 0.75 | n/a |"), std::string::npos) << md;
+  // Matrix: the default variant; a technique that took no asset (pn: n/a everywhere) is no
+  // column.
+  EXPECT_NE(md.find("| asset | acc/default |\n|---|---|\n| asset0 | 0.75 |\n| asset1 | 0.75 |"),
+            std::string::npos)
+      << md;
   // Coverage: how many assets each technique measured and its first refusal.
   EXPECT_NE(md.find("| acc | 2 of 2 | 0 |  |"), std::string::npos) << md;
   EXPECT_NE(md.find("| pn | 0 of 2 | 2 | asset0: pn: needs triangles |"), std::string::npos) << md;
@@ -102,7 +114,8 @@ TEST(Markdown, ManyRowsGoToCsvNotToTheReport) {
   const std::string md = report::renderMarkdown(large);
   EXPECT_EQ(md.find("| acc | default | asset0 | 2 | ok |"), std::string::npos);
   EXPECT_NE(md.find("Every row (1600): `tables/error.csv`"), std::string::npos) << md;
-  EXPECT_LT(lines(md), 100) << md;
+  // The answers and the decision tables add a fixed 20 lines or so, not one per row.
+  EXPECT_LT(lines(md), 130) << md;
 }
 
 TEST(Markdown, SkippedMeasureShowsItsReason) {

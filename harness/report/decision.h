@@ -1,0 +1,81 @@
+// The decision per surface asset (report.md's decision tables, report.html's trade-off charts
+// and `tessbench advise`'s recommendation: one definition, here). The candidates are each
+// technique's default variant (its first), never a control; each with the figures that trade
+// off: error, triangles per frame for a 1 px tessellation error, memory against the plain
+// triangle mesh, TCS + TES instructions, watertightness on the CPU and on the device. The
+// Pareto front is over error and triangles at 1 px (the trade-off chart's axes); the
+// recommendation is the first candidate under kDecisionRule. Pure over the results model.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "harness/report/advice.h"
+#include "harness/results/results_model.h"
+
+namespace tb::report {
+
+// The error a candidate must stay within to compete on triangles: 1e-3 of the bounding-box
+// diagonal (about 1 px on an object 1000 px across).
+inline constexpr double kDecisionMaxError = 1e-3;
+// The uniform level the memory ratio is read at (the memory measure's rows: 8, 16, 32, 64).
+inline constexpr int kDecisionMemoryLevel = 16;
+// The rule, printed with every decision.
+extern const char* const kDecisionRule;
+
+struct DecisionFigures {
+  // hausdorff, worst over the error rows (rel_diag; best 0, worst ~1).
+  std::optional<double> error;
+  // triangles_per_frame_at_target of the adaptivity summary rows (summary = max_error_1px):
+  // the fewest over the technique's factor policies on its first camera path (count per
+  // frame; best: few, worst: uniform's).
+  std::optional<double> triangles_1px;
+  std::string triangles_policy;  // the policy reaching it
+  std::string camera_path;       // the path it was measured along
+  // technique_with_displacement_bytes / plain_bytes at kDecisionMemoryLevel (ratio; 0.05: a
+  // twentieth of the plain mesh's bytes; above 1: bigger than the plain mesh).
+  std::optional<double> memory_ratio;
+  // total instructions of the TCS and TES stages, spirv-opt -O, per vector instruction, summed
+  // over the programs the asset uses (count).
+  std::optional<double> instructions;
+  Watertightness cpu = Watertightness::kNotMeasured;     // cracks rows of the CPU backends
+  Watertightness device = Watertightness::kNotMeasured;  // cracks rows of the gpu backend
+  double cpu_points = 0;     // largest points_not_equal + unpaired_points of one CPU row
+  double device_points = 0;  // the same over the device rows
+};
+
+struct DecisionCandidate {
+  std::string technique;
+  std::string variant;
+  DecisionFigures figures;
+  bool on_front = false;  // no other candidate has lower-or-equal error and triangles, one lower
+  std::string name() const { return technique + "/" + variant; }
+};
+
+struct AssetDecision {
+  std::string asset;
+  std::vector<DecisionCandidate> candidates;  // by kDecisionRule: the first is recommended
+  std::string why;        // one sentence: why the recommendation ranks first
+  std::string runner_up;  // one sentence: what the runner-up trades against it
+  std::string recommended() const { return candidates.empty() ? "" : candidates[0].name(); }
+};
+
+// The figures of one record (technique, variant, asset), read from its rows.
+DecisionFigures decisionFigures(const results::Results& results, const std::string& technique,
+                                const std::string& variant, const std::string& asset);
+
+// kDecisionRule as an order: true when a ranks before b (names not compared).
+bool decisionBefore(const DecisionFigures& a, const DecisionFigures& b);
+
+// The candidates of `asset` (default, non-control variants of the techniques with an error
+// result on it), ranked, with the front marked; no candidates for a simulation's scenario.
+AssetDecision decideAsset(const results::Results& results, const std::string& asset);
+
+// Every asset of the run with at least one candidate, in the run's asset order.
+std::vector<AssetDecision> decideAssets(const results::Results& results);
+
+// "yes", "no (208)", "unverified", "not measured": one side's watertightness.
+std::string watertightText(Watertightness side, double points);
+
+}  // namespace tb::report

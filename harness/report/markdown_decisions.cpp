@@ -1,0 +1,227 @@
+// report.md's opening: the answers block, the decision per surface asset, and the simulations
+// keyed by scenario (markdown_sections.h).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <map>
+
+#include "harness/report/answers.h"
+#include "harness/report/decision.h"
+#include "harness/report/markdown_sections.h"
+#include "harness/report/row_values.h"
+#include "harness/report/summary.h"
+
+namespace tb::report::markdown_detail {
+namespace {
+
+// Columns of a decision table; a column no candidate of the asset has a figure for is left out.
+struct DecisionColumn {
+  std::string header;
+  std::function<std::optional<std::string>(const DecisionCandidate&)> cell;
+};
+
+std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
+  const auto optional = [](const std::optional<double>& v) -> std::optional<std::string> {
+    return v ? std::optional<std::string>(formatAdviceNumber(*v)) : std::nullopt;
+  };
+  std::string triangles = "triangles/frame at 1 px (count, best policy";
+  if (!d.candidates.empty() && !d.candidates[0].figures.camera_path.empty()) {
+    triangles += ", path " + d.candidates[0].figures.camera_path;
+  }
+  triangles += ")";
+  return {
+      {"error (hausdorff, rel_diag)", [=](const DecisionCandidate& c) { return optional(c.figures.error); }},
+      {triangles,
+       [=](const DecisionCandidate& c) -> std::optional<std::string> {
+         if (!c.figures.triangles_1px) return std::nullopt;
+         return formatAdviceNumber(*c.figures.triangles_1px) + " (" + c.figures.triangles_policy + ")";
+       }},
+      {"memory / plain mesh at level 16 (ratio)",
+       [=](const DecisionCandidate& c) { return optional(c.figures.memory_ratio); }},
+      {"TCS + TES instructions (count)",
+       [=](const DecisionCandidate& c) { return optional(c.figures.instructions); }},
+      {"watertight CPU / device",
+       [](const DecisionCandidate& c) -> std::optional<std::string> {
+         if (c.figures.cpu == Watertightness::kNotMeasured &&
+             c.figures.device == Watertightness::kNotMeasured)
+           return std::nullopt;
+         return watertightText(c.figures.cpu, c.figures.cpu_points) + " / " +
+                watertightText(c.figures.device, c.figures.device_points);
+       }},
+  };
+}
+
+void appendDecision(const AssetDecision& d, std::string* out) {
+  *out += "### " + d.asset + "\n\n";
+  std::vector<DecisionColumn> columns;
+  for (DecisionColumn& column : decisionColumns(d)) {
+    const bool any = std::any_of(d.candidates.begin(), d.candidates.end(),
+                                 [&](const DecisionCandidate& c) { return column.cell(c).has_value(); });
+    if (any) columns.push_back(std::move(column));
+  }
+  std::vector<std::string> header{"rank", "technique/variant"};
+  for (const DecisionColumn& column : columns) header.push_back(column.header);
+  // The front is over error and triangles at 1 px: no column when no candidate has both.
+  const bool front = std::any_of(d.candidates.begin(), d.candidates.end(), [](const auto& c) {
+    return c.figures.error && c.figures.triangles_1px;
+  });
+  if (front) header.push_back("Pareto front");
+  appendHeader(out, header);
+  for (size_t i = 0; i < d.candidates.size(); ++i) {
+    const DecisionCandidate& c = d.candidates[i];
+    std::vector<std::string> cells{i == 0 ? "**1 (recommended)**" : std::to_string(i + 1), c.name()};
+    for (const DecisionColumn& column : columns) cells.push_back(column.cell(c).value_or("n/a"));
+    if (front) cells.push_back(c.on_front ? "yes" : "no");
+    appendRow(out, cells);
+  }
+  *out += "\n" + d.why + " " + d.runner_up + "\n\n";
+}
+
+}  // namespace
+
+void appendAnswers(const results::Results& results, const std::vector<AssetDecision>& decisions,
+                   std::string* out) {
+  *out += "## Answers\n\n";
+  for (const Answer& a : answerQuestions(results, decisions)) {
+    *out += "- **" + a.question + "** " + a.answer + " *(" + a.source + ")*\n";
+  }
+  *out += "\n";
+}
+
+namespace {
+
+// The cracks row with the largest world gap of a record, and how many rows crack.
+struct WorstCrack {
+  const results::MetricRow* row = nullptr;
+  double gap = 0;
+  size_t rows = 0;
+};
+
+WorstCrack worstCrackOf(const results::MeasureResult& m) {
+  WorstCrack worst;
+  for (const results::MetricRow& row : m.rows) {
+    const double points = rowMetric(row, "points_not_equal").value_or(0) +
+                          rowMetric(row, "unpaired_points").value_or(0);
+    if (row.status != results::MeasureStatus::kOk || points <= 0) continue;
+    ++worst.rows;
+    const double gap = rowMetric(row, "max_gap_world").value_or(0);
+    if (worst.row == nullptr || gap > worst.gap) worst = {&row, gap, worst.rows};
+  }
+  return worst;
+}
+
+// "edge between patches 3 and 7 at t = 0.5 of patch 3's edge 1"
+std::string crackPlace(const results::MetricRow& row) {
+  const auto n = [&](const char* name) { return formatAdviceNumber(rowMetric(row, name).value_or(-1)); };
+  if (rowMetric(row, "worst_patch_a").value_or(-1) < 0) return "not located (unpaired points)";
+  if (rowMetric(row, "worst_is_corner").value_or(0) > 0) {
+    return "corner " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " / corner " +
+           n("worst_local_b") + " of patch " + n("worst_patch_b");
+  }
+  return "edge " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " at t = " +
+         n("worst_t") + " / patch " + n("worst_patch_b");
+}
+
+}  // namespace
+
+// Where each default variant cracks: its worst cracks row and the place of the largest gap.
+void appendCrackLocations(const results::Results& results, std::string* out) {
+  std::string body;
+  for (const auto& t : techniquesOf(results)) {
+    if (t.variants.empty() || isControl(results, t.technique, t.variants.front())) continue;
+    for (const results::Record& record : results.records) {
+      if (record.technique != t.technique || record.variant != t.variants.front()) continue;
+      for (const results::MeasureResult& m : record.measures) {
+        if (m.measure != "cracks" || m.status != results::MeasureStatus::kOk) continue;
+        const WorstCrack worst = worstCrackOf(m);
+        if (worst.row == nullptr) continue;
+        const results::MetricRow& row = *worst.row;
+        appendRow(&body, {record.asset, t.technique + "/" + t.variants.front(),
+                          std::to_string(worst.rows),
+                          rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
+                              rowKey(row, "level") +
+                              (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
+                          formatAdviceNumber(rowMetric(row, "points_not_equal").value_or(0)),
+                          formatAdviceNumber(worst.gap), crackPlace(row)});
+      }
+    }
+  }
+  if (body.empty()) return;
+  *out += "## Where the default variants crack\n\n";
+  *out += "Per asset, the cracks rows (backend, spacing, level) where shared points differ and the "
+          "row with the largest gap: where it is, by patch and local edge or corner (the patch "
+          "order of the technique's patch data; t from the edge's first corner).\n\n";
+  appendHeader(out, {"asset", "technique/variant", "rows cracked", "worst row",
+                     "points not equal (count)", "largest gap (world units)", "where"});
+  *out += body + "\n";
+}
+
+void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out) {
+  if (decisions.empty()) return;
+  *out += "## Decision per surface asset\n\n";
+  *out += std::string("Candidates: each technique's default variant (controls never). Rule: ") +
+          kDecisionRule +
+          ". Pareto front: no other candidate has lower-or-equal error and triangles at 1 px, one "
+          "strictly lower. `tessbench advise ASSET` prints the same recommendation and ranks "
+          "every variant under your constraints.\n\n";
+  for (const AssetDecision& d : decisions) appendDecision(d, out);
+}
+
+namespace {
+
+// The metrics of one simulation measure shown per scenario × technique/variant.
+struct SimulationMeasure {
+  const char* measure;
+  std::vector<std::string> metrics;
+};
+
+}  // namespace
+
+void appendSimulations(const results::Results& results, std::string* out) {
+  const std::vector<SimulationMeasure> measures{
+      {"convergence", {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
+                       "iterations_to_1e-3"}},
+      {"stability", {"energy_drift", "max_stretch"}},
+      {"wave_error", {"arrival_error_s", "coverage", "rms_error"}},
+      {"sim_cost", {"dispatches_per_step", "peak_elements"}}};
+  std::string body;
+  for (const SimulationMeasure& sm : measures) {
+    if (results.findMeasure(sm.measure) == nullptr) continue;
+    MeasureSummary summary = summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
+    std::stable_sort(summary.lines.begin(), summary.lines.end(),
+                     [](const SummaryLine& a, const SummaryLine& b) { return a.asset < b.asset; });
+    std::vector<std::string> metrics;
+    for (const std::string& metric : sm.metrics) {
+      const bool any = std::any_of(summary.lines.begin(), summary.lines.end(),
+                                   [&](const SummaryLine& l) { return l.find(metric) != nullptr; });
+      if (any) metrics.push_back(metric);
+    }
+    if (metrics.empty()) continue;
+    body += fmt::format("### {}\n\n", sm.measure);
+    std::vector<std::string> header{"scenario", "technique/variant"};
+    for (const std::string& metric : metrics) header.push_back(metricHeader(results, sm.measure, metric));
+    appendHeader(&body, header);
+    for (const SummaryLine& line : summary.lines) {
+      if (std::none_of(metrics.begin(), metrics.end(), [&](const std::string& m) { return line.find(m); }))
+        continue;
+      std::vector<std::string> cells{line.asset, line.technique + "/" + line.variant};
+      for (const std::string& metric : metrics) {
+        const MetricStats* stats = line.find(metric);
+        cells.push_back(stats == nullptr ? "n/a"
+                                         : formatFigure(worstOf(*stats, directionOf(results, sm.measure, metric)),
+                                                        unitOf(results, sm.measure, metric)));
+      }
+      appendRow(&body, cells);
+    }
+    body += "\n";
+  }
+  if (body.empty()) return;
+  *out += "## Simulations by scenario\n\n";
+  *out += "Per scenario and solver or variant, the worst value over the measure's summary rows "
+          "(convergence: residual after 8 compute dispatches, one frame's budget; n/a: the "
+          "variant has no such row, e.g. iterations_to_1e-3 when 1e-3 was not reached).\n\n";
+  *out += body;
+}
+
+}  // namespace tb::report::markdown_detail
