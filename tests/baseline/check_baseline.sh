@@ -30,14 +30,15 @@ if [[ ! -f $scratch/current/results.json ]]; then
   exit 1
 fi
 echo "default suite: $(($(date +%s) - start)) s"
-# The default suite's report.md leads with the per-job summary and stays short: the detail
-# is in tables/*.csv and results.json.
+# The default suite's report.md opens with the answers block and stays short: the detail
+# is in tables/*.csv and results.json. 1,500 lines: the default run's report is ~1,280, of
+# which ~380 are the per-asset decision tables (about 10 lines for each of 36 assets).
 report=$scratch/current/report.md
 lines=$(wc -l <"$report")
 first_section=$(grep -m1 '^## ' "$report" || true)
 echo "report.md: $lines lines, first section: $first_section"
-if [[ $lines -ge 1000 || $first_section != "## Regression tracking" ]]; then
-  echo "FAIL: report.md must be under 1,000 lines and open with the per-job summary"
+if [[ $lines -ge 1500 || $first_section != "## Answers" ]]; then
+  echo "FAIL: report.md must be under 1,500 lines and open with the answers block"
   exit 1
 fi
 for measure in $(ls "$scratch/current/tables" | grep -v -e warnings -e record_notes); do
