@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,8 +10,6 @@
 #include <string>
 #include <system_error>
 #include <vector>
-
-#include <unistd.h>
 
 #include "tests/test_paths.h"
 
@@ -53,6 +52,25 @@ inline std::filesystem::path scratchDirectory(const std::string& name) {
   ScratchDirectories::instance().add(dir);
   return dir;
 }
+
+// Whether this test program runs under AddressSanitizer (the asan-ubsan preset). The few
+// end-to-end tests that repeat a whole run over every bundled asset (minutes under ASan, where
+// CI's 30-minute budget goes) thin their inputs under it: the sanitizer still sees every code
+// path on a subset, and the Release run keeps the whole sweep.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kUnderSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kUnderSanitizer = true;
+#else
+inline constexpr bool kUnderSanitizer = false;
+#endif
+#else
+inline constexpr bool kUnderSanitizer = false;
+#endif
+
+// 1 in Release; `stride` under a sanitizer: take every stride-th item of a sweep.
+inline size_t sweepStride(size_t stride) { return kUnderSanitizer ? stride : 1; }
 
 inline std::string writeTextFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
