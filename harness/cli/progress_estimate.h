@@ -1,6 +1,7 @@
 // The time a run has left, estimated from the steps done so far: elapsed / done × (total −
 // done). Steps (technique × variant × asset groups) differ in cost, so early estimates
-// swing; an estimate is shown only once a step has finished and a second has passed.
+// swing; an estimate is shown only once 5 % of the steps (at least one) have finished and a
+// second has passed.
 #pragma once
 
 #include <chrono>

@@ -210,14 +210,22 @@ GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques
     if (skip_controls) {
       std::erase_if(variants, [](const techniques::VariantInfo& v) { return !v.control.empty(); });
     }
-    const std::vector<SuiteInput> inputs = inputsFor(*technique, all.refs, all.meshes,
-                                                     all.scenarios, all.displacements,
-                                                     all.displacement_meshes);
+    const std::vector<SuiteInput> inputs =
+        inputsFor(*technique, all.refs, all.meshes, all.scenarios, all.displacements,
+                  all.displacement_meshes);
     for (size_t i = 0; i < inputs.size(); ++i) {
       plan.groups.push_back({technique, variants, inputs[i], i, inputs.size(), plan.total});
     }
     plan.total += variants.size() * inputs.size();
   }
+  // Every technique's inputs spread evenly over the run (ordered by the fraction of its
+  // inputs done, (i + 1/2) / n), so the steps done at any moment are a fair sample of the
+  // run's mix: the time left, estimated from them (cli/progress_estimate.h), is not thrown
+  // off by a cheap technique's steps, or one with few inputs, coming first. The outcomes keep
+  // their serial slots, so the results do not change.
+  std::stable_sort(plan.groups.begin(), plan.groups.end(), [](const Group& a, const Group& b) {
+    return (2 * a.input_index + 1) * b.input_count < (2 * b.input_index + 1) * a.input_count;
+  });
   return plan;
 }
 
@@ -229,26 +237,29 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
   std::vector<StepOutcome> outcomes(total);
   std::mutex progress_mutex;
   size_t started = 0;
-  tbb::parallel_for(size_t(0), groups.size(), [&](size_t g) {
-    const Group& group = groups[g];
-    // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
-    std::optional<techniques::DataFootprint> default_footprint;
-    for (size_t v = 0; v < group.variants.size(); ++v) {
-      if (progress) {
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        progress(started++, total,
-                 group.technique->info().id + "/" + group.variants[v].name + " " +
-                     group.input.name);
-      }
-      const size_t slot = group.first_slot + v * group.input_count + group.input_index;
-      outcomes[slot] = runStep(run, *group.technique, group.variants[v], v == 0, group.input,
-                               &default_footprint);
-      if (on_record && outcomes[slot].record) {
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        on_record(*outcomes[slot].record);
-      }
-    }
-  }, tbb::simple_partitioner());
+  tbb::parallel_for(
+      size_t(0), groups.size(),
+      [&](size_t g) {
+        const Group& group = groups[g];
+        // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
+        std::optional<techniques::DataFootprint> default_footprint;
+        for (size_t v = 0; v < group.variants.size(); ++v) {
+          if (progress) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            progress(
+                started++, total,
+                group.technique->info().id + "/" + group.variants[v].name + " " + group.input.name);
+          }
+          const size_t slot = group.first_slot + v * group.input_count + group.input_index;
+          outcomes[slot] = runStep(run, *group.technique, group.variants[v], v == 0, group.input,
+                                   &default_footprint);
+          if (on_record && outcomes[slot].record) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            on_record(*outcomes[slot].record);
+          }
+        }
+      },
+      tbb::simple_partitioner());
   return outcomes;
 }
 
@@ -285,8 +296,7 @@ std::vector<CameraPathFn> suiteCameraPaths(measures::SuiteMode mode) {
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
               results::Results* results, SuiteTimings* timings, const RecordFn& on_record) {
   const auto run_start = std::chrono::steady_clock::now();
-  const int threads =
-      selection.threads > 0 ? selection.threads : tbb::info::default_concurrency();
+  const int threads = selection.threads > 0 ? selection.threads : tbb::info::default_concurrency();
   tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
   std::vector<const techniques::Technique*> techniques = selection.techniques;
   if (techniques.empty()) techniques = techniques::TechniqueRegistry::instance().all();
@@ -299,9 +309,9 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
   DisplacedMeshes displaced;
   loadDisplacedAssets(selection, refs, meshes, &run, results, &displaced);
   const std::vector<techniques::Scenario> scenarios = scenariosFor(selection, techniques);
-  const GroupPlan plan = planGroups(
-      techniques, selection.suite, selection.skip_controls,
-      {refs, meshes, scenarios, selection.displacements, displaced.meshes});
+  const GroupPlan plan =
+      planGroups(techniques, selection.suite, selection.skip_controls,
+                 {refs, meshes, scenarios, selection.displacements, displaced.meshes});
   std::vector<StepOutcome> outcomes = runGroups(run, plan, progress, on_record);
   collectOutcomes(&outcomes, results, timings);
   if (progress) progress(plan.total, plan.total, "done");
