@@ -182,12 +182,27 @@ struct DrawSetup {
   uint32_t set_count = 2;
   uint32_t input_vertices_per_patch = 1;
   uint32_t per_draw = 1;
+  // Non-empty (PatchProgramOptions::skip_culled): per program patch, 1 when its levels cull
+  // it; those patches are not drawn.
+  std::vector<uint8_t> culled;
 };
 
-// Draws patches [from, to), `per_draw` patches per draw, inside one statistics query
-// (none when setup.queries is null).
-void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
-                 bool capture) {
+// Whether `levels` cull a patch of `domain`: a relevant outer level <= 0 or NaN.
+bool cullsPatch(tess::Domain domain, const tess::Levels& levels) {
+  const size_t outer = domain == tess::Domain::kQuad       ? 4
+                       : domain == tess::Domain::kTriangle ? 3
+                                                           : 2;
+  for (size_t i = 0; i < outer; ++i) {
+    if (!(levels.outer[i] > 0)) return true;
+  }
+  return false;
+}
+
+// Draws patches [from, to), `per_draw` patches per draw (runs of drawn patches, when
+// setup.culled leaves some out), inside one statistics query (none when setup.queries is
+// null). Returns the draws.
+uint32_t recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uint32_t to,
+                     bool capture) {
   const VkPipelineLayout layout = setup.pipeline.layout.get();
   const bool query = setup.queries != VK_NULL_HANDLE;
   const bool count_primitives = query && setup.primitives != VK_NULL_HANDLE;
@@ -199,26 +214,36 @@ void recordDraws(VkCommandBuffer cmd, const DrawSetup& setup, uint32_t from, uin
                           setup.sets, 0, nullptr);
   if (query) vkCmdBeginQuery(cmd, setup.queries, 0, 0);
   if (count_primitives) vkCmdBeginQuery(cmd, setup.primitives, 0, 0);
-  for (uint32_t p = from; p < to; p += setup.per_draw) {
-    const uint32_t count = std::min(setup.per_draw, to - p);
+  uint32_t draws = 0;
+  const auto drawn = [&](uint32_t p) { return setup.culled.empty() || !setup.culled[p]; };
+  for (uint32_t p = from; p < to;) {
+    if (!drawn(p)) {
+      ++p;
+      continue;
+    }
+    uint32_t count = 1;
+    while (count < setup.per_draw && p + count < to && drawn(p + count)) ++count;
     const PushBlock push{p, capture ? 1u : 0u};
     vkCmdPushConstants(cmd, layout, kTessStages, 0, sizeof(push), &push);
     vkCmdDraw(cmd, count * setup.input_vertices_per_patch, 1, 0, 0);
+    ++draws;
+    p += count;
   }
   if (count_primitives) vkCmdEndQuery(cmd, setup.primitives, 0);
   if (query) vkCmdEndQuery(cmd, setup.queries, 0);
   vkCmdEndRendering(cmd);
   barrierShaderWritesToHost(cmd);
+  return draws;
 }
 
 void addStatistics(VkDevice device, VkQueryPool queries, VkQueryPool primitives,
                    PipelineStatistics* stats) {
   if (primitives != VK_NULL_HANDLE) {
     uint64_t generated = 0;
-    vkCheck(vkGetQueryPoolResults(device, primitives, 0, 1, sizeof(generated), &generated,
-                                  sizeof(generated),
-                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-            "vkGetQueryPoolResults (primitives generated)");
+    vkCheck(
+        vkGetQueryPoolResults(device, primitives, 0, 1, sizeof(generated), &generated,
+                              sizeof(generated), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults (primitives generated)");
     stats->primitives_generated += generated;
     stats->primitives_counted = true;
   }
@@ -374,23 +399,22 @@ void bindLevelsSet(Context& context, CallResources& resources, const StorageBuff
                    const TcsCullPolicy* cull, size_t out_words) {
   const VkDeviceSize levels_range = uploadPatchLevels(context, device_levels, &resources.levels);
   const std::span<const uint32_t> no_words;
-  const VkDeviceSize corners_range =
-      uploadWords(context, policy ? std::span(policy->corner_words) : no_words,
-                  &resources.factor_corners);
+  const VkDeviceSize corners_range = uploadWords(
+      context, policy ? std::span(policy->corner_words) : no_words, &resources.factor_corners);
   const VkDeviceSize params_range = uploadWords(
       context, policy ? std::span(policy->param_words) : no_words, &resources.factor_params);
   const std::vector<uint32_t> zero_out(out_words, 0u);
   const VkDeviceSize out_range = uploadWords(context, zero_out, &resources.factor_out);
-  const VkDeviceSize cull_params_range = uploadWords(
-      context, cull ? std::span(cull->param_words) : no_words, &resources.cull_params);
-  const VkDeviceSize cull_patches_range = uploadWords(
-      context, cull ? std::span(cull->patch_words) : no_words, &resources.cull_patches);
+  const VkDeviceSize cull_params_range =
+      uploadWords(context, cull ? std::span(cull->param_words) : no_words, &resources.cull_params);
+  const VkDeviceSize cull_patches_range =
+      uploadWords(context, cull ? std::span(cull->patch_words) : no_words, &resources.cull_patches);
   const VkDeviceSize cull_tangent_range = uploadWords(
       context, cull ? std::span(cull->tangent_words) : no_words, &resources.cull_tangent);
   const VkBuffer levels_handles[kLevelsSetBindings] = {
-      resources.levels.handle(),      resources.factor_corners.handle(),
+      resources.levels.handle(),        resources.factor_corners.handle(),
       resources.factor_params.handle(), resources.factor_out.handle(),
-      resources.cull_params.handle(), resources.cull_patches.handle(),
+      resources.cull_params.handle(),   resources.cull_patches.handle(),
       resources.cull_tangent.handle()};
   const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
       levels_range,      corners_range,      params_range,      out_range,
@@ -476,9 +500,8 @@ void drawPatches(Context& context, const GpuPatchProgram& program,
     const uint32_t header[4] = {0, uint32_t(range.capacity), 0, 0};
     resources.capture.write(header, sizeof(header));
     result->submit_to_fence_s += context.submitAndWait([&](VkCommandBuffer cmd) {
-      recordDraws(cmd, setup, range.from, range.to, options.capture);
+      result->draws += recordDraws(cmd, setup, range.from, range.to, options.capture);
     });
-    result->draws += (range.to - range.from + setup.per_draw - 1) / setup.per_draw;
     if (options.statistics) addStatistics(device, setup.queries, setup.primitives, &result->stats);
     if (options.capture) readCapture(resources.capture, program, range.capacity, &result->vertices);
   }
@@ -526,14 +549,20 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
       uint32_t(std::min<uint64_t>(program.patch_count, uint64_t(first) + options.patch_count));
   CallDisplacement displacement;
   bindDisplacement(context, program, pipeline, &displacement);
-  const DrawSetup setup{pipeline,
-                        options.statistics ? resources.queries.get() : VK_NULL_HANDLE,
-                        options.statistics ? resources.primitives.get() : VK_NULL_HANDLE,
-                        {sets.data.set, sets.levels.set, displacement.set.set},
-                        program.displacement ? 3u : 2u,
-                        program.input_vertices_per_patch,
-                        std::max(options.patches_per_draw, 1u)};
+  DrawSetup setup{pipeline,
+                  options.statistics ? resources.queries.get() : VK_NULL_HANDLE,
+                  options.statistics ? resources.primitives.get() : VK_NULL_HANDLE,
+                  {sets.data.set, sets.levels.set, displacement.set.set},
+                  program.displacement ? 3u : 2u,
+                  program.input_vertices_per_patch,
+                  std::max(options.patches_per_draw, 1u),
+                  {}};
 
+  if (options.skip_culled) {
+    for (const tess::Levels& levels : device_levels) {
+      setup.culled.push_back(cullsPatch(program.domain, levels) ? 1 : 0);
+    }
+  }
   ensureCapacity(context, resources.capture, kCaptureHeaderBytes + 64,
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   bindDataSet(device, resources, sets.data, data_ranges);

@@ -72,8 +72,8 @@ struct PatchProgramCapture {
   PipelineStatistics stats;      // summed over all draws
   double submit_to_fence_s = 0;  // host seconds over all submissions
   uint32_t draws = 0;
-  // With PatchProgramOptions::factor_policy or cull_policy: the levels the TCS wrote, per program patch
-  // (patches outside the call's range stay 0), float bits outer[0..3], inner[0..1].
+  // With PatchProgramOptions::factor_policy or cull_policy: the levels the TCS wrote, per program
+  // patch (patches outside the call's range stay 0), float bits outer[0..3], inner[0..1].
   std::vector<tess::LevelsBits> tcs_levels;
 };
 
@@ -93,6 +93,10 @@ struct PatchProgramOptions {
   // false: no pipeline-statistics query (stats stay 0). Reading one back costs lavapipe
   // about 40 us a call (it synchronises with its queue), more than a small draw.
   bool statistics = true;
+  // true: patches whose levels cull them (an outer level <= 0) are not drawn at all (their
+  // TCS does not run either); false: they are drawn and culled by the tessellator, as a
+  // renderer's would be (the statistics count their TCS invocations).
+  bool skip_culled = false;
   // Non-null: the TCS computes its own levels with this policy (kTbFactorPolicy = 1), and
   // the call returns them (tcs_levels). patch_levels are then only the expected levels,
   // which size the capture: pass the CPU twin's. Its corner_words must hold 32 words per

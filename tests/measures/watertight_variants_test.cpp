@@ -12,6 +12,7 @@
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/measures/bundled_surfaces.h"
 
 namespace tb {
 namespace {
@@ -26,37 +27,10 @@ struct Case {
   const char* variant;
 };
 
-const techniques::VariantInfo& findVariant(const techniques::Technique& technique,
-                                           const std::string& name,
-                                           std::vector<techniques::VariantInfo>* storage) {
-  *storage = technique.variants();
-  for (const techniques::VariantInfo& v : *storage) {
-    if (v.name == name) return v;
-  }
-  throw std::runtime_error("no variant " + name);
-}
-
 // Calls fn(asset name, patches) for every bundled asset the technique variant supports.
 template <class Fn>
 void forSupportedAssets(const Case& c, Fn fn) {
-  const techniques::Technique* technique =
-      techniques::TechniqueRegistry::instance().find(c.technique);
-  ASSERT_NE(technique, nullptr);
-  std::vector<techniques::VariantInfo> variants;
-  const techniques::VariantInfo& variant = findVariant(*technique, c.variant, &variants);
-  size_t supported = 0;
-  for (const suite::AssetRef& asset : suite::bundledAssets()) {
-    const mesh::Mesh mesh = mesh::loadObjFile(asset.path);
-    if (!technique->checkSupport(mesh).empty()) continue;
-    techniques::BuiltSurface patches;
-    try {
-      patches = techniques::buildSurface(*technique, mesh, variant);
-    } catch (const techniques::UnsupportedInput&) {
-      continue;
-    }
-    ++supported;
-    fn(asset.name, *patches);
-  }
+  const size_t supported = testing::forEachBundledSurface(c.technique, c.variant, fn);
   std::printf("%s/%s: %zu bundled assets supported\n", c.technique, c.variant, supported);
   EXPECT_GT(supported, 0u) << c.technique << "/" << c.variant;
 }
@@ -71,9 +45,8 @@ TEST_P(SymmetricVariants, AreBitwiseWatertightOnCpuFloat) {
         const measures::CrackFigures f =
             measures::measureCracks(patches, spacing, level, measures::CrackBackend::kCpuFloat);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
-        EXPECT_EQ(f.points_not_equal, 0u)
-            << asset << " " << tess::toString(spacing) << " level " << level
-            << " max gap " << f.max_gap_world;
+        EXPECT_EQ(f.points_not_equal, 0u) << asset << " " << tess::toString(spacing) << " level "
+                                          << level << " max gap " << f.max_gap_world;
         EXPECT_EQ(f.unpaired_points, 0u) << asset;
       }
     }
@@ -82,28 +55,28 @@ TEST_P(SymmetricVariants, AreBitwiseWatertightOnCpuFloat) {
 
 TEST_P(SymmetricVariants, AreBitwiseWatertightInTheLavapipeCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
-  forSupportedAssets(GetParam(), [&](const std::string& asset,
-                                     const techniques::SurfacePatches& patches) {
-    for (tess::Spacing spacing : kSpacings) {
-      for (float level : kLevels) {
-        const measures::CrackFigures f = measures::measureCracks(
-            patches, spacing, level, measures::CrackBackend::kGpu, &context);
-        ASSERT_TRUE(f.measured) << f.skipped_reason;
-        EXPECT_EQ(f.points_not_equal, 0u)
-            << asset << " " << tess::toString(spacing) << " level " << level;
-        EXPECT_EQ(f.device_max_ulp, 0u) << asset << ": capture differs from evaluateFloat";
-      }
-    }
-  });
+  forSupportedAssets(
+      GetParam(), [&](const std::string& asset, const techniques::SurfacePatches& patches) {
+        for (tess::Spacing spacing : kSpacings) {
+          for (float level : kLevels) {
+            const measures::CrackFigures f = measures::measureCracks(
+                patches, spacing, level, measures::CrackBackend::kGpu, &context);
+            ASSERT_TRUE(f.measured) << f.skipped_reason;
+            EXPECT_EQ(f.points_not_equal, 0u)
+                << asset << " " << tess::toString(spacing) << " level " << level;
+            EXPECT_EQ(f.device_max_ulp, 0u) << asset << ": capture differs from evaluateFloat";
+          }
+        }
+      });
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, SymmetricVariants,
-                         ::testing::Values(Case{"acc", "default"},
-                                           Case{"acc", "symmetric_nofma"},
+                         ::testing::Values(Case{"acc", "default"}, Case{"acc", "symmetric_nofma"},
                                            Case{"acc", "symmetric_edges"},
                                            Case{"gregory_acc", "edge_symmetric"}),
                          [](const auto& param_info) {
-                           return std::string(param_info.param.technique) + "_" + param_info.param.variant;
+                           return std::string(param_info.param.technique) + "_" +
+                                  param_info.param.variant;
                          });
 
 TEST(AsymmetricVariant, OpensGapsSoTheMeasureCanFail) {
@@ -134,10 +107,11 @@ TEST(ImpreciseVariant, WithoutPreciseTheDriverBreaksSymmetry) {
                        cpu_unequal += cpu.points_not_equal;
                        device_ulp = std::max(device_ulp, gpu.device_max_ulp);
                      });
-  std::printf("symmetric without precise, level 16: %llu shared points not bitwise equal on "
-              "lavapipe, %llu on the CPU; capture up to %llu ulp from the CPU twin\n",
-              (unsigned long long)gpu_unequal, (unsigned long long)cpu_unequal,
-              (unsigned long long)device_ulp);
+  std::printf(
+      "symmetric without precise, level 16: %llu shared points not bitwise equal on "
+      "lavapipe, %llu on the CPU; capture up to %llu ulp from the CPU twin\n",
+      (unsigned long long)gpu_unequal, (unsigned long long)cpu_unequal,
+      (unsigned long long)device_ulp);
   EXPECT_EQ(cpu_unequal, 0u);
   EXPECT_GT(gpu_unequal, 0u);
 }

@@ -45,6 +45,9 @@ const MetricTable<CrackFigures>& crackTable() {
       {"seam_edges", results::Unit::kCount, D::kNone, &F::seam_edges},
       // shared_corners: count; context: welded vertices at corners of two or more patches
       {"shared_corners", results::Unit::kCount, D::kNone, &F::shared_corners},
+      // patches_compared: count; context: patches whose boundary points are paired, every
+      //   patch, or the crack sample of an asset of more than kCrackPatchBudget (2,048)
+      {"patches_compared", results::Unit::kCount, D::kNone, &F::patches_compared},
       // points_compared: count; context: side pairs compared at shared tessellated points
       {"points_compared", results::Unit::kCount, D::kNone, &F::points_compared},
       // points_not_equal: count; 0 when watertight (best), up to points_compared (worst)
@@ -99,7 +102,13 @@ class CracksMeasure final : public Measure {
         "and on the device",
         crackTable().specs(),
         {"points_not_equal", "max_gap_world"},
-        {"rows without a levels key: uniform levels (every outer and inner level = level); "
+        {"an asset of more than 2,048 patches (kCrackPatchBudget) is compared on a sample "
+         "(patches_compared): every feature patch (a corner whose welded vertex has another "
+         "patch count than the regular 4 or 6, a boundary, hole or seam edge, a crease or "
+         "corner tag), then runs of 16 consecutive other patches, evenly spaced; shared_* count "
+         "its edges and corners with two or more sampled sides, and every figure covers a subset "
+         "of the full pairs (never more cracks, never a larger gap)",
+         "rows without a levels key: uniform levels (every outer and inner level = level); "
          "shared edges and corners found "
          "by welded control-mesh position (seam_edges: shared only after welding); each side "
          "after the first is compared with the first at every tessellated point, paired by edge "

@@ -12,6 +12,7 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/topology.h"
 #include "core/osd/scheme.h"
+#include "harness/measures/common/patch_sample.h"
 #include "reference/hausdorff.h"
 #include "reference/limit_tessellation.h"
 #include "reference/triangle_mesh_ref.h"
@@ -194,7 +195,8 @@ std::vector<uint8_t> facesTouchingCreases(const mesh::Mesh& mesh) {
     }
   }
   for (const mesh::Corner& corner : mesh.tags.corners) {
-    if (corner.sharpness > 0 && corner.vertex < creased_vertex.size()) creased_vertex[corner.vertex] = 1;
+    if (corner.sharpness > 0 && corner.vertex < creased_vertex.size())
+      creased_vertex[corner.vertex] = 1;
   }
   std::vector<uint8_t> touching(mesh.faceCount(), 0);
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -244,8 +246,8 @@ struct SampleValues {
 };
 
 // 1 per control-mesh position at an extraordinary vertex of the scheme.
-std::vector<uint8_t> extraordinaryVertices(const mesh::Mesh& control, const mesh::Topology& topology,
-                                           osd::Scheme scheme) {
+std::vector<uint8_t> extraordinaryVertices(const mesh::Mesh& control,
+                                           const mesh::Topology& topology, osd::Scheme scheme) {
   const uint32_t regular_valence = scheme == osd::Scheme::kCatmullClark ? 4 : 6;
   std::vector<uint8_t> extraordinary(control.positions.size(), 0);
   for (uint32_t v : topology.extraordinaryVertices(regular_valence)) extraordinary[v] = 1;
@@ -348,33 +350,19 @@ HausdorffPatches hausdorffPatches(const techniques::SurfacePatches& patches, con
       for (uint32_t v : control.facePositions(p)) next_to_hole[v] = 1;
     }
   }
-  std::vector<size_t> others;  // patches with a limit and no feature
+  std::vector<uint8_t> feature(patch_count, 0), has_limit(patch_count, 0);
   for (size_t p = 0; p < patch_count; ++p) {
     if (plan.sampling_of[p] == nullptr) continue;
-    bool feature = creased[p] != 0;
+    has_limit[p] = 1;
+    feature[p] = creased[p] != 0;
     for (uint32_t v : control.facePositions(p)) {
-      feature |= extraordinary[v] || topology.on_boundary[v] || next_to_hole[v];
-    }
-    if (feature && sampling.keep_feature_patches) {
-      out.part[p] = 1, ++out.count;
-    } else {
-      others.push_back(p);
+      feature[p] |= extraordinary[v] || topology.on_boundary[v] || next_to_hole[v];
     }
   }
-  // Runs of kRun consecutive patches (neighbours on a refined mesh, whose faces come in
-  // patch order per parent face), evenly spaced: the neighbourhood a run needs is about twice
-  // its size, a lone patch's nine times.
-  constexpr size_t kRun = 16;
-  const size_t runs = (others.size() + kRun - 1) / kRun;
-  const size_t room = out.count >= budget ? 0 : budget - out.count;
-  const size_t take = std::min(runs, room / kRun);
-  for (size_t i = 0; i < take; ++i) {
-    const size_t run = take == runs ? i : (2 * i + 1) * runs / (2 * take);
-    for (size_t k = run * kRun; k < std::min(others.size(), (run + 1) * kRun); ++k) {
-      out.part[others[k]] = 1, ++out.count;
-    }
-  }
-  out.all = take == runs && sampling.keep_feature_patches;
+  PatchSubset sample = samplePatches(feature, has_limit, budget, sampling.keep_feature_patches);
+  out.part = std::move(sample.part);
+  out.count = sample.count;
+  out.all = sample.all;
   out.around = out.part;
   if (out.all) return out;
   std::vector<uint8_t> touched(control.positions.size(), 0);
@@ -466,11 +454,11 @@ SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patche
     for (size_t t = 0; t < dense.triangles.size() && !part.all; ++t) {
       if (part.part[dense.triangle_face[t]]) dense_part.push_back(dense.triangles[t]);
     }
-    const ref::HausdorffResult distance = ref::hausdorff(
-        {values.technique_points, part.all ? technique_around : technique_part},
-        {values.technique_points, technique_around},
-        part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part}, dense.view(),
-        2);
+    const ref::HausdorffResult distance =
+        ref::hausdorff({values.technique_points, part.all ? technique_around : technique_part},
+                       {values.technique_points, technique_around},
+                       part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part},
+                       dense.view(), 2);
     figures.hausdorff = distance.hausdorff;
     figures.hausdorff_technique_to_limit = distance.a_to_b.max;
     figures.hausdorff_limit_to_technique = distance.b_to_a.max;

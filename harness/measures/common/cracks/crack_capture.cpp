@@ -60,6 +60,7 @@ class ProgramCapture {
     run.boundary_only = true;
     run.sort = false;  // store() indexes each vertex and checks a duplicate against its slot
     run.statistics = false;
+    run.skip_culled = true;  // the crack sample's left-out patches
     run.patches_per_draw =
         uint32_t(std::clamp<uint64_t>(kInvocationsPerDraw / max_points, 1, kMaxPatchesPerDraw));
     for (uint32_t first = 0; first < program.patch_count;) {
@@ -135,9 +136,8 @@ BoundaryCapture captureBoundaryPositions(const techniques::SurfacePatches& patch
                                          std::span<const tess::Levels> patch_levels,
                                          gpu::Context& context,
                                          const CrackCaptureOptions& options) {
-  if (patch_levels.size() != patches.patchCount() || boundaries.culled_patches > 0) {
-    throw std::invalid_argument(
-        "cracks: capture needs one level set per patch and no culled patch");
+  if (patch_levels.size() != patches.patchCount()) {
+    throw std::invalid_argument("cracks: capture needs one level set per patch");
   }
   BoundaryCapture capture;
   capture.positions.resize(boundaries.size());

@@ -45,9 +45,10 @@ struct BoundaryCapture {
 
 // Runs `programs` (patches.gpuPrograms(), built once by the caller) over their patches
 // under `patch_levels` (one per patch) and `spacing`, and stores each captured boundary
-// position. `boundaries` must be patchBoundaries(patches, spacing, patch_levels) with no
-// culled patch. Throws gpu::GpuError when the device fails, and std::runtime_error when
-// the capture lacks a boundary point the CPU tessellator emits or holds one it does not.
+// position. `boundaries` must be patchBoundaries(patches, spacing, patch_levels); a culled
+// patch (the crack sample's left-out patches) has no boundary point to capture. Throws
+// gpu::GpuError when the device fails, and std::runtime_error when the capture lacks a boundary
+// point the CPU tessellator emits or holds one it does not.
 BoundaryCapture captureBoundaryPositions(const techniques::SurfacePatches& patches,
                                          std::span<const gpu::GpuPatchProgram> programs,
                                          const PatchBoundaries& boundaries, tess::Spacing spacing,

@@ -14,6 +14,7 @@
 
 #include "core/mesh/topology.h"
 #include "harness/measures/common/cracks/crack_capture.h"
+#include "harness/measures/common/patch_sample.h"
 
 namespace tb::measures {
 namespace {
@@ -269,11 +270,73 @@ SharedBoundaries findSharedBoundaries(const techniques::SurfacePatches& patches)
   return shared;
 }
 
-CrackSession::CrackSession(const techniques::SurfacePatches& patches)
+std::vector<uint8_t> crackSample(const techniques::SurfacePatches& patches,
+                                 const SharedBoundaries& shared, size_t budget,
+                                 bool keep_features) {
+  const size_t patch_count = patches.patchCount();
+  if (patch_count <= budget) return std::vector<uint8_t>(patch_count, 1);
+  // Per patch: its edges shared (without a seam) and its corners' patch counts.
+  std::vector<uint8_t> feature(patch_count, 0);
+  std::vector<uint32_t> shared_edges(patch_count, 0);
+  for (const SharedEdge& edge : shared.edges) {
+    for (const PatchSide& side : edge.sides) {
+      if (edge.seam || edge.sides.size() != 2) feature[side.patch] = 1;
+      ++shared_edges[side.patch];
+    }
+  }
+  for (const SharedCorner& corner : shared.corners) {
+    for (const PatchSide& side : corner.sides) {
+      const size_t regular = cornerCount(patches.patchDomain(side.patch)) == 4 ? 4 : 6;
+      if (corner.sides.size() != regular) feature[side.patch] = 1;
+    }
+  }
+  const mesh::SubdivisionTags& tags = patches.controlMesh().tags;
+  std::vector<uint8_t> tagged(patches.controlMesh().positions.size(), 0);
+  for (const mesh::Crease& c : tags.creases) {
+    if (c.sharpness > 0 && c.v0 < tagged.size() && c.v1 < tagged.size())
+      tagged[c.v0] = tagged[c.v1] = 1;
+  }
+  for (const mesh::Corner& c : tags.corners) {
+    if (c.sharpness > 0 && c.vertex < tagged.size()) tagged[c.vertex] = 1;
+  }
+  for (size_t p = 0; p < patch_count; ++p) {
+    const uint32_t corners = cornerCount(patches.patchDomain(p));
+    if (shared_edges[p] != corners) feature[p] = 1;  // a boundary or hole edge
+    const std::array<uint32_t, 4> raw = patches.patchCorners(p);
+    for (uint32_t c = 0; c < corners; ++c) {
+      if (raw[c] < tagged.size() && tagged[raw[c]]) feature[p] = 1;
+    }
+  }
+  return samplePatches(feature, std::vector<uint8_t>(patch_count, 1), budget, keep_features).part;
+}
+
+namespace {
+
+// `shared` with only the sides of sampled patches; edges and corners keep two or more.
+SharedBoundaries sampledBoundaries(SharedBoundaries shared, const std::vector<uint8_t>& sampled) {
+  const auto out = [&](const PatchSide& side) { return sampled[side.patch] == 0; };
+  for (SharedEdge& edge : shared.edges) std::erase_if(edge.sides, out);
+  for (SharedCorner& corner : shared.corners) std::erase_if(corner.sides, out);
+  std::erase_if(shared.edges, [](const SharedEdge& e) { return e.sides.size() < 2; });
+  std::erase_if(shared.corners, [](const SharedCorner& c) { return c.sides.size() < 2; });
+  return shared;
+}
+
+}  // namespace
+
+CrackSession::CrackSession(const techniques::SurfacePatches& patches, size_t patch_budget,
+                           bool keep_features)
     : patches_(patches),
       programs_(patches.gpuPrograms()),
       shared_(findSharedBoundaries(patches)),
       scale_ulp_(scaleUlp(patches.controlMesh())) {
+  sampled_ = crackSample(patches, shared_, patch_budget, keep_features);
+  sampled_count_ = size_t(std::count(sampled_.begin(), sampled_.end(), uint8_t(1)));
+  if (sampled_count_ == sampled_.size()) {
+    sampled_.clear();
+  } else {
+    shared_ = sampledBoundaries(std::move(shared_), sampled_);
+  }
   for (const SharedEdge& e : shared_.edges) seam_edges_ += e.seam ? 1 : 0;
 }
 
@@ -325,6 +388,7 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   figures.shared_edges = shared_.edges.size();
   figures.shared_corners = shared_.corners.size();
   figures.seam_edges = seam_edges_;
+  figures.patches_compared = sampled_count_;
   if (backend == CrackBackend::kGpu) {
     if (programs_.empty()) {
       figures.skipped_reason = "the technique has no GPU program";
@@ -336,8 +400,18 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
     }
   }
 
+  // Outside the sample, zero levels: no boundary points, nothing drawn.
+  std::vector<tess::Levels> sampled_levels;
+  if (!sampled_.empty()) {
+    sampled_levels.assign(patch_levels.begin(), patch_levels.end());
+    for (size_t p = 0; p < sampled_.size(); ++p) {
+      if (!sampled_[p]) sampled_levels[p] = uniformLevels(0);
+    }
+    patch_levels = sampled_levels;
+  }
+  const size_t left_out = patches_.patchCount() - sampled_count_;
   const Evaluated& e = evaluated(spacing, patch_levels);
-  if (e.boundaries.culled_patches > 0) {
+  if (e.boundaries.culled_patches > left_out) {
     figures.skipped_reason = e.boundaries.culled_patches == patches_.patchCount()
                                  ? "the level culls every patch"
                                  : "the levels cull some patches";

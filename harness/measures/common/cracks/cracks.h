@@ -78,6 +78,9 @@ struct CrackFigures {
   uint64_t shared_edges = 0;    // edges with two or more patches
   uint64_t seam_edges = 0;      // of those, shared only through welding
   uint64_t shared_corners = 0;  // welded vertices at corners of two or more patches
+  // Patches whose boundary points are paired: every patch, or the crack sample
+  // (kCrackPatchBudget); shared_* then count the sample's edges and corners.
+  uint64_t patches_compared = 0;
   // Pairs compared: each side of an edge (after the first) against the first side, at
   // every tessellated point strictly inside the edge; likewise at corners.
   uint64_t points_compared = 0;
@@ -127,9 +130,31 @@ CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spac
 // spacings whose boundary points coincide bit for bit (integer and pow2 at levels 1, 7.3
 // (8), 16 and 64). A device capture equal bit for bit to the CPU positions takes their
 // pair figures. Same figures as measureCracks. One thread at a time (a record's).
+// Patches above which the pair figures sample (kCrackPatchBudget; patch_sample.h): every
+// feature patch (a corner at a welded vertex whose patch count is not the domain's regular
+// one, i.e. extraordinary, on a boundary or next to a hole or a quad-triangle junction; an
+// edge shared by no other patch or only through welding; a corner on a crease or corner tag),
+// then runs of 16 consecutive other patches, evenly spaced, up to the budget. The sample's
+// shared edges and corners are those with two or more sampled sides; the other patches are
+// not evaluated, nor drawn (zero levels). The sampled figures count a subset of the pairs:
+// points_not_equal and max gaps never exceed the full ones, and a crack of the construction
+// at a feature is always in (tests/measures/crack_sample_test.cpp holds the sampled verdict to
+// the full one on the bundled assets).
+inline constexpr size_t kCrackPatchBudget = 2048;
+
+// The crack sample of `patches` (every patch when they fit the budget). !keep_features: the
+// control's sample, runs only.
+std::vector<uint8_t> crackSample(const techniques::SurfacePatches& patches,
+                                 const SharedBoundaries& shared, size_t budget,
+                                 bool keep_features = true);
+
 class CrackSession {
  public:
-  explicit CrackSession(const techniques::SurfacePatches& patches);
+  explicit CrackSession(const techniques::SurfacePatches& patches,
+                        size_t patch_budget = kCrackPatchBudget, bool keep_features = true);
+
+  // Patches the pair figures cover: every patch, or the sample above the budget.
+  size_t sampledPatches() const { return sampled_count_; }
 
   CrackFigures measure(tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
                        CrackBackend backend, gpu::Context* context = nullptr);
@@ -140,7 +165,7 @@ class CrackSession {
   // The CPU float side of one set of boundary points.
   struct CpuSide {
     std::vector<mesh::Vec3f> positions;  // per boundary point; empty until evaluated
-    std::optional<CrackFigures> pairs;  // pair figures of `positions`, once computed
+    std::optional<CrackFigures> pairs;   // pair figures of `positions`, once computed
   };
   struct Evaluated {
     tess::Spacing spacing;
@@ -155,7 +180,9 @@ class CrackSession {
 
   const techniques::SurfacePatches& patches_;
   std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
-  SharedBoundaries shared_;
+  SharedBoundaries shared_;                     // of the sampled patches
+  std::vector<uint8_t> sampled_;                // per patch; empty: every patch
+  size_t sampled_count_ = 0;
   uint64_t seam_edges_ = 0;
   double scale_ulp_ = 0;
   std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
