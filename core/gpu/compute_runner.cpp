@@ -247,8 +247,18 @@ uint32_t ComputeRunner::stepsDone() const { return impl_->steps_done; }
 std::vector<uint32_t> ComputeRunner::read(const std::string& name) const {
   auto found = impl_->buffers.find(name);
   if (found == impl_->buffers.end()) throw GpuError("compute runner: no buffer named '" + name + "'");
-  std::vector<uint32_t> words(size_t(found->second.sizeBytes() / 4));
-  found->second.read(words.data(), words.size() * 4);
+  return read(name, 0, found->second.sizeBytes() / 4);
+}
+
+std::vector<uint32_t> ComputeRunner::read(const std::string& name, uint64_t first_word,
+                                          uint64_t word_count) const {
+  auto found = impl_->buffers.find(name);
+  if (found == impl_->buffers.end()) throw GpuError("compute runner: no buffer named '" + name + "'");
+  if ((first_word + word_count) * 4 > found->second.sizeBytes()) {
+    throw GpuError("compute runner: reading past the end of buffer '" + name + "'");
+  }
+  std::vector<uint32_t> words(static_cast<size_t>(word_count));
+  found->second.read(words.data(), words.size() * 4, size_t(first_word * 4));
   return words;
 }
 

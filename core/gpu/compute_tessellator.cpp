@@ -11,8 +11,8 @@
 namespace tb::gpu {
 namespace {
 
-constexpr uint32_t kGroupSize = 1;  // tessellate.comp's local_size_x
-constexpr uint32_t kPatchWords = 8;  // per patch: outer [4], inner [2], code, 0
+constexpr uint32_t kGroupSize = 64;  // tessellate.comp's local_size_x
+constexpr uint32_t kPatchWords = 8;  // per patch: outer [4], inner [2], code, flags
 
 // Points an edge or inside axis of this level can have: a processed level L in [1, 64]
 // gives at most ceil(L) + 3 points (edge_spacing.cpp point_count); pow2 rounds up to a
@@ -54,8 +54,7 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 
 }  // namespace
 
-ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches,
-                                       const tess::Options& options, TessKernel kernel)
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
     : patch_count_(static_cast<uint32_t>(patches.size())) {
   std::vector<uint32_t> words;
   words.reserve(patches.size() * kPatchWords);
@@ -64,7 +63,8 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     for (float level : patch.levels.inner) words.push_back(std::bit_cast<uint32_t>(level));
     words.push_back(static_cast<uint32_t>(patch.domain) |
                     (static_cast<uint32_t>(patch.spacing) << 8));
-    words.push_back(0);
+    words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
+                    (patch.rounding_up_control ? 4u : 0u));
     const auto bounds = patchBounds(patch);
     point_capacity_ += bounds[0];
     index_capacity_ += bounds[1];
@@ -81,11 +81,8 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
   buffers[0].initial_words = std::move(words);
 
   const uint32_t groups = std::max<uint32_t>(1, (patch_count_ + kGroupSize - 1) / kGroupSize);
-  const std::vector<uint32_t> push = {patch_count_, options.ccw ? 1u : 0u,
-                                      options.point_mode ? 1u : 0u,
-                                      static_cast<uint32_t>(point_capacity_),
+  const std::vector<uint32_t> push = {patch_count_, static_cast<uint32_t>(point_capacity_),
                                       static_cast<uint32_t>(index_capacity_)};
-  const uint32_t control = kernel == TessKernel::kTruncatingControl ? 1 : 0;
   auto pass = [&](const char* shader, std::vector<uint32_t> specialization,
                   std::vector<uint32_t> push_words, uint32_t groups_x) {
     GpuComputePass p;
@@ -96,9 +93,9 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     p.groups_x = groups_x;
     return p;
   };
-  const GpuComputePass count = pass("gpu/tessellate.comp", {0, control}, push, groups);
+  const GpuComputePass count = pass("gpu/tessellate.comp", {0}, push, groups);
   const GpuComputePass scan = pass("gpu/tess_scan.comp", {}, {patch_count_}, 1);
-  const GpuComputePass write = pass("gpu/tessellate.comp", {1, control}, push, groups);
+  const GpuComputePass write = pass("gpu/tessellate.comp", {1}, push, groups);
   runner_ = std::make_unique<ComputeRunner>(
       context, std::vector<GpuComputeProgram>{{"tessellate", {count, scan, write}}});
 }
@@ -115,8 +112,8 @@ ComputeTessellation ComputeTessellator::read() const {
   }
   const std::vector<uint32_t> counts = runner_->read("counts");
   const std::vector<uint32_t> offsets = runner_->read("offsets");
-  const std::vector<uint32_t> points = runner_->read("points");
-  std::vector<uint32_t> indices = runner_->read("indices");
+  const std::vector<uint32_t> points = runner_->read("points", 0, 2 * uint64_t(status[0]));
+  std::vector<uint32_t> indices = runner_->read("indices", 0, status[1]);
   ComputeTessellation out;
   out.patches.resize(patch_count_);
   for (size_t p = 0; p < patch_count_; ++p) {
@@ -125,15 +122,13 @@ ComputeTessellation ComputeTessellator::read() const {
   }
   out.points.resize(status[0]);
   for (size_t i = 0; i < out.points.size(); ++i) out.points[i] = {points[2 * i], points[2 * i + 1]};
-  indices.resize(status[1]);
   out.indices = std::move(indices);
   return out;
 }
 
-ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches,
-                                        const tess::Options& options, TessKernel kernel) {
+ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches) {
   if (patches.empty()) return {};
-  ComputeTessellator tessellator(context, patches, options, kernel);
+  ComputeTessellator tessellator(context, patches);
   tessellator.run();
   return tessellator.read();
 }

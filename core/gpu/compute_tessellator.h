@@ -23,7 +23,11 @@ class Context;
 struct TessPatch {
   tess::Domain domain = tess::Domain::kTriangle;
   tess::Spacing spacing = tess::Spacing::kInteger;
-  tess::Levels levels;  // as written to gl_TessLevelOuter / gl_TessLevelInner
+  tess::Levels levels;    // as written to gl_TessLevelOuter / gl_TessLevelInner
+  tess::Options options;  // winding and point mode, per patch
+  // The tests' broken control: levels convert to 16.16 rounding any dropped bit up instead
+  // of half to even, so a fractional level one float ulp above an integer gains points.
+  bool rounding_up_control = false;
 };
 
 // One patch's slice of the batch's buffers.
@@ -49,17 +53,11 @@ enum TessErrors : uint32_t {
   kTessErrorCountMismatch = 8,    // the write pass emitted other counts than the count pass
 };
 
-// kTruncatingControl is the tests' broken control: levels convert to 16.16 by truncation
-// instead of round-half-to-even, so fractional spacings move points by 2^-16.
-enum class TessKernel { kExact, kTruncatingControl };
-
 // The batch's buffers and pipelines, made once; run() re-tessellates every patch.
 class ComputeTessellator {
  public:
   // Throws GpuError on a device error. Buffers are sized by upper bounds from the levels.
-  ComputeTessellator(Context& context, std::span<const TessPatch> patches,
-                     const tess::Options& options = {},
-                     TessKernel kernel = TessKernel::kExact);
+  ComputeTessellator(Context& context, std::span<const TessPatch> patches);
   ~ComputeTessellator();
   ComputeTessellator(const ComputeTessellator&) = delete;
   ComputeTessellator& operator=(const ComputeTessellator&) = delete;
@@ -79,9 +77,7 @@ class ComputeTessellator {
 };
 
 // Builds, runs once and reads back.
-ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches,
-                                        const tess::Options& options = {},
-                                        TessKernel kernel = TessKernel::kExact);
+ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches);
 
 // One patch of a batch in the CPU tessellator's form: float (u, v, w) points with w =
 // (1 - u) - v for triangles (as tess::tessellate and lavapipe derive it), indices made

@@ -60,19 +60,22 @@ void tbTessellateTriangle(TbRingPlan plan) {
     if (!g_tb_point_mode) tbAddTriangle(0u, 1u, 2u);
     return;
   }
+  // Rings inside the boundary: 1 .. point_count / 2 - 1, then an even level's centre point.
   const TbEdgeSpacing inner = plan.inner0;
+  const int full_rings = inner.point_count / 2;
+  const int rings = full_rings + (inner.odd ? 0 : 1);
   TbRing outside = tbTriangleBoundary(plan);
-  for (int r = 1; r < inner.point_count / 2; ++r) {
-    const TbRing ring = tbTriangleInnerRing(inner, r);
+  for (int r = 1; r < rings; ++r) {
+    const TbRing ring =
+        r < full_rings ? tbTriangleInnerRing(inner, r)
+                       : tbMakeRing(kTbRingCentre, tbAddPoint(kFxOneThird, kFxOneThird), 3, ivec4(0));
     if (!g_tb_point_mode) tbStitchRings(r, outside, ring, plan);
     outside = ring;
   }
-  if (!inner.odd) {
-    const TbRing centre = tbMakeRing(kTbRingCentre, tbAddPoint(kFxOneThird, kFxOneThird), 3, ivec4(0));
-    if (!g_tb_point_mode) tbStitchRings(inner.point_count / 2, outside, centre, plan);
-  } else if (!g_tb_point_mode) {
-    tbAddTriangle(tbRowAt(tbRow(outside, 0), 0), tbRowAt(tbRow(outside, 1), 0),
-                  tbRowAt(tbRow(outside, 2), 0));
+  // An odd level ends in a ring of three points: one triangle.
+  if (inner.odd && !g_tb_point_mode) {
+    tbAddTriangle(outside.base, outside.base + uint(outside.start.y),
+                  outside.base + uint(outside.start.z));
   }
 }
 
@@ -160,24 +163,27 @@ void tbTessellateQuad(TbRingPlan plan) {
   const bool u_longer = n_u > n_v;
   const int full_rings = min(n_u, n_v) / 2;
 
+  // Rings inside the boundary: 1 .. full_rings - 1, then the middle line of an even level
+  // on the shorter axis.
+  const bool middle_row = u_longer && even_v, middle_column = !u_longer && even_u;
+  const int rings = full_rings + (middle_row || middle_column ? 1 : 0);
   TbRing last = tbQuadBoundary(plan);
-  int r = 1;
-  for (; r < full_rings; ++r) {
-    const TbRing ring = tbQuadInnerRing(plan, r);
+  for (int r = 1; r < rings; ++r) {
+    const TbRing ring =
+        r < full_rings ? tbQuadInnerRing(plan, r) : tbQuadMiddleLine(plan, full_rings, middle_row);
     if (!g_tb_point_mode) tbStitchRings(r, last, ring, plan);
     last = ring;
   }
-  if ((u_longer && even_v) || (!u_longer && even_u)) {
-    const TbRing line = tbQuadMiddleLine(plan, full_rings, u_longer);
-    if (!g_tb_point_mode) tbStitchRings(r, last, line, plan);
-    last = line;
-  }
   if (g_tb_point_mode) return;
+  // An odd inside level on the shorter axis leaves a two-row strip inside the last ring, its
+  // long sides stitched straight across with the high side as the inside row.
   if (u_longer && !even_v) {
-    tbStitchRegular(false, kTbInsideToOutside, tbReversedRow(last, 3), tbRow(last, 1));
+    const TbRow inside = tbReversedRow(last, 3);
+    tbStitch(inside, tbRow(last, 1), tbRegularStrip(false, kTbInsideToOutside, inside));
   } else if (!u_longer && !even_u) {
     const int diagonals = even_v ? kTbInsideToOutside : kTbInsideToOutsideExceptMiddle;
-    tbStitchRegular(false, diagonals, tbReversedRow(last, 2), tbRow(last, 0));
+    const TbRow inside = tbReversedRow(last, 2);
+    tbStitch(inside, tbRow(last, 0), tbRegularStrip(false, diagonals, inside));
   }
 }
 

@@ -7,11 +7,9 @@
 #ifndef TB_TESS_SPACING_GLSL
 #define TB_TESS_SPACING_GLSL
 
-// The broken control of the tests: the float -> 16.16 conversion truncates instead of
-// rounding half to even (an including shader may define it to a specialisation constant).
-#ifndef TB_TESS_TRUNCATING_CONTROL
-#define TB_TESS_TRUNCATING_CONTROL false
-#endif
+// The tests' broken control, per patch: the float -> 16.16 conversion rounds any dropped
+// bits up instead of rounding half to even.
+bool g_tb_rounding_up_control = false;
 
 // Domain and spacing codes: the order of tb::tess::Domain and tb::tess::Spacing.
 const uint kTbDomainTriangle = 0u;
@@ -47,7 +45,7 @@ uint tbFxFromFloat(float x) {
   const float whole = floor(scaled);
   const float dropped = scaled - whole;
   uint result = uint(whole);
-  if (TB_TESS_TRUNCATING_CONTROL) return result;
+  if (g_tb_rounding_up_control) return dropped > 0.0 ? result + 1u : result;
   if (dropped > 0.5 || (dropped == 0.5 && (result & 1u) != 0u)) ++result;
   return result;
 }

@@ -104,67 +104,49 @@ uint tbRowAt(TbRow row, int j) {
   }
 }
 
-// stitch.cpp StripWalker: each step emits one triangle and advances one row.
-struct TbWalk {
-  TbRow inside;
-  TbRow outside;
-  int in_pos;
-  int out_pos;
-};
-
-uint tbIn(TbWalk w, int d) { return tbRowAt(w.inside, w.in_pos + d); }
-uint tbOut(TbWalk w, int d) { return tbRowAt(w.outside, w.out_pos + d); }
-
-void tbAdvanceOutside(inout TbWalk w) {
-  tbAddTriangle(tbOut(w, 0), tbOut(w, 1), tbIn(w, 0));
-  ++w.out_pos;
-}
-void tbAdvanceInside(inout TbWalk w) {
-  tbAddTriangle(tbIn(w, 0), tbOut(w, 0), tbIn(w, 1));
-  ++w.in_pos;
-}
-void tbQuadDiagonalFromInside(inout TbWalk w, bool outside_first) {
-  if (outside_first) {
-    tbAddTriangle(tbOut(w, 0), tbOut(w, 1), tbIn(w, 0));
-  } else {
-    tbAddTriangle(tbIn(w, 0), tbOut(w, 0), tbOut(w, 1));
-  }
-  tbAddTriangle(tbIn(w, 0), tbOut(w, 1), tbIn(w, 1));
-  ++w.in_pos;
-  ++w.out_pos;
-}
-void tbQuadDiagonalFromOutside(inout TbWalk w) {
-  tbAddTriangle(tbOut(w, 0), tbIn(w, 1), tbIn(w, 0));
-  tbAddTriangle(tbOut(w, 0), tbOut(w, 1), tbIn(w, 1));
-  ++w.in_pos;
-  ++w.out_pos;
-}
+// A strip between two rows is a sequence of triangles, each a template: three vertices, each
+// (row, step) in 2 bits (bit 1: the outside row, bit 0: one past its cursor), then which
+// cursors advance (bit 6: inside, bit 7: outside). The stitch.cpp walker's moves:
+const uint kTbI0 = 0u, kTbI1 = 1u, kTbO0 = 2u, kTbO1 = 3u;
+const uint kTbNone = 0xffffffffu;
+const uint kTbAdvanceOutside = kTbO0 | kTbO1 << 2 | kTbI0 << 4 | 2u << 6;
+const uint kTbAdvanceInside = kTbI0 | kTbO0 << 2 | kTbI1 << 4 | 1u << 6;
+// Quads as two templates each: split along inside -> outside + 1 (inside triangle first, or
+// outside first as in the odd centre strip), or along outside -> inside + 1.
+const uint kTbFromInsideA = kTbI0 | kTbO0 << 2 | kTbO1 << 4;
+const uint kTbFromInsideB = kTbI0 | kTbO1 << 2 | kTbI1 << 4 | 3u << 6;
+const uint kTbFromInsideOutsideFirstA = kTbO0 | kTbO1 << 2 | kTbI0 << 4;
+const uint kTbFromOutsideA = kTbO0 | kTbI1 << 2 | kTbI0 << 4;
+const uint kTbFromOutsideB = kTbO0 | kTbO1 << 2 | kTbI1 << 4 | 3u << 6;
+// The middle of a transition: both odd (a quad), the outside odd (one triangle).
+const uint kTbMiddleOddA = kTbI0 | kTbO0 << 2 | kTbI1 << 4;
+const uint kTbMiddleOddB = kTbI1 | kTbO0 << 2 | kTbO1 << 4 | 3u << 6;
+const uint kTbMiddleOutsideOdd = kTbI0 | kTbO0 << 2 | kTbO1 << 4 | 2u << 6;
 
 // stitch.h Diagonals.
 const int kTbInsideToOutside = 0;
 const int kTbInsideToOutsideExceptMiddle = 1;
 const int kTbMirrored = 2;
 
-// stitch.cpp stitchRegular: rows of equal length, or two apart (trapezoid).
-void tbStitchRegular(bool trapezoid, int diagonals, TbRow inside, TbRow outside) {
-  TbWalk w = TbWalk(inside, outside, 0, 0);
-  const int inside_length = tbRowLength(inside);
-  const int quads = inside_length - 1;
-  if (trapezoid) tbAdvanceOutside(w);
-  if (diagonals == kTbInsideToOutside) {
-    for (int q = 0; q < quads; ++q) tbQuadDiagonalFromInside(w, false);
-  } else if (diagonals == kTbInsideToOutsideExceptMiddle) {
-    const int half_quads = inside_length / 2 - 1;
-    for (int q = 0; q < half_quads; ++q) tbQuadDiagonalFromInside(w, true);
-    tbQuadDiagonalFromOutside(w);
-    for (int q = half_quads + 1; q < quads; ++q) tbQuadDiagonalFromInside(w, true);
-  } else {
-    const int half_quads = inside_length / 2;
-    int q = 0;
-    for (; q < half_quads; ++q) tbQuadDiagonalFromOutside(w);
-    for (; q < quads; ++q) tbQuadDiagonalFromInside(w, false);
-  }
-  if (trapezoid) tbAdvanceOutside(w);
+// One strip: stitch.cpp stitchRegular (transition false) or stitchTransition (true).
+struct TbStrip {
+  bool transition;
+  bool trapezoid;  // regular: rows two apart, one corner triangle at each end
+  int diagonals;   // regular
+  int inside_length;
+  int inside_half;   // transition: positions on each half before the middle
+  int outside_half;  // transition
+  bool inside_odd;   // transition
+  bool outside_odd;  // transition
+};
+
+TbStrip tbRegularStrip(bool trapezoid, int diagonals, TbRow inside) {
+  return TbStrip(false, trapezoid, diagonals, tbRowLength(inside), 0, 0, false, false);
+}
+
+TbStrip tbTransitionStrip(TbEdgeSpacing inside, TbEdgeSpacing outside) {
+  return TbStrip(true, false, 0, 0, inside.half_points - (inside.odd ? 1 : 0),
+                 outside.half_points - (outside.odd ? 1 : 0), inside.odd, outside.odd);
 }
 
 // stitch.cpp rulerPosition: the half-edge position step 1..32 of the ruler order reveals.
@@ -175,38 +157,64 @@ int tbRulerPosition(int step) {
   return (1 << (4 - s)) + (k >> (s + 1));
 }
 
-// stitch.cpp stitchTransition: the first ring in, rows of any lengths, in ruler order.
-void tbStitchTransition(TbRow inside, TbEdgeSpacing inside_spacing, TbRow outside,
-                        TbEdgeSpacing outside_spacing) {
-  TbWalk w = TbWalk(inside, outside, 0, 0);
-  const bool inside_odd = inside_spacing.odd;
-  const bool outside_odd = outside_spacing.odd;
-  const int inside_half = inside_spacing.half_points - (inside_odd ? 1 : 0);
-  const int outside_half = outside_spacing.half_points - (outside_odd ? 1 : 0);
+int tbStripSlots(TbStrip strip) { return strip.transition ? 132 : 2 * strip.inside_length; }
 
-  if (outside_half > 0) tbAdvanceOutside(w);
-  for (int step = 1; step <= 32; ++step) {
-    const int position = tbRulerPosition(step);
-    if (position < inside_half) tbAdvanceInside(w);
-    if (position < outside_half) tbAdvanceOutside(w);
+// The template of slot `slot` of a regular strip: the opening corner, two per quad, the
+// closing corner.
+uint tbRegularSlot(TbStrip strip, int slot) {
+  const int quads = strip.inside_length - 1;
+  if (slot == 0 || slot == 2 * quads + 1) return strip.trapezoid ? kTbAdvanceOutside : kTbNone;
+  const int q = (slot - 1) / 2;
+  const bool first = ((slot - 1) & 1) == 0;
+  bool from_outside = false, outside_first = false;
+  if (strip.diagonals == kTbInsideToOutsideExceptMiddle) {
+    from_outside = q == strip.inside_length / 2 - 1;
+    outside_first = !from_outside;
+  } else if (strip.diagonals == kTbMirrored) {
+    from_outside = q < strip.inside_length / 2;
   }
-  if (inside_odd && outside_odd) {
-    tbAddTriangle(tbIn(w, 0), tbOut(w, 0), tbIn(w, 1));
-    tbAddTriangle(tbIn(w, 1), tbOut(w, 0), tbOut(w, 1));
-    ++w.in_pos;
-    ++w.out_pos;
-  } else if (outside_odd) {
-    tbAddTriangle(tbIn(w, 0), tbOut(w, 0), tbOut(w, 1));
-    ++w.out_pos;
-  } else if (inside_odd) {
-    tbAdvanceInside(w);
+  if (from_outside) return first ? kTbFromOutsideA : kTbFromOutsideB;
+  if (!first) return kTbFromInsideB;
+  return outside_first ? kTbFromInsideOutsideFirstA : kTbFromInsideA;
+}
+
+// The template of slot `slot` of a transition strip: the opening corner, the first half in
+// ruler order (inside then outside per step), the middle (two slots), the second half
+// (steps reversed, outside then inside), the closing corner.
+uint tbTransitionSlot(TbStrip strip, int slot) {
+  if (slot == 0 || slot == 131) return strip.outside_half > 0 ? kTbAdvanceOutside : kTbNone;
+  if (slot == 65 || slot == 66) {
+    if (strip.inside_odd && strip.outside_odd) return slot == 65 ? kTbMiddleOddA : kTbMiddleOddB;
+    if (slot == 66) return kTbNone;
+    if (strip.outside_odd) return kTbMiddleOutsideOdd;
+    return strip.inside_odd ? kTbAdvanceInside : kTbNone;
   }
-  for (int step = 32; step >= 1; --step) {
-    const int position = tbRulerPosition(step);
-    if (position < outside_half) tbAdvanceOutside(w);
-    if (position < inside_half) tbAdvanceInside(w);
+  const bool second_half = slot > 66;
+  const int k = second_half ? slot - 67 : slot - 1;
+  const int position = tbRulerPosition(second_half ? 32 - k / 2 : k / 2 + 1);
+  const bool inside_move = ((k & 1) == 0) != second_half;
+  if (inside_move) return position < strip.inside_half ? kTbAdvanceInside : kTbNone;
+  return position < strip.outside_half ? kTbAdvanceOutside : kTbNone;
+}
+
+// Emits the strip between two rows, from their starts. One emitting site for every strip
+// kind keeps the inlined kernel small (lavapipe compiles it at pipeline creation).
+void tbStitch(TbRow inside, TbRow outside, TbStrip strip) {
+  ivec2 cursor = ivec2(0);  // inside, outside
+  const int slots = tbStripSlots(strip);
+  for (int slot = 0; slot < slots; ++slot) {
+    const uint t = strip.transition ? tbTransitionSlot(strip, slot) : tbRegularSlot(strip, slot);
+    if (t == kTbNone) continue;
+    uint v[3];
+    for (int i = 0; i < 3; ++i) {
+      const uint code = (t >> (2 * i)) & 3u;
+      const bool out_row = (code & 2u) != 0u;
+      const int j = (out_row ? cursor.y : cursor.x) + int(code & 1u);
+      v[i] = tbRowAt(out_row ? outside : inside, j);
+    }
+    tbAddTriangle(v[0], v[1], v[2]);
+    cursor += ivec2((t >> 6) & 1u, (t >> 7) & 1u);
   }
-  if (outside_half > 0) tbAdvanceOutside(w);
 }
 
 // Stitches ring `inside` (ring index r >= 1) to the ring outside it, edge by edge: the
@@ -215,12 +223,10 @@ void tbStitchTransition(TbRow inside, TbEdgeSpacing inside_spacing, TbRow outsid
 // along v, 1 and 3 along u).
 void tbStitchRings(int r, TbRing outside, TbRing inside, TbRingPlan plan) {
   for (int e = 0; e < outside.edges; ++e) {
-    if (r == 1) {
-      const TbEdgeSpacing along = (outside.edges == 4 && (e & 1) == 0) ? plan.inner1 : plan.inner0;
-      tbStitchTransition(tbRow(inside, e), along, tbRow(outside, e), tbPlanOuter(plan, e));
-    } else {
-      tbStitchRegular(true, kTbMirrored, tbRow(inside, e), tbRow(outside, e));
-    }
+    const TbEdgeSpacing along = (outside.edges == 4 && (e & 1) == 0) ? plan.inner1 : plan.inner0;
+    const TbStrip strip = r == 1 ? tbTransitionStrip(along, tbPlanOuter(plan, e))
+                                 : tbRegularStrip(true, kTbMirrored, tbRow(inside, e));
+    tbStitch(tbRow(inside, e), tbRow(outside, e), strip);
   }
 }
 

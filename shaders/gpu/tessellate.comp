@@ -7,13 +7,11 @@
 // buffer) at those offsets. Host side: core/gpu/compute_tessellator.h.
 #extension GL_GOOGLE_include_directive : require
 
-layout(local_size_x = 1) in;
+layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kWrite = 0;
-// 1: the tests' broken control (common/tess_spacing.glsl TB_TESS_TRUNCATING_CONTROL).
-layout(constant_id = 1) const uint kTruncatingControl = 0;
-#define TB_TESS_TRUNCATING_CONTROL (kTruncatingControl != 0u)
 
-// Per patch 8 words: outer level bits [4], inner level bits [2], domain | spacing << 8, 0.
+// Per patch 8 words: outer level bits [4], inner level bits [2], domain | spacing << 8, flags
+// (1: cw winding, 2: point mode, 4: the tests' rounding-up control).
 layout(std430, set = 0, binding = 0) readonly buffer Patches { uint patch_words[]; };
 // Per patch: points, index words (3 a triangle, 2 a line segment), culled (0/1), 0.
 layout(std430, set = 0, binding = 1) buffer Counts { uvec4 counts[]; };
@@ -30,10 +28,8 @@ layout(std430, set = 0, binding = 5) buffer Indices { uint indices[]; };
 
 layout(push_constant) uniform Params {
   uint patch_count;
-  uint ccw;         // 1: layout(ccw), the reference order; 0: cw
-  uint point_mode;  // 1: points only
-  uint point_capacity;
-  uint index_capacity;
+  uint point_capacity;  // points the Points buffer holds
+  uint index_capacity;  // words the Indices buffer holds
 } params;
 
 const uint kErrorBadCode = 1u;
@@ -77,8 +73,10 @@ void main() {
   const vec4 outer = uintBitsToFloat(
       uvec4(patch_words[w], patch_words[w + 1u], patch_words[w + 2u], patch_words[w + 3u]));
   const vec2 inner = uintBitsToFloat(uvec2(patch_words[w + 4u], patch_words[w + 5u]));
-  g_tb_ccw = params.ccw != 0u;
-  g_tb_point_mode = params.point_mode != 0u;
+  const uint flags = patch_words[w + 7u];
+  g_tb_ccw = (flags & 1u) == 0u;
+  g_tb_point_mode = (flags & 2u) != 0u;
+  g_tb_rounding_up_control = (flags & 4u) != 0u;
   const bool drawn = tbTessellatePatch(domain, spacing, outer, inner);
   // The write pass must retrace the count pass (a driver that cut a loop short would not).
   if (kWrite != 0u && (g_tb_point_count != counts[p].x ||

@@ -1,17 +1,21 @@
 // The compute tessellator (shaders/gpu/tessellate.comp) against the CPU tessellator
 // (core/tess, bit-exact with lavapipe: tess_sweep_test.cpp), bit for bit and in order: the
-// same culling, the same points (16.16 (u, v), float w), the same triangles or line
-// segments in the same order. Every domain x spacing, random level sets from the sweep's
-// generator plus per-edge levels just above every integer 1..64 (one float ulp, half a
-// 16.16 step: the rounding tie, one step, one and a half), in both windings and point mode,
-// all patches of a pass in one batch (one submission). Broken controls: a kernel that
-// truncates levels to 16.16 instead of rounding half to even, and CPU levels nudged by one
-// 16.16 step, must both be caught on the fractional spacings.
+// same culling, the same points (16.16 (u, v), float w), the same triangles or line segments
+// in the same order. Every domain x spacing: random level sets from the lavapipe sweep's
+// generator (culling, NaN, the clamps, just above odd integers) and per-edge levels just
+// above every integer 1..64 (one float ulp, half a 16.16 step: the rounding tie, one step,
+// one and a half), in ccw; fewer random ones in cw and in point mode. Broken controls: a
+// kernel that rounds levels up to 16.16 instead of half to even (on the just-above levels),
+// and CPU levels nudged by one 16.16 step, must both be caught on the fractional spacings;
+// integer spacings round levels to integers first, so the kernel control leaves them equal.
+// Everything is
+// one batch (one pipeline build, one submission), built once per test binary.
+// TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell and pass (default 40).
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -29,14 +33,18 @@ using tess::Domain;
 using tess::Spacing;
 
 constexpr uint32_t kSeed = 0xc0de41;
-constexpr int kRandomPerCell = 120;
-constexpr int kMismatchesReported = 400;
+constexpr int kMismatchesReported = 5;
+constexpr size_t kCells = 12;  // domain x spacing
 
-bool fractional(Spacing s) {
-  return s == Spacing::kFractionalOdd || s == Spacing::kFractionalEven;
+int randomPerCell() {
+  const char* value = std::getenv("TB_COMPUTE_TESS_SWEEP");
+  return value != nullptr ? std::max(1, std::atoi(value)) : 40;
 }
 
-// Level k plus offset o for each of the six levels, o cycling through just-above values.
+size_t cellOf(const TessPatch& p) { return 4 * size_t(p.domain) + size_t(p.spacing); }
+bool fractional(Spacing s) { return s == Spacing::kFractionalOdd || s == Spacing::kFractionalEven; }
+
+// Level k plus an offset for each of the six levels, cycling through just-above values.
 tess::Levels justAbove(int k) {
   const float above[] = {std::nextafter(float(k), 100.0f), float(k) + 0x1p-17f,
                          float(k) + 0x1p-16f, float(k) + 0x3p-17f};
@@ -46,15 +54,42 @@ tess::Levels justAbove(int k) {
   return levels;
 }
 
-// Every domain x spacing: kRandomPerCell random level sets, then 1..64 just above.
-std::vector<TessPatch> sweepPatches() {
+enum Pass { kCcw, kCw, kPointMode, kControl, kPasses };
+
+// The batch: per cell, ccw random + just above 1..64; cw and point mode with half as many
+// random level sets; the rounding-up control on the just-above levels.
+struct Sweep {
   std::vector<TessPatch> patches;
+  std::vector<Pass> pass;  // per patch
+  ComputeTessellation batch;
+};
+
+std::vector<TessPatch> sweepPatches(std::vector<Pass>* pass) {
+  std::vector<TessPatch> patches;
+  const int random = randomPerCell();
   for (Domain d : {Domain::kTriangle, Domain::kQuad, Domain::kIsoline}) {
     for (Spacing s : {Spacing::kInteger, Spacing::kPow2, Spacing::kFractionalOdd,
                       Spacing::kFractionalEven}) {
       testing::LevelGenerator generator(kSeed + 16 * uint32_t(d) + uint32_t(s));
-      for (int i = 0; i < kRandomPerCell; ++i) patches.push_back({d, s, generator.next()});
-      for (int k = 1; k <= 64; ++k) patches.push_back({d, s, justAbove(k)});
+      for (int p = kCcw; p < kPasses; ++p) {
+        TessPatch patch;
+        patch.domain = d;
+        patch.spacing = s;
+        patch.options.ccw = p != kCw;
+        patch.options.point_mode = p == kPointMode;
+        patch.rounding_up_control = p == kControl;
+        const int count = p == kCcw ? random : (p == kControl ? 0 : std::max(1, random / 2));
+        for (int i = 0; i < count; ++i) {
+          patch.levels = generator.next();
+          patches.push_back(patch);
+          pass->push_back(Pass(p));
+        }
+        for (int k = 1; (p == kCcw || p == kControl) && k <= 64; ++k) {
+          patch.levels = justAbove(k);
+          patches.push_back(patch);
+          pass->push_back(Pass(p));
+        }
+      }
     }
   }
   return patches;
@@ -110,123 +145,89 @@ std::optional<std::string> difference(const tess::Tessellation& cpu,
   return out.str();
 }
 
-struct Tally {
-  std::vector<uint32_t> mismatches_per_cell = std::vector<uint32_t>(12, 0);
-  uint64_t points = 0;
-  uint32_t total() const {
-    uint32_t sum = 0;
-    for (uint32_t m : mismatches_per_cell) sum += m;
-    return sum;
-  }
-};
-
-size_t cellOf(const TessPatch& p) { return 4 * size_t(p.domain) + size_t(p.spacing); }
-
-// Compares the batch patch by patch against tess::tessellate of `cpu_levels` (the batch's
-// own levels unless a control nudges them); reports the first few when `report`.
-Tally compareBatch(const std::vector<TessPatch>& patches, const ComputeTessellation& batch,
-                   const tess::Options& options, const std::vector<tess::Levels>& cpu_levels,
-                   bool report) {
-  Tally tally;
-  for (size_t i = 0; i < patches.size(); ++i) {
-    const TessPatch& p = patches[i];
-    const tess::Tessellation cpu = tess::tessellate(p.domain, p.spacing, cpu_levels[i], options);
-    const tess::Tessellation gpu = toTessellation(batch, i, p.domain);
-    tally.points += gpu.points.size();
-    if (const auto diff = difference(cpu, gpu)) {
-      if (report && tally.total() < kMismatchesReported) {
-        ADD_FAILURE() << describe(p) << (options.ccw ? " ccw" : " cw")
-                      << (options.point_mode ? " point_mode" : "") << ": " << *diff;
+// Mismatching patches per cell of the given pass, against tess::tessellate of the patch's
+// levels with `adjust` applied; the first few are reported as failures when `report`.
+template <class Adjust>
+std::vector<uint32_t> mismatches(const Sweep& s, Pass pass, bool report, Adjust adjust) {
+  std::vector<uint32_t> per_cell(kCells, 0);
+  int reported = 0;
+  for (size_t i = 0; i < s.patches.size(); ++i) {
+    if (s.pass[i] != pass) continue;
+    const TessPatch& p = s.patches[i];
+    tess::Levels levels = p.levels;
+    adjust(&levels);
+    const tess::Tessellation cpu = tess::tessellate(p.domain, p.spacing, levels, p.options);
+    if (const auto diff = difference(cpu, toTessellation(s.batch, i, p.domain))) {
+      if (report && reported++ < kMismatchesReported) {
+        ADD_FAILURE() << describe(p) << (p.options.ccw ? " ccw" : " cw")
+                      << (p.options.point_mode ? " point_mode" : "") << ": " << *diff;
       }
-      ++tally.mismatches_per_cell[cellOf(p)];
+      ++per_cell[cellOf(p)];
     }
   }
-  return tally;
+  return per_cell;
 }
 
-std::vector<tess::Levels> levelsOf(const std::vector<TessPatch>& patches) {
-  std::vector<tess::Levels> levels;
-  for (const TessPatch& p : patches) levels.push_back(p.levels);
-  return levels;
-}
+void asIs(tess::Levels*) {}
 
-TEST(ComputeTessellator, EqualsCpuTessellatorBitwiseOnTheSweep) {
-  TB_GPU_CONTEXT_OR_SKIP(context);
-  const std::vector<TessPatch> patches = sweepPatches();
-  for (const auto& [ccw, point_mode] : {std::pair{true, false}, {false, false}, {true, true}}) {
-    tess::Options options;
-    options.ccw = ccw;
-    options.point_mode = point_mode;
-    const ComputeTessellation batch = tessellateOnCompute(context, patches, options);
-    ASSERT_EQ(batch.patches.size(), patches.size());
-    const Tally tally = compareBatch(patches, batch, options, levelsOf(patches), true);
-    EXPECT_EQ(tally.total(), 0u) << "of " << patches.size() << " patches";
-    for (size_t c = 0; c < 12; ++c) std::printf("cell %zu: %u\n", c, tally.mismatches_per_cell[c]);
-    EXPECT_GT(tally.points, 100000u);  // the sweep is not trivially small
+// The pass's mismatching patches are 0 in every cell.
+void expectEqual(const Sweep& s) {
+  for (Pass pass : {kCcw, kCw, kPointMode}) {
+    const std::vector<uint32_t> per_cell = mismatches(s, pass, true, asIs);
+    for (size_t cell = 0; cell < kCells; ++cell) EXPECT_EQ(per_cell[cell], 0u) << "cell " << cell;
   }
+  EXPECT_GT(s.batch.points.size(), 1000000u);  // the sweep is not trivially small
 }
 
 // The comparison catches a kernel off by a 16.16 rounding, and CPU levels off by one 16.16
-// step, on every fractional cell; integer and pow2 round levels up to integers first, where
-// truncation and rounding agree, so the kernel control leaves them equal.
-TEST(ComputeTessellator, BrokenControlsAreCaught) {
-  TB_GPU_CONTEXT_OR_SKIP(context);
-  const std::vector<TessPatch> patches = sweepPatches();
-  const tess::Options options;
-  const ComputeTessellation truncating =
-      tessellateOnCompute(context, patches, options, TessKernel::kTruncatingControl);
-  const Tally kernel_control = compareBatch(patches, truncating, options, levelsOf(patches), false);
-
-  const ComputeTessellation exact = tessellateOnCompute(context, patches, options);
-  std::vector<tess::Levels> nudged = levelsOf(patches);
-  for (tess::Levels& l : nudged) l.outer[1] += 0x1p-16f;
-  const Tally level_control = compareBatch(patches, exact, options, nudged, false);
-
-  for (size_t cell = 0; cell < 12; ++cell) {
-    const bool is_fractional = fractional(Spacing(cell % 4));
-    SCOPED_TRACE("cell " + std::string(tess::toString(Domain(cell / 4))) + " x " +
+// step, on every fractional cell. Integer and pow2 round levels up to integers first, where
+// both roundings agree, so the kernel control leaves them equal.
+void expectControlsCaught(const Sweep& s) {
+  const std::vector<uint32_t> kernel_control = mismatches(s, kControl, false, asIs);
+  const std::vector<uint32_t> level_control =
+      mismatches(s, kCcw, false, [](tess::Levels* l) { l->outer[1] += 0x1p-16f; });
+  for (size_t cell = 0; cell < kCells; ++cell) {
+    SCOPED_TRACE(std::string(tess::toString(Domain(cell / 4))) + " x " +
                  std::string(tess::toString(Spacing(cell % 4))));
-    if (is_fractional) {
-      EXPECT_GT(kernel_control.mismatches_per_cell[cell], 0u);
-      EXPECT_GT(level_control.mismatches_per_cell[cell], 0u);
+    if (fractional(Spacing(cell % 4))) {
+      EXPECT_GT(kernel_control[cell], 0u);
+      EXPECT_GT(level_control[cell], 0u);
     } else {
-      EXPECT_EQ(kernel_control.mismatches_per_cell[cell], 0u);
+      EXPECT_EQ(kernel_control[cell], 0u);
     }
   }
 }
 
-TEST(ComputeTessellator, EmptyBatchAndOffsetsArePrefixSums) {
-  TB_GPU_CONTEXT_OR_SKIP(context);
-  EXPECT_TRUE(tessellateOnCompute(context, std::vector<TessPatch>{}).patches.empty());
-  const std::vector<TessPatch> patches = sweepPatches();
-  const ComputeTessellation batch = tessellateOnCompute(context, patches);
-  uint32_t point = 0, index = 0;
+// Offsets are the prefix sums of the counts; every index stays inside its own patch.
+void expectContiguous(const ComputeTessellation& batch) {
+  uint64_t point = 0, index = 0, outside = 0;
   for (const TessPatchRange& range : batch.patches) {
     EXPECT_EQ(range.first_point, point);
     EXPECT_EQ(range.first_index, index);
+    for (uint32_t k = 0; k < range.index_count; ++k) {
+      const uint32_t i = batch.indices[range.first_index + k];
+      outside += i < range.first_point || i >= range.first_point + range.point_count;
+    }
     point += range.point_count;
     index += range.index_count;
   }
+  EXPECT_EQ(outside, 0u);
   EXPECT_EQ(point, batch.points.size());
   EXPECT_EQ(index, batch.indices.size());
 }
 
+// One test (one process under ctest): the batch's pipelines take most of its time.
+TEST(ComputeTessellator, EqualsCpuTessellatorBitwiseAndCatchesBrokenControls) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  Sweep s;
+  s.patches = sweepPatches(&s.pass);
+  s.batch = tessellateOnCompute(context, s.patches);
+  ASSERT_EQ(s.batch.patches.size(), s.patches.size());
+  expectEqual(s);
+  expectControlsCaught(s);
+  expectContiguous(s.batch);
+  EXPECT_TRUE(tessellateOnCompute(context, std::vector<TessPatch>{}).patches.empty());
+}
+
 }  // namespace
 }  // namespace tb::gpu::compute_tessellator_test
-namespace tb::gpu::compute_tessellator_test {
-TEST(ComputeTessellatorDebug, Single) {
-  TB_GPU_CONTEXT_OR_SKIP(context);
-  std::vector<TessPatch> all = sweepPatches();
-  auto t0 = std::chrono::steady_clock::now();
-  ComputeTessellator tess(context, all);
-  auto t1 = std::chrono::steady_clock::now();
-  tess.run();
-  auto t2 = std::chrono::steady_clock::now();
-  const ComputeTessellation batch = tess.read();
-  auto t3 = std::chrono::steady_clock::now();
-  const Tally t = compareBatch(all, batch, {}, levelsOf(all), false);
-  auto t4 = std::chrono::steady_clock::now();
-  auto s = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
-  std::printf("build %.2f run %.2f read %.2f compare %.2f, %u mismatches, %zu points\n", s(t0,t1), s(t1,t2), s(t2,t3), s(t3,t4), t.total(), batch.points.size());
-}
-}
