@@ -29,7 +29,8 @@ std::array<uint64_t, 2> patchBounds(const TessPatch& patch) {
   auto b = [&](float level) { return axisPointBound(level, patch.spacing); };
   switch (patch.domain) {
     case tess::Domain::kTriangle: {
-      const uint64_t points = b(l.outer[0]) + b(l.outer[1]) + b(l.outer[2]) + b(l.inner[0]) * b(l.inner[0]);
+      const uint64_t points =
+          b(l.outer[0]) + b(l.outer[1]) + b(l.outer[2]) + b(l.inner[0]) * b(l.inner[0]);
       return {points, 6 * points};
     }
     case tess::Domain::kQuad: {
@@ -74,10 +75,12 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
                    " patches is too large for 32-bit offsets");
   }
   const uint64_t n = patches.size();
-  std::vector<GpuComputeBuffer> buffers = {
-      buffer(0, "patches", 4 * words.size()), buffer(1, "counts", 16 * n),
-      buffer(2, "offsets", 8 * n),            buffer(3, "status", 16),
-      buffer(4, "points", 8 * point_capacity_), buffer(5, "indices", 4 * index_capacity_)};
+  std::vector<GpuComputeBuffer> buffers = {buffer(0, "patches", 4 * words.size()),
+                                           buffer(1, "counts", 16 * n),
+                                           buffer(2, "offsets", 8 * n),
+                                           buffer(3, "status", 16),
+                                           buffer(4, "points", 8 * point_capacity_),
+                                           buffer(5, "indices", 4 * index_capacity_)};
   buffers[0].initial_words = std::move(words);
 
   const uint32_t groups = std::max<uint32_t>(1, (patch_count_ + kGroupSize - 1) / kGroupSize);
@@ -108,7 +111,8 @@ ComputeTessellation ComputeTessellator::read() const {
   const std::vector<uint32_t> status = runner_->read("status");
   if (status[2] != 0) {
     throw GpuError("compute tessellator: the kernels raised error bits " +
-                   std::to_string(status[2]) + " (1 bad domain/spacing code, 2/4 a buffer bound, 8 write pass != count pass)");
+                   std::to_string(status[2]) +
+                   " (1 bad domain/spacing code, 2/4 a buffer bound, 8 write pass != count pass)");
   }
   const std::vector<uint32_t> counts = runner_->read("counts");
   const std::vector<uint32_t> offsets = runner_->read("offsets");

@@ -52,6 +52,11 @@ TbRing tbTriangleInnerRing(TbEdgeSpacing inner, int r) {
   return ring;
 }
 
+// An even inside level's centre point, stitched as a ring whose every row is that point.
+TbRing tbTriangleCentre() {
+  return tbMakeRing(kTbRingCentre, tbAddPoint(kFxOneThird, kFxOneThird), 3, ivec4(0));
+}
+
 void tbTessellateTriangle(TbRingPlan plan) {
   if (plan.minimal) {
     tbAddPoint(0u, kFxOne);
@@ -66,9 +71,7 @@ void tbTessellateTriangle(TbRingPlan plan) {
   const int rings = full_rings + (inner.odd ? 0 : 1);
   TbRing outside = tbTriangleBoundary(plan);
   for (int r = 1; r < rings; ++r) {
-    const TbRing ring =
-        r < full_rings ? tbTriangleInnerRing(inner, r)
-                       : tbMakeRing(kTbRingCentre, tbAddPoint(kFxOneThird, kFxOneThird), 3, ivec4(0));
+    const TbRing ring = r < full_rings ? tbTriangleInnerRing(inner, r) : tbTriangleCentre();
     if (!g_tb_point_mode) tbStitchRings(r, outside, ring, plan);
     outside = ring;
   }
@@ -132,8 +135,8 @@ TbRing tbQuadInnerRing(TbRingPlan plan, int r) {
 TbRing tbQuadMiddleLine(TbRingPlan plan, int start, bool row) {
   const TbEdgeSpacing s = row ? plan.inner0 : plan.inner1;
   const int last = s.point_count - 1 - start;
-  const TbRing ring = tbMakeRing(row ? kTbRingMiddleRow : kTbRingMiddleColumn, g_tb_point_count, 4,
-                             ivec4(last - start + 1, 0, 0, 0));
+  const TbRing ring = tbMakeRing(row ? kTbRingMiddleRow : kTbRingMiddleColumn, g_tb_point_count,
+                                 4, ivec4(last - start + 1, 0, 0, 0));
   for (int p = start; p <= last; ++p) {
     if (row) {
       tbAddPoint(tbPlacePoint(s, p), kFxHalf);

@@ -154,7 +154,9 @@ TbEdgeSpacing tbPlanOuter(TbRingPlan plan, int e) {
   if (e == 1) return plan.outer1;
   return e == 2 ? plan.outer2 : plan.outer3;
 }
-TbEdgeSpacing tbPlanInner(TbRingPlan plan, int axis) { return axis == 0 ? plan.inner0 : plan.inner1; }
+TbEdgeSpacing tbPlanInner(TbRingPlan plan, int axis) {
+  return axis == 0 ? plan.inner0 : plan.inner1;
+}
 
 struct TbIsolinePlan {
   int line_count;

@@ -79,13 +79,9 @@ void main() {
   g_tb_rounding_up_control = (flags & 4u) != 0u;
   const bool drawn = tbTessellatePatch(domain, spacing, outer, inner);
   // The write pass must retrace the count pass (a driver that cut a loop short would not).
-  if (kWrite != 0u && (g_tb_point_count != counts[p].x ||
-                       (domain == kTbDomainIsoline ? 2u : 3u) * g_tb_triangle_count != counts[p].y)) {
+  const uint index_words = (domain == kTbDomainIsoline ? 2u : 3u) * g_tb_triangle_count;
+  if (kWrite != 0u && (g_tb_point_count != counts[p].x || index_words != counts[p].y)) {
     atomicOr(status.errors, kErrorCountMismatch);
   }
-  if (kWrite == 0u) {
-    const uint words_per_primitive = domain == kTbDomainIsoline ? 2u : 3u;
-    counts[p] = uvec4(g_tb_point_count, words_per_primitive * g_tb_triangle_count,
-                      drawn ? 0u : 1u, 0u);
-  }
+  if (kWrite == 0u) counts[p] = uvec4(g_tb_point_count, index_words, drawn ? 0u : 1u, 0u);
 }

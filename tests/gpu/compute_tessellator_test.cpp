@@ -11,6 +11,8 @@
 // Everything is
 // one batch (one pipeline build, one submission), built once per test binary.
 // TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell and pass (default 40).
+#include "core/gpu/compute_tessellator.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -21,7 +23,6 @@
 #include <string>
 #include <vector>
 
-#include "core/gpu/compute_tessellator.h"
 #include "core/tess/tessellator.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/gpu/tess_level_generator.h"
@@ -46,8 +47,8 @@ bool fractional(Spacing s) { return s == Spacing::kFractionalOdd || s == Spacing
 
 // Level k plus an offset for each of the six levels, cycling through just-above values.
 tess::Levels justAbove(int k) {
-  const float above[] = {std::nextafter(float(k), 100.0f), float(k) + 0x1p-17f,
-                         float(k) + 0x1p-16f, float(k) + 0x3p-17f};
+  const float above[] = {std::nextafter(float(k), 100.0f), float(k) + 0x1p-17f, float(k) + 0x1p-16f,
+                         float(k) + 0x3p-17f};
   tess::Levels levels;
   for (int i = 0; i < 4; ++i) levels.outer[i] = above[(k + i) % 4];
   for (int i = 0; i < 2; ++i) levels.inner[i] = above[(k + i + 2) % 4];
@@ -68,8 +69,8 @@ std::vector<TessPatch> sweepPatches(std::vector<Pass>* pass) {
   std::vector<TessPatch> patches;
   const int random = randomPerCell();
   for (Domain d : {Domain::kTriangle, Domain::kQuad, Domain::kIsoline}) {
-    for (Spacing s : {Spacing::kInteger, Spacing::kPow2, Spacing::kFractionalOdd,
-                      Spacing::kFractionalEven}) {
+    for (Spacing s :
+         {Spacing::kInteger, Spacing::kPow2, Spacing::kFractionalOdd, Spacing::kFractionalEven}) {
       testing::LevelGenerator generator(kSeed + 16 * uint32_t(d) + uint32_t(s));
       for (int p = kCcw; p < kPasses; ++p) {
         TessPatch patch;

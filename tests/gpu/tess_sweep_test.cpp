@@ -26,8 +26,8 @@ namespace {
 
 using tess::Domain;
 using tess::Levels;
-using testing::LevelGenerator;
 using tess::Spacing;
+using testing::LevelGenerator;
 
 // Per domain x spacing, each pass with its own random levels.
 struct Pass {
