@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/gpu/context.h"
 #include "core/gpu/gpu_error.h"
 #include "core/tess/fixed_point.h"
 
@@ -15,15 +16,16 @@ constexpr uint32_t kGroupSize = 64;  // tessellate.comp's local_size_x
 constexpr uint32_t kPatchWords = 8;  // per patch: outer [4], inner [2], code, flags
 
 // Points an edge or inside axis of this level can have: a processed level L in [1, 64]
-// gives at most ceil(L) + 3 points (edge_spacing.cpp point_count); pow2 rounds up to a
-// power of two first, and NaN or +inf clamp to the top.
+// gives at most ceil(L) + 3 points (edge_spacing.cpp point_count; an odd inside level's
+// raise to 4 included, as L >= 1 there); pow2 rounds up to a power of two first, and NaN
+// or +inf clamp to the top.
 uint64_t axisPointBound(float level, tess::Spacing spacing) {
-  if (spacing == tess::Spacing::kPow2 || !(level <= 64.0f)) return 68;
-  return static_cast<uint64_t>(std::ceil(std::max(level, 2.0f))) + 4;
+  if (spacing == tess::Spacing::kPow2 || !(level <= 64.0f)) return 67;
+  return static_cast<uint64_t>(std::ceil(std::max(level, 2.0f))) + 3;
 }
 
 // Upper bounds of a patch's points and index words: the boundary plus the full inside
-// grid; a triangulated disc has fewer than two triangles a point.
+// grid; a triangulated disc has fewer than two triangles a point (T = 2V - B - 2).
 std::array<uint64_t, 2> patchBounds(const TessPatch& patch) {
   const auto& l = patch.levels;
   auto b = [&](float level) { return axisPointBound(level, patch.spacing); };
@@ -43,6 +45,25 @@ std::array<uint64_t, 2> patchBounds(const TessPatch& patch) {
   }
   const uint64_t points = axisPointBound(l.outer[0], tess::Spacing::kInteger) * b(l.outer[1]);
   return {points, 2 * points};
+}
+
+uint64_t storageBufferRange(Context& context) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+  return properties.limits.maxStorageBufferRange;
+}
+
+// Appends one batch's output to another's, moving its offsets and indices along.
+void append(ComputeTessellation part, ComputeTessellation* out) {
+  const auto points = static_cast<uint32_t>(out->points.size());
+  const auto indices = static_cast<uint32_t>(out->indices.size());
+  for (TessPatchRange range : part.patches) {
+    range.first_point += points;
+    range.first_index += indices;
+    out->patches.push_back(range);
+  }
+  out->points.insert(out->points.end(), part.points.begin(), part.points.end());
+  for (uint32_t index : part.indices) out->indices.push_back(index + points);
 }
 
 GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes) {
@@ -70,9 +91,12 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     point_capacity_ += bounds[0];
     index_capacity_ += bounds[1];
   }
-  if (point_capacity_ > UINT32_MAX || index_capacity_ > UINT32_MAX) {
+  const uint64_t range = storageBufferRange(context);
+  if (8 * point_capacity_ > range || 4 * index_capacity_ > range) {
     throw GpuError("compute tessellator: a batch of " + std::to_string(patches.size()) +
-                   " patches is too large for 32-bit offsets");
+                   " patches may need " + std::to_string(4 * index_capacity_) +
+                   " bytes of indices, over the device's storage buffer range of " +
+                   std::to_string(range) + "; split the batch");
   }
   const uint64_t n = patches.size();
   std::vector<GpuComputeBuffer> buffers = {buffer(0, "patches", 4 * words.size()),
@@ -131,10 +155,21 @@ ComputeTessellation ComputeTessellator::read() const {
 }
 
 ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches) {
-  if (patches.empty()) return {};
-  ComputeTessellator tessellator(context, patches);
-  tessellator.run();
-  return tessellator.read();
+  const uint64_t range = storageBufferRange(context);
+  ComputeTessellation out;
+  for (size_t first = 0, end = 0; first < patches.size(); first = end) {
+    uint64_t points = 0, indices = 0;
+    for (end = first; end < patches.size(); ++end) {
+      const auto bounds = patchBounds(patches[end]);
+      points += bounds[0];
+      indices += bounds[1];
+      if (end > first && (8 * points > range || 4 * indices > range)) break;
+    }
+    ComputeTessellator tessellator(context, patches.subspan(first, end - first));
+    tessellator.run();
+    append(tessellator.read(), &out);
+  }
+  return out;
 }
 
 tess::Tessellation toTessellation(const ComputeTessellation& batch, size_t patch,

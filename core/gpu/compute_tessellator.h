@@ -56,7 +56,8 @@ enum TessErrors : uint32_t {
 // The batch's buffers and pipelines, made once; run() re-tessellates every patch.
 class ComputeTessellator {
  public:
-  // Throws GpuError on a device error. Buffers are sized by upper bounds from the levels.
+  // Throws GpuError on a device error, or when a buffer sized by the levels' upper bounds
+  // would exceed the device's storage buffer range (tessellateOnCompute splits such batches).
   ComputeTessellator(Context& context, std::span<const TessPatch> patches);
   ~ComputeTessellator();
   ComputeTessellator(const ComputeTessellator&) = delete;
@@ -76,7 +77,8 @@ class ComputeTessellator {
   std::unique_ptr<ComputeRunner> runner_;
 };
 
-// Builds, runs once and reads back.
+// Builds, runs once and reads back; a batch whose buffers would exceed the device's storage
+// buffer range runs as several (one pipeline build and submission each), joined in order.
 ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches);
 
 // One patch of a batch in the CPU tessellator's form: float (u, v, w) points with w =

@@ -53,8 +53,8 @@ TbRing tbMakeRing(int kind, uint base, int edges, ivec4 count) {
 }
 
 // Fills the edge starts once the counts are known. No loop: lavapipe (Mesa 22.3, gallivm)
-// caps the iterations of all loops nested in one outermost loop at 65535 and silently leaves
-// the loop, so a kernel keeps its per-triangle work loop-free.
+// ends a shader's loops silently after 65,535 iterations between them all
+// (LP_MAX_TGSI_LOOP_ITERATIONS), so the per-triangle work stays loop-free.
 void tbCloseRing(inout TbRing ring) {
   ring.start = ivec4(0, ring.count.x, ring.count.x + ring.count.y,
                      ring.count.x + ring.count.y + ring.count.z);

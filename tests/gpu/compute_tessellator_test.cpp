@@ -10,7 +10,7 @@
 // integer spacings round levels to integers first, so the kernel control leaves them equal.
 // Everything is
 // one batch (one pipeline build, one submission), built once per test binary.
-// TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell and pass (default 40).
+// TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell in ccw (default 32).
 #include "core/gpu/compute_tessellator.h"
 
 #include <gtest/gtest.h>
@@ -39,7 +39,7 @@ constexpr size_t kCells = 12;  // domain x spacing
 
 int randomPerCell() {
   const char* value = std::getenv("TB_COMPUTE_TESS_SWEEP");
-  return value != nullptr ? std::max(1, std::atoi(value)) : 40;
+  return value != nullptr ? std::max(1, std::atoi(value)) : 32;
 }
 
 size_t cellOf(const TessPatch& p) { return 4 * size_t(p.domain) + size_t(p.spacing); }
