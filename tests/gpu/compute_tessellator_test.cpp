@@ -10,7 +10,8 @@
 // integer spacings round levels to integers first, so the kernel control leaves them equal.
 // Everything is
 // one batch (one pipeline build, one submission), built once per test binary.
-// TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell in ccw (default 32).
+// TB_COMPUTE_TESS_SWEEP=N runs N random level sets per cell in ccw (default 32). Under
+// AddressSanitizer half the random sets and every other integer (sweepStride).
 #include "core/gpu/compute_tessellator.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@
 #include "core/tess/tessellator.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/gpu/tess_level_generator.h"
+#include "tests/test_support.h"
 
 namespace tb::gpu::compute_tessellator_test {
 namespace {
@@ -39,7 +41,8 @@ constexpr size_t kCells = 12;  // domain x spacing
 
 int randomPerCell() {
   const char* value = std::getenv("TB_COMPUTE_TESS_SWEEP");
-  return value != nullptr ? std::max(1, std::atoi(value)) : 32;
+  const int stride = static_cast<int>(::tb::testing::sweepStride(2));
+  return value != nullptr ? std::max(1, std::atoi(value)) : 32 / stride;
 }
 
 size_t cellOf(const TessPatch& p) { return 4 * size_t(p.domain) + size_t(p.spacing); }
@@ -85,7 +88,8 @@ std::vector<TessPatch> sweepPatches(std::vector<Pass>* pass) {
           patches.push_back(patch);
           pass->push_back(Pass(p));
         }
-        for (int k = 1; (p == kCcw || p == kControl) && k <= 64; ++k) {
+        const int k_step = static_cast<int>(::tb::testing::sweepStride(2));
+        for (int k = 1; (p == kCcw || p == kControl) && k <= 64; k += k_step) {
           patch.levels = justAbove(k);
           patches.push_back(patch);
           pass->push_back(Pass(p));
@@ -177,7 +181,8 @@ void expectEqual(const Sweep& s) {
     const std::vector<uint32_t> per_cell = mismatches(s, pass, true, asIs);
     for (size_t cell = 0; cell < kCells; ++cell) EXPECT_EQ(per_cell[cell], 0u) << "cell " << cell;
   }
-  EXPECT_GT(s.batch.points.size(), 1000000u);  // the sweep is not trivially small
+  // The sweep is not trivially small (a quarter of it under a sanitizer).
+  EXPECT_GT(s.batch.points.size(), 1000000u / ::tb::testing::sweepStride(4));
 }
 
 // The comparison catches a kernel off by a 16.16 rounding, and CPU levels off by one 16.16
