@@ -43,6 +43,12 @@ struct ComputeRunner::Impl {
   VkQueryPoolOwner timestamps;
   uint32_t steps_done = 0;
 
+  const Buffer& named(const std::string& name) const {
+    auto found = buffers.find(name);
+    if (found == buffers.end()) throw GpuError("compute runner: no buffer named '" + name + "'");
+    return found->second;
+  }
+
   Buffer& buffer(const GpuComputePass& pass, const std::string& name) {
     auto found = buffers.find(name);
     if (found == buffers.end()) fail(pass, "no buffer named '" + name + "'");
@@ -245,10 +251,17 @@ uint32_t ComputeRunner::dispatchesPerStep() const {
 uint32_t ComputeRunner::stepsDone() const { return impl_->steps_done; }
 
 std::vector<uint32_t> ComputeRunner::read(const std::string& name) const {
-  auto found = impl_->buffers.find(name);
-  if (found == impl_->buffers.end()) throw GpuError("compute runner: no buffer named '" + name + "'");
-  std::vector<uint32_t> words(size_t(found->second.sizeBytes() / 4));
-  found->second.read(words.data(), words.size() * 4);
+  return read(name, 0, impl_->named(name).sizeBytes() / 4);
+}
+
+std::vector<uint32_t> ComputeRunner::read(const std::string& name, uint64_t first_word,
+                                          uint64_t word_count) const {
+  const Buffer& buffer = impl_->named(name);
+  if ((first_word + word_count) * 4 > buffer.sizeBytes()) {
+    throw GpuError("compute runner: reading past the end of buffer '" + name + "'");
+  }
+  std::vector<uint32_t> words(static_cast<size_t>(word_count));
+  buffer.read(words.data(), words.size() * 4, static_cast<size_t>(first_word * 4));
   return words;
 }
 

@@ -44,6 +44,10 @@ class ComputeRunner {
   uint32_t stepsDone() const;
   // The whole buffer `name`, as 32-bit words. Throws GpuError for an unknown name.
   std::vector<uint32_t> read(const std::string& name) const;
+  // Words [first_word, first_word + word_count) of buffer `name`. Throws GpuError for an
+  // unknown name or a range past the buffer's end.
+  std::vector<uint32_t> read(const std::string& name, uint64_t first_word,
+                             uint64_t word_count) const;
   // Bytes of every buffer the runner allocated (the GPU-resident state of the programs).
   uint64_t residentBytes() const;
   std::vector<std::string> bufferNames() const;  // sorted

@@ -10,9 +10,7 @@
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
-#include <limits>
 #include <optional>
-#include <random>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -21,6 +19,7 @@
 #include "core/gpu/tess_capture.h"
 #include "core/tess/tessellator.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/gpu/tess_level_generator.h"
 
 namespace tb::gpu {
 namespace {
@@ -28,6 +27,7 @@ namespace {
 using tess::Domain;
 using tess::Levels;
 using tess::Spacing;
+using testing::LevelGenerator;
 
 // Per domain x spacing, each pass with its own random levels.
 struct Pass {
@@ -40,49 +40,6 @@ constexpr Pass kPasses[] = {
     {"ccw", true, false, 1000}, {"cw", false, false, 1000}, {"point_mode", true, true, 400}};
 constexpr uint32_t kSeed = 0x7e55b0;
 constexpr int kMismatchesReported = 5;  // per cell; the count covers all of them
-
-// Levels uniform in [-1, 70), and one time in four a special value from the D3D11 rules:
-// culling (0, NaN), the minimum (1), just above it, just above an odd integer (parity
-// flips in fractional spacing), just below / at / above the 64 clamp.
-class LevelGenerator {
- public:
-  explicit LevelGenerator(uint32_t seed) : rng_(seed) {}
-
-  Levels next() {
-    Levels levels;
-    for (float& l : levels.outer) l = level();
-    for (float& l : levels.inner) l = level();
-    return levels;
-  }
-
- private:
-  float level() {
-    if (rng_() % 4 == 0) return special();
-    // mt19937's output is fully specified, unlike std::uniform_real_distribution's.
-    return -1.0f + 71.0f * static_cast<float>(rng_() >> 8) * 0x1p-24f;
-  }
-  float special() {
-    switch (rng_() % 8) {
-      case 0:
-        return 0.0f;
-      case 1:
-        return 1.0f;
-      case 2:
-        return 1.0f + 0x1p-18f;
-      case 3:
-        return static_cast<float>(2 * (rng_() % 32) + 1) + 0x1p-17f;
-      case 4:
-        return 63.9f;
-      case 5:
-        return 64.0f;
-      case 6:
-        return 65.0f;
-      default:
-        return std::numeric_limits<float>::quiet_NaN();
-    }
-  }
-  std::mt19937 rng_;
-};
 
 using Bits = std::array<uint32_t, 3>;
 using Primitive = std::array<Bits, 3>;  // unused vertices stay zero (lines)
