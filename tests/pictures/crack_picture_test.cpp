@@ -5,6 +5,7 @@
 #include "harness/pictures/crack_picture.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "core/gpu/render_target.h"
 #include "core/mesh/obj_loader.h"
@@ -12,6 +13,7 @@
 #include "harness/measures/error/error.h"
 #include "harness/pictures/run_pictures.h"
 #include "harness/pictures/surface_picture.h"
+#include "harness/report/markdown_sections.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"
@@ -105,6 +107,17 @@ TEST(CrackPicture, ACrackingVariantIsMarkedWhereItCracksAWatertightOneNowhere) {
   const pictures::Rgb pixel = phong.picture.image.at(uint32_t(at.x_px), uint32_t(at.y_px));
   EXPECT_TRUE(pixel == pictures::kCrackMark || pixel == pictures::kCrackHidden);
 
+  // The same pairs, in the same order, on one thread (the picture does not depend on it).
+  {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    const std::vector<measures::UnequalPair> serial =
+        pictures::crackPairsOf(*cubeSurface("phong"), row);
+    ASSERT_EQ(serial.size(), phong.pairs.size());
+    for (size_t i = 0; i < serial.size(); ++i) {
+      EXPECT_TRUE(serial[i].a == phong.pairs[i].a && serial[i].b == phong.pairs[i].b) << i;
+    }
+  }
+
   // Control: ACC on the same cube is watertight there, so nothing is marked.
   const Marked acc = markCube(context, "acc", row);
   EXPECT_TRUE(acc.pairs.empty());
@@ -112,9 +125,24 @@ TEST(CrackPicture, ACrackingVariantIsMarkedWhereItCracksAWatertightOneNowhere) {
   EXPECT_EQ(acc.picture.points_visible + acc.picture.points_hidden, 0u);
 }
 
-TEST(CrackPicture, FileNameFollowsTheOtherPictures) {
+TEST(CrackPicture, FileNameFollowsTheOtherPicturesAndReportMdLinksIt) {
   EXPECT_EQ(pictures::crackPicturePath("phong", "opensubdiv/catmark_cube"),
             "pictures/phong--opensubdiv--catmark_cube--cracks.png");
+  // report.md's link (harness/report, which cannot include the pictures) is the same path.
+  results::Record record;
+  record.technique = "phong";
+  record.asset = "my dir/x+y.obj";
+  results::MeasureResult error, cracks;
+  error.measure = "error";
+  cracks.measure = "cracks";
+  cracks.rows = {cracksRow("gpu", "16", 9, 9e-7)};
+  record.measures = {error, cracks};
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(record), "") << "no CPU float crack";
+  record.measures[1].rows.push_back(cracksRow("cpu_float", "16", 5, 2e-7));
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(record),
+            pictures::crackPicturePath(record.technique, record.asset));
+  record.measures[0].status = results::MeasureStatus::kSkipped;
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(record), "") << "no error picture";
 }
 
 }  // namespace
