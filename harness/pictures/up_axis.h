@@ -18,15 +18,16 @@ const char* toString(UpAxis up);
 // The world direction shown upwards: (0, 1, 0) or (0, 0, 1).
 mesh::Vec3d upVector(UpAxis up);
 
-// The up axis of a mesh, from its positions: z when the positions' spread about their mean
-// (the variance of each coordinate) is the same along x and y (within
-// kUpAxisSymmetryTolerance of the larger) and differs along z (by more than
-// kUpAxisDistinctTolerance of the x-y mean), i.e. z is the axis the shape is symmetric
-// about (a surface of revolution about z, a pyramid or a tent standing on the x-y plane);
-// y (the OBJ convention) otherwise, and for fewer than 2 positions. Deterministic: sums
-// in position order. The bundled z-up shapes: catmark_pawn, tri_pawn, catmark_pyramid,
-// catmark_pyramid_creases1, catmark_tent_creases1, cylinder_seam (and full_suite/pole64,
-// production pawns); no y-up bundled shape passes the test.
+// The up axis of a mesh, from its positions: z when the shape looks symmetric about z, by
+// either of two measures of spread per coordinate, the variance about the mean or the
+// bounding box's extent: the same along x and y (within kUpAxisSymmetryTolerance of the
+// larger) and different along z (by more than kUpAxisDistinctTolerance of the x-y mean);
+// y (the OBJ convention) otherwise, and for fewer than 2 positions. A surface of revolution
+// about z, a pyramid, a tent or a cube standing on the x-y plane passes; a shape symmetric
+// about y (a torus lying in x-z) or about no axis does not. Deterministic (sums in position
+// order). The bundled z-up shapes: catmark_pawn, tri_pawn, catmark_pyramid(_creases1),
+// catmark_tent_creases1, catmark_cube(_corner3, _creases1), loop_cube_creases1,
+// cylinder_seam (and full_suite/pole64 and the production pawns).
 UpAxis detectUpAxis(std::span<const mesh::Vec3d> positions);
 
 inline constexpr double kUpAxisSymmetryTolerance = 0.01;

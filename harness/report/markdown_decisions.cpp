@@ -163,6 +163,8 @@ namespace {
 
 std::string pictureLink(const results::Record& record) {
   const std::string path = crackPictureOf(record);
+  if (path.empty() && record.parameters.count("displacement") > 0)
+    return "none (displaced: no pictures)";
   return path.empty() ? "none (no CPU float crack or no error picture)"
                       : "[" + path.substr(path.find('/') + 1) + "](" + path + ")";
 }
