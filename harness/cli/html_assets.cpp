@@ -2,14 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <algorithm>
 #include <optional>
 #include <set>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 namespace tb::cli {
 namespace {
@@ -83,14 +83,17 @@ void addAssetGroup(const std::string& run_dir, const std::string& asset,
   group.title = asset;
   std::set<double> scales;
   std::optional<double> level;
+  bool z_up = false;
   for (const Json* entry : entries) {
     const std::string name = textOf(*entry, "technique") + "/" + textOf(*entry, "variant");
     if (const std::string status = textOf(*entry, "status"); !status.empty() && status != "ok") {
-      assets->picture_notes.push_back(name + " on " + asset + ": " + status + ": " + textOf(*entry, "reason"));
+      assets->picture_notes.push_back(name + " on " + asset + ": " + status + ": " +
+                                      textOf(*entry, "reason"));
       continue;
     }
     if (const auto scale = numberOf(*entry, "scale_max")) scales.insert(*scale);
     if (!level) level = numberOf(*entry, "level");
+    z_up = z_up || textOf(*entry, "up_axis") == "z";
     std::string caption = name;
     if (const auto error_max = numberOf(*entry, "error_max")) {
       caption += fmt::format(": largest vertex error {:.3g} rel_diag", *error_max);
@@ -101,13 +104,45 @@ void addAssetGroup(const std::string& run_dir, const std::string& asset,
   }
   if (group.pictures.empty()) return;
   if (level) group.note = fmt::format("uniform level {}; ", *level);
+  if (z_up) group.note += "a z-up asset, seen with z upwards (the camera turned, not the data); ";
   group.shared_scale = scales.size() == 1;
   group.note += scales.size() == 1
-                    ? fmt::format("one colour scale for every picture of the asset: 0 … {:.3g} "
-                                  "rel_diag (the largest vertex error among them).",
-                                  *scales.begin())
+                    ? fmt::format(
+                          "one colour scale for every picture of the asset: 0 … {:.3g} "
+                          "rel_diag (the largest vertex error among them).",
+                          *scales.begin())
                     : std::string("each picture has its own colour scale (its colour bar).");
   assets->pictures.push_back(std::move(group));
+}
+
+// What a crack picture shows.
+constexpr const char* kCrackPictureMeaning =
+    "Each picture: the surface (uniform level 8) shaded grey, with every pair of shared points "
+    "that differ in the cracks row named (the CPU float row with the largest gap; report.md's "
+    "\"Where the default variants crack\") marked at its midpoint: a strong dot where the "
+    "camera sees it, a pale one where it is behind the surface; the largest gap is circled. "
+    "The gaps are float round-off (~1e-7 world units): the marks say where, not how wide.";
+
+// The entries of pictures.json with a crack_png, in index order, as one group.
+void addCrackGroup(const std::string& run_dir, const std::vector<const Json*>& entries,
+                   size_t* bytes_used, report::HtmlAssets* assets) {
+  report::HtmlPictureGroup group;
+  group.title = "Where the default variants crack";
+  group.note = kCrackPictureMeaning;
+  for (const Json* entry : entries) {
+    const std::string path = textOf(*entry, "crack_png");
+    if (path.empty()) continue;
+    const std::string caption = fmt::format(
+        "{}/{} on {}: {} unequal points ({} seen), {}; largest gap {:.3g} world units",
+        textOf(*entry, "technique"), textOf(*entry, "variant"), textOf(*entry, "asset"),
+        numberOf(*entry, "crack_points").value_or(0),
+        numberOf(*entry, "crack_points_visible").value_or(0), textOf(*entry, "crack_row"),
+        numberOf(*entry, "crack_max_gap_world").value_or(0));
+    if (auto png = readPicture(run_dir, path, bytes_used, assets)) {
+      group.pictures.push_back({caption, std::move(*png)});
+    }
+  }
+  if (!group.pictures.empty()) assets->crack_pictures.push_back(std::move(group));
 }
 
 void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
@@ -132,6 +167,7 @@ void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
   size_t bytes_used = 0;
   size_t malformed = 0;
   std::vector<std::pair<std::string, std::vector<const Json*>>> by_asset;  // in index order
+  std::vector<const Json*> ok_entries;                                     // in index order
   for (const Json& entry : index["pictures"]) {
     if (!entry.is_object() || textOf(entry, "technique").empty() ||
         textOf(entry, "asset").empty()) {
@@ -139,12 +175,16 @@ void loadPictures(const std::string& run_dir, report::HtmlAssets* assets) {
       continue;
     }
     const std::string asset = textOf(entry, "asset");
-    auto it = std::find_if(by_asset.begin(), by_asset.end(), [&](const auto& g) { return g.first == asset; });
+    ok_entries.push_back(&entry);
+    auto it = std::find_if(by_asset.begin(), by_asset.end(),
+                           [&](const auto& g) { return g.first == asset; });
     if (it == by_asset.end()) it = by_asset.insert(by_asset.end(), {asset, {}});
     it->second.push_back(&entry);
   }
   if (!by_asset.empty()) assets->picture_notes.push_back(kPictureMeaning);
-  for (const auto& [asset, entries] : by_asset) addAssetGroup(run_dir, asset, entries, &bytes_used, assets);
+  addCrackGroup(run_dir, ok_entries, &bytes_used, assets);
+  for (const auto& [asset, entries] : by_asset)
+    addAssetGroup(run_dir, asset, entries, &bytes_used, assets);
   if (malformed > 0) {
     assets->picture_notes.push_back(fmt::format(
         "{} entries of pictures/pictures.json without a technique and asset left out.", malformed));

@@ -40,7 +40,15 @@ std::string picturesIndexJson(const PicturesIndex& index) {
                {"error_png", p.error_png}, {"wireframe_png", p.wireframe_png},
                {"width_px", p.width_px},   {"height_px", p.height_px},
                {"error_max", p.error_max}, {"error_statistic", p.error_statistic},
-               {"scale_min", p.scale_min}, {"scale_max", p.scale_max}};
+               {"scale_min", p.scale_min}, {"scale_max", p.scale_max},
+               {"up_axis", p.up_axis}};
+    if (!p.crack_png.empty()) {
+      entry["crack_png"] = p.crack_png;
+      entry["crack_row"] = p.crack_row;
+      entry["crack_points"] = p.crack_points;
+      entry["crack_points_visible"] = p.crack_points_visible;
+      entry["crack_max_gap_world"] = p.crack_max_gap_world;
+    }
     if (p.status != "ok") {
       entry["status"] = p.status;
       entry["reason"] = p.reason;

@@ -27,8 +27,17 @@ struct PictureEntry {
   // max(error_max, kMinimumScaleMax)) to its last, linearly, in rel_diag.
   double scale_min = 0;
   double scale_max = 0;
-  std::string status = "ok";  // "ok" or "failed"
-  std::string reason;         // why it failed; empty when ok
+  std::string up_axis = "y";  // the axis drawn upwards (up_axis.h): "y", or "z" turned upright
+  // Where the variant cracks (crack_picture.h): the path of the wireframe with the unequal
+  // points of `crack_row` marked, empty when no cpu_float cracks row of the record has
+  // points_not_equal > 0 (then the other crack_* fields are left out of the JSON).
+  std::string crack_png;
+  std::string crack_row;              // CrackRow::text()
+  uint64_t crack_points = 0;          // unequal pairs marked (= the row's points_not_equal)
+  uint64_t crack_points_visible = 0;  // of those, seen from the camera (discs; rings behind)
+  double crack_max_gap_world = 0;     // the row's max_gap_world (circled), world units
+  std::string status = "ok";          // "ok" or "failed"
+  std::string reason;                 // why it failed; empty when ok
 };
 
 struct PicturesIndex {
@@ -54,7 +63,8 @@ inline constexpr const char* kPicturesIndexPath = "pictures/pictures.json";
 // {"schema_version": 1, "status", ["reason"], "device", "error_unit": "rel_diag",
 //  "colour_ramp": [[r, g, b] low, ..., high], "pictures": [{technique, variant, asset,
 //  level, error_png, wireframe_png, width_px, height_px, error_max, error_statistic,
-//  scale_min, scale_max, [status, reason when failed]}]}.
+//  scale_min, scale_max, up_axis, [crack_png, crack_row, crack_points, crack_points_visible,
+//  crack_max_gap_world when the variant cracks], [status, reason when failed]}]}.
 std::string picturesIndexJson(const PicturesIndex& index);
 
 }  // namespace tb::pictures

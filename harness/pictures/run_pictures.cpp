@@ -2,8 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <map>
 #include <memory>
@@ -16,6 +16,7 @@
 #include "core/gpu/render_target.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/measures/error/error.h"
+#include "harness/pictures/crack_picture.h"
 #include "harness/pictures/png_writer.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
@@ -35,10 +36,11 @@ struct PictureJob {
   const results::Record* record = nullptr;
 };
 
-// What one job produced: the index entry and, when ok, the two files' bytes.
+// What one job produced: the index entry and, when ok, the files' bytes (crack_png only
+// for a variant that cracks).
 struct PictureOutcome {
   PictureEntry entry;
-  std::string error_png, wireframe_png;
+  std::string error_png, wireframe_png, crack_png;
 };
 
 std::string fileStem(const std::string& technique, const std::string& asset) {
@@ -108,6 +110,9 @@ struct RenderedSurface {
   SurfaceErrorMesh surface;
   view::View view;
   std::vector<uint32_t> ids;
+  UpAxis up = UpAxis::kY;
+  std::optional<CrackRow> crack_row;  // the record's worst cpu_float cracks row, if any
+  std::vector<measures::UnequalPair> crack_pairs;
 };
 
 // One job's first half: CPU tessellation and error, the render (the shared target taken in
@@ -129,8 +134,12 @@ PictureOutcome renderSurface(const PictureJob& job, const PictureSettings& setti
     const techniques::SurfacePatches& patches = *instance->surface();
     const ref::LimitSurface limit(patches.controlMesh(),
                                   lod::referenceScheme(patches.approximates()));
-    RenderedSurface r{tessellateWithError(patches, limit, settings.level), {}, {}};
-    r.view = threeQuarterView(r.surface.bounds, settings.size_px);
+    RenderedSurface r;
+    r.surface = tessellateWithError(patches, limit, settings.level);
+    r.up = detectUpAxis(patches.controlMesh().positions);
+    r.view = threeQuarterView(r.surface.bounds, settings.size_px, r.up);
+    r.crack_row = worstCpuCrackRow(*job.record);
+    if (r.crack_row) r.crack_pairs = crackPairsOf(patches, *r.crack_row);
     {
       const std::lock_guard lock(target_mutex);
       r.ids = renderTriangleIds(target, r.surface, r.view);
@@ -149,12 +158,27 @@ void composePicture(RenderedSurface rendered, const PictureSettings& settings, d
                     PictureOutcome* outcome) {
   PictureEntry& entry = outcome->entry;
   try {
-    const SurfacePictures pictures = composeSurfacePictures(
-        rendered.surface, rendered.view, settings.size_px, std::move(rendered.ids), scale_max);
+    const SurfacePictures pictures =
+        composeSurfacePictures(rendered.surface, rendered.view, settings.size_px,
+                               std::move(rendered.ids), scale_max, rendered.up);
     outcome->error_png = encodePng(pictures.error);
     outcome->wireframe_png = encodePng(pictures.wireframe);
     entry.error_png = errorPicturePath(entry.technique, entry.asset);
     entry.wireframe_png = wireframePicturePath(entry.technique, entry.asset);
+    entry.up_axis = toString(rendered.up);
+    if (rendered.crack_row) {
+      const RgbImage shaded = shadedPicture(rendered.surface, rendered.view, settings.size_px,
+                                            pictures.triangle_ids, rendered.up);
+      const CrackPicture crack =
+          composeCrackPicture(shaded, rendered.surface, rendered.view, settings.size_px,
+                              pictures.triangle_ids, rendered.crack_pairs);
+      outcome->crack_png = encodePng(crack.image);
+      entry.crack_png = crackPicturePath(entry.technique, entry.asset);
+      entry.crack_row = rendered.crack_row->text();
+      entry.crack_points = rendered.crack_pairs.size();
+      entry.crack_points_visible = crack.points_visible;
+      entry.crack_max_gap_world = rendered.crack_row->max_gap_world;
+    }
     entry.width_px = pictures.error.width_px;
     entry.height_px = pictures.error.height_px;
     entry.scale_max = pictures.scale_max;
@@ -172,6 +196,10 @@ std::string errorPicturePath(const std::string& technique, const std::string& as
 
 std::string wireframePicturePath(const std::string& technique, const std::string& asset) {
   return fileStem(technique, asset) + "--wireframe.png";
+}
+
+std::string crackPicturePath(const std::string& technique, const std::string& asset) {
+  return fileStem(technique, asset) + "--cracks.png";
 }
 
 PicturesIndex renderRunPictures(const results::Results& results, const std::string& device_name,
@@ -235,7 +263,9 @@ PicturesIndex renderRunPictures(const results::Results& results, gpu::Context* c
     if (outcome.entry.status == "ok") {
       write(outcome.entry.error_png, outcome.error_png);
       write(outcome.entry.wireframe_png, outcome.wireframe_png);
-      index.png_bytes += outcome.error_png.size() + outcome.wireframe_png.size();
+      if (!outcome.entry.crack_png.empty()) write(outcome.entry.crack_png, outcome.crack_png);
+      index.png_bytes +=
+          outcome.error_png.size() + outcome.wireframe_png.size() + outcome.crack_png.size();
     }
     index.pictures.push_back(std::move(outcome.entry));
   }

@@ -21,7 +21,13 @@ using WriteFileFn = std::function<void(const std::string& relative_path, const s
 // '_'>--error.png and ...--wireframe.png.
 std::string errorPicturePath(const std::string& technique, const std::string& asset);
 std::string wireframePicturePath(const std::string& technique, const std::string& asset);
+// ...--cracks.png: where a default variant cracks (crack_picture.h), for the records with a
+// cpu_float cracks row whose points_not_equal > 0.
+std::string crackPicturePath(const std::string& technique, const std::string& asset);
 
+// Error and wireframe pictures look along the asset's up axis (up_axis.h: z-up assets turned
+// upright by the camera). A record that cracks on the CPU also gets its crack picture from
+// the same render (worstCpuCrackRow, crackPairsOf, composeCrackPicture).
 // Opens the Vulkan device named like the run's (`device_name`: a substring, empty = best;
 // only dynamic rendering is required) and renders the run's pictures. Without a usable
 // device nothing is rendered: the index says "skipped" with the reason, and only it is

@@ -11,12 +11,14 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/view/view.h"
 #include "harness/pictures/heat_map.h"
 #include "harness/pictures/rgb_image.h"
 #include "harness/pictures/surface_error_mesh.h"
+#include "harness/pictures/up_axis.h"
 
 namespace tb::gpu {
 class Context;
@@ -27,8 +29,8 @@ namespace tb::pictures {
 
 struct PictureSettings {
   int level = 8;           // uniform integer tessellation level of every patch (1..64)
-  uint32_t size_px = 208;  // the render is size_px x size_px; at least kMinimumPictureSizePx (208: report.html
-                           // embeds every error picture and stays under 2 MB)
+  uint32_t size_px = 208;  // the render is size_px x size_px; at least kMinimumPictureSizePx (208:
+                           // report.html embeds every error picture and stays under 2 MB)
 };
 
 // Smaller renders leave no room for the colour bar's labels.
@@ -49,8 +51,10 @@ inline constexpr double kMinimumScaleMax = 1e-6;
 
 // The fixed camera: looking at the box's centre from the direction (1, 0.7, 1.4) (a 3/4 view
 // from above, y up), 30 degree vertical field of view, far enough that the box's bounding
-// sphere fits the square image. The box must have a positive diagonal.
-view::View threeQuarterView(const mesh::Aabb& bounds, uint32_t size_px);
+// sphere fits the square image. The box must have a positive diagonal. For a z-up asset
+// (up_axis.h) the camera turns with the world: from (1, -1.4, 0.7) with z up, the view a
+// y-up camera has of the asset rotated to y-up, so it stands upright.
+view::View threeQuarterView(const mesh::Aabb& bounds, uint32_t size_px, UpAxis up = UpAxis::kY);
 
 struct SurfacePictures {
   RgbImage error;
@@ -73,13 +77,21 @@ std::vector<uint32_t> renderTriangleIds(gpu::RenderTarget& target, const Surface
 // Composes both pictures from an ID buffer of renderTriangleIds (size_px^2 entries, size_px
 // >= kMinimumPictureSizePx; std::invalid_argument otherwise). The colour scale's top is
 // `scale_max` when given (one scale shared by several surfaces: at least this one's
-// error_max), else max(mesh.error_max, kMinimumScaleMax).
+// error_max), else max(mesh.error_max, kMinimumScaleMax). `up`: the view's up axis (the
+// light comes from a little above, along it).
 SurfacePictures composeSurfacePictures(const SurfaceErrorMesh& mesh, const view::View& view,
                                        uint32_t size_px, std::vector<uint32_t> triangle_ids,
-                                       std::optional<double> scale_max = std::nullopt);
+                                       std::optional<double> scale_max = std::nullopt,
+                                       UpAxis up = UpAxis::kY);
+
+// The surface alone, size_px x size_px: light grey faces shaded as the wireframe's, a dark
+// silhouette, no triangle lines (the base of the crack pictures, crack_picture.h).
+RgbImage shadedPicture(const SurfaceErrorMesh& mesh, const view::View& view, uint32_t size_px,
+                       std::span<const uint32_t> triangle_ids, UpAxis up = UpAxis::kY);
 
 // All of it for one surface: the limit of patches.controlMesh() under the scheme it
 // approximates (as the error measure builds it), tessellateWithError at settings.level,
+// the up axis of the control mesh (detectUpAxis),
 // a render target of settings.size_px, the render and the composition. Throws InputError
 // when the reference cannot represent the mesh, gpu::GpuError for a device failure.
 SurfacePictures renderSurfacePictures(gpu::Context& context,

@@ -8,8 +8,8 @@
 #include "harness/report/base64.h"
 #include "harness/report/html_chart_script.h"
 #include "harness/report/html_decisions.h"
-#include "harness/report/html_per_dispatch.h"
 #include "harness/report/html_escape.h"
+#include "harness/report/html_per_dispatch.h"
 #include "harness/report/plot_data.h"
 #include "harness/report/summary.h"
 #include "harness/results/device_identity.h"
@@ -207,7 +207,9 @@ std::string perDispatchNote(const results::Results& results, const std::string& 
   }
   if (parts.empty()) return "";
   return "<p class=\"note\">The x axis counts solver iterations, not dispatches: one iteration "
-         "costs " + escapeHtml(parts) + " compute dispatches. At a frame's budget of 8 dispatches "
+         "costs " +
+         escapeHtml(parts) +
+         " compute dispatches. At a frame's budget of 8 dispatches "
          "compare the chart per dispatch below (residual_at_8_dispatches: the answers above and "
          "report.md's simulations section).</p>\n";
 }
@@ -233,10 +235,12 @@ void measureSections(const results::Results& results, Page* page) {
         // technique/variant rather than per row key.
         const bool per_asset = declared.facet == "asset";
         results::PlotSpec spec = declared;
-        if (per_asset && spec.series != "technique" && spec.series != "variant") spec.series = "variant";
+        if (per_asset && spec.series != "technique" && spec.series != "variant")
+          spec.series = "variant";
         if (per_asset) {
-          page->body += "<details class=\"plots\"><summary>" + escapeHtml(spec.title) +
-                        ": one chart per asset, coloured by technique/variant (collapsed)</summary>\n";
+          page->body +=
+              "<details class=\"plots\"><summary>" + escapeHtml(spec.title) +
+              ": one chart per asset, coloured by technique/variant (collapsed)</summary>\n";
         }
         plotSection(plotData(results, *declaration, spec), page);
         if (spec.x == "iteration") {
@@ -250,6 +254,24 @@ void measureSections(const results::Results& results, Page* page) {
   }
 }
 
+void pictureGroup(const HtmlPictureGroup& group, const char* id, Page* page) {
+  page->body += fmt::format("<figure class=\"picture-group\"{}>\n<h3>{}</h3>\n",
+                            *id ? fmt::format(" id=\"{}\"", id) : "", escapeHtml(group.title));
+  if (!group.note.empty())
+    page->body += fmt::format("<p class=\"note\">{}</p>\n", escapeHtml(group.note));
+  page->body += "<div class=\"picture-row\">\n";
+  for (size_t i = 0; i < group.pictures.size(); ++i) {
+    const HtmlPicture& picture = group.pictures[i];
+    const bool crop = group.shared_scale && i > 0;  // the square render, not the bar again
+    page->body += fmt::format(
+        "<figure>{2}<img alt=\"{0}\" src=\"data:image/png;base64,{1}\">{3}<figcaption>{0}"
+        "</figcaption></figure>\n",
+        escapeHtml(picture.caption), base64Encode(picture.png_bytes),
+        crop ? "<div class=\"square\">" : "", crop ? "</div>" : "");
+  }
+  page->body += "</div>\n</figure>\n";
+}
+
 void picturesSection(const HtmlAssets& assets, Page* page) {
   page->body += "<section id=\"pictures\">\n<h2>Pictures</h2>\n";
   for (const std::string& note : assets.picture_notes) {
@@ -258,23 +280,9 @@ void picturesSection(const HtmlAssets& assets, Page* page) {
   if (assets.pictures.empty() && assets.picture_notes.empty()) {
     page->body += "<p class=\"note\">No pictures in this run.</p>\n";
   }
-  for (const HtmlPictureGroup& group : assets.pictures) {
-    page->body +=
-        fmt::format("<figure class=\"picture-group\">\n<h3>{}</h3>\n", escapeHtml(group.title));
-    if (!group.note.empty())
-      page->body += fmt::format("<p class=\"note\">{}</p>\n", escapeHtml(group.note));
-    page->body += "<div class=\"picture-row\">\n";
-    for (size_t i = 0; i < group.pictures.size(); ++i) {
-      const HtmlPicture& picture = group.pictures[i];
-      const bool crop = group.shared_scale && i > 0;  // the square render, not the bar again
-      page->body += fmt::format(
-          "<figure>{2}<img alt=\"{0}\" src=\"data:image/png;base64,{1}\">{3}<figcaption>{0}"
-          "</figcaption></figure>\n",
-          escapeHtml(picture.caption), base64Encode(picture.png_bytes),
-          crop ? "<div class=\"square\">" : "", crop ? "</div>" : "");
-    }
-    page->body += "</div>\n</figure>\n";
-  }
+  for (const HtmlPictureGroup& group : assets.crack_pictures)
+    pictureGroup(group, "crack-pictures", page);
+  for (const HtmlPictureGroup& group : assets.pictures) pictureGroup(group, "", page);
   page->body += "</section>\n";
 }
 

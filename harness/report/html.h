@@ -36,6 +36,10 @@ struct HtmlAssets {
   std::vector<HtmlPictureGroup> pictures;
   // Shown in the pictures section: why there are none, or which were left out.
   std::vector<std::string> picture_notes;
+  // Where the default variants crack (one group, "Where the default variants crack": a
+  // picture per technique × asset whose CPU cracks row has unequal points, the points
+  // marked); shown first in the pictures section. Empty when nothing cracks.
+  std::vector<HtmlPictureGroup> crack_pictures = {};
 };
 
 std::string renderHtml(const results::Results& results, const HtmlAssets& assets);

@@ -31,11 +31,13 @@ std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
   }
   triangles += ")";
   return {
-      {"error (hausdorff, rel_diag)", [=](const DecisionCandidate& c) { return optional(c.figures.error); }},
+      {"error (hausdorff, rel_diag)",
+       [=](const DecisionCandidate& c) { return optional(c.figures.error); }},
       {triangles,
        [=](const DecisionCandidate& c) -> std::optional<std::string> {
          if (!c.figures.triangles_1px) return std::nullopt;
-         return formatAdviceNumber(*c.figures.triangles_1px) + " (" + c.figures.triangles_policy + ")";
+         return formatAdviceNumber(*c.figures.triangles_1px) + " (" + c.figures.triangles_policy +
+                ")";
        }},
       {"memory / plain mesh at level 16 (ratio)",
        [=](const DecisionCandidate& c) { return optional(c.figures.memory_ratio); }},
@@ -56,8 +58,9 @@ void appendDecision(const AssetDecision& d, std::string* out) {
   *out += "### " + d.asset + "\n\n";
   std::vector<DecisionColumn> columns;
   for (DecisionColumn& column : decisionColumns(d)) {
-    const bool any = std::any_of(d.candidates.begin(), d.candidates.end(),
-                                 [&](const DecisionCandidate& c) { return column.cell(c).has_value(); });
+    const bool any =
+        std::any_of(d.candidates.begin(), d.candidates.end(),
+                    [&](const DecisionCandidate& c) { return column.cell(c).has_value(); });
     if (any) columns.push_back(std::move(column));
   }
   std::vector<std::string> header{"rank", "technique/variant"};
@@ -70,7 +73,8 @@ void appendDecision(const AssetDecision& d, std::string* out) {
   appendHeader(out, header);
   for (size_t i = 0; i < d.candidates.size(); ++i) {
     const DecisionCandidate& c = d.candidates[i];
-    std::vector<std::string> cells{i == 0 ? "**1 (recommended)**" : std::to_string(i + 1), c.name()};
+    std::vector<std::string> cells{i == 0 ? "**1 (recommended)**" : std::to_string(i + 1),
+                                   c.name()};
     for (const DecisionColumn& column : columns) cells.push_back(column.cell(c).value_or("n/a"));
     if (front) cells.push_back(c.on_front ? "yes" : "no");
     appendRow(out, cells);
@@ -113,14 +117,56 @@ WorstCrack worstCrackOf(const results::MeasureResult& m) {
 
 // "edge between patches 3 and 7 at t = 0.5 of patch 3's edge 1"
 std::string crackPlace(const results::MetricRow& row) {
-  const auto n = [&](const char* name) { return formatAdviceNumber(rowMetric(row, name).value_or(-1)); };
+  const auto n = [&](const char* name) {
+    return formatAdviceNumber(rowMetric(row, name).value_or(-1));
+  };
   if (rowMetric(row, "worst_patch_a").value_or(-1) < 0) return "not located (unpaired points)";
   if (rowMetric(row, "worst_is_corner").value_or(0) > 0) {
     return "corner " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " / corner " +
            n("worst_local_b") + " of patch " + n("worst_patch_b");
   }
-  return "edge " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " at t = " +
-         n("worst_t") + " / patch " + n("worst_patch_b");
+  return "edge " + n("worst_local_a") + " of patch " + n("worst_patch_a") +
+         " at t = " + n("worst_t") + " / patch " + n("worst_patch_b");
+}
+
+bool measureOk(const results::Record& record, const char* measure) {
+  return std::any_of(record.measures.begin(), record.measures.end(), [&](const auto& m) {
+    return m.measure == measure && m.status == results::MeasureStatus::kOk;
+  });
+}
+
+}  // namespace
+
+std::string crackPictureOf(const results::Record& record) {
+  if (record.parameters.count("displacement") > 0 || !measureOk(record, "error")) return "";
+  bool cracks = false;
+  for (const results::MeasureResult& m : record.measures) {
+    if (m.measure != "cracks" || m.status != results::MeasureStatus::kOk) continue;
+    for (const results::MetricRow& row : m.rows) {
+      cracks =
+          cracks || (row.status == results::MeasureStatus::kOk &&
+                     rowKey(row, "backend") == "cpu_float" && rowKey(row, "displacement").empty() &&
+                     rowMetric(row, "points_not_equal").value_or(0) > 0);
+    }
+  }
+  if (!cracks) return "";
+  std::string path = "pictures/" + record.technique + "--";
+  for (char c : record.asset) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '_' || c == '-';
+    path += c == '/' ? std::string("--") : std::string(1, plain ? c : '_');
+  }
+  return path + "--cracks.png";
+}
+
+namespace {
+
+std::string pictureLink(const results::Record& record) {
+  const std::string path = crackPictureOf(record);
+  if (path.empty() && record.parameters.count("displacement") > 0)
+    return "none (displaced: no pictures)";
+  return path.empty() ? "none (no CPU float crack or no error picture)"
+                      : "[" + path.substr(path.find('/') + 1) + "](" + path + ")";
 }
 
 }  // namespace
@@ -137,23 +183,26 @@ void appendCrackLocations(const results::Results& results, std::string* out) {
         const WorstCrack worst = worstCrackOf(m);
         if (worst.row == nullptr) continue;
         const results::MetricRow& row = *worst.row;
-        appendRow(&body, {record.asset, t.technique + "/" + t.variants.front(),
-                          std::to_string(worst.rows),
-                          rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
-                              rowKey(row, "level") +
-                              (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
-                          formatAdviceNumber(rowMetric(row, "points_not_equal").value_or(0)),
-                          formatAdviceNumber(worst.gap), crackPlace(row)});
+        appendRow(&body,
+                  {record.asset, t.technique + "/" + t.variants.front(), std::to_string(worst.rows),
+                   rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
+                       rowKey(row, "level") +
+                       (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
+                   formatAdviceNumber(rowMetric(row, "points_not_equal").value_or(0)),
+                   formatAdviceNumber(worst.gap), crackPlace(row), pictureLink(record)});
       }
     }
   }
   if (body.empty()) return;
   *out += "## Where the default variants crack\n\n";
-  *out += "Per asset, the cracks rows (backend, spacing, level) where shared points differ and the "
-          "row with the largest gap: where it is, by patch and local edge or corner (the patch "
-          "order of the technique's patch data; t from the edge's first corner).\n\n";
+  *out +=
+      "Per asset, the cracks rows (backend, spacing, level) where shared points differ and the "
+      "row with the largest gap: where it is, by patch and local edge or corner (the patch "
+      "order of the technique's patch data; t from the edge's first corner). The picture "
+      "(in the run folder when the run rendered pictures, and in report.html): the surface "
+      "with every unequal point of the CPU float row with the largest gap marked.\n\n";
   appendHeader(out, {"asset", "technique/variant", "rows cracked", "worst row",
-                     "points not equal (count)", "largest gap (world units)", "where"});
+                     "points not equal (count)", "largest gap (world units)", "where", "picture"});
   *out += body + "\n";
 }
 
@@ -180,15 +229,17 @@ struct SimulationMeasure {
 
 void appendSimulations(const results::Results& results, std::string* out) {
   const std::vector<SimulationMeasure> measures{
-      {"convergence", {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
-                       "iterations_to_1e-3"}},
+      {"convergence",
+       {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
+        "iterations_to_1e-3"}},
       {"stability", {"energy_drift", "max_stretch"}},
       {"wave_error", {"arrival_error_s", "coverage", "rms_error"}},
       {"sim_cost", {"dispatches_per_step", "peak_elements"}}};
   std::string body;
   for (const SimulationMeasure& sm : measures) {
     if (results.findMeasure(sm.measure) == nullptr) continue;
-    MeasureSummary summary = summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
+    MeasureSummary summary =
+        summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
     std::stable_sort(summary.lines.begin(), summary.lines.end(),
                      [](const SummaryLine& a, const SummaryLine& b) { return a.asset < b.asset; });
     std::vector<std::string> metrics;
@@ -200,17 +251,21 @@ void appendSimulations(const results::Results& results, std::string* out) {
     if (metrics.empty()) continue;
     body += fmt::format("### {}\n\n", sm.measure);
     std::vector<std::string> header{"scenario", "technique/variant"};
-    for (const std::string& metric : metrics) header.push_back(metricHeader(results, sm.measure, metric));
+    for (const std::string& metric : metrics)
+      header.push_back(metricHeader(results, sm.measure, metric));
     appendHeader(&body, header);
     for (const SummaryLine& line : summary.lines) {
-      if (std::none_of(metrics.begin(), metrics.end(), [&](const std::string& m) { return line.find(m); }))
+      if (std::none_of(metrics.begin(), metrics.end(),
+                       [&](const std::string& m) { return line.find(m); }))
         continue;
       std::vector<std::string> cells{line.asset, line.technique + "/" + line.variant};
       for (const std::string& metric : metrics) {
         const MetricStats* stats = line.find(metric);
-        cells.push_back(stats == nullptr ? "n/a"
-                                         : formatFigure(worstOf(*stats, directionOf(results, sm.measure, metric)),
-                                                        unitOf(results, sm.measure, metric)));
+        cells.push_back(
+            stats == nullptr
+                ? "n/a"
+                : formatFigure(worstOf(*stats, directionOf(results, sm.measure, metric)),
+                               unitOf(results, sm.measure, metric)));
       }
       appendRow(&body, cells);
     }
@@ -218,9 +273,10 @@ void appendSimulations(const results::Results& results, std::string* out) {
   }
   if (body.empty()) return;
   *out += "## Simulations by scenario\n\n";
-  *out += "Per scenario and solver or variant, the worst value over the measure's summary rows "
-          "(convergence: residual after 8 compute dispatches, one frame's budget; n/a: the "
-          "variant has no such row, e.g. iterations_to_1e-3 when 1e-3 was not reached).\n\n";
+  *out +=
+      "Per scenario and solver or variant, the worst value over the measure's summary rows "
+      "(convergence: residual after 8 compute dispatches, one frame's budget; n/a: the "
+      "variant has no such row, e.g. iterations_to_1e-3 when 1e-3 was not reached).\n\n";
   *out += body;
 }
 

@@ -31,8 +31,15 @@ void appendAnswers(const results::Results& results, const std::vector<AssetDecis
                    std::string* out);
 // Per surface asset its decision table (decision.h), the why and the runner-up's trade.
 void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out);
-// Per asset, where each default variant cracks (its worst cracks row and the place).
+// Per asset, where each default variant cracks (its worst cracks row and the place), and a
+// link to its crack picture.
 void appendCrackLocations(const results::Results& results, std::string* out);
+// The crack picture a run renders of `record`, relative to the run folder (the path of
+// harness/pictures/run_pictures.h's crackPicturePath: pictures/<technique>--<asset, '/' as
+// "--", other characters than [A-Za-z0-9._-] as '_'>--cracks.png), when the record is
+// undisplaced, its error measure ok and a cpu_float cracks row (undisplaced) has unequal
+// points; empty otherwise.
+std::string crackPictureOf(const results::Record& record);
 // The simulation measures per scenario × technique/variant (markdown_decisions.cpp).
 void appendSimulations(const results::Results& results, std::string* out);
 

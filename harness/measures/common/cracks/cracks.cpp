@@ -61,15 +61,20 @@ BoundaryPositions cpuPositions(const techniques::SurfacePatches& patches,
 struct PairBlock {
   uint64_t compared = 0, not_equal = 0, unpaired = 0, max_ulp = 0;
   double max_scale_ulp = 0, max_gap = 0;
-  CrackLocation worst;       // first pair with the block's largest gap
-  std::vector<double> gaps;  // every pair's gap, in order (summed in order across blocks)
+  CrackLocation worst;               // first pair with the block's largest gap
+  std::vector<double> gaps;          // every pair's gap, in order (summed in order across blocks)
+  bool keep_unequal = false;         // fill `unequal`
+  std::vector<UnequalPair> unequal;  // the pairs that differ, in order
 
   void add(const mesh::Vec3f& a, const mesh::Vec3f& b, double scale_ulp,
            const CrackLocation& where) {
     ++compared;
-    if (!(a == b)) ++not_equal;
     const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
     const double gap = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (!(a == b)) {
+      ++not_equal;
+      if (keep_unequal) unequal.push_back({a, b, gap});
+    }
     gaps.push_back(gap);
     max_ulp = std::max(max_ulp, mesh::maxUlpDistance(a, b));
     const double component = std::max({std::fabs(dx), std::fabs(dy), std::fabs(dz)});
@@ -92,9 +97,11 @@ class Pairing {
           const BoundaryPositions& positions, double scale_ulp)
       : shared_(shared), boundaries_(boundaries), positions_(positions), scale_ulp_(scale_ulp) {}
 
-  void run(CrackFigures* f) const {
+  // `unequal`, when given, receives every pair that differs, in pair order.
+  void run(CrackFigures* f, std::vector<UnequalPair>* unequal = nullptr) const {
     const size_t items = shared_.edges.size() + shared_.corners.size();
     std::vector<PairBlock> blocks((items + kItemsPerBlock - 1) / kItemsPerBlock);
+    for (PairBlock& block : blocks) block.keep_unequal = unequal != nullptr;
     // Blocks are fixed by the items alone; how they are spread over threads is not.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks.size(), 1),
                       [&](const tbb::blocked_range<size_t>& range) {
@@ -111,6 +118,8 @@ class Pairing {
       f->max_gap_ulp = std::max(f->max_gap_ulp, block.max_ulp);
       f->max_gap_scale_ulp = std::max(f->max_gap_scale_ulp, block.max_scale_ulp);
       for (double gap : block.gaps) sum += gap;
+      if (unequal != nullptr)
+        unequal->insert(unequal->end(), block.unequal.begin(), block.unequal.end());
       if (block.worst.found && (!f->worst.found || block.max_gap > f->max_gap_world)) {
         f->max_gap_world = block.max_gap;
         f->worst = block.worst;
@@ -438,6 +447,26 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
     copyPairFigures(pairs, &figures);
   }
   return figures;
+}
+
+std::vector<UnequalPair> unequalPairs(const techniques::SurfacePatches& patches,
+                                      tess::Spacing spacing,
+                                      std::span<const tess::Levels> patch_levels,
+                                      CrackFigures* figures) {
+  if (patch_levels.size() != patches.patchCount()) {
+    throw std::invalid_argument("cracks: the per-patch levels are not one per patch");
+  }
+  CrackFigures pairs;
+  std::vector<UnequalPair> unequal;
+  const PatchBoundaries boundaries = patchBoundaries(patches, spacing, patch_levels);
+  if (boundaries.culled_patches == 0) {
+    pairs.measured = true;
+    Pairing(findSharedBoundaries(patches), boundaries, cpuPositions(patches, boundaries),
+            scaleUlp(patches.controlMesh()))
+        .run(&pairs, &unequal);
+  }
+  if (figures != nullptr) *figures = pairs;
+  return unequal;
 }
 
 CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,

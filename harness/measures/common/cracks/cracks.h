@@ -120,6 +120,23 @@ CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spac
                            std::span<const tess::Levels> patch_levels, CrackBackend backend,
                            gpu::Context* context = nullptr);
 
+// One pair of a shared edge or corner whose positions differ (points_not_equal counts them).
+struct UnequalPair {
+  mesh::Vec3f a, b;  // the first side's position and the other side's
+  double gap = 0;    // |a - b|, world units
+};
+
+// Every pair that measureCracks(patches, spacing, patch_levels, kCpuFloat) counts in
+// points_not_equal, in its pair order (shared edges, then corners); empty when watertight
+// or when the levels cull a patch (then `figures`, when given, says not measured). The
+// figures of the same call go to `figures`. Where a crack is, for the pictures
+// (harness/pictures/crack_picture.h). Throws std::invalid_argument when patch_levels.size()
+// != patches.patchCount().
+std::vector<UnequalPair> unequalPairs(const techniques::SurfacePatches& patches,
+                                      tess::Spacing spacing,
+                                      std::span<const tess::Levels> patch_levels,
+                                      CrackFigures* figures = nullptr);
+
 // Uniform levels: every outer and inner level of every patch = `level`.
 CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                            float level, CrackBackend backend, gpu::Context* context = nullptr);
