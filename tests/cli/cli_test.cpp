@@ -204,7 +204,9 @@ TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
   // (phong/alpha0.75 and osd_adaptive/iso2_gregory on the cube, when there is a device).
   size_t crack_pictures = 0;
   for (const auto& entry : index["pictures"]) crack_pictures += entry.contains("crack_png");
-  if (!index["pictures"].empty()) EXPECT_GE(crack_pictures, 2u);
+  if (!index["pictures"].empty()) {
+    EXPECT_GE(crack_pictures, 2u);
+  }
   EXPECT_EQ(pictures, 1 + 2 * index["pictures"].size() + crack_pictures);
 }
 
