@@ -8,19 +8,26 @@
 //   marginal_seconds_per_patch: (time(N copies) - time(1 copy)) / (patches(N) - patches(1)),
 //     the cost of one more patch with the fixed costs cancelled. The band: at 16 copies it
 //     stays within +-25% of 4 copies (linear growth); superlinear work (a pairing, a search
-//     over all patches) makes it grow. time(1 copy) is the best of 3 runs. Each case runs 3
-//     times: read the medians (about 2.5 min in all, one thread).
+//     over all patches) makes it grow. time(1 copy) is the best of 3 runs. Each case runs 5
+//     times: read the medians (about 4 min in all, one thread).
+// The work per patch must not change with the copy count, or the band measures the view and
+// not the algorithm: the copies stand 1/8 of an extent apart (a viewport pixel per copy
+// nearly constant: 1.16x as many at 16 copies as at 1) and the camera keeps every copy's
+// on-screen size (copiesPath).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include "bench/technique_bench_support.h"
 #include "core/gpu/context.h"
 #include "core/mesh/mesh_copies.h"
+#include "core/view/camera.h"
 #include "harness/measures/measure.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/camera_path.h"
@@ -45,12 +52,52 @@ struct Prepared {
   tb::view::CameraPath path;
 };
 
+// The test orbit's three views of the grid of copies, seen from 16 times as far with a
+// field of view 16 times as narrow (nearly orthographic: the copies' depths differ by a few
+// percent), on a viewport scaled by the grid's diagonal over one copy's. Every copy then
+// spans about the pixels it spans alone on the test orbit, so the pixel-driven work per
+// patch (factor levels, the level searches' steps, screen error, rasterised visibility)
+// stays constant as the copies grow. Under the plain test orbit each copy shrinks with the
+// grid, and the searches' power-of-two steps made the work per patch jump by up to 1.5x
+// between 4 and 16 copies, up or down, which no algorithm caused.
+tb::view::CameraPath copiesPath(const tb::mesh::Aabb& grid, const tb::mesh::Aabb& single) {
+  constexpr double kTelephoto = 16, kDegree = std::numbers::pi / 180;
+  const double scale = tb::mesh::diagonalOf(grid) / tb::mesh::diagonalOf(single);
+  const tb::mesh::Vec3d centre = 0.5 * (grid.min + grid.max);
+  const double radius = std::max(0.5 * tb::mesh::diagonalOf(grid), 1e-3);
+  const double distance = 2.5 * radius * kTelephoto;
+  const double fov_y = 2 * std::atan(std::tan(30 * kDegree) / kTelephoto);
+  tb::view::CameraPath path{"scaling_orbit", {}};
+  for (double azimuth_deg : {0.0, 120.0, 240.0}) {
+    const double azimuth = azimuth_deg * kDegree, elevation = 20 * kDegree;
+    const tb::mesh::Vec3d eye =
+        centre + distance * tb::mesh::Vec3d{std::cos(elevation) * std::sin(azimuth),
+                                            std::sin(elevation),
+                                            std::cos(elevation) * std::cos(azimuth)};
+    path.views.push_back(tb::view::perspectiveView(
+        {.eye = eye,
+         .target = centre,
+         .fov_y_rad = fov_y,
+         .width_px = uint32_t(std::lround(640 * scale)),
+         .height_px = uint32_t(std::lround(480 * scale)),
+         .near_plane = distance - 1.01 * radius,
+         .far_plane = distance + 1.01 * radius}));
+  }
+  return path;
+}
+
+// The grid step in the asset's largest extents: copies 1/8 extent apart, so the viewport,
+// which grows with the grid, holds nearly the same pixels per copy at 1, 4 and 16 copies
+// (area per copy 1, 1.13, 1.17 times one copy's alone, with twice-the-extent steps 1, 2.25,
+// 3.06: per-pixel work such as the culling measure's visibility buffers then grew with it).
+constexpr double kStepExtents = 1.125;
+
 // The asset's `copies` translated copies, built by the technique's default variant; null
 // patches (and the benchmark skipped) when the technique refuses it.
 Prepared prepare(benchmark::State& state, const tb::techniques::Technique& technique,
                  const std::string& asset, int copies) {
-  Prepared p{tb::mesh::translatedCopies(tb::suite::loadAsset(tb::suite::resolveAsset(asset)),
-                                        copies),
+  const tb::mesh::Mesh single = tb::suite::loadAsset(tb::suite::resolveAsset(asset));
+  Prepared p{tb::mesh::translatedCopies(single, copies, kStepExtents),
              nullptr,
              {}};
   try {
@@ -58,7 +105,7 @@ Prepared prepare(benchmark::State& state, const tb::techniques::Technique& techn
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
   }
-  p.path = tb::suite::testOrbitPath(tb::mesh::boundsOf(p.mesh));
+  p.path = copiesPath(tb::mesh::boundsOf(p.mesh), tb::mesh::boundsOf(single));
   return p;
 }
 
@@ -132,7 +179,7 @@ void registerScalingBenchmarks() {
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond)
           ->MinTime(0.2)
-          ->Repetitions(3)  // the marginal cost is a difference of two times: read medians
+          ->Repetitions(5)  // the marginal cost is a difference of two times: read medians
           ->ReportAggregatesOnly(true);
     }
   }

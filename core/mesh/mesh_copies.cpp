@@ -6,8 +6,9 @@
 
 namespace tb::mesh {
 
-Mesh translatedCopies(const Mesh& mesh, int copies) {
+Mesh translatedCopies(const Mesh& mesh, int copies, double step_extents) {
   if (copies < 1) throw std::invalid_argument("translatedCopies: copies must be >= 1");
+  if (!(step_extents > 1)) throw std::invalid_argument("translatedCopies: step_extents must be > 1");
   Vec3d lo = mesh.positions.empty() ? Vec3d{} : mesh.positions.front(), hi = lo;
   for (const Vec3d& p : mesh.positions) {
     for (int k = 0; k < 3; ++k) {
@@ -16,7 +17,7 @@ Mesh translatedCopies(const Mesh& mesh, int copies) {
     }
   }
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-6});
-  const double step = 2 * extent;
+  const double step = step_extents * extent;
   const int columns = int(std::ceil(std::sqrt(double(copies))));
 
   Mesh out;

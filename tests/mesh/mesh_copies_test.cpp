@@ -32,10 +32,14 @@ TEST(MeshCopies, TopologyAndTagsRepeatOncePerCopy) {
   }
 }
 
-TEST(MeshCopies, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
+// The default step (2 extents) and the scaling bench's tight one (1.125) keep every copy's
+// bounding box apart; a step of one extent (copies touching) is refused.
+class MeshCopiesStep : public ::testing::TestWithParam<double> {};
+
+TEST_P(MeshCopiesStep, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
   const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath("opensubdiv/catmark_cube.obj"));
   const int copies = 5;
-  const mesh::Mesh many = mesh::translatedCopies(mesh, copies);
+  const mesh::Mesh many = mesh::translatedCopies(mesh, copies, GetParam());
   const size_t n = mesh.positions.size();
   for (size_t i = 0; i < n; ++i) EXPECT_EQ(many.positions[i].x, mesh.positions[i].x);
   std::vector<mesh::Vec3d> lo(copies, mesh::Vec3d{1e300, 1e300, 1e300}),
@@ -55,7 +59,10 @@ TEST(MeshCopies, CopiesAreDisjointAndTheFirstKeepsItsPlace) {
     }
   }
   EXPECT_THROW(mesh::translatedCopies(mesh, 0), std::invalid_argument);
+  EXPECT_THROW(mesh::translatedCopies(mesh, 2, 1.0), std::invalid_argument);
 }
+
+INSTANTIATE_TEST_SUITE_P(Steps, MeshCopiesStep, ::testing::Values(2.0, 1.125));
 
 }  // namespace
 }  // namespace tb
