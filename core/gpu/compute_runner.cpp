@@ -15,6 +15,7 @@ namespace {
 
 constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                       VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
@@ -150,7 +151,8 @@ struct ComputeRunner::Impl {
     passes.push_back(std::move(pass));
   }
 
-  void record(VkCommandBuffer cmd, uint32_t steps) {
+  void record(VkCommandBuffer cmd, uint32_t steps,
+              const std::function<void(VkCommandBuffer)>* after) {
     const VkQueryPool pool = timestamps.get();
     if (pool) {
       vkCmdResetQueryPool(cmd, pool, 0, 2);
@@ -189,6 +191,18 @@ struct ComputeRunner::Impl {
         }
       }
     }
+    if (after != nullptr && *after) {
+      auto draw = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+      draw.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      draw.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT |
+                           VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                               VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                           0, 1, &draw, 0, nullptr, 0, nullptr);
+      (*after)(cmd);
+    }
     if (pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool, 1);
     auto host = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -223,13 +237,16 @@ ComputeRunner::ComputeRunner(Context& context, const std::vector<GpuComputeProgr
 
 ComputeRunner::~ComputeRunner() = default;
 
-ComputeRunTiming ComputeRunner::run(uint32_t steps) {
+ComputeRunTiming ComputeRunner::run(uint32_t steps) { return run(steps, {}); }
+
+ComputeRunTiming ComputeRunner::run(uint32_t steps,
+                                    const std::function<void(VkCommandBuffer)>& after) {
   ComputeRunTiming timing;
   timing.steps = steps;
   timing.gpu_ns = std::numeric_limits<double>::quiet_NaN();
   if (steps == 0) return timing;
   timing.submit_to_fence_s =
-      impl_->context.submitAndWait([&](VkCommandBuffer cmd) { impl_->record(cmd, steps); });
+      impl_->context.submitAndWait([&](VkCommandBuffer cmd) { impl_->record(cmd, steps, &after); });
   impl_->steps_done += steps;
   if (const VkQueryPool pool = impl_->timestamps.get()) {
     uint64_t ticks[2] = {0, 0};
@@ -246,6 +263,10 @@ uint32_t ComputeRunner::dispatchesPerStep() const {
   uint32_t count = 0;
   for (const Impl::Pass& pass : impl_->passes) count += pass.desc->repeats_per_step;
   return count;
+}
+
+VkBuffer ComputeRunner::bufferHandle(const std::string& name) const {
+  return impl_->named(name).handle();
 }
 
 uint32_t ComputeRunner::stepsDone() const { return impl_->steps_done; }

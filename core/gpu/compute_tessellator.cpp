@@ -76,8 +76,9 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 
 }  // namespace
 
-ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
-    : patch_count_(static_cast<uint32_t>(patches.size())) {
+ComputeTessellationPasses describeTessellationPasses(Context& context,
+                                                     std::span<const TessPatch> patches) {
+  ComputeTessellationPasses out;
   std::vector<uint32_t> words;
   words.reserve(patches.size() * kPatchWords);
   for (const TessPatch& patch : patches) {
@@ -88,13 +89,13 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
                     (patch.rounding_up_control ? 4u : 0u));
     const auto bounds = patchBounds(patch);
-    point_capacity_ += bounds[0];
-    index_capacity_ += bounds[1];
+    out.point_capacity += bounds[0];
+    out.index_capacity += bounds[1];
   }
   const uint64_t range = storageBufferRange(context);
-  if (8 * point_capacity_ > range || 4 * index_capacity_ > range) {
+  if (8 * out.point_capacity > range || 4 * out.index_capacity > range) {
     throw GpuError("compute tessellator: a batch of " + std::to_string(patches.size()) +
-                   " patches may need " + std::to_string(4 * index_capacity_) +
+                   " patches may need " + std::to_string(4 * out.index_capacity) +
                    " bytes of indices, over the device's storage buffer range of " +
                    std::to_string(range) + "; split the batch");
   }
@@ -103,13 +104,14 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
                                            buffer(1, "counts", 16 * n),
                                            buffer(2, "offsets", 8 * n),
                                            buffer(3, "status", 16),
-                                           buffer(4, "points", 8 * point_capacity_),
-                                           buffer(5, "indices", 4 * index_capacity_)};
+                                           buffer(4, "points", 8 * out.point_capacity),
+                                           buffer(5, "indices", 4 * out.index_capacity)};
   buffers[0].initial_words = std::move(words);
 
-  const uint32_t groups = std::max<uint32_t>(1, (patch_count_ + kGroupSize - 1) / kGroupSize);
-  const std::vector<uint32_t> push = {patch_count_, static_cast<uint32_t>(point_capacity_),
-                                      static_cast<uint32_t>(index_capacity_)};
+  const auto patch_count = static_cast<uint32_t>(n);
+  const uint32_t groups = std::max<uint32_t>(1, (patch_count + kGroupSize - 1) / kGroupSize);
+  const std::vector<uint32_t> push = {patch_count, static_cast<uint32_t>(out.point_capacity),
+                                      static_cast<uint32_t>(out.index_capacity)};
   auto pass = [&](const char* shader, std::vector<uint32_t> specialization,
                   std::vector<uint32_t> push_words, uint32_t groups_x) {
     GpuComputePass p;
@@ -120,11 +122,19 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     p.groups_x = groups_x;
     return p;
   };
-  const GpuComputePass count = pass("gpu/tessellate.comp", {0}, push, groups);
-  const GpuComputePass scan = pass("gpu/tess_scan.comp", {}, {patch_count_}, 1);
-  const GpuComputePass write = pass("gpu/tessellate.comp", {1}, push, groups);
+  out.passes = {pass("gpu/tessellate.comp", {0}, push, groups),
+                pass("gpu/tess_scan.comp", {}, {patch_count}, 1),
+                pass("gpu/tessellate.comp", {1}, push, groups)};
+  return out;
+}
+
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
+    : patch_count_(static_cast<uint32_t>(patches.size())) {
+  ComputeTessellationPasses passes = describeTessellationPasses(context, patches);
+  point_capacity_ = passes.point_capacity;
+  index_capacity_ = passes.index_capacity;
   runner_ = std::make_unique<ComputeRunner>(
-      context, std::vector<GpuComputeProgram>{{"tessellate", {count, scan, write}}});
+      context, std::vector<GpuComputeProgram>{{"tessellate", std::move(passes.passes)}});
 }
 
 ComputeTessellator::~ComputeTessellator() = default;

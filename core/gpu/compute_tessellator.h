@@ -53,6 +53,20 @@ enum TessErrors : uint32_t {
   kTessErrorCountMismatch = 8,    // the write pass emitted other counts than the count pass
 };
 
+// The tessellator's three passes (count, scan, write) over its buffers, for a caller that
+// runs passes of its own on them in the same submission (core/gpu/compute_path.h). Buffer
+// names: "patches", "counts" (uvec4 per patch: points, index words, culled, 0), "offsets"
+// (uvec2 per patch: first point, first index word), "status" (total points, total index
+// words, TessErrors), "points" (16.16 (u, v) per point), "indices" (into points).
+struct ComputeTessellationPasses {
+  std::vector<GpuComputePass> passes;
+  uint64_t point_capacity = 0;  // points the "points" buffer holds
+  uint64_t index_capacity = 0;  // index words the "indices" buffer holds
+};
+// Throws GpuError as the ComputeTessellator constructor does.
+ComputeTessellationPasses describeTessellationPasses(Context& context,
+                                                     std::span<const TessPatch> patches);
+
 // The batch's buffers and pipelines, made once; run() re-tessellates every patch.
 class ComputeTessellator {
  public:

@@ -1,0 +1,205 @@
+// The compute path (core/gpu/compute_path.h) against the hardware path: for every surface
+// technique and its non-control variants on a bundled asset it accepts, the vertices the
+// compute shaders evaluate are bitwise the TES capture's (runPatchProgram: same patch,
+// gl_TessCoord bits, position bits, normal bits) at the same levels, uniform, per edge and
+// per patch; the indirect draw draws exactly the CPU tessellator's triangles. Control: an
+// evaluation at a coordinate one ulp off is caught as unequal.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/gpu/compute_path.h"
+#include "core/gpu/gpu_error.h"
+#include "core/mesh/obj_loader.h"
+#include "techniques/registry.h"
+#include "tests/gpu/gpu_test_support.h"
+#include "tests/test_support.h"
+
+namespace tb::gpu::compute_path_test {
+namespace {
+
+// One technique and the bundled asset its programs run on (small: the hardware path's
+// lavapipe tessellator costs most of the test's time).
+struct TechniqueAsset {
+  const char* technique;
+  const char* asset;
+};
+constexpr TechniqueAsset kTechniqueAssets[] = {
+    {"acc", "opensubdiv/catmark_cube_creases1.obj"},
+    {"gregory_acc", "opensubdiv/catmark_nonquads.obj"},  // quad and triangle programs
+    {"osd_adaptive", "opensubdiv/catmark_cube.obj"},
+    {"pn_triangles", "tessbench/cylinder_seam.obj"},
+    {"phong", "tessbench/cylinder_seam.obj"},
+};
+
+// A level case: every patch the same levels, or (per_patch) patch p's outer levels shifted
+// by p so neighbours differ.
+struct LevelCase {
+  const char* name;
+  tess::Spacing spacing;
+  tess::Levels levels;
+  bool per_patch = false;
+};
+
+tess::Levels uniform(float level) {
+  return {{level, level, level, level}, {level, level}};
+}
+
+// The full sweep for a technique's default variant; the other variants take every third.
+std::vector<LevelCase> levelCases() {
+  const float above_three = std::nextafter(3.0f, 4.0f);
+  std::vector<LevelCase> cases = {
+      {"1", tess::Spacing::kInteger, uniform(1)},
+      {"2", tess::Spacing::kInteger, uniform(2)},
+      {"3", tess::Spacing::kInteger, uniform(3)},
+      {"7", tess::Spacing::kInteger, uniform(7)},
+      {"16", tess::Spacing::kInteger, uniform(16)},
+      {"64", tess::Spacing::kInteger, uniform(64)},
+      {"odd 3+ulp", tess::Spacing::kFractionalOdd, uniform(above_three)},
+      {"odd 7.3", tess::Spacing::kFractionalOdd, uniform(7.3f)},
+      {"even 4.5", tess::Spacing::kFractionalEven, uniform(4.5f)},
+      {"edges 2 5 3 7 / 4 6", tess::Spacing::kInteger, {{2, 5, 3, 7}, {4, 6}}},
+      {"per patch", tess::Spacing::kInteger, {{1, 4, 2, 6}, {3, 5}}, true},
+  };
+  return cases;
+}
+
+std::vector<tess::Levels> patchLevels(const LevelCase& c, uint32_t patch_count) {
+  std::vector<tess::Levels> levels(patch_count, c.levels);
+  if (!c.per_patch) return levels;
+  for (uint32_t p = 0; p < patch_count; ++p) {
+    for (int e = 0; e < 4; ++e) levels[p].outer[e] = float(1 + (p + uint32_t(e) * 3) % 9);
+  }
+  return levels;
+}
+
+// Vertices that differ from the hardware path's (patch, coordinate, position or normal
+// bits), counting a size mismatch's surplus as unequal.
+size_t unequalVertices(const std::vector<CapturedVertex>& hardware,
+                       const std::vector<CapturedVertex>& compute) {
+  auto bits = [](const mesh::Vec3f& v) {
+    return std::array<uint32_t, 3>{std::bit_cast<uint32_t>(v.x), std::bit_cast<uint32_t>(v.y),
+                                   std::bit_cast<uint32_t>(v.z)};
+  };
+  const size_t n = std::min(hardware.size(), compute.size());
+  size_t unequal = std::max(hardware.size(), compute.size()) - n;
+  for (size_t i = 0; i < n; ++i) {
+    const CapturedVertex& a = hardware[i];
+    const CapturedVertex& b = compute[i];
+    const bool same = a.patch == b.patch &&
+                      std::bit_cast<std::array<uint32_t, 3>>(a.coord) ==
+                          std::bit_cast<std::array<uint32_t, 3>>(b.coord) &&
+                      bits(a.position) == bits(b.position) && bits(a.normal) == bits(b.normal);
+    if (!same) ++unequal;
+  }
+  return unequal;
+}
+
+uint64_t cpuTriangles(const GpuPatchProgram& program, tess::Spacing spacing,
+                      const std::vector<tess::Levels>& levels) {
+  uint64_t triangles = 0;
+  for (const tess::Levels& l : levels) {
+    triangles += tess::tessellate(program.domain, spacing, l).triangles.size();
+  }
+  return triangles;
+}
+
+struct Tally {
+  size_t cases = 0;     // technique x variant x asset x program x level runs compared
+  size_t vertices = 0;  // vertices compared
+};
+
+// One program at one level case: compute path == hardware path bit for bit, and the draw
+// drew the CPU tessellator's triangles.
+void expectBitwise(Context& context, const GpuPatchProgram& program, const LevelCase& c,
+                   const std::string& label, Tally* tally) {
+  const std::vector<tess::Levels> levels = patchLevels(c, program.patch_count);
+  PatchProgramOptions hardware_options;
+  hardware_options.spacing = c.spacing;
+  hardware_options.patches_per_draw = 64;
+  hardware_options.statistics = false;
+  const PatchProgramCapture hardware = runPatchProgram(context, program, levels, hardware_options);
+  ComputePathOptions options;
+  options.spacing = c.spacing;
+  const ComputePathResult compute = runComputePath(context, program, levels, options);
+  EXPECT_EQ(compute.vertices.size(), hardware.vertices.size()) << label;
+  EXPECT_EQ(unequalVertices(hardware.vertices, compute.vertices), 0u) << label;
+  const uint64_t triangles = cpuTriangles(program, c.spacing, levels);
+  EXPECT_EQ(compute.index_words, 3 * triangles) << label;
+  if (compute.draw_counted) {
+    EXPECT_EQ(compute.drawn_triangles, triangles) << label;
+  }
+  EXPECT_GE(compute.vertex_buffer_bytes, 40 * compute.points) << label;
+  ++tally->cases;
+  tally->vertices += compute.vertices.size();
+}
+
+TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const std::vector<LevelCase> cases = levelCases();
+  Tally tally;
+  for (const TechniqueAsset& ta : kTechniqueAssets) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(ta.technique);
+    ASSERT_NE(technique, nullptr) << ta.technique;
+    const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(ta.asset));
+    const std::vector<techniques::VariantInfo> variants = technique->variants();
+    for (size_t v = 0; v < variants.size(); ++v) {
+      if (!variants[v].control.empty()) continue;
+      const auto surface = techniques::buildSurface(*technique, mesh, variants[v]);
+      // The default variant (first) takes every level case; the others every third, and
+      // under a sanitizer fewer still.
+      const size_t stride = (v == 0 ? 1 : 3) * ::tb::testing::sweepStride(4);
+      for (const GpuPatchProgram& program : surface->gpuPrograms()) {
+        for (size_t k = v % stride; k < cases.size(); k += stride) {
+          const std::string label = std::string(ta.technique) + "/" + variants[v].name + " " +
+                                    ta.asset + " " + program.evaluation_shader + " level " +
+                                    cases[k].name;
+          expectBitwise(context, program, cases[k], label, &tally);
+        }
+      }
+    }
+  }
+  std::printf("[compute path] %zu technique x variant x program x level cases, %zu vertices, "
+              "compared bit for bit\n",
+              tally.cases, tally.vertices);
+  EXPECT_GT(tally.cases, 0u);
+}
+
+TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  for (const TechniqueAsset& ta : kTechniqueAssets) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(ta.technique);
+    const auto surface = techniques::buildSurface(
+        *technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)), technique->variants()[0]);
+    const GpuPatchProgram program = surface->gpuPrograms()[0];
+    const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
+    const PatchProgramCapture hardware = runPatchProgram(context, program, levels);
+    ComputePathOptions control;
+    control.control = 1;
+    const ComputePathResult compute = runComputePath(context, program, levels, control);
+    ASSERT_EQ(compute.vertices.size(), hardware.vertices.size()) << ta.technique;
+    EXPECT_GT(unequalVertices(hardware.vertices, compute.vertices), 0u) << ta.technique;
+  }
+}
+
+TEST(ComputePath, RefusesProgramsItCannotRun) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
+  const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath("tessbench/flat_cube.obj"));
+  const auto surface = techniques::buildSurface(*phong, mesh, phong->variants()[0]);
+  GpuPatchProgram program = surface->gpuPrograms()[0];
+  program.displacement = std::make_shared<GpuDisplacement>();
+  EXPECT_THROW(runComputePath(context, program, uniform(2)), GpuError);
+  program.displacement.reset();
+  program.compute_shader.clear();
+  EXPECT_THROW(runComputePath(context, program, uniform(2)), GpuError);
+}
+
+}  // namespace
+}  // namespace tb::gpu::compute_path_test
