@@ -93,6 +93,32 @@ void checkProgram(const GpuPatchProgram& program, size_t level_count) {
   }
 }
 
+// The draw's pipeline, made once per Context (llvmpipe compiles a pipeline in about 0.1 s):
+// vertex pulling from the records, triangle lists, zero attachments under rasterizer
+// discard, so the draw is counted and nothing is written.
+struct ComputePathDrawPipeline {
+  explicit ComputePathDrawPipeline(Context& context) {
+    const VkDevice device = context.device();
+    const VkShaderStageFlags stages[] = {VK_SHADER_STAGE_VERTEX_BIT};
+    set_layout = createStorageBufferSetLayout(device, stages);
+    layout = createPipelineLayout(device, set_layout.get(), 0, 0);
+    const VkShaderModuleOwner vertex =
+        createShaderModule(device, requireEmbeddedShader("gpu/compute_path_draw.vert"));
+    const VkPipelineShaderStageCreateInfo shader_stages[] = {
+        shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex.get())};
+    const auto rendering =
+        vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+    GraphicsPipelineBase base(shader_stages, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, layout.get(),
+                              &rendering);
+    base.raster.rasterizerDiscardEnable = VK_TRUE;
+    pipeline = base.create(device, "vkCreateGraphicsPipelines (compute path draw)");
+  }
+
+  VkDescriptorSetLayoutOwner set_layout;
+  VkPipelineLayoutOwner layout;
+  VkPipelineOwner pipeline;
+};
+
 }  // namespace
 
 struct ComputePath::Impl {
@@ -104,9 +130,7 @@ struct ComputePath::Impl {
   std::unique_ptr<ComputeRunner> runner;
   bool draw = false;
   bool statistics = false;
-  VkDescriptorSetLayoutOwner draw_set_layout;
-  VkPipelineLayoutOwner draw_layout;
-  VkPipelineOwner draw_pipeline;
+  const ComputePathDrawPipeline* draw_pipeline = nullptr;  // the Context's
   StorageBufferSet draw_set;
   VkQueryPoolOwner queries;
   double submit_to_fence_s = 0;
@@ -141,21 +165,8 @@ struct ComputePath::Impl {
 
   void buildDraw() {
     const VkDevice device = context.device();
-    const VkShaderStageFlags stages[] = {VK_SHADER_STAGE_VERTEX_BIT};
-    draw_set_layout = createStorageBufferSetLayout(device, stages);
-    draw_layout = createPipelineLayout(device, draw_set_layout.get(), 0, 0);
-    const VkShaderModuleOwner vertex =
-        createShaderModule(device, requireEmbeddedShader("gpu/compute_path_draw.vert"));
-    const VkPipelineShaderStageCreateInfo shader_stages[] = {
-        shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex.get())};
-    // Zero attachments: under rasterizer discard the draw is counted, nothing is written.
-    const auto rendering =
-        vkStruct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    GraphicsPipelineBase base(shader_stages, VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST,
-                              draw_layout.get(), &rendering);
-    base.raster.rasterizerDiscardEnable = VK_TRUE;
-    draw_pipeline = base.create(device, "vkCreateGraphicsPipelines (compute path draw)");
-    draw_set = StorageBufferSet(device, draw_set_layout.get(), 1);
+    draw_pipeline = &context.attachment<ComputePathDrawPipeline>();
+    draw_set = StorageBufferSet(device, draw_pipeline->set_layout.get(), 1);
     const VkBuffer vertices[] = {runner->bufferHandle("vertices")};
     draw_set.bind(device, vertices);
     if (!statistics) return;
@@ -172,8 +183,8 @@ struct ComputePath::Impl {
     const VkQueryPool pool = queries.get();
     if (pool) vkCmdResetQueryPool(cmd, pool, 0, 1);
     beginDiscardRendering(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipeline.get());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_layout.get(), 0, 1,
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipeline->pipeline.get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw_pipeline->layout.get(), 0, 1,
                             &draw_set.set, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, runner->bufferHandle("indices"), 0, VK_INDEX_TYPE_UINT32);
     if (pool) vkCmdBeginQuery(cmd, pool, 0, 0);

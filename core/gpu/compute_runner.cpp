@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <string>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/context.h"
@@ -23,14 +26,66 @@ constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
   throw GpuError("compute runner: pass " + pass.shader + ": " + rule);
 }
 
+// A compute pipeline with its layouts, immutable once made.
+struct CachedComputePipeline {
+  VkDescriptorSetLayoutOwner set_layout;
+  VkPipelineLayoutOwner layout;
+  VkPipelineOwner pipeline;
+};
+
+// Every ComputeRunner's pipelines on one Context, by shader, specialisation, bindings and
+// push block size: llvmpipe compiles a pipeline in 0.1 to 0.5 s, more than a small run
+// costs, and the compute path (compute_path.h) makes a runner per call.
+struct ComputePipelineCache {
+  explicit ComputePipelineCache(Context& /*context*/) {}
+
+  std::shared_ptr<const CachedComputePipeline> get(Context& context, const GpuComputePass& desc,
+                                                   uint32_t binding_count) {
+    std::string key = desc.shader + "|" + std::to_string(binding_count) + "|" +
+                      std::to_string(desc.push_constants.size());
+    for (uint32_t word : desc.specialization) key += "|" + std::to_string(word);
+    const std::lock_guard lock(mutex);
+    std::shared_ptr<const CachedComputePipeline>& entry = entries[key];
+    if (!entry) entry = create(context.device(), desc, binding_count);
+    return entry;
+  }
+
+  static std::shared_ptr<const CachedComputePipeline> create(VkDevice device,
+                                                             const GpuComputePass& desc,
+                                                             uint32_t binding_count) {
+    auto made = std::make_shared<CachedComputePipeline>();
+    const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
+    made->set_layout = createStorageBufferSetLayout(device, stages);
+    made->layout = createPipelineLayout(device, made->set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
+                                        uint32_t(desc.push_constants.size() * 4));
+    const VkShaderModuleOwner module =
+        createShaderModule(device, requireEmbeddedShader(desc.shader));
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
+    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
+                                              desc.specialization.size() * 4,
+                                              desc.specialization.data()};
+    auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
+    if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
+    info.layout = made->layout.get();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            "vkCreateComputePipelines (compute runner)");
+    made->pipeline = VkPipelineOwner(device, pipeline);
+    return made;
+  }
+
+  std::mutex mutex;
+  std::map<std::string, std::shared_ptr<const CachedComputePipeline>> entries;
+};
+
 }  // namespace
 
 struct ComputeRunner::Impl {
   struct Pass {
     const GpuComputePass* desc = nullptr;
-    VkDescriptorSetLayoutOwner set_layout;
-    VkPipelineLayoutOwner layout;
-    VkPipelineOwner pipeline;
+    std::shared_ptr<const CachedComputePipeline> compiled;  // shared through the Context
     StorageBufferSet sets[2];  // even and odd steps (the same bindings without ping-pong)
     VkBuffer indirect[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   };
@@ -103,29 +158,11 @@ struct ComputeRunner::Impl {
     }
     uint32_t binding_count = 0;
     for (const GpuComputeBuffer& b : desc.buffers) binding_count = std::max(binding_count, b.binding + 1);
-    const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
-    pass.set_layout = createStorageBufferSetLayout(device, stages);
-    pass.layout = createPipelineLayout(device, pass.set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
-                                       uint32_t(desc.push_constants.size() * 4));
-    const VkShaderModuleOwner module =
-        createShaderModule(device, requireEmbeddedShader(desc.shader));
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
-    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                              desc.specialization.size() * 4,
-                                              desc.specialization.data()};
-    auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
-    if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
-    info.layout = pass.layout.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-            "vkCreateComputePipelines (compute runner)");
-    pass.pipeline = VkPipelineOwner(device, pipeline);
+    pass.compiled = context.attachment<ComputePipelineCache>().get(context, desc, binding_count);
 
     for (int parity = 0; parity < 2; ++parity) {
       if (binding_count > 0) {
-        pass.sets[parity] = StorageBufferSet(device, pass.set_layout.get(), binding_count);
+        pass.sets[parity] = StorageBufferSet(device, pass.compiled->set_layout.get(), binding_count);
         // Bindings the pass leaves out get its first buffer, so every binding is valid.
         std::vector<VkBuffer> handles(binding_count, buffer(desc, desc.buffers[0].name).handle());
         for (const GpuComputeBuffer& b : desc.buffers) {
@@ -167,15 +204,15 @@ struct ComputeRunner::Impl {
       const int parity = int(step & 1u);
       for (Pass& pass : passes) {
         const GpuComputePass& desc = *pass.desc;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->pipeline.get());
         if (pass.sets[parity].set != VK_NULL_HANDLE) {
-          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->layout.get(), 0, 1,
                                   &pass.sets[parity].set, 0, nullptr);
         }
         if (!desc.push_constants.empty()) {
           std::vector<uint32_t> push = desc.push_constants;
           if (desc.step_index_word >= 0) push[size_t(desc.step_index_word)] = step;
-          vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+          vkCmdPushConstants(cmd, pass.compiled->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                              uint32_t(push.size() * 4), push.data());
         }
         for (uint32_t r = 0; r < desc.repeats_per_step; ++r) {

@@ -115,14 +115,21 @@ struct Tally {
 
 // One program at one level case: compute path == hardware path bit for bit, and the draw
 // drew the CPU tessellator's triangles.
+// The hardware path's capture, in few draws and without the statistics query.
+PatchProgramCapture hardwareCapture(Context& context, const GpuPatchProgram& program,
+                                    tess::Spacing spacing,
+                                    const std::vector<tess::Levels>& levels) {
+  PatchProgramOptions options;
+  options.spacing = spacing;
+  options.patches_per_draw = 64;
+  options.statistics = false;
+  return runPatchProgram(context, program, levels, options);
+}
+
 void expectBitwise(Context& context, const GpuPatchProgram& program, const LevelCase& c,
                    const std::string& label, Tally* tally) {
   const std::vector<tess::Levels> levels = patchLevels(c, program.patch_count);
-  PatchProgramOptions hardware_options;
-  hardware_options.spacing = c.spacing;
-  hardware_options.patches_per_draw = 64;
-  hardware_options.statistics = false;
-  const PatchProgramCapture hardware = runPatchProgram(context, program, levels, hardware_options);
+  const PatchProgramCapture hardware = hardwareCapture(context, program, c.spacing, levels);
   ComputePathOptions options;
   options.spacing = c.spacing;
   const ComputePathResult compute = runComputePath(context, program, levels, options);
@@ -179,7 +186,8 @@ TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
         *technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)), technique->variants()[0]);
     const GpuPatchProgram program = surface->gpuPrograms()[0];
     const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
-    const PatchProgramCapture hardware = runPatchProgram(context, program, levels);
+    const PatchProgramCapture hardware =
+        hardwareCapture(context, program, tess::Spacing::kInteger, levels);
     ComputePathOptions control;
     control.control = 1;
     const ComputePathResult compute = runComputePath(context, program, levels, control);
