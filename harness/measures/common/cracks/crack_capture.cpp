@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/gpu/compute_path.h"
 #include "core/gpu/patch_program.h"
 
 namespace tb::measures {
@@ -70,14 +71,53 @@ class ProgramCapture {
              (end == first || vertices + boundary_points[end] <= options_.max_vertices_per_call)) {
         vertices += boundary_points[end++];
       }
-      run.first_patch = first;
-      run.patch_count = end - first;
-      store(program, gpu::runPatchProgram(context, program, levels, run), domain);
+      if (options_.compute_path) {
+        storeComputed(program, runComputeChunk(context, program, levels, first, end), domain);
+      } else {
+        run.first_patch = first;
+        run.patch_count = end - first;
+        store(program, gpu::runPatchProgram(context, program, levels, run), domain);
+      }
       first = end;
     }
   }
 
  private:
+  // The compute path over program patches [first, end): the others get zero levels (culled,
+  // no points; the compute tessellator counts them and moves on).
+  gpu::ComputePathResult runComputeChunk(gpu::Context& context, const gpu::GpuPatchProgram& program,
+                                         const std::vector<tess::Levels>& levels, uint32_t first,
+                                         uint32_t end) const {
+    std::vector<tess::Levels> chunk(levels.size());
+    std::copy(levels.begin() + first, levels.begin() + end, chunk.begin() + first);
+    gpu::ComputePathOptions run;
+    run.spacing = spacing_;
+    run.draw = false;
+    return gpu::runComputePath(context, program, chunk, run);
+  }
+
+  // The compute path evaluates every domain point: keep those on the patch boundary (what
+  // the TES capture's boundary_only keeps), stored like a TES capture.
+  void storeComputed(const gpu::GpuPatchProgram& program, const gpu::ComputePathResult& result,
+                     techniques::PatchDomain domain) {
+    gpu::PatchProgramCapture run;
+    run.submit_to_fence_s = result.submit_to_fence_s;
+    run.draws = 1;
+    for (const gpu::CapturedVertex& v : result.vertices) {
+      if (onPatchBoundary(v.coord, domain)) run.vertices.push_back(v);
+    }
+    store(program, run, domain);
+  }
+
+  // gl_TessCoord on an edge or a corner: exactly 0 or 1 (quads: u or v; triangles: a
+  // barycentric 0), as patch_program_tes.glsl's tbOnPatchBoundary decides.
+  static bool onPatchBoundary(const tess::DomainPoint& c, techniques::PatchDomain domain) {
+    if (domain == techniques::PatchDomain::kQuad) {
+      return c[0] == 0.0f || c[0] == 1.0f || c[1] == 0.0f || c[1] == 1.0f;
+    }
+    return c[0] == 0.0f || c[1] == 0.0f || c[2] == 0.0f;
+  }
+
   void checkPatch(const gpu::GpuPatchProgram& program, uint32_t patch,
                   techniques::PatchDomain domain) const {
     if (patch >= patches_.patchCount() || boundaries_.domain[patch] != domain) {
