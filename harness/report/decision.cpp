@@ -63,20 +63,30 @@ void readTriangles(const results::MeasureResult* m, DecisionFigures* f) {
   }
 }
 
-void readMemory(const results::MeasureResult* m, DecisionFigures* f) {
+// Whether a row belongs to `path`: its path key, or none (results before the compute path,
+// measures without one) for the tessellator's.
+bool onPath(const results::MetricRow& row, const std::string& path) {
+  const std::string key = rowKey(row, "path");
+  return key == path || (key.empty() && path == kTessellatorPath);
+}
+
+void readMemory(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
   if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
   for (const results::MetricRow& row : m->rows) {
-    if (row.status != results::MeasureStatus::kOk ||
+    if (row.status != results::MeasureStatus::kOk || !onPath(row, path) ||
         rowKey(row, "level") != std::to_string(kDecisionMemoryLevel))
       continue;
     const auto plain = rowMetric(row, "plain_bytes");
     const auto technique = rowMetric(row, "technique_with_displacement_bytes");
-    if (plain && technique && *plain > 0) f->memory_ratio = *technique / *plain;
+    const double transient = rowMetric(row, "transient_vertex_bytes").value_or(0) +
+                             rowMetric(row, "transient_index_bytes").value_or(0);
+    if (plain && technique && *plain > 0) f->memory_ratio = (*technique + transient) / *plain;
   }
 }
 
-void readInstructions(const results::MeasureResult* m, DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
+void readInstructions(const results::MeasureResult* m, const std::string& path,
+                      DecisionFigures* f) {
+  if (m == nullptr || m->status != results::MeasureStatus::kOk || path != kTessellatorPath) return;
   for (const results::MetricRow& row : m->rows) {
     const std::string stage = rowKey(row, "stage");
     if (row.status != results::MeasureStatus::kOk || rowKey(row, "expansion") != "vector" ||
@@ -97,7 +107,7 @@ struct Side {
   }
 };
 
-void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
+void readCracks(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
   if (m == nullptr) return;
   Side cpu, device;
   if (m->status != results::MeasureStatus::kOk) {
@@ -105,7 +115,9 @@ void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
     return;
   }
   for (const results::MetricRow& row : m->rows) {
-    Side& side = rowKey(row, "backend") == "gpu" ? device : cpu;
+    const bool on_device = rowKey(row, "backend") == "gpu";
+    if (on_device && !onPath(row, path)) continue;  // the CPU rows are every path's
+    Side& side = on_device ? device : cpu;
     if (row.status != results::MeasureStatus::kOk) {
       ++side.not_ok;
       continue;
@@ -118,6 +130,14 @@ void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
   f->device = device.verdict();
   f->cpu_points = cpu.points;
   f->device_points = device.points;
+}
+
+// Whether the run measured the record's cracks on the compute path (an ok row there).
+bool measuredOnCompute(const results::MeasureResult* cracks) {
+  if (cracks == nullptr || cracks->status != results::MeasureStatus::kOk) return false;
+  return std::any_of(cracks->rows.begin(), cracks->rows.end(), [](const results::MetricRow& row) {
+    return row.status == results::MeasureStatus::kOk && rowKey(row, "path") == kComputePath;
+  });
 }
 
 // 0: watertight on both; 1: on the CPU, the device not verified; 2: otherwise.
@@ -210,16 +230,17 @@ std::string watertightText(Watertightness side, double points) {
 }
 
 DecisionFigures decisionFigures(const results::Results& results, const std::string& technique,
-                                const std::string& variant, const std::string& asset) {
+                                const std::string& variant, const std::string& asset,
+                                const std::string& path) {
   DecisionFigures f;
   const auto of = [&](const char* measure) {
     return measureOf(results, technique, variant, asset, measure);
   };
   readError(of("error"), &f);
   readTriangles(of("adaptivity"), &f);
-  readMemory(of("memory"), &f);
-  readInstructions(of("instructions"), &f);
-  readCracks(of("cracks"), &f);
+  readMemory(of("memory"), path, &f);
+  readInstructions(of("instructions"), path, &f);
+  readCracks(of("cracks"), path, &f);
   return f;
 }
 
@@ -237,6 +258,12 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
     if (measureOf(results, technique.technique, variant, asset, "error") == nullptr) continue;
     decision.candidates.push_back(
         {technique.technique, variant, decisionFigures(results, technique.technique, variant, asset)});
+    if (measuredOnCompute(measureOf(results, technique.technique, variant, asset, "cracks"))) {
+      decision.candidates.push_back(
+          {technique.technique, variant,
+           decisionFigures(results, technique.technique, variant, asset, kComputePath), false,
+           kComputePath});
+    }
   }
   std::stable_sort(decision.candidates.begin(), decision.candidates.end(),
                    [](const DecisionCandidate& a, const DecisionCandidate& b) {
