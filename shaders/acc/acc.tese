@@ -1,22 +1,18 @@
 #version 460
-// ACC evaluation: tbEvaluateAcc (acc_surface.glsl, shared with the compute path) at
-// gl_TessCoord, from the points and tangent patches acc.tesc built.
+// ACC evaluation: the geometry patch in the variant's Bézier order and the normal from the
+// tangent patches built by acc.tesc (acc_evaluate.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "acc_surface.glsl"
+#include "bezier.glsl"
 
 layout(quads, equal_spacing, ccw) in;
+#include "acc_surface.glsl"
 
 layout(location = 0) in vec3 b_in[];
 layout(location = 3) patch in vec3 tu_in[12];
 layout(location = 15) patch in vec3 tv_in[12];
 
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  TbAccSurface s;
-  for (int i = 0; i < 16; ++i) s.b[i] = b_in[i];
-  s.tu = tu_in;
-  s.tv = tv_in;
-  vec3 position, normal;
-  tbEvaluateAcc(s, gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "acc_evaluate.glsl"
 }

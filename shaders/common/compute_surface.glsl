@@ -1,11 +1,11 @@
 // The compute path's entry point (core/gpu/compute_path.h): a technique's surface evaluated
-// without the tessellator, by the same functions its TCS and TES call, so the float
-// operations are the TES's. A technique's .comp includes its <tech>_surface.glsl (with
-// TB_SURFACE_BUILD defined), then defines
-//   TB_SURFACE                          its surface struct (what the TCS hands the TES)
-//   TB_BUILD_SURFACE(patch)             the TCS's work for program patch `patch`
-//   TB_EVALUATE_SURFACE(s, patch, coord, position, normal)   the TES's at one point
-//   TB_SURFACE_TRIANGLES                (defined or not) the triangle domain: coord.z = (1 - u) - v
+// without the tessellator, by the very code of its TCS and TES, so the float operations are
+// the TES's. A technique's .comp includes compute_surface_stage.glsl (tbPatchIndex and
+// tbEmitVertex for the shared bodies), its declarations and body fragments, then defines
+//   TB_SURFACE                  its surface struct (what the TCS hands the TES)
+//   TB_BUILD_SURFACE()          the TCS's work for patch tbPatchIndex(), returning TB_SURFACE
+//   TB_EVALUATE_SURFACE(s, coord)   the TES's at one point, ending in tbEmitVertex
+//   TB_SURFACE_TRIANGLES        (defined or not) the triangle domain: coord.z = (1 - u) - v
 // and includes this file. Two passes, chosen by the push constant `pass`:
 //   pass 0  one invocation per program patch builds its TB_SURFACE into tb_surfaces[]
 //   pass 1  one invocation per domain point of the compute tessellator (tessellate.comp)
@@ -75,8 +75,9 @@ void tbEvaluatePoint(uint point) {
   if (tb_compute.control == 1u && coord.x > 0.0 && coord.x < 1.0) {
     eval_coord.x = uintBitsToFloat(floatBitsToUint(coord.x) + 1u);
   }
-  vec3 position, normal;
-  TB_EVALUATE_SURFACE(tb_surfaces[patch_index], patch_index, eval_coord, position, normal);
+  tb_stage_patch = patch_index;
+  TB_EVALUATE_SURFACE(tb_surfaces[patch_index], eval_coord);
+  const vec3 position = tb_stage_position, normal = tb_stage_normal;
   const uint base = point * 10u;
   tb_vertex_words[base + 0u] = patch_index;
   tb_vertex_words[base + 1u] = floatBitsToUint(coord.x);
@@ -93,7 +94,10 @@ void tbEvaluatePoint(uint point) {
 void main() {
   const uint i = gl_GlobalInvocationID.x;
   if (tb_compute.pass == 0u) {
-    if (i < tb_compute.patch_count) tb_surfaces[i] = TB_BUILD_SURFACE(i);
+    if (i < tb_compute.patch_count) {
+      tb_stage_patch = i;
+      tb_surfaces[i] = TB_BUILD_SURFACE();
+    }
   } else if (i < tb_tess_status.total_points) {
     tbEvaluatePoint(i);
   }

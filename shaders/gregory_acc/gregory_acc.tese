@@ -1,17 +1,16 @@
 #version 460
-// gregory_acc TES for quads: tbEvaluateGregoryQuad (gregory_quad_surface.glsl, shared with
-// the compute path) at gl_TessCoord.
+// gregory_acc TES: the quad Gregory patch of Loop, Schaefer, Ni & Castaño 2009 at
+// gl_TessCoord, position and analytic normal (gregory_surface.glsl,
+// gregory_quad_evaluate.glsl: shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "gregory_quad_surface.glsl"
 
 layout(quads, equal_spacing, ccw) in;
 layout(location = 0) in vec3 control_point[];
 
+#include "gregory_surface.glsl"
+
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  TbGregoryQuadSurface s;
-  for (int i = 0; i < 20; ++i) s.cp[i] = control_point[i];
-  vec3 position, normal;
-  tbEvaluateGregoryQuad(s, gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "gregory_quad_evaluate.glsl"
 }

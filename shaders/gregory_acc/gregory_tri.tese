@@ -1,17 +1,18 @@
 #version 460
-// gregory_acc TES for triangles: tbEvaluateGregoryTriangle (gregory_tri_surface.glsl,
-// shared with the compute path) at gl_TessCoord.
+// gregory_acc TES for triangles: the triangle Gregory patch of Loop, Schaefer, Ni & Castaño
+// 2009 (cubic boundary curves shared with the neighbours, quartic interior with three
+// rationally blended interior points) at gl_TessCoord, position and analytic normal
+// (gregory_surface.glsl, gregory_tri_evaluate.glsl: shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "gregory_tri_surface.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
 layout(location = 0) in vec3 control_point[];
 
+#define TB_GREGORY_TRIANGLE
+#include "gregory_surface.glsl"
+
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  TbGregoryTriSurface s;
-  for (int i = 0; i < 15; ++i) s.cp[i] = control_point[i];
-  vec3 position, normal;
-  tbEvaluateGregoryTriangle(s, gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "gregory_tri_evaluate.glsl"
 }

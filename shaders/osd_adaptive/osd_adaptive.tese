@@ -1,14 +1,15 @@
 #version 460
-// osd_adaptive TES: tbEvaluateOsdSurface (osd_adaptive_surface.glsl, shared with the
-// compute path) at gl_TessCoord for this base face.
+// osd_adaptive TES: OpenSubdiv Far's feature-adaptive patches of one base face at
+// gl_TessCoord (osd_adaptive_surface.glsl, osd_adaptive_evaluate.glsl: shared with the
+// compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "osd_adaptive_surface.glsl"
 
 layout(quads, equal_spacing, ccw) in;
 
+#include "osd_adaptive_surface.glsl"
+
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  vec3 position, normal;
-  tbEvaluateOsdSurface(tbBuildOsdSurface(tbPatchIndex()), gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "osd_adaptive_evaluate.glsl"
 }

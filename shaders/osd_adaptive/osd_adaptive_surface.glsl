@@ -1,6 +1,6 @@
-// osd_adaptive's surface, the functions its TES and the compute path (osd_adaptive.comp,
-// shaders/common/compute_surface.glsl) share: OpenSubdiv Far's feature-adaptive patches of
-// one base face. tbEvaluateOsdSurface finds the Far patch (sub-patch) covering gl_TessCoord, maps it to the sub-patch's local (s, t),
+// osd_adaptive's TES declarations, shared with the compute path (osd_adaptive.comp); the
+// body is osd_adaptive_evaluate.glsl. OpenSubdiv Far's feature-adaptive patches of one base
+// face: finds the Far patch (sub-patch) covering gl_TessCoord, maps it to the sub-patch's local (s, t),
 // weighs the sub-patch's points (bicubic B-spline with Far's boundary rule, or a Gregory
 // basis end cap) and sums them. techniques/osd_adaptive/osd_basis.h and evaluateFloat in
 // osd_adaptive.cpp are the CPU twin, operation for operation, every value `precise` (NIR
@@ -152,62 +152,6 @@ int subPatchWeights(uint packed, float s, float t, out float w[20], out float ws
     wt[5 * c + 4] = wt_minus;
   }
   return 20;
-}
-
-// What the TCS hands the TES: only the base face (the TES reads its Far patches itself).
-struct TbOsdSurface {
-  uint face;
-};
-
-TbOsdSurface tbBuildOsdSurface(uint patch_index) { return TbOsdSurface(patch_index); }
-
-void tbEvaluateOsdSurface(TbOsdSurface surface, vec3 tess_coord, out vec3 surface_position,
-                          out vec3 normal) {
-  const uint face = surface.face;
-  const float u = clamp(tess_coord.x, 0.0, 1.0), v = clamp(tess_coord.y, 0.0, 1.0);
-  // The first sub-patch of the face covering (u, v); they tile the face, the last is only
-  // a fallback (evaluateFloat searches the same way).
-  const uvec2 range = face_ranges[face];
-  uvec2 sub = sub_patches[range.x + range.y - 1u];
-  for (uint k = range.x; k < range.x + range.y; ++k) {
-    const uvec2 candidate = sub_patches[k];
-    const float scale = float(1u << subDepth(candidate.x));
-    if (cellOf(u, scale) == float(candidate.x & 1023u) &&
-        cellOf(v, scale) == float((candidate.x >> 10u) & 1023u)) {
-      sub = candidate;
-      break;
-    }
-  }
-  const float scale = float(1u << subDepth(sub.x));
-  precise float s = u * scale - float(sub.x & 1023u);
-  precise float t = v * scale - float((sub.x >> 10u) & 1023u);
-  float w[20], ws[20], wt[20];
-  const int count = subPatchWeights(sub.x, s, t, w, ws, wt);
-  precise vec3 position = vec3(0.0), tangent_s = vec3(0.0), tangent_t = vec3(0.0);
-  // Two loops of constant length (16, then 4 more for a Gregory end cap), so the compiler
-  // unrolls them and keeps the weights in registers.
-  for (int k = 0; k < 16; ++k) {
-    const vec3 q = points[point_indices[sub.y + uint(k)]].xyz;
-    position = position + q * w[k];
-    tangent_s = tangent_s + q * ws[k];
-    tangent_t = tangent_t + q * wt[k];
-  }
-  if (count == 20) {
-    for (int k = 16; k < 20; ++k) {
-      const vec3 q = points[point_indices[sub.y + uint(k)]].xyz;
-      position = position + q * w[k];
-      tangent_s = tangent_s + q * ws[k];
-      tangent_t = tangent_t + q * wt[k];
-    }
-  }
-  // cross(tangent_s, tangent_t) in core/mesh/vec.h's order, then v * (1 / |v|) or zero.
-  precise vec3 n = vec3(tangent_s.y * tangent_t.z - tangent_s.z * tangent_t.y,
-                        tangent_s.z * tangent_t.x - tangent_s.x * tangent_t.z,
-                        tangent_s.x * tangent_t.y - tangent_s.y * tangent_t.x);
-  precise float len = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-  precise vec3 unit_normal = len > 0.0 ? n * (1.0 / len) : vec3(0.0);
-  surface_position = position;
-  normal = unit_normal;
 }
 
 #endif

@@ -1,6 +1,7 @@
 #version 460
-// Phong tessellation's TCS: one invocation builds the patch's TbPhongSurface
-// (phong_surface.glsl, shared with the compute path) and hands it to the TES.
+// Phong tessellation (Boubekeur & Alexa 2008): one invocation reads the triangle's corners
+// by index and normalises the normals (phong_build.glsl, shared with the compute path); the
+// `edge` variant also reads seed 003's per-edge normals.
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"
 #define TB_SURFACE_BUILD
@@ -14,10 +15,6 @@ layout(location = 6) patch out vec3 tb_phong_edge_n[6];
 layout(location = 12) patch out uvec3 tb_phong_perm;
 
 void main() {
-  const TbPhongSurface s = tbBuildPhongSurface(tbPatchIndex());
-  tb_phong_p = s.p;
-  tb_phong_n = s.n;
-  tb_phong_edge_n = s.edge_n;
-  tb_phong_perm = s.perm;
+#include "phong_build.glsl"
   tbWriteHarnessLevels();
 }

@@ -1,8 +1,8 @@
 #version 460
-// Phong tessellation's TES: tbEvaluatePhongSurface (phong_surface.glsl, shared with the
-// compute path) at gl_TessCoord.
+// Phong tessellation at gl_TessCoord (phong_evaluate.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
+#define TB_SURFACE_EVALUATE
 #include "phong_surface.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
@@ -12,9 +12,7 @@ layout(location = 3) patch in vec3 tb_phong_n[3];
 layout(location = 6) patch in vec3 tb_phong_edge_n[6];
 layout(location = 12) patch in uvec3 tb_phong_perm;
 
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  const TbPhongSurface s = TbPhongSurface(tb_phong_p, tb_phong_n, tb_phong_edge_n, tb_phong_perm);
-  vec3 position, normal;
-  tbEvaluatePhongSurface(s, gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "phong_evaluate.glsl"
 }

@@ -1,6 +1,6 @@
 #version 460
-// Curved PN triangles' TCS: one invocation builds the patch's TbPnSurface (pn_surface.glsl,
-// shared with the compute path) and hands it to the TES.
+// Curved PN triangles (Vlachos et al. 2001): one invocation builds the 10 geometry
+// control points and 6 normal coefficients (pn_build.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"
 #define TB_SURFACE_BUILD
@@ -8,14 +8,11 @@
 
 layout(vertices = 1) out;
 
-layout(location = 0) patch out vec3 tb_pn_b[10];
-layout(location = 10) patch out vec3 tb_pn_n[6];
-layout(location = 16) patch out uvec3 tb_pn_perm;
+layout(location = 0) patch out vec3 tb_pn_b[10];  // corners 0..2, edge e end k at 3 + 2e + k, centre 9
+layout(location = 10) patch out vec3 tb_pn_n[6];   // corner normals 0..2, edge normals 3..5
+layout(location = 16) patch out uvec3 tb_pn_perm;  // canonical label -> gl_TessCoord component
 
 void main() {
-  const TbPnSurface s = tbBuildPnSurface(tbPatchIndex());
-  tb_pn_b = s.b;
-  tb_pn_n = s.n;
-  tb_pn_perm = s.perm;
+#include "pn_build.glsl"
   tbWriteHarnessLevels();
 }

@@ -1,6 +1,5 @@
 #version 460
-// Curved PN triangles' TES: tbEvaluatePnSurface (pn_surface.glsl, shared with the compute
-// path) at gl_TessCoord.
+// Curved PN triangles at gl_TessCoord (pn_evaluate.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
 #include "pn_surface.glsl"
@@ -11,8 +10,7 @@ layout(location = 0) patch in vec3 tb_pn_b[10];
 layout(location = 10) patch in vec3 tb_pn_n[6];
 layout(location = 16) patch in uvec3 tb_pn_perm;
 
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  vec3 position, normal;
-  tbEvaluatePnSurface(TbPnSurface(tb_pn_b, tb_pn_n, tb_pn_perm), gl_TessCoord, position, normal);
-  tbEmitVertex(position, normal);
+#include "pn_evaluate.glsl"
 }
