@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <tuple>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/context.h"
@@ -25,11 +27,18 @@ constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
 }  // namespace
 
 struct ComputeRunner::Impl {
-  struct Pass {
-    const GpuComputePass* desc = nullptr;
+  // One compiled pipeline, shared by the passes that run one shader with the same
+  // specialisation, binding count and push block size (one kernel over several jobs'
+  // buffers compiles once).
+  struct Compiled {
     VkDescriptorSetLayoutOwner set_layout;
     VkPipelineLayoutOwner layout;
     VkPipelineOwner pipeline;
+  };
+  using CompiledKey = std::tuple<std::string, std::vector<uint32_t>, uint32_t, size_t>;
+  struct Pass {
+    const GpuComputePass* desc = nullptr;
+    std::shared_ptr<const Compiled> compiled;
     StorageBufferSet sets[2];  // even and odd steps (the same bindings without ping-pong)
     VkBuffer indirect[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   };
@@ -39,6 +48,7 @@ struct ComputeRunner::Impl {
   Context& context;
   std::vector<GpuComputeProgram> programs;  // owned copy: passes point into it
   std::map<std::string, Buffer> buffers;
+  std::map<CompiledKey, std::shared_ptr<const Compiled>> compiled;
   std::vector<Pass> passes;
   VkQueryPoolOwner timestamps;
   uint32_t steps_done = 0;
@@ -92,20 +102,17 @@ struct ComputeRunner::Impl {
     }
   }
 
-  void build(const GpuComputePass& desc) {
-    Pass pass;
-    pass.desc = &desc;
+  // The pass's pipeline: compiled on first use of its key, then shared.
+  std::shared_ptr<const Compiled> compile(const GpuComputePass& desc, uint32_t binding_count) {
+    auto& slot = compiled[{desc.shader, desc.specialization, binding_count,
+                           desc.push_constants.size()}];
+    if (slot) return slot;
     const VkDevice device = context.device();
-    if (desc.repeats_per_step == 0) fail(desc, "repeats_per_step is 0");
-    if (desc.step_index_word >= int32_t(desc.push_constants.size())) {
-      fail(desc, "step_index_word is beyond the push block");
-    }
-    uint32_t binding_count = 0;
-    for (const GpuComputeBuffer& b : desc.buffers) binding_count = std::max(binding_count, b.binding + 1);
+    auto made = std::make_shared<Compiled>();
     const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
-    pass.set_layout = createStorageBufferSetLayout(device, stages);
-    pass.layout = createPipelineLayout(device, pass.set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
-                                       uint32_t(desc.push_constants.size() * 4));
+    made->set_layout = createStorageBufferSetLayout(device, stages);
+    made->layout = createPipelineLayout(device, made->set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
+                                        uint32_t(desc.push_constants.size() * 4));
     const VkShaderModuleOwner module =
         createShaderModule(device, requireEmbeddedShader(desc.shader));
     std::vector<VkSpecializationMapEntry> entries;
@@ -116,15 +123,30 @@ struct ComputeRunner::Impl {
     auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
     if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
-    info.layout = pass.layout.get();
+    info.layout = made->layout.get();
     VkPipeline pipeline = VK_NULL_HANDLE;
     vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
             "vkCreateComputePipelines (compute runner)");
-    pass.pipeline = VkPipelineOwner(device, pipeline);
+    made->pipeline = VkPipelineOwner(device, pipeline);
+    slot = made;
+    return slot;
+  }
+
+  void build(const GpuComputePass& desc) {
+    Pass pass;
+    pass.desc = &desc;
+    const VkDevice device = context.device();
+    if (desc.repeats_per_step == 0) fail(desc, "repeats_per_step is 0");
+    if (desc.step_index_word >= int32_t(desc.push_constants.size())) {
+      fail(desc, "step_index_word is beyond the push block");
+    }
+    uint32_t binding_count = 0;
+    for (const GpuComputeBuffer& b : desc.buffers) binding_count = std::max(binding_count, b.binding + 1);
+    pass.compiled = compile(desc, binding_count);
 
     for (int parity = 0; parity < 2; ++parity) {
       if (binding_count > 0) {
-        pass.sets[parity] = StorageBufferSet(device, pass.set_layout.get(), binding_count);
+        pass.sets[parity] = StorageBufferSet(device, pass.compiled->set_layout.get(), binding_count);
         // Bindings the pass leaves out get its first buffer, so every binding is valid.
         std::vector<VkBuffer> handles(binding_count, buffer(desc, desc.buffers[0].name).handle());
         for (const GpuComputeBuffer& b : desc.buffers) {
@@ -165,15 +187,15 @@ struct ComputeRunner::Impl {
       const int parity = int(step & 1u);
       for (Pass& pass : passes) {
         const GpuComputePass& desc = *pass.desc;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->pipeline.get());
         if (pass.sets[parity].set != VK_NULL_HANDLE) {
-          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->layout.get(), 0, 1,
                                   &pass.sets[parity].set, 0, nullptr);
         }
         if (!desc.push_constants.empty()) {
           std::vector<uint32_t> push = desc.push_constants;
           if (desc.step_index_word >= 0) push[size_t(desc.step_index_word)] = step;
-          vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+          vkCmdPushConstants(cmd, pass.compiled->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                              uint32_t(push.size() * 4), push.data());
         }
         for (uint32_t r = 0; r < desc.repeats_per_step; ++r) {

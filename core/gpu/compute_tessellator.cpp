@@ -77,7 +77,11 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 }  // namespace
 
 ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
-    : patch_count_(static_cast<uint32_t>(patches.size())) {
+    : ComputeTessellator(context, patches, {}) {}
+
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches,
+                                       std::vector<GpuComputePass> prologue, bool counts_only)
+    : patch_count_(static_cast<uint32_t>(patches.size())), counts_only_(counts_only) {
   std::vector<uint32_t> words;
   words.reserve(patches.size() * kPatchWords);
   for (const TessPatch& patch : patches) {
@@ -87,6 +91,7 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
                     (static_cast<uint32_t>(patch.spacing) << 8));
     words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
                     (patch.rounding_up_control ? 4u : 0u));
+    if (counts_only) continue;
     const auto bounds = patchBounds(patch);
     point_capacity_ += bounds[0];
     index_capacity_ += bounds[1];
@@ -99,7 +104,7 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
                    std::to_string(range) + "; split the batch");
   }
   const uint64_t n = patches.size();
-  std::vector<GpuComputeBuffer> buffers = {buffer(0, "patches", 4 * words.size()),
+  std::vector<GpuComputeBuffer> buffers = {buffer(0, kTessPatchRecords, 4 * words.size()),
                                            buffer(1, "counts", 16 * n),
                                            buffer(2, "offsets", 8 * n),
                                            buffer(3, "status", 16),
@@ -123,8 +128,11 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
   const GpuComputePass count = pass("gpu/tessellate.comp", {0}, push, groups);
   const GpuComputePass scan = pass("gpu/tess_scan.comp", {}, {patch_count_}, 1);
   const GpuComputePass write = pass("gpu/tessellate.comp", {1}, push, groups);
-  runner_ = std::make_unique<ComputeRunner>(
-      context, std::vector<GpuComputeProgram>{{"tessellate", {count, scan, write}}});
+  std::vector<GpuComputeProgram> programs;
+  if (!prologue.empty()) programs.push_back({"levels", std::move(prologue)});
+  programs.push_back({"tessellate", {count, scan}});
+  if (!counts_only) programs.back().passes.push_back(write);
+  runner_ = std::make_unique<ComputeRunner>(context, programs);
 }
 
 ComputeTessellator::~ComputeTessellator() = default;
@@ -140,18 +148,24 @@ ComputeTessellation ComputeTessellator::read() const {
   }
   const std::vector<uint32_t> counts = runner_->read("counts");
   const std::vector<uint32_t> offsets = runner_->read("offsets");
-  const std::vector<uint32_t> points = runner_->read("points", 0, 2 * uint64_t(status[0]));
-  std::vector<uint32_t> indices = runner_->read("indices", 0, status[1]);
+  const std::vector<uint32_t> points =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("points", 0, 2 * uint64_t(status[0]));
+  std::vector<uint32_t> indices =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("indices", 0, status[1]);
   ComputeTessellation out;
   out.patches.resize(patch_count_);
   for (size_t p = 0; p < patch_count_; ++p) {
     out.patches[p] = {offsets[2 * p], counts[4 * p], offsets[2 * p + 1], counts[4 * p + 1],
                       counts[4 * p + 2] != 0};
   }
-  out.points.resize(status[0]);
+  out.points.resize(points.size() / 2);
   for (size_t i = 0; i < out.points.size(); ++i) out.points[i] = {points[2 * i], points[2 * i + 1]};
   out.indices = std::move(indices);
   return out;
+}
+
+std::vector<uint32_t> ComputeTessellator::readBuffer(const std::string& name) const {
+  return runner_->read(name);
 }
 
 ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches) {
