@@ -44,7 +44,8 @@ GpuComputeBuffer levelsBuffer(uint32_t binding, std::string name, std::vector<ui
 // the shader uses them all; the records and the read-back are the batch's, sized elsewhere.
 GpuComputePass levelsPass(const PolicyLevelsJob& job, size_t index, uint32_t first_record) {
   checkJob(job);
-  const std::string suffix = "_" + std::to_string(index);
+  std::string suffix = std::to_string(index);
+  suffix.insert(suffix.begin(), '_');  // (not "_" + ...: GCC 12 warns -Wrestrict)
   const TcsFactorPolicy no_factor;
   const TcsCullPolicy no_cull;
   const TcsFactorPolicy& factor = job.factor_policy ? *job.factor_policy : no_factor;
@@ -91,8 +92,10 @@ std::vector<tess::LevelsBits> levelsOf(const std::vector<uint32_t>& words, uint3
 std::vector<tess::LevelsBits> computePolicyLevels(Context& context, tess::Domain domain,
                                                   tess::Spacing spacing, uint32_t patch_count,
                                                   const TcsFactorPolicy* factor_policy,
-                                                  const TcsCullPolicy* cull_policy) {
+                                                  const TcsCullPolicy* cull_policy,
+                                                  const tess::Levels& levels) {
   PolicyLevelsJob job;
+  job.levels = levels;
   job.domain = domain;
   job.spacing = spacing;
   job.patch_count = patch_count;

@@ -42,12 +42,14 @@ struct PolicyLevelsJob {
 };
 
 // Every patch's levels for one job, as the TCS writes them back (tcs_levels: float bits
-// outer[0..3], inner[0..1]; a culled patch has outer levels 0). One submission, read back.
+// outer[0..3], inner[0..1]; a culled patch has outer levels 0). Without a factor policy,
+// every patch starts from `levels` (PolicyLevelsJob::levels). One submission, read back.
 // Throws GpuError on a device error or when a policy's words do not cover patch_count.
 std::vector<tess::LevelsBits> computePolicyLevels(Context& context, tess::Domain domain,
                                                   tess::Spacing spacing, uint32_t patch_count,
                                                   const TcsFactorPolicy* factor_policy,
-                                                  const TcsCullPolicy* cull_policy);
+                                                  const TcsCullPolicy* cull_policy,
+                                                  const tess::Levels& levels = {});
 
 // What one PolicyTessellator run gives: the jobs' patches one after another (job j's patch
 // i is record firstRecord(j) + i).

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -235,6 +236,7 @@ size_t differingTessellations(const DeviceCase& c, const gpu::PolicyTessellation
 // Tallies of one batch's comparison.
 struct Tally {
   size_t jobs = 0, patches = 0, equal_jobs = 0, controls = 0, caught = 0;
+  size_t culled = 0;  // patches with outer levels 0 (the culling case culls some)
 };
 
 // Compares every job of `cases` run as one batch: levels bitwise against the TCS's, the
@@ -260,6 +262,7 @@ Tally compareBatch(gpu::Context& context, const std::vector<const DeviceCase*>& 
     }
     ++tally.jobs;
     tally.patches += c.tcs_levels.size();
+    for (const tess::LevelsBits& bits : c.tcs_levels) tally.culled += bits[0] == 0u;
     tally.equal_jobs += levels_differ == 0;
     EXPECT_EQ(levels_differ, 0u) << c.label() << ": compute levels != TCS levels";
     EXPECT_EQ(differingTessellations(c, out, first->back(), !counts_only, cpu), 0u)
@@ -306,6 +309,7 @@ TEST(ComputeTessPolicyLevels, EqualEveryTechniqueTcsBitwiseAndCountsEqualTheCpuT
   std::vector<tess::LevelsBits> levels;
   std::vector<uint32_t> first;
   const Tally counted = compareBatch(context, all, true, &cpu, &levels, &first);
+  EXPECT_GT(counted.culled, 0u);
   EXPECT_GT(counted.controls, 0u);
   EXPECT_EQ(counted.caught, counted.controls);
   const auto [next_caught, next_pairs] = nextFrameControl(cases, levels, first);
@@ -315,14 +319,17 @@ TEST(ComputeTessPolicyLevels, EqualEveryTechniqueTcsBitwiseAndCountsEqualTheCpuT
   std::vector<uint32_t> written_first;
   const Tally written =
       compareBatch(context, first_frame, false, &cpu, &written_levels, &written_first);
-  std::printf("compute levels: %zu jobs, %zu patches, %zu jobs bitwise equal to the TCS with "
-              "counts equal to the CPU's; perturbed-target control caught %zu/%zu, next-frame "
-              "control %zu/%zu; written in full (frame 0): %zu jobs, %zu patches, %zu equal\n",
-              counted.jobs, counted.patches, counted.equal_jobs, counted.caught, counted.controls,
-              next_caught, next_pairs, written.jobs, written.patches, written.equal_jobs);
+  std::printf("compute levels: %zu jobs, %zu patches (%zu culled), %zu jobs bitwise equal to "
+              "the TCS with counts equal to the CPU's; perturbed-target control caught %zu/%zu, "
+              "next-frame control %zu/%zu; written in full (frame 0): %zu jobs, %zu patches, "
+              "%zu equal\n",
+              counted.jobs, counted.patches, counted.culled, counted.equal_jobs, counted.caught,
+              counted.controls, next_caught, next_pairs, written.jobs, written.patches,
+              written.equal_jobs);
 }
 
-// The levels-only call (computePolicyLevels) equals the TCS too, culling included.
+// The levels-only call (computePolicyLevels) equals the TCS too: a factor policy with a
+// culling policy, and the culling policy alone on the harness's levels.
 TEST(ComputeTessPolicyLevels, LevelsAloneEqualTheTcs) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const Surface s = surfaceOf(kTechniqueCases[0]);
@@ -335,6 +342,20 @@ TEST(ComputeTessPolicyLevels, LevelsAloneEqualTheTcs) {
   const std::vector<tess::LevelsBits> levels = gpu::computePolicyLevels(
       context, c->job.domain, c->job.spacing, c->job.patch_count, &c->factor, &c->cull);
   EXPECT_EQ(levels, c->tcs_levels);
+
+  const tess::Levels level_two{{2, 2, 2, 2}, {2, 2}};
+  const gpu::GpuPatchProgram& program = s.programs[0];
+  const gpu::PatchProgramCapture cull_only = gpu::runPatchProgram(
+      context, program, level_two,
+      {.patches_per_draw = 256, .capture = false, .statistics = false, .cull_policy = &c->cull});
+  const std::vector<tess::LevelsBits> computed = gpu::computePolicyLevels(
+      context, program.domain, tess::Spacing::kInteger, program.patch_count, nullptr, &c->cull,
+      level_two);
+  EXPECT_EQ(computed, cull_only.tcs_levels);
+  const auto culled = std::count_if(computed.begin(), computed.end(),
+                                    [](const tess::LevelsBits& b) { return b[0] == 0u; });
+  EXPECT_GT(culled, 0);  // the view culls some patches and keeps others
+  EXPECT_LT(culled, std::ptrdiff_t(computed.size()));
 }
 
 }  // namespace
