@@ -35,9 +35,9 @@ constexpr tb::tess::Spacing kPolicySpacing = tb::tess::Spacing::kFractionalOdd;
 // The policy's device words and the jobs of every program of one surface.
 struct PolicyBenchCase {
   std::vector<tb::gpu::GpuPatchProgram> programs;
-  std::vector<tb::gpu::TcsFactorPolicy> policies;     // per program
+  std::vector<tb::gpu::TcsFactorPolicy> policies;    // per program
   std::vector<std::vector<tb::tess::Levels>> twins;  // per program: the CPU twin's levels
-  std::vector<tb::gpu::PolicyLevelsJob> jobs;         // per program
+  std::vector<tb::gpu::PolicyLevelsJob> jobs;        // per program
 };
 
 PolicyBenchCase policyCase(const tb::techniques::SurfacePatches& patches) {
@@ -117,7 +117,8 @@ void policyLevelsAndTessellation(benchmark::State& state,
   state.counters["points"] = points;
   state.counters["tcs_points"] = runs > 0 ? tcs_points / runs : 0;
   state.counters["compute_points_per_s"] = compute_s > 0 ? points * runs / compute_s : 0;
-  state.counters["compute_gpu_points_per_s"] = compute_gpu_s > 0 ? points * runs / compute_gpu_s : 0;
+  state.counters["compute_gpu_points_per_s"] =
+      compute_gpu_s > 0 ? points * runs / compute_gpu_s : 0;
   state.counters["tcs_points_per_s"] = tcs_s > 0 ? tcs_points / tcs_s : 0;
   state.counters["compute_over_tcs"] =
       compute_s > 0 && tcs_points > 0 ? (points * runs / compute_s) / (tcs_points / tcs_s) : 0;
@@ -125,12 +126,14 @@ void policyLevelsAndTessellation(benchmark::State& state,
 }
 
 void registerPolicyLevelsBenchmarks() {
-  const std::pair<const char*, const char*> cases[] = {
-      {"acc", "catmark_xord_interior"},     {"gregory_acc", "catmark_nonquads"},
-      {"osd_adaptive", "catmark_xord_interior"}, {"pn_triangles", "tri_torus"},
-      {"phong", "cylinder_seam"}};
+  const std::pair<const char*, const char*> cases[] = {{"acc", "catmark_xord_interior"},
+                                                       {"gregory_acc", "catmark_nonquads"},
+                                                       {"osd_adaptive", "catmark_xord_interior"},
+                                                       {"pn_triangles", "tri_torus"},
+                                                       {"phong", "cylinder_seam"}};
   for (const auto& [id, asset] : cases) {
-    const tb::techniques::Technique* technique = tb::techniques::TechniqueRegistry::instance().find(id);
+    const tb::techniques::Technique* technique =
+        tb::techniques::TechniqueRegistry::instance().find(id);
     if (technique == nullptr) continue;
     const std::string name = std::string("policy_levels/sphere_diameter/") + id + "/" + asset;
     benchmark::RegisterBenchmark(name.c_str(),

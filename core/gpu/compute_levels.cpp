@@ -10,9 +10,9 @@
 namespace tb::gpu {
 namespace {
 
-constexpr uint32_t kLevelsGroupSize = 64;        // policy_levels.comp's local_size_x
-constexpr size_t kLevelsCornerWords = 32;        // TcsFactorPolicy::corner_words per patch
-constexpr uint32_t kLevelsReadBackWords = 8;     // TbFactorOut per patch: 2 uvec4
+constexpr uint32_t kLevelsGroupSize = 64;                 // policy_levels.comp's local_size_x
+constexpr size_t kLevelsCornerWords = 32;                 // TcsFactorPolicy::corner_words per patch
+constexpr uint32_t kLevelsReadBackWords = 8;              // TbFactorOut per patch: 2 uvec4
 constexpr const char* kLevelsReadBack = "policy_levels";  // binding 3
 
 void checkJob(const PolicyLevelsJob& job) {
@@ -61,7 +61,8 @@ GpuComputePass levelsPass(const PolicyLevelsJob& job, size_t index, uint32_t fir
                   levelsBuffer(6, "cull_tangents" + suffix, cull.tangent_words)};
   pass.push_constants = {job.patch_count, first_record, job.factor_policy ? 1u : 0u,
                          job.cull_policy ? 1u : 0u};
-  pass.groups_x = std::max<uint32_t>(1, (job.patch_count + kLevelsGroupSize - 1) / kLevelsGroupSize);
+  pass.groups_x =
+      std::max<uint32_t>(1, (job.patch_count + kLevelsGroupSize - 1) / kLevelsGroupSize);
   return pass;
 }
 

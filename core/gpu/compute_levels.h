@@ -72,7 +72,7 @@ class PolicyTessellator {
   PolicyTessellator(const PolicyTessellator&) = delete;
   PolicyTessellator& operator=(const PolicyTessellator&) = delete;
 
-  ComputeRunTiming run();         // levels passes, count, scan, write: one submission
+  ComputeRunTiming run();           // levels passes, count, scan, write: one submission
   PolicyTessellation read() const;  // throws GpuError when a kernel raised an error bit
   uint32_t firstRecord(size_t job) const { return first_record_.at(job); }
   uint32_t recordCount() const { return record_count_; }

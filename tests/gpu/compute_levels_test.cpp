@@ -7,10 +7,12 @@
 // Cases: every surface technique's default variant on one bundled asset, every frame of the
 // default camera path (orbit) sampled to kFrames views, every factor policy (one
 // order-dependent one) and one factor policy with a culling policy; the spacing and inner
-// reduction cycle over the policies, so each technique sees all four spacings. All the
-// compute jobs run as one PolicyTessellator batch (one pipeline build, one submission).
-// Broken controls that must be caught: an lp2_edge job whose target is 1% higher, and each
-// job's compute levels against the TCS levels of the next frame.
+// reduction cycle over the policies, so each technique sees all four spacings. Every job
+// runs in one counts-only PolicyTessellator batch (one submission; levels and counts), and
+// the first frame's again through the whole chain with its write pass (points and
+// triangles bit for bit): two pipeline builds in all. Broken controls that must be caught:
+// an lp2_edge job whose target is 1% higher, and each job's compute levels against the TCS
+// levels of the next frame.
 #include "core/gpu/compute_levels.h"
 
 #include <gtest/gtest.h>
@@ -57,11 +59,14 @@ struct PolicyCase {
   const char* factor;
   const char* cull;
 };
-constexpr PolicyCase kPolicyCases[] = {
-    {"uniform", nullptr},           {"distance", nullptr},
-    {"sphere_diameter", nullptr},   {"lp2_edge", nullptr},
-    {"lp2_edge_silhouette", nullptr}, {"lp2_edge_roundness", nullptr},
-    {"distance_order_dependent", nullptr}, {"sphere_diameter", "tangent_plane_frustum"}};
+constexpr PolicyCase kPolicyCases[] = {{"uniform", nullptr},
+                                       {"distance", nullptr},
+                                       {"sphere_diameter", nullptr},
+                                       {"lp2_edge", nullptr},
+                                       {"lp2_edge_silhouette", nullptr},
+                                       {"lp2_edge_roundness", nullptr},
+                                       {"distance_order_dependent", nullptr},
+                                       {"sphere_diameter", "tangent_plane_frustum"}};
 constexpr size_t kControlPolicy = 3;  // lp2_edge: its target is perturbed in the control
 
 constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kPow2,
@@ -104,11 +109,13 @@ struct Surface {
 };
 
 Surface surfaceOf(const TechniqueCase& c) {
-  const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(c.technique);
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(c.technique);
   if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
   Surface s;
-  s.built = techniques::buildSurface(*technique, mesh::loadObjFile(::tb::testing::assetPath(c.asset)),
-                                     technique->variants().front());
+  s.built =
+      techniques::buildSurface(*technique, mesh::loadObjFile(::tb::testing::assetPath(c.asset)),
+                               technique->variants().front());
   s.corners = lod::factorCorners(*s.built);
   const mesh::Aabb box = mesh::boundsOf(s.built->controlMesh());
   s.diagonal = length(box.max - box.min);
@@ -138,10 +145,14 @@ std::unique_ptr<DeviceCase> runOnTcs(gpu::Context& context, const Surface& s, Ca
     c->cull = lod::tcsCullPolicy(cull, s.bounds, program);
   }
   const tess::Spacing spacing = tess::Spacing(params.spacing);
-  const gpu::PatchProgramCapture capture = gpu::runPatchProgram(
-      context, program, expected,
-      {.spacing = spacing, .patches_per_draw = 256, .capture = false, .statistics = false,
-       .factor_policy = &c->factor, .cull_policy = policy.cull ? &c->cull : nullptr});
+  const gpu::PatchProgramCapture capture =
+      gpu::runPatchProgram(context, program, expected,
+                           {.spacing = spacing,
+                            .patches_per_draw = 256,
+                            .capture = false,
+                            .statistics = false,
+                            .factor_policy = &c->factor,
+                            .cull_policy = policy.cull ? &c->cull : nullptr});
   c->tcs_levels = capture.tcs_levels;
   c->job.domain = program.domain;
   c->job.spacing = spacing;
@@ -242,8 +253,8 @@ struct Tally {
 // Compares every job of `cases` run as one batch: levels bitwise against the TCS's, the
 // tessellation against the CPU tessellator's, the controls' levels caught.
 Tally compareBatch(gpu::Context& context, const std::vector<const DeviceCase*>& cases,
-                   bool counts_only, CpuTessellations* cpu,
-                   std::vector<tess::LevelsBits>* levels, std::vector<uint32_t>* first) {
+                   bool counts_only, CpuTessellations* cpu, std::vector<tess::LevelsBits>* levels,
+                   std::vector<uint32_t>* first) {
   std::vector<gpu::PolicyLevelsJob> jobs;
   for (const DeviceCase* c : cases) jobs.push_back(c->job);
   gpu::PolicyTessellator tessellator(context, jobs, counts_only);
@@ -279,7 +290,8 @@ std::pair<size_t, size_t> nextFrameControl(const DeviceCases& cases,
                                            const std::vector<uint32_t>& first) {
   std::map<std::tuple<size_t, size_t, size_t, size_t>, const DeviceCase*> by_key;
   for (const auto& c : cases) {
-    if (!c->control) by_key[{c->key.technique, c->key.frame, c->key.policy, c->key.program}] = c.get();
+    if (!c->control)
+      by_key[{c->key.technique, c->key.frame, c->key.policy, c->key.program}] = c.get();
   }
   size_t caught = 0, pairs = 0;
   for (size_t j = 0; j < cases.size(); ++j) {
@@ -319,13 +331,13 @@ TEST(ComputeTessPolicyLevels, EqualEveryTechniqueTcsBitwiseAndCountsEqualTheCpuT
   std::vector<uint32_t> written_first;
   const Tally written =
       compareBatch(context, first_frame, false, &cpu, &written_levels, &written_first);
-  std::printf("compute levels: %zu jobs, %zu patches (%zu culled), %zu jobs bitwise equal to "
-              "the TCS with counts equal to the CPU's; perturbed-target control caught %zu/%zu, "
-              "next-frame control %zu/%zu; written in full (frame 0): %zu jobs, %zu patches, "
-              "%zu equal\n",
-              counted.jobs, counted.patches, counted.culled, counted.equal_jobs, counted.caught,
-              counted.controls, next_caught, next_pairs, written.jobs, written.patches,
-              written.equal_jobs);
+  std::printf(
+      "compute levels: %zu jobs, %zu patches (%zu culled), %zu jobs bitwise equal to "
+      "the TCS with counts equal to the CPU's; perturbed-target control caught %zu/%zu, "
+      "next-frame control %zu/%zu; written in full (frame 0): %zu jobs, %zu patches, "
+      "%zu equal\n",
+      counted.jobs, counted.patches, counted.culled, counted.equal_jobs, counted.caught,
+      counted.controls, next_caught, next_pairs, written.jobs, written.patches, written.equal_jobs);
 }
 
 // The levels-only call (computePolicyLevels) equals the TCS too: a factor policy with a
@@ -337,8 +349,8 @@ TEST(ComputeTessPolicyLevels, LevelsAloneEqualTheTcs) {
   const lod::FactorParams params =
       lod::factorParams(*lod::parseFactorPolicy(kPolicyCases[k].factor), s.path.views[0],
                         tess::Spacing::kFractionalOdd, s.diagonal);
-  const auto c = runOnTcs(context, s, CaseKey{0, 0, k, 0}, params,
-                          lod::policyLevels(params, s.corners));
+  const auto c =
+      runOnTcs(context, s, CaseKey{0, 0, k, 0}, params, lod::policyLevels(params, s.corners));
   const std::vector<tess::LevelsBits> levels = gpu::computePolicyLevels(
       context, c->job.domain, c->job.spacing, c->job.patch_count, &c->factor, &c->cull);
   EXPECT_EQ(levels, c->tcs_levels);
@@ -348,9 +360,9 @@ TEST(ComputeTessPolicyLevels, LevelsAloneEqualTheTcs) {
   const gpu::PatchProgramCapture cull_only = gpu::runPatchProgram(
       context, program, level_two,
       {.patches_per_draw = 256, .capture = false, .statistics = false, .cull_policy = &c->cull});
-  const std::vector<tess::LevelsBits> computed = gpu::computePolicyLevels(
-      context, program.domain, tess::Spacing::kInteger, program.patch_count, nullptr, &c->cull,
-      level_two);
+  const std::vector<tess::LevelsBits> computed =
+      gpu::computePolicyLevels(context, program.domain, tess::Spacing::kInteger,
+                               program.patch_count, nullptr, &c->cull, level_two);
   EXPECT_EQ(computed, cull_only.tcs_levels);
   const auto culled = std::count_if(computed.begin(), computed.end(),
                                     [](const tess::LevelsBits& b) { return b[0] == 0u; });
