@@ -105,6 +105,7 @@ std::vector<tess::LevelsBits> computePolicyLevels(Context& context, tess::Domain
   GpuComputePass pass = levelsPass(job, 0, 0);
   const TessPatch record = recordOf(job);
   std::vector<uint32_t> words;
+  words.reserve(size_t(patch_count) * kTessPatchRecordWords);
   for (uint32_t p = 0; p < patch_count; ++p) {
     for (float level : record.levels.outer) words.push_back(std::bit_cast<uint32_t>(level));
     for (float level : record.levels.inner) words.push_back(std::bit_cast<uint32_t>(level));

@@ -54,12 +54,6 @@ enum TessErrors : uint32_t {
   kTessErrorCountMismatch = 8,    // the write pass emitted other counts than the count pass
 };
 
-// The batch's patch records, the buffer tessellate.comp reads at binding 0: per patch
-// kTessPatchRecordWords words, outer level bits [4], inner level bits [2], domain | spacing
-// << 8, flags (1 cw, 2 point mode, 4 the rounding-up control).
-inline constexpr const char* kTessPatchRecords = "patches";
-inline constexpr uint32_t kTessPatchRecordWords = 8;
-
 // The batch's buffers and pipelines, made once; run() re-tessellates every patch.
 class ComputeTessellator {
  public:
@@ -99,6 +93,12 @@ class ComputeTessellator {
   uint64_t index_capacity_ = 0;
   std::unique_ptr<ComputeRunner> runner_;
 };
+
+// The batch's patch records, the buffer tessellate.comp reads at binding 0: per patch
+// kTessPatchRecordWords words, outer level bits [4], inner level bits [2], domain | spacing
+// << 8, flags (1 cw, 2 point mode, 4 the rounding-up control).
+inline constexpr const char* kTessPatchRecords = "patches";
+inline constexpr uint32_t kTessPatchRecordWords = 8;
 
 // Builds, runs once and reads back; a batch whose buffers would exceed the device's storage
 // buffer range runs as several (one pipeline build and submission each), joined in order.
