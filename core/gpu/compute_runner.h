@@ -28,7 +28,8 @@ struct ComputeRunTiming {
 
 class ComputeRunner {
  public:
-  // Creates one pipeline per pass (specialisation constants 0..M-1 from the pass) and one
+  // Creates one pipeline per pass (specialisation constants 0..M-1 from the pass; passes
+  // with the same shader, specialisation, binding count and push block size share one) and one
   // buffer per name (the largest size_bytes any pass declares, filled with the first
   // non-empty initial_words, zero elsewhere). Throws GpuError on a device error or an
   // inconsistent description (a missing shader, an indirect buffer no pass binds, initial

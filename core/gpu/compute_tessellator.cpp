@@ -77,7 +77,8 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 }  // namespace
 
 ComputeTessellationPasses describeTessellationPasses(Context& context,
-                                                     std::span<const TessPatch> patches) {
+                                                     std::span<const TessPatch> patches,
+                                                     bool counts_only) {
   ComputeTessellationPasses out;
   std::vector<uint32_t> words;
   words.reserve(patches.size() * kPatchWords);
@@ -88,6 +89,7 @@ ComputeTessellationPasses describeTessellationPasses(Context& context,
                     (static_cast<uint32_t>(patch.spacing) << 8));
     words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
                     (patch.rounding_up_control ? 4u : 0u));
+    if (counts_only) continue;
     const auto bounds = patchBounds(patch);
     out.point_capacity += bounds[0];
     out.index_capacity += bounds[1];
@@ -100,7 +102,7 @@ ComputeTessellationPasses describeTessellationPasses(Context& context,
                    std::to_string(range) + "; split the batch");
   }
   const uint64_t n = patches.size();
-  std::vector<GpuComputeBuffer> buffers = {buffer(0, "patches", 4 * words.size()),
+  std::vector<GpuComputeBuffer> buffers = {buffer(0, kTessPatchRecords, 4 * words.size()),
                                            buffer(1, "counts", 16 * n),
                                            buffer(2, "offsets", 8 * n),
                                            buffer(3, "status", 16),
@@ -123,18 +125,24 @@ ComputeTessellationPasses describeTessellationPasses(Context& context,
     return p;
   };
   out.passes = {pass("gpu/tessellate.comp", {0}, push, groups),
-                pass("gpu/tess_scan.comp", {}, {patch_count}, 1),
-                pass("gpu/tessellate.comp", {1}, push, groups)};
+                pass("gpu/tess_scan.comp", {}, {patch_count}, 1)};
+  if (!counts_only) out.passes.push_back(pass("gpu/tessellate.comp", {1}, push, groups));
   return out;
 }
 
 ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
-    : patch_count_(static_cast<uint32_t>(patches.size())) {
-  ComputeTessellationPasses passes = describeTessellationPasses(context, patches);
+    : ComputeTessellator(context, patches, {}) {}
+
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches,
+                                       std::vector<GpuComputePass> prologue, bool counts_only)
+    : patch_count_(static_cast<uint32_t>(patches.size())), counts_only_(counts_only) {
+  ComputeTessellationPasses passes = describeTessellationPasses(context, patches, counts_only);
   point_capacity_ = passes.point_capacity;
   index_capacity_ = passes.index_capacity;
-  runner_ = std::make_unique<ComputeRunner>(
-      context, std::vector<GpuComputeProgram>{{"tessellate", std::move(passes.passes)}});
+  std::vector<GpuComputeProgram> programs;
+  if (!prologue.empty()) programs.push_back({"levels", std::move(prologue)});
+  programs.push_back({"tessellate", std::move(passes.passes)});
+  runner_ = std::make_unique<ComputeRunner>(context, programs);
 }
 
 ComputeTessellator::~ComputeTessellator() = default;
@@ -150,18 +158,24 @@ ComputeTessellation ComputeTessellator::read() const {
   }
   const std::vector<uint32_t> counts = runner_->read("counts");
   const std::vector<uint32_t> offsets = runner_->read("offsets");
-  const std::vector<uint32_t> points = runner_->read("points", 0, 2 * uint64_t(status[0]));
-  std::vector<uint32_t> indices = runner_->read("indices", 0, status[1]);
+  const std::vector<uint32_t> points =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("points", 0, 2 * uint64_t(status[0]));
+  std::vector<uint32_t> indices =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("indices", 0, status[1]);
   ComputeTessellation out;
   out.patches.resize(patch_count_);
   for (size_t p = 0; p < patch_count_; ++p) {
     out.patches[p] = {offsets[2 * p], counts[4 * p], offsets[2 * p + 1], counts[4 * p + 1],
                       counts[4 * p + 2] != 0};
   }
-  out.points.resize(status[0]);
+  out.points.resize(points.size() / 2);
   for (size_t i = 0; i < out.points.size(); ++i) out.points[i] = {points[2 * i], points[2 * i + 1]};
   out.indices = std::move(indices);
   return out;
+}
+
+std::vector<uint32_t> ComputeTessellator::readBuffer(const std::string& name) const {
+  return runner_->read(name);
 }
 
 ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches) {
