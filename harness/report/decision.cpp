@@ -84,13 +84,17 @@ void readMemory(const results::MeasureResult* m, const std::string& path, Decisi
   }
 }
 
+// Tessellator path: the TCS and TES; compute path: its build and evaluate passes.
 void readInstructions(const results::MeasureResult* m, const std::string& path,
                       DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk || path != kTessellatorPath) return;
+  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
+  const bool compute = path == kComputePath;
   for (const results::MetricRow& row : m->rows) {
     const std::string stage = rowKey(row, "stage");
+    const bool stage_of_path = compute ? endsWith(stage, "#build") || endsWith(stage, "#evaluate")
+                                       : endsWith(stage, ".tesc") || endsWith(stage, ".tese");
     if (row.status != results::MeasureStatus::kOk || rowKey(row, "expansion") != "vector" ||
-        rowKey(row, "source") != "spirv_O" || !(endsWith(stage, ".tesc") || endsWith(stage, ".tese")))
+        rowKey(row, "source") != "spirv_O" || !stage_of_path)
       continue;
     if (const auto total = rowMetric(row, "total")) f->instructions = f->instructions.value_or(0) + *total;
   }
@@ -176,7 +180,10 @@ std::string whySentence(const DecisionCandidate& c, size_t candidates) {
     text += fmt::format(", {} triangles per frame at 1 px ({})", number(f.triangles_1px),
                         f.triangles_policy);
   }
-  if (f.instructions) text += fmt::format(", {} TCS + TES instructions", number(f.instructions));
+  if (f.instructions) {
+    text += fmt::format(", {} {} instructions", number(f.instructions),
+                        c.path == kComputePath ? "build + evaluate" : "TCS + TES");
+  }
   return text + ".";
 }
 

@@ -74,7 +74,7 @@ struct AssetDecision {
 
 // The figures of one record (technique, variant, asset), read from its rows.
 // On the compute path: memory adds its transient buffers (memory rows with path = compute),
-// instructions are its compute shaders' (none counted yet: no figure), the device's
+// instructions are its compute shader's build and evaluate passes', the device's
 // watertightness is its cracks rows'; error and triangles at 1 px are the same surface's and
 // the same policies' levels as the tessellator path's.
 DecisionFigures decisionFigures(const results::Results& results, const std::string& technique,

@@ -41,7 +41,7 @@ std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
        }},
       {"memory / plain mesh at level 16 (ratio)",
        [=](const DecisionCandidate& c) { return optional(c.figures.memory_ratio); }},
-      {"TCS + TES instructions (count; compute path: not counted yet)",
+      {"TCS + TES instructions (count; compute path: its build + evaluate passes)",
        [=](const DecisionCandidate& c) { return optional(c.figures.instructions); }},
       {"watertight CPU / device",
        [](const DecisionCandidate& c) -> std::optional<std::string> {

@@ -91,9 +91,20 @@ void tbEvaluatePoint(uint point) {
   tb_vertex_words[base + 9u] = floatBitsToUint(normal.z);
 }
 
+// The pass: the push constant, or fixed at compile time in the "#build" (0) and "#evaluate"
+// (1) builds the instructions measure counts (shaders/CMakeLists.txt).
+#ifdef TB_COMPUTE_PASS
+const uint kTbComputePass = TB_COMPUTE_PASS;
+#endif
+
 void main() {
   const uint i = gl_GlobalInvocationID.x;
-  if (tb_compute.pass == 0u) {
+#ifdef TB_COMPUTE_PASS
+  const uint tb_pass = kTbComputePass;
+#else
+  const uint tb_pass = tb_compute.pass;
+#endif
+  if (tb_pass == 0u) {
     if (i < tb_compute.patch_count) {
       tb_stage_patch = i;
       tb_surfaces[i] = TB_BUILD_SURFACE();

@@ -1,10 +1,7 @@
 // The "cracks" measure: measureCracks over spacings × levels × backends.
-#include <algorithm>
 #include <exception>
-#include <iterator>
 #include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "harness/lod/edge_pattern_levels.h"
@@ -31,21 +28,12 @@ constexpr LevelChoice kDisplacedDefaultLevels[] = {{7.3f, "7.3"}, {16.0f, "16"}}
 constexpr tess::Spacing kDisplacedDefaultSpacings[] = {tess::Spacing::kInteger,
                                                        tess::Spacing::kFractionalOdd};
 constexpr const char* kEdgePatternKey = "edge_pattern";
-// The default suite runs the compute path (backend gpu, path compute) on these assets only,
-// one quad and one triangle mesh with extraordinary vertices; --suite full on every asset.
-constexpr std::string_view kDefaultComputeAssets[] = {"opensubdiv/catmark_xord_interior",
-                                                      "opensubdiv/loop_xord_interior"};
-
 // The backends of one (spacing, levels): the CPU float model, the TES capture, and the compute
 // path where the suite runs it (never on a displaced surface: the compute path does not
 // displace yet).
 std::vector<CrackBackend> crackBackends(const MeasureInput& input) {
   std::vector<CrackBackend> backends{CrackBackend::kCpuFloat, CrackBackend::kGpu};
-  const bool compute_asset =
-      input.suite == SuiteMode::kFull ||
-      std::find(std::begin(kDefaultComputeAssets), std::end(kDefaultComputeAssets),
-                input.asset_name) != std::end(kDefaultComputeAssets);
-  if (compute_asset && input.displacement == nullptr) backends.push_back(CrackBackend::kGpuCompute);
+  if (runsComputePath(input)) backends.push_back(CrackBackend::kGpuCompute);
   return backends;
 }
 
