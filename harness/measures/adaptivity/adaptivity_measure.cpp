@@ -83,12 +83,37 @@ constexpr auto frameReference = [](auto member) {
   };
 };
 
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<AdaptivityFrame>> adaptivityComputeFields() {
+  using D = results::Direction;
+  using F = AdaptivityFrame;
+  return {
+      // compute_level_mismatches: count; 0 when the compute path's levels (the same policy in
+      //   compute) equal the TCS's bitwise (best), up to patches (worst); only where the compute
+      //   path runs
+      {"compute_level_mismatches", results::Unit::kCount, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return double(f.compute_level_mismatches);
+       }},
+      // compute_counts_differ: flag; 0 when the compute tessellator's points and triangles
+      //   equal the CPU tessellator's (best), 1 (worst)
+      {"compute_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return f.compute_triangles != f.triangles || f.compute_domain_points != f.domain_points
+                    ? 1.0
+                    : 0.0;
+       }},
+  };
+}
+
 // Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
 // edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
 const MetricTable<AdaptivityFrame>& frameTable() {
   using D = results::Direction;
   using F = AdaptivityFrame;
-  static const MetricTable<F> kTable{
+  static const MetricTable<F> kTable{{
       // patches: count; context
       {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // triangles: count; 0 (best), unbounded (worst); the CPU tessellator under the twin's levels
@@ -114,23 +139,6 @@ const MetricTable<AdaptivityFrame>& frameTable() {
                              f.gpu_tcs_patches != f.patches ||
                              (f.gpu_triangles_counted && f.gpu_triangles != f.triangles);
          return differ ? 1.0 : 0.0;
-       }},
-      // compute_level_mismatches: count; 0 when the compute path's levels (the same policy in
-      //   compute) equal the TCS's bitwise (best), up to patches (worst); only where the compute
-      //   path runs
-      {"compute_level_mismatches", results::Unit::kCount, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         if (!f.compute_measured) return std::nullopt;
-         return double(f.compute_level_mismatches);
-       }},
-      // compute_counts_differ: flag; 0 when the compute tessellator's points and triangles
-      //   equal the CPU tessellator's (best), 1 (worst)
-      {"compute_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         if (!f.compute_measured) return std::nullopt;
-         return f.compute_triangles != f.triangles || f.compute_domain_points != f.domain_points
-                    ? 1.0
-                    : 0.0;
        }},
       // twin_level_mismatches: count; 0 when the TCS levels equal the twin's bitwise (best), up to
       //   patches (worst)
@@ -199,7 +207,7 @@ const MetricTable<AdaptivityFrame>& frameTable() {
        [](const F& f) -> std::optional<double> {
          return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
        }},
-  };
+  }, adaptivityComputeFields()};
   return kTable;
 }
 

@@ -47,12 +47,27 @@ auto efficiency(uint64_t T::*culled, uint64_t T::*cullable) {
   };
 }
 
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<CullingFrame>> cullingComputeFields() {
+  using D = results::Direction;
+  using F = CullingFrame;
+  return {
+      // compute_mismatches: count; 0 when the compute path (the policy in compute) decides as
+      //   the TCS (best), up to patches (worst); only where the compute path runs
+      {"compute_mismatches", results::Unit::kCount, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return double(f.compute_mismatches);
+       }},
+  };
+}
+
 // Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
 // as many patches as show no pixel; worst: a visible patch culled (a hole in the image).
 const MetricTable<CullingFrame>& frameTable() {
   using D = results::Direction;
   using F = CullingFrame;
-  static const MetricTable<F> kTable{
+  static const MetricTable<F> kTable{{
       // patches: count; context
       {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // culled_patches: count; context (see culled_fraction)
@@ -110,13 +125,6 @@ const MetricTable<CullingFrame>& frameTable() {
       // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
       //   (worst)
       {"twin_mismatches", results::Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
-      // compute_mismatches: count; 0 when the compute path (the policy in compute) decides as
-      //   the TCS (best), up to patches (worst); only where the compute path runs
-      {"compute_mismatches", results::Unit::kCount, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         if (!f.compute_measured) return std::nullopt;
-         return double(f.compute_mismatches);
-       }},
       // visible_patches: count; context: patches with a pixel in the unculled render
       {"visible_patches", results::Unit::kCount, D::kNone, oracle(&F::visible_patches)},
       // cullable_patches: count; context: what an ideal back-face + frustum culler removes
@@ -149,7 +157,7 @@ const MetricTable<CullingFrame>& frameTable() {
       {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
       // render_height_px: pixels; context
       {"render_height_px", results::Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
-  };
+  }, cullingComputeFields()};
   return kTable;
 }
 

@@ -27,6 +27,28 @@ struct MemoryRowFigures {
   std::optional<TransientFigures> transient = {};
 };
 
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<MemoryRowFigures>> transientFields() {
+  using D = results::Direction;
+  using R = MemoryRowFigures;
+  return {
+      // transient_vertex_bytes: bytes; 0 on the tessellator path (best: its points stream
+      //   from the TES to the rasteriser), unbounded (worst); the compute path's vertex buffer
+      {"transient_vertex_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       [](const R& r) { return r.transient ? double(r.transient->vertex_bytes) : 0.0; }},
+      // transient_index_bytes: bytes; 0 on the tessellator path (best), unbounded (worst)
+      {"transient_index_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       [](const R& r) { return r.transient ? double(r.transient->index_bytes) : 0.0; }},
+      // transient_over_plain: ratio; 0 on the tessellator path (best), about 1.5 to 2.5 on the
+      //   compute path (its unwelded 40-byte records against the plain mesh's welded 32-byte
+      //   vertices; worst: unbounded)
+      {"transient_over_plain", results::Unit::kRatio, D::kLowerIsBetter,
+       [](const R& r) {
+         return r.transient ? double(r.transient->bytes()) / double(r.memory.plain_bytes) : 0.0;
+       }},
+  };
+}
+
 // The plain and compressed meshes are the baselines (context); the technique's own bytes
 // are better lower; plain_over_* and compressed_over_technique above 1 mean the technique
 // is the smaller, so higher is better.
@@ -39,7 +61,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   auto footprint = [](uint64_t techniques::DataFootprint::*member) {
     return [member](const R& r) { return double(r.memory.technique.*member); };
   };
-  static const MetricTable<R> kTable{
+  static const MetricTable<R> kTable{{
       // plain_vertices: count; context: the welded plain mesh's vertices at the level
       {"plain_vertices", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
       // plain_triangles: count; context
@@ -108,20 +130,6 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
          return double(r.compressed->bytes()) /
                 double(r.memory.technique_with_displacement_bytes);
        }},
-      // transient_vertex_bytes: bytes; 0 on the tessellator path (best: its points stream
-      //   from the TES to the rasteriser), unbounded (worst); the compute path's vertex buffer
-      {"transient_vertex_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       [](const R& r) { return r.transient ? double(r.transient->vertex_bytes) : 0.0; }},
-      // transient_index_bytes: bytes; 0 on the tessellator path (best), unbounded (worst)
-      {"transient_index_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       [](const R& r) { return r.transient ? double(r.transient->index_bytes) : 0.0; }},
-      // transient_over_plain: ratio; 0 on the tessellator path (best), about 1.5 to 2.5 on the
-      //   compute path (its unwelded 40-byte records against the plain mesh's welded 32-byte
-      //   vertices; worst: unbounded)
-      {"transient_over_plain", results::Unit::kRatio, D::kLowerIsBetter,
-       [](const R& r) {
-         return r.transient ? double(r.transient->bytes()) / double(r.memory.plain_bytes) : 0.0;
-       }},
       // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
       // map_file_bytes: bytes; 0 (best), unbounded (worst); the map as an OpenEXR file
       {"map_file_bytes", results::Unit::kBytes, D::kLowerIsBetter,
@@ -129,7 +137,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
          if (!r.map_file_bytes) return std::nullopt;
          return double(*r.map_file_bytes);
        }},
-  };
+  }, transientFields()};
   return kTable;
 }
 
