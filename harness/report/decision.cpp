@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <tuple>
 
 #include "harness/report/row_values.h"
@@ -17,7 +18,10 @@ const char* const kDecisionRule =
     "cracked); then error within 1e-3 of the bounding-box diagonal before error over it; among "
     "those within it, fewest triangles per frame for a 1 px tessellation error, among those "
     "over it, lowest error; then fewest TCS + TES instructions, then lowest error, then "
-    "smallest memory ratio, then name";
+    "smallest memory ratio, then name. A technique measured on the compute path too is listed "
+    "twice: the pair ranks by its tessellator path's figures (the same surface at the same "
+    "levels), the compute path right after the tessellator path (it adds transient buffers), "
+    "ahead only when it is watertight on the device where the tessellator path is not";
 
 namespace {
 
@@ -272,11 +276,26 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
            kComputePath});
     }
   }
+  // A compute-path candidate ranks with its tessellator twin (pushed just before it).
+  std::map<std::string, DecisionFigures> twin;
+  for (const DecisionCandidate& c : decision.candidates) {
+    if (c.path == kTessellatorPath) twin[c.technique + "/" + c.variant] = c.figures;
+  }
+  const auto pairFigures = [&](const DecisionCandidate& c) -> const DecisionFigures& {
+    return twin.at(c.technique + "/" + c.variant);
+  };
   std::stable_sort(decision.candidates.begin(), decision.candidates.end(),
-                   [](const DecisionCandidate& a, const DecisionCandidate& b) {
-                     if (decisionBefore(a.figures, b.figures)) return true;
-                     if (decisionBefore(b.figures, a.figures)) return false;
-                     return a.name() < b.name();
+                   [&](const DecisionCandidate& a, const DecisionCandidate& b) {
+                     const DecisionFigures& pa = pairFigures(a);
+                     const DecisionFigures& pb = pairFigures(b);
+                     if (decisionBefore(pa, pb)) return true;
+                     if (decisionBefore(pb, pa)) return false;
+                     if (a.technique != b.technique || a.variant != b.variant) {
+                       return a.technique + "/" + a.variant < b.technique + "/" + b.variant;
+                     }
+                     const int tier_a = watertightTier(a.figures), tier_b = watertightTier(b.figures);
+                     if (tier_a != tier_b) return tier_a < tier_b;
+                     return a.path == kTessellatorPath && b.path != kTessellatorPath;
                    });
   markFront(&decision.candidates);
   if (!decision.candidates.empty()) {
