@@ -36,6 +36,17 @@ constexpr TechniqueAsset kTechniqueAssets[] = {
     {"phong", "tessbench/cylinder_seam.obj"},
 };
 
+// A second asset per technique, run with the default variant at a few levels: boundaries
+// and boundary corners (acc), a triangle-only mesh (gregory_acc's triangle program),
+// other valences (osd_adaptive, pn_triangles, phong).
+constexpr TechniqueAsset kSecondAssets[] = {
+    {"acc", "opensubdiv/catmark_edgecorner.obj"},
+    {"gregory_acc", "tessbench/tri_torus.obj"},
+    {"osd_adaptive", "opensubdiv/catmark_torus.obj"},
+    {"pn_triangles", "opensubdiv/loop_icosahedron.obj"},
+    {"phong", "tessbench/tri_torus.obj"},
+};
+
 // A level case: every patch the same levels, or (per_patch) patch p's outer levels shifted
 // by p so neighbours differ.
 struct LevelCase {
@@ -137,6 +148,7 @@ void expectBitwise(Context& context, const GpuPatchProgram& program, const Level
   EXPECT_EQ(unequalVertices(hardware.vertices, compute.vertices), 0u) << label;
   const uint64_t triangles = cpuTriangles(program, c.spacing, levels);
   EXPECT_EQ(compute.index_words, 3 * triangles) << label;
+  EXPECT_EQ(compute.draw_counted, context.features().pipeline_statistics_query) << label;
   if (compute.draw_counted) {
     EXPECT_EQ(compute.drawn_triangles, triangles) << label;
   }
@@ -175,6 +187,29 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
               "compared bit for bit\n",
               tally.cases, tally.vertices);
   EXPECT_GT(tally.cases, 0u);
+}
+
+TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const std::vector<LevelCase> all = levelCases();
+  const std::vector<LevelCase> cases = {all[2], all[7], all[9]};  // 3, odd 7.3, edges
+  Tally tally;
+  for (const TechniqueAsset& ta : kSecondAssets) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(ta.technique);
+    const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(ta.asset));
+    ASSERT_EQ(technique->checkSupport(mesh), "") << ta.technique << " " << ta.asset;
+    const auto surface = techniques::buildSurface(*technique, mesh, technique->variants()[0]);
+    for (const GpuPatchProgram& program : surface->gpuPrograms()) {
+      for (size_t k = 0; k < cases.size(); k += ::tb::testing::sweepStride(2)) {
+        const std::string label = std::string(ta.technique) + " " + ta.asset + " " +
+                                  program.evaluation_shader + " level " + cases[k].name;
+        expectBitwise(context, program, cases[k], label, &tally);
+      }
+    }
+  }
+  std::printf("[compute path] second assets: %zu cases, %zu vertices, compared bit for bit\n",
+              tally.cases, tally.vertices);
 }
 
 TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
