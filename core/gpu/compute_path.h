@@ -36,9 +36,9 @@ struct ComputePathResult {
   // As PatchProgramCapture::vertices: SurfacePatches patch (patch_ids applied), coordinate
   // bits, position, normal; sorted by (patch, coordinate bits), duplicates kept once.
   std::vector<CapturedVertex> vertices;
-  uint64_t points = 0;          // domain points evaluated (records in the vertex buffer)
-  uint64_t index_words = 0;     // in the index buffer: 3 a triangle
-  bool draw_counted = false;    // the device counted the draw (pipeline statistics)
+  uint64_t points = 0;           // domain points evaluated (records in the vertex buffer)
+  uint64_t index_words = 0;      // in the index buffer: 3 a triangle
+  bool draw_counted = false;     // the device counted the draw (pipeline statistics)
   uint64_t drawn_triangles = 0;  // the draw's input-assembly primitives
   uint64_t drawn_vertices = 0;   // the draw's vertex-shader invocations (post-transform
                                  // cache reuse makes it at most index_words)
@@ -79,6 +79,7 @@ ComputePathResult runComputePath(Context& context, const GpuPatchProgram& progra
                                  const ComputePathOptions& options = {});
 // Uniform levels: the same `levels` for every patch.
 ComputePathResult runComputePath(Context& context, const GpuPatchProgram& program,
-                                 const tess::Levels& levels, const ComputePathOptions& options = {});
+                                 const tess::Levels& levels,
+                                 const ComputePathOptions& options = {});
 
 }  // namespace tb::gpu

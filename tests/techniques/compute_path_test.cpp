@@ -4,6 +4,8 @@
 // gl_TessCoord bits, position bits, normal bits) at the same levels, uniform, per edge and
 // per patch; the indirect draw draws exactly the CPU tessellator's triangles. Control: an
 // evaluation at a coordinate one ulp off is caught as unequal.
+#include "core/gpu/compute_path.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "core/gpu/compute_path.h"
 #include "core/gpu/gpu_error.h"
 #include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
@@ -56,9 +57,7 @@ struct LevelCase {
   bool per_patch = false;
 };
 
-tess::Levels uniform(float level) {
-  return {{level, level, level, level}, {level, level}};
-}
+tess::Levels uniform(float level) { return {{level, level, level, level}, {level, level}}; }
 
 // The full sweep for a technique's default variant; the other variants take every third.
 std::vector<LevelCase> levelCases() {
@@ -183,9 +182,10 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
       }
     }
   }
-  std::printf("[compute path] %zu technique x variant x program x level cases, %zu vertices, "
-              "compared bit for bit\n",
-              tally.cases, tally.vertices);
+  std::printf(
+      "[compute path] %zu technique x variant x program x level cases, %zu vertices, "
+      "compared bit for bit\n",
+      tally.cases, tally.vertices);
   EXPECT_GT(tally.cases, 0u);
 }
 
@@ -217,8 +217,9 @@ TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
   for (const TechniqueAsset& ta : kTechniqueAssets) {
     const techniques::Technique* technique =
         techniques::TechniqueRegistry::instance().find(ta.technique);
-    const auto surface = techniques::buildSurface(
-        *technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)), technique->variants()[0]);
+    const auto surface =
+        techniques::buildSurface(*technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)),
+                                 technique->variants()[0]);
     const GpuPatchProgram program = surface->gpuPrograms()[0];
     const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
     const PatchProgramCapture hardware =
