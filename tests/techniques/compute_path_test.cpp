@@ -2,8 +2,9 @@
 // technique and its non-control variants on a bundled asset it accepts, the vertices the
 // compute shaders evaluate are bitwise the TES capture's (runPatchProgram: same patch,
 // gl_TessCoord bits, position bits, normal bits) at the same levels, uniform, per edge and
-// per patch; the indirect draw draws exactly the CPU tessellator's triangles. Control: an
-// evaluation at a coordinate one ulp off is caught as unequal.
+// per patch; the indirect draw draws exactly the CPU tessellator's triangles. Controls: an
+// evaluation at a coordinate one ulp off, or in another operation order, is caught as
+// unequal.
 #include "core/gpu/compute_path.h"
 
 #include <gtest/gtest.h>
@@ -228,8 +229,34 @@ TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
     control.control = 1;
     const ComputePathResult compute = runComputePath(context, program, levels, control);
     ASSERT_EQ(compute.vertices.size(), hardware.vertices.size()) << ta.technique;
-    EXPECT_GT(unequalVertices(hardware.vertices, compute.vertices), 0u) << ta.technique;
+    const size_t unequal = unequalVertices(hardware.vertices, compute.vertices);
+    EXPECT_GT(unequal, 0u) << ta.technique;
+    std::printf("[compute path control] %s, u one ulp up: %zu of %zu vertices unequal\n",
+                ta.technique, unequal, compute.vertices.size());
   }
+}
+
+TEST(ComputePath, ControlAnotherOperationOrderIsCaught) {
+  // acc's compute shader with the asymmetric Bézier order (specialisation constant 0 = 0,
+  // an FMA chain along u then v) against the TES capture in the default symmetric FMA order.
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  const mesh::Mesh mesh =
+      mesh::loadObjFile(::tb::testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
+  const auto surface = techniques::buildSurface(*acc, mesh, acc->variants()[0]);
+  const GpuPatchProgram program = surface->gpuPrograms()[0];
+  ASSERT_EQ(program.specialization.at(0), 2u);  // symmetric_fma
+  const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
+  const PatchProgramCapture hardware =
+      hardwareCapture(context, program, tess::Spacing::kInteger, levels);
+  GpuPatchProgram reordered = program;
+  reordered.specialization[0] = 0;  // asymmetric
+  const ComputePathResult compute = runComputePath(context, reordered, levels);
+  ASSERT_EQ(compute.vertices.size(), hardware.vertices.size());
+  const size_t unequal = unequalVertices(hardware.vertices, compute.vertices);
+  EXPECT_GT(unequal, 0u);
+  std::printf("[compute path control] acc in the asymmetric order: %zu of %zu vertices unequal\n",
+              unequal, compute.vertices.size());
 }
 
 TEST(ComputePath, RefusesProgramsItCannotRun) {
