@@ -73,6 +73,7 @@ std::vector<LevelCase> levelCases() {
       {"odd 3+ulp", tess::Spacing::kFractionalOdd, uniform(above_three)},
       {"odd 7.3", tess::Spacing::kFractionalOdd, uniform(7.3f)},
       {"even 4.5", tess::Spacing::kFractionalEven, uniform(4.5f)},
+      {"pow2 5", tess::Spacing::kPow2, uniform(5)},
       {"edges 2 5 3 7 / 4 6", tess::Spacing::kInteger, {{2, 5, 3, 7}, {4, 6}}},
       {"per patch", tess::Spacing::kInteger, {{1, 4, 2, 6}, {3, 5}}, true},
   };
@@ -193,7 +194,7 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
 TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const std::vector<LevelCase> all = levelCases();
-  const std::vector<LevelCase> cases = {all[2], all[7], all[9]};  // 3, odd 7.3, edges
+  const std::vector<LevelCase> cases = {all[2], all[7], all[10]};  // 3, odd 7.3, edges
   Tally tally;
   for (const TechniqueAsset& ta : kSecondAssets) {
     const techniques::Technique* technique =
