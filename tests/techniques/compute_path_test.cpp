@@ -32,7 +32,7 @@ struct TechniqueAsset {
 };
 constexpr TechniqueAsset kTechniqueAssets[] = {
     {"acc", "opensubdiv/catmark_cube_creases1.obj"},
-    {"gregory_acc", "opensubdiv/catmark_nonquads.obj"},  // quad and triangle programs
+    {"gregory_acc", "opensubdiv/catmark_pyramid.obj"},  // quad and triangle programs
     {"osd_adaptive", "opensubdiv/catmark_cube.obj"},
     {"pn_triangles", "tessbench/cylinder_seam.obj"},
     {"phong", "tessbench/cylinder_seam.obj"},
@@ -168,9 +168,12 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
     ASSERT_NE(technique, nullptr) << ta.technique;
     const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(ta.asset));
     const std::vector<techniques::VariantInfo> variants = technique->variants();
+    const size_t cases_before = tally.cases;
+    size_t variants_run = 0;
     for (size_t v = 0; v < variants.size(); ++v) {
       if (!variants[v].control.empty()) continue;
       const auto surface = techniques::buildSurface(*technique, mesh, variants[v]);
+      ++variants_run;
       // The default variant (first) takes every level case; the others every third, and
       // under a sanitizer fewer still.
       const size_t stride = (v == 0 ? 1 : 3) * ::tb::testing::sweepStride(4);
@@ -183,6 +186,8 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
         }
       }
     }
+    std::printf("[compute path] %s on %s: %zu variants, %zu program x level cases\n", ta.technique,
+                ta.asset, variants_run, tally.cases - cases_before);
   }
   std::printf(
       "[compute path] %zu technique x variant x program x level cases, %zu vertices, "
