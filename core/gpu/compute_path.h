@@ -55,7 +55,9 @@ class ComputePath {
  public:
   // Throws GpuError when the program has no compute shader, is a displaced build (the
   // compute path does not displace yet), has more than 7 storage buffers,
-  // patch_levels.size() != program.patch_count, or the device lacks a feature.
+  // patch_levels.size() != program.patch_count, the levels' point or index bound exceeds the
+  // device's storage buffer range (no splitting into batches yet), or the device lacks a
+  // feature.
   ComputePath(Context& context, const GpuPatchProgram& program,
               std::span<const tess::Levels> patch_levels, const ComputePathOptions& options = {});
   ~ComputePath();
