@@ -219,6 +219,32 @@ TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
               tally.cases, tally.vertices);
 }
 
+TEST(ComputePath, BezierPositionTwinIsAccTesPosition) {
+  // bezier_position.comp (the counting probe's compute twin) emits acc's position alone: it
+  // is acc.tese's captured position bit for bit (two Bézier orders; every pipeline costs
+  // lavapipe a compile, and the main sweep runs the others through acc.comp).
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  const mesh::Mesh mesh =
+      mesh::loadObjFile(::tb::testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
+  const auto surface = techniques::buildSurface(*acc, mesh, acc->variants()[0]);
+  GpuPatchProgram program = surface->gpuPrograms()[0];
+  const std::vector<tess::Levels> levels(program.patch_count, uniform(5));
+  for (uint32_t order : {2u, 1u}) {  // symmetric with and without FMA (bezier.glsl)
+    program.specialization.at(0) = order;
+    const PatchProgramCapture hardware =
+        hardwareCapture(context, program, tess::Spacing::kInteger, levels);
+    GpuPatchProgram probe = program;
+    probe.compute_shader = "acc/bezier_position.comp";
+    ComputePathResult compute = runComputePath(context, probe, levels);
+    ASSERT_EQ(compute.vertices.size(), hardware.vertices.size()) << "order " << order;
+    for (size_t i = 0; i < compute.vertices.size(); ++i) {
+      compute.vertices[i].normal = hardware.vertices[i].normal;  // the probe has none
+    }
+    EXPECT_EQ(unequalVertices(hardware.vertices, compute.vertices), 0u) << "order " << order;
+  }
+}
+
 TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   for (const TechniqueAsset& ta : kTechniqueAssets) {
