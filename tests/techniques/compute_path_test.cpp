@@ -158,6 +158,13 @@ void expectBitwise(Context& context, const GpuPatchProgram& program, const Level
   tally->vertices += compute.vertices.size();
 }
 
+// acc's default variant on the first asset of kTechniqueAssets: its one GPU program.
+GpuPatchProgram accDefaultProgram() {
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(kTechniqueAssets[0].asset));
+  return techniques::buildSurface(*acc, mesh, acc->variants()[0])->gpuPrograms()[0];
+}
+
 TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   const std::vector<LevelCase> cases = levelCases();
@@ -224,11 +231,7 @@ TEST(ComputePath, BezierPositionTwinIsAccTesPosition) {
   // is acc.tese's captured position bit for bit (two Bézier orders; every pipeline costs
   // lavapipe a compile, and the main sweep runs the others through acc.comp).
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
-  const mesh::Mesh mesh =
-      mesh::loadObjFile(::tb::testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
-  const auto surface = techniques::buildSurface(*acc, mesh, acc->variants()[0]);
-  GpuPatchProgram program = surface->gpuPrograms()[0];
+  GpuPatchProgram program = accDefaultProgram();
   const std::vector<tess::Levels> levels(program.patch_count, uniform(5));
   for (uint32_t order : {2u, 1u}) {  // symmetric with and without FMA (bezier.glsl)
     program.specialization.at(0) = order;
@@ -272,11 +275,7 @@ TEST(ComputePath, ControlAnotherOperationOrderIsCaught) {
   // acc's compute shader with the asymmetric Bézier order (specialisation constant 0 = 0,
   // an FMA chain along u then v) against the TES capture in the default symmetric FMA order.
   TB_GPU_CONTEXT_OR_SKIP(context);
-  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
-  const mesh::Mesh mesh =
-      mesh::loadObjFile(::tb::testing::assetPath("opensubdiv/catmark_cube_creases1.obj"));
-  const auto surface = techniques::buildSurface(*acc, mesh, acc->variants()[0]);
-  const GpuPatchProgram program = surface->gpuPrograms()[0];
+  const GpuPatchProgram program = accDefaultProgram();
   ASSERT_EQ(program.specialization.at(0), 2u);  // symmetric_fma
   const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
   const PatchProgramCapture hardware =
