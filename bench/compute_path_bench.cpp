@@ -25,10 +25,8 @@ struct BenchCase {
   const char* asset;
 };
 constexpr BenchCase kCases[] = {
-    {"acc", "catmark_cube_creases1"},
-    {"gregory_acc", "catmark_nonquads"},
-    {"osd_adaptive", "catmark_cube"},
-    {"pn_triangles", "cylinder_seam"},
+    {"acc", "catmark_cube_creases1"}, {"gregory_acc", "catmark_nonquads"},
+    {"osd_adaptive", "catmark_cube"}, {"pn_triangles", "cylinder_seam"},
     {"phong", "cylinder_seam"},
 };
 

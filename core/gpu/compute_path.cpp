@@ -16,8 +16,8 @@
 namespace tb::gpu {
 namespace {
 
-constexpr uint32_t kMaxTechniqueBuffers = 7;  // bindings 1..7 (compute_surface.glsl)
-constexpr uint32_t kGroup = 64;               // compute_surface.glsl's local_size_x
+constexpr uint32_t kMaxTechniqueBuffers = 7;      // bindings 1..7 (compute_surface.glsl)
+constexpr uint32_t kGroup = 64;                   // compute_surface.glsl's local_size_x
 constexpr uint64_t kDrawCommandOffsetBytes = 16;  // compute_path_prepare.comp words 4..8
 // Pipeline statistics the draw's query counts, in the order Vulkan returns them.
 constexpr VkQueryPipelineStatisticFlags kDrawStatistics =
@@ -55,10 +55,17 @@ uint32_t surfaceStrideBytes(std::span<const uint32_t> spirv, uint32_t binding,
     }
     i += count;
   }
+  auto operands = [&](uint32_t id) -> const std::vector<uint32_t>& {
+    static const std::vector<uint32_t> kNone;
+    return id < operands_of.size() ? operands_of[id] : kNone;
+  };
   for (uint32_t variable : bound) {
-    const auto& pointer = operands_of[operands_of[variable].at(1)];
-    const auto& block = operands_of[pointer.at(1)];  // the struct: (id, member types...)
-    if (block.size() >= 2 && stride_of[block[1]] > 0) return stride_of[block[1]];
+    const auto& var = operands(variable);                                // (variable, pointer type)
+    const auto& pointer = operands(var.size() >= 2 ? var[1] : 0);        // (pointer, pointee)
+    const auto& block = operands(pointer.size() >= 2 ? pointer[1] : 0);  // (struct, members...)
+    if (block.size() >= 2 && block[1] < stride_of.size() && stride_of[block[1]] > 0) {
+      return stride_of[block[1]];
+    }
   }
   throw GpuError("compute path: " + shader + " has no runtime array at set 0, binding " +
                  std::to_string(binding) + " (include shaders/common/compute_surface.glsl)");
@@ -93,6 +100,8 @@ void checkProgram(const GpuPatchProgram& program, size_t level_count) {
   }
 }
 
+}  // namespace
+
 // The draw's pipeline, made once per Context (llvmpipe compiles a pipeline in about 0.1 s):
 // vertex pulling from the records, triangle lists, zero attachments under rasterizer
 // discard, so the draw is counted and nothing is written.
@@ -119,7 +128,6 @@ struct ComputePathDrawPipeline {
   VkPipelineOwner pipeline;
 };
 
-}  // namespace
 
 struct ComputePath::Impl {
   Impl(Context& ctx, const GpuPatchProgram& prog) : context(ctx), program(prog) {}
@@ -158,8 +166,7 @@ struct ComputePath::Impl {
     build.groups_x = std::max<uint32_t>(1, (program.patch_count + kGroup - 1) / kGroup);
     GpuComputePass evaluate = build;
     evaluate.push_constants[0] = 1;
-    evaluate.indirect_buffer = "indirect";
-    evaluate.buffers.push_back(namedBuffer(13, "indirect", 64));
+    evaluate.indirect_buffer = "indirect";  // the prepare pass's dispatch (words 0..2)
     return {build, evaluate};
   }
 
@@ -188,8 +195,7 @@ struct ComputePath::Impl {
                             &draw_set.set, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, runner->bufferHandle("indices"), 0, VK_INDEX_TYPE_UINT32);
     if (pool) vkCmdBeginQuery(cmd, pool, 0, 0);
-    vkCmdDrawIndexedIndirect(cmd, runner->bufferHandle("indirect"), kDrawCommandOffsetBytes, 1,
-                             0);
+    vkCmdDrawIndexedIndirect(cmd, runner->bufferHandle("indirect"), kDrawCommandOffsetBytes, 1, 0);
     if (pool) vkCmdEndQuery(cmd, pool, 0);
     vkCmdEndRendering(cmd);
   }
@@ -260,9 +266,10 @@ ComputePathResult ComputePath::read() const {
   }
   if (const VkQueryPool pool = impl.queries.get(); pool && impl.draw) {
     uint64_t values[2] = {0, 0};
-    vkCheck(vkGetQueryPoolResults(impl.context.device(), pool, 0, 1, sizeof(values), values,
-                                  sizeof(values), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-            "vkGetQueryPoolResults (compute path)");
+    vkCheck(
+        vkGetQueryPoolResults(impl.context.device(), pool, 0, 1, sizeof(values), values,
+                              sizeof(values), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults (compute path)");
     out.draw_counted = true;
     out.drawn_triangles = values[0];
     out.drawn_vertices = values[1];

@@ -36,9 +36,9 @@ struct ComputePathResult {
   // As PatchProgramCapture::vertices: SurfacePatches patch (patch_ids applied), coordinate
   // bits, position, normal; sorted by (patch, coordinate bits), duplicates kept once.
   std::vector<CapturedVertex> vertices;
-  uint64_t points = 0;          // domain points evaluated (records in the vertex buffer)
-  uint64_t index_words = 0;     // in the index buffer: 3 a triangle
-  bool draw_counted = false;    // the device counted the draw (pipeline statistics)
+  uint64_t points = 0;           // domain points evaluated (records in the vertex buffer)
+  uint64_t index_words = 0;      // in the index buffer: 3 a triangle
+  bool draw_counted = false;     // the device counted the draw (pipeline statistics)
   uint64_t drawn_triangles = 0;  // the draw's input-assembly primitives
   uint64_t drawn_vertices = 0;   // the draw's vertex-shader invocations (post-transform
                                  // cache reuse makes it at most index_words)
@@ -55,7 +55,9 @@ class ComputePath {
  public:
   // Throws GpuError when the program has no compute shader, is a displaced build (the
   // compute path does not displace yet), has more than 7 storage buffers,
-  // patch_levels.size() != program.patch_count, or the device lacks a feature.
+  // patch_levels.size() != program.patch_count, the levels' point or index bound exceeds the
+  // device's storage buffer range (no splitting into batches yet), or the device lacks a
+  // feature.
   ComputePath(Context& context, const GpuPatchProgram& program,
               std::span<const tess::Levels> patch_levels, const ComputePathOptions& options = {});
   ~ComputePath();
@@ -79,6 +81,7 @@ ComputePathResult runComputePath(Context& context, const GpuPatchProgram& progra
                                  const ComputePathOptions& options = {});
 // Uniform levels: the same `levels` for every patch.
 ComputePathResult runComputePath(Context& context, const GpuPatchProgram& program,
-                                 const tess::Levels& levels, const ComputePathOptions& options = {});
+                                 const tess::Levels& levels,
+                                 const ComputePathOptions& options = {});
 
 }  // namespace tb::gpu

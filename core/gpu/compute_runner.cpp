@@ -16,15 +16,16 @@
 namespace tb::gpu {
 namespace {
 
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkBufferUsageFlags kUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+    VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+    VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 [[noreturn]] void fail(const GpuComputePass& pass, const std::string& rule) {
   throw GpuError("compute runner: pass " + pass.shader + ": " + rule);
 }
+
+}  // namespace
 
 // A compute pipeline with its layouts, immutable once made.
 struct CachedComputePipeline {
@@ -65,7 +66,8 @@ struct ComputePipelineCache {
     const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
                                               desc.specialization.size() * 4,
                                               desc.specialization.data()};
-    auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    auto info =
+        vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
     if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
     info.layout = made->layout.get();
@@ -79,8 +81,6 @@ struct ComputePipelineCache {
   std::mutex mutex;
   std::map<std::string, std::shared_ptr<const CachedComputePipeline>> entries;
 };
-
-}  // namespace
 
 struct ComputeRunner::Impl {
   struct Pass {
@@ -162,7 +162,8 @@ struct ComputeRunner::Impl {
 
     for (int parity = 0; parity < 2; ++parity) {
       if (binding_count > 0) {
-        pass.sets[parity] = StorageBufferSet(device, pass.compiled->set_layout.get(), binding_count);
+        pass.sets[parity] =
+            StorageBufferSet(device, pass.compiled->set_layout.get(), binding_count);
         // Bindings the pass leaves out get its first buffer, so every binding is valid.
         std::vector<VkBuffer> handles(binding_count, buffer(desc, desc.buffers[0].name).handle());
         for (const GpuComputeBuffer& b : desc.buffers) {
@@ -206,8 +207,8 @@ struct ComputeRunner::Impl {
         const GpuComputePass& desc = *pass.desc;
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->pipeline.get());
         if (pass.sets[parity].set != VK_NULL_HANDLE) {
-          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->layout.get(), 0, 1,
-                                  &pass.sets[parity].set, 0, nullptr);
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->layout.get(),
+                                  0, 1, &pass.sets[parity].set, 0, nullptr);
         }
         if (!desc.push_constants.empty()) {
           std::vector<uint32_t> push = desc.push_constants;
@@ -233,11 +234,11 @@ struct ComputeRunner::Impl {
       draw.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
       draw.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT |
                            VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
-                               VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                           0, 1, &draw, 0, nullptr, 0, nullptr);
+      vkCmdPipelineBarrier(
+          cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+              VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+          0, 1, &draw, 0, nullptr, 0, nullptr);
       (*after)(cmd);
     }
     if (pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool, 1);

@@ -2,8 +2,11 @@
 // technique and its non-control variants on a bundled asset it accepts, the vertices the
 // compute shaders evaluate are bitwise the TES capture's (runPatchProgram: same patch,
 // gl_TessCoord bits, position bits, normal bits) at the same levels, uniform, per edge and
-// per patch; the indirect draw draws exactly the CPU tessellator's triangles. Control: an
-// evaluation at a coordinate one ulp off is caught as unequal.
+// per patch; the indirect draw draws exactly the CPU tessellator's triangles. Controls: an
+// evaluation at a coordinate one ulp off, or in another operation order, is caught as
+// unequal.
+#include "core/gpu/compute_path.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "core/gpu/compute_path.h"
 #include "core/gpu/gpu_error.h"
 #include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
@@ -30,10 +32,21 @@ struct TechniqueAsset {
 };
 constexpr TechniqueAsset kTechniqueAssets[] = {
     {"acc", "opensubdiv/catmark_cube_creases1.obj"},
-    {"gregory_acc", "opensubdiv/catmark_nonquads.obj"},  // quad and triangle programs
+    {"gregory_acc", "opensubdiv/catmark_pyramid.obj"},  // quad and triangle programs
     {"osd_adaptive", "opensubdiv/catmark_cube.obj"},
     {"pn_triangles", "tessbench/cylinder_seam.obj"},
     {"phong", "tessbench/cylinder_seam.obj"},
+};
+
+// A second asset per technique, run with the default variant at a few levels: boundaries
+// and boundary corners (acc), a triangle-only mesh (gregory_acc's triangle program),
+// other valences (osd_adaptive, pn_triangles, phong).
+constexpr TechniqueAsset kSecondAssets[] = {
+    {"acc", "opensubdiv/catmark_edgecorner.obj"},
+    {"gregory_acc", "tessbench/tri_torus.obj"},
+    {"osd_adaptive", "opensubdiv/catmark_torus.obj"},
+    {"pn_triangles", "opensubdiv/loop_icosahedron.obj"},
+    {"phong", "tessbench/tri_torus.obj"},
 };
 
 // A level case: every patch the same levels, or (per_patch) patch p's outer levels shifted
@@ -45,9 +58,7 @@ struct LevelCase {
   bool per_patch = false;
 };
 
-tess::Levels uniform(float level) {
-  return {{level, level, level, level}, {level, level}};
-}
+tess::Levels uniform(float level) { return {{level, level, level, level}, {level, level}}; }
 
 // The full sweep for a technique's default variant; the other variants take every third.
 std::vector<LevelCase> levelCases() {
@@ -62,6 +73,7 @@ std::vector<LevelCase> levelCases() {
       {"odd 3+ulp", tess::Spacing::kFractionalOdd, uniform(above_three)},
       {"odd 7.3", tess::Spacing::kFractionalOdd, uniform(7.3f)},
       {"even 4.5", tess::Spacing::kFractionalEven, uniform(4.5f)},
+      {"pow2 5", tess::Spacing::kPow2, uniform(5)},
       {"edges 2 5 3 7 / 4 6", tess::Spacing::kInteger, {{2, 5, 3, 7}, {4, 6}}},
       {"per patch", tess::Spacing::kInteger, {{1, 4, 2, 6}, {3, 5}}, true},
   };
@@ -137,12 +149,20 @@ void expectBitwise(Context& context, const GpuPatchProgram& program, const Level
   EXPECT_EQ(unequalVertices(hardware.vertices, compute.vertices), 0u) << label;
   const uint64_t triangles = cpuTriangles(program, c.spacing, levels);
   EXPECT_EQ(compute.index_words, 3 * triangles) << label;
+  EXPECT_EQ(compute.draw_counted, context.features().pipeline_statistics_query) << label;
   if (compute.draw_counted) {
     EXPECT_EQ(compute.drawn_triangles, triangles) << label;
   }
   EXPECT_GE(compute.vertex_buffer_bytes, 40 * compute.points) << label;
   ++tally->cases;
   tally->vertices += compute.vertices.size();
+}
+
+// acc's default variant on the first asset of kTechniqueAssets: its one GPU program.
+GpuPatchProgram accDefaultProgram() {
+  const techniques::Technique* acc = techniques::TechniqueRegistry::instance().find("acc");
+  const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(kTechniqueAssets[0].asset));
+  return techniques::buildSurface(*acc, mesh, acc->variants()[0])->gpuPrograms()[0];
 }
 
 TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
@@ -155,9 +175,12 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
     ASSERT_NE(technique, nullptr) << ta.technique;
     const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(ta.asset));
     const std::vector<techniques::VariantInfo> variants = technique->variants();
+    const size_t cases_before = tally.cases;
+    size_t variants_run = 0;
     for (size_t v = 0; v < variants.size(); ++v) {
       if (!variants[v].control.empty()) continue;
       const auto surface = techniques::buildSurface(*technique, mesh, variants[v]);
+      ++variants_run;
       // The default variant (first) takes every level case; the others every third, and
       // under a sanitizer fewer still.
       const size_t stride = (v == 0 ? 1 : 3) * ::tb::testing::sweepStride(4);
@@ -170,11 +193,59 @@ TEST(ComputePath, EveryTechniqueVariantIsBitwiseTheTesCapture) {
         }
       }
     }
+    std::printf("[compute path] %s on %s: %zu variants, %zu program x level cases\n", ta.technique,
+                ta.asset, variants_run, tally.cases - cases_before);
   }
-  std::printf("[compute path] %zu technique x variant x program x level cases, %zu vertices, "
-              "compared bit for bit\n",
-              tally.cases, tally.vertices);
+  std::printf(
+      "[compute path] %zu technique x variant x program x level cases, %zu vertices, "
+      "compared bit for bit\n",
+      tally.cases, tally.vertices);
   EXPECT_GT(tally.cases, 0u);
+}
+
+TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const std::vector<LevelCase> all = levelCases();
+  const std::vector<LevelCase> cases = {all[2], all[7], all[10]};  // 3, odd 7.3, edges
+  Tally tally;
+  for (const TechniqueAsset& ta : kSecondAssets) {
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(ta.technique);
+    const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(ta.asset));
+    ASSERT_EQ(technique->checkSupport(mesh), "") << ta.technique << " " << ta.asset;
+    const auto surface = techniques::buildSurface(*technique, mesh, technique->variants()[0]);
+    for (const GpuPatchProgram& program : surface->gpuPrograms()) {
+      for (size_t k = 0; k < cases.size(); k += ::tb::testing::sweepStride(2)) {
+        const std::string label = std::string(ta.technique) + " " + ta.asset + " " +
+                                  program.evaluation_shader + " level " + cases[k].name;
+        expectBitwise(context, program, cases[k], label, &tally);
+      }
+    }
+  }
+  std::printf("[compute path] second assets: %zu cases, %zu vertices, compared bit for bit\n",
+              tally.cases, tally.vertices);
+}
+
+TEST(ComputePath, BezierPositionTwinIsAccTesPosition) {
+  // bezier_position.comp (the counting probe's compute twin) emits acc's position alone: it
+  // is acc.tese's captured position bit for bit (two Bézier orders; every pipeline costs
+  // lavapipe a compile, and the main sweep runs the others through acc.comp).
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  GpuPatchProgram program = accDefaultProgram();
+  const std::vector<tess::Levels> levels(program.patch_count, uniform(5));
+  for (uint32_t order : {2u, 1u}) {  // symmetric with and without FMA (bezier.glsl)
+    program.specialization.at(0) = order;
+    const PatchProgramCapture hardware =
+        hardwareCapture(context, program, tess::Spacing::kInteger, levels);
+    GpuPatchProgram probe = program;
+    probe.compute_shader = "acc/bezier_position.comp";
+    ComputePathResult compute = runComputePath(context, probe, levels);
+    ASSERT_EQ(compute.vertices.size(), hardware.vertices.size()) << "order " << order;
+    for (size_t i = 0; i < compute.vertices.size(); ++i) {
+      compute.vertices[i].normal = hardware.vertices[i].normal;  // the probe has none
+    }
+    EXPECT_EQ(unequalVertices(hardware.vertices, compute.vertices), 0u) << "order " << order;
+  }
 }
 
 TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
@@ -182,8 +253,9 @@ TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
   for (const TechniqueAsset& ta : kTechniqueAssets) {
     const techniques::Technique* technique =
         techniques::TechniqueRegistry::instance().find(ta.technique);
-    const auto surface = techniques::buildSurface(
-        *technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)), technique->variants()[0]);
+    const auto surface =
+        techniques::buildSurface(*technique, mesh::loadObjFile(::tb::testing::assetPath(ta.asset)),
+                                 technique->variants()[0]);
     const GpuPatchProgram program = surface->gpuPrograms()[0];
     const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
     const PatchProgramCapture hardware =
@@ -192,8 +264,30 @@ TEST(ComputePath, ControlAnUlpOffCoordinateIsCaught) {
     control.control = 1;
     const ComputePathResult compute = runComputePath(context, program, levels, control);
     ASSERT_EQ(compute.vertices.size(), hardware.vertices.size()) << ta.technique;
-    EXPECT_GT(unequalVertices(hardware.vertices, compute.vertices), 0u) << ta.technique;
+    const size_t unequal = unequalVertices(hardware.vertices, compute.vertices);
+    EXPECT_GT(unequal, 0u) << ta.technique;
+    std::printf("[compute path control] %s, u one ulp up: %zu of %zu vertices unequal\n",
+                ta.technique, unequal, compute.vertices.size());
   }
+}
+
+TEST(ComputePath, ControlAnotherOperationOrderIsCaught) {
+  // acc's compute shader with the asymmetric Bézier order (specialisation constant 0 = 0,
+  // an FMA chain along u then v) against the TES capture in the default symmetric FMA order.
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const GpuPatchProgram program = accDefaultProgram();
+  ASSERT_EQ(program.specialization.at(0), 2u);  // symmetric_fma
+  const std::vector<tess::Levels> levels(program.patch_count, uniform(7));
+  const PatchProgramCapture hardware =
+      hardwareCapture(context, program, tess::Spacing::kInteger, levels);
+  GpuPatchProgram reordered = program;
+  reordered.specialization[0] = 0;  // asymmetric
+  const ComputePathResult compute = runComputePath(context, reordered, levels);
+  ASSERT_EQ(compute.vertices.size(), hardware.vertices.size());
+  const size_t unequal = unequalVertices(hardware.vertices, compute.vertices);
+  EXPECT_GT(unequal, 0u);
+  std::printf("[compute path control] acc in the asymmetric order: %zu of %zu vertices unequal\n",
+              unequal, compute.vertices.size());
 }
 
 TEST(ComputePath, RefusesProgramsItCannotRun) {
