@@ -9,9 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -224,6 +227,64 @@ TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
   }
   std::printf("[compute path] second assets: %zu cases, %zu vertices, compared bit for bit\n",
               tally.cases, tally.vertices);
+}
+
+// The bundled meshes (assets/opensubdiv, assets/tessbench), relative to assets/, sorted.
+std::vector<std::string> bundledObjs() {
+  std::vector<std::string> objs;
+  for (const char* folder : {"opensubdiv", "tessbench"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(::tb::testing::assetPath(folder))) {
+      if (entry.path().extension() == ".obj") {
+        objs.push_back(std::string(folder) + "/" + entry.path().filename().string());
+      }
+    }
+  }
+  std::sort(objs.begin(), objs.end());
+  return objs;
+}
+
+// The whole of acceptance 2, on request (TB_COMPUTE_PATH_EVERY_ASSET=1; about 10 minutes on
+// two cores, so not in CI): every surface technique's non-control variants on every bundled
+// asset they accept, the default variant at every level case, the others at every third.
+TEST(ComputePath, EveryBundledAssetWhenAsked) {
+  if (std::getenv("TB_COMPUTE_PATH_EVERY_ASSET") == nullptr) {
+    GTEST_SKIP() << "set TB_COMPUTE_PATH_EVERY_ASSET=1 to sweep every bundled asset";
+  }
+  TB_GPU_CONTEXT_OR_SKIP(context);
+  const std::vector<LevelCase> cases = levelCases();
+  Tally tally;
+  size_t records = 0;
+  for (const char* id : {"acc", "gregory_acc", "osd_adaptive", "pn_triangles", "phong"}) {
+    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
+    ASSERT_NE(technique, nullptr) << id;
+    const std::vector<techniques::VariantInfo> variants = technique->variants();
+    for (const std::string& asset : bundledObjs()) {
+      const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
+      if (!technique->checkSupport(mesh).empty()) continue;
+      for (size_t v = 0; v < variants.size(); ++v) {
+        if (!variants[v].control.empty()) continue;
+        techniques::BuiltSurface surface;
+        try {
+          surface = techniques::buildSurface(*technique, mesh, variants[v]);
+        } catch (const techniques::UnsupportedInput&) {
+          continue;
+        }
+        ++records;
+        const size_t stride = v == 0 ? 1 : 3;
+        for (const GpuPatchProgram& program : surface->gpuPrograms()) {
+          for (size_t k = v % stride; k < cases.size(); k += stride) {
+            expectBitwise(context, program, cases[k],
+                          std::string(id) + "/" + variants[v].name + " " + asset + " " +
+                              program.evaluation_shader + " level " + cases[k].name,
+                          &tally);
+          }
+        }
+      }
+    }
+  }
+  std::printf("[compute path] every bundled asset: %zu technique x variant x asset records, "
+              "%zu program x level cases, %zu vertices, compared bit for bit\n",
+              records, tally.cases, tally.vertices);
 }
 
 TEST(ComputePath, BezierPositionTwinIsAccTesPosition) {
