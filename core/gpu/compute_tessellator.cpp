@@ -28,6 +28,13 @@ uint64_t axisPointBound(float level, tess::Spacing spacing) {
 // grid; a triangulated disc has fewer than two triangles a point (T = 2V - B - 2).
 std::array<uint64_t, 2> patchBounds(const TessPatch& patch) {
   const auto& l = patch.levels;
+  // A culled patch (an outer level of its domain not > 0, NaN included) has no points.
+  const int edges = patch.domain == tess::Domain::kQuad       ? 4
+                    : patch.domain == tess::Domain::kTriangle ? 3
+                                                              : 2;
+  for (int e = 0; e < edges; ++e) {
+    if (!(l.outer[e] > 0.0f)) return {0, 0};
+  }
   auto b = [&](float level) { return axisPointBound(level, patch.spacing); };
   switch (patch.domain) {
     case tess::Domain::kTriangle: {
