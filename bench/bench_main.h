@@ -26,6 +26,17 @@ inline void addDeviceContext() {
   benchmark::AddCustomContext("vulkan_driver", info.driver_name + " " + info.driver_info);
 }
 
+// The default device, opened once per program, for the benchmarks that run on it; null, with
+// the benchmark skipped and the reason given, when no device is usable.
+inline gpu::Context* benchContext(benchmark::State& state) {
+  static auto context = gpu::Context::create();
+  if (!context) {
+    state.SkipWithError(("no usable Vulkan device: " + context.error()).c_str());
+    return nullptr;
+  }
+  return context.value().get();
+}
+
 inline int runBenchmarks(int argc, char** argv) {
   addDeviceContext();
   benchmark::Initialize(&argc, argv);

@@ -35,15 +35,6 @@ namespace {
 // (core/gpu/patch_program.h); the cracks measure's batch below level 32.
 constexpr uint32_t kPatchesPerDraw = 8;
 
-tb::gpu::Context* benchContext(benchmark::State& state) {
-  static auto context = tb::gpu::Context::create();
-  if (!context) {
-    state.SkipWithError(("no usable Vulkan device: " + context.error()).c_str());
-    return nullptr;
-  }
-  return context.value().get();
-}
-
 // The device, the default variant's patches of `asset` and their GPU programs; a null
 // context when the case is skipped (no device, the asset refused, no GPU program).
 struct GpuCase {
@@ -55,7 +46,7 @@ struct GpuCase {
 GpuCase prepareGpuCase(benchmark::State& state, const tb::techniques::Technique& technique,
                        const std::string& asset) {
   GpuCase gpu_case;
-  tb::gpu::Context* context = benchContext(state);
+  tb::gpu::Context* context = tb::bench::benchContext(state);
   if (context == nullptr) return gpu_case;
   gpu_case.patches = tb::bench::defaultVariantPatches(state, technique, asset);
   if (!gpu_case.patches) return gpu_case;

@@ -23,6 +23,9 @@
 
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
+// 12: GpuPatchProgram gained compute_shader, the technique's compute twin of its TCS and TES
+//     (core/gpu/compute_path.h: tessellation without the tessellator; a plug-in ships the
+//     .comp like its other shaders).
 // 11: PatchCullBounds gained bezier_net, bezier_degree and bezier_mirrored (the
 //     tangent_plane culling policy).
 // 10: Simulation gained constraintSolver() and waveField() (optional capabilities,
@@ -37,7 +40,7 @@
 // techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
 // simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
 // (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
-inline constexpr int kTessbenchPluginAbi = 11;
+inline constexpr int kTessbenchPluginAbi = 12;
 
 namespace tb::techniques {
 

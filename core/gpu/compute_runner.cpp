@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <string>
 
 #include "core/gpu/buffer.h"
 #include "core/gpu/context.h"
@@ -13,10 +16,10 @@
 namespace tb::gpu {
 namespace {
 
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkBufferUsageFlags kUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+    VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+    VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 [[noreturn]] void fail(const GpuComputePass& pass, const std::string& rule) {
   throw GpuError("compute runner: pass " + pass.shader + ": " + rule);
@@ -24,12 +27,65 @@ constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
 
 }  // namespace
 
+// A compute pipeline with its layouts, immutable once made.
+struct CachedComputePipeline {
+  VkDescriptorSetLayoutOwner set_layout;
+  VkPipelineLayoutOwner layout;
+  VkPipelineOwner pipeline;
+};
+
+// Every ComputeRunner's pipelines on one Context, by shader, specialisation, bindings and
+// push block size: llvmpipe compiles a pipeline in 0.1 to 0.5 s, more than a small run
+// costs, and the compute path (compute_path.h) makes a runner per call.
+struct ComputePipelineCache {
+  explicit ComputePipelineCache(Context& /*context*/) {}
+
+  std::shared_ptr<const CachedComputePipeline> get(Context& context, const GpuComputePass& desc,
+                                                   uint32_t binding_count) {
+    std::string key = desc.shader + "|" + std::to_string(binding_count) + "|" +
+                      std::to_string(desc.push_constants.size());
+    for (uint32_t word : desc.specialization) key += "|" + std::to_string(word);
+    const std::lock_guard lock(mutex);
+    std::shared_ptr<const CachedComputePipeline>& entry = entries[key];
+    if (!entry) entry = create(context.device(), desc, binding_count);
+    return entry;
+  }
+
+  static std::shared_ptr<const CachedComputePipeline> create(VkDevice device,
+                                                             const GpuComputePass& desc,
+                                                             uint32_t binding_count) {
+    auto made = std::make_shared<CachedComputePipeline>();
+    const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
+    made->set_layout = createStorageBufferSetLayout(device, stages);
+    made->layout = createPipelineLayout(device, made->set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
+                                        uint32_t(desc.push_constants.size() * 4));
+    const VkShaderModuleOwner module =
+        createShaderModule(device, requireEmbeddedShader(desc.shader));
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
+    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
+                                              desc.specialization.size() * 4,
+                                              desc.specialization.data()};
+    auto info =
+        vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
+    if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
+    info.layout = made->layout.get();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            "vkCreateComputePipelines (compute runner)");
+    made->pipeline = VkPipelineOwner(device, pipeline);
+    return made;
+  }
+
+  std::mutex mutex;
+  std::map<std::string, std::shared_ptr<const CachedComputePipeline>> entries;
+};
+
 struct ComputeRunner::Impl {
   struct Pass {
     const GpuComputePass* desc = nullptr;
-    VkDescriptorSetLayoutOwner set_layout;
-    VkPipelineLayoutOwner layout;
-    VkPipelineOwner pipeline;
+    std::shared_ptr<const CachedComputePipeline> compiled;  // shared through the Context
     StorageBufferSet sets[2];  // even and odd steps (the same bindings without ping-pong)
     VkBuffer indirect[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   };
@@ -102,29 +158,12 @@ struct ComputeRunner::Impl {
     }
     uint32_t binding_count = 0;
     for (const GpuComputeBuffer& b : desc.buffers) binding_count = std::max(binding_count, b.binding + 1);
-    const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
-    pass.set_layout = createStorageBufferSetLayout(device, stages);
-    pass.layout = createPipelineLayout(device, pass.set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
-                                       uint32_t(desc.push_constants.size() * 4));
-    const VkShaderModuleOwner module =
-        createShaderModule(device, requireEmbeddedShader(desc.shader));
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
-    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                              desc.specialization.size() * 4,
-                                              desc.specialization.data()};
-    auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
-    if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
-    info.layout = pass.layout.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-            "vkCreateComputePipelines (compute runner)");
-    pass.pipeline = VkPipelineOwner(device, pipeline);
+    pass.compiled = context.attachment<ComputePipelineCache>().get(context, desc, binding_count);
 
     for (int parity = 0; parity < 2; ++parity) {
       if (binding_count > 0) {
-        pass.sets[parity] = StorageBufferSet(device, pass.set_layout.get(), binding_count);
+        pass.sets[parity] =
+            StorageBufferSet(device, pass.compiled->set_layout.get(), binding_count);
         // Bindings the pass leaves out get its first buffer, so every binding is valid.
         std::vector<VkBuffer> handles(binding_count, buffer(desc, desc.buffers[0].name).handle());
         for (const GpuComputeBuffer& b : desc.buffers) {
@@ -150,7 +189,8 @@ struct ComputeRunner::Impl {
     passes.push_back(std::move(pass));
   }
 
-  void record(VkCommandBuffer cmd, uint32_t steps) {
+  void record(VkCommandBuffer cmd, uint32_t steps,
+              const std::function<void(VkCommandBuffer)>* after) {
     const VkQueryPool pool = timestamps.get();
     if (pool) {
       vkCmdResetQueryPool(cmd, pool, 0, 2);
@@ -165,15 +205,15 @@ struct ComputeRunner::Impl {
       const int parity = int(step & 1u);
       for (Pass& pass : passes) {
         const GpuComputePass& desc = *pass.desc;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->pipeline.get());
         if (pass.sets[parity].set != VK_NULL_HANDLE) {
-          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
-                                  &pass.sets[parity].set, 0, nullptr);
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.compiled->layout.get(),
+                                  0, 1, &pass.sets[parity].set, 0, nullptr);
         }
         if (!desc.push_constants.empty()) {
           std::vector<uint32_t> push = desc.push_constants;
           if (desc.step_index_word >= 0) push[size_t(desc.step_index_word)] = step;
-          vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+          vkCmdPushConstants(cmd, pass.compiled->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                              uint32_t(push.size() * 4), push.data());
         }
         for (uint32_t r = 0; r < desc.repeats_per_step; ++r) {
@@ -188,6 +228,18 @@ struct ComputeRunner::Impl {
                                0, 1, &barrier, 0, nullptr, 0, nullptr);
         }
       }
+    }
+    if (after != nullptr && *after) {
+      auto draw = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+      draw.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      draw.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT |
+                           VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
+      vkCmdPipelineBarrier(
+          cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+              VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+          0, 1, &draw, 0, nullptr, 0, nullptr);
+      (*after)(cmd);
     }
     if (pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool, 1);
     auto host = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -223,13 +275,16 @@ ComputeRunner::ComputeRunner(Context& context, const std::vector<GpuComputeProgr
 
 ComputeRunner::~ComputeRunner() = default;
 
-ComputeRunTiming ComputeRunner::run(uint32_t steps) {
+ComputeRunTiming ComputeRunner::run(uint32_t steps) { return run(steps, {}); }
+
+ComputeRunTiming ComputeRunner::run(uint32_t steps,
+                                    const std::function<void(VkCommandBuffer)>& after) {
   ComputeRunTiming timing;
   timing.steps = steps;
   timing.gpu_ns = std::numeric_limits<double>::quiet_NaN();
   if (steps == 0) return timing;
   timing.submit_to_fence_s =
-      impl_->context.submitAndWait([&](VkCommandBuffer cmd) { impl_->record(cmd, steps); });
+      impl_->context.submitAndWait([&](VkCommandBuffer cmd) { impl_->record(cmd, steps, &after); });
   impl_->steps_done += steps;
   if (const VkQueryPool pool = impl_->timestamps.get()) {
     uint64_t ticks[2] = {0, 0};
@@ -246,6 +301,10 @@ uint32_t ComputeRunner::dispatchesPerStep() const {
   uint32_t count = 0;
   for (const Impl::Pass& pass : impl_->passes) count += pass.desc->repeats_per_step;
   return count;
+}
+
+VkBuffer ComputeRunner::bufferHandle(const std::string& name) const {
+  return impl_->named(name).handle();
 }
 
 uint32_t ComputeRunner::stepsDone() const { return impl_->steps_done; }

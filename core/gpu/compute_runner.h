@@ -5,7 +5,10 @@
 // from device buffers). Buffers are read back only after a run.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,7 +28,8 @@ struct ComputeRunTiming {
 
 class ComputeRunner {
  public:
-  // Creates one pipeline per pass (specialisation constants 0..M-1 from the pass) and one
+  // Creates one pipeline per pass (specialisation constants 0..M-1 from the pass; passes
+  // with the same shader, specialisation, binding count and push block size share one) and one
   // buffer per name (the largest size_bytes any pass declares, filled with the first
   // non-empty initial_words, zero elsewhere). Throws GpuError on a device error or an
   // inconsistent description (a missing shader, an indirect buffer no pass binds, initial
@@ -39,6 +43,12 @@ class ComputeRunner {
   // times) into one command buffer, submits it and waits. Step indices continue from the
   // previous run, so ping-pong parity and step_index_word stay consistent across runs.
   ComputeRunTiming run(uint32_t steps);
+  // The same, then `after` records into the same command buffer once the last dispatch's
+  // writes are visible to compute, indirect-command and index/vertex reads (a draw of the
+  // buffers: core/gpu/compute_path.h), before the host may read the buffers.
+  ComputeRunTiming run(uint32_t steps, const std::function<void(VkCommandBuffer)>& after);
+  // The device buffer `name` (for `after`). Throws GpuError for an unknown name.
+  VkBuffer bufferHandle(const std::string& name) const;
   // Dispatches recorded per step: the sum over passes of repeats_per_step.
   uint32_t dispatchesPerStep() const;
   uint32_t stepsDone() const;

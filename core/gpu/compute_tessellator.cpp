@@ -28,6 +28,13 @@ uint64_t axisPointBound(float level, tess::Spacing spacing) {
 // grid; a triangulated disc has fewer than two triangles a point (T = 2V - B - 2).
 std::array<uint64_t, 2> patchBounds(const TessPatch& patch) {
   const auto& l = patch.levels;
+  // A culled patch (an outer level of its domain not > 0, NaN included) has no points.
+  const int edges = patch.domain == tess::Domain::kQuad       ? 4
+                    : patch.domain == tess::Domain::kTriangle ? 3
+                                                              : 2;
+  for (int e = 0; e < edges; ++e) {
+    if (!(l.outer[e] > 0.0f)) return {0, 0};
+  }
   auto b = [&](float level) { return axisPointBound(level, patch.spacing); };
   switch (patch.domain) {
     case tess::Domain::kTriangle: {
@@ -76,8 +83,10 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 
 }  // namespace
 
-ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
-    : patch_count_(static_cast<uint32_t>(patches.size())) {
+ComputeTessellationPasses describeTessellationPasses(Context& context,
+                                                     std::span<const TessPatch> patches,
+                                                     bool counts_only) {
+  ComputeTessellationPasses out;
   std::vector<uint32_t> words;
   words.reserve(patches.size() * kPatchWords);
   for (const TessPatch& patch : patches) {
@@ -87,29 +96,31 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
                     (static_cast<uint32_t>(patch.spacing) << 8));
     words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
                     (patch.rounding_up_control ? 4u : 0u));
+    if (counts_only) continue;
     const auto bounds = patchBounds(patch);
-    point_capacity_ += bounds[0];
-    index_capacity_ += bounds[1];
+    out.point_capacity += bounds[0];
+    out.index_capacity += bounds[1];
   }
   const uint64_t range = storageBufferRange(context);
-  if (8 * point_capacity_ > range || 4 * index_capacity_ > range) {
+  if (8 * out.point_capacity > range || 4 * out.index_capacity > range) {
     throw GpuError("compute tessellator: a batch of " + std::to_string(patches.size()) +
-                   " patches may need " + std::to_string(4 * index_capacity_) +
+                   " patches may need " + std::to_string(4 * out.index_capacity) +
                    " bytes of indices, over the device's storage buffer range of " +
                    std::to_string(range) + "; split the batch");
   }
   const uint64_t n = patches.size();
-  std::vector<GpuComputeBuffer> buffers = {buffer(0, "patches", 4 * words.size()),
+  std::vector<GpuComputeBuffer> buffers = {buffer(0, kTessPatchRecords, 4 * words.size()),
                                            buffer(1, "counts", 16 * n),
                                            buffer(2, "offsets", 8 * n),
                                            buffer(3, "status", 16),
-                                           buffer(4, "points", 8 * point_capacity_),
-                                           buffer(5, "indices", 4 * index_capacity_)};
+                                           buffer(4, "points", 8 * out.point_capacity),
+                                           buffer(5, "indices", 4 * out.index_capacity)};
   buffers[0].initial_words = std::move(words);
 
-  const uint32_t groups = std::max<uint32_t>(1, (patch_count_ + kGroupSize - 1) / kGroupSize);
-  const std::vector<uint32_t> push = {patch_count_, static_cast<uint32_t>(point_capacity_),
-                                      static_cast<uint32_t>(index_capacity_)};
+  const auto patch_count = static_cast<uint32_t>(n);
+  const uint32_t groups = std::max<uint32_t>(1, (patch_count + kGroupSize - 1) / kGroupSize);
+  const std::vector<uint32_t> push = {patch_count, static_cast<uint32_t>(out.point_capacity),
+                                      static_cast<uint32_t>(out.index_capacity)};
   auto pass = [&](const char* shader, std::vector<uint32_t> specialization,
                   std::vector<uint32_t> push_words, uint32_t groups_x) {
     GpuComputePass p;
@@ -120,11 +131,25 @@ ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPat
     p.groups_x = groups_x;
     return p;
   };
-  const GpuComputePass count = pass("gpu/tessellate.comp", {0}, push, groups);
-  const GpuComputePass scan = pass("gpu/tess_scan.comp", {}, {patch_count_}, 1);
-  const GpuComputePass write = pass("gpu/tessellate.comp", {1}, push, groups);
-  runner_ = std::make_unique<ComputeRunner>(
-      context, std::vector<GpuComputeProgram>{{"tessellate", {count, scan, write}}});
+  out.passes = {pass("gpu/tessellate.comp", {0}, push, groups),
+                pass("gpu/tess_scan.comp", {}, {patch_count}, 1)};
+  if (!counts_only) out.passes.push_back(pass("gpu/tessellate.comp", {1}, push, groups));
+  return out;
+}
+
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches)
+    : ComputeTessellator(context, patches, {}) {}
+
+ComputeTessellator::ComputeTessellator(Context& context, std::span<const TessPatch> patches,
+                                       std::vector<GpuComputePass> prologue, bool counts_only)
+    : patch_count_(static_cast<uint32_t>(patches.size())), counts_only_(counts_only) {
+  ComputeTessellationPasses passes = describeTessellationPasses(context, patches, counts_only);
+  point_capacity_ = passes.point_capacity;
+  index_capacity_ = passes.index_capacity;
+  std::vector<GpuComputeProgram> programs;
+  if (!prologue.empty()) programs.push_back({"levels", std::move(prologue)});
+  programs.push_back({"tessellate", std::move(passes.passes)});
+  runner_ = std::make_unique<ComputeRunner>(context, programs);
 }
 
 ComputeTessellator::~ComputeTessellator() = default;
@@ -140,18 +165,24 @@ ComputeTessellation ComputeTessellator::read() const {
   }
   const std::vector<uint32_t> counts = runner_->read("counts");
   const std::vector<uint32_t> offsets = runner_->read("offsets");
-  const std::vector<uint32_t> points = runner_->read("points", 0, 2 * uint64_t(status[0]));
-  std::vector<uint32_t> indices = runner_->read("indices", 0, status[1]);
+  const std::vector<uint32_t> points =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("points", 0, 2 * uint64_t(status[0]));
+  std::vector<uint32_t> indices =
+      counts_only_ ? std::vector<uint32_t>{} : runner_->read("indices", 0, status[1]);
   ComputeTessellation out;
   out.patches.resize(patch_count_);
   for (size_t p = 0; p < patch_count_; ++p) {
     out.patches[p] = {offsets[2 * p], counts[4 * p], offsets[2 * p + 1], counts[4 * p + 1],
                       counts[4 * p + 2] != 0};
   }
-  out.points.resize(status[0]);
+  out.points.resize(points.size() / 2);
   for (size_t i = 0; i < out.points.size(); ++i) out.points[i] = {points[2 * i], points[2 * i + 1]};
   out.indices = std::move(indices);
   return out;
+}
+
+std::vector<uint32_t> ComputeTessellator::readBuffer(const std::string& name) const {
+  return runner_->read(name);
 }
 
 ComputeTessellation tessellateOnCompute(Context& context, std::span<const TessPatch> patches) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/gpu/compute_runner.h"
@@ -53,12 +54,40 @@ enum TessErrors : uint32_t {
   kTessErrorCountMismatch = 8,    // the write pass emitted other counts than the count pass
 };
 
+// The tessellator's three passes (count, scan, write) over its buffers, for a caller that
+// runs passes of its own on them in the same submission (core/gpu/compute_path.h). Buffer
+// names: "patches", "counts" (uvec4 per patch: points, index words, culled, 0), "offsets"
+// (uvec2 per patch: first point, first index word), "status" (total points, total index
+// words, TessErrors), "points" (16.16 (u, v) per point), "indices" (into points).
+struct ComputeTessellationPasses {
+  std::vector<GpuComputePass> passes;
+  uint64_t point_capacity = 0;  // points the "points" buffer holds
+  uint64_t index_capacity = 0;  // index words the "indices" buffer holds
+};
+// Throws GpuError as the ComputeTessellator constructor does. counts_only: count and scan
+// only, and no capacity for points or indices (ComputeTessellator's counts_only).
+ComputeTessellationPasses describeTessellationPasses(Context& context,
+                                                     std::span<const TessPatch> patches,
+                                                     bool counts_only = false);
+
 // The batch's buffers and pipelines, made once; run() re-tessellates every patch.
 class ComputeTessellator {
  public:
   // Throws GpuError on a device error, or when a buffer sized by the levels' upper bounds
   // would exceed the device's storage buffer range (tessellateOnCompute splits such batches).
   ComputeTessellator(Context& context, std::span<const TessPatch> patches);
+  // Levels from the device: the `prologue` passes run first in run()'s command buffer and
+  // write the patches' levels (words 0..5 of each record) into kTessPatchRecords, which
+  // they bind by that name (its size and initial words come from here); the count pass
+  // reads them after a barrier, with no CPU round trip. `patches` give each record's
+  // domain, spacing and options, and in `levels` its starting words (a prologue may read
+  // them) and an upper bound of what a prologue writes: the buffers are sized by it, and a
+  // larger level raises kTessErrorPointsOverflow or kTessErrorIndicesOverflow (read()
+  // throws). The prologue's other buffers belong to the batch too (readBuffer).
+  // counts_only: no write pass and no points or indices buffers (no storage-range limit on
+  // the batch): read() gives each patch's counts, offsets and culling, and no points.
+  ComputeTessellator(Context& context, std::span<const TessPatch> patches,
+                     std::vector<GpuComputePass> prologue, bool counts_only = false);
   ~ComputeTessellator();
   ComputeTessellator(const ComputeTessellator&) = delete;
   ComputeTessellator& operator=(const ComputeTessellator&) = delete;
@@ -67,15 +96,25 @@ class ComputeTessellator {
   ComputeRunTiming run();
   // Reads the buffers back. Throws GpuError when a kernel raised an error bit.
   ComputeTessellation read() const;
+  // The whole buffer `name` of the batch (a prologue's output), as 32-bit words. Throws
+  // GpuError for an unknown name.
+  std::vector<uint32_t> readBuffer(const std::string& name) const;
   uint64_t pointCapacity() const { return point_capacity_; }  // points the buffer holds
   uint64_t indexCapacity() const { return index_capacity_; }  // index words it holds
 
  private:
   uint32_t patch_count_ = 0;
+  bool counts_only_ = false;
   uint64_t point_capacity_ = 0;
   uint64_t index_capacity_ = 0;
   std::unique_ptr<ComputeRunner> runner_;
 };
+
+// The batch's patch records, the buffer tessellate.comp reads at binding 0: per patch
+// kTessPatchRecordWords words, outer level bits [4], inner level bits [2], domain | spacing
+// << 8, flags (1 cw, 2 point mode, 4 the rounding-up control).
+inline constexpr const char* kTessPatchRecords = "patches";
+inline constexpr uint32_t kTessPatchRecordWords = 8;
 
 // Builds, runs once and reads back; a batch whose buffers would exceed the device's storage
 // buffer range runs as several (one pipeline build and submission each), joined in order.

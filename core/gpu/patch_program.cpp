@@ -43,7 +43,7 @@ struct PatchLevelsBits {
 };
 static_assert(sizeof(PatchLevelsBits) == 32);
 
-constexpr uint32_t kCaptureWords = 10;            // kTbCaptureWords
+constexpr uint32_t kCaptureWords = kCaptureRecordWords;
 constexpr VkDeviceSize kCaptureHeaderBytes = 16;  // count, capacity, 2 reserved
 constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 64ull << 20;
 
@@ -279,52 +279,7 @@ void readCapture(const Buffer& capture, const GpuPatchProgram& program, uint64_t
   }
   const std::span<const uint32_t> words = capture.as<const uint32_t>().subspan(
       kCaptureHeaderBytes / 4, size_t(written) * kCaptureWords);
-  vertices->reserve(vertices->size() + written);
-  for (uint32_t i = 0; i < written; ++i) {
-    const uint32_t* w = &words[size_t(i) * kCaptureWords];
-    CapturedVertex v;
-    v.patch = program.patch_ids.empty() ? w[0] : program.patch_ids.at(w[0]);
-    for (int k = 0; k < 3; ++k) v.coord[k] = std::bit_cast<float>(w[1 + k]);
-    v.position = {std::bit_cast<float>(w[4]), std::bit_cast<float>(w[5]),
-                  std::bit_cast<float>(w[6])};
-    v.normal = {std::bit_cast<float>(w[7]), std::bit_cast<float>(w[8]), std::bit_cast<float>(w[9])};
-    vertices->push_back(v);
-  }
-}
-
-using CoordKey = std::array<uint32_t, 3>;
-CoordKey coordKey(const CapturedVertex& v) {
-  return {std::bit_cast<uint32_t>(v.coord[0]), std::bit_cast<uint32_t>(v.coord[1]),
-          std::bit_cast<uint32_t>(v.coord[2])};
-}
-
-// Sorts by (patch, coord bits) and keeps one of each: a counting sort by patch (a capture
-// holds a contiguous range of patches), then each patch's vertices by coordinate bits.
-void sortUnique(std::vector<CapturedVertex>* vertices) {
-  if (vertices->empty()) return;
-  const auto [lo, hi] = std::minmax_element(
-      vertices->begin(), vertices->end(),
-      [](const CapturedVertex& a, const CapturedVertex& b) { return a.patch < b.patch; });
-  const uint32_t first = lo->patch;
-  const size_t range = size_t(hi->patch) - first + 1;
-  std::vector<size_t> start(range + 1, 0);
-  for (const CapturedVertex& v : *vertices) ++start[v.patch - first + 1];
-  for (size_t p = 0; p < range; ++p) start[p + 1] += start[p];
-  std::vector<CapturedVertex> sorted(vertices->size());
-  std::vector<size_t> next(start.begin(), start.end() - 1);
-  for (const CapturedVertex& v : *vertices) sorted[next[v.patch - first]++] = v;
-  auto by_coord = [](const CapturedVertex& a, const CapturedVertex& b) {
-    return coordKey(a) < coordKey(b);
-  };
-  for (size_t p = 0; p < range; ++p) {
-    std::sort(sorted.begin() + start[p], sorted.begin() + start[p + 1], by_coord);
-  }
-  sorted.erase(std::unique(sorted.begin(), sorted.end(),
-                           [](const CapturedVertex& a, const CapturedVertex& b) {
-                             return a.patch == b.patch && coordKey(a) == coordKey(b);
-                           }),
-               sorted.end());
-  *vertices = std::move(sorted);
+  appendCaptureRecords(words, program.patch_ids, vertices);
 }
 
 // kTbCaptureBoundary for these options.
@@ -571,7 +526,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
   PatchProgramCapture result;
   drawPatches(context, program, options, setup, device_levels, first, end,
               boundary != kCaptureEvery, resources, sets.data, data_ranges, &result);
-  if (options.sort) sortUnique(&result.vertices);
+  if (options.sort) sortUniqueVertices(&result.vertices);
   if (read_levels) readTcsLevels(resources, program, &result);
   return result;
 }

@@ -108,6 +108,17 @@ struct PatchProgramOptions {
   const TcsCullPolicy* cull_policy = nullptr;
 };
 
+// Words per captured vertex (patch_program_tes.glsl kTbCaptureWords).
+inline constexpr uint32_t kCaptureRecordWords = 10;
+
+// Appends the vertices of `words`, the capture's 10-word records (patch_program_tes.glsl:
+// program patch, gl_TessCoord bits (3), position (3), normal (3)), with the program patch
+// mapped through patch_ids (empty: unchanged). Defined in capture_records.cpp.
+void appendCaptureRecords(std::span<const uint32_t> words, std::span<const uint32_t> patch_ids,
+                          std::vector<CapturedVertex>* vertices);
+// Sorts by (patch, coord bits) and keeps one vertex of each (PatchProgramCapture's order).
+void sortUniqueVertices(std::vector<CapturedVertex>* vertices);
+
 // Per-patch levels: patch_levels[i] are program patch i's levels (tbPatchIndex(), before
 // GpuPatchProgram::patch_ids is applied), one per program patch. The TCS writes them
 // bit for bit (pow2 spacing: after tess::roundPow2Levels, as the CPU tessellator does).

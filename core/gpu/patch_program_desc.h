@@ -29,6 +29,11 @@ struct GpuDisplacement {
 struct GpuPatchProgram {
   std::string control_shader;     // embedded path, e.g. "acc/acc.tesc"
   std::string evaluation_shader;  // embedded path, e.g. "acc/acc.tese"
+  // The compute twin of the control and evaluation shaders (core/gpu/compute_path.h): an
+  // embedded .comp that includes the technique's surface functions and
+  // shaders/common/compute_surface.glsl, so it runs the TCS's and TES's float operations
+  // without the tessellator, e.g. "acc/acc.comp". Empty: the program has no compute path.
+  std::string compute_shader;
   tess::Domain domain = tess::Domain::kQuad;
   uint32_t patch_count = 0;
   // The SurfacePatches patch of each of this program's patches, when a technique splits

@@ -77,6 +77,7 @@ class FlatPatches final : public tb::techniques::SurfacePatches {
     tb::gpu::GpuPatchProgram program;
     program.control_shader = "flat/flat.tesc";
     program.evaluation_shader = "flat/flat.tese";
+    program.compute_shader = "flat/flat.comp";
     program.domain = tb::tess::Domain::kTriangle;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;

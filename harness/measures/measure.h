@@ -139,6 +139,14 @@ struct MeasureInput {
   const DisplacementRun* displacement = nullptr;
 };
 
+// Whether a measure runs the compute path (core/gpu/compute_path.h) for this input beside the
+// tessellator's: --suite full on every asset; the default suite on one quad and one triangle
+// mesh with extraordinary vertices (kDefaultComputeAssets), to keep within its budget. Never
+// on a displaced surface (the compute path does not displace yet).
+inline constexpr const char* kDefaultComputeAssets[] = {"opensubdiv/catmark_xord_interior",
+                                                        "opensubdiv/loop_xord_interior"};
+bool runsComputePath(const MeasureInput& input);
+
 // Precondition of a kCameraPath measure's run(): the path its needs promise (the suite always sets them;
 // a caller outside the suite, a benchmark or a test, may not). Throws std::invalid_argument
 // naming the missing input, which the suite turns into an error row, instead of a crash.

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "harness/measures/measure.h"
@@ -42,6 +43,13 @@ std::vector<const Measure*> MeasureRegistry::all() const {
   std::sort(result.begin(), result.end(),
             [](const Measure* a, const Measure* b) { return a->info().id < b->info().id; });
   return result;
+}
+
+bool runsComputePath(const MeasureInput& input) {
+  if (input.displacement != nullptr) return false;
+  if (input.suite == SuiteMode::kFull) return true;
+  return std::any_of(std::begin(kDefaultComputeAssets), std::end(kDefaultComputeAssets),
+                     [&](const char* asset) { return input.asset_name == asset; });
 }
 
 }  // namespace tb::measures

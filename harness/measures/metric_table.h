@@ -43,6 +43,12 @@ template <class Figures>
 class MetricTable {
  public:
   MetricTable(std::initializer_list<MetricField<Figures>> fields) : fields_(fields) {}
+  // `fields`, then `more` (a measure's optional group, e.g. its compute-path figures).
+  MetricTable(std::initializer_list<MetricField<Figures>> fields,
+              const std::vector<MetricField<Figures>>& more)
+      : fields_(fields) {
+    fields_.insert(fields_.end(), more.begin(), more.end());
+  }
 
   std::vector<results::MetricSpec> specs() const {
     std::vector<results::MetricSpec> result;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <tuple>
 
 #include "harness/report/row_values.h"
@@ -17,7 +18,10 @@ const char* const kDecisionRule =
     "cracked); then error within 1e-3 of the bounding-box diagonal before error over it; among "
     "those within it, fewest triangles per frame for a 1 px tessellation error, among those "
     "over it, lowest error; then fewest TCS + TES instructions, then lowest error, then "
-    "smallest memory ratio, then name";
+    "smallest memory ratio, then name. A technique measured on the compute path too is listed "
+    "twice: the pair ranks by its tessellator path's figures (the same surface at the same "
+    "levels), the compute path right after the tessellator path (it adds transient buffers), "
+    "ahead only when it is watertight on the device where the tessellator path is not";
 
 namespace {
 
@@ -63,24 +67,38 @@ void readTriangles(const results::MeasureResult* m, DecisionFigures* f) {
   }
 }
 
-void readMemory(const results::MeasureResult* m, DecisionFigures* f) {
+// Whether a row belongs to `path`: its path key, or none (results before the compute path,
+// measures without one) for the tessellator's.
+bool onPath(const results::MetricRow& row, const std::string& path) {
+  const std::string key = rowKey(row, "path");
+  return key == path || (key.empty() && path == kTessellatorPath);
+}
+
+void readMemory(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
   if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
   for (const results::MetricRow& row : m->rows) {
-    if (row.status != results::MeasureStatus::kOk ||
+    if (row.status != results::MeasureStatus::kOk || !onPath(row, path) ||
         rowKey(row, "level") != std::to_string(kDecisionMemoryLevel))
       continue;
     const auto plain = rowMetric(row, "plain_bytes");
     const auto technique = rowMetric(row, "technique_with_displacement_bytes");
-    if (plain && technique && *plain > 0) f->memory_ratio = *technique / *plain;
+    const double transient = rowMetric(row, "transient_vertex_bytes").value_or(0) +
+                             rowMetric(row, "transient_index_bytes").value_or(0);
+    if (plain && technique && *plain > 0) f->memory_ratio = (*technique + transient) / *plain;
   }
 }
 
-void readInstructions(const results::MeasureResult* m, DecisionFigures* f) {
+// Tessellator path: the TCS and TES; compute path: its build and evaluate passes.
+void readInstructions(const results::MeasureResult* m, const std::string& path,
+                      DecisionFigures* f) {
   if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
+  const bool compute = path == kComputePath;
   for (const results::MetricRow& row : m->rows) {
     const std::string stage = rowKey(row, "stage");
+    const bool stage_of_path = compute ? endsWith(stage, "#build") || endsWith(stage, "#evaluate")
+                                       : endsWith(stage, ".tesc") || endsWith(stage, ".tese");
     if (row.status != results::MeasureStatus::kOk || rowKey(row, "expansion") != "vector" ||
-        rowKey(row, "source") != "spirv_O" || !(endsWith(stage, ".tesc") || endsWith(stage, ".tese")))
+        rowKey(row, "source") != "spirv_O" || !stage_of_path)
       continue;
     if (const auto total = rowMetric(row, "total")) f->instructions = f->instructions.value_or(0) + *total;
   }
@@ -97,7 +115,7 @@ struct Side {
   }
 };
 
-void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
+void readCracks(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
   if (m == nullptr) return;
   Side cpu, device;
   if (m->status != results::MeasureStatus::kOk) {
@@ -105,7 +123,9 @@ void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
     return;
   }
   for (const results::MetricRow& row : m->rows) {
-    Side& side = rowKey(row, "backend") == "gpu" ? device : cpu;
+    const bool on_device = rowKey(row, "backend") == "gpu";
+    if (on_device && !onPath(row, path)) continue;  // the CPU rows are every path's
+    Side& side = on_device ? device : cpu;
     if (row.status != results::MeasureStatus::kOk) {
       ++side.not_ok;
       continue;
@@ -118,6 +138,14 @@ void readCracks(const results::MeasureResult* m, DecisionFigures* f) {
   f->device = device.verdict();
   f->cpu_points = cpu.points;
   f->device_points = device.points;
+}
+
+// Whether the run measured the record's cracks on the compute path (an ok row there).
+bool measuredOnCompute(const results::MeasureResult* cracks) {
+  if (cracks == nullptr || cracks->status != results::MeasureStatus::kOk) return false;
+  return std::any_of(cracks->rows.begin(), cracks->rows.end(), [](const results::MetricRow& row) {
+    return row.status == results::MeasureStatus::kOk && rowKey(row, "path") == kComputePath;
+  });
 }
 
 // 0: watertight on both; 1: on the CPU, the device not verified; 2: otherwise.
@@ -156,7 +184,10 @@ std::string whySentence(const DecisionCandidate& c, size_t candidates) {
     text += fmt::format(", {} triangles per frame at 1 px ({})", number(f.triangles_1px),
                         f.triangles_policy);
   }
-  if (f.instructions) text += fmt::format(", {} TCS + TES instructions", number(f.instructions));
+  if (f.instructions) {
+    text += fmt::format(", {} {} instructions", number(f.instructions),
+                        c.path == kComputePath ? "build + evaluate" : "TCS + TES");
+  }
   return text + ".";
 }
 
@@ -210,16 +241,17 @@ std::string watertightText(Watertightness side, double points) {
 }
 
 DecisionFigures decisionFigures(const results::Results& results, const std::string& technique,
-                                const std::string& variant, const std::string& asset) {
+                                const std::string& variant, const std::string& asset,
+                                const std::string& path) {
   DecisionFigures f;
   const auto of = [&](const char* measure) {
     return measureOf(results, technique, variant, asset, measure);
   };
   readError(of("error"), &f);
   readTriangles(of("adaptivity"), &f);
-  readMemory(of("memory"), &f);
-  readInstructions(of("instructions"), &f);
-  readCracks(of("cracks"), &f);
+  readMemory(of("memory"), path, &f);
+  readInstructions(of("instructions"), path, &f);
+  readCracks(of("cracks"), path, &f);
   return f;
 }
 
@@ -237,12 +269,33 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
     if (measureOf(results, technique.technique, variant, asset, "error") == nullptr) continue;
     decision.candidates.push_back(
         {technique.technique, variant, decisionFigures(results, technique.technique, variant, asset)});
+    if (measuredOnCompute(measureOf(results, technique.technique, variant, asset, "cracks"))) {
+      decision.candidates.push_back(
+          {technique.technique, variant,
+           decisionFigures(results, technique.technique, variant, asset, kComputePath), false,
+           kComputePath});
+    }
   }
+  // A compute-path candidate ranks with its tessellator twin (pushed just before it).
+  std::map<std::string, DecisionFigures> twin;
+  for (const DecisionCandidate& c : decision.candidates) {
+    if (c.path == kTessellatorPath) twin[c.technique + "/" + c.variant] = c.figures;
+  }
+  const auto pairFigures = [&](const DecisionCandidate& c) -> const DecisionFigures& {
+    return twin.at(c.technique + "/" + c.variant);
+  };
   std::stable_sort(decision.candidates.begin(), decision.candidates.end(),
-                   [](const DecisionCandidate& a, const DecisionCandidate& b) {
-                     if (decisionBefore(a.figures, b.figures)) return true;
-                     if (decisionBefore(b.figures, a.figures)) return false;
-                     return a.name() < b.name();
+                   [&](const DecisionCandidate& a, const DecisionCandidate& b) {
+                     const DecisionFigures& pa = pairFigures(a);
+                     const DecisionFigures& pb = pairFigures(b);
+                     if (decisionBefore(pa, pb)) return true;
+                     if (decisionBefore(pb, pa)) return false;
+                     if (a.technique != b.technique || a.variant != b.variant) {
+                       return a.technique + "/" + a.variant < b.technique + "/" + b.variant;
+                     }
+                     const int tier_a = watertightTier(a.figures), tier_b = watertightTier(b.figures);
+                     if (tier_a != tier_b) return tier_a < tier_b;
+                     return a.path == kTessellatorPath && b.path != kTessellatorPath;
                    });
   markFront(&decision.candidates);
   if (!decision.candidates.empty()) {

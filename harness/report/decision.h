@@ -34,7 +34,8 @@ struct DecisionFigures {
   std::string triangles_policy;  // the policy reaching it
   std::string camera_path;       // the path it was measured along
   // technique_with_displacement_bytes / plain_bytes at kDecisionMemoryLevel (ratio; 0.05: a
-  // twentieth of the plain mesh's bytes; above 1: bigger than the plain mesh).
+  // twentieth of the plain mesh's bytes; above 1: bigger than the plain mesh); on the compute
+  // path with its transient vertex and index buffers added.
   std::optional<double> memory_ratio;
   // total instructions of the TCS and TES stages, spirv-opt -O, per vector instruction, summed
   // over the programs the asset uses (count).
@@ -45,12 +46,22 @@ struct DecisionFigures {
   double device_points = 0;  // the same over the device rows
 };
 
+// The pipeline's path a candidate is drawn through: the hardware tessellator (TCS/TES), or the
+// compute path (core/gpu/compute_path.h), a candidate where the run measured it (cracks rows
+// with path = compute).
+inline constexpr const char* kTessellatorPath = "tessellator";
+inline constexpr const char* kComputePath = "compute";
+
 struct DecisionCandidate {
   std::string technique;
   std::string variant;
   DecisionFigures figures;
   bool on_front = false;  // no other candidate has lower-or-equal error and triangles, one lower
-  std::string name() const { return technique + "/" + variant; }
+  std::string path = kTessellatorPath;
+  // "acc/default", "acc/default (compute path)".
+  std::string name() const {
+    return technique + "/" + variant + (path == kComputePath ? " (compute path)" : "");
+  }
 };
 
 struct AssetDecision {
@@ -62,8 +73,13 @@ struct AssetDecision {
 };
 
 // The figures of one record (technique, variant, asset), read from its rows.
+// On the compute path: memory adds its transient buffers (memory rows with path = compute),
+// instructions are its compute shader's build and evaluate passes', the device's
+// watertightness is its cracks rows'; error and triangles at 1 px are the same surface's and
+// the same policies' levels as the tessellator path's.
 DecisionFigures decisionFigures(const results::Results& results, const std::string& technique,
-                                const std::string& variant, const std::string& asset);
+                                const std::string& variant, const std::string& asset,
+                                const std::string& path = kTessellatorPath);
 
 // kDecisionRule as an order: true when a ranks before b (names not compared).
 bool decisionBefore(const DecisionFigures& a, const DecisionFigures& b);

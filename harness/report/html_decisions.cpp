@@ -33,6 +33,9 @@ std::string strongHtml(const std::string& text) {
 std::vector<const DecisionCandidate*> drawable(const AssetDecision& d) {
   std::vector<const DecisionCandidate*> points;
   for (const DecisionCandidate& c : d.candidates) {
+    // A compute-path candidate sits on its tessellator twin's point (the same surface and
+    // levels): the table lists it, the chart draws one point.
+    if (c.path == kComputePath) continue;
     if (c.figures.error && c.figures.triangles_1px) points.push_back(&c);
   }
   return points;

@@ -41,7 +41,7 @@ std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
        }},
       {"memory / plain mesh at level 16 (ratio)",
        [=](const DecisionCandidate& c) { return optional(c.figures.memory_ratio); }},
-      {"TCS + TES instructions (count)",
+      {"TCS + TES instructions (count; compute path: its build + evaluate passes)",
        [=](const DecisionCandidate& c) { return optional(c.figures.instructions); }},
       {"watertight CPU / device",
        [](const DecisionCandidate& c) -> std::optional<std::string> {
@@ -63,7 +63,7 @@ void appendDecision(const AssetDecision& d, std::string* out) {
                     [&](const DecisionCandidate& c) { return column.cell(c).has_value(); });
     if (any) columns.push_back(std::move(column));
   }
-  std::vector<std::string> header{"rank", "technique/variant"};
+  std::vector<std::string> header{"rank", "technique/variant", "path"};
   for (const DecisionColumn& column : columns) header.push_back(column.header);
   // The front is over error and triangles at 1 px: no column when no candidate has both.
   const bool front = std::any_of(d.candidates.begin(), d.candidates.end(), [](const auto& c) {
@@ -74,7 +74,7 @@ void appendDecision(const AssetDecision& d, std::string* out) {
   for (size_t i = 0; i < d.candidates.size(); ++i) {
     const DecisionCandidate& c = d.candidates[i];
     std::vector<std::string> cells{i == 0 ? "**1 (recommended)**" : std::to_string(i + 1),
-                                   c.name()};
+                                   c.technique + "/" + c.variant, c.path};
     for (const DecisionColumn& column : columns) cells.push_back(column.cell(c).value_or("n/a"));
     if (front) cells.push_back(c.on_front ? "yes" : "no");
     appendRow(out, cells);

@@ -215,18 +215,26 @@ void appendMeasureSection(const results::Results& results, const std::string& me
     *out += "Summaries read the rows with " + scope + ".\n\n";
   }
   const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {}, summaryRowsOf(results, measure));
+      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {},
+                       summaryRowsOf(results, measure), /*split_paths=*/true);
   if (const std::string note = summaryRowsNote(results, measure); !note.empty()) {
     *out += "The summary below reads " + note + "; every row is in the CSV.\n\n";
   }
-  std::vector<std::string> header{"technique", "variant", "rows"};
+  // The pipeline's path (tessellator | compute) as a column where the measure keys rows by it.
+  const bool paths = std::any_of(summary.lines.begin(), summary.lines.end(),
+                                 [](const SummaryLine& line) { return !line.path.empty(); });
+  std::vector<std::string> header{"technique", "variant"};
+  if (paths) header.push_back("path");
+  header.push_back("rows");
   for (const std::string& metric : summary.metrics) {
     header.push_back(metricHeader(results, measure, metric) + " median / worst");
   }
   header.push_back("not measured");
   appendHeader(out, header);
   for (const SummaryLine& line : summary.lines) {
-    std::vector<std::string> cells{line.technique, line.variant, std::to_string(line.ok_rows)};
+    std::vector<std::string> cells{line.technique, line.variant};
+    if (paths) cells.push_back(line.path);
+    cells.push_back(std::to_string(line.ok_rows));
     for (const std::string& metric : summary.metrics) {
       const MetricStats* stats = line.find(metric);
       if (stats == nullptr) {

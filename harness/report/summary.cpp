@@ -24,6 +24,12 @@ struct LineValues {
   std::map<std::string, std::vector<double>> values;
 };
 
+// The row's path key ("" when the measure has none).
+std::string pathKeyOf(const results::MetricRow& row) {
+  const auto it = row.keys.find("path");
+  return it == row.keys.end() ? std::string() : it->second;
+}
+
 void noteReason(SummaryLine* line, const std::string& reason) {
   if (line->first_reason.empty()) line->first_reason = reason;
 }
@@ -49,7 +55,8 @@ const MetricStats* SummaryLine::find(const std::string& metric) const {
 
 MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
                                 SummaryGrouping grouping, const std::vector<std::string>& metrics,
-                                const std::function<bool(const results::MetricRow&)>& keep) {
+                                const std::function<bool(const results::MetricRow&)>& keep,
+                                bool split_paths) {
   MeasureSummary summary;
   summary.measure = measure;
   summary.declaration = results.findMeasure(measure);
@@ -62,27 +69,37 @@ MeasureSummary summarizeMeasure(const results::Results& results, const std::stri
       summary.declaration != nullptr ? summary.declaration->summary_scope : results::RowScope{};
 
   std::vector<LineValues> lines;
-  std::map<std::tuple<std::string, std::string, std::string>, size_t> line_index;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, size_t> line_index;
   for (const results::Record& record : results.records) {
     for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure) continue;
       const std::string asset = grouping == SummaryGrouping::kPerAsset ? record.asset : "";
-      const auto key = std::make_tuple(record.technique, record.variant, asset);
-      auto [it, added] = line_index.emplace(key, lines.size());
-      if (added) {
-        lines.emplace_back();
-        lines.back().line.technique = record.technique;
-        lines.back().line.variant = record.variant;
-        lines.back().line.asset = asset;
-      }
-      LineValues& target = lines[it->second];
+      // The line of (this record, path): rows keyed by path split a record's line.
+      const auto lineOf = [&](std::string path) -> LineValues& {
+        if (!split_paths) path.clear();
+        const auto key = std::make_tuple(record.technique, record.variant, asset, path);
+        auto [it, added] = line_index.emplace(key, lines.size());
+        if (added) {
+          lines.emplace_back();
+          lines.back().line.technique = record.technique;
+          lines.back().line.variant = record.variant;
+          lines.back().line.asset = asset;
+          lines.back().line.path = path;
+        }
+        return lines[it->second];
+      };
+      const std::string first_path =
+          m.rows.empty() ? std::string() : pathKeyOf(m.rows.front());
       if (m.status != results::MeasureStatus::kOk) {
+        LineValues& target = lineOf(first_path);
         (m.status == results::MeasureStatus::kSkipped ? target.line.skipped_rows
                                                       : target.line.failed_rows)++;
         noteReason(&target.line, m.reason);
         continue;
       }
+      lineOf(first_path);  // the record's first line, even when no row is in scope
       for (const results::MetricRow& row : m.rows) {
+        LineValues& target = lineOf(pathKeyOf(row));
         if (row.status != results::MeasureStatus::kOk) {
           (row.status == results::MeasureStatus::kSkipped ? target.line.skipped_rows
                                                           : target.line.failed_rows)++;

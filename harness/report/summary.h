@@ -34,6 +34,9 @@ struct SummaryLine {
   std::string technique;
   std::string variant;
   std::string asset;                         // empty in a line aggregated over assets
+  // The rows' path key (tessellator | compute) where the measure keys its rows by the
+  // pipeline's path (cracks, memory): a line per path; empty where it does not.
+  std::string path;
   std::map<std::string, MetricStats> stats;  // by metric name; absent: no row emitted it
   size_t ok_rows = 0;                        // rows in the summary scope
   size_t skipped_rows = 0;                   // rows (or whole records) skipped, in scope or not
@@ -57,10 +60,13 @@ enum class SummaryGrouping {
 // Summarises `measure` over the rows in its declaration's summary scope. `metrics` empty:
 // the declared headline metrics (every emitted metric when the declaration has none).
 // `keep`, when given, further selects the rows (e.g. the conservative culling policies).
+// `split_paths`: a line per value of the rows' path key (SummaryLine::path) where the
+// measure has one; otherwise one line holds every path's rows.
 MeasureSummary summarizeMeasure(const results::Results& results, const std::string& measure,
                                 SummaryGrouping grouping,
                                 const std::vector<std::string>& metrics = {},
-                                const std::function<bool(const results::MetricRow&)>& keep = {});
+                                const std::function<bool(const results::MetricRow&)>& keep = {},
+                                bool split_paths = false);
 
 // The measure ids of the run, in the order results.json declares them (sorted), then any
 // undeclared one in order of appearance.

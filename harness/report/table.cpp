@@ -55,11 +55,15 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
   const MeasureSummary summary = summarizeMeasure(
       results, options.measure,
       options.per_asset ? SummaryGrouping::kPerAsset : SummaryGrouping::kAcrossAssets,
-      options.metrics, summaryRowsOf(results, options.measure));
+      options.metrics, summaryRowsOf(results, options.measure), /*split_paths=*/true);
   TextTable table;
   table.title = summary.declaration != nullptr ? summary.declaration->title : options.measure;
   table.header = {"technique", "variant"};
   if (options.per_asset) table.header.push_back("asset");
+  // The pipeline's path (tessellator | compute) where the measure keys its rows by it.
+  const bool paths = std::any_of(summary.lines.begin(), summary.lines.end(),
+                                 [](const SummaryLine& line) { return !line.path.empty(); });
+  if (paths) table.header.push_back("path");
   table.numeric.assign(table.header.size(), false);
   for (const std::string& metric : summary.metrics) {
     const std::string unit = unitOf(results, options.measure, metric);
@@ -71,6 +75,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
   for (const SummaryLine& line : summary.lines) {
     std::vector<std::string> row{line.technique, line.variant};
     if (options.per_asset) row.push_back(line.asset);
+    if (paths) row.push_back(line.path);
     for (const std::string& metric : summary.metrics) {
       const MetricStats* stats = line.find(metric);
       if (stats == nullptr || stats->rows == 0) {

@@ -38,6 +38,12 @@
 
 #include "float_order.glsl"
 
+// The descriptor set of the harness's bindings (see tess_factors.glsl): 1 in a TCS, 0 in
+// the compute levels pass.
+#ifndef TB_HARNESS_SET
+#define TB_HARNESS_SET 1
+#endif
+
 // TbCullParams::policy
 const uint kTbCullBackfaceLp2 = 1u;
 const uint kTbCullFrustumLp2Global = 2u;
@@ -58,7 +64,7 @@ const float kTbCullTangentMargin = 1e-3;  // harness/lod/cull_policy.h kTangentP
 layout(constant_id = 202) const uint kTbCullPolicy = 0u;
 const uint kTbCullPolicyFixed = 100u;
 
-layout(std430, set = 1, binding = 4) readonly buffer TbCullParamsBlock {
+layout(std430, set = TB_HARNESS_SET, binding = 4) readonly buffer TbCullParamsBlock {
   vec4 planes[6];        // world-space frustum planes, unit xyz: inside when xyz . p + w >= 0
   vec4 eye;              // xyz: camera position, world units
   float global_margin;   // frustum_lp2_global's margin, world units
@@ -80,12 +86,12 @@ struct TbCullPatch {
   vec4 hull[kTbCullHullPoints];  // xyz
 };
 
-layout(std430, set = 1, binding = 5) readonly buffer TbCullPatches {
+layout(std430, set = TB_HARNESS_SET, binding = 5) readonly buffer TbCullPatches {
   TbCullPatch tb_cull_patches[];
 };
 
 // {n_k, w_k}: world units squared and cubed.
-layout(std430, set = 1, binding = 6) readonly buffer TbCullTangentPlanes {
+layout(std430, set = TB_HARNESS_SET, binding = 6) readonly buffer TbCullTangentPlanes {
   vec4 tb_cull_tangent_planes[];
 };
 

@@ -19,6 +19,12 @@
 
 #include "float_order.glsl"
 
+// The descriptor set of the harness's bindings: 1 in a TCS (set 0 is the program's); the
+// compute levels pass (shaders/gpu/policy_levels.comp) defines it as 0 before including.
+#ifndef TB_HARNESS_SET
+#define TB_HARNESS_SET 1
+#endif
+
 // TbFactorParams::policy
 const uint kTbPolicyUniform = 0u;         // every edge = target (a level)
 const uint kTbPolicyDistance = 1u;        // target / |eye - midpoint| (target: level x world units)
@@ -43,11 +49,11 @@ struct TbFactorCorner {
   vec4 normal;    // xyz: the welded position's unit normal (the same on both sides of a seam)
 };
 
-layout(std430, set = 1, binding = 1) readonly buffer TbFactorCorners {
+layout(std430, set = TB_HARNESS_SET, binding = 1) readonly buffer TbFactorCorners {
   TbFactorCorner tb_factor_corners[];  // 4 per patch (triangles use 3)
 };
 
-layout(std430, set = 1, binding = 2) readonly buffer TbFactorParamsBlock {
+layout(std430, set = TB_HARNESS_SET, binding = 2) readonly buffer TbFactorParamsBlock {
   mat4 view_projection;      // world -> Vulkan clip space, column-major
   vec4 eye;                  // xyz: camera position, world units
   float viewport_height_px;  // H, also lp2_edge's R
@@ -65,7 +71,7 @@ layout(std430, set = 1, binding = 2) readonly buffer TbFactorParamsBlock {
 } tb_factor;
 
 // The levels the TCS wrote (float bits, the TbPatchLevels layout), per patch.
-layout(std430, set = 1, binding = 3) writeonly buffer TbFactorOut {
+layout(std430, set = TB_HARNESS_SET, binding = 3) writeonly buffer TbFactorOut {
   uvec4 tb_factor_out[];  // 2 per patch: outer[0..3], inner[0..1]
 };
 

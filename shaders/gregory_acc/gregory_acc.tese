@@ -1,73 +1,16 @@
 #version 460
 // gregory_acc TES: the quad Gregory patch of Loop, Schaefer, Ni & Castaño 2009 at
-// gl_TessCoord, position and analytic normal. Mirrors techniques/gregory_acc/
-// gregory_eval.h operation for operation (every value `precise`, so NIR neither
-// reassociates nor contracts); keep the two in step.
-// Control point corner * 5 + slot, slots P, Ep, Em, Fp, Fm.
+// gl_TessCoord, position and analytic normal (gregory_surface.glsl,
+// gregory_quad_evaluate.glsl: shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
 
 layout(quads, equal_spacing, ccw) in;
-// 1: points on the domain boundary come from the shared edge curve, evaluated
-// symmetrically in its parameter (bitwise-equal from both patches).
-layout(constant_id = 0) const uint kSymmetricEdges = 1u;
 layout(location = 0) in vec3 control_point[];
 
-vec3 at(uint corner, uint slot) { return control_point[corner * 5u + slot]; }
+#include "gregory_surface.glsl"
 
-#include "gregory_common.glsl"
-
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  const float u = gl_TessCoord.x, v = gl_TessCoord.y;
-  precise float iu = 1.0 - u, iv = 1.0 - v;
-  vec3 q[4][4];
-  vec3 q_u[4][4], q_v[4][4];
-  q[0][0] = at(0u, 0u); q[0][1] = at(0u, 1u); q[0][2] = at(1u, 2u); q[0][3] = at(1u, 0u);
-  q[3][0] = at(3u, 0u); q[3][1] = at(3u, 2u); q[3][2] = at(2u, 1u); q[3][3] = at(2u, 0u);
-  q[1][0] = at(0u, 2u);
-  q[1][3] = at(1u, 1u);
-  q[2][0] = at(3u, 1u);
-  q[2][3] = at(2u, 2u);
-  blendFace(at(0u, 3u), at(0u, 4u), u, v, 1.0, 0.0, 0.0, 1.0, q[1][1], q_u[1][1], q_v[1][1]);
-  blendFace(at(1u, 3u), at(1u, 4u), v, iu, 0.0, -1.0, 1.0, 0.0, q[1][2], q_u[1][2], q_v[1][2]);
-  blendFace(at(2u, 3u), at(2u, 4u), iu, iv, -1.0, 0.0, 0.0, -1.0, q[2][2], q_u[2][2],
-            q_v[2][2]);
-  blendFace(at(3u, 3u), at(3u, 4u), iv, u, 0.0, 1.0, -1.0, 0.0, q[2][1], q_u[2][1], q_v[2][1]);
-
-  float bu[4], du[4], bv[4], dv[4];
-  bernstein3(u, bu, du);
-  bernstein3(v, bv, dv);
-  precise vec3 position = vec3(0.0), tangent_u = vec3(0.0), tangent_v = vec3(0.0);
-  for (int j = 0; j < 4; ++j) {
-    precise vec3 row = vec3(0.0), row_u = vec3(0.0);
-    for (int i = 0; i < 4; ++i) {
-      row = row + q[j][i] * bu[i];
-      row_u = row_u + q[j][i] * du[i];
-    }
-    position = position + row * bv[j];
-    tangent_u = tangent_u + row_u * bv[j];
-    tangent_v = tangent_v + row * dv[j];
-  }
-  for (int j = 1; j < 3; ++j) {
-    for (int i = 1; i < 3; ++i) {
-      precise float w = bu[i] * bv[j];
-      tangent_u = tangent_u + q_u[j][i] * w;
-      tangent_v = tangent_v + q_v[j][i] * w;
-    }
-  }
-  if (kSymmetricEdges != 0u) {
-    if (v == 0.0) {
-      position = symmetricEdge(at(0u, 0u), at(0u, 1u), at(1u, 2u), at(1u, 0u), u);
-    } else if (u == 1.0) {
-      position = symmetricEdge(at(1u, 0u), at(1u, 1u), at(2u, 2u), at(2u, 0u), v);
-    } else if (v == 1.0) {
-      position = symmetricEdge(at(3u, 0u), at(3u, 2u), at(2u, 1u), at(2u, 0u), u);
-    } else if (u == 0.0) {
-      position = symmetricEdge(at(0u, 0u), at(0u, 2u), at(3u, 1u), at(3u, 0u), v);
-    }
-  }
-  precise vec3 n = cross(tangent_u, tangent_v);
-  precise float len = sqrt(dot(n, n));
-  precise vec3 normal = len > 0.0 ? n * (1.0 / len) : n;
-  tbEmitVertex(position, normal);
+#include "gregory_quad_evaluate.glsl"
 }

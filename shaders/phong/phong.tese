@@ -1,55 +1,18 @@
 #version 460
-// Phong tessellation at gl_TessCoord, in the operation order of
-// techniques/phong/phong_eval.h evaluatePhongInOrder (default) or phong_edge_eval.h
-// evaluatePhongEdge (kEdge, seed 003's per-edge extension).
+// Phong tessellation at gl_TessCoord (phong_evaluate.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "float_order.glsl"
+#define TB_SURFACE_EVALUATE
+#include "phong_surface.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
-layout(constant_id = 0) const uint kAlphaBits = 0x3f400000u;  // 0.75
-layout(constant_id = 1) const uint kEdge = 0u;
 
 layout(location = 0) patch in vec3 tb_phong_p[3];
 layout(location = 3) patch in vec3 tb_phong_n[3];
 layout(location = 6) patch in vec3 tb_phong_edge_n[6];
 layout(location = 12) patch in uvec3 tb_phong_perm;
 
-const uint kEdgeEnds[6] = uint[6](0u, 1u, 0u, 2u, 1u, 2u);
-
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  const float alpha = uintBitsToFloat(kAlphaBits);
-  const float w[3] = float[3](gl_TessCoord[tb_phong_perm.x], gl_TessCoord[tb_phong_perm.y],
-                              gl_TessCoord[tb_phong_perm.z]);
-  precise vec3 flat_point =
-      tb_phong_p[0] * w[0] + tb_phong_p[1] * w[1] + tb_phong_p[2] * w[2];
-  precise vec3 normal_sum = tb_phong_n[0] * w[0] + tb_phong_n[1] * w[1] + tb_phong_n[2] * w[2];
-  const vec3 normal = tbNormalize(normal_sum);
-  precise vec3 offset = vec3(0.0);
-  if (kEdge == 0u) {
-    // Boubekeur & Alexa eq. 3-4, written as p - α Σ w_i ((p - p_i)·n_i) n_i.
-    for (uint i = 0u; i < 3u; ++i) {
-      precise float height = tbDot(flat_point - tb_phong_p[i], tb_phong_n[i]);
-      offset = offset + tb_phong_n[i] * (w[i] * height);
-    }
-  } else {
-    precise float denominator = (w[0] * w[1] + w[0] * w[2]) + w[1] * w[2];
-    if (!(denominator > 0.0)) {
-      tbEmitVertex(flat_point, normal);
-      return;
-    }
-    for (uint e = 0u; e < 3u; ++e) {
-      const uint i = kEdgeEnds[2u * e], j = kEdgeEnds[2u * e + 1u];
-      precise float sum = w[i] + w[j];
-      if (!(sum > 0.0)) continue;
-      precise float ti = w[i] / sum, tj = w[j] / sum;
-      precise vec3 q = tb_phong_p[i] * ti + tb_phong_p[j] * tj;
-      const vec3 ni = tb_phong_edge_n[2u * e], nj = tb_phong_edge_n[2u * e + 1u];
-      precise vec3 edge_offset = ni * (ti * tbDot(q - tb_phong_p[i], ni)) +
-                                 nj * (tj * tbDot(q - tb_phong_p[j], nj));
-      offset = offset + edge_offset * ((w[i] * w[j]) / denominator);
-    }
-  }
-  precise vec3 position = flat_point - offset * alpha;
-  tbEmitVertex(position, normal);
+#include "phong_evaluate.glsl"
 }

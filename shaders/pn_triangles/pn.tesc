@@ -1,76 +1,18 @@
 #version 460
 // Curved PN triangles (Vlachos et al. 2001): one invocation builds the 10 geometry
-// control points and 6 normal coefficients from the triangle's vertices, read by
-// index from storage buffers (techniques/pn_triangles/pn_build.h has the layout).
-// Mirrors pn_eval.h computeControl operation for operation.
+// control points and 6 normal coefficients (pn_build.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tcs.glsl"
-#include "float_order.glsl"
+#define TB_SURFACE_BUILD
+#include "pn_surface.glsl"
 
 layout(vertices = 1) out;
-layout(constant_id = 0) const uint kAen = 0u;       // PN-AEN: average own and neighbour points
-layout(constant_id = 1) const uint kUseScale = 0u;  // per-edge scale of w_ij (boundary, rounding)
-
-layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Normals { vec4 normals[]; };
-// 24 words per patch, see techniques/common/triangle_records.h TriangleRecordWord.
-layout(std430, set = 0, binding = 3) readonly buffer Records { uint records[]; };
 
 layout(location = 0) patch out vec3 tb_pn_b[10];  // corners 0..2, edge e end k at 3 + 2e + k, centre 9
 layout(location = 10) patch out vec3 tb_pn_n[6];   // corner normals 0..2, edge normals 3..5
 layout(location = 16) patch out uvec3 tb_pn_perm;  // canonical label -> gl_TessCoord component
 
-const uint kEdgeEnds[6] = uint[6](0u, 1u, 0u, 2u, 1u, 2u);
-
-vec3 edgePoint(vec3 pi, vec3 pj, vec3 ni, float scale) {
-  precise float w = tbDot(pj - pi, ni);
-  if (kUseScale != 0u) w = w * scale;
-  precise vec3 point = ((pi * 2.0 + pj) - ni * w) * (1.0 / 3.0);
-  return point;
-}
-
 void main() {
-  const uint base = tbPatchIndex() * 24u;
-  vec3 p[3], n[3];
-  uint flags[3];
-  for (uint i = 0u; i < 3u; ++i) {
-    p[i] = positions[records[base + 3u + i]].xyz;
-    n[i] = tbNormalize(normals[records[base + 6u + i]].xyz);
-    flags[i] = records[base + 12u + i];
-  }
-  tb_pn_perm = uvec3(records[base + 0u], records[base + 1u], records[base + 2u]);
-  precise vec3 edge[6];
-  for (uint e = 0u; e < 3u; ++e) {
-    const uint a = kEdgeEnds[2u * e], b = kEdgeEnds[2u * e + 1u];
-    // Seed 003: an edge uses geometry normals when both its vertices flag it.
-    const bool flagged = ((flags[a] & flags[b]) & (1u << e)) != 0u;
-    const float scale = uintBitsToFloat(records[base + 21u + e]);
-    for (uint end = 0u; end < 2u; ++end) {
-      const uint i = end == 0u ? a : b, j = end == 0u ? b : a;
-      vec3 own = n[i];
-      if (flagged) own = tbNormalize(normals[records[base + 9u + i]].xyz);
-      precise vec3 point = edgePoint(p[i], p[j], own, scale);
-      if (kAen != 0u) {
-        const vec3 other = tbNormalize(normals[records[base + 15u + 2u * e + end]].xyz);
-        point = (point + edgePoint(p[i], p[j], other, scale)) * 0.5;
-      }
-      edge[2u * e + end] = point;
-      tb_pn_b[3u + 2u * e + end] = point;
-    }
-    precise vec3 d = p[b] - p[a];
-    precise vec3 sum = n[a] + n[b];
-    precise float dd = tbDot(d, d);
-    precise float v = 0.0;
-    if (dd > 0.0) v = (2.0 * tbDot(d, sum)) / dd;
-    tb_pn_n[3u + e] = tbNormalize(sum - d * v);
-  }
-  for (uint i = 0u; i < 3u; ++i) {
-    tb_pn_b[i] = p[i];
-    tb_pn_n[i] = n[i];
-  }
-  precise vec3 e_sum = ((((edge[0] + edge[1]) + edge[2]) + edge[3]) + edge[4]) + edge[5];
-  precise vec3 mean_edge = e_sum * (1.0 / 6.0);
-  precise vec3 mean_corner = ((p[0] + p[1]) + p[2]) * (1.0 / 3.0);
-  tb_pn_b[9] = mean_edge + (mean_edge - mean_corner) * 0.5;
+#include "pn_build.glsl"
   tbWriteHarnessLevels();
 }

@@ -1,10 +1,8 @@
 #version 460
-// Curved PN triangles: the cubic geometry patch and quadratic normal patch at
-// gl_TessCoord, in pn_eval.h evaluateControl's order (corners, edges (0,1), (0,2),
-// (1,2), centre), so both faces of a shared edge sum the same terms identically.
+// Curved PN triangles at gl_TessCoord (pn_evaluate.glsl, shared with the compute path).
 #extension GL_GOOGLE_include_directive : require
 #include "patch_program_tes.glsl"
-#include "float_order.glsl"
+#include "pn_surface.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
 
@@ -12,17 +10,7 @@ layout(location = 0) patch in vec3 tb_pn_b[10];
 layout(location = 10) patch in vec3 tb_pn_n[6];
 layout(location = 16) patch in uvec3 tb_pn_perm;
 
+#define TB_TESS_COORD gl_TessCoord
 void main() {
-  const vec3 w = vec3(gl_TessCoord[tb_pn_perm.x], gl_TessCoord[tb_pn_perm.y],
-                      gl_TessCoord[tb_pn_perm.z]);
-  precise float aa = w.x * w.x, bb = w.y * w.y, cc = w.z * w.z;
-  precise float ab = w.x * w.y, ac = w.x * w.z, bc = w.y * w.z;
-  precise vec3 p = (tb_pn_b[0] * (aa * w.x) + tb_pn_b[1] * (bb * w.y)) + tb_pn_b[2] * (cc * w.z);
-  p = p + (tb_pn_b[3] * w.x + tb_pn_b[4] * w.y) * (ab * 3.0);
-  p = p + (tb_pn_b[5] * w.x + tb_pn_b[6] * w.z) * (ac * 3.0);
-  p = p + (tb_pn_b[7] * w.y + tb_pn_b[8] * w.z) * (bc * 3.0);
-  p = p + tb_pn_b[9] * ((ab * w.z) * 6.0);
-  precise vec3 n = (tb_pn_n[0] * aa + tb_pn_n[1] * bb) + tb_pn_n[2] * cc;
-  n = ((n + tb_pn_n[3] * ab) + tb_pn_n[4] * ac) + tb_pn_n[5] * bc;
-  tbEmitVertex(p, tbNormalize(n));
+#include "pn_evaluate.glsl"
 }

@@ -287,6 +287,7 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
   gpu::GpuPatchProgram program;
   program.control_shader = "acc/acc.tesc";
   program.evaluation_shader = "acc/acc.tese";
+  program.compute_shader = "acc/acc.comp";
   program.domain = tess::Domain::kQuad;
   program.patch_count = uint32_t(patchCount());
   program.input_vertices_per_patch = 1;

@@ -126,6 +126,8 @@ class GregoryPatches final : public techniques::SurfacePatches {
       program.control_shader = quads ? "gregory_acc/gregory_acc.tesc" : "gregory_acc/gregory_tri.tesc";
       program.evaluation_shader =
           quads ? "gregory_acc/gregory_acc.tese" : "gregory_acc/gregory_tri.tese";
+      program.compute_shader =
+          quads ? "gregory_acc/gregory_acc.comp" : "gregory_acc/gregory_tri.comp";
       program.domain = quads ? tess::Domain::kQuad : tess::Domain::kTriangle;
       program.patch_count = uint32_t(ids->size());
       if (ids->size() != patchCount()) program.patch_ids = *ids;

@@ -212,6 +212,7 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
     gpu::GpuPatchProgram program;
     program.control_shader = "osd_adaptive/osd_adaptive.tesc";
     program.evaluation_shader = "osd_adaptive/osd_adaptive.tese";
+    program.compute_shader = "osd_adaptive/osd_adaptive.comp";
     program.domain = tess::Domain::kQuad;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;

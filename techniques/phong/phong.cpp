@@ -84,6 +84,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     gpu::GpuPatchProgram program;
     program.control_shader = "phong/phong.tesc";
     program.evaluation_shader = "phong/phong.tese";
+    program.compute_shader = "phong/phong.comp";
     program.domain = tess::Domain::kTriangle;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;

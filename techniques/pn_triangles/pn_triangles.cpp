@@ -66,6 +66,7 @@ class PnPatches final : public techniques::TrianglePatchesBase {
     gpu::GpuPatchProgram program;
     program.control_shader = "pn_triangles/pn.tesc";
     program.evaluation_shader = "pn_triangles/pn.tese";
+    program.compute_shader = "pn_triangles/pn.comp";
     program.domain = tess::Domain::kTriangle;
     program.patch_count = uint32_t(patchCount());
     program.input_vertices_per_patch = 1;

@@ -387,7 +387,7 @@ TEST(NoDevice, ACompareAgainstARunWithADeviceSaysTheGpuFiguresAreMissing) {
   EXPECT_EQ(lost.exit_code, 1) << lost.out << lost.err;
   EXPECT_NE(lost.out.find("FAIL"), std::string::npos) << lost.out;
   EXPECT_NE(lost.out.find("| missing | phong/alpha0.75 opensubdiv/catmark_cube | cracks | "
-                          "backend=gpu level=1 spacing=integer | (all) |  | skipped: no Vulkan device"),
+                          "backend=gpu level=1 path=tessellator spacing=integer | (all) |  | skipped: no Vulkan device"),
             std::string::npos)
       << lost.out;
   EXPECT_NE(lost.out.find("Vulkan device differs"), std::string::npos) << lost.out;

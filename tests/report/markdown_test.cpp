@@ -83,10 +83,11 @@ TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
   EXPECT_LT(measures, context);
   // Decision: the only default variant with its worst error over the levels (0.25 × 3); no
   // column for the figures the run lacks.
-  EXPECT_NE(md.find("### asset0\n\n| rank | technique/variant | error (hausdorff, rel_diag) |\n"),
+  EXPECT_NE(md.find("### asset0\n\n| rank | technique/variant | path | error (hausdorff, rel_diag) |\n"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("| **1 (recommended)** | acc/default | 0.75 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| **1 (recommended)** | acc/default | tessellator | 0.75 |"), std::string::npos)
+      << md;
   // Publishing: median (worst) over assets and levels of each variant.
   EXPECT_NE(md.find("| acc | fast | 1 (1.5) |"), std::string::npos) << md;
   // Matrix: the default variant; a technique that took no asset (pn: n/a everywhere) is no

@@ -31,7 +31,7 @@ TEST(Suite, PhongMemoryOnOneAssetGivesOneRecordPerMeasuredVariant) {
     if (record.technique != "phong") continue;
     phong_variants.push_back(record.variant);
     ASSERT_EQ(record.measures.size(), 1u);
-    EXPECT_EQ(record.measures[0].rows.size(), 4u);
+    EXPECT_EQ(record.measures[0].rows.size(), 8u);  // 4 levels x path tessellator | compute
     EXPECT_EQ(record.parameters.at("alpha"), "0.75");
   }
   // memory does not depend on α: the α variants share the default's patch data and are

@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "core/gpu/compute_levels.h"
 #include "core/gpu/patch_program.h"
 #include "core/mesh/bounds.h"
 
@@ -103,7 +104,7 @@ std::vector<tess::Levels> AdaptivityRun::twinLevels(const lod::FactorPolicy& pol
 
 void AdaptivityRun::runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing,
                               const view::View& view, const std::vector<tess::Levels>& twin,
-                              bool cracks, AdaptivityFrame* frame) {
+                              const AdaptivityParts& parts, AdaptivityFrame* frame) {
   if (!gpu_skip_.empty()) return;
   const lod::FactorParams params = lod::factorParams(policy, view, spacing, diagonal_);
   std::vector<tess::Levels> device(twin.size());
@@ -131,10 +132,33 @@ void AdaptivityRun::runDevice(const lod::FactorPolicy& policy, tess::Spacing spa
       device[patch] = levelsFromBits(run.tcs_levels[i]);
       if (run.tcs_levels[i] != tess::levelsBits(expected[i])) ++frame->twin_level_mismatches;
     }
+    if (parts.compute) runCompute(program, spacing, device_policy, run.tcs_levels, frame);
   }
   frame->factor_mismatches_gpu = factorMismatches(patches_, shared_, device);
-  if (cracks) frame->cracks_gpu = cracks_->measure(spacing, device, CrackBackend::kGpu, context_);
+  if (parts.cracks) {
+    frame->cracks_gpu = cracks_->measure(spacing, device, CrackBackend::kGpu, context_);
+  }
   frame->gpu_measured = true;
+}
+
+void AdaptivityRun::runCompute(const gpu::GpuPatchProgram& program, tess::Spacing spacing,
+                               const gpu::TcsFactorPolicy& policy,
+                               std::span<const tess::LevelsBits> tcs, AdaptivityFrame* frame) {
+  gpu::PolicyLevelsJob job;
+  job.domain = program.domain;
+  job.spacing = spacing;
+  job.patch_count = program.patch_count;
+  job.factor_policy = &policy;
+  gpu::PolicyTessellator tessellator(*context_, std::span(&job, 1), /*counts_only=*/true);
+  tessellator.run();
+  const gpu::PolicyTessellation result = tessellator.read();
+  for (uint32_t i = 0; i < program.patch_count; ++i) {
+    if (result.levels[i] != tcs[i]) ++frame->compute_level_mismatches;
+    const gpu::TessPatchRange& range = result.tessellation.patches[i];
+    frame->compute_domain_points += range.point_count;
+    frame->compute_triangles += range.index_count / 3;
+  }
+  frame->compute_measured = true;
 }
 
 void AdaptivityRun::countTessellations(tess::Spacing spacing,
@@ -179,7 +203,7 @@ std::vector<AdaptivityFrame> AdaptivityRun::frames(const lod::FactorPolicy& poli
     }
     frame.factor_mismatches_cpu = factorMismatches(patches_, shared_, levels);
     if (parts.cracks) frame.cracks_cpu = cracks_->measure(spacing, levels, CrackBackend::kCpuFloat);
-    runDevice(policy, spacing, views[f], levels, parts.cracks, &frame);
+    runDevice(policy, spacing, views[f], levels, parts, &frame);
     frames.push_back(std::move(frame));
     previous = levels;
   }

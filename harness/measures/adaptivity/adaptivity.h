@@ -56,6 +56,12 @@ struct AdaptivityFrame {
   uint64_t factor_mismatches_gpu = 0;  // as factor_mismatches_cpu, from the TCS's levels
   CrackFigures cracks_gpu;             // device capture under the TCS's levels
   double gpu_host_s = 0;               // submit-to-fence seconds of the counting run
+
+  // The compute path (AdaptivityParts::compute): the same policy's levels computed in compute
+  // (core/gpu/compute_levels.h) and tessellated by the compute tessellator, counts only.
+  bool compute_measured = false;
+  uint64_t compute_level_mismatches = 0;  // patches whose compute levels differ from the TCS's
+  uint64_t compute_triangles = 0, compute_domain_points = 0;
 };
 
 struct AdaptivitySummary {
@@ -78,6 +84,7 @@ struct AdaptivitySummary {
 struct AdaptivityParts {
   bool screen = true;  // FrameScreenFigures and pops (counts then come from the tessellator)
   bool cracks = true;  // crack_* on both backends
+  bool compute = false;  // compute_* (the compute path's levels and counts), with a device
 };
 
 // One technique instance along camera paths. Not thread-safe; parallel inside.
@@ -117,7 +124,13 @@ class AdaptivityRun {
   PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
                       const std::vector<view::View>& views);
   void runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing, const view::View& view,
-                 const std::vector<tess::Levels>& twin, bool cracks, AdaptivityFrame* frame);
+                 const std::vector<tess::Levels>& twin, const AdaptivityParts& parts,
+                 AdaptivityFrame* frame);
+  // The compute path's levels and counts for one program under `policy`'s words, against
+  // the TCS's levels `tcs` (one per program patch).
+  void runCompute(const gpu::GpuPatchProgram& program, tess::Spacing spacing,
+                  const gpu::TcsFactorPolicy& policy, std::span<const tess::LevelsBits> tcs,
+                  AdaptivityFrame* frame);
   void countTessellations(tess::Spacing spacing, const std::vector<tess::Levels>& levels,
                           AdaptivityFrame* frame) const;
 

@@ -83,12 +83,37 @@ constexpr auto frameReference = [](auto member) {
   };
 };
 
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<AdaptivityFrame>> adaptivityComputeFields() {
+  using D = results::Direction;
+  using F = AdaptivityFrame;
+  return {
+      // compute_level_mismatches: count; 0 when the compute path's levels (the same policy in
+      //   compute) equal the TCS's bitwise (best), up to patches (worst); only where the compute
+      //   path runs
+      {"compute_level_mismatches", results::Unit::kCount, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return double(f.compute_level_mismatches);
+       }},
+      // compute_counts_differ: flag; 0 when the compute tessellator's points and triangles
+      //   equal the CPU tessellator's (best), 1 (worst)
+      {"compute_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return f.compute_triangles != f.triangles || f.compute_domain_points != f.domain_points
+                    ? 1.0
+                    : 0.0;
+       }},
+  };
+}
+
 // Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
 // edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
 const MetricTable<AdaptivityFrame>& frameTable() {
   using D = results::Direction;
   using F = AdaptivityFrame;
-  static const MetricTable<F> kTable{
+  static const MetricTable<F> kTable{{
       // patches: count; context
       {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // triangles: count; 0 (best), unbounded (worst); the CPU tessellator under the twin's levels
@@ -182,7 +207,7 @@ const MetricTable<AdaptivityFrame>& frameTable() {
        [](const F& f) -> std::optional<double> {
          return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
        }},
-  };
+  }, adaptivityComputeFields()};
   return kTable;
 }
 
@@ -264,6 +289,10 @@ class AdaptivityMeasure final : public Measure {
          "twin's levels; gpu_*: lavapipe's pipeline statistics (TCS patches, TES invocations) "
          "and VK_EXT_primitives_generated_query (triangles) with the TCS computing its own "
          "levels; gpu_counts_differ = 1 when any of them differs from the CPU tessellator's",
+         "compute_*: the compute path (where it runs: --suite full, and the default suite on "
+         "catmark_xord_interior and loop_xord_interior): the frame's policy in compute, through "
+         "the TCS's own includes (core/gpu/compute_levels.h), its levels against the TCS's "
+         "bitwise and the compute tessellator's counts against the CPU tessellator's",
          "twin_level_mismatches: patches whose TCS-written levels differ bitwise from the "
          "twin's; factor_mismatches_*: shared edges whose two patches got bitwise-different "
          "outer factors (cpu: twin levels, gpu: the TCS's levels); crack_*: the crack "
@@ -327,6 +356,8 @@ class AdaptivityMeasure final : public Measure {
           {{"part", "gpu"}}, results::MeasureStatus::kSkipped, run.gpuSkipReason()));
     }
     const Grid grid = gridFor(input.suite, patches);
+    AdaptivityParts parts;
+    parts.compute = runsComputePath(input);
 
     for (const std::string& name : grid.summary_policies) {
       const lod::FactorPolicy policy = *lod::parseFactorPolicy(name);
@@ -343,7 +374,7 @@ class AdaptivityMeasure final : public Measure {
     for (const std::string& name : grid.policies) {
       const lod::FactorPolicy policy = *lod::parseFactorPolicy(name);
       for (tess::Spacing spacing : grid.spacings) {
-        for (const AdaptivityFrame& frame : run.frames(policy, spacing, path.views)) {
+        for (const AdaptivityFrame& frame : run.frames(policy, spacing, path.views, parts)) {
           results::MetricRow row;
           row.keys["policy"] = name;
           row.keys["spacing"] = std::string(tess::toString(spacing));

@@ -28,6 +28,14 @@ constexpr LevelChoice kDisplacedDefaultLevels[] = {{7.3f, "7.3"}, {16.0f, "16"}}
 constexpr tess::Spacing kDisplacedDefaultSpacings[] = {tess::Spacing::kInteger,
                                                        tess::Spacing::kFractionalOdd};
 constexpr const char* kEdgePatternKey = "edge_pattern";
+// The backends of one (spacing, levels): the CPU float model, the TES capture, and the compute
+// path where the suite runs it (never on a displaced surface: the compute path does not
+// displace yet).
+std::vector<CrackBackend> crackBackends(const MeasureInput& input) {
+  std::vector<CrackBackend> backends{CrackBackend::kCpuFloat, CrackBackend::kGpu};
+  if (runsComputePath(input)) backends.push_back(CrackBackend::kGpuCompute);
+  return backends;
+}
 
 // Best case of every gap figure is 0 (watertight); worst_* locate the largest world gap
 // and are context. points_compared, shared_* and seam_edges describe the asset.
@@ -119,7 +127,11 @@ class CracksMeasure final : public Measure {
          "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
          "runs from corner k to k + 1; t from corner local_a), -1 when none",
          "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
-         "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO; "
+         "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO (path "
+         "tessellator), or its surface on the compute path (path compute: the compute "
+         "tessellator and the technique's compute shader, the same surface functions as its "
+         "TES, the boundary points kept; the default suite on catmark_xord_interior and "
+         "loop_xord_interior, --suite full everywhere; never displaced); "
          "vs_cpu_float_*: "
          "every captured vertex (every boundary point of every patch) against evaluateFloat at "
          "the same gl_TessCoord (0 on cpu_float rows by definition)",
@@ -184,6 +196,7 @@ class CracksMeasure final : public Measure {
     // Both backends of one spacing and level in turn: the session evaluates on the CPU
     // once for the two.
     CrackSession session(patches);
+    const std::vector<CrackBackend> backends = crackBackends(input);
     const bool short_grid = input.displacement != nullptr && input.suite == SuiteMode::kDefault;
     const std::span<const tess::Spacing> spacings =
         short_grid ? std::span<const tess::Spacing>(kDisplacedDefaultSpacings)
@@ -193,7 +206,7 @@ class CracksMeasure final : public Measure {
                    : std::span<const LevelChoice>(kCrackLevels);
     for (tess::Spacing spacing : spacings) {
       for (const LevelChoice& level : crack_levels) {
-        for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+        for (CrackBackend backend : backends) {
           result.rows.push_back(crackRow(spacing, level.text, backend, nullptr, gpu_reason, [&] {
             return session.measure(spacing, level.level, backend, input.gpu);
           }));
@@ -204,7 +217,7 @@ class CracksMeasure final : public Measure {
     for (tess::Spacing spacing : spacings) {
       const std::vector<tess::Levels> levels =
           lod::edgePatternLevels(patches, spacing, kEdgePatternBase.level);
-      for (CrackBackend backend : {CrackBackend::kCpuFloat, CrackBackend::kGpu}) {
+      for (CrackBackend backend : backends) {
         result.rows.push_back(
             crackRow(spacing, kEdgePatternBase.text, backend, kEdgePatternKey, gpu_reason,
                      [&] { return session.measure(spacing, levels, backend, input.gpu); }));
@@ -225,8 +238,9 @@ class CracksMeasure final : public Measure {
     row.keys["spacing"] = std::string(tess::toString(spacing));
     row.keys["level"] = std::string(level);
     row.keys["backend"] = toString(backend);
+    row.keys["path"] = std::string(crackPath(backend));
     if (levels_key != nullptr) row.keys["levels"] = std::string(levels_key);
-    if (backend == CrackBackend::kGpu && !gpu_reason.empty()) {
+    if (backend != CrackBackend::kCpuFloat && !gpu_reason.empty()) {
       return results::unmeasuredRow(std::move(row.keys), results::MeasureStatus::kSkipped,
                                     gpu_reason);
     }

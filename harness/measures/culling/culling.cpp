@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/gpu/compute_levels.h"
 #include "core/gpu/gpu_error.h"
 #include "core/gpu/patch_program.h"
 #include "core/mesh/bounds.h"
@@ -141,9 +142,16 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const lod::CullParams* params) 
     counts.primitives += run.stats.primitives_generated;
     counts.primitives_counted = counts.primitives_counted && run.stats.primitives_counted;
     if (params == nullptr) continue;
+    std::vector<tess::LevelsBits> compute;
+    if (options_.compute) {
+      compute = gpu::computePolicyLevels(*context_, program.domain, tess::Spacing::kInteger,
+                                         program.patch_count, nullptr, &device_policies_[k],
+                                         levels);
+    }
     for (uint32_t i = 0; i < program.patch_count; ++i) {
       const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
       counts.culled[patch] = std::bit_cast<float>(run.tcs_levels[i][0]) <= 0.0f ? 1 : 0;
+      if (!compute.empty() && compute[i] != run.tcs_levels[i]) ++counts.compute_mismatches;
     }
   }
   return counts;
@@ -233,6 +241,8 @@ std::vector<std::vector<CullingFrame>> CullingRun::frames(std::span<const lod::C
           frame.gpu_primitives_counted = device.primitives_counted;
           frame.gpu_primitives = device.primitives;
           frame.gpu_primitives_unculled = unculled_->primitives;
+          frame.compute_measured = options_.compute;
+          frame.compute_mismatches = device.compute_mismatches;
           for (size_t p = 0; p < culled.size(); ++p) {
             frame.gpu_culled_patches += device.culled[p];
             if (device.culled[p] != culled[p]) ++frame.twin_mismatches;

@@ -44,6 +44,10 @@ struct CullingFrame {
   uint64_t gpu_primitives = 0, gpu_primitives_unculled = 0;
   // Patches whose culling decision differs between the TCS and the twin. Best 0; any is a bug.
   uint64_t twin_mismatches = 0;
+  // The compute path (CullingOptions::compute): the same policy in compute
+  // (core/gpu/compute_levels.h); patches whose decision differs from the TCS's. Best 0.
+  bool compute_measured = false;
+  uint64_t compute_mismatches = 0;
 
   // The ID-buffer oracle (a render of the unculled surface at the run's render size).
   bool oracle_measured = false;
@@ -94,6 +98,8 @@ struct CullingOptions {
   // Control, for tests (made to fail): every tangent-plane coefficient negated, a wrong sign
   // convention under which tangent_plane culls the patches that face the eye.
   bool flip_tangent_plane = false;
+  // Also decide on the compute path (CullingFrame::compute_*), with a device.
+  bool compute = false;
 };
 
 class CullingRun {
@@ -117,6 +123,8 @@ class CullingRun {
     uint64_t tes_invocations = 0;
     bool primitives_counted = false;
     uint64_t primitives = 0;
+    // With CullingOptions::compute: patches whose compute-path levels differ from the TCS's.
+    uint64_t compute_mismatches = 0;
   };
   DeviceCounts runOnDevice(const lod::CullParams* params);
   // Per patch, 1 when the policy's back-facing half, or its frustum half, culls it (CPU twin).

@@ -47,12 +47,27 @@ auto efficiency(uint64_t T::*culled, uint64_t T::*cullable) {
   };
 }
 
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<CullingFrame>> cullingComputeFields() {
+  using D = results::Direction;
+  using F = CullingFrame;
+  return {
+      // compute_mismatches: count; 0 when the compute path (the policy in compute) decides as
+      //   the TCS (best), up to patches (worst); only where the compute path runs
+      {"compute_mismatches", results::Unit::kCount, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         if (!f.compute_measured) return std::nullopt;
+         return double(f.compute_mismatches);
+       }},
+  };
+}
+
 // Per-frame rows. Best cases: false_culls 0, missed_culls 0, twin_mismatches 0, culled
 // as many patches as show no pixel; worst: a visible patch culled (a hole in the image).
 const MetricTable<CullingFrame>& frameTable() {
   using D = results::Direction;
   using F = CullingFrame;
-  static const MetricTable<F> kTable{
+  static const MetricTable<F> kTable{{
       // patches: count; context
       {"patches", results::Unit::kCount, D::kNone, &F::patches},
       // culled_patches: count; context (see culled_fraction)
@@ -142,7 +157,7 @@ const MetricTable<CullingFrame>& frameTable() {
       {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
       // render_height_px: pixels; context
       {"render_height_px", results::Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
-  };
+  }, cullingComputeFields()};
   return kTable;
 }
 
@@ -249,6 +264,10 @@ class CullingMeasure final : public Measure {
            "twin keeps, at one uniform integer level; gpu_*: lavapipe's pipeline statistics "
            "(TES invocations) and VK_EXT_primitives_generated_query with the TCS culling; "
            "twin_mismatches: patches whose TCS decision differs from the CPU twin's",
+           "compute_mismatches: patches whose decision on the compute path (the policy in "
+           "compute through the TCS's own cull.glsl, core/gpu/compute_levels.h) differs from "
+           "the TCS's; --suite full, and the default suite on catmark_xord_interior and "
+           "loop_xord_interior",
            "default suite: level 4, the render at half the path's resolution per axis (960 x "
            "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); --suite "
            "full: level 8 at the path's resolution, every variant, every frame of the three "
@@ -284,7 +303,9 @@ class CullingMeasure final : public Measure {
     results::MeasureResult result;
     result.measure = info().id;
     const view::CameraPath& path = requireCameraPath(input);
-    CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, optionsFor(input.suite));
+    CullingOptions options = optionsFor(input.suite);
+    options.compute = runsComputePath(input);
+    CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, options);
     const std::span<const lod::CullPolicy> policies = lod::allCullPolicies();
     const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);
     if (!run.gpuSkipReason().empty()) {

@@ -105,6 +105,12 @@ class InstructionsMeasure final : public Measure {
          "two levels, tessellator and TES JIT code together",
          "summaries (report, table, advise) read the evaluation-stage rows: spirv_O, vector "
          "expansion, the .tese stages (the work per tessellated vertex)",
+         "path: tessellator rows count the TCS and TES; compute rows the compute path's "
+         "technique shader in its two passes, each built with the pass fixed "
+         "(TB_COMPUTE_PASS): stage <shader>.comp#build runs once per patch (the TCS's work), "
+         "<shader>.comp#evaluate once per domain point (the TES's, plus the 40-byte record "
+         "write); the compute tessellator's kernels (gpu/tessellate.comp) are the same for "
+         "every technique and not listed",
          "simulations: one spirv_O row pair per compute pass of each step program (program = "
          "the program's name), specialised for the variant; a loop over walls or tree nodes "
          "counts once; no counting_scalar rows"},
@@ -141,6 +147,9 @@ class InstructionsMeasure final : public Measure {
     std::string program;  // "quad" or "triangle"; empty for a single program
     std::vector<std::string> shaders;
     std::vector<uint32_t> specialization;
+    // Surfaces: "tessellator" (TCS + TES) or "compute" (the compute path's passes); empty for
+    // simulations.
+    std::string path;
   };
 
   static std::vector<ShaderSet> shaderSets(const MeasureInput& input) {
@@ -160,9 +169,20 @@ class InstructionsMeasure final : public Measure {
       const techniques::PatchDomain domain = program.domain == tess::Domain::kQuad
                                                  ? techniques::PatchDomain::kQuad
                                                  : techniques::PatchDomain::kTriangle;
-      sets.push_back({programs.size() > 1 ? toString(domain) : "",
+      const std::string name = programs.size() > 1 ? toString(domain) : "";
+      sets.push_back({name,
                       {program.control_shader, program.evaluation_shader},
-                      program.specialization});
+                      program.specialization,
+                      "tessellator"});
+      // The compute path's two passes, each its own build (shaders/CMakeLists.txt): "#build"
+      // once per patch (the TCS's work), "#evaluate" once per domain point (the TES's).
+      const std::string build = program.compute_shader + "#build";
+      if (!program.compute_shader.empty() && !gpu::embeddedShader(build).empty()) {
+        sets.push_back({name,
+                        {build, program.compute_shader + "#evaluate"},
+                        program.specialization,
+                        "compute"});
+      }
     }
     if (sets.empty()) {
       ShaderSet set;
@@ -191,6 +211,7 @@ class InstructionsMeasure final : public Measure {
         } catch (const std::exception& error) {
           std::map<std::string, std::string> keys{{"source", "spirv_O"}, {"stage", shader}};
           if (!set.program.empty()) keys["program"] = set.program;
+          if (!set.path.empty()) keys["path"] = set.path;
           result->rows.push_back(results::unmeasuredRow(
               std::move(keys), results::MeasureStatus::kFailed, error.what()));
           continue;
@@ -200,6 +221,7 @@ class InstructionsMeasure final : public Measure {
           row.keys["source"] = "spirv_O";
           if (!set.program.empty()) row.keys["program"] = set.program;
           row.keys["stage"] = shader;
+          if (!set.path.empty()) row.keys["path"] = set.path;
           row.keys["expansion"] = scalar ? "scalar" : "vector";
           row.metrics = countTable().metrics(scalar ? counts.scalar : counts.vector);
           result->rows.push_back(std::move(row));

@@ -11,6 +11,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "core/gpu/patch_program.h"
 #include "core/mesh/render_vertices.h"
 #include "core/tess/tessellator.h"
 #include "harness/measures/common/cracks/cracks.h"
@@ -35,6 +36,20 @@ uint64_t displacementTexels(techniques::PatchDomain domain, uint32_t n) {
 }
 
 }  // namespace
+
+TransientFigures computePathTransient(const techniques::SurfacePatches& patches, uint32_t level) {
+  assert(level >= 1);
+  TransientFigures t;
+  for (size_t p = 0; p < patches.patchCount(); ++p) {
+    const bool quad = patches.patchDomain(p) == techniques::PatchDomain::kQuad;
+    t.points += quad ? tess::quadPointCount(level) : tess::trianglePointCount(level);
+    t.index_words +=
+        3 * (quad ? tess::quadTriangleCount(level) : tess::triangleTriangleCount(level));
+  }
+  t.vertex_bytes = t.points * 4 * gpu::kCaptureRecordWords;
+  t.index_bytes = t.index_words * 4;
+  return t;
+}
 
 MemoryFigures measureMemory(const techniques::SurfacePatches& patches, uint32_t level) {
   const mesh::Mesh& control = patches.controlMesh();

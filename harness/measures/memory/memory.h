@@ -41,6 +41,19 @@ struct MemoryFigures {
 // patchDomain (quads and triangles may mix).
 MemoryFigures measureMemory(const techniques::SurfacePatches& patches, uint32_t level);
 
+// The compute path's transient output at one uniform integer level (core/gpu/compute_path.h):
+// what it writes per frame and the tessellator path never holds (its points stream from the
+// TES to the rasteriser). Closed form from the tessellator's counts, unwelded: every patch
+// its own points. tests/measures/memory_test.cpp holds it to runComputePath's counts.
+struct TransientFigures {
+  uint64_t points = 0;        // domain points, patch after patch (= TES invocations)
+  uint64_t index_words = 0;   // 3 per triangle
+  uint64_t vertex_bytes = 0;  // points x the 40-byte record (patch, coordinate, position, normal)
+  uint64_t index_bytes = 0;   // index_words x 4
+  uint64_t bytes() const { return vertex_bytes + index_bytes; }
+};
+TransientFigures computePathTransient(const techniques::SurfacePatches& patches, uint32_t level);
+
 // The equivalent plain triangle mesh itself: the technique evaluated (evaluateFloat) at
 // the CPU tessellator's points of every patch (in its own patchDomain) at uniform integer
 // level `level`, welded as MemoryFigures::plain_vertices counts them (a point on an edge

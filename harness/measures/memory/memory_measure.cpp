@@ -3,8 +3,10 @@
 #include <meshoptimizer.h>
 
 #include <optional>
+#include <vector>
 #include <string>
 
+#include "core/gpu/patch_program_desc.h"
 #include "harness/measures/measure.h"
 #include "harness/measures/memory/memory.h"
 #include "harness/measures/metric_table.h"
@@ -20,7 +22,32 @@ struct MemoryRowFigures {
   // record's, and building it again per sampling would double the measure's cost).
   std::optional<CompressedSize> compressed;
   std::optional<uint64_t> map_file_bytes = {};  // displaced surfaces: the EXR on disk
+  // The compute path's transient output (rows with path = compute); none on the tessellator
+  // path's rows, which hold none (0).
+  std::optional<TransientFigures> transient = {};
 };
+
+// The compute path's figures (core/gpu/compute_path.h), after the table's own.
+std::vector<MetricField<MemoryRowFigures>> transientFields() {
+  using D = results::Direction;
+  using R = MemoryRowFigures;
+  return {
+      // transient_vertex_bytes: bytes; 0 on the tessellator path (best: its points stream
+      //   from the TES to the rasteriser), unbounded (worst); the compute path's vertex buffer
+      {"transient_vertex_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       [](const R& r) { return r.transient ? double(r.transient->vertex_bytes) : 0.0; }},
+      // transient_index_bytes: bytes; 0 on the tessellator path (best), unbounded (worst)
+      {"transient_index_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+       [](const R& r) { return r.transient ? double(r.transient->index_bytes) : 0.0; }},
+      // transient_over_plain: ratio; 0 on the tessellator path (best), about 1.5 to 2.5 on the
+      //   compute path (its unwelded 40-byte records against the plain mesh's welded 32-byte
+      //   vertices; worst: unbounded)
+      {"transient_over_plain", results::Unit::kRatio, D::kLowerIsBetter,
+       [](const R& r) {
+         return r.transient ? double(r.transient->bytes()) / double(r.memory.plain_bytes) : 0.0;
+       }},
+  };
+}
 
 // The plain and compressed meshes are the baselines (context); the technique's own bytes
 // are better lower; plain_over_* and compressed_over_technique above 1 mean the technique
@@ -34,7 +61,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   auto footprint = [](uint64_t techniques::DataFootprint::*member) {
     return [member](const R& r) { return double(r.memory.technique.*member); };
   };
-  static const MetricTable<R> kTable{
+  static const MetricTable<R> kTable{{
       // plain_vertices: count; context: the welded plain mesh's vertices at the level
       {"plain_vertices", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
       // plain_triangles: count; context
@@ -110,7 +137,7 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
          if (!r.map_file_bytes) return std::nullopt;
          return double(*r.map_file_bytes);
        }},
-  };
+  }, transientFields()};
   return kTable;
 }
 
@@ -199,6 +226,11 @@ class MemoryMeasure final : public Measure {
          "the 33 words per patch of owners and corner directions the displaced TES reads, and "
          "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record has "
          "it); summaries leave these rows out",
+         "path = compute rows: the same level drawn through the compute path "
+         "(core/gpu/compute_path.h), which writes every patch's points (unwelded, a 40-byte "
+         "record: patch, coordinate, position, normal) and triangles (32-bit indices) to "
+         "transient device buffers each frame; transient_* are those bytes, 0 on the "
+         "tessellator path's rows (its points stream from the TES to the rasteriser)",
          "simulations (rows keyed by state = resident): Simulation::footprint, the state and "
          "auxiliary buffers the GPU keeps for the scenario, against the alternative the "
          "simulation names (its record's note says which)"},
@@ -236,6 +268,8 @@ class MemoryMeasure final : public Measure {
       }
       return result;
     }
+    const std::string compute_skip =
+        computeSkipReason(*input.patches, input.displacement != nullptr);
     for (uint32_t level : kMemoryLevels) {
       MemoryRowFigures figures{measureMemory(*input.patches, level),
                                input.patches->patchCount(), std::nullopt};
@@ -256,10 +290,39 @@ class MemoryMeasure final : public Measure {
       }
       results::MetricRow row;
       row.keys["level"] = std::to_string(level);
+      row.keys["path"] = "tessellator";
       row.metrics = memoryTable().metrics(figures);
       result.rows.push_back(std::move(row));
+      result.rows.push_back(computeRow(*input.patches, compute_skip, figures));
     }
     return result;
+  }
+
+ private:
+  // The same level on the compute path: the tessellator row's figures and the transient
+  // buffers; skipped where the compute path cannot run the program.
+  static results::MetricRow computeRow(const techniques::SurfacePatches& patches,
+                                       const std::string& reason, MemoryRowFigures figures) {
+    results::MetricRow row;
+    row.keys["level"] = std::to_string(figures.memory.level);
+    row.keys["path"] = "compute";
+    if (!reason.empty()) {
+      return results::unmeasuredRow(std::move(row.keys), results::MeasureStatus::kSkipped, reason);
+    }
+    figures.transient = computePathTransient(patches, figures.memory.level);
+    row.metrics = memoryTable().metrics(figures);
+    return row;
+  }
+
+  // Why the compute path cannot run the surface ("" when it can).
+  static std::string computeSkipReason(const techniques::SurfacePatches& patches, bool displaced) {
+    if (displaced) return "the compute path does not displace yet";
+    const std::vector<gpu::GpuPatchProgram> programs = patches.gpuPrograms();
+    if (programs.empty()) return "the technique has no GPU program";
+    for (const gpu::GpuPatchProgram& program : programs) {
+      if (program.compute_shader.empty()) return program.evaluation_shader + " has no compute shader";
+    }
+    return "";
   }
 };
 

@@ -28,6 +28,10 @@ struct CrackCaptureOptions {
   // Captured vertices held on the host at once (one runPatchProgram call per chunk of
   // patches): bounds memory whatever the patch count.
   uint64_t max_vertices_per_call = 1u << 20;
+  // The compute path (core/gpu/compute_path.h) in place of the TCS + TES: every domain point
+  // under the same levels is evaluated by the technique's compute shader, and the boundary
+  // points among them are kept.
+  bool compute_path = false;
 };
 
 struct BoundaryCapture {

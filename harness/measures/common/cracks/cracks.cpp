@@ -19,6 +19,22 @@
 namespace tb::measures {
 namespace {
 
+// Why a device backend cannot run (empty: it can): no program, no device, or on the compute
+// path a program without a compute shader or a displaced build (not on the compute path yet).
+std::string deviceSkipReason(std::span<const gpu::GpuPatchProgram> programs, CrackBackend backend,
+                             const gpu::Context* context) {
+  if (programs.empty()) return "the technique has no GPU program";
+  if (context == nullptr) return "no Vulkan device";
+  if (backend != CrackBackend::kGpuCompute) return "";
+  for (const gpu::GpuPatchProgram& program : programs) {
+    if (program.compute_shader.empty()) {
+      return "the program " + program.evaluation_shader + " has no compute shader";
+    }
+    if (program.displacement != nullptr) return "the compute path does not displace yet";
+  }
+  return "";
+}
+
 uint32_t cornerCount(techniques::PatchDomain domain) {
   return domain == techniques::PatchDomain::kQuad ? 4 : 3;
 }
@@ -238,7 +254,11 @@ bool sameBoundaryPoints(const PatchBoundaries& a, const PatchBoundaries& b) {
 }  // namespace
 
 const char* toString(CrackBackend backend) {
-  return backend == CrackBackend::kGpu ? "gpu" : "cpu_float";
+  return backend == CrackBackend::kCpuFloat ? "cpu_float" : "gpu";
+}
+
+const char* crackPath(CrackBackend backend) {
+  return backend == CrackBackend::kGpuCompute ? "compute" : "tessellator";
 }
 
 SharedBoundaries findSharedBoundaries(const techniques::SurfacePatches& patches) {
@@ -398,15 +418,9 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   figures.shared_corners = shared_.corners.size();
   figures.seam_edges = seam_edges_;
   figures.patches_compared = sampled_count_;
-  if (backend == CrackBackend::kGpu) {
-    if (programs_.empty()) {
-      figures.skipped_reason = "the technique has no GPU program";
-      return figures;
-    }
-    if (context == nullptr) {
-      figures.skipped_reason = "no Vulkan device";
-      return figures;
-    }
+  if (backend != CrackBackend::kCpuFloat) {
+    figures.skipped_reason = deviceSkipReason(programs_, backend, context);
+    if (!figures.skipped_reason.empty()) return figures;
   }
 
   // Outside the sample, zero levels: no boundary points, nothing drawn.
@@ -434,8 +448,10 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
     copyPairFigures(cpuPairs(e), &figures);
     return figures;
   }
-  const BoundaryCapture capture =
-      captureBoundaryPositions(patches_, programs_, e.boundaries, spacing, patch_levels, *context);
+  CrackCaptureOptions capture_options;
+  capture_options.compute_path = backend == CrackBackend::kGpuCompute;
+  const BoundaryCapture capture = captureBoundaryPositions(
+      patches_, programs_, e.boundaries, spacing, patch_levels, *context, capture_options);
   figures.draws = capture.draws;
   figures.device_points = capture.points_captured;
   compareWithCpu(capture.positions, e.cpu->positions, &figures);

@@ -30,8 +30,15 @@
 
 namespace tb::measures {
 
-enum class CrackBackend { kCpuFloat, kGpu };
+// kGpu: the technique's TCS + TES through the tessellator; kGpuCompute: the same surface on
+// the compute path (core/gpu/compute_path.h: compute tessellator, the technique's compute
+// shader, no tessellation stage). Both are the row key backend = "gpu"; crackPath() gives
+// the row key path.
+enum class CrackBackend { kCpuFloat, kGpu, kGpuCompute };
 const char* toString(CrackBackend backend);
+// "tessellator" (the CPU float model and the TES both follow the tessellator's points) or
+// "compute".
+const char* crackPath(CrackBackend backend);
 
 // One side of a shared edge or corner. Local edge k runs from corner k to corner k + 1
 // (mod the corner count); corners follow technique.h (quad (0,0),(1,0),(1,1),(0,1);
