@@ -1,9 +1,16 @@
 // The non-virtual helpers of technique.h and variant_param.h.
 #include "techniques/technique.h"
 
+#include "techniques/common/curvature_bounds.h"
 #include "techniques/variant_param.h"
 
 namespace tb::techniques {
+
+std::optional<CurvatureBounds> SurfacePatches::curvatureBounds(size_t patch) const {
+  const std::optional<PatchCullBounds> bounds = cullBounds(patch);
+  if (!bounds) return std::nullopt;
+  return curvatureBoundsFromNet(*bounds, patchDomain(patch));
+}
 
 const mesh::Mesh& requireMesh(const TechniqueInfo& technique, const TechniqueInput& input) {
   if (input.mesh == nullptr) throw UnsupportedInput(technique.id + ": needs a mesh asset as input");

@@ -111,6 +111,31 @@ struct PatchCullBounds {
   bool bezier_mirrored = false;
 };
 
+// Bounds on the second derivatives of one patch (SurfacePatches::curvatureBounds), what the
+// error_bound factor policy (harness/lod/factor_policy.h) turns into tessellation levels:
+// a piecewise-linear interpolant of a C^2 curve on segments of parameter length h is within
+// h^2 / 8 sup|C''| of it (Wang's formula for a Bezier curve of degree d: sup|C''| <=
+// d (d - 1) max|P_{i+2} - 2 P_{i+1} + P_i|), and on an n x n grid of a patch within
+// (uu + 2 uv + vv) / (8 n^2) (Filip, Magedson & Markot, CAGD 1986). World units of
+// controlMesh() per unit parameter squared; computed in double from the patch's exact form,
+// never sampled (a sampled maximum is no bound).
+struct CurvatureBounds {
+  // sup over the domain of |d2S/du2|, |d2S/dudv| and |d2S/dv2|, (u, v) the DomainCoord of
+  // evaluate(); on a triangle patch the first two barycentric coordinates with w = 1 - u - v
+  // dependent. Best 0 (an affine patch); larger means more bending.
+  double uu = 0, uv = 0, vv = 0;
+  // Per outer edge j in gl_TessLevelOuter order (quad: u = 0, v = 0, u = 1, v = 1; triangle:
+  // u = 0, v = 0, w = 0; a triangle's edge[3] is 0): sup |C''| of the edge's boundary curve C
+  // parameterised from 0 to 1 between its two corners, from what determines that curve alone
+  // (a Bezier net's boundary row), so the two patches of a shared edge agree up to rounding.
+  std::array<double, 4> edge{};
+  // Per outer edge: points whose convex hull contains the edge curve (the boundary row of a
+  // Bezier net; the patch's hull where no tighter set is known). Never empty for j < edges.
+  std::array<std::vector<mesh::Vec3d>, 4> edge_hull;
+  // Points whose convex hull contains the whole patch (as PatchCullBounds::hull).
+  std::vector<mesh::Vec3d> hull;
+};
+
 // Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
 // evaluators run with CountingScalar in the shader's operation order.
 struct OperationProfile {
@@ -164,6 +189,10 @@ class SurfacePatches {
     (void)patch;
     return std::nullopt;
   }
+  // Second-derivative bounds of patch p (CurvatureBounds), or nullopt when the technique
+  // gives none (the error_bound policy then skips it with that reason). The default reads
+  // cullBounds()'s Bezier net (techniques/common/curvature_bounds.h) when it has one.
+  virtual std::optional<CurvatureBounds> curvatureBounds(size_t patch) const;
   virtual DataFootprint footprint() const = 0;
   // Non-fatal notes gathered while building ("3 quads fan-triangulated").
   virtual const std::vector<std::string>& warnings() const = 0;
