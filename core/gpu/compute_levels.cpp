@@ -11,7 +11,7 @@ namespace tb::gpu {
 namespace {
 
 constexpr uint32_t kLevelsGroupSize = 64;                 // policy_levels.comp's local_size_x
-constexpr size_t kLevelsCornerWords = 32;                 // TcsFactorPolicy::corner_words per patch
+constexpr size_t kLevelsCornerWords = 64;                 // TcsFactorPolicy::corner_words per patch
 constexpr uint32_t kLevelsReadBackWords = 8;              // TbFactorOut per patch: 2 uvec4
 constexpr const char* kLevelsReadBack = "policy_levels";  // binding 3
 

@@ -33,7 +33,7 @@ constexpr bool kSanitizedAllocator = false;
 #endif
 
 // Set 1's factor policy corners: words per patch (TcsFactorPolicy::corner_words).
-constexpr uint32_t kFactorCornerWordsPerPatch = 32;
+constexpr uint32_t kFactorCornerWordsPerPatch = 64;
 
 // TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
 struct PatchLevelsBits {

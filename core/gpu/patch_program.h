@@ -45,8 +45,9 @@ struct CapturedVertex {
 // (shaders/common/tess_factors.glsl) in place of the harness's levels. Plain words; the
 // CPU twin that packs them is harness/lod/factor_policy.h.
 struct TcsFactorPolicy {
-  // Per program patch, 4 corners of 8 words (position xyzw, normal xyzw; float bits):
-  // TbFactorCorners at set 1, binding 1.
+  // Per program patch, 64 words (float bits): 4 corners of 8 words (position xyzw, normal
+  // xyzw), then the error_bound policy's 4 edge spheres, edge bounds, patch sphere, inner
+  // bound and a pad vec4 (harness/lod/error_bound.h): TbFactorPatches at set 1, binding 1.
   std::vector<uint32_t> corner_words;
   std::vector<uint32_t> param_words;  // TbFactorParamsBlock at set 1, binding 2
 };
@@ -99,7 +100,7 @@ struct PatchProgramOptions {
   bool skip_culled = false;
   // Non-null: the TCS computes its own levels with this policy (kTbFactorPolicy = 1), and
   // the call returns them (tcs_levels). patch_levels are then only the expected levels,
-  // which size the capture: pass the CPU twin's. Its corner_words must hold 32 words per
+  // which size the capture: pass the CPU twin's. Its corner_words must hold 64 words per
   // program patch.
   const TcsFactorPolicy* factor_policy = nullptr;
   // Non-null: the TCS culls with this policy (kTbCullPolicy = 1) and the call returns the

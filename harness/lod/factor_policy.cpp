@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 
 #include "core/mesh/topology.h"
@@ -12,9 +13,12 @@ namespace tb::lod {
 namespace {
 
 constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
-constexpr size_t kParamWords = 32;   // TbFactorParamsBlock, std430
-constexpr size_t kCornerWords = 32;  // 4 corners x (position vec4, normal vec4)
+constexpr size_t kParamWords = 36;  // TbFactorParamsBlock, std430
+// TbFactorPatch: 4 corners x (position vec4, normal vec4), then error_bound's 4 edge spheres,
+// edge bounds, patch sphere, inner bound and a pad vec4.
+constexpr size_t kPatchWords = 64;
 constexpr const char* kOrderDependentSuffix = "_order_dependent";
+constexpr const char* kLooseSuffix = "_loose";
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
 float dotF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
@@ -56,6 +60,8 @@ const char* kindName(FactorPolicyKind kind) {
       return "sphere_diameter";
     case FactorPolicyKind::kLp2Edge:
       return "lp2_edge";
+    case FactorPolicyKind::kErrorBound:
+      return "error_bound";
   }
   return "?";
 }
@@ -83,12 +89,33 @@ std::vector<mesh::Vec3f> weldedNormals(const mesh::Mesh& mesh, const mesh::Weldi
   return normals;
 }
 
+// tbCleanupFactor, tbRoundUpFactor and tbClampFactor of tess_factors.glsl.
+float cleanupFactor(float x) { return (std::isnan(x) || x < 1.0f) ? 1.0f : x; }
+float roundUpFactor(float x, tess::Spacing spacing) {
+  if (spacing == tess::Spacing::kPow2) {
+    const uint32_t bits = std::bit_cast<uint32_t>(x);
+    if ((bits & 0x007fffffu) == 0) return x;
+    return std::bit_cast<float>((bits & 0x7f800000u) + 0x00800000u);
+  }
+  return spacing == tess::Spacing::kInteger ? std::ceil(x) : x;
+}
+float clampFactor(float x, tess::Spacing spacing) {
+  const float low = spacing == tess::Spacing::kFractionalEven ? 2.0f : 1.0f;
+  const float high = spacing == tess::Spacing::kFractionalOdd ? 63.0f : 64.0f;
+  const float at_least_low = x > low ? x : low;
+  return high < at_least_low ? high : at_least_low;
+}
+float roundedLevel(float raw, tess::Spacing spacing) {
+  return clampFactor(roundUpFactor(cleanupFactor(raw), spacing), spacing);
+}
+
 }  // namespace
 
 std::string FactorPolicy::name() const {
   std::string name = kindName(kind);
   if (silhouette) name += "_silhouette";
   if (roundness) name += "_roundness";
+  if (loose) name += kLooseSuffix;
   if (order_dependent) name += kOrderDependentSuffix;
   return name;
 }
@@ -103,6 +130,8 @@ const char* FactorPolicy::targetUnit() const {
       return "px/edge";
     case FactorPolicyKind::kLp2Edge:
       return "C";
+    case FactorPolicyKind::kErrorBound:
+      return "px";
   }
   return "";
 }
@@ -117,6 +146,8 @@ double defaultTarget(FactorPolicyKind kind) {
       return 8;
     case FactorPolicyKind::kLp2Edge:
       return 0.15;
+    case FactorPolicyKind::kErrorBound:
+      return 1;
   }
   return 1;
 }
@@ -134,11 +165,15 @@ std::optional<FactorPolicy> parseFactorPolicy(std::string_view name) {
   } else if (name == "lp2_edge_roundness") {
     policy.kind = FactorPolicyKind::kLp2Edge;
     policy.roundness = true;
+  } else if (name == std::string("error_bound") + kLooseSuffix) {
+    policy.kind = FactorPolicyKind::kErrorBound;
+    policy.loose = true;
   } else {
     bool found = false;
     for (FactorPolicyKind kind :
          {FactorPolicyKind::kUniform, FactorPolicyKind::kDistance,
-          FactorPolicyKind::kSphereDiameter, FactorPolicyKind::kLp2Edge}) {
+          FactorPolicyKind::kSphereDiameter, FactorPolicyKind::kLp2Edge,
+          FactorPolicyKind::kErrorBound}) {
       if (name == kindName(kind)) {
         policy.kind = kind;
         found = true;
@@ -191,7 +226,25 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
                  (policy.roundness ? kFlagRoundness : 0);
   params.reduction = uint32_t(policy.reduction);
   params.spacing = uint32_t(spacing);
+  // error_bound: f_px = H |P11| / 2 pixels per unit of x / w; the projection's Jacobian
+  // stretches a world error at depth w by at most k f_px / w inside the view.
+  const double tan_y = 1 / view.projection_y_scale;
+  const double tan_x = tan_y * double(view.viewport_width_px) / double(view.viewport_height_px);
+  const double k = std::sqrt(1 + tan_x * tan_x + tan_y * tan_y);
+  const double f_px = double(view.viewport_height_px) * view.projection_y_scale / 2;
+  params.error_scale = float(policy.target / (f_px * k) * (policy.loose ? 2 : 1));
+  params.near_w = float(view.near_plane);
+  const auto& m = view.view_projection.m;
+  params.hull_w_scale = float(std::sqrt(m[0][3] * m[0][3] + m[1][3] * m[1][3] + m[2][3] * m[2][3]));
   return params;
+}
+
+float errorBoundLevel(const FactorParams& params, const std::array<float, 4>& sphere, float m) {
+  const float near_w = clipW(params, {sphere[0], sphere[1], sphere[2]}) - sphere[3] * params.hull_w_scale;
+  if (!(near_w > params.near_w)) return 64.0f;
+  const float eps = near_w * params.error_scale;
+  const float level = std::sqrt(m / eps);
+  return level > 1.0f ? level : 1.0f;
 }
 
 float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
@@ -225,6 +278,8 @@ float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
       factor = f0 < f1 ? f1 : f0;
       break;
     }
+    case FactorPolicyKind::kErrorBound:  // per edge from its bound (errorBoundLevel), not corners
+      break;
   }
   if ((params.flags & kFlagSilhouette) != 0) {
     const mesh::Vec3f n = normalizeF(add(na, nb));
@@ -240,8 +295,28 @@ float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
   return factor;
 }
 
+// error_bound's branch of tbPolicyLevels: every edge from its own record, the inside from
+// the patch's (a triangle leaves outer[3] and inner[1] at 0, as the shader writes them).
+tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomain domain,
+                              const ErrorBoundPatch& bound) {
+  const auto spacing = tess::Spacing(params.spacing);
+  const bool quad = domain == techniques::PatchDomain::kQuad;
+  tess::Levels levels;
+  levels.outer = {0, 0, 0, 0};
+  for (size_t j = 0; j < (quad ? 4u : 3u); ++j) {
+    levels.outer[j] = roundedLevel(errorBoundLevel(params, bound.edge_sphere[j], bound.edge_m[j]), spacing);
+  }
+  const float inside = roundedLevel(errorBoundLevel(params, bound.patch_sphere, bound.inner_m), spacing);
+  levels.inner = {inside, quad ? inside : 0.0f};
+  return levels;
+}
+
 tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
-                          const std::array<FactorCorner, 4>& corners) {
+                          const std::array<FactorCorner, 4>& corners, const ErrorBoundPatch* bound) {
+  if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
+    if (bound == nullptr) throw std::logic_error("policyLevels: error_bound without its bounds");
+    return errorBoundLevels(params, domain, *bound);
+  }
   const auto spacing = tess::Spacing(params.spacing);
   const auto reduction = InnerReduction(params.reduction);
   if (domain == techniques::PatchDomain::kQuad) {
@@ -277,7 +352,8 @@ tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain do
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners) {
   std::vector<tess::Levels> levels(corners.patches.size());
   for (size_t p = 0; p < levels.size(); ++p) {
-    levels[p] = policyLevels(params, corners.domains[p], corners.patches[p]);
+    levels[p] = policyLevels(params, corners.domains[p], corners.patches[p],
+                             corners.error_bounds.empty() ? nullptr : &corners.error_bounds[p]);
   }
   return levels;
 }
@@ -285,15 +361,24 @@ std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorC
 gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCorners& corners,
                                      const gpu::GpuPatchProgram& program) {
   gpu::TcsFactorPolicy out;
-  out.corner_words.reserve(size_t(program.patch_count) * kCornerWords);
+  out.corner_words.reserve(size_t(program.patch_count) * kPatchWords);
+  const auto push = [&](float f) { out.corner_words.push_back(std::bit_cast<uint32_t>(f)); };
   for (uint32_t i = 0; i < program.patch_count; ++i) {
     const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
     for (const FactorCorner& corner : corners.patches.at(patch)) {
       for (const mesh::Vec3f* v : {&corner.position, &corner.normal}) {
-        for (int k = 0; k < 3; ++k) out.corner_words.push_back(std::bit_cast<uint32_t>((*v)[k]));
-        out.corner_words.push_back(0);
+        for (int k = 0; k < 3; ++k) push((*v)[k]);
+        push(0);
       }
     }
+    const ErrorBoundPatch bound =
+        corners.error_bounds.empty() ? ErrorBoundPatch{} : corners.error_bounds.at(patch);
+    for (const auto& sphere : bound.edge_sphere) {
+      for (float f : sphere) push(f);
+    }
+    for (float f : bound.edge_m) push(f);
+    for (float f : bound.patch_sphere) push(f);
+    for (float f : {bound.inner_m, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) push(f);
   }
   out.param_words.reserve(kParamWords);
   for (float m : params.view_projection) out.param_words.push_back(std::bit_cast<uint32_t>(m));
@@ -306,6 +391,9 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
   const uint32_t domain = program.domain == tess::Domain::kQuad ? 1u : 0u;
   for (uint32_t u : {params.policy, params.flags, params.reduction, params.spacing, domain, 0u}) {
     out.param_words.push_back(u);
+  }
+  for (float f : {params.error_scale, params.near_w, params.hull_w_scale, 0.0f}) {
+    out.param_words.push_back(std::bit_cast<uint32_t>(f));
   }
   return out;
 }

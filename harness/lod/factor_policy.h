@@ -30,6 +30,15 @@
 // - the suffix `_order_dependent` on any policy takes the corners in patch order instead:
 //   deliberately not crack-safe (the midpoint a + (b - a) / 2 rounds differently when the
 //   two patches run the edge in opposite directions), so the measure can be seen to fail.
+// - error_bound: the level the technique's own second-derivative bounds need for a
+//   tessellation error of at most `target` pixels (error_bound.h): edge j = sqrt(M_j / (8
+//   eps)) from the bound of the edge's curve alone, inner = sqrt((M_uu + 2 M_uv + M_vv) /
+//   (8 eps)); eps = target z_near / (f_px k) world units, z_near the nearest clip w of the
+//   edge's (inner: the patch's) hull sphere, f_px = H |P[1][1]| / 2 and k = sqrt(1 +
+//   tan^2(fov_x / 2) + tan^2(fov_y / 2)) the largest stretch of the projection's Jacobian
+//   inside the view; a hull that reaches the near plane gets level 64. No search: the
+//   target is the error. `error_bound_loose` doubles eps: a control that must break the
+//   1 px criterion somewhere.
 #pragma once
 
 #include <array>
@@ -44,6 +53,7 @@
 #include "core/mesh/vec.h"
 #include "core/tess/tessellator.h"
 #include "core/view/view.h"
+#include "harness/lod/error_bound.h"
 #include "techniques/technique.h"
 
 namespace tb::lod {
@@ -53,6 +63,7 @@ enum class FactorPolicyKind : uint32_t {  // TbFactorParams::policy
   kDistance = 1,
   kSphereDiameter = 2,
   kLp2Edge = 3,
+  kErrorBound = 4,
 };
 
 enum class InnerReduction : uint32_t { kAverage = 0, kMax = 1, kMin = 2 };
@@ -62,6 +73,7 @@ struct FactorPolicy {
   bool silhouette = false;       // lp2_edge only
   bool roundness = false;        // lp2_edge only
   bool order_dependent = false;  // any policy; not crack-safe
+  bool loose = false;            // error_bound only: eps doubled (a control)
   double target = 8;             // see the header comment for its unit per policy
   InnerReduction reduction = InnerReduction::kAverage;
   double min_scale = 0.25;          // s_min of the reductions, (0, 1]
@@ -92,6 +104,9 @@ struct FactorCorner {
 struct FactorCorners {
   std::vector<std::array<FactorCorner, 4>> patches;
   std::vector<techniques::PatchDomain> domains;
+  // error_bound's inputs, one per patch (errorBounds()); empty until a caller that runs
+  // error_bound sets them.
+  std::vector<ErrorBoundPatch> error_bounds;
 };
 FactorCorners factorCorners(const techniques::SurfacePatches& patches);
 
@@ -106,6 +121,12 @@ struct FactorParams {
   float min_scale = 1;
   float roundness_span = 1;  // 1 - cos(roundness angle)
   uint32_t policy = 0, flags = 0, reduction = 0, spacing = 0;
+  // error_bound: world error per unit of clip w (target / (f_px k), doubled when loose), the
+  // near plane's clip w, and |row 3 of the matrix's xyz| (a sphere's nearest clip w is
+  // w(centre) - radius * this).
+  float error_scale = 0;
+  float near_w = 0;
+  float hull_w_scale = 0;
 };
 // world_scale: the asset's bounding-box diagonal (distance's unit).
 FactorParams factorParams(const FactorPolicy& policy, const view::View& view, tess::Spacing spacing,
@@ -114,9 +135,15 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
 // The twin of tbEdgeFactor: the raw factor of the edge from corner a to corner b.
 float edgeFactor(const FactorParams& params, const FactorCorner& a, const FactorCorner& b);
 
-// The twin of tbWritePolicyLevels: one patch's levels (culled patches: all 0).
+// The twin of tbErrorBoundLevel: the raw level for a bound m (sup|C''| / 8) over a hull
+// sphere (xyz centre, w radius).
+float errorBoundLevel(const FactorParams& params, const std::array<float, 4>& sphere, float m);
+
+// The twin of tbPolicyLevels: one patch's levels (culled patches: all 0). error_bound reads
+// `bound` (std::logic_error when null).
 tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
-                          const std::array<FactorCorner, 4>& corners);
+                          const std::array<FactorCorner, 4>& corners,
+                          const ErrorBoundPatch* bound = nullptr);
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners);
 
 // The device's input for `program` (one of the patches' gpuPrograms()): corners in program

@@ -314,8 +314,10 @@ FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const t
 
 ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
                                                     std::span<const tess::Levels> levels,
-                                                    const view::View& view, uint64_t* triangles) {
+                                                    const view::View& view, uint64_t* triangles,
+                                                    std::vector<double>* patch_max_px) {
   requireLevels(patches_, levels);
+  if (patch_max_px != nullptr) patch_max_px->assign(levels.size(), 0.0);
   ErrorSums sums;
   uint64_t triangle_count = 0;
   tbb::enumerable_thread_specific<Scratch> scratch;
@@ -335,6 +337,7 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
     for (size_t i = 0; i < count; ++i) {
       sums.merge(slots[i]);
       triangle_count += patterns[chunk.key_of[0][i]]->triangles.size();
+      if (patch_max_px != nullptr) (*patch_max_px)[chunk.begin + i] = slots[i].max_px;
     }
   });
   if (triangles != nullptr) *triangles = triangle_count;

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "core/tess/tessellator.h"
 #include "core/view/view.h"
@@ -88,9 +89,11 @@ class ScreenMetrics {
                            const view::View& view);
 
   // Only FrameScreenFigures::tessellation_error and, when `triangles` is not null, the
-  // triangle count (what a parameter sweep needs; no edges, no reference).
+  // triangle count (what a parameter sweep needs; no edges, no reference); when
+  // `patch_max_px` is not null, each patch's largest visible error (0 without visible samples).
   ScreenErrorFigures tessellationError(tess::Spacing spacing, std::span<const tess::Levels> levels,
-                                       const view::View& view, uint64_t* triangles = nullptr);
+                                       const view::View& view, uint64_t* triangles = nullptr,
+                                       std::vector<double>* patch_max_px = nullptr);
 
   // Popping between consecutive frames: how far the tessellated (piecewise-linear) surface
   // moves on screen at fixed surface points because the levels changed, the camera held

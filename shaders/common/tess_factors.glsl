@@ -3,7 +3,8 @@
 // harness/measures/factor_policy.{h,cpp}: same operations in the same order, in float, so
 // the levels a TCS writes are bitwise the twin's (tests/measures/factor_policy_gpu_test.cpp).
 //
-//   set 1, binding 1   per patch, 4 corners: welded position and shared unit normal
+//   set 1, binding 1   per patch: 4 corners (welded position and shared unit normal) and
+//                      error_bound's bounds and hull spheres (harness/lod/error_bound.h)
 //   set 1, binding 2   the policy and the view (TbFactorParams)
 //   set 1, binding 3   the levels the TCS wrote, per patch (read back by the harness)
 //
@@ -30,6 +31,7 @@ const uint kTbPolicyUniform = 0u;         // every edge = target (a level)
 const uint kTbPolicyDistance = 1u;        // target / |eye - midpoint| (target: level x world units)
 const uint kTbPolicySphereDiameter = 2u;  // |d P11 / w| * H / (2 target px)
 const uint kTbPolicyLp2Edge = 3u;         // max(L R C / D0, L R C / D1), C = target
+const uint kTbPolicyErrorBound = 4u;      // sqrt(M / (8 eps)), eps from target px (error_bound.h)
 // TbFactorParams::flags
 const uint kTbFactorOrderDependent = 1u;
 const uint kTbFactorSilhouette = 2u;  // scale by 1 - (1 - s_min) |n . v|
@@ -49,8 +51,17 @@ struct TbFactorCorner {
   vec4 normal;    // xyz: the welded position's unit normal (the same on both sides of a seam)
 };
 
-layout(std430, set = TB_HARNESS_SET, binding = 1) readonly buffer TbFactorCorners {
-  TbFactorCorner tb_factor_corners[];  // 4 per patch (triangles use 3)
+struct TbFactorPatch {
+  TbFactorCorner corner[4];  // triangles use 3
+  vec4 edge_sphere[4];       // error_bound, per outer edge: xyz centre, w radius (world)
+  vec4 edge_m;               // error_bound, per outer edge: sup|C''| / 8 (world)
+  vec4 patch_sphere;         // error_bound: around the patch's hull
+  vec4 inner_m;              // error_bound, x: (M_uu + 2 M_uv + M_vv) / 8 (world)
+  vec4 pad;
+};
+
+layout(std430, set = TB_HARNESS_SET, binding = 1) readonly buffer TbFactorPatches {
+  TbFactorPatch tb_factor_patches[];
 };
 
 layout(std430, set = TB_HARNESS_SET, binding = 2) readonly buffer TbFactorParamsBlock {
@@ -68,6 +79,10 @@ layout(std430, set = TB_HARNESS_SET, binding = 2) readonly buffer TbFactorParams
   uint spacing;
   uint domain;  // 0 triangle, 1 quad (tess::Domain)
   uint pad0;
+  float error_scale;   // error_bound: world error per unit of clip w (target / (f_px k))
+  float near_w;        // error_bound: the near plane's clip w
+  float hull_w_scale;  // error_bound: |row 3 of view_projection, xyz|
+  float pad1;
 } tb_factor;
 
 // The levels the TCS wrote (float bits, the TbPatchLevels layout), per patch.
@@ -193,6 +208,21 @@ float tbEdgeFactor(vec3 a, vec3 b, vec3 na, vec3 nb) {
   return factor;
 }
 
+// error_bound's raw level for a bound m = sup|C''| / 8 over the hull sphere (xyz centre, w
+// radius): sqrt(m / eps) with eps = the sphere's nearest clip w x error_scale; 64 when the
+// sphere reaches the near plane; at least 1 (a straight edge is never culled).
+float tbErrorBoundLevel(vec4 sphere, float m) {
+  precise float near_w = tbClipW(sphere.xyz) - sphere.w * tb_factor.hull_w_scale;
+  if (!(near_w > tb_factor.near_w)) return 64.0;
+  precise float eps = near_w * tb_factor.error_scale;
+  precise float level = sqrt(m / eps);
+  return level > 1.0 ? level : 1.0;
+}
+
+float tbRoundedLevel(float raw) {
+  return tbClampFactor(tbRoundUpFactor(tbCleanupFactor(raw), tb_factor.spacing), tb_factor.spacing);
+}
+
 // This patch's levels from the policy (outer[0..3], inner[0..1]; triangles leave outer[3]
 // and inner[1] at 0). Call from one invocation.
 void tbPolicyLevels(uint patch_index, out float outer[4], out float inner[2]) {
@@ -200,9 +230,20 @@ void tbPolicyLevels(uint patch_index, out float outer[4], out float inner[2]) {
   const uint n = quad ? 4u : 3u;
   vec3 p[4];
   vec3 nrm[4];
+  if (tb_factor.policy == kTbPolicyErrorBound) {
+    outer = float[4](0.0, 0.0, 0.0, 0.0);
+    for (uint j = 0u; j < n; ++j) {
+      outer[j] = tbRoundedLevel(tbErrorBoundLevel(tb_factor_patches[patch_index].edge_sphere[j],
+                                                  tb_factor_patches[patch_index].edge_m[j]));
+    }
+    const float inside = tbRoundedLevel(tbErrorBoundLevel(
+        tb_factor_patches[patch_index].patch_sphere, tb_factor_patches[patch_index].inner_m.x));
+    inner = float[2](inside, quad ? inside : 0.0);
+    return;
+  }
   for (uint c = 0u; c < 4u; ++c) {
-    p[c] = tb_factor_corners[patch_index * 4u + c].position.xyz;
-    nrm[c] = tb_factor_corners[patch_index * 4u + c].normal.xyz;
+    p[c] = tb_factor_patches[patch_index].corner[c].position.xyz;
+    nrm[c] = tb_factor_patches[patch_index].corner[c].normal.xyz;
   }
   // gl_TessLevelOuter[j] is the edge between corners (start, end): quad (u = 0, v = 0,
   // u = 1, v = 1) = (3,0), (0,1), (1,2), (2,3); triangle (u = 0, v = 0, w = 0) = (1,2),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include "core/gpu/compute_levels.h"
@@ -30,6 +31,7 @@ TargetRange targetRange(lod::FactorPolicyKind kind) {
     case lod::FactorPolicyKind::kLp2Edge:
       return {0.002, 20};  // C
     case lod::FactorPolicyKind::kUniform:
+    case lod::FactorPolicyKind::kErrorBound:  // not searched: its target is the error
       break;
   }
   return {1, 64};
@@ -186,6 +188,7 @@ std::vector<AdaptivityFrame> AdaptivityRun::frames(const lod::FactorPolicy& poli
                                                    tess::Spacing spacing,
                                                    const std::vector<view::View>& views,
                                                    const AdaptivityParts& parts) {
+  if (!policyUnavailable(policy).empty()) throw std::logic_error(policyUnavailable(policy));
   std::vector<AdaptivityFrame> frames;
   std::vector<tess::Levels> previous;
   for (size_t f = 0; f < views.size(); ++f) {
@@ -226,15 +229,30 @@ AdaptivityRun::PathError AdaptivityRun::pathError(const lod::FactorPolicy& polic
   return error;
 }
 
+const std::string& AdaptivityRun::policyUnavailable(const lod::FactorPolicy& policy) {
+  static const std::string kNone;
+  if (policy.kind != lod::FactorPolicyKind::kErrorBound) return kNone;
+  if (!error_bounds_tried_) {
+    error_bounds_tried_ = true;
+    lod::ErrorBounds bounds = lod::errorBounds(patches_);
+    corners_.error_bounds = std::move(bounds.patches);
+    error_bound_unavailable_ = std::move(bounds.unavailable);
+  }
+  return error_bound_unavailable_;
+}
+
 AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess::Spacing spacing,
                                            const std::vector<view::View>& views,
                                            double error_target_px, int search_steps) {
   AdaptivitySummary summary;
   summary.error_target_px = error_target_px;
+  if (!policyUnavailable(policy).empty()) throw std::logic_error(policyUnavailable(policy));
 
-  // The policy: the coarsest target on a log scale whose path error is within the target.
+  // The policy: the coarsest target on a log scale whose path error is within the target;
+  // error_bound's target is the error itself (one pass).
   const TargetRange range = targetRange(policy.kind);
   auto targetAt = [&](double fineness) {
+    if (policy.kind == lod::FactorPolicyKind::kErrorBound) return error_target_px;
     return std::exp(std::log(range.coarse) +
                     fineness * (std::log(range.fine) - std::log(range.coarse)));
   };
@@ -249,7 +267,7 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
   PathError best;
   double best_fineness = -1;
   const PathError coarse = errorAt(0.0);
-  if (coarse.max_px <= error_target_px) {
+  if (coarse.max_px <= error_target_px || policy.kind == lod::FactorPolicyKind::kErrorBound) {
     best = coarse;
     best_fineness = 0.0;
   } else {
@@ -274,45 +292,64 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
   summary.triangles_per_frame = best.triangles_per_frame;
   summary.max_error_px = best.max_px;
 
-  // Uniform: the lowest integer level within the target, by doubling from 1 and then
-  // bisecting between the last level that failed and the first that passed.
+  const UniformBest& uniform = uniformBest(policy.reduction, spacing, views, error_target_px);
+  summary.evaluations += uniform.passes;
+  summary.uniform_reached = uniform.reached;
+  summary.uniform_level = uniform.level;
+  summary.uniform_triangles_per_frame = uniform.error.triangles_per_frame;
+  summary.uniform_max_error_px = uniform.error.max_px;
+  summary.triangle_ratio_vs_uniform =
+      summary.uniform_triangles_per_frame > 0
+          ? summary.triangles_per_frame / summary.uniform_triangles_per_frame
+          : 0;
+  const AdaptivityIdeal& best_possible = ideal(spacing, views, error_target_px);
+  summary.ideal_triangles_per_frame = best_possible.triangles_per_frame;
+  summary.ideal_max_error_px = best_possible.max_error_px;
+  summary.triangle_ratio_vs_ideal = summary.reached && best_possible.triangles_per_frame > 0
+                                        ? summary.triangles_per_frame / best_possible.triangles_per_frame
+                                        : 0;
+  return summary;
+}
+
+const AdaptivityRun::UniformBest& AdaptivityRun::uniformBest(lod::InnerReduction reduction,
+                                                             tess::Spacing spacing,
+                                                             const std::vector<view::View>& views,
+                                                             double error_target_px) {
+  const auto key = std::make_tuple(int(reduction), int(spacing), error_target_px);
+  if (const auto it = uniform_cache_.find(key); it != uniform_cache_.end()) return it->second;
+  // The lowest integer level within the target, by doubling from 1 and then bisecting
+  // between the last level that failed and the first that passed.
+  UniformBest best;
   lod::FactorPolicy uniform;
   uniform.kind = lod::FactorPolicyKind::kUniform;
-  uniform.reduction = policy.reduction;
+  uniform.reduction = reduction;
   const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
   auto uniformAt = [&](uint32_t level) {
     uniform.target = level;
-    ++summary.evaluations;
+    ++best.passes;
     return pathError(uniform, spacing, views);
   };
-  uint32_t fails = 0, uniform_level = 1;
-  PathError uniform_best = uniformAt(uniform_level);
-  while (uniform_best.max_px > error_target_px && uniform_level < highest) {
-    fails = uniform_level;
-    uniform_level = std::min(2 * uniform_level, highest);
-    uniform_best = uniformAt(uniform_level);
+  uint32_t fails = 0;
+  best.error = uniformAt(best.level);
+  while (best.error.max_px > error_target_px && best.level < highest) {
+    fails = best.level;
+    best.level = std::min(2 * best.level, highest);
+    best.error = uniformAt(best.level);
   }
-  summary.uniform_reached = uniform_best.max_px <= error_target_px;
-  if (summary.uniform_reached) {
-    while (uniform_level - fails > 1) {
-      const uint32_t mid = (fails + uniform_level) / 2;
+  best.reached = best.error.max_px <= error_target_px;
+  if (best.reached) {
+    while (best.level - fails > 1) {
+      const uint32_t mid = (fails + best.level) / 2;
       const PathError e = uniformAt(mid);
       if (e.max_px <= error_target_px) {
-        uniform_best = e;
-        uniform_level = mid;
+        best.error = e;
+        best.level = mid;
       } else {
         fails = mid;
       }
     }
   }
-  summary.uniform_level = uniform_level;
-  summary.uniform_triangles_per_frame = uniform_best.triangles_per_frame;
-  summary.uniform_max_error_px = uniform_best.max_px;
-  summary.triangle_ratio_vs_uniform =
-      summary.uniform_triangles_per_frame > 0
-          ? summary.triangles_per_frame / summary.uniform_triangles_per_frame
-          : 0;
-  return summary;
+  return uniform_cache_.emplace(key, best).first->second;
 }
 
 }  // namespace tb::measures

@@ -17,9 +17,11 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/gpu/context.h"
@@ -76,7 +78,21 @@ struct AdaptivitySummary {
   double uniform_max_error_px = 0;
   // triangles_per_frame / uniform_triangles_per_frame (best near 0; 1 = no saving).
   double triangle_ratio_vs_uniform = 0;
-  uint32_t evaluations = 0;  // path passes the search took
+  // The ideal (AdaptivityRun::ideal): the fewest triangles per frame any one-level-per-edge
+  // assignment of integer levels needs for the error target, per patch, mean over the path.
+  double ideal_triangles_per_frame = 0;
+  double ideal_max_error_px = 0;  // the path's largest tessellation error under the ideal
+  // triangles_per_frame / ideal_triangles_per_frame: 1 (best, as few as the ideal), above 1
+  // the policy's excess (2: twice the ideal's triangles); 0 when not reached.
+  double triangle_ratio_vs_ideal = 0;
+  uint32_t evaluations = 0;  // path passes the search took (the cached uniform and ideal once)
+};
+
+// The per-patch ideal along a path (AdaptivityRun::ideal).
+struct AdaptivityIdeal {
+  double triangles_per_frame = 0;
+  double max_error_px = 0;
+  uint32_t passes = 0;  // tessellation-error passes the search took over the path
 };
 
 // Which parts of a frame to measure (all by default; crack-safety checks need only the
@@ -109,6 +125,18 @@ class AdaptivityRun {
                               const std::vector<view::View>& views, double error_target_px,
                               int search_steps = 7);
 
+  // The per-patch ideal for error_target_px under `spacing`, each frame: every patch's lowest
+  // integer level (1..64, 63 at fractional_odd) whose own tessellation error stays within
+  // the target, by bisection on all patches at once (7 passes); a shared edge then takes the
+  // larger of its patches' levels (crack-free), the inside the patch's own. Cached per
+  // spacing and target.
+  const AdaptivityIdeal& ideal(tess::Spacing spacing, const std::vector<view::View>& views,
+                               double error_target_px);
+
+  // Why `policy` cannot run on these patches (error_bound without the technique's
+  // second-derivative bounds); empty when it can. Computes error_bound's inputs once.
+  const std::string& policyUnavailable(const lod::FactorPolicy& policy);
+
   // Why the device parts are absent; empty when they ran.
   const std::string& gpuSkipReason() const { return gpu_skip_; }
   double diagonal() const { return diagonal_; }
@@ -123,6 +151,17 @@ class AdaptivityRun {
   };
   PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
                       const std::vector<view::View>& views);
+  // The lowest uniform level within the target (summarise's uniform part), cached per spacing.
+  struct UniformBest {
+    uint32_t level = 1;
+    bool reached = false;
+    PathError error;
+    uint32_t passes = 0;
+  };
+  const UniformBest& uniformBest(lod::InnerReduction reduction, tess::Spacing spacing,
+                                 const std::vector<view::View>& views, double error_target_px);
+  std::vector<tess::Levels> idealFrame(tess::Spacing spacing, const view::View& view,
+                                       double error_target_px, uint32_t* passes);
   void runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing, const view::View& view,
                  const std::vector<tess::Levels>& twin, const AdaptivityParts& parts,
                  AdaptivityFrame* frame);
@@ -139,6 +178,10 @@ class AdaptivityRun {
   std::string gpu_skip_;
   std::vector<gpu::GpuPatchProgram> programs_;
   lod::FactorCorners corners_;
+  std::string error_bound_unavailable_;
+  bool error_bounds_tried_ = false;
+  std::map<std::tuple<int, int, double>, UniformBest> uniform_cache_;
+  std::map<std::pair<int, double>, AdaptivityIdeal> ideal_cache_;
   SharedBoundaries shared_;
   double diagonal_ = 0;
   std::unique_ptr<CrackSession> cracks_;

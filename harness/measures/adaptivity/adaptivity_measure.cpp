@@ -35,7 +35,8 @@ struct Grid {
 Grid gridFor(SuiteMode suite, const techniques::SurfacePatches& patches) {
   Grid grid;
   if (suite == SuiteMode::kFull) {
-    grid.policies = {"uniform",  "distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
+    grid.policies = {"uniform",  "distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette",
+                     "error_bound", "error_bound_loose"};
     // Roundness scales by how the vertex normals turn: the surfaces built from them
     // (PN triangles, Phong tessellation: the techniques graded against Loop).
     if (patches.approximates() == techniques::LimitScheme::kLoop)
@@ -44,16 +45,17 @@ Grid gridFor(SuiteMode suite, const techniques::SurfacePatches& patches) {
     grid.policies.push_back("distance_order_dependent");
     grid.spacings = {tess::Spacing::kInteger, tess::Spacing::kPow2, tess::Spacing::kFractionalOdd,
                      tess::Spacing::kFractionalEven};
-    grid.summary_policies = {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette"};
+    grid.summary_policies = {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette",
+                             "error_bound"};
     if (patches.approximates() == techniques::LimitScheme::kLoop) {
       grid.summary_policies.push_back("lp2_edge_roundness");
     }
     grid.summary_spacings = {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd};
     return grid;
   }
-  grid.policies = {"sphere_diameter", "distance", "lp2_edge"};
+  grid.policies = {"sphere_diameter", "distance", "lp2_edge", "error_bound"};
   grid.spacings = {tess::Spacing::kFractionalOdd};
-  grid.summary_policies = {"sphere_diameter"};
+  grid.summary_policies = {"sphere_diameter", "error_bound"};
   grid.search_steps = 5;
   grid.summary_spacings = grid.spacings;
   return grid;
@@ -223,9 +225,22 @@ const MetricTable<AdaptivitySummary>& summaryTable() {
          return s.reached && s.uniform_reached ? std::optional<double>(s.triangle_ratio_vs_uniform)
                                                : std::nullopt;
        }},
+      // triangle_ratio_vs_ideal: ratio; 1 (best: as few triangles as the per-patch ideal),
+      //   unbounded (worst); only where the policy reached the target
+      {"triangle_ratio_vs_ideal", results::Unit::kRatio, D::kLowerIsBetter,
+       [](const S& s) -> std::optional<double> {
+         return s.reached && s.ideal_triangles_per_frame > 0
+                    ? std::optional<double>(s.triangle_ratio_vs_ideal)
+                    : std::nullopt;
+       }},
       // triangles_per_frame_at_target: count; 0 (best), unbounded (worst)
       {"triangles_per_frame_at_target", results::Unit::kCount, D::kLowerIsBetter,
        &S::triangles_per_frame},
+      // ideal_triangles_per_frame: count; context: the per-patch ideal's mean triangles per frame
+      {"ideal_triangles_per_frame", results::Unit::kCount, D::kNone, &S::ideal_triangles_per_frame},
+      // ideal_path_max_error_px: pixels; context: the ideal's largest error (its shared edges take
+      //   the larger need, which may move a transition's error a little)
+      {"ideal_path_max_error_px", results::Unit::kPixels, D::kNone, &S::ideal_max_error_px},
       // uniform_triangles_per_frame: count; context
       {"uniform_triangles_per_frame", results::Unit::kCount, D::kNone,
        &S::uniform_triangles_per_frame},
@@ -366,6 +381,11 @@ class AdaptivityMeasure final : public Measure {
         row.keys["policy"] = name;
         row.keys["spacing"] = std::string(tess::toString(spacing));
         row.keys["summary"] = kSummaryKey;
+        if (const std::string& why = run.policyUnavailable(policy); !why.empty()) {
+          result.rows.push_back(
+              results::unmeasuredRow(row.keys, results::MeasureStatus::kSkipped, why));
+          continue;
+        }
         row.metrics = summaryTable().metrics(
             run.summarise(policy, spacing, path.views, kErrorTargetPx, grid.search_steps));
         result.rows.push_back(std::move(row));
@@ -374,6 +394,12 @@ class AdaptivityMeasure final : public Measure {
     for (const std::string& name : grid.policies) {
       const lod::FactorPolicy policy = *lod::parseFactorPolicy(name);
       for (tess::Spacing spacing : grid.spacings) {
+        if (const std::string& why = run.policyUnavailable(policy); !why.empty()) {
+          result.rows.push_back(results::unmeasuredRow(
+              {{"policy", name}, {"spacing", std::string(tess::toString(spacing))}, {"frame", "all"}},
+              results::MeasureStatus::kSkipped, why));
+          continue;
+        }
         for (const AdaptivityFrame& frame : run.frames(policy, spacing, path.views, parts)) {
           results::MetricRow row;
           row.keys["policy"] = name;

@@ -1,0 +1,95 @@
+// AdaptivityRun::ideal: the fewest triangles a per-patch choice of integer levels needs for
+// the error target, what every factor policy is held against (triangle_ratio_vs_ideal).
+#include <algorithm>
+#include <utility>
+
+#include "harness/measures/adaptivity/adaptivity.h"
+
+namespace tb::measures {
+namespace {
+
+// Every edge and the inside of a patch at `level` (a triangle leaves outer[3], inner[1] 0).
+tess::Levels patchAt(techniques::PatchDomain domain, float level) {
+  tess::Levels levels;
+  if (domain == techniques::PatchDomain::kQuad) {
+    levels.outer = {level, level, level, level};
+    levels.inner = {level, level};
+  } else {
+    levels.outer = {level, level, level, 0};
+    levels.inner = {level, 0};
+  }
+  return levels;
+}
+
+// gl_TessLevelOuter index of local edge k (corner k to k + 1), technique.h.
+size_t outerOf(techniques::PatchDomain domain, uint32_t local_edge) {
+  return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
+}
+
+}  // namespace
+
+std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const view::View& view,
+                                                    double error_target_px, uint32_t* passes) {
+  const size_t count = patches_.patchCount();
+  const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
+  // Per patch: the highest level known to fail (0: none yet) and the lowest known to pass
+  // (`highest` is taken to pass: a patch that needs more gets the most there is).
+  std::vector<uint32_t> fails(count, 0), passes_at(count, highest);
+  std::vector<tess::Levels> trial(count);
+  std::vector<double> patch_max;
+  auto evaluate = [&](auto levelOf) {
+    for (size_t p = 0; p < count; ++p) trial[p] = patchAt(patches_.patchDomain(p), float(levelOf(p)));
+    screen_->tessellationError(spacing, trial, view, nullptr, &patch_max);
+    ++*passes;
+  };
+  // Level 1 first (most patches off screen or flat pass there), then bisection.
+  evaluate([](size_t) { return 1u; });
+  for (size_t p = 0; p < count; ++p) {
+    if (patch_max[p] <= error_target_px) passes_at[p] = 1;
+    else fails[p] = 1;
+  }
+  for (;;) {
+    bool open = false;
+    for (size_t p = 0; p < count; ++p) open = open || passes_at[p] - fails[p] > 1;
+    if (!open) break;
+    auto mid = [&](size_t p) {
+      return passes_at[p] - fails[p] > 1 ? (fails[p] + passes_at[p]) / 2 : passes_at[p];
+    };
+    evaluate(mid);
+    for (size_t p = 0; p < count; ++p) {
+      if (passes_at[p] - fails[p] <= 1) continue;
+      (patch_max[p] <= error_target_px ? passes_at[p] : fails[p]) = mid(p);
+    }
+  }
+  // A shared edge takes the larger need of its patches, so both sides get one level.
+  std::vector<tess::Levels> levels(count);
+  for (size_t p = 0; p < count; ++p) levels[p] = patchAt(patches_.patchDomain(p), float(passes_at[p]));
+  for (const SharedEdge& edge : shared_.edges) {
+    float level = 0;
+    for (const PatchSide& side : edge.sides) level = std::max(level, float(passes_at[side.patch]));
+    for (const PatchSide& side : edge.sides) {
+      levels[side.patch].outer[outerOf(patches_.patchDomain(side.patch), side.local)] = level;
+    }
+  }
+  return levels;
+}
+
+const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::vector<view::View>& views,
+                                            double error_target_px) {
+  const auto key = std::make_pair(int(spacing), error_target_px);
+  if (const auto it = ideal_cache_.find(key); it != ideal_cache_.end()) return it->second;
+  AdaptivityIdeal out;
+  uint64_t triangles = 0;
+  for (const view::View& view : views) {
+    const std::vector<tess::Levels> levels = idealFrame(spacing, view, error_target_px, &out.passes);
+    uint64_t frame_triangles = 0;
+    const lod::ScreenErrorFigures e = screen_->tessellationError(spacing, levels, view, &frame_triangles);
+    ++out.passes;
+    out.max_error_px = std::max(out.max_error_px, e.max_px);
+    triangles += frame_triangles;
+  }
+  out.triangles_per_frame = views.empty() ? 0 : double(triangles) / double(views.size());
+  return ideal_cache_.emplace(key, out).first->second;
+}
+
+}  // namespace tb::measures
