@@ -13,7 +13,7 @@ namespace tb::lod {
 namespace {
 
 constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
-constexpr size_t kParamWords = 36;  // TbFactorParamsBlock, std430
+constexpr size_t kParamWords = 44;  // TbFactorParamsBlock, std430
 // TbFactorPatch: 4 corners x (position vec4, normal vec4), then error_bound's 4 edge spheres,
 // edge bounds, patch sphere, inner bound and a pad vec4.
 constexpr size_t kPatchWords = 64;
@@ -226,23 +226,42 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
                  (policy.roundness ? kFlagRoundness : 0);
   params.reduction = uint32_t(policy.reduction);
   params.spacing = uint32_t(spacing);
-  // error_bound: f_px = H |P11| / 2 pixels per unit of x / w; the projection's Jacobian
-  // stretches a world error at depth w by at most k f_px / w inside the view.
+  // error_bound: f_px = H |P11| / 2 pixels per unit of y / w (square pixels: x alike); the
+  // projection's Jacobian stretches a world error at depth w by k f_px / w (errorBoundLevel).
   const double tan_y = 1 / view.projection_y_scale;
   const double tan_x = tan_y * double(view.viewport_width_px) / double(view.viewport_height_px);
-  const double k = std::sqrt(1 + tan_x * tan_x + tan_y * tan_y);
   const double f_px = double(view.viewport_height_px) * view.projection_y_scale / 2;
-  params.error_scale = float(policy.target / (f_px * k) * (policy.loose ? 2 : 1));
+  params.error_scale = float(policy.target / f_px * (policy.loose ? 2 : 1));
   params.near_w = float(view.near_plane);
   const auto& m = view.view_projection.m;
-  params.hull_w_scale = float(std::sqrt(m[0][3] * m[0][3] + m[1][3] * m[1][3] + m[2][3] * m[2][3]));
+  auto rowLength = [&](int r) {
+    return float(std::sqrt(m[0][r] * m[0][r] + m[1][r] * m[1][r] + m[2][r] * m[2][r]));
+  };
+  params.hull_w_scale = rowLength(3);
+  params.row_length = {rowLength(0), rowLength(1)};
+  params.inv_scale = {float(tan_x), float(tan_y)};  // 1 / |P00| = tan_x, 1 / |P11| = tan_y
+  params.tan_half = {float(tan_x), float(tan_y)};
   return params;
 }
+
+namespace {
+// tbProjectionStretch: the Jacobian's largest stretch over the sphere.
+float projectionStretch(const FactorParams& params, const std::array<float, 4>& sphere, float near_w) {
+  const auto& m = params.view_projection;
+  const float cx = m[0 * 4 + 0] * sphere[0] + m[1 * 4 + 0] * sphere[1] + m[2 * 4 + 0] * sphere[2] + m[3 * 4 + 0];
+  const float cy = m[0 * 4 + 1] * sphere[0] + m[1 * 4 + 1] * sphere[1] + m[2 * 4 + 1] * sphere[2] + m[3 * 4 + 1];
+  float a = (std::fabs(cx) + sphere[3] * params.row_length[0]) * params.inv_scale[0] / near_w;
+  float b = (std::fabs(cy) + sphere[3] * params.row_length[1]) * params.inv_scale[1] / near_w;
+  a = a < params.tan_half[0] ? a : params.tan_half[0];
+  b = b < params.tan_half[1] ? b : params.tan_half[1];
+  return std::sqrt(1.0f + a * a + b * b);
+}
+}  // namespace
 
 float errorBoundLevel(const FactorParams& params, const std::array<float, 4>& sphere, float m) {
   const float near_w = clipW(params, {sphere[0], sphere[1], sphere[2]}) - sphere[3] * params.hull_w_scale;
   if (!(near_w > params.near_w)) return 64.0f;
-  const float eps = near_w * params.error_scale;
+  const float eps = near_w * params.error_scale / projectionStretch(params, sphere, near_w);
   const float level = std::sqrt(m / eps);
   return level > 1.0f ? level : 1.0f;
 }
@@ -392,7 +411,9 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
   for (uint32_t u : {params.policy, params.flags, params.reduction, params.spacing, domain, 0u}) {
     out.param_words.push_back(u);
   }
-  for (float f : {params.error_scale, params.near_w, params.hull_w_scale, 0.0f}) {
+  for (float f : {params.error_scale, params.near_w, params.hull_w_scale, 0.0f,
+                  params.row_length[0], params.inv_scale[0], params.tan_half[0], 0.0f,
+                  params.row_length[1], params.inv_scale[1], params.tan_half[1], 0.0f}) {
     out.param_words.push_back(std::bit_cast<uint32_t>(f));
   }
   return out;

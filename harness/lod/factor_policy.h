@@ -34,9 +34,10 @@
 //   tessellation error of at most `target` pixels (error_bound.h): edge j = sqrt(M_j / (8
 //   eps)) from the bound of the edge's curve alone, inner = sqrt((M_uu + 2 M_uv + M_vv) /
 //   (8 eps)); eps = target z_near / (f_px k) world units, z_near the nearest clip w of the
-//   edge's (inner: the patch's) hull sphere, f_px = H |P[1][1]| / 2 and k = sqrt(1 +
-//   tan^2(fov_x / 2) + tan^2(fov_y / 2)) the largest stretch of the projection's Jacobian
-//   inside the view; a hull that reaches the near plane gets level 64. No search: the
+//   edge's (inner: the patch's) hull sphere, f_px = H |P[1][1]| / 2 and k = sqrt(1 + a^2 +
+//   b^2) the largest stretch of the projection's Jacobian over that sphere (a, b its largest
+//   view x / z, y / z, at most the view's edges: the error counts visible samples only); a
+//   hull that reaches the near plane gets level 64. No search: the
 //   target is the error. `error_bound_loose` doubles eps: a control that must break the
 //   1 px criterion somewhere.
 #pragma once
@@ -127,6 +128,9 @@ struct FactorParams {
   float error_scale = 0;
   float near_w = 0;
   float hull_w_scale = 0;
+  // error_bound's projection stretch per screen axis (x, y): |row r of the matrix's xyz|,
+  // 1 / |P[r][r]| and tan(fov / 2).
+  std::array<float, 2> row_length{}, inv_scale{}, tan_half{};
 };
 // world_scale: the asset's bounding-box diagonal (distance's unit).
 FactorParams factorParams(const FactorPolicy& policy, const view::View& view, tess::Spacing spacing,

@@ -79,10 +79,14 @@ layout(std430, set = TB_HARNESS_SET, binding = 2) readonly buffer TbFactorParams
   uint spacing;
   uint domain;  // 0 triangle, 1 quad (tess::Domain)
   uint pad0;
-  float error_scale;   // error_bound: world error per unit of clip w (target / (f_px k))
+  float error_scale;   // error_bound: world error per unit of clip w (target / f_px)
   float near_w;        // error_bound: the near plane's clip w
   float hull_w_scale;  // error_bound: |row 3 of view_projection, xyz|
   float pad1;
+  // error_bound's projection stretch, per screen axis x, y: |row r of view_projection, xyz|,
+  // 1 / |P[r][r]| (view x / w per clip x / w) and tan(fov / 2) (the view's edge).
+  float row_length_x, inv_scale_x, tan_half_x, pad2;
+  float row_length_y, inv_scale_y, tan_half_y, pad3;
 } tb_factor;
 
 // The levels the TCS wrote (float bits, the TbPatchLevels layout), per patch.
@@ -211,10 +215,24 @@ float tbEdgeFactor(vec3 a, vec3 b, vec3 na, vec3 nb) {
 // error_bound's raw level for a bound m = sup|C''| / 8 over the hull sphere (xyz centre, w
 // radius): sqrt(m / eps) with eps = the sphere's nearest clip w x error_scale; 64 when the
 // sphere reaches the near plane; at least 1 (a straight edge is never culled).
+// The largest stretch sqrt(1 + a^2 + b^2) of the projection's Jacobian over the sphere (a, b
+// = view x / z, y / z, each at most the view's edge: only visible samples count).
+float tbProjectionStretch(vec4 sphere, float near_w) {
+  const mat4 m = tb_factor.view_projection;
+  precise float cx = m[0][0] * sphere.x + m[1][0] * sphere.y + m[2][0] * sphere.z + m[3][0];
+  precise float cy = m[0][1] * sphere.x + m[1][1] * sphere.y + m[2][1] * sphere.z + m[3][1];
+  precise float a = (abs(cx) + sphere.w * tb_factor.row_length_x) * tb_factor.inv_scale_x / near_w;
+  precise float b = (abs(cy) + sphere.w * tb_factor.row_length_y) * tb_factor.inv_scale_y / near_w;
+  a = a < tb_factor.tan_half_x ? a : tb_factor.tan_half_x;
+  b = b < tb_factor.tan_half_y ? b : tb_factor.tan_half_y;
+  precise float stretch = sqrt(1.0 + a * a + b * b);
+  return stretch;
+}
+
 float tbErrorBoundLevel(vec4 sphere, float m) {
   precise float near_w = tbClipW(sphere.xyz) - sphere.w * tb_factor.hull_w_scale;
   if (!(near_w > tb_factor.near_w)) return 64.0;
-  precise float eps = near_w * tb_factor.error_scale;
+  precise float eps = near_w * tb_factor.error_scale / tbProjectionStretch(sphere, near_w);
   precise float level = sqrt(m / eps);
   return level > 1.0 ? level : 1.0;
 }

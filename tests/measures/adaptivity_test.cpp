@@ -52,7 +52,8 @@ constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::k
                                        tess::Spacing::kFractionalOdd,
                                        tess::Spacing::kFractionalEven};
 constexpr const char* kSafePolicies[] = {"uniform",  "distance",           "sphere_diameter",
-                                         "lp2_edge", "lp2_edge_silhouette", "lp2_edge_roundness"};
+                                         "lp2_edge", "lp2_edge_silhouette", "lp2_edge_roundness",
+                                         "error_bound"};
 
 constexpr uint32_t kCrackCheckFrames = 24;
 
@@ -118,14 +119,15 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
   const Case cases[] = {{"acc", "default", "opensubdiv/catmark_xord_interior.obj"},
                         {"gregory_acc", "edge_symmetric", "opensubdiv/catmark_nonquads.obj"},
                         {"pn_triangles", "pn", "tessbench/tri_torus.obj"},
-                        {"phong", "alpha0.75", "tessbench/cylinder_seam.obj"}};
+                        {"phong", "alpha0.75", "tessbench/cylinder_seam.obj"},
+                        {"osd_adaptive", "iso2_gregory", "opensubdiv/catmark_xord_interior.obj"}};
   for (const Case& c : cases) {
     const techniques::BuiltSurface patches = build(c);
     measures::AdaptivityRun run(*patches, &context, "", nullptr);
     size_t frames = 0;
     for (const char* path : {"orbit", "dolly", "flyby"}) {
       const std::vector<view::View> views = pathViews(path, *patches);
-      for (const char* name : {"sphere_diameter", "lp2_edge_silhouette"}) {
+      for (const char* name : {"sphere_diameter", "lp2_edge_silhouette", "error_bound"}) {
         for (const measures::AdaptivityFrame& f :
              run.frames(*lod::parseFactorPolicy(name), tess::Spacing::kFractionalOdd, views,
                         {.screen = false, .cracks = false})) {
@@ -136,7 +138,7 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
         }
       }
     }
-    EXPECT_EQ(frames, 2u * (24 + 120 + 48)) << c;
+    EXPECT_EQ(frames, 3u * (24 + 120 + 48)) << c;
   }
 }
 

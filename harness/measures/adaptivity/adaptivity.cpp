@@ -37,11 +37,6 @@ TargetRange targetRange(lod::FactorPolicyKind kind) {
   return {1, 64};
 }
 
-// gl_TessLevelOuter index of local edge k (corner k to k + 1), technique.h.
-size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge) {
-  return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
-}
-
 uint32_t patchesPerDraw(std::span<const tess::Levels> levels) {
   float highest = 1;
   for (const tess::Levels& l : levels) {
@@ -60,6 +55,10 @@ tess::Levels levelsFromBits(const tess::LevelsBits& bits) {
 }
 
 }  // namespace
+
+size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge) {
+  return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
+}
 
 uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,
                           const std::vector<tess::Levels>& levels) {

@@ -188,6 +188,9 @@ class AdaptivityRun {
   std::unique_ptr<lod::ScreenMetrics> screen_;
 };
 
+// gl_TessLevelOuter index of local edge k (corner k to k + 1, techniques/technique.h).
+size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge);
+
 // Shared edges (of `shared`) whose sides' outer levels differ bitwise under `levels`.
 uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,
                           const std::vector<tess::Levels>& levels);

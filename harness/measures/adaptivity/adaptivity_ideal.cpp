@@ -21,11 +21,6 @@ tess::Levels patchAt(techniques::PatchDomain domain, float level) {
   return levels;
 }
 
-// gl_TessLevelOuter index of local edge k (corner k to k + 1), technique.h.
-size_t outerOf(techniques::PatchDomain domain, uint32_t local_edge) {
-  return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
-}
-
 }  // namespace
 
 std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const view::View& view,
@@ -68,7 +63,7 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
     float level = 0;
     for (const PatchSide& side : edge.sides) level = std::max(level, float(passes_at[side.patch]));
     for (const PatchSide& side : edge.sides) {
-      levels[side.patch].outer[outerOf(patches_.patchDomain(side.patch), side.local)] = level;
+      levels[side.patch].outer[outerIndex(patches_.patchDomain(side.patch), side.local)] = level;
     }
   }
   return levels;

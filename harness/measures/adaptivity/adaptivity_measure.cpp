@@ -282,8 +282,10 @@ class AdaptivityMeasure final : public Measure {
         "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
         "triangles a policy needs for a 1 px tessellation error against uniform levels",
         allSpecs(),
-        {"triangle_ratio_vs_uniform", "factor_mismatches_cpu", "tess_error_max_px"},
-        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter): "
+        {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal", "factor_mismatches_cpu",
+         "tess_error_max_px"},
+        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter and "
+         "error_bound): "
          "for each policy, the coarsest target whose "
          "tessellation error stays within 1 px on every frame of the path (bisection on a log "
          "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the "
@@ -291,7 +293,21 @@ class AdaptivityMeasure final : public Measure {
          "(integer, binary search) that does the same; triangle_ratio_vs_uniform = the two "
          "triangle counts' ratio (0.25: a quarter of uniform's triangles); policy_target is "
          "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
-         "pixels per edge; lp2_edge: C)",
+         "pixels per edge; lp2_edge: C; error_bound: the pixel error itself, not searched)",
+         "the ideal (ideal_triangles_per_frame, triangle_ratio_vs_ideal = the policy's triangles "
+         "over the ideal's): per frame, every patch's lowest integer level (1..64) whose own "
+         "tessellation error stays within 1 px (bisection on all patches at once, the measure's "
+         "own error function), each shared edge at the larger need of its two patches so the "
+         "assignment is crack-free; uniform levels are one such assignment, so the ideal never "
+         "needs more triangles than the best uniform level",
+         "error_bound (harness/lod/error_bound.h): each edge's level from Wang's formula on the "
+         "technique's bound of that edge curve's second derivative (sqrt(M / (8 eps)); both "
+         "patches of an edge read one record), the inside from Filip-Magedson-Markot "
+         "(sqrt((M_uu + 2 M_uv + M_vv) / (8 eps))); eps = target px x the hull's nearest clip w "
+         "/ (f_px x k), k the projection's largest stretch inside the view; the bounds come from "
+         "each technique's control net (techniques::CurvatureBounds), never from samples; "
+         "error_bound_loose (--suite full) doubles eps: a control made to break the 1 px "
+         "criterion",
          "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
          "twin harness/lod/factor_policy.h): distance = target x diagonal / |eye - edge "
          "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
@@ -323,10 +339,10 @@ class AdaptivityMeasure final : public Measure {
          "the tessellated surface at fixed surface points since the previous frame due to the "
          "factor change alone (both tessellations projected with this frame's camera); "
          "visibility is the view frustum (no occlusion)",
-         "default suite: sphere_diameter, distance and lp2_edge at fractional_odd on the "
-         "default path; --suite full: every policy (uniform, the lp2_edge reductions, the "
-         "order-dependent controls) at integer, pow2, fractional_odd and fractional_even, and "
-         "summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
+         "default suite: sphere_diameter, distance, lp2_edge and error_bound at fractional_odd "
+         "on the default path; --suite full: every policy (uniform, the lp2_edge reductions, "
+         "error_bound, the order-dependent and loose controls) at integer, pow2, fractional_odd "
+         "and fractional_even, and summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
          "and stays out of results.json"},
         {},
         // The per-frame trade-off of each policy: triangles drawn against the largest
