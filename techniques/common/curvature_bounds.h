@@ -1,18 +1,59 @@
 // Second-derivative bounds (CurvatureBounds, techniques/technique.h) of polynomial patches
 // in Bernstein form: a Bezier net's second differences bound its second derivatives (the
 // derivative of a Bernstein polynomial is a Bernstein polynomial of the differences, and a
-// Bernstein polynomial lies in the hull of its coefficients).
+// Bernstein polynomial lies in the hull of its coefficients), and of Gregory patches (the
+// polynomial patch of the face-point midpoints plus a universal bound on the rational
+// blends, curvature_bounds.cpp).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
+#include <vector>
 
+#include "core/mesh/vec.h"
 #include "techniques/technique.h"
 
 namespace tb::techniques {
 
 // The bounds of the polynomial patch cullBounds() describes (PatchCullBounds::bezier_net of
-// bezier_degree on `domain`), or nullopt when it gives no net.
+// bezier_degree on `domain`), or nullopt when it gives no net. hull = bounds.hull.
 std::optional<CurvatureBounds> curvatureBoundsFromNet(const PatchCullBounds& bounds,
                                                       PatchDomain domain);
+
+// A Bezier quad of bi-degree d x d, net c[i + (d + 1) j] (i along u): uu, uv, vv, edge[0..3]
+// and edge_hull[0..3] (the boundary rows); hull = the net. Precondition: (d + 1)^2 points.
+CurvatureBounds quadNetCurvatureBounds(const std::vector<mesh::Vec3d>& net, int degree);
+
+// A Bezier triangle of total degree d in bernstein_poly.h's order (b_ijk, i + j + k = d, the
+// powers of the net's corners 0, 1, 2): uu, uv, vv with respect to the domain's (u, v), w =
+// 1 - u - v dependent, edge[0..2] (u = 0, v = 0, w = 0) and their rows; hull = the net.
+// labels[k]: the net corner of the domain's corner k, whose weight is DomainCoord[k] (identity
+// when the net is in domain order; pn_triangles' nets are in label order). Preconditions:
+// triangleNetSize(d) points, d >= 1, labels a permutation of 0, 1, 2.
+CurvatureBounds triangleNetCurvatureBounds(const std::vector<mesh::Vec3d>& net, int degree,
+                                           const std::array<int, 3>& labels = {0, 1, 2});
+
+// sup |C''| over [0, 1] of the Bezier curve of `points` (degree points.size() - 1):
+// d (d - 1) max_i |P_i - 2 P_{i+1} + P_{i+2}|; 0 for fewer than three points.
+double bezierCurveSecondDerivativeBound(const std::vector<mesh::Vec3d>& points);
+
+// Universal constants of the Gregory blends (curvature_bounds.cpp derives them): corner c's
+// interior point is M_c + t_c δ_c with t_c = (a_c - b_c) / (a_c + b_c) in [-1, 1], so the
+// patch is the polynomial patch of the midpoints M_c plus Σ_c g_c δ_c, g_c = B_c t_c. These
+// are upper bounds of sup |∂uu g_c|, sup |∂uv g_c|, sup |∂vv g_c| over the domain.
+struct GregoryBlendConstants {
+  double uu, uv, vv;
+};
+// Quad (bicubic weights, blends of gregory_eval.h and Far's Gregory basis): the same for all
+// four corners (the domain's symmetries map one onto another).
+inline constexpr GregoryBlendConstants kGregoryQuadBlend{36.001, 9.001, 36.001};
+// Triangle (quartic weights, blends b211 (v, w), b121 (w, u), b112 (u, v)), per corner.
+extern const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend;
+
+// Adds Σ_c K_c |δ_c| to uu, uv and vv: `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world units).
+// Edges are untouched (a Gregory patch's boundary curves are polynomial).
+void addGregoryQuadBlends(CurvatureBounds& bounds, const std::array<double, 4>& half_gaps);
+void addGregoryTriangleBlends(CurvatureBounds& bounds, const std::array<double, 3>& half_gaps);
 
 }  // namespace tb::techniques

@@ -73,6 +73,14 @@ class DisplacedPatches final : public SurfacePatches {
   // per axis); no normal generators (displacement turns the normals anywhere). The culling
   // measure's per-patch bound input. nullopt where the technique gives no bounds.
   std::optional<PatchCullBounds> cullBounds(size_t patch) const override;
+  // None: the displacement (a bilinear blend of texels along the shading normal) changes the
+  // second derivatives by terms no cheap bound of the map covers, so the error_bound policy
+  // skips displaced surfaces (it must not read the undisplaced patch's net, which the
+  // default would).
+  std::optional<CurvatureBounds> curvatureBounds(size_t patch) const override {
+    (void)patch;
+    return std::nullopt;
+  }
   // The technique's bytes plus the map's GPU-resident bytes and the owner words.
   DataFootprint footprint() const override;
   // The largest |texel| component in patch `patch`'s tile (world units): a bilinear blend

@@ -114,6 +114,13 @@ class GregoryPatches final : public techniques::SurfacePatches {
                : gregoryQuadCullBounds(points_d_[patch]);
   }
 
+  // gregory_bounds.h: the midpoint net's bounds plus the rational blends' share.
+  std::optional<techniques::CurvatureBounds> curvatureBounds(size_t patch) const override {
+    return patchDomain(patch) == techniques::PatchDomain::kTriangle
+               ? gregoryTriangleCurvatureBounds(points_d_[patch])
+               : gregoryQuadCurvatureBounds(points_d_[patch]);
+  }
+
   // One program per domain present: the quads' (20 control points per patch) and the
   // triangles' (15); each reads the same vertex and stencil buffers. A single-domain
   // mesh gets one program whose patch p is patch p.

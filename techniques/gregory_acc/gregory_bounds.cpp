@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "techniques/common/bernstein_poly.h"
+#include "techniques/common/curvature_bounds.h"
 #include "techniques/common/patch_bounds.h"
 
 namespace tb::gregory_acc {
@@ -172,6 +173,58 @@ techniques::PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double
     bounds.bezier_net = frozen.c;
     bounds.bezier_degree = 4;
   }
+  return bounds;
+}
+
+namespace {
+
+double halfGap(const GregoryPoints<double>& cp, uint32_t corner) {
+  return 0.5 * length(cp[corner * 5 + kFp] - cp[corner * 5 + kFm]);
+}
+
+// The cubic edge curve from corner c to corner c + 1 (mod `corners`): P_c, Ep_c, Em_c+1, P_c+1.
+std::vector<mesh::Vec3d> cubicEdge(const GregoryPoints<double>& cp, uint32_t c, uint32_t corners) {
+  const uint32_t n = (c + 1) % corners;
+  return {cp[c * 5 + kP], cp[c * 5 + kEp], cp[n * 5 + kEm], cp[n * 5 + kP]};
+}
+
+}  // namespace
+
+techniques::CurvatureBounds gregoryQuadCurvatureBounds(const GregoryPoints<double>& cp) {
+  std::array<std::array<mesh::Vec3d, 4>, 4> net{};
+  setQuadBoundaryNet(cp, net);
+  std::vector<mesh::Vec3d> flat(16);
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) flat[size_t(i + 4 * j)] = net[j][i];
+  }
+  for (const QuadNetInterior& slot : kQuadNetInterior) {
+    flat[size_t(slot.column + 4 * slot.row)] = faceMidpoint(cp, slot.corner);
+  }
+  // The net's boundary rows are the cubic edge curves already (edge_hull their points).
+  techniques::CurvatureBounds bounds = techniques::quadNetCurvatureBounds(flat, 3);
+  techniques::addGregoryQuadBlends(
+      bounds, {halfGap(cp, 0), halfGap(cp, 1), halfGap(cp, 2), halfGap(cp, 3)});
+  bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerPatch);
+  return bounds;
+}
+
+techniques::CurvatureBounds gregoryTriangleCurvatureBounds(const GregoryPoints<double>& cp) {
+  std::array<mesh::Vec3d, 15> net{};
+  setTriangleBoundaryNet(cp, net);
+  std::vector<mesh::Vec3d> flat(net.begin(), net.end());  // quarticSlot = triangleNetSlot
+  for (const TriangleNetInterior& slot : kTriangleNetInterior) {
+    flat[size_t(quarticSlot(slot.i, slot.j, slot.k))] = faceMidpoint(cp, slot.corner);
+  }
+  techniques::CurvatureBounds bounds = techniques::triangleNetCurvatureBounds(flat, 4);
+  techniques::addGregoryTriangleBlends(bounds, {halfGap(cp, 0), halfGap(cp, 1), halfGap(cp, 2)});
+  // Edges u = 0 (corners 1 -> 2), v = 0 (2 -> 0), w = 0 (0 -> 1) from the cubic curves, not
+  // the degree-raised quartic rows, so they equal a neighbouring quad's bound.
+  const uint32_t first_corner[3] = {1, 2, 0};
+  for (int e = 0; e < 3; ++e) {
+    bounds.edge_hull[e] = cubicEdge(cp, first_corner[e], 3);
+    bounds.edge[e] = techniques::bezierCurveSecondDerivativeBound(bounds.edge_hull[e]);
+  }
+  bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerTriangle);
   return bounds;
 }
 

@@ -43,4 +43,13 @@ namespace tb::gregory_acc {
 techniques::PatchCullBounds gregoryQuadCullBounds(const GregoryPoints<double>& cp);
 techniques::PatchCullBounds gregoryTriangleCullBounds(const GregoryPoints<double>& cp);
 
+// Second-derivative bounds (CurvatureBounds), for every Gregory patch (face points equal or
+// not): the Bezier net with the face points' midpoints M_c in its interior slots, bounded by
+// its second differences (techniques/common/curvature_bounds.h), plus the rational blends'
+// share Σ_c K_c |Fp_c - Fm_c| / 2 with the universal constants K_c derived there. Edges: the
+// cubic boundary curve P, E, E, P (both domains, so a quad and a triangle sharing an edge
+// agree), edge_hull its four points; hull: the control points.
+techniques::CurvatureBounds gregoryQuadCurvatureBounds(const GregoryPoints<double>& cp);
+techniques::CurvatureBounds gregoryTriangleCurvatureBounds(const GregoryPoints<double>& cp);
+
 }  // namespace tb::gregory_acc

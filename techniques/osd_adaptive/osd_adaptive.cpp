@@ -17,6 +17,7 @@
 #include "core/osd/topology_refiner_builder.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/osd_adaptive/osd_basis.h"
+#include "techniques/osd_adaptive/osd_curvature.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
 
@@ -239,6 +240,41 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
       for (int k = 0; k < cvs.size(); ++k) bounds.hull.push_back(points_d_[size_t(cvs[k])]);
     }
     return bounds;
+  }
+
+  // osd_curvature.h per sub-patch, times 4^depth (its local (s, t) is 2^depth (u, v)); the
+  // face's uu, uv, vv are the largest over its sub-patches, edge j's the largest over those
+  // touching the base face's edge j, with their edge curves' points as its hull; hull: every
+  // sub-patch's (phantoms extrapolated). Inside each sub-patch these are true bounds; across
+  // a seam between sub-patches the first derivative may jump where a Gregory end cap meets a
+  // neighbour (Far's end caps are not C1 to it), which no second-derivative bound covers.
+  std::optional<techniques::CurvatureBounds> curvatureBounds(size_t patch) const override {
+    techniques::CurvatureBounds total;
+    const auto [first, count] = face_ranges_[patch];
+    for (uint32_t k = first; k < first + count; ++k) {
+      const SubPatchWords& sub = sub_patches_[k];
+      std::array<mesh::Vec3d, kMaxSubPatchPoints> points{};
+      const int n = subPatchPointCount(sub.packed);
+      for (int i = 0; i < n; ++i)
+        points[size_t(i)] = points_d_[point_indices_[sub.first_index + uint32_t(i)]];
+      const techniques::CurvatureBounds local = subPatchCurvatureBounds(sub.packed, points);
+      const int depth = int(subPatchDepth(sub.packed));
+      const double scale = std::ldexp(1.0, 2 * depth);
+      total.uu = std::max(total.uu, local.uu * scale);
+      total.uv = std::max(total.uv, local.uv * scale);
+      total.vv = std::max(total.vv, local.vv * scale);
+      const uint32_t last = (1u << depth) - 1;
+      const bool touches[4] = {subPatchU(sub.packed) == 0, subPatchV(sub.packed) == 0,
+                               subPatchU(sub.packed) == last, subPatchV(sub.packed) == last};
+      for (size_t e = 0; e < 4; ++e) {
+        if (!touches[e]) continue;
+        total.edge[e] = std::max(total.edge[e], local.edge[e] * scale);
+        total.edge_hull[e].insert(total.edge_hull[e].end(), local.edge_hull[e].begin(),
+                                  local.edge_hull[e].end());
+      }
+      total.hull.insert(total.hull.end(), local.hull.begin(), local.hull.end());
+    }
+    return total;
   }
 
   techniques::DataFootprint footprint() const override {

@@ -117,6 +117,16 @@ void bezierCurve(T x, T b[4], T d[4]) {
   d[3] = x2 * T(3);
 }
 
+// The 4x4 Bézier net of a Gregory basis end cap: the 12 boundary Bézier points are Gregory
+// points (point, column, row); each of the 4 interior ones, at (kGregoryInteriorColumn[c],
+// kGregoryInteriorRow[c]), blends corner c's F+ and F-.
+inline constexpr int kGregoryBoundaryNet[12][3] = {{0, 0, 0},  {1, 1, 0},  {7, 2, 0},
+                                                   {5, 3, 0},  {2, 0, 1},  {6, 3, 1},
+                                                   {16, 0, 2}, {12, 3, 2}, {15, 0, 3},
+                                                   {17, 1, 3}, {11, 2, 3}, {10, 3, 3}};
+inline constexpr int kGregoryInteriorColumn[4] = {1, 2, 2, 1};
+inline constexpr int kGregoryInteriorRow[4] = {1, 1, 2, 2};
+
 // Weights of one sub-patch's points for the position (w), d/ds (ws) and d/dt (wt) at local
 // (s, t); returns the point count (16 or 20).
 template <class T>
@@ -154,12 +164,7 @@ int subPatchWeights(uint32_t packed, T s, T t, T w[kMaxSubPatchPoints], T ws[kMa
   }
   bezierCurve(s, bs, ds);
   bezierCurve(t, bt, dt);
-  // The 4x4 Bézier net of the Gregory patch: the 12 boundary Bézier points are Gregory
-  // points (point, column, row); each of the 4 interior ones blends a corner's F+ and F-.
-  constexpr int kBoundary[12][3] = {{0, 0, 0},  {1, 1, 0},  {7, 2, 0},  {5, 3, 0},
-                                    {2, 0, 1},  {6, 3, 1},  {16, 0, 2}, {12, 3, 2},
-                                    {15, 0, 3}, {17, 1, 3}, {11, 2, 3}, {10, 3, 3}};
-  for (const auto& [point, column, row] : kBoundary) {
+  for (const auto& [point, column, row] : kGregoryBoundaryNet) {
     w[point] = bs[column] * bt[row];
     ws[point] = ds[column] * bt[row];
     wt[point] = bs[column] * dt[row];
@@ -171,8 +176,6 @@ int subPatchWeights(uint32_t packed, T s, T t, T w[kMaxSubPatchPoints], T ws[kMa
   const T is = T(1) - s, it = T(1) - t;
   const T g_plus[4] = {s, t, is, it};
   const T g_minus[4] = {t, is, it, s};
-  constexpr int kColumn[4] = {1, 2, 2, 1};
-  constexpr int kRow[4] = {1, 1, 2, 2};
   for (int c = 0; c < 4; ++c) {
     const T sum = g_plus[c] + g_minus[c];
     T r_plus = T(0.5), r_minus = T(0.5), rs = T(0), rt = T(0);
@@ -196,9 +199,9 @@ int subPatchWeights(uint32_t packed, T s, T t, T w[kMaxSubPatchPoints], T ws[kMa
         rt = -(r_minus * inverse);
       }
     }
-    const T b = bs[kColumn[c]] * bt[kRow[c]];
-    const T b_s = ds[kColumn[c]] * bt[kRow[c]];
-    const T b_t = bs[kColumn[c]] * dt[kRow[c]];
+    const T b = bs[kGregoryInteriorColumn[c]] * bt[kGregoryInteriorRow[c]];
+    const T b_s = ds[kGregoryInteriorColumn[c]] * bt[kGregoryInteriorRow[c]];
+    const T b_t = bs[kGregoryInteriorColumn[c]] * dt[kGregoryInteriorRow[c]];
     const int f_plus = 5 * c + 3, f_minus = 5 * c + 4;
     w[f_plus] = b * r_plus;
     w[f_minus] = b * r_minus;

@@ -2,6 +2,7 @@
 
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
+#include "techniques/common/curvature_bounds.h"
 #include "techniques/common/triangle_patches.h"
 #include "techniques/pn_triangles/pn_bounds.h"
 #include "techniques/pn_triangles/pn_build.h"
@@ -60,6 +61,15 @@ class PnPatches final : public techniques::TrianglePatchesBase {
     bounds.bezier_degree = 3;
     bounds.bezier_mirrored = mirrored;
     return bounds;
+  }
+
+  // curvature_bounds.h on the cubic net, whose corners are labels: domain corner k (weight
+  // coord[k]) is the label L with perm[L] = k.
+  std::optional<techniques::CurvatureBounds> curvatureBounds(size_t patch) const override {
+    const auto& perm = build_.records[patch].perm;
+    std::array<int, 3> labels{};
+    for (int label = 0; label < 3; ++label) labels[perm[size_t(label)]] = label;
+    return techniques::triangleNetCurvatureBounds(cubicNet(controls_.at(patch)), 3, labels);
   }
 
   std::vector<gpu::GpuPatchProgram> gpuPrograms() const override {

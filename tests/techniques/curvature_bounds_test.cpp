@@ -1,0 +1,245 @@
+// SurfacePatches::curvatureBounds (CurvatureBounds, techniques/technique.h) of every registered
+// surface technique, every non-control variant, on curved bundled assets, against the
+// technique's own double evaluate(), with exact identities rather than finite-difference
+// approximations:
+//  - (S(u+h, v) - 2 S(u, v) + S(u-h, v)) / h^2 is the average of S_uu over [u-h, u+h] with
+//    the hat kernel (1 - |x - u| / h) / h, whose weights are >= 0 and sum to 1, so its norm
+//    is <= sup |S_uu| (vv alike; on a triangle the step is (1, 0, -1) or (0, 1, -1) in
+//    barycentrics, the domain's u and v with w dependent);
+//  - (S(u+h, v+h) - S(u+h, v-h) - S(u-h, v+h) + S(u-h, v-h)) / (4 h^2) is the mean of S_uv
+//    over the square [u-h, u+h] x [v-h, v+h], so its norm is <= sup |S_uv|;
+//  - along each edge, the edge curve's second difference / h^2 against edge[j].
+// Each holds exactly for any S that is C^1 with bounded second derivatives on the stencil;
+// the tolerance covers only double rounding (relative 1e-6 of the bound plus 1e-7 of the
+// hull's box diagonal). Stencil points sit away from the dyadic lines of osd_adaptive's
+// sub-patches (the sub-patch seams, where a Gregory end cap's first derivative may jump).
+// A control: the same check against halved bounds fails on some patch of every technique
+// with bounds, so the check is seen to catch a bound that is too small. Prints the median
+// over patches of max sampled / bound per technique and variant (the tightness).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/mesh/obj_loader.h"
+#include "techniques/registry.h"
+#include "tests/test_support.h"
+
+namespace tb::curvature_bounds_test {
+namespace {
+
+using techniques::DomainCoord;
+using techniques::PatchDomain;
+
+// Extraordinary vertices (cube, pawn, xord_interior; valence 3 to 6), quads with triangles
+// (pyramid, gregory_test5: gregory_acc's triangle patches), boundaries and corners
+// (edgecorner, gregory_test5: osd_adaptive's boundary patches), a regular torus, triangles
+// for pn_triangles and phong (torus, pawn, icosahedron).
+const std::vector<std::string> kAssets = {"opensubdiv/catmark_cube.obj",
+                                          "opensubdiv/catmark_pyramid.obj",
+                                          "opensubdiv/catmark_edgecorner.obj",
+                                          "opensubdiv/catmark_gregory_test5.obj",
+                                          "opensubdiv/catmark_xord_interior.obj",
+                                          "opensubdiv/catmark_pawn.obj",
+                                          "opensubdiv/catmark_torus.obj",
+                                          "tessbench/tri_torus.obj",
+                                          "tessbench/tri_pawn.obj",
+                                          "opensubdiv/loop_icosahedron.obj"};
+
+// Step in domain units; sample points at (2k + 1) / 12 (quad) keep 1/48 from every line
+// k / 16 (osd_adaptive's sub-patch seams to isolation level 4), triangle points keep 1/18
+// from the domain's edges, both far more than 2 h.
+constexpr double kStep = 2e-3;
+constexpr int kQuadSamples = 6;  // per direction
+constexpr int kTriangleSamples = 6;
+constexpr double kRelative = 1e-6;
+constexpr double kAbsolute = 1e-7;  // of the hull's box diagonal
+
+mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
+
+std::vector<const techniques::Technique*> surfaceTechniques() {
+  std::vector<const techniques::Technique*> result;
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+    if (t->info().family == techniques::TechniqueFamily::kSurface) result.push_back(t);
+  }
+  return result;
+}
+
+double boxDiagonal(const std::vector<mesh::Vec3d>& points) {
+  mesh::Vec3d lo = points.at(0), hi = lo;
+  for (const mesh::Vec3d& p : points) {
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  return length(hi - lo);
+}
+
+// The largest sampled second-difference norms of one patch: uu, uv, vv, then edges 0..3.
+using Sampled = std::array<double, 7>;
+
+Sampled sampleQuad(const techniques::SurfacePatches& s, size_t patch) {
+  const auto at = [&](double u, double v) { return s.evaluate(patch, {u, v, 0}).position; };
+  const double h = kStep, inv = 1 / (h * h);
+  Sampled m{};
+  for (int j = 0; j < kQuadSamples; ++j) {
+    for (int i = 0; i < kQuadSamples; ++i) {
+      const double u = (2 * i + 1) / (2.0 * kQuadSamples), v = (2 * j + 1) / (2.0 * kQuadSamples);
+      const mesh::Vec3d c = at(u, v);
+      m[0] = std::max(m[0], length(at(u + h, v) - c * 2.0 + at(u - h, v)) * inv);
+      m[1] = std::max(
+          m[1], length(at(u + h, v + h) - at(u + h, v - h) - at(u - h, v + h) + at(u - h, v - h)) *
+                    (0.25 * inv));
+      m[2] = std::max(m[2], length(at(u, v + h) - c * 2.0 + at(u, v - h)) * inv);
+    }
+  }
+  // Edges u = 0, v = 0, u = 1, v = 1 as curves of t.
+  const std::array<std::array<double, 4>, 4> edges{
+      {{0, 0, 0, 1}, {0, 0, 1, 0}, {1, 0, 0, 1}, {0, 1, 1, 0}}};  // u0, v0, du/dt, dv/dt
+  for (int e = 0; e < 4; ++e) {
+    const auto& [u0, v0, du, dv] = edges[size_t(e)];
+    const auto curve = [&](double t) { return at(u0 + du * t, v0 + dv * t); };
+    for (int k = 0; k < kQuadSamples; ++k) {
+      const double t = (2 * k + 1) / (2.0 * kQuadSamples);
+      m[size_t(3 + e)] =
+          std::max(m[size_t(3 + e)], length(curve(t + h) - curve(t) * 2.0 + curve(t - h)) * inv);
+    }
+  }
+  return m;
+}
+
+Sampled sampleTriangle(const techniques::SurfacePatches& s, size_t patch) {
+  const auto at = [&](double u, double v) { return s.evaluate(patch, {u, v, 1 - u - v}).position; };
+  const double h = kStep, inv = 1 / (h * h);
+  const int n = kTriangleSamples;
+  Sampled m{};
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i + j < n; ++i) {
+      const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
+      const mesh::Vec3d c = at(u, v);
+      m[0] = std::max(m[0], length(at(u + h, v) - c * 2.0 + at(u - h, v)) * inv);
+      m[1] = std::max(
+          m[1], length(at(u + h, v + h) - at(u + h, v - h) - at(u - h, v + h) + at(u - h, v - h)) *
+                    (0.25 * inv));
+      m[2] = std::max(m[2], length(at(u, v + h) - c * 2.0 + at(u, v - h)) * inv);
+    }
+  }
+  // Edges u = 0 (corner 1 to 2), v = 0 (2 to 0), w = 0 (0 to 1); edge 3 stays 0.
+  const std::array<std::array<double, 4>, 3> edges{
+      {{0, 1, 0, -1}, {0, 0, 1, 0}, {1, 0, -1, 1}}};  // u0, v0, du/dt, dv/dt
+  for (int e = 0; e < 3; ++e) {
+    const auto& [u0, v0, du, dv] = edges[size_t(e)];
+    const auto curve = [&](double t) { return at(u0 + du * t, v0 + dv * t); };
+    for (int k = 0; k < n; ++k) {
+      const double t = (2 * k + 1) / (2.0 * n);
+      m[size_t(3 + e)] =
+          std::max(m[size_t(3 + e)], length(curve(t + h) - curve(t) * 2.0 + curve(t - h)) * inv);
+    }
+  }
+  return m;
+}
+
+std::array<double, 7> boundsOf(const techniques::CurvatureBounds& b) {
+  return {b.uu, b.uv, b.vv, b.edge[0], b.edge[1], b.edge[2], b.edge[3]};
+}
+
+// How many of the 7 quantities exceed `scale` times their bound beyond rounding.
+int violations(const Sampled& sampled, const std::array<double, 7>& bound, double scale,
+               double size) {
+  int count = 0;
+  for (size_t k = 0; k < 7; ++k) {
+    const double allowed = scale * bound[k] * (1 + kRelative) + kAbsolute * size;
+    if (sampled[k] > allowed) ++count;
+  }
+  return count;
+}
+
+struct Tally {
+  size_t patches = 0, bounded = 0, curved = 0, failing = 0, failing_halved = 0;
+  std::vector<double> ratio, edge_ratio;  // per bounded patch: max sampled / bound
+};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
+void checkSurface(const techniques::SurfacePatches& s, const std::string& what, Tally& tally) {
+  for (size_t p = 0; p < s.patchCount(); ++p) {
+    ++tally.patches;
+    const std::optional<techniques::CurvatureBounds> bounds = s.curvatureBounds(p);
+    if (!bounds) continue;
+    ++tally.bounded;
+    ASSERT_FALSE(bounds->hull.empty()) << what << " patch " << p;
+    const bool quad = s.patchDomain(p) == PatchDomain::kQuad;
+    for (int e = 0; e < (quad ? 4 : 3); ++e) {
+      ASSERT_FALSE(bounds->edge_hull[size_t(e)].empty()) << what << " patch " << p << " edge " << e;
+    }
+    if (!quad) {
+      EXPECT_EQ(bounds->edge[3], 0.0) << what << " patch " << p;
+    }
+    const double size = boxDiagonal(bounds->hull);
+    const Sampled sampled = quad ? sampleQuad(s, p) : sampleTriangle(s, p);
+    const std::array<double, 7> bound = boundsOf(*bounds);
+    const int failed = violations(sampled, bound, 1.0, size);
+    EXPECT_EQ(failed, 0) << what << " patch " << p << ": sampled uu " << sampled[0] << " uv "
+                         << sampled[1] << " vv " << sampled[2] << " edges " << sampled[3] << " "
+                         << sampled[4] << " " << sampled[5] << " " << sampled[6] << "; bounds "
+                         << bound[0] << " " << bound[1] << " " << bound[2] << " edges " << bound[3]
+                         << " " << bound[4] << " " << bound[5] << " " << bound[6];
+    tally.failing += failed > 0;
+    tally.curved += *std::max_element(bound.begin(), bound.end()) > kAbsolute * size;
+    tally.failing_halved += violations(sampled, bound, 0.5, size) > 0;
+    double ratio = 0, edge_ratio = 0;
+    for (size_t k = 0; k < 7; ++k) {
+      if (bound[k] <= kAbsolute * size) continue;
+      (k < 3 ? ratio : edge_ratio) = std::max(k < 3 ? ratio : edge_ratio, sampled[k] / bound[k]);
+    }
+    tally.ratio.push_back(ratio);
+    tally.edge_ratio.push_back(edge_ratio);
+  }
+}
+
+TEST(CurvatureBounds, SampledSecondDifferencesStayWithinTheBoundsOfEveryTechnique) {
+  std::map<std::string, Tally> by_variant;
+  for (const std::string& name : kAssets) {
+    const mesh::Mesh mesh = load(name);
+    for (const techniques::Technique* t : surfaceTechniques()) {
+      if (!t->checkSupport(mesh).empty()) continue;
+      for (const techniques::VariantInfo& v : t->variants()) {
+        if (!v.control.empty()) continue;
+        const std::string id = t->info().id + "/" + v.name;
+        checkSurface(*techniques::buildSurface(*t, mesh, v), id + " on " + name, by_variant[id]);
+      }
+    }
+  }
+  for (const auto& [id, tally] : by_variant) {
+    std::printf(
+        "%-32s patches %5zu, bounded %5zu; median max sampled / bound: surface %.3f, edges "
+        "%.3f; failing %zu, failing with halved bounds %zu\n",
+        id.c_str(), tally.patches, tally.bounded, median(tally.ratio), median(tally.edge_ratio),
+        tally.failing, tally.failing_halved);
+    // The control: halved bounds are caught on some patch wherever there are bounds above
+    // rounding (phong/alpha0 is the flat triangle: every bound and sample 0).
+    if (tally.curved > 0) {
+      EXPECT_GT(tally.failing_halved, 0u) << id;
+    }
+  }
+  // Every technique's default variant gives bounds for every patch (the displaced variants
+  // and phong's per-edge variant give none by design).
+  for (const techniques::Technique* t : surfaceTechniques()) {
+    const std::string id = t->info().id + "/" + t->variants()[0].name;
+    ASSERT_TRUE(by_variant.count(id)) << id;
+    EXPECT_EQ(by_variant[id].bounded, by_variant[id].patches) << id;
+    EXPECT_GT(by_variant[id].patches, 20u) << id;
+  }
+}
+
+}  // namespace
+}  // namespace tb::curvature_bounds_test
