@@ -19,6 +19,8 @@ namespace {
 using techniques::CurvatureBounds;
 using techniques::PatchDomain;
 
+
+
 // `value` as the smallest float not below it.
 float roundUp(double value) {
   float f = float(value);
@@ -110,9 +112,8 @@ ErrorBounds errorBounds(const techniques::SurfacePatches& patches) {
     std::vector<mesh::Vec3d> points;
     for (const Side& side : sides) {
       const CurvatureBounds& b = *bounds[side.patch];
-      m = std::max(m, b.edge[side.j]);
-      const std::vector<mesh::Vec3d>& hull = b.edge_hull[side.j].empty() ? b.hull : b.edge_hull[side.j];
-      points.insert(points.end(), hull.begin(), hull.end());
+      m = std::max({m, b.edge[side.j], b.uu + 2 * b.uv + b.vv});
+      points.insert(points.end(), b.hull.begin(), b.hull.end());
     }
     const std::array<float, 4> sphere = sphereAround(points);
     const float edge_m = roundUp(m / 8);

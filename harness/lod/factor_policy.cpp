@@ -322,10 +322,13 @@ tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomai
   const bool quad = domain == techniques::PatchDomain::kQuad;
   tess::Levels levels;
   levels.outer = {0, 0, 0, 0};
+  float inside_raw = errorBoundLevel(params, bound.patch_sphere, bound.inner_m);
   for (size_t j = 0; j < (quad ? 4u : 3u); ++j) {
-    levels.outer[j] = roundedLevel(errorBoundLevel(params, bound.edge_sphere[j], bound.edge_m[j]), spacing);
+    const float edge_raw = errorBoundLevel(params, bound.edge_sphere[j], bound.edge_m[j]);
+    levels.outer[j] = roundedLevel(edge_raw, spacing);
+    inside_raw = edge_raw > inside_raw ? edge_raw : inside_raw;
   }
-  const float inside = roundedLevel(errorBoundLevel(params, bound.patch_sphere, bound.inner_m), spacing);
+  const float inside = roundedLevel(inside_raw, spacing);
   levels.inner = {inside, quad ? inside : 0.0f};
   return levels;
 }

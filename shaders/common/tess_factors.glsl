@@ -250,12 +250,17 @@ void tbPolicyLevels(uint patch_index, out float outer[4], out float inner[2]) {
   vec3 nrm[4];
   if (tb_factor.policy == kTbPolicyErrorBound) {
     outer = float[4](0.0, 0.0, 0.0, 0.0);
+    // The inside at least every edge: a coarser inside than an edge stretches the transition
+    // ring's triangles across levels (error_bound.h).
+    float inside_raw = tbErrorBoundLevel(tb_factor_patches[patch_index].patch_sphere,
+                                         tb_factor_patches[patch_index].inner_m.x);
     for (uint j = 0u; j < n; ++j) {
-      outer[j] = tbRoundedLevel(tbErrorBoundLevel(tb_factor_patches[patch_index].edge_sphere[j],
-                                                  tb_factor_patches[patch_index].edge_m[j]));
+      const float edge_raw = tbErrorBoundLevel(tb_factor_patches[patch_index].edge_sphere[j],
+                                               tb_factor_patches[patch_index].edge_m[j]);
+      outer[j] = tbRoundedLevel(edge_raw);
+      inside_raw = edge_raw > inside_raw ? edge_raw : inside_raw;
     }
-    const float inside = tbRoundedLevel(tbErrorBoundLevel(
-        tb_factor_patches[patch_index].patch_sphere, tb_factor_patches[patch_index].inner_m.x));
+    const float inside = tbRoundedLevel(inside_raw);
     inner = float[2](inside, quad ? inside : 0.0);
     return;
   }
