@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/report/base64.h"
+#include "harness/report/comparison.h"
 #include "harness/report/html_chart_script.h"
 #include "harness/report/html_decisions.h"
 #include "harness/report/html_escape.h"
@@ -225,7 +226,12 @@ void measureSections(const results::Results& results, Page* page) {
       page->body += fmt::format("<h2>{} <small>({})</small></h2>\n<p>{}</p>\n",
                                 escapeHtml(declaration->title), escapeHtml(id),
                                 escapeHtml(declaration->description));
-      if (declaration->plots.empty()) {
+      // The declared comparisons first: a grouped bar chart per asset (× camera path, ...).
+      for (const results::ComparisonSpec& comparison : declaration->comparisons) {
+        const ComparisonTable table = comparisonTable(results, *declaration, comparison);
+        if (!table.groups.empty()) plotSection(comparisonPlot(table), page);
+      }
+      if (declaration->plots.empty() && declaration->comparisons.empty()) {
         page->body +=
             "<p class=\"note\">The measure declares no plots; its figures are in "
             "report.md.</p>\n";

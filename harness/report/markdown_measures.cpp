@@ -6,6 +6,7 @@
 #include <set>
 
 #include "harness/report/answers.h"
+#include "harness/report/comparison.h"
 #include "harness/report/markdown.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
@@ -67,6 +68,13 @@ std::vector<Column> metricColumns(const results::Results& results, const std::st
   return columns;
 }
 
+// A RowScope as "policy = *_order_dependent, spacing = integer".
+std::string scopeText(const results::RowScope& scope) {
+  std::string text;
+  for (const auto& [key, value] : scope) text += (text.empty() ? "" : ", ") + key + " = " + value;
+  return text;
+}
+
 // What the declaration says once for the whole measure: its title, fixed notes, headline
 // metrics and the meaning of the units its columns use.
 void appendDeclaration(const results::MeasureDeclaration& declaration, std::string* out) {
@@ -74,6 +82,13 @@ void appendDeclaration(const results::MeasureDeclaration& declaration, std::stri
   if (!declaration.description.empty()) *out += ": " + declaration.description;
   if (!declaration.title.empty() || !declaration.description.empty()) *out += "\n\n";
   for (const std::string& note : declaration.notes) *out += "- " + note + "\n";
+  if (!declaration.control_rows.empty()) {
+    *out += "- controls (rows made to show a failure: never recommended, left out of summaries): ";
+    for (size_t i = 0; i < declaration.control_rows.size(); ++i) {
+      *out += (i > 0 ? "; " : "") + scopeText(declaration.control_rows[i]);
+    }
+    *out += "\n";
+  }
   if (!declaration.headline.empty()) {
     *out += "- headline: ";
     for (size_t i = 0; i < declaration.headline.size(); ++i) {
@@ -168,7 +183,8 @@ void appendTable(const results::Results& results, const std::string& measure_id,
           appendRow(out, cells);
           continue;
         }
-        cells.push_back("ok");
+        const bool control = declaration != nullptr && results::isControlRow(*declaration, row.keys);
+        cells.push_back(control ? "ok (control)" : "ok");
         for (const Column& column : columns) {
           std::string value;
           for (const results::Metric& metric : row.metrics) {
@@ -181,6 +197,42 @@ void appendTable(const results::Results& results, const std::string& measure_id,
     }
   }
   *out += "\n";
+}
+
+// The declared comparisons (comparison.h): the lead line, what the rows are, then a table
+// per group, a line per technique, the best column_key cell in bold, "—" for no figure.
+void appendComparisons(const results::Results& results,
+                       const results::MeasureDeclaration& declaration, std::string* out) {
+  for (const results::ComparisonSpec& spec : declaration.comparisons) {
+    const ComparisonTable table = comparisonTable(results, declaration, spec);
+    if (table.groups.empty()) continue;
+    *out += spec.title + "\n\n";
+    std::string rows = "Each technique's default variant";
+    if (!spec.where.empty()) rows += ", rows with " + scopeText(spec.where);
+    rows += "; the best " + spec.column_key + " in bold; — : no figure";
+    if (!spec.valid_flag.empty()) rows += " or " + spec.valid_flag + " = 0";
+    if (!table.controls_left_out.empty()) {
+      std::string controls;
+      for (const std::string& c : table.controls_left_out) controls += (controls.empty() ? "" : ", ") + c;
+      rows += "; controls left out: " + controls;
+    }
+    *out += rows + ".\n\n";
+    for (const ComparisonGroup& group : table.groups) {
+      *out += "**" + group.name() + "**\n\n";
+      std::vector<std::string> header{"technique"};
+      header.insert(header.end(), group.columns.begin(), group.columns.end());
+      appendHeader(out, header);
+      for (const ComparisonLine& line : group.lines) {
+        std::vector<std::string> cells{line.technique};
+        for (const ComparisonCell& cell : line.cells) {
+          const std::string figure = cell.value ? formatFigure(*cell.value, table.unit) : "—";
+          cells.push_back(cell.best ? "**" + figure + "**" : figure);
+        }
+        appendRow(out, cells);
+      }
+      *out += "\n";
+    }
+  }
 }
 
 size_t countRows(const results::Results& results, const std::string& measure_id, RowFilter filter) {
@@ -206,6 +258,7 @@ void appendMeasureSection(const results::Results& results, const std::string& me
                           std::string* out) {
   const results::MeasureDeclaration* declaration = results.findMeasure(measure);
   *out += "### " + measure + "\n\n";
+  if (declaration != nullptr) appendComparisons(results, *declaration, out);
   if (declaration != nullptr) appendDeclaration(*declaration, out);
   if (declaration != nullptr && !declaration->summary_scope.empty()) {
     std::string scope;
