@@ -225,7 +225,11 @@ void appendComparisons(const results::Results& results,
       for (const ComparisonLine& line : group.lines) {
         std::vector<std::string> cells{line.technique};
         for (const ComparisonCell& cell : line.cells) {
-          const std::string figure = cell.value ? formatFigure(*cell.value, table.unit) : "—";
+          // Counts (triangles per frame, a mean) as whole numbers: 123457, not 1.235e+05.
+          const std::string figure =
+              !cell.value            ? "—"
+              : table.unit == "count" ? fmt::format("{:.0f}", *cell.value)
+                                     : formatFigure(*cell.value, table.unit);
           cells.push_back(cell.best ? "**" + figure + "**" : figure);
         }
         appendRow(out, cells);
