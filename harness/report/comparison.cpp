@@ -116,6 +116,8 @@ ComparisonLine lineOf(const results::ComparisonSpec& spec, results::Direction di
     const auto& v = line.cells[i].value;
     if (v && (!best || (higher ? *v > *best : *v < *best))) best = v;
   }
+  // One column: nothing to choose between, nothing in bold.
+  if (group.key_columns < 2) return line;
   for (size_t i = 0; i < group.key_columns; ++i) line.cells[i].best = best && line.cells[i].value == best;
   return line;
 }
@@ -226,6 +228,17 @@ PlotData comparisonPlot(const ComparisonTable& table) {
   data.y_label = table.unit.empty() ? table.spec.metric : table.spec.metric + " (" + table.unit + ")";
   data.y_direction = table.direction;
   data.rows_used = table.rows_used;
+  std::string where;
+  for (const auto& [key, value] : table.spec.where) where += (where.empty() ? "" : ", ") + key + " = " + value;
+  std::string extras;
+  for (const results::ComparisonColumn& c : table.spec.extra_columns) extras += ", " + c.label + " (" + c.metric + ")";
+  std::string controls;
+  for (const std::string& c : table.controls_left_out) controls += (controls.empty() ? "" : ", ") + c;
+  data.note = std::to_string(table.rows_used) + " rows of each technique's default variant" +
+              (where.empty() ? "" : " with " + where) + "; a bar per " + table.spec.column_key +
+              extras + (controls.empty() ? "" : "; controls left out: " + controls) +
+              "; no bar: no figure" +
+              (table.spec.valid_flag.empty() ? "" : " or " + table.spec.valid_flag + " = 0") + ".";
   for (const ComparisonGroup& group : table.groups) {
     PlotChart chart;
     chart.facet = group.name();

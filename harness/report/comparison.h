@@ -19,7 +19,9 @@ struct ComparisonCell {
   // The figure; nullopt when the line has no such row, the row lacks the metric, or its
   // valid flag is 0 (e.g. the 1 px target not reached).
   std::optional<double> value;
-  bool best = false;  // the best of the line's column_key cells (ties: each of them)
+  // The best of the line's column_key cells (ties: each of them); never where the group has
+  // one column_key value only.
+  bool best = false;
 };
 
 struct ComparisonLine {

@@ -91,6 +91,7 @@ void contextSection(const results::Results& results, Page* page) {
 }
 
 std::string plotNote(const PlotData& data) {
+  if (!data.note.empty()) return data.note;
   std::vector<std::string> parts;
   parts.push_back(fmt::format(
       "{} rows; a point is the {} of {}", data.rows_used,

@@ -162,6 +162,7 @@ TEST(Comparison, AKeyWithSeveralValuesSplitsTheGroups) {
   EXPECT_EQ(table.groups[0].name(), "cube, camera_path orbit, spacing fractional_odd");
   EXPECT_EQ(table.groups[1].name(), "cube, camera_path orbit, spacing integer");
   EXPECT_EQ(table.groups[1].columns, (std::vector<std::string>{"sphere_diameter", "uniform", "ideal"}));
+  EXPECT_FALSE(table.groups[1].lines[0].cells[0].best) << "one policy: nothing in bold";
   EXPECT_EQ(table.groups[2].name(), "torus, camera_path orbit, spacing fractional_odd");
 }
 
@@ -209,6 +210,10 @@ TEST(Comparison, GroupedBarChartPerGroup) {
   EXPECT_EQ(cube.series[1].points[0].y, 800);
   ASSERT_EQ(cube.series[4].points.size(), 1u) << "pn has no ideal";
   EXPECT_EQ(cube.series[0].points[1].label, "pn/default");
+  EXPECT_EQ(plot.note,
+            "8 rows of each technique's default variant with summary = max_error_1px; a bar per "
+            "policy, uniform (uniform_triangles_per_frame), ideal (ideal_triangles_per_frame); "
+            "controls left out: error_bound_loose; no bar: no figure or target_reached = 0.");
 
   const std::string html = report::renderHtml(run, {"window.Chart = function () {};", "", {}, {}});
   EXPECT_NE(html.find("data-charts=\"2\""), std::string::npos);
