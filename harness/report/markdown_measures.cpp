@@ -199,8 +199,71 @@ void appendTable(const results::Results& results, const std::string& measure_id,
   *out += "\n";
 }
 
-// The declared comparisons (comparison.h): the lead line, what the rows are, then a table
-// per group, a line per technique, the best column_key cell in bold, "—" for no figure.
+// A comparison's cell: counts (triangles per frame, a mean) as whole numbers (123457, not
+// 1.235e+05), the best in bold, "—" for no figure.
+std::string comparisonCell(const ComparisonCell& cell, const std::string& unit) {
+  if (!cell.value) return "—";
+  const std::string figure =
+      unit == "count" ? fmt::format("{:.0f}", *cell.value) : formatFigure(*cell.value, unit);
+  return cell.best ? "**" + figure + "**" : figure;
+}
+
+// The facets' values after the first ("camera_path orbit"): one table each.
+std::string tableName(const ComparisonGroup& group) {
+  std::string text;
+  for (size_t i = 1; i < group.facets.size(); ++i) {
+    text += (text.empty() ? "" : ", ") + group.facets[i].first + " " + group.facets[i].second;
+  }
+  return text;
+}
+
+// A table per value of the facets after the first (camera path, spacing): the first facet (the
+// asset) its first column, named on its first line; a line per technique; a column one group
+// lacks is "—" there. A heading and a header per table, not per asset: report.md stays short.
+void appendComparisonTables(const ComparisonTable& table, std::string* out) {
+  const bool lead_column = !table.groups.front().facets.empty();
+  std::vector<std::string> names;
+  for (const ComparisonGroup& g : table.groups) {
+    if (std::find(names.begin(), names.end(), tableName(g)) == names.end()) names.push_back(tableName(g));
+  }
+  for (const std::string& name : names) {
+    std::vector<const ComparisonGroup*> groups;
+    std::vector<std::string> keys, extras;  // the columns, in the groups' order
+    for (const ComparisonGroup& g : table.groups) {
+      if (tableName(g) != name) continue;
+      groups.push_back(&g);
+      for (size_t i = 0; i < g.columns.size(); ++i) {
+        std::vector<std::string>& into = i < g.key_columns ? keys : extras;
+        if (std::find(into.begin(), into.end(), g.columns[i]) == into.end()) into.push_back(g.columns[i]);
+      }
+    }
+    keys.insert(keys.end(), extras.begin(), extras.end());
+    if (!name.empty()) *out += "**" + name + "**\n\n";
+    std::vector<std::string> header;
+    if (lead_column) header.push_back(table.groups.front().facets.front().first);
+    header.push_back("technique");
+    header.insert(header.end(), keys.begin(), keys.end());
+    appendHeader(out, header);
+    for (const ComparisonGroup* g : groups) {
+      for (size_t l = 0; l < g->lines.size(); ++l) {
+        std::vector<std::string> cells;
+        if (lead_column) cells.push_back(l == 0 ? g->facets.front().second : "");
+        cells.push_back(g->lines[l].technique);
+        for (const std::string& column : keys) {
+          const auto at = std::find(g->columns.begin(), g->columns.end(), column);
+          cells.push_back(at == g->columns.end()
+                              ? "—"
+                              : comparisonCell(g->lines[l].cells[size_t(at - g->columns.begin())],
+                                               table.unit));
+        }
+        appendRow(out, cells);
+      }
+    }
+    *out += "\n";
+  }
+}
+
+// The declared comparisons (comparison.h): the lead line, what the rows are, the tables.
 void appendComparisons(const results::Results& results,
                        const results::MeasureDeclaration& declaration, std::string* out) {
   for (const results::ComparisonSpec& spec : declaration.comparisons) {
@@ -217,25 +280,7 @@ void appendComparisons(const results::Results& results,
       rows += "; controls left out: " + controls;
     }
     *out += rows + ".\n\n";
-    for (const ComparisonGroup& group : table.groups) {
-      *out += "**" + group.name() + "**\n\n";
-      std::vector<std::string> header{"technique"};
-      header.insert(header.end(), group.columns.begin(), group.columns.end());
-      appendHeader(out, header);
-      for (const ComparisonLine& line : group.lines) {
-        std::vector<std::string> cells{line.technique};
-        for (const ComparisonCell& cell : line.cells) {
-          // Counts (triangles per frame, a mean) as whole numbers: 123457, not 1.235e+05.
-          const std::string figure =
-              !cell.value            ? "—"
-              : table.unit == "count" ? fmt::format("{:.0f}", *cell.value)
-                                     : formatFigure(*cell.value, table.unit);
-          cells.push_back(cell.best ? "**" + figure + "**" : figure);
-        }
-        appendRow(out, cells);
-      }
-      *out += "\n";
-    }
+    appendComparisonTables(table, out);
   }
 }
 
