@@ -16,8 +16,9 @@
 namespace tb::report {
 
 struct ComparisonCell {
-  // The figure; nullopt when the line has no such row, the row lacks the metric, or its
-  // valid flag is 0 (e.g. the 1 px target not reached).
+  // The figure, in ComparisonTable::unit (triangles per frame: count; fewer best when the
+  // metric is lower-is-better); nullopt when the line has no such row, the row lacks the
+  // metric, or its valid flag is 0 (e.g. the 1 px target not reached).
   std::optional<double> value;
   // The best of the line's column_key cells (ties: each of them); never where the group has
   // one column_key value only.
@@ -48,7 +49,7 @@ struct ComparisonTable {
   results::Direction direction = results::Direction::kNone;  // the metric's; kNone: lower best
   // The column_key values of the control rows left out ("error_bound_loose"), first seen first.
   std::vector<std::string> controls_left_out;
-  size_t rows_used = 0;  // compared rows: default variants, in spec.where, not controls
+  size_t rows_used = 0;  // compared rows (count): default variants, in spec.where, not controls
   std::vector<ComparisonGroup> groups;  // assets in the run's order, then as met
 };
 
