@@ -51,7 +51,8 @@ bool worse(double a, double b, results::Direction direction) {
   return direction == results::Direction::kHigherIsBetter ? a < b : a > b;
 }
 
-// An asset's figure: the worst of the ok rows in the measure's summary scope.
+// An asset's figure: the worst of the ok rows in the measure's summary scope, its control
+// rows left out (as in report.md's summaries).
 std::optional<double> assetFigure(const results::MeasureResult& result,
                                   const results::MeasureDeclaration& declaration,
                                   const results::MetricSpec& spec) {
@@ -59,7 +60,8 @@ std::optional<double> assetFigure(const results::MeasureResult& result,
   if (result.status != results::MeasureStatus::kOk) return figure;
   for (const results::MetricRow& row : result.rows) {
     if (row.status != results::MeasureStatus::kOk ||
-        !results::rowInScope(declaration.summary_scope, row.keys))
+        !results::rowInScope(declaration.summary_scope, row.keys) ||
+        results::isControlRow(declaration, row.keys))
       continue;
     for (const results::Metric& metric : row.metrics) {
       if (metric.name != spec.name || std::isnan(metric.value)) continue;

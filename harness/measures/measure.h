@@ -38,6 +38,12 @@ struct MeasureInfo {
   results::RowScope summary_scope = {};
   // The charts report.html draws of this measure's rows (MeasureDeclaration::plots).
   std::vector<results::PlotSpec> plots = {};
+  // Rows made to show a failure (MeasureDeclaration::control_rows): never recommended, marked
+  // as controls in reports ({{"policy", "*_order_dependent"}}: the crack-unsafe policies).
+  std::vector<results::RowScope> control_rows = {};
+  // The side-by-side tables and bar charts opening the measure's report sections
+  // (MeasureDeclaration::comparisons).
+  std::vector<results::ComparisonSpec> comparisons = {};
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure

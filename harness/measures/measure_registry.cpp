@@ -7,8 +7,8 @@
 namespace tb::measures {
 
 results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
-  return {info.id,       info.title, info.description,   info.metrics,
-          info.headline, info.notes, info.summary_scope, info.plots};
+  return {info.id,       info.title, info.description,   info.metrics,     info.headline,
+          info.notes,    info.summary_scope, info.plots, info.control_rows, info.comparisons};
 }
 
 const view::CameraPath& requireCameraPath(const MeasureInput& input) {

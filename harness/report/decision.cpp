@@ -50,11 +50,15 @@ void readError(const results::MeasureResult* m, DecisionFigures* f) {
   }
 }
 
-void readTriangles(const results::MeasureResult* m, DecisionFigures* f) {
+// The fewest triangles at 1 px over the policies' summary rows; `declaration` (may be null)
+// names the control rows, which never count.
+void readTriangles(const results::MeasureResult* m, const results::MeasureDeclaration* declaration,
+                   DecisionFigures* f) {
   if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
   for (const results::MetricRow& row : m->rows) {
     if (row.status != results::MeasureStatus::kOk || rowKey(row, "summary") != "max_error_1px")
       continue;
+    if (declaration != nullptr && results::isControlRow(*declaration, row.keys)) continue;
     const auto triangles = rowMetric(row, "triangles_per_frame_at_target");
     if (!triangles || rowMetric(row, "target_reached").value_or(1) == 0) continue;
     const std::string path = rowKey(row, "camera_path");
@@ -248,7 +252,7 @@ DecisionFigures decisionFigures(const results::Results& results, const std::stri
     return measureOf(results, technique, variant, asset, measure);
   };
   readError(of("error"), &f);
-  readTriangles(of("adaptivity"), &f);
+  readTriangles(of("adaptivity"), results.findMeasure("adaptivity"), &f);
   readMemory(of("memory"), path, &f);
   readInstructions(of("instructions"), path, &f);
   readCracks(of("cracks"), path, &f);

@@ -28,8 +28,9 @@ struct DecisionFigures {
   // hausdorff, worst over the error rows (rel_diag; best 0, worst ~1).
   std::optional<double> error;
   // triangles_per_frame_at_target of the adaptivity summary rows (summary = max_error_1px):
-  // the fewest over the technique's factor policies on its first camera path (count per
-  // frame; best: few, worst: uniform's).
+  // the fewest over the technique's factor policies on its first camera path, its control rows
+  // (MeasureDeclaration::control_rows: policies made to fail) never (count per frame; best:
+  // few, worst: uniform's).
   std::optional<double> triangles_1px;
   std::string triangles_policy;  // the policy reaching it
   std::string camera_path;       // the path it was measured along

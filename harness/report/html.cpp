@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/report/base64.h"
+#include "harness/report/comparison.h"
 #include "harness/report/html_chart_script.h"
 #include "harness/report/html_decisions.h"
 #include "harness/report/html_escape.h"
@@ -90,6 +91,7 @@ void contextSection(const results::Results& results, Page* page) {
 }
 
 std::string plotNote(const PlotData& data) {
+  if (!data.note.empty()) return data.note;
   std::vector<std::string> parts;
   parts.push_back(fmt::format(
       "{} rows; a point is the {} of {}", data.rows_used,
@@ -225,7 +227,12 @@ void measureSections(const results::Results& results, Page* page) {
       page->body += fmt::format("<h2>{} <small>({})</small></h2>\n<p>{}</p>\n",
                                 escapeHtml(declaration->title), escapeHtml(id),
                                 escapeHtml(declaration->description));
-      if (declaration->plots.empty()) {
+      // The declared comparisons first: a grouped bar chart per asset (× camera path, ...).
+      for (const results::ComparisonSpec& comparison : declaration->comparisons) {
+        const ComparisonTable table = comparisonTable(results, *declaration, comparison);
+        if (!table.groups.empty()) plotSection(comparisonPlot(table), page);
+      }
+      if (declaration->plots.empty() && declaration->comparisons.empty()) {
         page->body +=
             "<p class=\"note\">The measure declares no plots; its figures are in "
             "report.md.</p>\n";

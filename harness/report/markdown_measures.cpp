@@ -6,6 +6,7 @@
 #include <set>
 
 #include "harness/report/answers.h"
+#include "harness/report/comparison.h"
 #include "harness/report/markdown.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
@@ -67,6 +68,13 @@ std::vector<Column> metricColumns(const results::Results& results, const std::st
   return columns;
 }
 
+// A RowScope as "policy = *_order_dependent, spacing = integer".
+std::string scopeText(const results::RowScope& scope) {
+  std::string text;
+  for (const auto& [key, value] : scope) text += (text.empty() ? "" : ", ") + key + " = " + value;
+  return text;
+}
+
 // What the declaration says once for the whole measure: its title, fixed notes, headline
 // metrics and the meaning of the units its columns use.
 void appendDeclaration(const results::MeasureDeclaration& declaration, std::string* out) {
@@ -74,6 +82,13 @@ void appendDeclaration(const results::MeasureDeclaration& declaration, std::stri
   if (!declaration.description.empty()) *out += ": " + declaration.description;
   if (!declaration.title.empty() || !declaration.description.empty()) *out += "\n\n";
   for (const std::string& note : declaration.notes) *out += "- " + note + "\n";
+  if (!declaration.control_rows.empty()) {
+    *out += "- controls (rows made to show a failure: never recommended, left out of summaries): ";
+    for (size_t i = 0; i < declaration.control_rows.size(); ++i) {
+      *out += (i > 0 ? "; " : "") + scopeText(declaration.control_rows[i]);
+    }
+    *out += "\n";
+  }
   if (!declaration.headline.empty()) {
     *out += "- headline: ";
     for (size_t i = 0; i < declaration.headline.size(); ++i) {
@@ -168,7 +183,8 @@ void appendTable(const results::Results& results, const std::string& measure_id,
           appendRow(out, cells);
           continue;
         }
-        cells.push_back("ok");
+        const bool control = declaration != nullptr && results::isControlRow(*declaration, row.keys);
+        cells.push_back(control ? "ok (control)" : "ok");
         for (const Column& column : columns) {
           std::string value;
           for (const results::Metric& metric : row.metrics) {
@@ -181,6 +197,91 @@ void appendTable(const results::Results& results, const std::string& measure_id,
     }
   }
   *out += "\n";
+}
+
+// A comparison's cell: counts (triangles per frame, a mean) as whole numbers (123457, not
+// 1.235e+05), the best in bold, "—" for no figure.
+std::string comparisonCell(const ComparisonCell& cell, const std::string& unit) {
+  if (!cell.value) return "—";
+  const std::string figure =
+      unit == "count" ? fmt::format("{:.0f}", *cell.value) : formatFigure(*cell.value, unit);
+  return cell.best ? "**" + figure + "**" : figure;
+}
+
+// The facets' values after the first ("camera_path orbit"): one table each.
+std::string tableName(const ComparisonGroup& group) {
+  std::string text;
+  for (size_t i = 1; i < group.facets.size(); ++i) {
+    text += (text.empty() ? "" : ", ") + group.facets[i].first + " " + group.facets[i].second;
+  }
+  return text;
+}
+
+// A table per value of the facets after the first (camera path, spacing): the first facet (the
+// asset) its first column, named on its first line; a line per technique; a column one group
+// lacks is "—" there. A heading and a header per table, not per asset: report.md stays short.
+void appendComparisonTables(const ComparisonTable& table, std::string* out) {
+  const bool lead_column = !table.groups.front().facets.empty();
+  std::vector<std::string> names;
+  for (const ComparisonGroup& g : table.groups) {
+    if (std::find(names.begin(), names.end(), tableName(g)) == names.end()) names.push_back(tableName(g));
+  }
+  for (const std::string& name : names) {
+    std::vector<const ComparisonGroup*> groups;
+    std::vector<std::string> keys, extras;  // the columns, in the groups' order
+    for (const ComparisonGroup& g : table.groups) {
+      if (tableName(g) != name) continue;
+      groups.push_back(&g);
+      for (size_t i = 0; i < g.columns.size(); ++i) {
+        std::vector<std::string>& into = i < g.key_columns ? keys : extras;
+        if (std::find(into.begin(), into.end(), g.columns[i]) == into.end()) into.push_back(g.columns[i]);
+      }
+    }
+    keys.insert(keys.end(), extras.begin(), extras.end());
+    if (!name.empty()) *out += "**" + name + "**\n\n";
+    std::vector<std::string> header;
+    if (lead_column) header.push_back(table.groups.front().facets.front().first);
+    header.push_back("technique");
+    header.insert(header.end(), keys.begin(), keys.end());
+    appendHeader(out, header);
+    for (const ComparisonGroup* g : groups) {
+      for (size_t l = 0; l < g->lines.size(); ++l) {
+        std::vector<std::string> cells;
+        if (lead_column) cells.push_back(l == 0 ? g->facets.front().second : "");
+        cells.push_back(g->lines[l].technique);
+        for (const std::string& column : keys) {
+          const auto at = std::find(g->columns.begin(), g->columns.end(), column);
+          cells.push_back(at == g->columns.end()
+                              ? "—"
+                              : comparisonCell(g->lines[l].cells[size_t(at - g->columns.begin())],
+                                               table.unit));
+        }
+        appendRow(out, cells);
+      }
+    }
+    *out += "\n";
+  }
+}
+
+// The declared comparisons (comparison.h): the lead line, what the rows are, the tables.
+void appendComparisons(const results::Results& results,
+                       const results::MeasureDeclaration& declaration, std::string* out) {
+  for (const results::ComparisonSpec& spec : declaration.comparisons) {
+    const ComparisonTable table = comparisonTable(results, declaration, spec);
+    if (table.groups.empty()) continue;
+    *out += spec.title + "\n\n";
+    std::string rows = "Each technique's default variant";
+    if (!spec.where.empty()) rows += ", rows with " + scopeText(spec.where);
+    rows += "; the best " + spec.column_key + " in bold; — : no figure";
+    if (!spec.valid_flag.empty()) rows += " or " + spec.valid_flag + " = 0";
+    if (!table.controls_left_out.empty()) {
+      std::string controls;
+      for (const std::string& c : table.controls_left_out) controls += (controls.empty() ? "" : ", ") + c;
+      rows += "; controls left out: " + controls;
+    }
+    *out += rows + ".\n\n";
+    appendComparisonTables(table, out);
+  }
 }
 
 size_t countRows(const results::Results& results, const std::string& measure_id, RowFilter filter) {
@@ -206,6 +307,7 @@ void appendMeasureSection(const results::Results& results, const std::string& me
                           std::string* out) {
   const results::MeasureDeclaration* declaration = results.findMeasure(measure);
   *out += "### " + measure + "\n\n";
+  if (declaration != nullptr) appendComparisons(results, *declaration, out);
   if (declaration != nullptr) appendDeclaration(*declaration, out);
   if (declaration != nullptr && !declaration->summary_scope.empty()) {
     std::string scope;

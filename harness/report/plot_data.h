@@ -53,6 +53,9 @@ struct PlotData {
   size_t charts_dropped = 0;  // facets with fewer than 2 points (or an empty chart)
   // Points a log axis cannot show (x or y <= 0); they stay in the data, Chart.js skips them.
   size_t points_hidden_by_log = 0;
+  // What the rows and bars are, when not a declared plot's (a comparison, comparison.h):
+  // replaces the note report.html writes from the counts above.
+  std::string note = {};
 };
 
 // The number a key value spells, when the whole text is one finite number ("16", "0.5",

@@ -107,6 +107,8 @@ MeasureSummary summarizeMeasure(const results::Results& results, const std::stri
           continue;
         }
         if (!results::rowInScope(scope, row.keys) || (keep && !keep(row))) continue;
+        if (summary.declaration != nullptr && results::isControlRow(*summary.declaration, row.keys))
+          continue;  // made to fail: never part of a figure that ranks
         ++target.line.ok_rows;
         for (const results::Metric& metric : row.metrics) {
           const bool listed = std::find(summary.metrics.begin(), summary.metrics.end(),

@@ -57,7 +57,8 @@ enum class SummaryGrouping {
   kAcrossAssets,  // a line per technique × variant, over every asset's rows
 };
 
-// Summarises `measure` over the rows in its declaration's summary scope. `metrics` empty:
+// Summarises `measure` over the rows in its declaration's summary scope, its control rows
+// (MeasureDeclaration::control_rows) left out. `metrics` empty:
 // the declared headline metrics (every emitted metric when the declaration has none).
 // `keep`, when given, further selects the rows (e.g. the conservative culling policies).
 // `split_paths`: a line per value of the rows' path key (SummaryLine::path) where the

@@ -1,5 +1,6 @@
 #include "harness/results/metric_spec.h"
 
+#include <algorithm>
 #include <array>
 
 namespace tb::results {
@@ -137,6 +138,13 @@ bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>&
     if (it == keys.end() || !globMatches(pattern, it->second)) return false;
   }
   return true;
+}
+
+bool isControlRow(const MeasureDeclaration& declaration,
+                  const std::map<std::string, std::string>& keys) {
+  // An empty entry would make every row a control: it marks none.
+  return std::any_of(declaration.control_rows.begin(), declaration.control_rows.end(),
+                     [&](const RowScope& scope) { return !scope.empty() && rowInScope(scope, keys); });
 }
 
 const MetricSpec* MeasureDeclaration::find(std::string_view name) const {

@@ -96,6 +96,32 @@ struct PlotSpec {
   bool operator==(const PlotSpec&) const = default;
 };
 
+// A side-by-side comparison a measure declares: per facet (an asset, a camera path), a table
+// that opens the measure's section of report.md and a grouped bar chart in report.html. One
+// line (bar group) per technique, its default variant (control variants never); one column
+// (bar) per value of `column_key` among the compared rows (control rows never), holding
+// `metric`; then `extra_columns`, figures read from the same rows. The best `column_key`
+// cell of a line (by the metric's direction; lower when it has none) is in bold.
+struct ComparisonColumn {
+  std::string label;   // the column's header and bar series: "uniform"
+  std::string metric;  // a metric of the compared rows: "uniform_triangles_per_frame"
+  bool operator==(const ComparisonColumn&) const = default;
+};
+struct ComparisonSpec {
+  // The lead line: what the figures are and which way is better.
+  std::string title;
+  RowScope where = {};          // the rows compared ({"summary": "max_error_1px"})
+  std::string column_key;       // "policy": a column per value
+  std::string metric;           // "triangles_per_frame_at_target"
+  // A flag metric: a row with it 0 shows no figure ("target_reached"); empty: none.
+  std::string valid_flag = {};
+  std::vector<ComparisonColumn> extra_columns = {};
+  // "asset" or row keys: a table (chart) per combination of values. Any other row key of the
+  // compared rows with more than one value splits the tables too (spacing in --suite full).
+  std::vector<std::string> facets = {"asset"};
+  bool operator==(const ComparisonSpec&) const = default;
+};
+
 // A measure's declaration, as results.json and the renderers see it.
 struct MeasureDeclaration {
   std::string measure;  // measure id, e.g. "memory"
@@ -108,7 +134,17 @@ struct MeasureDeclaration {
   std::vector<std::string> notes;
   RowScope summary_scope = {};       // the rows summaries aggregate (empty: every ok row)
   std::vector<PlotSpec> plots = {};  // charts of report.html, in order
+  // Rows made to show a failure (a crack-unsafe policy, a deliberately loosened bound): never
+  // recommended, marked as controls in reports, left out of summaries and comparisons. A row
+  // is a control when it is in the scope of any entry (rowInScope).
+  std::vector<RowScope> control_rows = {};
+  // Side-by-side tables (report.md, opening the section) and bar charts (report.html).
+  std::vector<ComparisonSpec> comparisons = {};
   const MetricSpec* find(std::string_view name) const;
 };
+
+// Whether a row of `declaration`'s measure is a control (MeasureDeclaration::control_rows).
+bool isControlRow(const MeasureDeclaration& declaration,
+                  const std::map<std::string, std::string>& keys);
 
 }  // namespace tb::results

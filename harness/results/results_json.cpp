@@ -1,5 +1,7 @@
 #include "harness/results/results_json.h"
 
+#include "harness/results/json_field.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +14,7 @@ namespace tb::results {
 namespace {
 
 using Json = nlohmann::ordered_json;
+using json_detail::field;
 
 // A metric value as JSON: an integral value as an integer ("12", not "12.0"), anything
 // else as a double in its shortest round-trip form.
@@ -79,19 +82,6 @@ Json recordToJson(const Record& record) {
           {"parameters", parameters},      {"warnings", record.warnings}, {"measures", measures}};
 }
 
-// Reads a required field, naming the path to it when it is missing or mistyped.
-template <class T>
-T field(const Json& object, const char* key, const std::string& where) {
-  if (!object.is_object() || !object.contains(key)) {
-    throw std::runtime_error(where + ": missing field '" + key + "'");
-  }
-  try {
-    return object.at(key).get<T>();
-  } catch (const nlohmann::json::exception&) {
-    throw std::runtime_error(where + ": field '" + key + "' has the wrong type");
-  }
-}
-
 MeasureResult measureFromJson(const Json& json, const std::string& where) {
   MeasureResult measure;
   measure.measure = field<std::string>(json, "measure", where);
@@ -154,85 +144,6 @@ void assignDeclaredUnits(Results* results) {
       }
     }
   }
-}
-
-}  // namespace
-
-Json toJson(const MeasureDeclaration& declaration) {
-  Json metrics = Json::array();
-  for (const MetricSpec& spec : declaration.metrics) {
-    metrics.push_back({{"name", spec.name},
-                       {"unit", toString(spec.unit)},
-                       {"direction", toString(spec.direction)}});
-  }
-  Json json{{"measure", declaration.measure},
-            {"title", declaration.title},
-            {"description", declaration.description},
-            {"headline", declaration.headline},
-            {"notes", declaration.notes},
-            {"metrics", metrics}};
-  if (!declaration.summary_scope.empty()) json["summary_scope"] = declaration.summary_scope;
-  if (!declaration.plots.empty()) {
-    Json plots = Json::array();
-    for (const PlotSpec& plot : declaration.plots) {
-      Json item{{"title", plot.title}, {"kind", toString(plot.kind)}, {"x", plot.x},
-                {"y", plot.y},         {"series", plot.series},        {"facet", plot.facet},
-                {"where", plot.where}, {"log_x", plot.log_x},          {"log_y", plot.log_y},
-                {"pareto_front", plot.pareto_front}, {"reduce", toString(plot.reduce)}};
-      plots.push_back(std::move(item));
-    }
-    json["plots"] = plots;
-  }
-  return json;
-}
-
-namespace {
-
-MeasureDeclaration declarationFromJson(const Json& json, const std::string& where) {
-  MeasureDeclaration declaration;
-  declaration.measure = field<std::string>(json, "measure", where);
-  declaration.title = field<std::string>(json, "title", where);
-  declaration.description = field<std::string>(json, "description", where);
-  declaration.headline = field<std::vector<std::string>>(json, "headline", where);
-  declaration.notes = field<std::vector<std::string>>(json, "notes", where);
-  const Json metrics = field<Json>(json, "metrics", where);
-  for (size_t i = 0; i < metrics.size(); ++i) {
-    const std::string at = where + ".metrics[" + std::to_string(i) + "]";
-    const auto unit = parseUnit(field<std::string>(metrics[i], "unit", at));
-    if (!unit) throw std::runtime_error(at + ": unknown unit");
-    const auto direction = parseDirection(field<std::string>(metrics[i], "direction", at));
-    if (!direction) throw std::runtime_error(at + ": unknown direction");
-    declaration.metrics.push_back({field<std::string>(metrics[i], "name", at), *unit, *direction});
-  }
-  if (json.contains("summary_scope")) {
-    declaration.summary_scope = field<RowScope>(json, "summary_scope", where);
-  }
-  if (json.contains("plots")) {
-    const Json plots = field<Json>(json, "plots", where);
-    for (size_t i = 0; i < plots.size(); ++i) {
-      const std::string at = where + ".plots[" + std::to_string(i) + "]";
-      PlotSpec plot;
-      plot.title = field<std::string>(plots[i], "title", at);
-      const auto kind = parsePlotKind(field<std::string>(plots[i], "kind", at));
-      if (!kind) throw std::runtime_error(at + ": unknown plot kind");
-      plot.kind = *kind;
-      plot.x = field<std::string>(plots[i], "x", at);
-      plot.y = field<std::string>(plots[i], "y", at);
-      plot.series = field<std::string>(plots[i], "series", at);
-      plot.facet = field<std::string>(plots[i], "facet", at);
-      plot.where = field<RowScope>(plots[i], "where", at);
-      plot.log_x = field<bool>(plots[i], "log_x", at);
-      plot.log_y = field<bool>(plots[i], "log_y", at);
-      plot.pareto_front = field<bool>(plots[i], "pareto_front", at);
-      if (plots[i].contains("reduce")) {
-        const auto reduce = parsePlotReduce(field<std::string>(plots[i], "reduce", at));
-        if (!reduce) throw std::runtime_error(at + ": unknown plot reduce");
-        plot.reduce = *reduce;
-      }
-      declaration.plots.push_back(std::move(plot));
-    }
-  }
-  return declaration;
 }
 
 Record recordFromJson(const Json& json, const std::string& where) {

@@ -13,7 +13,10 @@ namespace tb::results {
 nlohmann::ordered_json toJson(const Results& results);
 // One measure's declaration as results.json's "measures" array holds it (also what
 // `tessbench list measures --json` prints).
+// Optional fields (summary_scope, plots, control_rows, comparisons) are left out when empty,
+// and read as empty when absent (results.json files written before them). declaration_json.cpp.
 nlohmann::ordered_json toJson(const MeasureDeclaration& declaration);
+MeasureDeclaration declarationFromJson(const nlohmann::ordered_json& json, const std::string& where);
 // Throws std::runtime_error naming the field when the document does not match
 // the schema (or has another schema_version).
 Results resultsFromJson(const nlohmann::ordered_json& document);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "harness/results/results_json.h"
 #include "tests/cli/cli_support.h"
 #include "tests/test_support.h"
 
@@ -169,6 +170,42 @@ TEST(HtmlBrowser, DefaultRunFirstScreenAnswersAndTradeOffChart) {
   EXPECT_NE(dom.find("data-unlabelled-points=\"0\""), std::string::npos);
   EXPECT_EQ(between(dom, "<ul id=\"script-errors\"", "</ul>").find("<li>"), std::string::npos);
   EXPECT_NE(dom.find("data-below-on-screen=\"false\""), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// The comparison a measure declares, drawn (report.html's grouped bars): the committed default
+// run with the adaptivity declaration given a comparison and control rows as results.json
+// carries them, rendered by `report --format html` and loaded in Chromium: every canvas drawn,
+// a bar chart per asset × camera path among them, and no script error.
+TEST(HtmlBrowser, ComparisonBarChartsAreDrawn) {
+  if (!chromiumOnPath()) GTEST_SKIP() << "chromium is not on PATH";
+  const fs::path dir = testing::scratchDirectory("report_comparison");
+  const std::string baseline = (fs::path(TB_SOURCE_DIR) / "results" / "baseline").string();
+  results::Results run = results::readResultsFile(baseline + "/results.json");
+  for (results::MeasureDeclaration& d : run.measures) {
+    if (d.measure != "adaptivity") continue;
+    d.control_rows = {{{"policy", "*_order_dependent"}}};
+    d.comparisons = {{.title = "Triangles per frame at 1 px",
+                      .where = {{"summary", "max_error_1px"}},
+                      .column_key = "policy",
+                      .metric = "triangles_per_frame_at_target",
+                      .valid_flag = "target_reached",
+                      .extra_columns = {{"uniform", "uniform_triangles_per_frame"}},
+                      .facets = {"asset", "camera_path"}}};
+  }
+  fs::create_directories(dir / "run");
+  std::ofstream(dir / "run" / "results.json") << results::serializeResults(run);
+  const testing::SplitResult report = runTessbenchSplit("report --format html " + (dir / "run").string());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const size_t expected = std::stoul(between(report.out, "data-charts=\"", "\""));
+  EXPECT_GE(occurrences(report.out, ", camera_path orbit\",\"x_label\":\"technique (default variant)\""), 30u)
+      << "a bar chart per bundled asset on the orbit";
+  std::ofstream(dir / "page.html") << report.out;
+  ASSERT_EQ(runChromium(dir / "profile", "--dump-dom", dir / "page.html", dir / "dom.html"), 0);
+  const std::string dom = readFile(dir / "dom.html");
+  EXPECT_EQ(occurrences(dom, "<canvas"), expected);
+  EXPECT_EQ(occurrences(dom, "data-rendered=\"true\""), expected) << "a chart was not drawn";
+  EXPECT_EQ(between(dom, "<ul id=\"script-errors\"", "</ul>").find("<li>"), std::string::npos);
   fs::remove_all(dir);
 }
 

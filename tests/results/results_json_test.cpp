@@ -166,6 +166,37 @@ TEST(ResultsJson, RoundTripsMeasureDeclarationsAndRejectsUnknownUnits) {
   EXPECT_THROW(results::resultsFromJson(json), std::runtime_error);
 }
 
+// Control rows and comparisons: carried when declared, absent (the file's bytes unchanged)
+// when not, and read as empty from files written before them.
+TEST(ResultsJson, ControlRowsAndComparisonsAreOptional) {
+  results::Results declared = sampleResults();
+  EXPECT_FALSE(results::toJson(declared)["measures"][0].contains("control_rows"));
+  EXPECT_FALSE(results::toJson(declared)["measures"][0].contains("comparisons"));
+  declared.measures[0].control_rows = {{{"policy", "*_order_dependent"}},
+                                       {{"policy", "error_bound_loose"}, {"spacing", "integer"}}};
+  declared.measures[0].comparisons = {{.title = "Triangles at 1 px",
+                                       .where = {{"summary", "max_error_1px"}},
+                                       .column_key = "policy",
+                                       .metric = "ratio",
+                                       .valid_flag = "target_reached",
+                                       .extra_columns = {{"uniform", "plain_bytes"}},
+                                       .facets = {"asset", "camera_path"}}};
+  const std::string text = results::serializeResults(declared);
+  const results::Results parsed = results::resultsFromJson(nlohmann::ordered_json::parse(text));
+  EXPECT_EQ(parsed.measures[0].control_rows, declared.measures[0].control_rows);
+  EXPECT_EQ(parsed.measures[0].comparisons, declared.measures[0].comparisons);
+  EXPECT_EQ(results::serializeResults(parsed), text);
+  auto json = results::toJson(declared);
+  json["measures"][0].erase("control_rows");
+  json["measures"][0].erase("comparisons");
+  const results::Results old = results::resultsFromJson(json);
+  EXPECT_TRUE(old.measures[0].control_rows.empty());
+  EXPECT_TRUE(old.measures[0].comparisons.empty());
+  EXPECT_EQ(results::serializeResults(old), results::serializeResults(sampleResults()));
+  json["measures"][0]["comparisons"] = nlohmann::ordered_json::array({{{"title", "no metric"}}});
+  EXPECT_THROW(results::resultsFromJson(json), std::runtime_error);
+}
+
 TEST(MetricSpec, EveryUnitAndDirectionHasOneSpelling) {
   std::set<std::string_view> spellings;
   for (results::Unit unit : results::allUnits()) {

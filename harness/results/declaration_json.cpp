@@ -1,0 +1,146 @@
+// A measure's declaration in results.json (results_json.h): its metrics, notes, summary
+// scope, plots, control rows and comparisons.
+#include <stdexcept>
+
+#include "harness/results/json_field.h"
+#include "harness/results/results_json.h"
+
+namespace tb::results {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using json_detail::field;
+
+Json plotsToJson(const std::vector<PlotSpec>& specs) {
+  Json plots = Json::array();
+  for (const PlotSpec& plot : specs) {
+    plots.push_back({{"title", plot.title}, {"kind", toString(plot.kind)}, {"x", plot.x},
+                     {"y", plot.y},         {"series", plot.series},        {"facet", plot.facet},
+                     {"where", plot.where}, {"log_x", plot.log_x},          {"log_y", plot.log_y},
+                     {"pareto_front", plot.pareto_front}, {"reduce", toString(plot.reduce)}});
+  }
+  return plots;
+}
+
+PlotSpec plotFromJson(const Json& json, const std::string& at) {
+  PlotSpec plot;
+  plot.title = field<std::string>(json, "title", at);
+  const auto kind = parsePlotKind(field<std::string>(json, "kind", at));
+  if (!kind) throw std::runtime_error(at + ": unknown plot kind");
+  plot.kind = *kind;
+  plot.x = field<std::string>(json, "x", at);
+  plot.y = field<std::string>(json, "y", at);
+  plot.series = field<std::string>(json, "series", at);
+  plot.facet = field<std::string>(json, "facet", at);
+  plot.where = field<RowScope>(json, "where", at);
+  plot.log_x = field<bool>(json, "log_x", at);
+  plot.log_y = field<bool>(json, "log_y", at);
+  plot.pareto_front = field<bool>(json, "pareto_front", at);
+  if (json.contains("reduce")) {
+    const auto reduce = parsePlotReduce(field<std::string>(json, "reduce", at));
+    if (!reduce) throw std::runtime_error(at + ": unknown plot reduce");
+    plot.reduce = *reduce;
+  }
+  return plot;
+}
+
+Json comparisonsToJson(const std::vector<ComparisonSpec>& specs) {
+  Json comparisons = Json::array();
+  for (const ComparisonSpec& spec : specs) {
+    Json extra = Json::array();
+    for (const ComparisonColumn& column : spec.extra_columns) {
+      extra.push_back({{"label", column.label}, {"metric", column.metric}});
+    }
+    comparisons.push_back({{"title", spec.title},
+                           {"where", spec.where},
+                           {"column_key", spec.column_key},
+                           {"metric", spec.metric},
+                           {"valid_flag", spec.valid_flag},
+                           {"extra_columns", extra},
+                           {"facets", spec.facets}});
+  }
+  return comparisons;
+}
+
+ComparisonSpec comparisonFromJson(const Json& json, const std::string& at) {
+  ComparisonSpec spec;
+  spec.title = field<std::string>(json, "title", at);
+  spec.where = field<RowScope>(json, "where", at);
+  spec.column_key = field<std::string>(json, "column_key", at);
+  spec.metric = field<std::string>(json, "metric", at);
+  spec.valid_flag = field<std::string>(json, "valid_flag", at);
+  const Json extra = field<Json>(json, "extra_columns", at);
+  for (size_t i = 0; i < extra.size(); ++i) {
+    const std::string column_at = at + ".extra_columns[" + std::to_string(i) + "]";
+    spec.extra_columns.push_back({field<std::string>(extra[i], "label", column_at),
+                                  field<std::string>(extra[i], "metric", column_at)});
+  }
+  spec.facets = field<std::vector<std::string>>(json, "facets", at);
+  return spec;
+}
+
+}  // namespace
+
+Json toJson(const MeasureDeclaration& declaration) {
+  Json metrics = Json::array();
+  for (const MetricSpec& spec : declaration.metrics) {
+    metrics.push_back({{"name", spec.name},
+                       {"unit", toString(spec.unit)},
+                       {"direction", toString(spec.direction)}});
+  }
+  Json json{{"measure", declaration.measure},
+            {"title", declaration.title},
+            {"description", declaration.description},
+            {"headline", declaration.headline},
+            {"notes", declaration.notes},
+            {"metrics", metrics}};
+  // Optional fields, absent when empty: files of measures without them keep their bytes.
+  if (!declaration.summary_scope.empty()) json["summary_scope"] = declaration.summary_scope;
+  if (!declaration.plots.empty()) json["plots"] = plotsToJson(declaration.plots);
+  if (!declaration.control_rows.empty()) json["control_rows"] = declaration.control_rows;
+  if (!declaration.comparisons.empty()) {
+    json["comparisons"] = comparisonsToJson(declaration.comparisons);
+  }
+  return json;
+}
+
+MeasureDeclaration declarationFromJson(const Json& json, const std::string& where) {
+  MeasureDeclaration declaration;
+  declaration.measure = field<std::string>(json, "measure", where);
+  declaration.title = field<std::string>(json, "title", where);
+  declaration.description = field<std::string>(json, "description", where);
+  declaration.headline = field<std::vector<std::string>>(json, "headline", where);
+  declaration.notes = field<std::vector<std::string>>(json, "notes", where);
+  const Json metrics = field<Json>(json, "metrics", where);
+  for (size_t i = 0; i < metrics.size(); ++i) {
+    const std::string at = where + ".metrics[" + std::to_string(i) + "]";
+    const auto unit = parseUnit(field<std::string>(metrics[i], "unit", at));
+    if (!unit) throw std::runtime_error(at + ": unknown unit");
+    const auto direction = parseDirection(field<std::string>(metrics[i], "direction", at));
+    if (!direction) throw std::runtime_error(at + ": unknown direction");
+    declaration.metrics.push_back({field<std::string>(metrics[i], "name", at), *unit, *direction});
+  }
+  if (json.contains("summary_scope")) {
+    declaration.summary_scope = field<RowScope>(json, "summary_scope", where);
+  }
+  if (json.contains("plots")) {
+    const Json plots = field<Json>(json, "plots", where);
+    for (size_t i = 0; i < plots.size(); ++i) {
+      declaration.plots.push_back(plotFromJson(plots[i], where + ".plots[" + std::to_string(i) + "]"));
+    }
+  }
+  // Absent in results written before controls per row and comparisons.
+  if (json.contains("control_rows")) {
+    declaration.control_rows = field<std::vector<RowScope>>(json, "control_rows", where);
+  }
+  if (json.contains("comparisons")) {
+    const Json comparisons = field<Json>(json, "comparisons", where);
+    for (size_t i = 0; i < comparisons.size(); ++i) {
+      declaration.comparisons.push_back(
+          comparisonFromJson(comparisons[i], where + ".comparisons[" + std::to_string(i) + "]"));
+    }
+  }
+  return declaration;
+}
+
+}  // namespace tb::results

@@ -1,0 +1,98 @@
+// The declared comparison and control rows over the committed default run
+// (results/baseline/results.json), with the adaptivity declaration given the lines its
+// MeasureInfo is to declare (adaptivityComparisonLines below): report.md's adaptivity section
+// opens with the table, report.html draws one more chart per asset × camera path. And the
+// baseline's bytes: reading and writing it again without the new fields changes none.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "harness/report/comparison.h"
+#include "harness/report/html.h"
+#include "harness/report/markdown.h"
+#include "harness/results/results_json.h"
+#include "tests/test_paths.h"
+
+namespace tb {
+namespace {
+
+std::string baselinePath() { return std::string(TB_SOURCE_DIR) + "/results/baseline/results.json"; }
+
+// What adaptivity_measure.cpp's MeasureInfo declares after its plots (control_rows, comparisons).
+void adaptivityComparisonLines(results::MeasureDeclaration* d) {
+  const results::MeasureDeclaration declared{
+      {}, {}, {}, {}, {}, {}, {}, {},
+      // control_rows: the crack-unsafe policies, and the error bound doubled on purpose.
+      {{{"policy", "*_order_dependent"}}, {{"policy", "error_bound_loose"}}},
+      // comparisons: triangles per frame at 1 px per policy, against uniform and the ideal.
+      {results::ComparisonSpec{
+          .title = "Triangles per frame at a 1 px tessellation error (fewer is better); "
+                   "ideal = the per-patch optimum every policy is held against",
+          .where = {{"summary", "max_error_1px"}},
+          .column_key = "policy",
+          .metric = "triangles_per_frame_at_target",
+          .valid_flag = "target_reached",
+          .extra_columns = {{"uniform", "uniform_triangles_per_frame"},
+                            {"ideal", "ideal_triangles_per_frame"}},
+          .facets = {"asset", "camera_path"}}}};
+  d->control_rows = declared.control_rows;
+  d->comparisons = declared.comparisons;
+}
+
+const results::Results& plainBaseline() {
+  static const results::Results r = results::readResultsFile(baselinePath());
+  return r;
+}
+
+const results::Results& declaredBaseline() {
+  static const results::Results r = [] {
+    results::Results run = plainBaseline();
+    for (results::MeasureDeclaration& d : run.measures) {
+      if (d.measure == "adaptivity") adaptivityComparisonLines(&d);
+    }
+    return run;
+  }();
+  return r;
+}
+
+TEST(ComparisonBaseline, RewritingTheBaselineKeepsItsBytes) {
+  std::ifstream file(baselinePath());
+  std::stringstream bytes;
+  bytes << file.rdbuf();
+  EXPECT_TRUE(results::serializeResults(plainBaseline()) == bytes.str());
+  EXPECT_EQ(bytes.str().find("\"control_rows\""), std::string::npos);
+}
+
+TEST(ComparisonBaseline, AdaptivitySectionOpensWithTrianglesAt1px) {
+  const results::Results& run = declaredBaseline();
+  const results::MeasureDeclaration* adaptivity = run.findMeasure("adaptivity");
+  ASSERT_NE(adaptivity, nullptr);
+  const report::ComparisonTable table =
+      report::comparisonTable(run, *adaptivity, adaptivity->comparisons[0]);
+  ASSERT_GE(table.groups.size(), 10u) << "a table per asset of the default suite";
+  for (const report::ComparisonGroup& group : table.groups) {
+    EXPECT_EQ(group.facets.size(), 2u) << group.name() << ": one spacing in the default suite";
+    EXPECT_GE(group.key_columns, 1u) << group.name();
+    EXPECT_FALSE(group.lines.empty()) << group.name();
+    EXPECT_EQ(group.columns.at(group.key_columns), "uniform") << group.name();
+  }
+  const std::string md = report::renderMarkdown(run);
+  const size_t section = md.find("### adaptivity\n\nTriangles per frame at a 1 px");
+  ASSERT_NE(section, std::string::npos);
+  const size_t first = md.find("| " + table.groups[0].facets[0].second + " | ", section);
+  EXPECT_LT(first, md.find("**Tessellation-factor adaptivity", section));
+  // tests/baseline/check_baseline.sh's limit on the default run's report.md.
+  EXPECT_LT(std::count(md.begin(), md.end(), '\n'), 1500);
+  const std::string html = report::renderHtml(run, {"window.Chart = function () {};", "", {}, {}});
+  const std::string plain = report::renderHtml(plainBaseline(), {"window.Chart = function () {};", "", {}, {}});
+  const auto charts = [](const std::string& page) {
+    const size_t at = page.find("data-charts=\"") + 13;
+    return std::stoul(page.substr(at, page.find('"', at) - at));
+  };
+  EXPECT_EQ(charts(html), charts(plain) + table.groups.size());
+}
+
+}  // namespace
+}  // namespace tb
