@@ -301,7 +301,8 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
       summary.uniform_triangles_per_frame > 0
           ? summary.triangles_per_frame / summary.uniform_triangles_per_frame
           : 0;
-  const AdaptivityIdeal& best_possible = ideal(spacing, views, error_target_px);
+  const AdaptivityIdeal& best_possible =
+      ideal(spacing, views, error_target_px, uniform.reached ? uniform.level : 0);
   summary.ideal_triangles_per_frame = best_possible.triangles_per_frame;
   summary.ideal_max_error_px = best_possible.max_error_px;
   summary.triangle_ratio_vs_ideal = summary.reached && best_possible.triangles_per_frame > 0

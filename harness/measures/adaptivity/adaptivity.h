@@ -126,12 +126,14 @@ class AdaptivityRun {
                               int search_steps = 7);
 
   // The per-patch ideal for error_target_px under `spacing`, each frame: every patch's lowest
-  // integer level (1..64, 63 at fractional_odd) whose own tessellation error stays within
-  // the target, by bisection on all patches at once (7 passes); a shared edge then takes the
+  // integer level whose own tessellation error stays within the target, by bisection on all
+  // patches at once between 1 and `uniform_level` (the lowest uniform level within the
+  // target on every frame, which passes every patch; 0: none does, then 64, 63 at
+  // fractional_odd), settled patches culled in later passes; a shared edge then takes the
   // larger of its patches' levels (crack-free), the inside the patch's own. Cached per
   // spacing and target.
   const AdaptivityIdeal& ideal(tess::Spacing spacing, const std::vector<view::View>& views,
-                               double error_target_px);
+                               double error_target_px, uint32_t uniform_level);
 
   // Why `policy` cannot run on these patches (error_bound without the technique's
   // second-derivative bounds); empty when it can. Computes error_bound's inputs once.
@@ -161,7 +163,7 @@ class AdaptivityRun {
   const UniformBest& uniformBest(lod::InnerReduction reduction, tess::Spacing spacing,
                                  const std::vector<view::View>& views, double error_target_px);
   std::vector<tess::Levels> idealFrame(tess::Spacing spacing, const view::View& view,
-                                       double error_target_px, uint32_t* passes);
+                                       double error_target_px, uint32_t highest, uint32_t* passes);
   void runDevice(const lod::FactorPolicy& policy, tess::Spacing spacing, const view::View& view,
                  const std::vector<tess::Levels>& twin, const AdaptivityParts& parts,
                  AdaptivityFrame* frame);

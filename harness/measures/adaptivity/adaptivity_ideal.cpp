@@ -24,22 +24,24 @@ tess::Levels patchAt(techniques::PatchDomain domain, float level) {
 }  // namespace
 
 std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const view::View& view,
-                                                    double error_target_px, uint32_t* passes) {
+                                                    double error_target_px, uint32_t highest,
+                                                    uint32_t* passes) {
   const size_t count = patches_.patchCount();
-  const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
   // Per patch: the highest level known to fail (0: none yet) and the lowest known to pass
-  // (`highest` is taken to pass: a patch that needs more gets the most there is).
+  // (`highest`: the uniform level that passes every patch on every frame, or the most there
+  // is when none does).
   std::vector<uint32_t> fails(count, 0), passes_at(count, highest);
   std::vector<tess::Levels> trial(count);
   std::vector<double> patch_max;
+  // Settled patches are culled (level 0) in the passes that follow, so they cost nothing.
   auto evaluate = [&](auto levelOf) {
     for (size_t p = 0; p < count; ++p) trial[p] = patchAt(patches_.patchDomain(p), float(levelOf(p)));
     screen_->tessellationError(spacing, trial, view, nullptr, &patch_max);
     ++*passes;
   };
   // Level 1 first (most patches off screen or flat pass there), then bisection.
-  evaluate([](size_t) { return 1u; });
-  for (size_t p = 0; p < count; ++p) {
+  evaluate([&](size_t) { return highest > 1 ? 1u : 0u; });
+  for (size_t p = 0; p < count && highest > 1; ++p) {
     if (patch_max[p] <= error_target_px) passes_at[p] = 1;
     else fails[p] = 1;
   }
@@ -48,7 +50,7 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
     for (size_t p = 0; p < count; ++p) open = open || passes_at[p] - fails[p] > 1;
     if (!open) break;
     auto mid = [&](size_t p) {
-      return passes_at[p] - fails[p] > 1 ? (fails[p] + passes_at[p]) / 2 : passes_at[p];
+      return passes_at[p] - fails[p] > 1 ? (fails[p] + passes_at[p]) / 2 : 0u;
     };
     evaluate(mid);
     for (size_t p = 0; p < count; ++p) {
@@ -70,13 +72,15 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
 }
 
 const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::vector<view::View>& views,
-                                            double error_target_px) {
+                                            double error_target_px, uint32_t uniform_level) {
   const auto key = std::make_pair(int(spacing), error_target_px);
   if (const auto it = ideal_cache_.find(key); it != ideal_cache_.end()) return it->second;
+  const uint32_t highest = uniform_level > 0 ? uniform_level
+                                             : (spacing == tess::Spacing::kFractionalOdd ? 63 : 64);
   AdaptivityIdeal out;
   uint64_t triangles = 0;
   for (const view::View& view : views) {
-    const std::vector<tess::Levels> levels = idealFrame(spacing, view, error_target_px, &out.passes);
+    const std::vector<tess::Levels> levels = idealFrame(spacing, view, error_target_px, highest, &out.passes);
     uint64_t frame_triangles = 0;
     const lod::ScreenErrorFigures e = screen_->tessellationError(spacing, levels, view, &frame_triangles);
     ++out.passes;

@@ -355,7 +355,20 @@ class AdaptivityMeasure final : public Measure {
                            .facet = "asset",
                            .where = {{"frame", "*"}},
                            .log_x = true,
-                           .log_y = true}}};
+                           .log_y = true}},
+        // control_rows: the crack-unsafe policies, and the error bound loosened on purpose.
+        {{{"policy", "*_order_dependent"}}, {{"policy", "error_bound_loose"}}},
+        // comparisons: triangles per frame at 1 px per policy, against uniform and the ideal.
+        {results::ComparisonSpec{
+            .title = "Triangles per frame at a 1 px tessellation error (fewer is better); "
+                     "ideal = the per-patch optimum every policy is held against",
+            .where = {{"summary", kSummaryKey}},
+            .column_key = "policy",
+            .metric = "triangles_per_frame_at_target",
+            .valid_flag = "target_reached",
+            .extra_columns = {{"uniform", "uniform_triangles_per_frame"},
+                              {"ideal", "ideal_triangles_per_frame"}},
+            .facets = {"asset", "camera_path"}}}};
     return kInfo;
   }
 
