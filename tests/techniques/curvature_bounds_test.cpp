@@ -161,6 +161,9 @@ int violations(const Sampled& sampled, const std::array<double, 7>& bound, doubl
 
 struct Tally {
   size_t patches = 0, bounded = 0, curved = 0, failing = 0, failing_halved = 0;
+  // Edges two patches share; of them, those with different edge[] on one curve (a failure)
+  // and those whose two curves differ (a crack of the technique, no fault of the bound).
+  size_t shared_edges = 0, disagreeing_edges = 0, cracked_edges = 0;
   std::vector<double> ratio, edge_ratio;  // per bounded patch: max sampled / bound
 };
 
@@ -170,7 +173,81 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+// The control-mesh corners at the ends of edge e of a patch, in CurvatureBounds' edge order
+// (quad: u = 0 joins corners 0 and 3, v = 0 corners 0 and 1, u = 1 corners 1 and 2, v = 1
+// corners 3 and 2; triangle: u = 0 joins corners 1 and 2, v = 0 2 and 0, w = 0 0 and 1).
+std::pair<uint32_t, uint32_t> edgeCorners(const std::array<uint32_t, 4>& c, bool quad, int e) {
+  static constexpr int kQuad[4][2] = {{0, 3}, {0, 1}, {1, 2}, {3, 2}};
+  static constexpr int kTriangle[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+  const int* ends = quad ? kQuad[e] : kTriangle[e];
+  const uint32_t a = c[size_t(ends[0])], b = c[size_t(ends[1])];
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The point at t of edge e of a patch (t from its first corner, as the samplers above).
+mesh::Vec3d edgePoint(const techniques::SurfacePatches& s, size_t p, int e, double t) {
+  if (s.patchDomain(p) == PatchDomain::kQuad) {
+    static constexpr double kQuad[4][4] = {{0, 0, 0, 1}, {0, 0, 1, 0}, {1, 0, 0, 1}, {0, 1, 1, 0}};
+    const double* q = kQuad[e];
+    return s.evaluate(p, {q[0] + q[2] * t, q[1] + q[3] * t, 0}).position;
+  }
+  static constexpr double kTriangle[3][4] = {{0, 1, 0, -1}, {0, 0, 1, 0}, {1, 0, -1, 1}};
+  const double* q = kTriangle[e];
+  const double u = q[0] + q[2] * t, v = q[1] + q[3] * t;
+  return s.evaluate(p, {u, v, 1 - u - v}).position;
+}
+
+// True when the two patches' curves on their shared edge differ (a crack in the surface
+// itself): compared at t = 0.3 and 0.5, either direction.
+bool curvesDiffer(const techniques::SurfacePatches& s, size_t p, int e, size_t q, int f) {
+  const double size = boxDiagonal(s.curvatureBounds(p)->hull);
+  const double tolerance = 1e-9 * size;
+  const mesh::Vec3d a = edgePoint(s, p, e, 0.3);
+  const double apart =
+      std::min(length(a - edgePoint(s, q, f, 0.3)), length(a - edgePoint(s, q, f, 0.7)));
+  return apart > tolerance || length(edgePoint(s, p, e, 0.5) - edgePoint(s, q, f, 0.5)) > tolerance;
+}
+
+// Two patches that share an edge get the same edge[] bound up to rounding (the struct's
+// promise, which keeps the error_bound policy's levels of a shared edge equal) within 1e-9
+// of the larger bound or of the edge's extent (per-patch nets round differently), unless
+// their edge curves differ (pn_triangles/rounding scales an edge's bulge by each face's
+// own corner normals, so split normals give two curves).
+void checkSharedEdges(const techniques::SurfacePatches& s, const std::string& what, Tally& tally) {
+  struct Seen {
+    size_t patch;
+    int edge;
+    double bound;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, Seen> first;
+  for (size_t p = 0; p < s.patchCount(); ++p) {
+    const std::optional<techniques::CurvatureBounds> bounds = s.curvatureBounds(p);
+    if (!bounds) continue;
+    const bool quad = s.patchDomain(p) == PatchDomain::kQuad;
+    for (int e = 0; e < (quad ? 4 : 3); ++e) {
+      const double bound = bounds->edge[size_t(e)];
+      const auto [it, fresh] =
+          first.try_emplace(edgeCorners(s.patchCorners(p), quad, e), Seen{p, e, bound});
+      if (fresh) continue;
+      ++tally.shared_edges;
+      // Rounding: of the larger bound, or of the edge's extent where the edge is straight.
+      const double scale = std::max(
+          {std::abs(bound), std::abs(it->second.bound), boxDiagonal(bounds->edge_hull[size_t(e)])});
+      if (std::abs(bound - it->second.bound) <= 1e-9 * scale) continue;
+      if (curvesDiffer(s, p, e, it->second.patch, it->second.edge)) {
+        ++tally.cracked_edges;
+      } else {
+        ++tally.disagreeing_edges;
+        ADD_FAILURE() << what << ": patches " << it->second.patch << " and " << p
+                      << " share an edge curve but bound it by " << it->second.bound << " and "
+                      << bound;
+      }
+    }
+  }
+}
+
 void checkSurface(const techniques::SurfacePatches& s, const std::string& what, Tally& tally) {
+  checkSharedEdges(s, what, tally);
   for (size_t p = 0; p < s.patchCount(); ++p) {
     ++tally.patches;
     const std::optional<techniques::CurvatureBounds> bounds = s.curvatureBounds(p);
@@ -222,9 +299,11 @@ TEST(CurvatureBounds, SampledSecondDifferencesStayWithinTheBoundsOfEveryTechniqu
   for (const auto& [id, tally] : by_variant) {
     std::printf(
         "%-32s patches %5zu, bounded %5zu; median max sampled / bound: surface %.3f, edges "
-        "%.3f; failing %zu, failing with halved bounds %zu\n",
+        "%.3f; failing %zu, failing with halved bounds %zu; shared edges %zu, disagreeing %zu, "
+        "cracked %zu\n",
         id.c_str(), tally.patches, tally.bounded, median(tally.ratio), median(tally.edge_ratio),
-        tally.failing, tally.failing_halved);
+        tally.failing, tally.failing_halved, tally.shared_edges, tally.disagreeing_edges,
+        tally.cracked_edges);
     // The control: halved bounds are caught on some patch wherever there are bounds above
     // rounding (phong/alpha0 is the flat triangle: every bound and sample 0).
     if (tally.curved > 0) {
