@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -164,6 +165,7 @@ struct Tally {
   // Edges two patches share; of them, those with different edge[] on one curve (a failure)
   // and those whose two curves differ (a crack of the technique, no fault of the bound).
   size_t shared_edges = 0, disagreeing_edges = 0, cracked_edges = 0;
+  double seconds = 0;  // in curvatureBounds() (once per patch, in checkSharedEdges)
   std::vector<double> ratio, edge_ratio;  // per bounded patch: max sampled / bound
 };
 
@@ -221,7 +223,10 @@ void checkSharedEdges(const techniques::SurfacePatches& s, const std::string& wh
   };
   std::map<std::pair<uint32_t, uint32_t>, Seen> first;
   for (size_t p = 0; p < s.patchCount(); ++p) {
+    const auto start = std::chrono::steady_clock::now();
     const std::optional<techniques::CurvatureBounds> bounds = s.curvatureBounds(p);
+    tally.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!bounds) continue;
     const bool quad = s.patchDomain(p) == PatchDomain::kQuad;
     for (int e = 0; e < (quad ? 4 : 3); ++e) {
@@ -300,10 +305,10 @@ TEST(CurvatureBounds, SampledSecondDifferencesStayWithinTheBoundsOfEveryTechniqu
     std::printf(
         "%-32s patches %5zu, bounded %5zu; median max sampled / bound: surface %.3f, edges "
         "%.3f; failing %zu, failing with halved bounds %zu; shared edges %zu, disagreeing %zu, "
-        "cracked %zu\n",
+        "cracked %zu; %.2f us per patch\n",
         id.c_str(), tally.patches, tally.bounded, median(tally.ratio), median(tally.edge_ratio),
         tally.failing, tally.failing_halved, tally.shared_edges, tally.disagreeing_edges,
-        tally.cracked_edges);
+        tally.cracked_edges, 1e6 * tally.seconds / double(std::max<size_t>(tally.patches, 1)));
     // The control: halved bounds are caught on some patch wherever there are bounds above
     // rounding (phong/alpha0 is the flat triangle: every bound and sample 0).
     if (tally.curved > 0) {
