@@ -5,10 +5,15 @@
 # below). Prints per case: the best value found at a point, and the proven upper bound.
 # Usage: python3 scripts/gregory_blend_constants.py [tolerance, default 1e-3]
 # (sympy; several minutes; corners 2 and 3 of the quad only repeat corners 0 and 1).
+# python3 scripts/gregory_blend_constants.py --quadrants 10 11: the quad corner 0's g_0 on
+# the quadrants u in [1/2, 1] x v in [0, 1/2] (10) and [1/2, 1]^2 (11), away from the corner,
+# by the same branch and bound directly in (u, v) (g_0's second derivatives are N / (u + v)^k
+# there, smooth); quadrant 00 is bounded by the whole domain's, 01 is 10 with uu and vv
+# swapped.
 import sympy as sp
 from fractions import Fraction as F
 import heapq, sys
-TOL = float(sys.argv[1]) if len(sys.argv) > 1 else 1e-3
+TOL = float(sys.argv[1]) if len(sys.argv) > 1 and sys.argv[1] != '--quadrants' else 1e-3
 u, v, r, s = sp.symbols('u v r s')
 
 def quad_cases():
@@ -93,5 +98,60 @@ def run(cases, quad):
             print('quad' if quad else 'tri', c, name, lo_, up_, flush=True)
         out.append(row)
     return out
-run(quad_cases()[:2], True)
-run(tri_cases(), False)
+
+def quadrants():
+    TOL = F(2, 1000)
+    g = 9*u*(1-u)**2*v*(1-v)**2*(u-v)/(u+v)
+    def ipow(lo, hi, k):
+        return (lo**k, hi**k)  # lo >= 0
+    for q in sys.argv[2:]:
+        qa, qb = int(q[0]), int(q[1])
+        U0, V0 = F(qa, 2), F(qb, 2)
+        for name, d in (('uu', sp.diff(g, u, 2)), ('uv', sp.diff(g, u, v)), ('vv', sp.diff(g, v, 2))):
+            num, den = sp.fraction(sp.factor(sp.together(d)))
+            den = sp.factor(den)
+            # den = (u+v)^k
+            k = sp.degree(den, u)
+            assert sp.expand(den - (u+v)**k) == 0, den
+            P = sp.Poly(sp.expand(num), u, v)
+            terms = [(m, F(int(sp.fraction(c)[0]), int(sp.fraction(c)[1]))) for m, c in zip(P.monoms(), P.coeffs())]
+            fn = sp.lambdify((u, v), d)
+            def rng(ulo, uhi, vlo, vhi):
+                lo = hi = F(0)
+                for (i, j), c in terms:
+                    a0, a1 = ipow(ulo, uhi, i); b0, b1 = ipow(vlo, vhi, j)
+                    pl, ph = a0*b0, a1*b1
+                    if c >= 0: lo += c*pl; hi += c*ph
+                    else: lo += c*ph; hi += c*pl
+                dlo, dhi = (ulo+vlo)**k, (uhi+vhi)**k
+                cands = [lo/dlo, lo/dhi, hi/dlo, hi/dhi]
+                return max(abs(x) for x in cands) if not (lo <= 0 <= hi) else max(abs(lo/dlo), abs(hi/dlo))
+            best = F(0)
+            n = 100
+            for i in range(n+1):
+                for j in range(n+1):
+                    best = max(best, F(abs(fn(float(U0 + F(i, 2*n)), float(V0 + F(j, 2*n))))))
+            best = F(float(best))
+            heap = [(0, U0, U0 + F(1, 2), V0, V0 + F(1, 2))]
+            upper = F(0); count = 0
+            while heap:
+                _, a0, a1, b0, b1 = heapq.heappop(heap)
+                ub = rng(a0, a1, b0, b1)
+                if ub <= best + TOL:
+                    upper = max(upper, ub); continue
+                am, bm = (a0+a1)/2, (b0+b1)/2
+                best = max(best, F(abs(fn(float(am), float(bm)))))
+                for x0, x1 in ((a0, am), (am, a1)):
+                    for y0, y1 in ((b0, bm), (bm, b1)):
+                        heapq.heappush(heap, (-float(ub), x0, x1, y0, y1))
+                count += 1
+                if count > 200000: print('too many boxes', q, name, flush=True); sys.exit(1)
+            print(q, name, float(best), float(max(upper, best)), count, flush=True)
+
+
+if len(sys.argv) > 1 and sys.argv[1] == '--quadrants':
+    quadrants()
+else:
+    run(quad_cases()[:2], True)
+    run(tri_cases(), False)
+
