@@ -16,6 +16,8 @@
 // A control: the same check against halved bounds fails on some patch of every technique
 // with bounds, so the check is seen to catch a bound that is too small. Prints the median
 // over patches of max sampled / bound per technique and variant (the tightness).
+#include "techniques/common/curvature_bounds.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -322,6 +324,105 @@ TEST(CurvatureBounds, SampledSecondDifferencesStayWithinTheBoundsOfEveryTechniqu
     ASSERT_TRUE(by_variant.count(id)) << id;
     EXPECT_EQ(by_variant[id].bounded, by_variant[id].patches) << id;
     EXPECT_GT(by_variant[id].patches, 20u) << id;
+  }
+}
+
+// The Gregory blend functions g_c = B_c (a - b) / (a + b) of curvature_bounds.h, sampled with
+// the same second-difference identities: within every constant they are given, and close to
+// it where the constant is the supremum (so a constant read from the wrong quadrant or corner
+// shows).
+double cubicBernstein(int i, double x) {
+  const double y = 1 - x;
+  const double b[4] = {y * y * y, 3 * x * y * y, 3 * x * x * y, x * x * x};
+  return b[i];
+}
+
+double quadBlend(int c, double u, double v) {
+  static constexpr int kColumn[4] = {1, 2, 2, 1}, kRow[4] = {1, 1, 2, 2};
+  const double a[4] = {u, v, 1 - u, 1 - v}, b[4] = {v, 1 - u, 1 - v, u};
+  const double t = (a[c] - b[c]) / (a[c] + b[c]);
+  return cubicBernstein(kColumn[c], u) * cubicBernstein(kRow[c], v) * t;
+}
+
+double triangleBlend(int c, double u, double v) {
+  const double w = 1 - u - v;
+  const double x[3] = {u, v, w};
+  const double a = x[(c + 1) % 3], b = x[(c + 2) % 3];  // (v, w), (w, u), (u, v)
+  return 12 * x[c] * x[c] * a * b * (a - b) / (a + b);
+}
+
+// Largest |second differences| of f over the points (u, v) of `points` (step h).
+template <class F>
+std::array<double, 3> blendSecondDifferences(const F& f,
+                                             const std::vector<std::array<double, 2>>& points,
+                                             double h) {
+  std::array<double, 3> m{};
+  const double inv = 1 / (h * h);
+  for (const auto& [u, v] : points) {
+    const double c = f(u, v);
+    m[0] = std::max(m[0], std::abs(f(u + h, v) - 2 * c + f(u - h, v)) * inv);
+    m[1] = std::max(
+        m[1], std::abs(f(u + h, v + h) - f(u + h, v - h) - f(u - h, v + h) + f(u - h, v - h)) *
+                  (0.25 * inv));
+    m[2] = std::max(m[2], std::abs(f(u, v + h) - 2 * c + f(u, v - h)) * inv);
+  }
+  return m;
+}
+
+TEST(CurvatureBounds, GregoryBlendConstantsBoundTheBlendFunctions) {
+  constexpr double kH = 1e-4;
+  constexpr int kGrid = 60;
+  const double tolerance = 1e-5;  // rounding of the differences of O(1) values over h^2
+  for (int qa = 0; qa < 2; ++qa) {
+    for (int qb = 0; qb < 2; ++qb) {
+      std::vector<std::array<double, 2>> points;  // inside the quadrant by 2 h
+      for (int j = 0; j <= kGrid; ++j) {
+        for (int i = 0; i <= kGrid; ++i) {
+          points.push_back({0.5 * qa + 2 * kH + (0.5 - 4 * kH) * i / kGrid,
+                            0.5 * qb + 2 * kH + (0.5 - 4 * kH) * j / kGrid});
+        }
+      }
+      for (int c = 0; c < 4; ++c) {
+        const auto m = blendSecondDifferences(
+            [c](double u, double v) { return quadBlend(c, u, v); }, points, kH);
+        // Corner c reads g_0's quadrant reflected in u (corners 1, 2) and v (2, 3).
+        const int ra = qa ^ (c == 1 || c == 2), rb = qb ^ (c >= 2);
+        const auto& k = techniques::kGregoryQuadBlend[size_t(ra)][size_t(rb)];
+        const std::string what = "quad corner " + std::to_string(c) + " quadrant " +
+                                 std::to_string(qa) + std::to_string(qb);
+        EXPECT_LE(m[0], k.uu + tolerance) << what;
+        EXPECT_LE(m[1], k.uv + tolerance) << what;
+        EXPECT_LE(m[2], k.vv + tolerance) << what;
+        std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
+                    m[1] / k.uv, m[2] / k.vv);
+        if (ra == 1 && rb == 1) continue;  // g_0's far quadrant: the whole domain's constants
+        // The constants are suprema (limits at corner 0 in quadrant 00), so the grid comes close.
+        EXPECT_GT(m[0], 0.9 * k.uu) << what;
+        EXPECT_GT(m[1], 0.9 * k.uv) << what;
+        EXPECT_GT(m[2], 0.9 * k.vv) << what;
+      }
+    }
+  }
+  std::vector<std::array<double, 2>> points;  // inside the triangle by 2 h
+  for (int j = 0; j <= kGrid; ++j) {
+    for (int i = 0; i + j <= kGrid; ++i) {
+      points.push_back({3 * kH + (1 - 9 * kH) * i / kGrid, 3 * kH + (1 - 9 * kH) * j / kGrid});
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    const auto m = blendSecondDifferences(
+        [c](double u, double v) { return triangleBlend(c, u, v); }, points, kH);
+    const auto& k = techniques::kGregoryTriangleBlend[size_t(c)];
+    const std::string what = "triangle corner " + std::to_string(c);
+    EXPECT_LE(m[0], k.uu + tolerance) << what;
+    EXPECT_LE(m[1], k.uv + tolerance) << what;
+    EXPECT_LE(m[2], k.vv + tolerance) << what;
+    // The suprema are limits at the corner; a grid 3 h from it comes within a few percent.
+    EXPECT_GT(m[0], 0.9 * k.uu) << what;
+    EXPECT_GT(m[1], 0.9 * k.uv) << what;
+    EXPECT_GT(m[2], 0.9 * k.vv) << what;
+    std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
+                m[1] / k.uv, m[2] / k.vv);
   }
 }
 
