@@ -395,10 +395,12 @@ TEST(CurvatureBounds, GregoryBlendConstantsBoundTheBlendFunctions) {
         EXPECT_LE(m[2], k.vv + tolerance) << what;
         std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
                     m[1] / k.uv, m[2] / k.vv);
-        if (ra == 1 && rb == 1) continue;  // g_0's far quadrant: the whole domain's constants
-        // The constants are suprema (limits at corner 0 in quadrant 00), so the grid comes close.
+        // The constants are suprema (limits at corner 0 in quadrant 00), so the grid comes
+        // close; but g_0's uv on its far quadrant holds the whole domain's constant.
         EXPECT_GT(m[0], 0.9 * k.uu) << what;
-        EXPECT_GT(m[1], 0.9 * k.uv) << what;
+        if (ra == 0 || rb == 0) {
+          EXPECT_GT(m[1], 0.9 * k.uv) << what;
+        }
         EXPECT_GT(m[2], 0.9 * k.vv) << what;
       }
     }
