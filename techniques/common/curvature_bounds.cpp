@@ -49,9 +49,9 @@
 // 0.856 (proven 0.8761; the quadrant is its own mirror), uv the whole domain's 9 (the branch
 // and bound did not finish in time; sampled 0.42). (The quadrants away from the corner by
 // interval branch and bound directly in (u, v), where g_0 is smooth: scripts/
-// gregory_blend_constants.py --quadrants 10 and --far-quadrant.) Corners 1..3 are corner 0 reflected
-// (g_1(u, v) = -g_0(1 - u, v), g_2 = g_0(1 - u, 1 - v), g_3 = -g_0(u, 1 - v)); reflections
-// keep |∂uu|, |∂uv|, |∂vv|, so corner c reads g_0's reflected quadrant.
+// gregory_blend_constants.py --quadrants 10 and --far-quadrant.) Corners 1..3 are corner 0
+// reflected (g_1(u, v) = -g_0(1 - u, v), g_2 = g_0(1 - u, 1 - v), g_3 = -g_0(u, 1 - v));
+// reflections keep |∂uu|, |∂uv|, |∂vv|, so corner c reads g_0's reflected quadrant.
 //   Triangle (quartic B_c = 12 x^2 y z, x the corner's own coordinate), per corner since
 // w = 1 - u - v breaks the symmetry of the (u, v) derivatives: (uu, uv, vv) = (48, 60, 72)
 // at corner 0, (72, 60, 48) at corner 1, (48, 12, 48) at corner 2 (proven upper bounds
