@@ -5,10 +5,16 @@
 # below). Prints per case: the best value found at a point, and the proven upper bound.
 # Usage: python3 scripts/gregory_blend_constants.py [tolerance, default 1e-3]
 # (sympy; several minutes; corners 2 and 3 of the quad only repeat corners 0 and 1).
+# python3 scripts/gregory_blend_constants.py --quadrants 10: the quad corner 0's g_0 on
+# the quadrants u in [1/2, 1] x v in [0, 1/2] (10) and [1/2, 1]^2 (11), away from the corner,
+# by the same branch and bound directly in (u, v) (g_0's second derivatives are N / (u + v)^k
+# there, smooth; 10 only: --far-quadrant bounds 11 in (1 - u, 1 - v), tolerance 2e-2, and
+# its uv did not finish within 10 minutes); quadrant 00 is bounded by the whole domain's, 01
+# is 10 with uu and vv swapped.
 import sympy as sp
 from fractions import Fraction as F
 import heapq, sys
-TOL = float(sys.argv[1]) if len(sys.argv) > 1 else 1e-3
+TOL = float(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith('--') else 1e-3
 u, v, r, s = sp.symbols('u v r s')
 
 def quad_cases():
@@ -93,5 +99,103 @@ def run(cases, quad):
             print('quad' if quad else 'tri', c, name, lo_, up_, flush=True)
         out.append(row)
     return out
-run(quad_cases()[:2], True)
-run(tri_cases(), False)
+
+def quadrants():
+    TOL = F(2, 1000)
+    g = 9*u*(1-u)**2*v*(1-v)**2*(u-v)/(u+v)
+    def ipow(lo, hi, k):
+        return (lo**k, hi**k)  # lo >= 0
+    for q in sys.argv[2:]:
+        qa, qb = int(q[0]), int(q[1])
+        U0, V0 = F(qa, 2), F(qb, 2)
+        for name, d in (('uu', sp.diff(g, u, 2)), ('uv', sp.diff(g, u, v)), ('vv', sp.diff(g, v, 2))):
+            num, den = sp.fraction(sp.factor(sp.together(d)))
+            den = sp.factor(den)
+            # den = (u+v)^k
+            k = sp.degree(den, u)
+            assert sp.expand(den - (u+v)**k) == 0, den
+            P = sp.Poly(sp.expand(num), u, v)
+            terms = [(m, F(int(sp.fraction(c)[0]), int(sp.fraction(c)[1]))) for m, c in zip(P.monoms(), P.coeffs())]
+            fn = sp.lambdify((u, v), d)
+            def rng(ulo, uhi, vlo, vhi):
+                lo = hi = F(0)
+                for (i, j), c in terms:
+                    a0, a1 = ipow(ulo, uhi, i); b0, b1 = ipow(vlo, vhi, j)
+                    pl, ph = a0*b0, a1*b1
+                    if c >= 0: lo += c*pl; hi += c*ph
+                    else: lo += c*ph; hi += c*pl
+                dlo, dhi = (ulo+vlo)**k, (uhi+vhi)**k
+                cands = [lo/dlo, lo/dhi, hi/dlo, hi/dhi]
+                return max(abs(x) for x in cands) if not (lo <= 0 <= hi) else max(abs(lo/dlo), abs(hi/dlo))
+            best = F(0)
+            n = 100
+            for i in range(n+1):
+                for j in range(n+1):
+                    best = max(best, F(abs(fn(float(U0 + F(i, 2*n)), float(V0 + F(j, 2*n))))))
+            best = F(float(best))
+            heap = [(0, U0, U0 + F(1, 2), V0, V0 + F(1, 2))]
+            upper = F(0); count = 0
+            while heap:
+                _, a0, a1, b0, b1 = heapq.heappop(heap)
+                ub = rng(a0, a1, b0, b1)
+                if ub <= best + TOL:
+                    upper = max(upper, ub); continue
+                am, bm = (a0+a1)/2, (b0+b1)/2
+                best = max(best, F(abs(fn(float(am), float(bm)))))
+                for x0, x1 in ((a0, am), (am, a1)):
+                    for y0, y1 in ((b0, bm), (bm, b1)):
+                        heapq.heappush(heap, (-float(ub), x0, x1, y0, y1))
+                count += 1
+                if count > 200000: print('too many boxes', q, name, flush=True); sys.exit(1)
+            print(q, name, float(best), float(max(upper, best)), count, flush=True)
+
+
+def far_quadrant():
+    # Quadrant 11 in x = 1 - u, y = 1 - v (monomials in u, v near 1 cancel badly).
+    x, y = sp.symbols('x y')
+    TOL = F(2, 100)
+    g = 9*u*(1-u)**2*v*(1-v)**2*(u-v)/(u+v)
+    for name, d in (('uu', sp.diff(g, u, 2)), ('uv', sp.diff(g, u, v)), ('vv', sp.diff(g, v, 2))):
+        num, den = sp.fraction(sp.factor(sp.together(d)))
+        k = sp.degree(den, u)
+        assert sp.expand(den - (u+v)**k) == 0
+        N = sp.expand(num.subs({u: 1-x, v: 1-y}))
+        P = sp.Poly(N, x, y)
+        terms = [(m, F(int(sp.fraction(c)[0]), int(sp.fraction(c)[1]))) for m, c in zip(P.monoms(), P.coeffs())]
+        fn = sp.lambdify((x, y), d.subs({u: 1-x, v: 1-y}))
+        def rng(a0, a1, b0, b1):
+            lo = hi = F(0)
+            for (i, j), c in terms:
+                pl, ph = a0**i * b0**j, a1**i * b1**j
+                if c >= 0: lo += c*pl; hi += c*ph
+                else: lo += c*ph; hi += c*pl
+            dlo = (2 - a1 - b1)**k  # smallest denominator
+            return max(abs(lo), abs(hi)) / dlo
+        best = F(0)
+        for i in range(101):
+            for j in range(101):
+                best = max(best, F(abs(fn(i/200, j/200))))
+        heap = [(0, F(0), F(1, 2), F(0), F(1, 2))]
+        upper = F(0); count = 0
+        while heap:
+            _, a0, a1, b0, b1 = heapq.heappop(heap)
+            ub = rng(a0, a1, b0, b1)
+            if ub <= best + TOL:
+                upper = max(upper, ub); continue
+            am, bm = (a0+a1)/2, (b0+b1)/2
+            best = max(best, F(abs(fn(float(am), float(bm)))))
+            for p0, p1 in ((a0, am), (am, a1)):
+                for q0, q1 in ((b0, bm), (bm, b1)):
+                    heapq.heappush(heap, (-float(ub), p0, p1, q0, q1))
+            count += 1
+            if count > 300000: print('too many boxes', name, flush=True); sys.exit(1)
+        print('11 (x = 1 - u, y = 1 - v)', name, float(best), float(max(upper, best)), count, flush=True)
+
+if len(sys.argv) > 1 and sys.argv[1] == '--quadrants':
+    quadrants()
+elif len(sys.argv) > 1 and sys.argv[1] == '--far-quadrant':
+    far_quadrant()
+else:
+    run(quad_cases()[:2], True)
+    run(tri_cases(), False)
+

@@ -37,11 +37,21 @@
 // bound on that polynomial (scripts/gregory_blend_constants.py: exact rational interval
 // arithmetic, boxes halved until their upper bound is within 1e-3 of the best value found at
 // a point of the domain; the largest upper bound of the leaves is the bound).
-//   Quad (bicubic B_c, e.g. corner 0: 9 u (1-u)^2 v (1-v)^2, t = (u - v) / (u + v)):
-// sup |∂uu g| = sup |∂vv g| = 36, sup |∂uv g| = 9 (attained in the limit at the corner;
-// proven upper bounds 36.00005 and 9.0001, stored as 36.001 and 9.001). Corners 1..3 are
-// corner 0 reflected (u -> 1 - u, v -> 1 - v keep |∂uu|, |∂vv|, |∂uv|) and swapped (u <-> v
-// negates g and swaps uu with vv), so they share the constants.
+//   Quad (bicubic B_c, e.g. corner 0: 9 u (1-u)^2 v (1-v)^2, t = (u - v) / (u + v)): over
+// the whole domain sup |∂uu g_0| = sup |∂vv g_0| = 36, sup |∂uv g_0| = 9, attained in the
+// limit at corner 0. Far from its corner g_0 bends far less, so gregoryQuadNetCurvatureBounds
+// bounds each quadrant of the domain on its own (the midpoint patch on its de Casteljau
+// quarter net, each blend with its constant on that quadrant) and takes the largest. g_0's
+// constants (uu, uv, vv) per quadrant, proven upper bounds (tolerance 2e-3 or 2e-2) rounded
+// up: [0, 1/2]^2 (36, 9, 36), the whole domain's (proven 36.00005, 9.0001, 36.00005);
+// [1/2, 1] x [0, 1/2] (1.541, 3.000, 13.5) (proven 1.5428, 3.0020, 13.5020); [0, 1/2] x
+// [1/2, 1] the same with uu and vv swapped (g_0(v, u) = -g_0(u, v)); [1/2, 1]^2 uu = vv =
+// 0.856 (proven 0.8761; the quadrant is its own mirror), uv the whole domain's 9 (the branch
+// and bound did not finish in time; sampled 0.42). (The quadrants away from the corner by
+// interval branch and bound directly in (u, v), where g_0 is smooth: scripts/
+// gregory_blend_constants.py --quadrants 10 and --far-quadrant.) Corners 1..3 are corner 0
+// reflected (g_1(u, v) = -g_0(1 - u, v), g_2 = g_0(1 - u, 1 - v), g_3 = -g_0(u, 1 - v));
+// reflections keep |∂uu|, |∂uv|, |∂vv|, so corner c reads g_0's reflected quadrant.
 //   Triangle (quartic B_c = 12 x^2 y z, x the corner's own coordinate), per corner since
 // w = 1 - u - v breaks the symmetry of the (u, v) derivatives: (uu, uv, vv) = (48, 60, 72)
 // at corner 0, (72, 60, 48) at corner 1, (48, 12, 48) at corner 2 (proven upper bounds
@@ -54,6 +64,12 @@
 #include "techniques/common/bernstein_poly.h"
 
 namespace tb::techniques {
+
+const std::array<std::array<GregoryBlendConstants, 2>, 2> kGregoryQuadBlend{{
+    // [qa][qb]: u in [qa / 2, (qa + 1) / 2], v in [qb / 2, (qb + 1) / 2]
+    {{{36.001, 9.002, 36.001}, {13.503, 3.003, 1.544}}},
+    {{{1.544, 3.003, 13.503}, {0.877, 9.002, 0.877}}},
+}};
 
 const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend{{
     {48.002, 60.002, 72.002},  // b211: blend (v, w)
@@ -192,12 +208,48 @@ std::optional<CurvatureBounds> curvatureBoundsFromNet(const PatchCullBounds& bou
   return result;
 }
 
-void addGregoryQuadBlends(CurvatureBounds& bounds, const std::array<double, 4>& half_gaps) {
-  for (double gap : half_gaps) {
-    bounds.uu += kGregoryQuadBlend.uu * gap;
-    bounds.uv += kGregoryQuadBlend.uv * gap;
-    bounds.vv += kGregoryQuadBlend.vv * gap;
+namespace {
+
+// The half [0, 1/2] (upper = false) or [1/2, 1] of the cubic p[0], p[stride], ..., in place.
+void halveCubic(mesh::Vec3d* p, size_t stride, bool upper) {
+  const mesh::Vec3d a = p[0], b = p[stride], c = p[2 * stride], d = p[3 * stride];
+  const mesh::Vec3d ab = (a + b) * 0.5, bc = (b + c) * 0.5, cd = (c + d) * 0.5;
+  const mesh::Vec3d abc = (ab + bc) * 0.5, bcd = (bc + cd) * 0.5, mid = (abc + bcd) * 0.5;
+  if (upper) {
+    p[0] = mid, p[stride] = bcd, p[2 * stride] = cd;
+  } else {
+    p[stride] = ab, p[2 * stride] = abc, p[3 * stride] = mid;
   }
+}
+
+}  // namespace
+
+CurvatureBounds gregoryQuadNetCurvatureBounds(const std::vector<mesh::Vec3d>& mid_net,
+                                              const std::array<double, 4>& half_gaps) {
+  CurvatureBounds bounds = quadNetCurvatureBounds(mid_net, 3);  // edges, and the checks
+  // Corner c's g_c is g_0 reflected in u (corners 1, 2) and in v (corners 2, 3).
+  constexpr int kFlipU[4] = {0, 1, 1, 0}, kFlipV[4] = {0, 0, 1, 1};
+  double uu = 0, uv = 0, vv = 0;
+  for (int qb = 0; qb < 2; ++qb) {
+    for (int qa = 0; qa < 2; ++qa) {
+      std::vector<mesh::Vec3d> half = mid_net;
+      for (size_t k = 0; k < 4; ++k) halveCubic(&half[4 * k], 1, qa == 1);  // rows, along u
+      for (size_t k = 0; k < 4; ++k) halveCubic(&half[k], 4, qb == 1);      // columns, along v
+      // d/du = 2 d/ds on the quadrant: second derivatives 4 times the half net's.
+      const CurvatureBounds part = quadNetCurvatureBounds(half, 3);
+      double q_uu = 4 * part.uu, q_uv = 4 * part.uv, q_vv = 4 * part.vv;
+      for (size_t c = 0; c < 4; ++c) {
+        const GregoryBlendConstants& k =
+            kGregoryQuadBlend[size_t(qa ^ kFlipU[c])][size_t(qb ^ kFlipV[c])];
+        q_uu += k.uu * half_gaps[c];
+        q_uv += k.uv * half_gaps[c];
+        q_vv += k.vv * half_gaps[c];
+      }
+      uu = std::max(uu, q_uu), uv = std::max(uv, q_uv), vv = std::max(vv, q_vv);
+    }
+  }
+  bounds.uu = uu, bounds.uv = uv, bounds.vv = vv;
+  return bounds;
 }
 
 void addGregoryTriangleBlends(CurvatureBounds& bounds, const std::array<double, 3>& half_gaps) {

@@ -45,15 +45,25 @@ double bezierCurveSecondDerivativeBound(const std::vector<mesh::Vec3d>& points);
 struct GregoryBlendConstants {
   double uu, uv, vv;
 };
-// Quad (bicubic weights, blends of gregory_eval.h and Far's Gregory basis): the same for all
-// four corners (the domain's symmetries map one onto another).
-inline constexpr GregoryBlendConstants kGregoryQuadBlend{36.001, 9.001, 36.001};
+// Quad (bicubic weights, blends of gregory_eval.h and Far's Gregory basis), corner 0's g_0
+// over the quadrant [qa / 2, (qa + 1) / 2] x [qb / 2, (qb + 1) / 2] of the domain:
+// kGregoryQuadBlend[qa][qb]. Corner c's g_c is g_0 reflected (u -> 1 - u for corners 1 and
+// 2, v -> 1 - v for corners 2 and 3), so it reads the reflected quadrant.
+extern const std::array<std::array<GregoryBlendConstants, 2>, 2> kGregoryQuadBlend;
 // Triangle (quartic weights, blends b211 (v, w), b121 (w, u), b112 (u, v)), per corner.
 extern const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend;
 
+// A quad Gregory patch from the bicubic net `mid_net` (16 points, c[i + 4 j]) with the face
+// points' midpoints in its interior slots and `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world
+// units): per quadrant of the domain, the midpoint patch's bound on its de Casteljau half
+// net (times 4, the quadrant's parameter being twice the domain's) plus Σ_c K_c |δ_c| with
+// the quadrant's constants; uu, uv, vv the largest over the quadrants. Edges and edge_hull
+// from the net's boundary rows (the polynomial boundary curves), hull = mid_net (the caller
+// replaces it by the control points).
+CurvatureBounds gregoryQuadNetCurvatureBounds(const std::vector<mesh::Vec3d>& mid_net,
+                                              const std::array<double, 4>& half_gaps);
 // Adds Σ_c K_c |δ_c| to uu, uv and vv: `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world units).
 // Edges are untouched (a Gregory patch's boundary curves are polynomial).
-void addGregoryQuadBlends(CurvatureBounds& bounds, const std::array<double, 4>& half_gaps);
 void addGregoryTriangleBlends(CurvatureBounds& bounds, const std::array<double, 3>& half_gaps);
 
 }  // namespace tb::techniques

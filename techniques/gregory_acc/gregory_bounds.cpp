@@ -201,9 +201,8 @@ techniques::CurvatureBounds gregoryQuadCurvatureBounds(const GregoryPoints<doubl
     flat[size_t(slot.column + 4 * slot.row)] = faceMidpoint(cp, slot.corner);
   }
   // The net's boundary rows are the cubic edge curves already (edge_hull their points).
-  techniques::CurvatureBounds bounds = techniques::quadNetCurvatureBounds(flat, 3);
-  techniques::addGregoryQuadBlends(
-      bounds, {halfGap(cp, 0), halfGap(cp, 1), halfGap(cp, 2), halfGap(cp, 3)});
+  techniques::CurvatureBounds bounds = techniques::gregoryQuadNetCurvatureBounds(
+      flat, {halfGap(cp, 0), halfGap(cp, 1), halfGap(cp, 2), halfGap(cp, 3)});
   bounds.hull.assign(cp.begin(), cp.begin() + kPointsPerPatch);
   return bounds;
 }

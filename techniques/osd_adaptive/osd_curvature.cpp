@@ -87,8 +87,7 @@ techniques::CurvatureBounds gregoryBounds(
     net[size_t(kGregoryInteriorColumn[c] + 4 * kGregoryInteriorRow[c])] = (f_plus + f_minus) * 0.5;
     half_gaps[size_t(c)] = 0.5 * length(f_plus - f_minus);
   }
-  techniques::CurvatureBounds b = techniques::quadNetCurvatureBounds(net, 3);
-  techniques::addGregoryQuadBlends(b, half_gaps);
+  techniques::CurvatureBounds b = techniques::gregoryQuadNetCurvatureBounds(net, half_gaps);
   b.hull.assign(points.begin(), points.end());
   return b;
 }
