@@ -70,6 +70,12 @@ TEST_P(AdaptiveSymmetricVariants, AreCrackFreeUnderEveryPolicyAlongOrbitAndDolly
     const std::vector<view::View> views = pathViews(path, *patches, kCrackCheckFrames);
     ASSERT_EQ(views.size(), kCrackCheckFrames);
     for (const char* name : kSafePolicies) {
+      // error_bound needs the technique's second-derivative bounds; phong's edge variant (a
+      // rational patch) has none, and its rows are skipped with that reason.
+      if (!run.policyUnavailable(*lod::parseFactorPolicy(name)).empty()) {
+        EXPECT_EQ(std::string(GetParam().technique) + "/" + GetParam().variant, "phong/edge");
+        continue;
+      }
       for (tess::Spacing spacing : kSpacings) {
         std::vector<measures::AdaptivityFrame> frames;
         try {
@@ -122,6 +128,7 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
                         {"phong", "alpha0.75", "tessbench/cylinder_seam.obj"},
                         {"osd_adaptive", "iso2_gregory", "opensubdiv/catmark_xord_interior.obj"}};
   for (const Case& c : cases) {
+    if (testing::kUnderSanitizer && std::string(c.technique) == "osd_adaptive") continue;
     const techniques::BuiltSurface patches = build(c);
     measures::AdaptivityRun run(*patches, &context, "", nullptr);
     size_t frames = 0;
