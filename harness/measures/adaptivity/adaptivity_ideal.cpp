@@ -21,6 +21,9 @@ tess::Levels patchAt(techniques::PatchDomain domain, float level) {
   return levels;
 }
 
+// Rounds of raising the patches the shared edges' levels put over the target.
+constexpr int kIdealRepairRounds = 2;
+
 }  // namespace
 
 std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const view::View& view,
@@ -58,15 +61,31 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
       (patch_max[p] <= error_target_px ? passes_at[p] : fails[p]) = mid(p);
     }
   }
-  // A shared edge takes the larger need of its patches, so both sides get one level.
+  // A shared edge takes the larger need of its patches, so both sides get one level. The
+  // transition between unequal levels, and samples that a coarse level left off screen, can
+  // put a patch over the target again: such patches need more (half again, up to the most
+  // there is), a few rounds.
   std::vector<tess::Levels> levels(count);
-  for (size_t p = 0; p < count; ++p) levels[p] = patchAt(patches_.patchDomain(p), float(passes_at[p]));
-  for (const SharedEdge& edge : shared_.edges) {
-    float level = 0;
-    for (const PatchSide& side : edge.sides) level = std::max(level, float(passes_at[side.patch]));
-    for (const PatchSide& side : edge.sides) {
-      levels[side.patch].outer[outerIndex(patches_.patchDomain(side.patch), side.local)] = level;
+  const uint32_t most = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
+  for (int round = 0;; ++round) {
+    for (size_t p = 0; p < count; ++p) levels[p] = patchAt(patches_.patchDomain(p), float(passes_at[p]));
+    for (const SharedEdge& edge : shared_.edges) {
+      float level = 0;
+      for (const PatchSide& side : edge.sides) level = std::max(level, float(passes_at[side.patch]));
+      for (const PatchSide& side : edge.sides) {
+        levels[side.patch].outer[outerIndex(patches_.patchDomain(side.patch), side.local)] = level;
+      }
     }
+    if (round == kIdealRepairRounds) break;
+    screen_->tessellationError(spacing, levels, view, nullptr, &patch_max);
+    ++*passes;
+    bool raised = false;
+    for (size_t p = 0; p < count; ++p) {
+      if (patch_max[p] <= error_target_px || passes_at[p] >= most) continue;
+      passes_at[p] = std::min(most, std::max(passes_at[p] + 1, passes_at[p] * 3 / 2));
+      raised = true;
+    }
+    if (!raised) break;
   }
   return levels;
 }
