@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -17,6 +18,20 @@ namespace tb::testing {
 
 inline std::string assetPath(const std::string& name) {
   return std::string(TB_SOURCE_DIR) + "/assets/" + name;
+}
+
+// The bundled meshes (assets/opensubdiv, assets/tessbench), relative to assets/, sorted.
+inline std::vector<std::string> bundledObjs() {
+  std::vector<std::string> objs;
+  for (const char* folder : {"opensubdiv", "tessbench"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(assetPath(folder))) {
+      if (entry.path().extension() == ".obj") {
+        objs.push_back(std::string(folder) + "/" + entry.path().filename().string());
+      }
+    }
+  }
+  std::sort(objs.begin(), objs.end());
+  return objs;
 }
 
 // The scratch directories a test program made: removed when the program exits with every

@@ -46,20 +46,6 @@ double boundPathMaxError(measures::AdaptivityRun& run, const char* policy,
   return worst;
 }
 
-// The bundled meshes, relative to assets/, sorted.
-std::vector<std::string> boundBundledObjs() {
-  std::vector<std::string> objs;
-  for (const char* folder : {"opensubdiv", "tessbench"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(::tb::testing::assetPath(folder))) {
-      if (entry.path().extension() == ".obj") {
-        objs.push_back(std::string(folder) + "/" + entry.path().filename().string());
-      }
-    }
-  }
-  std::sort(objs.begin(), objs.end());
-  return objs;
-}
-
 struct BoundSweep {
   size_t records = 0, frames = 0;
   std::vector<double> strict_max;  // per record x path x spacing: error_bound's largest error
@@ -192,7 +178,7 @@ TEST(ErrorBound, EveryBundledAssetWhenAsked) {
   }
   BoundSweep sweep;
   for (const char* technique : kSurfaceTechniques) {
-    for (const std::string& asset : boundBundledObjs()) boundSweepOne(technique, asset, 0, &sweep);
+    for (const std::string& asset : ::tb::testing::bundledObjs()) boundSweepOne(technique, asset, 0, &sweep);
   }
   boundReport("every bundled asset", sweep);
 }

@@ -248,20 +248,6 @@ TEST(ComputePath, SecondAssetsDefaultVariantIsBitwiseTheTesCapture) {
               tally.cases, tally.vertices);
 }
 
-// The bundled meshes (assets/opensubdiv, assets/tessbench), relative to assets/, sorted.
-std::vector<std::string> bundledObjs() {
-  std::vector<std::string> objs;
-  for (const char* folder : {"opensubdiv", "tessbench"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(::tb::testing::assetPath(folder))) {
-      if (entry.path().extension() == ".obj") {
-        objs.push_back(std::string(folder) + "/" + entry.path().filename().string());
-      }
-    }
-  }
-  std::sort(objs.begin(), objs.end());
-  return objs;
-}
-
 // The whole of acceptance 2, on request (TB_COMPUTE_PATH_EVERY_ASSET=1; about 10 minutes on
 // two cores, so not in CI): every surface technique's non-control variants on every bundled
 // asset they accept, the default variant at every level case, the others at every third.
@@ -277,7 +263,7 @@ TEST(ComputePath, EveryBundledAssetWhenAsked) {
     const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
     ASSERT_NE(technique, nullptr) << id;
     const std::vector<techniques::VariantInfo> variants = technique->variants();
-    for (const std::string& asset : bundledObjs()) {
+    for (const std::string& asset : ::tb::testing::bundledObjs()) {
       const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
       if (!technique->checkSupport(mesh).empty()) continue;
       for (size_t v = 0; v < variants.size(); ++v) {
