@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/mesh/topology.h"
+#include "harness/lod/transition_extents.h"
 
 namespace tb::lod {
 namespace {
@@ -85,6 +86,16 @@ std::vector<std::vector<Side>> edgeSides(const techniques::SurfacePatches& patch
   return out;
 }
 
+// A patch's bound on the regular pattern of level o, times o^2 (over 8, as edge_m): the
+// smaller of the box and circle bounds (transition_extents.h) with the pattern's widest
+// triangles. Quads (uu + 2 uv + vv) / 8; the triangle domain's rings are wider.
+double sideBound(const CurvatureBounds& b, PatchDomain domain) {
+  const RingFactors k = ringFactors(domain == PatchDomain::kQuad ? tess::Domain::kQuad
+                                                                 : tess::Domain::kTriangle);
+  const double a = (b.uu + b.uv) / 8, c = (b.vv + b.uv) / 8;
+  return std::min(a * k.u * k.u + c * k.v * k.v, 4 * std::max(a, c) * k.circle);
+}
+
 }  // namespace
 
 ErrorBounds errorBounds(const techniques::SurfacePatches& patches) {
@@ -104,19 +115,21 @@ ErrorBounds errorBounds(const techniques::SurfacePatches& patches) {
   for (size_t p = 0; p < count; ++p) {
     const CurvatureBounds& b = *bounds[p];
     out.patches[p].patch_sphere = sphereAround(b.hull);
-    out.patches[p].inner_m = roundUp((b.uu + 2 * b.uv + b.vv) / 8);
+    out.patches[p].inner_a = roundUp((b.uu + b.uv) / 8);
+    out.patches[p].inner_b = roundUp((b.vv + b.uv) / 8);
   }
-  // Each edge once: the largest bound of its sides, a sphere around all their edge hulls.
+  // Each edge once: the largest bound of its sides (its own curve's, and each side's patch
+  // on a regular pattern of the edge's level: sideBound), a sphere around all their hulls.
   for (const std::vector<Side>& sides : edgeSides(patches)) {
     double m = 0;
     std::vector<mesh::Vec3d> points;
     for (const Side& side : sides) {
       const CurvatureBounds& b = *bounds[side.patch];
-      m = std::max({m, b.edge[side.j], b.uu + 2 * b.uv + b.vv});
+      m = std::max({m, b.edge[side.j] / 8, sideBound(b, patches.patchDomain(side.patch))});
       points.insert(points.end(), b.hull.begin(), b.hull.end());
     }
     const std::array<float, 4> sphere = sphereAround(points);
-    const float edge_m = roundUp(m / 8);
+    const float edge_m = roundUp(m);
     for (const Side& side : sides) {
       out.patches[side.patch].edge_sphere[side.j] = sphere;
       out.patches[side.patch].edge_m[side.j] = edge_m;

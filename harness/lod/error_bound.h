@@ -6,6 +6,8 @@
 // needs n >= sqrt(M / (8 eps)) segments for a chord error of eps (Wang's formula), and the
 // inside of a patch n >= sqrt((uu + 2 uv + vv) / (8 eps)) (Filip, Magedson & Markot 1986),
 // with eps the world error that projects to the pixel target at the hull's nearest depth.
+// The inside level is chosen against the tessellator's own triangles, transition rings
+// included (transition_extents.h).
 //
 // Crack safety: a shared edge's record (its bound and its sphere) is computed once from every
 // side's edge curve (the larger bound, a sphere around every side's edge hull) and copied to
@@ -28,7 +30,11 @@ struct ErrorBoundPatch {
   // (best: one segment); larger needs more segments, as the square root.
   std::array<float, 4> edge_m{};
   std::array<float, 4> patch_sphere{};  // around the patch's hull, as edge_sphere
-  float inner_m = 0;                    // (uu + 2 uv + vv) / 8, world units, rounded up
+  // The patch's chord-error coefficients along u and v: (uu + uv) / 8 and (vv + uv) / 8,
+  // world units, rounded up. A triangle of the patch's domain whose extents are du, dv is
+  // within inner_a du^2 + inner_b dv^2 of the surface (transition_extents.h); a regular n x n
+  // grid within (inner_a + inner_b) / n^2. 0 for a flat patch (best); larger needs more.
+  float inner_a = 0, inner_b = 0;
 };
 
 struct ErrorBounds {

@@ -1,24 +1,32 @@
 #include "harness/lod/factor_policy.h"
 
 #include <bit>
+#include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
 
 #include "core/mesh/topology.h"
 #include "core/tess/factor_helpers.h"
+#include "harness/lod/transition_extents.h"
 
 namespace tb::lod {
 namespace {
 
 constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
-constexpr size_t kParamWords = 44;  // TbFactorParamsBlock, std430
+// TbFactorParamsBlock, std430, before error_bound's transition table.
+constexpr size_t kParamWords = 48;
 // TbFactorPatch: 4 corners x (position vec4, normal vec4), then error_bound's 4 edge spheres,
 // edge bounds, patch sphere, inner bound and a pad vec4.
 constexpr size_t kPatchWords = 64;
 constexpr const char* kOrderDependentSuffix = "_order_dependent";
 constexpr const char* kLooseSuffix = "_loose";
+// error_bound: a sphere is outside a side of the view when the side plane's value at its
+// centre is below -radius x |plane| x this (1 + 2^-10: more than the float rounding of the
+// value, so no visible sphere is ever taken for an invisible one).
+constexpr float kSideMargin = 1.0f + 1.0f / 1024.0f;
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
 float dotF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
@@ -89,24 +97,12 @@ std::vector<mesh::Vec3f> weldedNormals(const mesh::Mesh& mesh, const mesh::Weldi
   return normals;
 }
 
-// tbCleanupFactor, tbRoundUpFactor and tbClampFactor of tess_factors.glsl.
-float cleanupFactor(float x) { return (std::isnan(x) || x < 1.0f) ? 1.0f : x; }
-float roundUpFactor(float x, tess::Spacing spacing) {
-  if (spacing == tess::Spacing::kPow2) {
-    const uint32_t bits = std::bit_cast<uint32_t>(x);
-    if ((bits & 0x007fffffu) == 0) return x;
-    return std::bit_cast<float>((bits & 0x7f800000u) + 0x00800000u);
-  }
-  return spacing == tess::Spacing::kInteger ? std::ceil(x) : x;
-}
+// tbClampFactor of tess_factors.glsl.
 float clampFactor(float x, tess::Spacing spacing) {
   const float low = spacing == tess::Spacing::kFractionalEven ? 2.0f : 1.0f;
   const float high = spacing == tess::Spacing::kFractionalOdd ? 63.0f : 64.0f;
   const float at_least_low = x > low ? x : low;
   return high < at_least_low ? high : at_least_low;
-}
-float roundedLevel(float raw, tess::Spacing spacing) {
-  return clampFactor(roundUpFactor(cleanupFactor(raw), spacing), spacing);
 }
 
 }  // namespace
@@ -241,29 +237,47 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
   params.row_length = {rowLength(0), rowLength(1)};
   params.inv_scale = {float(tan_x), float(tan_y)};  // 1 / |P00| = tan_x, 1 / |P11| = tan_y
   params.tan_half = {float(tan_x), float(tan_y)};
+  // |xyz| of rows 3 + 0, 3 - 0, 3 + 1, 3 - 1: the view's side planes w + x, w - x, w + y, w - y.
+  for (int k = 0; k < 4; ++k) {
+    const int r = k / 2;
+    const double sign = k % 2 == 0 ? 1 : -1;
+    double sum = 0;
+    for (int c = 0; c < 3; ++c) sum += (m[c][3] + sign * m[c][r]) * (m[c][3] + sign * m[c][r]);
+    params.side_length[k] = float(std::sqrt(sum));
+  }
   return params;
 }
 
 namespace {
-// tbProjectionStretch: the Jacobian's largest stretch over the sphere.
-float projectionStretch(const FactorParams& params, const std::array<float, 4>& sphere, float near_w) {
-  const auto& m = params.view_projection;
-  const float cx = m[0 * 4 + 0] * sphere[0] + m[1 * 4 + 0] * sphere[1] + m[2 * 4 + 0] * sphere[2] + m[3 * 4 + 0];
-  const float cy = m[0 * 4 + 1] * sphere[0] + m[1 * 4 + 1] * sphere[1] + m[2 * 4 + 1] * sphere[2] + m[3 * 4 + 1];
-  float a = (std::fabs(cx) + sphere[3] * params.row_length[0]) * params.inv_scale[0] / near_w;
-  float b = (std::fabs(cy) + sphere[3] * params.row_length[1]) * params.inv_scale[1] / near_w;
+// tbProjectionStretch: the Jacobian's largest stretch over the sphere whose centre is at clip
+// (cx, cy) and whose nearest clip w is near_w.
+float projectionStretch(const FactorParams& params, float cx, float cy, float radius, float near_w) {
+  float a = (std::fabs(cx) + radius * params.row_length[0]) * params.inv_scale[0] / near_w;
+  float b = (std::fabs(cy) + radius * params.row_length[1]) * params.inv_scale[1] / near_w;
   a = a < params.tan_half[0] ? a : params.tan_half[0];
   b = b < params.tan_half[1] ? b : params.tan_half[1];
   return std::sqrt(1.0f + a * a + b * b);
 }
 }  // namespace
 
-float errorBoundLevel(const FactorParams& params, const std::array<float, 4>& sphere, float m) {
-  const float near_w = clipW(params, {sphere[0], sphere[1], sphere[2]}) - sphere[3] * params.hull_w_scale;
-  if (!(near_w > params.near_w)) return 64.0f;
-  const float eps = near_w * params.error_scale / projectionStretch(params, sphere, near_w);
-  const float level = std::sqrt(m / eps);
-  return level > 1.0f ? level : 1.0f;
+float errorBoundEps(const FactorParams& params, const std::array<float, 4>& sphere) {
+  const auto& m = params.view_projection;
+  const float w = clipW(params, {sphere[0], sphere[1], sphere[2]});
+  const float r = sphere[3];
+  // Wholly behind the near plane, or wholly outside a side of the view (by a margin over the
+  // float rounding of the plane's value): no sample can be visible.
+  if (w + r * params.hull_w_scale < params.near_w) return std::numeric_limits<float>::infinity();
+  const float cx = m[0 * 4 + 0] * sphere[0] + m[1 * 4 + 0] * sphere[1] + m[2 * 4 + 0] * sphere[2] + m[3 * 4 + 0];
+  const float cy = m[0 * 4 + 1] * sphere[0] + m[1 * 4 + 1] * sphere[1] + m[2 * 4 + 1] * sphere[2] + m[3 * 4 + 1];
+  const float sides[4] = {w + cx, w - cx, w + cy, w - cy};
+  for (int k = 0; k < 4; ++k) {
+    if (sides[k] < -(r * params.side_length[k]) * kSideMargin) return std::numeric_limits<float>::infinity();
+  }
+  // Only samples in front of the near plane count (and the segment between two such points
+  // stays there): the nearest depth a visible error can have is at least the near plane's.
+  const float hull_near_w = w - r * params.hull_w_scale;
+  const float near_w = hull_near_w > params.near_w ? hull_near_w : params.near_w;
+  return near_w * params.error_scale / projectionStretch(params, cx, cy, r, near_w);
 }
 
 float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
@@ -314,30 +328,94 @@ float edgeFactor(const FactorParams& params, const FactorCorner& corner_a,
   return factor;
 }
 
-// error_bound's branch of tbPolicyLevels: every edge from its own record, the inside from
-// the patch's (a triangle leaves outer[3] and inner[1] at 0, as the shader writes them).
+namespace {
+
+// error_bound's inside level (tbErrorBoundInside): the least whole n for which every triangle
+// of the tessellation, with the edges at `outer`, is within the patch's bound: the smaller of
+// a du^2 + b dv^2 (du, dv the widest extents) and 4 max(a, b) r^2 (r the largest enclosing
+// circle's radius; transition_extents.h) at most 1, with (a, b) the patch's coefficients over
+// eps; where no n is, the one that comes closest.
+float errorBoundInside(const FactorParams& params, const ErrorBoundPatch& bound,
+                       const std::array<float, 4>& outer, uint32_t edges,
+                       const std::vector<float>& table, bool* met) {
+  *met = true;
+  const auto spacing = tess::Spacing(params.spacing);
+  const float top = clampFactor(64.0f, spacing);
+  const float eps = errorBoundEps(params, bound.patch_sphere);
+  if (!(eps > 0.0f)) return top;
+  const float a = bound.inner_a / eps, b = bound.inner_b / eps;
+  float best_n = top, best = std::numeric_limits<float>::infinity();
+  for (uint32_t n = 1; n <= uint32_t(top); ++n) {
+    if (!equalSegmentLevel(n, spacing)) continue;
+    float du = 0.0f, dv = 0.0f, r2 = 0.0f;
+    for (uint32_t e = 0; e < edges; ++e) {
+      const auto o = uint32_t(outer[e]);
+      const float eu = table[transitionIndex(e, 0, o, n)], ev = table[transitionIndex(e, 1, o, n)];
+      const float er = table[transitionIndex(e, kTransitionCircle, o, n)];
+      du = eu > du ? eu : du;
+      dv = ev > dv ? ev : dv;
+      r2 = er > r2 ? er : r2;
+    }
+    const float box = a * du * du + b * dv * dv;
+    const float circle = 4.0f * (a > b ? a : b) * r2;
+    const float need = box < circle ? box : circle;
+    if (need <= 1.0f) return float(n);
+    if (need < best) {
+      best = need;
+      best_n = float(n);
+    }
+  }
+  *met = false;
+  return best_n;
+}
+
+// error_bound's branch of tbPolicyLevels: each edge the least whole level whose longest
+// segment keeps its record's bound within eps (m s^2 <= eps, s from the table: a fractional
+// spacing's segments are not all 1 / level), the inside from the patch's against the
+// tessellation those edges make (a triangle leaves outer[3] and inner[1] at 0, as the shader
+// writes them).
 tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomain domain,
-                              const ErrorBoundPatch& bound) {
+                              const ErrorBoundPatch& bound, const std::vector<float>& table,
+                              bool* met) {
   const auto spacing = tess::Spacing(params.spacing);
   const bool quad = domain == techniques::PatchDomain::kQuad;
+  const uint32_t edges = quad ? 4u : 3u;
+  const float top = clampFactor(64.0f, spacing);
   tess::Levels levels;
   levels.outer = {0, 0, 0, 0};
-  float inside_raw = errorBoundLevel(params, bound.patch_sphere, bound.inner_m);
-  for (size_t j = 0; j < (quad ? 4u : 3u); ++j) {
-    const float edge_raw = errorBoundLevel(params, bound.edge_sphere[j], bound.edge_m[j]);
-    levels.outer[j] = roundedLevel(edge_raw, spacing);
-    inside_raw = edge_raw > inside_raw ? edge_raw : inside_raw;
+  for (uint32_t j = 0; j < edges; ++j) {
+    const float eps = errorBoundEps(params, bound.edge_sphere[j]);
+    levels.outer[j] = top;
+    if (!(eps > 0.0f)) continue;
+    const float m = bound.edge_m[j] / eps;
+    for (uint32_t o = 1; o <= uint32_t(top); ++o) {
+      if (!equalSegmentLevel(o, spacing)) continue;
+      const float s = table[transitionSegmentIndex(edges, o)];
+      if (m * s * s <= 1.0f) {
+        levels.outer[j] = float(o);
+        break;
+      }
+    }
   }
-  const float inside = roundedLevel(inside_raw, spacing);
+  const float inside = errorBoundInside(params, bound, levels.outer, edges, table, met);
   levels.inner = {inside, quad ? inside : 0.0f};
   return levels;
 }
+
+const std::vector<float>& errorBoundTable(const FactorParams& params, techniques::PatchDomain domain) {
+  return transitionExtents(domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad
+                                                                    : tess::Domain::kTriangle,
+                           tess::Spacing(params.spacing));
+}
+
+}  // namespace
 
 tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
                           const std::array<FactorCorner, 4>& corners, const ErrorBoundPatch* bound) {
   if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
     if (bound == nullptr) throw std::logic_error("policyLevels: error_bound without its bounds");
-    return errorBoundLevels(params, domain, *bound);
+    bool met = true;
+    return errorBoundLevels(params, domain, *bound, errorBoundTable(params, domain), &met);
   }
   const auto spacing = tess::Spacing(params.spacing);
   const auto reduction = InnerReduction(params.reduction);
@@ -371,6 +449,21 @@ tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain do
   return tess::processTriTessFactorsAvg(spacing, raw, 1.0f).rounded;
 }
 
+size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners) {
+  if (FactorPolicyKind(params.policy) != FactorPolicyKind::kErrorBound) return 0;
+  if (corners.error_bounds.size() != corners.patches.size()) {
+    throw std::logic_error("errorBoundUnmetPatches: error_bound without its bounds");
+  }
+  size_t unmet = 0;
+  for (size_t p = 0; p < corners.patches.size(); ++p) {
+    bool met = true;
+    errorBoundLevels(params, corners.domains[p], corners.error_bounds[p],
+                     errorBoundTable(params, corners.domains[p]), &met);
+    unmet += met ? 0 : 1;
+  }
+  return unmet;
+}
+
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners) {
   std::vector<tess::Levels> levels(corners.patches.size());
   for (size_t p = 0; p < levels.size(); ++p) {
@@ -400,7 +493,7 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
     }
     for (float f : bound.edge_m) push(f);
     for (float f : bound.patch_sphere) push(f);
-    for (float f : {bound.inner_m, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) push(f);
+    for (float f : {bound.inner_a, bound.inner_b, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) push(f);
   }
   out.param_words.reserve(kParamWords);
   for (float m : params.view_projection) out.param_words.push_back(std::bit_cast<uint32_t>(m));
@@ -418,6 +511,13 @@ gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCor
                   params.row_length[0], params.inv_scale[0], params.tan_half[0], 0.0f,
                   params.row_length[1], params.inv_scale[1], params.tan_half[1], 0.0f}) {
     out.param_words.push_back(std::bit_cast<uint32_t>(f));
+  }
+  for (float f : params.side_length) out.param_words.push_back(std::bit_cast<uint32_t>(f));
+  assert(out.param_words.size() == kParamWords);
+  if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
+    for (float f : transitionExtents(program.domain, tess::Spacing(params.spacing))) {
+      out.param_words.push_back(std::bit_cast<uint32_t>(f));
+    }
   }
   return out;
 }

@@ -131,6 +131,9 @@ struct FactorParams {
   // error_bound's projection stretch per screen axis (x, y): |row r of the matrix's xyz|,
   // 1 / |P[r][r]| and tan(fov / 2).
   std::array<float, 2> row_length{}, inv_scale{}, tan_half{};
+  // error_bound's view sides w + x, w - x, w + y, w - y: |xyz| of their rows' sums, so a
+  // sphere wholly outside one (or behind the near plane) gets the lowest level.
+  std::array<float, 4> side_length{};
 };
 // world_scale: the asset's bounding-box diagonal (distance's unit).
 FactorParams factorParams(const FactorPolicy& policy, const view::View& view, tess::Spacing spacing,
@@ -139,9 +142,10 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
 // The twin of tbEdgeFactor: the raw factor of the edge from corner a to corner b.
 float edgeFactor(const FactorParams& params, const FactorCorner& a, const FactorCorner& b);
 
-// The twin of tbErrorBoundLevel: the raw level for a bound m (sup|C''| / 8) over a hull
-// sphere (xyz centre, w radius).
-float errorBoundLevel(const FactorParams& params, const std::array<float, 4>& sphere, float m);
+// The twin of tbErrorBoundEps: the world error that projects to the pixel target at the
+// sphere's nearest clip w (0 when the sphere reaches the near plane; +inf when it is wholly
+// outside the view: behind the near plane or outside a side).
+float errorBoundEps(const FactorParams& params, const std::array<float, 4>& sphere);
 
 // The twin of tbPolicyLevels: one patch's levels (culled patches: all 0). error_bound reads
 // `bound` (std::logic_error when null).
@@ -149,6 +153,13 @@ tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain do
                           const std::array<FactorCorner, 4>& corners,
                           const ErrorBoundPatch* bound = nullptr);
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners);
+
+// error_bound: the patches whose edges, fixed by their shared records, leave no inside level
+// within the bound. The tessellator stitches an edge to a first inner ring of another level
+// with triangles up to about 3.5 segments wide (transition_extents.h); where a patch's edges
+// have levels no one inside level stitches to narrowly (33 and 45, say), the policy takes the
+// level that comes closest and the bound is not guaranteed there. 0 for other policies.
+size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners);
 
 // The device's input for `program` (one of the patches' gpuPrograms()): corners in program
 // patch order (GpuPatchProgram::patch_ids) and the parameter words for its domain.

@@ -31,7 +31,7 @@ const uint kTbPolicyUniform = 0u;         // every edge = target (a level)
 const uint kTbPolicyDistance = 1u;        // target / |eye - midpoint| (target: level x world units)
 const uint kTbPolicySphereDiameter = 2u;  // |d P11 / w| * H / (2 target px)
 const uint kTbPolicyLp2Edge = 3u;         // max(L R C / D0, L R C / D1), C = target
-const uint kTbPolicyErrorBound = 4u;      // sqrt(M / (8 eps)), eps from target px (error_bound.h)
+const uint kTbPolicyErrorBound = 4u;      // the least levels within target px (error_bound.h)
 // TbFactorParams::flags
 const uint kTbFactorOrderDependent = 1u;
 const uint kTbFactorSilhouette = 2u;  // scale by 1 - (1 - s_min) |n . v|
@@ -56,7 +56,7 @@ struct TbFactorPatch {
   vec4 edge_sphere[4];       // error_bound, per outer edge: xyz centre, w radius (world)
   vec4 edge_m;               // error_bound, per outer edge: sup|C''| / 8 (world)
   vec4 patch_sphere;         // error_bound: around the patch's hull
-  vec4 inner_m;              // error_bound, x: (M_uu + 2 M_uv + M_vv) / 8 (world)
+  vec4 inner_ab;             // error_bound, x: (M_uu + M_uv) / 8, y: (M_vv + M_uv) / 8 (world)
   vec4 pad;
 };
 
@@ -87,6 +87,11 @@ layout(std430, set = TB_HARNESS_SET, binding = 2) readonly buffer TbFactorParams
   // 1 / |P[r][r]| (view x / w per clip x / w) and tan(fov / 2) (the view's edge).
   float row_length_x, inv_scale_x, tan_half_x, pad2;
   float row_length_y, inv_scale_y, tan_half_y, pad3;
+  vec4 side_length;  // error_bound: |xyz| of the view's side planes w + x, w - x, w + y, w - y
+  // error_bound only: the tessellator's transition extents for this domain and spacing
+  // (harness/lod/transition_extents.h: [edge][axis][o - 1][n - 1], then each level's longest
+  // edge segment).
+  float tb_transition[];
 } tb_factor;
 
 // The levels the TCS wrote (float bits, the TbPatchLevels layout), per patch.
@@ -212,33 +217,101 @@ float tbEdgeFactor(vec3 a, vec3 b, vec3 na, vec3 nb) {
   return factor;
 }
 
-// error_bound's raw level for a bound m = sup|C''| / 8 over the hull sphere (xyz centre, w
-// radius): sqrt(m / eps) with eps = the sphere's nearest clip w x error_scale; 64 when the
-// sphere reaches the near plane; at least 1 (a straight edge is never culled).
+// error_bound's world error at a hull sphere (xyz centre, w radius): the pixel target at its
+// nearest clip w (at least the near plane's: only samples in front of it count) over the
+// projection's largest stretch there; +inf (any level will do) when the sphere is wholly
+// behind the near plane or outside a side of the view.
+const float kTbSideMargin = 1.0 + 1.0 / 1024.0;
+
 // The largest stretch sqrt(1 + a^2 + b^2) of the projection's Jacobian over the sphere (a, b
 // = view x / z, y / z, each at most the view's edge: only visible samples count).
-float tbProjectionStretch(vec4 sphere, float near_w) {
-  const mat4 m = tb_factor.view_projection;
-  precise float cx = m[0][0] * sphere.x + m[1][0] * sphere.y + m[2][0] * sphere.z + m[3][0];
-  precise float cy = m[0][1] * sphere.x + m[1][1] * sphere.y + m[2][1] * sphere.z + m[3][1];
-  precise float a = (abs(cx) + sphere.w * tb_factor.row_length_x) * tb_factor.inv_scale_x / near_w;
-  precise float b = (abs(cy) + sphere.w * tb_factor.row_length_y) * tb_factor.inv_scale_y / near_w;
+float tbProjectionStretch(float cx, float cy, float radius, float near_w) {
+  precise float a = (abs(cx) + radius * tb_factor.row_length_x) * tb_factor.inv_scale_x / near_w;
+  precise float b = (abs(cy) + radius * tb_factor.row_length_y) * tb_factor.inv_scale_y / near_w;
   a = a < tb_factor.tan_half_x ? a : tb_factor.tan_half_x;
   b = b < tb_factor.tan_half_y ? b : tb_factor.tan_half_y;
   precise float stretch = sqrt(1.0 + a * a + b * b);
   return stretch;
 }
 
-float tbErrorBoundLevel(vec4 sphere, float m) {
-  precise float near_w = tbClipW(sphere.xyz) - sphere.w * tb_factor.hull_w_scale;
-  if (!(near_w > tb_factor.near_w)) return 64.0;
-  precise float eps = near_w * tb_factor.error_scale / tbProjectionStretch(sphere, near_w);
-  precise float level = sqrt(m / eps);
-  return level > 1.0 ? level : 1.0;
+float tbErrorBoundEps(vec4 sphere) {
+  const mat4 m = tb_factor.view_projection;
+  precise float w = tbClipW(sphere.xyz);
+  const float r = sphere.w;
+  precise float far_w = w + r * tb_factor.hull_w_scale;
+  if (far_w < tb_factor.near_w) return uintBitsToFloat(0x7f800000u);
+  precise float cx = m[0][0] * sphere.x + m[1][0] * sphere.y + m[2][0] * sphere.z + m[3][0];
+  precise float cy = m[0][1] * sphere.x + m[1][1] * sphere.y + m[2][1] * sphere.z + m[3][1];
+  precise float sides[4] = float[4](w + cx, w - cx, w + cy, w - cy);
+  for (uint k = 0u; k < 4u; ++k) {
+    precise float reach = -(r * tb_factor.side_length[k]) * kTbSideMargin;
+    if (sides[k] < reach) return uintBitsToFloat(0x7f800000u);
+  }
+  precise float hull_near_w = w - r * tb_factor.hull_w_scale;
+  const float near_w = hull_near_w > tb_factor.near_w ? hull_near_w : tb_factor.near_w;
+  precise float eps = near_w * tb_factor.error_scale / tbProjectionStretch(cx, cy, r, near_w);
+  return eps;
 }
 
-float tbRoundedLevel(float raw) {
-  return tbClampFactor(tbRoundUpFactor(tbCleanupFactor(raw), tb_factor.spacing), tb_factor.spacing);
+// The whole levels error_bound takes (factor_policy.cpp, errorBoundLevelAllowed): those at
+// which the spacing's segments are all equal.
+bool tbErrorBoundLevelAllowed(uint n, uint spacing) {
+  if (spacing == kTbSpacingPow2) return (n & (n - 1u)) == 0u;
+  if (spacing == kTbSpacingFractionalOdd) return n % 2u == 1u;
+  if (spacing == kTbSpacingFractionalEven) return n % 2u == 0u;
+  return true;
+}
+
+float tbTransition(uint e, uint axis, uint o, uint n) {
+  return tb_factor.tb_transition[((e * 3u + axis) * 64u + (o - 1u)) * 64u + (n - 1u)];
+}
+
+// The least allowed whole level whose longest segment keeps m / eps (a bound over 8) within
+// the target: m s^2 <= eps; the spacing's top level where none does.
+float tbErrorBoundEdge(vec4 sphere, float bound, uint edges, float top) {
+  const float eps = tbErrorBoundEps(sphere);
+  if (!(eps > 0.0)) return top;
+  precise float m = bound / eps;
+  for (uint o = 1u; o <= uint(top); ++o) {
+    if (!tbErrorBoundLevelAllowed(o, tb_factor.spacing)) continue;
+    const float s = tb_factor.tb_transition[edges * 3u * 64u * 64u + (o - 1u)];
+    precise float need = m * s * s;
+    if (need <= 1.0) return float(o);
+  }
+  return top;
+}
+
+// The least allowed whole inside level n for which every triangle of the tessellation, the
+// edges at `outer`, is within the patch's bound (the smaller of a du^2 + b dv^2 and
+// 4 max(a, b) r^2 at most 1); where none is, the one that comes closest.
+float tbErrorBoundInside(uint patch_index, float outer[4], uint edges, float top) {
+  const float eps = tbErrorBoundEps(tb_factor_patches[patch_index].patch_sphere);
+  if (!(eps > 0.0)) return top;
+  precise float a = tb_factor_patches[patch_index].inner_ab.x / eps;
+  precise float b = tb_factor_patches[patch_index].inner_ab.y / eps;
+  float best_n = top;
+  float best = uintBitsToFloat(0x7f800000u);
+  for (uint n = 1u; n <= uint(top); ++n) {
+    if (!tbErrorBoundLevelAllowed(n, tb_factor.spacing)) continue;
+    float du = 0.0, dv = 0.0, r2 = 0.0;
+    for (uint e = 0u; e < edges; ++e) {
+      const uint o = uint(outer[e]);
+      const float eu = tbTransition(e, 0u, o, n), ev = tbTransition(e, 1u, o, n);
+      const float er = tbTransition(e, 2u, o, n);
+      du = eu > du ? eu : du;
+      dv = ev > dv ? ev : dv;
+      r2 = er > r2 ? er : r2;
+    }
+    precise float box = a * du * du + b * dv * dv;
+    precise float circle = 4.0 * (a > b ? a : b) * r2;
+    const float need = box < circle ? box : circle;
+    if (need <= 1.0) return float(n);
+    if (need < best) {
+      best = need;
+      best_n = float(n);
+    }
+  }
+  return best_n;
 }
 
 // This patch's levels from the policy (outer[0..3], inner[0..1]; triangles leave outer[3]
@@ -249,18 +322,15 @@ void tbPolicyLevels(uint patch_index, out float outer[4], out float inner[2]) {
   vec3 p[4];
   vec3 nrm[4];
   if (tb_factor.policy == kTbPolicyErrorBound) {
+    // Edges from their shared records, the inside against the tessellation they make,
+    // transition rings included (factor_policy.cpp, errorBoundLevels).
+    const float top = tbClampFactor(64.0, tb_factor.spacing);
     outer = float[4](0.0, 0.0, 0.0, 0.0);
-    // The inside at least every edge: a coarser inside than an edge stretches the transition
-    // ring's triangles across levels (error_bound.h).
-    float inside_raw = tbErrorBoundLevel(tb_factor_patches[patch_index].patch_sphere,
-                                         tb_factor_patches[patch_index].inner_m.x);
     for (uint j = 0u; j < n; ++j) {
-      const float edge_raw = tbErrorBoundLevel(tb_factor_patches[patch_index].edge_sphere[j],
-                                               tb_factor_patches[patch_index].edge_m[j]);
-      outer[j] = tbRoundedLevel(edge_raw);
-      inside_raw = edge_raw > inside_raw ? edge_raw : inside_raw;
+      outer[j] = tbErrorBoundEdge(tb_factor_patches[patch_index].edge_sphere[j],
+                                  tb_factor_patches[patch_index].edge_m[j], n, top);
     }
-    const float inside = tbRoundedLevel(inside_raw);
+    const float inside = tbErrorBoundInside(patch_index, outer, n, top);
     inner = float[2](inside, quad ? inside : 0.0);
     return;
   }

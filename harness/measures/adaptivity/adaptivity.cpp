@@ -1,6 +1,7 @@
 #include "harness/measures/adaptivity/adaptivity.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -58,6 +59,24 @@ tess::Levels levelsFromBits(const tess::LevelsBits& bits) {
 
 size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge) {
   return domain == techniques::PatchDomain::kQuad ? (local_edge + 1) % 4 : (local_edge + 2) % 3;
+}
+
+uint64_t viewsKey(const std::vector<view::View>& views) {
+  uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&hash](uint64_t word) {
+    for (int b = 0; b < 8; ++b) {
+      hash = (hash ^ ((word >> (8 * b)) & 0xff)) * 1099511628211ull;
+    }
+  };
+  for (const view::View& view : views) {
+    for (const auto& column : view.view_projection.m) {
+      for (double x : column) mix(std::bit_cast<uint64_t>(x));
+    }
+    mix(view.viewport_width_px);
+    mix(view.viewport_height_px);
+    mix(std::bit_cast<uint64_t>(view.near_plane));
+  }
+  return hash;
 }
 
 uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,
@@ -315,7 +334,7 @@ const AdaptivityRun::UniformBest& AdaptivityRun::uniformBest(lod::InnerReduction
                                                              tess::Spacing spacing,
                                                              const std::vector<view::View>& views,
                                                              double error_target_px) {
-  const auto key = std::make_tuple(int(reduction), int(spacing), error_target_px);
+  const auto key = std::make_tuple(int(reduction), int(spacing), error_target_px, viewsKey(views));
   if (const auto it = uniform_cache_.find(key); it != uniform_cache_.end()) return it->second;
   // The lowest integer level within the target, by doubling from 1 and then bisecting
   // between the last level that failed and the first that passed.

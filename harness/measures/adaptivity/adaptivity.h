@@ -153,7 +153,8 @@ class AdaptivityRun {
   };
   PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
                       const std::vector<view::View>& views);
-  // The lowest uniform level within the target (summarise's uniform part), cached per spacing.
+  // The lowest uniform level within the target (summarise's uniform part), cached per
+  // spacing and views.
   struct UniformBest {
     uint32_t level = 1;
     bool reached = false;
@@ -182,8 +183,9 @@ class AdaptivityRun {
   lod::FactorCorners corners_;
   std::string error_bound_unavailable_;
   bool error_bounds_tried_ = false;
-  std::map<std::tuple<int, int, double>, UniformBest> uniform_cache_;
-  std::map<std::pair<int, double>, AdaptivityIdeal> ideal_cache_;
+  // Keyed by the views too (viewsKey): one run may be summarised on several camera paths.
+  std::map<std::tuple<int, int, double, uint64_t>, UniformBest> uniform_cache_;
+  std::map<std::tuple<int, double, uint64_t>, AdaptivityIdeal> ideal_cache_;
   SharedBoundaries shared_;
   double diagonal_ = 0;
   std::unique_ptr<CrackSession> cracks_;
@@ -192,6 +194,10 @@ class AdaptivityRun {
 
 // gl_TessLevelOuter index of local edge k (corner k to k + 1, techniques/technique.h).
 size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge);
+
+// A fingerprint of `views` (FNV-1a over their matrices, viewports and near planes): the
+// summary caches' key, so a run summarised on two camera paths never mixes them.
+uint64_t viewsKey(const std::vector<view::View>& views);
 
 // Shared edges (of `shared`) whose sides' outer levels differ bitwise under `levels`.
 uint64_t factorMismatches(const techniques::SurfacePatches& patches, const SharedBoundaries& shared,

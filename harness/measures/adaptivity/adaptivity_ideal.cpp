@@ -92,7 +92,7 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
 
 const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::vector<view::View>& views,
                                             double error_target_px, uint32_t uniform_level) {
-  const auto key = std::make_pair(int(spacing), error_target_px);
+  const auto key = std::make_tuple(int(spacing), error_target_px, viewsKey(views));
   if (const auto it = ideal_cache_.find(key); it != ideal_cache_.end()) return it->second;
   const uint32_t highest = uniform_level > 0 ? uniform_level
                                              : (spacing == tess::Spacing::kFractionalOdd ? 63 : 64);
