@@ -12,6 +12,7 @@
 #include "harness/measures/metric_table.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
+#include "tests/test_support.h"
 
 namespace tb {
 namespace {
@@ -86,6 +87,8 @@ TEST(Declarations, TheRunCarriesTheSelectedMeasuresDeclarations) {
 // Runs every measure on every technique that takes three small bundled assets (quads;
 // quads and triangles mixed; triangles) and checks each emitted metric against its declaration.
 TEST(Declarations, EveryEmittedMetricIsDeclaredWithItsUnit) {
+  // A schema check over a whole suite run; under a sanitizer ThreadInvariance runs that code.
+  if (::tb::testing::kUnderSanitizer) GTEST_SKIP() << "ThreadInvariance runs the suite under a sanitizer";
   suite::SuiteSelection selection;
   selection.assets = {suite::resolveAsset("catmark_cube"), suite::resolveAsset("catmark_pyramid"),
                       suite::resolveAsset("loop_cube")};

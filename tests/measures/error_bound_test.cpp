@@ -214,6 +214,52 @@ TEST(ErrorBound, EveryBundledAssetWhenAsked) {
   boundReport("every bundled asset", sweep);
 }
 
+// Acceptance 4 and 5 on request (TB_ERROR_BOUND_RATIOS=1, not in CI): error_bound's summary on
+// every surface technique x bundled asset x path (fractional_odd, each path's own frames), the
+// median triangle ratios against uniform and the ideal per technique and path.
+TEST(ErrorBound, RatiosOnEveryBundledAssetWhenAsked) {
+  if (std::getenv("TB_ERROR_BOUND_RATIOS") == nullptr) {
+    GTEST_SKIP() << "set TB_ERROR_BOUND_RATIOS=1 to summarise every bundled asset on every path";
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  for (const char* technique_id : kSurfaceTechniques) {
+    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(technique_id);
+    std::map<std::string, std::vector<double>> vs_uniform, vs_ideal, error;
+    std::map<std::string, size_t> below_one;
+    for (const std::string& asset : ::tb::testing::bundledObjs()) {
+      const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
+      if (!technique->checkSupport(mesh).empty()) continue;
+      techniques::BuiltSurface surface;
+      try {
+        surface = techniques::buildSurface(*technique, mesh, technique->variants().front());
+      } catch (const techniques::UnsupportedInput&) {
+        continue;
+      }
+      measures::AdaptivityRun run(*surface, nullptr, "CPU only", nullptr);
+      if (!run.policyUnavailable(*lod::parseFactorPolicy("error_bound")).empty()) continue;
+      for (const char* path : kPaths) {
+        const measures::AdaptivitySummary s = run.summarise(*lod::parseFactorPolicy("error_bound"),
+            tess::Spacing::kFractionalOdd, boundPathViews(path, *surface), kTargetPx);
+        if (!s.uniform_reached || s.uniform_triangles_per_frame <= 0) continue;
+        vs_uniform[path].push_back(s.triangle_ratio_vs_uniform);
+        if (s.ideal_triangles_per_frame > 0) vs_ideal[path].push_back(s.triangles_per_frame / s.ideal_triangles_per_frame);
+        error[path].push_back(s.max_error_px);
+        below_one[path] += s.triangle_ratio_vs_uniform < 1 ? 1 : 0;
+      }
+    }
+    for (const char* path : kPaths) {
+      std::printf("[error_bound] %s %s: %zu assets, median vs uniform %.2f (below 1 on %zu), "
+                  "median vs ideal %.2f, median path max %.3f px, largest %.3f px\n",
+                  technique_id, path, vs_uniform[path].size(), median(vs_uniform[path]),
+                  below_one[path], median(vs_ideal[path]), median(error[path]),
+                  error[path].empty() ? 0.0 : *std::max_element(error[path].begin(), error[path].end()));
+    }
+  }
+}
+
 // The ideal is one of the assignments the uniform search also tries (every patch at the
 // uniform level), so it never needs more triangles; error_bound's summary needs no search.
 TEST(ErrorBound, IdealNeedsNoMoreThanUniformAndTheSummaryIsOnePass) {

@@ -26,7 +26,12 @@ using testing::readFile;
 using testing::runChromium;
 using testing::runTessbenchSplit;
 
+// The browser's time dominates these tests; the report's own code runs under a sanitizer in
+// tests/report (the same run folder's report.html, without a browser).
+constexpr const char* kSanitizerSkip = "the browser check runs in the Release step";
+
 TEST(HtmlBrowser, ChromiumDrawsEveryChartWithoutAScriptError) {
+  if (testing::kUnderSanitizer) GTEST_SKIP() << kSanitizerSkip;
   if (!chromiumOnPath()) {
     GTEST_SKIP() << "chromium is not on PATH: the browser test of report.html needs Debian's "
                     "chromium package (scripts/install_deps.sh installs it)";
@@ -150,6 +155,7 @@ constexpr const char* kFirstScreenProbe = R"JS(<script>
 // the first trade-off chart, no log axis spans more than 3 empty decades, every point has a
 // technique label; a box placed below the screen shows the check can fail.
 TEST(HtmlBrowser, DefaultRunFirstScreenAnswersAndTradeOffChart) {
+  if (testing::kUnderSanitizer) GTEST_SKIP() << kSanitizerSkip;
   if (!chromiumOnPath()) GTEST_SKIP() << "chromium is not on PATH";
   const fs::path dir = testing::scratchDirectory("report_first_screen");
   const testing::SplitResult report = runTessbenchSplit(
@@ -178,6 +184,7 @@ TEST(HtmlBrowser, DefaultRunFirstScreenAnswersAndTradeOffChart) {
 // carries them, rendered by `report --format html` and loaded in Chromium: every canvas drawn,
 // a bar chart per asset × camera path among them, and no script error.
 TEST(HtmlBrowser, ComparisonBarChartsAreDrawn) {
+  if (testing::kUnderSanitizer) GTEST_SKIP() << kSanitizerSkip;
   if (!chromiumOnPath()) GTEST_SKIP() << "chromium is not on PATH";
   const fs::path dir = testing::scratchDirectory("report_comparison");
   const std::string baseline = (fs::path(TB_SOURCE_DIR) / "results" / "baseline").string();

@@ -8,6 +8,7 @@
 #include "harness/results/results_json.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
+#include "tests/test_support.h"
 
 namespace tb {
 namespace {
@@ -36,6 +37,8 @@ TEST(ThreadInvariance, ResultsAreByteIdenticalOnOneAndTwoThreads) {
 }
 
 TEST(ThreadInvariance, TimingsCoverEveryMeasureOfEveryRecord) {
+  // A third whole run: under a sanitizer the one above runs the same suite code.
+  if (::tb::testing::kUnderSanitizer) GTEST_SKIP() << "the suite's code runs above under a sanitizer";
   suite::SuiteSelection selection;
   selection.assets = {suite::resolveAsset("loop_icosahedron")};
   selection.threads = 2;
