@@ -10,5 +10,5 @@ endif()
 add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
                     -fno-omit-frame-pointer -g -O1 -UNDEBUG)
 set(TB_FUZZ_LINK_OPTIONS -fsanitize=fuzzer,address,undefined)
-set(TB_FUZZ_SECONDS 60 CACHE STRING
+set(TB_FUZZ_SECONDS 30 CACHE STRING
     "Seconds each <target>_fuzz test fuzzes for (libFuzzer's -max_total_time)")

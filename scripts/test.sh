@@ -3,7 +3,7 @@
 # every test with ctest.
 # With the argument asan-ubsan, the same tests run under AddressSanitizer and
 # UndefinedBehaviorSanitizer instead; with fuzz, the libFuzzer targets of tests/fuzz
-# (clang 14) replay their corpora and fuzz for TB_FUZZ_SECONDS (60) each.
+# (clang 14) replay their corpora and fuzz for TB_FUZZ_SECONDS (30) each.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"

@@ -185,8 +185,13 @@ TEST(Adaptivity, IntegerSpacingPopsMoreThanFractionalOddAlongTheDolly) {
   const techniques::BuiltSurface patches =
       build({"acc", "default", "opensubdiv/catmark_torus.obj"});
   measures::AdaptivityRun run(*patches, nullptr, "not used", nullptr);
-  const std::vector<view::View> views = pathViews("dolly", *patches);
+  std::vector<view::View> views = pathViews("dolly", *patches);
   ASSERT_GE(views.size(), 120u);
+  // Under a sanitizer the dolly's middle third alone (consecutive frames; the last third's
+  // close-ups cost the most): the same code on a third of the views.
+  if (testing::kUnderSanitizer) {
+    views = std::vector<view::View>(views.begin() + 40, views.begin() + 80);
+  }
   const lod::FactorPolicy policy = *lod::parseFactorPolicy("sphere_diameter");
   auto maxPop = [&](tess::Spacing spacing) {
     double pop = 0;
