@@ -408,6 +408,22 @@ const std::vector<float>& errorBoundTable(const FactorParams& params, techniques
                            tess::Spacing(params.spacing));
 }
 
+// The spacing's two tables, each looked up on first use.
+class ErrorBoundTables {
+ public:
+  explicit ErrorBoundTables(const FactorParams& params) : params_(params) {}
+  const std::vector<float>& of(techniques::PatchDomain domain) {
+    const std::vector<float>*& table = domain == techniques::PatchDomain::kQuad ? quad_ : triangle_;
+    if (table == nullptr) table = &errorBoundTable(params_, domain);
+    return *table;
+  }
+
+ private:
+  const FactorParams& params_;
+  const std::vector<float>* quad_ = nullptr;
+  const std::vector<float>* triangle_ = nullptr;
+};
+
 }  // namespace
 
 tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
@@ -454,11 +470,12 @@ size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& c
   if (corners.error_bounds.size() != corners.patches.size()) {
     throw std::logic_error("errorBoundUnmetPatches: error_bound without its bounds");
   }
+  ErrorBoundTables tables(params);
   size_t unmet = 0;
   for (size_t p = 0; p < corners.patches.size(); ++p) {
     bool met = true;
     errorBoundLevels(params, corners.domains[p], corners.error_bounds[p],
-                     errorBoundTable(params, corners.domains[p]), &met);
+                     tables.of(corners.domains[p]), &met);
     unmet += met ? 0 : 1;
   }
   return unmet;
@@ -466,9 +483,21 @@ size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& c
 
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners) {
   std::vector<tess::Levels> levels(corners.patches.size());
+  if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
+    // The tables once per call, not once per patch (each lookup takes a lock).
+    if (corners.error_bounds.size() != levels.size()) {
+      throw std::logic_error("policyLevels: error_bound without its bounds");
+    }
+    ErrorBoundTables tables(params);
+    for (size_t p = 0; p < levels.size(); ++p) {
+      bool met = true;
+      levels[p] = errorBoundLevels(params, corners.domains[p], corners.error_bounds[p],
+                                   tables.of(corners.domains[p]), &met);
+    }
+    return levels;
+  }
   for (size_t p = 0; p < levels.size(); ++p) {
-    levels[p] = policyLevels(params, corners.domains[p], corners.patches[p],
-                             corners.error_bounds.empty() ? nullptr : &corners.error_bounds[p]);
+    levels[p] = policyLevels(params, corners.domains[p], corners.patches[p], nullptr);
   }
   return levels;
 }

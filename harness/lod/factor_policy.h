@@ -30,16 +30,18 @@
 // - the suffix `_order_dependent` on any policy takes the corners in patch order instead:
 //   deliberately not crack-safe (the midpoint a + (b - a) / 2 rounds differently when the
 //   two patches run the edge in opposite directions), so the measure can be seen to fail.
-// - error_bound: the level the technique's own second-derivative bounds need for a
-//   tessellation error of at most `target` pixels (error_bound.h): edge j = sqrt(M_j / (8
-//   eps)) from the bound of the edge's curve alone, inner = sqrt((M_uu + 2 M_uv + M_vv) /
-//   (8 eps)); eps = target z_near / (f_px k) world units, z_near the nearest clip w of the
-//   edge's (inner: the patch's) hull sphere, f_px = H |P[1][1]| / 2 and k = sqrt(1 + a^2 +
-//   b^2) the largest stretch of the projection's Jacobian over that sphere (a, b its largest
-//   view x / z, y / z, at most the view's edges: the error counts visible samples only); a
-//   hull that reaches the near plane gets level 64. No search: the
-//   target is the error. `error_bound_loose` doubles eps: a control that must break the
-//   1 px criterion somewhere.
+// - error_bound: the least levels at which the technique's own second-derivative bounds keep
+//   the tessellation error within `target` pixels (error_bound.h): each edge the least whole
+//   level whose longest segment s keeps its record's bound m within eps (m s^2 <= eps), the
+//   inside the least whole level whose worst triangle, with those edges, transition rings
+//   included, is within eps (transition_extents.h); only levels at which the spacing's
+//   segments are equal. eps = target w_near / (f_px k) world units, w_near the nearest clip
+//   w of the edge's (inside: the patch's) hull sphere, at least the near plane's, f_px =
+//   H |P[1][1]| / 2 and k = sqrt(1 + a^2 + b^2) the largest stretch of the projection's
+//   Jacobian over that sphere (a, b its largest view x / z, y / z, at most the view's edges:
+//   the error counts visible samples only); a sphere wholly outside the view gets level 1.
+//   No search: the target is the error. `error_bound_loose` doubles eps: a control that must
+//   break the 1 px criterion somewhere.
 #pragma once
 
 #include <array>
@@ -143,8 +145,8 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
 float edgeFactor(const FactorParams& params, const FactorCorner& a, const FactorCorner& b);
 
 // The twin of tbErrorBoundEps: the world error that projects to the pixel target at the
-// sphere's nearest clip w (0 when the sphere reaches the near plane; +inf when it is wholly
-// outside the view: behind the near plane or outside a side).
+// sphere's nearest clip w, or the near plane's where the sphere reaches it (> 0); +inf when
+// the sphere is wholly outside the view: behind the near plane or outside a side.
 float errorBoundEps(const FactorParams& params, const std::array<float, 4>& sphere);
 
 // The twin of tbPolicyLevels: one patch's levels (culled patches: all 0). error_bound reads

@@ -73,20 +73,25 @@ struct BoundSweep {
   std::vector<const char*> paths = {std::begin(kPaths), std::end(kPaths)};
 };
 
+// `technique`'s default variant on `asset`; empty where the technique refuses the mesh.
+techniques::BuiltSurface defaultSurface(const techniques::Technique& technique, const std::string& asset) {
+  const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
+  if (!technique.checkSupport(mesh).empty()) return nullptr;
+  try {
+    return techniques::buildSurface(technique, mesh, technique.variants().front());
+  } catch (const techniques::UnsupportedInput&) {
+    return nullptr;
+  }
+}
+
 // error_bound and its loose control on `technique`'s default variant over `asset`, every path;
 // `frames`: 0 for each path's own frame count. Wherever every patch met the bound, the error
 // is within the target (acceptance 3); the loose control must exceed it somewhere (7).
 void boundSweepOne(const char* technique_id, const std::string& asset, uint32_t frames, BoundSweep* sweep) {
   const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(technique_id);
   ASSERT_NE(technique, nullptr) << technique_id;
-  const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
-  if (!technique->checkSupport(mesh).empty()) return;
-  techniques::BuiltSurface surface;
-  try {
-    surface = techniques::buildSurface(*technique, mesh, technique->variants().front());
-  } catch (const techniques::UnsupportedInput&) {
-    return;
-  }
+  const techniques::BuiltSurface surface = defaultSurface(*technique, asset);
+  if (!surface) return;
   measures::AdaptivityRun run(*surface, nullptr, "CPU only", nullptr);
   const std::string why = run.policyUnavailable(*lod::parseFactorPolicy("error_bound"));
   ASSERT_TRUE(why.empty()) << technique_id << " " << asset << ": " << why;
@@ -231,14 +236,8 @@ TEST(ErrorBound, RatiosOnEveryBundledAssetWhenAsked) {
     std::map<std::string, std::vector<double>> vs_uniform, vs_ideal, error;
     std::map<std::string, size_t> below_one;
     for (const std::string& asset : ::tb::testing::bundledObjs()) {
-      const mesh::Mesh mesh = mesh::loadObjFile(::tb::testing::assetPath(asset));
-      if (!technique->checkSupport(mesh).empty()) continue;
-      techniques::BuiltSurface surface;
-      try {
-        surface = techniques::buildSurface(*technique, mesh, technique->variants().front());
-      } catch (const techniques::UnsupportedInput&) {
-        continue;
-      }
+      const techniques::BuiltSurface surface = defaultSurface(*technique, asset);
+      if (!surface) continue;
       measures::AdaptivityRun run(*surface, nullptr, "CPU only", nullptr);
       if (!run.policyUnavailable(*lod::parseFactorPolicy("error_bound")).empty()) continue;
       for (const char* path : kPaths) {
