@@ -15,7 +15,8 @@
 namespace tb::lod {
 namespace {
 
-constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4;
+constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4,
+                   kFlagDenseEdges = 8;
 // TbFactorParamsBlock, std430, before error_bound's transition table.
 constexpr size_t kParamWords = 48;
 // TbFactorPatch: 4 corners x (position vec4, normal vec4), then error_bound's 4 edge spheres,
@@ -23,6 +24,7 @@ constexpr size_t kParamWords = 48;
 constexpr size_t kPatchWords = 64;
 constexpr const char* kOrderDependentSuffix = "_order_dependent";
 constexpr const char* kLooseSuffix = "_loose";
+constexpr const char* kDenseSuffix = "_dense";
 // error_bound: a sphere is outside a side of the view when the side plane's value at its
 // centre is below -radius x |plane| x this (1 + 2^-10: more than the float rounding of the
 // value, so no visible sphere is ever taken for an invisible one).
@@ -112,6 +114,7 @@ std::string FactorPolicy::name() const {
   if (silhouette) name += "_silhouette";
   if (roundness) name += "_roundness";
   if (loose) name += kLooseSuffix;
+  if (dense_edges) name += kDenseSuffix;
   if (order_dependent) name += kOrderDependentSuffix;
   return name;
 }
@@ -164,6 +167,9 @@ std::optional<FactorPolicy> parseFactorPolicy(std::string_view name) {
   } else if (name == std::string("error_bound") + kLooseSuffix) {
     policy.kind = FactorPolicyKind::kErrorBound;
     policy.loose = true;
+  } else if (name == std::string("error_bound") + kDenseSuffix) {
+    policy.kind = FactorPolicyKind::kErrorBound;
+    policy.dense_edges = true;
   } else {
     bool found = false;
     for (FactorPolicyKind kind :
@@ -219,7 +225,8 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
   params.policy = uint32_t(policy.kind);
   params.flags = (policy.order_dependent ? kFlagOrderDependent : 0) |
                  (policy.silhouette ? kFlagSilhouette : 0) |
-                 (policy.roundness ? kFlagRoundness : 0);
+                 (policy.roundness ? kFlagRoundness : 0) |
+                 (policy.dense_edges ? kFlagDenseEdges : 0);
   params.reduction = uint32_t(policy.reduction);
   params.spacing = uint32_t(spacing);
   // error_bound: f_px = H |P11| / 2 pixels per unit of y / w (square pixels: x alike); the
@@ -341,7 +348,14 @@ float errorBoundInside(const FactorParams& params, const ErrorBoundPatch& bound,
   *met = true;
   const auto spacing = tess::Spacing(params.spacing);
   const float top = clampFactor(64.0f, spacing);
-  const float eps = errorBoundEps(params, bound.patch_sphere);
+  // Every sphere of the record holds the patch's hull (an edge's holds every side's), so
+  // each one's eps holds for the whole patch: the largest is taken, and it is at least each
+  // edge's, which the edge levels were chosen for.
+  float eps = errorBoundEps(params, bound.patch_sphere);
+  for (uint32_t e = 0; e < edges; ++e) {
+    const float edge_eps = errorBoundEps(params, bound.edge_sphere[e]);
+    eps = edge_eps > eps ? edge_eps : eps;
+  }
   if (!(eps > 0.0f)) return top;
   const float a = bound.inner_a / eps, b = bound.inner_b / eps;
   float best_n = top, best = std::numeric_limits<float>::infinity();
@@ -389,7 +403,8 @@ tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomai
     if (!(eps > 0.0f)) continue;
     const float m = bound.edge_m[j] / eps;
     for (uint32_t o = 1; o <= uint32_t(top); ++o) {
-      if (!equalSegmentLevel(o, spacing)) continue;
+      const bool dense = (params.flags & kFlagDenseEdges) != 0;
+      if (!(dense ? equalSegmentLevel(o, spacing) : narrowEdgeLevel(o, spacing))) continue;
       const float s = table[transitionSegmentIndex(edges, o)];
       if (m * s * s <= 1.0f) {
         levels.outer[j] = float(o);
@@ -465,18 +480,24 @@ tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain do
   return tess::processTriTessFactorsAvg(spacing, raw, 1.0f).rounded;
 }
 
-size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners) {
-  if (FactorPolicyKind(params.policy) != FactorPolicyKind::kErrorBound) return 0;
+ErrorBoundUnmet errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners) {
+  if (FactorPolicyKind(params.policy) != FactorPolicyKind::kErrorBound) return {};
   if (corners.error_bounds.size() != corners.patches.size()) {
     throw std::logic_error("errorBoundUnmetPatches: error_bound without its bounds");
   }
   ErrorBoundTables tables(params);
-  size_t unmet = 0;
+  const float top = clampFactor(64.0f, tess::Spacing(params.spacing));
+  ErrorBoundUnmet unmet;
   for (size_t p = 0; p < corners.patches.size(); ++p) {
+    const std::vector<float>& table = tables.of(corners.domains[p]);
     bool met = true;
-    errorBoundLevels(params, corners.domains[p], corners.error_bounds[p],
-                     tables.of(corners.domains[p]), &met);
-    unmet += met ? 0 : 1;
+    errorBoundLevels(params, corners.domains[p], corners.error_bounds[p], table, &met);
+    if (met) continue;
+    ++unmet.patches;
+    const std::array<float, 4> all_top = {top, top, top, top};
+    const uint32_t edges = corners.domains[p] == techniques::PatchDomain::kQuad ? 4u : 3u;
+    errorBoundInside(params, corners.error_bounds[p], all_top, edges, table, &met);
+    unmet.beyond_top += met ? 0 : 1;
   }
   return unmet;
 }

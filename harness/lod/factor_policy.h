@@ -31,17 +31,20 @@
 //   deliberately not crack-safe (the midpoint a + (b - a) / 2 rounds differently when the
 //   two patches run the edge in opposite directions), so the measure can be seen to fail.
 // - error_bound: the least levels at which the technique's own second-derivative bounds keep
-//   the tessellation error within `target` pixels (error_bound.h): each edge the least whole
-//   level whose longest segment s keeps its record's bound m within eps (m s^2 <= eps), the
-//   inside the least whole level whose worst triangle, with those edges, transition rings
-//   included, is within eps (transition_extents.h); only levels at which the spacing's
-//   segments are equal. eps = target w_near / (f_px k) world units, w_near the nearest clip
-//   w of the edge's (inside: the patch's) hull sphere, at least the near plane's, f_px =
+//   the tessellation error within `target` pixels (error_bound.h): each edge the least level
+//   of the narrow family (transition_extents.h, narrowEdgeLevel) whose longest segment s
+//   keeps its record's bound m within eps (m s^2 <= eps), the inside the least whole level
+//   whose worst triangle, with those edges, transition rings included, is within eps; only
+//   levels at which the spacing's segments are equal. eps = target w_near / (f_px k) world
+//   units, w_near the nearest clip w of the edge's hull sphere (inside: the largest eps of
+//   the patch's and its edges' spheres, each of which holds the patch), at least the near
+//   plane's, f_px =
 //   H |P[1][1]| / 2 and k = sqrt(1 + a^2 + b^2) the largest stretch of the projection's
 //   Jacobian over that sphere (a, b its largest view x / z, y / z, at most the view's edges:
 //   the error counts visible samples only); a sphere wholly outside the view gets level 1.
 //   No search: the target is the error. `error_bound_loose` doubles eps: a control that must
-//   break the 1 px criterion somewhere.
+//   break the 1 px criterion somewhere; `error_bound_dense` gives edges every equal-segment
+//   level: a control that leaves patches unmet which the top level would meet.
 #pragma once
 
 #include <array>
@@ -77,6 +80,7 @@ struct FactorPolicy {
   bool roundness = false;        // lp2_edge only
   bool order_dependent = false;  // any policy; not crack-safe
   bool loose = false;            // error_bound only: eps doubled (a control)
+  bool dense_edges = false;      // error_bound only: edges at every equal-segment level (a control)
   double target = 8;             // see the header comment for its unit per policy
   InnerReduction reduction = InnerReduction::kAverage;
   double min_scale = 0.25;          // s_min of the reductions, (0, 1]
@@ -156,12 +160,17 @@ tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain do
                           const ErrorBoundPatch* bound = nullptr);
 std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorCorners& corners);
 
-// error_bound: the patches whose edges, fixed by their shared records, leave no inside level
-// within the bound. The tessellator stitches an edge to a first inner ring of another level
-// with triangles up to about 3.5 segments wide (transition_extents.h); where a patch's edges
-// have levels no one inside level stitches to narrowly (33 and 45, say), the policy takes the
-// level that comes closest and the bound is not guaranteed there. 0 for other policies.
-size_t errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners);
+// error_bound's patches with no inside level within the bound, given their edges (fixed by
+// the shared records). The edges take levels from a family that stitches narrowly to a
+// common inside level (transition_extents.h, narrowEdgeLevel), and the inside reads the
+// largest eps of the record's spheres, which is at least each edge's; so a patch is unmet
+// only where it needs more than the tessellator's top level.
+struct ErrorBoundUnmet {
+  size_t patches = 0;     // unmet patches; best 0, worst all of them
+  size_t beyond_top = 0;  // of those, unmet even with every level at the top; best = patches
+};
+// Zeros for other policies.
+ErrorBoundUnmet errorBoundUnmetPatches(const FactorParams& params, const FactorCorners& corners);
 
 // The device's input for `program` (one of the patches' gpuPrograms()): corners in program
 // patch order (GpuPatchProgram::patch_ids) and the parameter words for its domain.

@@ -232,7 +232,11 @@ ScreenEdgeFigures edgeFigures(std::vector<double> lengths_px, double target_px) 
 
 ScreenMetrics::ScreenMetrics(const techniques::SurfacePatches& patches,
                              const ref::LimitSurface* limit)
-    : patches_(patches), limit_(limit), cache_(patches, kScreenPatternPoints) {
+    : patches_(patches),
+      limit_(limit),
+      evaluated_(patches.patchCount()),
+      evaluated_share_(kEvaluatedDoubles / std::max<size_t>(1, patches.patchCount())),
+      cache_(patches, kScreenPatternPoints) {
   if (limit == nullptr) return;
   const osd::Scheme scheme = referenceScheme(patches.approximates());
   if (limit->scheme() != scheme || limit->faceCount() != patches.patchCount()) {
@@ -252,6 +256,21 @@ ScreenMetrics::ScreenMetrics(const techniques::SurfacePatches& patches,
       reference_map_[p] = kLoopUv;
     }
   }
+}
+
+const techniques::BatchPoints& ScreenMetrics::evaluated(size_t p, const ScreenPattern& pattern,
+                                                        techniques::BatchPoints& scratch) {
+  assert(p < evaluated_.size() && pattern.points != nullptr);
+  Evaluated& kept = evaluated_[p];
+  if (kept.serial != 0 && kept.serial == pattern.points_serial) return kept.points;
+  patches_.evaluateBatch(p, *pattern.points, scratch);
+  kept.serial = 0;
+  if (3 * scratch.position[0].size() <= evaluated_share_) {
+    kept.points.count = scratch.count;
+    kept.points.position = scratch.position;
+    kept.serial = pattern.points_serial;
+  }
+  return scratch;
 }
 
 FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
@@ -281,9 +300,9 @@ FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const t
       if (pattern.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *pattern.points, s.points);
-      projectVertices(view, pattern.vertexCount(), s.points, &s.projected);
-      addTessellationError(pattern, s.points, view, &slots[i].tessellation);
+      const techniques::BatchPoints& points = evaluated(p, pattern, s.points);
+      projectVertices(view, pattern.vertexCount(), points, &s.projected);
+      addTessellationError(pattern, points, view, &slots[i].tessellation);
       slots[i].edges =
           writeEdgeLengths(pattern, s.projected, view, chunk_lengths_px.data() + edge_start[i]);
       if (limit_ != nullptr && reference_map_[p] != kNoReference) {
@@ -331,8 +350,7 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
       if (pattern.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *pattern.points, s.points);
-      addTessellationError(pattern, s.points, view, &slots[i]);
+      addTessellationError(pattern, evaluated(p, pattern, s.points), view, &slots[i]);
     });
     for (size_t i = 0; i < count; ++i) {
       sums.merge(slots[i]);

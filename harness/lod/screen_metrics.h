@@ -106,8 +106,24 @@ class ScreenMetrics {
                          std::span<const tess::Levels> after, const view::View& view);
 
  private:
+  // Patch p's points under `pattern` (positions at least): the ones kept from its last
+  // evaluation when that was under the same batch pattern (the same bits evaluateBatch
+  // gives again), else evaluated into `scratch` and kept when they fit the patch's share of
+  // kEvaluatedDoubles. A search passes the same levels over many frames; this spares the
+  // technique's evaluation on every frame after the first. Call once per patch at a time.
+  const techniques::BatchPoints& evaluated(size_t p, const ScreenPattern& pattern,
+                                           techniques::BatchPoints& scratch);
+
+  struct Evaluated {
+    uint64_t serial = 0;           // ScreenPattern::points_serial; 0: nothing kept
+    techniques::BatchPoints points;  // positions only
+  };
+  static constexpr size_t kEvaluatedDoubles = size_t(1) << 23;  // 64 MB over all patches
+
   const techniques::SurfacePatches& patches_;
   const ref::LimitSurface* limit_;
+  std::vector<Evaluated> evaluated_;  // per patch
+  size_t evaluated_share_ = 0;        // doubles a patch may keep
   // Per patch: how the reference is sampled (screen_metrics.cpp, ReferenceMap).
   std::vector<uint8_t> reference_map_;
   ScreenPatternCache cache_;

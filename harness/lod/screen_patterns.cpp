@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <set>
@@ -81,6 +82,8 @@ void buildSamples(ScreenPattern* pattern) {
 // The batch pattern of the vertices, followed by the samples when there are any.
 void buildPoints(const techniques::SurfacePatches& patches, ScreenPattern* pattern,
                  bool technique_kernel) {
+  static std::atomic<uint64_t> next_serial{1};
+  pattern->points_serial = next_serial.fetch_add(1);
   std::vector<techniques::DomainCoord> coords;
   coords.reserve(pattern->vertexCount() + pattern->samples.size());
   coords.insert(coords.end(), pattern->vertex_coords.begin(), pattern->vertex_coords.end());

@@ -71,6 +71,9 @@ struct ScreenPattern {
   // per patch): point i < vertexCount() is vertex i, and with kPatternSamples point
   // vertexCount() + k is sample k. Null when culled.
   std::unique_ptr<techniques::BatchPattern> points;
+  // A process-wide id of `points`, new each time they are built (0: none): equal ids, the
+  // same batch pattern, so the same evaluation bits (ScreenMetrics keeps evaluations by it).
+  uint64_t points_serial = 0;
 
   size_t vertexCount() const { return vertex_coords.size(); }
   // Domain points held in the batch pattern (what bounds the cache).

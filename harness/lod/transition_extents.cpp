@@ -108,6 +108,20 @@ bool equalSegmentLevel(uint32_t level, tess::Spacing spacing) {
   return true;
 }
 
+bool narrowEdgeLevel(uint32_t level, tess::Spacing spacing) {
+  if (!equalSegmentLevel(level, spacing)) return false;
+  switch (spacing) {
+    case tess::Spacing::kInteger:  // 1, 2 and 2^k + 1, then the top
+      return level <= 3 || level == 64 || ((level - 1) & (level - 2)) == 0;
+    case tess::Spacing::kFractionalOdd:  // 1 and 2^k + 1, then the top
+      return level == 1 || level == 63 || ((level - 1) & (level - 2)) == 0;
+    case tess::Spacing::kFractionalEven:  // 2^k
+    case tess::Spacing::kPow2:
+      return (level & (level - 1)) == 0;
+  }
+  return true;
+}
+
 RingFactors ringFactors(tess::Domain domain) {
   if (domain == tess::Domain::kIsoline) {
     throw std::invalid_argument("ringFactors: the isoline domain has no triangles");

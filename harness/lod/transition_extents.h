@@ -41,6 +41,12 @@ inline constexpr size_t transitionIndex(uint32_t e, uint32_t axis, uint32_t o, u
 // to an equal edge with wider triangles.
 bool equalSegmentLevel(uint32_t level, tess::Spacing spacing);
 
+// The equalSegmentLevel levels error_bound gives an edge: a family in which any two levels
+// stitch to a common inside level no wider than the coarser one's regular pattern (integer
+// 1, 2, 3, 5, 9, 17, 33, 64; fractional_odd 1, 3, 5, 9, 17, 33, 63; fractional_even and
+// pow2 the powers of two). With independent per-edge levels, no denser family has that.
+bool narrowEdgeLevel(uint32_t level, tess::Spacing spacing);
+
 // How much wider than 1 / o a regular pattern's triangles are, at most over every spacing
 // and every equalSegmentLevel o (all outer and inner levels o): the widest extent along u
 // and along v times o, and the largest enclosing circle's squared radius times o^2. Quad 1,

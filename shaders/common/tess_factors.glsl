@@ -36,6 +36,7 @@ const uint kTbPolicyErrorBound = 4u;      // the least levels within target px (
 const uint kTbFactorOrderDependent = 1u;
 const uint kTbFactorSilhouette = 2u;  // scale by 1 - (1 - s_min) |n . v|
 const uint kTbFactorRoundness = 4u;   // scale by how far the end normals turn
+const uint kTbFactorDenseEdges = 8u;  // error_bound_dense: edges at every allowed level (a control)
 // TbFactorParams::reduction
 const uint kTbReduceAverage = 0u;
 const uint kTbReduceMax = 1u;
@@ -262,6 +263,15 @@ bool tbErrorBoundLevelAllowed(uint n, uint spacing) {
   return true;
 }
 
+// The levels error_bound gives an edge (transition_extents.h, narrowEdgeLevel): a family in
+// which any two stitch narrowly to a common inside level.
+bool tbErrorBoundEdgeAllowed(uint n, uint spacing) {
+  if (!tbErrorBoundLevelAllowed(n, spacing)) return false;
+  if (spacing == kTbSpacingInteger) return n <= 3u || n == 64u || ((n - 1u) & (n - 2u)) == 0u;
+  if (spacing == kTbSpacingFractionalOdd) return n == 1u || n == 63u || ((n - 1u) & (n - 2u)) == 0u;
+  return (n & (n - 1u)) == 0u;
+}
+
 float tbTransition(uint e, uint axis, uint o, uint n) {
   return tb_factor.tb_transition[((e * 3u + axis) * 64u + (o - 1u)) * 64u + (n - 1u)];
 }
@@ -273,7 +283,9 @@ float tbErrorBoundEdge(vec4 sphere, float bound, uint edges, float top) {
   if (!(eps > 0.0)) return top;
   precise float m = bound / eps;
   for (uint o = 1u; o <= uint(top); ++o) {
-    if (!tbErrorBoundLevelAllowed(o, tb_factor.spacing)) continue;
+    const bool dense = (tb_factor.flags & kTbFactorDenseEdges) != 0u;
+    if (!(dense ? tbErrorBoundLevelAllowed(o, tb_factor.spacing)
+                : tbErrorBoundEdgeAllowed(o, tb_factor.spacing))) continue;
     const float s = tb_factor.tb_transition[edges * 3u * 64u * 64u + (o - 1u)];
     precise float need = m * s * s;
     if (need <= 1.0) return float(o);
@@ -285,7 +297,12 @@ float tbErrorBoundEdge(vec4 sphere, float bound, uint edges, float top) {
 // edges at `outer`, is within the patch's bound (the smaller of a du^2 + b dv^2 and
 // 4 max(a, b) r^2 at most 1); where none is, the one that comes closest.
 float tbErrorBoundInside(uint patch_index, float outer[4], uint edges, float top) {
-  const float eps = tbErrorBoundEps(tb_factor_patches[patch_index].patch_sphere);
+  // Every sphere of the record holds the patch's hull: the largest eps (factor_policy.cpp).
+  float eps = tbErrorBoundEps(tb_factor_patches[patch_index].patch_sphere);
+  for (uint e = 0u; e < edges; ++e) {
+    const float edge_eps = tbErrorBoundEps(tb_factor_patches[patch_index].edge_sphere[e]);
+    eps = edge_eps > eps ? edge_eps : eps;
+  }
   if (!(eps > 0.0)) return top;
   precise float a = tb_factor_patches[patch_index].inner_ab.x / eps;
   precise float b = tb_factor_patches[patch_index].inner_ab.y / eps;

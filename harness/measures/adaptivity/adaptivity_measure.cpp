@@ -36,7 +36,7 @@ Grid gridFor(SuiteMode suite, const techniques::SurfacePatches& patches) {
   Grid grid;
   if (suite == SuiteMode::kFull) {
     grid.policies = {"uniform",  "distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette",
-                     "error_bound", "error_bound_loose"};
+                     "error_bound", "error_bound_loose", "error_bound_dense"};
     // Roundness scales by how the vertex normals turn: the surfaces built from them
     // (PN triangles, Phong tessellation: the techniques graded against Loop).
     if (patches.approximates() == techniques::LimitScheme::kLoop)
@@ -301,14 +301,14 @@ class AdaptivityMeasure final : public Measure {
          "own error function), each shared edge at the larger need of its two patches so the "
          "assignment is crack-free; uniform levels are one such assignment, so the ideal never "
          "needs more triangles than the best uniform level",
-         "error_bound (harness/lod/error_bound.h): each edge's level from Wang's formula on the "
-         "technique's bound of that edge curve's second derivative (sqrt(M / (8 eps)); both "
-         "patches of an edge read one record), the inside from Filip-Magedson-Markot "
-         "(sqrt((M_uu + 2 M_uv + M_vv) / (8 eps))); eps = target px x the hull's nearest clip w "
-         "/ (f_px x k), k the projection's largest stretch inside the view; the bounds come from "
-         "each technique's control net (techniques::CurvatureBounds), never from samples; "
-         "error_bound_loose (--suite full) doubles eps: a control made to break the 1 px "
-         "criterion",
+         "error_bound (harness/lod/error_bound.h, factor_policy.h): each edge the least level "
+         "of a family that stitches narrowly to a common inside level (integer 1, 2, 3, 5, 9, "
+         "17, 33, 64; fractional_odd 1, 3, 5, 9, 17, 33, 63; else powers of two) keeping its "
+         "record (its curve's and both sides' second-derivative bounds) within eps; the inside "
+         "the least level whose every triangle, transition rings included, is within the "
+         "patch's bound; eps = target px x the hull's nearest clip w / (f_px x k), k the "
+         "projection's largest stretch in the view; controls: error_bound_loose doubles eps, "
+         "error_bound_dense gives edges every equal-segment level",
          "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
          "twin harness/lod/factor_policy.h): distance = target x diagonal / |eye - edge "
          "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
@@ -342,7 +342,7 @@ class AdaptivityMeasure final : public Measure {
          "visibility is the view frustum (no occlusion)",
          "default suite: sphere_diameter, distance and lp2_edge at fractional_odd on the default "
          "path, summaries of sphere_diameter and error_bound; --suite full: every policy (uniform, the lp2_edge reductions, "
-         "error_bound, the order-dependent and loose controls) at integer, pow2, fractional_odd "
+         "error_bound, the order-dependent, loose and dense controls) at integer, pow2, fractional_odd "
          "and fractional_even, and summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
          "and stays out of results.json"},
         {},
@@ -358,7 +358,8 @@ class AdaptivityMeasure final : public Measure {
                            .log_x = true,
                            .log_y = true}},
         // control_rows: the crack-unsafe policies, and the error bound loosened on purpose.
-        {{{"policy", "*_order_dependent"}}, {{"policy", "error_bound_loose"}}},
+        {{{"policy", "*_order_dependent"}}, {{"policy", "error_bound_loose"}},
+         {{"policy", "error_bound_dense"}}},
         // comparisons: triangles per frame at 1 px per policy, against uniform and the ideal.
         {results::ComparisonSpec{
             .title = "Triangles per frame at a 1 px tessellation error (fewer is better); "
