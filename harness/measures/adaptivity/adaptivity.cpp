@@ -321,9 +321,11 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
           ? summary.triangles_per_frame / summary.uniform_triangles_per_frame
           : 0;
   const AdaptivityIdeal& best_possible =
-      ideal(spacing, views, error_target_px, uniform.reached ? uniform.level : 0);
+      ideal(spacing, views, error_target_px, uniform.reached ? uniform.level : 0,
+            uniform.error.triangles_per_frame);
   summary.ideal_triangles_per_frame = best_possible.triangles_per_frame;
   summary.ideal_max_error_px = best_possible.max_error_px;
+  summary.ideal_uniform_frames = best_possible.uniform_frames;
   summary.triangle_ratio_vs_ideal = summary.reached && best_possible.triangles_per_frame > 0
                                         ? summary.triangles_per_frame / best_possible.triangles_per_frame
                                         : 0;

@@ -82,6 +82,9 @@ struct AdaptivitySummary {
   // assignment of integer levels needs for the error target, per patch, mean over the path.
   double ideal_triangles_per_frame = 0;
   double ideal_max_error_px = 0;  // the path's largest tessellation error under the ideal
+  // Frames on which the ideal took the uniform level (AdaptivityIdeal::uniform_frames):
+  // best 0 (the per-patch search beat uniform on every frame), worst every frame.
+  uint32_t ideal_uniform_frames = 0;
   // triangles_per_frame / ideal_triangles_per_frame: 1 (best, as few as the ideal), above 1
   // the policy's excess (2: twice the ideal's triangles); 0 when not reached.
   double triangle_ratio_vs_ideal = 0;
@@ -93,6 +96,9 @@ struct AdaptivityIdeal {
   double triangles_per_frame = 0;
   double max_error_px = 0;
   uint32_t passes = 0;  // tessellation-error passes the search took over the path
+  // Frames that took the uniform level (the per-patch search missed the target there, or
+  // needed more triangles); best 0, worst every frame.
+  uint32_t uniform_frames = 0;
 };
 
 // Which parts of a frame to measure (all by default; crack-safety checks need only the
@@ -130,10 +136,15 @@ class AdaptivityRun {
   // patches at once between 1 and `uniform_level` (the lowest uniform level within the
   // target on every frame, which passes every patch; 0: none does, then 64, 63 at
   // fractional_odd), settled patches culled in later passes; a shared edge then takes the
-  // larger of its patches' levels (crack-free), the inside the patch's own. Cached per
-  // spacing and target.
+  // larger of its patches' levels (crack-free), the inside the patch's own. Where that
+  // frame misses the target (transition rings) or needs more triangles than the uniform
+  // level, the frame takes the uniform level: it is one such assignment, within the target
+  // on every frame, so the ideal never misses the target nor needs more than uniform when
+  // a uniform level reaches it (`uniform_triangles`: that level's triangles per frame).
+  // Cached per spacing and target.
   const AdaptivityIdeal& ideal(tess::Spacing spacing, const std::vector<view::View>& views,
-                               double error_target_px, uint32_t uniform_level);
+                               double error_target_px, uint32_t uniform_level,
+                               double uniform_triangles = 0);
 
   // Why `policy` cannot run on these patches (error_bound without the technique's
   // second-derivative bounds); empty when it can. Computes error_bound's inputs once.

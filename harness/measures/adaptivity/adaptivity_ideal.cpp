@@ -91,18 +91,36 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
 }
 
 const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::vector<view::View>& views,
-                                            double error_target_px, uint32_t uniform_level) {
+                                            double error_target_px, uint32_t uniform_level,
+                                            double uniform_triangles) {
   const auto key = std::make_tuple(int(spacing), error_target_px, viewsKey(views));
   if (const auto it = ideal_cache_.find(key); it != ideal_cache_.end()) return it->second;
   const uint32_t highest = uniform_level > 0 ? uniform_level
                                              : (spacing == tess::Spacing::kFractionalOdd ? 63 : 64);
   AdaptivityIdeal out;
   uint64_t triangles = 0;
+  std::vector<tess::Levels> uniform;
+  if (uniform_level > 0) {
+    for (size_t p = 0; p < patches_.patchCount(); ++p) {
+      uniform.push_back(patchAt(patches_.patchDomain(p), float(uniform_level)));
+    }
+  }
   for (const view::View& view : views) {
     const std::vector<tess::Levels> levels = idealFrame(spacing, view, error_target_px, highest, &out.passes);
     uint64_t frame_triangles = 0;
-    const lod::ScreenErrorFigures e = screen_->tessellationError(spacing, levels, view, &frame_triangles);
+    lod::ScreenErrorFigures e = screen_->tessellationError(spacing, levels, view, &frame_triangles);
     ++out.passes;
+    const bool more = uniform_triangles > 0 && double(frame_triangles) > uniform_triangles;
+    if (!uniform.empty() && (e.max_px > error_target_px || more)) {
+      uint64_t uniform_frame = 0;
+      const lod::ScreenErrorFigures u = screen_->tessellationError(spacing, uniform, view, &uniform_frame);
+      ++out.passes;
+      if (u.max_px <= error_target_px) {  // always, as the uniform search found it
+        e = u;
+        frame_triangles = uniform_frame;
+        ++out.uniform_frames;
+      }
+    }
     out.max_error_px = std::max(out.max_error_px, e.max_px);
     triangles += frame_triangles;
   }

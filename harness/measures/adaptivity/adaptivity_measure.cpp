@@ -239,9 +239,12 @@ const MetricTable<AdaptivitySummary>& summaryTable() {
        &S::triangles_per_frame},
       // ideal_triangles_per_frame: count; context: the per-patch ideal's mean triangles per frame
       {"ideal_triangles_per_frame", results::Unit::kCount, D::kNone, &S::ideal_triangles_per_frame},
-      // ideal_path_max_error_px: pixels; context: the ideal's largest error (its shared edges take
-      //   the larger need, which may move a transition's error a little)
+      // ideal_path_max_error_px: pixels; context: the ideal's largest error, within the target
+      //   wherever a uniform level reaches it (frames the per-patch search misses take uniform)
       {"ideal_path_max_error_px", results::Unit::kPixels, D::kNone, &S::ideal_max_error_px},
+      // ideal_uniform_frames: frames; context: frames where the ideal took the uniform level
+      //   (the per-patch search missed the target there or needed more triangles); best 0
+      {"ideal_uniform_frames", results::Unit::kCount, D::kNone, &S::ideal_uniform_frames},
       // uniform_triangles_per_frame: count; context
       {"uniform_triangles_per_frame", results::Unit::kCount, D::kNone,
        &S::uniform_triangles_per_frame},
@@ -286,12 +289,10 @@ class AdaptivityMeasure final : public Measure {
         {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal", "factor_mismatches_cpu",
          "tess_error_max_px"},
         {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter and "
-         "error_bound): "
-         "for each policy, the coarsest target whose "
+         "error_bound): for each policy, the coarsest target whose "
          "tessellation error stays within 1 px on every frame of the path (bisection on a log "
          "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the "
-         "lowest uniform level "
-         "(integer, binary search) that does the same; triangle_ratio_vs_uniform = the two "
+         "lowest uniform level (integer, binary search) that does the same; triangle_ratio_vs_uniform = the two "
          "triangle counts' ratio (0.25: a quarter of uniform's triangles); policy_target is "
          "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
          "pixels per edge; lp2_edge: C; error_bound: the pixel error itself, not searched)",
@@ -299,8 +300,10 @@ class AdaptivityMeasure final : public Measure {
          "over the ideal's): per frame, every patch's lowest integer level (1..64) whose own "
          "tessellation error stays within 1 px (bisection on all patches at once, the measure's "
          "own error function), each shared edge at the larger need of its two patches so the "
-         "assignment is crack-free; uniform levels are one such assignment, so the ideal never "
-         "needs more triangles than the best uniform level",
+         "assignment is crack-free; a frame where that misses the target (transition rings) or "
+         "needs more triangles than the best uniform level takes the uniform level "
+         "(ideal_uniform_frames), one such assignment, so the ideal is within the target and "
+         "never above uniform",
          "error_bound (harness/lod/error_bound.h, factor_policy.h): each edge the least level "
          "of a family that stitches narrowly to a common inside level (integer 1, 2, 3, 5, 9, "
          "17, 33, 64; fractional_odd 1, 3, 5, 9, 17, 33, 63; else powers of two) keeping its "
