@@ -395,6 +395,7 @@ tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomai
   const bool quad = domain == techniques::PatchDomain::kQuad;
   const uint32_t edges = quad ? 4u : 3u;
   const float top = clampFactor(64.0f, spacing);
+  const bool dense = (params.flags & kFlagDenseEdges) != 0;
   tess::Levels levels;
   levels.outer = {0, 0, 0, 0};
   for (uint32_t j = 0; j < edges; ++j) {
@@ -403,7 +404,6 @@ tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomai
     if (!(eps > 0.0f)) continue;
     const float m = bound.edge_m[j] / eps;
     for (uint32_t o = 1; o <= uint32_t(top); ++o) {
-      const bool dense = (params.flags & kFlagDenseEdges) != 0;
       if (!(dense ? equalSegmentLevel(o, spacing) : narrowEdgeLevel(o, spacing))) continue;
       const float s = table[transitionSegmentIndex(edges, o)];
       if (m * s * s <= 1.0f) {
