@@ -191,7 +191,125 @@ def far_quadrant():
             if count > 300000: print('too many boxes', name, flush=True); sys.exit(1)
         print('11 (x = 1 - u, y = 1 - v)', name, float(best), float(max(upper, best)), count, flush=True)
 
-if len(sys.argv) > 1 and sys.argv[1] == '--quadrants':
+# The triangle's regions: the domain cut at the edges' midpoints into the three corner
+# triangles (u, v or w at least 1/2) and the middle one, as (u, v) vertices.
+TRI_REGIONS = {
+    'u': ((F(1), F(0)), (F(1, 2), F(0)), (F(1, 2), F(1, 2))),
+    'v': ((F(0), F(1)), (F(0), F(1, 2)), (F(1, 2), F(1, 2))),
+    'w': ((F(0), F(0)), (F(1, 2), F(0)), (F(0), F(1, 2))),
+    'mid': ((F(1, 2), F(0)), (F(1, 2), F(1, 2)), (F(0), F(1, 2))),
+}
+
+def bernstein_max(poly, tri):
+    """max |Bernstein coefficient| of the polynomial `poly` in (u, v) on the triangle `tri`:
+    an upper bound of |poly| there (the Bernstein weights are >= 0 and sum to 1)."""
+    l1, l2 = sp.symbols('l1 l2')
+    (x0, y0), (x1, y1), (x2, y2) = tri
+    l0 = 1 - l1 - l2
+    sub = {u: x0*l0 + x1*l1 + x2*l2, v: y0*l0 + y1*l1 + y2*l2}
+    P = sp.Poly(sp.expand(poly.subs(sub, simultaneous=True)), l1, l2)
+    m = P.total_degree()
+    # Homogenise with l0: coefficient of l0^(m-i-j) l1^i l2^j from each monomial l1^a l2^b
+    # (l0 + l1 + l2)^(m-a-b) = ((1 - l1 - l2) + l1 + l2)^(m-a-b) in the barycentric basis.
+    coef = {}
+    for (a, b), c in zip(P.monoms(), P.coeffs()):
+        c = F(int(sp.fraction(c)[0]), int(sp.fraction(c)[1]))
+        rest = m - a - b
+        # (l0 + l1 + l2)^rest = sum rest! / (p! q! t!) l0^p l1^q l2^t
+        from math import factorial
+        for q in range(rest + 1):
+            for t in range(rest + 1 - q):
+                pp = rest - q - t
+                mult = F(factorial(rest), factorial(pp) * factorial(q) * factorial(t))
+                key = (pp, a + q, b + t)
+                coef[key] = coef.get(key, F(0)) + c * mult
+    from math import factorial
+    best = F(0)
+    for (i, j, k), c in coef.items():
+        binom = F(factorial(m), factorial(i) * factorial(j) * factorial(k))
+        best = max(best, abs(c / binom))
+    return best
+
+def split(tri):
+    a, b, c = tri
+    mid = lambda p, q: ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
+    ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+    return [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
+
+def region_bound(num, base, k, tri, depth):
+    """sup |num / base^k| over the triangle `tri` (base linear and > 0 there): the largest
+    over its 4^depth sub-triangles of max |Bernstein coefficient of num| / min(base)^k (base
+    is smallest at a vertex)."""
+    pieces = [tri]
+    for _ in range(depth):
+        pieces = [q for p in pieces for q in split(p)]
+    fb = sp.lambdify((u, v), base)
+    upper = F(0)
+    for p in pieces:
+        dmin = min(F(sp.Rational(base.subs({u: sp.Rational(x.numerator, x.denominator),
+                                            v: sp.Rational(y.numerator, y.denominator)})).p,
+                     sp.Rational(base.subs({u: sp.Rational(x.numerator, x.denominator),
+                                            v: sp.Rational(y.numerator, y.denominator)})).q)
+                   for x, y in p)
+        assert dmin > 0
+        upper = max(upper, bernstein_max(num, p) / dmin**k)
+    return upper
+
+def quad_far_quadrant(depth):
+    """The quad's g_0 on [1/2, 1]^2 (u + v >= 1 there), as two triangles."""
+    g = 9*u*(1-u)**2*v*(1-v)**2*(u-v)/(u+v)
+    h = F(1, 2)
+    tris = (((h, h), (F(1), h), (F(1), F(1))), ((h, h), (F(1), F(1)), (h, F(1))))
+    for name, d in (('uu', sp.diff(g, u, 2)), ('uv', sp.diff(g, u, v)), ('vv', sp.diff(g, v, 2))):
+        num, den = sp.fraction(sp.factor(sp.together(d)))
+        base = u + v
+        k = sp.Poly(den, u, v).total_degree()
+        scale = sp.cancel(den / base**k)
+        assert scale.free_symbols == set(), den
+        num = sp.expand(num / scale)
+        upper = max(region_bound(num, base, k, t, depth) for t in tris)
+        fn = sp.lambdify((u, v), d)
+        sampled = max(abs(fn(0.5 + i / 120, 0.5 + j / 120)) for i in range(61) for j in range(61))
+        print('quad 0 quadrant 11', name, 'sampled %.4f' % sampled, 'bound %.4f' % float(upper),
+              flush=True)
+
+def triangle_regions(depth):
+    """Per blend g_c (b211, b121, b112) and region away from its corner: sup |second
+    derivative| over the region, bounded by the Bernstein coefficients of the numerator over
+    the smallest denominator on each of 4^depth sub-triangles (exact rationals); with the
+    largest value sampled on a grid of the region beside it."""
+    w = 1 - u - v
+    own = ['u', 'v', 'w']
+    for c, (basis, a, b) in enumerate(tri_cases()):
+        g = basis*(a - b)/(a + b)
+        for name, d in (('uu', sp.diff(g, u, 2)), ('uv', sp.diff(g, u, v)), ('vv', sp.diff(g, v, 2))):
+            num, den = sp.fraction(sp.factor(sp.together(d)))
+            base = sp.expand(a + b)
+            k = sp.Poly(den, u, v).total_degree()
+            scale = sp.cancel(den / base**k)  # den is a constant times (a + b)^k
+            assert scale.free_symbols == set(), den
+            num = sp.expand(num / scale)
+            fn = sp.lambdify((u, v), d)
+            for region, tri in TRI_REGIONS.items():
+                if region == own[c]: continue
+                upper = region_bound(num, base, k, tri, depth)
+                sampled = 0.0
+                n = 60
+                (x0, y0), (x1, y1), (x2, y2) = [(float(x), float(y)) for x, y in tri]
+                for i in range(n + 1):
+                    for j in range(n + 1 - i):
+                        l1, l2 = i / n, j / n
+                        l0 = 1 - l1 - l2
+                        uu_, vv_ = x0*l0 + x1*l1 + x2*l2, y0*l0 + y1*l1 + y2*l2
+                        sampled = max(sampled, abs(fn(uu_, vv_)))
+                print('tri', c, region, name, 'sampled %.4f' % sampled, 'bound %.4f' % float(upper),
+                      flush=True)
+
+if len(sys.argv) > 1 and sys.argv[1] == '--triangle-regions':
+    triangle_regions(int(sys.argv[2]) if len(sys.argv) > 2 else 3)
+elif len(sys.argv) > 1 and sys.argv[1] == '--far-quadrant-bernstein':
+    quad_far_quadrant(int(sys.argv[2]) if len(sys.argv) > 2 else 3)
+elif len(sys.argv) > 1 and sys.argv[1] == '--quadrants':
     quadrants()
 elif len(sys.argv) > 1 and sys.argv[1] == '--far-quadrant':
     far_quadrant()

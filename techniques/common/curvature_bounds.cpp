@@ -46,16 +46,25 @@
 // up: [0, 1/2]^2 (36, 9, 36), the whole domain's (proven 36.00005, 9.0001, 36.00005);
 // [1/2, 1] x [0, 1/2] (1.541, 3.000, 13.5) (proven 1.5428, 3.0020, 13.5020); [0, 1/2] x
 // [1/2, 1] the same with uu and vv swapped (g_0(v, u) = -g_0(u, v)); [1/2, 1]^2 uu = vv =
-// 0.856 (proven 0.8761; the quadrant is its own mirror), uv the whole domain's 9 (the branch
-// and bound did not finish in time; sampled 0.42). (The quadrants away from the corner by
-// interval branch and bound directly in (u, v), where g_0 is smooth: scripts/
-// gregory_blend_constants.py --quadrants 10 and --far-quadrant.) Corners 1..3 are corner 0
+// 0.856 (proven 0.8761; the quadrant is its own mirror), uv 0.460 (proven 0.4576, sampled
+// 0.4243). (The quadrants away from the corner by interval branch and bound directly in
+// (u, v), where g_0 is smooth: scripts/gregory_blend_constants.py --quadrants 10 and
+// --far-quadrant; the far quadrant's uv by --far-quadrant-bernstein 4: on each of 512
+// sub-triangles the largest Bernstein coefficient of the numerator, exact rationals, over
+// the smallest (u + v)^k there.) Corners 1..3 are corner 0
 // reflected (g_1(u, v) = -g_0(1 - u, v), g_2 = g_0(1 - u, 1 - v), g_3 = -g_0(u, 1 - v));
 // reflections keep |∂uu|, |∂uv|, |∂vv|, so corner c reads g_0's reflected quadrant.
 //   Triangle (quartic B_c = 12 x^2 y z, x the corner's own coordinate), per corner since
-// w = 1 - u - v breaks the symmetry of the (u, v) derivatives: (uu, uv, vv) = (48, 60, 72)
-// at corner 0, (72, 60, 48) at corner 1, (48, 12, 48) at corner 2 (proven upper bounds
-// within 1e-3 of these; stored + 0.002).
+// w = 1 - u - v breaks the symmetry of the (u, v) derivatives: over the whole domain (uu,
+// uv, vv) = (48, 60, 72) at corner 0, (72, 60, 48) at corner 1, (48, 12, 48) at corner 2
+// (proven upper bounds within 1e-3 of these; stored + 0.002), the suprema at the corner.
+// Per region of the domain cut at its edges' midpoints, away from its corner (where x <= 1/2,
+// so a + b >= 1/2 and g_c is smooth) the bounds are smaller: on each of 256 sub-triangles of
+// the region the largest Bernstein coefficient of the numerator (exact rationals) over the
+// smallest (a + b)^k there (scripts/gregory_blend_constants.py --triangle-regions 4; the
+// largest sampled value beside each: 24 of 26.99, 21 of 21.63, 2.31 of 2.54, 4 of 4.41 and
+// 4.63, the middle's and 18 exact). Stored + 0.002. The sum over the corners on the worst
+// region is about 0.75 of the whole domain's (uu: 26.99 + 72 + 26.99 on v >= 1/2 against 168).
 #include "techniques/common/curvature_bounds.h"
 
 #include <algorithm>
@@ -68,13 +77,17 @@ namespace tb::techniques {
 const std::array<std::array<GregoryBlendConstants, 2>, 2> kGregoryQuadBlend{{
     // [qa][qb]: u in [qa / 2, (qa + 1) / 2], v in [qb / 2, (qb + 1) / 2]
     {{{36.001, 9.002, 36.001}, {13.503, 3.003, 1.544}}},
-    {{{1.544, 3.003, 13.503}, {0.877, 9.002, 0.877}}},
+    {{{1.544, 3.003, 13.503}, {0.877, 0.460, 0.877}}},
 }};
 
-const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend{{
-    {48.002, 60.002, 72.002},  // b211: blend (v, w)
-    {72.002, 60.002, 48.002},  // b121: blend (w, u)
-    {48.002, 12.002, 48.002},  // b112: blend (u, v)
+const std::array<std::array<GregoryBlendConstants, 4>, 3> kGregoryTriangleBlend{{
+    // [corner][region]: u >= 1/2, v >= 1/2, w >= 1/2, the middle triangle
+    {{{48.002, 60.002, 72.002}, {26.990, 21.632, 18.002}, {2.544, 4.408, 18.002},
+      {24.002, 21.002, 18.002}}},  // b211: blend (v, w)
+    {{{18.002, 21.632, 26.990}, {72.002, 60.002, 48.002}, {18.002, 4.408, 2.544},
+      {18.002, 21.002, 24.002}}},  // b121: blend (w, u)
+    {{{2.544, 4.628, 26.990}, {26.990, 4.628, 2.544}, {48.002, 12.002, 48.002},
+      {24.002, 3.002, 24.002}}},  // b112: blend (u, v)
 }};
 
 namespace {
@@ -253,11 +266,19 @@ CurvatureBounds gregoryQuadNetCurvatureBounds(const std::vector<mesh::Vec3d>& mi
 }
 
 void addGregoryTriangleBlends(CurvatureBounds& bounds, const std::array<double, 3>& half_gaps) {
-  for (size_t c = 0; c < 3; ++c) {
-    bounds.uu += kGregoryTriangleBlend[c].uu * half_gaps[c];
-    bounds.uv += kGregoryTriangleBlend[c].uv * half_gaps[c];
-    bounds.vv += kGregoryTriangleBlend[c].vv * half_gaps[c];
+  // The largest over the regions of the domain of the blends' sum there.
+  double uu = 0, uv = 0, vv = 0;
+  for (size_t region = 0; region < 4; ++region) {
+    double r_uu = 0, r_uv = 0, r_vv = 0;
+    for (size_t c = 0; c < 3; ++c) {
+      const GregoryBlendConstants& k = kGregoryTriangleBlend[c][region];
+      r_uu += k.uu * half_gaps[c];
+      r_uv += k.uv * half_gaps[c];
+      r_vv += k.vv * half_gaps[c];
+    }
+    uu = std::max(uu, r_uu), uv = std::max(uv, r_uv), vv = std::max(vv, r_vv);
   }
+  bounds.uu += uu, bounds.uv += uv, bounds.vv += vv;
 }
 
 }  // namespace tb::techniques

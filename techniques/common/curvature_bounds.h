@@ -50,8 +50,11 @@ struct GregoryBlendConstants {
 // kGregoryQuadBlend[qa][qb]. Corner c's g_c is g_0 reflected (u -> 1 - u for corners 1 and
 // 2, v -> 1 - v for corners 2 and 3), so it reads the reflected quadrant.
 extern const std::array<std::array<GregoryBlendConstants, 2>, 2> kGregoryQuadBlend;
-// Triangle (quartic weights, blends b211 (v, w), b121 (w, u), b112 (u, v)), per corner.
-extern const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend;
+// Triangle (quartic weights, blends b211 (v, w), b121 (w, u), b112 (u, v)), per corner and
+// region of the domain cut at its edges' midpoints: kGregoryTriangleBlend[c][r], r = 0, 1, 2
+// the corner triangles where u, v or w >= 1/2, 3 the middle one. Corner c's own region
+// holds the whole domain's suprema (limits at the corner); elsewhere its blend is smooth.
+extern const std::array<std::array<GregoryBlendConstants, 4>, 3> kGregoryTriangleBlend;
 
 // A quad Gregory patch from the bicubic net `mid_net` (16 points, c[i + 4 j]) with the face
 // points' midpoints in its interior slots and `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world
@@ -62,7 +65,8 @@ extern const std::array<GregoryBlendConstants, 3> kGregoryTriangleBlend;
 // replaces it by the control points).
 CurvatureBounds gregoryQuadNetCurvatureBounds(const std::vector<mesh::Vec3d>& mid_net,
                                               const std::array<double, 4>& half_gaps);
-// Adds Σ_c K_c |δ_c| to uu, uv and vv: `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world units).
+// Adds the largest over the four regions of Σ_c K_c |δ_c| (the region's constants) to uu,
+// uv and vv: `half_gaps[c]` = |Fp_c - Fm_c| / 2 (world units).
 // Edges are untouched (a Gregory patch's boundary curves are polynomial).
 void addGregoryTriangleBlends(CurvatureBounds& bounds, const std::array<double, 3>& half_gaps);
 

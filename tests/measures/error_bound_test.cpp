@@ -314,6 +314,35 @@ TEST(ErrorBound, IdealNeedsNoMoreThanUniformAndTheSummaryIsOnePass) {
               s.triangle_ratio_vs_uniform, s.triangle_ratio_vs_ideal);
 }
 
+// frames_beyond_top_level says why error_bound missed the target: on acc's toroidal_tet
+// dolly the camera comes so close that even the top level is over 1 px, and the summary
+// counts those frames; the loose control (eps doubled) misses the target on acc's pawn orbit
+// with no such frame, so the count is not merely "the error was over".
+TEST(ErrorBound, FramesBeyondTheTopLevelExplainTheMisses) {
+  const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find("acc");
+  const auto summary = [&](const char* asset, const char* policy, const char* path,
+                           uint32_t frames) {
+    const techniques::BuiltSurface surface = defaultSurface(*technique, asset);
+    measures::AdaptivityRun run(*surface, nullptr, "CPU only", nullptr);
+    EXPECT_TRUE(run.policyUnavailable(*lod::parseFactorPolicy(policy)).empty());
+    return run.summarise(*lod::parseFactorPolicy(policy), tess::Spacing::kFractionalOdd,
+                         boundPathViews(path, *surface, frames), kTargetPx);
+  };
+  const measures::AdaptivitySummary close =
+      summary("opensubdiv/catmark_toroidal_tet.obj", "error_bound", "dolly", 12);
+  const measures::AdaptivitySummary loose =
+      summary("opensubdiv/catmark_pawn.obj", "error_bound_loose", "orbit", 8);
+  std::printf("[error_bound] toroidal_tet dolly: %.3f px, %u frames beyond the top level; loose "
+              "control on the pawn's orbit: %.3f px, %u\n",
+              close.max_error_px, close.beyond_top_frames, loose.max_error_px,
+              loose.beyond_top_frames);
+  EXPECT_GT(close.max_error_px, kTargetPx);
+  EXPECT_GT(close.beyond_top_frames, 0u);
+  EXPECT_TRUE(close.error_bound);
+  EXPECT_GT(loose.max_error_px, kTargetPx);
+  EXPECT_EQ(loose.beyond_top_frames, 0u);
+}
+
 // The ideal is a valid assignment and never above uniform: on osd_adaptive's
 // catmark_cube_corner3 orbit the per-patch search alone needs more triangles than the
 // uniform level or misses the target on some frames (the control: those frames are

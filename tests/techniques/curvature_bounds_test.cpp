@@ -395,36 +395,59 @@ TEST(CurvatureBounds, GregoryBlendConstantsBoundTheBlendFunctions) {
         EXPECT_LE(m[2], k.vv + tolerance) << what;
         std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
                     m[1] / k.uv, m[2] / k.vv);
-        // The constants are suprema (limits at corner 0 in quadrant 00), so the grid comes
-        // close; but g_0's uv on its far quadrant holds the whole domain's constant.
+        // The constants are suprema (limits at corner 0 in quadrant 00) or within 0.93 of
+        // them (the far quadrant's), so the grid comes close.
         EXPECT_GT(m[0], 0.9 * k.uu) << what;
-        if (ra == 0 || rb == 0) {
-          EXPECT_GT(m[1], 0.9 * k.uv) << what;
-        }
+        EXPECT_GT(m[1], 0.9 * k.uv) << what;
         EXPECT_GT(m[2], 0.9 * k.vv) << what;
       }
     }
   }
-  std::vector<std::array<double, 2>> points;  // inside the triangle by 2 h
-  for (int j = 0; j <= kGrid; ++j) {
-    for (int i = 0; i + j <= kGrid; ++i) {
-      points.push_back({3 * kH + (1 - 9 * kH) * i / kGrid, 3 * kH + (1 - 9 * kH) * j / kGrid});
+  // The triangle's regions (u >= 1/2, v >= 1/2, w >= 1/2, the middle), each sampled on a
+  // grid 3 h inside the triangle (so up to its corners) and 2 h inside the region's cuts.
+  const auto inRegion = [&](int region, double u, double v) {
+    const double w = 1 - u - v, m = 2 * kH;
+    if (region < 3) return std::array<double, 3>{u, v, w}[size_t(region)] >= 0.5 + m;
+    return u <= 0.5 - m && v <= 0.5 - m && w <= 0.5 - m;
+  };
+  for (int region = 0; region < 4; ++region) {
+    std::vector<std::array<double, 2>> points;
+    constexpr int kSteps = 4 * kGrid;
+    for (int j = 0; j <= kSteps; ++j) {
+      for (int i = 0; i + j <= kSteps; ++i) {
+        const double u = 3 * kH + (1 - 9 * kH) * i / kSteps, v = 3 * kH + (1 - 9 * kH) * j / kSteps;
+        if (inRegion(region, u, v)) points.push_back({u, v});
+      }
     }
-  }
-  for (int c = 0; c < 3; ++c) {
-    const auto m = blendSecondDifferences(
-        [c](double u, double v) { return triangleBlend(c, u, v); }, points, kH);
-    const auto& k = techniques::kGregoryTriangleBlend[size_t(c)];
-    const std::string what = "triangle corner " + std::to_string(c);
-    EXPECT_LE(m[0], k.uu + tolerance) << what;
-    EXPECT_LE(m[1], k.uv + tolerance) << what;
-    EXPECT_LE(m[2], k.vv + tolerance) << what;
-    // The suprema are limits at the corner; a grid 3 h from it comes within a few percent.
-    EXPECT_GT(m[0], 0.9 * k.uu) << what;
-    EXPECT_GT(m[1], 0.9 * k.uv) << what;
-    EXPECT_GT(m[2], 0.9 * k.vv) << what;
-    std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
-                m[1] / k.uv, m[2] / k.vv);
+    ASSERT_GT(points.size(), 100u);
+    for (int c = 0; c < 3; ++c) {
+      const auto m = blendSecondDifferences(
+          [c](double u, double v) { return triangleBlend(c, u, v); }, points, kH);
+      const auto& k = techniques::kGregoryTriangleBlend[size_t(c)][size_t(region)];
+      const std::string what =
+          "triangle corner " + std::to_string(c) + " region " + std::to_string(region);
+      EXPECT_LE(m[0], k.uu + tolerance) << what;
+      EXPECT_LE(m[1], k.uv + tolerance) << what;
+      EXPECT_LE(m[2], k.vv + tolerance) << what;
+      // The suprema on the corner's own region are limits at the corner (a grid 3 h from it
+      // comes within a few percent); elsewhere the Bernstein bounds are within 0.85 of the
+      // largest value sampled finely (the script's), and this grid within 0.8 of them.
+      const double close = region == c ? 0.9 : 0.8;
+      EXPECT_GT(m[0], close * k.uu) << what;
+      EXPECT_GT(m[1], close * k.uv) << what;
+      EXPECT_GT(m[2], close * k.vv) << what;
+      // The control: the whole domain's constants (the corner's own region's), which the
+      // bound used on every region before, are caught by the same closeness check away
+      // from the corner.
+      const auto& whole = techniques::kGregoryTriangleBlend[size_t(c)][size_t(c)];
+      if (region != c) {
+        EXPECT_TRUE(m[0] <= close * whole.uu || m[1] <= close * whole.uv ||
+                    m[2] <= close * whole.vv)
+            << what;
+      }
+      std::printf("%s: sampled / constant uu %.3f uv %.3f vv %.3f\n", what.c_str(), m[0] / k.uu,
+                  m[1] / k.uv, m[2] / k.vv);
+    }
   }
 }
 

@@ -242,6 +242,11 @@ AdaptivityRun::PathError AdaptivityRun::pathError(const lod::FactorPolicy& polic
         spacing, twinLevels(policy, spacing, view), view, &frame_triangles);
     error.max_px = std::max(error.max_px, e.max_px);
     triangles += frame_triangles;
+    if (policy.kind == lod::FactorPolicyKind::kErrorBound) {
+      const lod::ErrorBoundUnmet unmet = lod::errorBoundUnmetPatches(
+          lod::factorParams(policy, view, spacing, diagonal_), corners_);
+      error.beyond_top_frames += unmet.beyond_top > 0 ? 1 : 0;
+    }
   }
   error.triangles_per_frame = views.empty() ? 0 : double(triangles) / double(views.size());
   return error;
@@ -309,6 +314,8 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
   summary.target = targetAt(best_fineness);
   summary.triangles_per_frame = best.triangles_per_frame;
   summary.max_error_px = best.max_px;
+  summary.beyond_top_frames = best.beyond_top_frames;
+  summary.error_bound = policy.kind == lod::FactorPolicyKind::kErrorBound;
 
   const UniformBest& uniform = uniformBest(policy.reduction, spacing, views, error_target_px);
   summary.evaluations += uniform.passes;

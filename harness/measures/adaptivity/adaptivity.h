@@ -72,6 +72,12 @@ struct AdaptivitySummary {
   double target = 0;        // the coarsest such target (FactorPolicy::targetUnit())
   double triangles_per_frame = 0;  // mean over the path's frames at that target
   double max_error_px = 0;         // the path's largest tessellation error there
+  // error_bound only: frames on which some patch's bound stays above the target even with
+  // every level at the tessellator's top (lod::ErrorBoundUnmet::beyond_top), so no level the
+  // hardware offers is certain to meet it there. Best 0; where it is above 0, max_error_px
+  // may exceed the target on those frames (the asset is too close for the pixel target).
+  uint32_t beyond_top_frames = 0;
+  bool error_bound = false;  // the policy is error_bound (beyond_top_frames is measured)
   bool uniform_reached = false;
   uint32_t uniform_level = 0;  // the lowest uniform level reaching the error target
   double uniform_triangles_per_frame = 0;
@@ -161,6 +167,7 @@ class AdaptivityRun {
   struct PathError {
     double max_px = 0;
     double triangles_per_frame = 0;
+    uint32_t beyond_top_frames = 0;  // error_bound: AdaptivitySummary::beyond_top_frames
   };
   PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
                       const std::vector<view::View>& views);

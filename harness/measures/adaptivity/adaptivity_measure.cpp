@@ -245,6 +245,13 @@ const MetricTable<AdaptivitySummary>& summaryTable() {
       // ideal_uniform_frames: frames; context: frames where the ideal took the uniform level
       //   (the per-patch search missed the target there or needed more triangles); best 0
       {"ideal_uniform_frames", results::Unit::kCount, D::kNone, &S::ideal_uniform_frames},
+      // frames_beyond_top_level: frames; context (error_bound only, else empty): frames where
+      //   some patch's bound is above the target even at the top level, so no tessellation is
+      //   certain to meet it there; best 0, worst every frame
+      {"frames_beyond_top_level", results::Unit::kCount, D::kNone,
+       [](const S& s) -> std::optional<double> {
+         return s.error_bound ? std::optional<double>(s.beyond_top_frames) : std::nullopt;
+       }},
       // uniform_triangles_per_frame: count; context
       {"uniform_triangles_per_frame", results::Unit::kCount, D::kNone,
        &S::uniform_triangles_per_frame},
@@ -310,8 +317,9 @@ class AdaptivityMeasure final : public Measure {
          "record (its curve's and both sides' second-derivative bounds) within eps; the inside "
          "the least level whose every triangle, transition rings included, is within the "
          "patch's bound; eps = target px x the hull's nearest clip w / (f_px x k), k the "
-         "projection's largest stretch in the view; controls: error_bound_loose doubles eps, "
-         "error_bound_dense gives edges every equal-segment level",
+         "projection's largest stretch in the view; frames_beyond_top_level: frames where a "
+         "patch's bound is over even at the top level (only there may it miss the target); "
+         "controls: error_bound_loose doubles eps, error_bound_dense dense edge levels",
          "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
          "twin harness/lod/factor_policy.h): distance = target x diagonal / |eye - edge "
          "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
