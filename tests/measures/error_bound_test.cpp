@@ -328,10 +328,12 @@ TEST(ErrorBound, FramesBeyondTheTopLevelExplainTheMisses) {
     return run.summarise(*lod::parseFactorPolicy(policy), tess::Spacing::kFractionalOdd,
                          boundPathViews(path, *surface, frames), kTargetPx);
   };
+  // Under a sanitizer the dolly's two ends (the near one is over) and three orbit frames.
+  const bool few = ::tb::testing::kUnderSanitizer;
   const measures::AdaptivitySummary close =
-      summary("opensubdiv/catmark_toroidal_tet.obj", "error_bound", "dolly", 12);
+      summary("opensubdiv/catmark_toroidal_tet.obj", "error_bound", "dolly", few ? 2 : 12);
   const measures::AdaptivitySummary loose =
-      summary("opensubdiv/catmark_pawn.obj", "error_bound_loose", "orbit", 8);
+      summary("opensubdiv/catmark_pawn.obj", "error_bound_loose", "orbit", few ? 3 : 8);
   std::printf("[error_bound] toroidal_tet dolly: %.3f px, %u frames beyond the top level; loose "
               "control on the pawn's orbit: %.3f px, %u\n",
               close.max_error_px, close.beyond_top_frames, loose.max_error_px,
