@@ -15,10 +15,14 @@ namespace {
 
 std::string runWithThreads(int threads, suite::SuiteTimings* timings) {
   suite::SuiteSelection selection;
-  // A quad-and-triangle mesh and a triangle mesh: every technique runs on one of them,
-  // and every measure on some technique.
-  selection.assets = {suite::resolveAsset("catmark_pyramid"),
-                      suite::resolveAsset("loop_icosahedron")};
+  // A quad mesh, on which every technique runs (acc and osd_adaptive take quads only; phong
+  // and pn_triangles its fan triangles) and every measure on some technique, and a
+  // quad-and-triangle mesh (gregory_acc's mixed domains). Under a sanitizer the quad mesh
+  // alone: the same code, every technique and measure, in about 0.7 of the time.
+  selection.assets = {suite::resolveAsset("catmark_cube")};
+  if (!::tb::testing::kUnderSanitizer) {
+    selection.assets.push_back(suite::resolveAsset("catmark_pyramid"));
+  }
   selection.threads = threads;
   results::Results results;
   suite::runSuite(selection, nullptr, &results, timings);

@@ -202,9 +202,10 @@ struct Tally {
   std::map<std::string, std::pair<size_t, size_t>> generator_range;  // per domain: min, max
 };
 
+// Every patch; under a sanitizer every 4th (the same code on a quarter of the samples).
 void checkSurface(const techniques::SurfacePatches& s, const std::string& what, Tally& tally) {
   std::mt19937 rng(1);
-  for (size_t p = 0; p < s.patchCount(); ++p) {
+  for (size_t p = 0; p < s.patchCount(); p += testing::sweepStride(4)) {
     const std::optional<techniques::PatchCullBounds> bounds = s.cullBounds(p);
     ASSERT_TRUE(bounds.has_value()) << what << " patch " << p;
     ASSERT_FALSE(bounds->hull.empty()) << what << " patch " << p;
@@ -258,7 +259,7 @@ TEST(PatchCullBounds, HullAndNormalConeContainEveryPatchOfEveryTechnique) {
   for (const techniques::Technique* t : surfaceTechniques()) {
     const std::string id = t->info().id + "/" + t->variants()[0].name;
     ASSERT_TRUE(by_technique.count(id)) << id;
-    EXPECT_GT(by_technique[id].patches, 50u) << id;
+    EXPECT_GT(by_technique[id].patches, 50u / testing::sweepStride(4)) << id;
     // A technique that gives no normal bound (osd_adaptive: hull only) has no cone to test.
     if (by_technique[id].with_generators > 0) {
       EXPECT_GT(by_technique[id].pointed, by_technique[id].with_generators / 2) << id;
