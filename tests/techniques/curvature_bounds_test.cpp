@@ -1,14 +1,7 @@
 // SurfacePatches::curvatureBounds (CurvatureBounds, techniques/technique.h) of every registered
 // surface technique, every non-control variant, on curved bundled assets, against the
-// technique's own double evaluate(), with exact identities rather than finite-difference
-// approximations:
-//  - (S(u+h, v) - 2 S(u, v) + S(u-h, v)) / h^2 is the average of S_uu over [u-h, u+h] with
-//    the hat kernel (1 - |x - u| / h) / h, whose weights are >= 0 and sum to 1, so its norm
-//    is <= sup |S_uu| (vv alike; on a triangle the step is (1, 0, -1) or (0, 1, -1) in
-//    barycentrics, the domain's u and v with w dependent);
-//  - (S(u+h, v+h) - S(u+h, v-h) - S(u-h, v+h) + S(u-h, v-h)) / (4 h^2) is the mean of S_uv
-//    over the square [u-h, u+h] x [v-h, v+h], so its norm is <= sup |S_uv|;
-//  - along each edge, the edge curve's second difference / h^2 against edge[j].
+// technique's own double evaluate(), sampled with the exact identities of
+// tests/curvature_samples.h (each sample at most the supremum it samples).
 // Each holds exactly for any S that is C^1 with bounded second derivatives on the stencil;
 // the tolerance covers only double rounding (relative 1e-6 of the bound plus 1e-7 of the
 // hull's box diagonal). Stencil points sit away from the dyadic lines of osd_adaptive's
@@ -33,6 +26,7 @@
 
 #include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
+#include "tests/curvature_samples.h"
 #include "tests/test_support.h"
 
 namespace tb::curvature_bounds_test {
@@ -40,6 +34,9 @@ namespace {
 
 using techniques::DomainCoord;
 using techniques::PatchDomain;
+using testing::Sampled;
+using testing::sampleQuad;
+using testing::sampleTriangle;
 
 // Extraordinary vertices (cube, pawn, xord_interior; valence 3 to 6), quads with triangles
 // (pyramid, gregory_test5: gregory_acc's triangle patches), boundaries and corners
@@ -56,12 +53,6 @@ const std::vector<std::string> kAssets = {"opensubdiv/catmark_cube.obj",
                                           "tessbench/tri_pawn.obj",
                                           "opensubdiv/loop_icosahedron.obj"};
 
-// Step in domain units; sample points at (2k + 1) / 12 (quad) keep 1/48 from every line
-// k / 16 (osd_adaptive's sub-patch seams to isolation level 4), triangle points keep 1/18
-// from the domain's edges, both far more than 2 h.
-constexpr double kStep = 2e-3;
-constexpr int kQuadSamples = 6;  // per direction
-constexpr int kTriangleSamples = 6;
 constexpr double kRelative = 1e-6;
 constexpr double kAbsolute = 1e-7;  // of the hull's box diagonal
 
@@ -81,70 +72,6 @@ double boxDiagonal(const std::vector<mesh::Vec3d>& points) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   return length(hi - lo);
-}
-
-// The largest sampled second-difference norms of one patch: uu, uv, vv, then edges 0..3.
-using Sampled = std::array<double, 7>;
-
-Sampled sampleQuad(const techniques::SurfacePatches& s, size_t patch) {
-  const auto at = [&](double u, double v) { return s.evaluate(patch, {u, v, 0}).position; };
-  const double h = kStep, inv = 1 / (h * h);
-  Sampled m{};
-  for (int j = 0; j < kQuadSamples; ++j) {
-    for (int i = 0; i < kQuadSamples; ++i) {
-      const double u = (2 * i + 1) / (2.0 * kQuadSamples), v = (2 * j + 1) / (2.0 * kQuadSamples);
-      const mesh::Vec3d c = at(u, v);
-      m[0] = std::max(m[0], length(at(u + h, v) - c * 2.0 + at(u - h, v)) * inv);
-      m[1] = std::max(
-          m[1], length(at(u + h, v + h) - at(u + h, v - h) - at(u - h, v + h) + at(u - h, v - h)) *
-                    (0.25 * inv));
-      m[2] = std::max(m[2], length(at(u, v + h) - c * 2.0 + at(u, v - h)) * inv);
-    }
-  }
-  // Edges u = 0, v = 0, u = 1, v = 1 as curves of t.
-  const std::array<std::array<double, 4>, 4> edges{
-      {{0, 0, 0, 1}, {0, 0, 1, 0}, {1, 0, 0, 1}, {0, 1, 1, 0}}};  // u0, v0, du/dt, dv/dt
-  for (int e = 0; e < 4; ++e) {
-    const auto& [u0, v0, du, dv] = edges[size_t(e)];
-    const auto curve = [&](double t) { return at(u0 + du * t, v0 + dv * t); };
-    for (int k = 0; k < kQuadSamples; ++k) {
-      const double t = (2 * k + 1) / (2.0 * kQuadSamples);
-      m[size_t(3 + e)] =
-          std::max(m[size_t(3 + e)], length(curve(t + h) - curve(t) * 2.0 + curve(t - h)) * inv);
-    }
-  }
-  return m;
-}
-
-Sampled sampleTriangle(const techniques::SurfacePatches& s, size_t patch) {
-  const auto at = [&](double u, double v) { return s.evaluate(patch, {u, v, 1 - u - v}).position; };
-  const double h = kStep, inv = 1 / (h * h);
-  const int n = kTriangleSamples;
-  Sampled m{};
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i + j < n; ++i) {
-      const double u = (i + 1.0 / 3) / n, v = (j + 1.0 / 3) / n;
-      const mesh::Vec3d c = at(u, v);
-      m[0] = std::max(m[0], length(at(u + h, v) - c * 2.0 + at(u - h, v)) * inv);
-      m[1] = std::max(
-          m[1], length(at(u + h, v + h) - at(u + h, v - h) - at(u - h, v + h) + at(u - h, v - h)) *
-                    (0.25 * inv));
-      m[2] = std::max(m[2], length(at(u, v + h) - c * 2.0 + at(u, v - h)) * inv);
-    }
-  }
-  // Edges u = 0 (corner 1 to 2), v = 0 (2 to 0), w = 0 (0 to 1); edge 3 stays 0.
-  const std::array<std::array<double, 4>, 3> edges{
-      {{0, 1, 0, -1}, {0, 0, 1, 0}, {1, 0, -1, 1}}};  // u0, v0, du/dt, dv/dt
-  for (int e = 0; e < 3; ++e) {
-    const auto& [u0, v0, du, dv] = edges[size_t(e)];
-    const auto curve = [&](double t) { return at(u0 + du * t, v0 + dv * t); };
-    for (int k = 0; k < n; ++k) {
-      const double t = (2 * k + 1) / (2.0 * n);
-      m[size_t(3 + e)] =
-          std::max(m[size_t(3 + e)], length(curve(t + h) - curve(t) * 2.0 + curve(t - h)) * inv);
-    }
-  }
-  return m;
 }
 
 std::array<double, 7> boundsOf(const techniques::CurvatureBounds& b) {
