@@ -83,11 +83,12 @@ float prescribedLevel(double m, double eps, tess::Spacing spacing) {
   return float(std::clamp(n, 1.0, double(tess::maxLevel(spacing))));
 }
 
-// The floor's levels for one patch and view; `anisotropic`: the quad inside per direction.
-tess::Levels floorLevels(const FloorPatch& patch, const view::View& view, tess::Spacing spacing,
-                         bool anisotropic) {
+// The floor's levels for one patch and view: {isotropic, anisotropic}, the latter with the
+// quad inside per direction (the same edges; a triangle's two are equal).
+std::array<tess::Levels, 2> floorLevels(const FloorPatch& patch, const view::View& view,
+                                        tess::Spacing spacing) {
   tess::Levels levels;  // all 1
-  if (outsideView(view, patch.hull)) return levels;
+  if (outsideView(view, patch.hull)) return {levels, levels};
   const double f_px = 0.5 * view.viewport_height_px * view.projection_y_scale;
   const auto eps = [&](const std::vector<mesh::Vec3d>& points) {
     return kTargetPx * nearestW(view, points) / f_px;
@@ -100,11 +101,12 @@ tess::Levels floorLevels(const FloorPatch& patch, const view::View& view, tess::
   }
   const float inner = prescribedLevel(uu + 2 * uv + vv, e, spacing);
   levels.inner = {inner, inner};
-  if (quad && anisotropic) {  // a / n_u^2 = b / n_v^2 = eps / 2 minimises n_u n_v
-    levels.inner = {prescribedLevel(2 * (uu + uv), e, spacing),
-                    prescribedLevel(2 * (vv + uv), e, spacing)};
+  tess::Levels anisotropic = levels;
+  if (quad) {  // a / n_u^2 = b / n_v^2 = eps / 2 minimises n_u n_v
+    anisotropic.inner = {prescribedLevel(2 * (uu + uv), e, spacing),
+                         prescribedLevel(2 * (vv + uv), e, spacing)};
   }
-  return levels;
+  return {levels, anisotropic};
 }
 
 struct FloorFigures {
@@ -127,8 +129,9 @@ FloorFigures floorTriangles(const std::vector<FloorPatch>& patches,
   };
   for (const view::View& view : views) {
     for (const FloorPatch& patch : patches) {
-      out.isotropic += count(patch.domain, floorLevels(patch, view, spacing, false));
-      out.anisotropic += count(patch.domain, floorLevels(patch, view, spacing, true));
+      const std::array<tess::Levels, 2> levels = floorLevels(patch, view, spacing);
+      out.isotropic += count(patch.domain, levels[0]);
+      out.anisotropic += count(patch.domain, levels[1]);
     }
   }
   out.isotropic /= double(views.size());
@@ -253,7 +256,9 @@ TEST(ErrorBoundFloor, EveryBundledAssetWhenAsked) {
         if (!r.ran) continue;
         ++records;
         const bool above = r.floor.least() > r.summary.uniform_triangles_per_frame;
-        const bool bound = r.summary.triangle_ratio_vs_uniform > (std::string(path) == "orbit" ? 1.0 : 0.999999);
+        // Acceptance 4: at most 1 on the orbit, below 1 on the dolly and the flyby.
+        const double ratio = r.summary.triangle_ratio_vs_uniform;
+        const bool bound = std::string(path) == "orbit" ? ratio > 1 : ratio >= 1;
         floor_above += above ? 1 : 0;
         bound_above += bound ? 1 : 0;
         both += above && bound ? 1 : 0;
