@@ -12,6 +12,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "tests/test_paths.h"
 
@@ -130,6 +131,17 @@ inline int runChromium(const std::filesystem::path& profile, const std::string& 
       profile.string() + " --virtual-time-budget=5000 " + arguments + " file://" + page.string() +
       " >" + out.string() + " 2>/dev/null";
   return std::system(command.c_str());
+}
+
+// The names in `folder`, sorted; none when it does not exist.
+inline std::vector<std::string> folderEntries(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  if (!std::filesystem::exists(folder)) return names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace tb::testing

@@ -111,6 +111,53 @@ std::vector<MetricField<AdaptivityFrame>> adaptivityComputeFields() {
   };
 }
 
+// The frame table's screen-space fields (edge lengths, errors and pops in pixels), then its
+// compute-path fields: the rows' metric order after the counts and crack figures.
+std::vector<MetricField<AdaptivityFrame>> screenAndComputeFields() {
+  using D = results::Direction;
+  using F = AdaptivityFrame;
+  std::vector<MetricField<F>> fields{
+      // visible_edges: count; context: tessellated edges with an end in the viewport
+      {"visible_edges", results::Unit::kCount, D::kNone,
+       [](const F& f) { return double(f.screen.edges.edges); }},
+      // edge_px_median: pixels; context (the band around the target is what counts)
+      {"edge_px_median", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.median_px; }},
+      // edge_px_p05: pixels; context
+      {"edge_px_p05", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.p05_px; }},
+      // edge_px_p95: pixels; context
+      {"edge_px_p95", results::Unit::kPixels, D::kNone,
+       [](const F& f) { return f.screen.edges.p95_px; }},
+      // edge_fraction_in_band: ratio; 1 when every edge is within [0.5, 2] x target (best), 0
+      //   (worst)
+      {"edge_fraction_in_band", results::Unit::kRatio, D::kHigherIsBetter,
+       [](const F& f) { return f.screen.edges.fraction_in_band; }},
+      // error_samples: count; context
+      {"error_samples", results::Unit::kCount, D::kNone,
+       [](const F& f) { return double(f.screen.tessellation_error.samples); }},
+      // tess_error_max_px: pixels; 0 (best), unbounded (worst); 1 px is the criterion
+      {"tess_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) { return f.screen.tessellation_error.max_px; }},
+      // tess_error_rms_px: pixels; 0 (best), unbounded (worst)
+      {"tess_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) { return f.screen.tessellation_error.rms_px; }},
+      // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
+      {"reference_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&lod::ScreenErrorFigures::max_px)},
+      // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
+      {"reference_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
+       frameReference(&lod::ScreenErrorFigures::rms_px)},
+      // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
+      {"pop_max_px", results::Unit::kPixels, D::kLowerIsBetter,
+       [](const F& f) -> std::optional<double> {
+         return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
+       }},
+  };
+  for (MetricField<F>& field : adaptivityComputeFields()) fields.push_back(std::move(field));
+  return fields;
+}
+
 // Per-frame rows. Best cases: mismatches and crack figures 0, errors and pops 0 px,
 // edge_fraction_in_band 1; worst: any mismatch (a crack), errors of many pixels.
 const MetricTable<AdaptivityFrame>& frameTable() {
@@ -174,43 +221,7 @@ const MetricTable<AdaptivityFrame>& frameTable() {
       // crack_max_gap_world_gpu: world units; 0 when watertight (best), unbounded (worst)
       {"crack_max_gap_world_gpu", results::Unit::kWorld, D::kLowerIsBetter,
        frameGpuCrack(&CrackFigures::max_gap_world)},
-      // visible_edges: count; context: tessellated edges with an end in the viewport
-      {"visible_edges", results::Unit::kCount, D::kNone,
-       [](const F& f) { return double(f.screen.edges.edges); }},
-      // edge_px_median: pixels; context (the band around the target is what counts)
-      {"edge_px_median", results::Unit::kPixels, D::kNone,
-       [](const F& f) { return f.screen.edges.median_px; }},
-      // edge_px_p05: pixels; context
-      {"edge_px_p05", results::Unit::kPixels, D::kNone,
-       [](const F& f) { return f.screen.edges.p05_px; }},
-      // edge_px_p95: pixels; context
-      {"edge_px_p95", results::Unit::kPixels, D::kNone,
-       [](const F& f) { return f.screen.edges.p95_px; }},
-      // edge_fraction_in_band: ratio; 1 when every edge is within [0.5, 2] x target (best), 0
-      //   (worst)
-      {"edge_fraction_in_band", results::Unit::kRatio, D::kHigherIsBetter,
-       [](const F& f) { return f.screen.edges.fraction_in_band; }},
-      // error_samples: count; context
-      {"error_samples", results::Unit::kCount, D::kNone,
-       [](const F& f) { return double(f.screen.tessellation_error.samples); }},
-      // tess_error_max_px: pixels; 0 (best), unbounded (worst); 1 px is the criterion
-      {"tess_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
-       [](const F& f) { return f.screen.tessellation_error.max_px; }},
-      // tess_error_rms_px: pixels; 0 (best), unbounded (worst)
-      {"tess_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
-       [](const F& f) { return f.screen.tessellation_error.rms_px; }},
-      // reference_error_max_px: pixels; 0 (best), unbounded (worst); against the reference limit
-      {"reference_error_max_px", results::Unit::kPixels, D::kLowerIsBetter,
-       frameReference(&lod::ScreenErrorFigures::max_px)},
-      // reference_error_rms_px: pixels; 0 (best), unbounded (worst)
-      {"reference_error_rms_px", results::Unit::kPixels, D::kLowerIsBetter,
-       frameReference(&lod::ScreenErrorFigures::rms_px)},
-      // pop_max_px: pixels; 0 when a factor change moves nothing (best), unbounded (worst)
-      {"pop_max_px", results::Unit::kPixels, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         return f.frame > 0 ? std::optional<double>(f.pop.max_px) : std::nullopt;
-       }},
-  }, adaptivityComputeFields()};
+  }, screenAndComputeFields()};
   return kTable;
 }
 
@@ -283,19 +294,9 @@ std::vector<results::MetricSpec> allSpecs() {
   return specs;
 }
 
-class AdaptivityMeasure final : public Measure {
- public:
-  const MeasureInfo& info() const override {
-    static const MeasureInfo kInfo{
-        "adaptivity",
-        "Tessellation-factor adaptivity along camera paths",
-        "view-dependent factor policies per frame of a camera path: triangles, crack safety of "
-        "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
-        "triangles a policy needs for a 1 px tessellation error against uniform levels",
-        allSpecs(),
-        {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal", "factor_mismatches_cpu",
-         "tess_error_max_px"},
-        {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter and "
+// Notes true of every adaptivity record: the method, once under the measure.
+std::vector<std::string> adaptivityNotes() {
+  return {"summary rows (summary = max_error_1px; the default suite summarises sphere_diameter and "
          "error_bound): for each policy, the coarsest target whose "
          "tessellation error stays within 1 px on every frame of the path (bisection on a log "
          "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the "
@@ -355,7 +356,22 @@ class AdaptivityMeasure final : public Measure {
          "path, summaries of sphere_diameter and error_bound; --suite full: every policy (uniform, the lp2_edge reductions, "
          "error_bound, the order-dependent, loose and dense controls) at integer, pow2, fractional_odd "
          "and fractional_even, and summaries at integer and fractional_odd; lavapipe's host time per frame is a timing "
-         "and stays out of results.json"},
+         "and stays out of results.json"};
+}
+
+class AdaptivityMeasure final : public Measure {
+ public:
+  const MeasureInfo& info() const override {
+    static const MeasureInfo kInfo{
+        "adaptivity",
+        "Tessellation-factor adaptivity along camera paths",
+        "view-dependent factor policies per frame of a camera path: triangles, crack safety of "
+        "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
+        "triangles a policy needs for a 1 px tessellation error against uniform levels",
+        allSpecs(),
+        {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal", "factor_mismatches_cpu",
+         "tess_error_max_px"},
+        adaptivityNotes(),
         {},
         // The per-frame trade-off of each policy: triangles drawn against the largest
         // on-screen tessellation error, one chart per asset (every technique's frames).
