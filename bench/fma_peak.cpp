@@ -1,9 +1,9 @@
 #include "bench/fma_peak.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <ctime>
-
-#include <immintrin.h>
 
 #include "techniques/common/basis_table.h"
 

@@ -74,14 +74,13 @@ tb::view::CameraPath copiesPath(const tb::mesh::Aabb& grid, const tb::mesh::Aabb
         centre + distance * tb::mesh::Vec3d{std::cos(elevation) * std::sin(azimuth),
                                             std::sin(elevation),
                                             std::cos(elevation) * std::cos(azimuth)};
-    path.views.push_back(tb::view::perspectiveView(
-        {.eye = eye,
-         .target = centre,
-         .fov_y_rad = fov_y,
-         .width_px = uint32_t(std::lround(640 * scale)),
-         .height_px = uint32_t(std::lround(480 * scale)),
-         .near_plane = distance - 1.01 * radius,
-         .far_plane = distance + 1.01 * radius}));
+    path.views.push_back(tb::view::perspectiveView({.eye = eye,
+                                                    .target = centre,
+                                                    .fov_y_rad = fov_y,
+                                                    .width_px = uint32_t(std::lround(640 * scale)),
+                                                    .height_px = uint32_t(std::lround(480 * scale)),
+                                                    .near_plane = distance - 1.01 * radius,
+                                                    .far_plane = distance + 1.01 * radius}));
   }
   return path;
 }
@@ -97,9 +96,7 @@ constexpr double kStepExtents = 1.125;
 Prepared prepare(benchmark::State& state, const tb::techniques::Technique& technique,
                  const std::string& asset, int copies) {
   const tb::mesh::Mesh single = tb::suite::loadAsset(tb::suite::resolveAsset(asset));
-  Prepared p{tb::mesh::translatedCopies(single, copies, kStepExtents),
-             nullptr,
-             {}};
+  Prepared p{tb::mesh::translatedCopies(single, copies, kStepExtents), nullptr, {}};
   try {
     p.patches = tb::techniques::buildSurface(technique, p.mesh, technique.variants()[0]);
   } catch (const std::exception& error) {
@@ -109,9 +106,9 @@ Prepared prepare(benchmark::State& state, const tb::techniques::Technique& techn
   return p;
 }
 
-tb::measures::MeasureInput inputOf(const tb::techniques::Technique& technique,
-                                   const Prepared& p, const std::string& name,
-                                   const tb::gpu::Expected<std::unique_ptr<tb::gpu::Context>>& context) {
+tb::measures::MeasureInput inputOf(
+    const tb::techniques::Technique& technique, const Prepared& p, const std::string& name,
+    const tb::gpu::Expected<std::unique_ptr<tb::gpu::Context>>& context) {
   tb::measures::MeasureInput input{technique,
                                    technique.variants()[0],
                                    name,
@@ -149,7 +146,8 @@ void measureOnCopies(benchmark::State& state, const tb::measures::Measure* measu
   const Prepared one = prepare(state, *technique, asset, 1);
   const tb::measures::MeasureInput one_input = inputOf(*technique, one, asset + " x1", context);
   double one_seconds = secondsOf(*measure, one_input);
-  for (int run = 1; run < 3; ++run) one_seconds = std::min(one_seconds, secondsOf(*measure, one_input));
+  for (int run = 1; run < 3; ++run)
+    one_seconds = std::min(one_seconds, secondsOf(*measure, one_input));
   const double per_run = seconds / double(state.iterations());
   state.counters["marginal_seconds_per_patch"] =
       (per_run - one_seconds) / (patch_count - double(one.patches->patchCount()));

@@ -19,9 +19,7 @@ using tb::osd::Scheme;
 
 constexpr int kGrid = 8;  // kGrid x kGrid points per (sub-)face
 
-tb::mesh::Mesh pawn() {
-  return tb::suite::loadAsset(tb::suite::resolveAsset("catmark_pawn"));
-}
+tb::mesh::Mesh pawn() { return tb::suite::loadAsset(tb::suite::resolveAsset("catmark_pawn")); }
 
 // Face (u,v) of a uniform grid on every sub-face of `face_size`.
 std::vector<tb::mesh::Vec2d> gridPoints(int face_size) {

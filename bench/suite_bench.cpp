@@ -30,7 +30,12 @@ void defaultSuite(benchmark::State& state) {
 }
 
 // 0 = every core (the default run); 1 shows what the parallel runner buys.
-BENCHMARK(defaultSuite)->ArgName("threads")->Arg(0)->Arg(1)->Iterations(1)->UseManualTime()
+BENCHMARK(defaultSuite)
+    ->ArgName("threads")
+    ->Arg(0)
+    ->Arg(1)
+    ->Iterations(1)
+    ->UseManualTime()
     ->Unit(benchmark::kSecond);
 
 }  // namespace

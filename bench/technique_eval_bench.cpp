@@ -167,8 +167,8 @@ void evaluateOpenSubdiv(benchmark::State& state, const OsdSetup& setup, const st
   double deviation = 0;
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     for (size_t i = 0; i < uv.size(); ++i) {
-      deviation = std::max(deviation,
-                           length(evaluation->position(f, i) - reference->position(f, i)));
+      deviation =
+          std::max(deviation, length(evaluation->position(f, i) - reference->position(f, i)));
     }
   }
   state.counters["points_per_second"] =
@@ -257,12 +257,12 @@ class RateKeeper final : public benchmark::BenchmarkReporter {
       for (const auto& [name, rate] : rates_) {
         if (name.rfind("eval_batch/", 0) != 0 || !name.ends_with("/" + asset)) continue;
         const auto fraction = fractions_.find(name);
-        std::fprintf(stderr, "  %-44s %8.2f M/s  x%6.1f bfr_surface  x%6.1f fastest  %s\n",
-                     name.c_str(), rate / 1e6, rate / baseline->second, rate / fastest,
-                     fraction == fractions_.end()
-                         ? "(per-point default)"
-                         : ("fma peak " + std::to_string(int(100 * fraction->second + 0.5)) + "%")
-                               .c_str());
+        std::fprintf(
+            stderr, "  %-44s %8.2f M/s  x%6.1f bfr_surface  x%6.1f fastest  %s\n", name.c_str(),
+            rate / 1e6, rate / baseline->second, rate / fastest,
+            fraction == fractions_.end()
+                ? "(per-point default)"
+                : ("fma peak " + std::to_string(int(100 * fraction->second + 0.5)) + "%").c_str());
       }
     }
   }

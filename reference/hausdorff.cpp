@@ -91,8 +91,8 @@ class SharedLattice {
     const uint32_t a = tri[size_t(edge)], b = tri[size_t(edge + 1) % 3];
     const auto it = std::lower_bound(edges_.begin(), edges_.end(),
                                      std::array<uint32_t, 2>{std::min(a, b), std::max(a, b)});
-    const size_t slot = size_t(it - edges_.begin()) * size_t(m_ - 1) +
-                        size_t((a < b ? along : m_ - along) - 1);
+    const size_t slot =
+        size_t(it - edges_.begin()) * size_t(m_ - 1) + size_t((a < b ? along : m_ - along) - 1);
     return sameBits(p, edge_points_[slot]) ? edge_distance_[slot] : kUnset;
   }
 
@@ -135,8 +135,8 @@ class SharedLattice {
 // `hint`: the target triangle closest to the previous sample (speeds the search, never
 // changes an answer); updated to this triangle's last.
 TriangleSums sampleTriangle(const TriangleMeshRef& source, size_t t,
-                            const TriangleDistanceField& target, const SharedLattice& shared,
-                            int m, uint32_t* hint) {
+                            const TriangleDistanceField& target, const SharedLattice& shared, int m,
+                            uint32_t* hint) {
   const Triangle& tri = source.triangles[t];
   const mesh::Vec3d &a = source.positions[tri[0]], &b = source.positions[tri[1]],
                     &c = source.positions[tri[2]];
@@ -167,15 +167,15 @@ TriangleSums sampleTriangle(const TriangleMeshRef& source, size_t t,
   // Centroids of the "upward" sub-triangles (i,j) and the "downward" ones.
   for (int i = 0; i < m; ++i) {
     for (int j = 0; i + j < m; ++j) {
-      const double up = consider(
-          barycentricPoint(a, b, c, (i + 1.0 / 3) * inv_m, (j + 1.0 / 3) * inv_m),
-          SharedLattice::kUnset);
+      const double up =
+          consider(barycentricPoint(a, b, c, (i + 1.0 / 3) * inv_m, (j + 1.0 / 3) * inv_m),
+                   SharedLattice::kUnset);
       sums.sum_d += up;
       sums.sum_d2 += up * up;
       if (i + j < m - 1) {
-        const double down = consider(
-            barycentricPoint(a, b, c, (i + 2.0 / 3) * inv_m, (j + 2.0 / 3) * inv_m),
-            SharedLattice::kUnset);
+        const double down =
+            consider(barycentricPoint(a, b, c, (i + 2.0 / 3) * inv_m, (j + 2.0 / 3) * inv_m),
+                     SharedLattice::kUnset);
         sums.sum_d += down;
         sums.sum_d2 += down * down;
       }

@@ -45,7 +45,7 @@ struct TriangleDistanceField::Impl {
   std::vector<mesh::Vec3d> positions;
   std::vector<Triangle> triangles;
   std::vector<TriangleBox> boxes;  // per triangle
-  double max_abs = 0;  // largest |coordinate| of the mesh
+  double max_abs = 0;              // largest |coordinate| of the mesh
   RTCScene scene = nullptr;
 
   ~Impl() {

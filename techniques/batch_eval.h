@@ -160,8 +160,9 @@ inline std::vector<DomainCoord> latticeCoords(PatchDomain domain, int segments) 
     const int i_end = domain == PatchDomain::kQuad ? segments : segments - j;
     for (int i = 0; i <= i_end; ++i) {
       const double u = i / n, v = j / n;
-      coords.push_back(domain == PatchDomain::kQuad ? DomainCoord{u, v, 0}
-                                                    : DomainCoord{u, v, double(segments - i - j) / n});
+      coords.push_back(domain == PatchDomain::kQuad
+                           ? DomainCoord{u, v, 0}
+                           : DomainCoord{u, v, double(segments - i - j) / n});
     }
   }
   return coords;

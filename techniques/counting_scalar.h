@@ -9,7 +9,7 @@
 namespace tb::techniques {
 
 struct OperationCounts {
-  uint64_t add = 0;      // additions and subtractions
+  uint64_t add = 0;  // additions and subtractions
   uint64_t mul = 0;
   uint64_t div = 0;
   uint64_t sqrt = 0;
@@ -31,10 +31,22 @@ class CountingScalar {
   explicit operator T() const { return value_; }
   T value() const { return value_; }
 
-  friend CountingScalar operator+(CountingScalar a, CountingScalar b) { ++g_operation_counts.add; return a.value_ + b.value_; }
-  friend CountingScalar operator-(CountingScalar a, CountingScalar b) { ++g_operation_counts.add; return a.value_ - b.value_; }
-  friend CountingScalar operator*(CountingScalar a, CountingScalar b) { ++g_operation_counts.mul; return a.value_ * b.value_; }
-  friend CountingScalar operator/(CountingScalar a, CountingScalar b) { ++g_operation_counts.div; return a.value_ / b.value_; }
+  friend CountingScalar operator+(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.add;
+    return a.value_ + b.value_;
+  }
+  friend CountingScalar operator-(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.add;
+    return a.value_ - b.value_;
+  }
+  friend CountingScalar operator*(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.mul;
+    return a.value_ * b.value_;
+  }
+  friend CountingScalar operator/(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.div;
+    return a.value_ / b.value_;
+  }
   // Negation is a sign flip, free on every GPU (a source modifier): not counted.
   friend CountingScalar operator-(CountingScalar a) { return -a.value_; }
   CountingScalar& operator+=(CountingScalar b) { return *this = *this + b; }
@@ -42,14 +54,35 @@ class CountingScalar {
   CountingScalar& operator*=(CountingScalar b) { return *this = *this * b; }
   CountingScalar& operator/=(CountingScalar b) { return *this = *this / b; }
 
-  friend bool operator<(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ < b.value_; }
-  friend bool operator>(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ > b.value_; }
-  friend bool operator<=(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ <= b.value_; }
-  friend bool operator>=(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ >= b.value_; }
-  friend bool operator==(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ == b.value_; }
-  friend bool operator!=(CountingScalar a, CountingScalar b) { ++g_operation_counts.compare; return a.value_ != b.value_; }
+  friend bool operator<(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ < b.value_;
+  }
+  friend bool operator>(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ > b.value_;
+  }
+  friend bool operator<=(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ <= b.value_;
+  }
+  friend bool operator>=(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ >= b.value_;
+  }
+  friend bool operator==(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ == b.value_;
+  }
+  friend bool operator!=(CountingScalar a, CountingScalar b) {
+    ++g_operation_counts.compare;
+    return a.value_ != b.value_;
+  }
 
-  friend CountingScalar sqrt(CountingScalar a) { ++g_operation_counts.sqrt; return std::sqrt(a.value_); }
+  friend CountingScalar sqrt(CountingScalar a) {
+    ++g_operation_counts.sqrt;
+    return std::sqrt(a.value_);
+  }
 
  private:
   T value_{};

@@ -214,8 +214,7 @@ class SurfacePatches {
     evaluateBatchPointByPoint(patch, pattern, out);
   }
   // evaluate() at every point: position and normal, no derivatives.
-  void evaluateBatchPointByPoint(size_t patch, const BatchPattern& pattern,
-                                 BatchPoints& out) const;
+  void evaluateBatchPointByPoint(size_t patch, const BatchPattern& pattern, BatchPoints& out) const;
 };
 
 inline void SurfacePatches::evaluateBatchPointByPoint(size_t patch, const BatchPattern& pattern,

@@ -65,7 +65,8 @@ inline Sampled sampleQuad(const techniques::SurfacePatches& s, size_t patch,
   Sampled m{};
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      sampleInterior(at, (2 * i + 1) / (2.0 * n) + kQuadShift, (2 * j + 1) / (2.0 * n) + kQuadShift, m);
+      sampleInterior(at, (2 * i + 1) / (2.0 * n) + kQuadShift, (2 * j + 1) / (2.0 * n) + kQuadShift,
+                     m);
     }
   }
   // Edges u = 0, v = 0, u = 1, v = 1 as curves of t.

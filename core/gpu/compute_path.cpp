@@ -128,7 +128,6 @@ struct ComputePathDrawPipeline {
   VkPipelineOwner pipeline;
 };
 
-
 struct ComputePath::Impl {
   Impl(Context& ctx, const GpuPatchProgram& prog) : context(ctx), program(prog) {}
 

@@ -122,8 +122,10 @@ struct ComputeRunner::Impl {
           }
           uint64_t& size = sizes[b.name];
           size = std::max<uint64_t>({size, b.size_bytes, 16});
-          if (!b.initial_words.empty() && !initial.count(b.name)) initial[b.name] = &b.initial_words;
-          if (!b.alternate_with.empty()) sizes[b.alternate_with] = std::max(sizes[b.alternate_with], size);
+          if (!b.initial_words.empty() && !initial.count(b.name))
+            initial[b.name] = &b.initial_words;
+          if (!b.alternate_with.empty())
+            sizes[b.alternate_with] = std::max(sizes[b.alternate_with], size);
         }
       }
     }
@@ -157,7 +159,8 @@ struct ComputeRunner::Impl {
       fail(desc, "step_index_word is beyond the push block");
     }
     uint32_t binding_count = 0;
-    for (const GpuComputeBuffer& b : desc.buffers) binding_count = std::max(binding_count, b.binding + 1);
+    for (const GpuComputeBuffer& b : desc.buffers)
+      binding_count = std::max(binding_count, b.binding + 1);
     pass.compiled = context.attachment<ComputePipelineCache>().get(context, desc, binding_count);
 
     for (int parity = 0; parity < 2; ++parity) {
@@ -167,7 +170,8 @@ struct ComputeRunner::Impl {
         // Bindings the pass leaves out get its first buffer, so every binding is valid.
         std::vector<VkBuffer> handles(binding_count, buffer(desc, desc.buffers[0].name).handle());
         for (const GpuComputeBuffer& b : desc.buffers) {
-          const std::string& name = parity == 1 && !b.alternate_with.empty() ? b.alternate_with : b.name;
+          const std::string& name =
+              parity == 1 && !b.alternate_with.empty() ? b.alternate_with : b.name;
           handles[b.binding] = buffer(desc, name).handle();
         }
         pass.sets[parity].bind(device, handles);
@@ -198,8 +202,8 @@ struct ComputeRunner::Impl {
     }
     auto barrier = vkStruct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT;
-    barrier.dstAccessMask =
-        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                            VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
     for (uint32_t s = 0; s < steps; ++s) {
       const uint32_t step = steps_done + s;
       const int parity = int(step & 1u);
@@ -222,10 +226,10 @@ struct ComputeRunner::Impl {
           } else {
             vkCmdDispatch(cmd, desc.groups_x, desc.groups_y, desc.groups_z);
           }
-          vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
-                                   VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
-                               0, 1, &barrier, 0, nullptr, 0, nullptr);
+          vkCmdPipelineBarrier(
+              cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1,
+              &barrier, 0, nullptr, 0, nullptr);
         }
       }
     }
@@ -288,10 +292,10 @@ ComputeRunTiming ComputeRunner::run(uint32_t steps,
   impl_->steps_done += steps;
   if (const VkQueryPool pool = impl_->timestamps.get()) {
     uint64_t ticks[2] = {0, 0};
-    vkCheck(vkGetQueryPoolResults(impl_->context.device(), pool, 0, 2, sizeof(ticks), ticks,
-                                  sizeof(uint64_t),
-                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-            "vkGetQueryPoolResults (compute runner)");
+    vkCheck(
+        vkGetQueryPoolResults(impl_->context.device(), pool, 0, 2, sizeof(ticks), ticks,
+                              sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults (compute runner)");
     timing.gpu_ns = double(ticks[1] - ticks[0]) * impl_->context.info().timestamp_period_ns;
   }
   return timing;

@@ -131,8 +131,8 @@ DeviceFeatures queryDeviceFeatures(VkPhysicalDevice physical_device, uint32_t qu
   f.transform_feedback = has_xfb && xfb.transformFeedback;
   f.dynamic_rendering = is_13 && v13.dynamicRendering;
   f.maintenance4 = is_13 && v13.maintenance4;
-  f.primitives_generated_query = has_pgq && pgq.primitivesGeneratedQuery &&
-                                 pgq.primitivesGeneratedQueryWithRasterizerDiscard;
+  f.primitives_generated_query =
+      has_pgq && pgq.primitivesGeneratedQuery && pgq.primitivesGeneratedQueryWithRasterizerDiscard;
   f.timestamps = queue_family < family_count && families[queue_family].timestampValidBits > 0;
   return f;
 }

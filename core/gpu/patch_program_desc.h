@@ -17,13 +17,13 @@ namespace tb::gpu {
 // displace.glsl, set 2): a real sampled image read with texelFetch, and the per-patch owner
 // and direction words (techniques/common/displaced_patches.h).
 struct GpuDisplacement {
-  uint32_t width = 0, height = 0;    // texels
-  uint32_t channels = 1;             // 1 (R, scalar map) or 4 (RGBA, vector map; A unused)
-  uint32_t bytes_per_channel = 4;    // 2: 16-bit float channels, 4: 32-bit float
+  uint32_t width = 0, height = 0;  // texels
+  uint32_t channels = 1;           // 1 (R, scalar map) or 4 (RGBA, vector map; A unused)
+  uint32_t bytes_per_channel = 4;  // 2: 16-bit float channels, 4: 32-bit float
   std::shared_ptr<const std::vector<std::byte>> texels;  // rows from the top, packed
-  std::vector<uint32_t> patch_words;  // TbDisplacePatches at set 2, binding 1
-  uint32_t kind = 1;                  // kTbDisplaceKind: 1 scalar, 2 vector
-  uint32_t sampling = 0;              // kTbDisplaceSampling: 0 naive, 1 watertight
+  std::vector<uint32_t> patch_words;                     // TbDisplacePatches at set 2, binding 1
+  uint32_t kind = 1;                                     // kTbDisplaceKind: 1 scalar, 2 vector
+  uint32_t sampling = 0;  // kTbDisplaceSampling: 0 naive, 1 watertight
 };
 
 struct GpuPatchProgram {

@@ -88,11 +88,16 @@ ProgramPipeline& PatchProgramCache::get(const GpuPatchProgram& program, tess::Sp
                                         uint32_t boundary, uint32_t factor_policy,
                                         uint32_t cull_policy) {
   const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
-  ProgramKey key{program.control_shader, program.evaluation_shader,
-                 program.specialization, int(program.domain),
-                 int(spacing),           program.input_vertices_per_patch,
-                 binding_count,          boundary,
-                 factor_policy,          cull_policy,
+  ProgramKey key{program.control_shader,
+                 program.evaluation_shader,
+                 program.specialization,
+                 int(program.domain),
+                 int(spacing),
+                 program.input_vertices_per_patch,
+                 binding_count,
+                 boundary,
+                 factor_policy,
+                 cull_policy,
                  displacementKey(program)};
   const std::lock_guard lock(mutex_);
   if (auto it = programs_.find(key); it != programs_.end()) return *it->second;

@@ -65,13 +65,13 @@ struct CallResources {
   VkQueryPoolOwner primitives;  // VK_QUERY_TYPE_PRIMITIVES_GENERATED_EXT, when supported
   Buffer capture;
   Buffer levels;
-  Buffer factor_corners;  // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
-  Buffer factor_params;   // TcsFactorPolicy::param_words
-  Buffer factor_out;      // the levels the TCS wrote, 8 words per patch
-  Buffer cull_params;     // TcsCullPolicy::param_words
-  Buffer cull_patches;    // TcsCullPolicy::patch_words
-  Buffer cull_tangent;    // TcsCullPolicy::tangent_words
-  std::vector<Buffer> data;                             // GpuPatchProgram::storage_buffers
+  Buffer factor_corners;     // TcsFactorPolicy::corner_words (a 16-byte stub without a policy)
+  Buffer factor_params;      // TcsFactorPolicy::param_words
+  Buffer factor_out;         // the levels the TCS wrote, 8 words per patch
+  Buffer cull_params;        // TcsCullPolicy::param_words
+  Buffer cull_patches;       // TcsCullPolicy::patch_words
+  Buffer cull_tangent;       // TcsCullPolicy::tangent_words
+  std::vector<Buffer> data;  // GpuPatchProgram::storage_buffers
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 

@@ -13,8 +13,9 @@ namespace tb::gpu {
 std::span<const uint32_t> requireEmbeddedShader(std::string_view path) {
   const std::span<const uint32_t> spirv = embeddedShader(path);
   if (spirv.empty()) {
-    throw GpuError("shader '" + std::string(path) +
-                   "' is neither built in (shaders/) nor registered by a plug-in (PluginHost::addShader)");
+    throw GpuError(
+        "shader '" + std::string(path) +
+        "' is neither built in (shaders/) nor registered by a plug-in (PluginHost::addShader)");
   }
   return spirv;
 }

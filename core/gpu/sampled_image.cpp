@@ -21,11 +21,16 @@ namespace {
 
 uint32_t texelBytes(VkFormat format) {
   switch (format) {
-    case VK_FORMAT_R16_SFLOAT: return 2;
-    case VK_FORMAT_R32_SFLOAT: return 4;
-    case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
-    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
-    default: throw GpuError("sampled image: unsupported format " + std::to_string(format));
+    case VK_FORMAT_R16_SFLOAT:
+      return 2;
+    case VK_FORMAT_R32_SFLOAT:
+      return 4;
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+      return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+      return 16;
+    default:
+      throw GpuError("sampled image: unsupported format " + std::to_string(format));
   }
 }
 
@@ -33,8 +38,7 @@ uint32_t texelBytes(VkFormat format) {
 
 SampledImage::SampledImage(Context& context, VkFormat format, uint32_t width, uint32_t height,
                            std::span<const std::byte> texels) {
-  if (uint64_t(width) * height * texelBytes(format) != texels.size() || width == 0 ||
-      height == 0) {
+  if (uint64_t(width) * height * texelBytes(format) != texels.size() || width == 0 || height == 0) {
     throw GpuError("sampled image: " + std::to_string(texels.size()) + " bytes for " +
                    std::to_string(width) + "x" + std::to_string(height) + " texels");
   }
@@ -63,9 +67,10 @@ SampledImage::SampledImage(Context& context, VkFormat format, uint32_t width, ui
     copy.imageExtent = {width, height, 1};
     vkCmdCopyBufferToImage(cmd, staging.handle(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                            &copy);
-    VkImageMemoryBarrier to_read = imageBarrier(
-        image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-        VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT);
+    VkImageMemoryBarrier to_read =
+        imageBarrier(image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_ACCESS_SHADER_READ_BIT);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT, 0, 0, nullptr, 0,
                          nullptr, 1, &to_read);
@@ -93,8 +98,8 @@ VkDescriptorSetLayoutOwner createDisplacementSetLayout(VkDevice device) {
   bindings[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   bindings[1].descriptorCount = 1;
   bindings[1].stageFlags = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
-  auto info =
-      vkStruct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  auto info = vkStruct<VkDescriptorSetLayoutCreateInfo>(
+      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   info.bindingCount = 2;
   info.pBindings = bindings;
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
@@ -121,7 +126,8 @@ DisplacementSet::DisplacementSet(VkDevice device, VkDescriptorSetLayout layout,
   alloc.descriptorPool = raw_pool;
   alloc.descriptorSetCount = 1;
   alloc.pSetLayouts = &layout;
-  vkCheck(vkAllocateDescriptorSets(device, &alloc, &set), "vkAllocateDescriptorSets (displacement)");
+  vkCheck(vkAllocateDescriptorSets(device, &alloc, &set),
+          "vkAllocateDescriptorSets (displacement)");
   const VkDescriptorImageInfo image_info{image.sampler(), image.view(),
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkDescriptorBufferInfo buffer_info{patch_words.handle(), 0, VK_WHOLE_SIZE};

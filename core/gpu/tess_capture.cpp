@@ -21,7 +21,6 @@ constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 48ull << 20;
 constexpr uint32_t kMaxDrawsPerSubmit = 1024;
 constexpr uint32_t kCounterNotWritten = 0xffffffffu;
 
-
 // Per-device buffers and queries, reused by every call; `mutex` makes calls from several
 // threads take turns.
 struct CaptureResources {

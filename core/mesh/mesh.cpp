@@ -17,9 +17,8 @@ uint32_t Mesh::maxFaceSize() const {
   return largest;
 }
 
-void Mesh::addFace(std::span<const uint32_t> positions_of_face,
-                   std::span<const int32_t> normal_ids, std::span<const int32_t> uv_ids,
-                   uint32_t line) {
+void Mesh::addFace(std::span<const uint32_t> positions_of_face, std::span<const int32_t> normal_ids,
+                   std::span<const int32_t> uv_ids, uint32_t line) {
   for (size_t i = 0; i < positions_of_face.size(); ++i) {
     corner_positions.push_back(positions_of_face[i]);
     corner_normals.push_back(normal_ids.empty() ? -1 : normal_ids[i]);

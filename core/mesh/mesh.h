@@ -16,8 +16,8 @@ namespace tb::mesh {
 enum class BoundaryInterpolation { kNone, kEdgeOnly, kEdgeAndCorner };
 
 struct Crease {
-  uint32_t v0, v1;     // position indices, as written in the file
-  double sharpness;    // 0 = smooth; >= 10 is treated as infinitely sharp by OpenSubdiv
+  uint32_t v0, v1;   // position indices, as written in the file
+  double sharpness;  // 0 = smooth; >= 10 is treated as infinitely sharp by OpenSubdiv
 };
 
 struct Corner {

@@ -8,7 +8,8 @@ namespace tb::mesh {
 
 Mesh translatedCopies(const Mesh& mesh, int copies, double step_extents) {
   if (copies < 1) throw std::invalid_argument("translatedCopies: copies must be >= 1");
-  if (!(step_extents > 1)) throw std::invalid_argument("translatedCopies: step_extents must be > 1");
+  if (!(step_extents > 1))
+    throw std::invalid_argument("translatedCopies: step_extents must be > 1");
   Vec3d lo = mesh.positions.empty() ? Vec3d{} : mesh.positions.front(), hi = lo;
   for (const Vec3d& p : mesh.positions) {
     for (int k = 0; k < 3; ++k) {

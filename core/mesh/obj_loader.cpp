@@ -25,9 +25,12 @@ std::string readWholeFile(const std::string& path) {
 BoundaryInterpolation boundaryFromObjTag(int value, const std::string& source) {
   // OBJ tag values are not the Sdc enum: 0 none, 1 edge-and-corner, 2 edge-only.
   switch (value) {
-    case 0: return BoundaryInterpolation::kNone;
-    case 1: return BoundaryInterpolation::kEdgeAndCorner;
-    case 2: return BoundaryInterpolation::kEdgeOnly;
+    case 0:
+      return BoundaryInterpolation::kNone;
+    case 1:
+      return BoundaryInterpolation::kEdgeAndCorner;
+    case 2:
+      return BoundaryInterpolation::kEdgeOnly;
     default:
       throw InputError(source, "tag 'interpolateboundary'",
                        "value " + std::to_string(value) + " is not 0, 1 or 2");
@@ -60,15 +63,15 @@ void readTags(const std::vector<tinyobj::tag_t>& tags, const std::string& source
       for (size_t i = 0; i + 1 < tag.intValues.size(); i += 2) {
         // One sharpness for all pairs, or one per pair (both occur in OpenSubdiv's shapes).
         const size_t pair = i / 2;
-        const double sharpness = tag.floatValues.empty() ? 0.0
+        const double sharpness = tag.floatValues.empty()         ? 0.0
                                  : pair < tag.floatValues.size() ? tag.floatValues[pair]
                                                                  : tag.floatValues.back();
-        out->creases.push_back({uint32_t(tag.intValues[i]), uint32_t(tag.intValues[i + 1]),
-                                sharpness});
+        out->creases.push_back(
+            {uint32_t(tag.intValues[i]), uint32_t(tag.intValues[i + 1]), sharpness});
       }
     } else if (tag.name == "corner") {
       for (size_t i = 0; i < tag.intValues.size(); ++i) {
-        const double sharpness = tag.floatValues.empty() ? 0.0
+        const double sharpness = tag.floatValues.empty()      ? 0.0
                                  : i < tag.floatValues.size() ? tag.floatValues[i]
                                                               : tag.floatValues.back();
         out->corners.push_back({uint32_t(tag.intValues[i]), sharpness});
@@ -99,8 +102,8 @@ Mesh loadObjText(std::string_view text, const std::string& source_name,
   std::vector<tinyobj::material_t> materials;
   std::string warning, error;
   std::istringstream stream{std::string(text)};
-  const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream,
-                                   nullptr, /*triangulate=*/false);
+  const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, nullptr,
+                                   /*triangulate=*/false);
   if (!ok || !error.empty()) {
     std::string first_line = error.substr(0, error.find('\n'));
     throw InputError(source_name, "", "tinyobjloader: " + first_line);
@@ -142,17 +145,16 @@ Mesh loadObjText(std::string_view text, const std::string& source_name,
     }
   }
   if (mesh.faceCount() != face_lines.size()) {
-    throw InputError(source_name, "", "tinyobjloader read " + std::to_string(mesh.faceCount()) +
-                                          " faces where the file has " +
-                                          std::to_string(face_lines.size()));
+    throw InputError(source_name, "",
+                     "tinyobjloader read " + std::to_string(mesh.faceCount()) +
+                         " faces where the file has " + std::to_string(face_lines.size()));
   }
   // tinyobjloader gives every shape the tags seen so far; the last one has them all.
   if (!shapes.empty()) readTags(shapes.back().mesh.tags, source_name, &mesh.tags);
 
   const bool any_missing_normal =
-      mesh.normals.empty() ||
-      std::any_of(mesh.corner_normals.begin(), mesh.corner_normals.end(),
-                  [](int32_t n) { return n < 0; });
+      mesh.normals.empty() || std::any_of(mesh.corner_normals.begin(), mesh.corner_normals.end(),
+                                          [](int32_t n) { return n < 0; });
   if (options.compute_missing_normals && any_missing_normal) {
     assignAngleWeightedNormals(&mesh);
   }

@@ -180,8 +180,8 @@ class ObjScanner {
     }
     const long resolved = index < 0 ? count + index : index - 1;
     if (index == 0 || resolved < 0 || resolved >= count) {
-      fail("face", std::string(what) + " index " + std::to_string(index) +
-                       " is out of range (1.." + std::to_string(count) + " defined so far)");
+      fail("face", std::string(what) + " index " + std::to_string(index) + " is out of range (1.." +
+                       std::to_string(count) + " defined so far)");
     }
     return resolved;
   }
@@ -209,8 +209,7 @@ class ObjScanner {
       // A corner repeated anywhere in the face (f 1 2 2) collapses an edge: no patch or
       // normal is defined on it.
       if (std::find(vertices.begin(), vertices.end(), vertex) != vertices.end()) {
-        fail("face", "uses vertex " + std::to_string(vertex + 1) +
-                         " twice (degenerate face)");
+        fail("face", "uses vertex " + std::to_string(vertex + 1) + " twice (degenerate face)");
       }
       vertices.push_back(vertex);
       if (slash1 == std::string_view::npos) continue;
@@ -235,10 +234,12 @@ class ObjScanner {
     for (int k = 0; k < 3; ++k) {
       const size_t slash = triple.find('/');
       if (!parseInt(triple.substr(0, slash), &counts[k]) || counts[k] < 0) {
-        fail("tag '" + name + "'", "has an unreadable count triple '" + std::string(tokens[2]) + "'");
+        fail("tag '" + name + "'",
+             "has an unreadable count triple '" + std::string(tokens[2]) + "'");
       }
       if (k < 2 && slash == std::string_view::npos) {
-        fail("tag '" + name + "'", "has an unreadable count triple '" + std::string(tokens[2]) + "'");
+        fail("tag '" + name + "'",
+             "has an unreadable count triple '" + std::string(tokens[2]) + "'");
       }
       triple = slash == std::string_view::npos ? std::string_view() : triple.substr(slash + 1);
     }
@@ -246,14 +247,14 @@ class ObjScanner {
     const size_t given = tokens.size() - 3;
     for (long count : counts) {
       if (size_t(count) > given) {
-        fail("tag '" + name + "'", "declares " + std::to_string(count) + " values but has " +
-                                       std::to_string(given));
+        fail("tag '" + name + "'",
+             "declares " + std::to_string(count) + " values but has " + std::to_string(given));
       }
     }
     const size_t declared = size_t(counts[0] + counts[1] + counts[2]);
     if (declared != given) {
-      fail("tag '" + name + "'", "declares " + std::to_string(declared) + " values but has " +
-                                     std::to_string(given));
+      fail("tag '" + name + "'",
+           "declares " + std::to_string(declared) + " values but has " + std::to_string(given));
     }
     std::vector<long> ints(counts[0]);
     for (long k = 0; k < counts[0]; ++k) {

@@ -46,11 +46,13 @@ void labelComponents(const Mesh& mesh, Topology* topology) {
 }  // namespace
 
 size_t Topology::boundaryEdgeCount() const {
-  return std::count_if(edges.begin(), edges.end(), [](const MeshEdge& e) { return e.face_count == 1; });
+  return std::count_if(edges.begin(), edges.end(),
+                       [](const MeshEdge& e) { return e.face_count == 1; });
 }
 
 size_t Topology::nonManifoldEdgeCount() const {
-  return std::count_if(edges.begin(), edges.end(), [](const MeshEdge& e) { return e.face_count > 2; });
+  return std::count_if(edges.begin(), edges.end(),
+                       [](const MeshEdge& e) { return e.face_count > 2; });
 }
 
 std::vector<uint32_t> Topology::extraordinaryVertices(uint32_t interior_regular) const {
@@ -93,7 +95,8 @@ Topology buildTopology(const Mesh& mesh) {
     size_t j = i;
     MeshEdge edge{half_edges[i].lo, half_edges[i].hi, uint32_t(topology.edge_faces.size()), 0};
     const uint32_t edge_index = uint32_t(topology.edges.size());
-    for (; j < half_edges.size() && half_edges[j].lo == edge.v0 && half_edges[j].hi == edge.v1; ++j) {
+    for (; j < half_edges.size() && half_edges[j].lo == edge.v0 && half_edges[j].hi == edge.v1;
+         ++j) {
       const HalfEdge& h = half_edges[j];
       topology.corner_edges[mesh.face_offsets[h.face] + h.corner] = edge_index;
       // A face that uses the same edge twice counts once.
@@ -117,9 +120,9 @@ Welding weldByPosition(const Mesh& mesh) {
   welding.canonical.resize(mesh.positions.size());
   if (mesh.positions.empty()) return welding;
   std::vector<uint32_t> remap(mesh.positions.size());
-  welding.unique_count = meshopt_generateVertexRemap(
-      remap.data(), nullptr, mesh.positions.size(), mesh.positions.data(), mesh.positions.size(),
-      sizeof(Vec3d));
+  welding.unique_count =
+      meshopt_generateVertexRemap(remap.data(), nullptr, mesh.positions.size(),
+                                  mesh.positions.data(), mesh.positions.size(), sizeof(Vec3d));
   // meshopt numbers unique positions densely in first-seen order; map each back to
   // the first position index that carries it.
   std::vector<uint32_t> first_of(welding.unique_count, UINT32_MAX);

@@ -12,18 +12,18 @@
 namespace tb::mesh {
 
 struct MeshEdge {
-  uint32_t v0, v1;        // position indices, v0 < v1
-  uint32_t first_face;    // into Topology::edge_faces
-  uint32_t face_count;    // 1 = boundary, 2 = manifold interior, > 2 = non-manifold
+  uint32_t v0, v1;      // position indices, v0 < v1
+  uint32_t first_face;  // into Topology::edge_faces
+  uint32_t face_count;  // 1 = boundary, 2 = manifold interior, > 2 = non-manifold
 };
 
 struct Topology {
-  std::vector<MeshEdge> edges;          // sorted by (v0, v1)
-  std::vector<uint32_t> edge_faces;     // incident faces of each edge, ascending
-  std::vector<uint32_t> corner_edges;   // per face corner k: the edge from corner k to k+1
-  std::vector<uint32_t> valence;        // edges incident on each position
-  std::vector<uint8_t> on_boundary;     // 1 when the position lies on a boundary edge
-  std::vector<uint32_t> face_component; // connected component of each face (by shared edges)
+  std::vector<MeshEdge> edges;           // sorted by (v0, v1)
+  std::vector<uint32_t> edge_faces;      // incident faces of each edge, ascending
+  std::vector<uint32_t> corner_edges;    // per face corner k: the edge from corner k to k+1
+  std::vector<uint32_t> valence;         // edges incident on each position
+  std::vector<uint8_t> on_boundary;      // 1 when the position lies on a boundary edge
+  std::vector<uint32_t> face_component;  // connected component of each face (by shared edges)
   uint32_t component_count = 0;
 
   std::span<const uint32_t> facesOfEdge(size_t e) const {

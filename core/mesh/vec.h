@@ -15,11 +15,17 @@ template <class T>
 struct Vec3T {
   T x{}, y{}, z{};
 
-  friend Vec3T operator+(const Vec3T& a, const Vec3T& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-  friend Vec3T operator-(const Vec3T& a, const Vec3T& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Vec3T operator+(const Vec3T& a, const Vec3T& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  }
+  friend Vec3T operator-(const Vec3T& a, const Vec3T& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+  }
   friend Vec3T operator*(const Vec3T& a, const T& s) { return {a.x * s, a.y * s, a.z * s}; }
   friend Vec3T operator*(const T& s, const Vec3T& a) { return {s * a.x, s * a.y, s * a.z}; }
-  friend bool operator==(const Vec3T& a, const Vec3T& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+  friend bool operator==(const Vec3T& a, const Vec3T& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  }
   T& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
   const T& operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };

@@ -55,10 +55,9 @@ struct PerspectiveCamera {
 // The View of `camera`: perspective * lookAt, its viewport, eye, |P[1][1]| and near plane.
 inline View perspectiveView(const PerspectiveCamera& camera) {
   View view;
-  view.view_projection =
-      perspective(camera.fov_y_rad, double(camera.width_px) / camera.height_px,
-                  camera.near_plane, camera.far_plane) *
-      lookAt(camera.eye, camera.target, camera.up);
+  view.view_projection = perspective(camera.fov_y_rad, double(camera.width_px) / camera.height_px,
+                                     camera.near_plane, camera.far_plane) *
+                         lookAt(camera.eye, camera.target, camera.up);
   view.viewport_width_px = camera.width_px;
   view.viewport_height_px = camera.height_px;
   view.target_pixels_per_edge = camera.target_pixels_per_edge;

@@ -1,8 +1,8 @@
 #include "harness/cli/advise_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -197,8 +197,9 @@ CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args) {
                    "device (skipped device rows fail it); cracks are then not measured");
   advise->add_flag("--watertight", args.watertight_flag,
                    "the default: every cracks row watertight (kept for scripts)");
-  advise->add_option("--refine", args.refine,
-                     "refine the asset N times with OpenSubdiv at load, as `run --refine`")
+  advise
+      ->add_option("--refine", args.refine,
+                   "refine the asset N times with OpenSubdiv at load, as `run --refine`")
       ->check(CLI::Range(0, suite::kMaxRefine));
   advise->add_option("--max-instructions", args.max_instructions,
                      "largest total SPIR-V instructions of the domain (.tese) stage, spirv-opt -O");

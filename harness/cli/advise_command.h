@@ -14,7 +14,7 @@ struct AdviseArgs {
   std::string run_dir;  // a finished run folder to read; empty: measure in-process
   // Bounds as text, checked by runAdvise (finite, >= 0); empty: no constraint.
   std::string max_error, max_memory_ratio, max_instructions;
-  bool allow_cracks = false;    // --allow-cracks: no watertight constraint (the default has one)
+  bool allow_cracks = false;     // --allow-cracks: no watertight constraint (the default has one)
   bool watertight_flag = false;  // --watertight: the default, accepted for scripts
   int refine = 0;                // --refine N: the asset refined at load (suite::refinedAsset)
   std::vector<std::string> techniques;  // empty: every registered technique

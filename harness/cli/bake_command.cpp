@@ -92,8 +92,9 @@ CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args) {
   bake->add_flag("--analytic", args.analytic,
                  "the analytic target: the asset's limit surface displaced along its normal by "
                  "a sum of sines of the limit position");
-  bake->add_option("--pixel-type", args.pixel_type,
-                   "half (16-bit, what a game ships) | float (32-bit) texels in the EXR and on the GPU")
+  bake->add_option(
+          "--pixel-type", args.pixel_type,
+          "half (16-bit, what a game ships) | float (32-bit) texels in the EXR and on the GPU")
       ->check(CLI::IsMember({"half", "float"}))
       ->capture_default_str();
   bake->add_option("--kind", args.kind,

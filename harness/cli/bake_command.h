@@ -17,7 +17,7 @@ struct BakeArgs {
   std::string out;     // FILE.exr; FILE.exr.json is written beside it
   std::string target;  // a detailed OBJ mesh, or empty with --analytic
   bool analytic = false;
-  std::string kind = "scalar";  // scalar | vector
+  std::string kind = "scalar";      // scalar | vector
   std::string pixel_type = "half";  // half | float: how the EXR (and the GPU) store texels
   std::uint32_t resolution = 16;
   std::string layout = "tiles";  // tiles | uv (uv refused: not built yet)

@@ -91,7 +91,8 @@ void addCompareOptions(CLI::App* compare, CompareArgs& args) {
 
 int printComparison(const std::string& base_name, const std::string& current_name,
                     results::RunData base, results::RunData current, const CompareArgs& args) {
-  if (const auto mismatch = results::deviceMismatch(base.results.context, current.results.context)) {
+  if (const auto mismatch =
+          results::deviceMismatch(base.results.context, current.results.context)) {
     throw mesh::InputError(current_name + "/results.json", "context.vulkan_device", *mismatch);
   }
   const results::CompareOptions options = compareOptions(args);

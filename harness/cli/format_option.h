@@ -3,7 +3,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <map>
 #include <string>
 
@@ -12,8 +11,7 @@ namespace tb::cli {
 // Rewrites `md` to `markdown` and passes any other value through unchanged (the subcommand
 // names the known formats when it refuses one). Adds nothing to the option's help.
 inline CLI::Validator markdownAlias() {
-  return CLI::Transformer(std::map<std::string, std::string>{{"md", "markdown"}})
-      .description("");
+  return CLI::Transformer(std::map<std::string, std::string>{{"md", "markdown"}}).description("");
 }
 
 }  // namespace tb::cli

@@ -1,17 +1,17 @@
 #include "harness/cli/list_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "core/gpu/context.h"
+#include "core/mesh/input_error.h"
+#include "harness/measures/measure.h"
+#include "harness/results/results_json.h"
 #include "harness/suite/asset_catalog.h"
 #include "harness/suite/scenario_file.h"
-#include "harness/measures/measure.h"
-#include "core/mesh/input_error.h"
-#include "harness/results/results_json.h"
 #include "techniques/registry.h"
 
 namespace tb::cli {
@@ -74,7 +74,9 @@ int runList(const ListArgs& args) {
                        {"input", info.input},
                        {"variants", variants},
                        {"controls", controls}});
-      if (!args.json) fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title, info.citation);
+      if (!args.json)
+        fmt::print("{:<16} {:<10} {} — {}\n", info.id, toString(info.family), info.title,
+                   info.citation);
     }
   } else if (args.what == "assets") {
     // The production assets too: bundled shapes refined at load (their path says so).
@@ -91,7 +93,8 @@ int runList(const ListArgs& args) {
                        {"path", scenario.path},
                        {"time_step_s", scenario.time_step_s},
                        {"duration_s", scenario.duration_s}});
-      if (!args.json) fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
+      if (!args.json)
+        fmt::print("{:<28} {:<16} {}\n", scenario.name, scenario.technique, scenario.path);
     }
   } else if (args.what == "measures") {
     for (const measures::Measure* m : measures::MeasureRegistry::instance().all()) {

@@ -1,16 +1,15 @@
 // tessbench: benchmark and validation harness for real-time GPU surface techniques.
+#include <fmt/format.h>
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>
-#include <fmt/format.h>
-
 #include <cstdio>
 #include <exception>
 #include <utility>
 
 #include "harness/cli/subcommand.h"
-#include "techniques/registry.h"
 #include "tb_build_info.h"
+#include "techniques/registry.h"
 
 int main(int argc, char** argv) {
   // Measures build and drop buffers of tens of megabytes per patch chunk, capture and
@@ -21,9 +20,8 @@ int main(int argc, char** argv) {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{"tessbench: benchmark and validation harness for GPU surface techniques"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("tessbench ") + TB_VERSION + " (git " +
-                                        TB_GIT_SHA + "), plug-in ABI " +
-                                        std::to_string(kTessbenchPluginAbi));
+  app.set_version_flag("--version", std::string("tessbench ") + TB_VERSION + " (git " + TB_GIT_SHA +
+                                        "), plug-in ABI " + std::to_string(kTessbenchPluginAbi));
   std::vector<std::string> plugins;
   app.add_option("--plugin", plugins, "load techniques from a shared library (repeatable)");
   std::vector<std::pair<CLI::App*, tb::cli::SubcommandRun>> commands;

@@ -1,8 +1,8 @@
 #include "harness/cli/merge_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -36,9 +36,7 @@ std::string folderName(const std::string& path) {
 SubcommandRun addMerge(CLI::App& app) {
   auto args = std::make_shared<MergeArgs>();
   addMergeCommand(app, *args);
-  return [args](const Invocation& invocation) {
-    return runMerge(*args, invocation.command_line);
-  };
+  return [args](const Invocation& invocation) { return runMerge(*args, invocation.command_line); };
 }
 
 }  // namespace
@@ -48,8 +46,7 @@ CLI::App* addMergeCommand(CLI::App& app, MergeArgs& args) {
       "merge", "join the run folders of shards 0..N-1 (run --shard I/N) into one new run folder");
   merge->add_option("shards", args.shards, "shard run folders (results/<run-id>), all N")
       ->required();
-  merge->add_option("--out", args.out, "the merged run's folder (must not exist yet)")
-      ->required();
+  merge->add_option("--out", args.out, "the merged run's folder (must not exist yet)")->required();
   merge->add_flag("--quiet", args.quiet, "print only the merged folder");
   return merge;
 }

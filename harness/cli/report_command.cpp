@@ -1,14 +1,14 @@
 #include "harness/cli/report_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <memory>
 #include <stdexcept>
 
+#include "core/mesh/input_error.h"
 #include "harness/cli/format_option.h"
 #include "harness/cli/html_assets.h"
-#include "core/mesh/input_error.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
@@ -18,8 +18,9 @@ namespace tb::cli {
 CLI::App* addReportCommand(CLI::App& app, ReportArgs& args) {
   CLI::App* report = app.add_subcommand("report", "render a run's results.json to stdout");
   report->add_option("run_dir", args.run_dir, "results/<run-id>")->required();
-  report->add_option("--format", args.format,
-                     "markdown | html (one self-contained page of charts and pictures)")
+  report
+      ->add_option("--format", args.format,
+                   "markdown | html (one self-contained page of charts and pictures)")
       ->transform(markdownAlias())
       ->capture_default_str();
   return report;

@@ -1,10 +1,9 @@
 #include "harness/cli/run_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -12,22 +11,22 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "harness/cli/progress_estimate.h"
-#include "harness/cli/html_assets.h"
-#include "harness/suite/displacement_file.h"
-#include "harness/cli/run_context.h"
-#include "harness/suite/asset_catalog.h"
-#include "harness/suite/scenario_file.h"
-#include "harness/suite/camera_path.h"
-#include "harness/measures/measure.h"
-#include "harness/suite/suite.h"
-#include "harness/pictures/run_pictures.h"
 #include "core/mesh/input_error.h"
+#include "harness/cli/html_assets.h"
+#include "harness/cli/progress_estimate.h"
+#include "harness/cli/run_context.h"
+#include "harness/measures/measure.h"
+#include "harness/pictures/run_pictures.h"
 #include "harness/report/csv_tables.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 #include "harness/results/timings_json.h"
+#include "harness/suite/asset_catalog.h"
+#include "harness/suite/camera_path.h"
+#include "harness/suite/displacement_file.h"
+#include "harness/suite/scenario_file.h"
+#include "harness/suite/suite.h"
 #include "techniques/registry.h"
 
 namespace tb::cli {
@@ -108,8 +107,8 @@ void printTimingSummary(const suite::SuiteTimings& timings) {
   for (const auto& [measure, seconds] : per_measure) {
     parts += fmt::format("{}{} {:.1f} s", parts.empty() ? "" : ", ", measure, seconds);
   }
-  fmt::print(stderr, "suite: {:.1f} s wall on {} threads; measure time: {}\n",
-             timings.wall_seconds, timings.threads, parts);
+  fmt::print(stderr, "suite: {:.1f} s wall on {} threads; measure time: {}\n", timings.wall_seconds,
+             timings.threads, parts);
 }
 
 // The suite's selection from the options; `camera_files` gets the --camera files as
@@ -197,8 +196,8 @@ size_t printFailures(const results::Results& results) {
       ++failed;
       const std::string rows =
           failed_rows == 0 ? "" : fmt::format("{} of {} rows: ", failed_rows, measure.rows.size());
-      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}{}\n", record.technique,
-                 record.variant, record.asset, measure.measure, rows, reason);
+      fmt::print(stderr, "tessbench: failed: {}/{} {} {}: {}{}\n", record.technique, record.variant,
+                 record.asset, measure.measure, rows, reason);
     }
   }
   return failed;
@@ -213,7 +212,8 @@ SubcommandRun addRun(CLI::App& app) {
 }  // namespace
 
 CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
-  CLI::App* run = app.add_subcommand("run", "measure techniques on assets into a new results folder");
+  CLI::App* run =
+      app.add_subcommand("run", "measure techniques on assets into a new results folder");
   run->add_option("--technique", args.techniques, "technique id (repeatable; default all)");
   run->add_option("--asset", args.assets, "bundled asset name or OBJ path (default all)");
   run->add_option("--refine", args.refine,
@@ -254,8 +254,9 @@ CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
                   "for compare's U test (9 or more recommended)")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  run->add_flag_callback("--no-pictures", [&args] { args.pictures = false; },
-                         "do not render the pictures of each surface (pictures/ in the run folder)");
+  run->add_flag_callback(
+      "--no-pictures", [&args] { args.pictures = false; },
+      "do not render the pictures of each surface (pictures/ in the run folder)");
   return run;
 }
 
@@ -292,8 +293,9 @@ int runRun(const RunArgs& args, const std::string& command_line) {
   const std::string finished = folder.finish();
   if (!args.quiet) {
     printTimingSummary(timings);
-    fmt::print("{} records, {} skipped: results written to {}/ (results.json, report.md, report.html)\n",
-               results.records.size(), results.skipped.size(), finished);
+    fmt::print(
+        "{} records, {} skipped: results written to {}/ (results.json, report.md, report.html)\n",
+        results.records.size(), results.skipped.size(), finished);
   } else {
     fmt::print("{}\n", finished);
   }

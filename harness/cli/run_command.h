@@ -19,12 +19,12 @@ struct RunArgs {
   std::string out = "results";
   std::string run_id;
   bool quiet = false;
-  std::string device;  // Vulkan device name substring; empty = best available
-  int threads = 0;     // worker threads; 0 = every core
-  std::string shard;   // "I/N": run shard I of N of the work list; empty = all of it
+  std::string device;                // Vulkan device name substring; empty = best available
+  int threads = 0;                   // worker threads; 0 = every core
+  std::string shard;                 // "I/N": run shard I of N of the work list; empty = all of it
   std::string suite = "default";     // "default" or "full": which grid measures run
   std::vector<std::string> cameras;  // camera path names or .json files; empty = the suite's
-  int repetitions = 1;  // runs of each measure per record; every one timed (timings.json)
+  int repetitions = 1;   // runs of each measure per record; every one timed (timings.json)
   bool pictures = true;  // render pictures/ (harness/pictures/run_pictures.h); --no-pictures
   // --displacement FILE.exr (repeatable): displaced assets from baked maps. None given: the
   // bundled maps (assets/displacement) when the run does not narrow the assets.

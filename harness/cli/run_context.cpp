@@ -1,17 +1,17 @@
 #include "harness/cli/run_context.h"
 
-#include <CLI/Version.hpp>
 #include <embree3/rtcore_config.h>
 #include <fmt/format.h>
 #include <glslang/build_info.h>
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
-#include <opensubdiv/version.h>
 #include <oneapi/tbb/version.h>
+#include <opensubdiv/version.h>
 #include <unistd.h>
 #include <vulkan/vulkan.h>
 
+#include <CLI/Version.hpp>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/gpu/context.h"
 #include "tb_build_info.h"
@@ -67,11 +67,11 @@ results::RunContext probeRunContext(const std::string& command_line,
       {"Vulkan headers", fmt::format("1.3.{}", VK_HEADER_VERSION)},
       {"glslang", fmt::format("{}.{}.{}", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR,
                               GLSLANG_VERSION_PATCH)},
-      {"meshoptimizer", fmt::format("{}.{}", MESHOPTIMIZER_VERSION / 1000,
-                                    (MESHOPTIMIZER_VERSION % 1000) / 10)},
+      {"meshoptimizer",
+       fmt::format("{}.{}", MESHOPTIMIZER_VERSION / 1000, (MESHOPTIMIZER_VERSION % 1000) / 10)},
       {"oneTBB", TBB_VERSION_STRING},
-      {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100,
-                          FMT_VERSION % 100)},
+      {"fmt",
+       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
       {"nlohmann_json", fmt::format("{}.{}.{}", NLOHMANN_JSON_VERSION_MAJOR,
                                     NLOHMANN_JSON_VERSION_MINOR, NLOHMANN_JSON_VERSION_PATCH)},
       {"CLI11", CLI11_VERSION},

@@ -1,6 +1,6 @@
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 
@@ -20,10 +20,9 @@ namespace tb::cli {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> all{
-      kListSubcommand,       kRunSubcommand,    kMergeSubcommand,
-      kReportSubcommand,     kCompareSubcommand, kTessellateSubcommand,
-      kAdviseSubcommand,     kTableSubcommand,  kBakeSubcommand,
-      kHistorySubcommand};
+      kListSubcommand,    kRunSubcommand,        kMergeSubcommand,  kReportSubcommand,
+      kCompareSubcommand, kTessellateSubcommand, kAdviseSubcommand, kTableSubcommand,
+      kBakeSubcommand,    kHistorySubcommand};
   return all;
 }
 

@@ -1,8 +1,8 @@
 #include "harness/cli/table_command.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <memory>
 
@@ -41,15 +41,17 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
   table->add_option("--measure", args.measure, "measure id (required unless --published)");
   table->add_option("--metric", args.metrics,
                     "metric name (repeatable; default: the measure's headline metrics)");
-  table->add_option("--format", args.format,
-                    "markdown | csv (footnote as leading '# ' lines) | latex (booktabs fragment)")
+  table
+      ->add_option("--format", args.format,
+                   "markdown | csv (footnote as leading '# ' lines) | latex (booktabs fragment)")
       ->transform(markdownAlias())
       ->capture_default_str();
   table->add_flag("--per-asset", args.per_asset, "a line per technique x variant x asset");
-  table->add_flag("--published", args.published,
-                  "the published tables beside ours: memory (NVIDIA's displacement subdivision "
-                  "surfaces talk) and published_figures (its Bezier instruction counts, the DirectX "
-                  "SDK SubD10 sample's ACC costs); with --measure, that one only");
+  table->add_flag(
+      "--published", args.published,
+      "the published tables beside ours: memory (NVIDIA's displacement subdivision "
+      "surfaces talk) and published_figures (its Bezier instruction counts, the DirectX "
+      "SDK SubD10 sample's ACC costs); with --measure, that one only");
   return table;
 }
 

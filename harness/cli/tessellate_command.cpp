@@ -38,7 +38,6 @@ std::vector<float> parseLevels(const std::string& option, const std::string& tex
   return values;
 }
 
-
 void requireCount(const std::string& option, tess::Domain domain, size_t expected, size_t got) {
   if (got == expected) return;
   throw UsageError(option + " for domain " + std::string(tess::toString(domain)) + " needs " +

@@ -1,8 +1,8 @@
 #include "harness/cli/tessellate_run.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <memory>
 #include <stdexcept>
 
@@ -29,8 +29,10 @@ void printText(tess::Domain domain, const tess::Tessellation& result) {
   }
   fmt::print("{} points\n", result.points.size());
   for (const auto& p : result.points) {
-    if (domain == tess::Domain::kTriangle) fmt::print("{} {} {}\n", p[0], p[1], p[2]);
-    else fmt::print("{} {}\n", p[0], p[1]);
+    if (domain == tess::Domain::kTriangle)
+      fmt::print("{} {} {}\n", p[0], p[1], p[2]);
+    else
+      fmt::print("{} {}\n", p[0], p[1]);
   }
   if (domain == tess::Domain::kIsoline) {
     fmt::print("{} lines\n", result.lines.size());
@@ -47,7 +49,8 @@ void reportClampedLevels(const TessellateRequest& request) {
   const float high = tess::maxLevel(request.spacing);
   auto report = [&](const char* option, size_t index, float level) {
     if (!(level > high)) return;
-    fmt::print(stderr, "tessbench: warning: {}[{}] = {} is above {}, the {} maximum: clamped to {}\n",
+    fmt::print(stderr,
+               "tessbench: warning: {}[{}] = {} is above {}, the {} maximum: clamped to {}\n",
                option, index, level, high, tess::toString(request.spacing), high);
   };
   const LevelCounts counts = levelCounts(request.domain);
@@ -61,9 +64,9 @@ int runTessellate(const TessellateArgs& args) {
   const TessellateRequest request = parseTessellateArgs(args);
   reportClampedLevels(request);
   const tess::Tessellation result =
-      args.backend == "gpu" ? tessellateWithGpu(args, request)
-                            : tess::tessellate(request.domain, request.spacing, request.levels,
-                                               request.options);
+      args.backend == "gpu"
+          ? tessellateWithGpu(args, request)
+          : tess::tessellate(request.domain, request.spacing, request.levels, request.options);
   if (args.json) {
     fmt::print("{}\n", tessellationToJson(request.domain, result));
   } else {

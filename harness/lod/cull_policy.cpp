@@ -15,9 +15,15 @@ constexpr double kConeSineWidening = 1e-3;  // see cull_policy.h
 constexpr int kConeAxisIterations = 32;
 
 constexpr CullPolicy kAllPolicies[] = {
-    CullPolicy::kNone,         CullPolicy::kBackfaceLp2, CullPolicy::kFrustumLp2Global,
-    CullPolicy::kFrustumLp2Exact, CullPolicy::kFrustumHull, CullPolicy::kCone,
-    CullPolicy::kCombined,     CullPolicy::kTangentPlane, CullPolicy::kTangentPlaneFrustum,
+    CullPolicy::kNone,
+    CullPolicy::kBackfaceLp2,
+    CullPolicy::kFrustumLp2Global,
+    CullPolicy::kFrustumLp2Exact,
+    CullPolicy::kFrustumHull,
+    CullPolicy::kCone,
+    CullPolicy::kCombined,
+    CullPolicy::kTangentPlane,
+    CullPolicy::kTangentPlaneFrustum,
 };
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
@@ -233,12 +239,20 @@ double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& 
   for (const CullPatchBounds& patch : patches) {
     const double corners = patch.corner_count * kVec4, hull = double(patch.hull.size()) * kVec4;
     switch (policy) {
-      case CullPolicy::kBackfaceLp2: total += kHeader + 2 * corners; break;
+      case CullPolicy::kBackfaceLp2:
+        total += kHeader + 2 * corners;
+        break;
       case CullPolicy::kFrustumLp2Global:
-      case CullPolicy::kFrustumLp2Exact: total += kHeader + corners; break;
-      case CullPolicy::kFrustumHull: total += kHeader + hull; break;
+      case CullPolicy::kFrustumLp2Exact:
+        total += kHeader + corners;
+        break;
+      case CullPolicy::kFrustumHull:
+        total += kHeader + hull;
+        break;
       case CullPolicy::kCone:
-      case CullPolicy::kCombined: total += kHeader + kVec4 + hull; break;
+      case CullPolicy::kCombined:
+        total += kHeader + kVec4 + hull;
+        break;
       case CullPolicy::kTangentPlane:
       case CullPolicy::kTangentPlaneFrustum: {
         // The tangent header, then the chord bound and the coefficients, or the cone.
@@ -249,7 +263,8 @@ double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& 
         }
         break;
       }
-      case CullPolicy::kNone: break;
+      case CullPolicy::kNone:
+        break;
     }
   }
   return total / double(patches.size());
@@ -288,9 +303,9 @@ CullBounds cullBounds(const techniques::SurfacePatches& patches, const FactorCor
   constexpr float kInf = std::numeric_limits<float>::infinity();
   const std::array<double, 2> quad_k = chordFactors(tess::Domain::kQuad, level);
   const std::array<double, 2> triangle_k = chordFactors(tess::Domain::kTriangle, level);
-  result.chord_factors = {std::nextafter(float(quad_k[0]), kInf), std::nextafter(float(quad_k[1]), kInf),
-                          std::nextafter(float(triangle_k[0]), kInf),
-                          std::nextafter(float(triangle_k[1]), kInf)};
+  result.chord_factors = {
+      std::nextafter(float(quad_k[0]), kInf), std::nextafter(float(quad_k[1]), kInf),
+      std::nextafter(float(triangle_k[0]), kInf), std::nextafter(float(triangle_k[1]), kInf)};
   result.global_margin = float(kGlobalMarginOfDiagonal * world_scale);
   const size_t count = patches.patchCount();
   result.patches.resize(count);

@@ -80,9 +80,9 @@ struct CullPatchBounds {
   std::array<float, 4> corner_margin{};
   std::array<mesh::Vec3f, 4> corner_normal{};
   mesh::Vec3f cone_axis{0, 0, 0};
-  float cone_sine = 2;  // sin of the cone's half angle; > 1: no cone (cone never culls)
+  float cone_sine = 2;            // sin of the cone's half angle; > 1: no cone (cone never culls)
   std::vector<mesh::Vec3f> hull;  // at most kCullHullPoints
-  float displacement_bound = 0;  // world units; 0 until displacement maps exist
+  float displacement_bound = 0;   // world units; 0 until displacement maps exist
   // tangent_plane's Bernstein coefficients {n_k, w_k} of f = (E - O) . n_k + w_k
   // (tangent_plane.h) with O = corner_position[0], in float; empty when the patch has no
   // Bézier net or a displacement bound: then tangent_plane is the cone alone (it is the
@@ -96,10 +96,10 @@ struct CullPatchBounds {
 };
 
 struct CullBounds {
-  std::vector<CullPatchBounds> patches;  // SurfacePatches order
-  float global_margin = 0;               // world units
-  size_t patches_without_hull = 0;       // technique gave no bounds: hull = the corners
-  size_t patches_without_cone = 0;       // no bounds, or normals spanning 90 degrees or more
+  std::vector<CullPatchBounds> patches;      // SurfacePatches order
+  float global_margin = 0;                   // world units
+  size_t patches_without_hull = 0;           // technique gave no bounds: hull = the corners
+  size_t patches_without_cone = 0;           // no bounds, or normals spanning 90 degrees or more
   size_t patches_without_tangent_plane = 0;  // no Bézier net: tangent_plane uses the cone
   // The chord margin's pattern factors at the level the bounds were made for
   // (tangent_plane.h chordFactors): quad K2, K3, triangle K2, K3, rounded up.
@@ -109,9 +109,9 @@ struct CullBounds {
 // The bytes of per-patch cull data (TbCullPatch) the policy's test reads for one patch, mean
 // over the patches: the header (16) and, per policy, each used corner's position (16) and
 // normal (16), the cone (16), each used hull point (16), and tangent_plane's header (16),
-// chord bound (16) and coefficients (16 each; the cone and hull where a patch has none). What a user pays per
-// patch for the policy's culls; 0 for none. (The device's TbCullPatch stride is 512 bytes
-// whatever the policy: every policy's data in one layout; the coefficients are apart.)
+// chord bound (16) and coefficients (16 each; the cone and hull where a patch has none). What a
+// user pays per patch for the policy's culls; 0 for none. (The device's TbCullPatch stride is 512
+// bytes whatever the policy: every policy's data in one layout; the coefficients are apart.)
 double cullBytesPerPatch(CullPolicy policy, const std::vector<CullPatchBounds>& patches);
 
 // The bounds of every patch: corners from `corners` (factorCorners), hull and cone from

@@ -20,8 +20,6 @@ namespace {
 using techniques::CurvatureBounds;
 using techniques::PatchDomain;
 
-
-
 // `value` as the smallest float not below it.
 float roundUp(double value) {
   float f = float(value);
@@ -90,8 +88,8 @@ std::vector<std::vector<Side>> edgeSides(const techniques::SurfacePatches& patch
 // smaller of the box and circle bounds (transition_extents.h) with the pattern's widest
 // triangles. Quads (uu + 2 uv + vv) / 8; the triangle domain's rings are wider.
 double sideBound(const CurvatureBounds& b, PatchDomain domain) {
-  const RingFactors k = ringFactors(domain == PatchDomain::kQuad ? tess::Domain::kQuad
-                                                                 : tess::Domain::kTriangle);
+  const RingFactors k =
+      ringFactors(domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle);
   const double a = (b.uu + b.uv) / 8, c = (b.vv + b.uv) / 8;
   return std::min(a * k.u * k.u + c * k.v * k.v, 4 * std::max(a, c) * k.circle);
 }

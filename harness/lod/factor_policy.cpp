@@ -83,8 +83,8 @@ std::vector<mesh::Vec3f> weldedNormals(const mesh::Mesh& mesh, const mesh::Weldi
     const std::span<const uint32_t> corners = mesh.facePositions(f);
     mesh::Vec3d normal{0, 0, 0};
     for (size_t i = 0; i < corners.size(); ++i) {
-      normal = normal + cross(mesh.positions[corners[i]],
-                              mesh.positions[corners[(i + 1) % corners.size()]]);
+      normal = normal +
+               cross(mesh.positions[corners[i]], mesh.positions[corners[(i + 1) % corners.size()]]);
     }
     for (uint32_t c : corners) {
       mesh::Vec3d& sum = sums[welding.canonical[c]];
@@ -172,10 +172,9 @@ std::optional<FactorPolicy> parseFactorPolicy(std::string_view name) {
     policy.dense_edges = true;
   } else {
     bool found = false;
-    for (FactorPolicyKind kind :
-         {FactorPolicyKind::kUniform, FactorPolicyKind::kDistance,
-          FactorPolicyKind::kSphereDiameter, FactorPolicyKind::kLp2Edge,
-          FactorPolicyKind::kErrorBound}) {
+    for (FactorPolicyKind kind : {FactorPolicyKind::kUniform, FactorPolicyKind::kDistance,
+                                  FactorPolicyKind::kSphereDiameter, FactorPolicyKind::kLp2Edge,
+                                  FactorPolicyKind::kErrorBound}) {
       if (name == kindName(kind)) {
         policy.kind = kind;
         found = true;
@@ -211,7 +210,8 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
                           double world_scale) {
   FactorParams params;
   for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) params.view_projection[c * 4 + r] = float(view.view_projection.m[c][r]);
+    for (int r = 0; r < 4; ++r)
+      params.view_projection[c * 4 + r] = float(view.view_projection.m[c][r]);
   }
   params.eye = {float(view.eye[0]), float(view.eye[1]), float(view.eye[2])};
   params.viewport_height_px = float(view.viewport_height_px);
@@ -220,8 +220,7 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
                                                                    : policy.target);
   params.pixel_scale = float(double(view.viewport_height_px) / (2 * policy.target));
   params.min_scale = float(policy.min_scale);
-  params.roundness_span =
-      float(1 - std::cos(policy.roundness_angle_deg * std::numbers::pi / 180));
+  params.roundness_span = float(1 - std::cos(policy.roundness_angle_deg * std::numbers::pi / 180));
   params.policy = uint32_t(policy.kind);
   params.flags = (policy.order_dependent ? kFlagOrderDependent : 0) |
                  (policy.silhouette ? kFlagSilhouette : 0) |
@@ -258,7 +257,8 @@ FactorParams factorParams(const FactorPolicy& policy, const view::View& view, te
 namespace {
 // tbProjectionStretch: the Jacobian's largest stretch over the sphere whose centre is at clip
 // (cx, cy) and whose nearest clip w is near_w.
-float projectionStretch(const FactorParams& params, float cx, float cy, float radius, float near_w) {
+float projectionStretch(const FactorParams& params, float cx, float cy, float radius,
+                        float near_w) {
   float a = (std::fabs(cx) + radius * params.row_length[0]) * params.inv_scale[0] / near_w;
   float b = (std::fabs(cy) + radius * params.row_length[1]) * params.inv_scale[1] / near_w;
   a = a < params.tan_half[0] ? a : params.tan_half[0];
@@ -274,11 +274,14 @@ float errorBoundEps(const FactorParams& params, const std::array<float, 4>& sphe
   // Wholly behind the near plane, or wholly outside a side of the view (by a margin over the
   // float rounding of the plane's value): no sample can be visible.
   if (w + r * params.hull_w_scale < params.near_w) return std::numeric_limits<float>::infinity();
-  const float cx = m[0 * 4 + 0] * sphere[0] + m[1 * 4 + 0] * sphere[1] + m[2 * 4 + 0] * sphere[2] + m[3 * 4 + 0];
-  const float cy = m[0 * 4 + 1] * sphere[0] + m[1 * 4 + 1] * sphere[1] + m[2 * 4 + 1] * sphere[2] + m[3 * 4 + 1];
+  const float cx =
+      m[0 * 4 + 0] * sphere[0] + m[1 * 4 + 0] * sphere[1] + m[2 * 4 + 0] * sphere[2] + m[3 * 4 + 0];
+  const float cy =
+      m[0 * 4 + 1] * sphere[0] + m[1 * 4 + 1] * sphere[1] + m[2 * 4 + 1] * sphere[2] + m[3 * 4 + 1];
   const float sides[4] = {w + cx, w - cx, w + cy, w - cy};
   for (int k = 0; k < 4; ++k) {
-    if (sides[k] < -(r * params.side_length[k]) * kSideMargin) return std::numeric_limits<float>::infinity();
+    if (sides[k] < -(r * params.side_length[k]) * kSideMargin)
+      return std::numeric_limits<float>::infinity();
   }
   // Only samples in front of the near plane count (and the segment between two such points
   // stays there): the nearest depth a visible error can have is at least the near plane's.
@@ -417,10 +420,11 @@ tess::Levels errorBoundLevels(const FactorParams& params, techniques::PatchDomai
   return levels;
 }
 
-const std::vector<float>& errorBoundTable(const FactorParams& params, techniques::PatchDomain domain) {
-  return transitionExtents(domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad
-                                                                    : tess::Domain::kTriangle,
-                           tess::Spacing(params.spacing));
+const std::vector<float>& errorBoundTable(const FactorParams& params,
+                                          techniques::PatchDomain domain) {
+  return transitionExtents(
+      domain == techniques::PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle,
+      tess::Spacing(params.spacing));
 }
 
 // The spacing's two tables, each looked up on first use.
@@ -442,7 +446,8 @@ class ErrorBoundTables {
 }  // namespace
 
 tess::Levels policyLevels(const FactorParams& params, techniques::PatchDomain domain,
-                          const std::array<FactorCorner, 4>& corners, const ErrorBoundPatch* bound) {
+                          const std::array<FactorCorner, 4>& corners,
+                          const ErrorBoundPatch* bound) {
   if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
     if (bound == nullptr) throw std::logic_error("policyLevels: error_bound without its bounds");
     bool met = true;

@@ -96,9 +96,7 @@ struct Chunk {
 // pattern or more) for the technique's tabulated batch kernel to pay for building it;
 // adaptive frames give most patches their own levels, and then point-by-point evaluation
 // is cheaper. Either way the figures agree to rounding (~1e-12 relative).
-bool sharesPatterns(const Chunk& chunk) {
-  return 4 * chunk.keys.size() <= chunk.end - chunk.begin;
-}
+bool sharesPatterns(const Chunk& chunk) { return 4 * chunk.keys.size() <= chunk.end - chunk.begin; }
 
 // Splits the patches into chunks whose distinct patterns need about kScreenPatternPoints
 // batch points at most (at least one patch each) and calls fn(chunk) in patch order.
@@ -342,7 +340,8 @@ ScreenErrorFigures ScreenMetrics::tessellationError(tess::Spacing spacing,
   tbb::enumerable_thread_specific<Scratch> scratch;
   const std::span<const tess::Levels> sets[] = {levels};
   forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
-    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternSamples, sharesPatterns(chunk));
+    const std::vector<const ScreenPattern*> patterns =
+        cache_.acquire(chunk.keys, kPatternSamples, sharesPatterns(chunk));
     const size_t count = chunk.end - chunk.begin;
     std::vector<ErrorSums> slots(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
@@ -370,7 +369,8 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
   tbb::enumerable_thread_specific<Scratch> scratch;
   const std::span<const tess::Levels> sets[] = {before, after};
   forEachChunk(patches_, spacing, sets, [&](const Chunk& chunk) {
-    const std::vector<const ScreenPattern*> patterns = cache_.acquire(chunk.keys, kPatternLattice, sharesPatterns(chunk));
+    const std::vector<const ScreenPattern*> patterns =
+        cache_.acquire(chunk.keys, kPatternLattice, sharesPatterns(chunk));
     const size_t count = chunk.end - chunk.begin;
     std::vector<ErrorSums> slots(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {

@@ -81,8 +81,8 @@ inline constexpr size_t kScreenPatternPoints = size_t(1) << 18;
 class ScreenMetrics {
  public:
   // `limit`: null, or the reference limit of patches.controlMesh() under the scheme
-  // patches.approximates() names (referenceScheme, harness/lod/reference_scheme.h); std::logic_error when its
-  // scheme or face count does not match. Both must outlive this object.
+  // patches.approximates() names (referenceScheme, harness/lod/reference_scheme.h);
+  // std::logic_error when its scheme or face count does not match. Both must outlive this object.
   ScreenMetrics(const techniques::SurfacePatches& patches, const ref::LimitSurface* limit);
 
   FrameScreenFigures frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
@@ -115,7 +115,7 @@ class ScreenMetrics {
                                            techniques::BatchPoints& scratch);
 
   struct Evaluated {
-    uint64_t serial = 0;           // ScreenPattern::points_serial; 0: nothing kept
+    uint64_t serial = 0;             // ScreenPattern::points_serial; 0: nothing kept
     techniques::BatchPoints points;  // positions only
   };
   static constexpr size_t kEvaluatedDoubles = size_t(1) << 23;  // 64 MB over all patches

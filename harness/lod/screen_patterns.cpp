@@ -167,7 +167,8 @@ void completeScreenPattern(const techniques::SurfacePatches& patches, unsigned p
     if (missing & kPatternLattice) buildLattice(pattern);
     if (missing & kPatternSamples) buildSamples(pattern);
     // A pattern of the vertices alone is replaced by one with the samples appended.
-    if (!pattern->points || (missing & kPatternSamples)) buildPoints(patches, pattern, technique_kernel);
+    if (!pattern->points || (missing & kPatternSamples))
+      buildPoints(patches, pattern, technique_kernel);
   }
   pattern->parts |= parts;
 }
@@ -209,8 +210,7 @@ std::vector<const ScreenPattern*> ScreenPatternCache::acquire(
     if (!slot->tessellated || (parts & ~slot->parts) != 0) to_build.push_back(i);
   }
   // Distinct keys, so each task completes its own pattern.
-  tbb::parallel_for(size_t(0), to_build.size(),
-                    [&](size_t k) {
+  tbb::parallel_for(size_t(0), to_build.size(), [&](size_t k) {
     completeScreenPattern(patches_, parts, found[to_build[k]], technique_kernels);
   });
   return {found.begin(), found.end()};

@@ -100,7 +100,8 @@ TangentPlaneChordBound tangentPlaneChordBound(techniques::PatchDomain domain,
       bounds.bezier_net.size() != netSize(quad, degree)) {
     return bound;
   }
-  for (const mesh::Vec3d& p : bounds.bezier_net) bound.reach = std::max(bound.reach, length(p - origin));
+  for (const mesh::Vec3d& p : bounds.bezier_net)
+    bound.reach = std::max(bound.reach, length(p - origin));
   std::array<double, 2> g;
   if (quad) {
     QuadPoly<mesh::Vec3d> q(degree, degree);

@@ -17,7 +17,8 @@ namespace {
 
 // The squared radius of the smallest circle around a triangle (u, v), rounded up to float:
 // half its longest side where the triangle is right or obtuse, else its circumradius.
-float enclosingCircle(const tess::DomainPoint& a, const tess::DomainPoint& b, const tess::DomainPoint& c) {
+float enclosingCircle(const tess::DomainPoint& a, const tess::DomainPoint& b,
+                      const tess::DomainPoint& c) {
   const auto squared = [](const tess::DomainPoint& p, const tess::DomainPoint& q) {
     const double du = double(p[0]) - q[0], dv = double(p[1]) - q[1];
     return du * du + dv * dv;
@@ -27,7 +28,8 @@ float enclosingCircle(const tess::DomainPoint& a, const tess::DomainPoint& b, co
   const double twice_area = std::fabs((double(b[0]) - a[0]) * (double(c[1]) - a[1]) -
                                       (double(c[0]) - a[0]) * (double(b[1]) - a[1]));
   double r2 = longest / 4;
-  if (2 * longest < ab + bc + ca && twice_area > 0) r2 = ab * bc * ca / (twice_area * twice_area) / 4;
+  if (2 * longest < ab + bc + ca && twice_area > 0)
+    r2 = ab * bc * ca / (twice_area * twice_area) / 4;
   const float rounded = float(r2 * (1 + 1e-9));
   return double(rounded) < r2 ? std::nextafter(rounded, 1.0f) : rounded;
 }
@@ -38,9 +40,9 @@ float enclosingCircle(const tess::DomainPoint& a, const tess::DomainPoint& b, co
 std::array<float, kTransitionAxes> widestTriangle(const tess::Tessellation& t) {
   std::array<float, kTransitionAxes> widest{0, 0, 0};
   for (const std::array<uint32_t, 3>& triangle : t.triangles) {
-    widest[kTransitionCircle] =
-        std::max(widest[kTransitionCircle],
-                 enclosingCircle(t.points[triangle[0]], t.points[triangle[1]], t.points[triangle[2]]));
+    widest[kTransitionCircle] = std::max(
+        widest[kTransitionCircle],
+        enclosingCircle(t.points[triangle[0]], t.points[triangle[1]], t.points[triangle[2]]));
     for (int axis = 0; axis < 2; ++axis) {
       float low = t.points[triangle[0]][axis], high = low;
       for (int k = 1; k < 3; ++k) {
@@ -155,7 +157,8 @@ const std::vector<float>& transitionExtents(tess::Domain domain, tess::Spacing s
     throw std::invalid_argument("transitionExtents: the isoline domain has no triangles");
   }
   static std::mutex mutex;
-  static std::map<std::pair<tess::Domain, tess::Spacing>, std::unique_ptr<std::vector<float>>> tables;
+  static std::map<std::pair<tess::Domain, tess::Spacing>, std::unique_ptr<std::vector<float>>>
+      tables;
   const std::lock_guard<std::mutex> lock(mutex);
   std::unique_ptr<std::vector<float>>& table = tables[{domain, spacing}];
   if (!table) table = std::make_unique<std::vector<float>>(measureTable(domain, spacing));

@@ -153,8 +153,8 @@ inline constexpr const char* kDefaultComputeAssets[] = {"opensubdiv/catmark_xord
                                                         "opensubdiv/loop_xord_interior"};
 bool runsComputePath(const MeasureInput& input);
 
-// Precondition of a kCameraPath measure's run(): the path its needs promise (the suite always sets them;
-// a caller outside the suite, a benchmark or a test, may not). Throws std::invalid_argument
+// Precondition of a kCameraPath measure's run(): the path its needs promise (the suite always sets
+// them; a caller outside the suite, a benchmark or a test, may not). Throws std::invalid_argument
 // naming the missing input, which the suite turns into an error row, instead of a crash.
 const view::CameraPath& requireCameraPath(const MeasureInput& input);
 

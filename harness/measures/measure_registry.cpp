@@ -7,14 +7,15 @@
 namespace tb::measures {
 
 results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
-  return {info.id,       info.title, info.description,   info.metrics,     info.headline,
-          info.notes,    info.summary_scope, info.plots, info.control_rows, info.comparisons};
+  return {info.id,    info.title,         info.description, info.metrics,      info.headline,
+          info.notes, info.summary_scope, info.plots,       info.control_rows, info.comparisons};
 }
 
 const view::CameraPath& requireCameraPath(const MeasureInput& input) {
   if (input.camera_path == nullptr || input.camera_path->views.empty()) {
-    throw std::invalid_argument("measure input: no camera path (MeasureInput::camera_path is "
-                                "null or has no views)");
+    throw std::invalid_argument(
+        "measure input: no camera path (MeasureInput::camera_path is "
+        "null or has no views)");
   }
   return *input.camera_path;
 }

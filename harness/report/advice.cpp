@@ -110,10 +110,10 @@ void readWatertightness(const SummaryLine* line, CandidateFigures* figures) {
   }
   if (line->skipped_rows > 0 || line->failed_rows > 0) {
     figures->watertight = Watertightness::kUnverified;
-    figures->watertight_detail = fmt::format(
-        "{} cracks rows {} ({}): watertightness unverified on the device",
-        line->skipped_rows + line->failed_rows, line->failed_rows > 0 ? "skipped or failed" : "skipped",
-        line->first_reason);
+    figures->watertight_detail =
+        fmt::format("{} cracks rows {} ({}): watertightness unverified on the device",
+                    line->skipped_rows + line->failed_rows,
+                    line->failed_rows > 0 ? "skipped or failed" : "skipped", line->first_reason);
     return;
   }
   if (line->ok_rows == 0 || not_equal == nullptr || unpaired == nullptr) {
@@ -264,9 +264,10 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
 
   for (const results::Record& record : results.records) {
     if (record.asset != asset || !selected(constraints, record.technique)) continue;
-    const bool seen = std::any_of(advice.ranked.begin(), advice.ranked.end(), [&](const Candidate& c) {
-      return c.technique == record.technique && c.variant == record.variant;
-    });
+    const bool seen =
+        std::any_of(advice.ranked.begin(), advice.ranked.end(), [&](const Candidate& c) {
+          return c.technique == record.technique && c.variant == record.variant;
+        });
     if (seen) continue;
     Candidate c;
     c.technique = record.technique;
@@ -282,10 +283,11 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
       error_line = findLine(error, {c.technique, default_it->second});
       f.error_from_default = error_line != nullptr;
     }
-    f.error = worstFigure(results, error_line, "error", kErrorMeasure, kErrorMetric,
-                          &f.missing_error);
-    f.instructions = worstFigure(results, findLine(instructions, key), "instructions",
-                                 kInstructionsMeasure, kInstructionsMetric, &f.missing_instructions);
+    f.error =
+        worstFigure(results, error_line, "error", kErrorMeasure, kErrorMetric, &f.missing_error);
+    f.instructions =
+        worstFigure(results, findLine(instructions, key), "instructions", kInstructionsMeasure,
+                    kInstructionsMetric, &f.missing_instructions);
     // memory runs only on variants whose patch data differ from the default's
     // (VariantPolicy::kWhenPatchDataDiffers): another variant has the default's bytes.
     const SummaryLine* memory_line = findLine(memory, key);
@@ -324,9 +326,12 @@ namespace {
 std::string cell(std::string text) {
   std::string out;
   for (char ch : text) {
-    if (ch == '|') out += "\\|";
-    else if (ch == '\n') out += ' ';
-    else out += ch;
+    if (ch == '|')
+      out += "\\|";
+    else if (ch == '\n')
+      out += ' ';
+    else
+      out += ch;
   }
   return out;
 }
@@ -373,9 +378,10 @@ std::string renderAdviceMarkdown(const Advice& advice, const AdviceConstraints& 
                                   advice.ranked.front().variant + "\n"
                             : "\nNo candidate meets every constraint.\n";
   if (!advice.recommendation.empty()) {
-    out += fmt::format("\nRecommendation (report.md's rule, default variants, no constraints): {}. "
-                       "{}\nRule: {}.\n",
-                       advice.recommendation, advice.recommendation_why, kDecisionRule);
+    out += fmt::format(
+        "\nRecommendation (report.md's rule, default variants, no constraints): {}. "
+        "{}\nRule: {}.\n",
+        advice.recommendation, advice.recommendation_why, kDecisionRule);
   }
   return out;
 }

@@ -69,8 +69,8 @@ Answer didAnythingCrack(const results::Results& results) {
   size_t rows = 0;
   forDefaultRows(results, "cracks", [&](const results::Record& r, const results::MetricRow& row) {
     ++rows;
-    const double points =
-        rowMetric(row, "points_not_equal").value_or(0) + rowMetric(row, "unpaired_points").value_or(0);
+    const double points = rowMetric(row, "points_not_equal").value_or(0) +
+                          rowMetric(row, "unpaired_points").value_or(0);
     if (points <= 0) return;
     const std::string who = r.technique + "/" + r.variant;
     cracked[who].insert(r.asset);
@@ -78,22 +78,29 @@ Answer didAnythingCrack(const results::Results& results) {
   });
   std::vector<std::string> parts;
   for (const auto& [who, assets] : cracked) {
-    parts.push_back(fmt::format("{} on {} assets (up to {} points)", who, assets.size(), num(worst[who])));
+    parts.push_back(
+        fmt::format("{} on {} assets (up to {} points)", who, assets.size(), num(worst[who])));
   }
-  a.answer = rows == 0       ? "not measured in this run."
-             : parts.empty() ? fmt::format("no: every default variant is watertight on its {} cracks rows.", rows)
-                             : "yes: " + joined(parts) + " (where: \"Where the default "
-                                                             "variants crack\" below).";
-  a.source = "cracks: points_not_equal + unpaired_points > 0 in some row (CPU float and device "
-             "capture, every level), default variants; controls crack by design and are left out";
+  a.answer =
+      rows == 0 ? "not measured in this run."
+      : parts.empty()
+          ? fmt::format("no: every default variant is watertight on its {} cracks rows.", rows)
+          : "yes: " + joined(parts) +
+                " (where: \"Where the default "
+                "variants crack\" below).";
+  a.source =
+      "cracks: points_not_equal + unpaired_points > 0 in some row (CPU float and device "
+      "capture, every level), default variants; controls crack by design and are left out";
   return a;
 }
 
 Answer accMemory(const results::Results& results) {
-  Answer a{fmt::format("What does ACC save against triangles at level {}?", kDecisionMemoryLevel), "", ""};
+  Answer a{fmt::format("What does ACC save against triangles at level {}?", kDecisionMemoryLevel),
+           "", ""};
   std::vector<double> ratios;
   forDefaultRows(results, "memory", [&](const results::Record& r, const results::MetricRow& row) {
-    if (r.technique != "acc" || rowKey(row, "level") != std::to_string(kDecisionMemoryLevel)) return;
+    if (r.technique != "acc" || rowKey(row, "level") != std::to_string(kDecisionMemoryLevel))
+      return;
     if (r.parameters.count("displacement") > 0) return;
     if (const auto ratio = rowMetric(row, "plain_over_technique")) ratios.push_back(*ratio);
   });
@@ -141,8 +148,10 @@ Answer whichCulling(const results::Results& results) {
         best, num(medianValue(efficiency[best])), efficiency[best].size(), num(false_culls[best]),
         joined(others));
   }
-  a.source = "culling: cull_efficiency and total_false_culls, summary rows (summary = path), "
-             "default variants, conservative policies only (" + joined(conservative) + ")";
+  a.source =
+      "culling: cull_efficiency and total_false_culls, summary rows (summary = path), "
+      "default variants, conservative policies only (" +
+      joined(conservative) + ")";
   return a;
 }
 
@@ -152,21 +161,25 @@ Answer factorPolicy(const results::Results& results) {
   const results::MeasureDeclaration* declaration = results.findMeasure("adaptivity");
   forDefaultRows(results, "adaptivity", [&](const results::Record&, const results::MetricRow& row) {
     if (rowKey(row, "summary") != "max_error_1px") return;
-    if (declaration != nullptr && results::isControlRow(*declaration, row.keys)) return;  // made to fail
-    if (const auto r = rowMetric(row, "triangle_ratio_vs_uniform")) ratios[rowKey(row, "policy")].push_back(*r);
+    if (declaration != nullptr && results::isControlRow(*declaration, row.keys))
+      return;  // made to fail
+    if (const auto r = rowMetric(row, "triangle_ratio_vs_uniform"))
+      ratios[rowKey(row, "policy")].push_back(*r);
   });
   std::vector<std::string> parts;
   for (const auto& [policy, values] : ratios) {
-    const size_t below = std::count_if(values.begin(), values.end(), [](double v) { return v < 1; });
+    const size_t below =
+        std::count_if(values.begin(), values.end(), [](double v) { return v < 1; });
     parts.push_back(fmt::format(
         "{} needs a median {}x uniform's triangles for a 1 px error ({}: below 1 on {} of {} "
         "technique x asset)",
-        policy, num(medianValue(values)), medianValue(values) < 1 ? "beats uniform" : "does not beat it",
-        below, values.size()));
+        policy, num(medianValue(values)),
+        medianValue(values) < 1 ? "beats uniform" : "does not beat it", below, values.size()));
   }
   a.answer = parts.empty() ? "not measured in this run." : joined(parts) + ".";
-  a.source = "adaptivity: triangle_ratio_vs_uniform, summary rows (summary = max_error_1px), "
-             "default variants; control policies (made to fail) left out";
+  a.source =
+      "adaptivity: triangle_ratio_vs_uniform, summary rows (summary = max_error_1px), "
+      "default variants; control policies (made to fail) left out";
   return a;
 }
 
@@ -178,7 +191,8 @@ Answer solver(const results::Results& results) {
     for (const results::MeasureResult& m : record.measures) {
       if (m.measure != "convergence" || m.status != results::MeasureStatus::kOk) continue;
       for (const results::MetricRow& row : m.rows) {
-        if (const auto r = rowMetric(row, metric)) by_scenario[record.asset].push_back({*r, record.variant});
+        if (const auto r = rowMetric(row, metric))
+          by_scenario[record.asset].push_back({*r, record.variant});
       }
     }
   }
@@ -187,18 +201,21 @@ Answer solver(const results::Results& results) {
   for (auto& [scenario, values] : by_scenario) {
     std::sort(values.begin(), values.end());
     std::string order;
-    for (const auto& [residual, variant] : values) order += (order.empty() ? "" : " < ") + variant + " " + num(residual);
+    for (const auto& [residual, variant] : values)
+      order += (order.empty() ? "" : " < ") + variant + " " + num(residual);
     jacobi_wins += values.front().second.rfind("jacobi", 0) == 0 ? 1 : 0;
     parts.push_back(scenario + ": " + order);
   }
   a.answer = parts.empty() ? "not measured in this run."
-                           : fmt::format("{}: a Jacobi variant has the lowest residual on {} of {} "
-                                         "scenarios ({}).",
-                                         jacobi_wins == by_scenario.size() ? "no"
-                                         : jacobi_wins == 0                ? "yes"
-                                                                           : "not always",
-                                         jacobi_wins, by_scenario.size(), joined(parts));
-  a.source = "convergence: " + metric + " (residual after 8 compute dispatches, lower better), "
+                           : fmt::format(
+                                 "{}: a Jacobi variant has the lowest residual on {} of {} "
+                                 "scenarios ({}).",
+                                 jacobi_wins == by_scenario.size() ? "no"
+                                 : jacobi_wins == 0                ? "yes"
+                                                                   : "not always",
+                                 jacobi_wins, by_scenario.size(), joined(parts));
+  a.source = "convergence: " + metric +
+             " (residual after 8 compute dispatches, lower better), "
              "summary rows";
   return a;
 }
@@ -224,7 +241,8 @@ std::vector<std::string> conservativeCullPolicies(const results::Results& result
     for (size_t i = 0; i < names.size(); ++i) {
       const size_t end = i + 1 < names.size() ? names[i + 1].second : note.size();
       const std::string segment = note.substr(names[i].second, end - names[i].second);
-      if (segment.find("; conservative;") != std::string::npos) conservative.push_back(names[i].first);
+      if (segment.find("; conservative;") != std::string::npos)
+        conservative.push_back(names[i].first);
     }
   }
   return conservative;

@@ -55,8 +55,8 @@ std::vector<Compared> comparedRows(const results::Results& results,
     for (const results::MeasureResult& m : record.measures) {
       if (m.measure != measure.measure || m.status != results::MeasureStatus::kOk) continue;
       for (const results::MetricRow& row : m.rows) {
-        if (row.status != results::MeasureStatus::kOk || !results::rowInScope(spec.where, row.keys) ||
-            !row.keys.contains(spec.column_key))
+        if (row.status != results::MeasureStatus::kOk ||
+            !results::rowInScope(spec.where, row.keys) || !row.keys.contains(spec.column_key))
           continue;
         if (results::isControlRow(measure, row.keys)) {
           addUnique(&table->controls_left_out, keyOf(row, spec.column_key));
@@ -100,8 +100,8 @@ ComparisonLine lineOf(const results::ComparisonSpec& spec, results::Direction di
     for (const Compared* c : rows) {
       if (i < group.key_columns) {
         if (keyOf(*c->row, spec.column_key) != group.columns[i]) continue;
-        const bool valid = spec.valid_flag.empty() ||
-                           metricOf(*c->row, spec.valid_flag).value_or(1) != 0;
+        const bool valid =
+            spec.valid_flag.empty() || metricOf(*c->row, spec.valid_flag).value_or(1) != 0;
         if (valid) cell.value = metricOf(*c->row, spec.metric);
         break;
       }
@@ -118,7 +118,8 @@ ComparisonLine lineOf(const results::ComparisonSpec& spec, results::Direction di
   }
   // One column: nothing to choose between, nothing in bold.
   if (group.key_columns < 2) return line;
-  for (size_t i = 0; i < group.key_columns; ++i) line.cells[i].best = best && line.cells[i].value == best;
+  for (size_t i = 0; i < group.key_columns; ++i)
+    line.cells[i].best = best && line.cells[i].value == best;
   return line;
 }
 
@@ -204,7 +205,8 @@ ComparisonTable comparisonTable(const results::Results& results,
   }
   for (size_t g = 0; g < group_keys.size(); ++g) {
     ComparisonGroup group;
-    for (size_t f = 0; f < facets.size(); ++f) group.facets.push_back({facets[f], group_keys[g][f]});
+    for (size_t f = 0; f < facets.size(); ++f)
+      group.facets.push_back({facets[f], group_keys[g][f]});
     fillGroup(results, spec, table.direction, order, group_rows[g], &group);
     table.groups.push_back(std::move(group));
   }
@@ -225,15 +227,19 @@ PlotData comparisonPlot(const ComparisonTable& table) {
   data.spec.series = table.spec.column_key;
   data.spec.where = table.spec.where;
   data.x_label = "technique (default variant)";
-  data.y_label = table.unit.empty() ? table.spec.metric : table.spec.metric + " (" + table.unit + ")";
+  data.y_label =
+      table.unit.empty() ? table.spec.metric : table.spec.metric + " (" + table.unit + ")";
   data.y_direction = table.direction;
   data.rows_used = table.rows_used;
   std::string where;
-  for (const auto& [key, value] : table.spec.where) where += (where.empty() ? "" : ", ") + key + " = " + value;
+  for (const auto& [key, value] : table.spec.where)
+    where += (where.empty() ? "" : ", ") + key + " = " + value;
   std::string extras;
-  for (const results::ComparisonColumn& c : table.spec.extra_columns) extras += ", " + c.label + " (" + c.metric + ")";
+  for (const results::ComparisonColumn& c : table.spec.extra_columns)
+    extras += ", " + c.label + " (" + c.metric + ")";
   std::string controls;
-  for (const std::string& c : table.controls_left_out) controls += (controls.empty() ? "" : ", ") + c;
+  for (const std::string& c : table.controls_left_out)
+    controls += (controls.empty() ? "" : ", ") + c;
   data.note = std::to_string(table.rows_used) + " rows of each technique's default variant" +
               (where.empty() ? "" : " with " + where) + "; a bar per " + table.spec.column_key +
               extras + (controls.empty() ? "" : "; controls left out: " + controls) +

@@ -27,7 +27,7 @@ struct ComparisonCell {
 
 struct ComparisonLine {
   std::string technique;
-  std::string variant;  // the technique's default variant
+  std::string variant;                // the technique's default variant
   std::vector<ComparisonCell> cells;  // one per ComparisonGroup::columns
 };
 
@@ -35,8 +35,8 @@ struct ComparisonLine {
 struct ComparisonGroup {
   // The facets' values in order: {"asset", "opensubdiv/catmark_cube"}, {"camera_path", "orbit"}.
   std::vector<std::pair<std::string, std::string>> facets;
-  std::vector<std::string> columns;  // the column_key values, then the extra columns' labels
-  size_t key_columns = 0;            // how many of `columns` are column_key values
+  std::vector<std::string> columns;   // the column_key values, then the extra columns' labels
+  size_t key_columns = 0;             // how many of `columns` are column_key values
   std::vector<ComparisonLine> lines;  // in the run's technique order
   // "opensubdiv/catmark_cube, camera_path orbit": the asset bare, a row key with its name.
   std::string name() const;

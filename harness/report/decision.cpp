@@ -39,14 +39,16 @@ const results::MeasureResult* measureOf(const results::Results& results,
 }
 
 bool endsWith(const std::string& text, const std::string& tail) {
-  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+  return text.size() >= tail.size() &&
+         text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 void readError(const results::MeasureResult* m, DecisionFigures* f) {
   if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
   for (const results::MetricRow& row : m->rows) {
     if (row.status != results::MeasureStatus::kOk) continue;
-    if (const auto value = rowMetric(row, "hausdorff")) f->error = std::max(f->error.value_or(0), *value);
+    if (const auto value = rowMetric(row, "hausdorff"))
+      f->error = std::max(f->error.value_or(0), *value);
   }
 }
 
@@ -104,7 +106,8 @@ void readInstructions(const results::MeasureResult* m, const std::string& path,
     if (row.status != results::MeasureStatus::kOk || rowKey(row, "expansion") != "vector" ||
         rowKey(row, "source") != "spirv_O" || !stage_of_path)
       continue;
-    if (const auto total = rowMetric(row, "total")) f->instructions = f->instructions.value_or(0) + *total;
+    if (const auto total = rowMetric(row, "total"))
+      f->instructions = f->instructions.value_or(0) + *total;
   }
 }
 
@@ -181,9 +184,8 @@ std::string whySentence(const DecisionCandidate& c, size_t candidates) {
                      : f.cpu == Watertightness::kCracked ? "cracked (no candidate is watertight)"
                                                          : "watertightness not measured";
   const bool within = f.error && *f.error <= kDecisionMaxError;
-  std::string text = fmt::format("{} ranks first of {}: {}, error {} rel_diag ({} 1e-3)",
-                                 c.name(), candidates, tier, number(f.error),
-                                 within ? "within" : "over");
+  std::string text = fmt::format("{} ranks first of {}: {}, error {} rel_diag ({} 1e-3)", c.name(),
+                                 candidates, tier, number(f.error), within ? "within" : "over");
   if (f.triangles_1px) {
     text += fmt::format(", {} triangles per frame at 1 px ({})", number(f.triangles_1px),
                         f.triangles_policy);
@@ -228,12 +230,13 @@ void markFront(std::vector<DecisionCandidate>* candidates) {
   for (DecisionCandidate& c : *candidates) {
     const DecisionFigures& f = c.figures;
     if (!f.error || !f.triangles_1px) continue;
-    c.on_front = std::none_of(candidates->begin(), candidates->end(), [&](const DecisionCandidate& o) {
-      const DecisionFigures& g = o.figures;
-      return g.error && g.triangles_1px && *g.error <= *f.error &&
-             *g.triangles_1px <= *f.triangles_1px &&
-             (*g.error < *f.error || *g.triangles_1px < *f.triangles_1px);
-    });
+    c.on_front =
+        std::none_of(candidates->begin(), candidates->end(), [&](const DecisionCandidate& o) {
+          const DecisionFigures& g = o.figures;
+          return g.error && g.triangles_1px && *g.error <= *f.error &&
+                 *g.triangles_1px <= *f.triangles_1px &&
+                 (*g.error < *f.error || *g.triangles_1px < *f.triangles_1px);
+        });
   }
 }
 
@@ -271,8 +274,8 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
     const std::string& variant = technique.variants.front();
     if (isControl(results, technique.technique, variant)) continue;
     if (measureOf(results, technique.technique, variant, asset, "error") == nullptr) continue;
-    decision.candidates.push_back(
-        {technique.technique, variant, decisionFigures(results, technique.technique, variant, asset)});
+    decision.candidates.push_back({technique.technique, variant,
+                                   decisionFigures(results, technique.technique, variant, asset)});
     if (measuredOnCompute(measureOf(results, technique.technique, variant, asset, "cracks"))) {
       decision.candidates.push_back(
           {technique.technique, variant,
@@ -297,7 +300,8 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
                      if (a.technique != b.technique || a.variant != b.variant) {
                        return a.technique + "/" + a.variant < b.technique + "/" + b.variant;
                      }
-                     const int tier_a = watertightTier(a.figures), tier_b = watertightTier(b.figures);
+                     const int tier_a = watertightTier(a.figures),
+                               tier_b = watertightTier(b.figures);
                      if (tier_a != tier_b) return tier_a < tier_b;
                      return a.path == kTessellatorPath && b.path != kTessellatorPath;
                    });

@@ -68,8 +68,8 @@ struct DecisionCandidate {
 struct AssetDecision {
   std::string asset;
   std::vector<DecisionCandidate> candidates;  // by kDecisionRule: the first is recommended
-  std::string why;        // one sentence: why the recommendation ranks first
-  std::string runner_up;  // one sentence: what the runner-up trades against it
+  std::string why;                            // one sentence: why the recommendation ranks first
+  std::string runner_up;                      // one sentence: what the runner-up trades against it
   std::string recommended() const { return candidates.empty() ? "" : candidates[0].name(); }
 };
 

@@ -46,8 +46,8 @@ Json tradeoffChart(const AssetDecision& d, const std::vector<const DecisionCandi
   Json series = Json::array();
   std::vector<double> xs, ys;
   for (const DecisionCandidate* c : points) {
-    const auto colour =
-        std::find(technique_order.begin(), technique_order.end(), c->technique) - technique_order.begin();
+    const auto colour = std::find(technique_order.begin(), technique_order.end(), c->technique) -
+                        technique_order.begin();
     Json point{{"x", *c->figures.triangles_1px},
                {"y", *c->figures.error},
                {"label", c->name() + (c->name() == d.recommended() ? " (recommended)" : "")},
@@ -97,11 +97,12 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
                           const std::vector<std::string>& technique_order, bool charts_available,
                           std::string* body, Json* charts) {
   *body += "<section id=\"tradeoffs\">\n<h2>Trade-off per asset</h2>\n";
-  *body += "<p class=\"note\">Each technique's default variant: error (Hausdorff, fraction "
-           "of the bounding-box diagonal) against triangles per frame for a 1 px tessellation "
-           "error (best factor policy). Ringed points and dashed line: the Pareto front; star: "
-           "the recommendation, by the rule in report.md's decision tables. Log axes only where "
-           "the points span over a decade with at most 3 empty decades.</p>\n";
+  *body +=
+      "<p class=\"note\">Each technique's default variant: error (Hausdorff, fraction "
+      "of the bounding-box diagonal) against triangles per frame for a 1 px tessellation "
+      "error (best factor policy). Ringed points and dashed line: the Pareto front; star: "
+      "the recommendation, by the rule in report.md's decision tables. Log axes only where "
+      "the points span over a decade with at most 3 empty decades.</p>\n";
   std::vector<std::string> without;
   std::string boxes;
   for (const AssetDecision& d : decisions) {
@@ -113,7 +114,8 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
     if (!charts_available) continue;
     const std::string canvas = fmt::format("chart-{}", charts->size());
     boxes += fmt::format(
-        "<div class=\"chart-box\"><canvas id=\"{}\" role=\"img\" aria-label=\"{}\"></canvas></div>\n",
+        "<div class=\"chart-box\"><canvas id=\"{}\" role=\"img\" "
+        "aria-label=\"{}\"></canvas></div>\n",
         canvas, escapeHtml("Trade-off: " + d.asset + ", recommended " + d.recommended()));
     charts->push_back(tradeoffChart(d, points, technique_order, canvas));
   }
@@ -121,9 +123,10 @@ void appendTradeoffCharts(const std::vector<AssetDecision>& decisions,
   if (!without.empty()) {
     std::string list;
     for (const std::string& asset : without) list += (list.empty() ? "" : "; ") + asset;
-    *body += "<p class=\"note\">No chart (fewer than two candidates with both figures; the "
-             "decision tables of report.md list them): " +
-             escapeHtml(list) + ".</p>\n";
+    *body +=
+        "<p class=\"note\">No chart (fewer than two candidates with both figures; the "
+        "decision tables of report.md list them): " +
+        escapeHtml(list) + ".</p>\n";
   }
   *body += "</section>\n";
 }

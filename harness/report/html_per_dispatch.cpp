@@ -40,7 +40,8 @@ std::map<std::string, std::vector<Curve>> curvesOf(const results::Results& resul
         const auto residual = rowMetric(row, "residual");
         const double dispatches = std::stod(rowKey(row, "iteration")) * per_iteration;
         if (!residual || *residual <= 0 || dispatches > kMaxDispatches) continue;
-        curve.points.push_back({{"x", dispatches}, {"y", *residual}, {"label", record.variant}, {"rows", 1}});
+        curve.points.push_back(
+            {{"x", dispatches}, {"y", *residual}, {"label", record.variant}, {"rows", 1}});
       }
       if (!curve.points.empty()) by_scenario[record.asset].push_back(std::move(curve));
     }
@@ -73,7 +74,8 @@ void appendPerDispatchCharts(const results::Results& results, bool charts_availa
     }
     const std::string canvas = fmt::format("chart-{}", charts->size());
     *body += fmt::format(
-        "<div class=\"chart-box\"><canvas id=\"{}\" role=\"img\" aria-label=\"{}\"></canvas></div>\n",
+        "<div class=\"chart-box\"><canvas id=\"{}\" role=\"img\" "
+        "aria-label=\"{}\"></canvas></div>\n",
         canvas, escapeHtml("Residual per dispatch: " + scenario));
     charts->push_back(Json{{"canvas", canvas},
                            {"kind", "line"},

@@ -111,8 +111,9 @@ std::string renderMarkdown(const results::Results& results) {
   appendChoiceScreen(results, measures, &out);
   appendPublishingScreen(results, measures, &out);
   out += "## Technique × asset matrices\n\n";
-  out += "Each technique's default variant (its first); the worst value over the rows of the "
-         "measure's summary scope. n/a: the technique does not take the asset; —: not run.\n\n";
+  out +=
+      "Each technique's default variant (its first); the worst value over the rows of the "
+      "measure's summary scope. n/a: the technique does not take the asset; —: not run.\n\n";
   for (const std::string& measure : measures) appendMatrix(results, measure, &out);
   out += "## Measures\n\n";
   for (const std::string& measure : measures) appendMeasureSection(results, measure, &out);
@@ -142,9 +143,10 @@ std::string renderMarkdown(const results::Results& results) {
         }
       }
     } else {
-      out += fmt::format("{} warnings on {} records (patch statistics and notes of the input): "
-                         "`tables/warnings.csv`.\n",
-                         warnings, records_warned);
+      out += fmt::format(
+          "{} warnings on {} records (patch statistics and notes of the input): "
+          "`tables/warnings.csv`.\n",
+          warnings, records_warned);
     }
   }
   return out;

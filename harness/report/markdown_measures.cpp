@@ -183,7 +183,8 @@ void appendTable(const results::Results& results, const std::string& measure_id,
           appendRow(out, cells);
           continue;
         }
-        const bool control = declaration != nullptr && results::isControlRow(*declaration, row.keys);
+        const bool control =
+            declaration != nullptr && results::isControlRow(*declaration, row.keys);
         cells.push_back(control ? "ok (control)" : "ok");
         for (const Column& column : columns) {
           std::string value;
@@ -224,7 +225,8 @@ void appendComparisonTables(const ComparisonTable& table, std::string* out) {
   const bool lead_column = !table.groups.front().facets.empty();
   std::vector<std::string> names;
   for (const ComparisonGroup& g : table.groups) {
-    if (std::find(names.begin(), names.end(), tableName(g)) == names.end()) names.push_back(tableName(g));
+    if (std::find(names.begin(), names.end(), tableName(g)) == names.end())
+      names.push_back(tableName(g));
   }
   for (const std::string& name : names) {
     std::vector<const ComparisonGroup*> groups;
@@ -234,7 +236,8 @@ void appendComparisonTables(const ComparisonTable& table, std::string* out) {
       groups.push_back(&g);
       for (size_t i = 0; i < g.columns.size(); ++i) {
         std::vector<std::string>& into = i < g.key_columns ? keys : extras;
-        if (std::find(into.begin(), into.end(), g.columns[i]) == into.end()) into.push_back(g.columns[i]);
+        if (std::find(into.begin(), into.end(), g.columns[i]) == into.end())
+          into.push_back(g.columns[i]);
       }
     }
     keys.insert(keys.end(), extras.begin(), extras.end());
@@ -251,10 +254,10 @@ void appendComparisonTables(const ComparisonTable& table, std::string* out) {
         cells.push_back(g->lines[l].technique);
         for (const std::string& column : keys) {
           const auto at = std::find(g->columns.begin(), g->columns.end(), column);
-          cells.push_back(at == g->columns.end()
-                              ? "—"
-                              : comparisonCell(g->lines[l].cells[size_t(at - g->columns.begin())],
-                                               table.unit));
+          cells.push_back(
+              at == g->columns.end()
+                  ? "—"
+                  : comparisonCell(g->lines[l].cells[size_t(at - g->columns.begin())], table.unit));
         }
         appendRow(out, cells);
       }
@@ -276,7 +279,8 @@ void appendComparisons(const results::Results& results,
     if (!spec.valid_flag.empty()) rows += " or " + spec.valid_flag + " = 0";
     if (!table.controls_left_out.empty()) {
       std::string controls;
-      for (const std::string& c : table.controls_left_out) controls += (controls.empty() ? "" : ", ") + c;
+      for (const std::string& c : table.controls_left_out)
+        controls += (controls.empty() ? "" : ", ") + c;
       rows += "; controls left out: " + controls;
     }
     *out += rows + ".\n\n";
@@ -349,7 +353,8 @@ void appendMeasureSection(const results::Results& results, const std::string& me
     }
     std::string status;
     if (line.skipped_rows > 0) status += fmt::format("{} skipped", line.skipped_rows);
-    if (line.failed_rows > 0) status += fmt::format("{}{} failed", status.empty() ? "" : ", ", line.failed_rows);
+    if (line.failed_rows > 0)
+      status += fmt::format("{}{} failed", status.empty() ? "" : ", ", line.failed_rows);
     if (!status.empty()) status += ": " + line.first_reason;
     cells.push_back(status);
     appendRow(out, cells);

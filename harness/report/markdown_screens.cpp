@@ -67,9 +67,10 @@ std::string headlineList(const results::Results& results, const std::string& mea
 void appendRegressionScreen(const results::Results& results,
                             const std::vector<std::string>& measures, std::string* out) {
   *out += "## Regression tracking\n\n";
-  *out += "Every row of every measure, by status. `tessbench compare BASE NEW` lists what changed "
-          "against another run (the committed baseline is `results/baseline`), worst first, by "
-          "each metric's declared direction, and exits 1 on a worsened or missing figure.\n\n";
+  *out +=
+      "Every row of every measure, by status. `tessbench compare BASE NEW` lists what changed "
+      "against another run (the committed baseline is `results/baseline`), worst first, by "
+      "each metric's declared direction, and exits 1 on a worsened or missing figure.\n\n";
   appendHeader(out, {"measure", "records", "rows ok", "rows skipped", "rows failed", "headline"});
   std::vector<std::string> problems;
   for (const std::string& measure : measures) {
@@ -118,9 +119,9 @@ void appendCoverage(const results::Results& results, std::string* out) {
       if (skip.technique != technique.technique) continue;
       if (refused++ == 0) example = skip.asset + ": " + skip.reason;
     }
-    appendRow(out, {technique.technique,
-                    fmt::format("{} of {}", measured.size(), results.assets.size()),
-                    std::to_string(refused), example});
+    appendRow(out,
+              {technique.technique, fmt::format("{} of {}", measured.size(), results.assets.size()),
+               std::to_string(refused), example});
   }
   *out += "\n";
 }
@@ -131,12 +132,14 @@ void appendCoverage(const results::Results& results, std::string* out) {
 void appendChoiceScreen(const results::Results& results, const std::vector<std::string>&,
                         std::string* out) {
   *out += "## Choosing a technique per asset\n\n";
-  *out += "Which techniques take which assets (every refusal with its reason: \"Not measured\" "
-          "below):\n\n";
+  *out +=
+      "Which techniques take which assets (every refusal with its reason: \"Not measured\" "
+      "below):\n\n";
   appendCoverage(results, out);
-  *out += "The decision per asset is above (\"Decision per surface asset\"); `tessbench "
-          "advise ASSET` ranks every candidate under constraints (error, memory, "
-          "watertightness, instructions).\n\n";
+  *out +=
+      "The decision per asset is above (\"Decision per surface asset\"); `tessbench "
+      "advise ASSET` ranks every candidate under constraints (error, memory, "
+      "watertightness, instructions).\n\n";
 }
 
 namespace {
@@ -195,7 +198,8 @@ void appendFamilyTable(const results::Results& results, const std::vector<std::s
       std::vector<std::string> row{technique.technique, variant};
       std::set<std::string> assets;
       for (size_t i = 0; i < summaries.size(); ++i) {
-        row.push_back(figureCell(results, summaries[i], metrics[i], technique.technique, variant, &assets));
+        row.push_back(
+            figureCell(results, summaries[i], metrics[i], technique.technique, variant, &assets));
         used[i] = used[i] || !row.back().empty();
       }
       if (assets.empty()) continue;
@@ -207,7 +211,9 @@ void appendFamilyTable(const results::Results& results, const std::vector<std::s
   *out += surface ? "### Surface techniques\n\n" : "### Simulations\n\n";
   std::vector<std::string> header{"technique", "variant"};
   for (size_t i = 0; i < summaries.size(); ++i) {
-    if (used[i]) header.push_back(summaries[i].measure + ": " + metricHeader(results, summaries[i].measure, metrics[i]));
+    if (used[i])
+      header.push_back(summaries[i].measure + ": " +
+                       metricHeader(results, summaries[i].measure, metrics[i]));
   }
   header.push_back(surface ? "assets covered" : "scenarios covered");
   appendHeader(out, header);
@@ -229,13 +235,14 @@ void appendFamilyTable(const results::Results& results, const std::vector<std::s
 void appendPublishingScreen(const results::Results& results,
                             const std::vector<std::string>& measures, std::string* out) {
   *out += "## Publishing tables\n\n";
-  *out += "Per family, technique and variant, each measure's first headline figure over the "
-          "assets (or scenarios) the variant was measured on: median (worst); the last column "
-          "says how many, so two medians over different counts are not over the same assets. " +
-          summaryRowsNote(results, "culling") +
-          ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
-          "--format markdown|csv|latex` renders one measure's summary with units and this run's "
-          "context, ready to publish.\n\n";
+  *out +=
+      "Per family, technique and variant, each measure's first headline figure over the "
+      "assets (or scenarios) the variant was measured on: median (worst); the last column "
+      "says how many, so two medians over different counts are not over the same assets. " +
+      summaryRowsNote(results, "culling") +
+      ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
+      "--format markdown|csv|latex` renders one measure's summary with units and this run's "
+      "context, ready to publish.\n\n";
   appendFamilyTable(results, measures, true, out);
   appendFamilyTable(results, measures, false, out);
 }
@@ -243,16 +250,17 @@ void appendPublishingScreen(const results::Results& results,
 // A measure's technique × asset matrix: each technique's default variant (its first), the
 // worst value of the first headline metric over the rows; "n/a" where the technique does
 // not take the asset, "—" where the measure did not run. Only the techniques with a record
-// of the measure, or a refusal of an input it ran on, are columns, and only the inputs (assets, then scenarios) where some cell
-// says more than "—" are rows, so a simulation's matrix lists its scenarios and a surface
-// measure's leaves out displaced assets (whose rows its summary scope excludes).
+// of the measure, or a refusal of an input it ran on, are columns, and only the inputs (assets,
+// then scenarios) where some cell says more than "—" are rows, so a simulation's matrix lists its
+// scenarios and a surface measure's leaves out displaced assets (whose rows its summary scope
+// excludes).
 void appendMatrix(const results::Results& results, const std::string& measure, std::string* out) {
   const std::string metric = firstHeadline(results, measure);
   if (metric.empty()) return;
   const results::Direction direction = directionOf(results, measure, metric);
   const std::string unit = unitOf(results, measure, metric);
-  const MeasureSummary summary =
-      summarizeMeasure(results, measure, SummaryGrouping::kPerAsset, {metric}, summaryRowsOf(results, measure));
+  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kPerAsset,
+                                                  {metric}, summaryRowsOf(results, measure));
   std::set<std::string> measured_by;
   std::vector<std::string> inputs;
   for (const results::AssetSummary& asset : results.assets) inputs.push_back(asset.name);

@@ -208,8 +208,7 @@ RowX rowX(const results::Record& record, const results::MetricRow& row,
 void addValue(std::vector<ChartValues>* charts, const results::Record& record, RowX at,
               const std::string& facet, const std::string& series, double y) {
   ChartValues& chart = findOrAdd(
-      *charts, [&](const ChartValues& c) { return c.facet == facet; },
-      ChartValues{facet, {}, {}});
+      *charts, [&](const ChartValues& c) { return c.facet == facet; }, ChartValues{facet, {}, {}});
   const std::optional<std::string>& category = at.category;
   std::optional<double>& x = at.x;
   if (category && std::find(chart.categories.begin(), chart.categories.end(), *category) ==
@@ -228,8 +227,7 @@ void addValue(std::vector<ChartValues>* charts, const results::Record& record, R
   PointValues& point = findOrAdd(
       line.points, [&](const PointValues& p) { return p.x == *x && p.record_label == own; },
       PointValues{*x, category.value_or(""), own, {}, {}});
-  if (std::find(point.labels.begin(), point.labels.end(), record_label) ==
-      point.labels.end()) {
+  if (std::find(point.labels.begin(), point.labels.end(), record_label) == point.labels.end()) {
     point.labels.push_back(record_label);
   }
   point.ys.push_back(y);

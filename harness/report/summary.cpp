@@ -88,8 +88,7 @@ MeasureSummary summarizeMeasure(const results::Results& results, const std::stri
         }
         return lines[it->second];
       };
-      const std::string first_path =
-          m.rows.empty() ? std::string() : pathKeyOf(m.rows.front());
+      const std::string first_path = m.rows.empty() ? std::string() : pathKeyOf(m.rows.front());
       if (m.status != results::MeasureStatus::kOk) {
         LineValues& target = lineOf(first_path);
         (m.status == results::MeasureStatus::kSkipped ? target.line.skipped_rows

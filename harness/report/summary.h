@@ -33,7 +33,7 @@ double worstOf(const MetricStats& stats, results::Direction direction);
 struct SummaryLine {
   std::string technique;
   std::string variant;
-  std::string asset;                         // empty in a line aggregated over assets
+  std::string asset;  // empty in a line aggregated over assets
   // The rows' path key (tessellator | compute) where the measure keys its rows by the
   // pipeline's path (cracks, memory): a line per path; empty where it does not.
   std::string path;
@@ -48,12 +48,12 @@ struct SummaryLine {
 struct MeasureSummary {
   std::string measure;
   const results::MeasureDeclaration* declaration = nullptr;  // null for undeclared results
-  std::vector<std::string> metrics;                 // the metrics summarised, in order
-  std::vector<SummaryLine> lines;                   // in record order
+  std::vector<std::string> metrics;                          // the metrics summarised, in order
+  std::vector<SummaryLine> lines;                            // in record order
 };
 
 enum class SummaryGrouping {
-  kPerAsset,    // a line per technique × variant × asset
+  kPerAsset,      // a line per technique × variant × asset
   kAcrossAssets,  // a line per technique × variant, over every asset's rows
 };
 

@@ -108,8 +108,12 @@ namespace {
 TextTable publishedMemory(const results::Results& results) {
   TextTable table;
   table.title = "Memory against plain triangle meshes, published and ours";
-  table.header = {"source", "technique/variant", "level", "plain mesh (MB)",
-                  "technique with displacement (MB)", "plain / technique (ratio)"};
+  table.header = {"source",
+                  "technique/variant",
+                  "level",
+                  "plain mesh (MB)",
+                  "technique with displacement (MB)",
+                  "plain / technique (ratio)"};
   table.numeric = {false, false, true, true, true, true};
   // (technique/variant, level) -> per-asset values.
   struct Values {
@@ -144,8 +148,9 @@ TextTable publishedMemory(const results::Results& results) {
       const auto it = ours.find({who, published.level});
       if (it == ours.end()) continue;
       const Values& v = it->second;
-      table.rows.push_back({"ours", who, std::to_string(published.level), figure(medianValue(v.plain_mb)),
-                            figure(medianValue(v.technique_mb)), figure(medianValue(v.ratio))});
+      table.rows.push_back({"ours", who, std::to_string(published.level),
+                            figure(medianValue(v.plain_mb)), figure(medianValue(v.technique_mb)),
+                            figure(medianValue(v.ratio))});
     }
   }
   table.footnote.push_back("Published: " + sourceCitation(kPublishedMemorySeed) +
@@ -193,10 +198,14 @@ TextTable publishedInstructions(const results::Results& results) {
         for (const results::Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
         // published_loads 0: not published (the measure's notes).
         if (v["published_loads"] == "0") v["published_loads"] = "";
-        std::vector<std::string> line{source_name, record.technique + "/" + record.variant,
+        std::vector<std::string> line{source_name,
+                                      record.technique + "/" + record.variant,
                                       what != row.keys.end() ? what->second : "",
-                                      v["published_alu"], v["published_loads"],
-                                      v["ours_alu_vector"], v["ours_alu_scalar"], v["ours_loads"]};
+                                      v["published_alu"],
+                                      v["published_loads"],
+                                      v["ours_alu_vector"],
+                                      v["ours_alu_scalar"],
+                                      v["ours_loads"]};
         const auto [it, added] = seen.emplace(line, table.rows.size());
         if (added) {
           line.push_back("1");
@@ -235,29 +244,56 @@ std::string latexEscape(std::string_view text) {
   std::string out;
   for (char ch : text) {
     switch (ch) {
-      case '&': out += "\\&"; break;
-      case '%': out += "\\%"; break;
-      case '$': out += "\\$"; break;
-      case '#': out += "\\#"; break;
-      case '_': out += "\\_"; break;
-      case '{': out += "\\{"; break;
-      case '}': out += "\\}"; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      case '<': out += "\\textless{}"; break;
-      case '>': out += "\\textgreater{}"; break;
-      case '\n': out += ' '; break;
-      default: out += ch;
+      case '&':
+        out += "\\&";
+        break;
+      case '%':
+        out += "\\%";
+        break;
+      case '$':
+        out += "\\$";
+        break;
+      case '#':
+        out += "\\#";
+        break;
+      case '_':
+        out += "\\_";
+        break;
+      case '{':
+        out += "\\{";
+        break;
+      case '}':
+        out += "\\}";
+        break;
+      case '~':
+        out += "\\textasciitilde{}";
+        break;
+      case '^':
+        out += "\\textasciicircum{}";
+        break;
+      case '\\':
+        out += "\\textbackslash{}";
+        break;
+      case '<':
+        out += "\\textless{}";
+        break;
+      case '>':
+        out += "\\textgreater{}";
+        break;
+      case '\n':
+        out += ' ';
+        break;
+      default:
+        out += ch;
     }
   }
   return out;
 }
 
 std::string csvField(std::string_view text) {
-  const bool quote = text.find_first_of(",\"\r\n") != std::string_view::npos ||
-                     (!text.empty() && (text.front() == '#' || text.front() == ' ' ||
-                                        text.back() == ' '));
+  const bool quote =
+      text.find_first_of(",\"\r\n") != std::string_view::npos ||
+      (!text.empty() && (text.front() == '#' || text.front() == ' ' || text.back() == ' '));
   if (!quote) return std::string(text);
   std::string out = "\"";
   for (char ch : text) {
@@ -272,9 +308,12 @@ namespace {
 std::string markdownCell(const std::string& text) {
   std::string out;
   for (char ch : text) {
-    if (ch == '|') out += "\\|";
-    else if (ch == '\n') out += ' ';
-    else out += ch;
+    if (ch == '|')
+      out += "\\|";
+    else if (ch == '\n')
+      out += ' ';
+    else
+      out += ch;
   }
   return out.empty() ? "n/a" : out;
 }
@@ -320,7 +359,8 @@ std::string latexLine(const std::vector<std::string>& cells) {
 std::string renderLatex(const TextTable& t) {
   std::string spec;
   for (bool numeric : t.numeric) spec += numeric ? 'r' : 'l';
-  std::string out = "% " + latexEscape(t.title) + " (tessbench table; needs \\usepackage{booktabs})\n";
+  std::string out =
+      "% " + latexEscape(t.title) + " (tessbench table; needs \\usepackage{booktabs})\n";
   out += "\\begin{tabular}{" + spec + "}\n\\toprule\n" + latexLine(t.header) + "\\midrule\n";
   for (const auto& row : t.rows) out += latexLine(row);
   out += "\\bottomrule\n\\end{tabular}\n\\par\\smallskip\n{\\footnotesize\n";

@@ -17,11 +17,11 @@ std::optional<TableFormat> parseTableFormat(std::string_view text);
 
 // A table before rendering: header cells, rows of as many cells, and the footnote lines.
 struct TextTable {
-  std::string title;                         // what the table shows (the declaration's title)
-  std::vector<std::string> header;           // cells, units in parentheses
-  std::vector<bool> numeric;                 // per column: right-aligned figures
+  std::string title;                           // what the table shows (the declaration's title)
+  std::vector<std::string> header;             // cells, units in parentheses
+  std::vector<bool> numeric;                   // per column: right-aligned figures
   std::vector<std::vector<std::string>> rows;  // "" = no figure
-  std::vector<std::string> footnote;         // lines: sources, the run's context
+  std::vector<std::string> footnote;           // lines: sources, the run's context
 };
 
 struct SummaryTableOptions {

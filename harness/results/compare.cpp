@@ -57,7 +57,8 @@ class Comparer {
     }
     for (const Record& record : current_.records) {
       if (!seen.contains(recordName(record))) {
-        add({ChangeKind::kAdded, recordName(record), "", "", "", 0, 0, "record only in the new run"});
+        add({ChangeKind::kAdded, recordName(record), "", "", "", 0, 0,
+             "record only in the new run"});
       }
     }
     if (base_.context.vulkan_device != current_.context.vulkan_device) {
@@ -159,15 +160,14 @@ class Comparer {
         override_it != options_.metric_thresholds.end() ? override_it->second : options_.threshold;
     const bool both_nan = std::isnan(base.value) && std::isnan(current);
     const double scale = std::max(std::fabs(base.value), std::fabs(current));
-    const bool changed =
-        !both_nan && (std::isnan(base.value) != std::isnan(current) ||
-                      std::fabs(current - base.value) > threshold * scale);
+    const bool changed = !both_nan && (std::isnan(base.value) != std::isnan(current) ||
+                                       std::fabs(current - base.value) > threshold * scale);
     if (!changed) return;
     const Direction direction = directionOf(base_, current_, measure, base.name);
     ChangeKind kind = ChangeKind::kChanged;
     if (direction != Direction::kNone && !std::isnan(base.value) && !std::isnan(current)) {
-      const bool worse = direction == Direction::kLowerIsBetter ? current > base.value
-                                                                : current < base.value;
+      const bool worse =
+          direction == Direction::kLowerIsBetter ? current > base.value : current < base.value;
       kind = worse ? ChangeKind::kRegression : ChangeKind::kImprovement;
     } else if (direction != Direction::kNone) {
       kind = ChangeKind::kRegression;  // a figure that became NaN (or stopped being one)
@@ -235,19 +235,17 @@ Comparison compareResults(const Results& base, const Results& current,
   return comparison;
 }
 
-Comparison compareRuns(const RunData& base, const RunData& current,
-                       const CompareOptions& options) {
+Comparison compareRuns(const RunData& base, const RunData& current, const CompareOptions& options) {
   Comparison comparison = Comparer(base.results, current.results, options).run();
   comparison.missing_fails = !options.only_common;
   if (!options.timings) {
     comparison.timing_notes.push_back("timings: not compared (--no-timings)");
   } else if (!base.timings || !current.timings) {
-    comparison.timing_notes.push_back(
-        std::string("timings: not compared (") +
-        (!base.timings && !current.timings ? "neither run has"
-         : !base.timings                   ? "the base run has no"
-                                           : "the new run has no") +
-        " timings.json)");
+    comparison.timing_notes.push_back(std::string("timings: not compared (") +
+                                      (!base.timings && !current.timings ? "neither run has"
+                                       : !base.timings                   ? "the base run has no"
+                                                                         : "the new run has no") +
+                                      " timings.json)");
   } else {
     compareTimings(*base.timings, *current.timings, options, &comparison);
   }
@@ -287,8 +285,8 @@ std::string renderComparison(const Comparison& comparison, size_t limit) {
         std::isnan(c.p_value) ? "" : fmt::format("{:.3g}", c.p_value));
   }
   if (shown < comparison.changes.size()) {
-    out += fmt::format("\n{} more changes not shown (--limit).\n",
-                       comparison.changes.size() - shown);
+    out +=
+        fmt::format("\n{} more changes not shown (--limit).\n", comparison.changes.size() - shown);
   }
   return out;
 }
@@ -299,13 +297,12 @@ std::string renderTimingTable(const Comparison& comparison) {
       "| timing | record | measure | samples | base median (s) | new median (s) | change | p "
       "(U test) |\n|---|---|---|---|---|---|---|---|\n";
   for (const TimingComparison& t : comparison.timings) {
-    out += fmt::format("| {} | {} | {} | {} vs {} | {} | {} | {} | {:.3g} |\n",
-                       t.kind == ChangeKind::kChanged ? "same" : toString(t.kind), t.record,
-                       t.measure, t.base_samples, t.current_samples, formatValue(t.base),
-                       formatValue(t.current),
-                       t.base != 0 ? fmt::format("{:+.3g}%", 100 * (t.current - t.base) / t.base)
-                                   : "from 0",
-                       t.p_value);
+    out += fmt::format(
+        "| {} | {} | {} | {} vs {} | {} | {} | {} | {:.3g} |\n",
+        t.kind == ChangeKind::kChanged ? "same" : toString(t.kind), t.record, t.measure,
+        t.base_samples, t.current_samples, formatValue(t.base), formatValue(t.current),
+        t.base != 0 ? fmt::format("{:+.3g}%", 100 * (t.current - t.base) / t.base) : "from 0",
+        t.p_value);
   }
   return out;
 }

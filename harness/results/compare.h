@@ -71,17 +71,18 @@ struct TimingComparison {
   std::string record;  // "technique/variant asset"
   std::string measure;
   size_t base_samples = 0, current_samples = 0;
-  double base = 0, current = 0;  // median wall seconds of each side's samples, s
-  double p_value = NAN;          // two-sided Mann–Whitney U test
+  double base = 0, current = 0;            // median wall seconds of each side's samples, s
+  double p_value = NAN;                    // two-sided Mann–Whitney U test
   ChangeKind kind = ChangeKind::kChanged;  // kRegression, kImprovement, or kChanged: neither
 };
 
 struct Comparison {
-  std::vector<MetricChange> changes;  // worst first: missing, regressions, changed, improvements, added
-  size_t figures_compared = 0;        // base figures (metric values) looked at
+  std::vector<MetricChange>
+      changes;                  // worst first: missing, regressions, changed, improvements, added
+  size_t figures_compared = 0;  // base figures (metric values) looked at
   std::vector<std::string> context_notes;  // e.g. the two runs used different devices
-  size_t timings_tested = 0;    // record × measure timings put to the U test
-  size_t timings_untested = 0;  // in both runs, but with too few samples on a side
+  size_t timings_tested = 0;               // record × measure timings put to the U test
+  size_t timings_untested = 0;             // in both runs, but with too few samples on a side
   // One line each: how timings were compared, or why they were not.
   std::vector<std::string> timing_notes;
   std::vector<TimingComparison> timings;  // every timing tested, in the base run's order
@@ -106,8 +107,7 @@ struct RunData {
 
 // The deterministic figures, then the timings (unless options.timings is off, or a run has
 // no timings.json: a timing note says so), all changes worst first.
-Comparison compareRuns(const RunData& base, const RunData& current,
-                       const CompareOptions& options);
+Comparison compareRuns(const RunData& base, const RunData& current, const CompareOptions& options);
 
 const char* toString(ChangeKind kind);
 

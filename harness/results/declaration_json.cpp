@@ -14,10 +14,17 @@ using json_detail::field;
 Json plotsToJson(const std::vector<PlotSpec>& specs) {
   Json plots = Json::array();
   for (const PlotSpec& plot : specs) {
-    plots.push_back({{"title", plot.title}, {"kind", toString(plot.kind)}, {"x", plot.x},
-                     {"y", plot.y},         {"series", plot.series},        {"facet", plot.facet},
-                     {"where", plot.where}, {"log_x", plot.log_x},          {"log_y", plot.log_y},
-                     {"pareto_front", plot.pareto_front}, {"reduce", toString(plot.reduce)}});
+    plots.push_back({{"title", plot.title},
+                     {"kind", toString(plot.kind)},
+                     {"x", plot.x},
+                     {"y", plot.y},
+                     {"series", plot.series},
+                     {"facet", plot.facet},
+                     {"where", plot.where},
+                     {"log_x", plot.log_x},
+                     {"log_y", plot.log_y},
+                     {"pareto_front", plot.pareto_front},
+                     {"reduce", toString(plot.reduce)}});
   }
   return plots;
 }
@@ -126,7 +133,8 @@ MeasureDeclaration declarationFromJson(const Json& json, const std::string& wher
   if (json.contains("plots")) {
     const Json plots = field<Json>(json, "plots", where);
     for (size_t i = 0; i < plots.size(); ++i) {
-      declaration.plots.push_back(plotFromJson(plots[i], where + ".plots[" + std::to_string(i) + "]"));
+      declaration.plots.push_back(
+          plotFromJson(plots[i], where + ".plots[" + std::to_string(i) + "]"));
     }
   }
   // Absent in results written before controls per row and comparisons.

@@ -22,8 +22,8 @@ std::string deviceCaveat(const std::string& vulkan_device) {
   std::string name = vulkan_device.substr(0, vulkan_device.find(" ("));
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  constexpr std::array<std::string_view, 9> kDataCentre = {
-      "h100", "h200", "h800", "h20", "a100", "a800", "a30", "b100", "b200"};
+  constexpr std::array<std::string_view, 9> kDataCentre = {"h100", "h200", "h800", "h20", "a100",
+                                                           "a800", "a30",  "b100", "b200"};
   const bool data_centre =
       name.find("nvidia") != std::string::npos &&
       std::any_of(kDataCentre.begin(), kDataCentre.end(), [&](std::string_view part) {

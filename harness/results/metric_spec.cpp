@@ -143,8 +143,9 @@ bool rowInScope(const RowScope& scope, const std::map<std::string, std::string>&
 bool isControlRow(const MeasureDeclaration& declaration,
                   const std::map<std::string, std::string>& keys) {
   // An empty entry would make every row a control: it marks none.
-  return std::any_of(declaration.control_rows.begin(), declaration.control_rows.end(),
-                     [&](const RowScope& scope) { return !scope.empty() && rowInScope(scope, keys); });
+  return std::any_of(
+      declaration.control_rows.begin(), declaration.control_rows.end(),
+      [&](const RowScope& scope) { return !scope.empty() && rowInScope(scope, keys); });
 }
 
 const MetricSpec* MeasureDeclaration::find(std::string_view name) const {

@@ -110,9 +110,9 @@ struct ComparisonColumn {
 struct ComparisonSpec {
   // The lead line: what the figures are and which way is better.
   std::string title;
-  RowScope where = {};          // the rows compared ({"summary": "max_error_1px"})
-  std::string column_key;       // "policy": a column per value
-  std::string metric;           // "triangles_per_frame_at_target"
+  RowScope where = {};     // the rows compared ({"summary": "max_error_1px"})
+  std::string column_key;  // "policy": a column per value
+  std::string metric;      // "triangles_per_frame_at_target"
   // A flag metric: a row with it 0 shows no figure ("target_reached"); empty: none.
   std::string valid_flag = {};
   std::vector<ComparisonColumn> extra_columns = {};

@@ -1,7 +1,5 @@
 #include "harness/results/results_json.h"
 
-#include "harness/results/json_field.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +7,8 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "harness/results/json_field.h"
 
 namespace tb::results {
 namespace {
@@ -20,8 +20,8 @@ using json_detail::field;
 // else as a double in its shortest round-trip form.
 Json metricValueToJson(double value) {
   constexpr double kLargestExactInteger = 9007199254740992.0;  // 2^53
-  if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < kLargestExactInteger &&
-      !(value == 0 && std::signbit(value))) {
+  if (std::isfinite(value) && value == std::floor(value) &&
+      std::fabs(value) < kLargestExactInteger && !(value == 0 && std::signbit(value))) {
     return static_cast<int64_t>(value);
   }
   return value;
@@ -67,9 +67,12 @@ Json measureToJson(const MeasureResult& measure) {
     }
     rows.push_back(std::move(line));
   }
-  return {{"measure", measure.measure}, {"status", toString(measure.status)},
-          {"reason", measure.reason},   {"notes", measure.notes},
-          {"keys", key_names},          {"metrics", metric_names},
+  return {{"measure", measure.measure},
+          {"status", toString(measure.status)},
+          {"reason", measure.reason},
+          {"notes", measure.notes},
+          {"keys", key_names},
+          {"metrics", metric_names},
           {"rows", rows}};
 }
 
@@ -287,9 +290,12 @@ Json toJson(const Results& results) {
   shardFieldsToJson(c, &context);
   Json assets = Json::array();
   for (const AssetSummary& a : results.assets) {
-    Json asset = {{"name", a.name},         {"path", a.path},
-                  {"faces", a.faces},       {"vertices", a.vertices},
-                  {"face_kinds", a.face_kinds}, {"normals_computed", a.normals_computed}};
+    Json asset = {{"name", a.name},
+                  {"path", a.path},
+                  {"faces", a.faces},
+                  {"vertices", a.vertices},
+                  {"face_kinds", a.face_kinds},
+                  {"normals_computed", a.normals_computed}};
     if (!a.warnings.empty()) asset["warnings"] = a.warnings;
     assets.push_back(std::move(asset));
   }

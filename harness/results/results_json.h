@@ -16,7 +16,8 @@ nlohmann::ordered_json toJson(const Results& results);
 // Optional fields (summary_scope, plots, control_rows, comparisons) are left out when empty,
 // and read as empty when absent (results.json files written before them). declaration_json.cpp.
 nlohmann::ordered_json toJson(const MeasureDeclaration& declaration);
-MeasureDeclaration declarationFromJson(const nlohmann::ordered_json& json, const std::string& where);
+MeasureDeclaration declarationFromJson(const nlohmann::ordered_json& json,
+                                       const std::string& where);
 // Throws std::runtime_error naming the field when the document does not match
 // the schema (or has another schema_version).
 Results resultsFromJson(const nlohmann::ordered_json& document);
@@ -34,6 +35,6 @@ std::string recordJsonLine(const Record& record);
 // Pretty (2-space indent) with each row, and every other array without objects, on one
 // line; final newline.
 std::string serializeResults(const Results& results);
-Results readResultsFile(const std::string& path);       // throws naming the file
+Results readResultsFile(const std::string& path);  // throws naming the file
 
 }  // namespace tb::results

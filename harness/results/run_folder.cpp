@@ -219,8 +219,8 @@ std::string PendingRunFolder::finish() {
   }
   ::unlink((pending_path_ + "/" + kIncompleteMarker).c_str());
   // RENAME_NOREPLACE: a folder that appeared under the final name meanwhile is never replaced.
-  int status = ::renameat2(AT_FDCWD, pending_path_.c_str(), AT_FDCWD, final_path_.c_str(),
-                           RENAME_NOREPLACE);
+  int status =
+      ::renameat2(AT_FDCWD, pending_path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_NOREPLACE);
   if (status != 0 && (errno == EINVAL || errno == ENOSYS)) {  // a file system without it
     errno = EEXIST;
     status = pathExists(final_path_) ? -1 : ::rename(pending_path_.c_str(), final_path_.c_str());
@@ -240,10 +240,11 @@ void requireFinishedRunFolder(const std::string& folder) {
   const bool marked = pathExists(path + "/" + kIncompleteMarker);
   if (!marked && !path.ends_with(kIncompleteSuffix)) return;
   const std::string journal = path + "/" + kRecordJournal;
-  const std::string records =
-      pathExists(journal) ? std::to_string(countLines(journal)) + " records journaled" : "no journal";
-  throw std::runtime_error(folder + ": unfinished run (it stopped before completing; " +
-                           records + "); only finished runs are read, so rerun it");
+  const std::string records = pathExists(journal)
+                                  ? std::to_string(countLines(journal)) + " records journaled"
+                                  : "no journal";
+  throw std::runtime_error(folder + ": unfinished run (it stopped before completing; " + records +
+                           "); only finished runs are read, so rerun it");
 }
 
 void writeNewFile(const std::string& path, const std::string& contents) {

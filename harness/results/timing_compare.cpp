@@ -24,8 +24,7 @@ double medianOf(std::vector<double> samples) {
   assert(!samples.empty());
   std::sort(samples.begin(), samples.end());
   const size_t middle = samples.size() / 2;
-  return samples.size() % 2 == 1 ? samples[middle]
-                                 : 0.5 * (samples[middle - 1] + samples[middle]);
+  return samples.size() % 2 == 1 ? samples[middle] : 0.5 * (samples[middle - 1] + samples[middle]);
 }
 
 void compareTimings(const RunTimings& base, const RunTimings& current,
@@ -55,8 +54,8 @@ void compareTimings(const RunTimings& base, const RunTimings& current,
     }
     const std::string record =
         base_entry.technique + "/" + base_entry.variant + " " + base_entry.asset;
-    comparison->timings.push_back({record, base_entry.measure, n_base, n_current, base_median,
-                                   current_median, p, kind});
+    comparison->timings.push_back(
+        {record, base_entry.measure, n_base, n_current, base_median, current_median, p, kind});
     if (kind == ChangeKind::kChanged) continue;  // not significant, or within the threshold
     MetricChange change;
     change.kind = kind;
@@ -71,9 +70,9 @@ void compareTimings(const RunTimings& base, const RunTimings& current,
   }
   if (comparison->timings_tested > 0 || comparison->timings_untested == 0) {
     comparison->timing_notes.push_back(fmt::format(
-      "timings: {} tested by a two-sided Mann–Whitney U test (a change when p < {:g} and the "
-      "median moved by more than {:g}%)",
-      comparison->timings_tested, options.alpha, 100 * options.time_threshold));
+        "timings: {} tested by a two-sided Mann–Whitney U test (a change when p < {:g} and the "
+        "median moved by more than {:g}%)",
+        comparison->timings_tested, options.alpha, 100 * options.time_threshold));
   }
   if (few_samples > 0) {
     comparison->timing_notes.push_back(fmt::format(

@@ -123,8 +123,8 @@ std::vector<AssetRef> productionAssets() {
   const std::vector<AssetRef> bundled = bundledAssets();
   std::vector<AssetRef> assets;
   for (size_t i = 0; i < list["assets"].size(); ++i) {
-    assets.push_back(productionAsset(list["assets"][i], bundled, file,
-                                     "assets[" + std::to_string(i) + "]"));
+    assets.push_back(
+        productionAsset(list["assets"][i], bundled, file, "assets[" + std::to_string(i) + "]"));
   }
   return assets;
 }

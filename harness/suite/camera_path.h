@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/mesh/mesh.h"
 #include "core/mesh/bounds.h"
+#include "core/mesh/mesh.h"
 #include "core/mesh/vec.h"
 #include "core/view/camera_path_views.h"
 #include "core/view/view.h"

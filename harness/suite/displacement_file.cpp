@@ -1,10 +1,9 @@
 #include "harness/suite/displacement_file.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/displacement/exr_io.h"
 #include "core/mesh/input_error.h"
@@ -29,8 +28,7 @@ T field(const nlohmann::json& json, const std::string& key, const std::string& f
   }
 }
 
-void expectEqual(uint64_t sidecar, uint64_t exr, const std::string& what,
-                 const std::string& file) {
+void expectEqual(uint64_t sidecar, uint64_t exr, const std::string& what, const std::string& file) {
   if (sidecar != exr) {
     throw mesh::InputError(
         file, what,
@@ -135,8 +133,8 @@ std::shared_ptr<const measures::DisplacementTarget> rebuildTarget(
     throw mesh::InputError(input.path + ".json", "target_source",
                            "missing: the target cannot be rebuilt");
   }
-  target->field = std::make_shared<ref::TriangleDistanceField>(
-      target->positions, target->triangles, input.name + " target");
+  target->field = std::make_shared<ref::TriangleDistanceField>(target->positions, target->triangles,
+                                                               input.name + " target");
   return target;
 }
 

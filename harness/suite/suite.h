@@ -18,9 +18,9 @@ namespace tb::suite {
 
 struct SuiteSelection {
   std::vector<const techniques::Technique*> techniques;  // empty: every registered technique
-  std::vector<AssetRef> assets;              // empty: every bundled asset
-  std::vector<const measures::Measure*> measures;  // empty: every registered measure
-  std::string device_name;                   // --device substring; empty: best device
+  std::vector<AssetRef> assets;                          // empty: every bundled asset
+  std::vector<const measures::Measure*> measures;        // empty: every registered measure
+  std::string device_name;                               // --device substring; empty: best device
   // The inputs of simulation techniques (one record per scenario, in place of the assets).
   // Empty: every bundled scenario (assets/scenarios, scenario_file.h), read only when a
   // selected technique is a simulation. A technique runs only on the scenarios whose
@@ -73,9 +73,9 @@ struct MeasureTiming {
 };
 
 struct SuiteTimings {
-  double wall_seconds = 0;  // the whole runSuite call, assets loading included
-  int threads = 0;          // worker threads the run had
-  int repetitions = 1;      // SuiteSelection::repetitions
+  double wall_seconds = 0;              // the whole runSuite call, assets loading included
+  int threads = 0;                      // worker threads the run had
+  int repetitions = 1;                  // SuiteSelection::repetitions
   std::vector<MeasureTiming> measures;  // in record order
 };
 

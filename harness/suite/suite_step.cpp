@@ -227,7 +227,8 @@ StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
   if (patches && is_default) *default_footprint = patches->footprint();
   // A simulation's variants each keep their own state (wave particles' lp2 a fixed buffer).
   const bool own_patch_data =
-      is_default || (patches && *default_footprint && patches->footprint() != **default_footprint) ||
+      is_default ||
+      (patches && *default_footprint && patches->footprint() != **default_footprint) ||
       (!patches && instance->simulation() != nullptr);
   std::vector<const measures::Measure*> runnable;
   for (const measures::Measure* measure : run.measures) {

@@ -33,8 +33,8 @@ struct SuiteRun {
   std::map<const measures::Measure*, std::vector<CameraPathFn>> measure_paths;
   measures::SuiteMode suite = measures::SuiteMode::kDefault;
   bool decision_figures_only = false;  // SuiteSelection::decision_figures_only
-  std::unique_ptr<gpu::Context> gpu;  // null when no device is usable
-  std::string gpu_unavailable;        // why, when gpu is null
+  std::unique_ptr<gpu::Context> gpu;   // null when no device is usable
+  std::string gpu_unavailable;         // why, when gpu is null
   ShardSpec shard;
   int repetitions = 1;  // runs of each measure on each record
   // Each displacement map's target, rebuilt once (by the first record that needs it).

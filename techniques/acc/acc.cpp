@@ -7,9 +7,9 @@
 #include <numbers>
 #include <tuple>
 
-#include "techniques/common/crease_refinement.h"
 #include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
+#include "techniques/common/crease_refinement.h"
 #include "techniques/common/patch_bounds.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/registry.h"
@@ -147,8 +147,7 @@ class AccPatches final : public techniques::SurfacePatches {
       points_f_[p] = accControlPoints<float>(rings_, corners_[p], tangent_, position_f);
     }
     warnings_ = creases_.notes;
-    warnings_.push_back(std::to_string(patches) + " patches in " +
-                        std::to_string(classes_.size()) +
+    warnings_.push_back(std::to_string(patches) + " patches in " + std::to_string(classes_.size()) +
                         " topology combinations (corner valence and boundary, up to rotation)");
   }
 
@@ -248,8 +247,8 @@ class AccPatches final : public techniques::SurfacePatches {
     // GPU layout of gpuPrograms(): vec4 positions; per vertex a 16-byte ring header
     // and 8 bytes per ring slot; 48 bytes per patch; the stencil table.
     f.control_mesh_bytes = 16ull * mesh_.positions.size();
-    f.patch_data_bytes = 16ull * rings_.rings.size() + 8ull * rings_.edge_neighbours.size() +
-                         48ull * patchCount();
+    f.patch_data_bytes =
+        16ull * rings_.rings.size() + 8ull * rings_.edge_neighbours.size() + 48ull * patchCount();
     f.stencil_bytes = 4ull * stencilFloatCount();
     f.topology_combinations = classes_.size();
     return f;
@@ -299,8 +298,9 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
   for (const ClassKey& key : classes_) {
     for (const KindKey& kind : key) {
       const CornerWeights& w = weights_.at(kind);
-      const double values[kCornerWeightFloats] = {w.cv, w.ce, w.cf, w.ev, w.ee, w.ea, w.ef, w.iv,
-                                                  w.ie, w.iff, w.bv, w.be, w.cosine, 0, 0, 0};
+      const double values[kCornerWeightFloats] = {w.cv,     w.ce, w.cf, w.ev,  w.ee, w.ea,
+                                                  w.ef,     w.iv, w.ie, w.iff, w.bv, w.be,
+                                                  w.cosine, 0,    0,    0};
       for (double x : values) stencils.push_back(floatBits(x));
     }
   }

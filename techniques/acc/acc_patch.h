@@ -45,11 +45,11 @@ namespace tb::acc {
 // Stencil weights of one corner vertex kind (valence, boundary); the GPU reads the
 // same values as float from the stencil table (kCornerWeightFloats per corner).
 struct CornerWeights {
-  double cv = 0, ce = 0, cf = 0;           // corner point: v, each e_i, each f_i
-  double ev = 0, ee = 0, ea = 0, ef = 0;   // edge point: v, e_i, e_{i±1}, f_{i-1} and f_i
-  double iv = 0, ie = 0, iff = 0;          // interior point: v, e_i and e_{i+1}, f_i
-  double bv = 0, be = 0;                   // boundary edge point: v, e
-  double cosine = 0;                       // c = cos(2π/n) on the interior, 0 on a boundary
+  double cv = 0, ce = 0, cf = 0;          // corner point: v, each e_i, each f_i
+  double ev = 0, ee = 0, ea = 0, ef = 0;  // edge point: v, e_i, e_{i±1}, f_{i-1} and f_i
+  double iv = 0, ie = 0, iff = 0;         // interior point: v, e_i and e_{i+1}, f_i
+  double bv = 0, be = 0;                  // boundary edge point: v, e
+  double cosine = 0;                      // c = cos(2π/n) on the interior, 0 on a boundary
 };
 inline constexpr int kCornerWeightFloats = 16;
 
@@ -66,10 +66,22 @@ struct PointOwner {
   PointRole role;
 };
 inline constexpr std::array<PointOwner, 16> kPointOwner = {{
-    {0, PointRole::kCorner},   {0, PointRole::kEdgeNext},  {1, PointRole::kEdgePrev},  {1, PointRole::kCorner},
-    {0, PointRole::kEdgePrev}, {0, PointRole::kInterior},  {1, PointRole::kInterior},  {1, PointRole::kEdgeNext},
-    {3, PointRole::kEdgeNext}, {3, PointRole::kInterior},  {2, PointRole::kInterior},  {2, PointRole::kEdgePrev},
-    {3, PointRole::kCorner},   {3, PointRole::kEdgePrev},  {2, PointRole::kEdgeNext},  {2, PointRole::kCorner},
+    {0, PointRole::kCorner},
+    {0, PointRole::kEdgeNext},
+    {1, PointRole::kEdgePrev},
+    {1, PointRole::kCorner},
+    {0, PointRole::kEdgePrev},
+    {0, PointRole::kInterior},
+    {1, PointRole::kInterior},
+    {1, PointRole::kEdgeNext},
+    {3, PointRole::kEdgeNext},
+    {3, PointRole::kInterior},
+    {2, PointRole::kInterior},
+    {2, PointRole::kEdgePrev},
+    {3, PointRole::kCorner},
+    {3, PointRole::kEdgePrev},
+    {2, PointRole::kEdgeNext},
+    {2, PointRole::kCorner},
 }};
 // Grid index of each patch corner's corner point.
 inline constexpr std::array<int, 4> kCornerPoint = {0, 3, 15, 12};
@@ -152,7 +164,8 @@ AccControlPoints<T> accControlPoints(const techniques::QuadRings& rings,
                                      bool tangent_patches, const Position& position) {
   AccControlPoints<T> p;
   for (int j = 0; j < 16; ++j) {
-    p.b[j] = accControlPoint<T>(rings, corners[kPointOwner[j].corner], kPointOwner[j].role, position);
+    p.b[j] =
+        accControlPoint<T>(rings, corners[kPointOwner[j].corner], kPointOwner[j].role, position);
   }
   techniques::bicubicDerivativePatches(p.b, p.tu, p.tv);
   if (!tangent_patches) return p;
@@ -185,19 +198,23 @@ AccControlPoints<T> accControlPoints(const techniques::QuadRings& rings,
   const T three(3);
   mesh::Vec3T<T> x1, x2;
   // v = 0, c0 -> c1: inward cross tangent is tv.
-  accCrossTangents(c[0], c[1], tu[0], tu[1], tu[2], (b[5] - b[1]) * three, (b[6] - b[2]) * three, x1, x2);
+  accCrossTangents(c[0], c[1], tu[0], tu[1], tu[2], (b[5] - b[1]) * three, (b[6] - b[2]) * three,
+                   x1, x2);
   tv[1] = x1;
   tv[2] = x2;
   // u = 1, c1 -> c2: inward is -tu.
-  accCrossTangents(c[1], c[2], tv[3], tv[7], tv[11], (b[6] - b[7]) * three, (b[10] - b[11]) * three, x1, x2);
+  accCrossTangents(c[1], c[2], tv[3], tv[7], tv[11], (b[6] - b[7]) * three, (b[10] - b[11]) * three,
+                   x1, x2);
   tu[5] = mesh::Vec3T<T>{zero, zero, zero} - x1;
   tu[8] = mesh::Vec3T<T>{zero, zero, zero} - x2;
   // v = 1, c3 -> c2: inward is -tv.
-  accCrossTangents(c[3], c[2], tu[9], tu[10], tu[11], (b[9] - b[13]) * three, (b[10] - b[14]) * three, x1, x2);
+  accCrossTangents(c[3], c[2], tu[9], tu[10], tu[11], (b[9] - b[13]) * three,
+                   (b[10] - b[14]) * three, x1, x2);
   tv[9] = mesh::Vec3T<T>{zero, zero, zero} - x1;
   tv[10] = mesh::Vec3T<T>{zero, zero, zero} - x2;
   // u = 0, c0 -> c3: inward is tu.
-  accCrossTangents(c[0], c[3], tv[0], tv[4], tv[8], (b[5] - b[4]) * three, (b[9] - b[8]) * three, x1, x2);
+  accCrossTangents(c[0], c[3], tv[0], tv[4], tv[8], (b[5] - b[4]) * three, (b[9] - b[8]) * three,
+                   x1, x2);
   tu[3] = x1;
   tu[6] = x2;
   return p;

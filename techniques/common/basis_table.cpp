@@ -50,8 +50,8 @@ void combinePortable(const CombineArgs& a) {
 }
 
 void normalsPortable(const std::array<AlignedDoubles, 3>& du,
-                     const std::array<AlignedDoubles, 3>& dv,
-                     std::array<AlignedDoubles, 3>& normal, size_t points) {
+                     const std::array<AlignedDoubles, 3>& dv, std::array<AlignedDoubles, 3>& normal,
+                     size_t points) {
   for (size_t i = 0; i < points; ++i) {
     BatchPoints::set(normal, i, normalize(cross(BatchPoints::at(du, i), BatchPoints::at(dv, i))));
   }
@@ -99,10 +99,14 @@ __attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
   size_t b = 0;
   for (; b + 4 <= a.blocks; b += 4) combineBlocksAvx512<4, kControlPoints>(a, b);
   switch (a.blocks - b) {
-    case 3: return combineBlocksAvx512<3, kControlPoints>(a, b);
-    case 2: return combineBlocksAvx512<2, kControlPoints>(a, b);
-    case 1: return combineBlocksAvx512<1, kControlPoints>(a, b);
-    default: return;
+    case 3:
+      return combineBlocksAvx512<3, kControlPoints>(a, b);
+    case 2:
+      return combineBlocksAvx512<2, kControlPoints>(a, b);
+    case 1:
+      return combineBlocksAvx512<1, kControlPoints>(a, b);
+    default:
+      return;
   }
 }
 
@@ -110,11 +114,16 @@ __attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
 // get their own unrolled copies.
 __attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
   switch (a.control_points) {
-    case 12: return combineAvx512<12>(a);
-    case 15: return combineAvx512<15>(a);
-    case 16: return combineAvx512<16>(a);
-    case 20: return combineAvx512<20>(a);
-    default: return combineAvx512<0>(a);
+    case 12:
+      return combineAvx512<12>(a);
+    case 15:
+      return combineAvx512<15>(a);
+    case 16:
+      return combineAvx512<16>(a);
+    case 20:
+      return combineAvx512<20>(a);
+    default:
+      return combineAvx512<0>(a);
   }
 }
 
@@ -122,7 +131,7 @@ __attribute__((target("avx512f"))) void combineAvx512(const CombineArgs& a) {
 // the 16 ymm registers).
 template <int Blocks>
 __attribute__((target("avx2,fma"))) inline void combineBlocksAvx2(const CombineArgs& a,
-                                                                   size_t first) {
+                                                                  size_t first) {
   constexpr size_t L = kBatchLanes;
   constexpr int kHalves = 2 * Blocks;
   const size_t stride = a.control_points * L;
@@ -158,10 +167,9 @@ __attribute__((target("avx2,fma"))) void combineAvx2(const CombineArgs& a) {
 // The cross product rounds each product, as cross() does (fp-contract off: GCC would fuse
 // the product and the difference), so parallel tangents give exactly zero and the normal
 // stays zero there.
-__attribute__((target("avx512f"), optimize("fp-contract=off"))) void normalsAvx512(const std::array<AlignedDoubles, 3>& du,
-                                                      const std::array<AlignedDoubles, 3>& dv,
-                                                      std::array<AlignedDoubles, 3>& normal,
-                                                      size_t blocks) {
+__attribute__((target("avx512f"), optimize("fp-contract=off"))) void normalsAvx512(
+    const std::array<AlignedDoubles, 3>& du, const std::array<AlignedDoubles, 3>& dv,
+    std::array<AlignedDoubles, 3>& normal, size_t blocks) {
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
   for (size_t at = 0; at < blocks * kBatchLanes; at += kBatchLanes) {
     const __m512d ux = _mm512_load_pd(du[0].data() + at), uy = _mm512_load_pd(du[1].data() + at),
@@ -173,8 +181,8 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void normalsAvx5
     const __m512d nz = _mm512_sub_pd(_mm512_mul_pd(ux, vy), _mm512_mul_pd(uy, vx));
     // maskz_sqrt with every lane set is sqrt (GCC 12 warns about _mm512_sqrt_pd's
     // undefined pass-through operand).
-    const __m512d length = _mm512_maskz_sqrt_pd(__mmask8(0xFF),
-        _mm512_fmadd_pd(nz, nz, _mm512_fmadd_pd(ny, ny, _mm512_mul_pd(nx, nx))));
+    const __m512d length = _mm512_maskz_sqrt_pd(
+        __mmask8(0xFF), _mm512_fmadd_pd(nz, nz, _mm512_fmadd_pd(ny, ny, _mm512_mul_pd(nx, nx))));
     const __mmask8 nonzero = _mm512_cmp_pd_mask(length, zero, _CMP_GT_OQ);
     const __m512d scale = _mm512_mask_div_pd(one, nonzero, one, length);
     _mm512_store_pd(normal[0].data() + at, _mm512_mul_pd(nx, scale));
@@ -183,10 +191,9 @@ __attribute__((target("avx512f"), optimize("fp-contract=off"))) void normalsAvx5
   }
 }
 
-__attribute__((target("avx2,fma"), optimize("fp-contract=off"))) void normalsAvx2(const std::array<AlignedDoubles, 3>& du,
-                                                     const std::array<AlignedDoubles, 3>& dv,
-                                                     std::array<AlignedDoubles, 3>& normal,
-                                                     size_t blocks) {
+__attribute__((target("avx2,fma"), optimize("fp-contract=off"))) void normalsAvx2(
+    const std::array<AlignedDoubles, 3>& du, const std::array<AlignedDoubles, 3>& dv,
+    std::array<AlignedDoubles, 3>& normal, size_t blocks) {
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   for (size_t at = 0; at < blocks * kBatchLanes; at += 4) {
     const __m256d ux = _mm256_load_pd(du[0].data() + at), uy = _mm256_load_pd(du[1].data() + at),
@@ -196,8 +203,8 @@ __attribute__((target("avx2,fma"), optimize("fp-contract=off"))) void normalsAvx
     const __m256d nx = _mm256_sub_pd(_mm256_mul_pd(uy, vz), _mm256_mul_pd(uz, vy));
     const __m256d ny = _mm256_sub_pd(_mm256_mul_pd(uz, vx), _mm256_mul_pd(ux, vz));
     const __m256d nz = _mm256_sub_pd(_mm256_mul_pd(ux, vy), _mm256_mul_pd(uy, vx));
-    const __m256d length = _mm256_sqrt_pd(
-        _mm256_fmadd_pd(nz, nz, _mm256_fmadd_pd(ny, ny, _mm256_mul_pd(nx, nx))));
+    const __m256d length =
+        _mm256_sqrt_pd(_mm256_fmadd_pd(nz, nz, _mm256_fmadd_pd(ny, ny, _mm256_mul_pd(nx, nx))));
     const __m256d nonzero = _mm256_cmp_pd(length, zero, _CMP_GT_OQ);
     const __m256d scale = _mm256_blendv_pd(one, _mm256_div_pd(one, length), nonzero);
     _mm256_store_pd(normal[0].data() + at, _mm256_mul_pd(nx, scale));

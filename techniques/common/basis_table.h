@@ -53,7 +53,7 @@ class BasisTable {
 enum class BatchKernel { kPortable, kAvx2Fma, kAvx512 };
 
 bool batchKernelSupported(BatchKernel kernel);
-BatchKernel fastestBatchKernel();  // the widest this CPU supports
+BatchKernel fastestBatchKernel();          // the widest this CPU supports
 const char* toString(BatchKernel kernel);  // "portable", "avx2_fma", "avx512"
 
 // out[c][i] = Σ_k basis.at(i, k) · control[k][c] for every point of the table, padding

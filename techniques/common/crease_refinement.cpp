@@ -35,7 +35,8 @@ float largestFiniteSharpness(const Far::TopologyLevel& level) {
     if (finite(level.GetEdgeSharpness(e))) largest = std::max(largest, level.GetEdgeSharpness(e));
   }
   for (int v = 0; v < level.GetNumVertices(); ++v) {
-    if (finite(level.GetVertexSharpness(v))) largest = std::max(largest, level.GetVertexSharpness(v));
+    if (finite(level.GetVertexSharpness(v)))
+      largest = std::max(largest, level.GetVertexSharpness(v));
   }
   return largest;
 }
@@ -84,7 +85,8 @@ std::vector<uint32_t> inputFaces(const Far::TopologyRefiner& refiner, int levels
   std::vector<uint32_t> source_of(static_cast<size_t>(face_count));
   for (int f = 0; f < face_count; ++f) {
     int face = f;
-    for (int level = levels; level > 0; --level) face = refiner.GetLevel(level).GetFaceParentFace(face);
+    for (int level = levels; level > 0; --level)
+      face = refiner.GetLevel(level).GetFaceParentFace(face);
     source_of[size_t(f)] = uint32_t(face);
   }
   return source_of;
@@ -153,7 +155,8 @@ std::vector<uint32_t> tagEdges(const mesh::Mesh& mesh, const Far::TopologyLevel&
     const bool boundary = last.GetEdgeFaces(e).size() == 1;
     if (sharpness > 0 && (!boundary || !boundary_sharp))
       control.tags.creases.push_back({a, b, double(sharpness)});
-    if (finite(sharpness) && !boundary) out.rounded_sharpness = std::max(out.rounded_sharpness, double(sharpness));
+    if (finite(sharpness) && !boundary)
+      out.rounded_sharpness = std::max(out.rounded_sharpness, double(sharpness));
     if (sharpness >= 0.5f || (boundary && boundary_sharp)) {
       out.sharp_edges.insert(CreasePreparation::sharpEdgeKey(a, b));
       ++sharp_count[a];
@@ -173,7 +176,8 @@ void tagVertices(const mesh::Mesh& mesh, const Far::TopologyLevel& last,
     const size_t faces = size_t(last.GetVertexFaces(v).size());
     const bool boundary = size_t(last.GetVertexEdges(v).size()) > faces;
     if (sharpness > 0) control.tags.corners.push_back({uint32_t(v), double(sharpness)});
-    if (finite(sharpness)) out.rounded_sharpness = std::max(out.rounded_sharpness, double(sharpness));
+    if (finite(sharpness))
+      out.rounded_sharpness = std::max(out.rounded_sharpness, double(sharpness));
     const uint32_t count = sharp_count[size_t(v)];
     // A leftover finite vertex sharpness off a crease is rounded to smooth: no patch here
     // represents a cone point, and the tag would have decayed in a few more levels.
@@ -230,7 +234,8 @@ CreasePreparation prepareCreases(const mesh::Mesh& mesh, const std::string& tech
   const float largest = largestFiniteSharpness(refiner->GetLevel(0));
   out.levels_needed = int(std::ceil(largest));
   out.levels = std::max(0, min_levels);
-  while (out.levels < out.levels_needed && facesAfter(mesh, out.levels + 1) <= max_faces) ++out.levels;
+  while (out.levels < out.levels_needed && facesAfter(mesh, out.levels + 1) <= max_faces)
+    ++out.levels;
 
   const std::vector<RefinedPoint> points = refinePositions(*refiner, mesh, out.levels);
   const Far::TopologyLevel& last = refiner->GetLevel(out.levels);

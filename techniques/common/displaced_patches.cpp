@@ -57,7 +57,8 @@ std::vector<BoundaryOwners> boundaryOwners(const SurfacePatches& patches) {
     const uint32_t n = cornerCountOf(patches.patchDomain(p));
     for (uint32_t k = 0; k < n; ++k) c[k] = welding.canonical[c[k]];
     for (uint32_t k = 0; k < n; ++k) {
-      const auto [it, first] = corner_owner.try_emplace(c[k], BoundaryOwners::Corner{uint32_t(p), k});
+      const auto [it, first] =
+          corner_owner.try_emplace(c[k], BoundaryOwners::Corner{uint32_t(p), k});
       owners[p].corners[k] = it->second;
       const uint32_t a = c[k], b = c[(k + 1) % n];
       const auto [edge, new_edge] =
@@ -94,7 +95,8 @@ DisplacedPatches::DisplacedPatches(const SurfacePatches& inner,
   const uint32_t channels = displacement::channelCount(map_->kind);
   for (size_t i = 0; i < map_->texels.size(); i += channels) {
     double squared = 0;
-    for (uint32_t c = 0; c < channels; ++c) squared += double(map_->texels[i + c]) * map_->texels[i + c];
+    for (uint32_t c = 0; c < channels; ++c)
+      squared += double(map_->texels[i + c]) * map_->texels[i + c];
     max_displacement_ = std::max(max_displacement_, std::sqrt(squared));
   }
   // Watertight sampling reads corners and edges from other tiles, so a patch's bound takes
@@ -158,9 +160,8 @@ SurfacePoint DisplacedPatches::evaluate(size_t patch, const DomainCoord& coord) 
   SurfacePoint point = inner_.evaluate(patch, coord);
   const PatchDomain domain = inner_.patchDomain(patch);
   const auto c = coordArray<double>(coord);
-  const TileCoord<double> at =
-      lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
-                  [this](uint32_t q) { return inner_.patchDomain(q); });
+  const TileCoord<double> at = lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_,
+                                           c, [this](uint32_t q) { return inner_.patchDomain(q); });
   double h[3] = {0, 0, 0};
   sampleTile(*map_, geometry_, at.tile, at.u, at.v, displacement::channelCount(map_->kind), h);
   if (map_->kind == displacement::DisplacementKind::kScalar) {
@@ -175,9 +176,8 @@ SurfacePointF DisplacedPatches::evaluateFloat(size_t patch, const tess::DomainPo
   SurfacePointF point = inner_.evaluateFloat(patch, coord);
   const PatchDomain domain = inner_.patchDomain(patch);
   const std::array<float, 3> c{coord[0], coord[1], coord[2]};
-  const TileCoord<float> at =
-      lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_, c,
-                  [this](uint32_t q) { return inner_.patchDomain(q); });
+  const TileCoord<float> at = lookupCoord(uint32_t(patch), domain, frame_.owners(patch), sampling_,
+                                          c, [this](uint32_t q) { return inner_.patchDomain(q); });
   float h[3] = {0, 0, 0};
   sampleTile(*map_, geometry_, at.tile, at.u, at.v, displacement::channelCount(map_->kind), h);
   if (map_->kind == displacement::DisplacementKind::kScalar) {

@@ -40,8 +40,8 @@ class DisplacementFrame {
 
  private:
   const SurfacePatches& patches_;
-  std::vector<BoundaryOwners> owners_;                   // per patch
-  std::vector<std::array<mesh::Vec3d, 4>> corner_dirs_;  // per patch, unit, double
+  std::vector<BoundaryOwners> owners_;                         // per patch
+  std::vector<std::array<mesh::Vec3d, 4>> corner_dirs_;        // per patch, unit, double
   std::vector<std::array<mesh::Vec3f, 4>> corner_dirs_float_;  // the same rounded to float
 };
 

@@ -29,9 +29,9 @@ struct BoundaryOwners {
     uint32_t corner = 0;  // the owner's local corner at the same position
   };
   struct Edge {
-    uint32_t patch = 0;      // the owner
-    uint32_t edge = 0;       // the owner's local edge (corner edge to corner edge + 1)
-    bool reversed = false;   // the owner runs the edge the other way: t_owner = 1 - t
+    uint32_t patch = 0;     // the owner
+    uint32_t edge = 0;      // the owner's local edge (corner edge to corner edge + 1)
+    bool reversed = false;  // the owner runs the edge the other way: t_owner = 1 - t
   };
   std::array<Corner, 4> corners{};  // 3 used by a triangle patch
   std::array<Edge, 4> edges{};
@@ -106,10 +106,18 @@ template <class T>
 void edgeUv(PatchDomain domain, uint32_t edge, T t, T* u, T* v) {
   if (domain == PatchDomain::kQuad) {
     switch (edge) {
-      case 0: *u = t, *v = T(0); return;
-      case 1: *u = T(1), *v = t; return;
-      case 2: *u = T(1) - t, *v = T(1); return;
-      default: *u = T(0), *v = T(1) - t; return;
+      case 0:
+        *u = t, *v = T(0);
+        return;
+      case 1:
+        *u = T(1), *v = t;
+        return;
+      case 2:
+        *u = T(1) - t, *v = T(1);
+        return;
+      default:
+        *u = T(0), *v = T(1) - t;
+        return;
     }
   }
   std::array<T, 3> w{T(0), T(0), T(0)};

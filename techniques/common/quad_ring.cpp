@@ -31,7 +31,8 @@ CornerIndex indexCorners(const mesh::Mesh& mesh, const std::string& technique) {
   const auto fail = [&](const std::string& what) { failInput(technique, what); };
   const size_t face_count = mesh.faceCount();
   CornerIndex index;
-  std::unordered_map<uint64_t, CornerRef>& outgoing = index.outgoing;  // directed edge c_k -> c_{k+1}
+  std::unordered_map<uint64_t, CornerRef>& outgoing =
+      index.outgoing;  // directed edge c_k -> c_{k+1}
   outgoing.reserve(face_count * 4);
   index.corners_of.resize(mesh.positions.size());
   for (uint32_t f = 0; f < face_count; ++f) {
@@ -47,7 +48,8 @@ CornerIndex indexCorners(const mesh::Mesh& mesh, const std::string& technique) {
       }
     }
     for (uint32_t k = 0; k < 4; ++k) {
-      const auto [it, inserted] = outgoing.emplace(directedKey(c[k], c[(k + 1) % 4]), CornerRef{f, k});
+      const auto [it, inserted] =
+          outgoing.emplace(directedKey(c[k], c[(k + 1) % 4]), CornerRef{f, k});
       if (!inserted) {
         fail("edge " + std::to_string(c[k]) + "-" + std::to_string(c[(k + 1) % 4]) + " of " +
              mesh::describeFace(mesh, f) + " is also used by " +
@@ -83,7 +85,8 @@ class RingWalker {
       boundary_starts += open;
       if (open || (splits(v) && creases_->isSharp(v, e))) starts.push_back(c);
     }
-    if (boundary_starts > 1) fail(describeVertex(mesh_, v) + " has faces in more than one fan (non-manifold vertex)");
+    if (boundary_starts > 1)
+      fail(describeVertex(mesh_, v) + " has faces in more than one fan (non-manifold vertex)");
     const bool interior = starts.empty();
     if (interior) starts.push_back(0);
     size_t walked = 0;
@@ -130,8 +133,8 @@ class RingWalker {
     ring.vertex = v;
     ring.offset = uint32_t(rings_.edge_neighbours.size());
     ring.boundary = !interior;
-    ring.corner = creases_ != nullptr ? creases_->vertex_kind[v] == SharpVertexKind::kCorner
-                                      : false;
+    ring.corner =
+        creases_ != nullptr ? creases_->vertex_kind[v] == SharpVertexKind::kCorner : false;
     const uint32_t index = s == 0 ? v : uint32_t(rings_.rings.size());
     for (;;) {
       rings_.face_slots[r.face][r.corner] = ring.face_count;
@@ -169,7 +172,9 @@ class RingWalker {
 
 void requireManifoldQuads(const mesh::Mesh& mesh, const std::string& technique,
                           const std::string& why_quads, const std::string& why_manifold) {
-  const auto fail = [&](const std::string& what) { throw UnsupportedInput(technique + ": " + what); };
+  const auto fail = [&](const std::string& what) {
+    throw UnsupportedInput(technique + ": " + what);
+  };
   if (mesh.faceCount() == 0) fail(mesh.source + " has no faces");
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.faceSize(f) != 4) {

@@ -33,9 +33,9 @@ struct VertexRing {
 };
 
 struct QuadRings {
-  std::vector<VertexRing> rings;           // per position, then extra sectors; valence 0 when unused
-  std::vector<uint32_t> edge_neighbours;   // e_i, `valence` entries per vertex
-  std::vector<uint32_t> diagonals;         // f_i, `valence` entries (last unused on a boundary)
+  std::vector<VertexRing> rings;          // per position, then extra sectors; valence 0 when unused
+  std::vector<uint32_t> edge_neighbours;  // e_i, `valence` entries per vertex
+  std::vector<uint32_t> diagonals;        // f_i, `valence` entries (last unused on a boundary)
   // Per face, per corner k: the ring slot i of the face at corner k's vertex, so that
   // e_i is corner k+1, f_i is corner k+2 and e_{i+1} is corner k+3.
   std::vector<std::array<uint32_t, 4>> face_slots;

@@ -13,10 +13,10 @@
 namespace tb::gregory_acc {
 namespace {
 
-constexpr uint64_t kGpuVertexBytes = 16;        // vec4 position (std430)
-constexpr uint64_t kStencilEntryBytes = 8;      // uvec2 (vertex index, float weight bits)
-constexpr uint64_t kStencilOffsetBytes = 4;     // uint per stencil + 1
-constexpr uint64_t kPatchPointIdBytes = 4;      // uint stencil id per control point
+constexpr uint64_t kGpuVertexBytes = 16;     // vec4 position (std430)
+constexpr uint64_t kStencilEntryBytes = 8;   // uvec2 (vertex index, float weight bits)
+constexpr uint64_t kStencilOffsetBytes = 4;  // uint per stencil + 1
+constexpr uint64_t kPatchPointIdBytes = 4;   // uint stencil id per control point
 
 class GregoryPatches final : public techniques::SurfacePatches {
  public:
@@ -28,13 +28,12 @@ class GregoryPatches final : public techniques::SurfacePatches {
         symmetric_edges_(symmetric_edges) {
     warnings_ = build_.creases.notes;
     if (build_.refined) {
-      warnings_.push_back(
-          std::string(non_quads == NonQuadFaces::kRefineOnce
-                          ? "non-quad faces"
-                          : "faces of 5 or more vertices") +
-          ": the mesh was refined once (Catmull-Clark) and " +
-          std::to_string(build_.control.faceCount()) +
-          " quad Gregory patches built on the refined mesh");
+      warnings_.push_back(std::string(non_quads == NonQuadFaces::kRefineOnce
+                                          ? "non-quad faces"
+                                          : "faces of 5 or more vertices") +
+                          ": the mesh was refined once (Catmull-Clark) and " +
+                          std::to_string(build_.control.faceCount()) +
+                          " quad Gregory patches built on the refined mesh");
     }
     for (size_t p = 0; p < patchCount(); ++p) {
       (patchDomain(p) == techniques::PatchDomain::kQuad ? quad_patches_ : triangle_patches_)
@@ -130,7 +129,8 @@ class GregoryPatches final : public techniques::SurfacePatches {
       if (ids->empty()) continue;
       const bool quads = ids == &quad_patches_;
       gpu::GpuPatchProgram program = sharedBuffersProgram();
-      program.control_shader = quads ? "gregory_acc/gregory_acc.tesc" : "gregory_acc/gregory_tri.tesc";
+      program.control_shader =
+          quads ? "gregory_acc/gregory_acc.tesc" : "gregory_acc/gregory_tri.tesc";
       program.evaluation_shader =
           quads ? "gregory_acc/gregory_acc.tese" : "gregory_acc/gregory_tri.tese";
       program.compute_shader =
@@ -142,7 +142,8 @@ class GregoryPatches final : public techniques::SurfacePatches {
       std::vector<uint32_t> patch_points;
       for (uint32_t p : *ids) {
         const auto& ids_of_patch = stencils_.patch_points[p];
-        patch_points.insert(patch_points.end(), ids_of_patch.begin(), ids_of_patch.begin() + points);
+        patch_points.insert(patch_points.end(), ids_of_patch.begin(),
+                            ids_of_patch.begin() + points);
       }
       program.storage_buffers.push_back(std::move(patch_points));
       programs.push_back(std::move(program));
@@ -170,11 +171,9 @@ class GregoryPatches final : public techniques::SurfacePatches {
   }
 
   template <class T>
-  GregoryPoint<T> evaluatePatch(const GregoryPoints<T>& cp, size_t patch,
-                                const auto& coord) const {
+  GregoryPoint<T> evaluatePatch(const GregoryPoints<T>& cp, size_t patch, const auto& coord) const {
     if (patchDomain(patch) == techniques::PatchDomain::kTriangle) {
-      return evaluateGregoryTriangle(cp, T(coord[0]), T(coord[1]), T(coord[2]),
-                                     symmetric_edges_);
+      return evaluateGregoryTriangle(cp, T(coord[0]), T(coord[1]), T(coord[2]), symmetric_edges_);
     }
     return evaluateGregory(cp, T(coord[0]), T(coord[1]), symmetric_edges_);
   }
@@ -269,7 +268,8 @@ std::vector<techniques::VariantInfo> GregoryAccTechnique::variants() const {
        "evaluated symmetrically (watertight in float)",
        {{"symmetric_edges", 1.0}}},
       // The default's patches in another float order (VariantInfo::evaluation_order_only).
-      {"asymmetric", "tensor-product Bernstein everywhere (shared edges may differ in float)",
+      {"asymmetric",
+       "tensor-product Bernstein everywhere (shared edges may differ in float)",
        {{"symmetric_edges", 0.0}},
        true,
        false,

@@ -92,7 +92,8 @@ VectorPoly scaledDerivative(const VectorPoly& frozen, const std::array<ScalarPol
 bool faceFree(const GregoryPoints<double>& cp, size_t corners, size_t points) {
   mesh::Vec3d lo = cp[0], hi = cp[0];
   for (size_t i = 0; i < points; ++i) {
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cp[i][a]), hi[a] = std::max(hi[a], cp[i][a]);
+    for (int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], cp[i][a]), hi[a] = std::max(hi[a], cp[i][a]);
   }
   const double tolerance = 1e-9 * length(hi - lo);
   for (size_t c = 0; c < corners; ++c) {

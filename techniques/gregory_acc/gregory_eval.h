@@ -122,8 +122,7 @@ GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool 
   setQuadBoundaryNet(cp, q);
   blendFace(at(0, kFp), at(0, kFm), u, v, one, zero, zero, one, q[1][1], q_u[1][1], q_v[1][1]);
   blendFace(at(1, kFp), at(1, kFm), v, iu, zero, -one, one, zero, q[1][2], q_u[1][2], q_v[1][2]);
-  blendFace(at(2, kFp), at(2, kFm), iu, iv, -one, zero, zero, -one, q[2][2], q_u[2][2],
-            q_v[2][2]);
+  blendFace(at(2, kFp), at(2, kFm), iu, iv, -one, zero, zero, -one, q[2][2], q_u[2][2], q_v[2][2]);
   blendFace(at(3, kFp), at(3, kFm), iv, u, zero, one, -one, zero, q[2][1], q_u[2][1], q_v[2][1]);
 
   std::array<T, 4> bu, du, bv, dv;
@@ -177,21 +176,40 @@ struct NetIndex {
   int multinomial;  // 4! / (i! j! k!), or 3! / (i! j! k!) in the cubic net
 };
 inline constexpr std::array<NetIndex, 15> kQuarticNet{{
-    {4, 0, 0, 1}, {3, 1, 0, 4}, {3, 0, 1, 4}, {2, 2, 0, 6}, {2, 1, 1, 12},
-    {2, 0, 2, 6}, {1, 3, 0, 4}, {1, 2, 1, 12}, {1, 1, 2, 12}, {1, 0, 3, 4},
-    {0, 4, 0, 1}, {0, 3, 1, 4}, {0, 2, 2, 6}, {0, 1, 3, 4}, {0, 0, 4, 1},
+    {4, 0, 0, 1},
+    {3, 1, 0, 4},
+    {3, 0, 1, 4},
+    {2, 2, 0, 6},
+    {2, 1, 1, 12},
+    {2, 0, 2, 6},
+    {1, 3, 0, 4},
+    {1, 2, 1, 12},
+    {1, 1, 2, 12},
+    {1, 0, 3, 4},
+    {0, 4, 0, 1},
+    {0, 3, 1, 4},
+    {0, 2, 2, 6},
+    {0, 1, 3, 4},
+    {0, 0, 4, 1},
 }};
 inline constexpr std::array<NetIndex, 10> kCubicNet{{
-    {3, 0, 0, 1}, {2, 1, 0, 3}, {2, 0, 1, 3}, {1, 2, 0, 3}, {1, 1, 1, 6},
-    {1, 0, 2, 3}, {0, 3, 0, 1}, {0, 2, 1, 3}, {0, 1, 2, 3}, {0, 0, 3, 1},
+    {3, 0, 0, 1},
+    {2, 1, 0, 3},
+    {2, 0, 1, 3},
+    {1, 2, 0, 3},
+    {1, 1, 1, 6},
+    {1, 0, 2, 3},
+    {0, 3, 0, 1},
+    {0, 2, 1, 3},
+    {0, 1, 2, 3},
+    {0, 0, 3, 1},
 }};
 // Position of b_ijk in kQuarticNet (rows of descending i, each by descending j).
 constexpr int quarticSlot(int i, int j, int k) {
   (void)k;
   return (4 - i) * (5 - i) / 2 + (4 - i - j);
 }
-static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 &&
-              quarticSlot(1, 0, 3) == 9);
+static_assert(quarticSlot(2, 1, 1) == 4 && quarticSlot(0, 0, 4) == 14 && quarticSlot(1, 0, 3) == 9);
 
 // The quartic triangle's net outside its three interior points: the corners and the cubic
 // boundary curves P_c, Ep_c, Em_{c+1}, P_{c+1} degree-raised, e.g. b310 = (P0 + 3 Ep0) / 4,
@@ -265,7 +283,8 @@ GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T 
     return T(n.multinomial) * ((up[n.i] * vp[n.j]) * wp[n.k]);
   };
   mesh::Vec3T<T> position{zero, zero, zero};
-  for (const NetIndex& n : kQuarticNet) position = position + b[quarticSlot(n.i, n.j, n.k)] * basis(n);
+  for (const NetIndex& n : kQuarticNet)
+    position = position + b[quarticSlot(n.i, n.j, n.k)] * basis(n);
   // Tangents: 4 sum over the cubic net of B3_ijk (b_i,j+1,k - b_i+1,j,k) (toward corner 1)
   // and (b_i,j,k+1 - b_i+1,j,k) (toward corner 2).
   mesh::Vec3T<T> tangent_a{zero, zero, zero}, tangent_c = tangent_a;

@@ -262,7 +262,8 @@ std::vector<Ring> sectorsOf(uint32_t v, const Ring& whole,
     sector.boundary = true;
     sector.corner = kind == techniques::SharpVertexKind::kCorner;
     sector.quads_only = whole.quads_only;
-    sector.neighbour.assign(ring.neighbour.begin() + cuts[s], ring.neighbour.begin() + cuts[s + 1] + 1);
+    sector.neighbour.assign(ring.neighbour.begin() + cuts[s],
+                            ring.neighbour.begin() + cuts[s + 1] + 1);
     sector.diagonal.assign(ring.diagonal.begin() + cuts[s], ring.diagonal.begin() + cuts[s + 1]);
     sectors.push_back(std::move(sector));
   }

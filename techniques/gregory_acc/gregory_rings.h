@@ -45,9 +45,9 @@ uint64_t directedKey(uint32_t a, uint32_t b);
 struct Ring {
   std::vector<uint32_t> neighbour;
   std::vector<Stencil> diagonal;  // one per face
-  bool boundary = false;    // open: a mesh boundary, or a sector between sharp edges
-  bool corner = false;      // the vertex is interpolated (SharpVertexKind::kCorner)
-  bool quads_only = true;   // every face of the ring is a quad
+  bool boundary = false;          // open: a mesh boundary, or a sector between sharp edges
+  bool corner = false;            // the vertex is interpolated (SharpVertexKind::kCorner)
+  bool quads_only = true;         // every face of the ring is a quad
   uint32_t valence() const { return uint32_t(neighbour.size()); }  // edges at the vertex
   uint32_t faces() const { return uint32_t(diagonal.size()); }
   // The valence used in the face-point weights cos(2 pi / n): a boundary vertex with k

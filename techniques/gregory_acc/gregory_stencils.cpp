@@ -417,7 +417,8 @@ GregoryBuild buildGregory(const mesh::Mesh& mesh, TangentMask mask, NonQuadFaces
   out.refined = true;
   out.control = std::move(refined.mesh);
   out.patch_count = out.control.faceCount();
-  for (uint32_t face : refined.source_face) out.source_face.push_back(out.creases.source_face[face]);
+  for (uint32_t face : refined.source_face)
+    out.source_face.push_back(out.creases.source_face[face]);
   out.stencils.patch_points = level1.patch_points;
   out.stencils.sharedStencilCount = level1.sharedStencilCount;
   // Compose: each Gregory stencil over refined vertices becomes one over input vertices,

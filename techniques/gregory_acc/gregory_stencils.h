@@ -108,10 +108,10 @@ struct GregoryBuild {
   // creases.control when all its faces are quads (or quads and triangles, with
   // kTrianglePatches); otherwise creases.control refined once (refineOnce), all quads.
   mesh::Mesh control;
-  bool refined = false;                // by refineOnce
-  size_t patch_count = 0;              // faces of `control` with a patch (the rest: holes)
-  std::vector<uint32_t> source_face;   // input face of each patch
-  GregoryStencils stencils;            // over creases.control's positions
+  bool refined = false;               // by refineOnce
+  size_t patch_count = 0;             // faces of `control` with a patch (the rest: holes)
+  std::vector<uint32_t> source_face;  // input face of each patch
+  GregoryStencils stencils;           // over creases.control's positions
 };
 
 // Throws tb::UnsupportedInput with checkGregorySupport's message. `crease_face_budget`:

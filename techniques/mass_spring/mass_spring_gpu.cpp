@@ -75,9 +75,8 @@ void appendGaussSeidelSteps(const SpringSystem& system, const std::vector<uint32
   for (uint32_t d = 0; d < budget; ++d) {
     gpu::GpuComputePass pass;
     pass.shader = "mass_spring/gs_colour_step.comp";
-    pass.buffers = {
-        buffer(0, "positions", positions), buffer(1, "anchors", vec4Words(anchors)),
-        buffer(2, "springs", springs), buffer(3, "colour_start", system.colour_start)};
+    pass.buffers = {buffer(0, "positions", positions), buffer(1, "anchors", vec4Words(anchors)),
+                    buffer(2, "springs", springs), buffer(3, "colour_start", system.colour_start)};
     pass.push_constants = {d, budget, system.colour_count, 0u};
     pass.step_index_word = 3;
     pass.groups_x = groups(largest);

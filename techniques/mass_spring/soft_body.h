@@ -40,13 +40,13 @@ struct SoftnessSphere {
 };
 
 struct SoftBodyInput {
-  std::string source;                // the scenario file (or name), for errors
-  mesh::Mesh skin;                   // the simulated mesh
+  std::string source;                      // the scenario file (or name), for errors
+  mesh::Mesh skin;                         // the simulated mesh
   std::vector<mesh::Vec3d> bone_joints_m;  // the bone chain, >= 2 joints
-  double surface_stiffness = 1;      // (0, 1]
-  double inner_stiffness = 0.5;      // [0, 1]; 0: no inner springs
-  double goal_stiffness = 0.5;       // [0, 1]; scaled per vertex by 1 - softness
-  double softness_default = 0.5;     // [0, 1]: 0 follows the skinning, 1 free
+  double surface_stiffness = 1;            // (0, 1]
+  double inner_stiffness = 0.5;            // [0, 1]; 0: no inner springs
+  double goal_stiffness = 0.5;             // [0, 1]; scaled per vertex by 1 - softness
+  double softness_default = 0.5;           // [0, 1]: 0 follows the skinning, 1 free
   std::vector<SoftnessSphere> softness_spheres;
   double damping = 0.01;  // fraction of the Verlet velocity lost per step, [0, 1)
   mesh::Vec3d gravity_m_per_s2{0, 0, 0};

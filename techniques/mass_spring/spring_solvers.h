@@ -68,8 +68,8 @@ struct SolverState {
   std::vector<mesh::Vec3T<Real>> anchors;   // kinematic anchor positions, metres
   std::vector<mesh::Vec3T<Real>> previous;  // Chebyshev: x of the iteration before
   std::vector<mesh::Vec3T<Real>> scratch;   // Jacobi output
-  size_t iteration = 0;               // iterations since the frame started
-  double chebyshev_weight = 1;        // the last Chebyshev weight
+  size_t iteration = 0;                     // iterations since the frame started
+  double chebyshev_weight = 1;              // the last Chebyshev weight
   // Coloured Gauss-Seidel under a dispatch budget (iterateDispatches): the colour the cut
   // sweep goes on from next time. Kept across steps, so a sweep longer than the budget
   // completes over several frames.

@@ -41,9 +41,9 @@ mesh::Vec3f drawVertexFloat(const TetBinding& binding, const std::vector<mesh::V
 // on quads, linear on triangles, fan triangles on larger polygons), each point bound to the
 // fan triangle of its face that contains it, with an apex at `apex_height` metres.
 struct RenderMesh {
-  std::vector<TetBinding> bindings;   // one per render vertex (points on shared edges repeat)
+  std::vector<TetBinding> bindings;         // one per render vertex (points on shared edges repeat)
   std::vector<mesh::Vec3d> rest_positions;  // the render vertices at rest
-  std::vector<uint32_t> triangles;    // 3 indices per triangle into bindings
+  std::vector<uint32_t> triangles;          // 3 indices per triangle into bindings
 };
 RenderMesh tessellateForRendering(const mesh::Mesh& mesh, uint32_t level, double apex_height);
 

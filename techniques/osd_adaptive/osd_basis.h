@@ -120,10 +120,9 @@ void bezierCurve(T x, T b[4], T d[4]) {
 // The 4x4 Bézier net of a Gregory basis end cap: the 12 boundary Bézier points are Gregory
 // points (point, column, row); each of the 4 interior ones, at (kGregoryInteriorColumn[c],
 // kGregoryInteriorRow[c]), blends corner c's F+ and F-.
-inline constexpr int kGregoryBoundaryNet[12][3] = {{0, 0, 0},  {1, 1, 0},  {7, 2, 0},
-                                                   {5, 3, 0},  {2, 0, 1},  {6, 3, 1},
-                                                   {16, 0, 2}, {12, 3, 2}, {15, 0, 3},
-                                                   {17, 1, 3}, {11, 2, 3}, {10, 3, 3}};
+inline constexpr int kGregoryBoundaryNet[12][3] = {{0, 0, 0},  {1, 1, 0},  {7, 2, 0},  {5, 3, 0},
+                                                   {2, 0, 1},  {6, 3, 1},  {16, 0, 2}, {12, 3, 2},
+                                                   {15, 0, 3}, {17, 1, 3}, {11, 2, 3}, {10, 3, 3}};
 inline constexpr int kGregoryInteriorColumn[4] = {1, 2, 2, 1};
 inline constexpr int kGregoryInteriorRow[4] = {1, 1, 2, 2};
 

@@ -5,10 +5,10 @@
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
 #include "techniques/common/triangle_patches.h"
+#include "techniques/common/triangle_records.h"
 #include "techniques/phong/phong_bounds.h"
 #include "techniques/phong/phong_edge_eval.h"
 #include "techniques/phong/phong_eval.h"
-#include "techniques/common/triangle_records.h"
 #include "techniques/registry.h"
 #include "techniques/variant_param.h"
 
@@ -135,8 +135,9 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
       profile.per_patch_setup = techniques::operationCounts();
       techniques::resetOperationCounts();
       (void)evaluatePhongInOrder(tri, weight, C(float(alpha_)));
-      profile.note = "float, shader order: TCS normalises 3 normals (corner order sorted on the "
-                     "host); TES eq. 3-4";
+      profile.note =
+          "float, shader order: TCS normalises 3 normals (corner order sorted on the "
+          "host); TES eq. 3-4";
     }
     profile.per_vertex = techniques::operationCounts();
     return profile;
@@ -246,7 +247,8 @@ std::vector<techniques::VariantInfo> PhongTechnique::variants() const {
       {"alpha0.5", "shape factor 0.5", {{"alpha", 0.5}}, false, true},
       {"alpha1", "shape factor 1: full projection", {{"alpha", 1.0}}, false, true},
       {"edge",
-       "the per-edge extension of CAPCOM's Lost Planet 2 DirectX 11 talk (α = 0.75): edge curves from per-edge normals, "
+       "the per-edge extension of CAPCOM's Lost Planet 2 DirectX 11 talk (α = 0.75): edge curves "
+       "from per-edge normals, "
        "geometry normals on split edges",
        {{"alpha", 0.75}, {"edge", 1.0}}},
   };

@@ -43,8 +43,8 @@ PhongPoint<T> evaluatePhongInOrder(const PhongTriangle<T>& tri, const std::array
   }
   PhongPoint<T> result;
   result.position = flat - offset * alpha;
-  result.normal = normalize(tri.normal[0] * weight[0] + tri.normal[1] * weight[1] +
-                            tri.normal[2] * weight[2]);
+  result.normal =
+      normalize(tri.normal[0] * weight[0] + tri.normal[1] * weight[1] + tri.normal[2] * weight[2]);
   return result;
 }
 

@@ -111,12 +111,11 @@ TEST(DisplacedOracle, BakedAnalyticTargetIsReproducedWithinTheTexelBoundAndConve
       const techniques::DisplacedPatches displaced(
           *surface, map, techniques::DisplacementSampling::kWatertight, "baked");
       const double error = maxDistance(displaced, target_field);
-      const double bound =
-          1.5 * (m / (4.0 * resolution * resolution) + 2 * e_tech) + 2 * e_target;
-      std::printf("[displaced oracle] %s %s r %u: max distance to target %.3e, bound %.3e "
-                  "(M %.3g, e_tech %.3e, e_target %.3e, A %.3e)\n",
-                  c.technique, c.asset, resolution, error, bound, m, e_tech, e_target,
-                  h.amplitude);
+      const double bound = 1.5 * (m / (4.0 * resolution * resolution) + 2 * e_tech) + 2 * e_target;
+      std::printf(
+          "[displaced oracle] %s %s r %u: max distance to target %.3e, bound %.3e "
+          "(M %.3g, e_tech %.3e, e_target %.3e, A %.3e)\n",
+          c.technique, c.asset, resolution, error, bound, m, e_tech, e_target, h.amplitude);
       EXPECT_LE(error, bound) << "r " << resolution;
       if (previous > 0) {
         EXPECT_LT(error, previous) << "r " << resolution;

@@ -33,9 +33,10 @@ nlohmann::json onlyResults(const fs::path& out) {
 TEST(DisplacedRun, BundledMapRunsCracksErrorAndMemoryWithSamplingKeys) {
   const fs::path dir = testing::scratchDirectory("displaced_run");
   const std::string map = testing::assetPath("displacement/pn_triangles_tri_torus.exr");
-  const auto r = runTessbench("run --quiet --no-pictures --technique pn_triangles --asset "
-                              "tessbench/tri_torus --measure cracks error memory --displacement " +
-                              map + " --out " + (dir / "out").string());
+  const auto r = runTessbench(
+      "run --quiet --no-pictures --technique pn_triangles --asset "
+      "tessbench/tri_torus --measure cracks error memory --displacement " +
+      map + " --out " + (dir / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json results = onlyResults(dir / "out");
   const nlohmann::json* displaced = nullptr;
@@ -101,14 +102,12 @@ TEST(BundledMaps, EqualAFreshBake) {
   EXPECT_EQ(bundled, std::size(maps)) << "scripts/bake_default_maps.sh and this list differ";
   for (const auto& [name, technique, asset] : maps) {
     const std::string out = (dir / (std::string(name) + ".exr")).string();
-    const auto r = runTessbench(std::string("bake --technique ") + technique + " --asset " +
-                                asset + " --analytic --resolution 16 --pixel-type half --out " +
-                                out);
+    const auto r = runTessbench(std::string("bake --technique ") + technique + " --asset " + asset +
+                                " --analytic --resolution 16 --pixel-type half --out " + out);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string bundled_exr =
         testing::assetPath(std::string("displacement/") + name + ".exr");
-    EXPECT_EQ(readFile(out), readFile(bundled_exr))
-        << name << ": run scripts/bake_default_maps.sh";
+    EXPECT_EQ(readFile(out), readFile(bundled_exr)) << name << ": run scripts/bake_default_maps.sh";
     EXPECT_EQ(readFile(out + ".json"), readFile(bundled_exr + ".json")) << name;
   }
 }

@@ -105,7 +105,8 @@ TEST(AdviseCli, TriangleMeshExcludesAccWithItsReason) {
   EXPECT_EQ(advice["unsupported"][1]["technique"], "osd_adaptive");
   EXPECT_FALSE(std::any_of(advice["candidates"].begin(), advice["candidates"].end(),
                            [](const auto& c) { return c["technique"] == "acc"; }));
-  const SplitResult markdown = runTessbenchSplit("advise opensubdiv/loop_icosahedron --technique acc");
+  const SplitResult markdown =
+      runTessbenchSplit("advise opensubdiv/loop_icosahedron --technique acc");
   EXPECT_EQ(markdown.exit_code, 1) << "nothing supports the asset: no candidate passes";
   EXPECT_NE(markdown.out.find("excluded: unsupported input: acc:"), std::string::npos)
       << markdown.out;
@@ -113,8 +114,7 @@ TEST(AdviseCli, TriangleMeshExcludesAccWithItsReason) {
 
 TEST(AdviseCli, TorusFirstChoiceMeetsEveryConstraint) {
   const Bounds bounds{0.005, 0.3, 500};
-  expectRankedByTheRule(adviseJson("opensubdiv/catmark_torus" + boundArguments(bounds), 0),
-                        bounds);
+  expectRankedByTheRule(adviseJson("opensubdiv/catmark_torus" + boundArguments(bounds), 0), bounds);
 }
 
 TEST(AdviseCli, ReadsARunFolderAndExitsOneWhenNoCandidatePasses) {
@@ -138,7 +138,8 @@ TEST(AdviseCli, ReadsARunFolderAndExitsOneWhenNoCandidatePasses) {
     EXPECT_NE(c["verdict"].get<std::string>().find("> max 0"), std::string::npos) << c.dump();
   }
   // --technique narrows the candidates.
-  const auto phong = adviseJson("opensubdiv/catmark_cube --run " + folder + " --technique phong", 0);
+  const auto phong =
+      adviseJson("opensubdiv/catmark_cube --run " + folder + " --technique phong", 0);
   for (const auto& c : phong["candidates"]) EXPECT_EQ(c["technique"], "phong");
   // The short name `run --asset` takes finds the run's asset too.
   const auto short_name = adviseJson("catmark_cube --run " + folder + " --technique phong", 0);
@@ -147,8 +148,8 @@ TEST(AdviseCli, ReadsARunFolderAndExitsOneWhenNoCandidatePasses) {
 
   // An asset the run has no records of, bad numbers, an unknown technique: one line, exit 2.
   for (const std::string& bad :
-       {"tessbench/tri_pawn --run " + folder, "opensubdiv/catmark_cube --run " + folder +
-                                                  " --max-error abc",
+       {"tessbench/tri_pawn --run " + folder,
+        "opensubdiv/catmark_cube --run " + folder + " --max-error abc",
         "opensubdiv/catmark_cube --run " + folder + " --max-memory-ratio -1",
         "opensubdiv/catmark_cube --run " + folder + " --technique nope",
         std::string("no/such_asset --max-error 1")}) {
@@ -164,19 +165,17 @@ TEST(AdviseCli, ReadsARunFolderAndExitsOneWhenNoCandidatePasses) {
   ASSERT_EQ(latex.exit_code, 0) << latex.err;
   EXPECT_NE(latex.out.find("\\toprule"), std::string::npos) << latex.out;
   EXPECT_NE(latex.out.find("hausdorff median (rel\\_diag)"), std::string::npos);
-  const SplitResult published =
-      runTessbenchSplit("table " + folder + " --published --format csv");
+  const SplitResult published = runTessbenchSplit("table " + folder + " --published --format csv");
   ASSERT_EQ(published.exit_code, 0) << published.err;
   EXPECT_NE(published.out.find("NVIDIA's displacement subdivision surfaces talk"),
             std::string::npos);
-  EXPECT_NE(published.out.find("DirectX SDK SubD10"), std::string::npos)
-      << published.out;
+  EXPECT_NE(published.out.find("DirectX SDK SubD10"), std::string::npos) << published.out;
   for (const SplitResult& r : {latex, published}) {
     EXPECT_EQ(r.out.find("seed 0"), std::string::npos) << r.out;
   }
-  for (const std::string& bad : {folder + " --measure nope", folder + " --measure error --format html",
-                                 folder + " --measure error --metric nope",
-                                 folder + " --published --measure error"}) {
+  for (const std::string& bad :
+       {folder + " --measure nope", folder + " --measure error --format html",
+        folder + " --measure error --metric nope", folder + " --published --measure error"}) {
     const SplitResult r = runTessbenchSplit("table " + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out << r.err;
     EXPECT_EQ(lineCount(r.err), 1u) << bad << "\n" << r.err;

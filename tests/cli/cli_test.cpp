@@ -167,7 +167,8 @@ TEST(Cli, IdenticalInputsGiveByteIdenticalResults) {
   // Under a sanitizer ThreadInvariance.ResultsAreByteIdenticalOnOneAndTwoThreads runs the same
   // suite code twice and compares the bytes; this run adds only the command line's parsing,
   // which the other Cli tests run there.
-  if (testing::kUnderSanitizer) GTEST_SKIP() << "ThreadInvariance runs the suite twice under a sanitizer";
+  if (testing::kUnderSanitizer)
+    GTEST_SKIP() << "ThreadInvariance runs the suite twice under a sanitizer";
   const auto dir = testing::scratchDirectory("cli_determinism");
   // Every measure, on a quad and a triangle asset (the whole suite is README command 1).
   const std::string assets = "--asset catmark_cube --asset loop_icosahedron";

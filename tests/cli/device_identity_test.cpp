@@ -22,12 +22,13 @@ TEST(DeviceIdentity, CompareNeverJoinsTheFiguresOfTwoDevices) {
   const fs::path dir = testing::scratchDirectory("device_identity");
   const fs::path run = dir / "out" / "lavapipe";
   ASSERT_EQ(runTessbenchSplit("run --quiet --no-pictures --technique phong --asset catmark_cube "
-                              "--measure cracks --out " + (dir / "out").string() +
-                              " --run-id lavapipe")
+                              "--measure cracks --out " +
+                              (dir / "out").string() + " --run-id lavapipe")
                 .exit_code,
             0);
-  const auto device = nlohmann::json::parse(std::ifstream(run / "results.json"))["context"]
-                                           ["vulkan_device"].get<std::string>();
+  const auto device =
+      nlohmann::json::parse(std::ifstream(run / "results.json"))["context"]["vulkan_device"]
+          .get<std::string>();
   const auto timings = nlohmann::json::parse(std::ifstream(run / "timings.json"));
   EXPECT_EQ(timings["device"].get<std::string>(), device) << "timings.json names the device";
 
@@ -56,13 +57,15 @@ TEST(DeviceIdentity, ListDevicesNamesTheRunsDeviceFirst) {
   EXPECT_TRUE(devices[0]["default"].get<bool>());
   const fs::path dir = testing::scratchDirectory("device_identity_list");
   ASSERT_EQ(runTessbenchSplit("run --quiet --no-pictures --technique phong --asset catmark_cube "
-                              "--measure instructions --out " + dir.string() + " --run-id r")
+                              "--measure instructions --out " +
+                              dir.string() + " --run-id r")
                 .exit_code,
             0);
   const auto context = nlohmann::json::parse(std::ifstream(dir / "r" / "results.json"))["context"];
   EXPECT_EQ(devices[0]["identity"], context["vulkan_device"]);
   const SplitResult none = runTessbenchSplit(
-      "list devices", "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+      "list devices",
+      "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
   EXPECT_EQ(none.exit_code, 0) << none.err;
   EXPECT_EQ(none.out.rfind("no Vulkan device: ", 0), 0u) << none.out;
 }

@@ -55,14 +55,14 @@ TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
   const fs::path out = dir / "out";
   const fs::path pending = out / "killed.incomplete";
   // Enough records that the run is still going when the first is written (one thread).
-  const pid_t pid = spawnTessbench({"run", "--quiet", "--threads", "1", "--technique",
-                                    "gregory_acc", "--measure", "error", "--measure", "memory",
-                                    "--out", out.string(), "--run-id", "killed"},
-                                   dir / "stderr.txt");
+  const pid_t pid =
+      spawnTessbench({"run", "--quiet", "--threads", "1", "--technique", "gregory_acc", "--measure",
+                      "error", "--measure", "memory", "--out", out.string(), "--run-id", "killed"},
+                     dir / "stderr.txt");
   ASSERT_GT(pid, 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-  while (journalLines(pending / "records.jsonl") == 0 && std::chrono::steady_clock::now() < deadline &&
-         ::waitpid(pid, nullptr, WNOHANG) == 0) {
+  while (journalLines(pending / "records.jsonl") == 0 &&
+         std::chrono::steady_clock::now() < deadline && ::waitpid(pid, nullptr, WNOHANG) == 0) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ASSERT_EQ(::kill(pid, SIGKILL), 0) << "the run ended before its first record was seen";
@@ -81,9 +81,9 @@ TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
     const auto record = nlohmann::json::parse(line);
     EXPECT_EQ(record["technique"], "gregory_acc");
   }
-  for (const std::string& command :
-       {"report " + pending.string(), "merge " + pending.string() + " --out " + (dir / "m").string(),
-        "compare " + pending.string() + " " + pending.string()}) {
+  for (const std::string& command : {"report " + pending.string(),
+                                     "merge " + pending.string() + " --out " + (dir / "m").string(),
+                                     "compare " + pending.string() + " " + pending.string()}) {
     const SplitResult r = runTessbenchSplit(command);
     EXPECT_EQ(r.exit_code, 2) << command;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -101,8 +101,7 @@ TEST(Interrupted, AKilledRunLeavesNoFolderThatLooksFinished) {
 
 // Runs tessbench as the unprivileged user `nobody` (root ignores mode bits); -1 when it
 // cannot (not root, or nobody cannot reach the binary).
-int runAsNobody(const fs::path& binary, const std::string& arguments,
-                const fs::path& stderr_file) {
+int runAsNobody(const fs::path& binary, const std::string& arguments, const fs::path& stderr_file) {
   if (::geteuid() != 0) return -1;
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -136,10 +135,10 @@ TEST(ReadOnly, AReadOnlyOutputFolderIsOneLineBeforeMeasuring) {
   fs::copy_file(TB_TESSBENCH_BIN, binary);
   const fs::path asset = dir / "cube.obj";
   fs::copy_file(testing::assetPath("opensubdiv/catmark_cube.obj"), asset);
-  const std::string arguments = "run --technique phong --measure memory --asset " +
-                                asset.string() + " --out " + (locked / "results").string();
-  const fs::path stderr_file = fs::temp_directory_path() /
-                               ("tessbench_read_only_" + std::to_string(::getpid()) + ".txt");
+  const std::string arguments = "run --technique phong --measure memory --asset " + asset.string() +
+                                " --out " + (locked / "results").string();
+  const fs::path stderr_file =
+      fs::temp_directory_path() / ("tessbench_read_only_" + std::to_string(::getpid()) + ".txt");
   int exit_code;
   std::string err;
   if (::geteuid() == 0) {
@@ -158,7 +157,7 @@ TEST(ReadOnly, AReadOnlyOutputFolderIsOneLineBeforeMeasuring) {
   EXPECT_EQ(exit_code, 2) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_NE(err.find((locked / "results").string() + ": cannot create results folder (Permission "
-                                                      "denied)"),
+                                                     "denied)"),
             std::string::npos)
       << err;
   EXPECT_TRUE(folderEntries(locked).empty());

@@ -1,9 +1,9 @@
 // Reliability of the `tessbench` executable: every class of bad input is one line and exit 2
 // with no results folder; no Vulkan device is a run whose GPU rows are skipped; a killed run
 // leaves nothing that looks finished; an unwritable --out is one line before any measuring.
-#include <gtest/gtest.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -12,10 +12,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <thread>
 
 #include "tests/cli/cli_support.h"
@@ -78,30 +78,46 @@ std::vector<BadInput> objInputs(const std::string& run) {
   const std::string acc = run + "--technique acc --measure memory --asset ";
   return {
       {"obj missing", {}, run + "--asset {dir}/missing.obj", {"{dir}/missing.obj", "no such file"}},
-      {"obj empty", {{"empty.obj", ""}}, run + "--asset {dir}/empty.obj",
+      {"obj empty",
+       {{"empty.obj", ""}},
+       run + "--asset {dir}/empty.obj",
        {"{dir}/empty.obj", "empty"}},
       {"obj truncated mid-face",
        {{"cut.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 1 2"}},
        run + "--asset {dir}/cut.obj",
        {"{dir}/cut.obj: line 6", "degenerate face"}},
-      {"obj binary garbage", {{"garbage.obj", binaryGarbage(4096)}}, run + "--asset {dir}/garbage.obj",
+      {"obj binary garbage",
+       {{"garbage.obj", binaryGarbage(4096)}},
+       run + "--asset {dir}/garbage.obj",
        {"{dir}/garbage.obj"}},
-      {"obj NaN coordinate", {{"nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"}},
-       run + "--asset {dir}/nan.obj", {"{dir}/nan.obj: line 2", "not finite"}},
-      {"obj infinite coordinate", {{"inf.obj", "v 0 0 0\nv 1 0 -inf\nv 0 1 0\nf 1 2 3\n"}},
-       run + "--asset {dir}/inf.obj", {"{dir}/inf.obj: line 2", "not finite"}},
-      {"obj vertex index out of range", {{"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"}},
-       run + "--asset {dir}/range.obj", {"{dir}/range.obj: line 4", "index 9 is out of range"}},
+      {"obj NaN coordinate",
+       {{"nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"}},
+       run + "--asset {dir}/nan.obj",
+       {"{dir}/nan.obj: line 2", "not finite"}},
+      {"obj infinite coordinate",
+       {{"inf.obj", "v 0 0 0\nv 1 0 -inf\nv 0 1 0\nf 1 2 3\n"}},
+       run + "--asset {dir}/inf.obj",
+       {"{dir}/inf.obj: line 2", "not finite"}},
+      {"obj vertex index out of range",
+       {{"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"}},
+       run + "--asset {dir}/range.obj",
+       {"{dir}/range.obj: line 4", "index 9 is out of range"}},
       {"obj normal index out of range",
        {{"normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n"}},
-       run + "--asset {dir}/normal.obj", {"{dir}/normal.obj: line 5", "normal index 7"}},
-      {"obj degenerate face", {{"degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"}},
+       run + "--asset {dir}/normal.obj",
+       {"{dir}/normal.obj: line 5", "normal index 7"}},
+      {"obj degenerate face",
+       {{"degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"}},
        run + "--asset {dir}/degenerate.obj",
        {"{dir}/degenerate.obj: line 4", "uses vertex 2 twice"}},
-      {"obj unreadable tag", {{"tag.obj", std::string(kQuad) + "t crease 1/x/0 1 2 5\n"}},
-       run + "--asset {dir}/tag.obj", {"{dir}/tag.obj: line 6", "tag 'crease'"}},
+      {"obj unreadable tag",
+       {{"tag.obj", std::string(kQuad) + "t crease 1/x/0 1 2 5\n"}},
+       run + "--asset {dir}/tag.obj",
+       {"{dir}/tag.obj: line 6", "tag 'crease'"}},
       // What a technique cannot take, when no selected technique can.
-      {"non-quad face for acc", {{"tri.obj", kTriangle}}, acc + "{dir}/tri.obj",
+      {"non-quad face for acc",
+       {{"tri.obj", kTriangle}},
+       acc + "{dir}/tri.obj",
        {"{dir}/tri.obj", "face 0 (line 4)", "ACC needs quads"}},
       {"non-manifold edge for acc",
        {{"fan.obj",
@@ -111,15 +127,18 @@ std::vector<BadInput> objInputs(const std::string& run) {
        {"{dir}/fan.obj", "edge 0-1 is shared by 3 faces"}},
       // acc and gregory_acc accept valence 64 (assets/full_suite/pole64.obj) and keep a
       // finite limit of 256 (techniques/acc/acc.h kMaxValence): the class applies above it.
-      {"valence over acc's limit", {{"pole257.obj", poleObj(257)}}, acc + "{dir}/pole257.obj",
+      {"valence over acc's limit",
+       {{"pole257.obj", poleObj(257)}},
+       acc + "{dir}/pole257.obj",
        {"{dir}/pole257.obj", "vertex 0", "valence 257 above the maximum 256"}},
   };
 }
 
 // Camera path files (run --camera).
 std::vector<BadInput> cameraInputs(const std::string& run) {
-  const std::string camera = run + "--technique phong --measure adaptivity --asset catmark_cube "
-                                   "--camera ";
+  const std::string camera = run +
+                             "--technique phong --measure adaptivity --asset catmark_cube "
+                             "--camera ";
   const std::string orbit = readFile(testing::assetPath("cameras/orbit.json"));
   // The bundled orbit with one top-level field's value replaced as text (1e999 is no
   // double a JSON library would write).
@@ -132,16 +151,26 @@ std::vector<BadInput> cameraInputs(const std::string& run) {
   };
   return {
       {"camera missing", {}, camera + "{dir}/missing.json", {"{dir}/missing.json", "no such file"}},
-      {"camera malformed JSON", {{"cut.json", orbit.substr(0, orbit.size() / 2)}},
-       camera + "{dir}/cut.json", {"{dir}/cut.json", "malformed JSON"}},
-      {"camera binary garbage", {{"garbage.json", binaryGarbage(512)}},
-       camera + "{dir}/garbage.json", {"{dir}/garbage.json", "malformed JSON"}},
-      {"camera non-finite field", {{"huge.json", orbitWith("near", "1e999")}},
-       camera + "{dir}/huge.json", {"{dir}/huge.json", "near"}},
-      {"camera field out of range", {{"fov.json", orbitWith("fov_y_deg", "180")}},
-       camera + "{dir}/fov.json", {"{dir}/fov.json", "fov_y_deg"}},
-      {"camera field of the wrong type", {{"frames.json", orbitWith("frames", "\"24\"")}},
-       camera + "{dir}/frames.json", {"{dir}/frames.json", "frames"}},
+      {"camera malformed JSON",
+       {{"cut.json", orbit.substr(0, orbit.size() / 2)}},
+       camera + "{dir}/cut.json",
+       {"{dir}/cut.json", "malformed JSON"}},
+      {"camera binary garbage",
+       {{"garbage.json", binaryGarbage(512)}},
+       camera + "{dir}/garbage.json",
+       {"{dir}/garbage.json", "malformed JSON"}},
+      {"camera non-finite field",
+       {{"huge.json", orbitWith("near", "1e999")}},
+       camera + "{dir}/huge.json",
+       {"{dir}/huge.json", "near"}},
+      {"camera field out of range",
+       {{"fov.json", orbitWith("fov_y_deg", "180")}},
+       camera + "{dir}/fov.json",
+       {"{dir}/fov.json", "fov_y_deg"}},
+      {"camera field of the wrong type",
+       {{"frames.json", orbitWith("frames", "\"24\"")}},
+       camera + "{dir}/frames.json",
+       {"{dir}/frames.json", "frames"}},
   };
 }
 
@@ -157,23 +186,38 @@ std::vector<BadInput> scenarioInputs(const std::string& run) {
     return text.replace(at, from.size(), to);
   };
   return {
-      {"scenario missing", {}, scenario + "{dir}/missing.json",
+      {"scenario missing",
+       {},
+       scenario + "{dir}/missing.json",
        {"{dir}/missing.json", "no such file"}},
-      {"scenario malformed JSON", {{"cut.json", point.substr(0, point.size() / 2)}},
-       scenario + "{dir}/cut.json", {"{dir}/cut.json", "malformed JSON"}},
-      {"scenario binary garbage", {{"garbage.json", binaryGarbage(512)}},
-       scenario + "{dir}/garbage.json", {"{dir}/garbage.json", "malformed JSON"}},
-      {"scenario non-finite field", {{"huge.json", pointWith("\"time_step_s\": 0.02", "\"time_step_s\": 1e999")}},
-       scenario + "{dir}/huge.json", {"{dir}/huge.json", "not a finite number"}},
-      {"scenario duration below the step", {{"short.json", pointWith("\"duration_s\": 3.0", "\"duration_s\": 0.01")}},
-       scenario + "{dir}/short.json", {"{dir}/short.json", "duration_s", "time_step_s"}},
+      {"scenario malformed JSON",
+       {{"cut.json", point.substr(0, point.size() / 2)}},
+       scenario + "{dir}/cut.json",
+       {"{dir}/cut.json", "malformed JSON"}},
+      {"scenario binary garbage",
+       {{"garbage.json", binaryGarbage(512)}},
+       scenario + "{dir}/garbage.json",
+       {"{dir}/garbage.json", "malformed JSON"}},
+      {"scenario non-finite field",
+       {{"huge.json", pointWith("\"time_step_s\": 0.02", "\"time_step_s\": 1e999")}},
+       scenario + "{dir}/huge.json",
+       {"{dir}/huge.json", "not a finite number"}},
+      {"scenario duration below the step",
+       {{"short.json", pointWith("\"duration_s\": 3.0", "\"duration_s\": 0.01")}},
+       scenario + "{dir}/short.json",
+       {"{dir}/short.json", "duration_s", "time_step_s"}},
       {"scenario missing parameter",
        {{"speed.json", pointWith("\"wave_speed_m_per_s\": 1.0,", "")}},
-       scenario + "{dir}/speed.json", {"{dir}/speed.json", "parameters.wave_speed_m_per_s", "missing"}},
+       scenario + "{dir}/speed.json",
+       {"{dir}/speed.json", "parameters.wave_speed_m_per_s", "missing"}},
       {"scenario source outside the domain",
        {{"far.json", pointWith("\"position_m\": [0.0, 0.0]", "\"position_m\": [9.0, 0.0]")}},
-       scenario + "{dir}/far.json", {"{dir}/far.json", "wave_particles.sources[0].position_m"}},
-      {"unknown scenario", {}, scenario + "no_such_scenario", {"no_such_scenario", "not a bundled scenario"}},
+       scenario + "{dir}/far.json",
+       {"{dir}/far.json", "wave_particles.sources[0].position_m"}},
+      {"unknown scenario",
+       {},
+       scenario + "no_such_scenario",
+       {"no_such_scenario", "not a bundled scenario"}},
   };
 }
 
@@ -194,16 +238,26 @@ std::vector<BadInput> displacementInputs(const std::string& run) {
       sidecarWith("opensubdiv/catmark_torus", "opensubdiv/catmark_cube");
   return {
       {"exr missing", {}, displace + "{dir}/missing.exr", {"{dir}/missing.exr", "no such file"}},
-      {"exr truncated", {{"cut.exr", exr.substr(0, exr.size() / 2)}, {"cut.exr.json", sidecar}},
-       displace + "{dir}/cut.exr", {"{dir}/cut.exr"}},
-      {"exr not an EXR", {{"garbage.exr", binaryGarbage(2048)}, {"garbage.exr.json", sidecar}},
-       displace + "{dir}/garbage.exr", {"{dir}/garbage.exr"}},
-      {"exr without its sidecar", {{"alone.exr", exr}}, displace + "{dir}/alone.exr",
+      {"exr truncated",
+       {{"cut.exr", exr.substr(0, exr.size() / 2)}, {"cut.exr.json", sidecar}},
+       displace + "{dir}/cut.exr",
+       {"{dir}/cut.exr"}},
+      {"exr not an EXR",
+       {{"garbage.exr", binaryGarbage(2048)}, {"garbage.exr.json", sidecar}},
+       displace + "{dir}/garbage.exr",
+       {"{dir}/garbage.exr"}},
+      {"exr without its sidecar",
+       {{"alone.exr", exr}},
+       displace + "{dir}/alone.exr",
        {"{dir}/alone.exr.json", "missing bake sidecar"}},
-      {"exr sidecar of another kind", {{"kind.exr", exr}, {"kind.exr.json", vector_sidecar}},
-       displace + "{dir}/kind.exr", {"{dir}/kind.exr.json", "kind"}},
-      {"exr baked for another asset", {{"other.exr", exr}, {"other.exr.json", other_asset}},
-       displace + "{dir}/other.exr", {"other.exr", "tiles but the surface has"}},
+      {"exr sidecar of another kind",
+       {{"kind.exr", exr}, {"kind.exr.json", vector_sidecar}},
+       displace + "{dir}/kind.exr",
+       {"{dir}/kind.exr.json", "kind"}},
+      {"exr baked for another asset",
+       {{"other.exr", exr}, {"other.exr.json", other_asset}},
+       displace + "{dir}/other.exr",
+       {"other.exr", "tiles but the surface has"}},
   };
 }
 
@@ -216,12 +270,17 @@ std::vector<BadInput> optionInputs(const std::string& run) {
       {"unknown suite", {}, run + "--suite huge", {"--suite", "huge"}},
       {"option out of range", {}, run + "--threads -1", {"--threads", "-1"}},
       {"unknown option", {}, run + "--frobnicate", {"--frobnicate"}},
-      {"tessellation level not a number", {},
-       "tessellate --domain tri --spacing integer --outer 1,x,1", {"--outer", "'x'"}},
-      {"tessellation level count", {}, "tessellate --domain quad --spacing integer --outer 1,1",
+      {"tessellation level not a number",
+       {},
+       "tessellate --domain tri --spacing integer --outer 1,x,1",
+       {"--outer", "'x'"}},
+      {"tessellation level count",
+       {},
+       "tessellate --domain quad --spacing integer --outer 1,1",
        {"--outer", "needs 4 values"}},
       // Where results go: a path through a regular file cannot hold a folder, whoever runs.
-      {"unwritable --out", {{"plain_file", "x"}},
+      {"unwritable --out",
+       {{"plain_file", "x"}},
        "run --quiet --technique phong --measure memory --asset catmark_cube --out "
        "{dir}/plain_file/results",
        {"{dir}/plain_file/results", "cannot create results folder"}},
@@ -291,9 +350,9 @@ TEST(BadInputTable, ARunIdInUseIsRefusedAndTheEarlierRunKept) {
 // A level above the spacing's maximum is not an error: it is clamped, as hardware does, and
 // the clamp is reported on one line.
 TEST(BadInputTable, ALevelAboveTheMaximumIsClampedAndReported) {
-  const SplitResult r =
-      runTessbenchSplit("tessellate --domain quad --spacing fractional_odd --outer 1,2,1e999,3 "
-                        "--inner 200,1");
+  const SplitResult r = runTessbenchSplit(
+      "tessellate --domain quad --spacing fractional_odd --outer 1,2,1e999,3 "
+      "--inner 200,1");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("--outer[2] = inf is above 63, the fractional_odd maximum: clamped to 63"),
             std::string::npos)
@@ -309,7 +368,8 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
   const fs::path dir = testing::scratchDirectory("no_device");
   const SplitResult r = runTessbenchSplit(
       "run --quiet --technique phong --technique wave_particles --asset catmark_cube --run-id r "
-      "--out " + (dir / "out").string(),
+      "--out " +
+          (dir / "out").string(),
       "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(readFile(dir / "out" / "r" / "results.json"));
@@ -326,10 +386,11 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
         const std::string note = row["keys"].value("note", "");
         EXPECT_EQ(note.find("skipped"), std::string::npos) << id << " " << row["keys"].dump();
         EXPECT_EQ(note.find("failed"), std::string::npos) << id << " " << row["keys"].dump();
-        const bool gpu_part = row["keys"].value("backend", "") == "gpu" ||
-                              row["keys"].value("part", "") == "gpu";
+        const bool gpu_part =
+            row["keys"].value("backend", "") == "gpu" || row["keys"].value("part", "") == "gpu";
         if (!row.contains("status")) {
-          EXPECT_FALSE(gpu_part) << id << " " << row["keys"].dump() << ": measured without a device";
+          EXPECT_FALSE(gpu_part) << id << " " << row["keys"].dump()
+                                 << ": measured without a device";
           EXPECT_FALSE(row["metrics"].empty()) << id << " " << row["keys"].dump();
           ++measured_rows[id];
           continue;
@@ -361,12 +422,15 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
 // (with the reason), so the comparison fails instead of passing; two runs with the device pass.
 TEST(NoDevice, ACompareAgainstARunWithADeviceSaysTheGpuFiguresAreMissing) {
   const fs::path dir = testing::scratchDirectory("no_device_compare");
-  const std::string run = "run --quiet --technique phong --asset catmark_cube --measure cracks "
-                          "--measure memory --out " + (dir / "out").string() + " --run-id ";
+  const std::string run =
+      "run --quiet --technique phong --asset catmark_cube --measure cracks "
+      "--measure memory --out " +
+      (dir / "out").string() + " --run-id ";
   ASSERT_EQ(runTessbenchSplit(run + "device").exit_code, 0);
   ASSERT_EQ(runTessbenchSplit(run + "device_again").exit_code, 0);
-  ASSERT_EQ(runTessbenchSplit(run + "none", "VK_ICD_FILENAMES=/nonexistent/icd.json "
-                                            "VK_DRIVER_FILES=/nonexistent/icd.json")
+  ASSERT_EQ(runTessbenchSplit(run + "none",
+                              "VK_ICD_FILENAMES=/nonexistent/icd.json "
+                              "VK_DRIVER_FILES=/nonexistent/icd.json")
                 .exit_code,
             0);
   const std::string device = (dir / "out" / "device").string();
@@ -378,7 +442,8 @@ TEST(NoDevice, ACompareAgainstARunWithADeviceSaysTheGpuFiguresAreMissing) {
   EXPECT_EQ(lost.exit_code, 1) << lost.out << lost.err;
   EXPECT_NE(lost.out.find("FAIL"), std::string::npos) << lost.out;
   EXPECT_NE(lost.out.find("| missing | phong/alpha0.75 opensubdiv/catmark_cube | cracks | "
-                          "backend=gpu level=1 path=tessellator spacing=integer | (all) |  | skipped: no Vulkan device"),
+                          "backend=gpu level=1 path=tessellator spacing=integer | (all) |  | "
+                          "skipped: no Vulkan device"),
             std::string::npos)
       << lost.out;
   EXPECT_NE(lost.out.find("Vulkan device differs"), std::string::npos) << lost.out;
@@ -392,7 +457,8 @@ TEST(PluginFailure, AThrowWhileBuildingFailsThatRecordOnly) {
   const SplitResult r = runTessbenchSplit(
       std::string("--plugin ") + TB_EXAMPLE_PLUGIN +
       " run --quiet --technique example_flat --technique phong --asset catmark_cube --measure "
-      "memory --measure error --run-id r --out " + (dir / "out").string());
+      "memory --measure error --run-id r --out " +
+      (dir / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("tessbench: failed: example_flat/default opensubdiv/catmark_cube memory: "
                        "building the technique failed: example_flat: deliberately fails"),
@@ -404,7 +470,8 @@ TEST(PluginFailure, AThrowWhileBuildingFailsThatRecordOnly) {
     for (const auto& measure : record["measures"]) {
       if (record["technique"] == "example_flat") {
         EXPECT_EQ(measure["status"], "failed");
-        EXPECT_NE(measure["reason"].get<std::string>().find("deliberately fails"), std::string::npos);
+        EXPECT_NE(measure["reason"].get<std::string>().find("deliberately fails"),
+                  std::string::npos);
         ++failed;
       } else {
         EXPECT_EQ(measure["status"], "ok") << record["variant"] << " " << measure["measure"];
@@ -424,7 +491,8 @@ TEST(PluginFailure, AMissingShaderFailsTheGpuRowsNamingIt) {
   const SplitResult r = runTessbenchSplit(
       std::string("--plugin ") + TB_EXAMPLE_PLUGIN +
       " run --quiet --technique example_no_shader --asset loop_cube --measure cracks "
-      "--run-id r --out " + (dir / "out").string());
+      "--run-id r --out " +
+      (dir / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("tessbench: failed: example_no_shader/default"), std::string::npos) << r.err;

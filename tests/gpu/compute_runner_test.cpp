@@ -30,7 +30,8 @@ std::vector<GpuComputeProgram> growProgram(uint32_t repeats) {
   grow.indirect_buffer = "count_a";
   GpuComputePass prepare;
   prepare.shader = "gpu/test_runner_prepare.comp";
-  prepare.buffers = {{0, "count_a", 16, {}, true, "count_b"}, {1, "count_b", 16, {}, true, "count_a"}};
+  prepare.buffers = {{0, "count_a", 16, {}, true, "count_b"},
+                     {1, "count_b", 16, {}, true, "count_a"}};
   GpuComputePass count;
   count.shader = "gpu/test_runner_count.comp";
   count.buffers = {{0, "total", 4, {}, true, ""}};

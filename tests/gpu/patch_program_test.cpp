@@ -108,8 +108,8 @@ TEST(PatchProgram, PrimitivesGeneratedEqualTheTessellatorsTriangles) {
                                             {{1, 1, 1, 1}, {1, 1}},
                                             {{12.75f, 3, 3, 5}, {8.25f, 2.5f}},
                                             {{0, 4, 4, 4}, {4, 4}}};  // culled
-  for (tess::Spacing spacing : {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd,
-                                tess::Spacing::kFractionalEven}) {
+  for (tess::Spacing spacing :
+       {tess::Spacing::kInteger, tess::Spacing::kFractionalOdd, tess::Spacing::kFractionalEven}) {
     uint64_t triangles = 0, points = 0;
     for (const tess::Levels& l : levels) {
       const tess::Tessellation t = tess::tessellate(tess::Domain::kQuad, spacing, l);

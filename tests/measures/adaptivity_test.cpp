@@ -51,8 +51,12 @@ std::vector<view::View> pathViews(const char* name, const techniques::SurfacePat
 constexpr tess::Spacing kSpacings[] = {tess::Spacing::kInteger, tess::Spacing::kPow2,
                                        tess::Spacing::kFractionalOdd,
                                        tess::Spacing::kFractionalEven};
-constexpr const char* kSafePolicies[] = {"uniform",  "distance",           "sphere_diameter",
-                                         "lp2_edge", "lp2_edge_silhouette", "lp2_edge_roundness",
+constexpr const char* kSafePolicies[] = {"uniform",
+                                         "distance",
+                                         "sphere_diameter",
+                                         "lp2_edge",
+                                         "lp2_edge_silhouette",
+                                         "lp2_edge_roundness",
                                          "error_bound"};
 
 constexpr uint32_t kCrackCheckFrames = 24;
@@ -89,8 +93,8 @@ TEST_P(AdaptiveSymmetricVariants, AreCrackFreeUnderEveryPolicyAlongOrbitAndDolly
           FAIL() << path << " " << name << " " << tess::toString(spacing) << ": " << error.what();
         }
         for (const measures::AdaptivityFrame& f : frames) {
-          const std::string where = std::string(path) + " frame " + std::to_string(f.frame) +
-                                    " " + name + " " + std::string(tess::toString(spacing));
+          const std::string where = std::string(path) + " frame " + std::to_string(f.frame) + " " +
+                                    name + " " + std::string(tess::toString(spacing));
           ASSERT_TRUE(f.gpu_measured) << where;
           EXPECT_EQ(f.twin_level_mismatches, 0u) << where;
           EXPECT_EQ(f.factor_mismatches_cpu, 0u) << where;
@@ -144,7 +148,8 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
       for (size_t v = 0; v < all.size(); v += testing::sweepStride(4)) views.push_back(all[v]);
       // The dense-edge control (its own branch of the edge search) on the dolly alone.
       std::vector<const char*> names = {"sphere_diameter", "lp2_edge_silhouette", "error_bound"};
-      if (std::string(path) == "dolly" && !testing::kUnderSanitizer) names.push_back("error_bound_dense");
+      if (std::string(path) == "dolly" && !testing::kUnderSanitizer)
+        names.push_back("error_bound_dense");
       for (const char* name : names) {
         for (const measures::AdaptivityFrame& f :
              run.frames(*lod::parseFactorPolicy(name), tess::Spacing::kFractionalOdd, views,
@@ -157,7 +162,8 @@ TEST(Adaptivity, TwinEqualsTheTcsOnEveryFrameOfEveryBundledPath) {
       }
     }
     EXPECT_EQ(frames, (3u * (24 + 120 + 48) + (testing::kUnderSanitizer ? 0 : 120)) /
-                          testing::sweepStride(4)) << c;
+                          testing::sweepStride(4))
+        << c;
   }
 }
 
@@ -199,7 +205,8 @@ TEST(Adaptivity, IntegerSpacingPopsMoreThanFractionalOddAlongTheDolly) {
   const lod::FactorPolicy policy = *lod::parseFactorPolicy("sphere_diameter");
   auto maxPop = [&](tess::Spacing spacing) {
     double pop = 0;
-    for (const measures::AdaptivityFrame& f : run.frames(policy, spacing, views, {.cracks = false})) {
+    for (const measures::AdaptivityFrame& f :
+         run.frames(policy, spacing, views, {.cracks = false})) {
       pop = std::max(pop, f.pop.max_px);
     }
     return pop;

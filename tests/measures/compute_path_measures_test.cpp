@@ -59,8 +59,8 @@ TEST(ComputePathMeasures, CracksOnTheComputePathEqualTheTessellatorPaths) {
     const char* variant;
     bool cracks;  // the variant cracks on this asset (a control of the figures' equality)
   };
-  for (const PathCase& c : {PathCase{"gregory_acc", "asymmetric", true},
-                            PathCase{"pn_triangles", "pn", false}}) {
+  for (const PathCase& c :
+       {PathCase{"gregory_acc", "asymmetric", true}, PathCase{"pn_triangles", "pn", false}}) {
     const techniques::BuiltSurface patches =
         surfaceOf(c.technique, c.variant, "opensubdiv/loop_xord_interior.obj");
     measures::CrackSession session(*patches);

@@ -14,9 +14,9 @@
 #include "core/gpu/patch_program.h"
 #include "core/mesh/obj_loader.h"
 #include "core/view/camera.h"
+#include "harness/lod/tangent_plane.h"
 #include "harness/measures/common/instruction_counts/instructions.h"
 #include "harness/measures/culling/culling_cost.h"
-#include "harness/lod/tangent_plane.h"
 #include "harness/suite/camera_path.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
@@ -52,11 +52,12 @@ lod::CullPatchBounds flatQuad(double offset_x = 0) {
   techniques::PatchCullBounds net;
   net.bezier_degree = 3;
   for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) net.bezier_net.push_back({offset_x - 1 + 2 * i / 3.0, -1 + 2 * j / 3.0, 0});
+    for (int i = 0; i < 4; ++i)
+      net.bezier_net.push_back({offset_x - 1 + 2 * i / 3.0, -1 + 2 * j / 3.0, 0});
   }
   double normal_max = 0;
-  for (const auto& c : lod::tangentPlaneCoefficients(techniques::PatchDomain::kQuad, net,
-                                                     net.bezier_net[0])) {
+  for (const auto& c :
+       lod::tangentPlaneCoefficients(techniques::PatchDomain::kQuad, net, net.bezier_net[0])) {
     patch.tangent_plane.push_back({float(c[0]), float(c[1]), float(c[2]), float(c[3])});
     normal_max = std::max(normal_max, std::hypot(c[0], c[1], c[2]));
   }
@@ -215,7 +216,8 @@ TEST(CullPolicy, TangentPlaneKeepsAPatchSeenEdgeOnAndFollowsItsSign) {
   lod::CullPatchBounds patch = flatQuad();
   patch.cone_sine = 2;  // no cone: the tangent-plane half alone
   const auto culls = [](const lod::CullPatchBounds& p, const view::View& view) {
-    return lod::cullsPatch(lod::cullParams(lod::CullPolicy::kTangentPlane, view, boundsOfOne(p)), p);
+    return lod::cullsPatch(lod::cullParams(lod::CullPolicy::kTangentPlane, view, boundsOfOne(p)),
+                           p);
   };
   const view::View edge_on = viewFrom({0, -20, 0}, {0, 0, 0}, 0.1, 100);
   const view::View below = viewFrom({0, -20, -1}, {0, 0, 0}, 0.1, 100);
@@ -277,10 +279,12 @@ TEST(CullPolicyGpu, TwinEqualsEveryTechniqueTcsOnEveryFrameOfTheBundledPaths) {
           const std::vector<uint8_t> twin = lod::cullDecisions(params, bounds);
           for (const gpu::GpuPatchProgram& program : programs) {
             const gpu::TcsCullPolicy device_policy = lod::tcsCullPolicy(params, bounds, program);
-            const gpu::PatchProgramCapture capture = gpu::runPatchProgram(
-                context, program, level_one,
-                {.patches_per_draw = 256, .capture = false, .statistics = false,
-                 .cull_policy = &device_policy});
+            const gpu::PatchProgramCapture capture =
+                gpu::runPatchProgram(context, program, level_one,
+                                     {.patches_per_draw = 256,
+                                      .capture = false,
+                                      .statistics = false,
+                                      .cull_policy = &device_policy});
             ASSERT_EQ(capture.tcs_levels.size(), program.patch_count);
             for (uint32_t i = 0; i < program.patch_count; ++i) {
               const size_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];

@@ -88,7 +88,8 @@ TEST(Declarations, TheRunCarriesTheSelectedMeasuresDeclarations) {
 // quads and triangles mixed; triangles) and checks each emitted metric against its declaration.
 TEST(Declarations, EveryEmittedMetricIsDeclaredWithItsUnit) {
   // A schema check over a whole suite run; under a sanitizer ThreadInvariance runs that code.
-  if (::tb::testing::kUnderSanitizer) GTEST_SKIP() << "ThreadInvariance runs the suite under a sanitizer";
+  if (::tb::testing::kUnderSanitizer)
+    GTEST_SKIP() << "ThreadInvariance runs the suite under a sanitizer";
   suite::SuiteSelection selection;
   selection.assets = {suite::resolveAsset("catmark_cube"), suite::resolveAsset("catmark_pyramid"),
                       suite::resolveAsset("loop_cube")};

@@ -121,10 +121,12 @@ FloorFigures floorTriangles(const std::vector<FloorPatch>& patches,
   FloorFigures out;
   std::map<std::pair<int, tess::LevelsBits>, size_t> counts;  // (domain, levels) -> triangles
   const auto count = [&](PatchDomain domain, const tess::Levels& levels) {
-    const tess::Domain d = domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
+    const tess::Domain d =
+        domain == PatchDomain::kQuad ? tess::Domain::kQuad : tess::Domain::kTriangle;
     const auto key = std::make_pair(int(d), tess::levelsBits(levels));
     auto it = counts.find(key);
-    if (it == counts.end()) it = counts.emplace(key, tess::tessellate(d, spacing, levels).triangles.size()).first;
+    if (it == counts.end())
+      it = counts.emplace(key, tess::tessellate(d, spacing, levels).triangles.size()).first;
     return double(it->second);
   };
   for (const view::View& view : views) {
@@ -147,7 +149,8 @@ std::vector<FloorPatch> floorPatches(const techniques::SurfacePatches& s) {
   std::vector<FloorPatch> out(s.patchCount());
   for (size_t p = 0; p < out.size(); ++p) {
     const techniques::CurvatureBounds b = s.curvatureBounds(p).value();
-    out[p] = {s.patchDomain(p), testing::sampleSecondDerivatives(s, p, kFloorSamples), b.hull, b.edge_hull};
+    out[p] = {s.patchDomain(p), testing::sampleSecondDerivatives(s, p, kFloorSamples), b.hull,
+              b.edge_hull};
   }
   return out;
 }
@@ -167,7 +170,8 @@ constexpr double kControlScale = 1.0 / 16;
 FloorRecord floorRecord(const char* technique_id, const std::string& asset, const char* path,
                         uint32_t frames, tess::Spacing spacing = tess::Spacing::kFractionalOdd) {
   FloorRecord out;
-  const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(technique_id);
+  const techniques::Technique* technique =
+      techniques::TechniqueRegistry::instance().find(technique_id);
   const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(asset));
   if (technique == nullptr || !technique->checkSupport(mesh).empty()) return out;
   const techniques::BuiltSurface surface =
@@ -175,7 +179,8 @@ FloorRecord floorRecord(const char* technique_id, const std::string& asset, cons
   measures::AdaptivityRun run(*surface, nullptr, "CPU only", nullptr);
   if (!run.policyUnavailable(*lod::parseFactorPolicy("error_bound")).empty()) return out;
   const std::vector<view::View> views =
-      suite::sampleCameraPath(suite::resolveCameraPath(path), mesh::boundsOf(surface->controlMesh()), frames)
+      suite::sampleCameraPath(suite::resolveCameraPath(path),
+                              mesh::boundsOf(surface->controlMesh()), frames)
           .views;
   out.summary = run.summarise(*lod::parseFactorPolicy("error_bound"), spacing, views, kTargetPx);
   std::vector<FloorPatch> patches = floorPatches(*surface);
@@ -191,12 +196,12 @@ FloorRecord floorRecord(const char* technique_id, const std::string& asset, cons
 void printRecord(const char* technique, const std::string& asset, const char* path,
                  tess::Spacing spacing, const FloorRecord& r) {
   const double u = r.summary.uniform_triangles_per_frame;
-  std::printf("[floor] %s %s %s %s: uniform L%u %.0f; ideal %.2f x, error_bound %.2f x, prescription "
-              "floor %.2f x (anisotropic %.2f x) uniform's triangles\n",
-              technique, asset.c_str(), path, std::string(tess::toString(spacing)).c_str(),
-              r.summary.uniform_level, u,
-              r.summary.ideal_triangles_per_frame / u, r.summary.triangle_ratio_vs_uniform,
-              r.floor.isotropic / u, r.floor.anisotropic / u);
+  std::printf(
+      "[floor] %s %s %s %s: uniform L%u %.0f; ideal %.2f x, error_bound %.2f x, prescription "
+      "floor %.2f x (anisotropic %.2f x) uniform's triangles\n",
+      technique, asset.c_str(), path, std::string(tess::toString(spacing)).c_str(),
+      r.summary.uniform_level, u, r.summary.ideal_triangles_per_frame / u,
+      r.summary.triangle_ratio_vs_uniform, r.floor.isotropic / u, r.floor.anisotropic / u);
 }
 
 // One record per surface technique (and gregory_acc on the flyby) where the prescription's
@@ -234,7 +239,8 @@ TEST(ErrorBoundFloor, ThePrescriptionNeedsMoreThanUniformOnTheseRecords) {
       printRecord(fc.technique, fc.asset, fc.path, spacing, r);
       const double uniform = r.summary.uniform_triangles_per_frame;
       EXPECT_GT(r.floor.least(), uniform) << where;
-      EXPECT_GT(r.summary.triangles_per_frame, r.floor.least()) << where << ": error_bound below its floor";
+      EXPECT_GT(r.summary.triangles_per_frame, r.floor.least())
+          << where << ": error_bound below its floor";
       EXPECT_LT(r.control.least(), uniform) << where << ": the control stayed above uniform";
     }
   }
@@ -264,9 +270,10 @@ TEST(ErrorBoundFloor, EveryBundledAssetWhenAsked) {
         both += above && bound ? 1 : 0;
         if (above || bound) printRecord(technique, asset, path, tess::Spacing::kFractionalOdd, r);
       }
-      std::printf("[floor] %s %s: %zu records; error_bound misses acceptance 4 on %zu, the "
-                  "prescription's floor is above uniform on %zu (%zu of the misses)\n",
-                  technique, path, records, bound_above, floor_above, both);
+      std::printf(
+          "[floor] %s %s: %zu records; error_bound misses acceptance 4 on %zu, the "
+          "prescription's floor is above uniform on %zu (%zu of the misses)\n",
+          technique, path, records, bound_above, floor_above, both);
     }
   }
 }

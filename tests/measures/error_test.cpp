@@ -1,6 +1,8 @@
 // Oracle: the limit surface itself. Patches that return Bfr's limit have zero
 // parametric error; the same patches moved by a known offset have exactly that
 // error; and phong's figures on the Loop icosahedron are finite and non-zero.
+#include "harness/measures/error/error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 
 #include "core/mesh/obj_loader.h"
 #include "harness/lod/reference_scheme.h"
-#include "harness/measures/error/error.h"
 #include "reference/limit_surface.h"
 #include "techniques/registry.h"
 #include "tests/measures/face_patches.h"
@@ -85,7 +86,6 @@ TEST(SurfaceError, PhongBulgesAwayFromTheShrunkenLoopLimitOfTheIcosahedron) {
     previous = rms;
   }
 }
-
 
 // Oracle: the full figure (every patch) against the sampled one, with the budget forced down to
 // 16 patches (the feature patches and at most one run of others), on the bundled asset with

@@ -126,8 +126,8 @@ TEST(FactorPolicy, SharedEdgesGetTheSameFactorOnlyWhenTheOrderIsCanonical) {
   for (int i = 0; i < 64; ++i) {
     const view::View view = viewFrom({3.0 + 0.1 * i, 0.7 - 0.03 * i, 2.0 + 0.07 * i}, {0.5, 0.5, 0},
                                      45, 1920, 1080, 0.01, 100);
-    for (const char* name : {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette",
-                             "lp2_edge_roundness"}) {
+    for (const char* name :
+         {"distance", "sphere_diameter", "lp2_edge", "lp2_edge_silhouette", "lp2_edge_roundness"}) {
       const lod::FactorParams params = lod::factorParams(*lod::parseFactorPolicy(name), view,
                                                          tess::Spacing::kFractionalOdd, 2.0);
       EXPECT_EQ(std::bit_cast<uint32_t>(lod::edgeFactor(params, a, b)),
@@ -170,12 +170,15 @@ TEST(FactorPolicyGpu, TwinEqualsEveryTechniqueTcsBitwise) {
       {"gregory_acc", "opensubdiv/catmark_nonquads.obj"},
       {"pn_triangles", "tessbench/tri_torus.obj"},
       {"phong", "tessbench/cylinder_seam.obj"}};
-  const char* policies[] = {"uniform",           "distance",           "sphere_diameter",
-                            "lp2_edge",          "lp2_edge_silhouette", "lp2_edge_roundness",
+  const char* policies[] = {"uniform",
+                            "distance",
+                            "sphere_diameter",
+                            "lp2_edge",
+                            "lp2_edge_silhouette",
+                            "lp2_edge_roundness",
                             "sphere_diameter_order_dependent"};
   const tess::Spacing spacings[] = {tess::Spacing::kInteger, tess::Spacing::kPow2,
-                                    tess::Spacing::kFractionalOdd,
-                                    tess::Spacing::kFractionalEven};
+                                    tess::Spacing::kFractionalOdd, tess::Spacing::kFractionalEven};
   for (const auto& [technique_id, asset] : cases) {
     const techniques::Technique* technique =
         techniques::TechniqueRegistry::instance().find(technique_id);
@@ -204,10 +207,13 @@ TEST(FactorPolicyGpu, TwinEqualsEveryTechniqueTcsBitwise) {
             }
             const gpu::TcsFactorPolicy device_policy =
                 lod::tcsFactorPolicy(params, corners, program);
-            const gpu::PatchProgramCapture capture = gpu::runPatchProgram(
-                context, program, expected,
-                {.spacing = spacing, .patches_per_draw = 64, .capture = false,
-                 .statistics = false, .factor_policy = &device_policy});
+            const gpu::PatchProgramCapture capture =
+                gpu::runPatchProgram(context, program, expected,
+                                     {.spacing = spacing,
+                                      .patches_per_draw = 64,
+                                      .capture = false,
+                                      .statistics = false,
+                                      .factor_policy = &device_policy});
             ASSERT_EQ(capture.tcs_levels.size(), program.patch_count);
             for (uint32_t i = 0; i < program.patch_count; ++i) {
               ++compared;

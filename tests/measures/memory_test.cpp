@@ -5,7 +5,6 @@
 #include "harness/measures/memory/memory.h"
 
 #include <gtest/gtest.h>
-
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -13,7 +12,6 @@
 #include <cstdint>
 
 #include "core/mesh/mesh_copies.h"
-
 #include "core/mesh/obj_loader.h"
 #include "core/tess/tessellator.h"
 #include "harness/results/results_json.h"
@@ -147,8 +145,8 @@ TEST(Memory, CompressedSizeIsTheSumOverChunksOfPatches) {
 TEST(Memory, SampledCompressedBaselineIsWithinItsBoundOfEveryChunk) {
   for (const char* name : {"production/catmark_pawn_r2", "production/tri_pawn_r2"}) {
     const mesh::Mesh mesh = suite::loadAsset(suite::resolveAsset(name));
-    const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(
-        mesh.allFacesOfSize(3) ? "phong" : "acc");
+    const techniques::Technique* technique =
+        techniques::TechniqueRegistry::instance().find(mesh.allFacesOfSize(3) ? "phong" : "acc");
     const auto patches = techniques::buildSurface(*technique, mesh, technique->variants()[0]);
     const measures::CompressedSize all = measures::compressedSize(*patches, 8, SIZE_MAX);
     const measures::CompressedSize sampled = measures::compressedSize(*patches, 8);

@@ -1,9 +1,9 @@
-// pn_triangles and phong cracks on split normals, measured with harness/measures/common/cracks/cracks.h
-// on CPU float (evaluateFloat) and on lavapipe's capture of the techniques' own shaders.
-// Oracle: the crack measure's pairing of shared-edge points by welded position (its own
-// tests check it against hand counts); plain PN must open gaps where the two faces' normals
-// differ (flat_cube: every cube edge), geometry normals (seed 003) and PN-AEN must make the
-// paired points bitwise equal. flat_cube.obj does not crack under plain PN: each cube edge
+// pn_triangles and phong cracks on split normals, measured with
+// harness/measures/common/cracks/cracks.h on CPU float (evaluateFloat) and on lavapipe's capture of
+// the techniques' own shaders. Oracle: the crack measure's pairing of shared-edge points by welded
+// position (its own tests check it against hand counts); plain PN must open gaps where the two
+// faces' normals differ (flat_cube: every cube edge), geometry normals (seed 003) and PN-AEN must
+// make the paired points bitwise equal. flat_cube.obj does not crack under plain PN: each cube edge
 // is perpendicular to both face normals, so w_ij = 0 and both sides are the straight edge
 // (paper §3.1); its split normals show the fixes' cost instead (geometry normals round it).
 #include <gtest/gtest.h>

@@ -31,7 +31,8 @@ struct Tri {
 mesh::Vec3d quadValue(const std::vector<mesh::Vec3d>& net, int d, double u, double v) {
   mesh::Vec3d p{0, 0, 0};
   for (int j = 0; j <= d; ++j) {
-    for (int i = 0; i <= d; ++i) p = p + net[size_t(i + (d + 1) * j)] * (bernstein(d, i, u) * bernstein(d, j, v));
+    for (int i = 0; i <= d; ++i)
+      p = p + net[size_t(i + (d + 1) * j)] * (bernstein(d, i, u) * bernstein(d, j, v));
   }
   return p;
 }
@@ -62,9 +63,11 @@ double quadOracle(const std::vector<mesh::Vec3d>& net, int d, const mesh::Vec3d&
 double triangleOracle(const std::vector<mesh::Vec3d>& net, int d, const mesh::Vec3d& eye, Tri t) {
   constexpr double h = 1e-6;
   const mesh::Vec3d d1 = (triangleValue(net, d, {t.u - h, t.v + h, t.w}) -
-                          triangleValue(net, d, {t.u + h, t.v - h, t.w})) * (0.5 / h);
+                          triangleValue(net, d, {t.u + h, t.v - h, t.w})) *
+                         (0.5 / h);
   const mesh::Vec3d d2 = (triangleValue(net, d, {t.u - h, t.v, t.w + h}) -
-                          triangleValue(net, d, {t.u + h, t.v, t.w - h})) * (0.5 / h);
+                          triangleValue(net, d, {t.u + h, t.v, t.w - h})) *
+                         (0.5 / h);
   return dot(eye - triangleValue(net, d, t), cross(d1, d2));
 }
 
@@ -84,7 +87,8 @@ Sum coefficientSum(const std::vector<lod::TangentPlaneCoefficient>& c, PatchDoma
   if (domain == PatchDomain::kQuad) {
     const int n = int(std::lround(std::sqrt(double(c.size())))) - 1;
     for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i) term(size_t(i + (n + 1) * j), bernstein(n, i, t.u) * bernstein(n, j, t.v));
+      for (int i = 0; i <= n; ++i)
+        term(size_t(i + (n + 1) * j), bernstein(n, i, t.u) * bernstein(n, j, t.v));
     }
     return sum;
   }
@@ -93,9 +97,9 @@ Sum coefficientSum(const std::vector<lod::TangentPlaneCoefficient>& c, PatchDoma
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; i + j <= n; ++j) {
       const int k = n - i - j;
-      term(size_t(techniques::triangleNetSlot(n, i, j)),
-           techniques::trinomialCoefficient(i, j, k) * std::pow(t.u, i) * std::pow(t.v, j) *
-               std::pow(t.w, k));
+      term(size_t(techniques::triangleNetSlot(n, i, j)), techniques::trinomialCoefficient(i, j, k) *
+                                                             std::pow(t.u, i) * std::pow(t.v, j) *
+                                                             std::pow(t.w, k));
     }
   }
   return sum;
@@ -124,7 +128,8 @@ TEST(TangentPlane, CoefficientsSumToTheTangentPlaneTestOfTheSurface) {
       bounds.bezier_mirrored = trial % 2 == 1;
       const size_t points = quad ? size_t((c.degree + 1) * (c.degree + 1))
                                  : size_t(techniques::triangleNetSize(c.degree));
-      for (size_t i = 0; i < points; ++i) bounds.bezier_net.push_back(randomPoint() + mesh::Vec3d{5, -3, 2});
+      for (size_t i = 0; i < points; ++i)
+        bounds.bezier_net.push_back(randomPoint() + mesh::Vec3d{5, -3, 2});
       const mesh::Vec3d origin = bounds.bezier_net[0];
       const auto coefficients = lod::tangentPlaneCoefficients(c.domain, bounds, origin);
       ASSERT_EQ(coefficients.size(), c.expected_coefficients);
@@ -159,7 +164,8 @@ TEST(TangentPlane, ABumpySheetSeenFromBelowHasEveryCoefficientNegative) {
   auto signs = [&](const mesh::Vec3d& eye) {
     size_t negative = 0;
     const mesh::Vec3d d = eye - origin;
-    for (const auto& c : coefficients) negative += d[0] * c[0] + d[1] * c[1] + d[2] * c[2] + c[3] < 0;
+    for (const auto& c : coefficients)
+      negative += d[0] * c[0] + d[1] * c[1] + d[2] * c[2] + c[3] < 0;
     return negative;
   };
   EXPECT_EQ(signs({0.5, 0.5, -3}), coefficients.size());  // below: faces away everywhere

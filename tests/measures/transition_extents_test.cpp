@@ -3,6 +3,8 @@
 // every triangle of a tessellation whose edges all differ (the corner triangles between two
 // unequal edges included), and a regular grid's extents (what a bound on an n x n grid
 // assumes) do not.
+#include "harness/lod/transition_extents.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include <vector>
 
 #include "core/tess/tessellator.h"
-#include "harness/lod/transition_extents.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -32,7 +33,8 @@ std::array<double, 3> widest(const tess::Tessellation& t) {
       out[axis] = std::max(out[axis], high - low);
     }
     const auto sq = [](const tess::DomainPoint& p, const tess::DomainPoint& q) {
-      return (double(p[0]) - q[0]) * (double(p[0]) - q[0]) + (double(p[1]) - q[1]) * (double(p[1]) - q[1]);
+      return (double(p[0]) - q[0]) * (double(p[0]) - q[0]) +
+             (double(p[1]) - q[1]) * (double(p[1]) - q[1]);
     };
     const double ab = sq(a, b), bc = sq(b, c), ca = sq(c, a), longest = std::max({ab, bc, ca});
     const double area2 = std::fabs((double(b[0]) - a[0]) * (double(c[1]) - a[1]) -
@@ -87,7 +89,8 @@ Coverage sweep(tess::Domain domain, tess::Spacing spacing, size_t configs) {
     EXPECT_TRUE(within) << tess::toString(domain) << " " << tess::toString(spacing) << " outer ("
                         << outer[0] << " " << outer[1] << " " << outer[2] << " " << outer[3]
                         << ") inner " << n << ": widest " << actual[0] << " " << actual[1] << " "
-                        << actual[2] << " against " << bound[0] << " " << bound[1] << " " << bound[2];
+                        << actual[2] << " against " << bound[0] << " " << bound[1] << " "
+                        << bound[2];
     // The control: a regular grid of the coarsest level present.
     const double coarsest = *std::min_element(outer.begin(), outer.begin() + edges) < n
                                 ? *std::min_element(outer.begin(), outer.begin() + edges)
@@ -104,17 +107,20 @@ TEST(TransitionExtents, EveryTriangleOfUnequalLevelsIsWithinItsEdgesEntries) {
       const Coverage c = sweep(domain, spacing, ::tb::testing::kUnderSanitizer ? 24 : 200);
       EXPECT_EQ(c.within, c.configs);
       // The regular grid's 1 / level, which a bound on an n x n grid assumes, is exceeded.
-      EXPECT_GT(c.regular_exceeded, c.configs / 4) << tess::toString(domain) << " " << tess::toString(spacing);
-      std::printf("[transition] %s %s: %zu configurations within the table, the coarsest level's "
-                  "regular grid exceeded in %zu\n",
-                  std::string(tess::toString(domain)).c_str(), std::string(tess::toString(spacing)).c_str(),
-                  c.within, c.regular_exceeded);
+      EXPECT_GT(c.regular_exceeded, c.configs / 4)
+          << tess::toString(domain) << " " << tess::toString(spacing);
+      std::printf(
+          "[transition] %s %s: %zu configurations within the table, the coarsest level's "
+          "regular grid exceeded in %zu\n",
+          std::string(tess::toString(domain)).c_str(), std::string(tess::toString(spacing)).c_str(),
+          c.within, c.regular_exceeded);
     }
   }
 }
 
 TEST(TransitionExtents, RegularPatternsAndAKnownTransition) {
-  const std::vector<float>& quad = lod::transitionExtents(tess::Domain::kQuad, tess::Spacing::kInteger);
+  const std::vector<float>& quad =
+      lod::transitionExtents(tess::Domain::kQuad, tess::Spacing::kInteger);
   for (uint32_t n : {1u, 2u, 7u, 16u, 64u}) {
     EXPECT_NEAR(quad[transitionIndex(1, 0, n, n)] * n, 1.0, 1e-3) << n;
     EXPECT_NEAR(quad[transitionIndex(1, kTransitionCircle, n, n)] * n * n, 0.5, 1e-3) << n;
@@ -122,9 +128,11 @@ TEST(TransitionExtents, RegularPatternsAndAKnownTransition) {
   }
   // Edge 32 stitched to an inside of 44: the first ring's triangles about 3.45 segments wide.
   EXPECT_GT(quad[transitionIndex(1, 0, 32, 44)] * 32, 3.4);
-  const std::vector<float>& tri = lod::transitionExtents(tess::Domain::kTriangle, tess::Spacing::kInteger);
+  const std::vector<float>& tri =
+      lod::transitionExtents(tess::Domain::kTriangle, tess::Spacing::kInteger);
   EXPECT_NEAR(tri[transitionIndex(0, 0, 13, 13)] * 13, 4.0 / 3.0, 1e-2);  // the rings' spacing
-  const std::vector<float>& odd = lod::transitionExtents(tess::Domain::kQuad, tess::Spacing::kFractionalOdd);
+  const std::vector<float>& odd =
+      lod::transitionExtents(tess::Domain::kQuad, tess::Spacing::kFractionalOdd);
   EXPECT_NEAR(odd[lod::transitionSegmentIndex(4, 2)], 2.0 / 3.0, 1e-4);  // level 2's middle segment
   const lod::RingFactors ring = lod::ringFactors(tess::Domain::kTriangle);
   EXPECT_NEAR(ring.u, 4.0 / 3.0, 0.03);  // fractional levels' rings a little wider

@@ -1,10 +1,11 @@
 // Oracle: topology counted by buildTopology on the original mesh, times the copies, and
 // the copies' bounding boxes, which must not overlap.
+#include "core/mesh/mesh_copies.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "core/mesh/mesh_copies.h"
 #include "core/mesh/obj_loader.h"
 #include "core/mesh/topology.h"
 #include "tests/test_support.h"

@@ -1,11 +1,12 @@
 // Oracle: the OBJ files' own text (counts and tags read by eye from the bundled
 // OpenSubdiv shapes) and the error rules of docs/ARCHITECTURE.md §8.
+#include "core/mesh/obj_loader.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/mesh/input_error.h"
-#include "core/mesh/obj_loader.h"
 #include "tests/test_support.h"
 
 namespace tb {

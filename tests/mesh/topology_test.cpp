@@ -1,11 +1,12 @@
 // Oracle: Euler's formula and hand-counted adjacency of small meshes.
+#include "core/mesh/topology.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "core/mesh/obj_loader.h"
 #include "core/mesh/render_vertices.h"
-#include "core/mesh/topology.h"
 #include "core/mesh/triangulate.h"
 #include "tests/test_support.h"
 
@@ -21,8 +22,8 @@ mesh::Mesh quadGrid() {
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 3; ++x) {
       const int a = y * 4 + x + 1;
-      text += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " +
-              std::to_string(a + 5) + " " + std::to_string(a + 4) + "\n";
+      text += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " + std::to_string(a + 5) +
+              " " + std::to_string(a + 4) + "\n";
     }
   }
   return mesh::loadObjText(text, "grid.obj");
@@ -91,8 +92,9 @@ TEST(Triangulate, FanSplitsPolygonsAndKeepsCornerAttributes) {
   EXPECT_GT(tri.polygons_split, 0u);
   // Triangulating adds no vertices and keeps Euler's characteristic.
   const mesh::Topology before = mesh::buildTopology(mesh), after = mesh::buildTopology(tri.mesh);
-  EXPECT_EQ(long(mesh.positions.size()) - long(before.edges.size()) + long(mesh.faceCount()),
-            long(tri.mesh.positions.size()) - long(after.edges.size()) + long(tri.mesh.faceCount()));
+  EXPECT_EQ(
+      long(mesh.positions.size()) - long(before.edges.size()) + long(mesh.faceCount()),
+      long(tri.mesh.positions.size()) - long(after.edges.size()) + long(tri.mesh.faceCount()));
 }
 
 TEST(RenderVertices, SplitNormalsDuplicateVertices) {

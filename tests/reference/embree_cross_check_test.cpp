@@ -249,16 +249,17 @@ TEST(EmbreeCrossCheck, IneligibilityNamesTheReason) {
   EXPECT_EQ(crossCheckIneligibility(gridWithTags(""), osd::Scheme::kCatmullClark), "");
   EXPECT_NE(crossCheckIneligibility(gridWithTags(""), osd::Scheme::kLoop).find("Loop"),
             std::string::npos);
-  EXPECT_NE(
-      crossCheckIneligibility(gridWithTags("t hole 1/0/0 5\n"), osd::Scheme::kCatmullClark).find("hole"),
-      std::string::npos);
-  EXPECT_NE(
-      crossCheckIneligibility(gridWithTags("t creasemethod 0/0/1 chaikin\n"), osd::Scheme::kCatmullClark)
-          .find("Chaikin"),
-      std::string::npos);
-  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 6 7 10\n"), osd::Scheme::kCatmullClark)
-                .find("infinitely sharp"),
+  EXPECT_NE(crossCheckIneligibility(gridWithTags("t hole 1/0/0 5\n"), osd::Scheme::kCatmullClark)
+                .find("hole"),
             std::string::npos);
+  EXPECT_NE(crossCheckIneligibility(gridWithTags("t creasemethod 0/0/1 chaikin\n"),
+                                    osd::Scheme::kCatmullClark)
+                .find("Chaikin"),
+            std::string::npos);
+  EXPECT_NE(
+      crossCheckIneligibility(gridWithTags("t crease 2/1/0 6 7 10\n"), osd::Scheme::kCatmullClark)
+          .find("infinitely sharp"),
+      std::string::npos);
   // Equal semi-sharp creases along a line agree; unequal ones meeting at vertex 12 do not.
   EXPECT_EQ(
       crossCheckIneligibility(gridWithTags("t crease 2/1/0 11 12 2\nt crease 2/1/0 12 13 2\n"),
@@ -270,13 +271,16 @@ TEST(EmbreeCrossCheck, IneligibilityNamesTheReason) {
           .find("unequal"),
       std::string::npos);
   // A fractional crease ending on the boundary meets two (infinitely sharp) boundary edges.
-  EXPECT_NE(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2.5\n"), osd::Scheme::kCatmullClark)
-                .find("three or more"),
-            std::string::npos);
-  EXPECT_EQ(crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2\n"), osd::Scheme::kCatmullClark),
-            "");
-  EXPECT_EQ(crossCheckIneligibility(loadShape("catmark_gregory_test8.obj"), osd::Scheme::kCatmullClark),
-            "interior valence-2 vertex 1");
+  EXPECT_NE(
+      crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2.5\n"), osd::Scheme::kCatmullClark)
+          .find("three or more"),
+      std::string::npos);
+  EXPECT_EQ(
+      crossCheckIneligibility(gridWithTags("t crease 2/1/0 2 7 2\n"), osd::Scheme::kCatmullClark),
+      "");
+  EXPECT_EQ(
+      crossCheckIneligibility(loadShape("catmark_gregory_test8.obj"), osd::Scheme::kCatmullClark),
+      "interior valence-2 vertex 1");
   const std::string non_manifold =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
   EXPECT_NE(crossCheckIneligibility(mesh::loadObjText(non_manifold, "fin.obj"),

@@ -119,7 +119,8 @@ std::set<size_t> checkVertexLimits(const std::string& name, osd::Scheme scheme) 
   std::set<size_t> valences;
   for (const VertexRing& ring : untaggedInteriorRings(mesh, face_size)) {
     const mesh::Vec3d& v = mesh.positions[ring.vertex];
-    const MaskResult mask = scheme == osd::Scheme::kLoop ? loopMask(ring, v) : catmullClarkMask(ring, v);
+    const MaskResult mask =
+        scheme == osd::Scheme::kLoop ? loopMask(ring, v) : catmullClarkMask(ring, v);
     const mesh::Vec2d uv =
         scheme == osd::Scheme::kLoop ? triangleCornerUv(ring.corner) : quadCornerUv(ring.corner);
     const LimitPoint bfr = surface.evaluate(ring.face, uv.x, uv.y);

@@ -79,11 +79,12 @@ TEST(LimitTessellation, CountsFollowTheGridFormulas) {
 }
 
 TEST(LimitTessellation, ClosedControlMeshGivesClosedSurface) {
-  for (const auto& [name, scheme] : {std::pair{"catmark_cube.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"catmark_smoothtris0.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"catmark_torus.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"catmark_toroidal_tet.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"loop_icosahedron.obj", osd::Scheme::kLoop}}) {
+  for (const auto& [name, scheme] :
+       {std::pair{"catmark_cube.obj", osd::Scheme::kCatmullClark},
+        std::pair{"catmark_smoothtris0.obj", osd::Scheme::kCatmullClark},
+        std::pair{"catmark_torus.obj", osd::Scheme::kCatmullClark},
+        std::pair{"catmark_toroidal_tet.obj", osd::Scheme::kCatmullClark},
+        std::pair{"loop_icosahedron.obj", osd::Scheme::kLoop}}) {
     const mesh::Mesh mesh = loadShape(name);
     const mesh::Topology topology = mesh::buildTopology(mesh);
     ASSERT_EQ(topology.boundaryEdgeCount(), 0u) << name;

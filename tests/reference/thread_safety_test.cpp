@@ -53,9 +53,10 @@ bool samePoint(const LimitPoint& a, const LimitPoint& b) {
 }
 
 TEST(ThreadSafety, ParallelLimitEvaluationEqualsSerial) {
-  for (const auto& [name, scheme] : {std::pair{"catmark_pawn.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"catmark_xord_interior.obj", osd::Scheme::kCatmullClark},
-                                     std::pair{"loop_xord_interior.obj", osd::Scheme::kLoop}}) {
+  for (const auto& [name, scheme] :
+       {std::pair{"catmark_pawn.obj", osd::Scheme::kCatmullClark},
+        std::pair{"catmark_xord_interior.obj", osd::Scheme::kCatmullClark},
+        std::pair{"loop_xord_interior.obj", osd::Scheme::kLoop}}) {
     const mesh::Mesh mesh = loadShape(name);
     const std::vector<Sample> samples = samplesOf(mesh, scheme);
     std::vector<LimitPoint> serial(samples.size()), parallel(samples.size());

@@ -45,11 +45,11 @@ using testing::measureResult;
 using testing::row;
 
 struct Figures {
-  double error = 1e-3;            // hausdorff at the two levels: error/2 and error
-  double instructions = 100;      // the .tese total (the .tesc row gets 10x)
-  double plain_over = 10;         // smallest plain_over_technique (the other level 2x)
-  double not_equal = 0;           // cracks points_not_equal on the cpu row
-  bool gpu_skipped = false;       // the gpu cracks row skipped (no device)
+  double error = 1e-3;        // hausdorff at the two levels: error/2 and error
+  double instructions = 100;  // the .tese total (the .tesc row gets 10x)
+  double plain_over = 10;     // smallest plain_over_technique (the other level 2x)
+  double not_equal = 0;       // cracks points_not_equal on the cpu row
+  bool gpu_skipped = false;   // the gpu cracks row skipped (no device)
   bool with_memory = true;
   bool with_error = true;
 };
@@ -67,8 +67,8 @@ void addRecord(results::Results* r, const std::string& technique, const std::str
     record.measures.push_back(error);
   }
   results::MeasureResult cracks = measureResult("cracks");
-  cracks.rows = {row({{"backend", "cpu_float"}},
-                     {{"points_not_equal", f.not_equal}, {"unpaired_points", 0}})};
+  cracks.rows = {
+      row({{"backend", "cpu_float"}}, {{"points_not_equal", f.not_equal}, {"unpaired_points", 0}})};
   cracks.rows.push_back(
       f.gpu_skipped ? results::unmeasuredRow({{"backend", "gpu"}}, results::MeasureStatus::kSkipped,
                                              "no Vulkan device (test)")
@@ -103,8 +103,8 @@ TEST(Advice, FiguresAreTheWorstOverTheSummaryScope) {
   const report::Advice advice = report::rankCandidates(r, kAsset, {});
   ASSERT_EQ(advice.ranked.size(), 1u);
   const report::CandidateFigures& f = advice.ranked[0].figures;
-  EXPECT_DOUBLE_EQ(*f.error, 2e-3);          // the larger of the two levels
-  EXPECT_DOUBLE_EQ(*f.instructions, 120);    // the .tese row only, not the .tesc one
+  EXPECT_DOUBLE_EQ(*f.error, 2e-3);            // the larger of the two levels
+  EXPECT_DOUBLE_EQ(*f.instructions, 120);      // the .tese row only, not the .tesc one
   EXPECT_DOUBLE_EQ(*f.memory_ratio, 1.0 / 8);  // 1 / the smallest plain_over_technique
   EXPECT_EQ(f.watertight, report::Watertightness::kWatertight);
   EXPECT_TRUE(advice.ranked[0].passes);

@@ -71,7 +71,8 @@ TEST(ComparisonBaseline, AdaptivitySectionOpensWithTrianglesAt1px) {
   // tests/baseline/check_baseline.sh's limit on the default run's report.md.
   EXPECT_LT(std::count(md.begin(), md.end(), '\n'), 1500);
   const std::string html = report::renderHtml(run, {"window.Chart = function () {};", "", {}, {}});
-  const std::string plain = report::renderHtml(plainBaseline(), {"window.Chart = function () {};", "", {}, {}});
+  const std::string plain =
+      report::renderHtml(plainBaseline(), {"window.Chart = function () {};", "", {}, {}});
   const auto charts = [](const std::string& page) {
     const size_t at = page.find("data-charts=\"") + 13;
     return std::stoul(page.substr(at, page.find('"', at) - at));

@@ -2,13 +2,14 @@
 // the table opening a measure's report.md section, the grouped bar chart of report.html, and
 // control rows kept out of every ranking (summaries, answers, decisions). Synthetic adaptivity
 // results: no measure is run.
+#include "harness/report/comparison.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <optional>
 
 #include "harness/report/answers.h"
-#include "harness/report/comparison.h"
 #include "harness/report/decision.h"
 #include "harness/report/html.h"
 #include "harness/report/markdown.h"
@@ -37,7 +38,8 @@ results::ComparisonSpec trianglesAt1px() {
 }
 
 results::MeasureDeclaration adaptivityDeclaration() {
-  results::MeasureDeclaration d{"adaptivity", "Adaptivity", "d", {}, {"triangle_ratio_vs_uniform"}, {}};
+  results::MeasureDeclaration d{
+      "adaptivity", "Adaptivity", "d", {}, {"triangle_ratio_vs_uniform"}, {}};
   d.metrics = {{"triangles_per_frame_at_target", Unit::kCount, Direction::kLowerIsBetter},
                {"uniform_triangles_per_frame", Unit::kCount, Direction::kLowerIsBetter},
                {"ideal_triangles_per_frame", Unit::kCount, Direction::kLowerIsBetter},
@@ -53,12 +55,14 @@ results::MeasureDeclaration adaptivityDeclaration() {
 results::MetricRow summaryRow(const std::string& policy, double triangles, double uniform,
                               double ideal, double reached = 1,
                               const std::string& spacing = "fractional_odd") {
-  results::MetricRow r = testing::row(
-      {{"policy", policy}, {"spacing", spacing}, {"summary", "max_error_1px"}, {"camera_path", "orbit"}},
-      {{"triangles_per_frame_at_target", triangles},
-       {"uniform_triangles_per_frame", uniform},
-       {"triangle_ratio_vs_uniform", triangles / uniform},
-       {"target_reached", reached}});
+  results::MetricRow r = testing::row({{"policy", policy},
+                                       {"spacing", spacing},
+                                       {"summary", "max_error_1px"},
+                                       {"camera_path", "orbit"}},
+                                      {{"triangles_per_frame_at_target", triangles},
+                                       {"uniform_triangles_per_frame", uniform},
+                                       {"triangle_ratio_vs_uniform", triangles / uniform},
+                                       {"target_reached", reached}});
   if (ideal >= 0) r.metrics.push_back({"ideal_triangles_per_frame", ideal, ""});
   return r;
 }
@@ -86,20 +90,23 @@ results::Results adaptivityRun() {
   // torus first in the records: the tables follow the run's asset order.
   addRecord(&results, "acc", "default", "torus",
             {summaryRow("sphere_diameter", 700, 900, -1), summaryRow("lp2_edge", 700, 900, -1)});
-  addRecord(&results, "acc", "default", "cube",
-            {summaryRow("sphere_diameter", 1000, 4000, 500), summaryRow("lp2_edge", 800, 4000, 500),
-             summaryRow("error_bound", 600, 4000, 500), summaryRow("error_bound_loose", 300, 4000, 500),
-             testing::row({{"policy", "sphere_diameter"}, {"frame", "0"}, {"camera_path", "orbit"}},
-                          {{"triangles", 999}})});
+  addRecord(
+      &results, "acc", "default", "cube",
+      {summaryRow("sphere_diameter", 1000, 4000, 500), summaryRow("lp2_edge", 800, 4000, 500),
+       summaryRow("error_bound", 600, 4000, 500), summaryRow("error_bound_loose", 300, 4000, 500),
+       testing::row({{"policy", "sphere_diameter"}, {"frame", "0"}, {"camera_path", "orbit"}},
+                    {{"triangles", 999}})});
   addRecord(&results, "acc", "fast", "cube", {summaryRow("sphere_diameter", 100, 4000, 500)});
-  addRecord(&results, "pn", "default", "cube",
-            {summaryRow("sphere_diameter", 2000, 3000, -1), summaryRow("lp2_edge", 1500, 3000, -1, 0),
-             summaryRow("error_bound", 2500, 3000, -1), summaryRow("error_bound_loose", 100, 3000, -1)});
+  addRecord(
+      &results, "pn", "default", "cube",
+      {summaryRow("sphere_diameter", 2000, 3000, -1), summaryRow("lp2_edge", 1500, 3000, -1, 0),
+       summaryRow("error_bound", 2500, 3000, -1), summaryRow("error_bound_loose", 100, 3000, -1)});
   addRecord(&results, "cracky", "default", "cube", {summaryRow("sphere_diameter", 10, 4000, 500)});
   return results;
 }
 
-std::optional<double> cell(const report::ComparisonGroup& group, size_t line, const std::string& column) {
+std::optional<double> cell(const report::ComparisonGroup& group, size_t line,
+                           const std::string& column) {
   const auto it = std::find(group.columns.begin(), group.columns.end(), column);
   if (it == group.columns.end()) return std::nullopt;
   return group.lines.at(line).cells.at(size_t(it - group.columns.begin())).value;
@@ -155,13 +162,15 @@ TEST(Comparison, TiesAreAllBestAndAnAbsentExtraColumnIsLeftOut) {
 
 TEST(Comparison, AKeyWithSeveralValuesSplitsTheGroups) {
   results::Results run = adaptivityRun();
-  run.records[1].measures[0].rows.push_back(summaryRow("sphere_diameter", 1200, 5000, 600, 1, "integer"));
+  run.records[1].measures[0].rows.push_back(
+      summaryRow("sphere_diameter", 1200, 5000, 600, 1, "integer"));
   const report::ComparisonTable table =
       report::comparisonTable(run, run.measures[0], run.measures[0].comparisons[0]);
   ASSERT_EQ(table.groups.size(), 3u);  // torus has fractional_odd rows only
   EXPECT_EQ(table.groups[0].name(), "cube, camera_path orbit, spacing fractional_odd");
   EXPECT_EQ(table.groups[1].name(), "cube, camera_path orbit, spacing integer");
-  EXPECT_EQ(table.groups[1].columns, (std::vector<std::string>{"sphere_diameter", "uniform", "ideal"}));
+  EXPECT_EQ(table.groups[1].columns,
+            (std::vector<std::string>{"sphere_diameter", "uniform", "ideal"}));
   EXPECT_FALSE(table.groups[1].lines[0].cells[0].best) << "one policy: nothing in bold";
   EXPECT_EQ(table.groups[2].name(), "torus, camera_path orbit, spacing fractional_odd");
 }
@@ -177,9 +186,10 @@ TEST(Comparison, OpensTheMeasureSectionOfReportMd) {
   const std::string tables = md.substr(section, declaration - section);
   EXPECT_NE(tables.find("controls left out: error_bound_loose"), std::string::npos) << tables;
   // One table for the orbit, the asset its first column, cube's lines before torus's.
-  EXPECT_NE(tables.find("**camera_path orbit**\n\n| asset | technique | sphere_diameter | lp2_edge | "
-                        "error_bound | uniform | ideal |\n"),
-            std::string::npos)
+  EXPECT_NE(
+      tables.find("**camera_path orbit**\n\n| asset | technique | sphere_diameter | lp2_edge | "
+                  "error_bound | uniform | ideal |\n"),
+      std::string::npos)
       << tables;
   EXPECT_NE(tables.find("| cube | acc | 1000 | 800 | **600** | 4000 | 500 |\n"
                         "|  | pn | **2000** | — | 2500 | 3000 | — |\n"

@@ -42,7 +42,8 @@ TEST(CsvTables, OneFilePerMeasureWithEveryRow) {
             "acc,default,cube,gpu,2,skipped,no Vulkan device,,\r\n"
             "pn,pn,cube,,,failed,device lost,,\r\n");
   EXPECT_EQ(files[1].first, "tables/warnings.csv");
-  EXPECT_EQ(files[1].second, "technique,variant,asset,warning\r\nacc,default,cube,\"a, warning\"\r\n");
+  EXPECT_EQ(files[1].second,
+            "technique,variant,asset,warning\r\nacc,default,cube,\"a, warning\"\r\n");
 }
 
 }  // namespace

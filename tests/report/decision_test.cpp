@@ -2,6 +2,8 @@
 // default run (results/baseline/results.json: every bundled asset, no new run). Oracles: the
 // run's own declarations (controls, default variants), advise's rendering of the same
 // results, and the tables' own cells (no column or row without a figure).
+#include "harness/report/decision.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 #include "harness/lod/cull_policy.h"
 #include "harness/report/advice.h"
 #include "harness/report/answers.h"
-#include "harness/report/decision.h"
 #include "harness/report/html.h"
 #include "harness/report/markdown.h"
 #include "harness/report/summary.h"
@@ -69,9 +70,9 @@ void answersBlockOpensReportMdAndNamesANonControlChoicePerAsset() {
   std::string first40;
   for (size_t i = 0; i < std::min<size_t>(40, head.size()); ++i) first40 += head[i] + "\n";
   ASSERT_NE(first40.find("## Answers"), std::string::npos);
-  for (const char* question : {"Which technique", "Did anything crack", "What does ACC save",
-                               "Which culling policy", "factor policy beat uniform",
-                               "Gauss-Seidel better than Jacobi"}) {
+  for (const char* question :
+       {"Which technique", "Did anything crack", "What does ACC save", "Which culling policy",
+        "factor policy beat uniform", "Gauss-Seidel better than Jacobi"}) {
     EXPECT_NE(first40.find(question), std::string::npos) << question;
   }
   for (const report::AssetDecision& d : report::decideAssets(baseline())) {
@@ -96,14 +97,13 @@ void reportMdHtmlAndAdviseAgreeForEveryAsset() {
               std::string::npos)
         << d.asset;
     // The chart's label, or the line of the assets without a chart.
-    EXPECT_NE(html.find(d.asset + ", recommended " + d.recommended()),
-              std::string::npos)
+    EXPECT_NE(html.find(d.asset + ", recommended " + d.recommended()), std::string::npos)
         << d.asset;
     const report::Advice advice = report::rankCandidates(baseline(), d.asset, {});
     EXPECT_EQ(advice.recommendation, d.recommended()) << d.asset;
-    EXPECT_NE(report::renderAdviceMarkdown(advice, {}).find(
-                  "no constraints): " + d.recommended() + "."),
-              std::string::npos);
+    EXPECT_NE(
+        report::renderAdviceMarkdown(advice, {}).find("no constraints): " + d.recommended() + "."),
+        std::string::npos);
   }
 }
 
@@ -140,7 +140,8 @@ void noEmptyColumnOrRowOfDashesInReportMdSummaries() {
     const size_t columns = table[0].size();
     for (size_t c = 1; c < columns; ++c) {
       bool any = false;
-      for (size_t r = 2; r < table.size(); ++r) any |= c < table[r].size() && !emptyCell(table[r][c]);
+      for (size_t r = 2; r < table.size(); ++r)
+        any |= c < table[r].size() && !emptyCell(table[r][c]);
       EXPECT_TRUE(any) << heading << ": column \"" << table[0][c] << "\" has no figure";
     }
     for (size_t r = 2; r < table.size(); ++r) {

@@ -202,10 +202,13 @@ TEST(HtmlBrowser, ComparisonBarChartsAreDrawn) {
   }
   fs::create_directories(dir / "run");
   std::ofstream(dir / "run" / "results.json") << results::serializeResults(run);
-  const testing::SplitResult report = runTessbenchSplit("report --format html " + (dir / "run").string());
+  const testing::SplitResult report =
+      runTessbenchSplit("report --format html " + (dir / "run").string());
   ASSERT_EQ(report.exit_code, 0) << report.err;
   const size_t expected = std::stoul(between(report.out, "data-charts=\"", "\""));
-  EXPECT_GE(occurrences(report.out, ", camera_path orbit\",\"x_label\":\"technique (default variant)\""), 30u)
+  EXPECT_GE(
+      occurrences(report.out, ", camera_path orbit\",\"x_label\":\"technique (default variant)\""),
+      30u)
       << "a bar chart per bundled asset on the orbit";
   std::ofstream(dir / "page.html") << report.out;
   ASSERT_EQ(runChromium(dir / "profile", "--dump-dom", dir / "page.html", dir / "dom.html"), 0);

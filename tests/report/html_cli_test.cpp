@@ -34,7 +34,8 @@ TEST(HtmlCli, RunEmbedsTheHeatMapsUnderOneScalePerAsset) {
   const fs::path dir = testing::scratchDirectory("html_cli_real_pictures");
   const testing::SplitResult run = runTessbenchSplit(
       "run --quiet --technique phong --technique gregory_acc --asset catmark_cube --measure "
-      "error --run-id r --out " + dir.string());
+      "error --run-id r --out " +
+      dir.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string index = readFile(dir / "r" / "pictures" / "pictures.json");
   if (index.find("\"status\": \"skipped\"") != std::string::npos) {
@@ -48,8 +49,10 @@ TEST(HtmlCli, RunEmbedsTheHeatMapsUnderOneScalePerAsset) {
   }
   EXPECT_EQ(images, 2u) << "2 techniques x error heat map";
   EXPECT_NE(page.find("one colour scale for every picture of the asset"), std::string::npos);
-  EXPECT_TRUE(fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--wireframe.png"));
-  EXPECT_TRUE(fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--error.png"));
+  EXPECT_TRUE(
+      fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--wireframe.png"));
+  EXPECT_TRUE(
+      fs::exists(dir / "r" / "pictures" / "gregory_acc--opensubdiv--catmark_cube--error.png"));
   fs::remove_all(dir);
 }
 

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "harness/report/markdown.h"
+
+#include <gtest/gtest.h>
 
 namespace tb {
 namespace {
@@ -12,16 +12,20 @@ TEST(Markdown, RendersOneTablePerMeasureWithUnits) {
                          {},      {"12 polygons split"}, {}};
   results::MeasureResult memory;
   memory.measure = "memory";
-  memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
-  memory.rows.push_back({{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
+  memory.rows.push_back(
+      {{{"level", "8"}}, {{"plain_bytes", 2048, "bytes"}, {"ratio", 1.5, "ratio"}}});
+  memory.rows.push_back(
+      {{{"level", "16"}}, {{"plain_bytes", 8192, "bytes"}, {"ratio", 3, "ratio"}}});
   record.measures.push_back(memory);
   results.records.push_back(record);
   results.skipped.push_back({"acc", "loop_cube", "acc: face 0 has 3 vertices; ACC needs quads"});
   const std::string md = report::renderMarkdown(results);
   EXPECT_NE(md.find("### memory"), std::string::npos);
   // A small measure also shows its rows.
-  EXPECT_NE(md.find("| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find(
+          "| technique | variant | asset | level | status | plain_bytes (bytes) | ratio (ratio) |"),
+      std::string::npos)
       << md;
   EXPECT_NE(md.find("| phong | alpha0.75 | opensubdiv/catmark_cube | 16 | ok | 8.00 KiB | 3 |"),
             std::string::npos)
@@ -83,10 +87,12 @@ TEST(Markdown, SummaryFirstThenMatricesThenMeasures) {
   EXPECT_LT(measures, context);
   // Decision: the only default variant with its worst error over the levels (0.25 × 3); no
   // column for the figures the run lacks.
-  EXPECT_NE(md.find("### asset0\n\n| rank | technique/variant | path | error (hausdorff, rel_diag) |\n"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("### asset0\n\n| rank | technique/variant | path | error (hausdorff, rel_diag) |\n"),
+      std::string::npos)
       << md;
-  EXPECT_NE(md.find("| **1 (recommended)** | acc/default | tessellator | 0.75 |"), std::string::npos)
+  EXPECT_NE(md.find("| **1 (recommended)** | acc/default | tessellator | 0.75 |"),
+            std::string::npos)
       << md;
   // Publishing: median (worst) over assets and levels of each variant.
   EXPECT_NE(md.find("| acc | fast | 1 (1.5) |"), std::string::npos) << md;
@@ -139,8 +145,7 @@ TEST(Markdown, SkippedRowShowsItsStatusAndReason) {
   results.records.push_back(record);
   const std::string md = report::renderMarkdown(results);
   EXPECT_NE(md.find("| acc | default | a | cpu_float | ok | 0 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"),
-            std::string::npos)
+  EXPECT_NE(md.find("| acc | default | a | gpu | skipped: no Vulkan device |"), std::string::npos)
       << md;
 }
 
@@ -216,7 +221,8 @@ TEST(Markdown, MatricesListOnlyTheInputsAndTechniquesOfTheirMeasure) {
   const size_t error_matrix = md.find("### error: hausdorff");
   ASSERT_NE(wave_matrix, std::string::npos) << md;
   ASSERT_NE(error_matrix, std::string::npos) << md;
-  const std::string wave_text = md.substr(wave_matrix, md.find("\n\n", md.find("|", wave_matrix)) - wave_matrix);
+  const std::string wave_text =
+      md.substr(wave_matrix, md.find("\n\n", md.find("|", wave_matrix)) - wave_matrix);
   const std::string error_text =
       md.substr(error_matrix, md.find("\n\n", md.find("|", error_matrix)) - error_matrix);
   EXPECT_NE(wave_text.find("| asset | sim/full |"), std::string::npos) << wave_text;

@@ -38,12 +38,12 @@ results::Results bothPaths(double compute_points) {
   results::MeasureResult mem = measureResult("memory");
   for (const char* path : {"tessellator", "compute"}) {
     const bool compute = std::string(path) == "compute";
-    mem.rows.push_back(row({{"level", "16"}, {"path", path}},
-                           {{"plain_bytes", 1000},
-                            {"technique_with_displacement_bytes", 50},
-                            {"transient_vertex_bytes", compute ? 1500.0 : 0.0},
-                            {"transient_index_bytes", compute ? 500.0 : 0.0},
-                            {"transient_over_plain", compute ? 2.0 : 0.0}}));
+    mem.rows.push_back(
+        row({{"level", "16"}, {"path", path}}, {{"plain_bytes", 1000},
+                                                {"technique_with_displacement_bytes", 50},
+                                                {"transient_vertex_bytes", compute ? 1500.0 : 0.0},
+                                                {"transient_index_bytes", compute ? 500.0 : 0.0},
+                                                {"transient_over_plain", compute ? 2.0 : 0.0}}));
   }
   record.measures = {error, cracks, mem};
   r.records = {record};

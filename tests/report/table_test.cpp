@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "harness/report/published_figures.h"
-
 #include "tests/report/results_builders.h"
 
 namespace tb {
@@ -80,13 +79,19 @@ results::Results sampleResults() {
       if (std::string(technique) == "acc" && std::string(asset) == "a/one") {
         results::MeasureResult s = measureResult("published_figures");
         s.rows = {row({{"source", "NVIDIA's displacement subdivision surfaces talk"},
-                           {"what", "bezier position, asymmetric"}},
-                      {{"published_alu", 60}, {"published_loads", 0}, {"ours_alu_vector", 70},
-                       {"ours_alu_scalar", 180}, {"ours_loads", 20}}),
+                       {"what", "bezier position, asymmetric"}},
+                      {{"published_alu", 60},
+                       {"published_loads", 0},
+                       {"ours_alu_vector", 70},
+                       {"ours_alu_scalar", 180},
+                       {"ours_loads", 20}}),
                   row({{"source", "the DirectX SDK SubD10 sample"},
-                           {"what", "regular patch, acc/acc.tese"}},
-                      {{"published_alu", 73}, {"published_loads", 16}, {"ours_alu_vector", 90},
-                       {"ours_alu_scalar", 250}, {"ours_loads", 44}})};
+                       {"what", "regular patch, acc/acc.tese"}},
+                      {{"published_alu", 73},
+                       {"published_loads", 16},
+                       {"ours_alu_vector", 90},
+                       {"ours_alu_scalar", 250},
+                       {"ours_loads", 44}})};
         record.measures.push_back(s);
       }
       r.records.push_back(record);

@@ -1,8 +1,8 @@
 #include "harness/results/compare.h"
 
-#include "harness/results/device_identity.h"
-
 #include <gtest/gtest.h>
+
+#include "harness/results/device_identity.h"
 
 namespace tb {
 namespace {
@@ -14,8 +14,9 @@ results::Results runWith(double cpu_gap, double gpu_gap, double shared_edges,
   results.context.vulkan_device = gpu_skipped ? "none: no driver" : "llvmpipe";
   results::Record record{"acc", "default", "cube", {}, {}, {}};
   results::MeasureResult cracks{"cracks", results::MeasureStatus::kOk, "", {}, {}};
-  cracks.rows.push_back({{{"backend", "cpu_float"}},
-                         {{"max_gap_world", cpu_gap, "world"}, {"shared_edges", shared_edges, "count"}}});
+  cracks.rows.push_back(
+      {{{"backend", "cpu_float"}},
+       {{"max_gap_world", cpu_gap, "world"}, {"shared_edges", shared_edges, "count"}}});
   if (gpu_skipped) {
     cracks.rows.push_back(results::unmeasuredRow(
         {{"backend", "gpu"}}, results::MeasureStatus::kSkipped, "no Vulkan device"));

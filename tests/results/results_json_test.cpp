@@ -18,7 +18,8 @@ results::Results sampleResults() {
                          {"w"},   {}};
   results::MeasureResult memory;
   memory.measure = "memory";
-  memory.rows.push_back({{{"level", "8"}}, {{"plain_bytes", 1234, "bytes"}, {"ratio", 0.1, "ratio"}}});
+  memory.rows.push_back(
+      {{{"level", "8"}}, {{"plain_bytes", 1234, "bytes"}, {"ratio", 0.1, "ratio"}}});
   memory.rows.push_back(results::unmeasuredRow({{"level", "16"}}, results::MeasureStatus::kFailed,
                                                "device lost at level 16"));
   record.measures.push_back(memory);
@@ -146,7 +147,8 @@ TEST(ResultsJson, RejectsAnotherSchemaVersionAndMissingFields) {
     results::resultsFromJson(broken);
     FAIL();
   } catch (const std::runtime_error& error) {
-    EXPECT_NE(std::string(error.what()).find("records[0]: missing field 'asset'"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("records[0]: missing field 'asset'"),
+              std::string::npos)
         << error.what();
   }
 }

@@ -1,7 +1,6 @@
 #include "harness/results/run_folder.h"
 
 #include <gtest/gtest.h>
-
 #include <sys/resource.h>
 
 #include <csignal>
@@ -160,8 +159,7 @@ TEST(RunFolder, WriteFailureNamesTheFileAndTheCause) {
   const std::string path = (root / "results.json").string();
   const std::string message = errorOf([&] { results::writeNewFile(path, std::string(4096, 'x')); });
   results::PendingRunFolder folder = results::PendingRunFolder::forRun(root.string(), "r");
-  const std::string journal_message =
-      errorOf([&] { folder.journal(std::string(4096, 'x')); });
+  const std::string journal_message = errorOf([&] { folder.journal(std::string(4096, 'x')); });
   ::setrlimit(RLIMIT_FSIZE, &saved);
   std::signal(SIGXFSZ, old_handler);
   EXPECT_NE(message.find(path + ": write failed (File too large)"), std::string::npos) << message;

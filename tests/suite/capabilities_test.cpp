@@ -360,8 +360,7 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
     const std::string id = measure->info().id;
     if (id == "memory" || id == "instructions") {
       EXPECT_TRUE(r.has(measures::MeasureNeed::kSurfaceOrSimulation)) << id;
-    } else if (id == "sim_cost" || id == "wave_error" || id == "convergence" ||
-               id == "stability") {
+    } else if (id == "sim_cost" || id == "wave_error" || id == "convergence" || id == "stability") {
       EXPECT_TRUE(r.has(measures::MeasureNeed::kSimulation)) << id;
     } else {
       EXPECT_TRUE(r.has(measures::MeasureNeed::kSurface)) << id;

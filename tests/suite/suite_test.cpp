@@ -1,17 +1,16 @@
+#include "harness/suite/suite.h"
+
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
-#include <cstdlib>
-#include <filesystem>
-
 #include "harness/results/results_json.h"
-#include "harness/suite/suite.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
 
@@ -112,7 +111,8 @@ TEST(Suite, FullSuiteOnlyVariantsRunOnlyInTheFullSuite) {
   const std::set<std::string> fast = variants_run(measures::SuiteMode::kDefault);
   const std::set<std::string> full = variants_run(measures::SuiteMode::kFull);
   EXPECT_EQ(fast, (std::set<std::string>{"iso2_gregory"}));
-  EXPECT_TRUE(full.count("iso2_gregory") && full.count("iso4_gregory") && full.count("iso2_bspline"))
+  EXPECT_TRUE(full.count("iso2_gregory") && full.count("iso4_gregory") &&
+              full.count("iso2_bspline"))
       << full.size();
 }
 

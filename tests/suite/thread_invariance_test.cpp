@@ -42,7 +42,8 @@ TEST(ThreadInvariance, ResultsAreByteIdenticalOnOneAndTwoThreads) {
 
 TEST(ThreadInvariance, TimingsCoverEveryMeasureOfEveryRecord) {
   // A third whole run: under a sanitizer the one above runs the same suite code.
-  if (::tb::testing::kUnderSanitizer) GTEST_SKIP() << "the suite's code runs above under a sanitizer";
+  if (::tb::testing::kUnderSanitizer)
+    GTEST_SKIP() << "the suite's code runs above under a sanitizer";
   suite::SuiteSelection selection;
   selection.assets = {suite::resolveAsset("loop_icosahedron")};
   selection.threads = 2;

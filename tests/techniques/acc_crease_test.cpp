@@ -55,12 +55,14 @@ mesh::Mesh creasedGrid() {
   const auto id = [](int x, int y) { return std::to_string(1 + x + 7 * y); };
   for (int y = 0; y < 6; ++y) {
     for (int x = 0; x < 6; ++x) {
-      obj += "f " + id(x, y) + " " + id(x + 1, y) + " " + id(x + 1, y + 1) + " " + id(x, y + 1) + "\n";
+      obj +=
+          "f " + id(x, y) + " " + id(x + 1, y) + " " + id(x + 1, y + 1) + " " + id(x, y + 1) + "\n";
     }
   }
   for (int x = 1; x < 5; ++x) {
     // OBJ tag vertex indices are 0-based.
-    obj += "t crease 2/1/0 " + std::to_string(x + 7 * 3) + " " + std::to_string(x + 1 + 7 * 3) + " 10\n";
+    obj += "t crease 2/1/0 " + std::to_string(x + 7 * 3) + " " + std::to_string(x + 1 + 7 * 3) +
+           " 10\n";
   }
   return mesh::loadObjText(obj, "creased_grid.obj");
 }
@@ -77,7 +79,8 @@ mesh::Mesh bumpyGrid(int n, int boundary_tag) {
   const auto id = [n](int x, int y) { return std::to_string(1 + x + (n + 1) * y); };
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
-      obj += "f " + id(x, y) + " " + id(x + 1, y) + " " + id(x + 1, y + 1) + " " + id(x, y + 1) + "\n";
+      obj +=
+          "f " + id(x, y) + " " + id(x + 1, y) + " " + id(x + 1, y + 1) + " " + id(x, y + 1) + "\n";
     }
   }
   obj += "t interpolateboundary 1/0/0 " + std::to_string(boundary_tag) + "\n";
@@ -154,9 +157,10 @@ TEST(AccCreases, InfinitelySharpCreaseCurvesEqualTheLimit) {
                                    {"catmark_tent_creases1", bundled("catmark_tent_creases1")},
                                    {"grid, edge-only boundary", bumpyGrid(4, 2)}}) {
     const CurveFigures f = creaseCurveError(mesh);
-    std::printf("%-24s %4zu sharp patch edges between crease/corner vertices: max |acc - limit| "
-                "/ diagonal %.2e\n",
-                name.c_str(), f.edges, f.worst);
+    std::printf(
+        "%-24s %4zu sharp patch edges between crease/corner vertices: max |acc - limit| "
+        "/ diagonal %.2e\n",
+        name.c_str(), f.edges, f.worst);
     EXPECT_LT(f.worst, 1e-12) << name;
     edges += f.edges;
   }
@@ -186,7 +190,8 @@ TEST(AccCreases, BoundaryInterpolationNonePatchesTheInnerFacesOnly) {
   for (size_t f = patches->patchCount(); f < 16; ++f) EXPECT_FALSE(limit.hasLimitSurface(f));
   EXPECT_EQ(patches->sourceFace(0), 5u);  // the inner faces of the 4 x 4 grid: 5, 6, 9, 10
   EXPECT_EQ(patches->sourceFace(3), 10u);
-  std::printf("grid, boundary none: %zu patches, max |acc - limit| %.2e\n", patches->patchCount(), worst);
+  std::printf("grid, boundary none: %zu patches, max |acc - limit| %.2e\n", patches->patchCount(),
+              worst);
   EXPECT_LT(worst, 1e-12);
 }
 
@@ -224,9 +229,10 @@ TEST(AccCreases, SharpEdgesKeepTheirNormalJump) {
       }
     }
   }
-  std::printf("creased grid: max gap %.2e over every shared edge; smallest normal jump between "
-              "crease vertices (%zu sharp edges) %.3f\n",
-              worst_gap, sharp_edges, smallest_jump);
+  std::printf(
+      "creased grid: max gap %.2e over every shared edge; smallest normal jump between "
+      "crease vertices (%zu sharp edges) %.3f\n",
+      worst_gap, sharp_edges, smallest_jump);
   EXPECT_EQ(sharp_edges, 4u);
   EXPECT_LT(worst_gap, 1e-14);
   EXPECT_GT(smallest_jump, 0.05);
@@ -259,9 +265,10 @@ TEST(AccCreases, RefiningEveryLevelOfASemiSharpCreaseRemovesTheRoundingError) {
         }
       }
     }
-    std::printf("catmark_cube_creases1 budget %5.0f faces: %4zu patches, max |acc - limit| / "
-                "diagonal %.3e\n",
-                budget, patches->patchCount(), worst);
+    std::printf(
+        "catmark_cube_creases1 budget %5.0f faces: %4zu patches, max |acc - limit| / "
+        "diagonal %.3e\n",
+        budget, patches->patchCount(), worst);
     errors.push_back(worst);
   }
   // Rounded: within 5 % of the unrefined figure at every budget short of all levels.

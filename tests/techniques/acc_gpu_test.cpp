@@ -41,9 +41,9 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
       const auto programs = patches->gpuPrograms();
       ASSERT_EQ(programs.size(), 1u);
       const gpu::GpuPatchProgram* program = &programs.front();
-      for (const LevelCase& lc : {LevelCase{1, tess::Spacing::kInteger},
-                                  LevelCase{7.3f, tess::Spacing::kFractionalOdd},
-                                  LevelCase{16, tess::Spacing::kInteger}}) {
+      for (const LevelCase& lc :
+           {LevelCase{1, tess::Spacing::kInteger}, LevelCase{7.3f, tess::Spacing::kFractionalOdd},
+            LevelCase{16, tess::Spacing::kInteger}}) {
         tess::Levels levels;
         levels.outer = {lc.level, lc.level, lc.level, lc.level};
         levels.inner = {lc.level, lc.level};
@@ -62,7 +62,7 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
           const uint64_t ulp = mesh::maxUlpDistance(cpu.position, v.position);
           worst_ulp = std::max(worst_ulp, ulp);
           EXPECT_LE(ulp, 4u) << asset.name << " " << variant.name << " patch " << v.patch << " at "
-                            << v.coord[0] << "," << v.coord[1];
+                             << v.coord[0] << "," << v.coord[1];
           worst_normal = std::max(worst_normal, double(length(cpu.normal - v.normal)));
           ++vertices;
           for (const auto& key :
@@ -75,10 +75,10 @@ TEST(AccGpu, ShadersMatchTheCpuFloatEvaluationAndSymmetricOrdersAreWatertight) {
         }
       }
     }
-    std::printf("%-16s GPU: %zu vertices, max %lld ulp from evaluateFloat, max normal diff %.1e; "
-                "%zu of %zu shared edge points differ bitwise\n",
-                variant.name.c_str(), vertices, (long long)worst_ulp, worst_normal, differing,
-                shared);
+    std::printf(
+        "%-16s GPU: %zu vertices, max %lld ulp from evaluateFloat, max normal diff %.1e; "
+        "%zu of %zu shared edge points differ bitwise\n",
+        variant.name.c_str(), vertices, (long long)worst_ulp, worst_normal, differing, shared);
     EXPECT_LT(worst_normal, 1e-4) << variant.name;
     EXPECT_GT(shared, 1000u);
     if (symmetric) {

@@ -2,6 +2,8 @@
 // B-spline patches; tangent patches bring normals closer to the limit's), the other
 // patch of every shared edge (C0 in double, bitwise in float for symmetric orders), a
 // hand count of the Bézier evaluation, and the rejection rules.
+#include "techniques/acc/acc.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,7 +14,6 @@
 #include "core/mesh/topology.h"
 #include "core/tess/tessellator.h"
 #include "reference/limit_surface.h"
-#include "techniques/acc/acc.h"
 #include "techniques/common/bezier_eval.h"
 #include "techniques/common/crease_refinement.h"
 #include "techniques/common/quad_ring.h"
@@ -209,14 +210,14 @@ TEST(Acc, BicubicEvaluationOperationCountsMatchAHandCount) {
   EXPECT_LT(profile->per_patch_setup.total(), regular->per_patch_setup.total());
   EXPECT_EQ(profile->per_vertex.total(), regular->per_vertex.total());
   for (const auto* p : {&*profile, &*regular}) {
-    std::printf("set-up %llu ops (%llu mul, %llu add), per vertex %llu ops (%llu mul, %llu add, "
-                "%llu div, %llu sqrt): %s\n",
-                (unsigned long long)p->per_patch_setup.total(),
-                (unsigned long long)p->per_patch_setup.mul,
-                (unsigned long long)p->per_patch_setup.add,
-                (unsigned long long)p->per_vertex.total(), (unsigned long long)p->per_vertex.mul,
-                (unsigned long long)p->per_vertex.add, (unsigned long long)p->per_vertex.div,
-                (unsigned long long)p->per_vertex.sqrt, p->note.c_str());
+    std::printf(
+        "set-up %llu ops (%llu mul, %llu add), per vertex %llu ops (%llu mul, %llu add, "
+        "%llu div, %llu sqrt): %s\n",
+        (unsigned long long)p->per_patch_setup.total(), (unsigned long long)p->per_patch_setup.mul,
+        (unsigned long long)p->per_patch_setup.add, (unsigned long long)p->per_vertex.total(),
+        (unsigned long long)p->per_vertex.mul, (unsigned long long)p->per_vertex.add,
+        (unsigned long long)p->per_vertex.div, (unsigned long long)p->per_vertex.sqrt,
+        p->note.c_str());
   }
 }
 
@@ -259,13 +260,13 @@ constexpr const char* kGrid =
 
 TEST(AccRejects, NonQuadFacesNamingTheFace) {
   const std::string why = rejection(std::string(kGrid) + "f 3 9 6\n");
-  EXPECT_NE(why.find("acc: face 4 (line 14) has 3 vertices; ACC needs quads"), std::string::npos) << why;
+  EXPECT_NE(why.find("acc: face 4 (line 14) has 3 vertices; ACC needs quads"), std::string::npos)
+      << why;
 }
 
 TEST(AccRejects, NonManifoldEdgesNamingTheEdge) {
-  const std::string why =
-      rejection(std::string(kGrid) +
-                "v 1 0 1\nv 2 0 1\nv 1 0 -1\nv 2 0 -1\nf 2 3 11 10\nf 3 2 12 13\n");
+  const std::string why = rejection(
+      std::string(kGrid) + "v 1 0 1\nv 2 0 1\nv 1 0 -1\nv 2 0 -1\nf 2 3 11 10\nf 3 2 12 13\n");
   EXPECT_NE(why.find("edge 1-2 is shared by 3 faces"), std::string::npos) << why;
 }
 
@@ -308,7 +309,8 @@ TEST(AccRejects, NonManifoldVerticesNamingTheVertex) {
   // Two quads touching at one vertex only (a bow tie).
   const std::string why = rejection(
       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 1 0\nv 2 2 0\nv 1 2 0\nf 1 2 3 4\nf 3 5 6 7\n");
-  EXPECT_NE(why.find("vertex 2 (1, 1, 0) has faces in more than one fan"), std::string::npos) << why;
+  EXPECT_NE(why.find("vertex 2 (1, 1, 0) has faces in more than one fan"), std::string::npos)
+      << why;
 }
 
 TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
@@ -318,7 +320,8 @@ TEST(AccRejects, ValenceAboveTheMaximumNamingTheVertex) {
   for (int i = 0; i < n; ++i) {
     const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 0.5) / n;
     obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
-    obj += "v " + std::to_string(1.5 * std::cos(b)) + " " + std::to_string(1.5 * std::sin(b)) + " 0\n";
+    obj +=
+        "v " + std::to_string(1.5 * std::cos(b)) + " " + std::to_string(1.5 * std::sin(b)) + " 0\n";
   }
   for (int i = 0; i < n; ++i) {
     const int e0 = 2 + 2 * i, f0 = 3 + 2 * i, e1 = 2 + 2 * ((i + 1) % n);

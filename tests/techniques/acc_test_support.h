@@ -23,8 +23,7 @@ struct Asset {
 inline std::vector<Asset> supportedAssets(std::vector<std::string>* rejected = nullptr) {
   std::vector<std::string> files;
   for (const char* folder : {"opensubdiv", "tessbench"}) {
-    for (const auto& entry :
-         std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
+    for (const auto& entry : std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
       if (entry.path().extension() == ".obj") files.push_back(entry.path().string());
     }
   }

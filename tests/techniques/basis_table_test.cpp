@@ -1,11 +1,11 @@
 // The batched kernels of techniques/common/basis_table.h, each one this CPU supports.
 // Oracles: the product summed directly in long double (1e-14 relative), and
 // normalize(cross()) for the normals; padding points must come out 0.
+#include "techniques/common/basis_table.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
-
-#include "techniques/common/basis_table.h"
 
 namespace tb {
 namespace {

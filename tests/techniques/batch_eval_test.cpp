@@ -22,11 +22,13 @@ namespace {
 
 // All quads with extraordinary vertices; a smooth boundary; quads and triangles (gregory_acc
 // triangle patches); N-gons (gregory_acc refines once); triangles only (pn, phong).
-const std::vector<std::string> kAssets = {
-    "opensubdiv/catmark_xord_interior.obj", "opensubdiv/catmark_edgecorner.obj",
-    "opensubdiv/catmark_pyramid.obj",       "opensubdiv/catmark_nonquads.obj",
-    "opensubdiv/catmark_torus.obj",         "opensubdiv/loop_icosahedron.obj",
-    "tessbench/tri_torus.obj"};
+const std::vector<std::string> kAssets = {"opensubdiv/catmark_xord_interior.obj",
+                                          "opensubdiv/catmark_edgecorner.obj",
+                                          "opensubdiv/catmark_pyramid.obj",
+                                          "opensubdiv/catmark_nonquads.obj",
+                                          "opensubdiv/catmark_torus.obj",
+                                          "opensubdiv/loop_icosahedron.obj",
+                                          "tessbench/tri_torus.obj"};
 
 constexpr double kPositionTolerance = 1e-12;  // of the bounding-box diagonal
 constexpr double kNormalTolerance = 1e-11;    // unit normals, absolute
@@ -231,8 +233,9 @@ TEST(BatchEval, DerivativesAreFiniteDifferencesOfThePosition) {
        std::vector<std::pair<std::string, std::string>>{{"gregory_acc", "asymmetric"},
                                                         {"gregory_acc", "edge_symmetric"},
                                                         {"acc", "no_tangent"}}) {
-    for (const char* name : {"opensubdiv/catmark_xord_interior.obj",
-                             "opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_edgecorner.obj"}) {
+    for (const char* name :
+         {"opensubdiv/catmark_xord_interior.obj", "opensubdiv/catmark_pyramid.obj",
+          "opensubdiv/catmark_edgecorner.obj"}) {
       const mesh::Mesh mesh = load(name);
       const techniques::Technique& t = technique(id);
       if (!t.checkSupport(mesh).empty()) continue;

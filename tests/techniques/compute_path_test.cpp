@@ -279,17 +279,18 @@ TEST(ComputePath, EveryBundledAssetWhenAsked) {
         for (const GpuPatchProgram& program : surface->gpuPrograms()) {
           for (size_t k = v % stride; k < cases.size(); k += stride) {
             expectBitwiseChunked(context, program, cases[k],
-                          std::string(id) + "/" + variants[v].name + " " + asset + " " +
-                              program.evaluation_shader + " level " + cases[k].name,
-                          &tally);
+                                 std::string(id) + "/" + variants[v].name + " " + asset + " " +
+                                     program.evaluation_shader + " level " + cases[k].name,
+                                 &tally);
           }
         }
       }
     }
   }
-  std::printf("[compute path] every bundled asset: %zu technique x variant x asset records, "
-              "%zu program x level cases, %zu vertices, compared bit for bit\n",
-              records, tally.cases, tally.vertices);
+  std::printf(
+      "[compute path] every bundled asset: %zu technique x variant x asset records, "
+      "%zu program x level cases, %zu vertices, compared bit for bit\n",
+      records, tally.cases, tally.vertices);
 }
 
 TEST(ComputePath, BezierPositionTwinIsAccTesPosition) {

@@ -1,9 +1,11 @@
 // Displaced surfaces (techniques/common/displaced_patches.h): watertight sampling keeps every
 // shared boundary point bitwise equal on the CPU float twin and on lavapipe's capture of the
 // technique's own "#displaced" TES; naive sampling opens gaps at tile borders; the capture
-// equals the twin bit for bit. Oracle: the crack measure's pairing (harness/measures/common/cracks/cracks.h,
-// tested against hand counts) and lavapipe. Maps are random (a fixed LCG): independent tile
-// borders are the adversary watertight sampling must beat.
+// equals the twin bit for bit. Oracle: the crack measure's pairing
+// (harness/measures/common/cracks/cracks.h, tested against hand counts) and lavapipe. Maps are
+// random (a fixed LCG): independent tile borders are the adversary watertight sampling must beat.
+#include "techniques/common/displaced_patches.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +16,6 @@
 #include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/measures/common/cracks/cracks.h"
-#include "techniques/common/displaced_patches.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
 #include "tests/test_support.h"
@@ -88,11 +89,12 @@ measures::CrackFigures cracks(const techniques::SurfacePatches& patches, tess::S
                               const char* label) {
   const measures::CrackFigures f =
       measures::measureCracks(patches, spacing, level, backend, context);
-  std::printf("[displaced cracks] %s %s level %.1f %s: points %llu, not bitwise %llu, max gap "
-              "%.3g, device differing %llu\n",
-              label, std::string(tess::toString(spacing)).c_str(), level, toString(backend),
-              (unsigned long long)f.points_compared, (unsigned long long)f.points_not_equal,
-              f.max_gap_world, (unsigned long long)f.device_points_differing);
+  std::printf(
+      "[displaced cracks] %s %s level %.1f %s: points %llu, not bitwise %llu, max gap "
+      "%.3g, device differing %llu\n",
+      label, std::string(tess::toString(spacing)).c_str(), level, toString(backend),
+      (unsigned long long)f.points_compared, (unsigned long long)f.points_not_equal,
+      f.max_gap_world, (unsigned long long)f.device_points_differing);
   return f;
 }
 

@@ -75,13 +75,12 @@ TEST(GregoryAccGpu, CapturedPositionsEqualTheCpuFloatEvaluationWithin4Ulp) {
           for (int k = 0; k < 3; ++k) {
             worst = std::max(worst, mesh::ulpDistance(vertex.position[k], expected.position[k]));
           }
-          worst_normal = std::max(
-              worst_normal,
-              length(vecCast<double>(vertex.normal) - vecCast<double>(expected.normal)));
+          worst_normal = std::max(worst_normal, length(vecCast<double>(vertex.normal) -
+                                                       vecCast<double>(expected.normal)));
         }
-        RecordProperty(std::string(variant) + "_" + name + "_" + std::to_string(c.level) +
-                           "_ulp_vertices",
-                       std::to_string(worst) + "_" + std::to_string(capture.vertices.size()));
+        RecordProperty(
+            std::string(variant) + "_" + name + "_" + std::to_string(c.level) + "_ulp_vertices",
+            std::to_string(worst) + "_" + std::to_string(capture.vertices.size()));
         EXPECT_LE(worst, 4u) << variant << " " << name << " level " << c.level;
         EXPECT_LE(worst_normal, 1e-5) << variant << " " << name << " level " << c.level;
       }

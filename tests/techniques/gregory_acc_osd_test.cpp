@@ -2,7 +2,6 @@
 // OpenSubdiv Far's Gregory-basis end caps (PatchTableFactory, ENDCAP_GREGORY_BASIS) at
 // isolation level 0, where every irregular base face becomes one 20-point Gregory patch.
 #include <gtest/gtest.h>
-
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/stencilTable.h>
@@ -35,10 +34,10 @@ mesh::Vec3d stencilValue(const GregoryStencils& stencils, uint32_t s, const mesh
 
 TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
   size_t compared_patches = 0;
-  for (const char* name : {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj",
-                           "opensubdiv/catmark_quadstrips.obj",
-                           "opensubdiv/catmark_xord_interior.obj",
-                           "opensubdiv/catmark_edgecorner.obj"}) {
+  for (const char* name :
+       {"opensubdiv/catmark_cube.obj", "opensubdiv/catmark_toroidal_tet.obj",
+        "opensubdiv/catmark_quadstrips.obj", "opensubdiv/catmark_xord_interior.obj",
+        "opensubdiv/catmark_edgecorner.obj"}) {
     const mesh::Mesh mesh = mesh::loadObjFile(testing::assetPath(name));
     const GregoryStencils stencils = buildGregoryStencils(mesh, TangentMask::kPaper);
     auto refiner = osd::buildTopologyRefiner(mesh, osd::Scheme::kCatmullClark);
@@ -60,8 +59,7 @@ TEST(GregoryAccOsd, IrregularFacesMatchFarGregoryBasisEndCaps) {
     local->UpdateValues(points.data(), local_points.data());
     const double diagonal = 4.0;
     for (int array = 0; array < table->GetNumPatchArrays(); ++array) {
-      if (table->GetPatchArrayDescriptor(array).GetType() !=
-          Far::PatchDescriptor::GREGORY_BASIS) {
+      if (table->GetPatchArrayDescriptor(array).GetType() != Far::PatchDescriptor::GREGORY_BASIS) {
         continue;
       }
       for (int patch = 0; patch < table->GetNumPatches(array); ++patch) {

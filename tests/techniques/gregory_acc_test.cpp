@@ -1,6 +1,8 @@
 // gregory_acc on the CPU. Oracles: the OpenSubdiv Bfr limit surface (regular faces are
 // exactly the bicubic B-spline patch), the patch's own neighbour across each edge (C0),
 // and the rules' one-line messages.
+#include "techniques/gregory_acc/gregory_acc.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include "harness/measures/error/error.h"
 #include "reference/face_domain.h"
 #include "reference/limit_surface.h"
-#include "techniques/gregory_acc/gregory_acc.h"
 #include "techniques/gregory_acc/gregory_stencils.h"
 #include "techniques/registry.h"
 #include "tests/techniques/gregory_acc_test_support.h"
@@ -26,37 +27,36 @@ namespace {
 // patches), with n-gons (refined once), with boundaries, with creases and corners
 // (semi-sharp ones refined, tests/techniques/gregory_crease_test.cpp), and triangle meshes
 // (Catmull-Clark of triangles).
-const std::vector<std::string> kSupported = {
-    "full_suite/pole64.obj",
-    "opensubdiv/catmark_chaikin0.obj",
-    "opensubdiv/catmark_cube.obj",
-    "opensubdiv/catmark_cube_corner3.obj",
-    "opensubdiv/catmark_cube_creases1.obj",
-    "opensubdiv/catmark_edgecorner.obj",
-    "opensubdiv/catmark_gregory_test2.obj",
-    "opensubdiv/catmark_gregory_test5.obj",
-    "opensubdiv/catmark_helmet.obj",
-    "opensubdiv/catmark_nonquads.obj",
-    "opensubdiv/catmark_pawn.obj",
-    "opensubdiv/catmark_pyramid.obj",
-    "opensubdiv/catmark_pyramid_creases1.obj",
-    "opensubdiv/catmark_quadstrips.obj",
-    "opensubdiv/catmark_single_crease.obj",
-    "opensubdiv/catmark_tent_creases1.obj",
-    "opensubdiv/catmark_toroidal_tet.obj",
-    "opensubdiv/catmark_torus.obj",
-    "opensubdiv/catmark_xord_interior.obj",
-    "opensubdiv/loop_cube.obj",
-    "opensubdiv/loop_cube_creases1.obj",
-    "opensubdiv/loop_icos_semisharp.obj",
-    "opensubdiv/loop_icosahedron.obj",
-    "opensubdiv/loop_toroidal_tet.obj",
-    "opensubdiv/loop_triangle_edgecorner.obj",
-    "opensubdiv/loop_xord_interior.obj",
-    "tessbench/cylinder_seam.obj",
-    "tessbench/flat_cube.obj",
-    "tessbench/tri_pawn.obj",
-    "tessbench/tri_torus.obj"};
+const std::vector<std::string> kSupported = {"full_suite/pole64.obj",
+                                             "opensubdiv/catmark_chaikin0.obj",
+                                             "opensubdiv/catmark_cube.obj",
+                                             "opensubdiv/catmark_cube_corner3.obj",
+                                             "opensubdiv/catmark_cube_creases1.obj",
+                                             "opensubdiv/catmark_edgecorner.obj",
+                                             "opensubdiv/catmark_gregory_test2.obj",
+                                             "opensubdiv/catmark_gregory_test5.obj",
+                                             "opensubdiv/catmark_helmet.obj",
+                                             "opensubdiv/catmark_nonquads.obj",
+                                             "opensubdiv/catmark_pawn.obj",
+                                             "opensubdiv/catmark_pyramid.obj",
+                                             "opensubdiv/catmark_pyramid_creases1.obj",
+                                             "opensubdiv/catmark_quadstrips.obj",
+                                             "opensubdiv/catmark_single_crease.obj",
+                                             "opensubdiv/catmark_tent_creases1.obj",
+                                             "opensubdiv/catmark_toroidal_tet.obj",
+                                             "opensubdiv/catmark_torus.obj",
+                                             "opensubdiv/catmark_xord_interior.obj",
+                                             "opensubdiv/loop_cube.obj",
+                                             "opensubdiv/loop_cube_creases1.obj",
+                                             "opensubdiv/loop_icos_semisharp.obj",
+                                             "opensubdiv/loop_icosahedron.obj",
+                                             "opensubdiv/loop_toroidal_tet.obj",
+                                             "opensubdiv/loop_triangle_edgecorner.obj",
+                                             "opensubdiv/loop_xord_interior.obj",
+                                             "tessbench/cylinder_seam.obj",
+                                             "tessbench/flat_cube.obj",
+                                             "tessbench/tri_pawn.obj",
+                                             "tessbench/tri_torus.obj"};
 
 mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
 
@@ -351,8 +351,8 @@ TEST(GregoryAcc, SupportsExactlyTheManifoldAssetsWithoutSmoothTrianglesOrValence
             std::string::npos);
   EXPECT_NE(technique.checkSupport(load("tessbench/tjunction.obj")).find("is non-manifold"),
             std::string::npos);
-  for (const char* name : {"opensubdiv/catmark_smoothtris0.obj", "opensubdiv/catmark_gregory_test8.obj",
-                           "tessbench/tjunction.obj"}) {
+  for (const char* name : {"opensubdiv/catmark_smoothtris0.obj",
+                           "opensubdiv/catmark_gregory_test8.obj", "tessbench/tjunction.obj"}) {
     std::printf("[gregory_acc refuses] %s\n", technique.checkSupport(load(name)).c_str());
   }
 }
@@ -367,8 +367,8 @@ TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
   const GregoryStencils stencils = buildGregoryStencils(mesh);
   EXPECT_EQ(stencils.stencilCount(), 8u + 24u + 48u);
   EXPECT_EQ(stencils.sharedStencilCount, 32u);
-  EXPECT_EQ(footprint.stencil_bytes, (stencils.stencilCount() + 1) * 4 +
-                                         stencils.indices.size() * 8);
+  EXPECT_EQ(footprint.stencil_bytes,
+            (stencils.stencilCount() + 1) * 4 + stencils.indices.size() * 8);
   // Every stencil is affine (weights sum to 1): the patches move with the mesh.
   for (size_t s = 0; s < stencils.stencilCount(); ++s) {
     double sum = 0;
@@ -454,7 +454,8 @@ TEST(GregoryAcc, OperationCountsMatchAHandCount) {
     EXPECT_EQ(profile->per_vertex.compare, std::string(variant) == "asymmetric" ? 5u : 9u);
     const GregoryStencils stencils = buildGregoryStencils(mesh);
     uint64_t entries = 0;
-    for (uint32_t s : stencils.patch_points[2]) entries += stencils.offsets[s + 1] - stencils.offsets[s];
+    for (uint32_t s : stencils.patch_points[2])
+      entries += stencils.offsets[s + 1] - stencils.offsets[s];
     EXPECT_EQ(profile->per_patch_setup.mul, 3 * entries);
     EXPECT_EQ(profile->per_patch_setup.add, 3 * entries);
     EXPECT_EQ(profile->per_patch_setup.div + profile->per_patch_setup.compare, 0u);

@@ -24,8 +24,7 @@ inline std::vector<std::string> supportedBundledAssets() {
   std::vector<std::string> names;
   GregoryAccTechnique technique;
   for (const char* folder : {"full_suite", "opensubdiv", "tessbench"}) {
-    for (const auto& entry :
-         std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
+    for (const auto& entry : std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
       if (entry.path().extension() != ".obj") continue;
       const std::string name = std::string(folder) + "/" + entry.path().filename().string();
       if (technique.checkSupport(mesh::loadObjFile(tb::testing::assetPath(name))).empty()) {
@@ -78,10 +77,14 @@ std::array<T, 3> edgeCoord(techniques::PatchDomain domain, int corner, T t) {
     return p;
   }
   switch (corner) {
-    case 0: return {t, T(0), T(0)};
-    case 1: return {T(1), t, T(0)};
-    case 2: return {T(1) - t, T(1), T(0)};
-    default: return {T(0), T(1) - t, T(0)};
+    case 0:
+      return {t, T(0), T(0)};
+    case 1:
+      return {T(1), t, T(0)};
+    case 2:
+      return {T(1) - t, T(1), T(0)};
+    default:
+      return {T(0), T(1) - t, T(0)};
   }
 }
 

@@ -71,7 +71,8 @@ std::string grid(int n, const std::string& tags) {
   auto at = [n](int i, int j) { return std::to_string(1 + j * (n + 1) + i); };
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      obj += "f " + at(i, j) + " " + at(i + 1, j) + " " + at(i + 1, j + 1) + " " + at(i, j + 1) + "\n";
+      obj +=
+          "f " + at(i, j) + " " + at(i + 1, j) + " " + at(i + 1, j + 1) + " " + at(i, j + 1) + "\n";
     }
   }
   return obj + tags;
@@ -135,11 +136,11 @@ TEST(GregoryCrease, EveryBundledCreasedCatmarkAssetIsAccepted) {
     const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
     size_t kinds[5] = {};
     for (techniques::SharpVertexKind kind : creases.vertex_kind) ++kinds[int(kind)];
-    std::printf("[gregory creases] %-40s %4zu patches, %d of %d levels, %3zu sharp edges, "
-                "rounded %.3g; vertices: %zu crease, %zu corner, %zu dart\n",
-                name.c_str(), build(mesh)->patchCount(), creases.levels, creases.levels_needed,
-                creases.sharp_edges.size(), creases.rounded_sharpness, kinds[2], kinds[3],
-                kinds[1]);
+    std::printf(
+        "[gregory creases] %-40s %4zu patches, %d of %d levels, %3zu sharp edges, "
+        "rounded %.3g; vertices: %zu crease, %zu corner, %zu dart\n",
+        name.c_str(), build(mesh)->patchCount(), creases.levels, creases.levels_needed,
+        creases.sharp_edges.size(), creases.rounded_sharpness, kinds[2], kinds[3], kinds[1]);
   }
 }
 
@@ -157,10 +158,11 @@ TEST(GregoryCrease, CreaseCurvesEqualTheBfrLimit) {
       // semi-sharp creases rounded as the patches round them.
       const mesh::Mesh limit_mesh = testing::limitMeshOf(*patches, creases);
       const CurveFigures figures = creaseCurveError(*patches, creases, limit_mesh, diagonal);
-      std::printf("[gregory crease curves] %-40s %-14s %4zu edge sides: max |patch - limit| / "
-                  "diagonal %.2e (limit over the %s control mesh)\n",
-                  name.c_str(), variant, figures.sides, figures.worst,
-                  creases.rounded_sharpness == 0 ? "true" : "rounded");
+      std::printf(
+          "[gregory crease curves] %-40s %-14s %4zu edge sides: max |patch - limit| / "
+          "diagonal %.2e (limit over the %s control mesh)\n",
+          name.c_str(), variant, figures.sides, figures.worst,
+          creases.rounded_sharpness == 0 ? "true" : "rounded");
       EXPECT_LE(figures.worst, 1e-12) << name << " " << variant;
       checked += figures.sides;
     }
@@ -236,7 +238,8 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
     tess::Levels levels;
     levels.outer = {level, level, level, level};
     levels.inner = {level, level};
-    for (const tess::DomainPoint& d : tess::tessellate(tess::Domain::kQuad, spacing, levels).points) {
+    for (const tess::DomainPoint& d :
+         tess::tessellate(tess::Domain::kQuad, spacing, levels).points) {
       if (d[1] == 0.0f) ts.push_back(d[0]);
     }
   }
@@ -268,9 +271,10 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
         }
       }
     }
-    std::printf("[gregory crease watertight cpu] %-14s %zu point pairs across sharp edges, %zu "
-                "not bitwise equal\n",
-                variant, pairs, unequal);
+    std::printf(
+        "[gregory crease watertight cpu] %-14s %zu point pairs across sharp edges, %zu "
+        "not bitwise equal\n",
+        variant, pairs, unequal);
     EXPECT_GT(pairs, 1000u) << variant;
     EXPECT_EQ(unequal, 0u) << variant;
   }
@@ -308,10 +312,11 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCapture) {
         device_ulp = std::max(device_ulp, f.device_max_ulp);
       }
     }
-    std::printf("[gregory crease watertight lavapipe] %-14s %llu point pairs, %llu not bitwise "
-                "equal; capture up to %llu ulp from evaluateFloat\n",
-                variant, (unsigned long long)pairs, (unsigned long long)unequal,
-                (unsigned long long)device_ulp);
+    std::printf(
+        "[gregory crease watertight lavapipe] %-14s %llu point pairs, %llu not bitwise "
+        "equal; capture up to %llu ulp from evaluateFloat\n",
+        variant, (unsigned long long)pairs, (unsigned long long)unequal,
+        (unsigned long long)device_ulp);
     EXPECT_EQ(device_ulp, 0u) << variant;
   }
 }
@@ -333,8 +338,9 @@ TEST(GregoryCrease, HoleFacesGetNoPatchButShapeTheirNeighbours) {
          {techniques::DomainCoord{0, 0, 0}, techniques::DomainCoord{0.3, 0.8, 0},
           techniques::DomainCoord{1, 0.45, 0}, techniques::DomainCoord{0.5, 0.5, 0}}) {
       // The rings start at other faces (the hole moved last): rounding differs, 1 ulp.
-      EXPECT_LE(length(with_hole->evaluate(p, d).position - without->evaluate(sources[p], d).position),
-                1e-15);
+      EXPECT_LE(
+          length(with_hole->evaluate(p, d).position - without->evaluate(sources[p], d).position),
+          1e-15);
     }
   }
   const std::vector<gpu::GpuPatchProgram> programs = with_hole->gpuPrograms();
@@ -414,7 +420,8 @@ TEST(GregoryCrease, NGonsNextToCreasesAreRefinedByOpenSubdiv) {
            std::to_string(6 + j) + " " + std::to_string(6 + i) + "\n";
   }
   for (int i = 0; i < 5; ++i) {
-    obj += "t crease 2/1/0 " + std::to_string(5 + i) + " " + std::to_string(5 + (i + 1) % 5) + " 10\n";
+    obj +=
+        "t crease 2/1/0 " + std::to_string(5 + i) + " " + std::to_string(5 + (i + 1) % 5) + " 10\n";
   }
   const mesh::Mesh mesh = mesh::loadObjText(obj, "prism.obj");
   for (const char* variant : {"edge_symmetric", "quads_only"}) {
@@ -431,7 +438,7 @@ TEST(GregoryCrease, NGonsNextToCreasesAreRefinedByOpenSubdiv) {
 
 TEST(GregoryCrease, TheCreaseFaceBudgetIsAVariantParameter) {
   const mesh::Mesh mesh = load("opensubdiv/catmark_cube_creases1.obj");  // sharpness 5: 5 levels
-  EXPECT_EQ(build(mesh)->patchCount(), 96u);                       // 256 faces: 2 levels
+  EXPECT_EQ(build(mesh)->patchCount(), 96u);                             // 256 faces: 2 levels
   techniques::VariantInfo variant = variantNamed("edge_symmetric");
   variant.parameters["crease_face_budget"] = 1536.0;
   EXPECT_EQ(variantCreaseFaceBudget(variant), 1536u);

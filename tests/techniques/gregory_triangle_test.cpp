@@ -79,7 +79,8 @@ TEST(GregoryTriangle, EqualsTheCubicBezierTriangleWhenCornerPointsAgree) {
     for (bool symmetric : {false, true}) {
       for (const auto& [u, v, w] : kPoints) {
         const GregoryPoint<double> got = evaluateGregoryTriangle(cp, u, v, w, symmetric);
-        EXPECT_LE(length(got.position - cubicAt(c, u, v, w)), 1e-14) << seed << " " << u << "," << v;
+        EXPECT_LE(length(got.position - cubicAt(c, u, v, w)), 1e-14)
+            << seed << " " << u << "," << v;
         // Normal: the cubic's finite-difference tangents toward corners 1 and 2.
         const double h = 1e-6;
         const mesh::Vec3d ta =

@@ -1,5 +1,7 @@
 // Oracles: the definition of Phong tessellation (Boubekeur & Alexa 2008, eq. 3-4)
 // — corners interpolate, α = 0 is linear interpolation — and the exact sphere.
+#include "techniques/phong/phong.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <random>
 
 #include "core/mesh/obj_loader.h"
-#include "techniques/phong/phong.h"
 #include "techniques/counting_scalar.h"
 #include "techniques/phong/phong_eval.h"
 #include "techniques/registry.h"
@@ -105,8 +106,10 @@ TEST(PhongEval, SummationOrderMattersWithoutTheCanonicalOrder) {
 
 TEST(PhongPatches, RotationOfTheFaceGivesBitwiseEqualPoints) {
   // The technique sums in ascending vertex order, so a rotated face is exact.
-  const char* kA = "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 1//1 2//2 3//3\n";
-  const char* kB = "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
+  const char* kA =
+      "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 1//1 2//2 3//3\n";
+  const char* kB =
+      "v 0 0 0\nv 1 0 0.2\nv 0 1 0.1\nvn 0 0 1\nvn 0.3 0 1\nvn 0 0.4 1\nf 2//2 3//3 1//1\n";
   const techniques::Technique* phong = techniques::TechniqueRegistry::instance().find("phong");
   const techniques::VariantInfo variant = phong->variants()[0];
   const auto a = techniques::buildSurface(*phong, mesh::loadObjText(kA, "a.obj"), variant);

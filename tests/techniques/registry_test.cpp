@@ -1,6 +1,7 @@
+#include "techniques/registry.h"
+
 #include <gtest/gtest.h>
 
-#include "techniques/registry.h"
 #include "tests/test_paths.h"
 
 namespace tb {

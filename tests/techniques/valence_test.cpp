@@ -109,7 +109,8 @@ PoleFigures nearThePole(const techniques::Technique& technique, const std::strin
     const ref::LimitFace face = limit.face(caps[c]);
     for (int i = 0; i < kSamples; ++i) {
       for (int j = 0; j < kSamples; ++j) {
-        samples[c].push_back(face.evaluate(i / double(kSamples - 1), j / double(kSamples - 1)).position);
+        samples[c].push_back(
+            face.evaluate(i / double(kSamples - 1), j / double(kSamples - 1)).position);
       }
     }
   }
@@ -159,10 +160,11 @@ TEST(Valence, Valence64And256BuildAndStayNearTheBfrLimitAtThePole) {
          {std::pair<const techniques::Technique*, const char*>{&acc_technique, "default"},
           {&gregory, "edge_symmetric"}}) {
       const PoleFigures f = nearThePole(*technique, variant, c.mesh);
-      std::printf("[valence] %-10s %-11s %3zu pole patches: max / diagonal: geometric %.3e, "
-                  "parametric %.3e, float vs double %.1e\n",
-                  c.label, technique->info().id.c_str(), f.patches, f.geometric, f.parametric,
-                  f.float_vs_double);
+      std::printf(
+          "[valence] %-10s %-11s %3zu pole patches: max / diagonal: geometric %.3e, "
+          "parametric %.3e, float vs double %.1e\n",
+          c.label, technique->info().id.c_str(), f.patches, f.geometric, f.parametric,
+          f.float_vs_double);
       EXPECT_GE(f.patches, 64u);
       EXPECT_LT(f.geometric, c.geometric_bound) << c.label << " " << technique->info().id;
       // Parametric: measured 8.4e-2 .. 9.3e-2.
@@ -215,10 +217,10 @@ TEST(ValenceGpu, Pole64CaptureEqualsTheCpuFloatTwin) {
         }
       }
     }
-    std::printf("[valence gpu] pole64 %-11s %-15s %zu vertices: max %llu ulp from "
-                "evaluateFloat, max normal diff %.1e\n",
-                technique->info().id.c_str(), variant, vertices, (unsigned long long)worst,
-                worst_normal);
+    std::printf(
+        "[valence gpu] pole64 %-11s %-15s %zu vertices: max %llu ulp from "
+        "evaluateFloat, max normal diff %.1e\n",
+        technique->info().id.c_str(), variant, vertices, (unsigned long long)worst, worst_normal);
     EXPECT_GT(vertices, 16 * patches->patchCount());  // level 16 alone gives 289 per patch
     // The bound of acc_gpu_test and gregory_acc_gpu_test: the CPU twin follows the
     // shader's operation order, the device may differ in the last bits of a few FMAs.
@@ -247,11 +249,12 @@ TEST(ValenceGpu, SymmetricVariantsStayBitwiseWatertightAroundThePole) {
         if (backend == measures::CrackBackend::kGpu && context == nullptr) continue;
         const measures::CrackFigures f =
             measures::measureCracks(*patches, lc.spacing, lc.level, backend, context);
-        std::printf("[valence cracks] pole64 %-11s %-15s level %4.1f %-9s: %llu pairs, %llu not "
-                    "bitwise, max gap %.3g, device max %llu ulp\n",
-                    technique->info().id.c_str(), variant, lc.level, toString(backend),
-                    (unsigned long long)f.points_compared, (unsigned long long)f.points_not_equal,
-                    f.max_gap_world, (unsigned long long)f.device_max_ulp);
+        std::printf(
+            "[valence cracks] pole64 %-11s %-15s level %4.1f %-9s: %llu pairs, %llu not "
+            "bitwise, max gap %.3g, device max %llu ulp\n",
+            technique->info().id.c_str(), variant, lc.level, toString(backend),
+            (unsigned long long)f.points_compared, (unsigned long long)f.points_not_equal,
+            f.max_gap_world, (unsigned long long)f.device_max_ulp);
         ASSERT_TRUE(f.measured) << f.skipped_reason;
         EXPECT_EQ(f.shared_edges, 64u);  // the spokes: every other edge is on the boundary
         EXPECT_EQ(f.points_not_equal, 0u) << technique->info().id << " " << variant;

@@ -12,9 +12,9 @@
 #include <cstdlib>
 
 #include "core/gpu/compute_runner.h"
+#include "core/mesh/float_ulp.h"
 #include "harness/suite/scenario_file.h"
 #include "techniques/wave_particles/wave_particles.h"
-#include "core/mesh/float_ulp.h"
 #include "tests/gpu/gpu_test_support.h"
 
 namespace tb::wave_particles {

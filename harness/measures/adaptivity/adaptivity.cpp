@@ -88,8 +88,9 @@ uint64_t factorMismatches(const techniques::SurfacePatches& patches, const Share
       return std::bit_cast<uint32_t>(levels[side.patch].outer[j]);
     };
     const uint32_t first = factorBits(edge.sides.front());
-    const bool differs = std::any_of(edge.sides.begin() + 1, edge.sides.end(),
-                                     [&](const PatchSide& side) { return factorBits(side) != first; });
+    const bool differs =
+        std::any_of(edge.sides.begin() + 1, edge.sides.end(),
+                    [&](const PatchSide& side) { return factorBits(side) != first; });
     mismatches += differs ? 1 : 0;
   }
   return mismatches;
@@ -333,9 +334,10 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
   summary.ideal_triangles_per_frame = best_possible.triangles_per_frame;
   summary.ideal_max_error_px = best_possible.max_error_px;
   summary.ideal_uniform_frames = best_possible.uniform_frames;
-  summary.triangle_ratio_vs_ideal = summary.reached && best_possible.triangles_per_frame > 0
-                                        ? summary.triangles_per_frame / best_possible.triangles_per_frame
-                                        : 0;
+  summary.triangle_ratio_vs_ideal =
+      summary.reached && best_possible.triangles_per_frame > 0
+          ? summary.triangles_per_frame / best_possible.triangles_per_frame
+          : 0;
   return summary;
 }
 

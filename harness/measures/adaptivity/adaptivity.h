@@ -68,8 +68,8 @@ struct AdaptivityFrame {
 
 struct AdaptivitySummary {
   double error_target_px = 1;
-  bool reached = false;     // some target of the policy keeps the error under error_target_px
-  double target = 0;        // the coarsest such target (FactorPolicy::targetUnit())
+  bool reached = false;  // some target of the policy keeps the error under error_target_px
+  double target = 0;     // the coarsest such target (FactorPolicy::targetUnit())
   double triangles_per_frame = 0;  // mean over the path's frames at that target
   double max_error_px = 0;         // the path's largest tessellation error there
   // error_bound only: frames on which some patch's bound stays above the target even with
@@ -110,8 +110,8 @@ struct AdaptivityIdeal {
 // Which parts of a frame to measure (all by default; crack-safety checks need only the
 // factors and cracks).
 struct AdaptivityParts {
-  bool screen = true;  // FrameScreenFigures and pops (counts then come from the tessellator)
-  bool cracks = true;  // crack_* on both backends
+  bool screen = true;    // FrameScreenFigures and pops (counts then come from the tessellator)
+  bool cracks = true;    // crack_* on both backends
   bool compute = false;  // compute_* (the compute path's levels and counts), with a device
 };
 

@@ -38,15 +38,18 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
   std::vector<double> patch_max;
   // Settled patches are culled (level 0) in the passes that follow, so they cost nothing.
   auto evaluate = [&](auto levelOf) {
-    for (size_t p = 0; p < count; ++p) trial[p] = patchAt(patches_.patchDomain(p), float(levelOf(p)));
+    for (size_t p = 0; p < count; ++p)
+      trial[p] = patchAt(patches_.patchDomain(p), float(levelOf(p)));
     screen_->tessellationError(spacing, trial, view, nullptr, &patch_max);
     ++*passes;
   };
   // Level 1 first (most patches off screen or flat pass there), then bisection.
   evaluate([&](size_t) { return highest > 1 ? 1u : 0u; });
   for (size_t p = 0; p < count && highest > 1; ++p) {
-    if (patch_max[p] <= error_target_px) passes_at[p] = 1;
-    else fails[p] = 1;
+    if (patch_max[p] <= error_target_px)
+      passes_at[p] = 1;
+    else
+      fails[p] = 1;
   }
   for (;;) {
     bool open = false;
@@ -68,10 +71,12 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
   std::vector<tess::Levels> levels(count);
   const uint32_t most = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
   for (int round = 0;; ++round) {
-    for (size_t p = 0; p < count; ++p) levels[p] = patchAt(patches_.patchDomain(p), float(passes_at[p]));
+    for (size_t p = 0; p < count; ++p)
+      levels[p] = patchAt(patches_.patchDomain(p), float(passes_at[p]));
     for (const SharedEdge& edge : shared_.edges) {
       float level = 0;
-      for (const PatchSide& side : edge.sides) level = std::max(level, float(passes_at[side.patch]));
+      for (const PatchSide& side : edge.sides)
+        level = std::max(level, float(passes_at[side.patch]));
       for (const PatchSide& side : edge.sides) {
         levels[side.patch].outer[outerIndex(patches_.patchDomain(side.patch), side.local)] = level;
       }
@@ -90,13 +95,14 @@ std::vector<tess::Levels> AdaptivityRun::idealFrame(tess::Spacing spacing, const
   return levels;
 }
 
-const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::vector<view::View>& views,
+const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing,
+                                            const std::vector<view::View>& views,
                                             double error_target_px, uint32_t uniform_level,
                                             double uniform_triangles) {
   const auto key = std::make_tuple(int(spacing), error_target_px, viewsKey(views));
   if (const auto it = ideal_cache_.find(key); it != ideal_cache_.end()) return it->second;
-  const uint32_t highest = uniform_level > 0 ? uniform_level
-                                             : (spacing == tess::Spacing::kFractionalOdd ? 63 : 64);
+  const uint32_t highest =
+      uniform_level > 0 ? uniform_level : (spacing == tess::Spacing::kFractionalOdd ? 63 : 64);
   AdaptivityIdeal out;
   uint64_t triangles = 0;
   std::vector<tess::Levels> uniform;
@@ -106,14 +112,16 @@ const AdaptivityIdeal& AdaptivityRun::ideal(tess::Spacing spacing, const std::ve
     }
   }
   for (const view::View& view : views) {
-    const std::vector<tess::Levels> levels = idealFrame(spacing, view, error_target_px, highest, &out.passes);
+    const std::vector<tess::Levels> levels =
+        idealFrame(spacing, view, error_target_px, highest, &out.passes);
     uint64_t frame_triangles = 0;
     lod::ScreenErrorFigures e = screen_->tessellationError(spacing, levels, view, &frame_triangles);
     ++out.passes;
     const bool more = uniform_triangles > 0 && double(frame_triangles) > uniform_triangles;
     if (!uniform.empty() && (e.max_px > error_target_px || more)) {
       uint64_t uniform_frame = 0;
-      const lod::ScreenErrorFigures u = screen_->tessellationError(spacing, uniform, view, &uniform_frame);
+      const lod::ScreenErrorFigures u =
+          screen_->tessellationError(spacing, uniform, view, &uniform_frame);
       ++out.passes;
       if (u.max_px <= error_target_px) {  // always, as the uniform search found it
         e = u;

@@ -137,7 +137,8 @@ class CracksMeasure final : public Measure {
          "tessellator), or its surface on the compute path (path compute: the compute "
          "tessellator and the technique's compute shader, the same surface functions as its "
          "TES, the boundary points kept; the default suite on catmark_xord_interior and "
-         "loop_xord_interior, --suite full on every asset of up to 2,048 patches; never displaced); "
+         "loop_xord_interior, --suite full on every asset of up to 2,048 patches; never "
+         "displaced); "
          "vs_cpu_float_*: "
          "every captured vertex (every boundary point of every patch) against evaluateFloat at "
          "the same gl_TessCoord (0 on cpu_float rows by definition)",
@@ -223,10 +224,9 @@ class CracksMeasure final : public Measure {
     for (tess::Spacing spacing : spacings) {
       for (const LevelChoice& level : crack_levels) {
         for (CrackBackend backend : backends) {
-          result.rows.push_back(crackRow(spacing, level.text, backend, nullptr,
-                                         reasonOf(backend, gpu_reason, compute_reason), [&] {
-            return session.measure(spacing, level.level, backend, input.gpu);
-          }));
+          result.rows.push_back(crackRow(
+              spacing, level.text, backend, nullptr, reasonOf(backend, gpu_reason, compute_reason),
+              [&] { return session.measure(spacing, level.level, backend, input.gpu); }));
         }
       }
     }

@@ -27,7 +27,8 @@ tess::Levels uniformLevels(uint32_t level) {
 
 view::View scaledView(const view::View& view, double scale) {
   view::View scaled = view;
-  scaled.viewport_width_px = std::max<uint32_t>(1, uint32_t(std::lround(view.viewport_width_px * scale)));
+  scaled.viewport_width_px =
+      std::max<uint32_t>(1, uint32_t(std::lround(view.viewport_width_px * scale)));
   scaled.viewport_height_px =
       std::max<uint32_t>(1, uint32_t(std::lround(view.viewport_height_px * scale)));
   return scaled;
@@ -112,8 +113,8 @@ void CullingRun::prepareDevice() {
   device_ready_ = true;
   try {
     unculled_ = runOnDevice(nullptr);
-    surface_ = std::make_unique<DeviceSurface>(
-        tessellateOnDevice(*context_, patches_, tess::Spacing::kInteger, uniformLevels(options_.level)));
+    surface_ = std::make_unique<DeviceSurface>(tessellateOnDevice(
+        *context_, patches_, tess::Spacing::kInteger, uniformLevels(options_.level)));
     oracle_ = std::make_unique<VisibilityOracle>(*context_, *surface_);
   } catch (const gpu::GpuError& error) {
     gpu_skip_reason_ = std::string("device run failed: ") + error.what();
@@ -144,9 +145,9 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const lod::CullParams* params) 
     if (params == nullptr) continue;
     std::vector<tess::LevelsBits> compute;
     if (options_.compute) {
-      compute = gpu::computePolicyLevels(*context_, program.domain, tess::Spacing::kInteger,
-                                         program.patch_count, nullptr, &device_policies_[k],
-                                         levels);
+      compute =
+          gpu::computePolicyLevels(*context_, program.domain, tess::Spacing::kInteger,
+                                   program.patch_count, nullptr, &device_policies_[k], levels);
     }
     for (uint32_t i = 0; i < program.patch_count; ++i) {
       const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
@@ -158,7 +159,7 @@ CullingRun::DeviceCounts CullingRun::runOnDevice(const lod::CullParams* params) 
 }
 
 CullingRun::HalfDecisions CullingRun::halfDecisions(lod::CullPolicy policy,
-                                                   const view::View& view) const {
+                                                    const view::View& view) const {
   const lod::CullPolicyHalves halves = lod::cullPolicyHalves(policy);
   auto decide = [&](lod::CullPolicy half) {
     return lod::cullDecisions(lod::cullParams(half, view, bounds_), bounds_);  // none: all 0
@@ -167,8 +168,8 @@ CullingRun::HalfDecisions CullingRun::halfDecisions(lod::CullPolicy policy,
 }
 
 void CullingRun::countAgainstOracle(std::span<const uint8_t> culled,
-                                    const PatchVisibility& visibility,
-                                    const HalfDecisions& halves, CullingFrame* frame) {
+                                    const PatchVisibility& visibility, const HalfDecisions& halves,
+                                    CullingFrame* frame) {
   frame->oracle_measured = true;
   for (size_t p = 0; p < culled.size(); ++p) {
     const uint64_t pixels = visibility.visible_pixels[p];

@@ -71,8 +71,8 @@ struct CullingFrame {
 // A policy over a whole path.
 struct CullingSummary {
   uint32_t frames = 0;
-  double mean_culled_fraction = 0;  // culled patches / patches, mean over frames
-  double mean_tes_saving = 0;       // 1 - TES invocations / unculled, mean over frames
+  double mean_culled_fraction = 0;    // culled patches / patches, mean over frames
+  double mean_tes_saving = 0;         // 1 - TES invocations / unculled, mean over frames
   double mean_cullable_fraction = 0;  // the ideal culler's share, for comparison
   uint64_t false_culls = 0, false_cull_pixels = 0, missed_culls = 0;
   uint64_t twin_mismatches = 0;

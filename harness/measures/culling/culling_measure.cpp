@@ -67,97 +67,101 @@ std::vector<MetricField<CullingFrame>> cullingComputeFields() {
 const MetricTable<CullingFrame>& frameTable() {
   using D = results::Direction;
   using F = CullingFrame;
-  static const MetricTable<F> kTable{{
-      // patches: count; context
-      {"patches", results::Unit::kCount, D::kNone, &F::patches},
-      // culled_patches: count; context (see culled_fraction)
-      {"culled_patches", results::Unit::kCount, D::kNone, &F::culled_patches},
-      // culled_fraction: ratio; up to cullable / patches with no false cull (best), 0 (worst:
-      //   nothing culled)
-      {"culled_fraction", results::Unit::kRatio, D::kHigherIsBetter,
-       [](const F& f) {
-         return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0;
-       }},
-      // tes_invocations: count; 0 (best), tes_invocations_unculled (worst: no saving)
-      {"tes_invocations", results::Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
-      // tes_invocations_unculled: count; context
-      {"tes_invocations_unculled", results::Unit::kCount, D::kNone, &F::tes_invocations_unculled},
-      // tes_saving: ratio 1 - TES invocations / unculled; 1 (best), 0 (worst)
-      {"tes_saving", results::Unit::kRatio, D::kHigherIsBetter,
-       [](const F& f) {
-         return f.tes_invocations_unculled > 0
-                    ? 1 - double(f.tes_invocations) / double(f.tes_invocations_unculled)
-                    : 0.0;
-       }},
-      // triangles: count; 0 (best), the unculled triangles (worst)
-      {"triangles", results::Unit::kCount, D::kLowerIsBetter, &F::triangles},
-      // gpu_culled_patches: count; context: the device's pipeline statistics
-      {"gpu_culled_patches", results::Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
-      // gpu_tes_invocations: count; 0 (best), gpu_tes_invocations_unculled (worst)
-      {"gpu_tes_invocations", results::Unit::kCount, D::kLowerIsBetter,
-       gpu(&F::gpu_tes_invocations)},
-      // gpu_tes_invocations_unculled: count; context
-      {"gpu_tes_invocations_unculled", results::Unit::kCount, D::kNone,
-       gpu(&F::gpu_tes_invocations_unculled)},
-      // gpu_primitives: count; 0 (best), gpu_primitives_unculled (worst)
-      {"gpu_primitives", results::Unit::kCount, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         return f.gpu_measured && f.gpu_primitives_counted
-                    ? std::optional<double>(double(f.gpu_primitives))
-                    : std::nullopt;
-       }},
-      // gpu_primitives_unculled: count; context
-      {"gpu_primitives_unculled", results::Unit::kCount, D::kNone,
-       [](const F& f) -> std::optional<double> {
-         return f.gpu_measured && f.gpu_primitives_counted
-                    ? std::optional<double>(double(f.gpu_primitives_unculled))
-                    : std::nullopt;
-       }},
-      // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
-      //   (worst)
-      {"gpu_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
-       [](const F& f) -> std::optional<double> {
-         if (!f.gpu_measured) return std::nullopt;
-         const bool differ = f.gpu_tes_invocations != f.tes_invocations ||
-                             (f.gpu_primitives_counted && f.gpu_primitives != f.triangles);
-         return differ ? 1.0 : 0.0;
-       }},
-      // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
-      //   (worst)
-      {"twin_mismatches", results::Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
-      // visible_patches: count; context: patches with a pixel in the unculled render
-      {"visible_patches", results::Unit::kCount, D::kNone, oracle(&F::visible_patches)},
-      // cullable_patches: count; context: what an ideal back-face + frustum culler removes
-      {"cullable_patches", results::Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
-      // false_culls: count; 0 (best), up to visible_patches (worst)
-      {"false_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
-      // false_cull_pixels: pixels; 0 (best), up to the render's pixels (worst)
-      {"false_cull_pixels", results::Unit::kPixels, D::kLowerIsBetter,
-       oracle(&F::false_cull_pixels)},
-      // missed_culls: count; 0 (best), up to cullable_patches (worst)
-      {"missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
-      // frame_cull_efficiency: ratio culled cullable patches / the oracle's cullable patches; 1
-      //   (best: every patch an ideal back-face + frustum culler removes), 0 (worst); absent
-      //   when the frame has no cullable patch
-      {"frame_cull_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
-       efficiency(&F::culled_cullable_patches, &F::cullable_patches)},
-      // frame_back_facing_efficiency: ratio, the policy's back-facing half over the patches whose
-      //   every triangle faces away; 1 (best), 0 (worst, or no such half); absent when none
-      {"frame_back_facing_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
-       efficiency(&F::culled_back_facing_patches, &F::back_facing_patches)},
-      // frame_frustum_efficiency: ratio, the policy's frustum half over the patches whose every
-      //   triangle lies outside the frustum; 1 (best), 0 (worst, or no such half)
-      {"frame_frustum_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
-       efficiency(&F::culled_outside_frustum_patches, &F::outside_frustum_patches)},
-      // back_facing_patches, outside_frustum_patches: count; context (the oracle's, by cause)
-      {"back_facing_patches", results::Unit::kCount, D::kNone, oracle(&F::back_facing_patches)},
-      {"outside_frustum_patches", results::Unit::kCount, D::kNone,
-       oracle(&F::outside_frustum_patches)},
-      // render_width_px: pixels; context
-      {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
-      // render_height_px: pixels; context
-      {"render_height_px", results::Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
-  }, cullingComputeFields()};
+  static const MetricTable<F> kTable{
+      {
+          // patches: count; context
+          {"patches", results::Unit::kCount, D::kNone, &F::patches},
+          // culled_patches: count; context (see culled_fraction)
+          {"culled_patches", results::Unit::kCount, D::kNone, &F::culled_patches},
+          // culled_fraction: ratio; up to cullable / patches with no false cull (best), 0 (worst:
+          //   nothing culled)
+          {"culled_fraction", results::Unit::kRatio, D::kHigherIsBetter,
+           [](const F& f) {
+             return f.patches > 0 ? double(f.culled_patches) / double(f.patches) : 0.0;
+           }},
+          // tes_invocations: count; 0 (best), tes_invocations_unculled (worst: no saving)
+          {"tes_invocations", results::Unit::kCount, D::kLowerIsBetter, &F::tes_invocations},
+          // tes_invocations_unculled: count; context
+          {"tes_invocations_unculled", results::Unit::kCount, D::kNone,
+           &F::tes_invocations_unculled},
+          // tes_saving: ratio 1 - TES invocations / unculled; 1 (best), 0 (worst)
+          {"tes_saving", results::Unit::kRatio, D::kHigherIsBetter,
+           [](const F& f) {
+             return f.tes_invocations_unculled > 0
+                        ? 1 - double(f.tes_invocations) / double(f.tes_invocations_unculled)
+                        : 0.0;
+           }},
+          // triangles: count; 0 (best), the unculled triangles (worst)
+          {"triangles", results::Unit::kCount, D::kLowerIsBetter, &F::triangles},
+          // gpu_culled_patches: count; context: the device's pipeline statistics
+          {"gpu_culled_patches", results::Unit::kCount, D::kNone, gpu(&F::gpu_culled_patches)},
+          // gpu_tes_invocations: count; 0 (best), gpu_tes_invocations_unculled (worst)
+          {"gpu_tes_invocations", results::Unit::kCount, D::kLowerIsBetter,
+           gpu(&F::gpu_tes_invocations)},
+          // gpu_tes_invocations_unculled: count; context
+          {"gpu_tes_invocations_unculled", results::Unit::kCount, D::kNone,
+           gpu(&F::gpu_tes_invocations_unculled)},
+          // gpu_primitives: count; 0 (best), gpu_primitives_unculled (worst)
+          {"gpu_primitives", results::Unit::kCount, D::kLowerIsBetter,
+           [](const F& f) -> std::optional<double> {
+             return f.gpu_measured && f.gpu_primitives_counted
+                        ? std::optional<double>(double(f.gpu_primitives))
+                        : std::nullopt;
+           }},
+          // gpu_primitives_unculled: count; context
+          {"gpu_primitives_unculled", results::Unit::kCount, D::kNone,
+           [](const F& f) -> std::optional<double> {
+             return f.gpu_measured && f.gpu_primitives_counted
+                        ? std::optional<double>(double(f.gpu_primitives_unculled))
+                        : std::nullopt;
+           }},
+          // gpu_counts_differ: flag; 0 when the device counts equal the CPU tessellator's (best), 1
+          //   (worst)
+          {"gpu_counts_differ", results::Unit::kFlag, D::kLowerIsBetter,
+           [](const F& f) -> std::optional<double> {
+             if (!f.gpu_measured) return std::nullopt;
+             const bool differ = f.gpu_tes_invocations != f.tes_invocations ||
+                                 (f.gpu_primitives_counted && f.gpu_primitives != f.triangles);
+             return differ ? 1.0 : 0.0;
+           }},
+          // twin_mismatches: count; 0 when the TCS decides as the CPU twin (best), up to patches
+          //   (worst)
+          {"twin_mismatches", results::Unit::kCount, D::kLowerIsBetter, gpu(&F::twin_mismatches)},
+          // visible_patches: count; context: patches with a pixel in the unculled render
+          {"visible_patches", results::Unit::kCount, D::kNone, oracle(&F::visible_patches)},
+          // cullable_patches: count; context: what an ideal back-face + frustum culler removes
+          {"cullable_patches", results::Unit::kCount, D::kNone, oracle(&F::cullable_patches)},
+          // false_culls: count; 0 (best), up to visible_patches (worst)
+          {"false_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::false_culls)},
+          // false_cull_pixels: pixels; 0 (best), up to the render's pixels (worst)
+          {"false_cull_pixels", results::Unit::kPixels, D::kLowerIsBetter,
+           oracle(&F::false_cull_pixels)},
+          // missed_culls: count; 0 (best), up to cullable_patches (worst)
+          {"missed_culls", results::Unit::kCount, D::kLowerIsBetter, oracle(&F::missed_culls)},
+          // frame_cull_efficiency: ratio culled cullable patches / the oracle's cullable patches; 1
+          //   (best: every patch an ideal back-face + frustum culler removes), 0 (worst); absent
+          //   when the frame has no cullable patch
+          {"frame_cull_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+           efficiency(&F::culled_cullable_patches, &F::cullable_patches)},
+          // frame_back_facing_efficiency: ratio, the policy's back-facing half over the patches
+          // whose
+          //   every triangle faces away; 1 (best), 0 (worst, or no such half); absent when none
+          {"frame_back_facing_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+           efficiency(&F::culled_back_facing_patches, &F::back_facing_patches)},
+          // frame_frustum_efficiency: ratio, the policy's frustum half over the patches whose every
+          //   triangle lies outside the frustum; 1 (best), 0 (worst, or no such half)
+          {"frame_frustum_efficiency", results::Unit::kRatio, D::kHigherIsBetter,
+           efficiency(&F::culled_outside_frustum_patches, &F::outside_frustum_patches)},
+          // back_facing_patches, outside_frustum_patches: count; context (the oracle's, by cause)
+          {"back_facing_patches", results::Unit::kCount, D::kNone, oracle(&F::back_facing_patches)},
+          {"outside_frustum_patches", results::Unit::kCount, D::kNone,
+           oracle(&F::outside_frustum_patches)},
+          // render_width_px: pixels; context
+          {"render_width_px", results::Unit::kPixels, D::kNone, oracle(&F::render_width_px)},
+          // render_height_px: pixels; context
+          {"render_height_px", results::Unit::kPixels, D::kNone, oracle(&F::render_height_px)},
+      },
+      cullingComputeFields()};
   return kTable;
 }
 
@@ -217,9 +221,10 @@ std::vector<results::MetricSpec> allSpecs() {
 }
 
 std::vector<std::string> policyNotes() {
-  std::string text = "policies (shaders/common/cull.glsl, run in every technique's own TCS, which "
-                     "writes outer level 0 for a culled patch; CPU twin "
-                     "harness/lod/cull_policy.h):";
+  std::string text =
+      "policies (shaders/common/cull.glsl, run in every technique's own TCS, which "
+      "writes outer level 0 for a culled patch; CPU twin "
+      "harness/lod/cull_policy.h):";
   for (lod::CullPolicy policy : lod::allCullPolicies()) {
     text += " ";
     text += lod::cullPolicyName(policy);

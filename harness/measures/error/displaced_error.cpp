@@ -86,8 +86,8 @@ DisplacedErrorFigures measureDisplacedError(const techniques::SurfacePatches& di
   std::vector<ref::Triangle> triangles;
   for (size_t p = 0; p < patches; ++p) {
     for (const ref::Triangle& t : latticeFor(p).triangles) {
-      triangles.push_back({uint32_t(first[p] + t[0]), uint32_t(first[p] + t[1]),
-                           uint32_t(first[p] + t[2])});
+      triangles.push_back(
+          {uint32_t(first[p] + t[0]), uint32_t(first[p] + t[1]), uint32_t(first[p] + t[2])});
     }
   }
   const ref::TriangleDistanceField surface(points, triangles, "displaced surface");
@@ -102,7 +102,8 @@ DisplacedErrorFigures measureDisplacedError(const techniques::SurfacePatches& di
     figures.hausdorff_tech_to_target = std::max(figures.hausdorff_tech_to_target, d);
     sum_squares += d * d;
   }
-  for (double d : back) figures.hausdorff_target_to_tech = std::max(figures.hausdorff_target_to_tech, d);
+  for (double d : back)
+    figures.hausdorff_target_to_tech = std::max(figures.hausdorff_target_to_tech, d);
   figures.samples = distance.size();
   const double scale = figures.bbox_diagonal > 0 ? 1 / figures.bbox_diagonal : 0;
   figures.hausdorff_tech_to_target *= scale;

@@ -53,12 +53,12 @@ struct SurfaceErrorFigures {
 // patches; the parametric and normal figures never do. Every bundled asset is below it. The
 // sample: every feature patch (a corner at an extraordinary or boundary vertex or next to a
 // hole, or its input face touching a crease: where techniques err most), then runs of 16
-// consecutive other patches, evenly spaced in patch order, up to the budget. Its distances go to the other surface over
-// the sampled patches and their vertex neighbours (where a closest point falls), so the sampled
-// Hausdorff distance is the largest over the sample: never above the full one, and equal to it
-// when the worst patch is sampled (tests/measures/error_test.cpp bounds it on the bundled
-// assets). A production-size asset's dense reference is then a few million triangles, not
-// tens of millions (a 25k-patch asset at rate 16 is 12.8 million).
+// consecutive other patches, evenly spaced in patch order, up to the budget. Its distances go to
+// the other surface over the sampled patches and their vertex neighbours (where a closest point
+// falls), so the sampled Hausdorff distance is the largest over the sample: never above the full
+// one, and equal to it when the worst patch is sampled (tests/measures/error_test.cpp bounds it on
+// the bundled assets). A production-size asset's dense reference is then a few million triangles,
+// not tens of millions (a 25k-patch asset at rate 16 is 12.8 million).
 inline constexpr size_t kErrorHausdorffPatchBudget = 2048;
 
 // Lattice level of the technique's sampling (per patch edge) and the rate of the

@@ -184,8 +184,8 @@ class ErrorMeasure final : public Measure {
   MeasureRequirements requirements() const override {
     // A variant that only reorders the float evaluation has the default's double surface:
     // graded once in the default suite, every variant in --suite full.
-    MeasureRequirements requirements{{MeasureNeed::kSurface}, VariantPolicy::kEveryDistinctSurface,
-                                     {}};
+    MeasureRequirements requirements{
+        {MeasureNeed::kSurface}, VariantPolicy::kEveryDistinctSurface, {}};
     requirements.displaced_surfaces = true;
     return requirements;
   }
@@ -213,8 +213,8 @@ class ErrorMeasure final : public Measure {
       const size_t with_limit = input.patches->patchCount() - f.patches_without_limit;
       if (f.hausdorff_patches < with_limit) {
         result.notes.push_back(
-            "hausdorff* and rms_distance sampled: " + std::to_string(f.hausdorff_patches) +
-            " of " + std::to_string(with_limit) +
+            "hausdorff* and rms_distance sampled: " + std::to_string(f.hausdorff_patches) + " of " +
+            std::to_string(with_limit) +
             " patches (every one at an extraordinary, boundary or crease feature, the rest evenly "
             "spaced); the parametric and normal figures cover every patch");
       }

@@ -244,13 +244,12 @@ void compressMesh(TessellatedMesh* mesh, CompressedMesh* out, std::vector<float>
   std::swap(mesh->vertices, fetched);
 
   out->index_data.resize(meshopt_encodeIndexBufferBound(indices.size(), used));
-  out->index_data.resize(meshopt_encodeIndexBuffer(
-      out->index_data.data(), out->index_data.size(), indices.data(), indices.size()));
+  out->index_data.resize(meshopt_encodeIndexBuffer(out->index_data.data(), out->index_data.size(),
+                                                   indices.data(), indices.size()));
   out->vertex_data.resize(meshopt_encodeVertexBufferBound(used, mesh::kRenderVertexBytes));
   out->vertex_data.resize(meshopt_encodeVertexBuffer(out->vertex_data.data(),
-                                                     out->vertex_data.size(),
-                                                     mesh->vertices.data(), used,
-                                                     mesh::kRenderVertexBytes));
+                                                     out->vertex_data.size(), mesh->vertices.data(),
+                                                     used, mesh::kRenderVertexBytes));
 }
 
 CompressedSize compressedSize(const techniques::SurfacePatches& patches, uint32_t level,

@@ -110,9 +110,9 @@ inline constexpr size_t kCompressSampleChunks = 8;
 // are built, and their bytes scaled by the patches of all chunks over theirs. Chunks are
 // compressed in parallel; the sums do not depend on the thread count.
 struct CompressedSize {
-  uint64_t vertex_bytes = 0;  // bytes; all chunks' or the sample's scaled, rounded
-  uint64_t index_bytes = 0;   // bytes; likewise
-  uint64_t chunks = 0;        // chunks of the asset
+  uint64_t vertex_bytes = 0;    // bytes; all chunks' or the sample's scaled, rounded
+  uint64_t index_bytes = 0;     // bytes; likewise
+  uint64_t chunks = 0;          // chunks of the asset
   uint64_t sampled_chunks = 0;  // chunks built: `chunks` (best, exact) down to sample_chunks
   uint64_t bytes() const { return vertex_bytes + index_bytes; }
 };

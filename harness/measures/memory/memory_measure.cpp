@@ -3,8 +3,8 @@
 #include <meshoptimizer.h>
 
 #include <optional>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "core/gpu/patch_program_desc.h"
 #include "harness/measures/measure.h"
@@ -61,83 +61,92 @@ const MetricTable<MemoryRowFigures>& memoryTable() {
   auto footprint = [](uint64_t techniques::DataFootprint::*member) {
     return [member](const R& r) { return double(r.memory.technique.*member); };
   };
-  static const MetricTable<R> kTable{{
-      // plain_vertices: count; context: the welded plain mesh's vertices at the level
-      {"plain_vertices", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_vertices)},
-      // plain_triangles: count; context
-      {"plain_triangles", results::Unit::kCount, D::kNone, field(&MemoryFigures::plain_triangles)},
-      // plain_bytes: bytes; context: the plain mesh (32 B vertices, 32-bit indices)
-      {"plain_bytes", results::Unit::kBytes, D::kNone, field(&MemoryFigures::plain_bytes)},
-      // control_mesh_bytes: bytes; 0 (best), unbounded (worst)
-      {"control_mesh_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       footprint(&techniques::DataFootprint::control_mesh_bytes)},
-      // patch_data_bytes: bytes; 0 (best), unbounded (worst)
-      {"patch_data_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       footprint(&techniques::DataFootprint::patch_data_bytes)},
-      // stencil_bytes: bytes; 0 (best), unbounded (worst)
-      {"stencil_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       footprint(&techniques::DataFootprint::stencil_bytes)},
-      // topology_combinations: count; 1 (best) when every patch shares one weight table, 0 without
-      //   classes, up to patches (worst)
-      {"topology_combinations", results::Unit::kCount, D::kLowerIsBetter,
-       footprint(&techniques::DataFootprint::topology_combinations)},
-      // patches: count; context
-      {"patches", results::Unit::kCount, D::kNone, &R::patches},
-      // displacement_bytes: bytes; 0 (best), unbounded (worst); a 16-bit scalar map sized for the
-      //   level
-      {"displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       field(&MemoryFigures::displacement_bytes)},
-      // technique_with_displacement_bytes: bytes; 0 (best), unbounded (worst)
-      {"technique_with_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       field(&MemoryFigures::technique_with_displacement_bytes)},
-      // plain_over_technique: ratio; above 1 the technique is smaller (better, unbounded), towards
-      //   0 (worst)
-      {"plain_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
-       field(&MemoryFigures::plain_over_technique)},
-      // vector_displacement_bytes: bytes; 0 (best), unbounded (worst); 3 x 16 bits per texel
-      {"vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       field(&MemoryFigures::vector_displacement_bytes)},
-      // technique_with_vector_displacement_bytes: bytes; 0 (best), unbounded (worst)
-      {"technique_with_vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       field(&MemoryFigures::technique_with_vector_displacement_bytes)},
-      // plain_over_technique_vector: ratio; above 1 the technique is smaller (better, unbounded),
-      //   towards 0 (worst)
-      {"plain_over_technique_vector", results::Unit::kRatio, D::kHigherIsBetter,
-       field(&MemoryFigures::plain_over_technique_vector)},
-      // compressed_vertex_bytes: bytes; context: the meshoptimizer-compressed plain mesh's vertices
-      {"compressed_vertex_bytes", results::Unit::kBytes, D::kNone,
-       [](const R& r) -> std::optional<double> {
-         if (!r.compressed) return std::nullopt;
-         return double(r.compressed->vertex_bytes);
-       }},
-      // compressed_index_bytes: bytes; context
-      {"compressed_index_bytes", results::Unit::kBytes, D::kNone,
-       [](const R& r) -> std::optional<double> {
-         if (!r.compressed) return std::nullopt;
-         return double(r.compressed->index_bytes);
-       }},
-      // compressed_bytes: bytes; context
-      {"compressed_bytes", results::Unit::kBytes, D::kNone,
-       [](const R& r) -> std::optional<double> {
-         if (!r.compressed) return std::nullopt;
-         return double(r.compressed->bytes());
-       }},
-      // compressed_over_technique: ratio; above 1 the technique is smaller (better, unbounded),
-      //   towards 0 (worst)
-      {"compressed_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
-       [](const R& r) -> std::optional<double> {
-         if (!r.compressed) return std::nullopt;
-         return double(r.compressed->bytes()) /
-                double(r.memory.technique_with_displacement_bytes);
-       }},
-      // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
-      // map_file_bytes: bytes; 0 (best), unbounded (worst); the map as an OpenEXR file
-      {"map_file_bytes", results::Unit::kBytes, D::kLowerIsBetter,
-       [](const R& r) -> std::optional<double> {
-         if (!r.map_file_bytes) return std::nullopt;
-         return double(*r.map_file_bytes);
-       }},
-  }, transientFields()};
+  static const MetricTable<R> kTable{
+      {
+          // plain_vertices: count; context: the welded plain mesh's vertices at the level
+          {"plain_vertices", results::Unit::kCount, D::kNone,
+           field(&MemoryFigures::plain_vertices)},
+          // plain_triangles: count; context
+          {"plain_triangles", results::Unit::kCount, D::kNone,
+           field(&MemoryFigures::plain_triangles)},
+          // plain_bytes: bytes; context: the plain mesh (32 B vertices, 32-bit indices)
+          {"plain_bytes", results::Unit::kBytes, D::kNone, field(&MemoryFigures::plain_bytes)},
+          // control_mesh_bytes: bytes; 0 (best), unbounded (worst)
+          {"control_mesh_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           footprint(&techniques::DataFootprint::control_mesh_bytes)},
+          // patch_data_bytes: bytes; 0 (best), unbounded (worst)
+          {"patch_data_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           footprint(&techniques::DataFootprint::patch_data_bytes)},
+          // stencil_bytes: bytes; 0 (best), unbounded (worst)
+          {"stencil_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           footprint(&techniques::DataFootprint::stencil_bytes)},
+          // topology_combinations: count; 1 (best) when every patch shares one weight table, 0
+          // without
+          //   classes, up to patches (worst)
+          {"topology_combinations", results::Unit::kCount, D::kLowerIsBetter,
+           footprint(&techniques::DataFootprint::topology_combinations)},
+          // patches: count; context
+          {"patches", results::Unit::kCount, D::kNone, &R::patches},
+          // displacement_bytes: bytes; 0 (best), unbounded (worst); a 16-bit scalar map sized for
+          // the
+          //   level
+          {"displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           field(&MemoryFigures::displacement_bytes)},
+          // technique_with_displacement_bytes: bytes; 0 (best), unbounded (worst)
+          {"technique_with_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           field(&MemoryFigures::technique_with_displacement_bytes)},
+          // plain_over_technique: ratio; above 1 the technique is smaller (better, unbounded),
+          // towards
+          //   0 (worst)
+          {"plain_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
+           field(&MemoryFigures::plain_over_technique)},
+          // vector_displacement_bytes: bytes; 0 (best), unbounded (worst); 3 x 16 bits per texel
+          {"vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           field(&MemoryFigures::vector_displacement_bytes)},
+          // technique_with_vector_displacement_bytes: bytes; 0 (best), unbounded (worst)
+          {"technique_with_vector_displacement_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           field(&MemoryFigures::technique_with_vector_displacement_bytes)},
+          // plain_over_technique_vector: ratio; above 1 the technique is smaller (better,
+          // unbounded),
+          //   towards 0 (worst)
+          {"plain_over_technique_vector", results::Unit::kRatio, D::kHigherIsBetter,
+           field(&MemoryFigures::plain_over_technique_vector)},
+          // compressed_vertex_bytes: bytes; context: the meshoptimizer-compressed plain mesh's
+          // vertices
+          {"compressed_vertex_bytes", results::Unit::kBytes, D::kNone,
+           [](const R& r) -> std::optional<double> {
+             if (!r.compressed) return std::nullopt;
+             return double(r.compressed->vertex_bytes);
+           }},
+          // compressed_index_bytes: bytes; context
+          {"compressed_index_bytes", results::Unit::kBytes, D::kNone,
+           [](const R& r) -> std::optional<double> {
+             if (!r.compressed) return std::nullopt;
+             return double(r.compressed->index_bytes);
+           }},
+          // compressed_bytes: bytes; context
+          {"compressed_bytes", results::Unit::kBytes, D::kNone,
+           [](const R& r) -> std::optional<double> {
+             if (!r.compressed) return std::nullopt;
+             return double(r.compressed->bytes());
+           }},
+          // compressed_over_technique: ratio; above 1 the technique is smaller (better, unbounded),
+          //   towards 0 (worst)
+          {"compressed_over_technique", results::Unit::kRatio, D::kHigherIsBetter,
+           [](const R& r) -> std::optional<double> {
+             if (!r.compressed) return std::nullopt;
+             return double(r.compressed->bytes()) /
+                    double(r.memory.technique_with_displacement_bytes);
+           }},
+          // Displaced surfaces only: the map as a file (OpenEXR, ZIP), beside its GPU bytes.
+          // map_file_bytes: bytes; 0 (best), unbounded (worst); the map as an OpenEXR file
+          {"map_file_bytes", results::Unit::kBytes, D::kLowerIsBetter,
+           [](const R& r) -> std::optional<double> {
+             if (!r.map_file_bytes) return std::nullopt;
+             return double(*r.map_file_bytes);
+           }},
+      },
+      transientFields()};
   return kTable;
 }
 
@@ -271,8 +280,8 @@ class MemoryMeasure final : public Measure {
     const std::string compute_skip =
         computeSkipReason(*input.patches, input.displacement != nullptr);
     for (uint32_t level : kMemoryLevels) {
-      MemoryRowFigures figures{measureMemory(*input.patches, level),
-                               input.patches->patchCount(), std::nullopt};
+      MemoryRowFigures figures{measureMemory(*input.patches, level), input.patches->patchCount(),
+                               std::nullopt};
       if (input.displacement) {
         figures.map_file_bytes = input.displacement->input->file_bytes;
       } else if (!input.decision_figures_only &&
@@ -280,12 +289,11 @@ class MemoryMeasure final : public Measure {
         figures.compressed = compressedSize(*input.patches, level);
         if (figures.compressed->sampled_chunks < figures.compressed->chunks &&
             level == kMemoryLevels.front()) {
-          result.notes.push_back(
-              "compressed_* figures sampled: " +
-              std::to_string(figures.compressed->sampled_chunks) + " of " +
-              std::to_string(figures.compressed->chunks) + " chunks of " +
-              std::to_string(kCompressChunkPatches) +
-              " patches built and compressed, bytes scaled by patches");
+          result.notes.push_back("compressed_* figures sampled: " +
+                                 std::to_string(figures.compressed->sampled_chunks) + " of " +
+                                 std::to_string(figures.compressed->chunks) + " chunks of " +
+                                 std::to_string(kCompressChunkPatches) +
+                                 " patches built and compressed, bytes scaled by patches");
         }
       }
       results::MetricRow row;
@@ -320,7 +328,8 @@ class MemoryMeasure final : public Measure {
     const std::vector<gpu::GpuPatchProgram> programs = patches.gpuPrograms();
     if (programs.empty()) return "the technique has no GPU program";
     for (const gpu::GpuPatchProgram& program : programs) {
-      if (program.compute_shader.empty()) return program.evaluation_shader + " has no compute shader";
+      if (program.compute_shader.empty())
+        return program.evaluation_shader + " has no compute shader";
     }
     return "";
   }

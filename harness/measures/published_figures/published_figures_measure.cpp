@@ -3,7 +3,8 @@
 //  - NVIDIA's talk (D3D11 hull/domain shaders): bicubic Bézier position evaluation
 //    takes 60 (asymmetric), 105 (symmetric, no FMA), 75 (symmetric with FMA) and 69
 //    (symmetric on edges only) instructions.
-//  - the DirectX SDK SubD10 sample (D3D10, Loop & Schaefer 2008's ACC): evaluating a regular ACC patch takes 16 loads and
+//  - the DirectX SDK SubD10 sample (D3D10, Loop & Schaefer 2008's ACC): evaluating a regular ACC
+//  patch takes 16 loads and
 //    about 73 ALU operations; an extraordinary one up to 24 loads and about 120 ALU.
 // Ours are static SPIR-V counts after spirv-opt -O of the technique's own shaders
 // (harness/measures/common/instruction_counts/instructions.h), specialised for each order.
@@ -93,13 +94,15 @@ class PublishedFiguresMeasure final : public Measure {
          "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
          "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
          "published_loads 0: not published",
-         "NVIDIA's displacement subdivision surfaces talk counts D3D11 domain-shader instructions of the position evaluation alone; "
+         "NVIDIA's displacement subdivision surfaces talk counts D3D11 domain-shader instructions "
+         "of the position evaluation alone; "
          "ours count shaders/<technique>/bezier_position.tese (the same evaluation, nothing "
          "else). Compare increments over asymmetric: every order adds the same work to the "
          "shared part (the B0..B3 bases of u and v and the first row products), so the "
          "talk's increments (+45, +15, +9) are the test of the reproduction; the absolute "
          "counts differ by the basis cost, which a D3D listing packs into float2 ops",
-         "the DirectX SDK SubD10 sample counts its domain shader: 16 loads / ~73 ALU for a regular patch "
+         "the DirectX SDK SubD10 sample counts its domain shader: 16 loads / ~73 ALU for a regular "
+         "patch "
          "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
          "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
          "(the no_tangent variant fills the tangent patches with the derivative patches), so "

@@ -21,12 +21,12 @@ struct SimCostSample {
 };
 
 struct SimCostFigures {
-  std::vector<SimCostSample> samples;  // evenly spaced, the last at the end of the scenario
-  uint64_t steps = 0;                  // CPU steps run (the scenario's step count)
-  uint64_t peak_elements = 0;          // over every CPU step; best: what the scenario needs
+  std::vector<SimCostSample> samples;         // evenly spaced, the last at the end of the scenario
+  uint64_t steps = 0;                         // CPU steps run (the scenario's step count)
+  uint64_t peak_elements = 0;                 // over every CPU step; best: what the scenario needs
   techniques::SimulationFootprint footprint;  // at the start (buffers are sized for the whole run)
-  uint64_t compute_passes = 0;         // passes of one step, over its programs
-  uint64_t dispatches_per_step = 0;    // sum over passes of repeats_per_step; 0: no GPU path
+  uint64_t compute_passes = 0;                // passes of one step, over its programs
+  uint64_t dispatches_per_step = 0;           // sum over passes of repeats_per_step; 0: no GPU path
   // The device run (absent without a device or a GPU path): steps run in one submission,
   // and the bytes of every buffer the runner allocated.
   std::optional<uint64_t> gpu_steps, gpu_resident_bytes;

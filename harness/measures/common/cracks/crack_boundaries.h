@@ -64,10 +64,10 @@ std::shared_ptr<const BoundaryTessellation> boundaryTessellation(techniques::Pat
 // in one flat array (positions are stored per boundary point: [at(patch, k)]).
 struct PatchBoundaries {
   std::vector<std::shared_ptr<const BoundaryTessellation>> tessellations;  // distinct ones
-  std::vector<uint32_t> tessellation;  // per patch: index into tessellations
+  std::vector<uint32_t> tessellation;           // per patch: index into tessellations
   std::vector<techniques::PatchDomain> domain;  // per patch
-  std::vector<size_t> offset;          // per patch, then the total
-  size_t culled_patches = 0;           // patches whose levels cull them
+  std::vector<size_t> offset;                   // per patch, then the total
+  size_t culled_patches = 0;                    // patches whose levels cull them
 
   const BoundaryTessellation& of(size_t patch) const { return *tessellations[tessellation[patch]]; }
   size_t at(size_t patch, size_t k) const { return offset[patch] + k; }

@@ -88,7 +88,8 @@ class ProgramCapture {
     std::vector<uint64_t> chunk_cost(boundary_points);
     uint64_t chunk_budget = options_.max_vertices_per_call;
     if (options_.compute_path) {
-      for (uint32_t i = 0; i < program.patch_count; ++i) chunk_cost[i] = computeBound(levels[i], spacing_);
+      for (uint32_t i = 0; i < program.patch_count; ++i)
+        chunk_cost[i] = computeBound(levels[i], spacing_);
       chunk_budget = kComputeChunkBytes;
     }
     for (uint32_t first = 0; first < program.patch_count;) {

@@ -1,10 +1,10 @@
 #include "harness/measures/common/instruction_counts/instructions.h"
 
-#include <spirv-tools/optimizer.hpp>
 #include <map>
 #include <mutex>
-#include <tuple>
+#include <spirv-tools/optimizer.hpp>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 
 #include "shaders/embedded_shaders.h"
