@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "core/mesh/input_error.h"
+#include "harness/measures/complete_declarations.h"
 #include "harness/measures/measure.h"
 #include "harness/report/advice.h"
 #include "harness/report/decision.h"
@@ -101,6 +102,7 @@ results::Results readRun(const AdviseArgs& args, std::string* asset_name) {
   techniquesNamed(args.techniques);  // an unknown id is bad input here too
   results::requireFinishedRunFolder(args.run_dir);
   results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  measures::completeDeclarations(&results);
   *asset_name = assetInRun(results, args.asset);
   const bool named =
       std::any_of(results.records.begin(), results.records.end(),
@@ -156,7 +158,7 @@ std::string adviceJson(const report::Advice& advice, const report::AdviceConstra
         {"max_instructions", optionalJson(c.max_instructions)}}},
       {"units", {{"error", "rel_diag"}, {"instructions", "count"}, {"memory_ratio", "ratio"}}},
       {"ranking_rule", report::kAdviceRankingRule},
-      {"figures", report::kAdviceFigureUnits},
+      {"figures", advice.figure_units},
       {"candidates", candidates},
       {"unsupported", unsupported},
       {"first_choice", advice.anyPasses()

@@ -9,6 +9,7 @@
 #include "core/mesh/input_error.h"
 #include "harness/cli/format_option.h"
 #include "harness/cli/html_assets.h"
+#include "harness/measures/complete_declarations.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
@@ -28,7 +29,8 @@ CLI::App* addReportCommand(CLI::App& app, ReportArgs& args) {
 
 int runReport(const ReportArgs& args) {
   results::requireFinishedRunFolder(args.run_dir);
-  const results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  measures::completeDeclarations(&results);
   if (args.format == "markdown") {
     fmt::print("{}", report::renderMarkdown(results));
   } else if (args.format == "html") {

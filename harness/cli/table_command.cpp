@@ -8,6 +8,7 @@
 
 #include "core/mesh/input_error.h"
 #include "harness/cli/format_option.h"
+#include "harness/measures/complete_declarations.h"
 #include "harness/report/summary.h"
 #include "harness/report/table.h"
 #include "harness/results/results_json.h"
@@ -65,7 +66,8 @@ int runTable(const TableArgs& args) {
     throw mesh::InputError("--measure", "", "a measure is required (or --published)");
   }
   results::requireFinishedRunFolder(args.run_dir);
-  const results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  results::Results results = results::readResultsFile(args.run_dir + "/results.json");
+  measures::completeDeclarations(&results);
   const std::vector<std::string> ids = report::measureIds(results);
   if (!args.measure.empty() && std::find(ids.begin(), ids.end(), args.measure) == ids.end()) {
     throw mesh::InputError(args.run_dir + "/results.json", "--measure " + args.measure,
@@ -75,7 +77,7 @@ int runTable(const TableArgs& args) {
   if (args.published) {
     std::vector<std::string> measures;
     if (!args.measure.empty()) {
-      if (!report::hasPublishedTable(args.measure)) {
+      if (!report::hasPublishedTable(results, args.measure)) {
         throw mesh::InputError(
             "--measure", args.measure,
             "no published table for this measure (known: memory, published_figures)");

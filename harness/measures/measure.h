@@ -22,28 +22,31 @@ namespace tb::measures {
 
 // What a measure is and what it emits, declared once: reports and compare read this
 // (through the MeasureDeclaration each run writes to results.json), never the measure's id.
+// A measure's declaration, written with designated initialisers:
+// MeasureInfo{.id = "memory", .title = ..., .metrics = table.specs(), .headline = {...}}.
 struct MeasureInfo {
-  std::string id;           // "memory"
-  std::string title;        // "Memory footprint against plain triangle meshes"
-  std::string description;  // one line: what is measured, in which units
+  std::string id = {};           // "memory"
+  std::string title = {};        // "Memory footprint against plain triangle meshes"
+  std::string description = {};  // one line: what is measured, in which units
   // Every metric a row may emit, in emission order (a MetricTable's specs()).
-  std::vector<results::MetricSpec> metrics;
+  std::vector<results::MetricSpec> metrics = {};
   // Names from `metrics` that a summary shows first, most important first; each has a
   // direction (a headline ranks techniques), so never a Direction::kNone context figure.
-  std::vector<std::string> headline;
-  // Notes true of every record (definitions, method), shown once under the measure;
-  // a note about one record goes in its MeasureResult::notes.
-  std::vector<std::string> notes;
+  std::vector<std::string> headline = {};
+  // Notes true of every record (what is measured and how, a few sentences linking
+  // docs/derivations/); a note about one record goes in its MeasureResult::notes.
+  std::vector<std::string> notes = {};
   // The rows a summary aggregates (MeasureDeclaration::summary_scope); empty: every ok row.
   results::RowScope summary_scope = {};
   // The charts report.html draws of this measure's rows (MeasureDeclaration::plots).
   std::vector<results::PlotSpec> plots = {};
-  // Rows made to show a failure (MeasureDeclaration::control_rows): never recommended, marked
-  // as controls in reports ({{"policy", "*_order_dependent"}}: the crack-unsafe policies).
+  // Rows made to show a failure (MeasureDeclaration::control_rows): never recommended.
   std::vector<results::RowScope> control_rows = {};
-  // The side-by-side tables and bar charts opening the measure's report sections
-  // (MeasureDeclaration::comparisons).
+  // The side-by-side tables and bar charts opening its report sections.
   std::vector<results::ComparisonSpec> comparisons = {};
+  // The figures the decision, `advise`, the answers and the tables may read of its rows
+  // (results::DecisionInput): harness/report finds them by role, never by name.
+  std::vector<results::DecisionInput> decision_inputs = {};
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure

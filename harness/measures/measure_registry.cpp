@@ -7,8 +7,17 @@
 namespace tb::measures {
 
 results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
-  return {info.id,    info.title,         info.description, info.metrics,      info.headline,
-          info.notes, info.summary_scope, info.plots,       info.control_rows, info.comparisons};
+  return {.measure = info.id,
+          .title = info.title,
+          .description = info.description,
+          .metrics = info.metrics,
+          .headline = info.headline,
+          .notes = info.notes,
+          .summary_scope = info.summary_scope,
+          .plots = info.plots,
+          .control_rows = info.control_rows,
+          .comparisons = info.comparisons,
+          .decision_inputs = info.decision_inputs};
 }
 
 const view::CameraPath& requireCameraPath(const MeasureInput& input) {

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "harness/report/decision.h"
+#include "harness/report/decision_inputs.h"
 #include "harness/report/summary.h"
 
 namespace tb::report {
@@ -20,30 +21,42 @@ const char* const kAdviceRankingRule =
     "missing figure sorts after every present one); excluded candidates follow in the same "
     "order, each with every constraint it fails and by how much. A candidate lacking the figure "
     "a constraint needs fails that constraint. Watertightness is a constraint unless "
-    "--allow-cracks: every cracks row (CPU and device backends, every spacing and level) must "
-    "have points_not_equal = 0 and unpaired_points = 0; skipped device rows leave it "
-    "unverified, which fails it. Controls (variants made to show a failure) are never a "
-    "choice. Techniques that refuse the asset are listed last with their reason.";
+    "--allow-cracks: every row of the watertightness figure (CPU and device backends, every "
+    "spacing and level) must have no point that differs and none unpaired; skipped device rows "
+    "leave it unverified, which fails it. Controls (variants made to show a failure) are never "
+    "a choice. Techniques that refuse the asset are listed last with their reason.";
 
-const char* const kAdviceFigureUnits =
-    "each figure is the worst over its measure's summary scope: error = hausdorff (two-sided "
-    "Hausdorff distance to the limit surface, rel_diag: fraction of the bounding-box diagonal); "
-    "instructions = total SPIR-V instructions of the domain (.tese) stage after spirv-opt -O, "
-    "per vector instruction (count); memory ratio = technique bytes with a 16-bit displacement "
-    "map over the plain triangle mesh's bytes, 1 / plain_over_technique, largest over the "
-    "levels (ratio); watertight = yes when every cracks row is bitwise watertight";
+std::string adviceFigureUnits(const results::Results& results) {
+  using results::DecisionRole;
+  std::string text = "each figure is the worst over its measure's summary scope:";
+  const auto add = [&](DecisionRole role, const char* what) {
+    const auto input = inputFor(results, role);
+    if (input)
+      text += fmt::format(" {} = {} ({}){};", what, sourceOf(*input), input->input->label,
+                          role == DecisionRole::kAdviceMemory ? ", its reciprocal" : "");
+  };
+  add(DecisionRole::kAdviceError, "error");
+  add(DecisionRole::kAdviceCost, "instructions");
+  add(DecisionRole::kAdviceMemory, "memory ratio");
+  add(DecisionRole::kAdviceCracks, "watertight");
+  text.back() = '.';
+  return text;
+}
 
 namespace {
 
-constexpr const char* kErrorMeasure = "error";
-constexpr const char* kErrorMetric = "hausdorff";
-constexpr const char* kMemoryMeasure = "memory";
-constexpr const char* kMemoryMetric = "plain_over_technique";
-constexpr const char* kInstructionsMeasure = "instructions";
-constexpr const char* kInstructionsMetric = "total";
-constexpr const char* kCracksMeasure = "cracks";
-constexpr const char* kCracksNotEqual = "points_not_equal";
-constexpr const char* kCracksUnpaired = "unpaired_points";
+// The measure and metrics of an advice input; an empty measure when the run declares none.
+struct AdviceInput {
+  std::string measure;
+  std::vector<std::string> metrics;
+  std::string metric(size_t i) const { return i < metrics.size() ? metrics[i] : std::string(); }
+};
+
+AdviceInput adviceInput(const results::Results& results, results::DecisionRole role) {
+  const auto input = inputFor(results, role);
+  if (!input) return {};
+  return {input->measure(), input->input->metrics};
+}
 
 using LineKey = std::pair<std::string, std::string>;  // technique, variant
 
@@ -90,35 +103,38 @@ std::optional<double> worstFigure(const results::Results& results, const Summary
   return worstOf(*stats, directionOf(results, measure, metric));
 }
 
-void readWatertightness(const SummaryLine* line, CandidateFigures* figures) {
+void readWatertightness(const AdviceInput& cracks, const SummaryLine* line,
+                        CandidateFigures* figures) {
   if (line == nullptr) {
     figures->watertight = Watertightness::kNotMeasured;
-    figures->watertight_detail = "no watertightness figure: cracks measure not run";
+    figures->watertight_detail =
+        "no watertightness figure: " + (cracks.measure.empty() ? "no" : cracks.measure) +
+        " measure not run";
     return;
   }
-  const MetricStats* not_equal = line->find(kCracksNotEqual);
-  const MetricStats* unpaired = line->find(kCracksUnpaired);
+  const MetricStats* not_equal = line->find(cracks.metric(0));
+  const MetricStats* unpaired = line->find(cracks.metric(1));
   figures->points_not_equal = not_equal != nullptr ? not_equal->max : 0;
   figures->unpaired_points = unpaired != nullptr ? unpaired->max : 0;
   if (figures->points_not_equal > 0 || figures->unpaired_points > 0) {
     figures->watertight = Watertightness::kCracked;
     figures->watertight_detail =
-        fmt::format("cracks: up to {} points not equal and {} unpaired in one cracks row",
+        fmt::format("{}: up to {} points not equal and {} unpaired in one {} row", cracks.measure,
                     formatAdviceNumber(figures->points_not_equal),
-                    formatAdviceNumber(figures->unpaired_points));
+                    formatAdviceNumber(figures->unpaired_points), cracks.measure);
     return;
   }
   if (line->skipped_rows > 0 || line->failed_rows > 0) {
     figures->watertight = Watertightness::kUnverified;
     figures->watertight_detail =
-        fmt::format("{} cracks rows {} ({}): watertightness unverified on the device",
-                    line->skipped_rows + line->failed_rows,
+        fmt::format("{} {} rows {} ({}): watertightness unverified on the device",
+                    line->skipped_rows + line->failed_rows, cracks.measure,
                     line->failed_rows > 0 ? "skipped or failed" : "skipped", line->first_reason);
     return;
   }
   if (line->ok_rows == 0 || not_equal == nullptr || unpaired == nullptr) {
     figures->watertight = Watertightness::kNotMeasured;
-    figures->watertight_detail = "no watertightness figure: no cracks rows";
+    figures->watertight_detail = "no watertightness figure: no " + cracks.measure + " rows";
     return;
   }
   figures->watertight = Watertightness::kWatertight;
@@ -251,10 +267,19 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
                       const AdviceConstraints& constraints) {
   Advice advice;
   advice.asset = asset;
-  const auto error = linesOf(results, kErrorMeasure, asset, {kErrorMetric});
-  const auto memory = linesOf(results, kMemoryMeasure, asset, {kMemoryMetric});
-  const auto instructions = linesOf(results, kInstructionsMeasure, asset, {kInstructionsMetric});
-  const auto cracks = linesOf(results, kCracksMeasure, asset, {kCracksNotEqual, kCracksUnpaired});
+  using results::DecisionRole;
+  const AdviceInput error_input = adviceInput(results, DecisionRole::kAdviceError);
+  const AdviceInput memory_input = adviceInput(results, DecisionRole::kAdviceMemory);
+  const AdviceInput cost_input = adviceInput(results, DecisionRole::kAdviceCost);
+  const AdviceInput cracks_input = adviceInput(results, DecisionRole::kAdviceCracks);
+  const auto lines = [&](const AdviceInput& input) {
+    return input.measure.empty() ? std::map<LineKey, SummaryLine>{}
+                                 : linesOf(results, input.measure, asset, input.metrics);
+  };
+  const auto error = lines(error_input);
+  const auto memory = lines(memory_input);
+  const auto instructions = lines(cost_input);
+  const auto cracks = lines(cracks_input);
 
   // The default variant of each technique is its first (summary.h: techniquesOf).
   std::map<std::string, std::string> default_variant;
@@ -283,11 +308,10 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
       error_line = findLine(error, {c.technique, default_it->second});
       f.error_from_default = error_line != nullptr;
     }
-    f.error =
-        worstFigure(results, error_line, "error", kErrorMeasure, kErrorMetric, &f.missing_error);
-    f.instructions =
-        worstFigure(results, findLine(instructions, key), "instructions", kInstructionsMeasure,
-                    kInstructionsMetric, &f.missing_instructions);
+    f.error = worstFigure(results, error_line, "error", error_input.measure, error_input.metric(0),
+                          &f.missing_error);
+    f.instructions = worstFigure(results, findLine(instructions, key), "instructions",
+                                 cost_input.measure, cost_input.metric(0), &f.missing_instructions);
     // memory runs only on variants whose patch data differ from the default's
     // (VariantPolicy::kWhenPatchDataDiffers): another variant has the default's bytes.
     const SummaryLine* memory_line = findLine(memory, key);
@@ -295,10 +319,11 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
       memory_line = findLine(memory, {c.technique, default_it->second});
       f.memory_from_default = memory_line != nullptr;
     }
-    const std::optional<double> plain_over = worstFigure(
-        results, memory_line, "memory", kMemoryMeasure, kMemoryMetric, &f.missing_memory);
+    const std::optional<double> plain_over =
+        worstFigure(results, memory_line, "memory", memory_input.measure, memory_input.metric(0),
+                    &f.missing_memory);
     if (plain_over && *plain_over > 0) f.memory_ratio = 1.0 / *plain_over;
-    readWatertightness(findLine(cracks, key), &f);
+    readWatertightness(cracks_input, findLine(cracks, key), &f);
     c.failures = failuresOf(f, constraints);
     if (isControl(results, c.technique, c.variant)) {
       c.failures.insert(c.failures.begin(), "a control: made to show a failure, never a choice");
@@ -312,6 +337,7 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
 
   const AssetDecision decision = decideAsset(results, asset);
   advice.recommendation = decision.recommended();
+  advice.figure_units = adviceFigureUnits(results);
   advice.recommendation_why = decision.why + " " + decision.runner_up;
   for (const results::Skip& skip : results.skipped) {
     if (skip.asset == asset && selected(constraints, skip.technique)) {
@@ -356,7 +382,7 @@ std::string renderAdviceMarkdown(const Advice& advice, const AdviceConstraints& 
   std::string out = fmt::format("# Advice for {}\n\n", advice.asset);
   out += fmt::format("- Constraints: {}\n", constraintsText(constraints));
   out += fmt::format("- Ranking rule: {}\n", kAdviceRankingRule);
-  out += fmt::format("- Figures: {}\n\n", kAdviceFigureUnits);
+  out += fmt::format("- Figures: {}\n\n", advice.figure_units);
   out +=
       "| rank | technique/variant | error (rel_diag) | instructions (count) | memory ratio "
       "(ratio) | watertight | verdict |\n|---:|---|---:|---:|---:|---|---|\n";

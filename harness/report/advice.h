@@ -25,7 +25,7 @@ struct AdviceConstraints {
 // The ranking rule, printed verbatim with every advice.
 extern const char* const kAdviceRankingRule;
 // What each figure is and its unit, printed with every advice.
-extern const char* const kAdviceFigureUnits;
+std::string adviceFigureUnits(const results::Results& results);
 
 enum class Watertightness {
   kNotMeasured,  // no cracks rows for the candidate
@@ -67,6 +67,7 @@ struct UnsupportedTechnique {
 struct Advice {
   std::string asset;
   std::vector<Candidate> ranked;  // by kAdviceRankingRule: passing first
+  std::string figure_units;       // adviceFigureUnits: what each figure is
   std::vector<UnsupportedTechnique> unsupported;
   // The report's recommendation for the asset (decision.h: default variants, kDecisionRule,
   // no constraints), its why and what the runner-up trades; empty without candidates.

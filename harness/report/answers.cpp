@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "harness/report/decision_inputs.h"
 #include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
@@ -15,8 +16,11 @@ namespace {
 
 using RowFn = std::function<void(const results::Record&, const results::MetricRow&)>;
 
-// Every ok row of `measure` in records of default, non-control variants.
-void forDefaultRows(const results::Results& results, const std::string& measure, const RowFn& fn) {
+// Every ok row the input reads in records of default, non-control variants.
+// Rows of every pipeline path: the answers are over the whole run.
+void forDefaultRows(const results::Results& results, const DeclaredInput& input, const RowFn& fn) {
+  results::DecisionInput every_path = *input.input;
+  every_path.rows_on_path = false;
   std::map<std::string, std::string> default_variant;
   for (const auto& t : techniquesOf(results)) {
     if (!t.variants.empty()) default_variant[t.technique] = t.variants.front();
@@ -25,13 +29,17 @@ void forDefaultRows(const results::Results& results, const std::string& measure,
     if (default_variant[record.technique] != record.variant ||
         isControl(results, record.technique, record.variant))
       continue;
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure != measure || m.status != results::MeasureStatus::kOk) continue;
-      for (const results::MetricRow& row : m.rows) {
-        if (row.status == results::MeasureStatus::kOk) fn(record, row);
-      }
+    const results::MeasureResult* m = resultOf(record, input);
+    if (m == nullptr || m->status != results::MeasureStatus::kOk) continue;
+    for (const results::MetricRow& row : m->rows) {
+      if (row.status == results::MeasureStatus::kOk && readsRow(every_path, row)) fn(record, row);
     }
   }
+}
+
+// "measure: metric, rows key = value" of the input, or "not declared" when the run has none.
+std::string sourceText(const std::optional<DeclaredInput>& input) {
+  return input ? sourceOf(*input) : "no measure of this run declares it";
 }
 
 std::string num(double value) { return formatAdviceNumber(value); }
@@ -67,45 +75,49 @@ Answer didAnythingCrack(const results::Results& results) {
   std::map<std::string, std::set<std::string>> cracked;  // who -> assets
   std::map<std::string, double> worst;
   size_t rows = 0;
-  forDefaultRows(results, "cracks", [&](const results::Record& r, const results::MetricRow& row) {
-    ++rows;
-    const double points = rowMetric(row, "points_not_equal").value_or(0) +
-                          rowMetric(row, "unpaired_points").value_or(0);
-    if (points <= 0) return;
-    const std::string who = r.technique + "/" + r.variant;
-    cracked[who].insert(r.asset);
-    worst[who] = std::max(worst[who], points);
-  });
+  const auto input = inputFor(results, results::DecisionRole::kCrackPoints);
+  if (input)
+    forDefaultRows(results, *input, [&](const results::Record& r, const results::MetricRow& row) {
+      ++rows;
+      const double points = rowFigure(*input->input, row).value_or(0);
+      if (points <= 0) return;
+      const std::string who = r.technique + "/" + r.variant;
+      cracked[who].insert(r.asset);
+      worst[who] = std::max(worst[who], points);
+    });
   std::vector<std::string> parts;
   for (const auto& [who, assets] : cracked) {
     parts.push_back(
         fmt::format("{} on {} assets (up to {} points)", who, assets.size(), num(worst[who])));
   }
-  a.answer =
-      rows == 0 ? "not measured in this run."
-      : parts.empty()
-          ? fmt::format("no: every default variant is watertight on its {} cracks rows.", rows)
-          : "yes: " + joined(parts) +
-                " (where: \"Where the default "
-                "variants crack\" below).";
-  a.source =
-      "cracks: points_not_equal + unpaired_points > 0 in some row (CPU float and device "
-      "capture, every level), default variants; controls crack by design and are left out";
+  a.answer = rows == 0 ? "not measured in this run."
+             : parts.empty()
+                 ? fmt::format("no: every default variant is watertight on its {} {} rows.", rows,
+                               input->measure())
+                 : "yes: " + joined(parts) +
+                       " (where: \"Where the default "
+                       "variants crack\" below).";
+  a.source = sourceText(input) +
+             " > 0 in some row (CPU float and device capture, every level), default variants; "
+             "controls crack by design and are left out";
   return a;
 }
 
 Answer accMemory(const results::Results& results) {
-  Answer a{fmt::format("What does ACC save against triangles at level {}?", kDecisionMemoryLevel),
-           "", ""};
+  const auto input = inputFor(results, results::DecisionRole::kMemorySaving);
+  const std::string level = input ? input->input->where.count("level") > 0
+                                        ? input->input->where.at("level")
+                                        : std::string("every level")
+                                  : std::string("?");
+  Answer a{fmt::format("What does ACC save against triangles at level {}?", level), "", ""};
   std::vector<double> ratios;
-  forDefaultRows(results, "memory", [&](const results::Record& r, const results::MetricRow& row) {
-    if (r.technique != "acc" || rowKey(row, "level") != std::to_string(kDecisionMemoryLevel))
-      return;
-    if (r.parameters.count("displacement") > 0) return;
-    if (const auto ratio = rowMetric(row, "plain_over_technique")) ratios.push_back(*ratio);
-  });
+  if (input)
+    forDefaultRows(results, *input, [&](const results::Record& r, const results::MetricRow& row) {
+      if (r.technique != "acc" || r.parameters.count("displacement") > 0) return;
+      if (const auto ratio = rowFigure(*input->input, row)) ratios.push_back(*ratio);
+    });
   if (ratios.empty()) {
-    a.answer = "not measured in this run (no acc memory rows).";
+    a.answer = "not measured in this run (no acc " + (input ? input->measure() : "") + " rows).";
   } else {
     const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
     a.answer = fmt::format(
@@ -113,8 +125,7 @@ Answer accMemory(const results::Results& results) {
         "over {} assets, {} to {}x).",
         num(medianValue(ratios)), ratios.size(), num(*lo), num(*hi));
   }
-  a.source = fmt::format("memory: plain_over_technique, rows level = {}, acc's default variant",
-                         kDecisionMemoryLevel);
+  a.source = sourceText(input) + ", acc's default variant";
   return a;
 }
 
@@ -123,14 +134,15 @@ Answer whichCulling(const results::Results& results) {
   const std::vector<std::string> conservative = conservativeCullPolicies(results);
   std::map<std::string, std::vector<double>> efficiency;
   std::map<std::string, double> false_culls;
-  forDefaultRows(results, "culling", [&](const results::Record&, const results::MetricRow& row) {
-    const std::string policy = rowKey(row, "policy");
-    if (rowKey(row, "summary") != "path" ||
-        std::find(conservative.begin(), conservative.end(), policy) == conservative.end())
-      return;
-    if (const auto e = rowMetric(row, "cull_efficiency")) efficiency[policy].push_back(*e);
-    false_culls[policy] += rowMetric(row, "total_false_culls").value_or(0);
-  });
+  const auto input = inputFor(results, results::DecisionRole::kCullEfficiency);
+  const auto false_input = inputFor(results, results::DecisionRole::kFalseCulls);
+  if (input)
+    forDefaultRows(results, *input, [&](const results::Record&, const results::MetricRow& row) {
+      const std::string policy = rowKey(row, "policy");
+      if (std::find(conservative.begin(), conservative.end(), policy) == conservative.end()) return;
+      if (const auto e = rowFigure(*input->input, row)) efficiency[policy].push_back(*e);
+      if (false_input) false_culls[policy] += rowFigure(*false_input->input, row).value_or(0);
+    });
   std::string best;
   for (const auto& [policy, values] : efficiency) {
     if (best.empty() || medianValue(values) > medianValue(efficiency[best])) best = policy;
@@ -148,24 +160,21 @@ Answer whichCulling(const results::Results& results) {
         best, num(medianValue(efficiency[best])), efficiency[best].size(), num(false_culls[best]),
         joined(others));
   }
-  a.source =
-      "culling: cull_efficiency and total_false_culls, summary rows (summary = path), "
-      "default variants, conservative policies only (" +
-      joined(conservative) + ")";
+  a.source = sourceText(input) + " and " + sourceText(false_input) +
+             ", default variants, conservative policies only (" + joined(conservative) + ")";
   return a;
 }
 
 Answer factorPolicy(const results::Results& results) {
   Answer a{"Does any factor policy beat uniform?", "", ""};
   std::map<std::string, std::vector<double>> ratios;
-  const results::MeasureDeclaration* declaration = results.findMeasure("adaptivity");
-  forDefaultRows(results, "adaptivity", [&](const results::Record&, const results::MetricRow& row) {
-    if (rowKey(row, "summary") != "max_error_1px") return;
-    if (declaration != nullptr && results::isControlRow(*declaration, row.keys))
-      return;  // made to fail
-    if (const auto r = rowMetric(row, "triangle_ratio_vs_uniform"))
-      ratios[rowKey(row, "policy")].push_back(*r);
-  });
+  const auto input = inputFor(results, results::DecisionRole::kTriangleRatio);
+  if (input)
+    forDefaultRows(results, *input, [&](const results::Record&, const results::MetricRow& row) {
+      if (results::isControlRow(*input->declaration, row.keys)) return;  // made to fail
+      if (const auto r = rowFigure(*input->input, row))
+        ratios[rowKey(row, input->input->chosen_key)].push_back(*r);
+    });
   std::vector<std::string> parts;
   for (const auto& [policy, values] : ratios) {
     const size_t below =
@@ -177,23 +186,20 @@ Answer factorPolicy(const results::Results& results) {
         medianValue(values) < 1 ? "beats uniform" : "does not beat it", below, values.size()));
   }
   a.answer = parts.empty() ? "not measured in this run." : joined(parts) + ".";
-  a.source =
-      "adaptivity: triangle_ratio_vs_uniform, summary rows (summary = max_error_1px), "
-      "default variants; control policies (made to fail) left out";
+  a.source = sourceText(input) + ", default variants; control policies (made to fail) left out";
   return a;
 }
 
 Answer solver(const results::Results& results) {
   Answer a{"Is Gauss-Seidel better than Jacobi at 8 dispatches per frame?", "", ""};
-  const std::string metric = "residual_at_8_dispatches_no_goal_springs";
   std::map<std::string, std::vector<std::pair<double, std::string>>> by_scenario;
+  const auto input = inputFor(results, results::DecisionRole::kSolverResidual);
   for (const results::Record& record : results.records) {
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure != "convergence" || m.status != results::MeasureStatus::kOk) continue;
-      for (const results::MetricRow& row : m.rows) {
-        if (const auto r = rowMetric(row, metric))
-          by_scenario[record.asset].push_back({*r, record.variant});
-      }
+    const results::MeasureResult* m = input ? resultOf(record, *input) : nullptr;
+    if (m == nullptr || m->status != results::MeasureStatus::kOk) continue;
+    for (const results::MetricRow& row : m->rows) {
+      if (const auto r = rowFigure(*input->input, row))
+        by_scenario[record.asset].push_back({*r, record.variant});
     }
   }
   std::vector<std::string> parts;
@@ -214,18 +220,17 @@ Answer solver(const results::Results& results) {
                                  : jacobi_wins == 0                ? "yes"
                                                                    : "not always",
                                  jacobi_wins, by_scenario.size(), joined(parts));
-  a.source = "convergence: " + metric +
-             " (residual after 8 compute dispatches, lower better), "
-             "summary rows";
+  a.source = sourceText(input) + " (" + (input ? input->input->label : "") + ", lower better)";
   return a;
 }
 
 }  // namespace
 
 std::vector<std::string> conservativeCullPolicies(const results::Results& results) {
-  const results::MeasureDeclaration* culling = results.findMeasure("culling");
+  const auto input = inputFor(results, results::DecisionRole::kCullEfficiency);
   std::vector<std::string> conservative;
-  if (culling == nullptr) return conservative;
+  if (!input) return conservative;
+  const results::MeasureDeclaration* culling = input->declaration;
   for (const std::string& note : culling->notes) {
     if (note.rfind("policies", 0) != 0) continue;
     // "NAME = description; [not ]conservative; NEXT = ...": each policy's segment runs to the
@@ -250,16 +255,23 @@ std::vector<std::string> conservativeCullPolicies(const results::Results& result
 
 std::function<bool(const results::MetricRow&)> summaryRowsOf(const results::Results& results,
                                                              const std::string& measure) {
-  if (measure != "culling") return {};
-  return [keep = conservativeCullPolicies(results)](const results::MetricRow& row) {
-    return rowKey(row, "summary") == "path" &&
+  const auto input = inputFor(results, results::DecisionRole::kCullEfficiency);
+  if (!input || input->measure() != measure) return {};
+  return [keep = conservativeCullPolicies(results),
+          scope = input->input->where](const results::MetricRow& row) {
+    return results::rowInScope(scope, row.keys) &&
            std::find(keep.begin(), keep.end(), rowKey(row, "policy")) != keep.end();
   };
 }
 
 std::string summaryRowsNote(const results::Results& results, const std::string& measure) {
-  if (measure != "culling") return "";
-  return "culling: the summary rows (summary = path) of its conservative policies only (" +
+  const auto input = inputFor(results, results::DecisionRole::kCullEfficiency);
+  if (!input || input->measure() != measure) return "";
+  std::string scope;
+  for (const auto& [key, value] : input->input->where) {
+    scope += (scope.empty() ? "" : ", ") + key + " = " + value;
+  }
+  return measure + ": the summary rows (" + scope + ") of its conservative policies only (" +
          joined(conservativeCullPolicies(results)) + ")";
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "harness/report/decision_inputs.h"
 #include "harness/report/row_values.h"
 #include "harness/report/summary.h"
 
@@ -25,93 +26,19 @@ const char* const kDecisionRule =
 
 namespace {
 
-const results::MeasureResult* measureOf(const results::Results& results,
-                                        const std::string& technique, const std::string& variant,
-                                        const std::string& asset, const std::string& measure) {
-  for (const results::Record& record : results.records) {
-    if (record.technique != technique || record.variant != variant || record.asset != asset)
-      continue;
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure == measure) return &m;
-    }
-  }
-  return nullptr;
+using results::DecisionRole;
+
+// The figure of `role` for one record's candidate on `path`, or none.
+InputFigure figureOf(const results::Results& results, DecisionRole role,
+                     const std::string& technique, const std::string& variant,
+                     const std::string& asset, const std::string& path) {
+  const auto input = inputFor(results, role, path);
+  if (!input) return {};
+  const results::MeasureResult* m = resultOf(results, technique, variant, asset, *input);
+  return m == nullptr ? InputFigure{} : readInput(*input, *m, path);
 }
 
-bool endsWith(const std::string& text, const std::string& tail) {
-  return text.size() >= tail.size() &&
-         text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-void readError(const results::MeasureResult* m, DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
-  for (const results::MetricRow& row : m->rows) {
-    if (row.status != results::MeasureStatus::kOk) continue;
-    if (const auto value = rowMetric(row, "hausdorff"))
-      f->error = std::max(f->error.value_or(0), *value);
-  }
-}
-
-// The fewest triangles at 1 px over the policies' summary rows; `declaration` (may be null)
-// names the control rows, which never count.
-void readTriangles(const results::MeasureResult* m, const results::MeasureDeclaration* declaration,
-                   DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
-  for (const results::MetricRow& row : m->rows) {
-    if (row.status != results::MeasureStatus::kOk || rowKey(row, "summary") != "max_error_1px")
-      continue;
-    if (declaration != nullptr && results::isControlRow(*declaration, row.keys)) continue;
-    const auto triangles = rowMetric(row, "triangles_per_frame_at_target");
-    if (!triangles || rowMetric(row, "target_reached").value_or(1) == 0) continue;
-    const std::string path = rowKey(row, "camera_path");
-    if (f->camera_path.empty()) f->camera_path = path;  // the first path: the default one
-    if (path != f->camera_path) continue;
-    if (!f->triangles_1px || *triangles < *f->triangles_1px) {
-      f->triangles_1px = *triangles;
-      f->triangles_policy = rowKey(row, "policy");
-    }
-  }
-}
-
-// Whether a row belongs to `path`: its path key, or none (results before the compute path,
-// measures without one) for the tessellator's.
-bool onPath(const results::MetricRow& row, const std::string& path) {
-  const std::string key = rowKey(row, "path");
-  return key == path || (key.empty() && path == kTessellatorPath);
-}
-
-void readMemory(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
-  for (const results::MetricRow& row : m->rows) {
-    if (row.status != results::MeasureStatus::kOk || !onPath(row, path) ||
-        rowKey(row, "level") != std::to_string(kDecisionMemoryLevel))
-      continue;
-    const auto plain = rowMetric(row, "plain_bytes");
-    const auto technique = rowMetric(row, "technique_with_displacement_bytes");
-    const double transient = rowMetric(row, "transient_vertex_bytes").value_or(0) +
-                             rowMetric(row, "transient_index_bytes").value_or(0);
-    if (plain && technique && *plain > 0) f->memory_ratio = (*technique + transient) / *plain;
-  }
-}
-
-// Tessellator path: the TCS and TES; compute path: its build and evaluate passes.
-void readInstructions(const results::MeasureResult* m, const std::string& path,
-                      DecisionFigures* f) {
-  if (m == nullptr || m->status != results::MeasureStatus::kOk) return;
-  const bool compute = path == kComputePath;
-  for (const results::MetricRow& row : m->rows) {
-    const std::string stage = rowKey(row, "stage");
-    const bool stage_of_path = compute ? endsWith(stage, "#build") || endsWith(stage, "#evaluate")
-                                       : endsWith(stage, ".tesc") || endsWith(stage, ".tese");
-    if (row.status != results::MeasureStatus::kOk || rowKey(row, "expansion") != "vector" ||
-        rowKey(row, "source") != "spirv_O" || !stage_of_path)
-      continue;
-    if (const auto total = rowMetric(row, "total"))
-      f->instructions = f->instructions.value_or(0) + *total;
-  }
-}
-
-// One side (CPU or device) of the cracks rows.
+// One side (CPU or device) of the watertightness rows.
 struct Side {
   size_t ok = 0, not_ok = 0;
   double points = 0;
@@ -122,24 +49,29 @@ struct Side {
   }
 };
 
-void readCracks(const results::MeasureResult* m, const std::string& path, DecisionFigures* f) {
+// The device side's rows are the candidate's path's (the input's rows_on_path); the CPU
+// rows are every path's.
+void readCracks(const DeclaredInput& input, const results::MeasureResult* m,
+                const std::string& path, DecisionFigures* f) {
   if (m == nullptr) return;
   Side cpu, device;
   if (m->status != results::MeasureStatus::kOk) {
     f->cpu = f->device = Watertightness::kUnverified;
     return;
   }
+  results::DecisionInput cpu_input = *input.input;
+  cpu_input.rows_on_path = false;
   for (const results::MetricRow& row : m->rows) {
-    const bool on_device = rowKey(row, "backend") == "gpu";
-    if (on_device && !onPath(row, path)) continue;  // the CPU rows are every path's
+    const bool on_device = results::rowInScope(input.input->device_rows, row.keys) &&
+                           !input.input->device_rows.empty();
+    if (!readsRow(on_device ? *input.input : cpu_input, row, path)) continue;
     Side& side = on_device ? device : cpu;
     if (row.status != results::MeasureStatus::kOk) {
       ++side.not_ok;
       continue;
     }
     ++side.ok;
-    side.points = std::max(side.points, rowMetric(row, "points_not_equal").value_or(0) +
-                                            rowMetric(row, "unpaired_points").value_or(0));
+    side.points = std::max(side.points, rowFigure(*input.input, row).value_or(0));
   }
   f->cpu = cpu.verdict();
   f->device = device.verdict();
@@ -147,11 +79,12 @@ void readCracks(const results::MeasureResult* m, const std::string& path, Decisi
   f->device_points = device.points;
 }
 
-// Whether the run measured the record's cracks on the compute path (an ok row there).
+// Whether the run measured the record's watertightness on the compute path (an ok row there).
 bool measuredOnCompute(const results::MeasureResult* cracks) {
   if (cracks == nullptr || cracks->status != results::MeasureStatus::kOk) return false;
   return std::any_of(cracks->rows.begin(), cracks->rows.end(), [](const results::MetricRow& row) {
-    return row.status == results::MeasureStatus::kOk && rowKey(row, "path") == kComputePath;
+    return row.status == results::MeasureStatus::kOk &&
+           rowKey(row, results::kPathKey) == kComputePath;
   });
 }
 
@@ -191,16 +124,16 @@ std::string whySentence(const DecisionCandidate& c, size_t candidates) {
                         f.triangles_policy);
   }
   if (f.instructions) {
-    text += fmt::format(", {} {} instructions", number(f.instructions),
-                        c.path == kComputePath ? "build + evaluate" : "TCS + TES");
+    text += fmt::format(", {} {}", number(f.instructions), f.cost_label);
   }
   return text + ".";
 }
 
 // Where the runner-up is better and where worse than the recommendation.
-std::string tradeSentence(const DecisionCandidate& first, const DecisionCandidate& second) {
+std::string tradeSentence(const DecisionLabels& labels, const DecisionCandidate& first,
+                          const DecisionCandidate& second) {
   std::vector<std::string> better, worse;
-  const auto compare = [&](const char* what, const std::optional<double>& mine,
+  const auto compare = [&](const std::string& what, const std::optional<double>& mine,
                            const std::optional<double>& theirs) {
     if (!mine || !theirs || number(mine) == number(theirs)) return;  // equal as shown
     (*mine < *theirs ? better : worse)
@@ -213,10 +146,10 @@ std::string tradeSentence(const DecisionCandidate& first, const DecisionCandidat
         .push_back(fmt::format("watertight CPU/device {}/{}", watertightText(a.cpu, a.cpu_points),
                                watertightText(a.device, a.device_points)));
   }
-  compare("error", a.error, b.error);
-  compare("triangles at 1 px", a.triangles_1px, b.triangles_1px);
-  compare("instructions", a.instructions, b.instructions);
-  compare("memory ratio", a.memory_ratio, b.memory_ratio);
+  compare(labels.error, a.error, b.error);
+  compare(labels.triangles, a.triangles_1px, b.triangles_1px);
+  compare(labels.cost, a.instructions, b.instructions);
+  compare(labels.memory, a.memory_ratio, b.memory_ratio);
   const auto list = [](const std::vector<std::string>& items) {
     std::string text;
     for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
@@ -251,15 +184,35 @@ DecisionFigures decisionFigures(const results::Results& results, const std::stri
                                 const std::string& variant, const std::string& asset,
                                 const std::string& path) {
   DecisionFigures f;
-  const auto of = [&](const char* measure) {
-    return measureOf(results, technique, variant, asset, measure);
+  const auto figure = [&](DecisionRole role) {
+    return figureOf(results, role, technique, variant, asset, path);
   };
-  readError(of("error"), &f);
-  readTriangles(of("adaptivity"), results.findMeasure("adaptivity"), &f);
-  readMemory(of("memory"), path, &f);
-  readInstructions(of("instructions"), path, &f);
-  readCracks(of("cracks"), path, &f);
+  f.error = figure(DecisionRole::kError).value;
+  const InputFigure triangles = figure(DecisionRole::kTrianglesAtTarget);
+  f.triangles_1px = triangles.value;
+  f.triangles_policy = triangles.chosen;
+  f.camera_path = triangles.first;
+  f.memory_ratio = figure(DecisionRole::kMemoryRatio).value;
+  f.instructions = figure(DecisionRole::kShaderCost).value;
+  if (const auto cost = inputFor(results, DecisionRole::kShaderCost, path)) {
+    f.cost_label = cost->input->label;
+  }
+  if (const auto cracks = inputFor(results, DecisionRole::kCrackPoints, path)) {
+    readCracks(*cracks, resultOf(results, technique, variant, asset, *cracks), path, &f);
+  }
   return f;
+}
+
+DecisionLabels decisionLabels(const results::Results& results) {
+  DecisionLabels labels;
+  const auto label = [&](DecisionRole role, std::string* out) {
+    if (const auto input = inputFor(results, role)) *out = input->input->label;
+  };
+  label(DecisionRole::kError, &labels.error);
+  label(DecisionRole::kTrianglesAtTarget, &labels.triangles);
+  label(DecisionRole::kShaderCost, &labels.cost);
+  label(DecisionRole::kMemoryRatio, &labels.memory);
+  return labels;
 }
 
 bool decisionBefore(const DecisionFigures& a, const DecisionFigures& b) {
@@ -269,14 +222,24 @@ bool decisionBefore(const DecisionFigures& a, const DecisionFigures& b) {
 AssetDecision decideAsset(const results::Results& results, const std::string& asset) {
   AssetDecision decision;
   decision.asset = asset;
+  const auto error = inputFor(results, DecisionRole::kError);
+  if (error && !error->input->metrics.empty()) {
+    decision.error_axis = fmt::format("{}: {} ({})", error->input->label,
+                                      error->input->metrics.front(), unitOf(*error));
+  }
+  const auto cracks_input = inputFor(results, DecisionRole::kCrackPoints, kComputePath);
   for (const auto& technique : techniquesOf(results)) {
     if (technique.variants.empty()) continue;
     const std::string& variant = technique.variants.front();
     if (isControl(results, technique.technique, variant)) continue;
-    if (measureOf(results, technique.technique, variant, asset, "error") == nullptr) continue;
+    if (!error || resultOf(results, technique.technique, variant, asset, *error) == nullptr)
+      continue;
     decision.candidates.push_back({technique.technique, variant,
                                    decisionFigures(results, technique.technique, variant, asset)});
-    if (measuredOnCompute(measureOf(results, technique.technique, variant, asset, "cracks"))) {
+    const results::MeasureResult* cracks =
+        cracks_input ? resultOf(results, technique.technique, variant, asset, *cracks_input)
+                     : nullptr;
+    if (measuredOnCompute(cracks)) {
       decision.candidates.push_back(
           {technique.technique, variant,
            decisionFigures(results, technique.technique, variant, asset, kComputePath), false,
@@ -309,9 +272,10 @@ AssetDecision decideAsset(const results::Results& results, const std::string& as
   if (!decision.candidates.empty()) {
     decision.why = whySentence(decision.candidates[0], decision.candidates.size());
   }
-  decision.runner_up = decision.candidates.size() < 2
-                           ? "No runner-up: one candidate."
-                           : tradeSentence(decision.candidates[0], decision.candidates[1]);
+  decision.runner_up =
+      decision.candidates.size() < 2
+          ? "No runner-up: one candidate."
+          : tradeSentence(decisionLabels(results), decision.candidates[0], decision.candidates[1]);
   return decision;
 }
 

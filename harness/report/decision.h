@@ -2,7 +2,7 @@
 // and `tessbench advise`'s recommendation: one definition, here). The candidates are each
 // technique's default variant (its first), never a control; each with the figures that trade
 // off: error, triangles per frame for a 1 px tessellation error, memory against the plain
-// triangle mesh, TCS + TES instructions, watertightness on the CPU and on the device. The
+// triangle mesh, shader cost, watertightness on the CPU and on the device. The
 // Pareto front is over error and triangles at 1 px (the trade-off chart's axes); the
 // recommendation is the first candidate under kDecisionRule. Pure over the results model.
 #pragma once
@@ -19,39 +19,44 @@ namespace tb::report {
 // The error a candidate must stay within to compete on triangles: 1e-3 of the bounding-box
 // diagonal (about 1 px on an object 1000 px across).
 inline constexpr double kDecisionMaxError = 1e-3;
-// The uniform level the memory ratio is read at (the memory measure's rows: 8, 16, 32, 64).
-inline constexpr int kDecisionMemoryLevel = 16;
 // The rule, printed with every decision.
 extern const char* const kDecisionRule;
 
+// A candidate's figures, each read through the input its measure declares for the role
+// (results::DecisionInput, decision_inputs.h); none where no measure declares it.
 struct DecisionFigures {
-  // hausdorff, worst over the error rows (rel_diag; best 0, worst ~1).
+  // kError: the worst over the error rows (rel_diag; best 0, worst ~1).
   std::optional<double> error;
-  // triangles_per_frame_at_target of the adaptivity summary rows (summary = max_error_1px):
-  // the fewest over the technique's factor policies on its first camera path, its control rows
-  // (MeasureDeclaration::control_rows: policies made to fail) never (count per frame; best:
-  // few, worst: uniform's).
+  // kTrianglesAtTarget: the fewest over the technique's factor policies on its first camera
+  // path, control rows never (count per frame; best: few, worst: uniform's).
   std::optional<double> triangles_1px;
   std::string triangles_policy;  // the policy reaching it
   std::string camera_path;       // the path it was measured along
-  // technique_with_displacement_bytes / plain_bytes at kDecisionMemoryLevel (ratio; 0.05: a
-  // twentieth of the plain mesh's bytes; above 1: bigger than the plain mesh); on the compute
-  // path with its transient vertex and index buffers added.
+  // kMemoryRatio: the technique's bytes over the plain mesh's (ratio; 0.05: a twentieth of the
+  // plain mesh's bytes; above 1: bigger than it); on the compute path with its transient
+  // buffers.
   std::optional<double> memory_ratio;
-  // total instructions of the TCS and TES stages, spirv-opt -O, per vector instruction, summed
-  // over the programs the asset uses (count).
+  // kShaderCost: the rule's cost term, the highest-precedence input for the path (its unit).
   std::optional<double> instructions;
-  Watertightness cpu = Watertightness::kNotMeasured;     // cracks rows of the CPU backends
-  Watertightness device = Watertightness::kNotMeasured;  // cracks rows of the gpu backend
-  double cpu_points = 0;     // largest points_not_equal + unpaired_points of one CPU row
+  std::string cost_label;  // the cost input's label ("TCS + TES instructions")
+  Watertightness cpu = Watertightness::kNotMeasured;     // kCrackPoints rows of the CPU
+  Watertightness device = Watertightness::kNotMeasured;  // and of the device
+  double cpu_points = 0;     // largest figure of one CPU row (points that differ)
   double device_points = 0;  // the same over the device rows
 };
+
+// How the report names the rule's terms: the labels of the inputs the run declares.
+struct DecisionLabels {
+  std::string error = "error", triangles = "triangles at 1 px", cost = "cost",
+              memory = "memory ratio";
+};
+DecisionLabels decisionLabels(const results::Results& results);
 
 // The pipeline's path a candidate is drawn through: the hardware tessellator (TCS/TES), or the
 // compute path (core/gpu/compute_path.h), a candidate where the run measured it (cracks rows
 // with path = compute).
-inline constexpr const char* kTessellatorPath = "tessellator";
-inline constexpr const char* kComputePath = "compute";
+using results::kComputePath;
+using results::kTessellatorPath;
 
 struct DecisionCandidate {
   std::string technique;
@@ -70,6 +75,7 @@ struct AssetDecision {
   std::vector<DecisionCandidate> candidates;  // by kDecisionRule: the first is recommended
   std::string why;                            // one sentence: why the recommendation ranks first
   std::string runner_up;                      // one sentence: what the runner-up trades against it
+  std::string error_axis;  // "error: hausdorff (rel_diag)": the error figure's label and unit
   std::string recommended() const { return candidates.empty() ? "" : candidates[0].name(); }
 };
 

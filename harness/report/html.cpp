@@ -7,6 +7,7 @@
 
 #include "harness/report/base64.h"
 #include "harness/report/comparison.h"
+#include "harness/report/decision_inputs.h"
 #include "harness/report/html_chart_script.h"
 #include "harness/report/html_decisions.h"
 #include "harness/report/html_escape.h"
@@ -199,11 +200,14 @@ void plotSection(const PlotData& data, Page* page) {
 // Under a chart per solver iteration: what an iteration costs in dispatches, per variant, so
 // the per-dispatch comparison (a frame's budget is dispatches) is not read off it.
 std::string perDispatchNote(const results::Results& results, const std::string& measure) {
-  const MeasureSummary summary = summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets,
-                                                  {"dispatches_per_iteration"});
+  const auto input = inputFor(results, results::DecisionRole::kDispatchesPerIteration);
+  if (!input || input->measure() != measure || input->input->metrics.empty()) return "";
+  const std::string& metric = input->input->metrics.front();
+  const MeasureSummary summary =
+      summarizeMeasure(results, measure, SummaryGrouping::kAcrossAssets, {metric});
   std::string parts;
   for (const SummaryLine& line : summary.lines) {
-    const MetricStats* stats = line.find("dispatches_per_iteration");
+    const MetricStats* stats = line.find(metric);
     if (stats == nullptr) continue;
     parts += fmt::format("{}{} {:g}", parts.empty() ? "" : ", ", line.variant, stats->median);
   }
@@ -212,8 +216,8 @@ std::string perDispatchNote(const results::Results& results, const std::string& 
          "costs " +
          escapeHtml(parts) +
          " compute dispatches. At a frame's budget of 8 dispatches "
-         "compare the chart per dispatch below (residual_at_8_dispatches: the answers above and "
-         "report.md's simulations section).</p>\n";
+         "compare the chart per dispatch below (the residual at 8 dispatches: the answers above "
+         "and report.md's simulations section).</p>\n";
 }
 
 void measureSections(const results::Results& results, Page* page) {

@@ -62,7 +62,7 @@ Json tradeoffChart(const AssetDecision& d, const std::vector<const DecisionCandi
               {"kind", "scatter"},
               {"title", d.asset},
               {"x_label", "triangles per frame for a 1 px error (count)"},
-              {"y_label", "error: hausdorff (rel_diag)"},
+              {"y_label", d.error_axis},
               {"log_x", logAxisSuits(xs)},
               {"log_y", logAxisSuits(ys)},
               {"pareto", true},

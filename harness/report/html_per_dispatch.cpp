@@ -5,6 +5,7 @@
 #include <map>
 #include <vector>
 
+#include "harness/report/decision_inputs.h"
 #include "harness/report/html_escape.h"
 #include "harness/report/row_values.h"
 
@@ -23,28 +24,28 @@ struct Curve {
 };
 
 // Per scenario, per variant: (dispatches, residual) of the iteration rows without goal springs.
+// kResidualPerDispatch's rows: the residual, x = its chosen_key (the iteration) times the
+// kDispatchesPerIteration figure of the same record.
 std::map<std::string, std::vector<Curve>> curvesOf(const results::Results& results) {
   std::map<std::string, std::vector<Curve>> by_scenario;
+  const auto residuals = inputFor(results, results::DecisionRole::kResidualPerDispatch);
+  const auto dispatches = inputFor(results, results::DecisionRole::kDispatchesPerIteration);
+  if (!residuals || !dispatches) return by_scenario;
   for (const results::Record& record : results.records) {
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure != "convergence" || m.status != results::MeasureStatus::kOk) continue;
-      double per_iteration = 0;
-      for (const results::MetricRow& row : m.rows) {
-        if (rowKey(row, "kind") == "summary" && rowKey(row, "goal_springs") == "false")
-          per_iteration = rowMetric(row, "dispatches_per_iteration").value_or(0);
-      }
-      if (per_iteration <= 0) continue;
-      Curve curve{record.variant};
-      for (const results::MetricRow& row : m.rows) {
-        if (rowKey(row, "kind") != "iteration" || rowKey(row, "goal_springs") != "false") continue;
-        const auto residual = rowMetric(row, "residual");
-        const double dispatches = std::stod(rowKey(row, "iteration")) * per_iteration;
-        if (!residual || *residual <= 0 || dispatches > kMaxDispatches) continue;
-        curve.points.push_back(
-            {{"x", dispatches}, {"y", *residual}, {"label", record.variant}, {"rows", 1}});
-      }
-      if (!curve.points.empty()) by_scenario[record.asset].push_back(std::move(curve));
+    const results::MeasureResult* m = resultOf(record, *residuals);
+    const results::MeasureResult* d = resultOf(record, *dispatches);
+    if (m == nullptr || d == nullptr || m->status != results::MeasureStatus::kOk) continue;
+    const double per_iteration = readInput(*dispatches, *d).value.value_or(0);
+    if (per_iteration <= 0) continue;
+    Curve curve{record.variant};
+    for (const results::MetricRow& row : m->rows) {
+      if (row.status != results::MeasureStatus::kOk || !readsRow(*residuals->input, row)) continue;
+      const auto residual = rowFigure(*residuals->input, row);
+      const double x = std::stod(rowKey(row, residuals->input->chosen_key)) * per_iteration;
+      if (!residual || *residual <= 0 || x > kMaxDispatches) continue;
+      curve.points.push_back({{"x", x}, {"y", *residual}, {"label", record.variant}, {"rows", 1}});
     }
+    if (!curve.points.empty()) by_scenario[record.asset].push_back(std::move(curve));
   }
   return by_scenario;
 }
@@ -58,8 +59,8 @@ void appendPerDispatchCharts(const results::Results& results, bool charts_availa
   *body += fmt::format(
       "<h3>Residual against compute dispatches (a frame: 8)</h3>\n<p class=\"note\">The "
       "iteration rows without goal springs, x = iteration × the variant's dispatches per "
-      "iteration, up to {:g} dispatches: the comparison at a frame's budget that "
-      "residual_at_8_dispatches summarises.</p>\n",
+      "iteration, up to {:g} dispatches: the comparison at a frame's budget that the "
+      "summary's residual at 8 dispatches gives.</p>\n",
       kMaxDispatches);
   if (!charts_available) return;
   *body += "<div class=\"charts\">\n";
@@ -77,16 +78,17 @@ void appendPerDispatchCharts(const results::Results& results, bool charts_availa
         "<div class=\"chart-box\"><canvas id=\"{}\" role=\"img\" "
         "aria-label=\"{}\"></canvas></div>\n",
         canvas, escapeHtml("Residual per dispatch: " + scenario));
-    charts->push_back(Json{{"canvas", canvas},
-                           {"kind", "line"},
-                           {"title", scenario},
-                           {"x_label", "compute dispatches (count)"},
-                           {"y_label", "residual (ratio)"},
-                           {"log_x", false},
-                           {"log_y", false},
-                           {"pareto", false},
-                           {"categories", Json::array()},
-                           {"series", std::move(series)}});
+    charts->push_back(
+        Json{{"canvas", canvas},
+             {"kind", "line"},
+             {"title", scenario},
+             {"x_label", "compute dispatches (count)"},
+             {"y_label", headerOf(*inputFor(results, results::DecisionRole::kResidualPerDispatch))},
+             {"log_x", false},
+             {"log_y", false},
+             {"pareto", false},
+             {"categories", Json::array()},
+             {"series", std::move(series)}});
   }
   *body += "</div>\n";
 }

@@ -104,7 +104,7 @@ std::string renderMarkdown(const results::Results& results) {
   }
   const std::vector<AssetDecision> decisions = decideAssets(results);
   appendAnswers(results, decisions, &out);
-  appendDecisions(decisions, &out);
+  appendDecisions(results, decisions, &out);
   appendCrackLocations(results, &out);
   appendSimulations(results, &out);
   appendRegressionScreen(results, measures, &out);

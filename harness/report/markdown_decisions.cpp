@@ -8,6 +8,7 @@
 
 #include "harness/report/answers.h"
 #include "harness/report/decision.h"
+#include "harness/report/decision_inputs.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/row_values.h"
 #include "harness/report/summary.h"
@@ -21,17 +22,25 @@ struct DecisionColumn {
   std::function<std::optional<std::string>(const DecisionCandidate&)> cell;
 };
 
-std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
+// A column's header from the input the run declares for `role`; "" when none.
+std::string columnHeader(const results::Results& results, results::DecisionRole role) {
+  const auto input = inputFor(results, role);
+  return input ? headerOf(*input) : "";
+}
+
+std::vector<DecisionColumn> decisionColumns(const results::Results& results,
+                                            const AssetDecision& d) {
+  using results::DecisionRole;
   const auto optional = [](const std::optional<double>& v) -> std::optional<std::string> {
     return v ? std::optional<std::string>(formatAdviceNumber(*v)) : std::nullopt;
   };
-  std::string triangles = "triangles/frame at 1 px (count, best policy";
-  if (!d.candidates.empty() && !d.candidates[0].figures.camera_path.empty()) {
-    triangles += ", path " + d.candidates[0].figures.camera_path;
+  std::string triangles = columnHeader(results, DecisionRole::kTrianglesAtTarget);
+  if (!d.candidates.empty() && !d.candidates[0].figures.camera_path.empty() &&
+      triangles.size() > 1 && triangles.back() == ')') {
+    triangles.insert(triangles.size() - 1, ", path " + d.candidates[0].figures.camera_path);
   }
-  triangles += ")";
   return {
-      {"error (hausdorff, rel_diag)",
+      {columnHeader(results, DecisionRole::kError),
        [=](const DecisionCandidate& c) { return optional(c.figures.error); }},
       {triangles,
        [=](const DecisionCandidate& c) -> std::optional<std::string> {
@@ -39,9 +48,9 @@ std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
          return formatAdviceNumber(*c.figures.triangles_1px) + " (" + c.figures.triangles_policy +
                 ")";
        }},
-      {"memory / plain mesh at level 16 (ratio)",
+      {columnHeader(results, DecisionRole::kMemoryRatio),
        [=](const DecisionCandidate& c) { return optional(c.figures.memory_ratio); }},
-      {"TCS + TES instructions (count; compute path: its build + evaluate passes)",
+      {columnHeader(results, DecisionRole::kShaderCost),
        [=](const DecisionCandidate& c) { return optional(c.figures.instructions); }},
       {"watertight CPU / device",
        [](const DecisionCandidate& c) -> std::optional<std::string> {
@@ -54,10 +63,10 @@ std::vector<DecisionColumn> decisionColumns(const AssetDecision& d) {
   };
 }
 
-void appendDecision(const AssetDecision& d, std::string* out) {
+void appendDecision(const results::Results& results, const AssetDecision& d, std::string* out) {
   *out += "### " + d.asset + "\n\n";
   std::vector<DecisionColumn> columns;
-  for (DecisionColumn& column : decisionColumns(d)) {
+  for (DecisionColumn& column : decisionColumns(results, d)) {
     const bool any =
         std::any_of(d.candidates.begin(), d.candidates.end(),
                     [&](const DecisionCandidate& c) { return column.cell(c).has_value(); });
@@ -95,58 +104,58 @@ void appendAnswers(const results::Results& results, const std::vector<AssetDecis
 
 namespace {
 
-// The cracks row with the largest world gap of a record, and how many rows crack.
+// The cracked row with the largest world gap of a record, and how many rows crack.
 struct WorstCrack {
   const results::MetricRow* row = nullptr;
   double gap = 0;
   size_t rows = 0;
 };
 
-WorstCrack worstCrackOf(const results::MeasureResult& m) {
+WorstCrack worstCrackOf(const DeclaredInput& points, const std::optional<DeclaredInput>& gap_input,
+                        const results::MeasureResult& m) {
   WorstCrack worst;
   for (const results::MetricRow& row : m.rows) {
-    const double points = rowMetric(row, "points_not_equal").value_or(0) +
-                          rowMetric(row, "unpaired_points").value_or(0);
-    if (row.status != results::MeasureStatus::kOk || points <= 0) continue;
+    if (row.status != results::MeasureStatus::kOk || rowFigure(*points.input, row).value_or(0) <= 0)
+      continue;
     ++worst.rows;
-    const double gap = rowMetric(row, "max_gap_world").value_or(0);
+    const double gap = gap_input ? rowFigure(*gap_input->input, row).value_or(0) : 0;
     if (worst.row == nullptr || gap > worst.gap) worst = {&row, gap, worst.rows};
   }
   return worst;
 }
 
-// "edge between patches 3 and 7 at t = 0.5 of patch 3's edge 1"
-std::string crackPlace(const results::MetricRow& row) {
-  const auto n = [&](const char* name) {
-    return formatAdviceNumber(rowMetric(row, name).value_or(-1));
-  };
-  if (rowMetric(row, "worst_patch_a").value_or(-1) < 0) return "not located (unpaired points)";
-  if (rowMetric(row, "worst_is_corner").value_or(0) > 0) {
-    return "corner " + n("worst_local_a") + " of patch " + n("worst_patch_a") + " / corner " +
-           n("worst_local_b") + " of patch " + n("worst_patch_b");
+// "edge between patches 3 and 7 at t = 0.5 of patch 3's edge 1" (kCrackPlace's metrics: patch
+// a, local a, patch b, local b, is-corner, t).
+std::string crackPlace(const std::optional<DeclaredInput>& place, const results::MetricRow& row) {
+  if (!place) return "not located";
+  const auto value = [&](size_t i) { return metricAt(*place->input, row, i); };
+  const auto n = [&](size_t i) { return formatAdviceNumber(value(i).value_or(-1)); };
+  if (value(0).value_or(-1) < 0) return "not located (unpaired points)";
+  if (value(4).value_or(0) > 0) {
+    return "corner " + n(1) + " of patch " + n(0) + " / corner " + n(3) + " of patch " + n(2);
   }
-  return "edge " + n("worst_local_a") + " of patch " + n("worst_patch_a") +
-         " at t = " + n("worst_t") + " / patch " + n("worst_patch_b");
+  return "edge " + n(1) + " of patch " + n(0) + " at t = " + n(5) + " / patch " + n(2);
 }
 
-bool measureOk(const results::Record& record, const char* measure) {
-  return std::any_of(record.measures.begin(), record.measures.end(), [&](const auto& m) {
-    return m.measure == measure && m.status == results::MeasureStatus::kOk;
-  });
+bool measureOk(const results::Record& record, const std::optional<DeclaredInput>& input) {
+  const results::MeasureResult* m = input ? resultOf(record, *input) : nullptr;
+  return m != nullptr && m->status == results::MeasureStatus::kOk;
 }
 
 }  // namespace
 
-std::string crackPictureOf(const results::Record& record) {
-  if (record.parameters.count("displacement") > 0 || !measureOk(record, "error")) return "";
+std::string crackPictureOf(const results::Results& results, const results::Record& record) {
+  const auto error = inputFor(results, results::DecisionRole::kError);
+  const auto picture = inputFor(results, results::DecisionRole::kCrackPicture);
+  if (record.parameters.count("displacement") > 0 || !measureOk(record, error) || !picture)
+    return "";
   bool cracks = false;
-  for (const results::MeasureResult& m : record.measures) {
-    if (m.measure != "cracks" || m.status != results::MeasureStatus::kOk) continue;
-    for (const results::MetricRow& row : m.rows) {
+  if (const results::MeasureResult* m = resultOf(record, *picture)) {
+    for (const results::MetricRow& row : m->rows) {
       cracks =
-          cracks || (row.status == results::MeasureStatus::kOk &&
-                     rowKey(row, "backend") == "cpu_float" && rowKey(row, "displacement").empty() &&
-                     rowMetric(row, "points_not_equal").value_or(0) > 0);
+          cracks ||
+          (m->status == results::MeasureStatus::kOk && row.status == results::MeasureStatus::kOk &&
+           readsRow(*picture->input, row) && rowFigure(*picture->input, row).value_or(0) > 0);
     }
   }
   if (!cracks) return "";
@@ -161,8 +170,8 @@ std::string crackPictureOf(const results::Record& record) {
 
 namespace {
 
-std::string pictureLink(const results::Record& record) {
-  const std::string path = crackPictureOf(record);
+std::string pictureLink(const results::Results& results, const results::Record& record) {
+  const std::string path = crackPictureOf(results, record);
   if (path.empty() && record.parameters.count("displacement") > 0)
     return "none (displaced: no pictures)";
   return path.empty() ? "none (no CPU float crack or no error picture)"
@@ -173,24 +182,28 @@ std::string pictureLink(const results::Record& record) {
 
 // Where each default variant cracks: its worst cracks row and the place of the largest gap.
 void appendCrackLocations(const results::Results& results, std::string* out) {
+  const auto points = inputFor(results, results::DecisionRole::kCrackPoints);
+  if (!points) return;
+  const auto gap = inputFor(results, results::DecisionRole::kCrackGap);
+  const auto place = inputFor(results, results::DecisionRole::kCrackPlace);
   std::string body;
   for (const auto& t : techniquesOf(results)) {
     if (t.variants.empty() || isControl(results, t.technique, t.variants.front())) continue;
     for (const results::Record& record : results.records) {
       if (record.technique != t.technique || record.variant != t.variants.front()) continue;
-      for (const results::MeasureResult& m : record.measures) {
-        if (m.measure != "cracks" || m.status != results::MeasureStatus::kOk) continue;
-        const WorstCrack worst = worstCrackOf(m);
-        if (worst.row == nullptr) continue;
-        const results::MetricRow& row = *worst.row;
-        appendRow(&body,
-                  {record.asset, t.technique + "/" + t.variants.front(), std::to_string(worst.rows),
-                   rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
-                       rowKey(row, "level") +
-                       (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
-                   formatAdviceNumber(rowMetric(row, "points_not_equal").value_or(0)),
-                   formatAdviceNumber(worst.gap), crackPlace(row), pictureLink(record)});
-      }
+      const results::MeasureResult* m = resultOf(record, *points);
+      if (m == nullptr || m->status != results::MeasureStatus::kOk) continue;
+      const WorstCrack worst = worstCrackOf(*points, gap, *m);
+      if (worst.row == nullptr) continue;
+      const results::MetricRow& row = *worst.row;
+      appendRow(
+          &body,
+          {record.asset, t.technique + "/" + t.variants.front(), std::to_string(worst.rows),
+           rowKey(row, "backend") + ", " + rowKey(row, "spacing") + ", level " +
+               rowKey(row, "level") +
+               (rowKey(row, "levels").empty() ? "" : " (" + rowKey(row, "levels") + ")"),
+           formatAdviceNumber(metricAt(*points->input, row, 0).value_or(0)),
+           formatAdviceNumber(worst.gap), crackPlace(place, row), pictureLink(results, record)});
     }
   }
   if (body.empty()) return;
@@ -206,7 +219,8 @@ void appendCrackLocations(const results::Results& results, std::string* out) {
   *out += body + "\n";
 }
 
-void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out) {
+void appendDecisions(const results::Results& results, const std::vector<AssetDecision>& decisions,
+                     std::string* out) {
   if (decisions.empty()) return;
   *out += "## Decision per surface asset\n\n";
   *out += std::string("Candidates: each technique's default variant (controls never). Rule: ") +
@@ -214,30 +228,35 @@ void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* o
           ". Pareto front: no other candidate has lower-or-equal error and triangles at 1 px, one "
           "strictly lower. `tessbench advise ASSET` prints the same recommendation and ranks "
           "every variant under your constraints.\n\n";
-  for (const AssetDecision& d : decisions) appendDecision(d, out);
+  for (const AssetDecision& d : decisions) appendDecision(results, d, out);
 }
 
 namespace {
 
 // The metrics of one simulation measure shown per scenario × technique/variant.
 struct SimulationMeasure {
-  const char* measure;
+  std::string measure;
   std::vector<std::string> metrics;
 };
+
+// The kSimulationFigure inputs, a table per declaring measure in the run's order.
+std::vector<SimulationMeasure> simulationMeasures(const results::Results& results) {
+  std::vector<SimulationMeasure> measures;
+  for (const DeclaredInput& input : inputsOf(results, results::DecisionRole::kSimulationFigure)) {
+    if (measures.empty() || measures.back().measure != input.measure())
+      measures.push_back({input.measure(), {}});
+    for (const std::string& metric : input.input->metrics)
+      measures.back().metrics.push_back(metric);
+  }
+  return measures;
+}
 
 }  // namespace
 
 void appendSimulations(const results::Results& results, std::string* out) {
-  const std::vector<SimulationMeasure> measures{
-      {"convergence",
-       {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
-        "iterations_to_1e-3"}},
-      {"stability", {"energy_drift", "max_stretch"}},
-      {"wave_error", {"arrival_error_s", "coverage", "rms_error"}},
-      {"sim_cost", {"dispatches_per_step", "peak_elements"}}};
+  const std::vector<SimulationMeasure> measures = simulationMeasures(results);
   std::string body;
   for (const SimulationMeasure& sm : measures) {
-    if (results.findMeasure(sm.measure) == nullptr) continue;
     MeasureSummary summary =
         summarizeMeasure(results, sm.measure, SummaryGrouping::kPerAsset, sm.metrics);
     std::stable_sort(summary.lines.begin(), summary.lines.end(),
@@ -275,8 +294,8 @@ void appendSimulations(const results::Results& results, std::string* out) {
   *out += "## Simulations by scenario\n\n";
   *out +=
       "Per scenario and solver or variant, the worst value over the measure's summary rows "
-      "(convergence: residual after 8 compute dispatches, one frame's budget; n/a: the "
-      "variant has no such row, e.g. iterations_to_1e-3 when 1e-3 was not reached).\n\n";
+      "(n/a: the variant has no such row, e.g. an iteration count to a residual it did not "
+      "reach).\n\n";
   *out += body;
 }
 

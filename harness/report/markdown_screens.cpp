@@ -8,11 +8,18 @@
 #include <set>
 
 #include "harness/report/answers.h"
+#include "harness/report/decision_inputs.h"
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
 
 namespace tb::report::markdown_detail {
 namespace {
+
+// summaryRowsNote of the measure declaring the cull efficiency; "" when none does.
+std::string cullSummaryNote(const results::Results& results) {
+  const auto input = inputFor(results, results::DecisionRole::kCullEfficiency);
+  return input ? summaryRowsNote(results, input->measure()) : "";
+}
 
 // Rows of every status for one measure, for the regression screen.
 struct StatusCounts {
@@ -147,11 +154,11 @@ namespace {
 // The techniques of one family: surfaces (a record with an error result) or simulations.
 std::vector<results::RunSelection::TechniqueVariants> familyOf(const results::Results& results,
                                                                bool surface) {
+  // A surface technique is one with a result of the measure declaring the error.
   std::set<std::string> surfaces;
+  const auto error = inputFor(results, results::DecisionRole::kError);
   for (const results::Record& record : results.records) {
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure == "error") surfaces.insert(record.technique);
-    }
+    if (error && resultOf(record, *error) != nullptr) surfaces.insert(record.technique);
   }
   std::vector<results::RunSelection::TechniqueVariants> family;
   for (const auto& technique : techniquesOf(results)) {
@@ -239,7 +246,7 @@ void appendPublishingScreen(const results::Results& results,
       "Per family, technique and variant, each measure's first headline figure over the "
       "assets (or scenarios) the variant was measured on: median (worst); the last column "
       "says how many, so two medians over different counts are not over the same assets. " +
-      summaryRowsNote(results, "culling") +
+      cullSummaryNote(results) +
       ". n/a: no rows of that measure for the variant. `tessbench table RUN --measure M "
       "--format markdown|csv|latex` renders one measure's summary with units and this run's "
       "context, ready to publish.\n\n";

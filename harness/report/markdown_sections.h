@@ -30,7 +30,8 @@ std::string firstHeadline(const results::Results& results, const std::string& me
 void appendAnswers(const results::Results& results, const std::vector<AssetDecision>& decisions,
                    std::string* out);
 // Per surface asset its decision table (decision.h), the why and the runner-up's trade.
-void appendDecisions(const std::vector<AssetDecision>& decisions, std::string* out);
+void appendDecisions(const results::Results& results, const std::vector<AssetDecision>& decisions,
+                     std::string* out);
 // Per asset, where each default variant cracks (its worst cracks row and the place), and a
 // link to its crack picture.
 void appendCrackLocations(const results::Results& results, std::string* out);
@@ -39,7 +40,7 @@ void appendCrackLocations(const results::Results& results, std::string* out);
 // "--", other characters than [A-Za-z0-9._-] as '_'>--cracks.png), when the record is
 // undisplaced, its error measure ok and a cpu_float cracks row (undisplaced) has unequal
 // points; empty otherwise.
-std::string crackPictureOf(const results::Record& record);
+std::string crackPictureOf(const results::Results& results, const results::Record& record);
 // The simulation measures per scenario × technique/variant (markdown_decisions.cpp).
 void appendSimulations(const results::Results& results, std::string* out);
 

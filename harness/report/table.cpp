@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "harness/report/answers.h"
+#include "harness/report/decision_inputs.h"
 #include "harness/report/published_figures.h"
 #include "harness/report/row_values.h"
 #include "harness/report/summary.h"
@@ -121,23 +123,23 @@ TextTable publishedMemory(const results::Results& results) {
   };
   std::map<std::pair<std::string, int>, Values> ours;
   std::vector<std::string> order;
+  // kPublishedMemory's metrics: patches, plain bytes, technique bytes, plain / technique.
+  const auto input = inputFor(results, results::DecisionRole::kPublishedMemory);
   for (const results::Record& record : results.records) {
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure != "memory" || m.status != results::MeasureStatus::kOk) continue;
-      const std::string who = record.technique + "/" + record.variant;
-      if (std::find(order.begin(), order.end(), who) == order.end()) order.push_back(who);
-      for (const results::MetricRow& row : m.rows) {
-        const auto level = row.keys.find("level");
-        if (row.status != results::MeasureStatus::kOk || level == row.keys.end()) continue;
-        std::map<std::string, double> v;
-        for (const results::Metric& metric : row.metrics) v[metric.name] = metric.value;
-        if (!v.contains("patches") || v["patches"] <= 0) continue;
-        Values& values = ours[{who, std::atoi(level->second.c_str())}];
-        const double scale = kPublishedMemoryPatches / v["patches"] / 1e6;
-        values.plain_mb.push_back(v["plain_bytes"] * scale);
-        values.technique_mb.push_back(v["technique_with_displacement_bytes"] * scale);
-        values.ratio.push_back(v["plain_over_technique"]);
-      }
+    const results::MeasureResult* m = input ? resultOf(record, *input) : nullptr;
+    if (m == nullptr || m->status != results::MeasureStatus::kOk) continue;
+    const std::string who = record.technique + "/" + record.variant;
+    if (std::find(order.begin(), order.end(), who) == order.end()) order.push_back(who);
+    for (const results::MetricRow& row : m->rows) {
+      const auto level = row.keys.find("level");
+      if (row.status != results::MeasureStatus::kOk || level == row.keys.end()) continue;
+      const auto at = [&](size_t i) { return metricAt(*input->input, row, i).value_or(0); };
+      if (!metricAt(*input->input, row, 0) || at(0) <= 0) continue;
+      Values& values = ours[{who, std::atoi(level->second.c_str())}];
+      const double scale = kPublishedMemoryPatches / at(0) / 1e6;
+      values.plain_mb.push_back(at(1) * scale);
+      values.technique_mb.push_back(at(2) * scale);
+      values.ratio.push_back(at(3));
     }
   }
   for (const PublishedMemoryRow& published : publishedMemoryTable()) {
@@ -157,9 +159,10 @@ TextTable publishedMemory(const results::Results& results) {
                            "; its table fits about 14,400 quad patches, a plain vertex of about "
                            "16 B and one 16-bit displacement texel per vertex.");
   table.footnote.push_back(
-      "Ours: the memory measure's plain_bytes and technique_with_displacement_bytes per patch, "
-      "x 14,400 patches (MB = 10^6 B), and plain_over_technique; each the median over the run's "
-      "assets. Our plain vertex is 32 B plus 32-bit indices, so our ratios run higher.");
+      "Ours: " + (input ? sourceOf(*input) : std::string("not declared")) +
+      "; the bytes per patch x 14,400 patches (MB = 10^6 B) and the ratio, each the median over "
+      "the run's assets. Our plain vertex is 32 B plus 32-bit indices, so our ratios run "
+      "higher.");
   for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
   return table;
 }
@@ -183,9 +186,12 @@ TextTable publishedInstructions(const results::Results& results) {
   // figures differ between assets).
   std::map<std::vector<std::string>, size_t> seen;
   std::vector<std::string> sources;
+  // kPublishedCost's metrics: published ALU, published loads, ours vector, scalar, loads.
+  const auto input = inputFor(results, results::DecisionRole::kPublishedCost);
   for (const results::Record& record : results.records) {
-    for (const results::MeasureResult& m : record.measures) {
-      if (m.measure != "published_figures" || m.status != results::MeasureStatus::kOk) continue;
+    const results::MeasureResult* found = input ? resultOf(record, *input) : nullptr;
+    for (const results::MeasureResult& m : std::span(found, found == nullptr ? 0 : 1)) {
+      if (m.status != results::MeasureStatus::kOk) continue;
       for (const results::MetricRow& row : m.rows) {
         if (row.status != results::MeasureStatus::kOk) continue;
         const auto source = row.keys.find("source");
@@ -194,18 +200,20 @@ TextTable publishedInstructions(const results::Results& results) {
         if (std::find(sources.begin(), sources.end(), source_name) == sources.end()) {
           sources.push_back(source_name);
         }
-        std::map<std::string, std::string> v;
-        for (const results::Metric& metric : row.metrics) v[metric.name] = figure(metric.value);
-        // published_loads 0: not published (the measure's notes).
-        if (v["published_loads"] == "0") v["published_loads"] = "";
+        const auto v = [&](size_t i) {
+          const auto value = metricAt(*input->input, row, i);
+          return value ? figure(*value) : std::string();
+        };
+        // Published loads 0: not published (the measure's notes).
+        const std::string loads = v(1) == "0" ? "" : v(1);
         std::vector<std::string> line{source_name,
                                       record.technique + "/" + record.variant,
                                       what != row.keys.end() ? what->second : "",
-                                      v["published_alu"],
-                                      v["published_loads"],
-                                      v["ours_alu_vector"],
-                                      v["ours_alu_scalar"],
-                                      v["ours_loads"]};
+                                      v(0),
+                                      loads,
+                                      v(2),
+                                      v(3),
+                                      v(4)};
         const auto [it, added] = seen.emplace(line, table.rows.size());
         if (added) {
           line.push_back("1");
@@ -223,20 +231,34 @@ TextTable publishedInstructions(const results::Results& results) {
   table.footnote.push_back(
       "Ours: float arithmetic + FMA instructions of the stage after spirv-opt -O (vector: per "
       "SPIR-V instruction, as a D3D listing counts a float3 mad once; scalar: per component) "
-      "and its loads and stores (the published_figures measure).");
+      "and its loads and stores (the " +
+      (input ? input->measure() : std::string("undeclared")) + " measure).");
   for (std::string& line : runContextFootnote(results)) table.footnote.push_back(std::move(line));
   return table;
 }
 
 }  // namespace
 
-bool hasPublishedTable(const std::string& measure) {
-  return measure == "memory" || measure == "published_figures";
+namespace {
+
+bool declares(const results::Results& results, results::DecisionRole role,
+              const std::string& measure) {
+  const auto input = inputFor(results, role);
+  return input && input->measure() == measure;
+}
+
+}  // namespace
+
+bool hasPublishedTable(const results::Results& results, const std::string& measure) {
+  return declares(results, results::DecisionRole::kPublishedMemory, measure) ||
+         declares(results, results::DecisionRole::kPublishedCost, measure);
 }
 
 TextTable publishedTable(const results::Results& results, const std::string& measure) {
-  if (measure == "memory") return publishedMemory(results);
-  if (measure == "published_figures") return publishedInstructions(results);
+  if (declares(results, results::DecisionRole::kPublishedMemory, measure))
+    return publishedMemory(results);
+  if (declares(results, results::DecisionRole::kPublishedCost, measure))
+    return publishedInstructions(results);
   return {};
 }
 

@@ -38,7 +38,7 @@ TextTable summaryTable(const results::Results& results, const SummaryTableOption
 // The measures with a published table: "memory" (NVIDIA's displacement subdivision surfaces
 // talk's memory table) and "published_figures" (its Bezier instruction counts and the DirectX SDK
 // SubD10 sample's ACC shader costs).
-bool hasPublishedTable(const std::string& measure);
+bool hasPublishedTable(const results::Results& results, const std::string& measure);
 // The published figures beside ours from the same run; rows empty when the run has none.
 TextTable publishedTable(const results::Results& results, const std::string& measure);
 

@@ -86,6 +86,52 @@ ComparisonSpec comparisonFromJson(const Json& json, const std::string& at) {
   return spec;
 }
 
+Json decisionInputsToJson(const std::vector<DecisionInput>& inputs) {
+  Json out = Json::array();
+  for (const DecisionInput& input : inputs) {
+    out.push_back({{"role", toString(input.role)},
+                   {"label", input.label},
+                   {"column", input.column},
+                   {"metrics", input.metrics},
+                   {"per", input.per},
+                   {"where", input.where},
+                   {"any_of", input.any_of},
+                   {"reduce", toString(input.reduce)},
+                   {"valid_flag", input.valid_flag},
+                   {"path", input.path},
+                   {"rows_on_path", input.rows_on_path},
+                   {"device_rows", input.device_rows},
+                   {"first_of", input.first_of},
+                   {"chosen_key", input.chosen_key},
+                   {"precedence", input.precedence}});
+  }
+  return out;
+}
+
+DecisionInput decisionInputFromJson(const Json& json, const std::string& at) {
+  DecisionInput input;
+  const auto role = parseDecisionRole(field<std::string>(json, "role", at));
+  if (!role) throw std::runtime_error(at + ": unknown decision role");
+  input.role = *role;
+  input.label = field<std::string>(json, "label", at);
+  input.column = field<std::string>(json, "column", at);
+  input.metrics = field<std::vector<std::string>>(json, "metrics", at);
+  input.per = field<std::string>(json, "per", at);
+  input.where = field<RowScope>(json, "where", at);
+  input.any_of = field<std::vector<RowScope>>(json, "any_of", at);
+  const auto reduce = parseDecisionReduce(field<std::string>(json, "reduce", at));
+  if (!reduce) throw std::runtime_error(at + ": unknown decision reduce");
+  input.reduce = *reduce;
+  input.valid_flag = field<std::string>(json, "valid_flag", at);
+  input.path = field<std::string>(json, "path", at);
+  input.rows_on_path = field<bool>(json, "rows_on_path", at);
+  input.device_rows = field<RowScope>(json, "device_rows", at);
+  input.first_of = field<std::string>(json, "first_of", at);
+  input.chosen_key = field<std::string>(json, "chosen_key", at);
+  input.precedence = field<int>(json, "precedence", at);
+  return input;
+}
+
 }  // namespace
 
 Json toJson(const MeasureDeclaration& declaration) {
@@ -107,6 +153,9 @@ Json toJson(const MeasureDeclaration& declaration) {
   if (!declaration.control_rows.empty()) json["control_rows"] = declaration.control_rows;
   if (!declaration.comparisons.empty()) {
     json["comparisons"] = comparisonsToJson(declaration.comparisons);
+  }
+  if (!declaration.decision_inputs.empty()) {
+    json["decision_inputs"] = decisionInputsToJson(declaration.decision_inputs);
   }
   return json;
 }
@@ -146,6 +195,15 @@ MeasureDeclaration declarationFromJson(const Json& json, const std::string& wher
     for (size_t i = 0; i < comparisons.size(); ++i) {
       declaration.comparisons.push_back(
           comparisonFromJson(comparisons[i], where + ".comparisons[" + std::to_string(i) + "]"));
+    }
+  }
+  // Absent in results written before decision inputs (harness/measures fills them in from
+  // the registered measure: completeDeclarations).
+  if (json.contains("decision_inputs")) {
+    const Json inputs = field<Json>(json, "decision_inputs", where);
+    for (size_t i = 0; i < inputs.size(); ++i) {
+      declaration.decision_inputs.push_back(
+          decisionInputFromJson(inputs[i], where + ".decision_inputs[" + std::to_string(i) + "]"));
     }
   }
   return declaration;

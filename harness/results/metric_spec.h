@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "harness/results/decision_input.h"
+
 namespace tb::results {
 
 // The closed set of units. A new metric picks one of these; a unit that does not fit is
@@ -140,6 +142,8 @@ struct MeasureDeclaration {
   std::vector<RowScope> control_rows = {};
   // Side-by-side tables (report.md, opening the section) and bar charts (report.html).
   std::vector<ComparisonSpec> comparisons = {};
+  // The figures a decision, the answers and the report's tables read (decision_input.h).
+  std::vector<DecisionInput> decision_inputs = {};
   const MetricSpec* find(std::string_view name) const;
 };
 

@@ -23,14 +23,14 @@ class WholePathMeasure final : public measures::Measure {
  public:
   const measures::MeasureInfo& info() const override {
     static const measures::MeasureInfo kInfo{
-        "test_whole_path",
-        "whole path",
-        "frames of the path",
-        {{"frames", results::Unit::kCount, results::Direction::kNone},
-         {"eye_x", results::Unit::kWorld, results::Direction::kNone},
-         {"full_suite", results::Unit::kCount, results::Direction::kNone}},
-        {},
-        {}};
+        .id = "test_whole_path",
+        .title = "whole path",
+        .description = "frames of the path",
+        .metrics = {{"frames", results::Unit::kCount, results::Direction::kNone},
+                    {"eye_x", results::Unit::kWorld, results::Direction::kNone},
+                    {"full_suite", results::Unit::kCount, results::Direction::kNone}},
+        .headline = {},
+        .notes = {}};
     return kInfo;
   }
   measures::MeasureRequirements requirements() const override {
@@ -60,12 +60,12 @@ class OneViewMeasure final : public measures::Measure {
  public:
   const measures::MeasureInfo& info() const override {
     static const measures::MeasureInfo kInfo{
-        "test_one_view",
-        "one view",
-        "viewport width",
-        {{"width", results::Unit::kPixels, results::Direction::kNone}},
-        {},
-        {}};
+        .id = "test_one_view",
+        .title = "one view",
+        .description = "viewport width",
+        .metrics = {{"width", results::Unit::kPixels, results::Direction::kNone}},
+        .headline = {},
+        .notes = {}};
     return kInfo;
   }
   measures::MeasureRequirements requirements() const override {

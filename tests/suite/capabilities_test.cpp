@@ -20,12 +20,12 @@ class SurfaceCountMeasure final : public measures::Measure {
  public:
   const measures::MeasureInfo& info() const override {
     static const measures::MeasureInfo kInfo{
-        "test_surface_count",
-        "patches",
-        "patch count",
-        {{"patches", results::Unit::kCount, results::Direction::kNone}},
-        {},
-        {}};
+        .id = "test_surface_count",
+        .title = "patches",
+        .description = "patch count",
+        .metrics = {{"patches", results::Unit::kCount, results::Direction::kNone}},
+        .headline = {},
+        .notes = {}};
     return kInfo;
   }
   measures::MeasureRequirements requirements() const override {
@@ -44,16 +44,16 @@ class SimulationStepMeasure final : public measures::Measure {
  public:
   const measures::MeasureInfo& info() const override {
     static const measures::MeasureInfo kInfo{
-        "test_simulation_steps",
-        "steps",
-        "state after the scenario",
-        {{"start_time", results::Unit::kSeconds, results::Direction::kNone},
-         {"time", results::Unit::kSeconds, results::Direction::kNone},
-         {"elements", results::Unit::kCount, results::Direction::kNone},
-         {"last_position", results::Unit::kWorld, results::Direction::kNone},
-         {"state_bytes", results::Unit::kBytes, results::Direction::kLowerIsBetter}},
-        {"state_bytes"},
-        {}};
+        .id = "test_simulation_steps",
+        .title = "steps",
+        .description = "state after the scenario",
+        .metrics = {{"start_time", results::Unit::kSeconds, results::Direction::kNone},
+                    {"time", results::Unit::kSeconds, results::Direction::kNone},
+                    {"elements", results::Unit::kCount, results::Direction::kNone},
+                    {"last_position", results::Unit::kWorld, results::Direction::kNone},
+                    {"state_bytes", results::Unit::kBytes, results::Direction::kLowerIsBetter}},
+        .headline = {"state_bytes"},
+        .notes = {}};
     return kInfo;
   }
   measures::MeasureRequirements requirements() const override {
@@ -83,14 +83,14 @@ class ViewMeasure final : public measures::Measure {
  public:
   const measures::MeasureInfo& info() const override {
     static const measures::MeasureInfo kInfo{
-        "test_view",
-        "view",
-        "projected first vertex",
-        {{"x", results::Unit::kPixels, results::Direction::kNone},
-         {"y", results::Unit::kPixels, results::Direction::kNone},
-         {"width", results::Unit::kPixels, results::Direction::kNone}},
-        {},
-        {}};
+        .id = "test_view",
+        .title = "view",
+        .description = "projected first vertex",
+        .metrics = {{"x", results::Unit::kPixels, results::Direction::kNone},
+                    {"y", results::Unit::kPixels, results::Direction::kNone},
+                    {"width", results::Unit::kPixels, results::Direction::kNone}},
+        .headline = {},
+        .notes = {}};
     return kInfo;
   }
   measures::MeasureRequirements requirements() const override {

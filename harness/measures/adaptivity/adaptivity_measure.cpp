@@ -374,33 +374,35 @@ class AdaptivityMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "adaptivity",
-        "Tessellation-factor adaptivity along camera paths",
-        "view-dependent factor policies per frame of a camera path: triangles, crack safety of "
-        "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
-        "triangles a policy needs for a 1 px tessellation error against uniform levels",
-        allSpecs(),
-        {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal", "factor_mismatches_cpu",
-         "tess_error_max_px"},
-        adaptivityNotes(),
-        {},
+        .id = "adaptivity",
+        .title = "Tessellation-factor adaptivity along camera paths",
+        .description =
+            "view-dependent factor policies per frame of a camera path: triangles, crack safety of "
+            "the factors, on-screen edge length, screen-space error and popping in pixels; and the "
+            "triangles a policy needs for a 1 px tessellation error against uniform levels",
+        .metrics = allSpecs(),
+        .headline = {"triangle_ratio_vs_uniform", "triangle_ratio_vs_ideal",
+                     "factor_mismatches_cpu", "tess_error_max_px"},
+        .notes = adaptivityNotes(),
+        .summary_scope = {},
         // The per-frame trade-off of each policy: triangles drawn against the largest
         // on-screen tessellation error, one chart per asset (every technique's frames).
-        {results::PlotSpec{.title = "Triangles against tessellation error in pixels, per frame",
-                           .kind = results::PlotKind::kScatter,
-                           .x = "tess_error_max_px",
-                           .y = "triangles",
-                           .series = "policy",
-                           .facet = "asset",
-                           .where = {{"frame", "*"}},
-                           .log_x = true,
-                           .log_y = true}},
+        .plots = {results::PlotSpec{
+            .title = "Triangles against tessellation error in pixels, per frame",
+            .kind = results::PlotKind::kScatter,
+            .x = "tess_error_max_px",
+            .y = "triangles",
+            .series = "policy",
+            .facet = "asset",
+            .where = {{"frame", "*"}},
+            .log_x = true,
+            .log_y = true}},
         // control_rows: the crack-unsafe policies, and the error bound loosened on purpose.
-        {{{"policy", "*_order_dependent"}},
-         {{"policy", "error_bound_loose"}},
-         {{"policy", "error_bound_dense"}}},
+        .control_rows = {{{"policy", "*_order_dependent"}},
+                         {{"policy", "error_bound_loose"}},
+                         {{"policy", "error_bound_dense"}}},
         // comparisons: triangles per frame at 1 px per policy, against uniform and the ideal.
-        {results::ComparisonSpec{
+        .comparisons = {results::ComparisonSpec{
             .title = "Triangles per frame at a 1 px tessellation error (fewer is better); "
                      "ideal = the per-patch optimum every policy is held against",
             .where = {{"summary", kSummaryKey}},
@@ -409,7 +411,21 @@ class AdaptivityMeasure final : public Measure {
             .valid_flag = "target_reached",
             .extra_columns = {{"uniform", "uniform_triangles_per_frame"},
                               {"ideal", "ideal_triangles_per_frame"}},
-            .facets = {"asset", "camera_path"}}}};
+            .facets = {"asset", "camera_path"}}},
+        .decision_inputs = {{.role = results::DecisionRole::kTrianglesAtTarget,
+                             .label = "triangles at 1 px",
+                             .column = "triangles/frame at 1 px (count, best policy)",
+                             .metrics = {"triangles_per_frame_at_target"},
+                             .where = {{"summary", kSummaryKey}},
+                             .reduce = results::DecisionReduce::kMin,
+                             .valid_flag = "target_reached",
+                             .first_of = "camera_path",
+                             .chosen_key = "policy"},
+                            {.role = results::DecisionRole::kTriangleRatio,
+                             .label = "triangles against uniform's at 1 px",
+                             .metrics = {"triangle_ratio_vs_uniform"},
+                             .where = {{"summary", kSummaryKey}},
+                             .chosen_key = "policy"}}};
     return kInfo;
   }
 

@@ -157,46 +157,69 @@ class ConvergenceMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "convergence",
-        "Convergence of the constraint solvers",
-        "RMS relative stretch after each solver iteration on a fixed satisfiable frame, "
-        "iterations to 1e-3 and 1e-5 of the initial residual, and the residual a budget of "
-        "8 GPU dispatches per frame reaches, with and without goal springs",
-        convergenceTable().specs(),
+        .id = "convergence",
+        .title = "Convergence of the constraint solvers",
+        .description =
+            "RMS relative stretch after each solver iteration on a fixed satisfiable frame, "
+            "iterations to 1e-3 and 1e-5 of the initial residual, and the residual a budget of "
+            "8 GPU dispatches per frame reaches, with and without goal springs",
+        .metrics = convergenceTable().specs(),
         // iterations_to_1e-3's worst counts only the rows that reached it; reached_1e-3's
         // worst (0) says when one did not.
-        {"residual_at_8_dispatches_no_goal_springs", "residual_at_8_dispatches_goal_springs",
-         "iterations_to_1e-3", "reached_1e-3", "dispatches_per_iteration"},
-        {"frame: the rest pose's constraints (every spring at rest length, every goal spring on "
-         "its vertex: satisfiable), from positions displaced by a hashed jitter of up to 0.3 "
-         "mean spring lengths per coordinate",
-         "residual: RMS over every spring of (length - rest) / rest, goal springs (rest 0) as "
-         "length / mean spring length; iterations_to_1e-3 counts iterations until residual / "
-         "initial residual <= 1e-3; absent with reached_1e-3 = 0 when not reached within "
-         "iteration_budget",
-         "position_error: RMS distance from the converged reference (serial Gauss-Seidel in "
-         "double, index order, to 1e-12 of the initial residual) over the mean spring length; "
-         "without goal springs the constraints have many solutions, so a solver may converge "
-         "to another one",
-         "8 dispatches: dispatches per iteration are the colour count for Gauss-Seidel (one "
-         "batch per dispatch) and 1 for Jacobi; a coloured sweep of more than 8 colours does "
-         "its first 8 (iterations_at_8_dispatches = 8 / dispatches_per_iteration < 1); "
-         "gs_serial, with no GPU path, is the reference: max(1, round(8 / colours)) whole "
-         "sweeps",
-         "colours: the greedy colouring of every spring (in spring order: surface, inner, "
-         "goal); colours_surface and colours_surface_goal colour those subsets, to set "
-         "beside the Lost Planet 2 talk's 'at most 8 batches' for its DirectX 9 version "
-         "(surface and goal springs only); every count is at least the largest valence",
-         "solvers run in float, as the GPU; the reference in double"},
-        {{"kind", "summary"}},
-        {results::PlotSpec{.title = "Residual against solver iterations",
-                           .kind = results::PlotKind::kLine,
-                           .x = "iteration",
-                           .y = "residual",
-                           .series = "variant",
-                           .facet = "goal_springs",
-                           .where = {{"kind", "iteration"}},
-                           .log_y = true}}};
+        .headline = {"residual_at_8_dispatches_no_goal_springs",
+                     "residual_at_8_dispatches_goal_springs", "iterations_to_1e-3", "reached_1e-3",
+                     "dispatches_per_iteration"},
+        .notes =
+            {"frame: the rest pose's constraints (every spring at rest length, every goal spring "
+             "on "
+             "its vertex: satisfiable), from positions displaced by a hashed jitter of up to 0.3 "
+             "mean spring lengths per coordinate",
+             "residual: RMS over every spring of (length - rest) / rest, goal springs (rest 0) as "
+             "length / mean spring length; iterations_to_1e-3 counts iterations until residual / "
+             "initial residual <= 1e-3; absent with reached_1e-3 = 0 when not reached within "
+             "iteration_budget",
+             "position_error: RMS distance from the converged reference (serial Gauss-Seidel in "
+             "double, index order, to 1e-12 of the initial residual) over the mean spring length; "
+             "without goal springs the constraints have many solutions, so a solver may converge "
+             "to another one",
+             "8 dispatches: dispatches per iteration are the colour count for Gauss-Seidel (one "
+             "batch per dispatch) and 1 for Jacobi; a coloured sweep of more than 8 colours does "
+             "its first 8 (iterations_at_8_dispatches = 8 / dispatches_per_iteration < 1); "
+             "gs_serial, with no GPU path, is the reference: max(1, round(8 / colours)) whole "
+             "sweeps",
+             "colours: the greedy colouring of every spring (in spring order: surface, inner, "
+             "goal); colours_surface and colours_surface_goal colour those subsets, to set "
+             "beside the Lost Planet 2 talk's 'at most 8 batches' for its DirectX 9 version "
+             "(surface and goal springs only); every count is at least the largest valence",
+             "solvers run in float, as the GPU; the reference in double"},
+        .summary_scope = {{"kind", "summary"}},
+        .plots = {results::PlotSpec{.title = "Residual against solver iterations",
+                                    .kind = results::PlotKind::kLine,
+                                    .x = "iteration",
+                                    .y = "residual",
+                                    .series = "variant",
+                                    .facet = "goal_springs",
+                                    .where = {{"kind", "iteration"}},
+                                    .log_y = true}},
+        .decision_inputs = {
+            {.role = results::DecisionRole::kSolverResidual,
+             .label = "residual after 8 compute dispatches",
+             .metrics = {"residual_at_8_dispatches_no_goal_springs"}},
+            {.role = results::DecisionRole::kSimulationFigure,
+             .label = "per scenario",
+             .metrics = {"residual_at_8_dispatches_no_goal_springs",
+                         "residual_at_8_dispatches_goal_springs", "iterations_to_1e-3"}},
+            {.role = results::DecisionRole::kDispatchesPerIteration,
+             .label = "compute dispatches per iteration",
+             .metrics = {"dispatches_per_iteration"},
+             .where = {{"kind", "summary"}, {"goal_springs", "false"}},
+             .reduce = results::DecisionReduce::kLast},
+            {.role = results::DecisionRole::kResidualPerDispatch,
+             .label = "residual",
+             .column = "residual (ratio)",
+             .metrics = {"residual"},
+             .where = {{"kind", "iteration"}, {"goal_springs", "false"}},
+             .chosen_key = "iteration"}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -109,76 +109,104 @@ class CracksMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "cracks",
-        "Crack gaps between patches",
-        "gaps between the positions two patches compute at the same tessellated point of a "
-        "shared edge or corner, in world units and float ulps, on the CPU (float, shader order) "
-        "and on the device",
-        crackTable().specs(),
-        {"points_not_equal", "max_gap_world"},
-        {"an asset of more than 2,048 patches (kCrackPatchBudget) is compared on a sample "
-         "(patches_compared): every feature patch (a corner whose welded vertex has another "
-         "patch count than the regular 4 or 6, a boundary, hole or seam edge, a crease or "
-         "corner tag), then runs of 16 consecutive other patches, evenly spaced; shared_* count "
-         "its edges and corners with two or more sampled sides, and every figure covers a subset "
-         "of the full pairs (never more cracks, never a larger gap)",
-         "rows without a levels key: uniform levels (every outer and inner level = level); "
-         "shared edges and corners found "
-         "by welded control-mesh position (seam_edges: shared only after welding); each side "
-         "after the first is compared with the first at every tessellated point, paired by edge "
-         "parameter t <-> 1 - t",
-         "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
-         "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
-         "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
-         "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local edge k "
-         "runs from corner k to k + 1; t from corner local_a), -1 when none",
-         "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
-         "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO (path "
-         "tessellator), or its surface on the compute path (path compute: the compute "
-         "tessellator and the technique's compute shader, the same surface functions as its "
-         "TES, the boundary points kept; the default suite on catmark_xord_interior and "
-         "loop_xord_interior, --suite full on every asset of up to 2,048 patches; never "
-         "displaced); "
-         "vs_cpu_float_*: "
-         "every captured vertex (every boundary point of every patch) against evaluateFloat at "
-         "the same gl_TessCoord (0 on cpu_float rows by definition)",
-         "gpu backend at every level on every asset; the device captures only the boundary "
-         "points (vs_cpu_float_* cover those) and tessellates each patch with its outer levels "
-         "and its inner levels lowered to at most 1 (integer, pow2), 2 (fractional_even) or 3 "
-         "(fractional_odd) wherever the CPU tessellator shows the boundary points unchanged "
-         "(the interior is never compared)",
-         "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
-         "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
-         "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)",
-         "displaced surfaces (rows with displacement and sampling keys): the technique's patches "
-         "moved by a baked map; naive sampling reads each patch's own tile at its own (u, v), "
-         "watertight sampling reads a shared corner or edge from its owner's tile at the "
-         "owner's (u, v) (displacement direction from per-vertex data both sides share); "
-         "summaries leave these rows out, the chart below shows them"},
-        {{"displacement", ""}},
+        .id = "cracks",
+        .title = "Crack gaps between patches",
+        .description =
+            "gaps between the positions two patches compute at the same tessellated point of a "
+            "shared edge or corner, in world units and float ulps, on the CPU (float, shader "
+            "order) "
+            "and on the device",
+        .metrics = crackTable().specs(),
+        .headline = {"points_not_equal", "max_gap_world"},
+        .notes =
+            {"an asset of more than 2,048 patches (kCrackPatchBudget) is compared on a sample "
+             "(patches_compared): every feature patch (a corner whose welded vertex has another "
+             "patch count than the regular 4 or 6, a boundary, hole or seam edge, a crease or "
+             "corner tag), then runs of 16 consecutive other patches, evenly spaced; shared_* "
+             "count "
+             "its edges and corners with two or more sampled sides, and every figure covers a "
+             "subset "
+             "of the full pairs (never more cracks, never a larger gap)",
+             "rows without a levels key: uniform levels (every outer and inner level = level); "
+             "shared edges and corners found "
+             "by welded control-mesh position (seam_edges: shared only after welding); each side "
+             "after the first is compared with the first at every tessellated point, paired by "
+             "edge "
+             "parameter t <-> 1 - t",
+             "points_not_equal: some float component differs (+0 = -0); max_gap_ulp: max over "
+             "components of the float ulp distance (huge near 0: 1e-8 against 0 is ~8e8 ulp); "
+             "max_gap_scale_ulp: the largest component gap over the float spacing at the control "
+             "mesh's largest |coordinate|; worst_*: the pair with the largest world gap (local "
+             "edge k "
+             "runs from corner k to k + 1; t from corner local_a), -1 when none",
+             "cpu_float: SurfacePatches::evaluateFloat (the shader's operation order); gpu: the "
+             "technique's TCS/TES on the run's Vulkan device, positions captured by SSBO (path "
+             "tessellator), or its surface on the compute path (path compute: the compute "
+             "tessellator and the technique's compute shader, the same surface functions as its "
+             "TES, the boundary points kept; the default suite on catmark_xord_interior and "
+             "loop_xord_interior, --suite full on every asset of up to 2,048 patches; never "
+             "displaced); "
+             "vs_cpu_float_*: "
+             "every captured vertex (every boundary point of every patch) against evaluateFloat at "
+             "the same gl_TessCoord (0 on cpu_float rows by definition)",
+             "gpu backend at every level on every asset; the device captures only the boundary "
+             "points (vs_cpu_float_* cover those) and tessellates each patch with its outer levels "
+             "and its inner levels lowered to at most 1 (integer, pow2), 2 (fractional_even) or 3 "
+             "(fractional_odd) wherever the CPU tessellator shows the boundary points unchanged "
+             "(the interior is never compared)",
+             "levels = edge_pattern rows: per-edge levels, level = the base (edge levels base x "
+             "{0.5, 0.75, 1, 1.375, 1.75} by a hash of the edge's two welded end vertices, so both "
+             "sides of a shared edge agree; inner levels the D3D11 average of the patch's edges)",
+             "displaced surfaces (rows with displacement and sampling keys): the technique's "
+             "patches "
+             "moved by a baked map; naive sampling reads each patch's own tile at its own (u, v), "
+             "watertight sampling reads a shared corner or edge from its owner's tile at the "
+             "owner's (u, v) (displacement direction from per-vertex data both sides share); "
+             "summaries leave these rows out, the chart below shows them"},
+        .summary_scope = {{"displacement", ""}},
         // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
-        {results::PlotSpec{
-             .title = "Points where two patches differ, per variant (the largest count over "
-                      "assets, spacings and levels; no bar: 0, watertight)",
-             .kind = results::PlotKind::kBar,
-             .x = "variant",
-             .y = "points_not_equal",
-             .series = "backend",
-             .facet = "",
-             .where = {{"displacement", ""}},
-             .log_y = true,
-             .reduce = results::PlotReduce::kMax},
-         results::PlotSpec{.title =
-                               "Displaced surfaces: points where two patches differ, per sampling "
+        .plots = {results::PlotSpec{
+                      .title =
+                          "Points where two patches differ, per variant (the largest count over "
+                          "assets, spacings and levels; no bar: 0, watertight)",
+                      .kind = results::PlotKind::kBar,
+                      .x = "variant",
+                      .y = "points_not_equal",
+                      .series = "backend",
+                      .facet = "",
+                      .where = {{"displacement", ""}},
+                      .log_y = true,
+                      .reduce = results::PlotReduce::kMax},
+                  results::PlotSpec{
+                      .title = "Displaced surfaces: points where two patches differ, per sampling "
                                "(largest count over maps, spacings and levels; no bar: watertight)",
-                           .kind = results::PlotKind::kBar,
-                           .x = "sampling",
-                           .y = "points_not_equal",
-                           .series = "backend",
-                           .facet = "",
-                           .where = {{"displacement", "*"}},
-                           .log_y = true,
-                           .reduce = results::PlotReduce::kMax}}};
+                      .kind = results::PlotKind::kBar,
+                      .x = "sampling",
+                      .y = "points_not_equal",
+                      .series = "backend",
+                      .facet = "",
+                      .where = {{"displacement", "*"}},
+                      .log_y = true,
+                      .reduce = results::PlotReduce::kMax}},
+        .decision_inputs = {{.role = results::DecisionRole::kCrackPoints,
+                             .label = "points that differ or are unpaired",
+                             .metrics = {"points_not_equal", "unpaired_points"},
+                             .rows_on_path = true,
+                             .device_rows = {{"backend", "gpu"}}},
+                            {.role = results::DecisionRole::kCrackGap,
+                             .label = "largest gap",
+                             .metrics = {"max_gap_world"}},
+                            {.role = results::DecisionRole::kCrackPlace,
+                             .label = "where the largest gap is",
+                             .metrics = {"worst_patch_a", "worst_local_a", "worst_patch_b",
+                                         "worst_local_b", "worst_is_corner", "worst_t"}},
+                            {.role = results::DecisionRole::kCrackPicture,
+                             .label = "CPU float cracks drawn",
+                             .metrics = {"points_not_equal"},
+                             .where = {{"backend", "cpu_float"}, {"displacement", ""}}},
+                            {.role = results::DecisionRole::kAdviceCracks,
+                             .label = "yes when every row is bitwise watertight",
+                             .metrics = {"points_not_equal", "unpaired_points"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -240,43 +240,63 @@ class CullingMeasure final : public Measure {
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo = [] {
       MeasureInfo info{
-          "culling",
-          "Patch culling effectiveness, with false culls counted against a render",
-          "patch culling policies per frame of a camera path: patches culled, TES invocations "
-          "saved (lavapipe pipeline statistics), false culls (culled patches that show pixels in "
-          "a render of the unculled surface) and missed culls (patches an ideal back-face and "
-          "frustum culler would remove)",
-          allSpecs(),
-          {"cull_efficiency", "total_false_culls", "mean_tes_saving", "mean_culled_fraction"},
-          {"efficiency: cull_efficiency = the oracle's cullable patches the policy culls / the "
-           "oracle's cullable patches (summed over the path's frames in the summary rows); "
-           "back_facing_efficiency = what the policy's back-facing half (backface_lp2, cone; "
-           "combined: its cone) culls of the patches whose every triangle faces away; "
-           "frustum_efficiency = what its frustum half (frustum_*; combined: frustum_hull) culls "
-           "of the patches whose every triangle lies outside the frustum",
-           "summary rows (summary = path), one per policy over the camera path: "
-           "mean_culled_fraction and mean_tes_saving are means over the frames (0.5: half the "
-           "patches or TES invocations removed); total_* are sums over the frames",
-           "false culls: a patch the policy culls that covers at least one pixel of a render of "
-           "the unculled tessellated surface on lavapipe (the technique's own TCS and TES, depth "
-           "test, fixed-function back-face culling, a per-patch ID target); false_cull_pixels = "
-           "the pixels those patches show. Occlusion by other patches is not a reason to cull",
-           "missed culls: a patch kept although every one of its tessellated triangles is "
-           "back-facing (screen-space winding) or entirely outside one frustum plane (clip test): "
-           "an ideal back-face + frustum culler removes it; a front-facing patch too small to "
-           "cover a pixel is not missed",
-           "counts: tes_invocations and triangles from the CPU tessellator for the patches the "
-           "twin keeps, at one uniform integer level; gpu_*: lavapipe's pipeline statistics "
-           "(TES invocations) and VK_EXT_primitives_generated_query with the TCS culling; "
-           "twin_mismatches: patches whose TCS decision differs from the CPU twin's",
-           "compute_mismatches: patches whose decision on the compute path (the policy in "
-           "compute through the TCS's own cull.glsl, core/gpu/compute_levels.h) differs from "
-           "the TCS's; --suite full, and the default suite on catmark_xord_interior and "
-           "loop_xord_interior",
-           "default suite: level 4, the render at half the path's resolution per axis (960 x "
-           "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); --suite "
-           "full: level 8 at the path's resolution, every variant, every frame of the three "
-           "paths"}};
+          .id = "culling",
+          .title = "Patch culling effectiveness, with false culls counted against a render",
+          .description =
+              "patch culling policies per frame of a camera path: patches culled, TES invocations "
+              "saved (lavapipe pipeline statistics), false culls (culled patches that show pixels "
+              "in "
+              "a render of the unculled surface) and missed culls (patches an ideal back-face and "
+              "frustum culler would remove)",
+          .metrics = allSpecs(),
+          .headline = {"cull_efficiency", "total_false_culls", "mean_tes_saving",
+                       "mean_culled_fraction"},
+          .notes =
+              {"efficiency: cull_efficiency = the oracle's cullable patches the policy culls / the "
+               "oracle's cullable patches (summed over the path's frames in the summary rows); "
+               "back_facing_efficiency = what the policy's back-facing half (backface_lp2, cone; "
+               "combined: its cone) culls of the patches whose every triangle faces away; "
+               "frustum_efficiency = what its frustum half (frustum_*; combined: frustum_hull) "
+               "culls "
+               "of the patches whose every triangle lies outside the frustum",
+               "summary rows (summary = path), one per policy over the camera path: "
+               "mean_culled_fraction and mean_tes_saving are means over the frames (0.5: half the "
+               "patches or TES invocations removed); total_* are sums over the frames",
+               "false culls: a patch the policy culls that covers at least one pixel of a render "
+               "of "
+               "the unculled tessellated surface on lavapipe (the technique's own TCS and TES, "
+               "depth "
+               "test, fixed-function back-face culling, a per-patch ID target); false_cull_pixels "
+               "= "
+               "the pixels those patches show. Occlusion by other patches is not a reason to cull",
+               "missed culls: a patch kept although every one of its tessellated triangles is "
+               "back-facing (screen-space winding) or entirely outside one frustum plane (clip "
+               "test): "
+               "an ideal back-face + frustum culler removes it; a front-facing patch too small to "
+               "cover a pixel is not missed",
+               "counts: tes_invocations and triangles from the CPU tessellator for the patches the "
+               "twin keeps, at one uniform integer level; gpu_*: lavapipe's pipeline statistics "
+               "(TES invocations) and VK_EXT_primitives_generated_query with the TCS culling; "
+               "twin_mismatches: patches whose TCS decision differs from the CPU twin's",
+               "compute_mismatches: patches whose decision on the compute path (the policy in "
+               "compute through the TCS's own cull.glsl, core/gpu/compute_levels.h) differs from "
+               "the TCS's; --suite full, and the default suite on catmark_xord_interior and "
+               "loop_xord_interior",
+               "default suite: level 4, the render at half the path's resolution per axis (960 x "
+               "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); "
+               "--suite "
+               "full: level 8 at the path's resolution, every variant, every frame of the three "
+               "paths"},
+          .decision_inputs = {{.role = results::DecisionRole::kCullEfficiency,
+                               .label = "share of what an ideal culler removes",
+                               .metrics = {"cull_efficiency"},
+                               .where = {{"summary", "path"}},
+                               .chosen_key = "policy"},
+                              {.role = results::DecisionRole::kFalseCulls,
+                               .label = "false culls",
+                               .metrics = {"total_false_culls"},
+                               .where = {{"summary", "path"}},
+                               .reduce = results::DecisionReduce::kSum}}};
       for (std::string& note : policyNotes()) info.notes.push_back(std::move(note));
       // The share of TES work each policy removes (its path summary rows; median over
       // assets and camera paths).

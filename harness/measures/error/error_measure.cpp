@@ -125,60 +125,68 @@ class ErrorMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "error",
-        "Error against the exact limit surface",
-        "parametric and two-sided Hausdorff distance (fraction of the bounding-box diagonal) "
-        "and normal deviation (degrees) against the OpenSubdiv Bfr limit",
-        errorSpecs(),
-        {"hausdorff", "parametric_max", "normal_max"},
-        {"distances are fractions of the bounding-box diagonal; normals in degrees",
-         "each technique against the limit of the scheme its patches approximate (row key "
-         "reference): by default triangle techniques against the Loop limit of their triangle "
-         "mesh, quad techniques against the Catmull-Clark limit (OpenSubdiv Bfr, double, "
-         "approximation level 10)",
-         "samples: a lattice of " + std::to_string(kErrorSampleLevel) +
-             " segments per patch edge; reference tessellated at rate " +
-             std::to_string(kErrorReferenceRate) +
-             "; near extraordinary (xord): corner weight >= 0.75",
-         "an asset of more than " + std::to_string(kErrorHausdorffPatchBudget) +
-             " patches: the Hausdorff figures sample patches (every patch at an extraordinary "
-             "vertex, a boundary, a hole or a crease, the rest evenly spaced, " +
-             std::to_string(kErrorHausdorffPatchBudget) +
-             " in all), each against the other surface over the sampled patches and their "
-             "neighbours: the largest distance over the sample, never above the full figure "
-             "(the record's note says so)",
-         "displaced surfaces (rows with a displacement key, reference baked_target): the "
-         "technique displaced by its map against the detailed target the map was baked from, "
-         "per tessellation level (lattice of level segments per patch edge; default suite "
-         "levels 4 and 16, full 2 to 32); hausdorff_target_to_tech includes the level's own "
-         "chordal error, so the level where it stops falling is where the map limits accuracy; "
-         "summaries leave these rows out"},
-        {{"displacement", ""}},
+        .id = "error",
+        .title = "Error against the exact limit surface",
+        .description =
+            "parametric and two-sided Hausdorff distance (fraction of the bounding-box diagonal) "
+            "and normal deviation (degrees) against the OpenSubdiv Bfr limit",
+        .metrics = errorSpecs(),
+        .headline = {"hausdorff", "parametric_max", "normal_max"},
+        .notes =
+            {"distances are fractions of the bounding-box diagonal; normals in degrees",
+             "each technique against the limit of the scheme its patches approximate (row key "
+             "reference): by default triangle techniques against the Loop limit of their triangle "
+             "mesh, quad techniques against the Catmull-Clark limit (OpenSubdiv Bfr, double, "
+             "approximation level 10)",
+             "samples: a lattice of " + std::to_string(kErrorSampleLevel) +
+                 " segments per patch edge; reference tessellated at rate " +
+                 std::to_string(kErrorReferenceRate) +
+                 "; near extraordinary (xord): corner weight >= 0.75",
+             "an asset of more than " + std::to_string(kErrorHausdorffPatchBudget) +
+                 " patches: the Hausdorff figures sample patches (every patch at an extraordinary "
+                 "vertex, a boundary, a hole or a crease, the rest evenly spaced, " +
+                 std::to_string(kErrorHausdorffPatchBudget) +
+                 " in all), each against the other surface over the sampled patches and their "
+                 "neighbours: the largest distance over the sample, never above the full figure "
+                 "(the record's note says so)",
+             "displaced surfaces (rows with a displacement key, reference baked_target): the "
+             "technique displaced by its map against the detailed target the map was baked from, "
+             "per tessellation level (lattice of level segments per patch edge; default suite "
+             "levels 4 and 16, full 2 to 32); hausdorff_target_to_tech includes the level's own "
+             "chordal error, so the level where it stops falling is where the map limits accuracy; "
+             "summaries leave these rows out"},
+        .summary_scope = {{"displacement", ""}},
         // What a technique's accuracy costs: its worst TES instruction count (the
         // instructions measure's summary scope) against its Hausdorff error, one chart per
         // asset, each technique × variant a point.
-        {results::PlotSpec{.title = "Hausdorff error against TES instructions",
-                           .kind = results::PlotKind::kScatter,
-                           .x = "instructions.total",
-                           .y = "hausdorff",
-                           .series = "technique",
-                           .facet = "asset",
-                           .where = {{"displacement", ""}},
-                           .log_y = true,
-                           .pareto_front = true},
-         // Displaced surfaces: error against the target by tessellation level, one line per
-         // map (its resolution in the row) and sampling.
-         results::PlotSpec{.title =
-                               "Displaced surfaces: Hausdorff distance to the baked target against "
+        .plots = {results::PlotSpec{.title = "Hausdorff error against TES instructions",
+                                    .kind = results::PlotKind::kScatter,
+                                    .x = "instructions.total",
+                                    .y = "hausdorff",
+                                    .series = "technique",
+                                    .facet = "asset",
+                                    .where = {{"displacement", ""}},
+                                    .log_y = true,
+                                    .pareto_front = true},
+                  // Displaced surfaces: error against the target by tessellation level, one line
+                  // per map (its resolution in the row) and sampling.
+                  results::PlotSpec{
+                      .title = "Displaced surfaces: Hausdorff distance to the baked target against "
                                "tessellation level",
-                           .kind = results::PlotKind::kLine,
-                           .x = "level",
-                           .y = "hausdorff",
-                           .series = "displacement",
-                           .facet = "sampling",
-                           .where = {{"displacement", "*"}},
-                           .log_x = true,
-                           .log_y = true}}};
+                      .kind = results::PlotKind::kLine,
+                      .x = "level",
+                      .y = "hausdorff",
+                      .series = "displacement",
+                      .facet = "sampling",
+                      .where = {{"displacement", "*"}},
+                      .log_x = true,
+                      .log_y = true}},
+        .decision_inputs = {
+            {.role = results::DecisionRole::kError, .label = "error", .metrics = {"hausdorff"}},
+            {.role = results::DecisionRole::kAdviceError,
+             .label = "two-sided Hausdorff distance to the limit surface, rel_diag: fraction of "
+                      "the bounding-box diagonal",
+             .metrics = {"hausdorff"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -83,38 +83,62 @@ class InstructionsMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "instructions",
-        "Instruction counts",
-        "SPIR-V instructions per stage after spirv-opt -O (vector and scalar-expanded), and exact "
-        "scalar operations per vertex and per patch set-up (counting scalar)",
-        countTable().specs(),
-        {"total", "float_arith"},
-        {"spirv_O rows: each stage specialised for the variant (its specialisation constants set "
-         "and frozen), then spirv-opt -O (SPIRV-Tools performance passes, Vulkan 1.3); every "
-         "instruction of a function body counted once, so a loop body counts once whatever its "
-         "trip count; declarations, labels, variables and merge annotations are not counted",
-         "expansion scalar: an instruction counts the components of its result (vec3 add = 3, "
-         "a store the stored value's, dot of n-vectors 2n-1); float_other: dot, negate and "
-         "GLSL.std.450 functions other than sqrt, inversesqrt and fma",
-         "counting_scalar rows: SurfacePatches::operationProfile, the technique's evaluator run "
-         "with CountingScalar in the shader's operation order; min and max over the asset's "
-         "patches by per-vertex total (a regular and the worst irregular patch); they count "
-         "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
-         "x86 instructions per TES invocation on lavapipe are not in this table (they need "
-         "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
-         "two levels, tessellator and TES JIT code together",
-         "summaries (report, table, advise) read the evaluation-stage rows: spirv_O, vector "
-         "expansion, the .tese stages (the work per tessellated vertex)",
-         "path: tessellator rows count the TCS and TES; compute rows the compute path's "
-         "technique shader in its two passes, each built with the pass fixed "
-         "(TB_COMPUTE_PASS): stage <shader>.comp#build runs once per patch (the TCS's work), "
-         "<shader>.comp#evaluate once per domain point (the TES's, plus the 40-byte record "
-         "write); the compute tessellator's kernels (gpu/tessellate.comp) are the same for "
-         "every technique and not listed",
-         "simulations: one spirv_O row pair per compute pass of each step program (program = "
-         "the program's name), specialised for the variant; a loop over walls or tree nodes "
-         "counts once; no counting_scalar rows"},
-        {{"source", "spirv_O"}, {"expansion", "vector"}, {"stage", "*.tese"}}};
+        .id = "instructions",
+        .title = "Instruction counts",
+        .description =
+            "SPIR-V instructions per stage after spirv-opt -O (vector and scalar-expanded), and "
+            "exact "
+            "scalar operations per vertex and per patch set-up (counting scalar)",
+        .metrics = countTable().specs(),
+        .headline = {"total", "float_arith"},
+        .notes =
+            {"spirv_O rows: each stage specialised for the variant (its specialisation constants "
+             "set "
+             "and frozen), then spirv-opt -O (SPIRV-Tools performance passes, Vulkan 1.3); every "
+             "instruction of a function body counted once, so a loop body counts once whatever its "
+             "trip count; declarations, labels, variables and merge annotations are not counted",
+             "expansion scalar: an instruction counts the components of its result (vec3 add = 3, "
+             "a store the stored value's, dot of n-vectors 2n-1); float_other: dot, negate and "
+             "GLSL.std.450 functions other than sqrt, inversesqrt and fma",
+             "counting_scalar rows: SurfacePatches::operationProfile, the technique's evaluator "
+             "run "
+             "with CountingScalar in the shader's operation order; min and max over the asset's "
+             "patches by per-vertex total (a regular and the worst irregular patch); they count "
+             "arithmetic only, so fma, float_other, load_store, control_flow and other are 0",
+             "x86 instructions per TES invocation on lavapipe are not in this table (they need "
+             "valgrind): bench/callgrind_tes.sh TECHNIQUE ASSET gives the callgrind slope between "
+             "two levels, tessellator and TES JIT code together",
+             "summaries (report, table, advise) read the evaluation-stage rows: spirv_O, vector "
+             "expansion, the .tese stages (the work per tessellated vertex)",
+             "path: tessellator rows count the TCS and TES; compute rows the compute path's "
+             "technique shader in its two passes, each built with the pass fixed "
+             "(TB_COMPUTE_PASS): stage <shader>.comp#build runs once per patch (the TCS's work), "
+             "<shader>.comp#evaluate once per domain point (the TES's, plus the 40-byte record "
+             "write); the compute tessellator's kernels (gpu/tessellate.comp) are the same for "
+             "every technique and not listed",
+             "simulations: one spirv_O row pair per compute pass of each step program (program = "
+             "the program's name), specialised for the variant; a loop over walls or tree nodes "
+             "counts once; no counting_scalar rows"},
+        .summary_scope = {{"source", "spirv_O"}, {"expansion", "vector"}, {"stage", "*.tese"}},
+        .decision_inputs = {
+            {.role = results::DecisionRole::kShaderCost,
+             .label = "TCS + TES instructions",
+             .column = "TCS + TES instructions (count; compute path: its build + evaluate passes)",
+             .metrics = {"total"},
+             .where = {{"expansion", "vector"}, {"source", "spirv_O"}},
+             .any_of = {{{"stage", "*.tesc"}}, {{"stage", "*.tese"}}},
+             .reduce = results::DecisionReduce::kSum},
+            {.role = results::DecisionRole::kShaderCost,
+             .label = "build + evaluate instructions",
+             .metrics = {"total"},
+             .where = {{"expansion", "vector"}, {"source", "spirv_O"}},
+             .any_of = {{{"stage", "*#build"}}, {{"stage", "*#evaluate"}}},
+             .reduce = results::DecisionReduce::kSum,
+             .path = results::kComputePath},
+            {.role = results::DecisionRole::kAdviceCost,
+             .label = "total SPIR-V instructions of the domain (.tese) stage after spirv-opt -O, "
+                      "per vector instruction (count)",
+             .metrics = {"total"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -196,64 +196,96 @@ class MemoryMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "memory",
-        "Memory footprint against plain triangle meshes",
-        "bytes of the technique's data (plus a 16-bit displacement map) against the equivalent "
-        "welded triangle mesh at uniform levels 8, 16, 32, 64",
-        memorySpecs(),
-        {"plain_over_technique", "technique_with_displacement_bytes"},
-        {"plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
-         "32-bit indices, with the tessellator's point and triangle counts",
-         "displacement map: 16-bit, one texel per tessellated point of each patch; vector "
-         "displacement: 3 x 16 bits per texel",
-         "compressed: the plain mesh actually built (technique evaluated in float at the CPU "
-         "tessellator's points, welded like plain_vertices, uv interpolated from the patch "
-         "corners), vertex-cache and vertex-fetch optimised, then meshopt_encodeIndexBuffer + "
-         "meshopt_encodeVertexBuffer on the raw 32-byte float vertices (meshoptimizer " +
-             std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
-             std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "), per chunk of " +
-             std::to_string(kCompressChunkPatches) +
-             " patches in patch order (the whole mesh below that; points on an edge between "
-             "chunks stored in each), sizes summed; an asset of more than " +
-             std::to_string(kCompressSampleChunks) + " chunks (" +
-             std::to_string(kCompressSampleChunks * kCompressChunkPatches) +
-             " patches) is sampled: " + std::to_string(kCompressSampleChunks) +
-             " evenly spaced chunks built, their bytes scaled by patches (the record's note "
-             "says so; within 0.3 % of every chunk on the production assets); the default "
-             "suite builds it at levels 8 and 16, --suite full at every level",
-         "NVIDIA's displacement subdivision surfaces talk's table (16/59/236/943 MB against "
-         "1.9/7.5/30/118 MB at levels 8..64, x8) fits "
-         "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
-         "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = 15.6k) "
-         "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. Here "
-         "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad patches "
-         "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
-         "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)",
-         "displaced surfaces (rows with a displacement key): displacement_bytes and the vector_* "
-         "figures are the real map's GPU-resident bytes (R16/R32 float for a scalar map, RGBA for "
-         "a vector map, no mips) instead of the per-vertex assumption, patch_data_bytes includes "
-         "the 33 words per patch of owners and corner directions the displaced TES reads, and "
-         "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record has "
-         "it); summaries leave these rows out",
-         "path = compute rows: the same level drawn through the compute path "
-         "(core/gpu/compute_path.h), which writes every patch's points (unwelded, a 40-byte "
-         "record: patch, coordinate, position, normal) and triangles (32-bit indices) to "
-         "transient device buffers each frame; transient_* are those bytes, 0 on the "
-         "tessellator path's rows (its points stream from the TES to the rasteriser)",
-         "simulations (rows keyed by state = resident): Simulation::footprint, the state and "
-         "auxiliary buffers the GPU keeps for the scenario, against the alternative the "
-         "simulation names (its record's note says which)"},
-        {{"displacement", ""}},
+        .id = "memory",
+        .title = "Memory footprint against plain triangle meshes",
+        .description =
+            "bytes of the technique's data (plus a 16-bit displacement map) against the equivalent "
+            "welded triangle mesh at uniform levels 8, 16, 32, 64",
+        .metrics = memorySpecs(),
+        .headline = {"plain_over_technique", "technique_with_displacement_bytes"},
+        .notes =
+            {"plain mesh: welded vertices of float3 position, float3 normal, float2 uv (32 B) and "
+             "32-bit indices, with the tessellator's point and triangle counts",
+             "displacement map: 16-bit, one texel per tessellated point of each patch; vector "
+             "displacement: 3 x 16 bits per texel",
+             "compressed: the plain mesh actually built (technique evaluated in float at the CPU "
+             "tessellator's points, welded like plain_vertices, uv interpolated from the patch "
+             "corners), vertex-cache and vertex-fetch optimised, then meshopt_encodeIndexBuffer + "
+             "meshopt_encodeVertexBuffer on the raw 32-byte float vertices (meshoptimizer " +
+                 std::to_string(MESHOPTIMIZER_VERSION / 1000) + "." +
+                 std::to_string(MESHOPTIMIZER_VERSION % 1000 / 10) + "), per chunk of " +
+                 std::to_string(kCompressChunkPatches) +
+                 " patches in patch order (the whole mesh below that; points on an edge between "
+                 "chunks stored in each), sizes summed; an asset of more than " +
+                 std::to_string(kCompressSampleChunks) + " chunks (" +
+                 std::to_string(kCompressSampleChunks * kCompressChunkPatches) +
+                 " patches) is sampled: " + std::to_string(kCompressSampleChunks) +
+                 " evenly spaced chunks built, their bytes scaled by patches (the record's note "
+                 "says so; within 0.3 % of every chunk on the production assets); the default "
+                 "suite builds it at levels 8 and 16, --suite full at every level",
+             "NVIDIA's displacement subdivision surfaces talk's table (16/59/236/943 MB against "
+             "1.9/7.5/30/118 MB at levels 8..64, x8) fits "
+             "about 14-15 thousand quad patches, a plain mesh of about 16 B per tessellated vertex "
+             "with no index cost (943e6 B / (16 B x 64^2) = 14.4k patches; 16e6 / (16 x 8^2) = "
+             "15.6k) "
+             "against one 16-bit texel per vertex and negligible control data: 16 B / 2 B = 8. "
+             "Here "
+             "the plain vertex is 32 B plus 2 triangles x 12 B of indices per point, so quad "
+             "patches "
+             "give about 56 / 2 = 28 at high levels; triangle patches more (about 42: the D3D11 "
+             "triangle domain has ~3n^2/4 points at level n but the map (n+1)(n+2)/2 texels)",
+             "displaced surfaces (rows with a displacement key): displacement_bytes and the "
+             "vector_* "
+             "figures are the real map's GPU-resident bytes (R16/R32 float for a scalar map, RGBA "
+             "for "
+             "a vector map, no mips) instead of the per-vertex assumption, patch_data_bytes "
+             "includes "
+             "the 33 words per patch of owners and corner directions the displaced TES reads, and "
+             "map_file_bytes is the EXR on disk; no compressed_* baseline (the undisplaced record "
+             "has "
+             "it); summaries leave these rows out",
+             "path = compute rows: the same level drawn through the compute path "
+             "(core/gpu/compute_path.h), which writes every patch's points (unwelded, a 40-byte "
+             "record: patch, coordinate, position, normal) and triangles (32-bit indices) to "
+             "transient device buffers each frame; transient_* are those bytes, 0 on the "
+             "tessellator path's rows (its points stream from the TES to the rasteriser)",
+             "simulations (rows keyed by state = resident): Simulation::footprint, the state and "
+             "auxiliary buffers the GPU keeps for the scenario, against the alternative the "
+             "simulation names (its record's note says which)"},
+        .summary_scope = {{"displacement", ""}},
         // One line per technique/variant: how the saving grows with the level (median over
         // the assets; levels double, so a log x spaces them evenly).
-        {results::PlotSpec{.title = "Plain mesh over technique bytes against tessellation level",
-                           .kind = results::PlotKind::kLine,
-                           .x = "level",
-                           .y = "plain_over_technique",
-                           .series = "variant",
-                           .facet = "",
-                           .where = {{"displacement", ""}},
-                           .log_x = true}}};
+        .plots = {results::PlotSpec{
+            .title = "Plain mesh over technique bytes against tessellation level",
+            .kind = results::PlotKind::kLine,
+            .x = "level",
+            .y = "plain_over_technique",
+            .series = "variant",
+            .facet = "",
+            .where = {{"displacement", ""}},
+            .log_x = true}},
+        .decision_inputs = {
+            {.role = results::DecisionRole::kMemoryRatio,
+             .label = "memory ratio",
+             .column = "memory / plain mesh at level 16 (ratio)",
+             .metrics = {"technique_with_displacement_bytes", "transient_vertex_bytes",
+                         "transient_index_bytes"},
+             .per = "plain_bytes",
+             .where = {{"level", "16"}},
+             .reduce = results::DecisionReduce::kLast,
+             .rows_on_path = true},
+            {.role = results::DecisionRole::kMemorySaving,
+             .label = "the plain mesh's bytes over acc's",
+             .metrics = {"plain_over_technique"},
+             .where = {{"level", "16"}}},
+            {.role = results::DecisionRole::kAdviceMemory,
+             .label = "technique bytes with a 16-bit displacement map over the plain triangle "
+                      "mesh's bytes, largest over the levels (ratio)",
+             .metrics = {"plain_over_technique"}},
+            {.role = results::DecisionRole::kPublishedMemory,
+             .label = "bytes against the plain mesh",
+             .metrics = {"patches", "plain_bytes", "technique_with_displacement_bytes",
+                         "plain_over_technique"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

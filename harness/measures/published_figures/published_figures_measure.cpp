@@ -83,30 +83,38 @@ class PublishedFiguresMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "published_figures",
-        "Shader costs beside published figures",
-        "static SPIR-V instruction counts (spirv-opt -O) of the four Bézier evaluation orders "
-        "and of ACC's domain shader, beside the numbers of NVIDIA's displacement subdivision "
-        "surfaces talk and of the DirectX SDK SubD10 sample",
-        comparisonTable().specs(),
-        {"ours_alu_vector", "ours_alu_scalar"},
-        {"ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
-         "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
-         "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
-         "published_loads 0: not published",
-         "NVIDIA's displacement subdivision surfaces talk counts D3D11 domain-shader instructions "
-         "of the position evaluation alone; "
-         "ours count shaders/<technique>/bezier_position.tese (the same evaluation, nothing "
-         "else). Compare increments over asymmetric: every order adds the same work to the "
-         "shared part (the B0..B3 bases of u and v and the first row products), so the "
-         "talk's increments (+45, +15, +9) are the test of the reproduction; the absolute "
-         "counts differ by the basis cost, which a D3D listing packs into float2 ops",
-         "the DirectX SDK SubD10 sample counts its domain shader: 16 loads / ~73 ALU for a regular "
-         "patch "
-         "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
-         "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
-         "(the no_tangent variant fills the tangent patches with the derivative patches), so "
-         "both rows are the same stage"}};
+        .id = "published_figures",
+        .title = "Shader costs beside published figures",
+        .description =
+            "static SPIR-V instruction counts (spirv-opt -O) of the four Bézier evaluation orders "
+            "and of ACC's domain shader, beside the numbers of NVIDIA's displacement subdivision "
+            "surfaces talk and of the DirectX SDK SubD10 sample",
+        .metrics = comparisonTable().specs(),
+        .headline = {"ours_alu_vector", "ours_alu_scalar"},
+        .notes =
+            {"ours: float arithmetic + fma instructions of the stage after spirv-opt -O, counted "
+             "per SPIR-V instruction (vector, as a D3D listing counts a float3 mad once) and "
+             "expanded to components (scalar); ours_loads: OpLoad/OpStore of the stage; "
+             "published_loads 0: not published",
+             "NVIDIA's displacement subdivision surfaces talk counts D3D11 domain-shader "
+             "instructions "
+             "of the position evaluation alone; "
+             "ours count shaders/<technique>/bezier_position.tese (the same evaluation, nothing "
+             "else). Compare increments over asymmetric: every order adds the same work to the "
+             "shared part (the B0..B3 bases of u and v and the first row products), so the "
+             "talk's increments (+45, +15, +9) are the test of the reproduction; the absolute "
+             "counts differ by the basis cost, which a D3D listing packs into float2 ops",
+             "the DirectX SDK SubD10 sample counts its domain shader: 16 loads / ~73 ALU for a "
+             "regular "
+             "patch "
+             "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
+             "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
+             "(the no_tangent variant fills the tangent patches with the derivative patches), so "
+             "both rows are the same stage"},
+        .decision_inputs = {{.role = results::DecisionRole::kPublishedCost,
+                             .label = "published and our shader costs",
+                             .metrics = {"published_alu", "published_loads", "ours_alu_vector",
+                                         "ours_alu_scalar", "ours_loads"}}}};
     return kInfo;
   }
   // Only techniques that ship the probe shader (acc); it reads their GPU program.

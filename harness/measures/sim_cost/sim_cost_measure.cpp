@@ -62,29 +62,34 @@ class SimCostMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "sim_cost",
-        "Simulation cost",
-        "elements alive over time and at the peak, buffer bytes, compute passes and dispatches "
-        "per step, and the bytes the Vulkan compute run keeps resident",
-        specs(),
-        {"dispatches_per_step", "peak_elements"},
-        {"rows keyed by time: the CPU twin's element count (SimulationState::element_count) at "
-         "evenly spaced times, the last at the scenario's end",
-         "part = gpu: the simulation's compute programs run by core/gpu/compute_runner (every "
-         "pass of every step in one command buffer, no read-back inside the step loop) for " +
-             std::to_string(kDefaultGpuSteps) +
-             " steps in the default suite and the whole scenario in the full suite",
-         "times per step (CPU twin, device) are measured but, like every timing, kept out of "
-         "results.json; the suite's timings.json has the measure's wall time"},
-        {},
-        {results::PlotSpec{.title = "Elements alive over time",
-                           .kind = results::PlotKind::kLine,
-                           .x = "time",
-                           .y = "elements",
-                           .series = "variant",
-                           .facet = "",
-                           .where = {},
-                           .log_x = false}}};
+        .id = "sim_cost",
+        .title = "Simulation cost",
+        .description =
+            "elements alive over time and at the peak, buffer bytes, compute passes and dispatches "
+            "per step, and the bytes the Vulkan compute run keeps resident",
+        .metrics = specs(),
+        .headline = {"dispatches_per_step", "peak_elements"},
+        .notes =
+            {"rows keyed by time: the CPU twin's element count (SimulationState::element_count) at "
+             "evenly spaced times, the last at the scenario's end",
+             "part = gpu: the simulation's compute programs run by core/gpu/compute_runner (every "
+             "pass of every step in one command buffer, no read-back inside the step loop) for " +
+                 std::to_string(kDefaultGpuSteps) +
+                 " steps in the default suite and the whole scenario in the full suite",
+             "times per step (CPU twin, device) are measured but, like every timing, kept out of "
+             "results.json; the suite's timings.json has the measure's wall time"},
+        .summary_scope = {},
+        .plots = {results::PlotSpec{.title = "Elements alive over time",
+                                    .kind = results::PlotKind::kLine,
+                                    .x = "time",
+                                    .y = "elements",
+                                    .series = "variant",
+                                    .facet = "",
+                                    .where = {},
+                                    .log_x = false}},
+        .decision_inputs = {{.role = results::DecisionRole::kSimulationFigure,
+                             .label = "per scenario",
+                             .metrics = {"dispatches_per_step", "peak_elements"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -55,24 +55,30 @@ class StabilityMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "stability",
-        "Stability of the constraint solvers over an animated run",
-        "energy drift and largest spring stretch over the animated scenario with a fixed "
-        "budget of 8 GPU dispatches per frame, with and without goal springs",
-        stabilityTable().specs(),
-        {"energy_drift", "max_stretch"},
-        {"energy: kinetic energy of the motion relative to the skinned (goal) motion, per unit "
-         "mass and vertex; energy_drift = mean over the run's last half / mean over its first "
-         "half (below 1 the motion settles, above 1 the solver feeds energy in); absent with "
-         "finite = 0 when the run blew up",
-         "max_stretch: largest |length - rest| / rest of any surface spring after any step",
-         "8 solver dispatches per step, as a game with a fixed per-frame budget (a coloured "
-         "Gauss-Seidel sweep of more colours than that goes on where it stopped next step: "
-         "iterations_per_step < 1; gs_serial, with no GPU path, runs max(1, round(8 / "
-         "colours)) whole sweeps); the default suite runs the scenario's duration, --suite full " +
-             std::to_string(kFullSuiteLength) + " times as long"},
-        {},
-        {}};
+        .id = "stability",
+        .title = "Stability of the constraint solvers over an animated run",
+        .description =
+            "energy drift and largest spring stretch over the animated scenario with a fixed "
+            "budget of 8 GPU dispatches per frame, with and without goal springs",
+        .metrics = stabilityTable().specs(),
+        .headline = {"energy_drift", "max_stretch"},
+        .notes =
+            {"energy: kinetic energy of the motion relative to the skinned (goal) motion, per unit "
+             "mass and vertex; energy_drift = mean over the run's last half / mean over its first "
+             "half (below 1 the motion settles, above 1 the solver feeds energy in); absent with "
+             "finite = 0 when the run blew up",
+             "max_stretch: largest |length - rest| / rest of any surface spring after any step",
+             "8 solver dispatches per step, as a game with a fixed per-frame budget (a coloured "
+             "Gauss-Seidel sweep of more colours than that goes on where it stopped next step: "
+             "iterations_per_step < 1; gs_serial, with no GPU path, runs max(1, round(8 / "
+             "colours)) whole sweeps); the default suite runs the scenario's duration, --suite "
+             "full " +
+                 std::to_string(kFullSuiteLength) + " times as long"},
+        .summary_scope = {},
+        .plots = {},
+        .decision_inputs = {{.role = results::DecisionRole::kSimulationFigure,
+                             .label = "per scenario",
+                             .metrics = {"energy_drift", "max_stretch"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

@@ -85,35 +85,40 @@ class WaveErrorMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
     static const MeasureInfo kInfo{
-        "wave_error",
-        "Wave particles against the linear wave equation",
-        "height-field RMS and max difference over the source amplitude, wavefront coverage "
-        "(ratio) over time, and arrival time error (s) at probes, against a finite-difference "
-        "wave-equation reference",
-        allSpecs(),
-        {"arrival_error_s", "coverage", "rms_error"},
-        {"reference: u_tt + 2k u_t = c^2 laplacian(u), 5-point Laplacian and leapfrog on the "
-         "scenario's reference_spacing_m grid, c dt / h <= 0.5, Neumann walls at the domain "
-         "border and at nodes within half a spacing of a wall; each source an initial "
-         "displacement of the particle shape (Yuksel, House and Keyser, Wave Particles, "
-         "SIGGRAPH 2007) at zero velocity",
-         "height field: particles splatted as points (bilinear) on the height_field_spacing_m "
-         "grid, filtered with the particle shape; rows keyed by time compare it with the "
-         "reference at the same nodes",
-         "arrival: the first time |height| exceeds 10% of the peak |height| the reference "
-         "reaches at the probe, for both; the particles' height at a probe is their exact sum",
-         "coverage: points every r/4 on each source's ideal ring (radius c (t - t_source)), "
-         "inside the domain and in sight of the source, covered within r/2 of a particle; "
-         "measured once t > 2r/c"},
-        {},
-        {results::PlotSpec{.title = "Wavefront coverage against distance travelled",
-                           .kind = results::PlotKind::kLine,
-                           .x = "front_radius",
-                           .y = "coverage",
-                           .series = "variant",
-                           .facet = "",
-                           .where = {},
-                           .log_x = false}}};
+        .id = "wave_error",
+        .title = "Wave particles against the linear wave equation",
+        .description =
+            "height-field RMS and max difference over the source amplitude, wavefront coverage "
+            "(ratio) over time, and arrival time error (s) at probes, against a finite-difference "
+            "wave-equation reference",
+        .metrics = allSpecs(),
+        .headline = {"arrival_error_s", "coverage", "rms_error"},
+        .notes =
+            {"reference: u_tt + 2k u_t = c^2 laplacian(u), 5-point Laplacian and leapfrog on the "
+             "scenario's reference_spacing_m grid, c dt / h <= 0.5, Neumann walls at the domain "
+             "border and at nodes within half a spacing of a wall; each source an initial "
+             "displacement of the particle shape (Yuksel, House and Keyser, Wave Particles, "
+             "SIGGRAPH 2007) at zero velocity",
+             "height field: particles splatted as points (bilinear) on the height_field_spacing_m "
+             "grid, filtered with the particle shape; rows keyed by time compare it with the "
+             "reference at the same nodes",
+             "arrival: the first time |height| exceeds 10% of the peak |height| the reference "
+             "reaches at the probe, for both; the particles' height at a probe is their exact sum",
+             "coverage: points every r/4 on each source's ideal ring (radius c (t - t_source)), "
+             "inside the domain and in sight of the source, covered within r/2 of a particle; "
+             "measured once t > 2r/c"},
+        .summary_scope = {},
+        .plots = {results::PlotSpec{.title = "Wavefront coverage against distance travelled",
+                                    .kind = results::PlotKind::kLine,
+                                    .x = "front_radius",
+                                    .y = "coverage",
+                                    .series = "variant",
+                                    .facet = "",
+                                    .where = {},
+                                    .log_x = false}},
+        .decision_inputs = {{.role = results::DecisionRole::kSimulationFigure,
+                             .label = "per scenario",
+                             .metrics = {"arrival_error_s", "coverage", "rms_error"}}}};
     return kInfo;
   }
   MeasureRequirements requirements() const override {
