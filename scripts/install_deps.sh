@@ -19,7 +19,7 @@ test_packages=(
   python3-scipy vulkan-validationlayers
   libbenchmark-dev libbenchmark-tools libgtest-dev
   valgrind chromium
-  clang-14 libfuzzer-14-dev
+  clang-14 libfuzzer-14-dev clang-format-14
 )
 
 packages=("${run_packages[@]}")

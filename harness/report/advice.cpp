@@ -29,16 +29,14 @@ const char* const kAdviceRankingRule =
 std::string adviceFigureUnits(const results::Results& results) {
   using results::DecisionRole;
   std::string text = "each figure is the worst over its measure's summary scope:";
-  const auto add = [&](DecisionRole role, const char* what) {
+  for (const DecisionRole role : {DecisionRole::kAdviceError, DecisionRole::kAdviceCost,
+                                  DecisionRole::kAdviceMemory, DecisionRole::kAdviceCracks}) {
     const auto input = inputFor(results, role);
-    if (input)
-      text += fmt::format(" {} = {} ({}){};", what, sourceOf(*input), input->input->label,
-                          role == DecisionRole::kAdviceMemory ? ", its reciprocal" : "");
-  };
-  add(DecisionRole::kAdviceError, "error");
-  add(DecisionRole::kAdviceCost, "instructions");
-  add(DecisionRole::kAdviceMemory, "memory ratio");
-  add(DecisionRole::kAdviceCracks, "watertight");
+    if (!input) continue;
+    text +=
+        fmt::format(" {} = {} ({}){};", input->input->label, sourceOf(*input), input->input->column,
+                    role == DecisionRole::kAdviceMemory ? ", its reciprocal" : "");
+  }
   text.back() = '.';
   return text;
 }
@@ -47,6 +45,7 @@ namespace {
 
 // The measure and metrics of an advice input; an empty measure when the run declares none.
 struct AdviceInput {
+  std::string name;  // the figure's name: the input's label, else the role's spelling
   std::string measure;
   std::vector<std::string> metrics;
   std::string metric(size_t i) const { return i < metrics.size() ? metrics[i] : std::string(); }
@@ -54,8 +53,8 @@ struct AdviceInput {
 
 AdviceInput adviceInput(const results::Results& results, results::DecisionRole role) {
   const auto input = inputFor(results, role);
-  if (!input) return {};
-  return {input->measure(), input->input->metrics};
+  if (!input) return {std::string(results::toString(role)), "", {}};
+  return {input->input->label, input->measure(), input->input->metrics};
 }
 
 using LineKey = std::pair<std::string, std::string>;  // technique, variant
@@ -140,27 +139,33 @@ void readWatertightness(const AdviceInput& cracks, const SummaryLine* line,
   figures->watertight = Watertightness::kWatertight;
 }
 
-std::string overBy(const char* what, double value, double bound, const std::string& unit) {
+std::string overBy(const std::string& what, double value, double bound, const std::string& unit) {
   return fmt::format("{} {}{} > max {} (over by {}, {}x)", what, formatAdviceNumber(value),
                      unit.empty() ? "" : " " + unit, formatAdviceNumber(bound),
                      formatAdviceNumber(value - bound),
                      bound > 0 ? formatAdviceNumber(value / bound) : std::string("inf"));
 }
 
-std::vector<std::string> failuresOf(const CandidateFigures& f, const AdviceConstraints& c) {
+// The figures' names in the constraints' failures.
+struct AdviceNames {
+  std::string error, memory, cost;
+};
+
+std::vector<std::string> failuresOf(const CandidateFigures& f, const AdviceConstraints& c,
+                                    const AdviceNames& names) {
   std::vector<std::string> failures;
   if (c.max_error) {
     if (!f.error) {
       failures.push_back(f.missing_error);
     } else if (*f.error > *c.max_error) {
-      failures.push_back(overBy("error", *f.error, *c.max_error, "rel_diag"));
+      failures.push_back(overBy(names.error, *f.error, *c.max_error, "rel_diag"));
     }
   }
   if (c.max_memory_ratio) {
     if (!f.memory_ratio) {
       failures.push_back(f.missing_memory);
     } else if (*f.memory_ratio > *c.max_memory_ratio) {
-      failures.push_back(overBy("memory ratio", *f.memory_ratio, *c.max_memory_ratio, ""));
+      failures.push_back(overBy(names.memory + " ratio", *f.memory_ratio, *c.max_memory_ratio, ""));
     }
   }
   if (c.watertight && f.watertight != Watertightness::kWatertight) {
@@ -170,7 +175,7 @@ std::vector<std::string> failuresOf(const CandidateFigures& f, const AdviceConst
     if (!f.instructions) {
       failures.push_back(f.missing_instructions);
     } else if (*f.instructions > *c.max_instructions) {
-      failures.push_back(overBy("instructions", *f.instructions, *c.max_instructions, ""));
+      failures.push_back(overBy(names.cost, *f.instructions, *c.max_instructions, ""));
     }
   }
   return failures;
@@ -308,9 +313,9 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
       error_line = findLine(error, {c.technique, default_it->second});
       f.error_from_default = error_line != nullptr;
     }
-    f.error = worstFigure(results, error_line, "error", error_input.measure, error_input.metric(0),
-                          &f.missing_error);
-    f.instructions = worstFigure(results, findLine(instructions, key), "instructions",
+    f.error = worstFigure(results, error_line, error_input.name, error_input.measure,
+                          error_input.metric(0), &f.missing_error);
+    f.instructions = worstFigure(results, findLine(instructions, key), cost_input.name,
                                  cost_input.measure, cost_input.metric(0), &f.missing_instructions);
     // memory runs only on variants whose patch data differ from the default's
     // (VariantPolicy::kWhenPatchDataDiffers): another variant has the default's bytes.
@@ -320,11 +325,11 @@ Advice rankCandidates(const results::Results& results, const std::string& asset,
       f.memory_from_default = memory_line != nullptr;
     }
     const std::optional<double> plain_over =
-        worstFigure(results, memory_line, "memory", memory_input.measure, memory_input.metric(0),
-                    &f.missing_memory);
+        worstFigure(results, memory_line, memory_input.name, memory_input.measure,
+                    memory_input.metric(0), &f.missing_memory);
     if (plain_over && *plain_over > 0) f.memory_ratio = 1.0 / *plain_over;
     readWatertightness(cracks_input, findLine(cracks, key), &f);
-    c.failures = failuresOf(f, constraints);
+    c.failures = failuresOf(f, constraints, {error_input.name, memory_input.name, cost_input.name});
     if (isControl(results, c.technique, c.variant)) {
       c.failures.insert(c.failures.begin(), "a control: made to show a failure, never a choice");
     }

@@ -206,7 +206,8 @@ DecisionFigures decisionFigures(const results::Results& results, const std::stri
 DecisionLabels decisionLabels(const results::Results& results) {
   DecisionLabels labels;
   const auto label = [&](DecisionRole role, std::string* out) {
-    if (const auto input = inputFor(results, role)) *out = input->input->label;
+    const auto input = inputFor(results, role);
+    *out = input ? input->input->label : std::string(results::toString(role));
   };
   label(DecisionRole::kError, &labels.error);
   label(DecisionRole::kTrianglesAtTarget, &labels.triangles);

@@ -47,8 +47,7 @@ struct DecisionFigures {
 
 // How the report names the rule's terms: the labels of the inputs the run declares.
 struct DecisionLabels {
-  std::string error = "error", triangles = "triangles at 1 px", cost = "cost",
-              memory = "memory ratio";
+  std::string error, triangles, cost, memory;  // an undeclared role: its spelling
 };
 DecisionLabels decisionLabels(const results::Results& results);
 

@@ -11,6 +11,7 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/lod/reference_scheme.h"
 #include "harness/measures/error/error.h"
+#include "harness/measures/measure.h"
 #include "harness/pictures/run_pictures.h"
 #include "harness/pictures/surface_picture.h"
 #include "harness/report/markdown_sections.h"
@@ -137,12 +138,17 @@ TEST(CrackPicture, FileNameFollowsTheOtherPicturesAndReportMdLinksIt) {
   cracks.measure = "cracks";
   cracks.rows = {cracksRow("gpu", "16", 9, 9e-7)};
   record.measures = {error, cracks};
-  EXPECT_EQ(report::markdown_detail::crackPictureOf(record), "") << "no CPU float crack";
+  results::Results run;  // the registered measures' declarations, as a run has them
+  for (const char* id : {"error", "cracks"}) {
+    run.measures.push_back(
+        measures::declarationOf(measures::MeasureRegistry::instance().find(id)->info()));
+  }
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(run, record), "") << "no CPU float crack";
   record.measures[1].rows.push_back(cracksRow("cpu_float", "16", 5, 2e-7));
-  EXPECT_EQ(report::markdown_detail::crackPictureOf(record),
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(run, record),
             pictures::crackPicturePath(record.technique, record.asset));
   record.measures[0].status = results::MeasureStatus::kSkipped;
-  EXPECT_EQ(report::markdown_detail::crackPictureOf(record), "") << "no error picture";
+  EXPECT_EQ(report::markdown_detail::crackPictureOf(run, record), "") << "no error picture";
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ results::Results emptyResults() {
                   {{"source", "spirv_O"}, {"expansion", "vector"}, {"stage", "*.tese"}}),
       declaration("memory", {{"plain_over_technique", results::Unit::kRatio, D::kHigherIsBetter}}),
   };
+  measures::completeDeclarations(&r);
   return r;
 }
 

@@ -102,6 +102,7 @@ results::Results adaptivityRun() {
       {summaryRow("sphere_diameter", 2000, 3000, -1), summaryRow("lp2_edge", 1500, 3000, -1, 0),
        summaryRow("error_bound", 2500, 3000, -1), summaryRow("error_bound_loose", 100, 3000, -1)});
   addRecord(&results, "cracky", "default", "cube", {summaryRow("sphere_diameter", 10, 4000, 500)});
+  testing::withRegisteredDeclarations(&results);
   return results;
 }
 

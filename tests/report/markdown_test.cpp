@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/report/results_builders.h"
+
 namespace tb {
 namespace {
 
@@ -61,6 +63,7 @@ results::Results summaryResults(size_t assets, size_t levels) {
       results.records.push_back(record);
     }
   }
+  testing::withRegisteredDeclarations(&results);
   return results;
 }
 

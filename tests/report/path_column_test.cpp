@@ -48,6 +48,7 @@ results::Results bothPaths(double compute_points) {
   record.measures = {error, cracks, mem};
   r.records = {record};
   r.assets = {{"a"}};
+  testing::withRegisteredDeclarations(&r);
   return r;
 }
 

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "harness/measures/complete_declarations.h"
+#include "harness/measures/measure.h"
 #include "harness/results/results_model.h"
 
 namespace tb::testing {
@@ -23,6 +25,20 @@ inline results::MetricRow row(std::map<std::string, std::string> keys,
   r.keys = std::move(keys);
   for (const auto& [name, value] : metrics) r.metrics.push_back({name, value, ""});
   return r;
+}
+
+// What a run of the registered measures declares: every measure the records name but `r`
+// does not declare gets the registered measure's declaration, and every declaration its
+// decision inputs (measures::completeDeclarations), as `tessbench report` reads a run.
+inline void withRegisteredDeclarations(results::Results* r) {
+  for (const results::Record& record : r->records) {
+    for (const results::MeasureResult& m : record.measures) {
+      if (r->findMeasure(m.measure) != nullptr) continue;
+      if (const measures::Measure* measure = measures::MeasureRegistry::instance().find(m.measure))
+        r->measures.push_back(measures::declarationOf(measure->info()));
+    }
+  }
+  measures::completeDeclarations(r);
 }
 
 }  // namespace tb::testing

@@ -97,6 +97,7 @@ results::Results sampleResults() {
       r.records.push_back(record);
     }
   }
+  testing::withRegisteredDeclarations(&r);
   return r;
 }
 

@@ -205,7 +205,8 @@ class CracksMeasure final : public Measure {
                              .metrics = {"points_not_equal"},
                              .where = {{"backend", "cpu_float"}, {"displacement", ""}}},
                             {.role = results::DecisionRole::kAdviceCracks,
-                             .label = "yes when every row is bitwise watertight",
+                             .label = "watertight",
+                             .column = "yes when every row is bitwise watertight",
                              .metrics = {"points_not_equal", "unpaired_points"}}}};
     return kInfo;
   }

@@ -184,8 +184,9 @@ class ErrorMeasure final : public Measure {
         .decision_inputs = {
             {.role = results::DecisionRole::kError, .label = "error", .metrics = {"hausdorff"}},
             {.role = results::DecisionRole::kAdviceError,
-             .label = "two-sided Hausdorff distance to the limit surface, rel_diag: fraction of "
-                      "the bounding-box diagonal",
+             .label = "error",
+             .column = "two-sided Hausdorff distance to the limit surface, rel_diag: fraction of "
+                       "the bounding-box diagonal",
              .metrics = {"hausdorff"}}}};
     return kInfo;
   }

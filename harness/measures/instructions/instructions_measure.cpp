@@ -136,8 +136,9 @@ class InstructionsMeasure final : public Measure {
              .reduce = results::DecisionReduce::kSum,
              .path = results::kComputePath},
             {.role = results::DecisionRole::kAdviceCost,
-             .label = "total SPIR-V instructions of the domain (.tese) stage after spirv-opt -O, "
-                      "per vector instruction (count)",
+             .label = "instructions",
+             .column = "total SPIR-V instructions of the domain (.tese) stage after spirv-opt -O, "
+                       "per vector instruction (count)",
              .metrics = {"total"}}}};
     return kInfo;
   }
