@@ -105,6 +105,30 @@ const MetricTable<CrackFigures>& crackTable() {
   return kTable;
 }
 
+// What the decision, advise and the report read of the crack rows (results::DecisionInput).
+std::vector<results::DecisionInput> cracksDecisionInputs() {
+  return {{.role = results::DecisionRole::kCrackPoints,
+           .label = "points that differ or are unpaired",
+           .metrics = {"points_not_equal", "unpaired_points"},
+           .rows_on_path = true,
+           .device_rows = {{"backend", "gpu"}}},
+          {.role = results::DecisionRole::kCrackGap,
+           .label = "largest gap",
+           .metrics = {"max_gap_world"}},
+          {.role = results::DecisionRole::kCrackPlace,
+           .label = "where the largest gap is",
+           .metrics = {"worst_patch_a", "worst_local_a", "worst_patch_b", "worst_local_b",
+                       "worst_is_corner", "worst_t"}},
+          {.role = results::DecisionRole::kCrackPicture,
+           .label = "CPU float cracks drawn",
+           .metrics = {"points_not_equal"},
+           .where = {{"backend", "cpu_float"}, {"displacement", ""}}},
+          {.role = results::DecisionRole::kAdviceCracks,
+           .label = "watertight",
+           .column = "yes when every row is bitwise watertight",
+           .metrics = {"points_not_equal", "unpaired_points"}}};
+}
+
 class CracksMeasure final : public Measure {
  public:
   const MeasureInfo& info() const override {
@@ -188,26 +212,7 @@ class CracksMeasure final : public Measure {
                       .where = {{"displacement", "*"}},
                       .log_y = true,
                       .reduce = results::PlotReduce::kMax}},
-        .decision_inputs = {{.role = results::DecisionRole::kCrackPoints,
-                             .label = "points that differ or are unpaired",
-                             .metrics = {"points_not_equal", "unpaired_points"},
-                             .rows_on_path = true,
-                             .device_rows = {{"backend", "gpu"}}},
-                            {.role = results::DecisionRole::kCrackGap,
-                             .label = "largest gap",
-                             .metrics = {"max_gap_world"}},
-                            {.role = results::DecisionRole::kCrackPlace,
-                             .label = "where the largest gap is",
-                             .metrics = {"worst_patch_a", "worst_local_a", "worst_patch_b",
-                                         "worst_local_b", "worst_is_corner", "worst_t"}},
-                            {.role = results::DecisionRole::kCrackPicture,
-                             .label = "CPU float cracks drawn",
-                             .metrics = {"points_not_equal"},
-                             .where = {{"backend", "cpu_float"}, {"displacement", ""}}},
-                            {.role = results::DecisionRole::kAdviceCracks,
-                             .label = "watertight",
-                             .column = "yes when every row is bitwise watertight",
-                             .metrics = {"points_not_equal", "unpaired_points"}}}};
+        .decision_inputs = cracksDecisionInputs()};
     return kInfo;
   }
   MeasureRequirements requirements() const override {

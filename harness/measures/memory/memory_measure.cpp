@@ -275,7 +275,7 @@ class MemoryMeasure final : public Measure {
              .reduce = results::DecisionReduce::kLast,
              .rows_on_path = true},
             {.role = results::DecisionRole::kMemorySaving,
-             .label = "the plain mesh's bytes over acc's",
+             .label = "the plain mesh's bytes over the technique's",
              .metrics = {"plain_over_technique"},
              .where = {{"level", "16"}}},
             {.role = results::DecisionRole::kAdviceMemory,
