@@ -3,7 +3,7 @@
 // the nodes within h/2), substeps with c dt / h <= 0.5 (CFL bound 1/sqrt(2)). A source is
 // the wave-particle blob A/2 (cos(pi d / r) + 1) at zero velocity. Halving h shrinks the max
 // difference 2.7-fold (the blob's curvature jumps at its rim; tests/reference/
-// wave_equation_test.cpp; docs/ARCHITECTURE.md §3, "Simulations").
+// wave_equation_test.cpp; docs/derivations/simulations.md).
 #pragma once
 
 #include <cstddef>

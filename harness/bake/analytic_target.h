@@ -1,4 +1,4 @@
-// The baker's oracle (docs/ARCHITECTURE.md, "Baker"): the asset's Bfr limit tessellated
+// The baker's oracle (docs/derivations/displacement.md): the asset's Bfr limit tessellated
 // densely, each vertex moved along its limit normal by
 //   h(p) = A (sin(2 pi f qx + 0.3) + sin(2 pi f qy + 1.1) + sin(2 pi f qz + 2.3)) / 3,
 // q = (p - c) / D (c, D the control mesh's box centre and diagonal), A = amplitude_fraction

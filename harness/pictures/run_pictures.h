@@ -1,4 +1,4 @@
-// The pictures of a finished run (docs/ARCHITECTURE.md §4, "Pictures"): for each technique
+// The pictures of a finished run (docs/REPORTS.md, "Pictures"): for each technique
 // × asset with a record of the technique's default variant whose `error` measure is ok, the
 // error and wireframe pictures of surface_picture.h, written as PNG files beside
 // results.json with an index (pictures_index.h).

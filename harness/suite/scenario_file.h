@@ -1,7 +1,7 @@
 // Scenario files (JSON, format "tessbench-scenario-1"): the inputs of simulation
 // techniques (techniques/simulation.h), bundled in assets/scenarios/*.json or given by
-// path (`tessbench run --scenario NAME|PATH`). The format is in docs/ARCHITECTURE.md,
-// section "Simulations". Every broken rule is one InputError naming the file and field.
+// path (`tessbench run --scenario NAME|PATH`). The format is in docs/FORMATS.md,
+// "Scenario files". Every broken rule is one InputError naming the file and field.
 #pragma once
 
 #include <string>

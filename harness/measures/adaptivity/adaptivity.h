@@ -1,4 +1,4 @@
-// The adaptivity measure's algorithm (docs/ARCHITECTURE.md §3): a factor policy
+// The adaptivity measure's algorithm (docs/derivations/adaptivity.md): a factor policy
 // (factor_policy.h) run along a camera path, frame by frame, on the CPU twin and in the
 // technique's own TCS on the device: counts against the device's statistics, crack safety
 // of the factors, screen-space figures (screen_metrics.h), and the triangles per frame each

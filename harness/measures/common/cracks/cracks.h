@@ -1,4 +1,4 @@
-// Crack gaps (docs/ARCHITECTURE.md §3) between patches that share an edge or a corner.
+// Crack gaps (docs/MEASURES.md) between patches that share an edge or a corner.
 //
 // Two patches share an edge when its two end corners weld to the same positions
 // (weldByPosition over patchCorners(), so attribute seams count too). The tessellator emits
