@@ -1,6 +1,6 @@
 #!/bin/sh
 # x86 instructions per TES invocation of a technique's GPU program on lavapipe, as the
-# slope of callgrind's instruction count between two levels (docs/ARCHITECTURE.md §3).
+# slope of callgrind's instruction count between two levels (docs/MEASURES.md).
 #   bench/callgrind_tes.sh TECHNIQUE ASSET [VARIANT] [LEVEL_LOW LEVEL_HIGH]
 # The count covers lavapipe's software tessellator and the TES JIT code together; run
 # it once with a trivial program (gpu/test_bilinear via the patch-program tests) to see

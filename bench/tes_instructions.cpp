@@ -1,4 +1,4 @@
-// x86 instructions per TES invocation on lavapipe (docs/ARCHITECTURE.md §3): lavapipe has
+// x86 instructions per TES invocation on lavapipe (docs/MEASURES.md): lavapipe has
 // no pipeline-executable statistics and Mesa's debug dumps are compiled out, but
 // callgrind sees the JIT code. This program runs a technique's GPU program at each level
 // given, with callgrind counting only the timed run (a discarded dump before it resets the

@@ -9,19 +9,12 @@
 
 namespace tb::ref {
 
-// "" when Embree and OpenSubdiv define the same limit surface for this mesh (to
-// Embree's float precision), else the first reason they may not, in words:
-//  - a Loop mesh (Embree subdivision is Catmull-Clark only);
-//  - a face with more than 15 corners (Embree's limit);
-//  - holes, non-manifold edges, interior valence-2 vertices, Chaikin creases, and
-//    valence-2 boundary corners under edge-only interpolation (the rule sets differ);
-//  - infinitely sharp creases or corners (sharpness >= 10), which Embree approximates
-//    after 10 levels of refinement;
-//  - where semi-sharp features meet with different rules in Sdc and Embree:
-//    creases of unequal sharpness at a vertex, a fractional sharpness where three or
-//    more sharp edges (boundary edges included) meet, or a fractional corner less
-//    sharp than a crease or boundary edge at its vertex (cross_check_eligibility.cpp gives the
-//    measurements).
+// "" when Embree and OpenSubdiv define the same limit surface for this mesh (to Embree's
+// float precision), else the first reason they may not, in words: a Loop mesh; a face of
+// more than 15 corners; holes, non-manifold edges, interior valence-2 vertices, Chaikin
+// creases, valence-2 boundary corners under edge-only interpolation; infinitely sharp tags
+// (Embree approximates them after 10 levels); semi-sharp features meeting under different
+// rules in Sdc and Embree (cross_check_eligibility.cpp gives the cases and measurements).
 std::string crossCheckIneligibility(const mesh::Mesh& mesh, osd::Scheme scheme);
 
 }  // namespace tb::ref

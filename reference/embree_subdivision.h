@@ -1,15 +1,9 @@
-// The same control mesh as Embree 3 subdivision geometry (RTC_GEOMETRY_TYPE_SUBDIVISION),
-// evaluated with rtcInterpolate: the independent cross-check of LimitSurface on the
-// meshes crossCheckIneligibility() accepts. Embree evaluates in float, so agreement is
-// to ~1e-6 of the model size, not to double round-off.
-//
-// Mapping of the tags: creases -> edge creases, corners -> vertex creases (sharpness
-// >= 10, OpenSubdiv's "infinitely sharp", becomes +inf), holes -> the hole buffer, and
-// boundary interpolation EDGE_AND_CORNER -> RTC_SUBDIVISION_MODE_PIN_CORNERS, EDGE_ONLY
-// -> SMOOTH_BOUNDARY (which parameterises valence-2 corners differently), NONE ->
-// NO_BOUNDARY (faces without a limit surface are not compared).
-//
-// Thread safety: evaluate() may be called from several threads at once.
+// The same control mesh as Embree 3 subdivision geometry, evaluated with rtcInterpolate: the
+// independent cross-check of LimitSurface on the meshes crossCheckIneligibility() accepts,
+// to ~1e-6 of the model size (Embree evaluates in float). Tags: creases -> edge creases,
+// corners -> vertex creases (sharpness >= 10 becomes +inf), holes -> the hole buffer;
+// EDGE_AND_CORNER -> PIN_CORNERS, EDGE_ONLY -> SMOOTH_BOUNDARY (valence-2 corners differ),
+// NONE -> NO_BOUNDARY. evaluate() may be called from several threads at once.
 #pragma once
 
 #include <cstddef>

@@ -1,18 +1,9 @@
-// What (u,v) means on one face of a limit surface. tessbench uses OpenSubdiv Bfr's
-// parameterisation (Bfr::Parameterization) everywhere, so a technique's (u,v) can be
-// handed to the reference unchanged:
-//
-//  - Quad, Catmull-Clark: the unit square. Corners 0,1,2,3 of the face sit at
-//    (0,0), (1,0), (1,1), (0,1): u runs from corner 0 to corner 1, v from corner 0
-//    to corner 3. Embree uses the same convention (checked in the tests).
-//  - Triangle, Loop: u, v >= 0, u + v <= 1, corners at (0,0), (1,0), (0,1).
-//  - Any other N-gon under Catmull-Clark (triangles included): one subdivision step
-//    splits it into N quads, and sub-face k is the quad at corner k. With normalised
-//    sub-face coordinates (s,t) in [0,1]^2 (Ptex's), (0,0) is corner k, s runs towards
-//    the midpoint of edge k (corner k -> k+1), t towards the midpoint of edge k-1
-//    (corner k -> k-1), and (1,1) is the face centre. In face (u,v), sub-face k fills
-//    the half-size tile (u,v) = (k % D + s/2, k / D + t/2), D = ceil(sqrt(N)).
-//    Derivatives in (u,v) are therefore twice those in (s,t).
+// What (u,v) means on one face of a limit surface: OpenSubdiv Bfr's parameterisation
+// (Bfr::Parameterization) everywhere, so a technique's (u,v) goes to the reference unchanged.
+// Quads: the unit square, corner 0 at (0,0), u towards corner 1, v towards corner 3 (Embree's
+// too). Loop triangles: u, v >= 0, u + v <= 1. Other N-gons: N quad sub-faces, sub-face k
+// in the half-size tile (k % D + s/2, k / D + t/2), D = ceil(sqrt(N)), so derivatives in
+// (u,v) are twice those in (s,t). Details: docs/derivations/parameterisation.md.
 #pragma once
 
 #include "core/mesh/vec.h"

@@ -1,5 +1,5 @@
 // Two-sided Hausdorff and RMS distance between triangle meshes, sampled inside the
-// triangles (docs/ARCHITECTURE.md §3, error; Cignoni et al., "Metro", 1998, samples the same way).
+// triangles (docs/MEASURES.md, error; Cignoni et al., "Metro", 1998, samples the same way).
 //
 // Sampling of each source triangle at lattice level m (deterministic):
 //  - the (m+1)(m+2)/2 points of the barycentric lattice i/m, corners and edges included;

@@ -1,5 +1,5 @@
 // A dense triangle mesh of a limit surface at a chosen rate: the reference side of
-// the distance measures (docs/ARCHITECTURE.md §3, error). Each vertex keeps the face and (u,v)
+// the distance measures (docs/MEASURES.md, error). Each vertex keeps the face and (u,v)
 // it was evaluated at, so a closest point found on this mesh (triangle + barycentrics)
 // maps back to a parametric location whose exact limit normal LimitSurface can give.
 #pragma once

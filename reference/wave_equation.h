@@ -1,14 +1,9 @@
-// The oracle for wave simulations: the linear 2-D wave equation
-//   u_tt + 2 k u_t = c^2 (u_xx + u_yy)
-// on a square grid of nodes, second-order central differences in space and time (the
-// 5-point Laplacian, leapfrog in time), with reflecting (Neumann) walls: the domain border
-// and any wall segments, rasterised to the nodes within half a spacing of them. The time
-// step is split into substeps with c dt / h <= 0.5, inside the CFL bound 1/sqrt(2) of this
-// scheme. A source is an initial displacement blob of the wave-particle shape
-// (A/2 (cos(pi d / r) + 1) for d < r) at zero velocity, added at its time. The scheme is
-// second order for smooth data; with this blob (its curvature jumps at the rim) halving h
-// shrinks the max difference 2.7-fold (h = 0.05 -> 0.025 -> 0.0125, r = 0.5, t = 1 s:
-// 0.0072 then 0.0027 of a unit peak; tests/reference/wave_equation_test.cpp).
+// The oracle for wave simulations: u_tt + 2 k u_t = c^2 (u_xx + u_yy) on a square grid, the
+// 5-point Laplacian and leapfrog, Neumann walls (the border and wall segments rasterised to
+// the nodes within h/2), substeps with c dt / h <= 0.5 (CFL bound 1/sqrt(2)). A source is
+// the wave-particle blob A/2 (cos(pi d / r) + 1) at zero velocity. Halving h shrinks the max
+// difference 2.7-fold (the blob's curvature jumps at its rim; tests/reference/
+// wave_equation_test.cpp; docs/derivations/simulations.md).
 #pragma once
 
 #include <cstddef>

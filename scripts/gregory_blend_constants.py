@@ -3,6 +3,7 @@
 # functions g_c = B_c(u, v) (a - b) / (a + b), by rigorous interval branch and bound in
 # (r, s) = (a + b, a / (a + b)), where g's second derivatives are polynomials (asserted
 # below). Prints per case: the best value found at a point, and the proven upper bound.
+# The derivation and the constants it proved: docs/derivations/gregory_blend_constants.md.
 # Usage: python3 scripts/gregory_blend_constants.py [tolerance, default 1e-3]
 # (sympy; several minutes; corners 2 and 3 of the quad only repeat corners 0 and 1).
 # python3 scripts/gregory_blend_constants.py --quadrants 10: the quad corner 0's g_0 on

@@ -1,6 +1,6 @@
 // A scalar that counts the floating-point operations done with it. Technique
 // evaluators are templated on the scalar; instantiated with CountingScalar they
-// report exact operation counts per evaluated vertex (docs/ARCHITECTURE.md §3).
+// report exact operation counts per evaluated vertex (docs/MEASURES.md, instructions).
 #pragma once
 
 #include <cmath>

@@ -1,17 +1,10 @@
 // What an out-of-tree technique library (a plug-in) exports, and what the host hands it.
-// A plug-in is a shared library with two C entry points, both defined by TB_PLUGIN:
-//
-//   tessbench_plugin_abi()          returns the kTessbenchPluginAbi it was compiled with.
-//                                   The host calls it first and refuses the plug-in, with
-//                                   nothing registered and nothing else called, when the
-//                                   number is not its own.
-//   tessbench_register_plugin(host) adds the plug-in's techniques (and the SPIR-V of their
-//                                   shaders) to `host`. The host stages them and adds them
-//                                   to its registry only when the whole call succeeded.
-//
-// A plug-in never registers from a static initialiser (TB_REGISTER_TECHNIQUE is for
-// techniques built into tessbench): that code would run at dlopen, before the handshake.
-// docs/PLUGINS.md is the guide.
+// TB_PLUGIN defines two C entry points: tessbench_plugin_abi() returns the
+// kTessbenchPluginAbi it was compiled with (the host calls it first and refuses a plug-in
+// whose number is not its own, before any other of its code runs);
+// tessbench_register_plugin(host) adds its techniques and SPIR-V shaders to `host`, which
+// commits them only when the whole call succeeded. A plug-in never registers from a static
+// initialiser (that would run at dlopen, before the handshake). Guide: docs/PLUGINS.md.
 #pragma once
 
 #include <cstdint>
@@ -23,23 +16,7 @@
 
 // Bumped whenever a header a plug-in compiles against (the ones `cmake --install` puts
 // under include/tessbench) changes a class layout, a virtual function or an entry point.
-// 12: GpuPatchProgram gained compute_shader, the technique's compute twin of its TCS and TES
-//     (core/gpu/compute_path.h: tessellation without the tessellator; a plug-in ships the
-//     .comp like its other shaders).
-// 11: PatchCullBounds gained bezier_net, bezier_degree and bezier_mirrored (the
-//     tangent_plane culling policy).
-// 10: Simulation gained constraintSolver() and waveField() (optional capabilities,
-//     techniques/constraint_solver.h, wave_field.h), Technique simulationCapabilities();
-//     ConstraintSolverTechnique is gone.
-// 8: DataFootprint gained displacement_map_bytes, GpuPatchProgram a displacement map
-//    (GpuDisplacement), Scenario its technique, sections and mesh path, SimulationFootprint
-//    the alternative a user would pick (alternative_bytes, alternative).
-// 7: handshake first (tessbench_plugin_abi, then tessbench_register_plugin(PluginHost*));
-//    plug-ins ship shaders through PluginHost::addShader.
-// 6: SurfacePatches gained makeBatchPattern() and evaluateBatch() (batched evaluation,
-// techniques/batch_eval.h). 5: Technique::build returns a TechniqueInstance (surface() /
-// simulation()) instead of buildPatches; SurfacePatches lost domain() and gpuProgram()
-// (patchDomain(p) and gpuPrograms() remain). 4: per-patch domains, gpuPrograms().
+// The history of the bumps is in docs/PLUGINS.md ("ABI versions").
 inline constexpr int kTessbenchPluginAbi = 12;
 
 namespace tb::techniques {

@@ -15,7 +15,7 @@
 namespace tb::techniques {
 
 // The input of a simulation, in place of (or beside) a mesh asset, read from a scenario
-// JSON file (format "tessbench-scenario-1", docs/ARCHITECTURE.md) or built in code. A
+// JSON file (format "tessbench-scenario-1", docs/FORMATS.md) or built in code. A
 // technique reads only the fields it needs and throws UnsupportedInput naming the field
 // it misses.
 struct Scenario {

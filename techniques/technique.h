@@ -136,7 +136,7 @@ struct CurvatureBounds {
   std::vector<mesh::Vec3d> hull;
 };
 
-// Exact scalar operation counts of one patch (docs/ARCHITECTURE.md §3), from the technique's
+// Exact scalar operation counts of one patch (docs/MEASURES.md), from the technique's
 // evaluators run with CountingScalar in the shader's operation order.
 struct OperationProfile {
   OperationCounts per_patch_setup;  // control points etc., once per patch (TCS work)

@@ -1,6 +1,6 @@
 // A displacement map in memory: scalar (1 channel, along the normal) or vector (3 channels)
 // texels, stored in a file as half or float, laid out either as a per-patch tile atlas or as
-// the asset's own UV atlas (docs/ARCHITECTURE.md, "Displacement maps").
+// the asset's own UV atlas (docs/FORMATS.md, "Displacement maps").
 #pragma once
 
 #include <cstddef>

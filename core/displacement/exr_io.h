@@ -1,5 +1,5 @@
 // Displacement maps as OpenEXR files (scanline, ZIP compressed), read and written with the
-// OpenEXR library. The format (channels, header attributes) is in docs/ARCHITECTURE.md,
+// OpenEXR library. The format (channels, header attributes) is in docs/FORMATS.md,
 // "Displacement maps". Every refusal is an InputError naming the file, the element and the
 // rule in one line; a refused write leaves no file behind.
 #pragma once

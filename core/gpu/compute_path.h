@@ -1,15 +1,10 @@
-// Tessellation without the tessellator: a technique's surface on the compute path. For a
-// GpuPatchProgram and per-patch levels, one submission runs
-//   the compute tessellator's passes (compute_tessellator.h: count, prefix sum, write),
-//   a prepare pass writing the indirect commands from the prefix sum's totals,
-//   the technique's compute shader (GpuPatchProgram::compute_shader) twice: a build pass,
-//     one invocation per patch doing its TCS's work, and an evaluate pass, one invocation
-//     per domain point doing its TES's work (shaders/common/compute_surface.glsl),
-//   and an indexed indirect draw (vkCmdDrawIndexedIndirect) of the triangles from the
-//     device's vertex and index buffers, counted by a pipeline-statistics query,
-// with no read-back between them. The TCS/TES and the compute shader include the same
-// surface functions (shaders/<technique>/<technique>_surface.glsl), so the vertices are
-// bitwise the TES capture's (runPatchProgram) at the same levels.
+// Tessellation without the tessellator: a technique's surface on the compute path. One
+// submission runs the compute tessellator's passes (compute_tessellator.h), a pass writing
+// the indirect commands, the technique's compute shader as a build pass (one invocation a
+// patch: the TCS's work) and an evaluate pass (one a domain point: the TES's), then an
+// indexed indirect draw counted by a statistics query, with no read-back between them. The
+// stages and the compute shader include the same surface code, so the vertices are bitwise
+// the TES capture's (docs/ARCHITECTURE.md §6, "The compute path").
 #pragma once
 
 #include <cstdint>

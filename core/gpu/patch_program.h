@@ -1,25 +1,11 @@
-// Runs a technique's own tessellation shaders (TCS + TES) on the Vulkan device and
-// captures what its TES computes: position and normal at every domain point, with the
-// exact gl_TessCoord bits, so the CPU float evaluation can be compared at the same
-// points (ulps) and shared-edge points compared bitwise (crack measure).
-//
-// The technique describes its program as plain data (GpuPatchProgram); it never touches
-// Vulkan. The shader contract is in shaders/common/patch_program.glsl:
-//   set 0, binding 0      the capture buffer (written by tbCaptureVertex in the TES)
-//   set 0, bindings 1..N  GpuPatchProgram::storage_buffers, in order
-//   set 1, binding 0      per-patch levels (outer[4], inner[2]), indexed by tbPatchIndex();
-//                         the TCS writes them with tbWriteHarnessLevels()
-//   push constants        first patch of the draw (tbPatchIndex()), capture flag
-//   specialisation        constant_id i = GpuPatchProgram::specialization[i], both stages;
-//                         constant_id 200 is the harness's (boundary_only capture, TES)
-// Each draw covers a small batch of patches (lavapipe's single-threaded tessellator
-// slows down super-linearly with many patches per draw); capture is by SSBO with an
-// atomic counter (about 4x faster than transform feedback on lavapipe), of every TES
-// invocation or only of those on the patch boundary (what the crack measure pairs).
-//
-// Thread-safe: several threads may run programs on one Context at once. Each call has
-// its own capture buffer, query pool and descriptor sets; the compiled pipelines are
-// shared; submissions take turns on the Context's queue.
+// Runs a technique's own tessellation shaders (TCS + TES) on the Vulkan device and captures
+// what its TES computes (position, normal, exact gl_TessCoord bits) at every domain point, or
+// only on the patch boundary (what the crack measure pairs), so the CPU float evaluation can
+// be compared in ulps and shared points bitwise. The binding contract (capture at set 0,
+// binding 0; storage buffers 1..N; per-patch levels at set 1, binding 0; constant 200 the
+// harness's) is in shaders/common/patch_program.glsl; why draws are small and capture is by
+// SSBO: docs/ARCHITECTURE.md §6. Thread-safe: each call has its own capture buffer, query
+// pool and descriptor sets; pipelines are shared; submissions take turns on the queue.
 #pragma once
 
 #include <cstdint>

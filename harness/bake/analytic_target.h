@@ -1,15 +1,9 @@
-// The baker's oracle (docs/ARCHITECTURE.md, "Baker"): a detailed target mesh whose
-// displacement is known in closed form. The asset's exact limit surface (OpenSubdiv Bfr) is
-// tessellated densely and every vertex moved along its limit normal by
-//
-//   h(p) = A * (sin(2 pi f qx + 0.3) + sin(2 pi f qy + 1.1) + sin(2 pi f qz + 2.3)) / 3,
-//   q = (p - c) / D,
-//
-// where c is the centre and D the diagonal of the control mesh's bounding box (world units),
-// so q is dimensionless, A = amplitude_fraction * D (world units, |h| <= A) and f the
-// frequency in cycles per diagonal. h is in world units. Its gradient is at most
-// A * 2 pi f / (D sqrt 3) (0.073 at the defaults), so the displaced surface stays a graph
-// over the limit and a ray along the limit normal meets it once nearby.
+// The baker's oracle (docs/derivations/displacement.md): the asset's Bfr limit tessellated
+// densely, each vertex moved along its limit normal by
+//   h(p) = A (sin(2 pi f qx + 0.3) + sin(2 pi f qy + 1.1) + sin(2 pi f qz + 2.3)) / 3,
+// q = (p - c) / D (c, D the control mesh's box centre and diagonal), A = amplitude_fraction
+// D, f cycles per diagonal. |grad h| <= A 2 pi f / (D sqrt 3) (0.073 at the defaults), so the
+// displaced surface stays a graph over the limit and a normal ray meets it once nearby.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
-// The JSON sidecar written beside a baked map (docs/ARCHITECTURE.md, "Baker"): FILE.exr gets
-// FILE.exr.json, which says what was baked from what.
+// The JSON sidecar written beside a baked map (docs/FORMATS.md, "The baker's sidecar"): FILE.exr
+// gets FILE.exr.json, which says what was baked from what.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// The displacement baker (docs/ARCHITECTURE.md, "Baker"): a map for one technique's surface
+// The displacement baker (docs/derivations/displacement.md): a map for one technique's surface
 // against a detailed target mesh. Scalar texels are the signed distance along the
 // displacement direction (DisplacementFrame, techniques/common/displaced_patches.h: the
 // technique's normals at the patch corners, interpolated, so that a displaced surface moves

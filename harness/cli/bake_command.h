@@ -1,6 +1,6 @@
 // `tessbench bake`: a displacement map for one technique on one asset against a detailed
 // target mesh (an OBJ, or the built-in analytic target of the baker's oracle), written as
-// OpenEXR with a JSON sidecar (harness/bake, docs/ARCHITECTURE.md "Baker").
+// OpenEXR with a JSON sidecar (harness/bake, docs/derivations/displacement.md).
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // The results database of `tessbench history`: finished run folders (merged shard runs too)
 // ingested into one SQLite file, each run keyed by its git sha, commit time, run id, date,
 // device and suite, with every record and measure as results.json holds them and the
-// samples of timings.json. docs/ARCHITECTURE.md, section 4, "History", has the schema.
+// samples of timings.json. docs/FORMATS.md, "History database", has the schema.
 //
 // Writers take the database's write lock for a whole add (BEGIN IMMEDIATE, WAL journal,
 // a busy timeout), so two processes adding at once both land, one after the other, and a

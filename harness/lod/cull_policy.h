@@ -1,16 +1,9 @@
-// Patch culling policies: the CPU twin of shaders/common/cull.glsl (same float operations
-// in the same order, so its decision equals the one every technique's TCS makes, patch for
-// patch) and the packing of the policy and the per-patch bounds for the device
-// (gpu::TcsCullPolicy). The policies are described in cull.glsl and by
-// cullPolicyDescription().
-//
-// Per-patch bounds come from the technique (SurfacePatches::cullBounds: the control hull and
-// the generators of its geometric normals), computed once per asset in double and rounded to
-// float here: the cone's sine is rounded up and widened by 1e-3 (about 0.06 degrees: a
-// patch seen that close to edge-on projects thinner than the rasteriser's sub-pixel snapping,
-// which can flip a flat triangle's winding; --suite full once showed a 1-pixel false cull of
-// a flat phong/alpha0 patch with 1e-5), a hull of more than 20
-// points is replaced by the 8 corners of its bounding box.
+// Patch culling policies: the CPU twin of shaders/common/cull.glsl (same float operations in
+// the same order, so its decision equals every technique's TCS's) and the packing of the
+// policy and per-patch bounds for the device (gpu::TcsCullPolicy); the policies are described
+// in cull.glsl and cullPolicyDescription(). The bounds (SurfacePatches::cullBounds) are
+// rounded to float here, the cone widened by 1e-3 and a hull over 20 points replaced by its
+// box: why, in docs/derivations/chord_margins.md ("The cone margin").
 #pragma once
 
 #include <array>

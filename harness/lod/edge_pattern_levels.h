@@ -11,17 +11,12 @@
 
 namespace tb::lod {
 
-// The pattern. Edge level: base_level times one of kEdgePatternScales, chosen by a hash
-// of the edge's two welded end vertices (weldByPosition of the control mesh, applied to
-// patchCorners(), as findSharedBoundaries does), taken unordered: the level depends only
-// on what the patches on both sides of the edge hold bitwise, never on the patch, its
-// corner order or an unwelded seam index. A degenerate edge (both ends weld together)
-// gets base_level. The D3D11 helper tess::process{Quad,Tri}TessFactorsAvg (inside scale
-// 1) then rounds and clamps the edge levels for `spacing` (a function of each edge's own
-// level, so shared edges still agree) and sets the inner level(s) to their average.
-// Returns one tess::Levels per patch (levels the domain does not use are 0), in the
-// gl_TessLevelOuter order: local edge k (corner k to k + 1, technique.h) is outer[(k + 1)
-// % 4] of a quad (u = 0, v = 0, u = 1, v = 1) and outer[(k + 2) % 3] of a triangle.
+// The pattern. Edge level: base_level times one of kEdgePatternScales, by a hash of the
+// edge's two welded end vertices taken unordered, so it depends only on what both sides hold
+// bitwise (a degenerate edge gets base_level). tess::process{Quad,Tri}TessFactorsAvg then
+// rounds and clamps each edge for `spacing` and averages the inside. Returns one tess::Levels
+// per patch in gl_TessLevelOuter order: local edge k is outer[(k + 1) % 4] of a quad and
+// outer[(k + 2) % 3] of a triangle (unused levels 0).
 std::vector<tess::Levels> edgePatternLevels(const techniques::SurfacePatches& patches,
                                             tess::Spacing spacing, float base_level);
 

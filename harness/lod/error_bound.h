@@ -1,17 +1,9 @@
-// The error_bound factor policy's per-patch inputs (factor_policy.h, FactorPolicyKind::
-// kErrorBound): the technique's second-derivative bounds (techniques::CurvatureBounds) and
-// the hulls the policy reads its nearest depth from, rounded outward to float once per asset.
-//
-// The policy aims at the tessellation error itself: an edge whose curve C has sup|C''| <= M
-// needs n >= sqrt(M / (8 eps)) segments for a chord error of eps (Wang's formula), and the
-// inside of a patch n >= sqrt((uu + 2 uv + vv) / (8 eps)) (Filip, Magedson & Markot 1986),
-// with eps the world error that projects to the pixel target at the hull's nearest depth.
-// The inside level is chosen against the tessellator's own triangles, transition rings
-// included (transition_extents.h).
-//
-// Crack safety: a shared edge's record (its bound and its sphere) is computed once from every
-// side's edge curve (the larger bound, a sphere around every side's edge hull) and copied to
-// each side, so the patches of that edge compute its level from the same bits.
+// The error_bound factor policy's per-patch inputs (factor_policy.h, kErrorBound): the
+// technique's second-derivative bounds and the hulls the policy reads its nearest depth from,
+// rounded outward to float once per asset. Edges by Wang's formula, the inside against the
+// tessellator's own triangles (transition_extents.h; Filip, Magedson & Markot 1986). A shared
+// edge's record is built once from every side and copied to each, so both compute one level.
+// Derivation: docs/derivations/factor_policy.md and gregory_blend_constants.md.
 #pragma once
 
 #include <array>

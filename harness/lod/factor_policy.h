@@ -1,50 +1,9 @@
 // View-dependent tessellation-factor policies: the CPU twin of
-// shaders/common/tess_factors.glsl (same float operations in the same order, so the
-// levels equal what every technique's TCS writes, bit for bit) and the packing of the
-// policy for the device (gpu::TcsFactorPolicy).
-//
-// Each policy gives one factor per patch edge, from the edge's two end corners (welded
-// control-mesh positions and the welded positions' normals), taken in lexicographic order
-// of the positions so both patches of a shared edge compute the same bits
-// (docs/ARCHITECTURE.md §5, rule 3). Inner levels come from the edges through the D3D11
-// helpers of core/tess/factor_helpers.h (ProcessTri/QuadTessFactors{Avg,Max,Min}, inside
-// scale 1).
-//
-// Policies and their parameter `target`:
-// - uniform: every edge = target (a tessellation level); the view is ignored.
-// - distance: target * diagonal / |eye - edge midpoint| (target: the level at one
-//   bounding-box diagonal from the eye; the SubD11 sample's and most tutorials' choice,
-//   size-blind: a long and a short edge at one distance get one factor).
-// - sphere_diameter: the edge's bounding sphere (centre the midpoint, diameter the edge
-//   length d) projected to clip space, |d * P[1][1] / w| of NDC's height 2, times
-//   H / (2 * target) with target in pixels per edge (Dudash, "Dynamic Hardware
-//   Tessellation Basics", NVIDIA 2012).
-// - lp2_edge: max(L R C / D0, L R C / D1), L the edge length, R the viewport height in
-//   pixels, C = target, D0, D1 the distances from the eye to the two ends (CAPCOM, "Lost
-//   Planet 2: DirectX 11 Features"). Its reductions: `_silhouette` scales by
-//   1 - (1 - s_min) |n . v| (n the normalised sum of the end normals, v towards the eye
-//   from the midpoint): full factor at the silhouette, s_min facing the camera;
-//   `_roundness` by s_min + (1 - s_min) min(1, (1 - n0 . n1) / (1 - cos a)): s_min where
-//   the end normals agree (a flat edge), full where they turn by a or more (PN and Phong
-//   only in the talk, whose surfaces bend with the vertex normals).
-// - the suffix `_order_dependent` on any policy takes the corners in patch order instead:
-//   deliberately not crack-safe (the midpoint a + (b - a) / 2 rounds differently when the
-//   two patches run the edge in opposite directions), so the measure can be seen to fail.
-// - error_bound: the least levels at which the technique's own second-derivative bounds keep
-//   the tessellation error within `target` pixels (error_bound.h): each edge the least level
-//   of the narrow family (transition_extents.h, narrowEdgeLevel) whose longest segment s
-//   keeps its record's bound m within eps (m s^2 <= eps), the inside the least whole level
-//   whose worst triangle, with those edges, transition rings included, is within eps; only
-//   levels at which the spacing's segments are equal. eps = target w_near / (f_px k) world
-//   units, w_near the nearest clip w of the edge's hull sphere (inside: the largest eps of
-//   the patch's and its edges' spheres, each of which holds the patch), at least the near
-//   plane's, f_px =
-//   H |P[1][1]| / 2 and k = sqrt(1 + a^2 + b^2) the largest stretch of the projection's
-//   Jacobian over that sphere (a, b its largest view x / z, y / z, at most the view's edges:
-//   the error counts visible samples only); a sphere wholly outside the view gets level 1.
-//   No search: the target is the error. `error_bound_loose` doubles eps: a control that must
-//   break the 1 px criterion somewhere; `error_bound_dense` gives edges every equal-segment
-//   level: a control that leaves patches unmet which the top level would meet.
+// shaders/common/tess_factors.glsl (same float operations in the same order, so the levels
+// equal every technique's TCS's bit for bit) and the packing for the device
+// (gpu::TcsFactorPolicy). Each edge's factor comes from its two welded end corners in
+// lexicographic order (docs/ARCHITECTURE.md §5, rule 3). The policies (Dudash 2012, Lost
+// Planet 2, error_bound) are specified in docs/derivations/factor_policy.md.
 #pragma once
 
 #include <array>

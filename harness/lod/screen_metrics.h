@@ -1,16 +1,9 @@
-// Screen-space figures of a tessellated surface under one camera view (CPU only): what a
-// view-dependent tessellation-factor policy (seed 002) buys and costs on screen. Given the
-// patches, a spacing, one tess::Levels per patch and a View (core/view/view.h), the CPU
-// tessellator (core/tess) tessellates each patch as the GPU would, the technique's double
-// evaluator places its points (batched, techniques/batch_eval.h), and the view's double
-// matrix projects them to pixels.
-//
-// Visibility, used by every figure: a point is in front when its clip w >= view.near_plane
-// (perspective views: clip w is the distance along the view direction), and inside when its
-// pixel lies in the closed viewport [0, width] x [0, height].
-//
-// Results are byte-identical whatever the thread count: patches are evaluated in parallel
-// into per-patch slots and reduced serially in patch order.
+// Screen-space figures of a tessellated surface under one view (CPU only): what a factor
+// policy (seed 002) buys and costs on screen. The CPU tessellator tessellates each patch as
+// the GPU would, the technique's double evaluator places the points (batched) and the view's
+// matrix projects them. A point is in front when clip w >= view.near_plane and inside when its
+// pixel is in the closed viewport. Patches run in parallel into per-patch slots reduced in
+// patch order, so results do not depend on the thread count (docs/derivations/adaptivity.md).
 #pragma once
 
 #include <cstdint>

@@ -1,14 +1,9 @@
 // The tessellator's transition rings, measured once per domain and spacing for the
-// error_bound factor policy (factor_policy.h): how wide, in the domain, the widest triangle
-// is when one outer edge has level o and every other level (outer and inner) is n.
-//
-// Where an edge's level differs from the inside's, the fixed-function tessellator (D3D11's,
-// core/tess/stitch.cpp) stitches the edge's row to the first inner ring in its ruler order,
-// which advances the longer row's extra points first: a triangle of that ring can span up to
-// about 3.5 edge segments (o = 32, n = 44, integer spacing), where an n x n grid's span one.
-// A bound on a regular grid's error (Filip, Magedson & Markot) therefore does not cover the
-// ring; these extents do: a triangle whose extents are du, dv has a chord error of at most
-// ((M_uu + M_uv) du^2 + (M_vv + M_uv) dv^2) / 8 (error_bound.h).
+// error_bound factor policy (factor_policy.h): the widest triangle, in the domain, when one
+// outer edge has level o and every other level is n. D3D11's stitch (core/tess/stitch.cpp)
+// makes triangles up to ~3.5 edge segments wide, which a regular grid's bound (Filip,
+// Magedson & Markot) misses; a triangle of extents du, dv has chord error at most
+// ((M_uu + M_uv) du^2 + (M_vv + M_uv) dv^2) / 8. Derivation: docs/derivations/transition_rings.md.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Where a variant cracks, as a picture (docs/ARCHITECTURE.md §4, "Pictures"): the
+// Where a variant cracks, as a picture (docs/REPORTS.md, "Pictures"): the
 // surface shaded grey with every pair of shared points that differ
 // (measures::unequalPairs) marked, for the cracks row of results.json with the largest gap
 // on the CPU float backend. What glViewer or RenderDoc users look for: where the unequal

@@ -1,4 +1,4 @@
-// The two pictures of one surface (docs/ARCHITECTURE.md §4, "Pictures"): rendered on the
+// The two pictures of one surface (docs/REPORTS.md, "Pictures"): rendered on the
 // Vulkan device into gpu::RenderTarget's triangle-ID buffer from a fixed 3/4 view, then
 // composed on the CPU:
 //  - error: each pixel the heat-map colour (heat_map.h) of its triangle's error

@@ -1,4 +1,4 @@
-// Which world axis a picture shows vertical (docs/ARCHITECTURE.md §4, "Pictures"). OBJ files
+// Which world axis a picture shows vertical (docs/REPORTS.md, "Pictures"). OBJ files
 // are y-up by convention, but some bundled shapes (OpenSubdiv's pawn, pyramid and tent, the
 // cylinder) are modelled z-up and lay on their side in a y-up view. The pictures turn the
 // camera, never the data: a z-up asset is seen as if it were rotated to y-up.

@@ -3,7 +3,7 @@
 // and the view's index; one that needs a whole path (MeasureNeed::kCameraPath) runs once
 // per path. Paths are data: small JSON files (assets/cameras/*.json, or any file given to
 // `run --camera`), read here and sampled around each asset's bounding box. The JSON format
-// and the sampling rule are in docs/ARCHITECTURE.md, section 3.
+// and the sampling rule are in docs/FORMATS.md, "Camera path files".
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Reading a camera path file (JSON) into a CameraPathSpec: every field's type, range and
 // finiteness, each broken rule one InputError naming the file and the field. The format is
-// in docs/ARCHITECTURE.md, section 3; the geometric rules (a camera at every keyframe and
+// in docs/FORMATS.md, "Camera path files"; the geometric rules (a camera at every keyframe and
 // sampled frame) are checked by sampling the path once (camera_path_sampling.cpp).
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Scenario files (JSON, format "tessbench-scenario-1"): the inputs of simulation
 // techniques (techniques/simulation.h), bundled in assets/scenarios/*.json or given by
-// path (`tessbench run --scenario NAME|PATH`). The format is in docs/ARCHITECTURE.md,
-// section "Simulations". Every broken rule is one InputError naming the file and field.
+// path (`tessbench run --scenario NAME|PATH`). The format is in docs/FORMATS.md,
+// "Scenario files". Every broken rule is one InputError naming the file and field.
 #pragma once
 
 #include <string>
@@ -12,19 +12,10 @@
 namespace tb::suite {
 
 // Reads one scenario file. `shown_path` is how messages name the file (the path as given,
-// or "assets/scenarios/<name>.json" for a bundled one); empty: `path`. Fields:
-//   "format": "tessbench-scenario-1"             required
-//   "name": string                                required, non-empty
-//   "technique": string                           optional (empty: any simulation)
-//   "time_step_s": number > 0                     required
-//   "duration_s": number >= time_step_s           required
-//   "parameters": {snake_case_with_unit: number}  optional, finite numbers
-//   "mesh": string                                optional: a path relative to the file,
-//                                                 or a bundled asset name; resolved to an
-//                                                 absolute Scenario::mesh_path
-//   any other object-valued field                 a technique section, kept verbatim
-//                                                 (dumped JSON) in Scenario::sections
-// Any other field (a string or number the format does not know) is refused.
+// or "assets/scenarios/<name>.json" for a bundled one); empty: `path`. The fields (format,
+// name, technique, time_step_s, duration_s, parameters, mesh, technique sections) and their
+// rules are in docs/FORMATS.md, "Scenario files"; any field the format does not know is
+// refused.
 techniques::Scenario loadScenarioFile(const std::string& path, const std::string& shown_path = "");
 
 // The scenarios folder: <assetsDirectory()>/scenarios.

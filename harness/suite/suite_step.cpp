@@ -303,7 +303,7 @@ class BorrowedSurface final : public techniques::TechniqueInstance {
   const techniques::SurfacePatches& surface_;
 };
 
-// A displaced asset (docs/ARCHITECTURE.md, "Displaced surfaces"): the map's own technique
+// A displaced asset (docs/derivations/displacement.md): the map's own technique
 // and variant only, each measure that runs on displaced surfaces once per sampling (naive,
 // watertight), the rows keyed `displacement` (the map's file name) and `sampling`.
 StepOutcome runDisplacedStep(const SuiteRun& run, const techniques::Technique& technique,

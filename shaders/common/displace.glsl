@@ -1,4 +1,4 @@
-// Displacement after evaluation (docs/ARCHITECTURE.md, "Displaced surfaces"): every
+// Displacement after evaluation (docs/derivations/displacement.md): every
 // technique's TES reaches it through tbEmitVertex (patch_program_tes.glsl) when compiled as
 // its "#displaced" build (TB_DISPLACEMENT defined; shaders/CMakeLists.txt). The CPU twin is
 // techniques/common/displacement_sampling.h, DisplacedPatches::evaluateFloat: the same

@@ -1,34 +1,9 @@
-// ACC control points (Loop & Schaefer, "Approximating Catmull-Clark Subdivision
-// Surfaces with Bicubic Patches", ACM TOG 27(1), 2008), templated on the scalar so the
-// same operation order runs in double, in float (as shaders/acc/acc.tesc) and with
-// CountingScalar.
-//
-// Geometry patch, §3.1, for a corner vertex v of valence n with ring e_i, f_i
-// (techniques/common/quad_ring.h):
-//   corner    (n^2 v + 4 Σ e_i + Σ f_i) / (n (n + 5))                 the limit position
-//   edge      (2n v + 4 e_i + 2 e_{i-1} + 2 e_{i+1} + f_{i-1} + f_i) / (2n + 10)
-//   interior  (n v + 2 e_i + 2 e_{i+1} + f_i) / (n + 5)
-// On a smooth boundary (Sdc EDGE_AND_CORNER) the boundary curve is the cubic B-spline
-// of the boundary vertices: corner (e_0 + 4 v + e_{n-1}) / 6 (v itself at a corner),
-// boundary edge point (2 v + e) / 3; interior edge and interior points at a
-// boundary vertex use the valence-4 masks. Regular boundary faces are then exactly
-// OpenSubdiv's B-spline boundary patches. An infinitely sharp crease is a boundary to each
-// of its sides (Kovacs et al. 2009; techniques/common/crease_refinement.h): every sector of
-// a crease vertex is a boundary ring, so the crease curve is the B-spline of the crease
-// vertices, the limit's crease curve, from both sides.
-//
-// Tangent patches, §3.2: tu (degree 2 x 3) and tv (3 x 2) start as the derivative
-// patches of the geometry. At interior corners the tangents become the limit tangents
-// T_i = Σ α_{j-i} e_j + β_{j-i} f_j (Catmull-Clark limit tangent masks, scaled so a
-// regular vertex gives the B-spline derivative exactly). Along an edge from corner A
-// to B with edge tangent a0, a1, a2 the cross tangents next to the corners are
-//   x1 = (2 c_A a1 - c_B a0) / 3 + d1,  x2 = (c_A a2 - 2 c_B a1) / 3 + d2,
-// c = cos(2π/n), d the geometry's cross difference, which is antisymmetric across the
-// edge; so the two patches' cross tangents sum to λ(t) a(t) and the normals agree
-// along every edge. Boundary vertices keep the geometry tangents (c = 0).
-//
-// Sums run in the vertex's stored ring order and a fixed term order, so every patch
-// that shares a corner or edge control point computes it bit for bit the same way
+// ACC control points (Loop & Schaefer, "Approximating Catmull-Clark Subdivision Surfaces
+// with Bicubic Patches", ACM TOG 27(1), 2008: geometry masks §3.1, tangent patches §3.2),
+// templated on the scalar so the same operation order runs in double, in float (as
+// shaders/acc/acc.tesc) and with CountingScalar. The masks, boundary and crease rules and the
+// cross-tangent construction: docs/derivations/acc_gregory.md. Sums run in the stored ring
+// order, so every patch sharing a control point computes it bit for bit the same way
 // (docs/ARCHITECTURE.md §5 rule 1).
 #pragma once
 

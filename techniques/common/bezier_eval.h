@@ -1,19 +1,10 @@
 // Bicubic Bézier evaluation in the operation orders of seed 000 ("ベジェパッチの計算"),
-// templated on the scalar so the same order runs in double, in float (as the TES
-// does; shaders/common/bezier.glsl is its twin) and with CountingScalar.
-//
-// Control points b[i + 4 j]: i along u, j along v. Rows (fixed j) are combined in u,
-// then the four row results in v.
-//   kAsymmetric      rows and the column as one FMA chain from index 0 to 3
-//                    (seed: 60 instructions); the result depends on the direction
-//                    the parameter runs, so a shared edge seen mirrored differs.
-//   kSymmetricNoFma  (B0 p0 + B1 p1) + (B3 p3 + B2 p2), plain mul/add (105).
-//   kSymmetricFma    fma(B1, p1, B0 p0) + fma(B2, p2, B3 p3) (75; see fusedMulAdd).
-//   kSymmetricEdges  the symmetric FMA form for rows 0 and 3 and the column, the
-//                    chain for rows 1 and 2, which vanish on the v edges (69).
-// The symmetric forms give bitwise-equal points for t and 1 - t with mirrored
-// control points (B0 <-> B3 and B1 <-> B2 are computed by mirrored formulas), which
-// is what makes shared edges watertight (docs/ARCHITECTURE.md §5 rule 2).
+// templated on the scalar so the same order runs in double, in float (as the TES does;
+// shaders/common/bezier.glsl is its twin) and with CountingScalar. Control points
+// b[i + 4 j], i along u; rows first, then the column. The four orders and their instruction
+// counts: docs/derivations/acc_gregory.md. The symmetric forms give bitwise-equal points for t
+// and 1 - t with mirrored control points, which makes shared edges watertight
+// (docs/ARCHITECTURE.md §5 rule 2).
 #pragma once
 
 #include <array>

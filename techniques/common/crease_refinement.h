@@ -1,27 +1,10 @@
-// Creases, corners, holes and boundary interpolation for the ACC-family patches
-// (acc, gregory_acc), after Kovacs, Mitchell, Drone & Zorin, "Real-Time Creased
-// Approximate Subdivision Surfaces" (I3D 2009):
-//
-// - An infinitely sharp edge is a boundary for patch construction: the faces on each side
-//   build their corners from their own sector of the vertex's ring, with the boundary
-//   (B-spline curve) rules. The crease curve then depends only on the crease vertices, so
-//   both sides compute the same curve and it is exactly the limit's crease curve.
-// - A vertex with one sharp edge (a dart) keeps its whole ring and smooth rules.
-// - A vertex with two sharp edges is a crease vertex; with three or more, or with an
-//   infinitely sharp vertex tag on a crease or a boundary, a corner (interpolated).
-// - Semi-sharp (finite) sharpness is refined away, as the amendment to issue 16 asks: the
-//   mesh is refined with OpenSubdiv (Far::TopologyRefiner, Chaikin or uniform rule as
-//   tagged) until every finite sharpness has decayed to 0 (each level subtracts 1), at most
-//   as many levels as keep the patch count within a budget. The whole mesh is refined
-//   uniformly: patches of different levels would meet at T-junctions, which no bitwise
-//   watertight evaluation can close. When the budget stops refinement early, a sharpness
-//   left over is rounded: >= 0.5 becomes infinitely sharp, below 0.5 smooth (a note says so);
-//   a vertex sharpness left over on a vertex with fewer than two sharp edges becomes smooth.
-// - Holes (and, with boundary interpolation "none", the faces OpenSubdiv leaves without a
-//   limit surface) get no patch; their vertices still shape their neighbours.
-//
-// The refined mesh keeps its true remaining tags, so a reference limit built over it is
-// the input's own limit surface.
+// Creases, corners, holes and boundary interpolation for the ACC-family patches (acc,
+// gregory_acc), after Kovacs, Mitchell, Drone & Zorin, "Real-Time Creased Approximate
+// Subdivision Surfaces" (I3D 2009): an infinitely sharp edge is a boundary to each side, so
+// both sides build the limit's crease curve; finite sharpness is refined away uniformly with
+// OpenSubdiv within a face budget (the leftover rounded); holes get no patch. The vertex
+// kinds and every rule: docs/derivations/creases.md. The refined mesh keeps its true tags, so
+// a reference built over it is the input's own limit.
 #pragma once
 
 #include <cstdint>

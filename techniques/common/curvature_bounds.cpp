@@ -1,70 +1,7 @@
-// Second-derivative bounds of Bezier quads, Bezier triangles and Gregory patches.
-//
-// Bezier quad of bi-degree d (net c_ij, i along u):
-//   S_uu = d (d - 1) Σ_{i <= d-2, j <= d} (c_ij - 2 c_{i+1,j} + c_{i+2,j}) B^{d-2}_i(u) B^d_j(v),
-//   S_uv = d^2 Σ_{i, j <= d-1} (c_{i+1,j+1} - c_{i+1,j} - c_{i,j+1} + c_ij) B^{d-1}_i B^{d-1}_j,
-// and S_vv like S_uu; the Bernstein weights are >= 0 and sum to 1, so the largest norm of a
-// coefficient bounds each (exact, not sampled; tight when one difference dominates, e.g. a
-// parabolic patch, whose bound is attained).
-//
-// Bezier triangle of degree d (b_ijk, i + j + k = d; i the power of u, j of v, k of w), with
-// (u, v) free and w = 1 - u - v: ∂/∂u = D_u - D_w, ∂/∂v = D_v - D_w (D_x the derivative along
-// barycentric x), so over i + j + k = d - 2 with weights B^{d-2}_ijk:
-//   S_uu = d (d - 1) Σ (b_{i+2,j,k} - 2 b_{i+1,j,k+1} + b_{i,j,k+2}) B,
-//   S_uv = d (d - 1) Σ (b_{i+1,j+1,k} - b_{i+1,j,k+1} - b_{i,j+1,k+1} + b_{i,j,k+2}) B,
-//   S_vv = d (d - 1) Σ (b_{i,j+2,k} - 2 b_{i,j+1,k+1} + b_{i,j,k+2}) B.
-// A net whose corners are the domain's in another order takes the same differences with the
-// net corners of the domain's u, v, w in place of i, j, k.
-//
-// Edge curves: the boundary row of the net is the edge's Bezier curve from corner to corner
-// on [0, 1]; sup |C''| <= d (d - 1) max |Δ²| of that row (Wang's bound), which depends on the
-// row alone, so two patches sharing the row agree to rounding.
-//
-// Gregory blends. Corner c's interior point of a Gregory patch is the rational blend
-// (a_c Fp_c + b_c Fm_c) / (a_c + b_c), a_c, b_c >= 0 the linear functions that vanish on the
-// corner's two edges. With M_c = (Fp_c + Fm_c) / 2 and δ_c = (Fp_c - Fm_c) / 2 it is
-// M_c + t_c δ_c, t_c = (a_c - b_c) / (a_c + b_c) in [-1, 1]; so the patch is the polynomial
-// patch S_mid with the midpoints M_c in its interior slots plus Σ_c g_c δ_c with the scalar
-// g_c = B_c t_c (B_c the slot's Bernstein weight), the same function on every patch. Hence
-//   |S_xy| <= sup |S_mid,xy| + Σ_c sup |∂xy g_c| |δ_c|   (xy in uu, uv, vv).
-// g_c is smooth except at corner c, where t_c is homogeneous of degree 0 in (a_c, b_c); its
-// second derivatives stay bounded there, as B_c vanishes to first order in each of a_c and
-// b_c (near the corner g_c ~ k a b (a - b) / (a + b), homogeneous of degree 2, whose second
-// derivatives depend on the direction only). In the coordinates r = a_c + b_c, s = a_c / r
-// every second derivative of g_c with respect to the domain's (u, v) is a polynomial in
-// (r, s) (checked symbolically: the powers of r from ∂s/∂u = O(1/r) cancel). Its supremum
-// over the domain's image in (r, s) was bounded rigorously offline by interval branch and
-// bound on that polynomial (scripts/gregory_blend_constants.py: exact rational interval
-// arithmetic, boxes halved until their upper bound is within 1e-3 of the best value found at
-// a point of the domain; the largest upper bound of the leaves is the bound).
-//   Quad (bicubic B_c, e.g. corner 0: 9 u (1-u)^2 v (1-v)^2, t = (u - v) / (u + v)): over
-// the whole domain sup |∂uu g_0| = sup |∂vv g_0| = 36, sup |∂uv g_0| = 9, attained in the
-// limit at corner 0. Far from its corner g_0 bends far less, so gregoryQuadNetCurvatureBounds
-// bounds each quadrant of the domain on its own (the midpoint patch on its de Casteljau
-// quarter net, each blend with its constant on that quadrant) and takes the largest. g_0's
-// constants (uu, uv, vv) per quadrant, proven upper bounds (tolerance 2e-3 or 2e-2) rounded
-// up: [0, 1/2]^2 (36, 9, 36), the whole domain's (proven 36.00005, 9.0001, 36.00005);
-// [1/2, 1] x [0, 1/2] (1.541, 3.000, 13.5) (proven 1.5428, 3.0020, 13.5020); [0, 1/2] x
-// [1/2, 1] the same with uu and vv swapped (g_0(v, u) = -g_0(u, v)); [1/2, 1]^2 uu = vv =
-// 0.856 (proven 0.8761; the quadrant is its own mirror), uv 0.460 (proven 0.4576, sampled
-// 0.4243). (The quadrants away from the corner by interval branch and bound directly in
-// (u, v), where g_0 is smooth: scripts/gregory_blend_constants.py --quadrants 10 and
-// --far-quadrant; the far quadrant's uv by --far-quadrant-bernstein 4: on each of 512
-// sub-triangles the largest Bernstein coefficient of the numerator, exact rationals, over
-// the smallest (u + v)^k there.) Corners 1..3 are corner 0
-// reflected (g_1(u, v) = -g_0(1 - u, v), g_2 = g_0(1 - u, 1 - v), g_3 = -g_0(u, 1 - v));
-// reflections keep |∂uu|, |∂uv|, |∂vv|, so corner c reads g_0's reflected quadrant.
-//   Triangle (quartic B_c = 12 x^2 y z, x the corner's own coordinate), per corner since
-// w = 1 - u - v breaks the symmetry of the (u, v) derivatives: over the whole domain (uu,
-// uv, vv) = (48, 60, 72) at corner 0, (72, 60, 48) at corner 1, (48, 12, 48) at corner 2
-// (proven upper bounds within 1e-3 of these; stored + 0.002), the suprema at the corner.
-// Per region of the domain cut at its edges' midpoints, away from its corner (where x <= 1/2,
-// so a + b >= 1/2 and g_c is smooth) the bounds are smaller: on each of 256 sub-triangles of
-// the region the largest Bernstein coefficient of the numerator (exact rationals) over the
-// smallest (a + b)^k there (scripts/gregory_blend_constants.py --triangle-regions 4; the
-// largest sampled value beside each: 24 of 26.99, 21 of 21.63, 2.31 of 2.54, 4 of 4.41 and
-// 4.63, the middle's and 18 exact). Stored + 0.002. The sum over the corners on the worst
-// region is about 0.75 of the whole domain's (uu: 26.99 + 72 + 26.99 on v >= 1/2 against 168).
+// Second-derivative bounds of Bezier quads, Bezier triangles and Gregory patches, from the
+// convex-hull property of the differences of their nets (Wang's edge bound; Filip, Magedson
+// & Markot 1986). Derivation: docs/derivations/curvature_bounds.md; the Gregory blends'
+// constants and their proof: docs/derivations/gregory_blend_constants.md (Loop et al. 2009).
 #include "techniques/common/curvature_bounds.h"
 
 #include <algorithm>

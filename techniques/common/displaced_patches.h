@@ -1,5 +1,5 @@
 // Any surface technique's patches with a displacement map applied after evaluation
-// (docs/ARCHITECTURE.md, "Displaced surfaces"): position + direction * h for a scalar map,
+// (docs/derivations/displacement.md): position + direction * h for a scalar map,
 // position + V for a vector map, sampled naively or watertight (displacement_sampling.h).
 // The GPU side is the same technique's TES compiled with shaders/common/displace.glsl
 // (embedded as "<tese>#displaced"), which its tbEmitVertex calls; evaluateFloat is its twin.

@@ -1,4 +1,4 @@
-// How a displaced surface reads its map (docs/ARCHITECTURE.md, "Displaced surfaces"): the
+// How a displaced surface reads its map (docs/derivations/displacement.md): the
 // texel lookup in a per-patch tile, the owner rule of watertight sampling (seed 000) and the
 // displacement direction, templated on the scalar so one code path is the double evaluation
 // and the float twin of shaders/common/displace.glsl (same operations, same order).

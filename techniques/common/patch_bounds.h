@@ -1,16 +1,8 @@
-// Shared math for SurfacePatches::cullBounds (techniques/technique.h, PatchCullBounds):
-// the normal patches of polynomial Bézier patches. Positions and generators are in the
-// control mesh's world units; generators matter only up to a positive factor (a cone is
-// spanned by directions).
-//
-// Normal patch (Sederberg & Meyers 1988): for a polynomial patch p, the geometric normal
-// N = p_s x p_t is itself a polynomial, in the Bernstein basis of the summed degrees of
-// p_s and p_t; a product of two Bernstein polynomials is a Bernstein polynomial of the
-// summed degree times a positive factor, so N's control points are positive combinations
-// of the pairwise cross products of p_s's and p_t's control points
-// (techniques/common/bernstein_poly.h). Because the Bernstein basis is non-negative on the
-// domain, N at every domain point is a non-negative combination of its control points:
-// they generate a cone containing every normal.
+// Shared math for SurfacePatches::cullBounds (techniques/technique.h, PatchCullBounds): the
+// normal patches of polynomial Bézier patches (Sederberg & Meyers 1988). N = p_s x p_t is a
+// polynomial whose Bernstein control points are positive combinations of the pairwise cross
+// products of p_s's and p_t's (bernstein_poly.h), so they generate a cone containing every
+// normal. World units; generators only up to a positive factor. docs/derivations/normal_cones.md.
 #pragma once
 
 #include <array>

@@ -1,15 +1,9 @@
-// Ordered 1-rings of a manifold quad mesh, shared by the quad-patch techniques
-// (ACC, Gregory ACC). Around vertex v the ring alternates edge neighbours e_i and
-// face-diagonal vertices f_i: face f_i has corners v -> e_i -> f_i -> e_{i+1} in its
-// own (counter-clockwise) order, so the ring turns the way the faces are oriented.
-// A boundary vertex's ring starts at the boundary edge e_0 and ends at the boundary
-// edge e_{n-1}; it has n - 1 faces. An interior vertex has n faces, f_{n-1} between
-// e_{n-1} and e_0. The stored start of the ring is fixed per vertex, so every face
-// that sums over a ring sums in the same order (docs/ARCHITECTURE.md §5 rule 1).
-//
-// Creases (techniques/common/crease_refinement.h): a crease or corner vertex has one ring
-// per sector, the faces between two sharp edges, each a boundary ring. Ring r < the
-// position count is vertex r's (its first sector); the further sectors are appended.
+// Ordered 1-rings of a manifold quad mesh, shared by ACC and Gregory ACC: around vertex v
+// the ring alternates edge neighbours e_i and face diagonals f_i (face f_i is
+// v -> e_i -> f_i -> e_{i+1} in its own order); a boundary ring runs from boundary edge e_0
+// to e_{n-1}. The stored start is fixed per vertex, so every face sums a ring in the same
+// order (docs/ARCHITECTURE.md §5 rule 1). A crease or corner vertex has one ring per sector;
+// ring r < the position count is vertex r's first (docs/derivations/acc_gregory.md).
 #pragma once
 
 #include <array>

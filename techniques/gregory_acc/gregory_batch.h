@@ -1,14 +1,8 @@
-// Batched evaluation of Gregory patches (techniques/batch_eval.h). For a fixed domain
-// point a quad (20 control points) or triangle (15) Gregory patch is linear in its
-// control points: the rational interior blends (a Fp + b Fm) / (a + b) and their
-// derivatives weigh Fp and Fm with functions of (u, v) alone (Loop et al. 2009 eq. 2).
-// So position, du and dv are each Σ_k w_k(u, v) cp_k, and the pattern tabulates the
-// w_k once: a quad patch then costs 3 · 3 · 20 = 180 multiply-adds per point, a triangle
-// 3 · 3 · 15 = 135.
-//
-// The weights come from the evaluator itself (gregory_eval.h) run on unit control
-// points, so the batched surface is the per-point surface by construction, edge rules
-// (symmetric_edges) and the corner case of the blend included.
+// Batched evaluation of Gregory patches (techniques/batch_eval.h). At a fixed domain point a
+// Gregory patch is linear in its control points (Loop et al. 2009 eq. 2), so the pattern
+// tabulates each point's weights once (180 multiply-adds a point on a quad, 135 on a
+// triangle); the weights come from gregory_eval.h run on unit control points, so the batch is
+// the per-point surface by construction (docs/derivations/acc_gregory.md).
 #pragma once
 
 #include <vector>

@@ -245,19 +245,11 @@ void setTriangleBoundaryNet(const GregoryPoints<T>& cp, std::array<mesh::Vec3T<T
 }
 
 // Triangle Gregory patch (Loop et al. 2009: cubic boundaries, quartic interior) at
-// barycentric (u, v, w) = gl_TessCoord, weights of corners 0, 1, 2; position and the
-// derivatives toward corners 1 and 2, S_v - S_u and S_w - S_u (the frame's tangent_u and
-// tangent_v), whose cross product is the normal.
-//
-// Net: corners b400 = P0, ...; the cubic boundary P_c, Ep_c, Em_{c+1}, P_{c+1}
-// degree-raised to quartic, e.g. b310 = (P0 + 3 Ep0) / 4, b220 = (Ep0 + Em1) / 2; the
-// three interior points are rational blends of the corner's Fp and Fm (already the
-// quartic interior points, see gregory_stencils.h), each taking over on its own edge:
-//   b211 = (v Fp0 + w Fm0) / (v + w), b121 = (w Fp1 + u Fm1) / (w + u),
-//   b112 = (u Fp2 + v Fm2) / (u + v).
-// `symmetric_edges`: points on the domain boundary from the cubic edge curve alone,
-// evaluated by symmetricEdge with the same operations a quad patch uses, so an edge
-// shared with a quad or a triangle gives the same bits from both sides.
+// barycentric (u, v, w) = gl_TessCoord: position and the derivatives toward corners 1 and 2
+// (S_v - S_u, S_w - S_u), whose cross is the normal. The net, with interior points
+// b211 = (v Fp0 + w Fm0) / (v + w) and its rotations: docs/derivations/acc_gregory.md.
+// `symmetric_edges`: boundary points from the cubic edge curve alone, with a quad's
+// operations (symmetricEdge), so a shared edge gives the same bits from both sides.
 template <class T>
 GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T v, T w,
                                              bool symmetric_edges) {

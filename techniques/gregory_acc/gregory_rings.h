@@ -29,19 +29,12 @@ double sinTurn(uint32_t k, uint32_t n);
 // The key of the directed edge a -> b.
 uint64_t directedKey(uint32_t a, uint32_t b);
 
-// The 1-ring of a vertex, counter-clockwise: face i follows the edge to neighbour[i]
-// and precedes the edge to neighbour[i + 1] (indices modulo the valence inside). On a
-// boundary, neighbour[0] and neighbour[faces] are the two boundary neighbours, and there
-// is one more neighbour than faces. A sector (the faces between two consecutive sharp
-// edges of a crease or corner vertex, Kovacs et al. 2009) is a Ring too, open like a
-// boundary: neighbour[0] and neighbour[faces] are its sharp edges' other ends.
-//
-// diagonal[i] is face i's "diagonal" as a stencil: on a quad (v, e_i, d_i, e_{i+1}) the
-// vertex d_i; on any other face 4 c_i - v - e_i - e_{i+1}, with c_i the face's
-// centroid (on a triangle: the centroid itself). Loop et al. 2009 write every mask in
-// terms of edge midpoints m_i and face centroids c_i, which is what makes them apply to
-// rings with triangles; substituting this diagonal into the quad masks gives exactly
-// those midpoint/centroid masks, and leaves all-quad rings bit-for-bit as before.
+// The 1-ring of a vertex, counter-clockwise: face i follows the edge to neighbour[i] and
+// precedes the edge to neighbour[i + 1]. On a boundary, or for a sector of a crease or corner
+// vertex (Kovacs et al. 2009), neighbour[0] and neighbour[faces] are the open ends, one more
+// neighbour than faces. diagonal[i] is face i's diagonal as a stencil (a quad's far vertex;
+// otherwise 4 c_i - v - e_i - e_{i+1}), which turns the quad masks into Loop et al. 2009's
+// midpoint/centroid masks (docs/derivations/acc_gregory.md).
 struct Ring {
   std::vector<uint32_t> neighbour;
   std::vector<Stencil> diagonal;  // one per face

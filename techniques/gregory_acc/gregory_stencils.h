@@ -1,24 +1,10 @@
 // Stencils of the 20 Gregory control points of every quad (Loop, Schaefer, Ni, Castaño,
-// "Approximating Subdivision Surfaces with Gregory Patches for Hardware Tessellation",
-// SIGGRAPH Asia 2009): each control point is a weighted sum of control-mesh vertices.
-// The CPU evaluators and the TCS both compute a point as the same sum, in the same
-// order (ascending global vertex index), so the CPU float path and the GPU agree.
-//
-// Sharing (docs/ARCHITECTURE.md §5 rule 1): a corner point P belongs to its vertex and
-// an edge point E(v->w) to its directed edge; each is ONE stencil referenced by every
-// patch that uses it, so both patches of an edge compute their shared points with the
-// same terms in the same order. The face points Fp/Fm are per patch corner.
-//
-// Creases, corners, holes and boundary interpolation (techniques/common/
-// crease_refinement.h, after Kovacs, Mitchell, Drone & Zorin, I3D 2009): the patches are
-// built over the crease preparation's control mesh, where an infinitely sharp edge is a
-// boundary for patch construction. A crease or corner vertex is cut at its sharp edges into
-// sectors, each framed like a mesh-boundary vertex (crease: the crease B-spline's limit
-// point and tangent; corner: interpolated, B-spline end rule along its sharp edges); a
-// dart keeps its whole ring and the smooth rules. Its P, and E along a sharp edge, come out
-// identical from every sector that forms them (checked), so they stay one shared stencil;
-// Fp/Fm use the sector that holds their face. Holes get no patch; their vertices still
-// shape their neighbours' rings.
+// SIGGRAPH Asia 2009): each point a weighted sum of control-mesh vertices, computed by the
+// CPU evaluators and the TCS in the same order (ascending vertex index). Sharing
+// (docs/ARCHITECTURE.md §5 rule 1): a corner point P belongs to its vertex and an edge point
+// E(v->w) to its directed edge, ONE stencil each, referenced by every patch that uses it;
+// Fp/Fm are per patch corner. Crease sectors (Kovacs et al. 2009, crease_refinement.h) and
+// the rules per vertex kind: docs/derivations/acc_gregory.md and creases.md.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // A mass-spring soft body's input, read from a scenario's "mass_spring" section (format in
-// docs/ARCHITECTURE.md, "Mass-spring soft body"): the skin mesh, a bone chain and its
+// docs/derivations/simulations.md, "Mass-spring soft body"): the skin mesh, a bone chain and its
 // animation, stiffness per spring kind, and the painted softness (seed 003: the artist
 // paints how soft each part of the skin is). Also builds the springs from them.
 #pragma once

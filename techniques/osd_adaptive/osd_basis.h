@@ -1,19 +1,9 @@
-// osd_adaptive's own evaluation of one Far sub-patch, templated on the scalar: in float it
-// is the CPU twin of shaders/osd_adaptive/osd_adaptive.tese, operation for operation (keep
-// the two in step); in double it checks the float path against Far's EvaluateBasis.
-// Written from OpenSubdiv's documented conventions (far/patchParam.h, far/patchDescriptor.h):
-//   - a sub-patch of depth d covers [U 2^-d, (U+1) 2^-d] x [V 2^-d, (V+1) 2^-d] of its base
-//     face, its local (s, t) = (u 2^d - U, v 2^d - V) (PatchParam::Normalize);
-//   - a regular patch is a bicubic B-spline over 16 points, row-major with s along a row and
-//     t down the rows (point 4 j + i); boundary bit 0 is the edge t = 0, bit 1 s = 1, bit 2
-//     t = 1, bit 3 s = 0, and a boundary edge's outer row or column of points is a phantom
-//     row extrapolated as 2 (next row) - (row after), folded into the weights here;
-//   - a Gregory basis end cap has 20 points, five per corner c = 0..3 (corners (0,0), (1,0),
-//     (1,1), (0,1)): 5 c + {0 corner point P, 1 edge point E+ towards corner c+1, 2 edge
-//     point E- towards corner c-1, 3 face point F+ (paired with E+), 4 face point F-}.
-// Derivatives are with respect to the local (s, t): 2^d times smaller than those in the base
-// face's (u, v), which leaves the normal's direction (and, being a power of two, its float
-// bits) unchanged.
+// osd_adaptive's own evaluation of one Far sub-patch, templated on the scalar: in float the
+// CPU twin of shaders/osd_adaptive/osd_adaptive.tese, operation for operation (keep the two
+// in step); in double it checks the float path against Far's EvaluateBasis. Written from
+// OpenSubdiv's conventions (far/patchParam.h, far/patchDescriptor.h): sub-patch domains,
+// point orders, boundary bits and phantom rows are in docs/derivations/parameterisation.md.
+// Derivatives are in the local (s, t), 2^d times smaller than the base face's (u, v).
 #pragma once
 
 #include <cmath>

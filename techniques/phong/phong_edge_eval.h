@@ -1,18 +1,9 @@
-// Seed 003's per-edge Phong tessellation (Lost Planet 2): Phong tessellation rebuilt on
-// the triangle's edges so that per-edge normals (geometry normals on flagged edges) can
-// apply and a shared edge depends on that edge's data alone.
-//
-// The seed defines an inscribed triangle whose corners are the point's closest points
-// q_e on the three edges, the point's barycentric coordinates (U', V', W') in it, and
-// takes each q_e's tangent-plane projection by linear interpolation along its edge. Here
-// q_e is the point of edge (i, j) seen from the opposite corner, t = (w_i, w_j) / (w_i +
-// w_j), and the inscribed-triangle weights are U'_ij = w_i w_j / (w0 w1 + w0 w2 + w1 w2),
-// which are exactly 1 and 0 on an edge (x / x = 1 in IEEE arithmetic), so the edge curve is
-// bitwise the same from both faces. The flat point itself stays the linear interpolant
-// (α = 0 is the flat triangle, as in Boubekeur & Alexa eq. 4); only the offset is
-// rebuilt per edge:
-//   p* = p - α Σ_e U'_e Σ_{k∈e} t_k ((q_e - p_k)·n_k^e) n_k^e.
-// Corners are in a canonical order (labels sorted by position), as evaluatePhongInOrder.
+// Seed 003's per-edge Phong tessellation (Lost Planet 2): Phong tessellation rebuilt on the
+// triangle's edges so that per-edge normals can apply and a shared edge depends on that
+// edge's data alone. The inscribed-triangle weights U'_ij = w_i w_j / (w0 w1 + w0 w2 + w1 w2)
+// are exactly 1 and 0 on an edge, so the edge curve is bitwise the same from both faces;
+// only the offset is rebuilt per edge (Boubekeur & Alexa eq. 4 for the flat point).
+// Derivation: docs/derivations/normal_cones.md. Corners in canonical (position) order.
 #pragma once
 
 #include <array>

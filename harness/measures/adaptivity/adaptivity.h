@@ -1,19 +1,9 @@
-// The adaptivity measure's algorithm (docs/ARCHITECTURE.md §3): a factor policy
+// The adaptivity measure's algorithm (docs/derivations/adaptivity.md): a factor policy
 // (factor_policy.h) run along a camera path, frame by frame, on the CPU twin and in the
-// technique's own TCS on the device, and what its factors cost and buy:
-//
-// - counts: patches, triangles and domain points from the CPU tessellator under the
-//   twin's levels, against the device's pipeline statistics (TES invocations, primitives
-//   generated) under the TCS's own levels;
-// - crack safety: patches whose TCS levels differ from the twin's, shared edges whose two
-//   patches got bitwise-different factors (CPU twin and device), and the crack measure's
-//   shared-point comparison under the frame's per-edge levels (CPU float and device);
-// - screen space (screen_metrics.h): on-screen edge lengths, tessellation error (the
-//   piecewise-linear surface against the technique's own), error against the reference
-//   limit, and popping between consecutive frames;
-// - the number an engineer chooses by: for each policy, the triangles per frame needed to
-//   keep the tessellation error under a target (1 px) over the whole path, against the
-//   best uniform level that does the same.
+// technique's own TCS on the device: counts against the device's statistics, crack safety
+// of the factors, screen-space figures (screen_metrics.h), and the triangles per frame each
+// policy needs to keep the tessellation error under 1 px against uniform levels and the
+// ideal. Every figure and the ideal's definition: docs/derivations/adaptivity.md.
 #pragma once
 
 #include <cstdint>
@@ -138,16 +128,11 @@ class AdaptivityRun {
                               int search_steps = 7);
 
   // The per-patch ideal for error_target_px under `spacing`, each frame: every patch's lowest
-  // integer level whose own tessellation error stays within the target, by bisection on all
-  // patches at once between 1 and `uniform_level` (the lowest uniform level within the
-  // target on every frame, which passes every patch; 0: none does, then 64, 63 at
-  // fractional_odd), settled patches culled in later passes; a shared edge then takes the
-  // larger of its patches' levels (crack-free), the inside the patch's own. Where that
-  // frame misses the target (transition rings) or needs more triangles than the uniform
-  // level, the frame takes the uniform level: it is one such assignment, within the target
-  // on every frame, so the ideal never misses the target nor needs more than uniform when
-  // a uniform level reaches it (`uniform_triangles`: that level's triangles per frame).
-  // Cached per spacing and target.
+  // integer level within the target, by bisection on all patches at once between 1 and
+  // `uniform_level` (0: none reaches it, then the top level); shared edges at the larger of
+  // their patches' levels. A frame that misses the target or needs more triangles than
+  // uniform takes the uniform level, so the ideal never does either. Cached per spacing and
+  // target. Why this is a valid floor: docs/derivations/adaptivity.md ("The ideal").
   const AdaptivityIdeal& ideal(tess::Spacing spacing, const std::vector<view::View>& views,
                                double error_target_px, uint32_t uniform_level,
                                double uniform_triangles = 0);

@@ -1,18 +1,10 @@
-// The culling measure's oracle: which patches a real rasterised render on the device
-// shows, and which ones an ideal back-face + frustum culler could remove.
-//
-// A TCS culls a patch by writing outer level 0; a false cull is a culled patch that
-// covers at least one pixel of the final image. The oracle renders the technique's own
-// tessellated surface (its TCS/TES run on the device, tessellateOnDevice) with the depth
-// test and fixed-function back-face culling, and counts per patch the pixels of the ID
-// buffer that show it: what a culler must not remove. Independently, it decides per patch
-// whether every triangle is back-facing or outside the frustum: what an ideal culler may
-// remove. Occlusion is left to neither culler, so a hidden patch shows no pixels yet is
-// not ideally cullable.
-//
-// Front faces follow gpu::RenderTarget::DrawOptions: counter-clockwise seen from the eye
-// (det[x y w] < 0 over the clip vertices). Every technique's tessellated triangles face
-// out of a closed mesh that way (tests/measures/cull_oracle_test.cpp).
+// The culling measure's oracle: which patches a real rasterised render on the device shows
+// (the technique's own TCS/TES, depth test, fixed-function back-face culling, per-patch ID
+// buffer: a culled patch with a pixel is a false cull), and, independently, which patches an
+// ideal back-face + frustum culler may remove (every triangle back-facing or outside one
+// clip plane). Occlusion is left to neither. Front faces are counter-clockwise seen from the
+// eye (gpu::RenderTarget::DrawOptions), as every technique's triangles face out of a closed
+// mesh (tests/measures/cull_oracle_test.cpp).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Error (docs/ARCHITECTURE.md §3) of a surface technique against the exact limit
+// Error (docs/MEASURES.md) of a surface technique against the exact limit
 // surface of its control mesh (OpenSubdiv Bfr, in double).
 #pragma once
 

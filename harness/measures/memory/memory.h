@@ -1,4 +1,4 @@
-// Memory footprint against plain triangle meshes (docs/ARCHITECTURE.md §3).
+// Memory footprint against plain triangle meshes (docs/MEASURES.md).
 #pragma once
 
 #include <cstdint>
@@ -77,7 +77,7 @@ void buildTessellatedMesh(const techniques::SurfacePatches& patches, uint32_t le
                           const mesh::RenderVertices& render, size_t first_patch, size_t end_patch,
                           TessellatedMesh* out);
 
-// meshoptimizer's codecs on a mesh (docs/ARCHITECTURE.md §3, memory): vertex-cache
+// meshoptimizer's codecs on a mesh (docs/MEASURES.md, memory): vertex-cache
 // then vertex-fetch optimisation (the order a shipping pipeline uses; it reorders `mesh`
 // in place), then meshopt_encodeIndexBuffer and meshopt_encodeVertexBuffer.
 struct CompressedMesh {

@@ -1,18 +1,11 @@
-// Crack gaps (docs/ARCHITECTURE.md §3) between patches that share an edge or a corner.
+// Crack gaps (docs/MEASURES.md) between patches that share an edge or a corner.
 //
 // Two patches share an edge when its two end corners weld to the same positions
-// (control-mesh position indices from patchCorners(), merged by weldByPosition so that
-// triangle meshes whose positions are duplicated at attribute seams count too). Along a
-// shared edge the tessellator emits, on each side, the same domain points mirrored
-// (edge parameter t on one side is exactly 1 - t on the other, in 16.16 fixed point); the
-// measure pairs them by t and compares the positions each side computes there: in float
-// with the shader's operation order on the CPU (SurfacePatches::evaluateFloat), or as
-// captured from the technique's own TES on the Vulkan device (crack_capture.h).
-//
-// Cost: tessellations are shared process-wide (crack_boundaries.h); a CrackSession finds
-// the shared edges once per asset and evaluates the CPU float positions once per
-// spacing and levels for both backends; evaluation and pairing run in parallel (TBB)
-// with results that do not depend on the thread count.
+// (weldByPosition over patchCorners(), so attribute seams count too). The tessellator emits
+// each side's points mirrored (t and exactly 1 - t in 16.16), so the measure pairs them by t
+// and compares the positions: CPU float in shader order (evaluateFloat) or the device's TES
+// capture (crack_capture.h). Tessellations are shared process-wide (crack_boundaries.h);
+// evaluation and pairing run in parallel with results independent of the thread count.
 #pragma once
 
 #include <cstdint>
@@ -112,17 +105,12 @@ struct CrackFigures {
   uint32_t draws = 0;
 };
 
-// Per-patch levels: patch p is tessellated in its own patchDomain(p) with
-// patch_levels[p] (one per patch; tessellations are shared between patches with the same
-// domain and level bits) under `spacing`; a quad edge and a triangle edge that share an
-// edge pair by edge parameter like two edges of one domain. Two sides of a shared edge
-// pair point for point only when their levels for that edge agree (see
-// edge_pattern_levels.h); otherwise the extra points count as unpaired_points.
-// kGpu runs every program of patches.gpuPrograms() on `context` with the same per-patch
-// outer levels, capturing the boundary points (captureBoundaryPositions); without a
-// program or a context the result is not measured and says why, as when some level
-// culls a patch. Throws gpu::GpuError when the device fails and std::invalid_argument
-// when patch_levels.size() != patches.patchCount().
+// Per-patch levels: patch p is tessellated in its patchDomain(p) with patch_levels[p] under
+// `spacing`; two sides of a shared edge pair point for point only where their levels for it
+// agree (edge_pattern_levels.h), else the extra points are unpaired_points. kGpu runs every
+// program of patches.gpuPrograms() on `context` at the same outer levels, capturing boundary
+// points; without a program or context (or when a level culls) the result says why. Throws
+// gpu::GpuError when the device fails, std::invalid_argument on a levels-count mismatch.
 CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                            std::span<const tess::Levels> patch_levels, CrackBackend backend,
                            gpu::Context* context = nullptr);
@@ -148,22 +136,14 @@ std::vector<UnequalPair> unequalPairs(const techniques::SurfacePatches& patches,
 CrackFigures measureCracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                            float level, CrackBackend backend, gpu::Context* context = nullptr);
 
-// measureCracks over one asset's patches, many times: the shared edges and corners are
-// found once, and the CPU float positions and pair figures are kept per set of boundary
-// points, so both backends at one spacing and levels evaluate on the CPU once, and so do
-// spacings whose boundary points coincide bit for bit (integer and pow2 at levels 1, 7.3
-// (8), 16 and 64). A device capture equal bit for bit to the CPU positions takes their
-// pair figures. Same figures as measureCracks. One thread at a time (a record's).
-// Patches above which the pair figures sample (kCrackPatchBudget; patch_sample.h): every
-// feature patch (a corner at a welded vertex whose patch count is not the domain's regular
-// one, i.e. extraordinary, on a boundary or next to a hole or a quad-triangle junction; an
-// edge shared by no other patch or only through welding; a corner on a crease or corner tag),
-// then runs of 16 consecutive other patches, evenly spaced, up to the budget. The sample's
-// shared edges and corners are those with two or more sampled sides; the other patches are
-// not evaluated, nor drawn (zero levels). The sampled figures count a subset of the pairs:
-// points_not_equal and max gaps never exceed the full ones, and a crack of the construction
-// at a feature is always in (tests/measures/crack_sample_test.cpp holds the sampled verdict to
-// the full one on the bundled assets).
+// measureCracks over one asset's patches, many times: shared edges and corners are found
+// once, and CPU positions and pair figures are kept per set of boundary points, so both
+// backends (and spacings whose boundary points coincide bit for bit) evaluate on the CPU
+// once; a device capture equal bit for bit takes their figures. One thread at a time. Above
+// kCrackPatchBudget patches the pairs are sampled (patch_sample.h: every feature patch, then
+// evenly spaced runs of 16; the rest neither evaluated nor drawn): points_not_equal and max
+// gaps never exceed the full ones (tests/measures/crack_sample_test.cpp; docs/ARCHITECTURE.md
+// §3, "Production-size assets").
 inline constexpr size_t kCrackPatchBudget = 2048;
 
 // The crack sample of `patches` (every patch when they fit the budget). !keep_features: the

@@ -1,4 +1,4 @@
-// Instruction counts (docs/ARCHITECTURE.md §3).
+// Instruction counts (docs/MEASURES.md).
 //  (a) static: each shader stage after spirv-opt -O (SPIRV-Tools API), specialised for
 //      the variant first, counted per category, as vector instructions and expanded to
 //      the components of their result;
