@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/mesh/fnv1a.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 #include "harness/results/timings_json.h"
@@ -23,9 +24,7 @@ using Json = nlohmann::ordered_json;
 
 // FNV-1a, 64 bits, as hex, then ':' and the length: the payloads' content address.
 std::string contentHash(std::string_view bytes) {
-  uint64_t hash = 14695981039346656037ull;
-  for (const unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
-  return fmt::format("{:016x}:{}", hash, bytes.size());
+  return fmt::format("{:016x}:{}", mesh::fnv1a64(bytes), bytes.size());
 }
 
 // A run folder's results.json, checked against the results model (throws naming the file
