@@ -32,6 +32,8 @@
 //  - triangles: ring by ring outwards-in, per ring edge by edge, then the middle.
 #include "core/tess/tessellator.h"
 
+#include <cassert>
+
 #include "core/tess/domains.h"
 #include "core/tess/patch_plan.h"
 
@@ -39,6 +41,7 @@ namespace tb::tess {
 namespace {
 
 void tessellateIsolineDomain(const IsolinePlan& plan, const Options& options, Tessellation* out) {
+  assert(out != nullptr && out->points.empty() && !plan.culled && plan.line_count >= 1);
   PointWriter points(out, /*barycentric=*/false);
   const int per_line = plan.detail.point_count;
   out->points.reserve(static_cast<size_t>(plan.line_count) * static_cast<size_t>(per_line));
@@ -56,6 +59,7 @@ void tessellateIsolineDomain(const IsolinePlan& plan, const Options& options, Te
 
 Tessellation tessellate(Domain domain, Spacing spacing, const Levels& levels,
                         const Options& options) {
+  assert(spacing >= Spacing::kInteger && spacing <= Spacing::kFractionalEven);
   Tessellation out;
   switch (domain) {
     case Domain::kTriangle: {
