@@ -15,27 +15,6 @@ TechniqueRegistry& TechniqueRegistry::instance() {
   return registry;
 }
 
-bool TechniqueRegistry::add(std::unique_ptr<Technique> technique) {
-  if (find(technique->info().id) != nullptr) return false;
-  techniques_.push_back(std::move(technique));
-  return true;
-}
-
-const Technique* TechniqueRegistry::find(std::string_view id) const {
-  for (const auto& technique : techniques_) {
-    if (technique->info().id == id) return technique.get();
-  }
-  return nullptr;
-}
-
-std::vector<const Technique*> TechniqueRegistry::all() const {
-  std::vector<const Technique*> result;
-  for (const auto& technique : techniques_) result.push_back(technique.get());
-  std::sort(result.begin(), result.end(),
-            [](const Technique* a, const Technique* b) { return a->info().id < b->info().id; });
-  return result;
-}
-
 namespace {
 
 constexpr uint32_t kSpirvMagic = 0x07230203;

@@ -7,23 +7,16 @@
 #include <string_view>
 #include <vector>
 
+#include "core/mesh/registry.h"
 #include "techniques/plugin.h"
 #include "techniques/technique.h"
 
 namespace tb::techniques {
 
-class TechniqueRegistry {
+// add, find and all() (sorted by id): mesh::Registry.
+class TechniqueRegistry : public mesh::Registry<Technique> {
  public:
   static TechniqueRegistry& instance();
-
-  // Ignores a second technique with an id already present and returns false.
-  bool add(std::unique_ptr<Technique> technique);
-  const Technique* find(std::string_view id) const;
-  // Sorted by id, so every listing and every run has the same order.
-  std::vector<const Technique*> all() const;
-
- private:
-  std::vector<std::unique_ptr<Technique>> techniques_;
 };
 
 // Loads a plug-in (techniques/plugin.h): asks its ABI first and refuses one built against

@@ -12,5 +12,6 @@ const char* examplePlugin() { return TB_GENERATED_EXAMPLE_PLUGIN; }
 const char* wrongAbiPlugin() { return TB_GENERATED_WRONG_ABI_PLUGIN; }
 const char* regressGood() { return TB_GENERATED_REGRESS_GOOD; }
 const char* regressBroken() { return TB_GENERATED_REGRESS_BROKEN; }
+const char* historyAddHooked() { return TB_GENERATED_HISTORY_ADD_HOOKED; }
 
 }  // namespace tb::testing

@@ -13,6 +13,8 @@ const char* examplePlugin();   // examples' plug-in, built by tests/techniques
 const char* wrongAbiPlugin();  // a plug-in reporting another ABI (tests/techniques)
 const char* regressGood();     // compare's acceptance plug-in, as it is (tests/cli)
 const char* regressBroken();   // the same source built broken (tests/cli)
+// `history add` with a test's hook (tests/history/history_add_hooked.cpp)
+const char* historyAddHooked();
 
 }  // namespace tb::testing
 

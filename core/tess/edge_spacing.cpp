@@ -7,6 +7,7 @@ namespace tb::tess {
 using fxp::Fixed;
 
 EdgeSpacing makeEdgeSpacing(Fixed level, Parity parity) {
+  assert(level >= fxp::kOne && level <= 64 * fxp::kOne);  // clamped to [1, 64] by the plan
   const bool odd = parity == Parity::kOdd;
   EdgeSpacing s;
   s.parity = parity;

@@ -6,6 +6,7 @@
 // single row or column of points (an even inside level on the shorter axis) or a
 // two-row strip of quads (an odd one).
 #include <algorithm>
+#include <cassert>
 #include <vector>
 
 #include "core/tess/domains.h"
@@ -82,6 +83,7 @@ RingRows middleLine(const QuadPlan& plan, int start, PointWriter& points, bool r
 }  // namespace
 
 void tessellateQuadDomain(const QuadPlan& plan, const Options& options, Tessellation* out) {
+  assert(out != nullptr && out->points.empty() && !plan.culled);
   PointWriter points(out, /*barycentric=*/false);
   TriangleSink sink(&out->triangles, options.ccw);
   if (plan.minimal) {

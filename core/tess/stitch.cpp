@@ -68,6 +68,7 @@ static_assert(rulerPosition(2) == 16 && rulerPosition(3) == 8 && rulerPosition(4
 
 void stitchRegular(TriangleSink& sink, bool trapezoid, Diagonals diagonals, Row inside,
                    Row outside) {
+  assert(!inside.empty() && outside.size() == inside.size() + (trapezoid ? 2 : 0));
   StripWalker walk{sink, inside, outside};
   const int quads = static_cast<int>(inside.size()) - 1;
   if (trapezoid) walk.advanceOutside();
@@ -77,6 +78,7 @@ void stitchRegular(TriangleSink& sink, bool trapezoid, Diagonals diagonals, Row 
       break;
     case Diagonals::kInsideToOutsideExceptMiddle: {
       // Assumes an odd number of quads; the middle one is cut the other way.
+      assert(quads % 2 == 1);
       const int half = static_cast<int>(inside.size()) / 2 - 1;
       for (int q = 0; q < half; ++q) walk.quadDiagonalFromInsideOutsideFirst();
       walk.quadDiagonalFromOutside();
@@ -96,6 +98,7 @@ void stitchRegular(TriangleSink& sink, bool trapezoid, Diagonals diagonals, Row 
 
 void stitchTransition(TriangleSink& sink, Row inside, const EdgeSpacing& inside_spacing,
                       Row outside, const EdgeSpacing& outside_spacing) {
+  assert(!inside.empty() && outside.size() >= 2);
   StripWalker walk{sink, inside, outside};
   const bool inside_odd = inside_spacing.parity == Parity::kOdd;
   const bool outside_odd = outside_spacing.parity == Parity::kOdd;

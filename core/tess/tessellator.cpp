@@ -5,6 +5,8 @@
 // docs/derivations/tessellator.md.
 #include "core/tess/tessellator.h"
 
+#include <cassert>
+
 #include "core/tess/domains.h"
 #include "core/tess/patch_plan.h"
 
@@ -12,6 +14,7 @@ namespace tb::tess {
 namespace {
 
 void tessellateIsolineDomain(const IsolinePlan& plan, const Options& options, Tessellation* out) {
+  assert(out != nullptr && out->points.empty() && !plan.culled && plan.line_count >= 1);
   PointWriter points(out, /*barycentric=*/false);
   const int per_line = plan.detail.point_count;
   out->points.reserve(static_cast<size_t>(plan.line_count) * static_cast<size_t>(per_line));
@@ -29,6 +32,7 @@ void tessellateIsolineDomain(const IsolinePlan& plan, const Options& options, Te
 
 Tessellation tessellate(Domain domain, Spacing spacing, const Levels& levels,
                         const Options& options) {
+  assert(spacing >= Spacing::kInteger && spacing <= Spacing::kFractionalEven);
   Tessellation out;
   switch (domain) {
     case Domain::kTriangle: {

@@ -3,6 +3,7 @@
 // spacing per edge, rings 1.. use the inside level. Stored coordinates are (u, v); the
 // rings are walked clockwise in the reference's sense starting at the v = 1 corner:
 // edge u = 0 (v falling), edge v = 0 (u rising), edge w = 0 (u falling).
+#include <cassert>
 #include <vector>
 
 #include "core/tess/domains.h"
@@ -62,6 +63,7 @@ RingRows innerRing(const EdgeSpacing& inner, int r, PointWriter& points) {
 }  // namespace
 
 void tessellateTriangleDomain(const TrianglePlan& plan, const Options& options, Tessellation* out) {
+  assert(out != nullptr && out->points.empty() && !plan.culled);
   PointWriter points(out, /*barycentric=*/true);
   TriangleSink sink(&out->triangles, options.ccw);
   if (plan.minimal) {

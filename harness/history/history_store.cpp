@@ -1,17 +1,13 @@
 #include "harness/history/history_store.h"
 
 #include <fmt/format.h>
-#include <signal.h>
-#include <unistd.h>
 
 #include <cassert>
-#include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
+#include "core/mesh/fnv1a.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
 #include "harness/results/timings_json.h"
@@ -23,9 +19,7 @@ using Json = nlohmann::ordered_json;
 
 // FNV-1a, 64 bits, as hex, then ':' and the length: the payloads' content address.
 std::string contentHash(std::string_view bytes) {
-  uint64_t hash = 14695981039346656037ull;
-  for (const unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
-  return fmt::format("{:016x}:{}", hash, bytes.size());
+  return fmt::format("{:016x}:{}", mesh::fnv1a64(bytes), bytes.size());
 }
 
 // A run folder's results.json, checked against the results model (throws naming the file
@@ -66,16 +60,7 @@ class Transaction {
   bool committed_ = false;
 };
 
-// The concurrency and fault tests' hooks (tests/history), inside an add's transaction once
-// the records are written: TESSBENCH_HISTORY_TEST_PAUSE_MS=N holds the write lock N ms
-// longer (two adds then surely overlap); TESSBENCH_HISTORY_TEST_KILL=records kills this
-// process with SIGKILL before the commit.
-void testHooks() {
-  if (const char* pause = std::getenv("TESSBENCH_HISTORY_TEST_PAUSE_MS"))
-    std::this_thread::sleep_for(std::chrono::milliseconds(std::atoi(pause)));
-  const char* kill_at = std::getenv("TESSBENCH_HISTORY_TEST_KILL");
-  if (kill_at != nullptr && std::string_view(kill_at) == "records") ::kill(::getpid(), SIGKILL);
-}
+AddHook add_hook = nullptr;  // setAddHook's
 
 void insertDeclarations(Database& db, int64_t run, const Json& measures) {
   Statement insert = db.prepare(
@@ -165,6 +150,8 @@ RunInfo runFrom(const Statement& row) {
 
 }  // namespace
 
+void setAddHook(AddHook hook) { add_hook = hook; }
+
 AddSummary addRun(HistoryDb& history, const std::string& run_dir) {
   assert(history.db != nullptr && history.version == kHistorySchemaVersion);
   const Json document = readRunDocument(run_dir);
@@ -219,7 +206,7 @@ AddSummary addRun(HistoryDb& history, const std::string& run_dir) {
     insertTimings(db, run.id, *timings);
     summary.timings = timings->measures.size();
   }
-  testHooks();
+  if (add_hook != nullptr) add_hook();
   transaction.commit();
   return summary;
 }

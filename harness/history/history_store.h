@@ -65,6 +65,12 @@ struct AddSummary {
 // database (same git sha, run id and date).
 AddSummary addRun(HistoryDb& history, const std::string& run_dir);
 
+// The concurrency and fault tests' injection point (tests/history/history_add_hooked.cpp):
+// called inside every add's transaction once the records are written, before the commit.
+// None (nullptr) unless a test program sets one; tessbench never does.
+using AddHook = void (*)();
+void setAddHook(AddHook hook);
+
 // Every run, in commit order: by orderTime(), then date, then id.
 std::vector<RunInfo> listRuns(HistoryDb& history);
 

@@ -12,6 +12,7 @@
 
 #include "core/gpu/context.h"
 #include "core/mesh/mesh.h"
+#include "core/mesh/registry.h"
 #include "core/view/camera_path_views.h"
 #include "core/view/view.h"
 #include "harness/measures/displaced_input.h"
@@ -173,15 +174,10 @@ class Measure {
   virtual std::vector<std::pair<std::string, uint32_t>> defaultSuitePaths() const { return {}; }
 };
 
-class MeasureRegistry {
+// add, find and all() (sorted by id): mesh::Registry.
+class MeasureRegistry : public mesh::Registry<Measure> {
  public:
   static MeasureRegistry& instance();
-  bool add(std::unique_ptr<Measure> measure);
-  const Measure* find(std::string_view id) const;
-  std::vector<const Measure*> all() const;  // sorted by id
-
- private:
-  std::vector<std::unique_ptr<Measure>> measures_;
 };
 
 #define TB_REGISTER_MEASURE_CONCAT2(a, b) a##b

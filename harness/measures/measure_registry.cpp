@@ -34,27 +34,6 @@ MeasureRegistry& MeasureRegistry::instance() {
   return registry;
 }
 
-bool MeasureRegistry::add(std::unique_ptr<Measure> measure) {
-  if (find(measure->info().id) != nullptr) return false;
-  measures_.push_back(std::move(measure));
-  return true;
-}
-
-const Measure* MeasureRegistry::find(std::string_view id) const {
-  for (const auto& measure : measures_) {
-    if (measure->info().id == id) return measure.get();
-  }
-  return nullptr;
-}
-
-std::vector<const Measure*> MeasureRegistry::all() const {
-  std::vector<const Measure*> result;
-  for (const auto& measure : measures_) result.push_back(measure.get());
-  std::sort(result.begin(), result.end(),
-            [](const Measure* a, const Measure* b) { return a->info().id < b->info().id; });
-  return result;
-}
-
 bool runsComputePath(const MeasureInput& input) {
   if (input.displacement != nullptr) return false;
   if (input.suite == SuiteMode::kFull) return true;

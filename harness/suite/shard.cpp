@@ -2,6 +2,7 @@
 
 #include <charconv>
 
+#include "core/mesh/fnv1a.h"
 #include "core/mesh/input_error.h"
 #include "harness/suite/suite.h"
 #include "techniques/registry.h"
@@ -10,7 +11,7 @@ namespace tb::suite {
 namespace {
 
 bool ownsKey(const ShardSpec& shard, const std::string& key) {
-  return !shard.sharded() || fnv1a64(key) % shard.count == shard.index;
+  return !shard.sharded() || mesh::fnv1a64(key) % shard.count == shard.index;
 }
 
 // A decimal number filling `text` exactly (no sign, no spaces).
@@ -37,15 +38,6 @@ ShardSpec parseShard(const std::string& text) {
                            "Indexed Job's completion index)");
   }
   return shard;
-}
-
-uint64_t fnv1a64(std::string_view text) {
-  uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a 64-bit offset basis
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ull;  // FNV 64-bit prime
-  }
-  return hash;
 }
 
 bool ownsMeasure(const ShardSpec& shard, const std::string& technique, const std::string& variant,

@@ -13,7 +13,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include <string_view>
 
 #include "harness/results/results_model.h"
 
@@ -27,8 +26,6 @@ struct ShardSpec {
 
 // "I/N" with decimal I and N, 0 ≤ I < N. Throws InputError naming --shard and the rule.
 ShardSpec parseShard(const std::string& text);
-
-uint64_t fnv1a64(std::string_view text);
 
 // Shard owning the measure `measure` on one record: key "technique/variant/asset/measure".
 bool ownsMeasure(const ShardSpec& shard, const std::string& technique, const std::string& variant,

@@ -66,15 +66,15 @@ struct SplitResult {
   std::string out, err;  // stdout, stderr
 };
 
-// Runs `tessbench arguments` with stdout and stderr kept apart; `environment` is a prefix
+// Runs `program arguments` with stdout and stderr kept apart; `environment` is a prefix
 // of VAR=value words for the shell (e.g. "VK_ICD_FILENAMES=/nonexistent").
-inline SplitResult runTessbenchSplit(const std::string& arguments,
-                                     const std::string& environment = "") {
+inline SplitResult runSplit(const std::string& program, const std::string& arguments,
+                            const std::string& environment = "") {
   const std::filesystem::path err_file =
       std::filesystem::temp_directory_path() /
       ("tessbench_stderr_" + std::to_string(::getpid()) + ".txt");
-  const std::string command = environment + " " + std::string(TB_TESSBENCH_BIN) + " " + arguments +
-                              " 2>" + err_file.string();
+  const std::string command =
+      environment + " " + program + " " + arguments + " 2>" + err_file.string();
   SplitResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -87,6 +87,11 @@ inline SplitResult runTessbenchSplit(const std::string& arguments,
   result.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
   std::filesystem::remove(err_file);
   return result;
+}
+
+inline SplitResult runTessbenchSplit(const std::string& arguments,
+                                     const std::string& environment = "") {
+  return runSplit(TB_TESSBENCH_BIN, arguments, environment);
 }
 
 inline std::string readFile(const std::filesystem::path& path) {

@@ -141,14 +141,14 @@ TEST(HistoryAcceptance, AFigureChangedAtOneCommitIsTheOneStepFlagged) {
 }
 
 // Two processes add at once, into a database neither has created yet; each holds the write
-// lock 300 ms (a test hook), so they overlap for sure: both land, one after the other.
+// lock 300 ms (history_add_hooked's pause), so they overlap for sure: both land, one after
+// the other.
 TEST(HistoryConcurrency, TwoAddsAtOnceBothLand) {
   const fs::path dir = testing::scratchDirectory("history_concurrent");
   const std::string a = testing::writeSyntheticRun(dir, {"a", "aaaa0000"});
   const std::string b = testing::writeSyntheticRun(dir, {"b", "bbbb0000"});
   const std::string db = (dir / "h.sqlite").string();
-  const std::string add = std::string("TESSBENCH_HISTORY_TEST_PAUSE_MS=300 ") + TB_TESSBENCH_BIN +
-                          " history add --db " + db + " ";
+  const std::string add = std::string(testing::historyAddHooked()) + " pause=300 " + db + " ";
   const std::string command = "(" + add + a + " >/dev/null 2>&1; echo $? >" +
                               (dir / "rc_a").string() + ") & (" + add + b +
                               " >/dev/null 2>&1; echo $? >" + (dir / "rc_b").string() + ") & wait";
@@ -189,8 +189,9 @@ TEST(HistoryFaults, AnAddKilledMidwayLeavesTheDatabaseAsItWas) {
             0);
   const std::string before = contentOf(db);
   const std::string folder = testing::writeSyntheticRun(dir, second);
-  const SplitResult killed = runTessbenchSplit("history add --db " + db + " " + folder,
-                                               "TESSBENCH_HISTORY_TEST_KILL=records");
+  // SIGKILL inside the add's transaction, once the records are written (history_add_hooked).
+  const SplitResult killed =
+      testing::runSplit(testing::historyAddHooked(), "kill " + db + " " + folder);
   EXPECT_EQ(killed.exit_code, 128 + SIGKILL)
       << "not killed (the shell's status of a SIGKILL): " << killed.out << killed.err;
   EXPECT_EQ(contentOf(db), before);

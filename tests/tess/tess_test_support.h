@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "core/mesh/fnv1a.h"
 #include "core/tess/tessellator.h"
 
 namespace tb::tess::testing {
@@ -68,13 +69,8 @@ inline std::vector<float> edgeParameters(const Tessellation& t, int fixed, float
 // FNV-1a over the point bits (u, v, w), a separator, then each primitive's vertices as
 // (u, v) bits: the same digest the lavapipe capture was reduced to.
 inline uint64_t outputDigest(const Tessellation& t) {
-  uint64_t h = 14695981039346656037ull;
-  auto mix_bits = [&h](uint32_t x) {
-    for (int i = 0; i < 4; ++i) {
-      h ^= (x >> (8 * i)) & 0xffu;
-      h *= 1099511628211ull;
-    }
-  };
+  uint64_t h = mesh::kFnv1aOffsetBasis;
+  auto mix_bits = [&h](uint32_t x) { h = mesh::fnv1aWord(h, x, 4); };
   auto mix = [&](float f) { mix_bits(std::bit_cast<uint32_t>(f)); };
   for (const DomainPoint& p : t.points) {
     for (float c : p) mix(c);

@@ -10,6 +10,7 @@
 #include "core/gpu/compute_levels.h"
 #include "core/gpu/patch_program.h"
 #include "core/mesh/bounds.h"
+#include "core/mesh/fnv1a.h"
 
 namespace tb::measures {
 namespace {
@@ -62,12 +63,8 @@ size_t outerIndex(techniques::PatchDomain domain, uint32_t local_edge) {
 }
 
 uint64_t viewsKey(const std::vector<view::View>& views) {
-  uint64_t hash = 14695981039346656037ull;
-  const auto mix = [&hash](uint64_t word) {
-    for (int b = 0; b < 8; ++b) {
-      hash = (hash ^ ((word >> (8 * b)) & 0xff)) * 1099511628211ull;
-    }
-  };
+  uint64_t hash = mesh::kFnv1aOffsetBasis;
+  const auto mix = [&hash](uint64_t word) { hash = mesh::fnv1aWord(hash, word); };
   for (const view::View& view : views) {
     for (const auto& column : view.view_projection.m) {
       for (double x : column) mix(std::bit_cast<uint64_t>(x));
