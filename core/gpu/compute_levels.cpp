@@ -1,19 +1,20 @@
 #include "core/gpu/compute_levels.h"
 
 #include <algorithm>
-#include <bit>
+#include <cassert>
 #include <string>
 
 #include "core/gpu/context.h"
 #include "core/gpu/gpu_error.h"
+#include "shaders/common/layout/bindings.h"
 
 namespace tb::gpu {
 namespace {
 
-constexpr uint32_t kLevelsGroupSize = 64;                 // policy_levels.comp's local_size_x
-constexpr size_t kLevelsCornerWords = 64;                 // TcsFactorPolicy::corner_words per patch
-constexpr uint32_t kLevelsReadBackWords = 8;              // TbFactorOut per patch: 2 uvec4
-constexpr const char* kLevelsReadBack = "policy_levels";  // binding 3
+constexpr uint32_t kLevelsGroupSize = 64;                    // policy_levels.comp's local_size_x
+constexpr size_t kLevelsCornerWords = kTcsFactorPatchWords;  // TbFactorPatch
+constexpr uint32_t kLevelsReadBackWords = layout::kTbFactorOutWordsPerPatch;
+constexpr const char* kLevelsReadBack = "policy_levels";  // layout::kBindingFactorOut
 
 void checkJob(const PolicyLevelsJob& job) {
   if (job.factor_policy != nullptr &&
@@ -52,13 +53,17 @@ GpuComputePass levelsPass(const PolicyLevelsJob& job, size_t index, uint32_t fir
   const TcsCullPolicy& cull = job.cull_policy ? *job.cull_policy : no_cull;
   GpuComputePass pass;
   pass.shader = "gpu/policy_levels.comp";
-  pass.buffers = {levelsBuffer(0, kTessPatchRecords, {}),
-                  levelsBuffer(1, "factor_corners" + suffix, factor.corner_words),
-                  levelsBuffer(2, "factor_params" + suffix, factor.param_words),
-                  levelsBuffer(3, kLevelsReadBack, {}),
-                  levelsBuffer(4, "cull_params" + suffix, cull.param_words),
-                  levelsBuffer(5, "cull_patches" + suffix, cull.patch_words),
-                  levelsBuffer(6, "cull_tangents" + suffix, cull.tangent_words)};
+  using namespace layout;
+  pass.buffers = {
+      levelsBuffer(kBindingTessPatchRecords, kTessPatchRecords, {}),
+      levelsBuffer(kBindingFactorPatches, "factor_corners" + suffix, factor.corner_words),
+      levelsBuffer(kBindingFactorParams, "factor_params" + suffix, factor.param_words),
+      levelsBuffer(kBindingFactorOut, kLevelsReadBack, {}),
+      levelsBuffer(kBindingCullParams, "cull_params" + suffix, cull.param_words),
+      levelsBuffer(kBindingCullPatches, "cull_patches" + suffix, cull.patch_words),
+      levelsBuffer(kBindingCullTangentPlanes, "cull_tangents" + suffix, cull.tangent_words)};
+  // Listed in binding order, so buffers[b] is binding b's.
+  for (size_t b = 0; b < pass.buffers.size(); ++b) assert(pass.buffers[b].binding == b);
   pass.push_constants = {job.patch_count, first_record, job.factor_policy ? 1u : 0u,
                          job.cull_policy ? 1u : 0u};
   pass.groups_x =
@@ -106,14 +111,11 @@ std::vector<tess::LevelsBits> computePolicyLevels(Context& context, tess::Domain
   const TessPatch record = recordOf(job);
   std::vector<uint32_t> words;
   words.reserve(size_t(patch_count) * kTessPatchRecordWords);
-  for (uint32_t p = 0; p < patch_count; ++p) {
-    for (float level : record.levels.outer) words.push_back(std::bit_cast<uint32_t>(level));
-    for (float level : record.levels.inner) words.push_back(std::bit_cast<uint32_t>(level));
-    words.push_back(static_cast<uint32_t>(domain) | (static_cast<uint32_t>(spacing) << 8));
-    words.push_back(0);
-  }
-  pass.buffers[0] = levelsBuffer(0, kTessPatchRecords, std::move(words));
-  pass.buffers[3].size_bytes = std::max<uint64_t>(16, 4ull * kLevelsReadBackWords * patch_count);
+  for (uint32_t p = 0; p < patch_count; ++p) appendTessPatchRecord(words, record);
+  pass.buffers[layout::kBindingTessPatchRecords] =
+      levelsBuffer(layout::kBindingTessPatchRecords, kTessPatchRecords, std::move(words));
+  pass.buffers[layout::kBindingFactorOut].size_bytes =
+      std::max<uint64_t>(16, 4ull * kLevelsReadBackWords * patch_count);
   ComputeRunner runner(context, {{"levels", {pass}}});
   runner.run(1);
   return levelsOf(runner.read(kLevelsReadBack), patch_count);
@@ -140,7 +142,7 @@ PolicyTessellator::PolicyTessellator(Context& context, std::span<const PolicyLev
   }
   record_count_ = static_cast<uint32_t>(records.size());
   if (!passes.empty()) {
-    passes[0].buffers[3].size_bytes =
+    passes[0].buffers[layout::kBindingFactorOut].size_bytes =
         std::max<uint64_t>(16, 4ull * kLevelsReadBackWords * record_count_);
   }
   tessellator_ =

@@ -16,7 +16,8 @@
 namespace tb::gpu {
 namespace {
 
-constexpr uint32_t kMaxTechniqueBuffers = 7;      // bindings 1..7 (compute_surface.glsl)
+constexpr uint32_t kMaxTechniqueBuffers =  // bindings 1..7 (compute_surface.glsl)
+    layout::kBindingComputeSurfaces - layout::kBindingFirstTechnique;
 constexpr uint32_t kGroup = 64;                   // compute_surface.glsl's local_size_x
 constexpr uint64_t kDrawCommandOffsetBytes = 16;  // compute_path_prepare.comp words 4..8
 // Pipeline statistics the draw's query counts, in the order Vulkan returns them.
@@ -144,19 +145,24 @@ struct ComputePath::Impl {
 
   std::vector<GpuComputePass> surfacePasses(const ComputePathOptions& options) const {
     const std::span<const uint32_t> spirv = requireEmbeddedShader(program.compute_shader);
-    const uint32_t stride = surfaceStrideBytes(spirv, 8, program.compute_shader);
+    const uint32_t stride =
+        surfaceStrideBytes(spirv, layout::kBindingComputeSurfaces, program.compute_shader);
     std::vector<GpuComputeBuffer> buffers;
     for (size_t b = 0; b < program.storage_buffers.size(); ++b) {
-      GpuComputeBuffer buffer = namedBuffer(uint32_t(b + 1), "technique_" + std::to_string(b + 1),
+      const uint32_t binding = layout::kBindingFirstTechnique + uint32_t(b);
+      GpuComputeBuffer buffer = namedBuffer(binding, "technique_" + std::to_string(binding),
                                             4 * program.storage_buffers[b].size());
       buffer.initial_words = program.storage_buffers[b];
       buffers.push_back(std::move(buffer));
     }
-    buffers.push_back(namedBuffer(8, "surfaces", uint64_t(stride) * program.patch_count));
-    buffers.push_back(namedBuffer(9, "offsets", 0));
-    buffers.push_back(namedBuffer(10, "status", 16));
-    buffers.push_back(namedBuffer(11, "points", 0));
-    buffers.push_back(namedBuffer(12, "vertices", 4 * kCaptureRecordWords * point_capacity));
+    using namespace layout;
+    buffers.push_back(
+        namedBuffer(kBindingComputeSurfaces, "surfaces", uint64_t(stride) * program.patch_count));
+    buffers.push_back(namedBuffer(kBindingComputeTessOffsets, "offsets", 0));
+    buffers.push_back(namedBuffer(kBindingComputeTessStatus, "status", 16));
+    buffers.push_back(namedBuffer(kBindingComputeTessPoints, "points", 0));
+    buffers.push_back(
+        namedBuffer(kBindingComputeVertices, "vertices", 4 * kCaptureRecordWords * point_capacity));
     GpuComputePass build;
     build.shader = program.compute_shader;
     build.buffers = buffers;

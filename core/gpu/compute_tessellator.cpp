@@ -8,12 +8,12 @@
 #include "core/gpu/context.h"
 #include "core/gpu/gpu_error.h"
 #include "core/tess/fixed_point.h"
+#include "shaders/common/layout/bindings.h"
 
 namespace tb::gpu {
 namespace {
 
 constexpr uint32_t kGroupSize = 64;  // tessellate.comp's local_size_x
-constexpr uint32_t kPatchWords = 8;  // per patch: outer [4], inner [2], code, flags
 
 // Points an edge or inside axis of this level can have: a processed level L in [1, 64]
 // gives at most ceil(L) + 3 points (edge_spacing.cpp point_count; an odd inside level's
@@ -83,19 +83,26 @@ GpuComputeBuffer buffer(uint32_t binding, const char* name, uint64_t size_bytes)
 
 }  // namespace
 
+void appendTessPatchRecord(std::vector<uint32_t>& words, const TessPatch& patch) {
+  layout::TbTessPatchRecord record{};
+  for (size_t j = 0; j < 4; ++j)
+    record.outer_bits[j] = std::bit_cast<uint32_t>(patch.levels.outer[j]);
+  for (size_t j = 0; j < 2; ++j)
+    record.inner_bits[j] = std::bit_cast<uint32_t>(patch.levels.inner[j]);
+  record.code = static_cast<uint32_t>(patch.domain) | (static_cast<uint32_t>(patch.spacing) << 8);
+  record.flags = (patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
+                 (patch.rounding_up_control ? 4u : 0u);
+  layout::appendWords(words, record);
+}
+
 ComputeTessellationPasses describeTessellationPasses(Context& context,
                                                      std::span<const TessPatch> patches,
                                                      bool counts_only) {
   ComputeTessellationPasses out;
   std::vector<uint32_t> words;
-  words.reserve(patches.size() * kPatchWords);
+  words.reserve(patches.size() * kTessPatchRecordWords);
   for (const TessPatch& patch : patches) {
-    for (float level : patch.levels.outer) words.push_back(std::bit_cast<uint32_t>(level));
-    for (float level : patch.levels.inner) words.push_back(std::bit_cast<uint32_t>(level));
-    words.push_back(static_cast<uint32_t>(patch.domain) |
-                    (static_cast<uint32_t>(patch.spacing) << 8));
-    words.push_back((patch.options.ccw ? 0u : 1u) | (patch.options.point_mode ? 2u : 0u) |
-                    (patch.rounding_up_control ? 4u : 0u));
+    appendTessPatchRecord(words, patch);
     if (counts_only) continue;
     const auto bounds = patchBounds(patch);
     out.point_capacity += bounds[0];
@@ -109,6 +116,7 @@ ComputeTessellationPasses describeTessellationPasses(Context& context,
                    std::to_string(range) + "; split the batch");
   }
   const uint64_t n = patches.size();
+  static_assert(layout::kBindingTessPatchRecords == 0);  // the buffers below are in binding order
   std::vector<GpuComputeBuffer> buffers = {buffer(0, kTessPatchRecords, 4 * words.size()),
                                            buffer(1, "counts", 16 * n),
                                            buffer(2, "offsets", 8 * n),

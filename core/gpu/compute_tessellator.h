@@ -16,6 +16,7 @@
 
 #include "core/gpu/compute_runner.h"
 #include "core/tess/tessellator.h"
+#include "shaders/common/layout/tess_patch_record.h"
 
 namespace tb::gpu {
 
@@ -111,10 +112,13 @@ class ComputeTessellator {
 };
 
 // The batch's patch records, the buffer tessellate.comp reads at binding 0: per patch
-// kTessPatchRecordWords words, outer level bits [4], inner level bits [2], domain | spacing
-// << 8, flags (1 cw, 2 point mode, 4 the rounding-up control).
+// kTessPatchRecordWords words, layout::TbTessPatchRecord
+// (shaders/common/layout/tess_patch_record.h).
 inline constexpr const char* kTessPatchRecords = "patches";
-inline constexpr uint32_t kTessPatchRecordWords = 8;
+inline constexpr uint32_t kTessPatchRecordWords = layout::kWordsOf<layout::TbTessPatchRecord>;
+// Appends `patch`'s record: level bits, domain | spacing << 8, flags (1 cw, 2 point mode, 4
+// the rounding-up control).
+void appendTessPatchRecord(std::vector<uint32_t>& words, const TessPatch& patch);
 
 // Builds, runs once and reads back; a batch whose buffers would exceed the device's storage
 // buffer range runs as several (one pipeline build and submission each), joined in order.

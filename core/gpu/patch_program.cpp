@@ -15,6 +15,8 @@
 #include "core/gpu/tess_pipelines.h"
 #include "core/gpu/vk_handle.h"
 #include "core/tess/factor_helpers.h"
+#include "shaders/common/layout/capture_layout.h"
+#include "shaders/common/layout/levels_layout.h"
 
 namespace tb::gpu {
 namespace {
@@ -32,19 +34,14 @@ constexpr bool kSanitizedAllocator = false;
 constexpr bool kSanitizedAllocator = false;
 #endif
 
-// Set 1's factor policy corners: words per patch (TcsFactorPolicy::corner_words).
-constexpr uint32_t kFactorCornerWordsPerPatch = 64;
-
-// TbPatchLevels in shaders/common/patch_program_tcs.glsl: float bits, 32 bytes per patch.
-struct PatchLevelsBits {
-  uint32_t outer_bits[4];
-  uint32_t inner_bits[2];
-  uint32_t unused[2];
-};
-static_assert(sizeof(PatchLevelsBits) == 32);
+// Set 1's per-patch levels (shaders/common/layout/levels_layout.h).
+using PatchLevelsBits = layout::TbPatchLevels;
+// The levels the TCS writes back per patch (TbFactorOut), 6 of them used.
+constexpr size_t kFactorOutWords = layout::kTbFactorOutWordsPerPatch;
 
 constexpr uint32_t kCaptureWords = kCaptureRecordWords;
-constexpr VkDeviceSize kCaptureHeaderBytes = 16;  // count, capacity, 2 reserved
+constexpr VkDeviceSize kCaptureHeaderBytes =
+    sizeof(layout::TbCapture);  // count, capacity, 2 reserved
 constexpr VkDeviceSize kMaxCaptureBytesPerSubmit = 64ull << 20;
 
 void barrierShaderWritesToHost(VkCommandBuffer cmd) {
@@ -157,8 +154,8 @@ VkDeviceSize uploadPatchLevels(Context& context, std::span<const tess::Levels> d
   for (size_t p = 0; p < device_levels.size(); ++p) {
     const tess::LevelsBits key = tess::levelsBits(device_levels[p]);
     PatchLevelsBits entry{};
-    std::copy(key.begin(), key.begin() + 4, entry.outer_bits);
-    std::copy(key.begin() + 4, key.end(), entry.inner_bits);
+    entry.outer_bits = {key[0], key[1], key[2], key[3]};
+    entry.inner_bits = {key[4], key[5], 0, 0};
     bits[p] = entry;
   }
   return bytes;
@@ -305,9 +302,9 @@ void checkProgram(const Context& context, const GpuPatchProgram& program, size_t
                    " input vertices per patch is outside the device's patch size");
   }
   if (policy != nullptr &&
-      policy->corner_words.size() != size_t(program.patch_count) * kFactorCornerWordsPerPatch) {
+      policy->corner_words.size() != size_t(program.patch_count) * kTcsFactorPatchWords) {
     throw GpuError("patch program " + program.control_shader + ": factor policy corners for " +
-                   std::to_string(policy->corner_words.size() / kFactorCornerWordsPerPatch) +
+                   std::to_string(policy->corner_words.size() / kTcsFactorPatchWords) +
                    " patches, the program has " + std::to_string(program.patch_count));
   }
   if (cull != nullptr &&
@@ -366,15 +363,20 @@ void bindLevelsSet(Context& context, CallResources& resources, const StorageBuff
       uploadWords(context, cull ? std::span(cull->patch_words) : no_words, &resources.cull_patches);
   const VkDeviceSize cull_tangent_range = uploadWords(
       context, cull ? std::span(cull->tangent_words) : no_words, &resources.cull_tangent);
-  const VkBuffer levels_handles[kLevelsSetBindings] = {
-      resources.levels.handle(),        resources.factor_corners.handle(),
-      resources.factor_params.handle(), resources.factor_out.handle(),
-      resources.cull_params.handle(),   resources.cull_patches.handle(),
-      resources.cull_tangent.handle()};
-  const VkDeviceSize levels_ranges[kLevelsSetBindings] = {
-      levels_range,      corners_range,      params_range,      out_range,
-      cull_params_range, cull_patches_range, cull_tangent_range};
-  set.bind(context.device(), levels_handles, levels_ranges);
+  VkBuffer handles[kLevelsSetBindings] = {};
+  VkDeviceSize ranges[kLevelsSetBindings] = {};
+  const auto put = [&](layout::Binding binding, const Buffer& buffer, VkDeviceSize range) {
+    handles[binding] = buffer.handle();
+    ranges[binding] = range;
+  };
+  put(layout::kBindingLevels, resources.levels, levels_range);
+  put(layout::kBindingFactorPatches, resources.factor_corners, corners_range);
+  put(layout::kBindingFactorParams, resources.factor_params, params_range);
+  put(layout::kBindingFactorOut, resources.factor_out, out_range);
+  put(layout::kBindingCullParams, resources.cull_params, cull_params_range);
+  put(layout::kBindingCullPatches, resources.cull_patches, cull_patches_range);
+  put(layout::kBindingCullTangentPlanes, resources.cull_tangent, cull_tangent_range);
+  set.bind(context.device(), handles, ranges);
 }
 
 // Binds set 0 to the current capture buffer (again whenever it grows) and the program's
@@ -465,11 +467,11 @@ void drawPatches(Context& context, const GpuPatchProgram& program,
 // The levels the TCS wrote, 6 of each patch's 8 words.
 void readTcsLevels(const CallResources& resources, const GpuPatchProgram& program,
                    PatchProgramCapture* result) {
-  std::vector<uint32_t> written(size_t(program.patch_count) * 8);
+  std::vector<uint32_t> written(size_t(program.patch_count) * kFactorOutWords);
   resources.factor_out.read(written.data(), written.size() * 4);
   result->tcs_levels.resize(program.patch_count);
   for (size_t p = 0; p < program.patch_count; ++p) {
-    std::copy_n(&written[p * 8], 6, result->tcs_levels[p].begin());
+    std::copy_n(&written[p * kFactorOutWords], 6, result->tcs_levels[p].begin());
   }
 }
 
@@ -497,7 +499,7 @@ PatchProgramCapture runPatchProgram(Context& context, const GpuPatchProgram& pro
       uploadStorageBuffers(context, program, &resources.data);
   const CallResources::PipelineSets& sets = pipelineSets(device, pipeline, resources);
   bindLevelsSet(context, resources, sets.levels, device_levels, policy, cull,
-                read_levels ? size_t(program.patch_count) * 8 : 0);
+                read_levels ? size_t(program.patch_count) * kFactorOutWords : 0);
 
   const uint32_t first = std::min(options.first_patch, program.patch_count);
   const uint32_t end =

@@ -17,6 +17,9 @@
 #include "core/gpu/tess_capture.h"
 #include "core/mesh/vec.h"
 #include "core/tess/tessellator.h"
+#include "shaders/common/layout/capture_record.h"
+#include "shaders/common/layout/cull_layout.h"
+#include "shaders/common/layout/factor_layout.h"
 
 namespace tb::gpu {
 
@@ -42,14 +45,17 @@ struct TcsFactorPolicy {
 // get outer level 0. Plain words; the CPU twin that packs them is
 // harness/lod/cull_policy.h.
 struct TcsCullPolicy {
-  std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4 (36 words)
+  std::vector<uint32_t> param_words;  // TbCullParamsBlock at set 1, binding 4
   // Per program patch, kTcsCullPatchWords words: TbCullPatches at set 1, binding 5.
   std::vector<uint32_t> patch_words;
   // The tangent_plane policy's coefficients, 4 words each, that TbCullPatch::tangent
   // indexes: TbCullTangentPlanes at set 1, binding 6 (may be empty).
   std::vector<uint32_t> tangent_words;
 };
-inline constexpr size_t kTcsCullPatchWords = 128;  // sizeof(TbCullPatch) / 4
+inline constexpr size_t kTcsCullPatchWords = layout::kWordsOf<layout::TbCullPatch>;
+inline constexpr size_t kTcsCullParamWords = layout::kWordsOf<layout::TbCullParamsBlock>;
+// Words per program patch of TcsFactorPolicy::corner_words (TbFactorPatch).
+inline constexpr size_t kTcsFactorPatchWords = layout::kWordsOf<layout::TbFactorPatch>;
 
 struct PatchProgramCapture {
   // Sorted by (patch, coord bits), so the order does not depend on the device's
@@ -86,8 +92,8 @@ struct PatchProgramOptions {
   bool skip_culled = false;
   // Non-null: the TCS computes its own levels with this policy (kTbFactorPolicy = 1), and
   // the call returns them (tcs_levels). patch_levels are then only the expected levels,
-  // which size the capture: pass the CPU twin's. Its corner_words must hold 64 words per
-  // program patch.
+  // which size the capture: pass the CPU twin's. Its corner_words must hold kTcsFactorPatchWords
+  // per program patch.
   const TcsFactorPolicy* factor_policy = nullptr;
   // Non-null: the TCS culls with this policy (kTbCullPolicy = 1) and the call returns the
   // levels it wrote (tcs_levels; a culled patch has outer levels 0). Its patch_words must
@@ -95,8 +101,8 @@ struct PatchProgramOptions {
   const TcsCullPolicy* cull_policy = nullptr;
 };
 
-// Words per captured vertex (patch_program_tes.glsl kTbCaptureWords).
-inline constexpr uint32_t kCaptureRecordWords = 10;
+// Words per captured vertex (shaders/common/layout/capture_record.h TbCaptureRecord).
+inline constexpr uint32_t kCaptureRecordWords = layout::kWordsOf<layout::TbCaptureRecord>;
 
 // Appends the vertices of `words`, the capture's 10-word records (patch_program_tes.glsl:
 // program patch, gl_TessCoord bits (3), position (3), normal (3)), with the program patch

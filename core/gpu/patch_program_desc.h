@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/tess/tessellator.h"
+#include "shaders/common/layout/bindings.h"
 
 namespace tb::gpu {
 
@@ -45,12 +47,21 @@ struct GpuPatchProgram {
   // VS invocations per patch (the pipeline's patchControlPoints); the shared vertex
   // shader writes nothing, so the TCS reads its inputs from the storage buffers.
   uint32_t input_vertices_per_patch = 1;
-  // Storage buffers at bindings 1..N, as 32-bit words (floats bit-cast).
+  // Storage buffers at bindings 1..N, as 32-bit words (floats bit-cast); setStorageBuffer
+  // fills them by binding.
   std::vector<std::vector<uint32_t>> storage_buffers;
   // Specialisation constants 0..M-1 of both stages (variant switches).
   std::vector<uint32_t> specialization;
   // Non-null: the evaluation shader is a "#displaced" build that samples this map.
   std::shared_ptr<const GpuDisplacement> displacement;
 };
+
+// Puts `words` at set 0, binding `binding` (>= layout::kBindingFirstTechnique) of `program`.
+inline void setStorageBuffer(GpuPatchProgram& program, uint32_t binding,
+                             std::vector<uint32_t> words) {
+  const size_t index = binding - layout::kBindingFirstTechnique;
+  if (program.storage_buffers.size() <= index) program.storage_buffers.resize(index + 1);
+  program.storage_buffers[index] = std::move(words);
+}
 
 }  // namespace tb::gpu

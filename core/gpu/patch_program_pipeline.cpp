@@ -87,7 +87,8 @@ PatchProgramCache::PatchProgramCache(Context& context) : context_(context) {
 ProgramPipeline& PatchProgramCache::get(const GpuPatchProgram& program, tess::Spacing spacing,
                                         uint32_t boundary, uint32_t factor_policy,
                                         uint32_t cull_policy) {
-  const uint32_t binding_count = uint32_t(program.storage_buffers.size()) + 1;
+  const uint32_t binding_count =
+      uint32_t(program.storage_buffers.size()) + layout::kBindingFirstTechnique;
   ProgramKey key{program.control_shader,
                  program.evaluation_shader,
                  program.specialization,

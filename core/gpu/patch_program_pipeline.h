@@ -20,6 +20,7 @@
 #include "core/gpu/pipeline_util.h"
 #include "core/gpu/vk_handle.h"
 #include "core/tess/tessellator.h"
+#include "shaders/common/layout/bindings.h"
 
 namespace tb::gpu {
 
@@ -35,7 +36,7 @@ constexpr uint32_t kCaptureBoundaryConstantId = 200;
 constexpr uint32_t kCaptureEvery = 0, kCaptureQuadBoundary = 1, kCaptureTriangleBoundary = 2;
 // Set 1: the harness levels, then the factor policy's corners, parameters and output, then
 // the culling policy's parameters and per-patch bounds.
-constexpr uint32_t kLevelsSetBindings = 7;
+constexpr uint32_t kLevelsSetBindings = layout::kBindingCullTangentPlanes + 1;
 constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
 

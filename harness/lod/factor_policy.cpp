@@ -1,7 +1,7 @@
 #include "harness/lod/factor_policy.h"
 
+#include <algorithm>
 #include <bit>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -11,17 +11,13 @@
 #include "core/mesh/topology.h"
 #include "core/tess/factor_helpers.h"
 #include "harness/lod/transition_extents.h"
+#include "shaders/common/layout/factor_layout.h"
 
 namespace tb::lod {
 namespace {
 
 constexpr uint32_t kFlagOrderDependent = 1, kFlagSilhouette = 2, kFlagRoundness = 4,
                    kFlagDenseEdges = 8;
-// TbFactorParamsBlock, std430, before error_bound's transition table.
-constexpr size_t kParamWords = 48;
-// TbFactorPatch: 4 corners x (position vec4, normal vec4), then error_bound's 4 edge spheres,
-// edge bounds, patch sphere, inner bound and a pad vec4.
-constexpr size_t kPatchWords = 64;
 constexpr const char* kOrderDependentSuffix = "_order_dependent";
 constexpr const char* kLooseSuffix = "_loose";
 constexpr const char* kDenseSuffix = "_dense";
@@ -29,6 +25,10 @@ constexpr const char* kDenseSuffix = "_dense";
 // centre is below -radius x |plane| x this (1 + 2^-10: more than the float rounding of the
 // value, so no visible sphere is ever taken for an invisible one).
 constexpr float kSideMargin = 1.0f + 1.0f / 1024.0f;
+
+// A shared block's vec4 (shaders/common/layout/factor_layout.h): xyz, w 0; or all four.
+gpu::layout::vec4 vec4(const mesh::Vec3f& v) { return {v[0], v[1], v[2], 0.0f}; }
+gpu::layout::vec4 vec4(const std::array<float, 4>& v) { return {v[0], v[1], v[2], v[3]}; }
 
 // The shader's helpers, in its operation order (shaders/common/float_order.glsl).
 float dotF(const mesh::Vec3f& a, const mesh::Vec3f& b) {
@@ -531,44 +531,47 @@ std::vector<tess::Levels> policyLevels(const FactorParams& params, const FactorC
 gpu::TcsFactorPolicy tcsFactorPolicy(const FactorParams& params, const FactorCorners& corners,
                                      const gpu::GpuPatchProgram& program) {
   gpu::TcsFactorPolicy out;
-  out.corner_words.reserve(size_t(program.patch_count) * kPatchWords);
-  const auto push = [&](float f) { out.corner_words.push_back(std::bit_cast<uint32_t>(f)); };
+  out.corner_words.reserve(size_t(program.patch_count) * gpu::kTcsFactorPatchWords);
   for (uint32_t i = 0; i < program.patch_count; ++i) {
     const uint32_t patch = program.patch_ids.empty() ? i : program.patch_ids[i];
-    for (const FactorCorner& corner : corners.patches.at(patch)) {
-      for (const mesh::Vec3f* v : {&corner.position, &corner.normal}) {
-        for (int k = 0; k < 3; ++k) push((*v)[k]);
-        push(0);
-      }
+    gpu::layout::TbFactorPatch record{};
+    const std::array<FactorCorner, 4>& patch_corners = corners.patches.at(patch);
+    for (size_t c = 0; c < 4; ++c) {
+      record.corner[c] = {vec4(patch_corners[c].position), vec4(patch_corners[c].normal)};
     }
     const ErrorBoundPatch bound =
         corners.error_bounds.empty() ? ErrorBoundPatch{} : corners.error_bounds.at(patch);
-    for (const auto& sphere : bound.edge_sphere) {
-      for (float f : sphere) push(f);
-    }
-    for (float f : bound.edge_m) push(f);
-    for (float f : bound.patch_sphere) push(f);
-    for (float f : {bound.inner_a, bound.inner_b, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) push(f);
+    for (size_t e = 0; e < 4; ++e) record.edge_sphere[e] = vec4(bound.edge_sphere[e]);
+    record.edge_m = vec4(bound.edge_m);
+    record.patch_sphere = vec4(bound.patch_sphere);
+    record.inner_ab = {bound.inner_a, bound.inner_b, 0.0f, 0.0f};
+    gpu::layout::appendWords(out.corner_words, record);
   }
-  out.param_words.reserve(kParamWords);
-  for (float m : params.view_projection) out.param_words.push_back(std::bit_cast<uint32_t>(m));
-  for (int k = 0; k < 3; ++k) out.param_words.push_back(std::bit_cast<uint32_t>(params.eye[k]));
-  out.param_words.push_back(0);
-  for (float f : {params.viewport_height_px, params.projection_y_scale, params.target,
-                  params.pixel_scale, params.min_scale, params.roundness_span}) {
-    out.param_words.push_back(std::bit_cast<uint32_t>(f));
-  }
-  const uint32_t domain = program.domain == tess::Domain::kQuad ? 1u : 0u;
-  for (uint32_t u : {params.policy, params.flags, params.reduction, params.spacing, domain, 0u}) {
-    out.param_words.push_back(u);
-  }
-  for (float f : {params.error_scale, params.near_w, params.hull_w_scale, 0.0f,
-                  params.row_length[0], params.inv_scale[0], params.tan_half[0], 0.0f,
-                  params.row_length[1], params.inv_scale[1], params.tan_half[1], 0.0f}) {
-    out.param_words.push_back(std::bit_cast<uint32_t>(f));
-  }
-  for (float f : params.side_length) out.param_words.push_back(std::bit_cast<uint32_t>(f));
-  assert(out.param_words.size() == kParamWords);
+  gpu::layout::TbFactorParamsBlock block{};
+  std::copy(params.view_projection.begin(), params.view_projection.end(), block.view_projection.m);
+  block.eye = vec4(params.eye);
+  block.viewport_height_px = params.viewport_height_px;
+  block.projection_y_scale = params.projection_y_scale;
+  block.target = params.target;
+  block.pixel_scale = params.pixel_scale;
+  block.min_scale = params.min_scale;
+  block.roundness_span = params.roundness_span;
+  block.policy = params.policy;
+  block.flags = params.flags;
+  block.reduction = params.reduction;
+  block.spacing = params.spacing;
+  block.domain = program.domain == tess::Domain::kQuad ? 1u : 0u;
+  block.error_scale = params.error_scale;
+  block.near_w = params.near_w;
+  block.hull_w_scale = params.hull_w_scale;
+  block.row_length_x = params.row_length[0];
+  block.inv_scale_x = params.inv_scale[0];
+  block.tan_half_x = params.tan_half[0];
+  block.row_length_y = params.row_length[1];
+  block.inv_scale_y = params.inv_scale[1];
+  block.tan_half_y = params.tan_half[1];
+  block.side_length = vec4(params.side_length);
+  gpu::layout::appendWords(out.param_words, block);
   if (FactorPolicyKind(params.policy) == FactorPolicyKind::kErrorBound) {
     for (float f : transitionExtents(program.domain, tess::Spacing(params.spacing))) {
       out.param_words.push_back(std::bit_cast<uint32_t>(f));

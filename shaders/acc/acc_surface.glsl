@@ -14,11 +14,22 @@ layout(constant_id = 0) const uint kOrder = 2u;
 layout(constant_id = 1) const uint kTangentPatches = 1u;
 
 #ifdef TB_SURFACE_BUILD
-layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 2) readonly buffer RingHeaders { uvec4 ring_headers[]; };
-layout(std430, set = 0, binding = 3) readonly buffer RingSlots { uvec2 ring_slots[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Patches { uint patch_words[]; };
-layout(std430, set = 0, binding = 5) readonly buffer Stencils { float stencil[]; };
+#include "acc_layout.h"
+layout(std430, set = 0, binding = TB_ACC_BINDING_POSITIONS) readonly buffer Positions {
+  vec4 positions[];
+};
+layout(std430, set = 0, binding = TB_ACC_BINDING_RING_HEADERS) readonly buffer RingHeaders {
+  uvec4 ring_headers[];
+};
+layout(std430, set = 0, binding = TB_ACC_BINDING_RING_SLOTS) readonly buffer RingSlots {
+  uvec2 ring_slots[];
+};
+layout(std430, set = 0, binding = TB_ACC_BINDING_PATCHES) readonly buffer Patches {
+  uint patch_words[];
+};
+layout(std430, set = 0, binding = TB_ACC_BINDING_STENCILS) readonly buffer Stencils {
+  float stencil[];
+};
 
 // Owner corner and role (0 corner, 1 edge to next corner, 2 edge to previous, 3 interior).
 const uint kOwnerCorner[16] = uint[](0u, 0u, 1u, 1u, 0u, 0u, 1u, 1u, 3u, 3u, 2u, 2u, 3u, 3u, 2u, 2u);

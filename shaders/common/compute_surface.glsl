@@ -18,20 +18,31 @@
 #ifndef TB_COMPUTE_SURFACE_GLSL
 #define TB_COMPUTE_SURFACE_GLSL
 
+#include "layout/bindings.h"
+#include "layout/capture_record.h"
+
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 8) buffer TbSurfaces { TB_SURFACE tb_surfaces[]; };
+layout(std430, set = 0, binding = TB_BINDING_COMPUTE_SURFACES) buffer TbSurfaces {
+  TB_SURFACE tb_surfaces[];
+};
 // The compute tessellator's offsets (first point, first index word per patch) and status
 // (totals), tessellate.comp's bindings 2 and 3.
-layout(std430, set = 0, binding = 9) readonly buffer TbTessOffsets { uvec2 tb_tess_offsets[]; };
-layout(std430, set = 0, binding = 10) readonly buffer TbTessStatus {
+layout(std430, set = 0, binding = TB_BINDING_COMPUTE_TESS_OFFSETS) readonly buffer TbTessOffsets {
+  uvec2 tb_tess_offsets[];
+};
+layout(std430, set = 0, binding = TB_BINDING_COMPUTE_TESS_STATUS) readonly buffer TbTessStatus {
   uint total_points;
   uint total_index_words;
   uint errors;
 } tb_tess_status;
-layout(std430, set = 0, binding = 11) readonly buffer TbTessPoints { uvec2 tb_tess_points[]; };
-// 10 words per point: patch, coordinate bits (3), position (3), normal (3).
-layout(std430, set = 0, binding = 12) writeonly buffer TbVertices { uint tb_vertex_words[]; };
+layout(std430, set = 0, binding = TB_BINDING_COMPUTE_TESS_POINTS) readonly buffer TbTessPoints {
+  uvec2 tb_tess_points[];
+};
+// kTbCaptureWords per point (layout/capture_record.h TbCaptureRecord).
+layout(std430, set = 0, binding = TB_BINDING_COMPUTE_VERTICES) writeonly buffer TbVertices {
+  uint tb_vertex_words[];
+};
 
 layout(push_constant) uniform TbComputeSurfacePush {
   uint pass;         // 0 build, 1 evaluate
@@ -78,7 +89,7 @@ void tbEvaluatePoint(uint point) {
   tb_stage_patch = patch_index;
   TB_EVALUATE_SURFACE(tb_surfaces[patch_index], eval_coord);
   const vec3 position = tb_stage_position, normal = tb_stage_normal;
-  const uint base = point * 10u;
+  const uint base = point * kTbCaptureWords;
   tb_vertex_words[base + 0u] = patch_index;
   tb_vertex_words[base + 1u] = floatBitsToUint(coord.x);
   tb_vertex_words[base + 2u] = floatBitsToUint(coord.y);

@@ -54,7 +54,6 @@ const uint kTbCullCombined = 6u;
 const uint kTbCullTangentPlane = 7u;
 const uint kTbCullTangentPlaneFrustum = 8u;
 
-const uint kTbCullHullPoints = 20u;  // hull[] capacity per patch
 const float kTbCullTangentMargin = 1e-3;  // harness/lod/cull_policy.h kTangentPlaneMargin
 
 // Harness specialisation constant: 0, no culling; 1, the TCS culls with the policy
@@ -64,36 +63,8 @@ const float kTbCullTangentMargin = 1e-3;  // harness/lod/cull_policy.h kTangentP
 layout(constant_id = 202) const uint kTbCullPolicy = 0u;
 const uint kTbCullPolicyFixed = 100u;
 
-layout(std430, set = TB_HARNESS_SET, binding = 4) readonly buffer TbCullParamsBlock {
-  vec4 planes[6];        // world-space frustum planes, unit xyz: inside when xyz . p + w >= 0
-  vec4 eye;              // xyz: camera position, world units
-  float global_margin;   // frustum_lp2_global's margin, world units
-  uint policy;
-  uint pad0;
-  uint pad1;
-  vec4 chord_factors;    // tangent_plane's chord margin: quad K2, K3, triangle K2, K3
-} tb_cull;
-
-struct TbCullPatch {
-  vec4 corner_position[4];  // xyz: welded corner position; w: frustum_lp2_exact's margin
-  vec4 corner_normal[4];    // xyz: the welded position's unit normal
-  vec4 cone;                // xyz: unit axis; w: sin of the half angle, > 1 when there is no cone
-  uvec4 header;             // x: corners (3 or 4), y: hull points, z: displacement bound bits
-  // x: first coefficient in tb_cull_tangent_planes, y: coefficients (0: none, use the cone),
-  // z: max |n_k| bits, w: max |w_k| bits
-  uvec4 tangent;
-  vec4 tangent_chord;  // x: the net's reach R from O, y: G1 G2, z: G2^2 (chord margin)
-  vec4 hull[kTbCullHullPoints];  // xyz
-};
-
-layout(std430, set = TB_HARNESS_SET, binding = 5) readonly buffer TbCullPatches {
-  TbCullPatch tb_cull_patches[];
-};
-
-// {n_k, w_k}: world units squared and cubed.
-layout(std430, set = TB_HARNESS_SET, binding = 6) readonly buffer TbCullTangentPlanes {
-  vec4 tb_cull_tangent_planes[];
-};
+// TbCullParamsBlock (tb_cull), TbCullPatch and the tangent planes: the host shares them.
+#include "layout/cull_layout.h"
 
 // Signed distance of p to plane k (positive inside).
 float tbPlaneDistance(uint k, vec3 p) {

@@ -12,16 +12,7 @@
 layout(constant_id = 201) const uint kTbFactorPolicy = 0u;
 // kTbCullPolicy (constant_id 202), the culling switch, is declared in cull.glsl.
 
-// One patch's levels as float bits, written by the CPU (runPatchProgram's per-patch
-// levels; uniform levels are the same entry for every patch). 32 bytes per patch.
-struct TbPatchLevels {
-  uvec4 outer_bits;  // gl_TessLevelOuter[0..3]
-  uvec4 inner_bits;  // gl_TessLevelInner[0..1] in .xy; .zw unused
-};
-
-layout(std430, set = 1, binding = 0) readonly buffer TbLevels {
-  TbPatchLevels tb_patch_levels[];
-};
+#include "layout/levels_layout.h"
 
 // Writes this patch's levels (tbPatchIndex()): the harness's, bit for bit, or with
 // kTbFactorPolicy those of the factor policy (tess_factors.glsl); with kTbCullPolicy, outer

@@ -7,16 +7,8 @@
 #include "displace.glsl"
 #endif
 
-// 10 words per vertex: patch, gl_TessCoord bits (3), position (3), normal (3).
-const uint kTbCaptureWords = 10u;
-
-layout(std430, set = 0, binding = 0) buffer TbCapture {
-  uint count;     // vertices written (atomic); may exceed capacity on overflow
-  uint capacity;  // vertices that fit in words[]
-  uint reserved0;
-  uint reserved1;
-  uint words[];
-} tb_capture;
+// TbCapture (tb_capture) and kTbCaptureWords: the host shares them.
+#include "layout/capture_layout.h"
 
 // Harness specialisation constant (techniques use ids 0..M-1): which TES invocations are
 // captured. 0: every one; 1: only those on a quad's edges; 2: only those on a triangle's

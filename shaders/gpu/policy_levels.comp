@@ -17,13 +17,15 @@
 #define TB_HARNESS_SET 0
 #include "tess_factors.glsl"
 #include "cull.glsl"
+#include "layout/tess_patch_record.h"
 
 layout(local_size_x = 64) in;
 
-// Per record: outer level bits [4], inner level bits [2], domain | spacing << 8, flags
-// (core/gpu/compute_tessellator.h). This pass writes words 0..5 and leaves the host's code
-// and flags words alone.
-layout(std430, set = 0, binding = 0) buffer TessPatchRecords { uint tb_record_words[]; };
+// Per record kTbTessPatchRecordWords words (layout/tess_patch_record.h TbTessPatchRecord). This pass
+// writes the levels and leaves the host's code and flags words alone.
+layout(std430, set = 0, binding = TB_BINDING_TESS_PATCH_RECORDS) buffer TessPatchRecords {
+  uint tb_record_words[];
+};
 
 layout(push_constant) uniform Job {
   uint patch_count;   // patches of this job (its program's)
@@ -36,17 +38,17 @@ void main() {
   const uint patch_index = gl_GlobalInvocationID.x;
   if (patch_index >= job.patch_count) return;
   const uint record = job.first_record + patch_index;
-  const uint w = 8u * record;
+  const uint w = kTbTessPatchRecordWords * record;
   float outer[4];
   float inner[2];
   if (job.factor != 0u) {
     tbPolicyLevels(patch_index, outer, inner);
   } else {
     for (uint j = 0u; j < 4u; ++j) outer[j] = uintBitsToFloat(tb_record_words[w + j]);
-    for (uint j = 0u; j < 2u; ++j) inner[j] = uintBitsToFloat(tb_record_words[w + 4u + j]);
+    for (uint j = 0u; j < 2u; ++j) inner[j] = uintBitsToFloat(tb_record_words[w + kTbTessPatchInner + j]);
   }
   if (job.cull != 0u && tbCullPatch(patch_index)) outer = float[4](0.0, 0.0, 0.0, 0.0);
   for (uint j = 0u; j < 4u; ++j) tb_record_words[w + j] = floatBitsToUint(outer[j]);
-  for (uint j = 0u; j < 2u; ++j) tb_record_words[w + 4u + j] = floatBitsToUint(inner[j]);
+  for (uint j = 0u; j < 2u; ++j) tb_record_words[w + kTbTessPatchInner + j] = floatBitsToUint(inner[j]);
   tbWriteBackLevels(record, outer, inner);
 }

@@ -7,12 +7,16 @@
 // buffer) at those offsets. Host side: core/gpu/compute_tessellator.h.
 #extension GL_GOOGLE_include_directive : require
 
+#include "layout/bindings.h"
+#include "layout/tess_patch_record.h"
+
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kWrite = 0;
 
-// Per patch 8 words: outer level bits [4], inner level bits [2], domain | spacing << 8, flags
-// (1: cw winding, 2: point mode, 4: the tests' rounding-up control).
-layout(std430, set = 0, binding = 0) readonly buffer Patches { uint patch_words[]; };
+// Per patch kTbTessPatchRecordWords words (layout/tess_patch_record.h TbTessPatchRecord).
+layout(std430, set = 0, binding = TB_BINDING_TESS_PATCH_RECORDS) readonly buffer Patches {
+  uint patch_words[];
+};
 // Per patch: points, index words (3 a triangle, 2 a line segment), culled (0/1), 0.
 layout(std430, set = 0, binding = 1) buffer Counts { uvec4 counts[]; };
 // Per patch: first point, first index word (exclusive prefix sums, tess_scan.comp).
@@ -48,7 +52,7 @@ void tbStoreIndex(uint k, uint i) { indices[g_index_base + k] = g_point_base + i
 void main() {
   const uint p = gl_GlobalInvocationID.x;
   if (p >= params.patch_count) return;
-  const uint code = patch_words[8u * p + 6u];
+  const uint code = patch_words[kTbTessPatchRecordWords * p + kTbTessPatchCode];
   const uint domain = code & 0xffu, spacing = code >> 8;
   if (domain > kTbDomainIsoline || spacing > kTbSpacingFractionalEven) {
     if (kWrite == 0u) {
@@ -69,11 +73,12 @@ void main() {
       return;
     }
   }
-  const uint w = 8u * p;
+  const uint w = kTbTessPatchRecordWords * p;
   const vec4 outer = uintBitsToFloat(
       uvec4(patch_words[w], patch_words[w + 1u], patch_words[w + 2u], patch_words[w + 3u]));
-  const vec2 inner = uintBitsToFloat(uvec2(patch_words[w + 4u], patch_words[w + 5u]));
-  const uint flags = patch_words[w + 7u];
+  const vec2 inner = uintBitsToFloat(uvec2(patch_words[w + kTbTessPatchInner],
+                                                  patch_words[w + (kTbTessPatchInner + 1u)]));
+  const uint flags = patch_words[w + kTbTessPatchFlags];
   g_tb_ccw = (flags & 1u) == 0u;
   g_tb_point_mode = (flags & 2u) != 0u;
   g_tb_rounding_up_control = (flags & 4u) != 0u;

@@ -6,7 +6,9 @@
 #include <map>
 #include <numbers>
 #include <tuple>
+#include <utility>
 
+#include "shaders/acc/acc_layout.h"
 #include "techniques/acc/acc_batch.h"
 #include "techniques/acc/acc_patch.h"
 #include "techniques/common/crease_refinement.h"
@@ -324,7 +326,12 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
     patches.insert(patches.end(), {class_of_[p], rotation_of_[p], 0u, 0u});
   }
   if (slots.empty()) slots.push_back(0);
-  program.storage_buffers = {positions, headers, slots, patches, stencils};
+  using namespace gpu::layout;
+  gpu::setStorageBuffer(program, kAccBindingPositions, std::move(positions));
+  gpu::setStorageBuffer(program, kAccBindingRingHeaders, std::move(headers));
+  gpu::setStorageBuffer(program, kAccBindingRingSlots, std::move(slots));
+  gpu::setStorageBuffer(program, kAccBindingPatches, std::move(patches));
+  gpu::setStorageBuffer(program, kAccBindingStencils, std::move(stencils));
   program.specialization = {uint32_t(order_), tangent_ ? 1u : 0u};
   return {program};
 }
