@@ -68,12 +68,9 @@ std::optional<double> parsePlotNumber(std::string_view text);
 //   else "<measure>.<metric>", the other measure's summary figure for the same technique ×
 //   variant × asset (worstOf its stats over that measure's summary scope);
 // - x (bar), series, facet: "technique", "variant" (technique/variant), "asset" or a row key;
-// - a point: the median y of the rows of one series at one x in one chart. A cross-measure
-//   x is a figure of a whole record, so there each technique × variant stays its own point
-//   (two variants with equal instruction counts are two points, not their median);
-// - pareto_front: a point is on the front when no other point of its chart has x <= its x
-//   and a y at least as good (by the y metric's direction) with one of the two strictly
-//   better; x is a cost (lower is better).
+// - a point: the median y of the rows of one series at one x in one chart (a cross-measure x
+//   keeps each technique × variant its own point);
+// - pareto_front: no other point has x <= its x and a y at least as good, one strictly.
 PlotData plotData(const results::Results& results, const results::MeasureDeclaration& measure,
                   const results::PlotSpec& spec);
 

@@ -6,9 +6,7 @@
 //    "device": "llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 22.3.6 (LLVM 15.0.6), Vulkan 1.3.230)",
 //    "measures": [{"technique": "acc", "variant": "default", "asset": "...",
 //                  "measure": "error", "seconds": 0.41, "samples": [0.41, 0.39, ...]}]}
-//
-// `seconds` is the first sample (what a one-sample run wrote before samples existed); a file
-// without `samples` or `repetitions` reads as one sample per entry.
+// `seconds` is the first sample; a file without `samples` reads as one sample per entry.
 #pragma once
 
 #include <string>

@@ -3,13 +3,11 @@
 //  - NVIDIA's talk (D3D11 hull/domain shaders): bicubic Bézier position evaluation
 //    takes 60 (asymmetric), 105 (symmetric, no FMA), 75 (symmetric with FMA) and 69
 //    (symmetric on edges only) instructions.
-//  - the DirectX SDK SubD10 sample (D3D10, Loop & Schaefer 2008's ACC): evaluating a regular ACC
-//  patch takes 16 loads and
-//    about 73 ALU operations; an extraordinary one up to 24 loads and about 120 ALU.
-// Ours are static SPIR-V counts after spirv-opt -O of the technique's own shaders
-// (harness/measures/common/instruction_counts/instructions.h), specialised for each order.
-// The measure applies to a technique whose shader folder has `bezier_position.tese` (a
-// position-only probe whose specialisation constant 0 selects the order) — today `acc`.
+//  - the DirectX SDK SubD10 sample (ACC): a regular patch 16 loads and about 73 ALU, an
+//    extraordinary one up to 24 loads and about 120 ALU.
+// Ours: SPIR-V counts after spirv-opt -O of the technique's shaders, one per order. Applies to a
+// technique whose shader folder has `bezier_position.tese` (a position-only probe whose
+// specialisation constant 0 selects the order) — today `acc`.
 #include <array>
 #include <string>
 #include <tuple>
