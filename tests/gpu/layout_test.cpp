@@ -13,6 +13,7 @@
 
 #include "shaders/common/layout/capture_layout.h"
 #include "shaders/common/layout/cull_layout.h"
+#include "shaders/common/layout/displace_layout.h"
 #include "shaders/common/layout/factor_layout.h"
 #include "shaders/common/layout/levels_layout.h"
 #include "shaders/embedded_shaders.h"
@@ -244,6 +245,14 @@ TEST(LayoutSelfTest, HarnessBlocksMatchTheirSpirv) {
   CppBlock levels_block = patchLevels();
   EXPECT_EQ(joined(compare(tcs, levels_block)), "");
   EXPECT_EQ(joined(compare(embeddedShader("gpu/test_bilinear.tese"), capture())), "");
+}
+
+// The word-indexed blocks: their one runtime array and their named binding.
+TEST(LayoutSelfTest, WordBlocksAreBoundByName) {
+  const CppBlock displace{"TbDisplacePatches", 0, {{"words", 0, 4}}, kBindingDisplacementPatches};
+  EXPECT_EQ(joined(compare(embeddedShader("gpu/test_bilinear.tese#displaced"), displace)), "");
+  const CppBlock records{"Patches", 0, {{"patch_words", 0, 4}}, kBindingTessPatchRecords};
+  EXPECT_EQ(joined(compare(embeddedShader("gpu/tessellate.comp"), records)), "");
 }
 
 // The control: one field added on the GLSL side only shifts the members after it.
