@@ -3,7 +3,8 @@
 # against (docs/PLUGINS.md):
 #   P/bin/tessbench
 #   P/share/tessbench/assets/...            found beside the binary at run time
-#   P/share/tessbench/shaders/common/*.glsl the GLSL a plug-in's shaders include
+#   P/share/tessbench/shaders/common/*.glsl the GLSL a plug-in's shaders include (and the
+#                                           layout/*.h they include)
 #   P/include/tessbench/<path>.h            the plug-in headers and what they include, no more
 #   P/lib/cmake/tessbench/                  tessbenchConfig.cmake: tessbench::sdk,
 #                                           tessbench_add_plugin()
@@ -27,6 +28,7 @@ set(TB_SDK_HEADERS
   techniques/wave_field.h
   core/gpu/patch_program_desc.h
   core/gpu/compute_program_desc.h
+  shaders/common/layout/bindings.h
   core/mesh/mesh.h
   core/mesh/vec.h
   core/mesh/triangulate.h
@@ -39,7 +41,7 @@ endforeach()
 install(TARGETS tessbench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessbench/assets)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/shaders/common/ DESTINATION ${TB_INSTALL_SHADERDIR}/common
-        FILES_MATCHING PATTERN "*.glsl")
+        FILES_MATCHING PATTERN "*.glsl" PATTERN "*.h")
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tessbenchConfig.cmake.in
   ${PROJECT_BINARY_DIR}/tessbenchConfig.cmake

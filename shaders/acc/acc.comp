@@ -10,12 +10,10 @@
 #include "acc_surface.glsl"
 #include "acc_compute_build.glsl"
 
-void tbEvaluateAcc(TbAccSurface s, vec3 tb_tess_coord) {
-  const vec3 b_in[16] = s.b, tu_in[12] = s.tu, tv_in[12] = s.tv;
+#define TB_EVALUATE_FUNCTION tbEvaluateAcc(TbAccSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE const vec3 b_in[16] = s.b, tu_in[12] = s.tu, tv_in[12] = s.tv;
 #define TB_TESS_COORD tb_tess_coord
 #include "acc_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbAccSurface
 #define TB_BUILD_SURFACE() tbBuildAcc()

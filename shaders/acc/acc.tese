@@ -13,6 +13,5 @@ layout(location = 3) patch in vec3 tu_in[12];
 layout(location = 15) patch in vec3 tv_in[12];
 
 #define TB_TESS_COORD gl_TessCoord
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "acc_evaluate.glsl"
-}

@@ -8,18 +8,4 @@
 #define TB_ACC_BINDING_PATCHES 4
 #define TB_ACC_BINDING_STENCILS 5
 
-#ifdef __cplusplus
-#include <cstdint>
-
-namespace tb::gpu::layout {
-enum AccBinding : uint32_t {
-  kAccBindingPositions = TB_ACC_BINDING_POSITIONS,
-  kAccBindingRingHeaders = TB_ACC_BINDING_RING_HEADERS,
-  kAccBindingRingSlots = TB_ACC_BINDING_RING_SLOTS,
-  kAccBindingPatches = TB_ACC_BINDING_PATCHES,
-  kAccBindingStencils = TB_ACC_BINDING_STENCILS,
-};
-}  // namespace tb::gpu::layout
-#endif
-
 #endif

@@ -10,16 +10,14 @@
 #include "acc_surface.glsl"
 #include "acc_compute_build.glsl"
 
-void tbEvaluateBezierPosition(TbAccSurface s, vec3 tb_tess_coord) {
-  const vec3 b_in[16] = s.b;
+#define TB_EVALUATE_FUNCTION tbEvaluateBezierPosition(TbAccSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE \
+  const vec3 b_in[16] = s.b; \
   vec4 tb_clip_position;
+#define TB_EVALUATE_EPILOGUE tbEmitVertex(tb_clip_position.xyz, vec3(0.0));
 #define TB_TESS_COORD tb_tess_coord
 #define TB_CLIP_POSITION tb_clip_position
 #include "bezier_position_evaluate.glsl"
-#undef TB_CLIP_POSITION
-#undef TB_TESS_COORD
-  tbEmitVertex(tb_clip_position.xyz, vec3(0.0));
-}
 
 #define TB_SURFACE TbAccSurface
 #define TB_BUILD_SURFACE() tbBuildAcc()

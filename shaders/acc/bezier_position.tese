@@ -14,6 +14,5 @@ layout(location = 0) in vec3 b_in[];
 
 #define TB_TESS_COORD gl_TessCoord
 #define TB_CLIP_POSITION gl_Position
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "bezier_position_evaluate.glsl"
-}

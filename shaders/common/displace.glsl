@@ -24,13 +24,10 @@ layout(constant_id = 204) const uint kTbDisplaceSampling = 0u;
 // weights of corners 0 and 1, else gl_TessCoord.xy.
 layout(constant_id = 205) const uint kTbDisplaceTriangle = 0u;
 
-layout(set = 2, binding = 0) uniform sampler2D tb_displacement_map;
-layout(std430, set = 2, binding = 1) readonly buffer TbDisplacePatches {
-  uint words[];
-} tb_displace;
-
-const uint kTbDisplaceHeaderWords = 4u;
-const uint kTbDisplacePatchWords = 33u;  // kDisplacePatchWords
+#include "layout/bindings.h"
+layout(set = 2, binding = TB_BINDING_DISPLACEMENT_MAP) uniform sampler2D tb_displacement_map;
+// TbDisplacePatches (tb_displace) and its word counts: the host shares them.
+#include "layout/displace_layout.h"
 
 uint tbDisplaceWord(uint k) {
   return tb_displace.words[kTbDisplaceHeaderWords + tbPatchIndex() * kTbDisplacePatchWords + k];

@@ -19,12 +19,10 @@ TbGregoryQuadSurface tbBuildGregoryQuad() {
   return s;
 }
 
-void tbEvaluateGregoryQuad(TbGregoryQuadSurface s, vec3 tb_tess_coord) {
-  control_point = s.cp;
+#define TB_EVALUATE_FUNCTION tbEvaluateGregoryQuad(TbGregoryQuadSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE control_point = s.cp;
 #define TB_TESS_COORD tb_tess_coord
 #include "gregory_quad_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbGregoryQuadSurface
 #define TB_BUILD_SURFACE() tbBuildGregoryQuad()

@@ -1,8 +1,17 @@
-// The body of gregory_acc.tese's main, shared with the compute path (gregory_acc.comp): the
+// What gregory_acc.tese's main runs, shared with the compute path (gregory_acc.comp): the
 // quad Gregory patch at TB_TESS_COORD (gl_TessCoord there), position and analytic normal,
 // from the 20 points at() reads (gregory_surface.glsl). Mirrors techniques/gregory_acc/
 // gregory_eval.h operation for operation (every value `precise`); ends in tbEmitVertex.
-// Included inside a function, so the TES compiles as before it was shared.
+// Defines the function TB_EVALUATE_FUNCTION names: main() in the TES; on the compute path
+// the surface's evaluator, whose fields TB_EVALUATE_PROLOGUE unpacks (TB_EVALUATE_EPILOGUE,
+// if any, ends it).
+#ifndef TB_GREGORY_QUAD_EVALUATE_GLSL
+#define TB_GREGORY_QUAD_EVALUATE_GLSL
+
+void TB_EVALUATE_FUNCTION {
+#ifdef TB_EVALUATE_PROLOGUE
+  TB_EVALUATE_PROLOGUE
+#endif
   const float u = TB_TESS_COORD.x, v = TB_TESS_COORD.y;
   precise float iu = 1.0 - u, iv = 1.0 - v;
   vec3 q[4][4];
@@ -55,3 +64,9 @@
   precise float len = sqrt(dot(n, n));
   precise vec3 normal = len > 0.0 ? n * (1.0 / len) : n;
   tbEmitVertex(position, normal);
+#ifdef TB_EVALUATE_EPILOGUE
+  TB_EVALUATE_EPILOGUE
+#endif
+}
+
+#endif

@@ -7,10 +7,21 @@
 #ifndef TB_GREGORY_STENCIL_GLSL
 #define TB_GREGORY_STENCIL_GLSL
 
-layout(std430, set = 0, binding = 1) readonly buffer Vertices { vec4 vertices[]; };
-layout(std430, set = 0, binding = 2) readonly buffer StencilOffsets { uint stencil_offsets[]; };
-layout(std430, set = 0, binding = 3) readonly buffer StencilEntries { uvec2 stencil_entries[]; };
-layout(std430, set = 0, binding = 4) readonly buffer PatchPoints { uint patch_points[]; };
+#include "gregory_layout.h"
+layout(std430, set = 0, binding = TB_GREGORY_BINDING_VERTICES) readonly buffer Vertices {
+  vec4 vertices[];
+};
+layout(std430, set = 0, binding = TB_GREGORY_BINDING_STENCIL_OFFSETS) readonly buffer
+    StencilOffsets {
+  uint stencil_offsets[];
+};
+layout(std430, set = 0, binding = TB_GREGORY_BINDING_STENCIL_ENTRIES) readonly buffer
+    StencilEntries {
+  uvec2 stencil_entries[];
+};
+layout(std430, set = 0, binding = TB_GREGORY_BINDING_PATCH_POINTS) readonly buffer PatchPoints {
+  uint patch_points[];
+};
 
 // Control point `point` of program patch `patch_index`, whose patches have
 // `points_per_patch` points.

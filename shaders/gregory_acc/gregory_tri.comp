@@ -20,12 +20,10 @@ TbGregoryTriSurface tbBuildGregoryTriangle() {
   return s;
 }
 
-void tbEvaluateGregoryTriangle(TbGregoryTriSurface s, vec3 tb_tess_coord) {
-  control_point = s.cp;
+#define TB_EVALUATE_FUNCTION tbEvaluateGregoryTriangle(TbGregoryTriSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE control_point = s.cp;
 #define TB_TESS_COORD tb_tess_coord
 #include "gregory_tri_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbGregoryTriSurface
 #define TB_BUILD_SURFACE() tbBuildGregoryTriangle()

@@ -13,6 +13,5 @@ layout(location = 0) in vec3 control_point[];
 #include "gregory_surface.glsl"
 
 #define TB_TESS_COORD gl_TessCoord
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "gregory_tri_evaluate.glsl"
-}

@@ -1,8 +1,17 @@
-// The body of gregory_tri.tese's main, shared with the compute path (gregory_tri.comp): the
+// What gregory_tri.tese's main runs, shared with the compute path (gregory_tri.comp): the
 // triangle Gregory patch at TB_TESS_COORD (gl_TessCoord there), position and analytic
 // normal, from the 15 points at() reads (gregory_surface.glsl). Mirrors
 // evaluateGregoryTriangle in techniques/gregory_acc/gregory_eval.h operation for operation
-// (every value `precise`); ends in tbEmitVertex. Included inside a function.
+// (every value `precise`); ends in tbEmitVertex. Defines the function TB_EVALUATE_FUNCTION
+// names: main() in the TES; on the compute path the surface's evaluator, whose fields
+// TB_EVALUATE_PROLOGUE unpacks (TB_EVALUATE_EPILOGUE, if any, ends it).
+#ifndef TB_GREGORY_TRI_EVALUATE_GLSL
+#define TB_GREGORY_TRI_EVALUATE_GLSL
+
+void TB_EVALUATE_FUNCTION {
+#ifdef TB_EVALUATE_PROLOGUE
+  TB_EVALUATE_PROLOGUE
+#endif
   const float u = TB_TESS_COORD.x, v = TB_TESS_COORD.y, w = TB_TESS_COORD.z;
   vec3 b[15];
   b[slot(4, 0)] = at(0u, 0u);
@@ -76,3 +85,9 @@
   precise float len = sqrt(dot(n, n));
   precise vec3 normal = len > 0.0 ? n * (1.0 / len) : n;
   tbEmitVertex(position, normal);
+#ifdef TB_EVALUATE_EPILOGUE
+  TB_EVALUATE_EPILOGUE
+#endif
+}
+
+#endif

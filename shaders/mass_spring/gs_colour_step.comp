@@ -8,7 +8,7 @@
 
 layout(local_size_x = 64) in;
 
-struct Spring { uint a; uint b; float rest; float weight; };
+#include "mass_spring_layout.h"  // Spring, End, Binding, Blast
 layout(std430, set = 0, binding = 0) buffer Positions { vec4 x[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Anchors { vec4 anchors[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Springs { Spring springs[]; };

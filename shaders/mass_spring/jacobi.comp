@@ -16,7 +16,7 @@ layout(constant_id = 0) const uint kChebyshev = 0;
 layout(constant_id = 1) const uint kTiled = 1;
 shared vec3 tile[64];
 
-struct End { uint other; float rest; float weight; uint pad; };
+#include "mass_spring_layout.h"  // Spring, End, Binding, Blast
 layout(std430, set = 0, binding = 0) readonly buffer PositionsIn { vec4 x_in[]; };
 // Plain Jacobi: the output. Chebyshev: x_{k-1} in, x_{k+1} out (each thread its own vertex).
 layout(std430, set = 0, binding = 1) buffer PositionsOut { vec4 x_out[]; };

@@ -3,9 +3,10 @@
 // vertex from its simulated triangle and the triangle's virtual apex, which keeps the
 // tetrahedron's rest volume: DrawVertex = p0 w0 + p1 w1 + p2 w2 + p3 (1 - w0 - w1 - w2).
 // Operation order: techniques/mass_spring/tet_binding.h (drawVertexFloat).
+#extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
-struct Binding { uint v0; uint v1; uint v2; float w0; float w1; float w2; float volume; uint pad; };
+#include "mass_spring_layout.h"  // Spring, End, Binding, Blast
 layout(std430, set = 0, binding = 0) readonly buffer Positions { vec4 x[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Bindings { Binding bindings[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Render { vec4 render_positions[]; };

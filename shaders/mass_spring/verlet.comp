@@ -4,11 +4,12 @@
 // vertices near it, and Verlet integration predicts the positions (seed 003):
 //   x' = x + (1 - damping) (x - x_prev) + g dt^2 + kick.
 // Operation order: techniques/mass_spring/mass_spring.cpp (anchorsAt, step).
+#extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 // 1: also copy the prediction to positions_other (Chebyshev's x_{k-1} before iteration 0).
 layout(constant_id = 0) const uint kCopyToOther = 0;
 
-struct Blast { vec4 centre; float radius; float speed; uint step; uint pad; };
+#include "mass_spring_layout.h"  // Spring, End, Binding, Blast
 layout(std430, set = 0, binding = 0) buffer Positions { vec4 x[]; };
 layout(std430, set = 0, binding = 1) buffer Previous { vec4 x_prev[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Anchors { vec4 anchors[]; };

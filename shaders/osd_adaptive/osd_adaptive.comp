@@ -10,11 +10,9 @@ struct TbOsdSurface {
   uint face;
 };
 
-void tbEvaluateOsd(vec3 tb_tess_coord) {
+#define TB_EVALUATE_FUNCTION tbEvaluateOsd(vec3 tb_tess_coord)
 #define TB_TESS_COORD tb_tess_coord
 #include "osd_adaptive_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbOsdSurface
 #define TB_BUILD_SURFACE() TbOsdSurface(tbPatchIndex())

@@ -10,6 +10,5 @@ layout(quads, equal_spacing, ccw) in;
 #include "osd_adaptive_surface.glsl"
 
 #define TB_TESS_COORD gl_TessCoord
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "osd_adaptive_evaluate.glsl"
-}

@@ -1,6 +1,15 @@
-// The body of osd_adaptive.tese's main, shared with the compute path (osd_adaptive.comp):
+// What osd_adaptive.tese's main runs, shared with the compute path (osd_adaptive.comp):
 // base face tbPatchIndex()'s Far patches at TB_TESS_COORD (gl_TessCoord there), ending in
-// tbEmitVertex. Included inside a function, so the TES compiles as before it was shared.
+// tbEmitVertex. Defines the function TB_EVALUATE_FUNCTION names: main() in the TES; on the
+// compute path the surface's evaluator, whose fields TB_EVALUATE_PROLOGUE unpacks
+// (TB_EVALUATE_EPILOGUE, if any, ends it).
+#ifndef TB_OSD_ADAPTIVE_EVALUATE_GLSL
+#define TB_OSD_ADAPTIVE_EVALUATE_GLSL
+
+void TB_EVALUATE_FUNCTION {
+#ifdef TB_EVALUATE_PROLOGUE
+  TB_EVALUATE_PROLOGUE
+#endif
   const uint face = tbPatchIndex();
   const float u = clamp(TB_TESS_COORD.x, 0.0, 1.0), v = clamp(TB_TESS_COORD.y, 0.0, 1.0);
   // The first sub-patch of the face covering (u, v); they tile the face, the last is only
@@ -45,3 +54,9 @@
   precise float len = sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
   precise vec3 normal = len > 0.0 ? n * (1.0 / len) : vec3(0.0);
   tbEmitVertex(position, normal);
+#ifdef TB_EVALUATE_EPILOGUE
+  TB_EVALUATE_EPILOGUE
+#endif
+}
+
+#endif

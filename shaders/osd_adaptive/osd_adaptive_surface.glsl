@@ -13,10 +13,19 @@
 #ifndef TB_OSD_ADAPTIVE_SURFACE_GLSL
 #define TB_OSD_ADAPTIVE_SURFACE_GLSL
 
-layout(std430, set = 0, binding = 1) readonly buffer Points { vec4 points[]; };
-layout(std430, set = 0, binding = 2) readonly buffer FaceRanges { uvec2 face_ranges[]; };
-layout(std430, set = 0, binding = 3) readonly buffer SubPatches { uvec2 sub_patches[]; };
-layout(std430, set = 0, binding = 4) readonly buffer PointIndices { uint point_indices[]; };
+#include "osd_layout.h"
+layout(std430, set = 0, binding = TB_OSD_BINDING_POINTS) readonly buffer Points {
+  vec4 points[];
+};
+layout(std430, set = 0, binding = TB_OSD_BINDING_FACE_RANGES) readonly buffer FaceRanges {
+  uvec2 face_ranges[];
+};
+layout(std430, set = 0, binding = TB_OSD_BINDING_SUB_PATCHES) readonly buffer SubPatches {
+  uvec2 sub_patches[];
+};
+layout(std430, set = 0, binding = TB_OSD_BINDING_POINT_INDICES) readonly buffer PointIndices {
+  uint point_indices[];
+};
 
 // The float nearest 1/6 (osd_basis.h kSixth).
 const float kSixth = 0.1666666716337204;

@@ -15,20 +15,20 @@ struct TbPhongSurface {
   uvec3 perm;
 };
 
-TbPhongSurface tbBuildPhong() {
-  vec3 tb_phong_p[3], tb_phong_n[3], tb_phong_edge_n[6];
+#define TB_BUILD_FUNCTION TbPhongSurface tbBuildPhong()
+#define TB_BUILD_PROLOGUE                                \
+  vec3 tb_phong_p[3], tb_phong_n[3], tb_phong_edge_n[6]; \
   uvec3 tb_phong_perm;
-#include "phong_build.glsl"
+#define TB_BUILD_EPILOGUE \
   return TbPhongSurface(tb_phong_p, tb_phong_n, tb_phong_edge_n, tb_phong_perm);
-}
+#include "phong_build.glsl"
 
-void tbEvaluatePhong(TbPhongSurface s, vec3 tb_tess_coord) {
-  const vec3 tb_phong_p[3] = s.p, tb_phong_n[3] = s.n, tb_phong_edge_n[6] = s.edge_n;
+#define TB_EVALUATE_FUNCTION tbEvaluatePhong(TbPhongSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE                                                           \
+  const vec3 tb_phong_p[3] = s.p, tb_phong_n[3] = s.n, tb_phong_edge_n[6] = s.edge_n; \
   const uvec3 tb_phong_perm = s.perm;
 #define TB_TESS_COORD tb_tess_coord
 #include "phong_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbPhongSurface
 #define TB_BUILD_SURFACE() tbBuildPhong()

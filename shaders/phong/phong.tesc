@@ -14,7 +14,6 @@ layout(location = 3) patch out vec3 tb_phong_n[3];
 layout(location = 6) patch out vec3 tb_phong_edge_n[6];
 layout(location = 12) patch out uvec3 tb_phong_perm;
 
-void main() {
+#define TB_BUILD_FUNCTION void main()  // the body is main's
+#define TB_BUILD_EPILOGUE tbWriteHarnessLevels();
 #include "phong_build.glsl"
-  tbWriteHarnessLevels();
-}

@@ -13,6 +13,5 @@ layout(location = 6) patch in vec3 tb_phong_edge_n[6];
 layout(location = 12) patch in uvec3 tb_phong_perm;
 
 #define TB_TESS_COORD gl_TessCoord
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "phong_evaluate.glsl"
-}

@@ -1,9 +1,18 @@
-// The body of phong.tese's main, shared with the compute path (phong.comp): Phong
+// What phong.tese's main runs, shared with the compute path (phong.comp): Phong
 // tessellation at TB_TESS_COORD (gl_TessCoord there), in the operation order of
 // techniques/phong/phong_eval.h evaluatePhongInOrder (default) or phong_edge_eval.h
 // evaluatePhongEdge (kEdge, seed 003's per-edge extension). Reads tb_phong_p, tb_phong_n,
-// tb_phong_edge_n and tb_phong_perm (phong_surface.glsl) and ends in tbEmitVertex. Included
-// inside a function, so the TES compiles to the same SPIR-V as before it was shared.
+// tb_phong_edge_n and tb_phong_perm (phong_surface.glsl) and ends in tbEmitVertex. Defines
+// the function TB_EVALUATE_FUNCTION names: main() in the TES; on the compute path the
+// surface's evaluator, whose fields TB_EVALUATE_PROLOGUE unpacks (TB_EVALUATE_EPILOGUE, if
+// any, ends it).
+#ifndef TB_PHONG_EVALUATE_GLSL
+#define TB_PHONG_EVALUATE_GLSL
+
+void TB_EVALUATE_FUNCTION {
+#ifdef TB_EVALUATE_PROLOGUE
+  TB_EVALUATE_PROLOGUE
+#endif
   const float alpha = uintBitsToFloat(kAlphaBits);
   const float w[3] = float[3](TB_TESS_COORD[tb_phong_perm.x], TB_TESS_COORD[tb_phong_perm.y],
                               TB_TESS_COORD[tb_phong_perm.z]);
@@ -38,3 +47,9 @@
   }
   precise vec3 position = flat_point - offset * alpha;
   tbEmitVertex(position, normal);
+#ifdef TB_EVALUATE_EPILOGUE
+  TB_EVALUATE_EPILOGUE
+#endif
+}
+
+#endif

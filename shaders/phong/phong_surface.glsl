@@ -8,10 +8,17 @@
 #include "float_order.glsl"
 
 #ifdef TB_SURFACE_BUILD
-layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Normals { vec4 normals[]; };
-// 15 words per patch: label -> corner (3), position (3), normal (3), edge-end normal (6).
-layout(std430, set = 0, binding = 3) readonly buffer Records { uint records[]; };
+#include "phong_layout.h"
+layout(std430, set = 0, binding = TB_PHONG_BINDING_POSITIONS) readonly buffer Positions {
+  vec4 positions[];
+};
+layout(std430, set = 0, binding = TB_PHONG_BINDING_NORMALS) readonly buffer Normals {
+  vec4 normals[];
+};
+// kTbPhongRecordWords per patch (phong_layout.h TbPhongRecord).
+layout(std430, set = 0, binding = TB_PHONG_BINDING_RECORDS) readonly buffer Records {
+  uint records[];
+};
 #endif
 
 #ifdef TB_SURFACE_EVALUATE

@@ -13,20 +13,19 @@ struct TbPnSurface {
   uvec3 perm;  // canonical label -> gl_TessCoord component
 };
 
-TbPnSurface tbBuildPn() {
-  vec3 tb_pn_b[10], tb_pn_n[6];
+#define TB_BUILD_FUNCTION TbPnSurface tbBuildPn()
+#define TB_BUILD_PROLOGUE       \
+  vec3 tb_pn_b[10], tb_pn_n[6]; \
   uvec3 tb_pn_perm;
+#define TB_BUILD_EPILOGUE return TbPnSurface(tb_pn_b, tb_pn_n, tb_pn_perm);
 #include "pn_build.glsl"
-  return TbPnSurface(tb_pn_b, tb_pn_n, tb_pn_perm);
-}
 
-void tbEvaluatePn(TbPnSurface s, vec3 tb_tess_coord) {
-  const vec3 tb_pn_b[10] = s.b, tb_pn_n[6] = s.n;
+#define TB_EVALUATE_FUNCTION tbEvaluatePn(TbPnSurface s, vec3 tb_tess_coord)
+#define TB_EVALUATE_PROLOGUE                      \
+  const vec3 tb_pn_b[10] = s.b, tb_pn_n[6] = s.n; \
   const uvec3 tb_pn_perm = s.perm;
 #define TB_TESS_COORD tb_tess_coord
 #include "pn_evaluate.glsl"
-#undef TB_TESS_COORD
-}
 
 #define TB_SURFACE TbPnSurface
 #define TB_BUILD_SURFACE() tbBuildPn()

@@ -12,7 +12,6 @@ layout(location = 0) patch out vec3 tb_pn_b[10];  // corners 0..2, edge e end k 
 layout(location = 10) patch out vec3 tb_pn_n[6];   // corner normals 0..2, edge normals 3..5
 layout(location = 16) patch out uvec3 tb_pn_perm;  // canonical label -> gl_TessCoord component
 
-void main() {
+#define TB_BUILD_FUNCTION void main()  // the body is main's
+#define TB_BUILD_EPILOGUE tbWriteHarnessLevels();
 #include "pn_build.glsl"
-  tbWriteHarnessLevels();
-}

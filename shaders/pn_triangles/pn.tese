@@ -11,6 +11,5 @@ layout(location = 10) patch in vec3 tb_pn_n[6];
 layout(location = 16) patch in uvec3 tb_pn_perm;
 
 #define TB_TESS_COORD gl_TessCoord
-void main() {
+#define TB_EVALUATE_FUNCTION main()  // the body is main's
 #include "pn_evaluate.glsl"
-}

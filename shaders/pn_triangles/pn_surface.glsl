@@ -10,10 +10,17 @@
 layout(constant_id = 0) const uint kAen = 0u;       // PN-AEN: average own and neighbour points
 layout(constant_id = 1) const uint kUseScale = 0u;  // per-edge scale of w_ij (boundary, rounding)
 
-layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Normals { vec4 normals[]; };
-// 24 words per patch, see techniques/common/triangle_records.h TriangleRecordWord.
-layout(std430, set = 0, binding = 3) readonly buffer Records { uint records[]; };
+#include "pn_layout.h"
+layout(std430, set = 0, binding = TB_PN_BINDING_POSITIONS) readonly buffer Positions {
+  vec4 positions[];
+};
+layout(std430, set = 0, binding = TB_PN_BINDING_NORMALS) readonly buffer Normals {
+  vec4 normals[];
+};
+// kTbPnRecordWords per patch (pn_layout.h TbPnRecord).
+layout(std430, set = 0, binding = TB_PN_BINDING_RECORDS) readonly buffer Records {
+  uint records[];
+};
 
 const uint kEdgeEnds[6] = uint[6](0u, 1u, 0u, 2u, 1u, 2u);
 

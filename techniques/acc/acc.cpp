@@ -326,12 +326,11 @@ std::vector<gpu::GpuPatchProgram> AccPatches::gpuPrograms() const {
     patches.insert(patches.end(), {class_of_[p], rotation_of_[p], 0u, 0u});
   }
   if (slots.empty()) slots.push_back(0);
-  using namespace gpu::layout;
-  gpu::setStorageBuffer(program, kAccBindingPositions, std::move(positions));
-  gpu::setStorageBuffer(program, kAccBindingRingHeaders, std::move(headers));
-  gpu::setStorageBuffer(program, kAccBindingRingSlots, std::move(slots));
-  gpu::setStorageBuffer(program, kAccBindingPatches, std::move(patches));
-  gpu::setStorageBuffer(program, kAccBindingStencils, std::move(stencils));
+  gpu::setStorageBuffer(program, TB_ACC_BINDING_POSITIONS, std::move(positions));
+  gpu::setStorageBuffer(program, TB_ACC_BINDING_RING_HEADERS, std::move(headers));
+  gpu::setStorageBuffer(program, TB_ACC_BINDING_RING_SLOTS, std::move(slots));
+  gpu::setStorageBuffer(program, TB_ACC_BINDING_PATCHES, std::move(patches));
+  gpu::setStorageBuffer(program, TB_ACC_BINDING_STENCILS, std::move(stencils));
   program.specialization = {uint32_t(order_), tangent_ ? 1u : 0u};
   return {program};
 }

@@ -227,26 +227,33 @@ std::vector<gpu::GpuPatchProgram> DisplacedPatches::gpuPrograms() const {
     displacement->kind = map_->kind == displacement::DisplacementKind::kScalar ? 1 : 2;
     displacement->sampling = sampling_ == DisplacementSampling::kNaive ? 0 : 1;
     std::vector<uint32_t>& words = displacement->patch_words;
-    words = {geometry_.resolution, geometry_.border, geometry_.tile_size, geometry_.tiles_per_row};
+    gpu::layout::appendWords(
+        words, gpu::layout::TbDisplaceHeader{geometry_.resolution, geometry_.border,
+                                             geometry_.tile_size, geometry_.tiles_per_row});
     for (uint32_t i = 0; i < program.patch_count; ++i) {
       const uint32_t p = program.patch_ids.empty() ? i : program.patch_ids[i];
       const BoundaryOwners& owners = frame_.owners(p);
       auto triangleBit = [this](uint32_t q) {
         return inner_.patchDomain(q) == PatchDomain::kTriangle ? 1u << 8 : 0u;
       };
-      words.push_back(p);
-      for (const BoundaryOwners::Corner& corner : owners.corners) {
-        words.push_back(corner.patch);
-        words.push_back(corner.corner | triangleBit(corner.patch));
+      gpu::layout::TbDisplacePatch record{};
+      record.tile = p;
+      for (size_t c = 0; c < 4; ++c) {
+        const BoundaryOwners::Corner& corner = owners.corners[c];
+        record.corner[c][0] = corner.patch;
+        record.corner[c][1] = corner.corner | triangleBit(corner.patch);
       }
-      for (const BoundaryOwners::Edge& edge : owners.edges) {
-        words.push_back(edge.patch);
-        words.push_back(edge.edge | triangleBit(edge.patch));
-        words.push_back(edge.reversed ? 1u : 0u);
+      for (size_t e = 0; e < 4; ++e) {
+        const BoundaryOwners::Edge& edge = owners.edges[e];
+        record.edge[e][0] = edge.patch;
+        record.edge[e][1] = edge.edge | triangleBit(edge.patch);
+        record.edge[e][2] = edge.reversed ? 1u : 0u;
       }
-      for (const mesh::Vec3f& dir : frame_.cornerDirectionsFloat(p)) {
-        for (int k = 0; k < 3; ++k) words.push_back(std::bit_cast<uint32_t>(dir[k]));
+      for (size_t c = 0; c < 4; ++c) {
+        const mesh::Vec3f& dir = frame_.cornerDirectionsFloat(p)[c];
+        for (int k = 0; k < 3; ++k) record.direction_bits[c][k] = std::bit_cast<uint32_t>(dir[k]);
       }
+      gpu::layout::appendWords(words, record);
     }
     program.evaluation_shader += "#displaced";
     program.displacement = std::move(displacement);

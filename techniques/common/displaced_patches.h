@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/displacement/displacement_map.h"
+#include "shaders/common/layout/displace_layout.h"
 #include "techniques/common/displacement_sampling.h"
 #include "techniques/technique.h"
 
@@ -20,8 +21,9 @@ namespace tb::techniques {
 // after a 4-word header (resolution, border, tile_size, tiles_per_row): own tile, 4 corners
 // (owner tile, owner corner | owner is a triangle << 8), 4 edges (owner tile, owner edge |
 // triangle << 8, reversed), 4 corner directions (x, y, z float bits).
-inline constexpr size_t kDisplaceHeaderWords = 4;
-inline constexpr size_t kDisplacePatchWords = 1 + 4 * 2 + 4 * 3 + 4 * 3;
+// (shaders/common/layout/displace_layout.h TbDisplaceHeader, TbDisplacePatch.)
+inline constexpr size_t kDisplaceHeaderWords = gpu::layout::kWordsOf<gpu::layout::TbDisplaceHeader>;
+inline constexpr size_t kDisplacePatchWords = gpu::layout::kWordsOf<gpu::layout::TbDisplacePatch>;
 
 // The owners of every shared corner and edge of a surface and its displacement directions:
 // one unit direction per welded control-mesh position, the technique's normal there taken

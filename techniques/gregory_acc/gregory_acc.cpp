@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 
+#include "shaders/gregory_acc/gregory_layout.h"
 #include "techniques/gregory_acc/gregory_batch.h"
 #include "techniques/gregory_acc/gregory_bounds.h"
 #include "techniques/gregory_acc/gregory_eval.h"
@@ -145,7 +147,7 @@ class GregoryPatches final : public techniques::SurfacePatches {
         patch_points.insert(patch_points.end(), ids_of_patch.begin(),
                             ids_of_patch.begin() + points);
       }
-      program.storage_buffers.push_back(std::move(patch_points));
+      gpu::setStorageBuffer(program, TB_GREGORY_BINDING_PATCH_POINTS, std::move(patch_points));
       programs.push_back(std::move(program));
     }
     return programs;
@@ -165,7 +167,9 @@ class GregoryPatches final : public techniques::SurfacePatches {
       entries.push_back(stencils_.indices[k]);
       entries.push_back(std::bit_cast<uint32_t>(weights_f_[k]));
     }
-    program.storage_buffers = {std::move(vertices), stencils_.offsets, std::move(entries)};
+    gpu::setStorageBuffer(program, TB_GREGORY_BINDING_VERTICES, std::move(vertices));
+    gpu::setStorageBuffer(program, TB_GREGORY_BINDING_STENCIL_OFFSETS, stencils_.offsets);
+    gpu::setStorageBuffer(program, TB_GREGORY_BINDING_STENCIL_ENTRIES, std::move(entries));
     program.specialization = {symmetric_edges_ ? 1u : 0u};
     return program;
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "shaders/mass_spring/mass_spring_layout.h"
 #include "techniques/mass_spring/mass_spring.h"
 
 namespace tb::mass_spring {
@@ -40,6 +41,11 @@ gpu::GpuComputeBuffer buffer(uint32_t binding, std::string name, std::vector<uin
   return b;
 }
 
+// A spring as gs_colour*.comp read it (shaders/mass_spring/mass_spring_layout.h).
+gpu::layout::mass_spring::Spring springRecord(const Spring& spring) {
+  return {spring.a, spring.b, float(spring.rest_m), float(spring.weight)};
+}
+
 uint32_t groups(size_t threads) { return uint32_t((threads + kGroupSize - 1) / kGroupSize); }
 
 // The blasts for verlet.comp: centre, radius, speed and the step each fires on.
@@ -51,9 +57,12 @@ std::vector<uint32_t> blastWords(const std::vector<Blast>& input_blasts, const m
     size_t k = size_t(std::max(0.0, std::floor(blast.time_s / dt) - 2));
     while (k < rows && !(double(k + 1) * dt >= blast.time_s)) ++k;
     const mesh::Vec3f centre = vecCast<float>(blast.center_m - origin);
-    blasts.insert(blasts.end(),
-                  {word(centre.x), word(centre.y), word(centre.z), 0u, word(float(blast.radius_m)),
-                   word(float(blast.speed_m_per_s)), k < rows ? uint32_t(k) : 0xffffffffu, 0u});
+    const gpu::layout::mass_spring::Blast record{{centre.x, centre.y, centre.z, 0.0f},
+                                                 float(blast.radius_m),
+                                                 float(blast.speed_m_per_s),
+                                                 k < rows ? uint32_t(k) : 0xffffffffu,
+                                                 0u};
+    gpu::layout::appendWords(blasts, record);
   }
   return blasts;
 }
@@ -65,8 +74,7 @@ void appendGaussSeidelSteps(const SpringSystem& system, const std::vector<uint32
   std::vector<uint32_t> springs;
   for (uint32_t s : system.colour_order) {
     const Spring& spring = system.springs[s];
-    springs.insert(springs.end(),
-                   {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
+    gpu::layout::appendWords(springs, springRecord(spring));
   }
   uint32_t largest = 0;
   for (uint32_t c = 0; c < system.colour_count; ++c) {
@@ -136,8 +144,8 @@ MassSpringSimulation::JacobiBuffers MassSpringSimulation::jacobiBuffers() const 
   JacobiBuffers tables;
   tables.end_start.assign(system_.end_start.begin(), system_.end_start.end());
   for (const SpringEnd& end : system_.ends) {
-    tables.ends.insert(tables.ends.end(),
-                       {end.other, word(float(end.rest_m)), word(float(end.weight)), 0u});
+    gpu::layout::appendWords(tables.ends, gpu::layout::mass_spring::End{
+                                              end.other, float(end.rest_m), float(end.weight), 0u});
   }
   for (size_t v = 0; v < system_.vertex_count; ++v) {
     const uint32_t count = system_.end_start[v + 1] - system_.end_start[v];
@@ -162,8 +170,7 @@ std::vector<gpu::GpuComputeProgram> MassSpringSimulation::solverPrograms() const
     std::vector<uint32_t> springs;
     for (uint32_t s : system_.colour_order) {
       const Spring& spring = system_.springs[s];
-      springs.insert(springs.end(),
-                     {spring.a, spring.b, word(float(spring.rest_m)), word(float(spring.weight))});
+      gpu::layout::appendWords(springs, springRecord(spring));
     }
     for (uint32_t c = 0; c < system_.colour_count; ++c) {
       gpu::GpuComputePass pass;
@@ -234,8 +241,9 @@ techniques::SimulationFootprint MassSpringSimulation::footprint() const {
 gpu::GpuComputePass MassSpringSimulation::renderPass() const {
   std::vector<uint32_t> bindings;
   for (const TetBinding& b : render_mesh_.bindings) {
-    bindings.insert(bindings.end(), {b.v0, b.v1, b.v2, word(float(b.w0)), word(float(b.w1)),
-                                     word(float(b.w2)), word(float(b.volume)), 0u});
+    gpu::layout::appendWords(
+        bindings, gpu::layout::mass_spring::Binding{b.v0, b.v1, b.v2, float(b.w0), float(b.w1),
+                                                    float(b.w2), float(b.volume), 0u});
   }
   const size_t count = render_mesh_.bindings.size();
   gpu::GpuComputePass pass;

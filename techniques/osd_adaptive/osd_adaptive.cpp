@@ -15,6 +15,7 @@
 #include "core/gpu/patch_program_desc.h"
 #include "core/mesh/input_error.h"
 #include "core/osd/topology_refiner_builder.h"
+#include "shaders/osd_adaptive/osd_layout.h"
 #include "techniques/common/quad_ring.h"
 #include "techniques/osd_adaptive/osd_basis.h"
 #include "techniques/osd_adaptive/osd_curvature.h"
@@ -226,8 +227,10 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
     for (const SubPatchWords& sub : sub_patches_) {
       subs.insert(subs.end(), {sub.packed, sub.first_index});
     }
-    program.storage_buffers = {std::move(points), std::move(ranges), std::move(subs),
-                               point_indices_};
+    gpu::setStorageBuffer(program, TB_OSD_BINDING_POINTS, std::move(points));
+    gpu::setStorageBuffer(program, TB_OSD_BINDING_FACE_RANGES, std::move(ranges));
+    gpu::setStorageBuffer(program, TB_OSD_BINDING_SUB_PATCHES, std::move(subs));
+    gpu::setStorageBuffer(program, TB_OSD_BINDING_POINT_INDICES, point_indices_);
     return {program};
   }
 

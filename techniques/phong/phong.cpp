@@ -1,9 +1,11 @@
 #include "techniques/phong/phong.h"
 
 #include <bit>
+#include <utility>
 
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
+#include "shaders/phong/phong_layout.h"
 #include "techniques/common/triangle_patches.h"
 #include "techniques/common/triangle_records.h"
 #include "techniques/phong/phong_bounds.h"
@@ -16,7 +18,7 @@ namespace tb::phong {
 namespace {
 
 // GPU record: label -> corner (3), position (3), normal (3), edge-end normal (6) words.
-constexpr uint32_t kPhongRecordWords = 15;
+constexpr uint32_t kPhongRecordWords = gpu::layout::kTbPhongRecordWords;
 
 // The `edge` variant borrows pn_triangles' per-patch records: the canonical corner order
 // by position, seed 003's geometry normals and edge flags (a flagged, i.e. split, edge
@@ -91,10 +93,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     const std::vector<mesh::Vec3d>& normals = edge_ ? edge_build_.normals : tri_.mesh.normals;
     std::vector<uint32_t> records;
     records.reserve(patchCount() * kPhongRecordWords);
-    for (size_t p = 0; p < patchCount(); ++p) {
-      const PatchRecord r = record(p);
-      records.insert(records.end(), r.begin(), r.end());
-    }
+    for (size_t p = 0; p < patchCount(); ++p) gpu::layout::appendWords(records, record(p));
     auto vec4s = [](const std::vector<mesh::Vec3d>& values) {
       std::vector<uint32_t> words;
       for (const mesh::Vec3d& v : values) {
@@ -104,7 +103,9 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
       }
       return words;
     };
-    program.storage_buffers = {vec4s(tri_.mesh.positions), vec4s(normals), records};
+    gpu::setStorageBuffer(program, TB_PHONG_BINDING_POSITIONS, vec4s(tri_.mesh.positions));
+    gpu::setStorageBuffer(program, TB_PHONG_BINDING_NORMALS, vec4s(normals));
+    gpu::setStorageBuffer(program, TB_PHONG_BINDING_RECORDS, std::move(records));
     program.specialization = {std::bit_cast<uint32_t>(float(alpha_)), edge_ ? 1u : 0u};
     return {program};
   }
@@ -152,7 +153,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
   }
 
  private:
-  using PatchRecord = std::array<uint32_t, kPhongRecordWords>;
+  using PatchRecord = gpu::layout::TbPhongRecord;
 
   // The GPU record of patch p: canonical order (canonicalCornerOrder on the float corners,
   // as evaluateFloat sorts them; pn_triangles' order for the edge variant) and indices.
@@ -163,12 +164,12 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     if (edge_) {
       const techniques::TriangleRecord& pr = edge_build_.records[patch];
       for (int i = 0; i < 3; ++i) {
-        r[i] = pr.perm[i];
-        r[3 + i] = pr.position[i];
-        r[6 + i] = pr.normal[i];
+        r.perm[i] = pr.perm[i];
+        r.position[i] = pr.position[i];
+        r.normal[i] = pr.normal[i];
       }
       for (int e = 0; e < 3; ++e) {
-        for (int end = 0; end < 2; ++end) r[9 + 2 * e + end] = edgeNormalIndex(pr, e, end);
+        for (int end = 0; end < 2; ++end) r.edge_normal[2 * e + end] = edgeNormalIndex(pr, e, end);
       }
       return r;
     }
@@ -179,11 +180,11 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     }
     const std::array<int, 3> order = canonicalCornerOrder(tri);
     for (int i = 0; i < 3; ++i) {
-      r[i] = uint32_t(order[i]);
-      r[3 + i] = mesh.corner_positions[first + order[i]];
-      r[6 + i] = uint32_t(mesh.corner_normals[first + order[i]]);
+      r.perm[i] = uint32_t(order[i]);
+      r.position[i] = mesh.corner_positions[first + order[i]];
+      r.normal[i] = uint32_t(mesh.corner_normals[first + order[i]]);
     }
-    for (int k = 0; k < 6; ++k) r[9 + k] = r[6];  // unused without the edge variant
+    for (int k = 0; k < 6; ++k) r.edge_normal[k] = r.normal[0];  // unused without the edge variant
     return r;
   }
 

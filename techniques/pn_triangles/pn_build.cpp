@@ -1,6 +1,10 @@
 #include "techniques/pn_triangles/pn_build.h"
 
 #include <bit>
+#include <utility>
+
+#include "shaders/common/layout/bindings.h"
+#include "shaders/pn_triangles/pn_layout.h"
 
 namespace tb::pn_triangles {
 
@@ -28,20 +32,29 @@ std::vector<std::vector<uint32_t>> pnStorageBuffers(const mesh::Mesh& mesh,
     if (words.empty()) words.assign(4, 0);  // a storage buffer may not be empty
     return words;
   };
+  static_assert(techniques::kRecordWords == gpu::layout::kTbPnRecordWords);
   std::vector<uint32_t> records;
   records.reserve(build.records.size() * techniques::kRecordWords);
   for (const techniques::TriangleRecord& r : build.records) {
-    for (uint32_t x : r.perm) records.push_back(x);
-    for (uint32_t x : r.position) records.push_back(x);
-    for (uint32_t x : r.normal) records.push_back(x);
-    for (uint32_t x : r.geometry_normal) records.push_back(x);
-    for (uint32_t x : r.flags) records.push_back(x);
-    for (const auto& ends : r.other_normal) {
-      for (uint32_t x : ends) records.push_back(x);
+    gpu::layout::TbPnRecord record{};
+    for (int i = 0; i < 3; ++i) {
+      record.perm[i] = r.perm[i];
+      record.position[i] = r.position[i];
+      record.normal[i] = r.normal[i];
+      record.geometry_normal[i] = r.geometry_normal[i];
+      record.flags[i] = r.flags[i];
+      record.other_normal[i][0] = r.other_normal[i][0];
+      record.other_normal[i][1] = r.other_normal[i][1];
+      record.edge_scale[i] = float(r.edge_scale[i]);
     }
-    for (double s : r.edge_scale) records.push_back(std::bit_cast<uint32_t>(float(s)));
+    gpu::layout::appendWords(records, record);
   }
-  return {vec4s(mesh.positions), vec4s(build.normals), records};
+  constexpr uint32_t first = TB_BINDING_FIRST_TECHNIQUE;  // buffers[b - first] is binding b's
+  std::vector<std::vector<uint32_t>> buffers(TB_PN_BINDING_RECORDS - first + 1);
+  buffers[TB_PN_BINDING_POSITIONS - first] = vec4s(mesh.positions);
+  buffers[TB_PN_BINDING_NORMALS - first] = vec4s(build.normals);
+  buffers[TB_PN_BINDING_RECORDS - first] = std::move(records);
+  return buffers;
 }
 
 }  // namespace tb::pn_triangles

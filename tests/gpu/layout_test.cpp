@@ -13,9 +13,11 @@
 
 #include "shaders/common/layout/capture_layout.h"
 #include "shaders/common/layout/cull_layout.h"
+#include "shaders/common/layout/displace_layout.h"
 #include "shaders/common/layout/factor_layout.h"
 #include "shaders/common/layout/levels_layout.h"
 #include "shaders/embedded_shaders.h"
+#include "shaders/mass_spring/mass_spring_layout.h"
 
 namespace tb::gpu::layout {
 namespace {
@@ -244,6 +246,42 @@ TEST(LayoutSelfTest, HarnessBlocksMatchTheirSpirv) {
   CppBlock levels_block = patchLevels();
   EXPECT_EQ(joined(compare(tcs, levels_block)), "");
   EXPECT_EQ(joined(compare(embeddedShader("gpu/test_bilinear.tese"), capture())), "");
+}
+
+// The mass-spring passes' records, each read by its own pass.
+TEST(LayoutSelfTest, MassSpringRecordsMatchTheirSpirv) {
+  using namespace mass_spring;
+  const CppBlock spring{"Spring",
+                        sizeof(Spring),
+                        {TB_MEMBER(Spring, a), TB_MEMBER(Spring, b), TB_MEMBER(Spring, rest),
+                         TB_MEMBER(Spring, weight)}};
+  EXPECT_EQ(joined(compare(embeddedShader("mass_spring/gs_colour.comp"), spring)), "");
+  EXPECT_EQ(joined(compare(embeddedShader("mass_spring/gs_colour_step.comp"), spring)), "");
+  const CppBlock end{
+      "End",
+      sizeof(End),
+      {TB_MEMBER(End, other), TB_MEMBER(End, rest), TB_MEMBER(End, weight), TB_MEMBER(End, pad)}};
+  EXPECT_EQ(joined(compare(embeddedShader("mass_spring/jacobi.comp"), end)), "");
+  using B = mass_spring::Binding;
+  const CppBlock binding{
+      "Binding",
+      sizeof(B),
+      {TB_MEMBER(B, v0), TB_MEMBER(B, v1), TB_MEMBER(B, v2), TB_MEMBER(B, w0), TB_MEMBER(B, w1),
+       TB_MEMBER(B, w2), TB_MEMBER(B, volume), TB_MEMBER(B, pad)}};
+  EXPECT_EQ(joined(compare(embeddedShader("mass_spring/render.comp"), binding)), "");
+  const CppBlock blast{"Blast",
+                       sizeof(Blast),
+                       {TB_MEMBER(Blast, centre), TB_MEMBER(Blast, radius), TB_MEMBER(Blast, speed),
+                        TB_MEMBER(Blast, step), TB_MEMBER(Blast, pad)}};
+  EXPECT_EQ(joined(compare(embeddedShader("mass_spring/verlet.comp"), blast)), "");
+}
+
+// The word-indexed blocks: their one runtime array and their named binding.
+TEST(LayoutSelfTest, WordBlocksAreBoundByName) {
+  const CppBlock displace{"TbDisplacePatches", 0, {{"words", 0, 4}}, kBindingDisplacementPatches};
+  EXPECT_EQ(joined(compare(embeddedShader("gpu/test_bilinear.tese#displaced"), displace)), "");
+  const CppBlock records{"Patches", 0, {{"patch_words", 0, 4}}, kBindingTessPatchRecords};
+  EXPECT_EQ(joined(compare(embeddedShader("gpu/tessellate.comp"), records)), "");
 }
 
 // The control: one field added on the GLSL side only shifts the members after it.
