@@ -303,71 +303,17 @@ std::vector<results::MetricSpec> allSpecs() {
 // Notes true of every adaptivity record: the method, once under the measure.
 std::vector<std::string> adaptivityNotes() {
   return {
-      "summary rows (summary = max_error_1px; the default suite summarises sphere_diameter and "
-      "error_bound): for each policy, the coarsest target whose "
-      "tessellation error stays within 1 px on every frame of the path (bisection on a log "
-      "scale, 7 steps; 5 in the default suite), its mean triangles per frame, against the "
-      "lowest uniform level (integer, binary search) that does the same; triangle_ratio_vs_uniform "
-      "= the two "
-      "triangle counts' ratio (0.25: a quarter of uniform's triangles); policy_target is "
-      "in the policy's unit (distance: level at one bounding-box diagonal; sphere_diameter: "
-      "pixels per edge; lp2_edge: C; error_bound: the pixel error itself, not searched)",
-      "the ideal (ideal_triangles_per_frame, triangle_ratio_vs_ideal = the policy's triangles "
-      "over the ideal's): per frame, every patch's lowest integer level (1..64) whose own "
-      "tessellation error stays within 1 px (bisection on all patches at once, the measure's "
-      "own error function), each shared edge at the larger need of its two patches so the "
-      "assignment is crack-free; a frame where that misses the target (transition rings) or "
-      "needs more triangles than the best uniform level takes the uniform level "
-      "(ideal_uniform_frames), one such assignment, so the ideal is within the target and "
-      "never above uniform",
-      "error_bound (harness/lod/error_bound.h, factor_policy.h): each edge the least level "
-      "of a family that stitches narrowly to a common inside level (integer 1, 2, 3, 5, 9, "
-      "17, 33, 64; fractional_odd 1, 3, 5, 9, 17, 33, 63; else powers of two) keeping its "
-      "record (its curve's and both sides' second-derivative bounds) within eps; the inside "
-      "the least level whose every triangle, transition rings included, is within the "
-      "patch's bound; eps = target px x the hull's nearest clip w / (f_px x k), k the "
-      "projection's largest stretch in the view; frames_beyond_top_level: frames where a "
-      "patch's bound is over even at the top level (only there may it miss the target); "
-      "controls: error_bound_loose doubles eps, error_bound_dense dense edge levels",
-      "policies (shaders/common/tess_factors.glsl, run in every technique's own TCS; CPU "
-      "twin harness/lod/factor_policy.h): distance = target x diagonal / |eye - edge "
-      "midpoint| (the SubD11 sample's choice); sphere_diameter = |d P11 / w| x H / (2 x "
-      "target px) (Dudash, \"Dynamic Hardware Tessellation Basics\", NVIDIA 2012); lp2_edge "
-      "= max(L R C / D0, L R C / D1) with its silhouette and roundness reductions (CAPCOM, "
-      "\"Lost Planet 2: DirectX 11 Features\"); inner levels from the edges with the D3D11 "
-      "helpers (average); *_order_dependent: the edge's corners in patch order, not "
-      "crack-safe on purpose",
-      "counts: patches, triangles and domain points from the CPU tessellator under the "
-      "twin's levels; gpu_*: lavapipe's pipeline statistics (TCS patches, TES invocations) "
-      "and VK_EXT_primitives_generated_query (triangles) with the TCS computing its own "
-      "levels; gpu_counts_differ = 1 when any of them differs from the CPU tessellator's",
-      "compute_*: the compute path (where it runs: --suite full, and the default suite on "
-      "catmark_xord_interior and loop_xord_interior): the frame's policy in compute, through "
-      "the TCS's own includes (core/gpu/compute_levels.h), its levels against the TCS's "
-      "bitwise and the compute tessellator's counts against the CPU tessellator's",
-      "twin_level_mismatches: patches whose TCS-written levels differ bitwise from the "
-      "twin's; factor_mismatches_*: shared edges whose two patches got bitwise-different "
-      "outer factors (cpu: twin levels, gpu: the TCS's levels); crack_*: the crack "
-      "measure's shared-point comparison under the frame's per-edge levels (cpu: float in "
-      "shader order; gpu: lavapipe capture of the technique's TES under the TCS's levels)",
-      "screen space (pixels of the path's viewport): edge_px_*: on-screen length of every "
-      "tessellated triangle edge with an end in the viewport, nearest-rank percentiles; "
-      "edge_fraction_in_band: the share within [0.5, 2] x the view's target pixels per "
-      "edge; tess_error_*: the piecewise-linear tessellation against the technique's own "
-      "surface at each triangle's centroid and edge midpoints (the 1 px criterion); "
-      "reference_error_*: the technique's surface against the reference limit at the same "
-      "parameter (approximation error, reported apart); pop_max_px: the largest movement of "
-      "the tessellated surface at fixed surface points since the previous frame due to the "
-      "factor change alone (both tessellations projected with this frame's camera); "
-      "visibility is the view frustum (no occlusion)",
-      "default suite: sphere_diameter, distance and lp2_edge at fractional_odd on the default "
-      "path, summaries of sphere_diameter and error_bound; --suite full: every policy (uniform, "
-      "the lp2_edge reductions, "
-      "error_bound, the order-dependent, loose and dense controls) at integer, pow2, "
-      "fractional_odd "
-      "and fractional_even, and summaries at integer and fractional_odd; lavapipe's host time per "
-      "frame is a timing "
-      "and stays out of results.json"};
+      "per frame of a camera path, each factor policy's levels (computed in the technique's own "
+      "TCS and by its bitwise CPU twin, harness/lod) give the triangles drawn, the factor and "
+      "crack mismatches on shared edges (CPU and lavapipe), on-screen edge lengths, the "
+      "tessellation's screen-space error and popping in pixels; gpu_* and compute_* are the "
+      "device's and the compute path's counts against the CPU tessellator's",
+      "summary rows (summary = max_error_1px): per policy, the coarsest target whose error "
+      "stays within 1 px on every frame, its mean triangles per frame, against the lowest "
+      "uniform level and the per-patch ideal that do the same (controls: the order-dependent, "
+      "loose and dense policies, made to fail)",
+      "how each figure is found (the searches, the ideal, error_bound's bound and its floor, "
+      "which grid each suite runs): docs/derivations/adaptivity.md"};
 }
 
 class AdaptivityMeasure final : public Measure {
