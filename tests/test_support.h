@@ -1,4 +1,5 @@
-// Helpers shared by the test suites: bundled asset paths and scratch files.
+// Helpers shared by the test suites: bundled assets and their meshes, the registered
+// techniques, scratch files.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,16 +9,51 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "core/mesh/bounds.h"
+#include "core/mesh/obj_loader.h"
+#include "techniques/registry.h"
 #include "tests/test_paths.h"
 
 namespace tb::testing {
 
 inline std::string assetPath(const std::string& name) {
   return std::string(TB_SOURCE_DIR) + "/assets/" + name;
+}
+
+inline mesh::Mesh loadAsset(const std::string& name) { return mesh::loadObjFile(assetPath(name)); }
+
+// The diagonal of the mesh's bounding box (mesh::boundsOf), world units.
+inline double diagonalOf(const mesh::Mesh& mesh) { return mesh::diagonalOf(mesh::boundsOf(mesh)); }
+
+// The registered surface techniques, sorted by id.
+inline std::vector<const techniques::Technique*> surfaceTechniques() {
+  std::vector<const techniques::Technique*> result;
+  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
+    if (t->info().family == techniques::TechniqueFamily::kSurface) result.push_back(t);
+  }
+  return result;
+}
+
+// The registered technique `id`; throws std::logic_error when there is none.
+inline const techniques::Technique& technique(const std::string& id) {
+  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(id);
+  if (t == nullptr) throw std::logic_error("no technique " + id);
+  return *t;
+}
+
+// The technique's variant `name`; a test failure and {} when it has none.
+inline techniques::VariantInfo variantOf(const techniques::Technique& technique,
+                                         const std::string& name) {
+  for (const techniques::VariantInfo& v : technique.variants()) {
+    if (v.name == name) return v;
+  }
+  ADD_FAILURE() << technique.info().id << " has no variant " << name;
+  return {};
 }
 
 // The bundled meshes (assets/opensubdiv, assets/tessbench), relative to assets/, sorted.

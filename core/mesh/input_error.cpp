@@ -1,9 +1,9 @@
 #include "core/mesh/input_error.h"
 
 namespace tb::mesh {
-namespace {
-std::string composeMessage(const std::string& file, const std::string& element,
-                           const std::string& rule) {
+
+std::string inputErrorMessage(const std::string& file, const std::string& element,
+                              const std::string& rule) {
   std::string message = file;
   for (const std::string* part : {&element, &rule}) {
     if (part->empty()) continue;
@@ -12,10 +12,9 @@ std::string composeMessage(const std::string& file, const std::string& element,
   }
   return message;
 }
-}  // namespace
 
 InputError::InputError(std::string file, std::string element, std::string rule)
-    : std::runtime_error(composeMessage(file, element, rule)),
+    : std::runtime_error(inputErrorMessage(file, element, rule)),
       file_(std::move(file)),
       element_(std::move(element)),
       rule_(std::move(rule)) {}

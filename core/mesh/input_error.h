@@ -8,6 +8,11 @@
 
 namespace tb::mesh {
 
+// "file: element: rule", leaving out the empty parts: InputError's message (and the CLI's
+// usage errors', harness/cli/usage_error.h).
+std::string inputErrorMessage(const std::string& file, const std::string& element,
+                              const std::string& rule);
+
 class InputError : public std::runtime_error {
  public:
   // file: path or asset name; element: "line 12", "face 17", "vertex 3", ...;

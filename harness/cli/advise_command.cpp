@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "core/mesh/input_error.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/complete_declarations.h"
 #include "harness/measures/measure.h"
 #include "harness/report/advice.h"
@@ -30,7 +31,7 @@ std::optional<double> parseBound(const std::string& option, const std::string& t
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
-    throw mesh::InputError(option, text, "a bound is a finite number >= 0");
+    throw UsageError(option, text, "a bound is a finite number >= 0");
   }
   return value;
 }
@@ -44,7 +45,7 @@ std::vector<const techniques::Technique*> techniquesNamed(const std::vector<std:
       for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
         known += (known.empty() ? "" : ", ") + t->info().id;
       }
-      throw mesh::InputError("--technique", id, "unknown technique (known: " + known + ")");
+      throw UsageError("--technique", id, "unknown technique (known: " + known + ")");
     }
     selected.push_back(technique);
   }
@@ -216,7 +217,7 @@ int runAdvise(const AdviseArgs& args) {
   constraints.max_memory_ratio = parseBound("--max-memory-ratio", args.max_memory_ratio);
   constraints.max_instructions = parseBound("--max-instructions", args.max_instructions);
   if (args.allow_cracks && args.watertight_flag) {
-    throw mesh::InputError("advise", "--allow-cracks", "contradicts --watertight; give one");
+    throw UsageError("advise", "--allow-cracks", "contradicts --watertight; give one");
   }
   constraints.watertight = !args.allow_cracks;
   constraints.techniques = args.techniques;

@@ -8,11 +8,11 @@
 #include <memory>
 #include <optional>
 
-#include "core/mesh/input_error.h"
 #include "core/mesh/obj_loader.h"
 #include "harness/bake/analytic_target.h"
 #include "harness/bake/bake_sidecar.h"
 #include "harness/bake/baker.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/error/error.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
@@ -30,7 +30,7 @@ const techniques::Technique& techniqueNamed(const std::string& id) {
     if (t->info().family != techniques::TechniqueFamily::kSurface) continue;
     known += (known.empty() ? "" : ", ") + t->info().id;
   }
-  throw mesh::InputError("--technique", id, "unknown surface technique (known: " + known + ")");
+  throw UsageError("--technique", id, "unknown surface technique (known: " + known + ")");
 }
 
 techniques::VariantInfo variantNamed(const techniques::Technique& technique,
@@ -42,27 +42,27 @@ techniques::VariantInfo variantNamed(const techniques::Technique& technique,
     if (variant.name == name) return variant;
     known += (known.empty() ? "" : ", ") + variant.name;
   }
-  throw mesh::InputError("--variant", name,
-                         "unknown variant of " + technique.info().id + " (known: " + known + ")");
+  throw UsageError("--variant", name,
+                   "unknown variant of " + technique.info().id + " (known: " + known + ")");
 }
 
 void refuseExisting(const std::string& option, const std::string& path) {
   if (std::filesystem::exists(path)) {
-    throw mesh::InputError(option, path, "the file exists already (never overwritten)");
+    throw UsageError(option, path, "the file exists already (never overwritten)");
   }
 }
 
 // Every check that needs no computation, so bad input fails before any work.
 bake::BakeSettings checkedSettings(const BakeArgs& args) {
   if (args.analytic == !args.target.empty()) {
-    throw mesh::InputError("--target/--analytic", "",
-                           "give exactly one of --target MESH.obj or --analytic");
+    throw UsageError("--target/--analytic", "",
+                     "give exactly one of --target MESH.obj or --analytic");
   }
   if (!args.write_target.empty() && !args.analytic) {
-    throw mesh::InputError("--write-target", args.write_target, "needs --analytic");
+    throw UsageError("--write-target", args.write_target, "needs --analytic");
   }
   if (args.layout == "uv") {
-    throw mesh::InputError("--layout", "uv", "the uv layout is not built yet (use tiles)");
+    throw UsageError("--layout", "uv", "the uv layout is not built yet (use tiles)");
   }
   refuseExisting("--out", args.out);
   refuseExisting("--out", bake::sidecarPath(args.out));

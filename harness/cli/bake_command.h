@@ -27,7 +27,7 @@ struct BakeArgs {
 
 CLI::App* addBakeCommand(CLI::App& app, BakeArgs& args);
 
-// Exit 0, or throws InputError / UnsupportedInput (exit 2, nothing written) on bad input.
+// Exit 0, or throws UsageError / InputError / UnsupportedInput (exit 2, nothing written).
 int runBake(const BakeArgs& args);
 
 extern const Subcommand kBakeSubcommand;

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/mesh/input_error.h"
+#include "harness/cli/usage_error.h"
 #include "harness/results/compare.h"
 #include "harness/results/compare_json.h"
 #include "harness/results/device_identity.h"
@@ -32,7 +33,7 @@ double parseThreshold(const std::string& option, const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < 0) {
-    throw mesh::InputError(option, text, "a threshold is a finite number >= 0");
+    throw UsageError(option, text, "a threshold is a finite number >= 0");
   }
   return value;
 }
@@ -100,7 +101,7 @@ int printComparison(const std::string& base_name, const std::string& current_nam
   const std::vector<std::string> unmatched =
       results::unmatchedFilterValues(filter, {&base, &current});
   if (!unmatched.empty()) {
-    throw mesh::InputError(unmatched.front(), "", "selects no record of either run");
+    throw UsageError(unmatched.front(), "", "selects no record of either run");
   }
   results::filterRun(filter, &base);
   results::filterRun(filter, &current);
@@ -130,14 +131,14 @@ results::CompareOptions compareOptions(const CompareArgs& args) {
   for (const std::string& item : args.metric_thresholds) {
     const size_t equals = item.find('=');
     if (equals == std::string::npos || equals == 0) {
-      throw mesh::InputError("--metric-threshold", item, "expected NAME=VALUE");
+      throw UsageError("--metric-threshold", item, "expected NAME=VALUE");
     }
     options.metric_thresholds[item.substr(0, equals)] =
         parseThreshold("--metric-threshold", item.substr(equals + 1));
   }
   options.alpha = parseThreshold("--alpha", args.alpha);
   if (!(options.alpha > 0 && options.alpha < 1)) {
-    throw mesh::InputError("--alpha", args.alpha, "a significance level is in (0, 1)");
+    throw UsageError("--alpha", args.alpha, "a significance level is in (0, 1)");
   }
   options.time_threshold = parseThreshold("--time-threshold", args.time_threshold);
   options.timings = !args.no_timings;

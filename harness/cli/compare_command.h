@@ -29,7 +29,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
 // The options `compare` and `history compare` share (all but the two run folders).
 void addCompareOptions(CLI::App* command, CompareArgs& args);
 
-// compare's options from its arguments; throws InputError for a malformed value.
+// compare's options from its arguments; throws UsageError for a malformed value.
 results::CompareOptions compareOptions(const CompareArgs& args);
 
 // Filters both runs by args' --technique/--asset/--measure (a value that selects nothing in

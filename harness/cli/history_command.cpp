@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/mesh/input_error.h"
 #include "harness/cli/html_assets.h"
+#include "harness/cli/usage_error.h"
 #include "harness/history/history_render.h"
 #include "harness/history/history_series.h"
 #include "harness/history/history_store.h"
@@ -90,7 +90,7 @@ int runReport(const HistoryArgs& args, const results::CompareOptions& compare) {
   history::ReportOptions options;
   options.assets = args.assets;
   if (args.aggregate != "median" && args.aggregate != "worst")
-    throw mesh::InputError("--aggregate", args.aggregate, "expected median or worst");
+    throw UsageError("--aggregate", args.aggregate, "expected median or worst");
   options.aggregate =
       args.aggregate == "median" ? history::Aggregate::kMedian : history::Aggregate::kWorst;
   options.compare = compare;

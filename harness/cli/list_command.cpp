@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/gpu/context.h"
-#include "core/mesh/input_error.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/measure.h"
 #include "harness/results/results_json.h"
 #include "harness/suite/asset_catalog.h"
@@ -109,8 +109,8 @@ int runList(const ListArgs& args) {
   } else if (args.what == "devices") {
     listDevices(args.json, &items);
   } else {
-    throw mesh::InputError("list", args.what,
-                           "expected techniques, assets, scenarios, measures or devices");
+    throw UsageError("list", args.what,
+                     "expected techniques, assets, scenarios, measures or devices");
   }
   if (args.json) fmt::print("{}\n", items.dump(2));
   return 0;

@@ -6,9 +6,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/mesh/input_error.h"
 #include "harness/cli/format_option.h"
 #include "harness/cli/html_assets.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/complete_declarations.h"
 #include "harness/report/markdown.h"
 #include "harness/results/results_json.h"
@@ -38,8 +38,7 @@ int runReport(const ReportArgs& args) {
     if (assets.chartjs_source.empty()) throw std::runtime_error(assets.chartjs_missing_reason);
     fmt::print("{}", report::renderHtml(results, assets));
   } else {
-    throw mesh::InputError("--format", args.format,
-                           "unknown report format (known: markdown, html)");
+    throw UsageError("--format", args.format, "unknown report format (known: markdown, html)");
   }
   return 0;
 }

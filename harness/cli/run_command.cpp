@@ -15,6 +15,7 @@
 #include "harness/cli/html_assets.h"
 #include "harness/cli/progress_estimate.h"
 #include "harness/cli/run_context.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/measure.h"
 #include "harness/pictures/run_pictures.h"
 #include "harness/report/csv_tables.h"
@@ -46,8 +47,7 @@ std::vector<const techniques::Technique*> selectTechniques(const std::vector<std
   for (const std::string& id : ids) {
     const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
     if (technique == nullptr) {
-      throw mesh::InputError("--technique", id,
-                             "unknown technique (known: " + knownIds(known) + ")");
+      throw UsageError("--technique", id, "unknown technique (known: " + knownIds(known) + ")");
     }
     selected.push_back(technique);
   }
@@ -62,7 +62,7 @@ std::vector<const measures::Measure*> selectMeasures(const std::vector<std::stri
   for (const std::string& id : ids) {
     const measures::Measure* measure = measures::MeasureRegistry::instance().find(id);
     if (measure == nullptr) {
-      throw mesh::InputError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
+      throw UsageError("--measure", id, "unknown measure (known: " + knownIds(known) + ")");
     }
     selected.push_back(measure);
   }
@@ -72,7 +72,7 @@ std::vector<const measures::Measure*> selectMeasures(const std::vector<std::stri
 measures::SuiteMode parseSuiteMode(const std::string& text) {
   if (text == toString(measures::SuiteMode::kDefault)) return measures::SuiteMode::kDefault;
   if (text == toString(measures::SuiteMode::kFull)) return measures::SuiteMode::kFull;
-  throw mesh::InputError("--suite", text, "unknown suite (known: default, full)");
+  throw UsageError("--suite", text, "unknown suite (known: default, full)");
 }
 
 // Reads every --camera file before any work, so a bad one stops the run with nothing
@@ -126,8 +126,8 @@ suite::SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>*
                                                : std::move(ref));
   }
   if (args.refine > 0 && args.assets.empty()) {
-    throw mesh::InputError("--refine", std::to_string(args.refine),
-                           "refines the assets named by --asset; name at least one");
+    throw UsageError("--refine", std::to_string(args.refine),
+                     "refines the assets named by --asset; name at least one");
   }
   for (const std::string& map : args.displacements) {
     selection.displacements.push_back(suite::loadDisplacementFile(map));

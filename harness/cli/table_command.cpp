@@ -8,6 +8,7 @@
 
 #include "core/mesh/input_error.h"
 #include "harness/cli/format_option.h"
+#include "harness/cli/usage_error.h"
 #include "harness/measures/complete_declarations.h"
 #include "harness/report/summary.h"
 #include "harness/report/table.h"
@@ -59,11 +60,10 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
 int runTable(const TableArgs& args) {
   const std::optional<report::TableFormat> format = report::parseTableFormat(args.format);
   if (!format) {
-    throw mesh::InputError("--format", args.format,
-                           "unknown table format (known: markdown, csv, latex)");
+    throw UsageError("--format", args.format, "unknown table format (known: markdown, csv, latex)");
   }
   if (args.measure.empty() && !args.published) {
-    throw mesh::InputError("--measure", "", "a measure is required (or --published)");
+    throw UsageError("--measure", "", "a measure is required (or --published)");
   }
   results::requireFinishedRunFolder(args.run_dir);
   results::Results results = results::readResultsFile(args.run_dir + "/results.json");
@@ -78,9 +78,8 @@ int runTable(const TableArgs& args) {
     std::vector<std::string> measures;
     if (!args.measure.empty()) {
       if (!report::hasPublishedTable(results, args.measure)) {
-        throw mesh::InputError(
-            "--measure", args.measure,
-            "no published table for this measure (known: memory, published_figures)");
+        throw UsageError("--measure", args.measure,
+                         "no published table for this measure (known: memory, published_figures)");
       }
       measures.push_back(args.measure);
     } else {
@@ -104,9 +103,8 @@ int runTable(const TableArgs& args) {
     if (declaration != nullptr && declaration->find(metric) == nullptr) {
       std::vector<std::string> known;
       for (const results::MetricSpec& spec : declaration->metrics) known.push_back(spec.name);
-      throw mesh::InputError(
-          "--metric", metric,
-          "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
+      throw UsageError("--metric", metric,
+                       "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
     }
   }
   report::SummaryTableOptions options;

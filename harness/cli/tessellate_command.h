@@ -6,18 +6,13 @@
 #include <string>
 
 #include "core/tess/tessellator.h"
+#include "harness/cli/usage_error.h"
 
 namespace CLI {
 class App;
 }  // namespace CLI
 
 namespace tb::cli {
-
-// Bad command-line input; what() is one line naming the option and the rule.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct TessellateArgs {
   std::string domain;   // tri | quad | isoline

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -168,6 +169,7 @@ class AccPatches final : public techniques::SurfacePatches {
 
   techniques::SurfacePoint evaluate(size_t patch,
                                     const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
     const AccControlPoints<double>& p = points_d_[patch];
     const double u = coord[0], v = coord[1];
     const mesh::Vec3d tu = techniques::evaluateTangentU(p.tu, u, v),
@@ -186,6 +188,7 @@ class AccPatches final : public techniques::SurfacePatches {
 
   void evaluateBatch(size_t patch, const techniques::BatchPattern& pattern,
                      techniques::BatchPoints& out) const override {
+    assert(patch < patchCount());
     const auto* acc = dynamic_cast<const AccBatchPattern*>(&pattern);
     if (acc == nullptr) return evaluateBatchPointByPoint(patch, pattern, out);
     acc->evaluate(points_d_[patch], out);
@@ -193,6 +196,7 @@ class AccPatches final : public techniques::SurfacePatches {
 
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
+    assert(patch < patchCount());
     const AccControlPoints<float>& p = points_f_[patch];
     const float u = coord[0], v = coord[1];
     const mesh::Vec3f tu = techniques::evaluateTangentU(p.tu, u, v),

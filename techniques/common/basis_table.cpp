@@ -261,7 +261,7 @@ const char* toString(BatchKernel kernel) {
 
 void combineControlPoints(const BasisTable& basis, const mesh::Vec3d* control,
                           std::array<AlignedDoubles, 3>& out, BatchKernel kernel) {
-  assert(batchKernelSupported(kernel));
+  assert(batchKernelSupported(kernel) && control != nullptr);
   for (const AlignedDoubles& axis : out) {
     assert(axis.size() >= basis.blocks() * kBatchLanes);
     (void)axis;
@@ -286,7 +286,7 @@ void combineControlPoints(const BasisTable& basis, const mesh::Vec3d* control,
 void normalsFromTangents(const std::array<AlignedDoubles, 3>& du,
                          const std::array<AlignedDoubles, 3>& dv,
                          std::array<AlignedDoubles, 3>& normal, size_t count, BatchKernel kernel) {
-  assert(batchKernelSupported(kernel));
+  assert(batchKernelSupported(kernel) && count <= normal[0].size());
   const size_t blocks = batchBlocks(count);
   for (const std::array<AlignedDoubles, 3>* field : {&du, &dv, &std::as_const(normal)}) {
     for (const AlignedDoubles& axis : *field) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <utility>
 
 #include "shaders/gregory_acc/gregory_layout.h"
@@ -79,6 +80,7 @@ class GregoryPatches final : public techniques::SurfacePatches {
 
   techniques::SurfacePoint evaluate(size_t patch,
                                     const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
     const GregoryPoint<double> point = evaluatePatch(points_d_[patch], patch, coord);
     return {point.position, point.normal};
   }
@@ -94,6 +96,7 @@ class GregoryPatches final : public techniques::SurfacePatches {
   // rule is this one's; anything else goes point by point.
   void evaluateBatch(size_t patch, const techniques::BatchPattern& pattern,
                      techniques::BatchPoints& out) const override {
+    assert(patch < patchCount());
     const auto* gregory = dynamic_cast<const GregoryBatchPattern*>(&pattern);
     if (gregory == nullptr || gregory->symmetricEdges() != symmetric_edges_ ||
         gregory->domain() != patchDomain(patch)) {
@@ -104,6 +107,7 @@ class GregoryPatches final : public techniques::SurfacePatches {
 
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
+    assert(patch < patchCount());
     const GregoryPoint<float> point = evaluatePatch(points_f_[patch], patch, coord);
     return {point.position, point.normal};
   }

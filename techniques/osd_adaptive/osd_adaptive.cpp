@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 
@@ -158,6 +159,7 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
 
   techniques::SurfacePoint evaluate(size_t patch,
                                     const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
     const Far::PatchTable::PatchHandle& handle = find(patch, coord[0], coord[1]);
     double w[kMaxPatchPoints], wu[kMaxPatchPoints], wv[kMaxPatchPoints];
     table_->EvaluateBasis(handle, coord[0], coord[1], w, wu, wv);
@@ -176,6 +178,7 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
   // float, and the sums in control-point order from zero.
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
+    assert(patch < patchCount());
     const float u = std::clamp(coord[0], 0.0f, 1.0f), v = std::clamp(coord[1], 0.0f, 1.0f);
     const SubPatchWords& sub = findSubPatch(patch, u, v);
     const mesh::Vec2T<float> local = subPatchLocal(sub.packed, u, v);

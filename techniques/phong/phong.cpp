@@ -1,6 +1,7 @@
 #include "techniques/phong/phong.h"
 
 #include <bit>
+#include <cassert>
 #include <utility>
 
 #include "core/mesh/render_vertices.h"
@@ -38,6 +39,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
 
   techniques::SurfacePoint evaluate(size_t patch,
                                     const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
     if (edge_) {
       const auto& perm = edge_build_.records[patch].perm;
       const PhongPoint<double> point =
@@ -52,6 +54,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
 
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
+    assert(patch < patchCount());
     if (edge_) {
       const auto& perm = edge_build_.records[patch].perm;
       const PhongPoint<float> point = evaluatePhongEdge(

@@ -1,5 +1,7 @@
 #include "techniques/pn_triangles/pn_triangles.h"
 
+#include <cassert>
+
 #include "core/mesh/render_vertices.h"
 #include "core/mesh/triangulate.h"
 #include "techniques/common/curvature_bounds.h"
@@ -28,6 +30,7 @@ class PnPatches final : public techniques::TrianglePatchesBase {
 
   techniques::SurfacePoint evaluate(size_t patch,
                                     const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
     const PnControl<double>& control = controls_.at(patch);
     const auto& perm = build_.records[patch].perm;
     const PnPoint<double> point =
@@ -37,6 +40,7 @@ class PnPatches final : public techniques::TrianglePatchesBase {
 
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
+    assert(patch < patchCount());
     const PnControl<float> control =
         computeControl(recordInputFloat(tri_.mesh, build_, options_, patch));
     const auto& perm = build_.records[patch].perm;

@@ -13,6 +13,7 @@
 #include "harness/suite/camera_path.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/measures/bundled_surfaces.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -29,16 +30,7 @@ std::ostream& operator<<(std::ostream& out, const Case& c) {
 }
 
 techniques::BuiltSurface build(const Case& c) {
-  const techniques::Technique* technique =
-      techniques::TechniqueRegistry::instance().find(c.technique);
-  if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
-  for (const techniques::VariantInfo& variant : technique->variants()) {
-    if (variant.name == c.variant) {
-      return techniques::buildSurface(*technique, mesh::loadObjFile(testing::assetPath(c.asset)),
-                                      variant);
-    }
-  }
-  throw std::runtime_error(std::string("no variant ") + c.variant);
+  return testing::builtSurface(c.technique, c.variant, c.asset);
 }
 
 std::vector<view::View> pathViews(const char* name, const techniques::SurfacePatches& patches,

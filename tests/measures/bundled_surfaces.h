@@ -8,6 +8,7 @@
 #include "core/mesh/obj_loader.h"
 #include "harness/suite/asset_catalog.h"
 #include "techniques/registry.h"
+#include "tests/test_support.h"
 
 namespace tb::testing {
 
@@ -18,6 +19,14 @@ inline techniques::VariantInfo variantNamed(const techniques::Technique& techniq
     if (v.name == name) return v;
   }
   throw std::runtime_error(technique.info().id + " has no variant " + name);
+}
+
+// Technique `id`'s variant `variant` built on the bundled asset `asset` (a path under
+// assets/); throws when the technique or the variant is not there.
+inline techniques::BuiltSurface builtSurface(const std::string& id, const std::string& variant,
+                                             const std::string& asset) {
+  const techniques::Technique& t = technique(id);
+  return techniques::buildSurface(t, loadAsset(asset), variantNamed(t, variant));
 }
 
 // Calls fn(asset name, patches) for every bundled asset that technique `id`'s variant

@@ -20,6 +20,7 @@
 #include "harness/measures/measure.h"
 #include "techniques/registry.h"
 #include "tests/gpu/gpu_test_support.h"
+#include "tests/measures/bundled_surfaces.h"
 #include "tests/test_support.h"
 
 namespace tb {
@@ -34,16 +35,7 @@ struct Case {
 };
 
 techniques::BuiltSurface build(const Case& c) {
-  const techniques::Technique* technique =
-      techniques::TechniqueRegistry::instance().find(c.technique);
-  if (technique == nullptr) throw std::runtime_error(std::string("no technique ") + c.technique);
-  for (const techniques::VariantInfo& v : technique->variants()) {
-    if (v.name == c.variant) {
-      return techniques::buildSurface(*technique, mesh::loadObjFile(testing::assetPath(c.asset)),
-                                      v);
-    }
-  }
-  throw std::runtime_error(std::string("no variant ") + c.variant);
+  return testing::builtSurface(c.technique, c.variant, c.asset);
 }
 
 std::string name(const Case& c, tess::Spacing spacing) {

@@ -19,13 +19,7 @@
 namespace tb {
 namespace {
 
-techniques::VariantInfo variantOf(const techniques::Technique& technique, const std::string& name) {
-  for (const techniques::VariantInfo& v : technique.variants()) {
-    if (v.name == name) return v;
-  }
-  ADD_FAILURE() << technique.info().id << " has no variant " << name;
-  return {};
-}
+using testing::variantOf;
 
 measures::CrackFigures measure(const std::string& technique_id, const std::string& variant,
                                const std::string& asset, tess::Spacing spacing, float level,

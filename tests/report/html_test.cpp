@@ -4,17 +4,15 @@
 
 #include <regex>
 
+#include "tests/cli/cli_support.h"
+
 namespace tb {
 namespace {
 
 // A stand-in for Chart.js: these tests read the page's text, never run it.
 constexpr const char* kChartStub = "window.Chart = function () {};";
 
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t count = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
-  return count;
-}
+using testing::occurrences;
 
 results::Results memoryRun(const std::string& technique) {
   results::Results results;

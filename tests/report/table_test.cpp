@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "harness/report/published_figures.h"
+#include "tests/cli/cli_support.h"
 #include "tests/report/results_builders.h"
 
 namespace tb {
@@ -118,11 +119,7 @@ size_t unescapedAmpersands(const std::string& line) {
   return n;
 }
 
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using testing::occurrences;
 
 void expectLatexStructure(const std::string& latex, size_t columns) {
   EXPECT_EQ(occurrences(latex, "\\begin{tabular}"), 1u) << latex;

@@ -23,7 +23,7 @@
 namespace tb::acc {
 namespace {
 
-double diagonalOf(const mesh::Mesh& mesh) { return tb::mesh::diagonalOf(mesh::boundsOf(mesh)); }
+using tb::testing::diagonalOf;
 
 mesh::Mesh bundled(const std::string& name) {
   return mesh::loadObjFile(tb::testing::assetPath("opensubdiv") + "/" + name + ".obj");

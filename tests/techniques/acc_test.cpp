@@ -25,14 +25,7 @@ namespace {
 using testing::supportedAssets;
 using testing::variantNamed;
 
-double diagonal(const mesh::Mesh& mesh) {
-  mesh::Vec3d lo = mesh.positions[0], hi = lo;
-  for (const mesh::Vec3d& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return length(hi - lo);
-}
+using tb::testing::diagonalOf;
 
 std::vector<tess::DomainPoint> domainPoints() {
   tess::Levels levels;
@@ -59,7 +52,7 @@ TEST(Acc, RegularFacesEqualTheBfrLimit) {
     // Over the control mesh: a creased input is refined there (techniques/common/
     // crease_refinement.h), with the same limit surface.
     const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
-    const double diag = diagonal(asset.mesh);
+    const double diag = diagonalOf(asset.mesh);
     double worst_d = 0, worst_f = 0;
     size_t faces = 0;
     for (size_t f = 0; f < patches->patchCount(); ++f) {
@@ -120,7 +113,7 @@ TEST(Acc, SharedEdgesAreC0InDouble) {
   for (const auto& asset : supportedAssets()) {
     const auto patches =
         techniques::buildSurface(AccTechnique(), asset.mesh, variantNamed("default"));
-    const double diag = diagonal(asset.mesh);
+    const double diag = diagonalOf(asset.mesh);
     std::map<std::pair<uint32_t, uint32_t>, std::pair<size_t, int>> first_side;
     double worst = 0;
     size_t edges = 0;

@@ -33,30 +33,10 @@ const std::vector<std::string> kAssets = {"opensubdiv/catmark_xord_interior.obj"
 constexpr double kPositionTolerance = 1e-12;  // of the bounding-box diagonal
 constexpr double kNormalTolerance = 1e-11;    // unit normals, absolute
 
-mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
-
-double diagonal(const mesh::Mesh& mesh) {
-  mesh::Vec3d lo = mesh.positions[0], hi = lo;
-  for (const mesh::Vec3d& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return length(hi - lo);
-}
-
-std::vector<const techniques::Technique*> surfaceTechniques() {
-  std::vector<const techniques::Technique*> techniques;
-  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
-    if (t->info().family == techniques::TechniqueFamily::kSurface) techniques.push_back(t);
-  }
-  return techniques;
-}
-
-const techniques::Technique& technique(const std::string& id) {
-  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(id);
-  if (t == nullptr) throw std::logic_error("no technique " + id);
-  return *t;
-}
+using testing::diagonalOf;
+using testing::loadAsset;
+using testing::surfaceTechniques;
+using testing::technique;
 
 techniques::VariantInfo variant(const techniques::Technique& t, const std::string& name) {
   for (const techniques::VariantInfo& v : t.variants()) {
@@ -85,7 +65,7 @@ struct Coverage {
 // Every point of every patch of `surface` through evaluateBatch against evaluate().
 void expectBatchEqualsPerPoint(const techniques::SurfacePatches& surface, const std::string& what,
                                Coverage& coverage) {
-  const double tolerance = kPositionTolerance * diagonal(surface.controlMesh());
+  const double tolerance = kPositionTolerance * diagonalOf(surface.controlMesh());
   for (techniques::PatchDomain domain :
        {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
     for (const std::vector<techniques::DomainCoord>& coords : patterns(domain)) {
@@ -126,7 +106,7 @@ TEST(BatchEval, EqualsPerPointEvaluateForEveryTechniqueAndVariant) {
   Coverage coverage;
   for (const techniques::Technique* t : surfaceTechniques()) {
     for (const std::string& name : kAssets) {
-      const mesh::Mesh mesh = load(name);
+      const mesh::Mesh mesh = loadAsset(name);
       if (!t->checkSupport(mesh).empty()) continue;
       for (const techniques::VariantInfo& v : t->variants()) {
         expectBatchEqualsPerPoint(*techniques::buildSurface(*t, mesh, v),
@@ -142,7 +122,7 @@ TEST(BatchEval, EqualsPerPointEvaluateForEveryTechniqueAndVariant) {
 }
 
 TEST(BatchEval, ThePositionAndDerivativeOutputLeavesNormalsOut) {
-  const mesh::Mesh mesh = load("opensubdiv/catmark_xord_interior.obj");
+  const mesh::Mesh mesh = loadAsset("opensubdiv/catmark_xord_interior.obj");
   for (const char* id : {"acc", "gregory_acc"}) {
     const techniques::BuiltSurface surface =
         techniques::buildSurface(technique(id), mesh, technique(id).variants()[0]);
@@ -161,7 +141,7 @@ TEST(BatchEval, ThePositionAndDerivativeOutputLeavesNormalsOut) {
 // A pattern the technique did not make goes point by point; a pattern of the other domain
 // is refused.
 TEST(BatchEval, ForeignPatternsFallBackAndWrongDomainsThrow) {
-  const mesh::Mesh mesh = load("opensubdiv/catmark_pyramid.obj");
+  const mesh::Mesh mesh = loadAsset("opensubdiv/catmark_pyramid.obj");
   const techniques::BuiltSurface surface = techniques::buildSurface(
       technique("gregory_acc"), mesh, technique("gregory_acc").variants()[0]);
   const std::vector<techniques::DomainCoord> coords =
@@ -191,12 +171,12 @@ TEST(BatchEval, DerivativesEqualTheBfrLimitOnRegularFaces) {
   for (const char* id : {"acc", "gregory_acc"}) {
     for (const char* name : {"opensubdiv/catmark_xord_interior.obj",
                              "opensubdiv/catmark_edgecorner.obj", "opensubdiv/catmark_torus.obj"}) {
-      const mesh::Mesh mesh = load(name);
+      const mesh::Mesh mesh = loadAsset(name);
       if (!technique(id).checkSupport(mesh).empty()) continue;
       const techniques::BuiltSurface surface =
           techniques::buildSurface(technique(id), mesh, technique(id).variants()[0]);
       const ref::LimitSurface limit(surface->controlMesh(), osd::Scheme::kCatmullClark);
-      const double tolerance = 1e-12 * diagonal(mesh);
+      const double tolerance = 1e-12 * diagonalOf(mesh);
       const std::vector<techniques::DomainCoord> coords =
           techniques::latticeCoords(techniques::PatchDomain::kQuad, 6);
       const auto pattern = surface->makeBatchPattern(
@@ -236,12 +216,12 @@ TEST(BatchEval, DerivativesAreFiniteDifferencesOfThePosition) {
     for (const char* name :
          {"opensubdiv/catmark_xord_interior.obj", "opensubdiv/catmark_pyramid.obj",
           "opensubdiv/catmark_edgecorner.obj"}) {
-      const mesh::Mesh mesh = load(name);
+      const mesh::Mesh mesh = loadAsset(name);
       const techniques::Technique& t = technique(id);
       if (!t.checkSupport(mesh).empty()) continue;
       const techniques::BuiltSurface surface =
           techniques::buildSurface(t, mesh, variant(t, variant_name));
-      const double tolerance = 1e-7 * diagonal(mesh);
+      const double tolerance = 1e-7 * diagonalOf(mesh);
       for (techniques::PatchDomain domain :
            {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
         std::vector<techniques::DomainCoord>

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
+#include "reference/triangle_mesh_ref.h"
 #include "techniques/registry.h"
 #include "tests/curvature_samples.h"
 #include "tests/test_support.h"
@@ -56,23 +57,8 @@ const std::vector<std::string> kAssets = {"opensubdiv/catmark_cube.obj",
 constexpr double kRelative = 1e-6;
 constexpr double kAbsolute = 1e-7;  // of the hull's box diagonal
 
-mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
-
-std::vector<const techniques::Technique*> surfaceTechniques() {
-  std::vector<const techniques::Technique*> result;
-  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
-    if (t->info().family == techniques::TechniqueFamily::kSurface) result.push_back(t);
-  }
-  return result;
-}
-
-double boxDiagonal(const std::vector<mesh::Vec3d>& points) {
-  mesh::Vec3d lo = points.at(0), hi = lo;
-  for (const mesh::Vec3d& p : points) {
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return length(hi - lo);
-}
+using tb::testing::loadAsset;
+using tb::testing::surfaceTechniques;
 
 std::array<double, 7> boundsOf(const techniques::CurvatureBounds& b) {
   return {b.uu, b.uv, b.vv, b.edge[0], b.edge[1], b.edge[2], b.edge[3]};
@@ -131,7 +117,7 @@ mesh::Vec3d edgePoint(const techniques::SurfacePatches& s, size_t p, int e, doub
 // True when the two patches' curves on their shared edge differ (a crack in the surface
 // itself): compared at t = 0.3 and 0.5, either direction.
 bool curvesDiffer(const techniques::SurfacePatches& s, size_t p, int e, size_t q, int f) {
-  const double size = boxDiagonal(s.curvatureBounds(p)->hull);
+  const double size = ref::boundingBoxDiagonal(s.curvatureBounds(p)->hull);
   const double tolerance = 1e-9 * size;
   const mesh::Vec3d a = edgePoint(s, p, e, 0.3);
   const double apart =
@@ -165,8 +151,8 @@ void checkSharedEdges(const techniques::SurfacePatches& s, const std::string& wh
       if (fresh) continue;
       ++tally.shared_edges;
       // Rounding: of the larger bound, or of the edge's extent where the edge is straight.
-      const double scale = std::max(
-          {std::abs(bound), std::abs(it->second.bound), boxDiagonal(bounds->edge_hull[size_t(e)])});
+      const double scale = std::max({std::abs(bound), std::abs(it->second.bound),
+                                     ref::boundingBoxDiagonal(bounds->edge_hull[size_t(e)])});
       if (std::abs(bound - it->second.bound) <= 1e-9 * scale) continue;
       if (curvesDiffer(s, p, e, it->second.patch, it->second.edge)) {
         ++tally.cracked_edges;
@@ -195,7 +181,7 @@ void checkSurface(const techniques::SurfacePatches& s, const std::string& what, 
     if (!quad) {
       EXPECT_EQ(bounds->edge[3], 0.0) << what << " patch " << p;
     }
-    const double size = boxDiagonal(bounds->hull);
+    const double size = ref::boundingBoxDiagonal(bounds->hull);
     const Sampled sampled = quad ? sampleQuad(s, p) : sampleTriangle(s, p);
     const std::array<double, 7> bound = boundsOf(*bounds);
     const int failed = violations(sampled, bound, 1.0, size);
@@ -220,7 +206,7 @@ void checkSurface(const techniques::SurfacePatches& s, const std::string& what, 
 TEST(CurvatureBounds, SampledSecondDifferencesStayWithinTheBoundsOfEveryTechnique) {
   std::map<std::string, Tally> by_variant;
   for (const std::string& name : kAssets) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     for (const techniques::Technique* t : surfaceTechniques()) {
       if (!t->checkSupport(mesh).empty()) continue;
       for (const techniques::VariantInfo& v : t->variants()) {

@@ -76,13 +76,7 @@ techniques::BuiltSurface build(const Case& c) {
                                   variant);
 }
 
-double diagonalOf(const mesh::Mesh& mesh) {
-  mesh::Vec3d lo = mesh.positions.front(), hi = lo;
-  for (const mesh::Vec3d& p : mesh.positions) {
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return length(hi - lo);
-}
+using testing::diagonalOf;
 
 measures::CrackFigures cracks(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                               float level, measures::CrackBackend backend, gpu::Context* context,

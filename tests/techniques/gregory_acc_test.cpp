@@ -58,18 +58,8 @@ const std::vector<std::string> kSupported = {"full_suite/pole64.obj",
                                              "tessbench/tri_pawn.obj",
                                              "tessbench/tri_torus.obj"};
 
-mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
-
-double bboxDiagonal(const mesh::Mesh& mesh) {
-  mesh::Vec3d lo = mesh.positions[0], hi = lo;
-  for (const mesh::Vec3d& p : mesh.positions) {
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
-  return length(hi - lo);
-}
+using tb::testing::diagonalOf;
+using tb::testing::loadAsset;
 
 techniques::BuiltSurface build(const mesh::Mesh& mesh, const std::string& variant = "") {
   GregoryAccTechnique technique;
@@ -95,12 +85,12 @@ TEST(GregoryAcc, RegularFacesEqualTheBfrLimitSurface) {
   const tess::Tessellation domain = quadPoints(7.3f, tess::Spacing::kFractionalOdd);
   size_t regular_faces = 0;
   for (const std::string& name : kSupported) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const auto patches = build(mesh);
     const mesh::Mesh& control = patches->controlMesh();
     // The refined mesh of a mixed input has the same limit; Bfr parameterises its faces.
     const ref::LimitSurface limit(control, osd::Scheme::kCatmullClark);
-    const double diagonal = bboxDiagonal(mesh);
+    const double diagonal = diagonalOf(mesh);
     for (size_t f = 0; f < patches->patchCount(); ++f) {
       // Bfr says which faces are one regular B-spline patch (interior or boundary).
       if (!limit.hasLimitSurface(f) || !limit.isRegular(f)) continue;
@@ -125,10 +115,10 @@ using testing::edgeCoord;
 
 TEST(GregoryAcc, SharedEdgesAgreeFromBothSidesInDouble) {
   for (const std::string& name : kSupported) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const auto patches = build(mesh, "asymmetric");
     const mesh::Mesh& control = patches->controlMesh();
-    const double diagonal = bboxDiagonal(mesh);
+    const double diagonal = diagonalOf(mesh);
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);
     size_t edges = 0;
     size_t directed_edges = 0;
@@ -161,7 +151,7 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
   }
   ASSERT_GT(ts.size(), 5u);
   for (const std::string& name : kSupported) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const auto patches = build(mesh, "edge_symmetric");
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(patches->controlMesh());
     for (size_t f = 0; f < patches->patchCount(); ++f) {
@@ -185,7 +175,7 @@ TEST(GregoryAcc, SymmetricVariantSharedEdgesAreBitwiseEqualInFloat) {
 TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
   double worst_dart = 0;  // |P - limit| / diagonal at dart vertices
   for (const std::string& name : kSupported) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const auto patches = build(mesh, "exact_tangents");
     const mesh::Mesh& control = patches->controlMesh();
     // The limit the patches approximate: semi-sharp creases left after the face budget
@@ -195,7 +185,7 @@ TEST(GregoryAcc, CornersInterpolateTheLimitPositionAtExtraordinaryVertices) {
                                   osd::Scheme::kCatmullClark);
     const bool kinds_known = creases.control.positions.size() == control.positions.size();
     const std::vector<uint8_t> on_boundary = mesh::buildTopology(control).on_boundary;
-    const double diagonal = bboxDiagonal(mesh);
+    const double diagonal = diagonalOf(mesh);
     for (size_t f = 0; f < patches->patchCount(); ++f) {
       const techniques::PatchDomain domain = patches->patchDomain(f);
       for (int c = 0; c < cornerCount(domain); ++c) {
@@ -343,22 +333,22 @@ TEST(GregoryAcc, SupportsExactlyTheManifoldAssetsWithoutSmoothTrianglesOrValence
   GregoryAccTechnique technique;
   EXPECT_EQ(testing::supportedBundledAssets(), kSupported);
   // The three bundled refusals, each with its rule.
-  EXPECT_EQ(technique.checkSupport(load("opensubdiv/catmark_smoothtris0.obj")),
+  EXPECT_EQ(technique.checkSupport(loadAsset("opensubdiv/catmark_smoothtris0.obj")),
             "gregory_acc: " + tb::testing::assetPath("opensubdiv/catmark_smoothtris0.obj") +
                 ": `t smoothtriangles` is not supported (plain Catmull-Clark only)");
-  EXPECT_NE(technique.checkSupport(load("opensubdiv/catmark_gregory_test8.obj"))
+  EXPECT_NE(technique.checkSupport(loadAsset("opensubdiv/catmark_gregory_test8.obj"))
                 .find("has valence 2; gregory_acc needs 3..256"),
             std::string::npos);
-  EXPECT_NE(technique.checkSupport(load("tessbench/tjunction.obj")).find("is non-manifold"),
+  EXPECT_NE(technique.checkSupport(loadAsset("tessbench/tjunction.obj")).find("is non-manifold"),
             std::string::npos);
   for (const char* name : {"opensubdiv/catmark_smoothtris0.obj",
                            "opensubdiv/catmark_gregory_test8.obj", "tessbench/tjunction.obj"}) {
-    std::printf("[gregory_acc refuses] %s\n", technique.checkSupport(load(name)).c_str());
+    std::printf("[gregory_acc refuses] %s\n", technique.checkSupport(loadAsset(name)).c_str());
   }
 }
 
 TEST(GregoryAcc, FootprintCountsStencilsAndPatchIds) {
-  const mesh::Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const mesh::Mesh mesh = loadAsset("opensubdiv/catmark_cube.obj");
   const auto patches = build(mesh);
   const techniques::DataFootprint footprint = patches->footprint();
   EXPECT_EQ(footprint.control_mesh_bytes, 8u * 16u);
@@ -389,7 +379,7 @@ namespace {
 // derivative of the rational face-point blend, which regular faces do not exercise).
 TEST(GregoryAcc, NormalIsTheCrossProductOfFiniteDifferenceTangents) {
   for (const std::string& name : kSupported) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const auto patches = build(mesh, "asymmetric");
     const double h = 1e-6;
     for (size_t f = 0; f < patches->patchCount(); ++f) {
@@ -442,7 +432,7 @@ namespace {
 //   edge_symmetric: v == 0, u == 1, v == 1, u == 0   4 cmp
 // Set-up: every stencil entry is one vec3 multiply-add: 3 mul + 3 add.
 TEST(GregoryAcc, OperationCountsMatchAHandCount) {
-  const mesh::Mesh mesh = load("opensubdiv/catmark_cube.obj");
+  const mesh::Mesh mesh = loadAsset("opensubdiv/catmark_cube.obj");
   for (const char* variant : {"asymmetric", "edge_symmetric"}) {
     const auto patches = build(mesh, variant);
     const std::optional<techniques::OperationProfile> profile = patches->operationProfile(2);
@@ -470,7 +460,7 @@ namespace {
 
 // Oracle: the OBJ's own face sizes (catmark_pyramid: 1 quad, 4 triangles).
 TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
-  const mesh::Mesh pyramid = load("opensubdiv/catmark_pyramid.obj");
+  const mesh::Mesh pyramid = loadAsset("opensubdiv/catmark_pyramid.obj");
   const auto patches = build(pyramid, "edge_symmetric");
   ASSERT_EQ(patches->patchCount(), pyramid.faceCount());
   size_t triangles = 0;
@@ -497,7 +487,7 @@ TEST(GregoryAcc, QuadsAndTrianglesGetOnePatchPerFaceAndOneProgramPerDomain) {
   EXPECT_EQ(refined->gpuPrograms().size(), 1u);
   // Faces of 5+ vertices: refined once in every variant (catmark_nonquads: 7 triangles,
   // 7 quads, 1 pentagon, 2 hexagons -> 21 + 28 + 5 + 12 quads).
-  const auto nonquads = build(load("opensubdiv/catmark_nonquads.obj"), "edge_symmetric");
+  const auto nonquads = build(loadAsset("opensubdiv/catmark_nonquads.obj"), "edge_symmetric");
   EXPECT_EQ(nonquads->patchCount(), 66u);
   EXPECT_EQ(nonquads->patchDomain(0), techniques::PatchDomain::kQuad);
 }
@@ -512,7 +502,7 @@ TEST(GregoryAcc, TrianglePatchesStayCloseToTheCatmullClarkLimit) {
   for (const char* asset : {"opensubdiv/catmark_pyramid.obj", "opensubdiv/loop_cube.obj",
                             "opensubdiv/loop_icosahedron.obj", "tessbench/tri_torus.obj"}) {
     SCOPED_TRACE(asset);
-    const mesh::Mesh mesh = load(asset);
+    const mesh::Mesh mesh = loadAsset(asset);
     const auto patches = build(mesh, "edge_symmetric");
     const ref::LimitSurface limit(patches->controlMesh(), osd::Scheme::kCatmullClark);
     const measures::SurfaceErrorFigures f = measures::measureSurfaceError(*patches, limit);
@@ -538,7 +528,7 @@ TEST(GregoryAcc, NormalsAgreeAcrossSharedEdgesOfQuadsAndTriangles) {
   for (const char* asset :
        {"opensubdiv/catmark_pyramid.obj", "opensubdiv/catmark_cube.obj", "opensubdiv/loop_cube.obj",
         "tessbench/tri_torus.obj", "opensubdiv/catmark_xord_interior.obj"}) {
-    const mesh::Mesh mesh = load(asset);
+    const mesh::Mesh mesh = loadAsset(asset);
     const auto patches = build(mesh, "edge_symmetric");
     const mesh::Mesh& control = patches->controlMesh();
     const std::vector<testing::EdgeTwin> twins = testing::edgeTwins(control);

@@ -38,9 +38,8 @@ const std::vector<std::string> kCreasedAssets = {
 // The variants whose shared edges are evaluated symmetrically (bitwise watertight).
 const char* const kSymmetricVariants[] = {"edge_symmetric", "exact_tangents", "quads_only"};
 
-mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
-
-double bboxDiagonal(const mesh::Mesh& mesh) { return mesh::diagonalOf(mesh::boundsOf(mesh)); }
+using tb::testing::diagonalOf;
+using tb::testing::loadAsset;
 
 techniques::VariantInfo variantNamed(const std::string& name) {
   for (const techniques::VariantInfo& info : GregoryAccTechnique().variants()) {
@@ -127,7 +126,7 @@ CurveFigures creaseCurveError(const techniques::SurfacePatches& patches,
 TEST(GregoryCrease, EveryBundledCreasedCatmarkAssetIsAccepted) {
   GregoryAccTechnique technique;
   for (const std::string& name : kCreasedAssets) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     EXPECT_EQ(technique.checkSupport(mesh), "") << name;
     for (const techniques::VariantInfo& variant : technique.variants()) {
       const auto patches = techniques::buildSurface(technique, mesh, variant);
@@ -151,7 +150,7 @@ TEST(GregoryCrease, CreaseCurvesEqualTheBfrLimit) {
   size_t checked = 0;
   const auto check = [&](const std::string& name, const mesh::Mesh& mesh) {
     const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
-    const double diagonal = bboxDiagonal(mesh);
+    const double diagonal = diagonalOf(mesh);
     for (const char* variant : {"edge_symmetric", "asymmetric", "exact_tangents"}) {
       const auto patches = build(mesh, variant);
       // The limit the patches approximate: the control mesh itself, or with the leftover
@@ -167,7 +166,7 @@ TEST(GregoryCrease, CreaseCurvesEqualTheBfrLimit) {
       checked += figures.sides;
     }
   };
-  for (const std::string& name : kCreasedAssets) check(name, load(name));
+  for (const std::string& name : kCreasedAssets) check(name, loadAsset(name));
   check("cube with an infinitely sharp crease loop",
         mesh::loadObjText(std::string(kCube) + kCubeCreaseLoop, "crease_loop.obj"));
   check("grid, edge-only boundary",
@@ -201,7 +200,7 @@ TEST(GregoryCrease, InfinitelySharpCreasesNeedNoRounding) {
 TEST(GregoryCrease, BothSidesOfASharpEdgeShareItsPointStencils) {
   size_t total = 0;
   for (const std::string& name : kCreasedAssets) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     const GregoryBuild built = buildGregory(mesh);
     const techniques::CreasePreparation& creases = built.creases;
     ASSERT_FALSE(built.refined) << name;
@@ -246,7 +245,7 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
   for (const char* variant : kSymmetricVariants) {
     size_t pairs = 0, unequal = 0;
     for (const std::string& name : kCreasedAssets) {
-      const mesh::Mesh mesh = load(name);
+      const mesh::Mesh mesh = loadAsset(name);
       const auto patches = build(mesh, variant);
       const techniques::CreasePreparation creases = testing::defaultCreases(mesh);
       const mesh::Mesh& control = patches->controlMesh();
@@ -287,7 +286,7 @@ TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightAcrossCreasesInFloat) {
 TEST(GregoryCrease, SymmetricVariantsAreBitwiseWatertightInTheLavapipeCapture) {
   TB_GPU_CONTEXT_OR_SKIP(context);
   std::vector<std::pair<std::string, mesh::Mesh>> meshes;
-  for (const std::string& name : kCreasedAssets) meshes.emplace_back(name, load(name));
+  for (const std::string& name : kCreasedAssets) meshes.emplace_back(name, loadAsset(name));
   meshes.emplace_back("holed cube",
                       mesh::loadObjText(std::string(kCube) + "t hole 1/0/0 2\n", "holed.obj"));
   meshes.emplace_back("crease loop cube",
@@ -361,7 +360,7 @@ TEST(GregoryCrease, BoundaryInterpolationNoneKeepsOnlyTheInteriorFace) {
   for (double u : {0.0, 0.3, 0.75, 1.0}) {
     for (double v : {0.0, 0.5, 0.9}) {
       EXPECT_LE(length(patches->evaluate(0, {u, v, 0}).position - limit.evaluate(0, u, v).position),
-                1e-12 * bboxDiagonal(mesh));
+                1e-12 * diagonalOf(mesh));
     }
   }
 }
@@ -430,15 +429,16 @@ TEST(GregoryCrease, NGonsNextToCreasesAreRefinedByOpenSubdiv) {
     const techniques::CreasePreparation creases =
         techniques::prepareCreases(mesh, "gregory_acc", techniques::kDefaultCreaseFaceBudget, 1);
     const CurveFigures figures =
-        creaseCurveError(*patches, creases, patches->controlMesh(), bboxDiagonal(mesh));
+        creaseCurveError(*patches, creases, patches->controlMesh(), diagonalOf(mesh));
     EXPECT_EQ(figures.sides, 20u);  // 5 crease edges, 2 halves each, 2 sides
     EXPECT_LE(figures.worst, 1e-12) << variant;
   }
 }
 
 TEST(GregoryCrease, TheCreaseFaceBudgetIsAVariantParameter) {
-  const mesh::Mesh mesh = load("opensubdiv/catmark_cube_creases1.obj");  // sharpness 5: 5 levels
-  EXPECT_EQ(build(mesh)->patchCount(), 96u);                             // 256 faces: 2 levels
+  const mesh::Mesh mesh =
+      loadAsset("opensubdiv/catmark_cube_creases1.obj");  // sharpness 5: 5 levels
+  EXPECT_EQ(build(mesh)->patchCount(), 96u);              // 256 faces: 2 levels
   techniques::VariantInfo variant = variantNamed("edge_symmetric");
   variant.parameters["crease_face_budget"] = 1536.0;
   EXPECT_EQ(variantCreaseFaceBudget(variant), 1536u);
@@ -454,7 +454,7 @@ namespace {
 // loop_icosahedron is closed but tagged edge-only: nothing sharp, so quads_only keeps the
 // stencils over its own 12 vertices (refineOnce), as before creases were supported.
 TEST(GregoryCrease, AClosedMeshsBoundaryTagForcesNoOpenSubdivRefinement) {
-  const mesh::Mesh mesh = load("opensubdiv/loop_icosahedron.obj");
+  const mesh::Mesh mesh = loadAsset("opensubdiv/loop_icosahedron.obj");
   ASSERT_EQ(mesh.tags.boundary, mesh::BoundaryInterpolation::kEdgeOnly);
   const auto patches = build(mesh, "quads_only");
   EXPECT_EQ(patches->footprint().control_mesh_bytes, 12u * 16u);  // vec4 per input vertex

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/mesh/obj_loader.h"
+#include "reference/triangle_mesh_ref.h"
 #include "techniques/registry.h"
 #include "tests/test_support.h"
 
@@ -54,21 +55,9 @@ constexpr double kStep = 1e-5;           // central-difference step, domain unit
 constexpr double kMargin = 1e-4;         // lattice pulled inside the domain by this
 constexpr double kDegenerate = 1e-8;     // |n| below this times the box diagonal squared
 
-mesh::Mesh load(const std::string& name) { return mesh::loadObjFile(tb::testing::assetPath(name)); }
-
-const techniques::Technique& technique(const std::string& id) {
-  const techniques::Technique* t = techniques::TechniqueRegistry::instance().find(id);
-  if (t == nullptr) throw std::logic_error("no technique " + id);
-  return *t;
-}
-
-std::vector<const techniques::Technique*> surfaceTechniques() {
-  std::vector<const techniques::Technique*> techniques;
-  for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all()) {
-    if (t->info().family == techniques::TechniqueFamily::kSurface) techniques.push_back(t);
-  }
-  return techniques;
-}
+using testing::loadAsset;
+using testing::surfaceTechniques;
+using testing::technique;
 
 std::vector<techniques::DomainCoord> lattice(techniques::PatchDomain domain) {
   std::vector<techniques::DomainCoord> coords;
@@ -85,14 +74,6 @@ std::vector<techniques::DomainCoord> lattice(techniques::PatchDomain domain) {
 mesh::Vec3d randomUnit(std::mt19937& rng) {
   std::normal_distribution<double> n(0, 1);
   return normalize(mesh::Vec3d{n(rng), n(rng), n(rng)});
-}
-
-double boxDiagonal(const std::vector<mesh::Vec3d>& points) {
-  mesh::Vec3d lo = points.at(0), hi = lo;
-  for (const mesh::Vec3d& p : points) {
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return length(hi - lo);
 }
 
 // The geometric normal at `c`, moved kMargin inside the domain: p_u x p_v on a quad; on a
@@ -117,7 +98,7 @@ mesh::Vec3d differenceNormal(const techniques::SurfacePatches& s, size_t patch,
 // random directions.
 size_t hullViolations(const std::vector<mesh::Vec3d>& hull, const std::vector<mesh::Vec3d>& points,
                       std::mt19937& rng) {
-  const double tolerance = kHullTolerance * std::max(boxDiagonal(hull), 1e-300);
+  const double tolerance = kHullTolerance * std::max(ref::boundingBoxDiagonal(hull), 1e-300);
   mesh::Vec3d lo = hull[0], hi = lo;
   for (const mesh::Vec3d& p : hull) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
@@ -209,7 +190,7 @@ void checkSurface(const techniques::SurfacePatches& s, const std::string& what, 
     const std::optional<techniques::PatchCullBounds> bounds = s.cullBounds(p);
     ASSERT_TRUE(bounds.has_value()) << what << " patch " << p;
     ASSERT_FALSE(bounds->hull.empty()) << what << " patch " << p;
-    const double size = boxDiagonal(bounds->hull);
+    const double size = ref::boundingBoxDiagonal(bounds->hull);
     const PatchSamples samples = sample(s, p, size);
     EXPECT_EQ(hullViolations(bounds->hull, samples.points, rng), 0u) << what << " patch " << p;
     ++tally.patches;
@@ -233,7 +214,7 @@ void checkSurface(const techniques::SurfacePatches& s, const std::string& what, 
 TEST(PatchCullBounds, HullAndNormalConeContainEveryPatchOfEveryTechnique) {
   std::map<std::string, Tally> by_technique;
   for (const std::string& name : kAssets) {
-    const mesh::Mesh mesh = load(name);
+    const mesh::Mesh mesh = loadAsset(name);
     for (const techniques::Technique* t : surfaceTechniques()) {
       if (!t->checkSupport(mesh).empty()) continue;
       for (const techniques::VariantInfo& v : t->variants()) {
@@ -286,7 +267,8 @@ TEST(PatchCullBounds, GeneratorsFaceOutwardOnClosedConvexMeshes) {
       {"phong", "opensubdiv/loop_icosahedron.obj"}};
   for (const auto& [id, name] : cases) {
     const techniques::Technique& t = technique(id);
-    const techniques::BuiltSurface s = techniques::buildSurface(t, load(name), t.variants()[0]);
+    const techniques::BuiltSurface s =
+        techniques::buildSurface(t, loadAsset(name), t.variants()[0]);
     mesh::Vec3d centre{};
     for (const mesh::Vec3d& p : s->controlMesh().positions) centre = centre + p;
     centre = centre * (1.0 / double(s->controlMesh().positions.size()));
@@ -310,13 +292,13 @@ TEST(PatchCullBounds, TheChecksRejectFlippedGeneratorsAndAShrunkenHull) {
     const techniques::Technique& t = technique(id);
     const bool quads = std::string(id) == "acc" || std::string(id) == "gregory_acc";
     const techniques::BuiltSurface s = techniques::buildSurface(
-        t, load(quads ? "opensubdiv/catmark_torus.obj" : "tessbench/tri_torus.obj"),
+        t, loadAsset(quads ? "opensubdiv/catmark_torus.obj" : "tessbench/tri_torus.obj"),
         t.variants()[0]);
     std::mt19937 rng(2);
     size_t flipped_rejected = 0, shrunk_rejected = 0;
     for (size_t p = 0; p < s->patchCount(); ++p) {
       techniques::PatchCullBounds bounds = *s->cullBounds(p);
-      const double size = boxDiagonal(bounds.hull);
+      const double size = ref::boundingBoxDiagonal(bounds.hull);
       const PatchSamples samples = sample(*s, p, size);
       ASSERT_EQ(checkCone(bounds.normal_generators, samples.normals, rng).violations, 0u);
       for (mesh::Vec3d& g : bounds.normal_generators) g = mesh::Vec3d{} - g;

@@ -47,21 +47,8 @@ std::string domeObj(int valence) {
 
 mesh::Mesh pole64() { return mesh::loadObjFile(testing::assetPath("full_suite/pole64.obj")); }
 
-techniques::VariantInfo variantOf(const techniques::Technique& technique, const std::string& name) {
-  for (const techniques::VariantInfo& v : technique.variants()) {
-    if (v.name == name) return v;
-  }
-  ADD_FAILURE() << technique.info().id << " has no variant " << name;
-  return {};
-}
-
-double diagonal(const mesh::Mesh& mesh) {
-  mesh::Vec3d lo = mesh.positions.front(), hi = lo;
-  for (const mesh::Vec3d& p : mesh.positions) {
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return length(hi - lo);
-}
+using testing::diagonalOf;
+using testing::variantOf;
 
 TEST(Valence, Pole64AssetHasOnePoleOfValence64) {
   const mesh::Mesh mesh = pole64();
@@ -98,7 +85,7 @@ PoleFigures nearThePole(const techniques::Technique& technique, const std::strin
                         const mesh::Mesh& mesh) {
   const ref::LimitSurface limit(mesh, osd::Scheme::kCatmullClark);
   const auto patches = techniques::buildSurface(technique, mesh, variantOf(technique, variant));
-  const double diag = diagonal(mesh);
+  const double diag = diagonalOf(mesh);
   std::vector<size_t> caps;  // in order around the pole (the file's order)
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
     if (mesh.facePositions(f)[0] == 0) caps.push_back(f);

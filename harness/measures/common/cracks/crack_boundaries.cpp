@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -121,6 +122,7 @@ constexpr size_t kMaxCachedTessellations = 1 << 14;
 
 int64_t domainEdgeParameter(techniques::PatchDomain domain, uint32_t edge,
                             const tess::DomainPoint& p) {
+  assert(edge < (domain == techniques::PatchDomain::kQuad ? 4u : 3u));
   double t = -1;
   if (domain == techniques::PatchDomain::kQuad) {
     const float u = p[0], v = p[1];
@@ -145,12 +147,14 @@ int64_t domainEdgeParameter(techniques::PatchDomain domain, uint32_t edge,
 }
 
 bool isDomainCorner(techniques::PatchDomain domain, uint32_t corner, const tess::DomainPoint& p) {
+  assert(corner < (domain == techniques::PatchDomain::kQuad ? 4u : 3u));
   if (domain == techniques::PatchDomain::kTriangle) return p[corner] == 1;
   static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   return p[0] == kCorner[corner][0] && p[1] == kCorner[corner][1];
 }
 
 int64_t BoundaryTessellation::edgePoint(uint32_t edge, int64_t t) const {
+  assert(size_t(edge) + 1 < edge_begin.size());
   const auto first = edge_t.begin() + edge_begin[edge];
   const auto last = edge_t.begin() + edge_begin[edge + 1];
   const auto it = std::lower_bound(first, last, t);
@@ -194,6 +198,7 @@ std::shared_ptr<const BoundaryTessellation> boundaryTessellation(techniques::Pat
 
 PatchBoundaries patchBoundaries(const techniques::SurfacePatches& patches, tess::Spacing spacing,
                                 std::span<const tess::Levels> patch_levels) {
+  assert(patch_levels.size() == patches.patchCount());
   PatchBoundaries b;
   const size_t count = patches.patchCount();
   b.tessellation.resize(count);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -111,7 +112,9 @@ class Pairing {
  public:
   Pairing(const SharedBoundaries& shared, const PatchBoundaries& boundaries,
           const BoundaryPositions& positions, double scale_ulp)
-      : shared_(shared), boundaries_(boundaries), positions_(positions), scale_ulp_(scale_ulp) {}
+      : shared_(shared), boundaries_(boundaries), positions_(positions), scale_ulp_(scale_ulp) {
+    assert(positions.size() == boundaries.size() && scale_ulp > 0);
+  }
 
   // `unequal`, when given, receives every pair that differs, in pair order.
   void run(CrackFigures* f, std::vector<UnequalPair>* unequal = nullptr) const {
@@ -149,6 +152,7 @@ class Pairing {
   static constexpr size_t kItemsPerBlock = 256;
 
   const mesh::Vec3f& at(uint32_t patch, size_t k) const {
+    assert(patch < boundaries_.tessellation.size() && k < boundaries_.of(patch).points.size());
     return positions_[boundaries_.at(patch, k)];
   }
 
@@ -158,6 +162,7 @@ class Pairing {
       return;
     }
     const SharedCorner& corner = shared_.corners[i - shared_.edges.size()];
+    assert(corner.sides.size() >= 2);
     const PatchSide& a = corner.sides[0];
     for (size_t s = 1; s < corner.sides.size(); ++s) {
       const PatchSide& b = corner.sides[s];
@@ -167,6 +172,7 @@ class Pairing {
   }
 
   void edge(const SharedEdge& edge, PairBlock* block) const {
+    assert(edge.sides.size() >= 2);
     const PatchSide& a = edge.sides[0];
     const BoundaryTessellation& ta = boundaries_.of(a.patch);
     for (size_t s = 1; s < edge.sides.size(); ++s) {
