@@ -27,13 +27,6 @@ constexpr VkBufferUsageFlags kUsage =
 
 }  // namespace
 
-// A compute pipeline with its layouts, immutable once made.
-struct CachedComputePipeline {
-  VkDescriptorSetLayoutOwner set_layout;
-  VkPipelineLayoutOwner layout;
-  VkPipelineOwner pipeline;
-};
-
 // Every ComputeRunner's pipelines on one Context, by shader, specialisation, bindings and
 // push block size: llvmpipe compiles a pipeline in 0.1 to 0.5 s, more than a small run
 // costs, and the compute path (compute_path.h) makes a runner per call.
@@ -47,40 +40,45 @@ struct ComputePipelineCache {
     for (uint32_t word : desc.specialization) key += "|" + std::to_string(word);
     const std::lock_guard lock(mutex);
     std::shared_ptr<const CachedComputePipeline>& entry = entries[key];
-    if (!entry) entry = create(context.device(), desc, binding_count);
+    if (!entry) entry = createComputePassPipeline(context.device(), desc, binding_count);
     return entry;
-  }
-
-  static std::shared_ptr<const CachedComputePipeline> create(VkDevice device,
-                                                             const GpuComputePass& desc,
-                                                             uint32_t binding_count) {
-    auto made = std::make_shared<CachedComputePipeline>();
-    const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
-    made->set_layout = createStorageBufferSetLayout(device, stages);
-    made->layout = createPipelineLayout(device, made->set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
-                                        uint32_t(desc.push_constants.size() * 4));
-    const VkShaderModuleOwner module =
-        createShaderModule(device, requireEmbeddedShader(desc.shader));
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
-    const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
-                                              desc.specialization.size() * 4,
-                                              desc.specialization.data()};
-    auto info =
-        vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
-    if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
-    info.layout = made->layout.get();
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-            "vkCreateComputePipelines (compute runner)");
-    made->pipeline = VkPipelineOwner(device, pipeline);
-    return made;
   }
 
   std::mutex mutex;
   std::map<std::string, std::shared_ptr<const CachedComputePipeline>> entries;
 };
+
+uint32_t bindingCountOf(const GpuComputePass& pass) {
+  uint32_t count = 0;
+  for (const GpuComputeBuffer& b : pass.buffers) count = std::max(count, b.binding + 1);
+  return count;
+}
+
+std::shared_ptr<const CachedComputePipeline> createComputePassPipeline(
+    VkDevice device, const GpuComputePass& desc, uint32_t binding_count,
+    VkPipelineCreateFlags flags) {
+  auto made = std::make_shared<CachedComputePipeline>();
+  const std::vector<VkShaderStageFlags> stages(binding_count, VK_SHADER_STAGE_COMPUTE_BIT);
+  made->set_layout = createStorageBufferSetLayout(device, stages);
+  made->layout = createPipelineLayout(device, made->set_layout.get(), VK_SHADER_STAGE_COMPUTE_BIT,
+                                      uint32_t(desc.push_constants.size() * 4));
+  const VkShaderModuleOwner module = createShaderModule(device, requireEmbeddedShader(desc.shader));
+  std::vector<VkSpecializationMapEntry> entries;
+  for (uint32_t i = 0; i < desc.specialization.size(); ++i) entries.push_back({i, i * 4u, 4});
+  const VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(),
+                                            desc.specialization.size() * 4,
+                                            desc.specialization.data()};
+  auto info = vkStruct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+  info.stage = shaderStage(VK_SHADER_STAGE_COMPUTE_BIT, module.get());
+  if (!entries.empty()) info.stage.pSpecializationInfo = &specialization;
+  info.layout = made->layout.get();
+  info.flags = flags;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+          "vkCreateComputePipelines (compute runner)");
+  made->pipeline = VkPipelineOwner(device, pipeline);
+  return made;
+}
 
 struct ComputeRunner::Impl {
   struct Pass {
@@ -158,9 +156,7 @@ struct ComputeRunner::Impl {
     if (desc.step_index_word >= int32_t(desc.push_constants.size())) {
       fail(desc, "step_index_word is beyond the push block");
     }
-    uint32_t binding_count = 0;
-    for (const GpuComputeBuffer& b : desc.buffers)
-      binding_count = std::max(binding_count, b.binding + 1);
+    const uint32_t binding_count = bindingCountOf(desc);
     pass.compiled = context.attachment<ComputePipelineCache>().get(context, desc, binding_count);
 
     for (int parity = 0; parity < 2; ++parity) {

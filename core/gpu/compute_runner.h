@@ -15,10 +15,28 @@
 #include <vector>
 
 #include "core/gpu/compute_program_desc.h"
+#include "core/gpu/vk_handle.h"
 
 namespace tb::gpu {
 
 class Context;
+
+// A compute pass's pipeline with its layouts, immutable once made.
+struct CachedComputePipeline {
+  VkDescriptorSetLayoutOwner set_layout;
+  VkPipelineLayoutOwner layout;
+  VkPipelineOwner pipeline;
+};
+
+// The pass's set-0 binding count: its highest binding + 1 (0 without buffers).
+uint32_t bindingCountOf(const GpuComputePass& pass);
+
+// The pass's pipeline (specialisation constants 0..M-1, `binding_count` storage buffers,
+// the push block's size), created with `flags` (0, or the capture bits of
+// pipeline_executables.h). Throws GpuError.
+std::shared_ptr<const CachedComputePipeline> createComputePassPipeline(
+    VkDevice device, const GpuComputePass& desc, uint32_t binding_count,
+    VkPipelineCreateFlags flags = 0);
 
 struct ComputeRunTiming {
   uint32_t steps = 0;            // steps this run() recorded

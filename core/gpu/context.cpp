@@ -106,6 +106,14 @@ VkDevice createDevice(const Candidate& chosen) {
     next = &pgq.pNext;
     extensions.push_back(VK_EXT_PRIMITIVES_GENERATED_QUERY_EXTENSION_NAME);
   }
+  auto pep = vkStruct<VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR);
+  if (f.pipeline_executable_info) {
+    pep.pipelineExecutableInfo = VK_TRUE;
+    *next = &pep;
+    next = &pep.pNext;
+    extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+  }
 
   const float priority = 1.0f;
   auto queue_info = vkStruct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);

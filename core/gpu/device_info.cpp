@@ -23,6 +23,7 @@ constexpr FeatureName kFeatureNames[] = {
     {"maintenance4", &DeviceFeatures::maintenance4},
     {"timestamps", &DeviceFeatures::timestamps},
     {"primitivesGeneratedQueryWithRasterizerDiscard", &DeviceFeatures::primitives_generated_query},
+    {"pipelineExecutableInfo", &DeviceFeatures::pipeline_executable_info},
 };
 
 std::string_view deviceTypeName(VkPhysicalDeviceType type) {
@@ -113,7 +114,15 @@ DeviceFeatures queryDeviceFeatures(VkPhysicalDevice physical_device, uint32_t qu
       hasDeviceExtension(physical_device, VK_EXT_PRIMITIVES_GENERATED_QUERY_EXTENSION_NAME);
   auto pgq = vkStruct<VkPhysicalDevicePrimitivesGeneratedQueryFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PRIMITIVES_GENERATED_QUERY_FEATURES_EXT);
-  if (has_pgq) *next = &pgq;
+  if (has_pgq) {
+    *next = &pgq;
+    next = &pgq.pNext;
+  }
+  const bool has_pep =
+      hasDeviceExtension(physical_device, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+  auto pep = vkStruct<VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR);
+  if (has_pep) *next = &pep;
   vkGetPhysicalDeviceFeatures2(physical_device, &features2);
 
   uint32_t family_count = 0;
@@ -133,6 +142,7 @@ DeviceFeatures queryDeviceFeatures(VkPhysicalDevice physical_device, uint32_t qu
   f.maintenance4 = is_13 && v13.maintenance4;
   f.primitives_generated_query =
       has_pgq && pgq.primitivesGeneratedQuery && pgq.primitivesGeneratedQueryWithRasterizerDiscard;
+  f.pipeline_executable_info = has_pep && pep.pipelineExecutableInfo;
   f.timestamps = queue_family < family_count && families[queue_family].timestampValidBits > 0;
   return f;
 }

@@ -24,6 +24,9 @@ struct DeviceFeatures {
   // VK_EXT_primitives_generated_query with rasterizer discard: the triangles the
   // tessellator emits, counted by the device (patch programs run with discard).
   bool primitives_generated_query = false;
+  // VK_KHR_pipeline_executable_properties: the driver's statistics and assembly of each
+  // compiled pipeline executable (pipeline_executables.h).
+  bool pipeline_executable_info = false;
 };
 
 // Features the tessellation capture path (tess_capture.h) cannot do without.

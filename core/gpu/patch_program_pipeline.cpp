@@ -31,7 +31,8 @@ uint32_t displacementKey(const GpuPatchProgram& program) {
 VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& program,
                                       tess::Spacing spacing, uint32_t boundary,
                                       uint32_t factor_policy, uint32_t cull_policy,
-                                      VkShaderModule vertex, VkPipelineLayout layout) {
+                                      VkShaderModule vertex, VkPipelineLayout layout,
+                                      VkPipelineCreateFlags flags) {
   const VkShaderModuleOwner control =
       createShaderModule(device, requireEmbeddedShader(program.control_shader));
   const std::vector<uint32_t> tes_spirv = withTessModes(
@@ -75,10 +76,36 @@ VkPipelineOwner createProgramPipeline(VkDevice device, const GpuPatchProgram& pr
     shader_stages[2].pSpecializationInfo = &specialization;
   }
   return createDiscardTessPipeline(device, layout, shader_stages, program.input_vertices_per_patch,
-                                   "vkCreateGraphicsPipelines (patch program)");
+                                   "vkCreateGraphicsPipelines (patch program)", flags);
 }
 
 }  // namespace
+
+std::unique_ptr<ProgramPipeline> buildProgramPipeline(VkDevice device, VkShaderModule vertex,
+                                                      const GpuPatchProgram& program,
+                                                      const ProgramBuild& build,
+                                                      VkPipelineCreateFlags flags) {
+  const uint32_t binding_count =
+      uint32_t(program.storage_buffers.size()) + layout::kBindingFirstTechnique;
+  auto p = std::make_unique<ProgramPipeline>();
+  p->binding_count = binding_count;
+  const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
+  p->set_layout = createStorageBufferSetLayout(device, stages);
+  const std::vector<VkShaderStageFlags> levels_stages(kLevelsSetBindings,
+                                                      VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
+  p->levels_set_layout = createStorageBufferSetLayout(device, levels_stages);
+  std::vector<VkDescriptorSetLayout> set_layouts = {p->set_layout.get(),
+                                                    p->levels_set_layout.get()};
+  if (program.displacement) {
+    p->displacement_set_layout = createDisplacementSetLayout(device);
+    set_layouts.push_back(p->displacement_set_layout.get());
+  }
+  p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
+  p->pipeline =
+      createProgramPipeline(device, program, build.spacing, build.boundary, build.factor_policy,
+                            build.cull_policy, vertex, p->layout.get(), flags);
+  return p;
+}
 
 PatchProgramCache::PatchProgramCache(Context& context) : context_(context) {
   vertex_ = createShaderModule(context.device(), requireEmbeddedShader("gpu/tess_patch.vert"));
@@ -103,23 +130,9 @@ ProgramPipeline& PatchProgramCache::get(const GpuPatchProgram& program, tess::Sp
   const std::lock_guard lock(mutex_);
   if (auto it = programs_.find(key); it != programs_.end()) return *it->second;
 
-  const VkDevice device = context_.device();
-  auto p = std::make_unique<ProgramPipeline>();
-  p->binding_count = binding_count;
-  const std::vector<VkShaderStageFlags> stages(binding_count, kTessStages);
-  p->set_layout = createStorageBufferSetLayout(device, stages);
-  const std::vector<VkShaderStageFlags> levels_stages(kLevelsSetBindings,
-                                                      VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT);
-  p->levels_set_layout = createStorageBufferSetLayout(device, levels_stages);
-  std::vector<VkDescriptorSetLayout> set_layouts = {p->set_layout.get(),
-                                                    p->levels_set_layout.get()};
-  if (program.displacement) {
-    p->displacement_set_layout = createDisplacementSetLayout(device);
-    set_layouts.push_back(p->displacement_set_layout.get());
-  }
-  p->layout = createPipelineLayout(device, set_layouts, kTessStages, sizeof(PushBlock));
-  p->pipeline = createProgramPipeline(device, program, spacing, boundary, factor_policy,
-                                      cull_policy, vertex_.get(), p->layout.get());
+  std::unique_ptr<ProgramPipeline> p =
+      buildProgramPipeline(context_.device(), vertex_.get(), program,
+                           {spacing, boundary, factor_policy, cull_policy}, 0);
   return *programs_.emplace(std::move(key), std::move(p)).first->second;
 }
 

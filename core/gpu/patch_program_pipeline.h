@@ -76,6 +76,22 @@ struct CallResources {
   std::map<const ProgramPipeline*, PipelineSets> sets;  // per pipeline drawn with
 };
 
+// The build switches of a program's pipeline besides the program itself.
+struct ProgramBuild {
+  tess::Spacing spacing = tess::Spacing::kInteger;
+  uint32_t boundary = kCaptureEvery;  // kTbCaptureBoundary (kCapture*)
+  uint32_t factor_policy = 0;         // kTbFactorPolicy: 0 the harness's levels, 1 the policy's
+  uint32_t cull_policy = 0;           // kTbCullPolicy: 0, 1, or kTbCullPolicyFixed + policy
+};
+
+// The program's layouts and pipeline (rasterizer discard, patch list of
+// input_vertices_per_patch), created with `flags` (0, or the capture bits of
+// pipeline_executables.h); only the count of storage_buffers is read. Throws GpuError.
+std::unique_ptr<ProgramPipeline> buildProgramPipeline(VkDevice device, VkShaderModule vertex,
+                                                      const GpuPatchProgram& program,
+                                                      const ProgramBuild& build,
+                                                      VkPipelineCreateFlags flags);
+
 using ProgramKey = std::tuple<std::string, std::string, std::vector<uint32_t>, int, int, uint32_t,
                               uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>;
 

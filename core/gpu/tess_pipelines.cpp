@@ -103,7 +103,8 @@ void TessPipelines::pushLevels(VkCommandBuffer cmd, const tess::Levels& levels) 
 
 VkPipelineOwner createDiscardTessPipeline(VkDevice device, VkPipelineLayout layout,
                                           std::span<const VkPipelineShaderStageCreateInfo> stages,
-                                          uint32_t patch_control_points, const char* what) {
+                                          uint32_t patch_control_points, const char* what,
+                                          VkPipelineCreateFlags flags) {
   auto tessellation = vkStruct<VkPipelineTessellationStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
   tessellation.patchControlPoints = patch_control_points;
@@ -120,6 +121,7 @@ VkPipelineOwner createDiscardTessPipeline(VkDevice device, VkPipelineLayout layo
   GraphicsPipelineBase base(stages, VK_PRIMITIVE_TOPOLOGY_PATCH_LIST, layout, &rendering);
   base.raster.rasterizerDiscardEnable = VK_TRUE;
   base.info.pTessellationState = &tessellation;
+  base.info.flags = flags;
   return base.create(device, what);
 }
 

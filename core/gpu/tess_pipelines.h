@@ -57,9 +57,11 @@ void beginDiscardRendering(VkCommandBuffer cmd);
 // A VS -> TCS -> TES pipeline under rasterizer discard with zero attachments and the
 // lower-left domain origin (layout(ccw) is counter-clockwise in (u, v) with v up).
 // `stages` are the three shader stages; the tess capture and patch programs share it.
+// `flags`: VkGraphicsPipelineCreateInfo::flags (the capture bits of pipeline_executables.h).
 VkPipelineOwner createDiscardTessPipeline(VkDevice device, VkPipelineLayout layout,
                                           std::span<const VkPipelineShaderStageCreateInfo> stages,
-                                          uint32_t patch_control_points, const char* what);
+                                          uint32_t patch_control_points, const char* what,
+                                          VkPipelineCreateFlags flags = 0);
 
 // Statistics every tessellation query collects, reported in this bit order: VS
 // invocations, clipping invocations, clipping primitives, TCS patches, TES invocations

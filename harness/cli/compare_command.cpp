@@ -7,14 +7,17 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "core/mesh/input_error.h"
 #include "harness/cli/usage_error.h"
+#include "harness/measures/complete_declarations.h"
 #include "harness/results/compare.h"
 #include "harness/results/compare_json.h"
 #include "harness/results/device_identity.h"
 #include "harness/results/results_json.h"
 #include "harness/results/run_folder.h"
+#include "harness/results/shader_db.h"
 
 namespace tb::cli {
 namespace {
@@ -106,14 +109,23 @@ int printComparison(const std::string& base_name, const std::string& current_nam
   results::filterRun(filter, &base);
   results::filterRun(filter, &current);
   const results::Comparison comparison = results::compareRuns(base, current, options);
+  // Files written before a measure declared its shader-db summary get the registered one.
+  measures::completeDeclarations(&base.results);
+  measures::completeDeclarations(&current.results);
+  const std::vector<results::ShaderDbSummary> shader_db =
+      results::shaderDbSummaries(base.results, current.results);
   if (args.json) {
     nlohmann::ordered_json document{{"base", base_name}, {"new", current_name}};
     document.update(results::comparisonToJson(comparison));
+    if (!shader_db.empty()) document["shader_db"] = results::shaderDbToJson(shader_db);
     fmt::print("{}\n",
                document.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
   } else {
     fmt::print("# Compare {} -> {}\n\n{}", base_name, current_name,
                results::renderComparison(comparison, args.limit));
+    if (!shader_db.empty()) {
+      fmt::print("\n## Shader-db summary\n\n{}", results::renderShaderDb(shader_db));
+    }
     if (args.all_timings) fmt::print("\n## Timings\n\n{}", results::renderTimingTable(comparison));
   }
   return comparison.failed() ? 1 : 0;

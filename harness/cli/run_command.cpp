@@ -16,6 +16,7 @@
 #include "harness/cli/progress_estimate.h"
 #include "harness/cli/run_context.h"
 #include "harness/cli/usage_error.h"
+#include "harness/measures/common/isa/isa_assembly.h"
 #include "harness/measures/measure.h"
 #include "harness/pictures/run_pictures.h"
 #include "harness/report/csv_tables.h"
@@ -170,6 +171,12 @@ void writeRunFiles(const RunArgs& args, const results::Results& results,
         results, args.device,
         [&](const std::string& path, const std::string& bytes) { folder->writeFile(path, bytes); });
     if (!args.quiet) fmt::print(stderr, "pictures: {}\n", pictures::picturesSummary(pictures));
+  }
+  // isa/: the assembly the ISA measure's compilers gave, one file per executable.
+  const std::map<std::string, std::string> assembly = measures::isa::keptAssembly();
+  if (!assembly.empty()) {
+    std::filesystem::create_directory(folder->pendingPath() + "/isa");
+    for (const auto& [name, text] : assembly) folder->writeFile("isa/" + name, text);
   }
   folder->writeFile("report.md", report::renderMarkdown(results));
   for (const auto& [name, text] : report::renderCsvTables(results)) folder->writeFile(name, text);

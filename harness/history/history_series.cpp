@@ -135,6 +135,38 @@ void metricCharts(size_t group, const std::vector<RunContent>& runs,
   }
 }
 
+// A measure with a shader-db summary (MeasureDeclaration::shader_db): per metric of the
+// summary, a line per group value (a GPU family) through the total over every program.
+void shaderDbCharts(size_t group, const std::vector<RunContent>& runs,
+                    const results::MeasureDeclaration& declaration, PayloadCache& payloads,
+                    HistoryView* view) {
+  const results::ShaderDbSpec& db = declaration.shader_db;
+  if (db.group_key.empty()) return;
+  for (const std::string& metric : db.metrics) {
+    const results::MetricSpec* spec = declaration.find(metric);
+    if (spec == nullptr) continue;
+    LineValues lines;
+    for (size_t run = 0; run < runs.size(); ++run) {
+      std::map<std::string, double> totals;
+      for (const StoredResult& stored : runs[run].results) {
+        if (stored.measure != declaration.measure) continue;
+        for (const results::MetricRow& row : payloads.get(stored.payload).rows) {
+          const auto key = row.keys.find(db.group_key);
+          if (row.status != results::MeasureStatus::kOk || key == row.keys.end()) continue;
+          for (const results::Metric& m : row.metrics) {
+            if (m.name == metric) totals[key->second] += m.value;
+          }
+        }
+      }
+      for (const auto& [name, total] : totals) lines[name][run].push_back(total);
+    }
+    addChart(group, declaration.measure, "total " + spec->name,
+             std::string(results::toString(spec->unit)),
+             std::string(results::toString(spec->direction)), lines, spec->direction,
+             ReportOptions{}, view);
+  }
+}
+
 void timingChart(size_t group, const std::vector<RunContent>& runs, const std::string& measure,
                  const ReportOptions& options, HistoryView* view) {
   LineValues lines;
@@ -204,6 +236,7 @@ HistoryView buildHistory(HistoryDb& history, const ReportOptions& options) {
     measures.erase(std::unique(measures.begin(), measures.end()), measures.end());
     for (const std::string& measure : measures) {
       metricCharts(g, runs, *latestDeclaration(runs, measure), options, payloads, &view);
+      shaderDbCharts(g, runs, *latestDeclaration(runs, measure), payloads, &view);
       timingChart(g, runs, measure, options, &view);
     }
     std::vector<Step> steps = findSteps(runs, g, options, payloads);

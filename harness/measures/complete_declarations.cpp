@@ -6,10 +6,12 @@ namespace tb::measures {
 
 void completeDeclarations(results::Results* results) {
   for (results::MeasureDeclaration& declaration : results->measures) {
-    if (!declaration.decision_inputs.empty()) continue;
-    if (const Measure* measure = MeasureRegistry::instance().find(declaration.measure)) {
+    const Measure* measure = MeasureRegistry::instance().find(declaration.measure);
+    if (measure == nullptr) continue;
+    if (declaration.decision_inputs.empty()) {
       declaration.decision_inputs = measure->info().decision_inputs;
     }
+    if (declaration.shader_db.group_key.empty()) declaration.shader_db = measure->info().shader_db;
   }
 }
 

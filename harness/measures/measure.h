@@ -48,6 +48,8 @@ struct MeasureInfo {
   // The figures the decision, `advise`, the answers and the tables may read of its rows
   // (results::DecisionInput): harness/report finds them by role, never by name.
   std::vector<results::DecisionInput> decision_inputs = {};
+  // The shader-db summary `compare` prints of its rows (MeasureDeclaration::shader_db).
+  results::ShaderDbSpec shader_db = {};
 };
 
 // What a measure needs from a technique instance and the run. The suite runs a measure
@@ -116,6 +118,9 @@ struct MeasureRequirements {
   // suite then hands it a DisplacedPatches and MeasureInput::displacement, and adds the row
   // keys `displacement` and `sampling`. Other measures never see a displaced surface.
   bool displaced_surfaces = false;
+  // The figures follow the technique × variant, not the input (the ISA measure's compiled
+  // shaders): the suite runs the measure on the technique's first supported input alone.
+  bool first_input_only = false;
   bool has(MeasureNeed need) const {
     return std::find(needs.begin(), needs.end(), need) != needs.end();
   }

@@ -17,7 +17,8 @@ results::MeasureDeclaration declarationOf(const MeasureInfo& info) {
           .plots = info.plots,
           .control_rows = info.control_rows,
           .comparisons = info.comparisons,
-          .decision_inputs = info.decision_inputs};
+          .decision_inputs = info.decision_inputs,
+          .shader_db = info.shader_db};
 }
 
 const view::CameraPath& requireCameraPath(const MeasureInput& input) {

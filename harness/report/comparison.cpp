@@ -69,7 +69,8 @@ std::vector<Compared> comparedRows(const results::Results& results,
   return rows;
 }
 
-// The declared facets, then every other row key (not the column key) with several values.
+// The declared facets, then every other row key (not the column key, not an ignored key)
+// with several values.
 std::vector<std::string> facetsOf(const results::ComparisonSpec& spec,
                                   const std::vector<Compared>& rows) {
   std::vector<std::string> facets = spec.facets;
@@ -82,7 +83,9 @@ std::vector<std::string> facetsOf(const results::ComparisonSpec& spec,
     for (const std::string& key : keys) values[key].insert(keyOf(*c.row, key));
   }
   for (const auto& [key, seen] : values) {
+    const auto& ignored = spec.ignore_keys;
     if (seen.size() > 1 && key != spec.column_key &&
+        std::find(ignored.begin(), ignored.end(), key) == ignored.end() &&
         std::find(facets.begin(), facets.end(), key) == facets.end()) {
       facets.push_back(key);
     }

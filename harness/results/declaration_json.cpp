@@ -65,6 +65,7 @@ Json comparisonsToJson(const std::vector<ComparisonSpec>& specs) {
                            {"valid_flag", spec.valid_flag},
                            {"extra_columns", extra},
                            {"facets", spec.facets}});
+    if (!spec.ignore_keys.empty()) comparisons.back()["ignore_keys"] = spec.ignore_keys;
   }
   return comparisons;
 }
@@ -83,6 +84,9 @@ ComparisonSpec comparisonFromJson(const Json& json, const std::string& at) {
                                   field<std::string>(extra[i], "metric", column_at)});
   }
   spec.facets = field<std::vector<std::string>>(json, "facets", at);
+  if (json.contains("ignore_keys")) {
+    spec.ignore_keys = field<std::vector<std::string>>(json, "ignore_keys", at);
+  }
   return spec;
 }
 
@@ -157,6 +161,11 @@ Json toJson(const MeasureDeclaration& declaration) {
   if (!declaration.decision_inputs.empty()) {
     json["decision_inputs"] = decisionInputsToJson(declaration.decision_inputs);
   }
+  if (!declaration.shader_db.group_key.empty()) {
+    json["shader_db"] = {{"group_key", declaration.shader_db.group_key},
+                         {"ignore_keys", declaration.shader_db.ignore_keys},
+                         {"metrics", declaration.shader_db.metrics}};
+  }
   return json;
 }
 
@@ -205,6 +214,13 @@ MeasureDeclaration declarationFromJson(const Json& json, const std::string& wher
       declaration.decision_inputs.push_back(
           decisionInputFromJson(inputs[i], where + ".decision_inputs[" + std::to_string(i) + "]"));
     }
+  }
+  if (json.contains("shader_db")) {
+    const Json db = field<Json>(json, "shader_db", where);
+    const std::string at = where + ".shader_db";
+    declaration.shader_db = {field<std::string>(db, "group_key", at),
+                             field<std::vector<std::string>>(db, "ignore_keys", at),
+                             field<std::vector<std::string>>(db, "metrics", at)};
   }
   return declaration;
 }

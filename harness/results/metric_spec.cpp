@@ -11,7 +11,7 @@ struct UnitText {
   std::string_view spelling;
   std::string_view description;
 };
-constexpr std::array<UnitText, 13> kUnits{{
+constexpr std::array<UnitText, 14> kUnits{{
     {Unit::kCount, "count", "count"},
     {Unit::kBytes, "bytes", "bytes"},
     {Unit::kRatio, "ratio", "ratio"},
@@ -25,6 +25,7 @@ constexpr std::array<UnitText, 13> kUnits{{
     {Unit::kId, "id", "index (-1: none)"},
     {Unit::kFlag, "flag", "0 or 1"},
     {Unit::kEdgeParameter, "edge_parameter", "edge parameter (0 to 1)"},
+    {Unit::kCycles, "cycles", "clock cycles (the compiler's estimate)"},
 }};
 
 struct DirectionText {

@@ -30,6 +30,7 @@ enum class Unit {
   kId,             // "id": an index (patch, local edge or corner); -1 for none
   kFlag,           // "flag": 0 or 1
   kEdgeParameter,  // "edge_parameter": position along an edge, 0 at its first corner, 1 at the next
+  kCycles,         // "cycles": a compiler's estimate of shader clock cycles (ACO's latency)
 };
 
 // Which way a change is an improvement. kNone is declared explicitly for context figures
@@ -121,7 +122,22 @@ struct ComparisonSpec {
   // "asset" or row keys: a table (chart) per combination of values. Any other row key of the
   // compared rows with more than one value splits the tables too (spacing in --suite full).
   std::vector<std::string> facets = {"asset"};
+  // Row keys that never split the tables: they vary with the column (the name a compiler
+  // gives an executable on each family).
+  std::vector<std::string> ignore_keys = {};
   bool operator==(const ComparisonSpec&) const = default;
+};
+
+// A compiler engineer's summary of a measure's rows, the way Mesa's shader-db reports a
+// compiler change: per value of `group_key` (one summary per GPU family), each metric's
+// total over the programs both runs have, over the programs it changed in, and how many
+// it helped and hurt (by the metric's direction). A program is a row, named by its
+// record's technique, variant and asset and its keys but `group_key` and `ignore_keys`.
+struct ShaderDbSpec {
+  std::string group_key;                 // "family"
+  std::vector<std::string> ignore_keys;  // keys that do not name a program ("driver")
+  std::vector<std::string> metrics;      // in print order
+  bool operator==(const ShaderDbSpec&) const = default;
 };
 
 // A measure's declaration, as results.json and the renderers see it.
@@ -144,6 +160,8 @@ struct MeasureDeclaration {
   std::vector<ComparisonSpec> comparisons = {};
   // The figures a decision, the answers and the report's tables read (decision_input.h).
   std::vector<DecisionInput> decision_inputs = {};
+  // The shader-db summary `compare` prints of the measure (empty group_key: none).
+  ShaderDbSpec shader_db = {};
   const MetricSpec* find(std::string_view name) const;
 };
 

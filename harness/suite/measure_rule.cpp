@@ -50,6 +50,7 @@ bool measureRuns(const measures::MeasureRequirements& requirements,
   }
   if (requirements.has(measures::MeasureNeed::kWaveField) && !capabilities.wave_field) return false;
   if (requirements.technique_filter && !requirements.technique_filter(technique)) return false;
+  if (requirements.first_input_only && !standing.first_input) return false;
   return policyAdmits(requirements.variants, standing);
 }
 

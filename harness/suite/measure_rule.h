@@ -31,6 +31,8 @@ struct VariantStanding {
   bool full_suite = false;  // the run is --suite full
   // VariantInfo::evaluation_order_only: the default's surface in another float order.
   bool same_surface_as_default = false;
+  // The technique's first supported input of the run (SuiteInput::first_supported).
+  bool first_input = true;
 };
 
 // True when every need the suite decides on (surface, simulation, constraint solver, wave

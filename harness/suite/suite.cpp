@@ -210,9 +210,14 @@ GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques
     if (skip_controls) {
       std::erase_if(variants, [](const techniques::VariantInfo& v) { return !v.control.empty(); });
     }
-    const std::vector<SuiteInput> inputs =
-        inputsFor(*technique, all.refs, all.meshes, all.scenarios, all.displacements,
-                  all.displacement_meshes);
+    std::vector<SuiteInput> inputs = inputsFor(*technique, all.refs, all.meshes, all.scenarios,
+                                               all.displacements, all.displacement_meshes);
+    for (SuiteInput& input : inputs) {
+      if (input.displacement) continue;
+      if (input.is_asset() && !technique->checkSupport(*input.mesh).empty()) continue;
+      input.first_supported = true;
+      break;
+    }
     for (size_t i = 0; i < inputs.size(); ++i) {
       plan.groups.push_back({technique, variants, inputs[i], i, inputs.size(), plan.total});
     }

@@ -195,7 +195,7 @@ StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
       is_default,
       default_footprint->has_value() ||
           technique.info().family == techniques::TechniqueFamily::kSimulation,
-      full, variant.evaluation_order_only};
+      full, variant.evaluation_order_only, input.first_supported};
   bool any_may_run = false;
   for (const measures::Measure* measure : run.measures) {
     any_may_run |=
@@ -233,7 +233,8 @@ StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
   std::vector<const measures::Measure*> runnable;
   for (const measures::Measure* measure : run.measures) {
     if (measureRuns(measure->requirements(), technique, capabilitiesOf(*instance),
-                    {is_default, own_patch_data, full, variant.evaluation_order_only}) &&
+                    {is_default, own_patch_data, full, variant.evaluation_order_only,
+                     input.first_supported}) &&
         ownsMeasure(run.shard, technique.info().id, variant.name, input.name, measure->info().id)) {
       runnable.push_back(measure);
     }

@@ -21,6 +21,9 @@ struct SuiteInput {
   const techniques::Scenario* scenario = nullptr;
   // A displaced asset: `mesh` displaced by this map (for its technique and variant only).
   const measures::DisplacedInput* displacement = nullptr;
+  // The first input of the technique's run that it supports (checkSupport): measures
+  // with MeasureRequirements::first_input_only run on it alone.
+  bool first_supported = false;
   bool is_asset() const { return scenario == nullptr; }
 };
 

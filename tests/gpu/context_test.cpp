@@ -54,8 +54,8 @@ TEST(Context, FeatureListNamesEveryFeature) {
   DeviceFeatures f;
   f.transform_feedback = true;
   const auto list = featureList(f);
-  EXPECT_EQ(list.size(), 10u);
-  EXPECT_EQ(list.back().first, "primitivesGeneratedQueryWithRasterizerDiscard");
+  EXPECT_EQ(list.size(), 11u);
+  EXPECT_EQ(list.back().first, "pipelineExecutableInfo");
   EXPECT_EQ(list.front().first, "tessellationShader");
   EXPECT_EQ(firstMissingFeature(f, tessCaptureFeatures()), "tessellationShader");
   EXPECT_EQ(firstMissingFeature(tessCaptureFeatures(), f), "");

@@ -9,11 +9,13 @@
 // technique whose shader folder has `bezier_position.tese` (a position-only probe whose
 // specialisation constant 0 selects the order) — today `acc`.
 #include <array>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "harness/measures/common/instruction_counts/instructions.h"
+#include "harness/measures/common/isa/isa_compilers.h"
 #include "harness/measures/measure.h"
 #include "harness/measures/metric_table.h"
 #include "shaders/embedded_shaders.h"
@@ -47,6 +49,7 @@ struct PublishedComparison {
   double published_alu = 0;
   double published_loads = 0;  // 0: not published
   StageInstructionCounts ours;
+  std::optional<double> rdna2;  // the stage's machine instructions on navi21, when compiled
 };
 
 // The published figures are context; ours are instruction counts, better lower.
@@ -69,12 +72,40 @@ const MetricTable<PublishedComparison>& comparisonTable() {
       // ours_loads: instructions; 0 (best), unbounded (worst); vector loads and stores
       {"ours_loads", results::Unit::kCount, D::kLowerIsBetter,
        [](const S& s) { return double(s.ours.vector.load_store); }},
+      // ours_rdna2_instructions: instructions; 0 (best), unbounded (worst); machine
+      //   instructions of the same stage's executable on RDNA2 (navi21, RADV's ACO through its
+      //   null device: the isa measure's compiler); absent where the radeon ICD is not
+      {"ours_rdna2_instructions", results::Unit::kCount, D::kLowerIsBetter,
+       [](const S& s) { return s.rdna2; }},
   };
   return kTable;
 }
 
 std::string probePath(const techniques::Technique& technique) {
   return technique.info().id + "/bezier_position.tese";
+}
+
+// Machine instructions of `evaluation_shader` (specialised by `specialization`) on RDNA2,
+// compiled behind the program's own control shader; nullopt without the radeon ICD.
+std::optional<double> rdna2Instructions(const gpu::GpuPatchProgram& program,
+                                        const std::string& evaluation_shader,
+                                        const std::vector<uint32_t>& specialization) {
+  isa::PipelineRequest request;
+  request.program.control_shader = program.control_shader;
+  request.program.evaluation_shader = evaluation_shader;
+  request.program.domain = program.domain;
+  request.program.input_vertices_per_patch = program.input_vertices_per_patch;
+  request.program.storage_buffers.resize(program.storage_buffers.size());
+  request.program.specialization = specialization;
+  const isa::FamilyCompile compiled = isa::compileOn("navi21", request);
+  if (!compiled.outcome || !compiled.outcome->error.empty()) return std::nullopt;
+  for (const gpu::PipelineExecutable& e : compiled.outcome->executables) {
+    if ((e.stages & VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT) == 0) continue;
+    for (const gpu::ExecutableStatistic& s : e.statistics) {
+      if (s.name == "Instructions") return s.value;
+    }
+  }
+  return std::nullopt;
 }
 
 class PublishedFiguresMeasure final : public Measure {
@@ -108,11 +139,16 @@ class PublishedFiguresMeasure final : public Measure {
              "(normal from the derivatives), up to 24 loads / ~120 ALU for an extraordinary one "
              "(compact tangent patches). Ours always read 16 geometry + 24 tangent-patch points "
              "(the no_tangent variant fills the tangent patches with the derivative patches), so "
-             "both rows are the same stage"},
-        .decision_inputs = {{.role = results::DecisionRole::kPublishedCost,
-                             .label = "published and our shader costs",
-                             .metrics = {"published_alu", "published_loads", "ours_alu_vector",
-                                         "ours_alu_scalar", "ours_loads"}}}};
+             "both rows are the same stage",
+             "ours_rdna2_instructions: what RDNA2's compiler makes of the same stage (RADV's "
+             "ACO on navi21, the isa measure's null-device compiler, the probe or the domain "
+             "shader behind the program's own control shader): machine instructions, beside "
+             "the D3D11 counts the papers give and the SPIR-V counts"},
+        .decision_inputs = {
+            {.role = results::DecisionRole::kPublishedCost,
+             .label = "published and our shader costs",
+             .metrics = {"published_alu", "published_loads", "ours_alu_vector", "ours_alu_scalar",
+                         "ours_loads", "ours_rdna2_instructions"}}}};
     return kInfo;
   }
   // Only techniques that ship the probe shader (acc); it reads their GPU program.
@@ -129,26 +165,31 @@ class PublishedFiguresMeasure final : public Measure {
     result.measure = info().id;
     const std::string probe = probePath(input.technique);
     try {
+      const auto programs = input.patches->gpuPrograms();
+      const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front();
       for (const PublishedOrder& order : kNvidiaTalkOrders) {
         const StageInstructionCounts counts = cachedEmbeddedShaderCounts(probe, {order.order});
         results::MetricRow row;
         row.keys["source"] = kNvidiaTalk;
         row.keys["what"] = std::string("bezier position, ") + order.name;
-        row.metrics = comparisonTable().metrics({order.published_instructions, 0, counts});
+        const std::optional<double> rdna2 =
+            program ? rdna2Instructions(*program, probe, {order.order}) : std::nullopt;
+        row.metrics = comparisonTable().metrics({order.published_instructions, 0, counts, rdna2});
         result.rows.push_back(std::move(row));
       }
       // The domain shader of the technique's program, default order (symmetric_fma).
-      const auto programs = input.patches->gpuPrograms();
-      if (const gpu::GpuPatchProgram* program = programs.empty() ? nullptr : &programs.front()) {
+      if (program != nullptr) {
         const StageInstructionCounts tes =
             cachedEmbeddedShaderCounts(program->evaluation_shader, program->specialization);
+        const std::optional<double> rdna2 =
+            rdna2Instructions(*program, program->evaluation_shader, program->specialization);
         for (const auto& [what, published_loads, published_alu] :
              {std::tuple{"regular patch", 16.0, 73.0},
               std::tuple{"extraordinary patch", 24.0, 120.0}}) {
           results::MetricRow row;
           row.keys["source"] = kSubD10;
           row.keys["what"] = std::string(what) + ", " + program->evaluation_shader;
-          row.metrics = comparisonTable().metrics({published_alu, published_loads, tes});
+          row.metrics = comparisonTable().metrics({published_alu, published_loads, tes, rdna2});
           result.rows.push_back(std::move(row));
         }
       }
