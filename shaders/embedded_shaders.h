@@ -22,4 +22,7 @@ std::vector<std::string_view> embeddedShaderPaths();
 // any run: lookups do not lock.
 bool registerShader(std::string path, std::vector<uint32_t> words);
 
+// True when `relative_path` is a plug-in's shader (registerShader), not one built in.
+bool isRegisteredShader(std::string_view relative_path);
+
 }  // namespace tb::gpu

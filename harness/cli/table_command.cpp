@@ -49,6 +49,9 @@ CLI::App* addTableCommand(CLI::App& app, TableArgs& args) {
       ->transform(markdownAlias())
       ->capture_default_str();
   table->add_flag("--per-asset", args.per_asset, "a line per technique x variant x asset");
+  table->add_flag("--comparisons", args.comparisons,
+                  "the measure's side-by-side tables (one column per policy, family ...), as "
+                  "report.md opens its section");
   table->add_flag(
       "--published", args.published,
       "the published tables beside ours: memory (NVIDIA's displacement subdivision "
@@ -106,6 +109,17 @@ int runTable(const TableArgs& args) {
       throw UsageError("--metric", metric,
                        "not a metric of " + args.measure + " (metrics: " + joined(known) + ")");
     }
+  }
+  if (args.comparisons) {
+    const std::vector<report::TextTable> tables = report::comparisonTables(results, *declaration);
+    if (tables.empty()) {
+      throw mesh::InputError(args.run_dir + "/results.json", "--comparisons",
+                             args.measure + " declares no comparison the run has rows for");
+    }
+    for (size_t i = 0; i < tables.size(); ++i) {
+      fmt::print("{}{}", i > 0 ? "\n" : "", report::renderTable(tables[i], *format));
+    }
+    return 0;
   }
   report::SummaryTableOptions options;
   options.measure = args.measure;

@@ -15,7 +15,8 @@ struct TableArgs {
   std::vector<std::string> metrics;  // empty: the declaration's headline metrics
   std::string format = "markdown";   // markdown (alias md) | csv | latex
   bool per_asset = false;
-  bool published = false;  // the published figures beside ours (memory, seed_figures)
+  bool published = false;    // the published figures beside ours (memory, seed_figures)
+  bool comparisons = false;  // the measure's side-by-side tables (report.md's section opening)
 };
 
 CLI::App* addTableCommand(CLI::App& app, TableArgs& args);

@@ -106,6 +106,9 @@ ComparisonLine lineOf(const results::ComparisonSpec& spec, results::Direction di
         const bool valid =
             spec.valid_flag.empty() || metricOf(*c->row, spec.valid_flag).value_or(1) != 0;
         if (valid) cell.value = metricOf(*c->row, spec.metric);
+        for (const std::string& more : spec.cell_metrics) {
+          cell.more.push_back(valid ? metricOf(*c->row, more) : std::nullopt);
+        }
         break;
       }
       cell.value = metricOf(*c->row, spec.extra_columns[i - group.key_columns].metric);

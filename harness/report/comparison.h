@@ -20,6 +20,8 @@ struct ComparisonCell {
   // metric is lower-is-better); nullopt when the line has no such row, the row lacks the
   // metric, or its valid flag is 0 (e.g. the 1 px target not reached).
   std::optional<double> value;
+  // The spec's cell_metrics of the same row, in order (nullopt where the row lacks one).
+  std::vector<std::optional<double>> more = {};
   // The best of the line's column_key cells (ties: each of them); never where the group has
   // one column_key value only.
   bool best = false;

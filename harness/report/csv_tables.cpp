@@ -133,6 +133,12 @@ std::vector<std::pair<std::string, std::string>> renderCsvTables(const results::
     }
   }
   if (!warnings.empty()) files.emplace_back("tables/warnings.csv", warnings);
+  std::string skipped;
+  for (const results::Skip& skip : results.skipped) {
+    if (skipped.empty()) appendLine({"technique", "asset", "reason"}, &skipped);
+    appendLine({skip.technique, skip.asset, skip.reason}, &skipped);
+  }
+  if (!skipped.empty()) files.emplace_back("tables/skipped.csv", skipped);
   if (!notes.empty()) files.emplace_back("tables/record_notes.csv", notes);
   return files;
 }

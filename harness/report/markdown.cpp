@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "harness/report/markdown_sections.h"
 #include "harness/report/summary.h"
@@ -84,6 +87,33 @@ std::string formatMetricValue(const results::Metric& metric) {
   return fmt::format("{:.4g}", metric.value);
 }
 
+namespace {
+
+// The techniques × assets not measured, a line per technique (the assets by short name, the
+// first reason); every refusal with its reason is in tables/skipped.csv.
+void appendNotMeasured(const results::Results& results, std::string* out) {
+  *out += "## Not measured\n\nEvery refusal with its reason: `tables/skipped.csv`.\n\n";
+  appendHeader(out, {"technique", "assets", "reason (the first)"});
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const results::Skip*>> by_technique;
+  for (const results::Skip& skip : results.skipped) {
+    if (!by_technique.count(skip.technique)) order.push_back(skip.technique);
+    by_technique[skip.technique].push_back(&skip);
+  }
+  for (const std::string& technique : order) {
+    const std::vector<const results::Skip*>& skips = by_technique[technique];
+    std::string assets = std::to_string(skips.size()) + ":";
+    for (const results::Skip* skip : skips) {
+      assets +=
+          (assets.back() == ':' ? " " : ", ") + skip->asset.substr(skip->asset.rfind('/') + 1);
+    }
+    appendRow(out, {technique, assets, skips.front()->reason});
+  }
+  *out += "\n";
+}
+
+}  // namespace
+
 std::string renderMarkdown(const results::Results& results) {
   const results::RunContext& c = results.context;
   const std::vector<std::string> measures = measureIds(results);
@@ -119,13 +149,7 @@ std::string renderMarkdown(const results::Results& results) {
   for (const std::string& measure : measures) appendMeasureSection(results, measure, &out);
   appendContext(results, &out);
   appendAssets(results, &out);
-  if (!results.skipped.empty()) {
-    out += "## Not measured\n\n";
-    appendHeader(&out, {"technique", "asset", "reason"});
-    for (const results::Skip& skip : results.skipped)
-      appendRow(&out, {skip.technique, skip.asset, skip.reason});
-    out += "\n";
-  }
+  if (!results.skipped.empty()) appendNotMeasured(results, &out);
   size_t warnings = 0;
   size_t records_warned = 0;
   for (const results::Record& record : results.records) {

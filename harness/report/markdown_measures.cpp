@@ -206,7 +206,11 @@ std::string comparisonCell(const ComparisonCell& cell, const std::string& unit) 
   if (!cell.value) return "—";
   const std::string figure =
       unit == "count" ? fmt::format("{:.0f}", *cell.value) : formatFigure(*cell.value, unit);
-  return cell.best ? "**" + figure + "**" : figure;
+  std::string text = cell.best ? "**" + figure + "**" : figure;
+  for (const std::optional<double>& more : cell.more) {
+    text += " / " + (more ? fmt::format("{:.6g}", *more) : std::string("—"));
+  }
+  return text;
 }
 
 // The facets' values after the first ("camera_path orbit"): one table each.

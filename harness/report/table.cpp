@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "harness/report/answers.h"
+#include "harness/report/comparison.h"
 #include "harness/report/decision_inputs.h"
 #include "harness/report/published_figures.h"
 #include "harness/report/row_values.h"
@@ -51,6 +52,41 @@ std::vector<std::string> runContextFootnote(const results::Results& results) {
   }
   lines.push_back("Libraries: " + orNone(libraries, "not recorded") + ".");
   return lines;
+}
+
+std::vector<TextTable> comparisonTables(const results::Results& results,
+                                        const results::MeasureDeclaration& declaration) {
+  std::vector<TextTable> tables;
+  for (const results::ComparisonSpec& spec : declaration.comparisons) {
+    const ComparisonTable comparison = comparisonTable(results, declaration, spec);
+    for (const ComparisonGroup& group : comparison.groups) {
+      TextTable table;
+      table.title = spec.title + (group.facets.empty() ? "" : " (" + group.name() + ")");
+      table.header = {"technique"};
+      table.numeric = {false};
+      for (const std::string& column : group.columns) {
+        table.header.push_back(column + (comparison.unit.empty() || column != group.columns.front()
+                                             ? ""
+                                             : " (" + comparison.unit + ")"));
+        table.numeric.push_back(true);
+      }
+      for (const ComparisonLine& line : group.lines) {
+        std::vector<std::string> row{line.technique};
+        for (const ComparisonCell& cell : line.cells) {
+          std::string text = cell.value ? fmt::format("{:.6g}", *cell.value) : "";
+          for (const std::optional<double>& more : cell.more) {
+            text += " / " + (more ? fmt::format("{:.6g}", *more) : std::string("—"));
+          }
+          row.push_back(text);
+        }
+        table.rows.push_back(std::move(row));
+      }
+      table.footnote = {spec.title + " (measure " + declaration.measure + ")"};
+      for (std::string& line : runContextFootnote(results)) table.footnote.push_back(line);
+      tables.push_back(std::move(table));
+    }
+  }
+  return tables;
 }
 
 TextTable summaryTable(const results::Results& results, const SummaryTableOptions& options) {

@@ -35,6 +35,12 @@ struct SummaryTableOptions {
 // title and the run's context.
 TextTable summaryTable(const results::Results& results, const SummaryTableOptions& options);
 
+// The measure's declared side-by-side comparisons (comparison.h), a table per group: the
+// technique, then a column per column-key value and the extra columns; the title is the
+// comparison's lead line with the group's name; footnote: the run's context.
+std::vector<TextTable> comparisonTables(const results::Results& results,
+                                        const results::MeasureDeclaration& declaration);
+
 // The measures with a published table: "memory" (NVIDIA's displacement subdivision surfaces
 // talk's memory table) and "published_figures" (its Bezier instruction counts and the DirectX SDK
 // SubD10 sample's ACC shader costs).

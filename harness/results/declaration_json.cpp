@@ -66,6 +66,7 @@ Json comparisonsToJson(const std::vector<ComparisonSpec>& specs) {
                            {"extra_columns", extra},
                            {"facets", spec.facets}});
     if (!spec.ignore_keys.empty()) comparisons.back()["ignore_keys"] = spec.ignore_keys;
+    if (!spec.cell_metrics.empty()) comparisons.back()["cell_metrics"] = spec.cell_metrics;
   }
   return comparisons;
 }
@@ -86,6 +87,9 @@ ComparisonSpec comparisonFromJson(const Json& json, const std::string& at) {
   spec.facets = field<std::vector<std::string>>(json, "facets", at);
   if (json.contains("ignore_keys")) {
     spec.ignore_keys = field<std::vector<std::string>>(json, "ignore_keys", at);
+  }
+  if (json.contains("cell_metrics")) {
+    spec.cell_metrics = field<std::vector<std::string>>(json, "cell_metrics", at);
   }
   return spec;
 }

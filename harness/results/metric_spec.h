@@ -125,6 +125,9 @@ struct ComparisonSpec {
   // Row keys that never split the tables: they vary with the column (the name a compiler
   // gives an executable on each family).
   std::vector<std::string> ignore_keys = {};
+  // More figures of the same row, shown after `metric` in each column_key cell
+  // ("433 / 48 / 20"); the bold and the charts follow `metric` alone. Empty: none.
+  std::vector<std::string> cell_metrics = {};
   bool operator==(const ComparisonSpec&) const = default;
 };
 

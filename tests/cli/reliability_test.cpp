@@ -396,6 +396,14 @@ TEST(NoDevice, CpuMeasuresRunAndGpuRowsAreSkippedWithTheReason) {
           continue;
         }
         EXPECT_EQ(row["status"], "skipped") << id << " " << row["keys"].dump();
+        if (id == "isa") {
+          // Its compilers are drivers too: VK_ICD_FILENAMES here names no radeon ICD.
+          const std::string reason = row["reason"];
+          EXPECT_TRUE(reason.find("names no radeon ICD") != std::string::npos ||
+                      reason.rfind("no Vulkan device", 0) == 0)
+              << reason;
+          continue;
+        }
         EXPECT_TRUE(gpu_part) << id << " " << row["keys"].dump();
         EXPECT_EQ(row["reason"].get<std::string>().rfind("no Vulkan device", 0), 0u)
             << row["reason"];

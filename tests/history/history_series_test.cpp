@@ -65,6 +65,27 @@ TEST(HistorySeries, AFigureChangedAtOneCommitIsExactlyOneStep) {
       << markdown;
 }
 
+TEST(HistorySeries, AShaderDbMeasureGetsItsTotalPerFamilyOverTheCommits) {
+  const fs::path dir = testing::scratchDirectory("history_shader_db");
+  SyntheticRun a = commit(0, 0.001), b = commit(1, 0.001);
+  a.isa_instructions = 100;
+  b.isa_instructions = 120;
+  history::HistoryDb db = historyOf(dir, {a, b});
+  const history::HistoryView view = history::buildHistory(db, {});
+  const history::Chart* total = nullptr;
+  for (const history::Chart& chart : view.charts) {
+    if (chart.measure == "isa" && chart.metric == "total instructions") total = &chart;
+    // The control: a measure without a shader-db summary gets no total.
+    EXPECT_FALSE(chart.measure == "error" && chart.metric.starts_with("total")) << chart.metric;
+  }
+  ASSERT_NE(total, nullptr);
+  ASSERT_EQ(total->series.size(), 2u);  // navi21, polaris10
+  EXPECT_EQ(total->series[0].name, "navi21");
+  ASSERT_EQ(total->series[0].points.size(), 2u);
+  EXPECT_DOUBLE_EQ(total->series[0].points[0].value, 210);  // 100 + 110
+  EXPECT_DOUBLE_EQ(total->series[0].points[1].value, 250);  // 120 + 130
+}
+
 TEST(HistorySeries, AThresholdAboveTheChangeFlagsNothing) {
   const fs::path dir = testing::scratchDirectory("history_threshold");
   history::HistoryDb db = historyOf(dir, {commit(0, 0.001), commit(1, 0.0011)});

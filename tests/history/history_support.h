@@ -21,7 +21,36 @@ struct SyntheticRun {
   std::string device = "llvmpipe (test)";
   double acc_hausdorff = 0.001;      // acc/default's worst figure on every asset, rel_diag
   std::vector<double> samples = {};  // timings.json samples of every entry (none: no file)
+  // > 0: one more measure, "isa", with a shader-db summary (group key "family"): acc/default
+  // has two programs on each of polaris10 and navi21, of `isa_instructions` and 10 more.
+  double isa_instructions = 0;
 };
+
+// The shader-db measure of SyntheticRun::isa_instructions.
+inline void addShaderDbMeasure(const SyntheticRun& run, results::Results* r) {
+  results::MeasureDeclaration isa{
+      "isa",
+      "ISA",
+      "compiled instructions",
+      {{"instructions", results::Unit::kCount, results::Direction::kLowerIsBetter}},
+      {"instructions"},
+      {},
+      {},
+      {}};
+  isa.shader_db = {"family", {}, {"instructions"}};
+  r->measures.push_back(isa);
+  results::Record record{"acc", "default", "opensubdiv/catmark_cube", {}, {}, {}};
+  results::MeasureResult result{"isa", results::MeasureStatus::kOk, "", {}, {}};
+  for (const char* family : {"polaris10", "navi21"}) {
+    for (const char* program : {"tessellator", "compute"}) {
+      const double extra = std::string(program) == "compute" ? 10 : 0;
+      result.rows.push_back({{{"family", family}, {"pipeline", program}},
+                             {{"instructions", run.isa_instructions + extra, ""}}});
+    }
+  }
+  record.measures.push_back(std::move(result));
+  r->records.push_back(std::move(record));
+}
 
 inline results::Results syntheticResults(const SyntheticRun& run) {
   results::Results r;
@@ -51,6 +80,7 @@ inline results::Results syntheticResults(const SyntheticRun& run) {
       r.records.push_back(std::move(record));
     }
   }
+  if (run.isa_instructions > 0) addShaderDbMeasure(run, &r);
   return r;
 }
 

@@ -154,6 +154,46 @@ TEST(Capabilities, SurfaceAndSimulationDoublesRunThroughTheSuiteWithTheMeasuresT
   }
 }
 
+// Counts patches like SurfaceCountMeasure, on the technique's first supported input alone.
+class FirstInputMeasure final : public measures::Measure {
+ public:
+  const measures::MeasureInfo& info() const override {
+    static const measures::MeasureInfo kInfo{
+        .id = "test_first_input",
+        .title = "patches, once per variant",
+        .description = "patch count",
+        .metrics = {{"patches", results::Unit::kCount, results::Direction::kNone}}};
+    return kInfo;
+  }
+  measures::MeasureRequirements requirements() const override {
+    measures::MeasureRequirements r{
+        {measures::MeasureNeed::kSurface}, measures::VariantPolicy::kEveryVariant, {}};
+    r.first_input_only = true;
+    return r;
+  }
+  results::MeasureResult run(const measures::MeasureInput& input) const override {
+    return SurfaceCountMeasure().run(input);
+  }
+};
+
+TEST(Capabilities, AFirstInputOnlyMeasureRunsOnTheFirstSupportedInputOfEachVariant) {
+  const SurfaceDoubleTechnique surface;
+  const auto recordsOf = [&](const measures::Measure& measure) {
+    suite::SuiteSelection selection;
+    selection.techniques = {&surface};
+    selection.assets = {suite::resolveAsset("catmark_cube"), suite::resolveAsset("catmark_torus")};
+    selection.measures = {&measure};
+    results::Results results;
+    suite::runSuite(selection, nullptr, &results);
+    return results.records;
+  };
+  const std::vector<results::Record> once = recordsOf(FirstInputMeasure());
+  ASSERT_EQ(once.size(), 2u);  // the two variants, on the first asset only
+  for (const results::Record& record : once) EXPECT_EQ(record.asset, "opensubdiv/catmark_cube");
+  // The control: the same measure on every input.
+  EXPECT_EQ(recordsOf(SurfaceCountMeasure()).size(), 4u);
+}
+
 TEST(Capabilities, EachSimulationMeasureGetsAFreshSimulation) {
   const SimulationDoubleTechnique chain;
   const SimulationStepMeasure simulation_measure;
@@ -187,7 +227,7 @@ TEST(Capabilities, OnASimulationOnlyTheMeasuresForSimulationsRun) {
   for (const results::MeasureResult& measure : results.records[0].measures)
     ids.push_back(measure.measure);
   // wave_error is for wave particles only; the surface measures need a surface.
-  EXPECT_EQ(ids, (std::vector<std::string>{"instructions", "memory", "sim_cost"}));
+  EXPECT_EQ(ids, (std::vector<std::string>{"instructions", "isa", "memory", "sim_cost"}));
   for (const results::MeasureResult& measure : results.records[0].measures) {
     EXPECT_EQ(measure.status, results::MeasureStatus::kOk)
         << measure.measure << ": " << measure.reason;
@@ -197,7 +237,7 @@ TEST(Capabilities, OnASimulationOnlyTheMeasuresForSimulationsRun) {
   ASSERT_EQ(instructions.rows.size(), 1u);
   EXPECT_EQ(instructions.rows[0].status, results::MeasureStatus::kSkipped);
   // 4 masses x (position + velocity) in float: 32 bytes, as SpringChain::footprint says.
-  EXPECT_EQ(metric(results.records[0].measures[1].rows.at(0), "state_bytes").value, 32);
+  EXPECT_EQ(metric(results.records[0].measures[2].rows.at(0), "state_bytes").value, 32);
 }
 
 TEST(Capabilities, ASimulationRunsOnlyOnTheScenariosWrittenForIt) {
@@ -358,7 +398,7 @@ TEST(MeasureRule, RegisteredMeasuresDeclareWhatTheyDeclaredBefore) {
   for (const measures::Measure* measure : measures::MeasureRegistry::instance().all()) {
     const measures::MeasureRequirements r = measure->requirements();
     const std::string id = measure->info().id;
-    if (id == "memory" || id == "instructions") {
+    if (id == "memory" || id == "instructions" || id == "isa") {
       EXPECT_TRUE(r.has(measures::MeasureNeed::kSurfaceOrSimulation)) << id;
     } else if (id == "sim_cost" || id == "wave_error" || id == "convergence" || id == "stability") {
       EXPECT_TRUE(r.has(measures::MeasureNeed::kSimulation)) << id;

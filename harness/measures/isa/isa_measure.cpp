@@ -192,21 +192,19 @@ std::vector<results::ComparisonSpec> comparisons() {
        "with culling code)"},
       {"*tess_control",
        "control stage (the TCS; merged with the vertex shader from vega10, one executable)"}};
-  const std::pair<const char*, const char*> kMetrics[] = {
-      {"instructions", "machine instructions"},
-      {"vgprs", "vector registers"},
-      {"subgroups_per_simd", "subgroups per SIMD (higher is better)"}};
   for (const auto& [stages, stage_title] : kStages) {
-    for (const auto& [metric, metric_title] : kMetrics) {
-      specs.push_back(
-          {.title = std::string(metric_title) + " of the " + stage_title + " on each AMD family",
-           .where = {{"pipeline", "tessellator"}, {"stages", stages}},
-           .column_key = "family",
-           .metric = metric,
-           .extra_columns = {{"SPIR-V", "spirv_instructions"}},
-           .facets = {},
-           .ignore_keys = {"executable", "stages", "driver", "device", "asset"}});
-    }
+    specs.push_back(
+        {.title = "Machine instructions / VGPRs / subgroups per SIMD (higher is better) of the " +
+                  std::string(stage_title) +
+                  " on each AMD family; the SPIR-V instructions of "
+                  "its stages beside them",
+         .where = {{"pipeline", "tessellator"}, {"stages", stages}},
+         .column_key = "family",
+         .metric = "instructions",
+         .extra_columns = {{"SPIR-V", "spirv_instructions"}},
+         .facets = {},
+         .ignore_keys = {"executable", "stages", "driver", "device"},
+         .cell_metrics = {"vgprs", "subgroups_per_simd"}});
   }
   return specs;
 }
@@ -287,7 +285,10 @@ class IsaMeasure final : public Measure {
       pipelines = isa::simulationPipelines(*input.simulation);
     }
     pipelines = distinct(std::move(pipelines));
-    for (isa::NamedPipeline& p : pipelines) p.request.representations = true;
+    for (isa::NamedPipeline& p : pipelines) {
+      p.request.representations = true;
+      isa::attachPluginShaders(&p.request);
+    }
     if (pipelines.empty()) {
       result.rows.push_back(results::unmeasuredRow({}, results::MeasureStatus::kSkipped,
                                                    "the technique builds no GPU pipeline"));

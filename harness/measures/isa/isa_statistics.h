@@ -13,7 +13,8 @@
 namespace tb::measures::isa {
 
 // Every metric a row may carry: the driver's statistics in RADV's order, then
-// subgroup_size, spirv_instructions, then `statistic_value` (a statistic the table does not know, in its own row).
+// subgroup_size, spirv_instructions, then `statistic_value` (a statistic the table does not know,
+// in its own row).
 std::vector<results::MetricSpec> statisticSpecs();
 
 // The rows of one executable: one with `keys` plus executable and stages, holding every

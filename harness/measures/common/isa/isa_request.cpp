@@ -2,10 +2,12 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
 #include "core/gpu/compute_runner.h"
+#include "shaders/embedded_shaders.h"
 
 namespace tb::measures::isa {
 namespace {
@@ -53,8 +55,22 @@ void readProgram(const json& j, PipelineRequest* r) {
 
 }  // namespace
 
+void attachPluginShaders(PipelineRequest* request) {
+  const std::vector<std::string> stages =
+      request->kind == PipelineRequest::Kind::kPatchProgram
+          ? std::vector<std::string>{request->program.control_shader,
+                                     request->program.evaluation_shader}
+          : std::vector<std::string>{request->pass.shader};
+  for (const std::string& stage : stages) {
+    if (!gpu::isRegisteredShader(stage)) continue;
+    const std::span<const uint32_t> words = gpu::embeddedShader(stage);
+    request->plugin_shaders.push_back({stage, {words.begin(), words.end()}});
+  }
+}
+
 std::string toLine(const PipelineRequest& request) {
   json j{{"representations", request.representations}};
+  if (!request.plugin_shaders.empty()) j["plugin_shaders"] = request.plugin_shaders;
   if (request.kind == PipelineRequest::Kind::kPatchProgram) {
     j["patch_program"] = programJson(request);
   } else {
@@ -72,6 +88,10 @@ PipelineRequest requestFromLine(const std::string& line) {
   try {
     const json j = json::parse(line);
     r.representations = j.at("representations").get<bool>();
+    if (j.contains("plugin_shaders")) {
+      r.plugin_shaders =
+          j["plugin_shaders"].get<std::vector<std::pair<std::string, std::vector<uint32_t>>>>();
+    }
     if (j.contains("patch_program")) {
       readProgram(j["patch_program"], &r);
       return r;

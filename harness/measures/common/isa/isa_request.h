@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/gpu/compute_program_desc.h"
@@ -25,7 +26,14 @@ struct PipelineRequest {
   // kComputePass: the pass (buffers only by binding; push block only by size).
   gpu::GpuComputePass pass;
   bool representations = false;  // also the executables' assembly
+  // The SPIR-V of the stages a plug-in registered (gpu::isRegisteredShader), by path: the
+  // worker loads no plug-in, so it registers them before compiling. Built-in shaders go by
+  // name alone (the worker is the same build).
+  std::vector<std::pair<std::string, std::vector<uint32_t>>> plugin_shaders;
 };
+
+// Attaches the SPIR-V of the request's plug-in shaders (PipelineRequest::plugin_shaders).
+void attachPluginShaders(PipelineRequest* request);
 
 // The request as one line of JSON (keys sorted, so equal requests give equal lines: the
 // compile cache's key) and back. fromLine throws std::runtime_error on a malformed line.

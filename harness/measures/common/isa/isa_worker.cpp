@@ -9,6 +9,7 @@
 #include "core/gpu/compiler_device.h"
 #include "core/gpu/pipeline_executables.h"
 #include "harness/measures/common/isa/isa_request.h"
+#include "shaders/embedded_shaders.h"
 
 namespace tb::measures::isa {
 namespace {
@@ -17,6 +18,7 @@ CompileOutcome compile(VkDevice device, const std::string& line) {
   CompileOutcome outcome;
   try {
     const PipelineRequest request = requestFromLine(line);
+    for (const auto& [path, words] : request.plugin_shaders) gpu::registerShader(path, words);
     outcome.executables =
         request.kind == PipelineRequest::Kind::kPatchProgram
             ? gpu::patchProgramExecutables(device, request.program, request.build,
