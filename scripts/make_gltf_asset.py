@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the bundled glTF asset and its OBJ twin in assets/gltf/ (tessbench's own, CC0;
+"""Writes the bundled glTF asset and its OBJ twin in assets/full_suite/gltf/ (tessbench's own, CC0;
 the positions are OpenSubdiv's catmark_torus as tri_torus.obj has them).
 
 tri_torus_seams.glb   tri_torus (assets/tessbench/tri_torus.obj, 64 triangles) as an engine
@@ -27,7 +27,7 @@ import os
 import struct
 
 SOURCE = "assets/tessbench/tri_torus.obj"
-OUT = "assets/gltf"
+OUT = "assets/full_suite/gltf"
 
 
 def f32(x):
@@ -219,7 +219,7 @@ def twin_obj(positions, vertices, normals, faces, halves):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", default=OUT, help="output folder (default assets/gltf)")
+    parser.add_argument("--out", default=OUT, help="output folder (default assets/full_suite/gltf)")
     parser.add_argument("--subdivide", type=int, default=0,
                         help="split every triangle into 4 this many times first (4^N x 64 "
                              "triangles; written as tri_torus_seams_sN.glb/_twin.obj, not bundled)")

@@ -1,7 +1,7 @@
 // Issue 60 end to end: the bundled glTF asset is listed, runs, is advised on and tabled, and
 // gives the figures of its OBJ twin in every measure of every triangle technique.
 // Oracle: the twin's results (the same mesh written as OBJ `f v/vt/vn`,
-// assets/gltf/README.md), row for row; the crack rows' edge_kind keys.
+// assets/full_suite/gltf/README.md), row for row; the crack rows' edge_kind keys.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,8 +17,8 @@ namespace {
 using testing::runTessbenchSplit;
 using testing::SplitResult;
 
-constexpr const char* kSeamGlb = "gltf/tri_torus_seams";
-constexpr const char* kSeamTwin = "gltf/tri_torus_seams_twin";
+constexpr const char* kSeamGlb = "full_suite/gltf/tri_torus_seams";
+constexpr const char* kSeamTwin = "full_suite/gltf/tri_torus_seams_twin";
 
 TEST(GltfCli, ListAssetsShowsTheBundledGltfAsset) {
   const SplitResult r = runTessbenchSplit("list assets");
@@ -69,7 +69,7 @@ TEST(GltfCli, TheGlbAndItsObjTwinGiveEqualFiguresInEveryMeasure) {
 
 TEST(GltfCli, AdviseAndTableTakeTheGltfAsset) {
   const SplitResult advice =
-      runTessbenchSplit("advise " + testing::assetPath("gltf/tri_torus_seams.glb") +
+      runTessbenchSplit("advise " + testing::assetPath("full_suite/gltf/tri_torus_seams.glb") +
                         " --technique pn_triangles --json");
   ASSERT_EQ(advice.exit_code, 0) << advice.err;
   EXPECT_NE(advice.out.find("pn_triangles"), std::string::npos);

@@ -1,6 +1,6 @@
-// Issue 60's seams: the bundled glTF asset (assets/gltf/tri_torus_seams.glb, vertices split at
-// UV seams with normals computed after splitting) and its OBJ twin crack at the seams alike:
-// PN triangles without a crack fix opens every seam, the crack-fixed variants (geometry
+// Issue 60's seams: the bundled glTF asset (assets/full_suite/gltf/tri_torus_seams.glb, vertices
+// split at UV seams with normals computed after splitting) and its OBJ twin crack at the seams
+// alike: PN triangles without a crack fix opens every seam, the crack-fixed variants (geometry
 // normals, PN-AEN) close them, and no variant cracks away from a seam.
 // Oracle: bitwise equality of the two sides' CPU float positions at mirrored domain points,
 // counted per edge kind (crack_seams.h); the twin's counts, which must equal the glb's.
@@ -14,8 +14,8 @@
 namespace tb {
 namespace {
 
-constexpr const char* kSeamGlb = "gltf/tri_torus_seams.glb";
-constexpr const char* kSeamTwin = "gltf/tri_torus_seams_twin.obj";
+constexpr const char* kSeamGlb = "full_suite/gltf/tri_torus_seams.glb";
+constexpr const char* kSeamTwin = "full_suite/gltf/tri_torus_seams_twin.obj";
 
 struct SeamCounts {
   uint64_t seam_edges = 0, seam_points = 0, seam_not_equal = 0, interior_not_equal = 0,

@@ -61,8 +61,10 @@ size_t attributeSeamEdges(const mesh::Mesh& m) {
 }
 
 TEST(GltfLoader, BundledAssetEqualsItsObjTwinBitForBit) {
-  const mesh::Mesh glb = mesh::loadGltfFile(testing::assetPath("gltf/tri_torus_seams.glb"));
-  const mesh::Mesh obj = mesh::loadObjFile(testing::assetPath("gltf/tri_torus_seams_twin.obj"));
+  const mesh::Mesh glb =
+      mesh::loadGltfFile(testing::assetPath("full_suite/gltf/tri_torus_seams.glb"));
+  const mesh::Mesh obj =
+      mesh::loadObjFile(testing::assetPath("full_suite/gltf/tri_torus_seams_twin.obj"));
   EXPECT_EQ(glb.faceCount(), 64u);
   EXPECT_EQ(glb.positions.size(), 32u);  // the torus's 8 x 4 grid, welded
   // (8 + 1) x (4 + 1) = 45 split vertices, 5 of them in both primitives (each has its own).
