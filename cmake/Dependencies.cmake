@@ -6,6 +6,7 @@ find_package(nlohmann_json CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(meshoptimizer CONFIG REQUIRED)
 find_package(tinyobjloader CONFIG REQUIRED)
+find_package(TinyGLTF CONFIG REQUIRED)
 
 # tb_tinyobjloader, what tb_mesh links: Debian's shared library, or in a fuzz build the
 # same version compiled from its header (/usr/include) with the fuzz flags, so that ASan
@@ -18,6 +19,21 @@ if(TB_FUZZ)
 else()
   add_library(tb_tinyobjloader INTERFACE)
   target_link_libraries(tb_tinyobjloader INTERFACE tinyobjloader::tinyobjloader)
+endif()
+
+# tb_tinygltf, the glTF reader's parser: Debian's libtinygltf-dev shared library, or in a fuzz
+# build its header compiled with the fuzz flags (as tb_tinyobjloader). Debian has no stb
+# headers for it, and tessbench never decodes images: the fuzz build leaves stb out.
+if(TB_FUZZ)
+  set(TB_TINYGLTF_SOURCE ${CMAKE_BINARY_DIR}/generated/tinygltf_impl.cpp)
+  file(CONFIGURE OUTPUT ${TB_TINYGLTF_SOURCE}
+    CONTENT "#define TINYGLTF_IMPLEMENTATION\n#include <tiny_gltf.h>\n")
+  add_library(tb_tinygltf STATIC ${TB_TINYGLTF_SOURCE})
+  target_compile_definitions(tb_tinygltf PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE
+    TINYGLTF_NO_EXTERNAL_IMAGE)
+else()
+  add_library(tb_tinygltf INTERFACE)
+  target_link_libraries(tb_tinygltf INTERFACE TinyGLTF::TinyGLTF)
 endif()
 
 if(NOT TB_FUZZ)

@@ -11,7 +11,7 @@ run_packages=(
   libosd-dev libembree-dev libopenexr-dev
   glslang-tools glslang-dev spirv-tools
   mesa-vulkan-drivers libvulkan-dev vulkan-tools
-  libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libmeshoptimizer-dev libtbb-dev libpng-dev libsqlite3-dev
   libjs-chart.js
 )

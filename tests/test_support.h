@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/mesh/bounds.h"
+#include "core/mesh/gltf_loader.h"
 #include "core/mesh/obj_loader.h"
 #include "techniques/registry.h"
 #include "tests/test_paths.h"
@@ -25,7 +26,10 @@ inline std::string assetPath(const std::string& name) {
   return std::string(TB_SOURCE_DIR) + "/assets/" + name;
 }
 
-inline mesh::Mesh loadAsset(const std::string& name) { return mesh::loadObjFile(assetPath(name)); }
+inline mesh::Mesh loadAsset(const std::string& name) {
+  return mesh::isGltfPath(name) ? mesh::loadGltfFile(assetPath(name))
+                                : mesh::loadObjFile(assetPath(name));
+}
 
 // The diagonal of the mesh's bounding box (mesh::boundsOf), world units.
 inline double diagonalOf(const mesh::Mesh& mesh) { return mesh::diagonalOf(mesh::boundsOf(mesh)); }

@@ -188,7 +188,8 @@ CLI::App* addAdviseCommand(CLI::App& app, AdviseArgs& args) {
       "instructions), measuring error, cracks, memory and instructions in-process or reading a "
       "finished run; exit 0 when a candidate meets every constraint, 1 when none does, 2 on bad "
       "input");
-  advise->add_option("asset", args.asset, "bundled asset name or OBJ path")->required();
+  advise->add_option("asset", args.asset, "bundled asset name or OBJ, glTF or GLB path")
+      ->required();
   advise->add_option("--run", args.run_dir,
                      "read a finished run folder (results/<run-id>) instead of measuring");
   advise->add_option("--max-error", args.max_error,

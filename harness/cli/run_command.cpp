@@ -222,7 +222,8 @@ CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
   CLI::App* run =
       app.add_subcommand("run", "measure techniques on assets into a new results folder");
   run->add_option("--technique", args.techniques, "technique id (repeatable; default all)");
-  run->add_option("--asset", args.assets, "bundled asset name or OBJ path (default all)");
+  run->add_option("--asset", args.assets,
+                  "bundled asset name or OBJ, glTF or GLB path (default all)");
   run->add_option("--refine", args.refine,
                   "refine every --asset N times with OpenSubdiv at load (Loop for all-triangle "
                   "meshes, Catmull-Clark otherwise), keeping creases, corners and holes: a "

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/mesh/gltf_loader.h"
 #include "core/mesh/input_error.h"
 
 #ifndef TB_DEFAULT_ASSETS_DIR
@@ -39,7 +40,8 @@ std::vector<AssetRef> bundledAssets() {
   std::error_code error;
   for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
        it.increment(error)) {
-    if (!it->is_regular_file() || it->path().extension() != ".obj") continue;
+    const bool mesh_file = it->path().extension() == ".obj" || mesh::isGltfPath(it->path());
+    if (!it->is_regular_file() || !mesh_file) continue;
     fs::path relative = fs::relative(it->path(), root);
     const std::string label = "assets/" + relative.generic_string();
     relative.replace_extension();
@@ -152,8 +154,9 @@ AssetRef resolveAsset(const std::string& name_or_path) {
   std::error_code error;
   if (fs::is_regular_file(name_or_path, error)) return {name_or_path, name_or_path, ""};
   if (fs::is_directory(name_or_path, error)) {
-    throw mesh::InputError(name_or_path, "",
-                           "is a folder; --asset takes one .obj file (repeat --asset for more)");
+    throw mesh::InputError(
+        name_or_path, "",
+        "is a folder; --asset takes one .obj, .gltf or .glb file (repeat --asset for more)");
   }
   throw mesh::InputError(name_or_path, "",
                          "no such file, and not a bundled asset (see `tessbench list assets`)");

@@ -1,4 +1,4 @@
-// Bundled assets (assets/**/*.obj) and how a name or path on the command line
+// Bundled assets (assets/**/*.obj, *.gltf, *.glb) and how a name or path on the command line
 // resolves to one.
 #pragma once
 
@@ -24,8 +24,8 @@ struct AssetRef {
   const std::string& shownPath() const { return label.empty() ? path : label; }
 };
 
-// The mesh of an asset: the OBJ at `path`, refined `refine` times. Throws InputError as
-// loadObjFile does. Deterministic: the same file and count give the same mesh.
+// The mesh of an asset: the OBJ or glTF at `path`, refined `refine` times. Throws InputError as
+// loadObjFile and loadGltfFile do. Deterministic: the same file and count give the same mesh.
 mesh::Mesh loadAsset(const AssetRef& asset);
 
 // The most refinement steps `--refine` and the production list accept: each step multiplies
@@ -39,7 +39,7 @@ AssetRef refinedAsset(AssetRef asset, int levels);
 // The assets folder: $TB_ASSETS_DIR when set, else the source tree's assets/.
 std::string assetsDirectory();
 
-// Every bundled .obj, sorted by name.
+// Every bundled .obj, .gltf and .glb, sorted by name.
 std::vector<AssetRef> bundledAssets();
 
 // The folder of bundled assets too costly for the default suite (assets/full_suite/README.md):

@@ -1,5 +1,6 @@
 // loadAsset (asset_catalog.h): apart from the catalogue, so the fuzz build's catalogue needs
 // no OpenSubdiv.
+#include "core/mesh/gltf_loader.h"
 #include "core/mesh/normals.h"
 #include "core/mesh/obj_loader.h"
 #include "core/osd/uniform_refinement.h"
@@ -8,7 +9,8 @@
 namespace tb::suite {
 
 mesh::Mesh loadAsset(const AssetRef& asset) {
-  mesh::Mesh mesh = mesh::loadObjFile(asset.path);
+  mesh::Mesh mesh =
+      mesh::isGltfPath(asset.path) ? mesh::loadGltfFile(asset.path) : mesh::loadObjFile(asset.path);
   if (asset.refine == 0) return mesh;
   const bool triangles = mesh.allFacesOfSize(3);
   mesh::Mesh refined = osd::refineUniform(

@@ -38,7 +38,7 @@ size_t forEachBundledSurface(const std::string& id, const std::string& variant, 
   const techniques::VariantInfo info = variantNamed(*technique, variant);
   size_t supported = 0;
   for (const suite::AssetRef& asset : suite::bundledAssets()) {
-    const mesh::Mesh mesh = mesh::loadObjFile(asset.path);
+    const mesh::Mesh mesh = suite::loadAsset(asset);
     if (!technique->checkSupport(mesh).empty()) continue;
     techniques::BuiltSurface patches;
     try {

@@ -217,9 +217,13 @@ TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
   const results::MeasureResult result = measure->run(
       {*acc, variant, "catmark_cube", mesh, patches.get(), context, context ? "" : reason});
   std::set<std::map<std::string, std::string>> keys;
-  size_t pattern_rows = 0, uniform_rows = 0;
+  size_t pattern_rows = 0, uniform_rows = 0, kind_rows = 0;
   for (const results::MetricRow& row : result.rows) {
     EXPECT_TRUE(keys.insert(row.keys).second) << "duplicate row keys";
+    if (row.keys.contains("edge_kind")) {  // the cube's UV seams: CPU rows per edge kind
+      ++kind_rows;
+      continue;
+    }
     if (!row.keys.contains("levels")) {
       uniform_rows += row.keys.contains("level") ? 1 : 0;
       continue;
@@ -236,6 +240,7 @@ TEST(EdgePatternCracks, TheMeasureAddsPatternRowsUnderTheirOwnKey) {
   }
   EXPECT_EQ(pattern_rows, context ? 8u : 4u);
   EXPECT_EQ(uniform_rows, context ? 32u : 16u);
+  EXPECT_EQ(kind_rows, 3u * 16u) << "seam, interior, boundary x 4 spacings x 4 levels";
 }
 
 }  // namespace

@@ -28,6 +28,8 @@ constexpr LevelChoice kDisplacedDefaultLevels[] = {{7.3f, "7.3"}, {16.0f, "16"}}
 constexpr tess::Spacing kDisplacedDefaultSpacings[] = {tess::Spacing::kInteger,
                                                        tess::Spacing::kFractionalOdd};
 constexpr const char* kEdgePatternKey = "edge_pattern";
+// The rows of one kind of edge and corner (crack_seams.h): seam, interior or boundary.
+constexpr const char* kEdgeKindKey = "edge_kind";
 // Why a backend's rows cannot run ("" when they can).
 const std::string& reasonOf(CrackBackend backend, const std::string& gpu_reason,
                             const std::string& compute_reason) {
@@ -110,23 +112,27 @@ std::vector<results::DecisionInput> cracksDecisionInputs() {
   return {{.role = results::DecisionRole::kCrackPoints,
            .label = "points that differ or are unpaired",
            .metrics = {"points_not_equal", "unpaired_points"},
+           .where = {{kEdgeKindKey, ""}},
            .rows_on_path = true,
            .device_rows = {{"backend", "gpu"}}},
           {.role = results::DecisionRole::kCrackGap,
            .label = "largest gap",
-           .metrics = {"max_gap_world"}},
+           .metrics = {"max_gap_world"},
+           .where = {{kEdgeKindKey, ""}}},
           {.role = results::DecisionRole::kCrackPlace,
            .label = "where the largest gap is",
            .metrics = {"worst_patch_a", "worst_local_a", "worst_patch_b", "worst_local_b",
-                       "worst_is_corner", "worst_t"}},
+                       "worst_is_corner", "worst_t"},
+           .where = {{kEdgeKindKey, ""}}},
           {.role = results::DecisionRole::kCrackPicture,
            .label = "CPU float cracks drawn",
            .metrics = {"points_not_equal"},
-           .where = {{"backend", "cpu_float"}, {"displacement", ""}}},
+           .where = {{"backend", "cpu_float"}, {"displacement", ""}, {kEdgeKindKey, ""}}},
           {.role = results::DecisionRole::kAdviceCracks,
            .label = "watertight",
            .column = "yes when every row is bitwise watertight",
-           .metrics = {"points_not_equal", "unpaired_points"}}};
+           .metrics = {"points_not_equal", "unpaired_points"},
+           .where = {{kEdgeKindKey, ""}}}};
 }
 
 class CracksMeasure final : public Measure {
@@ -186,8 +192,13 @@ class CracksMeasure final : public Measure {
              "moved by a baked map; naive sampling reads each patch's own tile at its own (u, v), "
              "watertight sampling reads a shared corner or edge from its owner's tile at the "
              "owner's (u, v) (displacement direction from per-vertex data both sides share); "
-             "summaries leave these rows out, the chart below shows them"},
-        .summary_scope = {{"displacement", ""}},
+             "summaries leave these rows out, the chart below shows them",
+             "rows with an edge_kind key (assets with a seam only, CPU float, uniform levels): the "
+             "same figures over one kind of shared edge and corner: seam (the control mesh's "
+             "faces there carry different normals or uvs, or positions welded together: where an "
+             "engine's mesh, a glTF file's, splits its vertices), boundary (corners on the mesh "
+             "boundary) or interior; summaries and decisions read the rows without the key"},
+        .summary_scope = {{"displacement", ""}, {kEdgeKindKey, ""}},
         // Which variants crack, on which backend: 0 (no bar on the log axis) is watertight.
         .plots = {results::PlotSpec{
                       .title =
@@ -198,7 +209,7 @@ class CracksMeasure final : public Measure {
                       .y = "points_not_equal",
                       .series = "backend",
                       .facet = "",
-                      .where = {{"displacement", ""}},
+                      .where = {{"displacement", ""}, {kEdgeKindKey, ""}},
                       .log_y = true,
                       .reduce = results::PlotReduce::kMax},
                   results::PlotSpec{
@@ -275,10 +286,31 @@ class CracksMeasure final : public Measure {
                      [&] { return session.measure(spacing, levels, backend, input.gpu); }));
       }
     }
+    // Seams apart, after every other row so those keep their places.
+    if (session.hasSeams()) appendEdgeKindRows(session, spacings, crack_levels, &result);
     return result;
   }
 
  private:
+  // The CPU float rows of each edge kind, keyed edge_kind, at the uniform levels.
+  static void appendEdgeKindRows(CrackSession& session, std::span<const tess::Spacing> spacings,
+                                 std::span<const LevelChoice> crack_levels,
+                                 results::MeasureResult* result) {
+    for (EdgeKind kind : kEdgeKinds) {
+      for (tess::Spacing spacing : spacings) {
+        for (const LevelChoice& level : crack_levels) {
+          results::MetricRow row =
+              crackRow(spacing, level.text, CrackBackend::kCpuFloat, nullptr, "", [&] {
+                return session.measure(spacing, level.level, CrackBackend::kCpuFloat, nullptr,
+                                       kind);
+              });
+          row.keys[kEdgeKindKey] = std::string(toString(kind));
+          result->rows.push_back(std::move(row));
+        }
+      }
+    }
+  }
+
   // One row: keys spacing, level, backend (and levels when not uniform), then the
   // figures, or status skipped or failed with the reason there are none. A GPU row is
   // skipped with gpu_reason when that is set; a GPU failure is a failed row, a CPU one throws.

@@ -110,9 +110,15 @@ struct PairBlock {
 // (the mean's sum included), whatever the thread count.
 class Pairing {
  public:
+  // `kind`: only the edges and corners of that kind (classifySeams); none: every one.
   Pairing(const SharedBoundaries& shared, const PatchBoundaries& boundaries,
-          const BoundaryPositions& positions, double scale_ulp)
-      : shared_(shared), boundaries_(boundaries), positions_(positions), scale_ulp_(scale_ulp) {
+          const BoundaryPositions& positions, double scale_ulp,
+          std::optional<EdgeKind> kind = std::nullopt)
+      : shared_(shared),
+        boundaries_(boundaries),
+        positions_(positions),
+        scale_ulp_(scale_ulp),
+        kind_(kind) {
     assert(positions.size() == boundaries.size() && scale_ulp > 0);
   }
 
@@ -158,10 +164,11 @@ class Pairing {
 
   void item(size_t i, PairBlock* block) const {
     if (i < shared_.edges.size()) {
-      edge(shared_.edges[i], block);
+      if (!kind_ || shared_.edges[i].kind == *kind_) edge(shared_.edges[i], block);
       return;
     }
     const SharedCorner& corner = shared_.corners[i - shared_.edges.size()];
+    if (kind_ && corner.kind != *kind_) return;
     assert(corner.sides.size() >= 2);
     const PatchSide& a = corner.sides[0];
     for (size_t s = 1; s < corner.sides.size(); ++s) {
@@ -197,6 +204,7 @@ class Pairing {
   const PatchBoundaries& boundaries_;
   const BoundaryPositions& positions_;
   double scale_ulp_;
+  std::optional<EdgeKind> kind_;
 };
 
 // The spacing of floats at the control mesh's largest |coordinate|.
@@ -302,6 +310,7 @@ SharedBoundaries findSharedBoundaries(const techniques::SurfacePatches& patches)
   for (auto& [vertex, sides] : vertex_sides) {
     if (sides.size() >= 2) shared.corners.push_back({vertex, std::move(sides)});
   }
+  classifySeams(patches.controlMesh(), welding, &shared);
   return shared;
 }
 
@@ -372,7 +381,10 @@ CrackSession::CrackSession(const techniques::SurfacePatches& patches, size_t pat
   } else {
     shared_ = sampledBoundaries(std::move(shared_), sampled_);
   }
-  for (const SharedEdge& e : shared_.edges) seam_edges_ += e.seam ? 1 : 0;
+  for (const SharedEdge& e : shared_.edges) {
+    seam_edges_ += e.seam ? 1 : 0;
+    has_seams_ = has_seams_ || e.kind == EdgeKind::kSeam;
+  }
 }
 
 CrackSession::Evaluated& CrackSession::evaluated(tess::Spacing spacing,
@@ -395,34 +407,48 @@ CrackSession::Evaluated& CrackSession::evaluated(tess::Spacing spacing,
   return kept_.back();
 }
 
-const CrackFigures& CrackSession::cpuPairs(const Evaluated& e) {
-  if (!e.cpu->pairs) {
+const CrackFigures& CrackSession::cpuPairs(const Evaluated& e, std::optional<EdgeKind> kind) {
+  std::optional<CrackFigures>& slot = e.cpu->pairs[kind ? 1 + size_t(*kind) : 0];
+  if (!slot) {
     CrackFigures pairs;
-    Pairing(shared_, e.boundaries, e.cpu->positions, scale_ulp_).run(&pairs);
-    e.cpu->pairs = pairs;
+    Pairing(shared_, e.boundaries, e.cpu->positions, scale_ulp_, kind).run(&pairs);
+    slot = pairs;
   }
-  return *e.cpu->pairs;
+  return *slot;
 }
 
 CrackFigures CrackSession::measure(tess::Spacing spacing, float level, CrackBackend backend,
-                                   gpu::Context* context) {
+                                   gpu::Context* context, std::optional<EdgeKind> kind) {
   const std::vector<tess::Levels> patch_levels(patches_.patchCount(), uniformLevels(level));
-  return measure(spacing, patch_levels, backend, context);
+  return measure(spacing, patch_levels, backend, context, kind);
 }
 
 CrackFigures CrackSession::measure(tess::Spacing spacing,
                                    std::span<const tess::Levels> patch_levels, CrackBackend backend,
-                                   gpu::Context* context) {
+                                   gpu::Context* context, std::optional<EdgeKind> kind) {
   if (patch_levels.size() != patches_.patchCount()) {
     throw std::invalid_argument("cracks: " + std::to_string(patch_levels.size()) +
                                 " per-patch levels for " + std::to_string(patches_.patchCount()) +
                                 " patches");
+  }
+  if (kind && backend != CrackBackend::kCpuFloat) {
+    throw std::invalid_argument("cracks: edge kinds are measured on the CPU float model only");
   }
   CrackFigures figures;
   figures.backend = backend;
   figures.shared_edges = shared_.edges.size();
   figures.shared_corners = shared_.corners.size();
   figures.seam_edges = seam_edges_;
+  if (kind) {
+    const auto of_kind = [&](const auto& item) { return item.kind == *kind; };
+    figures.shared_edges =
+        uint64_t(std::count_if(shared_.edges.begin(), shared_.edges.end(), of_kind));
+    figures.shared_corners =
+        uint64_t(std::count_if(shared_.corners.begin(), shared_.corners.end(), of_kind));
+    figures.seam_edges =
+        uint64_t(std::count_if(shared_.edges.begin(), shared_.edges.end(),
+                               [&](const SharedEdge& e) { return e.seam && of_kind(e); }));
+  }
   figures.patches_compared = sampled_count_;
   if (backend != CrackBackend::kCpuFloat) {
     figures.skipped_reason = deviceSkipReason(programs_, backend, context);
@@ -451,7 +477,7 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   }
   figures.measured = true;
   if (backend == CrackBackend::kCpuFloat) {
-    copyPairFigures(cpuPairs(e), &figures);
+    copyPairFigures(cpuPairs(e, kind), &figures);
     return figures;
   }
   CrackCaptureOptions capture_options;
@@ -462,7 +488,7 @@ CrackFigures CrackSession::measure(tess::Spacing spacing,
   figures.device_points = capture.points_captured;
   compareWithCpu(capture.positions, e.cpu->positions, &figures);
   if (bitwiseEqual(capture.positions, e.cpu->positions)) {
-    copyPairFigures(cpuPairs(e), &figures);
+    copyPairFigures(cpuPairs(e, std::nullopt), &figures);
   } else {
     CrackFigures pairs;
     Pairing(shared_, e.boundaries, capture.positions, scale_ulp_).run(&pairs);

@@ -8,6 +8,7 @@
 // evaluation and pairing run in parallel with results independent of the thread count.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "core/gpu/patch_program_desc.h"
 #include "core/mesh/float_ulp.h"  // ulpDistance, used with these figures
 #include "harness/measures/common/cracks/crack_boundaries.h"
+#include "harness/measures/common/cracks/crack_seams.h"
 #include "techniques/technique.h"
 
 namespace tb::measures {
@@ -43,14 +45,16 @@ struct PatchSide {
 };
 
 struct SharedEdge {
-  uint32_t v0 = 0, v1 = 0;       // welded position indices, v0 < v1
-  bool seam = false;             // the sides use different (unwelded) position indices
-  std::vector<PatchSide> sides;  // two or more, in patch order
+  uint32_t v0 = 0, v1 = 0;              // welded position indices, v0 < v1
+  bool seam = false;                    // the sides use different (unwelded) position indices
+  std::vector<PatchSide> sides;         // two or more, in patch order
+  EdgeKind kind = EdgeKind::kInterior;  // seam or interior (classifySeams)
 };
 
 struct SharedCorner {
-  uint32_t vertex = 0;           // welded position index
-  std::vector<PatchSide> sides;  // two or more, in patch order
+  uint32_t vertex = 0;                  // welded position index
+  std::vector<PatchSide> sides;         // two or more, in patch order
+  EdgeKind kind = EdgeKind::kInterior;  // seam, boundary or interior (classifySeams)
 };
 
 struct SharedBoundaries {
@@ -159,17 +163,24 @@ class CrackSession {
 
   // Patches the pair figures cover: every patch, or the sample above the budget.
   size_t sampledPatches() const { return sampled_count_; }
+  // Whether a compared edge lies on a seam (then the measure adds its edge_kind rows).
+  bool hasSeams() const { return has_seams_; }
 
+  // With `kind`, the figures of that kind's edges and corners only (shared_*, seam_edges
+  // and every pair figure); kCpuFloat only.
   CrackFigures measure(tess::Spacing spacing, std::span<const tess::Levels> patch_levels,
-                       CrackBackend backend, gpu::Context* context = nullptr);
+                       CrackBackend backend, gpu::Context* context = nullptr,
+                       std::optional<EdgeKind> kind = std::nullopt);
   CrackFigures measure(tess::Spacing spacing, float level, CrackBackend backend,
-                       gpu::Context* context = nullptr);
+                       gpu::Context* context = nullptr,
+                       std::optional<EdgeKind> kind = std::nullopt);
 
  private:
   // The CPU float side of one set of boundary points.
   struct CpuSide {
     std::vector<mesh::Vec3f> positions;  // per boundary point; empty until evaluated
-    std::optional<CrackFigures> pairs;   // pair figures of `positions`, once computed
+    // Pair figures of `positions`, once computed: every kind, then per EdgeKind.
+    std::array<std::optional<CrackFigures>, 4> pairs;
   };
   struct Evaluated {
     tess::Spacing spacing;
@@ -180,7 +191,7 @@ class CrackSession {
   static constexpr size_t kKeptEvaluations = 8;  // a spacing's levels and the next's
 
   Evaluated& evaluated(tess::Spacing spacing, std::span<const tess::Levels> patch_levels);
-  const CrackFigures& cpuPairs(const Evaluated& e);
+  const CrackFigures& cpuPairs(const Evaluated& e, std::optional<EdgeKind> kind);
 
   const techniques::SurfacePatches& patches_;
   std::vector<gpu::GpuPatchProgram> programs_;  // patches_.gpuPrograms(), built once
@@ -188,6 +199,7 @@ class CrackSession {
   std::vector<uint8_t> sampled_;                // per patch; empty: every patch
   size_t sampled_count_ = 0;
   uint64_t seam_edges_ = 0;
+  bool has_seams_ = false;
   double scale_ulp_ = 0;
   std::vector<Evaluated> kept_;  // latest last, at most kKeptEvaluations
 };
