@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -231,19 +232,28 @@ std::vector<AdaptivityFrame> AdaptivityRun::frames(const lod::FactorPolicy& poli
 
 AdaptivityRun::PathError AdaptivityRun::pathError(const lod::FactorPolicy& policy,
                                                   tess::Spacing spacing,
-                                                  const std::vector<view::View>& views) {
+                                                  const std::vector<view::View>& views,
+                                                  double stop_above_px) {
   PathError error;
   uint64_t triangles = 0;
-  for (const view::View& view : views) {
+  // The maximum, the triangle sum and the frame count do not depend on the frames' order.
+  const bool stops = stop_above_px < std::numeric_limits<double>::infinity();
+  const size_t first = stops && failing_frame_ < views.size() ? failing_frame_ : 0;
+  for (size_t k = 0; k < views.size(); ++k) {
+    const size_t f = (first + k) % views.size();
     uint64_t frame_triangles = 0;
     const lod::ScreenErrorFigures e = screen_->tessellationError(
-        spacing, twinLevels(policy, spacing, view), view, &frame_triangles);
+        spacing, twinLevels(policy, spacing, views[f]), views[f], &frame_triangles);
     error.max_px = std::max(error.max_px, e.max_px);
     triangles += frame_triangles;
     if (policy.kind == lod::FactorPolicyKind::kErrorBound) {
       const lod::ErrorBoundUnmet unmet = lod::errorBoundUnmetPatches(
-          lod::factorParams(policy, view, spacing, diagonal_), corners_);
+          lod::factorParams(policy, views[f], spacing, diagonal_), corners_);
       error.beyond_top_frames += unmet.beyond_top > 0 ? 1 : 0;
+    }
+    if (stops && e.max_px > stop_above_px) {
+      failing_frame_ = f;
+      return error;
     }
   }
   error.triangles_per_frame = views.empty() ? 0 : double(triangles) / double(views.size());
@@ -277,25 +287,28 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
     return std::exp(std::log(range.coarse) +
                     fineness * (std::log(range.fine) - std::log(range.coarse)));
   };
-  auto errorAt = [&](double fineness) {
+  // stop_above_px: a step's figures are kept only when it passes (pathError).
+  auto errorAt = [&](double fineness, double stop_above_px) {
     lod::FactorPolicy p = policy;
     p.target = targetAt(fineness);
     ++summary.evaluations;
-    return pathError(p, spacing, views);
+    return pathError(p, spacing, views, stop_above_px);
   };
+  const double kEvery = std::numeric_limits<double>::infinity();
+  const bool kept_anyway = policy.kind == lod::FactorPolicyKind::kErrorBound;
   // Coarse to fine, so the cheap (coarse) end is tried first and the fine end, whose
   // tessellations are the largest, only when nothing coarser reaches the target.
   PathError best;
   double best_fineness = -1;
-  const PathError coarse = errorAt(0.0);
-  if (coarse.max_px <= error_target_px || policy.kind == lod::FactorPolicyKind::kErrorBound) {
+  const PathError coarse = errorAt(0.0, kept_anyway ? kEvery : error_target_px);
+  if (coarse.max_px <= error_target_px || kept_anyway) {
     best = coarse;
     best_fineness = 0.0;
   } else {
     double fails = 0.0, passes = 1.0;
     for (int step = 0; step < search_steps; ++step) {
       const double mid = 0.5 * (fails + passes);
-      const PathError e = errorAt(mid);
+      const PathError e = errorAt(mid, error_target_px);
       if (e.max_px <= error_target_px) {
         best = e;
         best_fineness = passes = mid;
@@ -304,7 +317,7 @@ AdaptivitySummary AdaptivityRun::summarise(const lod::FactorPolicy& policy, tess
       }
     }
     if (best_fineness < 0) {  // nothing passed: only the fine end is left to try
-      best = errorAt(1.0);
+      best = errorAt(1.0, kEvery);
       best_fineness = 1.0;
     }
   }
@@ -351,10 +364,13 @@ const AdaptivityRun::UniformBest& AdaptivityRun::uniformBest(lod::InnerReduction
   uniform.kind = lod::FactorPolicyKind::kUniform;
   uniform.reduction = reduction;
   const uint32_t highest = spacing == tess::Spacing::kFractionalOdd ? 63 : 64;
+  // A failing level's figures are kept only at the top level (nothing passed): below it
+  // the step may stop at the first frame over the target (pathError).
   auto uniformAt = [&](uint32_t level) {
     uniform.target = level;
     ++best.passes;
-    return pathError(uniform, spacing, views);
+    return pathError(uniform, spacing, views,
+                     level < highest ? error_target_px : std::numeric_limits<double>::infinity());
   };
   uint32_t fails = 0;
   best.error = uniformAt(best.level);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -154,8 +155,13 @@ class AdaptivityRun {
     double triangles_per_frame = 0;
     uint32_t beyond_top_frames = 0;  // error_bound: AdaptivitySummary::beyond_top_frames
   };
+  // stop_above_px: a search step whose figures are kept only when it passes stops at the
+  // first frame over it (the frame that failed last is tried first), so a failing step costs
+  // a frame, not the path; its max_px is then that frame's (> stop_above_px) and nothing else
+  // is set. Infinity: every frame (the figures a summary reports).
   PathError pathError(const lod::FactorPolicy& policy, tess::Spacing spacing,
-                      const std::vector<view::View>& views);
+                      const std::vector<view::View>& views,
+                      double stop_above_px = std::numeric_limits<double>::infinity());
   // The lowest uniform level within the target (summarise's uniform part), cached per
   // spacing and views.
   struct UniformBest {
@@ -191,6 +197,7 @@ class AdaptivityRun {
   std::map<std::tuple<int, double, uint64_t>, AdaptivityIdeal> ideal_cache_;
   SharedBoundaries shared_;
   double diagonal_ = 0;
+  size_t failing_frame_ = 0;  // pathError's first frame: the last one over stop_above_px
   std::unique_ptr<CrackSession> cracks_;
   std::unique_ptr<lod::ScreenMetrics> screen_;
 };
