@@ -92,8 +92,8 @@ namespace {
 // The techniques × assets not measured, a line per technique (the assets by short name, the
 // first reason); every refusal with its reason is in tables/skipped.csv.
 void appendNotMeasured(const results::Results& results, std::string* out) {
-  *out += "## Not measured\n\nEvery refusal with its reason: `tables/skipped.csv`.\n\n";
-  appendHeader(out, {"technique", "assets", "reason (the first)"});
+  *out += "## Not measured\n\n";
+  appendHeader(out, {"technique", "assets", "reason (the first; every one: `tables/skipped.csv`)"});
   std::vector<std::string> order;
   std::map<std::string, std::vector<const results::Skip*>> by_technique;
   for (const results::Skip& skip : results.skipped) {

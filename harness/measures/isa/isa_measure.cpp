@@ -249,8 +249,7 @@ class IsaMeasure final : public Measure {
              "first supported input of the run "
              "(the pipelines do not depend on the asset); each executable's assembly is "
              "written to the run folder's isa/ (technique--variant--pipeline--family--"
-             "executable.s)",
-             "family device: the run's own Vulkan device, when it exposes "
+             "executable.s); family device: the run's own Vulkan device, when it exposes "
              "VK_KHR_pipeline_executable_properties (its statistics by its own names; those "
              "this table does not know are rows keyed by statistic, figure in statistic_value)"},
         .summary_scope = {{"family", "navi21"}, {"pipeline", "tessellator"}},
