@@ -215,14 +215,16 @@ TextTable publishedInstructions(const results::Results& results) {
                   "ours ALU, vector (count)",
                   "ours ALU, scalar (count)",
                   "ours loads (count)",
+                  "ours on RDNA2, machine instructions (count)",
                   "assets (count)"};
-  table.numeric = {false, false, false, true, true, true, true, true, true};
+  table.numeric = {false, false, false, true, true, true, true, true, true, true};
   // The figures are the shaders', the same on every asset: one row per distinct figure line,
   // with the number of assets it was measured on (two lines for one stage would show the
   // figures differ between assets).
   std::map<std::vector<std::string>, size_t> seen;
   std::vector<std::string> sources;
-  // kPublishedCost's metrics: published ALU, published loads, ours vector, scalar, loads.
+  // kPublishedCost's metrics: published ALU, published loads, ours vector, scalar, loads,
+  // ours on RDNA2 (absent in runs before the isa measure, or without the radeon ICD).
   const auto input = inputFor(results, results::DecisionRole::kPublishedCost);
   for (const results::Record& record : results.records) {
     const results::MeasureResult* found = input ? resultOf(record, *input) : nullptr;
@@ -249,7 +251,8 @@ TextTable publishedInstructions(const results::Results& results) {
                                       loads,
                                       v(2),
                                       v(3),
-                                      v(4)};
+                                      v(4),
+                                      v(5)};
         const auto [it, added] = seen.emplace(line, table.rows.size());
         if (added) {
           line.push_back("1");
