@@ -46,8 +46,13 @@ TEST(GltfCli, TheGlbAndItsObjTwinGiveEqualFiguresInEveryMeasure) {
   for (const auto& record : results["records"]) {
     const std::string key =
         record["technique"].get<std::string>() + "/" + record["variant"].get<std::string>();
-    if (record["asset"] == kSeamGlb) glb[key] = record["measures"];
-    if (record["asset"] == kSeamTwin) twin[key] = record["measures"];
+    // isa runs once per technique × variant, on its first input (the glb): not compared.
+    nlohmann::json measures = nlohmann::json::array();
+    for (const auto& measure : record["measures"]) {
+      if (measure["measure"] != "isa") measures.push_back(measure);
+    }
+    if (record["asset"] == kSeamGlb) glb[key] = measures;
+    if (record["asset"] == kSeamTwin) twin[key] = measures;
   }
   ASSERT_GE(glb.size(), 7u) << "pn_triangles' and phong's default variants";
   ASSERT_EQ(glb.size(), twin.size());
