@@ -84,6 +84,7 @@ class AlignedDoubles {
 
 // What a batched evaluation computes besides the position.
 enum class BatchOutput : uint8_t {
+  kPositions,               // the position alone (screen-space error): no du, dv or normal
   kPositionAndDerivatives,  // position, du, dv: the work Bfr's Evaluate(P, Du, Dv) does
   kWithNormals,             // the same and the unit normal du x dv / |du x dv|
 };

@@ -166,6 +166,11 @@ class SurfacePatches {
   // The face of the input asset the patch came from (for parametric error).
   virtual uint32_t sourceFace(size_t patch) const = 0;
   virtual SurfacePoint evaluate(size_t patch, const DomainCoord& coord) const = 0;
+  // evaluate(patch, coord).position, bit for bit; a technique whose normal costs overrides
+  // it (BatchOutput::kPositions evaluates point by point with it).
+  virtual mesh::Vec3d evaluatePosition(size_t patch, const DomainCoord& coord) const {
+    return evaluate(patch, coord).position;
+  }
   // The surface in float with the operation order of the technique's TES (and TCS set-up),
   // at gl_TessCoord exactly as the tessellator emits it. The CPU side of every GPU
   // comparison and of the crack measure: two patches that share an edge are watertight
@@ -224,6 +229,12 @@ inline void SurfacePatches::evaluateBatchPointByPoint(size_t patch, const BatchP
                                 " and the batch pattern have different domains");
   }
   out.reset(pattern.pointCount());
+  if (pattern.output() == BatchOutput::kPositions) {
+    for (size_t i = 0; i < pattern.pointCount(); ++i) {
+      BatchPoints::set(out.position, i, evaluatePosition(patch, pattern.coords()[i]));
+    }
+    return;
+  }
   for (size_t i = 0; i < pattern.pointCount(); ++i) {
     const SurfacePoint point = evaluate(patch, pattern.coords()[i]);
     BatchPoints::set(out.position, i, point.position);

@@ -92,11 +92,11 @@ void buildPoints(const techniques::SurfacePatches& patches, ScreenPattern* patte
   }
   if (!technique_kernel) {
     pattern->points = std::make_unique<techniques::BatchPattern>(
-        pattern->key.domain, std::move(coords), techniques::BatchOutput::kPositionAndDerivatives);
+        pattern->key.domain, std::move(coords), techniques::BatchOutput::kPositions);
     return;
   }
   pattern->points = patches.makeBatchPattern(pattern->key.domain, std::move(coords),
-                                             techniques::BatchOutput::kPositionAndDerivatives);
+                                             techniques::BatchOutput::kPositions);
 }
 
 // Each lattice point in the first triangle that contains it (barycentric weights >= -1e-9;

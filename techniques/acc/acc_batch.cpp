@@ -30,6 +30,7 @@ void AccBatchPattern::evaluate(const AccControlPoints<double>& patch,
                                techniques::BatchPoints& out) const {
   out.reset(pointCount());
   techniques::combineControlPoints(geometry_, patch.b.data(), out.position);
+  if (output() == techniques::BatchOutput::kPositions) return;
   techniques::combineControlPoints(tangent_u_, patch.tu.data(), out.du);
   techniques::combineControlPoints(tangent_v_, patch.tv.data(), out.dv);
   out.has_derivatives = true;

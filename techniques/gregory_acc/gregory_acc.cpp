@@ -85,6 +85,15 @@ class GregoryPatches final : public techniques::SurfacePatches {
     return {point.position, point.normal};
   }
 
+  mesh::Vec3d evaluatePosition(size_t patch, const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
+    const GregoryPoints<double>& cp = points_d_[patch];
+    if (patchDomain(patch) == techniques::PatchDomain::kTriangle) {
+      return evaluateGregoryTrianglePosition(cp, coord[0], coord[1], coord[2], symmetric_edges_);
+    }
+    return evaluateGregoryPosition(cp, coord[0], coord[1], symmetric_edges_);
+  }
+
   std::unique_ptr<techniques::BatchPattern> makeBatchPattern(
       techniques::PatchDomain domain, std::vector<techniques::DomainCoord> coords,
       techniques::BatchOutput output) const override {

@@ -58,6 +58,12 @@ mesh::Vec3T<T> symmetricEdge(const mesh::Vec3T<T>& a, const mesh::Vec3T<T>& ea,
   return halfEdge(a, ea, s, t) + halfEdge(b, eb, t, s);
 }
 
+// Cubic Bernstein basis at t (bit for bit the b of the overload below).
+template <class T>
+std::array<T, 4> bernstein3(T t) {
+  const T s = T(1) - t;
+  return {s * s * s, T(3) * s * s * t, T(3) * s * t * t, t * t * t};
+}
 // Cubic Bernstein basis and derivative at t.
 template <class T>
 void bernstein3(T t, std::array<T, 4>& b, std::array<T, 4>& d) {
@@ -66,6 +72,13 @@ void bernstein3(T t, std::array<T, 4>& b, std::array<T, 4>& d) {
   d = {T(-3) * s * s, T(3) * s * (s - T(2) * t), T(3) * t * (T(2) * s - t), T(3) * t * t};
 }
 
+// The blended face point alone (bit for bit the q of the overload below).
+template <class T>
+mesh::Vec3T<T> blendFace(const mesh::Vec3T<T>& fp, const mesh::Vec3T<T>& fm, T a, T b) {
+  const T sum = a + b;
+  if (sum == T(0)) return (fp + fm) * T(0.5);
+  return (fp * a + fm * b) * (T(1) / sum);
+}
 // Rationally blended face point (a Fp + b Fm) / (a + b) and its derivatives, given the
 // derivatives of a and b (Loop et al. 2009 eq. 2). At the patch corner a + b = 0: the
 // point's Bernstein weight and derivative weight are zero there, so the mean is used.
@@ -159,6 +172,35 @@ GregoryFrame<T> evaluateGregoryFrame(const GregoryPoints<T>& cp, T u, T v, bool 
     }
   }
   return {position, tangent_u, tangent_v};
+}
+
+// The position alone at (u, v): evaluateGregoryFrame's, bit for bit (the same operations in
+// the same order), without the tangents.
+template <class T>
+mesh::Vec3T<T> evaluateGregoryPosition(const GregoryPoints<T>& cp, T u, T v, bool symmetric_edges) {
+  const T one(1), zero(0);
+  const T iu = one - u, iv = one - v;
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  if (symmetric_edges) {
+    if (v == zero) return symmetricEdge(at(0, kP), at(0, kEp), at(1, kEm), at(1, kP), u);
+    if (u == one) return symmetricEdge(at(1, kP), at(1, kEp), at(2, kEm), at(2, kP), v);
+    if (v == one) return symmetricEdge(at(3, kP), at(3, kEm), at(2, kEp), at(2, kP), u);
+    if (u == zero) return symmetricEdge(at(0, kP), at(0, kEm), at(3, kEp), at(3, kP), v);
+  }
+  std::array<std::array<mesh::Vec3T<T>, 4>, 4> q;
+  setQuadBoundaryNet(cp, q);
+  q[1][1] = blendFace(at(0, kFp), at(0, kFm), u, v);
+  q[1][2] = blendFace(at(1, kFp), at(1, kFm), v, iu);
+  q[2][2] = blendFace(at(2, kFp), at(2, kFm), iu, iv);
+  q[2][1] = blendFace(at(3, kFp), at(3, kFm), iv, u);
+  const std::array<T, 4> bu = bernstein3(u), bv = bernstein3(v);
+  mesh::Vec3T<T> position{zero, zero, zero};
+  for (int j = 0; j < 4; ++j) {
+    mesh::Vec3T<T> row{zero, zero, zero};
+    for (int i = 0; i < 4; ++i) row = row + q[j][i] * bu[i];
+    position = position + row * bv[j];
+  }
+  return position;
 }
 
 // Position and unit normal at (u, v).
@@ -307,6 +349,33 @@ GregoryFrame<T> evaluateGregoryTriangleFrame(const GregoryPoints<T>& cp, T u, T 
     }
   }
   return {position, tangent_a, tangent_c};
+}
+
+// The position alone at (u, v, w): evaluateGregoryTriangleFrame's, bit for bit.
+template <class T>
+mesh::Vec3T<T> evaluateGregoryTrianglePosition(const GregoryPoints<T>& cp, T u, T v, T w,
+                                               bool symmetric_edges) {
+  const T one(1), zero(0);
+  auto at = [&cp](uint32_t corner, Slot slot) { return cp[corner * 5 + slot]; };
+  if (symmetric_edges) {
+    if (w == zero) return symmetricEdge(at(0, kP), at(0, kEp), at(1, kEm), at(1, kP), v);
+    if (u == zero) return symmetricEdge(at(1, kP), at(1, kEp), at(2, kEm), at(2, kP), w);
+    if (v == zero) return symmetricEdge(at(2, kP), at(2, kEp), at(0, kEm), at(0, kP), u);
+  }
+  std::array<mesh::Vec3T<T>, 15> b;
+  setTriangleBoundaryNet(cp, b);
+  b[quarticSlot(2, 1, 1)] = blendFace(at(0, kFp), at(0, kFm), v, w);
+  b[quarticSlot(1, 2, 1)] = blendFace(at(1, kFp), at(1, kFm), w, u);
+  b[quarticSlot(1, 1, 2)] = blendFace(at(2, kFp), at(2, kFm), u, v);
+  const std::array<T, 5> up{one, u, u * u, u * u * u, u * u * u * u};
+  const std::array<T, 5> vp{one, v, v * v, v * v * v, v * v * v * v};
+  const std::array<T, 5> wp{one, w, w * w, w * w * w, w * w * w * w};
+  mesh::Vec3T<T> position{zero, zero, zero};
+  for (const NetIndex& n : kQuarticNet) {
+    position = position +
+               b[quarticSlot(n.i, n.j, n.k)] * (T(n.multinomial) * ((up[n.i] * vp[n.j]) * wp[n.k]));
+  }
+  return position;
 }
 
 template <class T>

@@ -121,6 +121,50 @@ TEST(BatchEval, EqualsPerPointEvaluateForEveryTechniqueAndVariant) {
   EXPECT_GT(coverage.default_patches, 100u);  // pn_triangles and phong keep the default
 }
 
+// The position alone (BatchOutput::kPositions, the screen-space error's evaluation) is the
+// full evaluation's position bit for bit: evaluatePosition against evaluate(), and the batch
+// of positions against the batch with derivatives, so the adaptivity figures do not move.
+// The control: coordinates 1e-9 off do move positions (the check sees a change).
+TEST(BatchEval, PositionsAloneEqualTheFullEvaluationBitForBit) {
+  size_t points = 0, moved_by_control = 0;
+  for (const techniques::Technique* t : surfaceTechniques()) {
+    for (const std::string& name : kAssets) {
+      const mesh::Mesh mesh = loadAsset(name);
+      if (!t->checkSupport(mesh).empty()) continue;
+      for (const techniques::VariantInfo& v : t->variants()) {
+        const auto surface = techniques::buildSurface(*t, mesh, v);
+        const std::string what = t->info().id + "/" + v.name + " on " + name;
+        for (techniques::PatchDomain domain :
+             {techniques::PatchDomain::kQuad, techniques::PatchDomain::kTriangle}) {
+          const std::vector<techniques::DomainCoord> coords = patterns(domain).back();
+          std::vector<techniques::DomainCoord> nudged = coords;
+          for (techniques::DomainCoord& c : nudged) c[0] += 1e-9;
+          const auto positions =
+              surface->makeBatchPattern(domain, coords, techniques::BatchOutput::kPositions);
+          const auto full = surface->makeBatchPattern(
+              domain, coords, techniques::BatchOutput::kPositionAndDerivatives);
+          techniques::BatchPoints alone, with;
+          for (size_t p = 0; p < surface->patchCount(); ++p) {
+            if (surface->patchDomain(p) != domain) continue;
+            surface->evaluateBatch(p, *positions, alone);
+            surface->evaluateBatch(p, *full, with);
+            for (size_t i = 0; i < coords.size(); ++i, ++points) {
+              const mesh::Vec3d a = techniques::BatchPoints::at(alone.position, i);
+              ASSERT_EQ(a, techniques::BatchPoints::at(with.position, i)) << what << " patch " << p;
+              ASSERT_EQ(surface->evaluatePosition(p, coords[i]),
+                        surface->evaluate(p, coords[i]).position)
+                  << what << " patch " << p;
+              if (surface->evaluatePosition(p, nudged[i]) != a) ++moved_by_control;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(points, 10000u);
+  EXPECT_GT(moved_by_control, points / 4);  // the check can see a small change
+}
+
 TEST(BatchEval, ThePositionAndDerivativeOutputLeavesNormalsOut) {
   const mesh::Mesh mesh = loadAsset("opensubdiv/catmark_xord_interior.obj");
   for (const char* id : {"acc", "gregory_acc"}) {

@@ -13,6 +13,7 @@
 #include "core/mesh/topology.h"
 #include "core/osd/scheme.h"
 #include "harness/measures/common/patch_sample.h"
+#include "harness/measures/error/hausdorff_memo.h"
 #include "reference/hausdorff.h"
 #include "reference/limit_tessellation.h"
 #include "reference/triangle_mesh_ref.h"
@@ -454,11 +455,11 @@ SurfaceErrorFigures measureSurfaceError(const techniques::SurfacePatches& patche
     for (size_t t = 0; t < dense.triangles.size() && !part.all; ++t) {
       if (part.part[dense.triangle_face[t]]) dense_part.push_back(dense.triangles[t]);
     }
-    const ref::HausdorffResult distance =
-        ref::hausdorff({values.technique_points, part.all ? technique_around : technique_part},
-                       {values.technique_points, technique_around},
-                       part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part},
-                       dense.view(), 2);
+    const ref::HausdorffResult distance = memoisedHausdorff(
+        {values.technique_points, part.all ? technique_around : technique_part},
+        {values.technique_points, technique_around},
+        part.all ? dense.view() : ref::TriangleMeshRef{dense.positions, dense_part}, dense.view(),
+        2);
     figures.hausdorff = distance.hausdorff;
     figures.hausdorff_technique_to_limit = distance.a_to_b.max;
     figures.hausdorff_limit_to_technique = distance.b_to_a.max;
