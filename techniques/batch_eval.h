@@ -82,7 +82,7 @@ class AlignedDoubles {
   size_t size_ = 0, capacity_ = 0;
 };
 
-// What a batched evaluation computes besides the position.
+// What a batched evaluation computes: the position alone, or with derivatives and normals.
 enum class BatchOutput : uint8_t {
   kPositions,               // the position alone (screen-space error): no du, dv or normal
   kPositionAndDerivatives,  // position, du, dv: the work Bfr's Evaluate(P, Du, Dv) does
@@ -126,8 +126,8 @@ class BatchPattern {
 // with tangent patches (acc) returns its tangent fields, whose cross product is its normal.
 struct BatchPoints {
   size_t count = 0;              // points filled: the pattern's point count
-  bool has_derivatives = false;  // du, dv filled (a technique with a batched kernel)
-  bool has_normals = false;      // normal filled (the per-point default always fills it)
+  bool has_derivatives = false;  // du, dv filled (a batched kernel, unless kPositions)
+  bool has_normals = false;      // normal filled (the per-point default, unless kPositions)
   std::array<AlignedDoubles, 3> position, du, dv, normal;
 
   // Sizes every array for `points` (padded to whole blocks) and clears the flags.
