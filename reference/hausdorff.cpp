@@ -29,16 +29,51 @@ mesh::Vec3d barycentricPoint(const mesh::Vec3d& a, const mesh::Vec3d& b, const m
   return a * (1 - wb - wc) + b * wb + c * wc;
 }
 
+constexpr double kUnset = -1;    // no shared distance: the triangle finds its own
+constexpr double kSkipped = -2;  // bounded below the floor: cannot hold the maximum
+
+// The lattice points' distances only feed the maximum (the centroids carry the RMS and mean),
+// and the largest centroid distance (the floor) bounds that maximum from below. A lattice
+// point of triangle t is a corner of one "upward" sub-triangle, whose centroid's closest
+// target triangle T is known: D(p) <= distance(p, T), so a point whose bound is below the
+// floor can neither hold nor tie the maximum, and is skipped (kSkipped) without a query.
+struct LatticeBound {
+  const TriangleDistanceField* target;
+  std::span<const uint32_t> centroid_triangle;  // per source triangle, per upward centroid
+  int m;
+  double floor;
+  double scale;  // 1; the broken control's 0.5 (MaxSearch::kBrokenSkip)
+
+  size_t ups() const { return size_t(m) * size_t(m + 1) / 2; }
+  // The closest target triangle of the upward centroid next to lattice point (i, j) of t.
+  uint32_t triangleNear(size_t t, int i, int j) const {
+    if (i + j > m - 1) (i > 0 ? i : j) -= 1;
+    const size_t row = size_t(i) * size_t(m) - size_t(i) * size_t(i - 1) / 2;
+    return centroid_triangle[t * ups() + row + size_t(j)];
+  }
+  // The exact distance of p, or kSkipped; `hint` as TriangleDistanceField::closest's.
+  double distance(size_t t, int i, int j, const mesh::Vec3d& p, uint32_t* hint) const {
+    const uint32_t near = centroid_triangle.empty() ? kNoTriangle : triangleNear(t, i, j);
+    if (near != kNoTriangle) {
+      if (scale * target->distanceTo(p, near) < floor) return kSkipped;
+      *hint = near;
+    }
+    const ClosestPoint closest = target->closest(p, *hint);
+    *hint = closest.triangle;
+    return closest.distance;
+  }
+};
+
 // The distances of the lattice points source triangles share, computed once: every vertex
-// (a corner of each triangle around it) and each edge's interior lattice points, as the
-// edge's first triangle (lowest index) computes them. A triangle uses a shared distance only
+// (as its first triangle, lowest index, has it as a corner) and each edge's interior lattice
+// points (as the edge's first triangle computes them). A triangle uses a shared distance only
 // where its own point is bitwise the shared one (so every figure is what sampling each
 // triangle alone gives, bit for bit); a dense reference mesh then needs about 6 queries a
 // triangle at lattice level 2 instead of 10.
 class SharedLattice {
  public:
-  SharedLattice(const TriangleMeshRef& source, const TriangleDistanceField& target, int m)
-      : m_(m), vertex_(source.positions.size(), kUnset) {
+  SharedLattice(const TriangleMeshRef& source, const LatticeBound& bound)
+      : m_(bound.m), vertex_(source.positions.size(), kUnset) {
     std::vector<std::array<uint32_t, 4>> sides;  // lo, hi, triangle, local edge
     for (uint32_t t = 0; t < source.triangles.size(); ++t) {
       for (uint32_t e = 0; e < 3; ++e) {
@@ -52,32 +87,36 @@ class SharedLattice {
       edges_.push_back({sides[i][0], sides[i][1]});
       owners_.push_back({sides[i][2], sides[i][3]});
     }
-    const size_t per_edge = size_t(std::max(m - 1, 0));
+    const size_t per_edge = size_t(std::max(m_ - 1, 0));
     edge_points_.resize(edges_.size() * per_edge);
     edge_distance_.resize(edges_.size() * per_edge);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, edges_.size()),
                       [&](const tbb::blocked_range<size_t>& range) {
                         uint32_t hint = kNoTriangle;
                         for (size_t e = range.begin(); e != range.end(); ++e) {
-                          fillEdge(source, target, e, &hint);
+                          fillEdge(source, bound, e, &hint);
                         }
                       });
-    std::vector<uint8_t> used(source.positions.size(), 0);
-    for (const Triangle& tri : source.triangles) used[tri[0]] = used[tri[1]] = used[tri[2]] = 1;
+    // Each vertex as a corner of its first triangle: (i, j) = (0, 0), (m, 0) or (0, m).
+    std::vector<std::array<uint32_t, 2>> owner(source.positions.size(), {kNoTriangle, 0});
+    for (uint32_t t = source.triangles.size(); t-- > 0;) {
+      for (uint32_t k = 0; k < 3; ++k) owner[source.triangles[t][k]] = {t, k};
+    }
     tbb::parallel_for(tbb::blocked_range<size_t>(0, vertex_.size()),
                       [&](const tbb::blocked_range<size_t>& range) {
                         uint32_t hint = kNoTriangle;
                         for (size_t v = range.begin(); v != range.end(); ++v) {
-                          if (!used[v]) continue;
-                          const ClosestPoint closest = target.closest(source.positions[v], hint);
-                          hint = closest.triangle;
-                          vertex_[v] = closest.distance;
+                          const auto [t, k] = owner[v];
+                          if (t == kNoTriangle) continue;
+                          vertex_[v] = bound.distance(t, k == 1 ? m_ : 0, k == 2 ? m_ : 0,
+                                                      source.positions[v], &hint);
                         }
                       });
   }
 
   // The shared distance of the lattice point (i, j) of triangle `tri` (weights i/m of its
-  // corner 1 and j/m of corner 2) whose position is `p`, or kUnset when it has none.
+  // corner 1 and j/m of corner 2) whose position is `p`: kSkipped, kUnset when it has none,
+  // or the distance.
   double find(const Triangle& tri, const std::span<const mesh::Vec3d> positions, int i, int j,
               const mesh::Vec3d& p) const {
     const int corner = i == 0 && j == 0 ? 0 : i == m_ && j == 0 ? 1 : i == 0 && j == m_ ? 2 : -1;
@@ -96,15 +135,13 @@ class SharedLattice {
     return sameBits(p, edge_points_[slot]) ? edge_distance_[slot] : kUnset;
   }
 
-  static constexpr double kUnset = -1;
-
  private:
   static bool sameBits(const mesh::Vec3d& a, const mesh::Vec3d& b) {
     return std::memcmp(&a, &b, sizeof(mesh::Vec3d)) == 0;
   }
 
   // Edge e's interior points as its owner triangle's lattice gives them, from its lo corner.
-  void fillEdge(const TriangleMeshRef& source, const TriangleDistanceField& target, size_t e,
+  void fillEdge(const TriangleMeshRef& source, const LatticeBound& bound, size_t e,
                 uint32_t* hint) {
     const auto [t, local] = owners_[e];
     const Triangle& tri = source.triangles[t];
@@ -117,10 +154,8 @@ class SharedLattice {
       const mesh::Vec3d p = barycentricPoint(a, b, c, i * inv_m, j * inv_m);
       const bool forward = tri[local] < tri[(local + 1) % 3];
       const size_t slot = e * size_t(m_ - 1) + size_t((forward ? k : m_ - k) - 1);
-      const ClosestPoint closest = target.closest(p, *hint);
-      *hint = closest.triangle;
       edge_points_[slot] = p;
-      edge_distance_[slot] = closest.distance;
+      edge_distance_[slot] = bound.distance(t, i, j, p, hint);
     }
   }
 
@@ -132,11 +167,12 @@ class SharedLattice {
   std::vector<double> edge_distance_;
 };
 
-// `hint`: the target triangle closest to the previous sample (speeds the search, never
-// changes an answer); updated to this triangle's last.
-TriangleSums sampleTriangle(const TriangleMeshRef& source, size_t t,
-                            const TriangleDistanceField& target, const SharedLattice& shared, int m,
-                            uint32_t* hint) {
+// The centroids of triangle t's "upward" sub-triangles (i, j) and its "downward" ones: their
+// sums and maximum (the first on ties, in this order), and each upward centroid's closest
+// target triangle into `up_triangle` (m (m + 1) / 2 of them). `hint` as closest()'s.
+TriangleSums sampleCentroids(const TriangleMeshRef& source, size_t t,
+                             const TriangleDistanceField& target, int m, uint32_t* hint,
+                             uint32_t* up_triangle) {
   const Triangle& tri = source.triangles[t];
   const mesh::Vec3d &a = source.positions[tri[0]], &b = source.positions[tri[1]],
                     &c = source.positions[tri[2]];
@@ -144,65 +180,93 @@ TriangleSums sampleTriangle(const TriangleMeshRef& source, size_t t,
   sums.area = 0.5 * length(cross(b - a, c - a));
   const double inv_m = 1.0 / m;
   bool first = true;
-  auto consider = [&](const mesh::Vec3d& p, double known) {
-    double d = known;
-    if (d == SharedLattice::kUnset) {
-      const ClosestPoint closest = target.closest(p, *hint);
-      *hint = closest.triangle;
-      d = closest.distance;
-    }
-    if (first || d > sums.max) {
-      sums.max = d;
+  auto sample = [&](double wb, double wc) {
+    const mesh::Vec3d p = barycentricPoint(a, b, c, wb, wc);
+    const ClosestPoint closest = target.closest(p, *hint);
+    *hint = closest.triangle;
+    if (first || closest.distance > sums.max) {
+      sums.max = closest.distance;
       sums.max_at = p;
       first = false;
     }
-    return d;
+    sums.sum_d += closest.distance;
+    sums.sum_d2 += closest.distance * closest.distance;
+    return closest.triangle;
   };
-  for (int i = 0; i <= m; ++i) {
-    for (int j = 0; i + j <= m; ++j) {
-      const mesh::Vec3d p = barycentricPoint(a, b, c, i * inv_m, j * inv_m);
-      consider(p, shared.find(tri, source.positions, i, j, p));
-    }
-  }
-  // Centroids of the "upward" sub-triangles (i,j) and the "downward" ones.
   for (int i = 0; i < m; ++i) {
     for (int j = 0; i + j < m; ++j) {
-      const double up =
-          consider(barycentricPoint(a, b, c, (i + 1.0 / 3) * inv_m, (j + 1.0 / 3) * inv_m),
-                   SharedLattice::kUnset);
-      sums.sum_d += up;
-      sums.sum_d2 += up * up;
-      if (i + j < m - 1) {
-        const double down =
-            consider(barycentricPoint(a, b, c, (i + 2.0 / 3) * inv_m, (j + 2.0 / 3) * inv_m),
-                     SharedLattice::kUnset);
-        sums.sum_d += down;
-        sums.sum_d2 += down * down;
-      }
+      *up_triangle++ = sample((i + 1.0 / 3) * inv_m, (j + 1.0 / 3) * inv_m);
+      if (i + j < m - 1) sample((i + 2.0 / 3) * inv_m, (j + 2.0 / 3) * inv_m);
     }
   }
   return sums;
 }
 
+// The lattice points of triangle t, before its centroids in sample order: `sums` (its
+// centroids' figures) takes the first lattice point of a larger maximum, or of an equal one.
+void sampleLattice(const TriangleMeshRef& source, size_t t, const SharedLattice& shared,
+                   const LatticeBound& bound, uint32_t* hint, TriangleSums* sums) {
+  const Triangle& tri = source.triangles[t];
+  const mesh::Vec3d &a = source.positions[tri[0]], &b = source.positions[tri[1]],
+                    &c = source.positions[tri[2]];
+  const int m = bound.m;
+  const double inv_m = 1.0 / m;
+  bool found = false;
+  double max = 0;
+  mesh::Vec3d max_at;
+  for (int i = 0; i <= m; ++i) {
+    for (int j = 0; i + j <= m; ++j) {
+      const mesh::Vec3d p = barycentricPoint(a, b, c, i * inv_m, j * inv_m);
+      double d = shared.find(tri, source.positions, i, j, p);
+      if (d == kUnset) d = bound.distance(t, i, j, p, hint);
+      if (d == kSkipped) continue;
+      if (!found || d > max) {
+        max = d;
+        max_at = p;
+        found = true;
+      }
+    }
+  }
+  if (found && max >= sums->max) {
+    sums->max = max;
+    sums->max_at = max_at;
+  }
+}
+
 }  // namespace
 
 DirectedDistance directedDistance(const TriangleMeshRef& source,
-                                  const TriangleDistanceField& target, int lattice_level) {
+                                  const TriangleDistanceField& target, int lattice_level,
+                                  MaxSearch search) {
   if (lattice_level < 1 || lattice_level > kMaxLatticeLevel) {
     throw mesh::InputError("hausdorff", "option 'lattice_level'",
                            "level " + std::to_string(lattice_level) + " is outside [1, " +
                                std::to_string(kMaxLatticeLevel) + "]");
   }
   const int m = lattice_level;
-  const SharedLattice shared(source, target, m);
+  const size_t ups = size_t(m) * size_t(m + 1) / 2;
   std::vector<TriangleSums> per_triangle(source.triangles.size());
+  std::vector<uint32_t> up_triangle(per_triangle.size() * ups);
+  // Neighbouring source triangles (in index order) are usually close on the target too.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, per_triangle.size()),
                     [&](const tbb::blocked_range<size_t>& range) {
-                      // Neighbouring source triangles (in index order) are usually
-                      // close on the target too.
                       uint32_t hint = kNoTriangle;
                       for (size_t t = range.begin(); t != range.end(); ++t) {
-                        per_triangle[t] = sampleTriangle(source, t, target, shared, m, &hint);
+                        per_triangle[t] = sampleCentroids(source, t, target, m, &hint,
+                                                          up_triangle.data() + t * ups);
+                      }
+                    });
+  LatticeBound bound{&target, {}, m, 0, search == MaxSearch::kBrokenSkip ? 0.5 : 1.0};
+  if (search != MaxSearch::kEverySample) {
+    bound.centroid_triangle = up_triangle;
+    for (const TriangleSums& sums : per_triangle) bound.floor = std::max(bound.floor, sums.max);
+  }
+  const SharedLattice shared(source, bound);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, per_triangle.size()),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      uint32_t hint = kNoTriangle;
+                      for (size_t t = range.begin(); t != range.end(); ++t) {
+                        sampleLattice(source, t, shared, bound, &hint, &per_triangle[t]);
                       }
                     });
   // Reduced serially in triangle order, so the result does not depend on scheduling.

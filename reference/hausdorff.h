@@ -6,7 +6,8 @@
 //  - the centroids of its m^2 congruent sub-triangles, which carry the RMS and mean as a
 //    midpoint rule (each weighs area / m^2).
 // The maximum is taken over both sets. Every sample's distance is exact (closest point
-// over all triangles of the target, in double).
+// over all triangles of the target, in double), or, for a lattice point proved below the
+// largest centroid distance, left out: every figure is unchanged, bit for bit (MaxSearch).
 #pragma once
 
 #include <cstddef>
@@ -25,7 +26,7 @@ struct DirectedDistance {
   double rms = 0;      // world units: area-weighted root mean square distance
   double mean = 0;     // world units: area-weighted mean distance
   double area = 0;     // world units^2: area of the source
-  size_t samples = 0;  // distance queries made
+  size_t samples = 0;  // samples of the source (lattice points and centroids)
 };
 
 struct HausdorffResult {
@@ -37,11 +38,20 @@ struct HausdorffResult {
   double rms = 0;
 };
 
+// How the lattice points (which feed the maximum alone) are measured.
+enum class MaxSearch {
+  kBoundedSkip,  // skip a point whose bound (its distance to the triangle closest to the
+                 // centroid next to it) is below the largest centroid distance: the default
+  kEverySample,  // measure every point (the oracle kBoundedSkip equals)
+  kBrokenSkip,   // a control: the bound halved, so points that hold the maximum are skipped
+};
+
 // Samples of `source` against a prepared target (reuse one field for many sources).
 // Throws InputError naming the option when lattice_level is outside [1, kMaxLatticeLevel].
 DirectedDistance directedDistance(const TriangleMeshRef& source,
                                   const TriangleDistanceField& target,
-                                  int lattice_level = kDefaultLatticeLevel);
+                                  int lattice_level = kDefaultLatticeLevel,
+                                  MaxSearch search = MaxSearch::kBoundedSkip);
 
 HausdorffResult hausdorff(const TriangleMeshRef& a, const TriangleMeshRef& b,
                           int lattice_level = kDefaultLatticeLevel);

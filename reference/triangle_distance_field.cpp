@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -31,7 +32,9 @@ struct TriangleBox {
   mesh::Vec3d lo, hi;
 };
 
-double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box) {
+namespace {
+
+inline double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box) {
   double sum = 0;
   for (int k = 0; k < 3; ++k) {
     const double below = box.lo[k] - p[k], above = p[k] - box.hi[k];
@@ -40,6 +43,8 @@ double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box) {
   }
   return sum;
 }
+
+}  // namespace
 
 struct TriangleDistanceField::Impl {
   std::vector<mesh::Vec3d> positions;
@@ -157,6 +162,13 @@ ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t h
   rtcInitPointQueryContext(&context);
   rtcPointQuery(impl_->scene, &point_query, &context, visitTriangle, &state);
   return state.best;
+}
+
+double TriangleDistanceField::distanceTo(const mesh::Vec3d& query, uint32_t t) const {
+  assert(t < impl_->triangles.size());
+  const Triangle& tri = impl_->triangles[t];
+  const std::vector<mesh::Vec3d>& p = impl_->positions;
+  return length(closestPointOnTriangle(query, p[tri[0]], p[tri[1]], p[tri[2]]).point - query);
 }
 
 }  // namespace tb::ref

@@ -45,6 +45,9 @@ class TriangleDistanceField {
   // range, included) is valid: the minimum and its tie-break (lowest triangle index)
   // do not depend on it.
   ClosestPoint closest(const mesh::Vec3d& query, uint32_t hint) const;
+  // World units: the distance from `query` to triangle t < triangleCount(), computed as
+  // closest() computes each triangle's (so never below closest(query).distance).
+  double distanceTo(const mesh::Vec3d& query, uint32_t t) const;
 
  private:
   struct Impl;

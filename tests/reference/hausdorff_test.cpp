@@ -6,6 +6,9 @@
 //    whose nearest point to 1.01 v is v itself, which is in A. The lattice samples
 //    include the vertices, so the sampled B -> A maximum is 0.01 r up to round-off,
 //    and A -> B <= 0.01 r by the same scaling argument.
+//  - Skipping lattice points bounded below the largest centroid distance (MaxSearch) gives
+//    the figures of measuring every sample, bit for bit, on the bundled shapes; its control
+//    halves the bound and must move a maximum.
 //  - A flat square against a pyramid on it: the vertices of the square lie on the
 //    pyramid, so vertex-only sampling would report 0 from square to pyramid; the true
 //    value, at the centre, is the distance from the base centre to a slanted face.
@@ -14,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <map>
 
@@ -110,6 +114,44 @@ TEST(Hausdorff, SamplesInsideTrianglesNotOnlyVertices) {
   EXPECT_NEAR(result.b_to_a.max, kHeight, 1e-14);  // the apex
   EXPECT_NEAR(result.a_to_b.max_at.x, 0.0, 1e-14);
   EXPECT_NEAR(result.a_to_b.max_at.y, 0.0, 1e-14);
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool sameFigures(const DirectedDistance& a, const DirectedDistance& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (!sameBits(a.max_at[k], b.max_at[k])) return false;
+  }
+  return sameBits(a.max, b.max) && sameBits(a.rms, b.rms) && sameBits(a.mean, b.mean) &&
+         sameBits(a.area, b.area) && a.samples == b.samples;
+}
+
+TEST(Hausdorff, SkippingBoundedLatticePointsKeepsEveryFigureBitForBit) {
+  size_t cases = 0, control_moved = 0;
+  for (const std::string& name : testing::bundledShapes("catmark_")) {
+    const mesh::Mesh shape = testing::loadShape(name);
+    if (shape.faceCount() > 200) continue;  // the pawn and the helmet: the same code, slower
+    const LimitSurface surface(shape, osd::Scheme::kCatmullClark);
+    const LimitTessellation coarse = tessellateLimit(surface, 2);
+    const LimitTessellation fine = tessellateLimit(surface, 5);
+    for (const auto& [source, target] : {std::pair{&coarse, &fine}, std::pair{&fine, &coarse}}) {
+      const TriangleDistanceField field(target->view());
+      for (int level : {2, 3}) {
+        const DirectedDistance every =
+            directedDistance(source->view(), field, level, MaxSearch::kEverySample);
+        const DirectedDistance skipped =
+            directedDistance(source->view(), field, level, MaxSearch::kBoundedSkip);
+        EXPECT_TRUE(sameFigures(every, skipped)) << name << " level " << level;
+        const DirectedDistance broken =
+            directedDistance(source->view(), field, level, MaxSearch::kBrokenSkip);
+        control_moved += !sameFigures(every, broken);
+        ++cases;
+      }
+    }
+  }
+  EXPECT_GE(cases, 40u);
+  EXPECT_GT(control_moved, 0u);
+  std::cout << cases << " cases; the halved bound moved the maximum in " << control_moved << "\n";
 }
 
 }  // namespace
