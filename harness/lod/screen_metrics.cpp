@@ -214,11 +214,19 @@ ScreenEdgeFigures edgeFigures(std::vector<double> lengths_px, double target_px) 
     return l >= 0.5 * target_px && l <= 2 * target_px;
   }));
   f.fraction_in_band = double(in_band) / double(lengths_px.size());
-  std::sort(lengths_px.begin(), lengths_px.end());
-  // Nearest rank: the smallest value with at least `percent` % of the values at or below it.
+  // Nearest rank: the smallest value with at least `percent` % of the values at or below it,
+  // i.e. the value at that index of the sorted lengths (nth_element: the same value, found
+  // in linear time, each rank above the last).
   const size_t n = lengths_px.size();
+  size_t placed = 0;  // lengths before it are final: no larger than any after
   auto rank = [&](size_t percent) {
-    return lengths_px[std::max<size_t>(1, (percent * n + 99) / 100) - 1];
+    const size_t index = std::max<size_t>(1, (percent * n + 99) / 100) - 1;
+    if (index >= placed) {
+      std::nth_element(lengths_px.begin() + ptrdiff_t(placed),
+                       lengths_px.begin() + ptrdiff_t(index), lengths_px.end());
+      placed = index + 1;
+    }
+    return lengths_px[index];
   };
   f.p05_px = rank(5);
   f.median_px = rank(50);

@@ -43,20 +43,32 @@ void tessellatePattern(ScreenPattern* pattern) {
   }
 }
 
+// Sorted by (lower, higher) end: a counting sort on the lower end, then each vertex's few
+// higher ends sorted and deduplicated in place.
 void buildEdges(ScreenPattern* pattern) {
-  std::vector<uint64_t> packed;
-  packed.reserve(3 * pattern->triangles.size());
+  const size_t vertices = pattern->vertexCount();
+  std::vector<uint32_t> start(vertices + 1, 0);
+  for (const auto& t : pattern->triangles) {
+    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  }
+  for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> higher(start[vertices]);
+  std::vector<uint32_t> next(start.begin(), start.end() - 1);
   for (const auto& t : pattern->triangles) {
     for (int k = 0; k < 3; ++k) {
       const uint32_t a = t[k], b = t[(k + 1) % 3];
-      packed.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+      higher[next[std::min(a, b)]++] = std::max(a, b);
     }
   }
-  std::sort(packed.begin(), packed.end());
-  packed.erase(std::unique(packed.begin(), packed.end()), packed.end());
   pattern->edges.clear();
-  pattern->edges.reserve(packed.size());
-  for (uint64_t e : packed) pattern->edges.push_back({uint32_t(e >> 32), uint32_t(e)});
+  pattern->edges.reserve(higher.size() / 2 + vertices);
+  for (uint32_t v = 0; v < vertices; ++v) {
+    const auto first = higher.begin() + start[v], last = higher.begin() + start[v + 1];
+    std::sort(first, last);
+    for (auto it = first; it != last; ++it) {
+      if (it == first || *it != *(it - 1)) pattern->edges.push_back({v, *it});
+    }
+  }
 }
 
 techniques::DomainCoord blendCoord(const std::vector<techniques::DomainCoord>& vertices,

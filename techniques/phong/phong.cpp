@@ -52,6 +52,45 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
+  // evaluate() at every point, with the patch's corners (and for plain Phong their canonical
+  // order) gathered once: the same operations per point, so the same bits.
+  void evaluateBatch(size_t patch, const techniques::BatchPattern& pattern,
+                     techniques::BatchPoints& out) const override {
+    if (pattern.domain() != techniques::PatchDomain::kTriangle) {
+      return evaluateBatchPointByPoint(patch, pattern, out);  // refuses it
+    }
+    assert(patch < patchCount());
+    out.reset(pattern.pointCount());
+    const bool normals = pattern.output() != techniques::BatchOutput::kPositions;
+    auto store = [&](size_t i, const PhongPoint<double>& point) {
+      techniques::BatchPoints::set(out.position, i, point.position);
+      if (normals) techniques::BatchPoints::set(out.normal, i, point.normal);
+    };
+    const std::vector<techniques::DomainCoord>& coords = pattern.coords();
+    if (edge_) {
+      const auto& perm = edge_build_.records[patch].perm;
+      const PhongEdgeTriangle<double> tri =
+          edgeTriangle<double>(patch, [](const mesh::Vec3d& v) { return v; });
+      for (size_t i = 0; i < coords.size(); ++i) {
+        const techniques::DomainCoord& c = coords[i];
+        store(i, evaluatePhongEdge(tri, {c[perm[0]], c[perm[1]], c[perm[2]]}, alpha_));
+      }
+    } else {
+      const PhongTriangle<double> tri = faceTriangle(patch);
+      const std::array<int, 3> order = canonicalCornerOrder(tri);
+      PhongTriangle<double> sorted;
+      for (int k = 0; k < 3; ++k) {
+        sorted.position[k] = tri.position[order[k]];
+        sorted.normal[k] = tri.normal[order[k]];
+      }
+      for (size_t i = 0; i < coords.size(); ++i) {
+        const techniques::DomainCoord& c = coords[i];
+        store(i, evaluatePhongInOrder(sorted, {c[order[0]], c[order[1]], c[order[2]]}, alpha_));
+      }
+    }
+    out.has_normals = normals;
+  }
+
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
     assert(patch < patchCount());
