@@ -30,6 +30,12 @@ double maxAbsCoordinate(const mesh::Vec3d& p) {
 // triangle from below, and costs a fraction of the exact closest point.
 struct TriangleBox {
   mesh::Vec3d lo, hi;
+  // The unit normal n and offset n . a of the plane through corner a: |n . q - offset| bounds
+  // the distance from below too, up to rounding. Computing n tilts it by at most `tilt`
+  // radians (a sliver's cross product cancels: 16 eps |b - a| |c - a| / |cross|), which moves
+  // the bound by tilt |q - a|; n = 0 (no test) when degenerate.
+  mesh::Vec3d normal, corner;
+  double offset = 0, tilt = 0;
 };
 
 namespace {
@@ -66,6 +72,7 @@ struct QueryState {
   const std::vector<TriangleBox>* boxes;
   mesh::Vec3d query;
   double pad;
+  double plane_slack;  // world units: the plane test's rounding, far above it
   ClosestPoint best;
 };
 
@@ -75,9 +82,15 @@ bool visitTriangle(RTCPointQueryFunctionArguments* args) {
   // A box farther than the best answer holds no better (or tying) point, since the box
   // contains the triangle; the slack of 1e-12 keeps rounding (a few ulps) from dropping a
   // triangle that ties with the best.
-  const double box_squared = squaredDistanceToBox(state->query, (*state->boxes)[id]);
+  const TriangleBox& box = (*state->boxes)[id];
+  const double box_squared = squaredDistanceToBox(state->query, box);
   const double best_distance = state->best.distance;
   if (box_squared > best_distance * best_distance * (1 + 1e-12)) return false;
+  const mesh::Vec3d& q = state->query;
+  const double height = std::abs(dot(box.normal, q) - box.offset);
+  const double reach = std::abs(q.x - box.corner.x) + std::abs(q.y - box.corner.y) +
+                       std::abs(q.z - box.corner.z);  // >= |q - a|
+  if (height - box.tilt * reach - state->plane_slack > best_distance * (1 + 1e-12)) return false;
   const Triangle& tri = (*state->triangles)[id];
   const std::vector<mesh::Vec3d>& p = *state->positions;
   const TrianglePoint hit = closestPointOnTriangle(state->query, p[tri[0]], p[tri[1]], p[tri[2]]);
@@ -114,6 +127,15 @@ TriangleDistanceField::TriangleDistanceField(std::span<const mesh::Vec3d> positi
         box.hi[k] = std::max(box.hi[k], positions[tri[c]][k]);
       }
     }
+    const mesh::Vec3d& a = positions[tri[0]];
+    const mesh::Vec3d e1 = positions[tri[1]] - a, e2 = positions[tri[2]] - a;
+    const mesh::Vec3d n = cross(e1, e2);
+    if (const double area2 = length(n); area2 > 0 && std::isfinite(area2)) {
+      box.normal = n * (1 / area2);
+      box.corner = a;
+      box.offset = dot(box.normal, a);
+      box.tilt = 16 * std::numeric_limits<double>::epsilon() * length(e1) * length(e2) / area2;
+    }
     impl_->boxes.push_back(box);
   }
 
@@ -139,6 +161,7 @@ ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t h
                    &impl_->boxes,
                    query,
                    kRadiusPad * (impl_->max_abs + maxAbsCoordinate(query)),
+                   1e-12 * (impl_->max_abs + maxAbsCoordinate(query)),
                    {}};
   if (impl_->triangles.empty()) return state.best;
   RTCPointQuery point_query;

@@ -4,7 +4,8 @@
 //    its barycentrics are all >= 0, else take the nearest of the three clamped
 //    segment projections;
 //  - TriangleDistanceField (Embree BVH + that callback) against brute force over
-//    every triangle.
+//    every triangle; on slivers (whose computed plane normals tilt) bit for bit, the
+//    lowest index on ties.
 #include "reference/closest_point.h"
 
 #include <gtest/gtest.h>
@@ -104,6 +105,48 @@ TEST(TriangleDistanceField, MatchesBruteForceOnRandomQueries) {
     EXPECT_NEAR(length(hit.point - query), hit.distance, 1e-15 * diagonal);
   }
   std::cout << "max |field - brute force| / brute force over 1000 queries: " << worst << "\n";
+}
+
+// Fans of slivers around shared points: angles down to 1e-9 radians, where a cross
+// product's direction is rounded by ~1e-7, beside flat triangles at small heights.
+TEST(TriangleDistanceField, SliversGiveTheBruteForceMinimumBitForBit) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<mesh::Vec3d> positions;
+  std::vector<Triangle> triangles;
+  for (int fan = 0; fan < 40; ++fan) {
+    const mesh::Vec3d apex{unit(rng), unit(rng), unit(rng)};
+    const mesh::Vec3d dir = normalize(mesh::Vec3d{unit(rng), unit(rng), unit(rng)});
+    const mesh::Vec3d side = normalize(cross(dir, mesh::Vec3d{unit(rng), unit(rng), unit(rng)}));
+    for (int k = 0; k < 12; ++k) {
+      const double angle = std::pow(10.0, -1 - 0.7 * k), len = 0.3 + 0.2 * unit(rng);
+      const uint32_t base = uint32_t(positions.size());
+      positions.push_back(apex);
+      positions.push_back(apex + dir * len);
+      positions.push_back(apex + (dir + side * angle) * len * 0.9);
+      triangles.push_back({base, base + 1, base + 2});
+    }
+  }
+  const TriangleDistanceField field(positions, triangles);
+  for (int q = 0; q < 2000; ++q) {
+    const Triangle& near = triangles[size_t(q) % triangles.size()];
+    const double w = 0.5 + 0.5 * unit(rng);
+    const mesh::Vec3d query = positions[near[0]] * (1 - w) + positions[near[1]] * w +
+                              mesh::Vec3d{unit(rng), unit(rng), unit(rng)} * 1e-4;
+    double brute = std::numeric_limits<double>::infinity();
+    uint32_t brute_triangle = kNoTriangle;
+    for (uint32_t t = 0; t < triangles.size(); ++t) {
+      const auto& tri = triangles[t];
+      const double d = length(
+          closestPointOnTriangle(query, positions[tri[0]], positions[tri[1]], positions[tri[2]])
+              .point -
+          query);
+      if (d < brute) brute = d, brute_triangle = t;
+    }
+    const ClosestPoint hit = field.closest(query);
+    ASSERT_EQ(hit.distance, brute) << q;
+    ASSERT_EQ(hit.triangle, brute_triangle) << q;
+  }
 }
 
 TEST(TriangleDistanceField, EmptyMeshIsInfinitelyFar) {
