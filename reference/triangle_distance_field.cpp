@@ -174,10 +174,7 @@ ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t h
     // The hint's distance bounds the minimum. It is not kept as the best: the traversal
     // visits it again inside the padded radius, so the answer is found exactly as
     // without a hint, only with fewer BVH nodes opened.
-    const Triangle& tri = impl_->triangles[hint];
-    const std::vector<mesh::Vec3d>& p = impl_->positions;
-    const double distance =
-        length(closestPointOnTriangle(query, p[tri[0]], p[tri[1]], p[tri[2]]).point - query);
+    const double distance = distanceTo(query, hint);
     point_query.radius =
         std::nextafter(float(distance + state.pad), std::numeric_limits<float>::infinity());
   }

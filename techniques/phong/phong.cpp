@@ -78,11 +78,7 @@ class PhongPatches final : public techniques::TrianglePatchesBase {
     } else {
       const PhongTriangle<double> tri = faceTriangle(patch);
       const std::array<int, 3> order = canonicalCornerOrder(tri);
-      PhongTriangle<double> sorted;
-      for (int k = 0; k < 3; ++k) {
-        sorted.position[k] = tri.position[order[k]];
-        sorted.normal[k] = tri.normal[order[k]];
-      }
+      const PhongTriangle<double> sorted = reorderedTriangle(tri, order);
       for (size_t i = 0; i < coords.size(); ++i) {
         const techniques::DomainCoord& c = coords[i];
         store(i, evaluatePhongInOrder(sorted, {c[order[0]], c[order[1]], c[order[2]]}, alpha_));

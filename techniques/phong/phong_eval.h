@@ -71,17 +71,22 @@ std::array<int, 3> canonicalCornerOrder(const PhongTriangle<T>& tri) {
   return order;
 }
 
+// The corners of `tri` in `order` (canonicalCornerOrder's): what evaluatePhong sums over.
 template <class T>
-PhongPoint<T> evaluatePhong(const PhongTriangle<T>& tri, const std::array<T, 3>& weight, T alpha) {
-  const std::array<int, 3> order = canonicalCornerOrder(tri);
+PhongTriangle<T> reorderedTriangle(const PhongTriangle<T>& tri, const std::array<int, 3>& order) {
   PhongTriangle<T> sorted;
-  std::array<T, 3> sorted_weight;
   for (int i = 0; i < 3; ++i) {
     sorted.position[i] = tri.position[order[i]];
     sorted.normal[i] = tri.normal[order[i]];
-    sorted_weight[i] = weight[order[i]];
   }
-  return evaluatePhongInOrder(sorted, sorted_weight, alpha);
+  return sorted;
+}
+
+template <class T>
+PhongPoint<T> evaluatePhong(const PhongTriangle<T>& tri, const std::array<T, 3>& weight, T alpha) {
+  const std::array<int, 3> order = canonicalCornerOrder(tri);
+  return evaluatePhongInOrder(reorderedTriangle(tri, order),
+                              {weight[order[0]], weight[order[1]], weight[order[2]]}, alpha);
 }
 
 }  // namespace tb::phong
