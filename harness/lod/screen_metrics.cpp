@@ -267,16 +267,22 @@ ScreenMetrics::ScreenMetrics(const techniques::SurfacePatches& patches,
 const techniques::BatchPoints& ScreenMetrics::evaluated(size_t p, const ScreenPattern& pattern,
                                                         techniques::BatchPoints& scratch) {
   assert(p < evaluated_.size() && pattern.points != nullptr);
-  Evaluated& kept = evaluated_[p];
-  if (kept.serial != 0 && kept.serial == pattern.points_serial) return kept.points;
-  patches_.evaluateBatch(p, *pattern.points, scratch);
-  kept.serial = 0;
-  if (3 * scratch.position[0].size() <= evaluated_share_) {
-    kept.points.count = scratch.count;
-    kept.points.position = scratch.position;
-    kept.serial = pattern.points_serial;
+  KeptPair& kept = evaluated_[p];
+  for (uint8_t k = 0; k < 2; ++k) {
+    if (kept.slots[k].serial != 0 && kept.slots[k].serial == pattern.points_serial) {
+      kept.recent = k;
+      return kept.slots[k].points;
+    }
   }
-  return scratch;
+  patches_.evaluateBatch(p, *pattern.points, scratch);
+  if (3 * scratch.position[0].size() > evaluated_share_) return scratch;
+  const uint8_t older = kept.recent ^ 1;
+  Evaluated& slot = kept.slots[older];
+  slot.points.count = scratch.count;
+  slot.points.position = scratch.position;
+  slot.serial = pattern.points_serial;
+  kept.recent = older;
+  return slot.points;
 }
 
 FrameScreenFigures ScreenMetrics::frame(tess::Spacing spacing, std::span<const tess::Levels> levels,
@@ -387,14 +393,11 @@ ScreenErrorFigures ScreenMetrics::pop(tess::Spacing spacing, std::span<const tes
       if (was.culled || is.culled) return;
       const size_t p = chunk.begin + i;
       Scratch& s = scratch.local();
-      patches_.evaluateBatch(p, *is.points, s.points);
-      const techniques::BatchPoints* was_points = &s.points;
-      if (&was != &is) {
-        patches_.evaluateBatch(p, *was.points, s.before);
-        was_points = &s.before;
-      }
+      const techniques::BatchPoints& is_points = evaluated(p, is, s.points);
+      const techniques::BatchPoints* was_points = &is_points;
+      if (&was != &is) was_points = &evaluated(p, was, s.before);
       for (size_t k = 0; k < is.lattice.size(); ++k) {
-        const view::ProjectedPoint now = project(view, blendPosition(s.points, is.lattice[k]));
+        const view::ProjectedPoint now = project(view, blendPosition(is_points, is.lattice[k]));
         if (!visible(view, now)) continue;
         const view::ProjectedPoint then = project(view, blendPosition(*was_points, was.lattice[k]));
         if (!inFront(view, then)) continue;

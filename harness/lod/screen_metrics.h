@@ -6,6 +6,7 @@
 // patch order, so results do not depend on the thread count (docs/derivations/adaptivity.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -99,11 +100,13 @@ class ScreenMetrics {
                          std::span<const tess::Levels> after, const view::View& view);
 
  private:
-  // Patch p's points under `pattern` (positions at least): the ones kept from its last
-  // evaluation when that was under the same batch pattern (the same bits evaluateBatch
-  // gives again), else evaluated into `scratch` and kept when they fit the patch's share of
-  // kEvaluatedDoubles. A search passes the same levels over many frames; this spares the
-  // technique's evaluation on every frame after the first. Call once per patch at a time.
+  // Patch p's points under `pattern` (positions at least): the ones kept from one of its
+  // last two evaluations when that was under the same batch pattern (the same bits
+  // evaluateBatch gives again), else evaluated into `scratch` and kept, in place of the
+  // less recently used, when they fit the patch's share of kEvaluatedDoubles. A search
+  // passes the same levels over many frames, and pop() compares a frame's levels with the
+  // previous frame's: this spares the technique's evaluation of both. Call once per patch
+  // at a time; two calls for one patch (pop) need two scratches.
   const techniques::BatchPoints& evaluated(size_t p, const ScreenPattern& pattern,
                                            techniques::BatchPoints& scratch);
 
@@ -111,12 +114,17 @@ class ScreenMetrics {
     uint64_t serial = 0;             // ScreenPattern::points_serial; 0: nothing kept
     techniques::BatchPoints points;  // positions only
   };
-  static constexpr size_t kEvaluatedDoubles = size_t(1) << 23;  // 64 MB over all patches
+  struct KeptPair {
+    std::array<Evaluated, 2> slots;
+    uint8_t recent = 0;  // the slot used last
+  };
+  // Per slot: 64 MB over all patches, 128 MB with both slots.
+  static constexpr size_t kEvaluatedDoubles = size_t(1) << 23;
 
   const techniques::SurfacePatches& patches_;
   const ref::LimitSurface* limit_;
-  std::vector<Evaluated> evaluated_;  // per patch
-  size_t evaluated_share_ = 0;        // doubles a patch may keep
+  std::vector<KeptPair> evaluated_;  // per patch
+  size_t evaluated_share_ = 0;       // doubles a patch may keep in each slot
   // Per patch: how the reference is sampled (screen_metrics.cpp, ReferenceMap).
   std::vector<uint8_t> reference_map_;
   ScreenPatternCache cache_;

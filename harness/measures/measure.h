@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -173,6 +174,18 @@ class Measure {
   virtual const MeasureInfo& info() const = 0;
   virtual MeasureRequirements requirements() const = 0;
   virtual results::MeasureResult run(const MeasureInput& input) const = 0;
+  // kCameraPath measures: one result per path of `paths`, in order, each as run() gives it
+  // with input.camera_path set to that path (the suite keys the rows by path). A measure
+  // whose set-up does not depend on the path overrides it to build that set-up once.
+  virtual std::vector<results::MeasureResult> runPaths(
+      MeasureInput input, std::span<const view::CameraPath> paths) const {
+    std::vector<results::MeasureResult> out;
+    for (const view::CameraPath& path : paths) {
+      input.camera_path = &path;
+      out.push_back(run(input));
+    }
+    return out;
+  }
   // kCameraPath measures: the bundled paths (name, frames; 0 = the file's own count) the
   // measure runs along in the default suite when the run names no --camera. Empty: the
   // suite's default path (orbit at 4 frames). --suite full always runs every bundled path.

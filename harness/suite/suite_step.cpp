@@ -74,10 +74,11 @@ results::MeasureResult runOverPaths(const SuiteRun& run, const measures::Measure
   if (auto own = run.measure_paths.find(&measure); own != run.measure_paths.end()) {
     paths = &own->second;
   }
-  for (const CameraPathFn& make_path : *paths) {
-    const view::CameraPath path = make_path(bounds);
-    input.camera_path = &path;
-    mergeRun(measure.run(input), {{"camera_path", path.name}}, &merged);
+  std::vector<view::CameraPath> made;
+  for (const CameraPathFn& make_path : *paths) made.push_back(make_path(bounds));
+  std::vector<results::MeasureResult> results = measure.runPaths(input, made);
+  for (size_t k = 0; k < made.size(); ++k) {
+    mergeRun(std::move(results.at(k)), {{"camera_path", made[k].name}}, &merged);
   }
   return merged;
 }

@@ -177,6 +177,12 @@ class AccPatches final : public techniques::SurfacePatches {
     return {techniques::evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
   }
 
+  // The geometry patch alone: the tangent patches give only the normal.
+  mesh::Vec3d evaluatePosition(size_t patch, const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
+    return techniques::evaluateBicubic(points_d_[patch].b, coord[0], coord[1], order_);
+  }
+
   std::unique_ptr<techniques::BatchPattern> makeBatchPattern(
       techniques::PatchDomain domain, std::vector<techniques::DomainCoord> coords,
       techniques::BatchOutput output) const override {

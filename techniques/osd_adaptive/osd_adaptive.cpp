@@ -174,6 +174,18 @@ class OsdAdaptivePatches final : public techniques::SurfacePatches {
     return {p, normalizeOrZero(cross(du, dv))};
   }
 
+  // The position weights alone (Far computes each weight set on its own).
+  mesh::Vec3d evaluatePosition(size_t patch, const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
+    const Far::PatchTable::PatchHandle& handle = find(patch, coord[0], coord[1]);
+    double w[kMaxPatchPoints];
+    table_->EvaluateBasis(handle, coord[0], coord[1], w, nullptr, nullptr);
+    const Far::ConstIndexArray cvs = table_->GetPatchVertices(handle);
+    mesh::Vec3d p{};
+    for (int k = 0; k < cvs.size(); ++k) p = p + points_d_[size_t(cvs[k])] * w[k];
+    return p;
+  }
+
   // The CPU twin of osd_adaptive.tese: the same sub-patch search, osd_basis.h's weights in
   // float, and the sums in control-point order from zero.
   techniques::SurfacePointF evaluateFloat(size_t patch,

@@ -110,14 +110,17 @@ PnControl<T> computeControl(const PnInput<T>& in) {
   return c;
 }
 
-// The cubic geometry patch and quadratic normal patch at canonical barycentric weights
-// (a, b, c) of labels 0, 1, 2. Grouped as corners, then edges (0,1), (0,2), (1,2), then
-// the centre: on an edge the third weight is exactly 0, every term that holds it is ±0,
-// and the remaining terms are summed in the same order from both faces.
+// The barycentric products both patches use: aa, bb, cc, ab, ac, bc.
 template <class T>
-PnPoint<T> evaluateControl(const PnControl<T>& c, const std::array<T, 3>& w) {
-  const T aa = w[0] * w[0], bb = w[1] * w[1], cc = w[2] * w[2];
-  const T ab = w[0] * w[1], ac = w[0] * w[2], bc = w[1] * w[2];
+std::array<T, 6> pnProducts(const std::array<T, 3>& w) {
+  return {w[0] * w[0], w[1] * w[1], w[2] * w[2], w[0] * w[1], w[0] * w[2], w[1] * w[2]};
+}
+
+// The cubic geometry patch from the products of pnProducts.
+template <class T>
+mesh::Vec3T<T> controlPosition(const PnControl<T>& c, const std::array<T, 3>& w,
+                               const std::array<T, 6>& q) {
+  const T aa = q[0], bb = q[1], cc = q[2], ab = q[3], ac = q[4], bc = q[5];
   mesh::Vec3T<T> p =
       (c.corner[0] * (aa * w[0]) + c.corner[1] * (bb * w[1])) + c.corner[2] * (cc * w[2]);
   const std::array<T, 3> pair = {ab, ac, bc};
@@ -125,7 +128,24 @@ PnPoint<T> evaluateControl(const PnControl<T>& c, const std::array<T, 3>& w) {
     const int i = techniques::kEdgeEnds[e][0], j = techniques::kEdgeEnds[e][1];
     p = p + (c.edge[e][0] * w[i] + c.edge[e][1] * w[j]) * (pair[e] * T(3));
   }
-  p = p + c.center * ((ab * w[2]) * T(6));
+  return p + c.center * ((ab * w[2]) * T(6));
+}
+
+// The geometry patch alone: evaluateControl's position, bit for bit.
+template <class T>
+mesh::Vec3T<T> evaluateControlPosition(const PnControl<T>& c, const std::array<T, 3>& w) {
+  return controlPosition(c, w, pnProducts(w));
+}
+
+// The cubic geometry patch and quadratic normal patch at canonical barycentric weights
+// (a, b, c) of labels 0, 1, 2. Grouped as corners, then edges (0,1), (0,2), (1,2), then
+// the centre: on an edge the third weight is exactly 0, every term that holds it is ±0,
+// and the remaining terms are summed in the same order from both faces.
+template <class T>
+PnPoint<T> evaluateControl(const PnControl<T>& c, const std::array<T, 3>& w) {
+  const std::array<T, 6> q = pnProducts(w);
+  const mesh::Vec3T<T> p = controlPosition(c, w, q);
+  const T aa = q[0], bb = q[1], cc = q[2], ab = q[3], ac = q[4], bc = q[5];
   // Paper §3.2: the normal patch has no binomial factors.
   mesh::Vec3T<T> n = (c.corner_normal[0] * aa + c.corner_normal[1] * bb) + c.corner_normal[2] * cc;
   n = ((n + c.edge_normal[0] * ab) + c.edge_normal[1] * ac) + c.edge_normal[2] * bc;

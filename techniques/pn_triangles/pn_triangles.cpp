@@ -21,10 +21,13 @@ class PnPatches final : public techniques::TrianglePatchesBase {
       : techniques::TrianglePatchesBase(std::move(triangulation)),
         options_(options),
         build_(techniques::buildTriangleRecords(tri_.mesh, options_)) {
-    // The double control nets, once per patch (what every evaluate() would recompute).
+    // The double and float control nets, once per patch (what every evaluate() and
+    // evaluateFloat() would recompute).
     controls_.reserve(patchCount());
+    controls_f_.reserve(patchCount());
     for (size_t p = 0; p < patchCount(); ++p) {
       controls_.push_back(computeControl(recordInputDouble(tri_.mesh, build_, options_, p)));
+      controls_f_.push_back(computeControl(recordInputFloat(tri_.mesh, build_, options_, p)));
     }
   }
 
@@ -38,11 +41,17 @@ class PnPatches final : public techniques::TrianglePatchesBase {
     return {point.position, point.normal};
   }
 
+  mesh::Vec3d evaluatePosition(size_t patch, const techniques::DomainCoord& coord) const override {
+    assert(patch < patchCount());
+    const auto& perm = build_.records[patch].perm;
+    return evaluateControlPosition(controls_.at(patch),
+                                   {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
+  }
+
   techniques::SurfacePointF evaluateFloat(size_t patch,
                                           const tess::DomainPoint& coord) const override {
     assert(patch < patchCount());
-    const PnControl<float> control =
-        computeControl(recordInputFloat(tri_.mesh, build_, options_, patch));
+    const PnControl<float>& control = controls_f_[patch];
     const auto& perm = build_.records[patch].perm;
     const PnPoint<float> point =
         evaluateControl(control, {coord[perm[0]], coord[perm[1]], coord[perm[2]]});
@@ -123,7 +132,8 @@ class PnPatches final : public techniques::TrianglePatchesBase {
  private:
   techniques::TriangleRecordOptions options_;
   techniques::TriangleRecords build_;
-  std::vector<PnControl<double>> controls_;  // per patch, built once
+  std::vector<PnControl<double>> controls_;   // per patch, built once
+  std::vector<PnControl<float>> controls_f_;  // the TCS's float nets, per patch
 };
 
 }  // namespace

@@ -325,13 +325,33 @@ class CullingMeasure final : public Measure {
   }
 
   results::MeasureResult run(const MeasureInput& input) const override {
-    results::MeasureResult result;
-    result.measure = info().id;
     const view::CameraPath& path = requireCameraPath(input);
+    return std::move(runPaths(input, std::span(&path, 1)).front());
+  }
+
+  // The culling bounds, the device's unculled run and surface, the oracle and the TCS costs
+  // do not depend on the path: built once for all of them.
+  std::vector<results::MeasureResult> runPaths(
+      MeasureInput input, std::span<const view::CameraPath> paths) const override {
     CullingOptions options = optionsFor(input.suite);
     options.compute = runsComputePath(input);
     CullingRun run(*input.patches, input.gpu, input.gpu_unavailable, options);
     const std::span<const lod::CullPolicy> policies = lod::allCullPolicies();
+    const std::vector<CullTcsCost> costs = cullTcsCosts(*input.patches, policies);
+    std::vector<results::MeasureResult> out;
+    for (const view::CameraPath& path : paths) {
+      input.camera_path = &path;
+      out.push_back(pathResult(run, costs, policies, requireCameraPath(input)));
+    }
+    return out;
+  }
+
+ private:
+  results::MeasureResult pathResult(CullingRun& run, std::span<const CullTcsCost> costs,
+                                    std::span<const lod::CullPolicy> policies,
+                                    const view::CameraPath& path) const {
+    results::MeasureResult result;
+    result.measure = info().id;
     const std::vector<std::vector<CullingFrame>> frames = run.frames(policies, path.views);
     if (!run.gpuSkipReason().empty()) {
       // gpu_*, twin_mismatches and the oracle's figures live in the per-frame rows; without
@@ -340,21 +360,7 @@ class CullingMeasure final : public Measure {
           {{"part", "gpu"}}, results::MeasureStatus::kSkipped, run.gpuSkipReason()));
     }
     const lod::CullBounds& bounds = run.bounds();
-    const std::vector<CullTcsCost> costs = cullTcsCosts(*input.patches, policies);
-    if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {
-      result.notes.push_back(std::to_string(bounds.patches_without_cone) + " of " +
-                             std::to_string(bounds.patches.size()) +
-                             " patches have no cone of normals (none given, or normals spanning "
-                             "90 degrees or more): cone never culls them; " +
-                             std::to_string(bounds.patches_without_hull) +
-                             " have no control hull (their corners stand in)");
-    }
-    if (bounds.patches_without_tangent_plane > 0) {
-      result.notes.push_back(std::to_string(bounds.patches_without_tangent_plane) + " of " +
-                             std::to_string(bounds.patches.size()) +
-                             " patches have no polynomial Bezier net (rational or displaced "
-                             "patches, or sub-patches): tangent_plane tests them with the cone");
-    }
+    result.notes = boundsNotes(bounds);
     for (size_t k = 0; k < policies.size(); ++k) {
       results::MetricRow row;
       row.keys["policy"] = std::string(lod::cullPolicyName(policies[k]));
@@ -378,6 +384,25 @@ class CullingMeasure final : public Measure {
       }
     }
     return result;
+  }
+
+  static std::vector<std::string> boundsNotes(const lod::CullBounds& bounds) {
+    std::vector<std::string> notes;
+    if (bounds.patches_without_hull > 0 || bounds.patches_without_cone > 0) {
+      notes.push_back(std::to_string(bounds.patches_without_cone) + " of " +
+                      std::to_string(bounds.patches.size()) +
+                      " patches have no cone of normals (none given, or normals spanning "
+                      "90 degrees or more): cone never culls them; " +
+                      std::to_string(bounds.patches_without_hull) +
+                      " have no control hull (their corners stand in)");
+    }
+    if (bounds.patches_without_tangent_plane > 0) {
+      notes.push_back(std::to_string(bounds.patches_without_tangent_plane) + " of " +
+                      std::to_string(bounds.patches.size()) +
+                      " patches have no polynomial Bezier net (rational or displaced "
+                      "patches, or sub-patches): tangent_plane tests them with the cone");
+    }
+    return notes;
   }
 };
 
