@@ -283,7 +283,7 @@ class CullingMeasure final : public Measure {
                "the TCS's; --suite full, and the default suite on catmark_xord_interior and "
                "loop_xord_interior",
                "default suite: level 4, the render at half the path's resolution per axis (960 x "
-               "540), the default variant, along orbit (4 frames), dolly (8) and flyby (8); "
+               "540), the default variant, along orbit (2 frames), dolly (4) and flyby (4); "
                "--suite "
                "full: level 8 at the path's resolution, every variant, every frame of the three "
                "paths"},
@@ -321,7 +321,7 @@ class CullingMeasure final : public Measure {
   // Culling needs the camera close as well as far: the dolly's last frames and the flyby put
   // patches off screen, which the orbit never does.
   std::vector<std::pair<std::string, uint32_t>> defaultSuitePaths() const override {
-    return {{"orbit", 4}, {"dolly", 8}, {"flyby", 8}};
+    return {{"orbit", 2}, {"dolly", 4}, {"flyby", 4}};
   }
 
   results::MeasureResult run(const MeasureInput& input) const override {
