@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 
 #include "core/mesh/input_error.h"
@@ -40,19 +42,38 @@ std::string knownIds(const std::vector<std::string>& ids) {
   return text;
 }
 
-std::vector<const techniques::Technique*> selectTechniques(const std::vector<std::string>& ids) {
-  std::vector<const techniques::Technique*> selected;
+// --technique values: ID (every variant its suite runs) or ID/VARIANT (that variant alone;
+// several may name one technique). ID and ID/VARIANT together: every variant.
+void selectTechniques(const std::vector<std::string>& values, suite::SuiteSelection* selection) {
   std::vector<std::string> known;
   for (const techniques::Technique* t : techniques::TechniqueRegistry::instance().all())
     known.push_back(t->info().id);
-  for (const std::string& id : ids) {
+  std::set<std::string> whole;
+  for (const std::string& value : values) {
+    const size_t slash = value.find('/');
+    const std::string id = value.substr(0, slash);
     const techniques::Technique* technique = techniques::TechniqueRegistry::instance().find(id);
     if (technique == nullptr) {
-      throw UsageError("--technique", id, "unknown technique (known: " + knownIds(known) + ")");
+      throw UsageError("--technique", value, "unknown technique (known: " + knownIds(known) + ")");
     }
-    selected.push_back(technique);
+    if (std::find(selection->techniques.begin(), selection->techniques.end(), technique) ==
+        selection->techniques.end()) {
+      selection->techniques.push_back(technique);
+    }
+    if (slash == std::string::npos) {
+      whole.insert(id);
+      continue;
+    }
+    const std::string variant = value.substr(slash + 1);
+    std::vector<std::string> names;
+    for (const techniques::VariantInfo& v : technique->variants()) names.push_back(v.name);
+    if (std::find(names.begin(), names.end(), variant) == names.end()) {
+      throw UsageError("--technique", value,
+                       "unknown variant of " + id + " (known: " + knownIds(names) + ")");
+    }
+    selection->variants[id].insert(variant);
   }
-  return selected;
+  for (const std::string& id : whole) selection->variants.erase(id);
 }
 
 std::vector<const measures::Measure*> selectMeasures(const std::vector<std::string>& ids) {
@@ -116,7 +137,7 @@ void printTimingSummary(const suite::SuiteTimings& timings) {
 // results name them. Throws InputError on an unknown id, asset, scenario or map.
 suite::SuiteSelection selectionOf(const RunArgs& args, std::vector<std::string>* camera_files) {
   suite::SuiteSelection selection;
-  selection.techniques = selectTechniques(args.techniques);
+  selectTechniques(args.techniques, &selection);
   selection.measures = selectMeasures(args.measures);
   selection.device_name = args.device;
   selection.threads = args.threads;
@@ -221,7 +242,8 @@ SubcommandRun addRun(CLI::App& app) {
 CLI::App* addRunCommand(CLI::App& app, RunArgs& args) {
   CLI::App* run =
       app.add_subcommand("run", "measure techniques on assets into a new results folder");
-  run->add_option("--technique", args.techniques, "technique id (repeatable; default all)");
+  run->add_option("--technique", args.techniques,
+                  "technique id, or ID/VARIANT for one of its variants (repeatable; default all)");
   run->add_option("--asset", args.assets,
                   "bundled asset name or OBJ, glTF or GLB path (default all)");
   run->add_option("--refine", args.refine,

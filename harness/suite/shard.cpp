@@ -58,9 +58,7 @@ results::RunSelection describeSelection(const SuiteSelection& selection,
   if (techniques.empty()) techniques = techniques::TechniqueRegistry::instance().all();
   for (const techniques::Technique* technique : techniques) {
     described.techniques.push_back({technique->info().id, {}});
-    for (const techniques::VariantInfo& variant : technique->variants()) {
-      if (variant.full_suite_only && selection.suite != measures::SuiteMode::kFull) continue;
-      if (selection.skip_controls && !variant.control.empty()) continue;
+    for (const techniques::VariantInfo& variant : selectedVariants(*technique, selection)) {
       described.techniques.back().variants.push_back(variant.name);
       if (!variant.control.empty()) described.techniques.back().controls.push_back(variant.name);
     }

@@ -183,6 +183,9 @@ struct Group {
   std::vector<techniques::VariantInfo> variants;
   SuiteInput input;
   size_t input_index, input_count, first_slot;
+  // The technique's default variant when the selection leaves it out: built (not measured)
+  // for its patch data, which decide the measures of the others (VariantStanding).
+  std::optional<techniques::VariantInfo> unselected_default;
 };
 
 struct GroupPlan {
@@ -200,15 +203,14 @@ struct SuiteInputs {
 };
 
 GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques,
-                     measures::SuiteMode suite, bool skip_controls, const SuiteInputs& all) {
+                     const SuiteSelection& selection, const SuiteInputs& all) {
   GroupPlan plan;
   for (const techniques::Technique* technique : techniques) {
-    std::vector<techniques::VariantInfo> variants = technique->variants();
-    if (suite != measures::SuiteMode::kFull) {
-      std::erase_if(variants, [](const techniques::VariantInfo& v) { return v.full_suite_only; });
-    }
-    if (skip_controls) {
-      std::erase_if(variants, [](const techniques::VariantInfo& v) { return !v.control.empty(); });
+    const std::vector<techniques::VariantInfo> variants = selectedVariants(*technique, selection);
+    std::optional<techniques::VariantInfo> unselected_default;
+    if (const techniques::VariantInfo first = technique->variants().front();
+        variants.empty() || variants.front().name != first.name) {
+      unselected_default = first;
     }
     std::vector<SuiteInput> inputs = inputsFor(*technique, all.refs, all.meshes, all.scenarios,
                                                all.displacements, all.displacement_meshes);
@@ -219,7 +221,8 @@ GroupPlan planGroups(const std::vector<const techniques::Technique*>& techniques
       break;
     }
     for (size_t i = 0; i < inputs.size(); ++i) {
-      plan.groups.push_back({technique, variants, inputs[i], i, inputs.size(), plan.total});
+      plan.groups.push_back(
+          {technique, variants, inputs[i], i, inputs.size(), plan.total, unselected_default});
     }
     plan.total += variants.size() * inputs.size();
   }
@@ -248,6 +251,10 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
         const Group& group = groups[g];
         // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
         std::optional<techniques::DataFootprint> default_footprint;
+        if (group.unselected_default && !group.variants.empty()) {
+          default_footprint =
+              patchFootprint(*group.technique, *group.unselected_default, group.input);
+        }
         for (size_t v = 0; v < group.variants.size(); ++v) {
           if (progress) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
@@ -256,8 +263,9 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
                 group.technique->info().id + "/" + group.variants[v].name + " " + group.input.name);
           }
           const size_t slot = group.first_slot + v * group.input_count + group.input_index;
-          outcomes[slot] = runStep(run, *group.technique, group.variants[v], v == 0, group.input,
-                                   &default_footprint);
+          const bool is_default = v == 0 && !group.unselected_default;
+          outcomes[slot] = runStep(run, *group.technique, group.variants[v], is_default,
+                                   group.input, &default_footprint);
           if (on_record && outcomes[slot].record) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
             on_record(*outcomes[slot].record);
@@ -298,6 +306,18 @@ std::vector<CameraPathFn> suiteCameraPaths(measures::SuiteMode mode) {
   return paths;
 }
 
+std::vector<techniques::VariantInfo> selectedVariants(const techniques::Technique& technique,
+                                                      const SuiteSelection& selection) {
+  const auto named = selection.variants.find(technique.info().id);
+  std::vector<techniques::VariantInfo> variants = technique.variants();
+  std::erase_if(variants, [&](const techniques::VariantInfo& v) {
+    if (named != selection.variants.end()) return !named->second.contains(v.name);
+    return (v.full_suite_only && selection.suite != measures::SuiteMode::kFull) ||
+           (selection.skip_controls && !v.control.empty());
+  });
+  return variants;
+}
+
 void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
               results::Results* results, SuiteTimings* timings, const RecordFn& on_record) {
   const auto run_start = std::chrono::steady_clock::now();
@@ -314,9 +334,8 @@ void runSuite(const SuiteSelection& selection, const ProgressFn& progress,
   DisplacedMeshes displaced;
   loadDisplacedAssets(selection, refs, meshes, &run, results, &displaced);
   const std::vector<techniques::Scenario> scenarios = scenariosFor(selection, techniques);
-  const GroupPlan plan =
-      planGroups(techniques, selection.suite, selection.skip_controls,
-                 {refs, meshes, scenarios, selection.displacements, displaced.meshes});
+  const GroupPlan plan = planGroups(
+      techniques, selection, {refs, meshes, scenarios, selection.displacements, displaced.meshes});
   std::vector<StepOutcome> outcomes = runGroups(run, plan, progress, on_record);
   collectOutcomes(&outcomes, results, timings);
   if (progress) progress(plan.total, plan.total, "done");

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -49,7 +51,17 @@ struct SuiteSelection {
   // compute only the figures a decision reads (MeasureInput::decision_figures_only).
   bool skip_controls = false;
   bool decision_figures_only = false;
+  // `run --technique ID/VARIANT`: per technique id, the only variants to run (a variant
+  // named here runs even when it is full-suite only). A technique absent runs every
+  // variant its suite runs.
+  std::map<std::string, std::set<std::string>> variants;
 };
+
+// The variants of `technique` that a run with `selection` measures, in the technique's
+// order: its suite's (no full-suite-only ones in the default suite, no controls with
+// skip_controls), narrowed by SuiteSelection::variants.
+std::vector<techniques::VariantInfo> selectedVariants(const techniques::Technique& technique,
+                                                      const SuiteSelection& selection);
 
 // Frames the bundled orbit is sampled to for kCameraPath measures in the default suite
 // (its file has 24): enough to see factors change around the asset, within the suite's

@@ -184,6 +184,26 @@ StepOutcome runDisplacedStep(const SuiteRun& run, const techniques::Technique& t
 
 }  // namespace
 
+std::optional<techniques::DataFootprint> patchFootprint(const techniques::Technique& technique,
+                                                        const techniques::VariantInfo& variant,
+                                                        const SuiteInput& input) {
+  if (!input.is_asset() || input.displacement || !technique.checkSupport(*input.mesh).empty()) {
+    return std::nullopt;
+  }
+  try {
+    const std::unique_ptr<techniques::TechniqueInstance> instance =
+        technique.build({input.mesh, nullptr}, variant);
+    if (const techniques::SurfacePatches* patches = instance->surface()) {
+      return patches->footprint();
+    }
+  } catch (const mesh::InputError&) {
+    throw;
+  } catch (const std::exception&) {
+    // Unsupported or failed: the measured variants' steps report their own builds.
+  }
+  return std::nullopt;
+}
+
 StepOutcome runStep(const SuiteRun& run, const techniques::Technique& technique,
                     const techniques::VariantInfo& variant, bool is_default,
                     const SuiteInput& input,

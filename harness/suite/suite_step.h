@@ -61,6 +61,13 @@ inline double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The patch data of `variant` on `input` (built, not measured): the default variant's when
+// a run leaves it out, which decide the measures of the others (VariantStanding). None when
+// the input is no asset, a displaced one, or one the technique cannot take.
+std::optional<techniques::DataFootprint> patchFootprint(const techniques::Technique& technique,
+                                                        const techniques::VariantInfo& variant,
+                                                        const SuiteInput& input);
+
 // Builds the technique on one input and variant, and runs every measure the rule admits
 // into one record. `default_footprint` is the default variant's patch data on this input:
 // set by the default variant's step, read by the others.
