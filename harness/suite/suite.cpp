@@ -245,13 +245,18 @@ std::vector<StepOutcome> runGroups(const SuiteRun& run, const GroupPlan& plan,
   std::vector<StepOutcome> outcomes(total);
   std::mutex progress_mutex;
   size_t started = 0;
+  // Only kWhenPatchDataDiffers measures read the default variant's patch data.
+  const bool reads_default_footprint =
+      std::any_of(run.measures.begin(), run.measures.end(), [](const measures::Measure* m) {
+        return m->requirements().variants == measures::VariantPolicy::kWhenPatchDataDiffers;
+      });
   tbb::parallel_for(
       size_t(0), groups.size(),
       [&](size_t g) {
         const Group& group = groups[g];
         // The default variant's patch data on this input, for kWhenPatchDataDiffers measures.
         std::optional<techniques::DataFootprint> default_footprint;
-        if (group.unselected_default && !group.variants.empty()) {
+        if (group.unselected_default && !group.variants.empty() && reads_default_footprint) {
           default_footprint =
               patchFootprint(*group.technique, *group.unselected_default, group.input);
         }
