@@ -50,6 +50,7 @@ struct Prepared {
   tb::mesh::Mesh mesh;
   tb::techniques::BuiltSurface patches;
   tb::view::CameraPath path;
+  tb::techniques::VariantInfo variant;  // kept: MeasureInput holds a reference to it
 };
 
 // The test orbit's three views of the grid of copies, seen from 16 times as far with a
@@ -96,9 +97,12 @@ constexpr double kStepExtents = 1.125;
 Prepared prepare(benchmark::State& state, const tb::techniques::Technique& technique,
                  const std::string& asset, int copies) {
   const tb::mesh::Mesh single = tb::suite::loadAsset(tb::suite::resolveAsset(asset));
-  Prepared p{tb::mesh::translatedCopies(single, copies, kStepExtents), nullptr, {}};
+  Prepared p{tb::mesh::translatedCopies(single, copies, kStepExtents),
+             nullptr,
+             {},
+             technique.variants()[0]};
   try {
-    p.patches = tb::techniques::buildSurface(technique, p.mesh, technique.variants()[0]);
+    p.patches = tb::techniques::buildSurface(technique, p.mesh, p.variant);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
   }
@@ -110,7 +114,7 @@ tb::measures::MeasureInput inputOf(
     const tb::techniques::Technique& technique, const Prepared& p, const std::string& name,
     const tb::gpu::Expected<std::unique_ptr<tb::gpu::Context>>& context) {
   tb::measures::MeasureInput input{technique,
-                                   technique.variants()[0],
+                                   p.variant,
                                    name,
                                    p.mesh,
                                    p.patches.get(),

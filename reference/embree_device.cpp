@@ -50,7 +50,8 @@ void throwOnEmbreeError(const std::string& source, const std::string& element) {
 }
 
 void attachTriangleGeometry(RTCScene scene, std::span<const mesh::Vec3d> positions,
-                            std::span<const std::array<uint32_t, 3>> triangles) {
+                            std::span<const std::array<uint32_t, 3>> triangles,
+                            bool share_triangles) {
   if (triangles.empty()) return;
   RTCGeometry geometry = rtcNewGeometry(sharedEmbreeDevice(), RTC_GEOMETRY_TYPE_TRIANGLE);
   // Padded to 16 bytes with a zero: Embree loads vertices as 4 floats.
@@ -60,11 +61,17 @@ void attachTriangleGeometry(RTCScene scene, std::span<const mesh::Vec3d> positio
     for (int k = 0; k < 3; ++k) vertices[4 * i + size_t(k)] = float(positions[i][k]);
     vertices[4 * i + 3] = 0.0f;
   }
-  auto* indices = static_cast<uint32_t*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(uint32_t), triangles.size()));
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    std::copy(triangles[t].begin(), triangles[t].end(), indices + 3 * t);
+  static_assert(sizeof(std::array<uint32_t, 3>) == 3 * sizeof(uint32_t));
+  if (share_triangles) {
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                               triangles.data(), 0, 3 * sizeof(uint32_t), triangles.size());
+  } else {
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), triangles.size()));
+    for (size_t t = 0; t < triangles.size(); ++t) {
+      std::copy(triangles[t].begin(), triangles[t].end(), indices + 3 * t);
+    }
   }
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(scene, geometry);

@@ -23,8 +23,10 @@ void throwOnEmbreeError(const std::string& source, const std::string& element);
 
 // Adds one triangle geometry of `positions` (as floats, padded to 16 bytes as Embree loads
 // them) and `triangles` (position indices, already checked in range) to `scene`, which the
-// caller commits. Nothing is added for no triangles.
+// caller commits. Nothing is added for no triangles. share_triangles: Embree reads
+// `triangles` in place (the caller keeps them alive as long as the scene) instead of a copy.
 void attachTriangleGeometry(RTCScene scene, std::span<const mesh::Vec3d> positions,
-                            std::span<const std::array<uint32_t, 3>> triangles);
+                            std::span<const std::array<uint32_t, 3>> triangles,
+                            bool share_triangles = false);
 
 }  // namespace tb::ref

@@ -26,25 +26,27 @@ double maxAbsCoordinate(const mesh::Vec3d& p) {
 
 }  // namespace
 
-// A triangle's bounding box in double: the distance to it bounds the distance to the
-// triangle from below, and costs a fraction of the exact closest point.
-struct TriangleBox {
-  mesh::Vec3d lo, hi;
-  // The unit normal n and offset n . a of the plane through corner a: |n . q - offset| bounds
-  // the distance from below too, up to rounding. Computing n tilts it by at most `tilt`
-  // radians (a sliver's cross product cancels: 16 eps |b - a| |c - a| / |cross|), which moves
-  // the bound by tilt |q - a|; n = 0 (no test) when degenerate.
-  mesh::Vec3d normal, corner;
+// A triangle's plane: the unit normal n and offset n . a of the plane through its first
+// corner a. |n . q - offset| bounds the distance from below, up to rounding. Computing n tilts
+// it by at most `tilt` radians (a sliver's cross product cancels: 16 eps |b - a| |c - a| /
+// |cross|), which moves the bound by tilt |q - a|; n = 0 (no test) when degenerate. 40 bytes a
+// triangle: with the boxes kept as well (they are computed from the corners at query time),
+// a production asset's dense reference of 11 million triangles needed 0.8 GB more.
+struct TrianglePlane {
+  mesh::Vec3d normal;
   double offset = 0, tilt = 0;
 };
 
 namespace {
 
-inline double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box) {
+// The squared distance from p to the bounding box of a, b, c (in double): it bounds the
+// distance to the triangle from below, and costs a fraction of the exact closest point.
+inline double squaredDistanceToBox(const mesh::Vec3d& p, const mesh::Vec3d& a, const mesh::Vec3d& b,
+                                   const mesh::Vec3d& c) {
   double sum = 0;
   for (int k = 0; k < 3; ++k) {
-    const double below = box.lo[k] - p[k], above = p[k] - box.hi[k];
-    const double gap = std::max({below, above, 0.0});
+    const double lo = std::min({a[k], b[k], c[k]}), hi = std::max({a[k], b[k], c[k]});
+    const double gap = std::max({lo - p[k], p[k] - hi, 0.0});
     sum += gap * gap;
   }
   return sum;
@@ -53,10 +55,10 @@ inline double squaredDistanceToBox(const mesh::Vec3d& p, const TriangleBox& box)
 }  // namespace
 
 struct TriangleDistanceField::Impl {
-  std::vector<mesh::Vec3d> positions;
-  std::vector<Triangle> triangles;
-  std::vector<TriangleBox> boxes;  // per triangle
-  double max_abs = 0;              // largest |coordinate| of the mesh
+  std::span<const mesh::Vec3d> positions;  // the caller's (TriangleDistanceField's contract)
+  std::span<const Triangle> triangles;
+  std::vector<TrianglePlane> planes;  // per triangle
+  double max_abs = 0;                 // largest |coordinate| of the mesh
   RTCScene scene = nullptr;
 
   ~Impl() {
@@ -67,9 +69,9 @@ struct TriangleDistanceField::Impl {
 namespace {
 
 struct QueryState {
-  const std::vector<mesh::Vec3d>* positions;
-  const std::vector<Triangle>* triangles;
-  const std::vector<TriangleBox>* boxes;
+  std::span<const mesh::Vec3d> positions;
+  std::span<const Triangle> triangles;
+  const std::vector<TrianglePlane>* planes;
   mesh::Vec3d query;
   double pad;
   double plane_slack;  // world units: the plane test's rounding, far above it
@@ -79,21 +81,19 @@ struct QueryState {
 bool visitTriangle(RTCPointQueryFunctionArguments* args) {
   auto* state = static_cast<QueryState*>(args->userPtr);
   const uint32_t id = args->primID;
-  // A box farther than the best answer holds no better (or tying) point, since the box
-  // contains the triangle; the slack of 1e-12 keeps rounding (a few ulps) from dropping a
-  // triangle that ties with the best.
-  const TriangleBox& box = (*state->boxes)[id];
-  const double box_squared = squaredDistanceToBox(state->query, box);
+  const Triangle& tri = state->triangles[id];
+  const std::span<const mesh::Vec3d> p = state->positions;
+  const mesh::Vec3d& a = p[tri[0]];
+  const double box_squared = squaredDistanceToBox(state->query, a, p[tri[1]], p[tri[2]]);
   const double best_distance = state->best.distance;
   if (box_squared > best_distance * best_distance * (1 + 1e-12)) return false;
+  const TrianglePlane& plane = (*state->planes)[id];
   const mesh::Vec3d& q = state->query;
-  const double height = std::abs(dot(box.normal, q) - box.offset);
-  const double reach = std::abs(q.x - box.corner.x) + std::abs(q.y - box.corner.y) +
-                       std::abs(q.z - box.corner.z);  // >= |q - a|
-  if (height - box.tilt * reach - state->plane_slack > best_distance * (1 + 1e-12)) return false;
-  const Triangle& tri = (*state->triangles)[id];
-  const std::vector<mesh::Vec3d>& p = *state->positions;
-  const TrianglePoint hit = closestPointOnTriangle(state->query, p[tri[0]], p[tri[1]], p[tri[2]]);
+  const double height = std::abs(dot(plane.normal, q) - plane.offset);
+  const double reach =
+      std::abs(q.x - a.x) + std::abs(q.y - a.y) + std::abs(q.z - a.z);  // >= |q - a|
+  if (height - plane.tilt * reach - state->plane_slack > best_distance * (1 + 1e-12)) return false;
+  const TrianglePoint hit = closestPointOnTriangle(q, a, p[tri[1]], p[tri[2]]);
   const double distance = length(hit.point - state->query);
   ClosestPoint& best = state->best;
   if (distance > best.distance || (distance == best.distance && id > best.triangle)) return false;
@@ -116,31 +116,26 @@ TriangleDistanceField::TriangleDistanceField(std::span<const mesh::Vec3d> positi
   for (const mesh::Vec3d& q : positions)
     impl_->max_abs = std::max(impl_->max_abs, maxAbsCoordinate(q));
   checkTriangleCorners(triangles, positions.size(), source);
-  impl_->positions.assign(positions.begin(), positions.end());
-  impl_->triangles.assign(triangles.begin(), triangles.end());
-  impl_->boxes.reserve(triangles.size());
+  impl_->positions = positions;
+  impl_->triangles = triangles;
+  impl_->planes.reserve(triangles.size());
   for (const Triangle& tri : triangles) {
-    TriangleBox box{positions[tri[0]], positions[tri[0]]};
-    for (int c = 1; c < 3; ++c) {
-      for (int k = 0; k < 3; ++k) {
-        box.lo[k] = std::min(box.lo[k], positions[tri[c]][k]);
-        box.hi[k] = std::max(box.hi[k], positions[tri[c]][k]);
-      }
-    }
+    TrianglePlane plane;
     const mesh::Vec3d& a = positions[tri[0]];
     const mesh::Vec3d e1 = positions[tri[1]] - a, e2 = positions[tri[2]] - a;
     const mesh::Vec3d n = cross(e1, e2);
     if (const double area2 = length(n); area2 > 0 && std::isfinite(area2)) {
-      box.normal = n * (1 / area2);
-      box.corner = a;
-      box.offset = dot(box.normal, a);
-      box.tilt = 16 * std::numeric_limits<double>::epsilon() * length(e1) * length(e2) / area2;
+      plane.normal = n * (1 / area2);
+      plane.offset = dot(plane.normal, a);
+      plane.tilt = 16 * std::numeric_limits<double>::epsilon() * length(e1) * length(e2) / area2;
     }
-    impl_->boxes.push_back(box);
+    impl_->planes.push_back(plane);
   }
 
   impl_->scene = rtcNewScene(sharedEmbreeDevice());
-  attachTriangleGeometry(impl_->scene, positions, triangles);
+  // Compact: about half the BVH's memory; the closest point does not depend on the tree.
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_COMPACT);
+  attachTriangleGeometry(impl_->scene, positions, triangles, /*share_triangles=*/true);
   rtcCommitScene(impl_->scene);
   throwOnEmbreeError(source, "triangle scene");
 }
@@ -156,9 +151,9 @@ ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query) const {
 }
 
 ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t hint) const {
-  QueryState state{&impl_->positions,
-                   &impl_->triangles,
-                   &impl_->boxes,
+  QueryState state{impl_->positions,
+                   impl_->triangles,
+                   &impl_->planes,
                    query,
                    kRadiusPad * (impl_->max_abs + maxAbsCoordinate(query)),
                    1e-12 * (impl_->max_abs + maxAbsCoordinate(query)),
@@ -187,7 +182,7 @@ ClosestPoint TriangleDistanceField::closest(const mesh::Vec3d& query, uint32_t h
 double TriangleDistanceField::distanceTo(const mesh::Vec3d& query, uint32_t t) const {
   assert(t < impl_->triangles.size());
   const Triangle& tri = impl_->triangles[t];
-  const std::vector<mesh::Vec3d>& p = impl_->positions;
+  const std::span<const mesh::Vec3d> p = impl_->positions;
   return length(closestPointOnTriangle(query, p[tri[0]], p[tri[1]], p[tri[2]]).point - query);
 }
 

@@ -27,8 +27,9 @@ struct ClosestPoint {
 
 class TriangleDistanceField {
  public:
-  // Copies the mesh. Throws InputError (naming `source`) for a corner index out of
-  // range or a non-finite coordinate.
+  // Reads the mesh in place: `positions` and `triangles` must outlive the field (a
+  // production asset's dense reference is millions of triangles; no copy is kept). Throws
+  // InputError (naming `source`) for a corner index out of range or a non-finite coordinate.
   TriangleDistanceField(std::span<const mesh::Vec3d> positions, std::span<const Triangle> triangles,
                         const std::string& source = "triangle mesh");
   explicit TriangleDistanceField(const TriangleMeshRef& mesh,

@@ -63,7 +63,7 @@ TEST(ProductionAssets, ARefinedAssetKeepsItsSourcesLimitSurface) {
 
 TEST(ProductionAssets, EveryListedAssetLoadsAtItsStatedSize) {
   const std::vector<suite::AssetRef> assets = suite::productionAssets();
-  ASSERT_EQ(assets.size(), 3u);
+  ASSERT_EQ(assets.size(), 4u);
   for (const suite::AssetRef& asset : assets) {
     EXPECT_EQ(asset.name.rfind("production/", 0), 0u) << asset.name;
     EXPECT_EQ(suite::resolveAsset(asset.name).name, asset.name);
@@ -73,6 +73,30 @@ TEST(ProductionAssets, EveryListedAssetLoadsAtItsStatedSize) {
   EXPECT_EQ(pawn.faceCount(), 9408u);
   EXPECT_TRUE(pawn.normals_computed);
   EXPECT_TRUE(mesh::connectivityWarnings(pawn, mesh::buildTopology(pawn)).empty());
+}
+
+// Issue 62's character-like asset (scripts/make_character_asset.py, refined twice): closed,
+// 24,576 quads, every one of the cage's 764 extraordinary vertices kept (refinement adds only
+// regular ones) and 3,048 of the faces (one in 8) touching one.
+TEST(ProductionAssets, TheCharacterHasExtraordinaryVerticesAllOverIt) {
+  const mesh::Mesh cage = suite::loadAsset(suite::resolveAsset("full_suite/character_base"));
+  const mesh::Mesh figure = suite::loadAsset(suite::resolveAsset("production/character_r2"));
+  ASSERT_EQ(cage.faceCount(), 1536u);
+  ASSERT_EQ(figure.faceCount(), 24576u);
+  const mesh::Topology topology = mesh::buildTopology(figure);
+  EXPECT_TRUE(mesh::connectivityWarnings(figure, topology).empty());
+  EXPECT_EQ(std::count(topology.on_boundary.begin(), topology.on_boundary.end(), 1), 0);
+  const std::vector<uint32_t> extraordinary = topology.extraordinaryVertices(4);
+  EXPECT_EQ(extraordinary.size(), 764u);
+  std::vector<uint8_t> is_extraordinary(figure.positions.size(), 0);
+  for (uint32_t v : extraordinary) is_extraordinary[v] = 1;
+  size_t touching = 0;
+  for (size_t f = 0; f < figure.faceCount(); ++f) {
+    const auto corners = figure.facePositions(f);
+    touching += std::any_of(corners.begin(), corners.end(),
+                            [&](uint32_t v) { return is_extraordinary[v] != 0; });
+  }
+  EXPECT_EQ(touching, 3048u);
 }
 
 // Bad input: one line naming the file and the entry or option, never a crash.
