@@ -174,13 +174,13 @@ class AccPatches final : public techniques::SurfacePatches {
     const double u = coord[0], v = coord[1];
     const mesh::Vec3d tu = techniques::evaluateTangentU(p.tu, u, v),
                       tv = techniques::evaluateTangentV(p.tv, u, v);
-    return {techniques::evaluateBicubic(p.b, u, v, order_), normalize(cross(tu, tv))};
+    return {techniques::evaluateBicubicFast(p.b, u, v, order_), normalize(cross(tu, tv))};
   }
 
   // The geometry patch alone: the tangent patches give only the normal.
   mesh::Vec3d evaluatePosition(size_t patch, const techniques::DomainCoord& coord) const override {
     assert(patch < patchCount());
-    return techniques::evaluateBicubic(points_d_[patch].b, coord[0], coord[1], order_);
+    return techniques::evaluateBicubicFast(points_d_[patch].b, coord[0], coord[1], order_);
   }
 
   std::unique_ptr<techniques::BatchPattern> makeBatchPattern(

@@ -19,13 +19,16 @@
 
 namespace tb::gregory_acc::testing {
 
-// Every bundled OBJ ("opensubdiv/catmark_cube.obj", ...) that checkSupport accepts, sorted.
+// Every bundled OBJ ("opensubdiv/catmark_cube.obj", ...) that checkSupport accepts, sorted;
+// but the character's cage (full_suite/character_base.obj, the source of a production asset):
+// 1,536 quads that the GPU test over every asset would pay for on lavapipe, with no case the
+// others lack (extraordinary vertices of valence 3 and 6).
 inline std::vector<std::string> supportedBundledAssets() {
   std::vector<std::string> names;
   GregoryAccTechnique technique;
   for (const char* folder : {"full_suite", "opensubdiv", "tessbench"}) {
     for (const auto& entry : std::filesystem::directory_iterator(tb::testing::assetPath(folder))) {
-      if (entry.path().extension() != ".obj") continue;
+      if (entry.path().extension() != ".obj" || entry.path().stem() == "character_base") continue;
       const std::string name = std::string(folder) + "/" + entry.path().filename().string();
       if (technique.checkSupport(mesh::loadObjFile(tb::testing::assetPath(name))).empty()) {
         names.push_back(name);
