@@ -6,9 +6,11 @@ with extraordinary vertices all over it, as a modelled character's cage has them
 
   1. An octahedron, each face split 8 x 8 (512 triangles, 258 vertices), pushed onto the
      unit sphere.
-  2. Shaped as a figure: a body stretched upward, a head lobe on top, two arm lobes and two
-     leg lobes, and a low ripple, so no region is flat (the radius is a smooth function of
-     the direction; every vertex moves along its own direction).
+  2. Shaped as a lumpy upright body: stretched upward, with soft lobes where a figure's
+     head, arms and legs would be, and a low ripple, so no region is flat (the radius is a
+     smooth function of the direction; every vertex moves along its own direction). The
+     lobes are soft: rendered it reads as a lumpy blob, not a modelled figure. What the
+     measures pay for is the cage's topology and that it is curved everywhere.
   3. Every triangle split into 3 quads at its centroid and edge midpoints: 1,536 quads.
      Every quad has a valence-3 corner (the centroid) and, but at the octahedron's six
      corners, a valence-6 corner: 764 extraordinary vertices in all.
